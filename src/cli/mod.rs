@@ -1,0 +1,80 @@
+//! The command line: the only place that prints. Exit codes: 0 ok, 1 an
+//! answer differs (`check`), 2 bad input or usage.
+
+mod run;
+
+use std::io::{self, Write};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use zsim::error::Error;
+
+/// Simulates the z-buffer hidden-surface algorithm exactly as the textbook teaches it.
+#[derive(Debug, Parser)]
+#[command(name = "zsim", version, about, max_term_width = 100)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Draw a scene and print the framebuffer and z-buffer after each polygon.
+    Run(run::RunArgs),
+}
+
+/// How a command ended, when it did not fail.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Finish {
+    /// Everything fine: exit 0.
+    Ok,
+}
+
+/// What can stop a command.
+#[derive(Debug)]
+pub enum Failure {
+    /// Bad input or usage: exit 2 with the message.
+    Input(Error),
+    /// Writing the output failed (a closed pipe is not reported).
+    Io(io::Error),
+}
+
+impl From<Error> for Failure {
+    fn from(error: Error) -> Failure {
+        Failure::Input(error)
+    }
+}
+
+impl From<io::Error> for Failure {
+    fn from(error: io::Error) -> Failure {
+        Failure::Io(error)
+    }
+}
+
+/// Parses the arguments, runs the command and maps the outcome to an exit code.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let stdout = io::stdout();
+    let mut out = io::BufWriter::new(stdout.lock());
+    let result = match cli.command {
+        Command::Run(args) => run::run(&args, &mut out),
+    };
+    let result = result.and_then(|finish| out.flush().map(|()| finish).map_err(Failure::Io));
+    match result {
+        Ok(Finish::Ok) => ExitCode::SUCCESS,
+        Err(Failure::Io(error)) if error.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(Failure::Io(error)) => {
+            eprintln!("zsim: cannot write the output: {error}");
+            ExitCode::from(2)
+        }
+        Err(Failure::Input(error)) => {
+            eprintln!("zsim: {error}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Writes text, turning a closed pipe into a quiet stop.
+fn emit(out: &mut dyn Write, text: &str) -> Result<(), Failure> {
+    out.write_all(text.as_bytes()).map_err(Failure::Io)
+}

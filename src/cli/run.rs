@@ -1,0 +1,108 @@
+//! `zsim run`: the buffers after each polygon, as the book prints them.
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+use zsim::pipeline::{self, Simulation};
+use zsim::report::{self, RunJson, StepJson};
+use zsim::scene::Scene;
+use zsim::trace::Unobserved;
+
+use super::{Failure, Finish, emit};
+
+/// Arguments of `zsim run`.
+#[derive(Debug, Args)]
+pub struct RunArgs {
+    /// The scene file (JSON).
+    scene: PathBuf,
+    /// Print only the state after the last polygon.
+    #[arg(long = "final")]
+    final_only: bool,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+    /// Label rows with y and columns with x.
+    #[arg(long)]
+    axes: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Format {
+    /// The book's matrices with polygon headings.
+    Text,
+    /// One JSON object: width, height, effects, steps.
+    Json,
+    /// A one-line summary only.
+    None,
+}
+
+pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let scene = Scene::load(&args.scene)?;
+    let mut simulation = Simulation::new(&scene);
+    match args.format {
+        Format::Text => {
+            emit(out, &report::scene_header(&scene, &args.scene.display().to_string()))?;
+            let last = scene.polygons.len().checked_sub(1);
+            let mut before = simulation.stats();
+            while let Some(index) = simulation.draw_next(&mut Unobserved) {
+                let after = simulation.stats();
+                let polygon = &scene.polygons[index];
+                let mut text = format!("\n{}\n", report::polygon_heading(&scene, index));
+                text.push_str(&format!(
+                    "  {} pixel centres covered, {} written\n",
+                    after.tested - before.tested,
+                    after.written - before.written
+                ));
+                before = after;
+                if !args.final_only || Some(index) == last {
+                    text.push_str(&buffers_text(&simulation, index, &polygon.name, args.axes));
+                }
+                emit(out, &text)?;
+            }
+        }
+        Format::Json => {
+            let mut steps = Vec::with_capacity(scene.polygons.len());
+            while let Some(index) = simulation.draw_next(&mut Unobserved) {
+                if args.final_only && index + 1 != scene.polygons.len() {
+                    continue;
+                }
+                steps.push(StepJson {
+                    polygon: scene.polygons[index].name.clone(),
+                    frame: simulation.buffers().frame_rows(),
+                    depth: simulation.buffers().depth_rows(),
+                });
+            }
+            let json = RunJson { width: scene.width, height: scene.height, effects: scene.effects.names(), steps };
+            let text = serde_json::to_string(&json).expect("serializing plain data cannot fail");
+            emit(out, &format!("{text}\n"))?;
+        }
+        Format::None => {
+            simulation.finish(&mut Unobserved);
+            emit(out, &format!("{}\n", summary(&scene, &args.scene.display().to_string(), &simulation)))?;
+        }
+    }
+    Ok(Finish::Ok)
+}
+
+fn buffers_text(simulation: &Simulation<'_>, index: usize, name: &str, axes: bool) -> String {
+    format!(
+        "\nframebuffer after polygon {n} \"{name}\":\n{}\nz-buffer after polygon {n} \"{name}\":\n{}",
+        report::matrix(&simulation.buffers().frame_rows(), axes),
+        report::matrix(&simulation.buffers().depth_rows(), axes),
+        n = index + 1,
+    )
+}
+
+fn summary(scene: &Scene, path: &str, simulation: &Simulation<'_>) -> String {
+    let stats = simulation.stats();
+    let effects = scene.effects.names();
+    format!(
+        "{path}: {} polygons, {} pixel centres tested, {} written; effects: {}; stages: {}",
+        stats.polygons,
+        stats.tested,
+        stats.written,
+        if effects.is_empty() { "none".to_string() } else { effects.join(", ") },
+        pipeline::stages(scene).join(" → "),
+    )
+}

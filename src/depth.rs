@@ -1,0 +1,256 @@
+//! Depth: the exact depth at a pixel centre, the depth tests, rounding and
+//! saturation, and the exact incremental step along a scanline.
+
+use std::cmp::Ordering;
+
+use serde::{Deserialize, Serialize};
+
+use crate::exact::{Q, cmp_fractions, floor_div};
+use crate::plane::Geometry;
+
+/// Which depth is nearer the viewer, and so which test a pixel must pass.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DepthTest {
+    /// The book's: viewer at +∞ on z, larger z is nearer, buffer cleared to 0,
+    /// written when `z > stored`.
+    #[default]
+    Greater,
+    /// Seeds 003/004: smaller z is nearer, buffer cleared to `2^depth_bits − 1`,
+    /// written when `z < stored`.
+    Less,
+}
+
+impl DepthTest {
+    /// The value the z-buffer is cleared to: the farthest depth it can hold.
+    pub fn clear_value(self, depth_max: u32) -> u32 {
+        match self {
+            DepthTest::Greater => 0,
+            DepthTest::Less => depth_max,
+        }
+    }
+
+    /// Whether an incoming exact depth replaces the stored integer. Equal
+    /// depths never overwrite: the first polygon drawn keeps the pixel.
+    pub fn passes(self, incoming: Depth, stored: u32) -> bool {
+        let ord = incoming.cmp_integer(i128::from(stored));
+        match self {
+            DepthTest::Greater => ord == Ordering::Greater,
+            DepthTest::Less => ord == Ordering::Less,
+        }
+    }
+
+    /// The comparison operator as printed: `>` or `<`.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            DepthTest::Greater => ">",
+            DepthTest::Less => "<",
+        }
+    }
+
+    /// The name used in scene files: `greater` or `less`.
+    pub fn name(self) -> &'static str {
+        match self {
+            DepthTest::Greater => "greater",
+            DepthTest::Less => "less",
+        }
+    }
+
+    /// Whether a depth lies on the kept side of a cross-section at `section`
+    /// (seed 002: `z ≤ Zsection` when larger z is nearer; mirrored for `Less`).
+    pub fn keeps_section(self, incoming: Depth, section: Q) -> bool {
+        let ord = incoming.cmp_q(section);
+        match self {
+            DepthTest::Greater => ord != Ordering::Greater,
+            DepthTest::Less => ord != Ordering::Less,
+        }
+    }
+
+    /// The section comparison as printed: `≤` or `≥`.
+    pub fn section_symbol(self) -> &'static str {
+        match self {
+            DepthTest::Greater => "≤",
+            DepthTest::Less => "≥",
+        }
+    }
+}
+
+/// An exact depth `whole + remainder/denominator` with
+/// `0 ≤ remainder < denominator`: the floor and the fractional part of z.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Depth {
+    whole: i128,
+    remainder: i128,
+    denominator: i128,
+}
+
+impl Depth {
+    /// The depth `numerator / denominator` (denominator non-zero, any sign).
+    pub fn from_fraction(numerator: i128, denominator: i128) -> Depth {
+        debug_assert!(denominator != 0, "depth with zero denominator: please report this bug");
+        let (numerator, denominator) =
+            if denominator < 0 { (-numerator, -denominator) } else { (numerator, denominator) };
+        let (whole, remainder) = floor_div(numerator, denominator);
+        Depth { whole, remainder, denominator }
+    }
+
+    /// The exact value, reduced.
+    pub fn value(self) -> Q {
+        Q::new(self.whole * self.denominator + self.remainder, self.denominator)
+    }
+
+    /// Compares with an integer stored value.
+    pub fn cmp_integer(self, stored: i128) -> Ordering {
+        self.whole.cmp(&stored).then(if self.remainder > 0 { Ordering::Greater } else { Ordering::Equal })
+    }
+
+    /// Compares with an exact rational without overflow.
+    pub fn cmp_q(self, other: Q) -> Ordering {
+        match self.whole.cmp(&other.floor().to_integer()) {
+            Ordering::Equal => {
+                let other_rem = (other - other.floor()).numer().to_owned();
+                cmp_fractions(self.remainder, self.denominator, other_rem, *other.denom())
+            }
+            ord => ord,
+        }
+    }
+
+    /// Rounded to the nearest integer, halves up (the book: "z is rounded to
+    /// the nearest integer"; 10.5 becomes 11, −0.5 becomes 0).
+    pub fn rounded(self) -> i128 {
+        // remainder < denominator < 2^124 (see plane::MAX_SCALED), so 2·remainder fits.
+        self.whole + i128::from(2 * self.remainder >= self.denominator)
+    }
+
+    /// What the z-buffer stores: rounded half up, then saturated to
+    /// `0 ..= depth_max`.
+    pub fn quantized(self, depth_max: u32) -> u32 {
+        self.rounded().clamp(0, i128::from(depth_max)) as u32
+    }
+}
+
+/// The exact depth along one scanline, stepped from pixel to pixel by the
+/// seed's increment `z₁ = z − a/c` using a whole part and a remainder
+/// (Bresenham-style), so no division happens per pixel and the result is
+/// identical to evaluating the plane at every centre.
+#[derive(Debug, Clone, Copy)]
+pub struct DepthStepper {
+    depth: Depth,
+    step_whole: i128,
+    step_remainder: i128,
+}
+
+impl DepthStepper {
+    /// Starts at the centre of pixel `column` on the scanline at scaled height
+    /// `scan_y`, for a polygon whose Newell `c` is non-zero.
+    ///
+    /// In scaled units the depth at `(X, Y)` is
+    /// `Z = Z₁ − (a(X − X₁) + b(Y − Y₁))/c` (seed 002: `z = −(ax + by + d)/c`),
+    /// and `z = Z / 2D`. Its numerator is bounded by `20nR³ < 2^123`.
+    pub fn start(geometry: &Geometry, column: i128, scan_y: i128) -> DepthStepper {
+        let [a, b, c] = geometry.normal;
+        debug_assert!(c != 0, "depth of an edge-on polygon: please report this bug");
+        let [x1, y1, z1] = geometry.points[0];
+        let centre_x = (2 * column + 1) * geometry.denominator;
+        let numerator = c * z1 - a * (centre_x - x1) - b * (scan_y - y1);
+        let denominator = c * geometry.scale();
+        let depth = Depth::from_fraction(numerator, denominator);
+        // One column is 2D scaled units: ΔZ = −a·2D/c, Δz = −a·2D/(c·2D).
+        let step = -a * 2 * geometry.denominator;
+        let step = if denominator < 0 { -step } else { step };
+        let (step_whole, step_remainder) = floor_div(step, depth.denominator);
+        DepthStepper { depth, step_whole, step_remainder }
+    }
+
+    /// The depth at the current pixel centre.
+    pub fn current(&self) -> Depth {
+        self.depth
+    }
+
+    /// Moves one pixel to the right.
+    pub fn advance(&mut self) {
+        self.depth.whole += self.step_whole;
+        self.depth.remainder += self.step_remainder;
+        if self.depth.remainder >= self.depth.denominator {
+            self.depth.remainder -= self.depth.denominator;
+            self.depth.whole += 1;
+        }
+    }
+}
+
+/// The exact depth of a polygon's plane at any point given in polygon units
+/// (for reports: span ends, explanations). `None` when the plane has no z term.
+pub fn depth_at(geometry: &Geometry, x: Q, y: Q) -> Option<Q> {
+    let [a, b, c] = geometry.normal;
+    if c == 0 {
+        return None;
+    }
+    let scale = Q::from_integer(geometry.scale());
+    let [x1, y1, z1] = geometry.points[0].map(Q::from_integer);
+    let z = z1 - (Q::from_integer(a) * (x * scale - x1) + Q::from_integer(b) * (y * scale - y1)) / Q::from_integer(c);
+    Some(z / scale)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn depth_half_rounds_up() {
+        assert_eq!(Depth::from_fraction(21, 2).rounded(), 11);
+        assert_eq!(Depth::from_fraction(-1, 2).rounded(), 0);
+        assert_eq!(Depth::from_fraction(-3, 2).rounded(), -1);
+        assert_eq!(Depth::from_fraction(41, 4).rounded(), 10);
+        assert_eq!(Depth::from_fraction(43, 4).rounded(), 11);
+    }
+
+    #[test]
+    fn depth_saturates_at_both_ends() {
+        assert_eq!(Depth::from_fraction(-7, 1).quantized(15), 0);
+        assert_eq!(Depth::from_fraction(31, 2).quantized(15), 15);
+        assert_eq!(Depth::from_fraction(99, 1).quantized(15), 15);
+    }
+
+    #[test]
+    fn equal_depth_does_not_overwrite() {
+        let ten = Depth::from_fraction(10, 1);
+        assert!(!DepthTest::Greater.passes(ten, 10));
+        assert!(!DepthTest::Less.passes(ten, 10));
+        assert!(DepthTest::Greater.passes(Depth::from_fraction(41, 4), 10));
+        assert!(!DepthTest::Less.passes(Depth::from_fraction(41, 4), 10));
+        assert!(DepthTest::Less.passes(Depth::from_fraction(39, 4), 10));
+    }
+
+    #[test]
+    fn exact_depth_beats_rounded_depth() {
+        // The book's pixel (20, 17): z = 41/4 rounds to 10 but is still nearer than 10.
+        let z = Depth::from_fraction(41, 4);
+        assert!(DepthTest::Greater.passes(z, 10));
+        assert_eq!(z.quantized(15), 10);
+    }
+
+    #[test]
+    fn section_keeps_the_far_side_including_the_plane() {
+        let section = Q::from_integer(12);
+        assert!(DepthTest::Greater.keeps_section(Depth::from_fraction(12, 1), section));
+        assert!(!DepthTest::Greater.keeps_section(Depth::from_fraction(49, 4), section));
+        assert!(DepthTest::Less.keeps_section(Depth::from_fraction(49, 4), section));
+        assert!(!DepthTest::Less.keeps_section(Depth::from_fraction(47, 4), section));
+    }
+
+    #[test]
+    fn stepping_matches_evaluation_at_every_centre() {
+        let vertices: Vec<[Q; 3]> =
+            [[1, 2, 7], [29, 5, -3], [11, 27, 13]].iter().map(|v| v.map(|c: i128| Q::from_integer(c))).collect();
+        let geometry = Geometry::new(&vertices).unwrap();
+        for row in 0..32i128 {
+            let scan_y = (2 * row + 1) * geometry.denominator;
+            let mut stepper = DepthStepper::start(&geometry, 0, scan_y);
+            for column in 0..32i128 {
+                let expected = depth_at(&geometry, Q::new(2 * column + 1, 2), Q::new(2 * row + 1, 2)).unwrap();
+                assert_eq!(stepper.current().value(), expected, "depth at (x={column}, y={row})");
+                stepper.advance();
+            }
+        }
+    }
+}

@@ -1,0 +1,266 @@
+//! Exact numbers: the rational type `Q`, reading numbers from scene files, and
+//! overflow-free comparison and rounding helpers on `i128` fractions.
+//!
+//! The rasterizer itself works on integer numerators over a known per-polygon
+//! denominator (see [`crate::plane`]); `Q` is what it reports to people.
+
+use std::cmp::Ordering;
+use std::fmt;
+
+use num_integer::Integer;
+
+/// An exact rational number over `i128`, always reduced with a positive
+/// denominator (`num_rational::Ratio` keeps that invariant).
+pub type Q = num_rational::Ratio<i128>;
+
+/// Why a piece of text is not a number zsim accepts.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum NumberError {
+    /// Not a decimal, an integer or a fraction `p/q`.
+    NotANumber(String),
+    /// A fraction with denominator zero.
+    ZeroDenominator(String),
+    /// Too many digits or too large an exponent to hold exactly.
+    TooLarge(String),
+}
+
+impl fmt::Display for NumberError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NumberError::NotANumber(text) => write!(
+                f,
+                "\"{text}\" is not a number (write an integer, a decimal such as 2.5, or a fraction such as \"5/2\")"
+            ),
+            NumberError::ZeroDenominator(text) => {
+                write!(f, "\"{text}\" divides by zero")
+            }
+            NumberError::TooLarge(text) => {
+                write!(f, "\"{text}\" has too many digits to hold exactly (at most 30 significant digits)")
+            }
+        }
+    }
+}
+
+/// Reads an integer, a decimal (`-2.125`, `1e3`, `2.5E-2`) or a fraction of
+/// two integers (`5/2`, `-7/3`) exactly. Decimals never pass through binary
+/// floating point: `2.1` is `21/10`.
+///
+/// ```
+/// use zsim::exact::{parse_number, Q};
+/// assert_eq!(parse_number("2.1").unwrap(), Q::new(21, 10));
+/// assert_eq!(parse_number("-5/2").unwrap(), Q::new(-5, 2));
+/// assert!(parse_number("1/0").is_err());
+/// ```
+pub fn parse_number(text: &str) -> Result<Q, NumberError> {
+    let trimmed = text.trim();
+    if let Some((num, den)) = trimmed.split_once('/') {
+        let num = parse_decimal(num.trim(), text)?;
+        let den = parse_decimal(den.trim(), text)?;
+        if *den.numer() == 0 {
+            return Err(NumberError::ZeroDenominator(text.to_string()));
+        }
+        return checked_div(num, den).ok_or_else(|| NumberError::TooLarge(text.to_string()));
+    }
+    parse_decimal(trimmed, text)
+}
+
+/// Most significant digits a decimal may have: 10^30 < 2^100 leaves room for
+/// the exponent and the common denominators built later.
+const MAX_DIGITS: usize = 30;
+
+fn parse_decimal(text: &str, whole: &str) -> Result<Q, NumberError> {
+    let not_a_number = || NumberError::NotANumber(whole.to_string());
+    let too_large = || NumberError::TooLarge(whole.to_string());
+    let (negative, rest) = match text.as_bytes().first() {
+        Some(b'-') => (true, &text[1..]),
+        Some(b'+') => (false, &text[1..]),
+        _ => (false, text),
+    };
+    let (mantissa, exponent) = match rest.find(['e', 'E']) {
+        Some(at) => {
+            let exponent: i32 = rest[at + 1..].parse().map_err(|_| not_a_number())?;
+            (&rest[..at], exponent)
+        }
+        None => (rest, 0),
+    };
+    let (int_part, frac_part) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    if int_part.is_empty() && frac_part.is_empty() {
+        return Err(not_a_number());
+    }
+    if !int_part.bytes().all(|b| b.is_ascii_digit()) || !frac_part.bytes().all(|b| b.is_ascii_digit()) {
+        return Err(not_a_number());
+    }
+    let digits = format!("{int_part}{frac_part}");
+    let significant = digits.trim_start_matches('0');
+    if significant.len() > MAX_DIGITS {
+        return Err(too_large());
+    }
+    let mut numer: i128 = if significant.is_empty() { 0 } else { significant.parse().map_err(|_| too_large())? };
+    let scale = exponent - frac_part.len() as i32;
+    let mut denom: i128 = 1;
+    if numer != 0 {
+        let power =
+            10i128.checked_pow(scale.unsigned_abs()).filter(|_| scale.unsigned_abs() <= 36).ok_or_else(too_large)?;
+        if scale >= 0 {
+            numer = numer.checked_mul(power).ok_or_else(too_large)?;
+        } else {
+            denom = power;
+        }
+    }
+    if negative {
+        numer = -numer;
+    }
+    Ok(Q::new(numer, denom))
+}
+
+/// `a / b` without overflow panics; `None` when the result does not fit.
+pub fn checked_div(a: Q, b: Q) -> Option<Q> {
+    let numer = a.numer().checked_mul(*b.denom())?;
+    let denom = a.denom().checked_mul(*b.numer())?;
+    if denom == 0 {
+        return None;
+    }
+    Some(Q::new(numer, denom))
+}
+
+/// Compares `n1/d1` with `n2/d2` (both denominators positive) without
+/// overflow, by the continued-fraction expansion: whole parts first, then the
+/// reciprocals of the remainders.
+pub fn cmp_fractions(mut n1: i128, mut d1: i128, mut n2: i128, mut d2: i128) -> Ordering {
+    debug_assert!(d1 > 0 && d2 > 0, "cmp_fractions needs positive denominators");
+    // Each round swaps the roles and reverses the sense, like Euclid's algorithm.
+    let mut reversed = false;
+    loop {
+        let (q1, r1) = (n1.div_euclid(d1), n1.rem_euclid(d1));
+        let (q2, r2) = (n2.div_euclid(d2), n2.rem_euclid(d2));
+        let ord = q1.cmp(&q2).then_with(|| match (r1 == 0, r2 == 0) {
+            (true, true) => Ordering::Equal,
+            (true, false) => Ordering::Less,
+            (false, true) => Ordering::Greater,
+            (false, false) => Ordering::Equal,
+        });
+        if ord != Ordering::Equal || r1 == 0 {
+            return if reversed { ord.reverse() } else { ord };
+        }
+        // q1 == q2 and both remainders non-zero: r1/d1 < r2/d2 ⇔ d1/r1 > d2/r2.
+        (n1, d1, n2, d2) = (d1, r1, d2, r2);
+        reversed = !reversed;
+    }
+}
+
+/// Floor of `n / d` for `d > 0`, as whole part and remainder `0 ≤ r < d`.
+pub fn floor_div(n: i128, d: i128) -> (i128, i128) {
+    debug_assert!(d > 0);
+    n.div_mod_floor(&d)
+}
+
+/// Ceiling of `n / d` for `d > 0`.
+pub fn ceil_div(n: i128, d: i128) -> i128 {
+    debug_assert!(d > 0);
+    Integer::div_ceil(&n, &d)
+}
+
+/// Formats a rational the way zsim prints exact values: reduced, `43/4`, or
+/// `10` when whole.
+pub fn fraction(value: Q) -> String {
+    if value.is_integer() { value.numer().to_string() } else { format!("{}/{}", value.numer(), value.denom()) }
+}
+
+/// The decimal approximation printed beside an exact value: always `places`
+/// digits after the point, rounded half away from zero, computed exactly.
+pub fn decimal(value: Q, places: u32) -> String {
+    let negative = *value.numer() < 0;
+    let numer = value.numer().unsigned_abs();
+    let denom = value.denom().unsigned_abs();
+    let whole = numer / denom;
+    let mut rem = numer % denom;
+    let mut digits = Vec::with_capacity(places as usize + 1);
+    for _ in 0..=places {
+        // rem < denom < 2^127, so 10·rem may only overflow for denominators
+        // above 2^123; fall back to one digit fewer of precision there.
+        let scaled = rem.saturating_mul(10);
+        digits.push((scaled / denom) as u8);
+        rem = scaled % denom;
+    }
+    let round_up = digits.pop().unwrap_or(0) >= 5;
+    let mut whole = whole;
+    if round_up {
+        let mut carry = true;
+        for digit in digits.iter_mut().rev() {
+            if *digit == 9 {
+                *digit = 0;
+            } else {
+                *digit += 1;
+                carry = false;
+                break;
+            }
+        }
+        if carry {
+            whole += 1;
+        }
+    }
+    let all_zero = whole == 0 && digits.iter().all(|&d| d == 0);
+    let sign = if negative && !all_zero { "-" } else { "" };
+    let frac: String = digits.iter().map(|d| char::from(b'0' + d)).collect();
+    if places == 0 { format!("{sign}{whole}") } else { format!("{sign}{whole}.{frac}") }
+}
+
+/// `43/4 (10.75)`: the exact value and its decimal, as zsim shows depths and
+/// crossings. Whole numbers print once: `10`.
+pub fn exact_and_decimal(value: Q) -> String {
+    if value.is_integer() { fraction(value) } else { format!("{} ≈ {}", fraction(value), decimal(value, 2)) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimals_are_read_exactly() {
+        assert_eq!(parse_number("2.1").unwrap(), Q::new(21, 10));
+        assert_eq!(parse_number("-0.125").unwrap(), Q::new(-1, 8));
+        assert_eq!(parse_number("1e3").unwrap(), Q::from_integer(1000));
+        assert_eq!(parse_number("2.5E-2").unwrap(), Q::new(1, 40));
+        assert_eq!(parse_number(".5").unwrap(), Q::new(1, 2));
+        assert_eq!(parse_number("7/-2").unwrap(), Q::new(-7, 2));
+    }
+
+    #[test]
+    fn fractions_are_read_and_reduced() {
+        assert_eq!(parse_number("10/4").unwrap(), Q::new(5, 2));
+        assert_eq!(parse_number(" -7/3 ").unwrap(), Q::new(-7, 3));
+        assert_eq!(parse_number("1/0").unwrap_err(), NumberError::ZeroDenominator("1/0".into()));
+    }
+
+    #[test]
+    fn non_numbers_are_refused() {
+        for text in ["abc", "", "-", "1.2.3", "1/2/3", "1e", "0x10", "1 2"] {
+            assert!(parse_number(text).is_err(), "{text:?} was accepted");
+        }
+        assert!(matches!(parse_number("1234567890123456789012345678901"), Err(NumberError::TooLarge(_))));
+        assert!(matches!(parse_number("1e40"), Err(NumberError::TooLarge(_))));
+    }
+
+    #[test]
+    fn fraction_comparison_matches_cross_multiplication() {
+        let cases = [(1, 3, 1, 2), (7, 2, 7, 2), (-1, 3, -1, 2), (10, 4, 5, 2), (22, 7, 355, 113), (-5, 1, 4, 1)];
+        for (n1, d1, n2, d2) in cases {
+            assert_eq!(cmp_fractions(n1, d1, n2, d2), (n1 * d2).cmp(&(n2 * d1)), "{n1}/{d1} vs {n2}/{d2}");
+        }
+        // Values whose cross products would overflow i128.
+        let big = 1i128 << 120;
+        assert_eq!(cmp_fractions(big + 1, big, big, big - 1), Ordering::Less);
+        assert_eq!(cmp_fractions(big, big - 1, big + 1, big), Ordering::Greater);
+    }
+
+    #[test]
+    fn decimals_print_with_fixed_places() {
+        assert_eq!(decimal(Q::new(43, 4), 2), "10.75");
+        assert_eq!(decimal(Q::new(151, 6), 2), "25.17");
+        assert_eq!(decimal(Q::new(-1, 3), 2), "-0.33");
+        assert_eq!(decimal(Q::new(-1, 1000), 2), "0.00");
+        assert_eq!(decimal(Q::new(999, 1000), 2), "1.00");
+        assert_eq!(exact_and_decimal(Q::new(43, 4)), "43/4 ≈ 10.75");
+        assert_eq!(exact_and_decimal(Q::from_integer(10)), "10");
+    }
+}

@@ -1,0 +1,79 @@
+//! zsim simulates the z-buffer hidden-surface algorithm exactly as the
+//! textbook teaches it (Rogers, *Procedural Elements for Computer Graphics*,
+//! the worked example of a rectangle pierced by a triangle; seed 002 in this
+//! project's sources).
+//!
+//! # Conventions
+//!
+//! Each convention below is pinned by a test named after it.
+//!
+//! - **Axes.** x to the right, y up, pixel (0, 0) at the bottom left ("the
+//!   pixel (0, 0) is in the lower left corner"). Matrices are printed top row
+//!   first (y = height − 1), columns x = 0 … width − 1, as the book prints them
+//!   (`buffer::tests::pixel_origin_is_bottom_left_and_printed_last`).
+//! - **Pixel centres.** Pixel (x, y) is sampled at its centre (x + 1/2, y + 1/2).
+//! - **Scanlines** (Rogers' half-interval convention). Row `y` is scanned along
+//!   the line through its centres, y + 1/2. An edge from y₁ to y₂ crosses it when
+//!   `min(y₁, y₂) ≤ y + 1/2 < max(y₁, y₂)`: a vertex on a scanline counts only for
+//!   the edge whose lower end it is, and horizontal edges never cross
+//!   (`scan::tests::vertex_on_scanline_counts_for_lower_edge_only`,
+//!   `scan::tests::horizontal_edges_never_cross`).
+//! - **Spans.** The crossings on a scanline are sorted and paired 1st–2nd,
+//!   3rd–4th, … (even-odd, so concave and self-intersecting polygons work).
+//!   A pixel is covered when its centre lies within a pair, boundary included:
+//!   "the pixel whose centre lies inside or on the boundary", `x₁ ≤ x ≤ x₂`
+//!   (`scan::tests::centre_on_right_edge_is_covered`).
+//! - **Plane.** Newell's method on the vertices:
+//!   `a = Σ(yᵢ − yᵢ₊₁)(zᵢ + zᵢ₊₁)`, `b = Σ(zᵢ − zᵢ₊₁)(xᵢ + xᵢ₊₁)`,
+//!   `c = Σ(xᵢ − xᵢ₊₁)(yᵢ + yᵢ₊₁)`, d through vertex 1, printed reduced
+//!   (the book's triangle: `3x + y + 4z - 120 = 0`). `c > 0` means the vertices
+//!   run counter-clockwise seen from the viewer; `c = 0` means the polygon is
+//!   seen edge-on and covers no pixel. A vertex off the plane is an error.
+//! - **Depth.** The exact depth at a centre, `z = −(a·x + b·y + d)/c`, stepped
+//!   along a scanline by `z₁ = z − a/c` with an exact whole part and remainder.
+//! - **Which depth is nearer.** `greater` (the book's default): the viewer is at
+//!   +∞ on z, larger z is nearer, the z-buffer is cleared to 0 and a pixel is
+//!   written when its exact z is greater than the stored integer. `less`
+//!   (seeds 003/004): cleared to `2^depth_bits − 1`, written when less.
+//!   Equal depths never overwrite (`depth::tests::equal_depth_does_not_overwrite`);
+//!   the comparison uses the exact z, not the rounded one (the book's pixel
+//!   (20, 17): z = 41/4 > 10 wins though it stores 10).
+//! - **Rounding and saturation.** The z-buffer stores z rounded to the nearest
+//!   integer, halves up (`depth::tests::depth_half_rounds_up`), saturated to
+//!   `0 … 2^depth_bits − 1` (`depth::tests::depth_saturates_at_both_ends`).
+//! - **Exactness.** No floating point anywhere: coordinates are rationals, each
+//!   polygon is scaled to integers over its common denominator (see
+//!   [`plane`]), and coordinates whose scaled size could overflow `i128` are
+//!   refused ([`plane::MAX_SCALED`]).
+//!
+//! # Example
+//!
+//! ```
+//! use std::path::Path;
+//! use zsim::{pipeline::Simulation, scene::Scene, trace::Unobserved};
+//!
+//! let scene = Scene::from_json(
+//!     r#"{"width": 4, "height": 3, "polygons": [
+//!         {"value": 1, "vertices": [[0, 0, 5], [4, 0, 5], [0, 3, 5]]}]}"#,
+//!     Path::new("inline.json"),
+//! ).unwrap();
+//! let mut simulation = Simulation::new(&scene);
+//! simulation.finish(&mut Unobserved);
+//! assert_eq!(simulation.buffers().frame_rows(), vec![
+//!     vec![1, 0, 0, 0],
+//!     vec![1, 1, 0, 0],
+//!     vec![1, 1, 1, 0],
+//! ]);
+//! ```
+#![warn(missing_docs)]
+
+pub mod buffer;
+pub mod depth;
+pub mod error;
+pub mod exact;
+pub mod pipeline;
+pub mod plane;
+pub mod report;
+pub mod scan;
+pub mod scene;
+pub mod trace;

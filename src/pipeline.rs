@@ -1,0 +1,165 @@
+//! The one rasterizer: polygons in scene order, each scan-converted by
+//! half-interval scanlines, its covered centres depth-tested and stored,
+//! with only the stages the scene asks for.
+
+use crate::buffer::Buffers;
+use crate::depth::DepthStepper;
+use crate::scan::{self, Crossing, Span};
+use crate::scene::{Scene, Winding};
+use crate::trace::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent};
+
+/// Counts of a run so far.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Polygons processed (drawn or skipped).
+    pub polygons: usize,
+    /// Covered pixel centres whose depth was tested.
+    pub tested: u64,
+    /// Pixels written.
+    pub written: u64,
+}
+
+/// A scene being drawn, one polygon at a time.
+#[derive(Debug, Clone)]
+pub struct Simulation<'s> {
+    scene: &'s Scene,
+    buffers: Buffers,
+    next: usize,
+    stats: Stats,
+    crossings: Vec<Crossing>,
+    spans: Vec<Span>,
+}
+
+impl<'s> Simulation<'s> {
+    /// Cleared buffers: the background value, and the depth test's farthest depth.
+    pub fn new(scene: &'s Scene) -> Simulation<'s> {
+        let clear = scene.depth_test.clear_value(scene.depth_max());
+        Simulation {
+            scene,
+            buffers: Buffers::new(scene.width, scene.height, scene.background, clear),
+            next: 0,
+            stats: Stats::default(),
+            crossings: Vec::new(),
+            spans: Vec::new(),
+        }
+    }
+
+    /// The buffers as they are now.
+    pub fn buffers(&self) -> &Buffers {
+        &self.buffers
+    }
+
+    /// The counts so far.
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    /// The index of the polygon the next [`Simulation::draw_next`] draws.
+    pub fn next_index(&self) -> usize {
+        self.next
+    }
+
+    /// Draws the next polygon; returns its index, or `None` when all are done.
+    pub fn draw_next<O: Observer>(&mut self, observer: &mut O) -> Option<usize> {
+        let index = self.next;
+        let polygon = self.scene.polygons.get(index)?;
+        self.next += 1;
+        self.stats.polygons += 1;
+        let fate = fate(self.scene, index);
+        observer.polygon(&PolygonEvent { index, polygon, fate });
+        if fate == Fate::Drawn {
+            self.draw(index, observer);
+        }
+        Some(index)
+    }
+
+    /// Draws every remaining polygon.
+    pub fn finish<O: Observer>(&mut self, observer: &mut O) {
+        while self.draw_next(observer).is_some() {}
+    }
+
+    fn draw<O: Observer>(&mut self, index: usize, observer: &mut O) {
+        let scene = self.scene;
+        let polygon = &scene.polygons[index];
+        let geometry = &polygon.geometry;
+        let depth_max = scene.depth_max();
+        let Some(rows) = scan::rows(&geometry.points, geometry.denominator, scene.height) else {
+            return;
+        };
+        for row in rows {
+            let scan_y = scan::scanline_y(row, geometry.denominator);
+            scan::crossings(&geometry.points, scan_y, &mut self.crossings);
+            scan::spans(&self.crossings, geometry.denominator, scene.width, &mut self.spans);
+            observer.scanline(&ScanlineEvent { index, polygon, row, crossings: &self.crossings, spans: &self.spans });
+            for span in &self.spans {
+                let Some((first, last)) = span.columns else { continue };
+                let mut stepper = DepthStepper::start(geometry, i128::from(first), scan_y);
+                for x in first..=last {
+                    let depth = stepper.current();
+                    stepper.advance();
+                    let stored_before = self.buffers.depth(x, row);
+                    let frame_before = self.buffers.frame(x, row);
+                    let outcome = if !scene.depth_test.passes(depth, stored_before) {
+                        Outcome::Hidden
+                    } else if scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(depth, z)) {
+                        Outcome::BeyondSection
+                    } else {
+                        Outcome::Written
+                    };
+                    self.stats.tested += 1;
+                    let (stored_after, frame_after) = if outcome == Outcome::Written {
+                        self.stats.written += 1;
+                        let stored = depth.quantized(depth_max);
+                        self.buffers.store(x, row, polygon.value, stored);
+                        (stored, polygon.value)
+                    } else {
+                        (stored_before, frame_before)
+                    };
+                    observer.pixel(&PixelEvent {
+                        index,
+                        x,
+                        y: row,
+                        depth,
+                        stored_before,
+                        frame_before,
+                        outcome,
+                        stored_after,
+                        frame_after,
+                    });
+                }
+            }
+        }
+    }
+}
+
+/// Whether polygon `index` is drawn, and if not, why.
+pub fn fate(scene: &Scene, index: usize) -> Fate {
+    let geometry = &scene.polygons[index].geometry;
+    if geometry.is_degenerate() {
+        return Fate::Degenerate;
+    }
+    match Winding::of(geometry.c()) {
+        None => Fate::EdgeOn,
+        Some(winding) if scene.effects.cull == Some(winding) => Fate::Culled(winding),
+        Some(_) => Fate::Drawn,
+    }
+}
+
+/// The stages that run for this scene, in order, in words.
+pub fn stages(scene: &Scene) -> Vec<String> {
+    let mut stages = Vec::new();
+    if let Some(winding) = scene.effects.cull {
+        stages.push(format!("back-face culling ({} polygons skipped)", winding.name()));
+    }
+    stages.push("scan conversion".to_string());
+    stages.push(format!("depth test (z {} stored)", scene.depth_test.symbol()));
+    if let Some(section) = scene.effects.section {
+        stages.push(format!(
+            "cross-section (z {} {})",
+            scene.depth_test.section_symbol(),
+            crate::exact::fraction(section)
+        ));
+    }
+    stages.push(format!("store (rounded half up, saturated to 0…{})", scene.depth_max()));
+    stages
+}

@@ -1,0 +1,356 @@
+//! A polygon's geometry in exact integers, and its plane by Newell's method.
+//!
+//! Every coordinate of one polygon is written over the polygon's least common
+//! denominator `D` and then doubled: a vertex's *scaled* coordinates are the
+//! integers `x·2D`, `y·2D`, `z·2D`. In those units the centre of pixel column
+//! `x` is `(2x + 1)·D` and scanline `row` lies at `(2row + 1)·D`, so pixel
+//! centres and half-interval scanlines are integers too, and the whole
+//! rasterizer runs on `i128` integers with no rounding anywhere.
+
+use std::fmt;
+
+use num_integer::Integer;
+
+use crate::exact::Q;
+
+/// Largest allowed magnitude of a scaled coordinate `|x·2D|`.
+///
+/// With `R = 2^34` and at most [`MAX_VERTICES`] vertices every intermediate
+/// value fits in `i128`: Newell's coefficients are at most `4nR² ≤ 2^86`, the
+/// depth numerator at a pixel centre at most `20nR³ < 2^123`, a crossing's
+/// numerator at most `6R² < 2^71` (see `depth` and `scan`).
+pub const MAX_SCALED: i128 = 1 << 34;
+
+/// Most vertices one polygon may have.
+pub const MAX_VERTICES: usize = 1 << 16;
+
+/// Why a polygon's vertices cannot be turned into exact geometry.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum GeometryError {
+    /// Fewer than three vertices.
+    TooFewVertices(usize),
+    /// More than [`MAX_VERTICES`] vertices.
+    TooManyVertices(usize),
+    /// A coordinate beyond the range where the exact arithmetic cannot overflow.
+    OutOfRange {
+        /// 1-based vertex number.
+        vertex: usize,
+        /// The offending coordinate.
+        value: Q,
+        /// The polygon's least common denominator `D`.
+        denominator: i128,
+    },
+    /// A vertex that does not lie on the plane through the others.
+    NotPlanar(Box<OffPlane>),
+}
+
+/// The first vertex found off a polygon's plane.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct OffPlane {
+    /// 1-based vertex number.
+    pub vertex: usize,
+    /// The three vertices (1-based) that fix the plane.
+    pub through: [usize; 3],
+    /// The plane through them.
+    pub plane: PlaneEquation,
+    /// How far the vertex is off, along z when the plane has a z term,
+    /// otherwise the value of the reduced equation at the vertex.
+    pub off_by: Q,
+    /// Whether `off_by` is measured along z.
+    pub along_z: bool,
+}
+
+impl fmt::Display for GeometryError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            GeometryError::TooFewVertices(n) => {
+                write!(f, "has {n} vertices; a polygon needs at least 3")
+            }
+            GeometryError::TooManyVertices(n) => {
+                write!(f, "has {n} vertices; zsim takes at most {MAX_VERTICES}")
+            }
+            GeometryError::OutOfRange { vertex, value, denominator } => write!(
+                f,
+                "vertex {vertex} has coordinate {} beyond the exact range: with the polygon's common denominator {denominator}, |coordinate| × 2 × {denominator} must be at most 2^34 (use smaller coordinates or fewer decimal places)",
+                crate::exact::fraction(*value)
+            ),
+            GeometryError::NotPlanar(off) => {
+                let OffPlane { vertex, through: [i, j, k], plane, off_by, along_z } = off.as_ref();
+                if *along_z {
+                    write!(
+                        f,
+                        "is not planar: vertex {vertex} is off the plane {plane} through vertices {i}, {j}, {k} by Δz = {}",
+                        crate::exact::exact_and_decimal(*off_by)
+                    )
+                } else {
+                    write!(
+                        f,
+                        "is not planar: vertex {vertex} gives {} instead of 0 in the plane {plane} through vertices {i}, {j}, {k}",
+                        crate::exact::fraction(*off_by)
+                    )
+                }
+            }
+        }
+    }
+}
+
+/// A plane `a·x + b·y + c·z + d = 0` with integer coefficients reduced by
+/// their greatest common divisor, in the polygon's own coordinates (not
+/// scaled), signed as the book prints it: `c > 0` (when `c = 0`, `b > 0`;
+/// when both are 0, `a > 0`). The winding is reported apart,
+/// from the sign of Newell's `c` ([`Geometry::c`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PlaneEquation {
+    /// Coefficient of x.
+    pub a: i128,
+    /// Coefficient of y.
+    pub b: i128,
+    /// Coefficient of z.
+    pub c: i128,
+    /// Constant term.
+    pub d: i128,
+}
+
+impl fmt::Display for PlaneEquation {
+    /// Prints like the book: `3x + y + 4z - 120 = 0`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let mut out = String::new();
+        for (coef, var) in [(self.a, "x"), (self.b, "y"), (self.c, "z"), (self.d, "")] {
+            if coef == 0 {
+                continue;
+            }
+            let magnitude = coef.unsigned_abs();
+            let number = if magnitude == 1 && !var.is_empty() { String::new() } else { magnitude.to_string() };
+            if out.is_empty() {
+                out = format!("{}{number}{var}", if coef < 0 { "-" } else { "" });
+            } else {
+                out = format!("{out} {} {number}{var}", if coef < 0 { "-" } else { "+" });
+            }
+        }
+        if out.is_empty() {
+            out.push('0');
+        }
+        write!(f, "{out} = 0")
+    }
+}
+
+/// A polygon ready for the rasterizer: scaled integer vertices and Newell's
+/// normal in scaled units.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Geometry {
+    /// `D`, the least common denominator of the polygon's coordinates; the
+    /// scale of the scaled coordinates is `2D`.
+    pub denominator: i128,
+    /// Vertices as `[x·2D, y·2D, z·2D]`.
+    pub points: Vec<[i128; 3]>,
+    /// Newell's normal `(a, b, c)` computed on the scaled vertices.
+    pub normal: [i128; 3],
+}
+
+impl Geometry {
+    /// Scales the vertices to integers, computes Newell's normal and checks
+    /// that every vertex lies on the plane through vertex 1.
+    ///
+    /// Guarantees: 3 ≤ vertices ≤ [`MAX_VERTICES`], every scaled coordinate
+    /// within ±[`MAX_SCALED`], and the polygon planar (trivially so when the
+    /// normal is zero, i.e. the vertices are collinear).
+    pub fn new(vertices: &[[Q; 3]]) -> Result<Geometry, GeometryError> {
+        if vertices.len() < 3 {
+            return Err(GeometryError::TooFewVertices(vertices.len()));
+        }
+        if vertices.len() > MAX_VERTICES {
+            return Err(GeometryError::TooManyVertices(vertices.len()));
+        }
+        let mut denominator: i128 = 1;
+        for (index, vertex) in vertices.iter().enumerate() {
+            for value in vertex {
+                let lcm = denominator.lcm(value.denom());
+                if lcm > MAX_SCALED {
+                    return Err(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator: lcm });
+                }
+                denominator = lcm;
+            }
+        }
+        let scale = 2 * denominator;
+        let mut points = Vec::with_capacity(vertices.len());
+        for (index, vertex) in vertices.iter().enumerate() {
+            let mut point = [0i128; 3];
+            for (axis, value) in vertex.iter().enumerate() {
+                let scaled = value.numer().checked_mul(scale / value.denom()).filter(|s| s.abs() <= MAX_SCALED);
+                point[axis] =
+                    scaled.ok_or(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator })?;
+            }
+            points.push(point);
+        }
+        let normal = newell(&points);
+        let geometry = Geometry { denominator, points, normal };
+        geometry.check_planar()?;
+        Ok(geometry)
+    }
+
+    /// The scale factor `2D` between polygon units and scaled units.
+    pub fn scale(&self) -> i128 {
+        2 * self.denominator
+    }
+
+    /// Newell's `c` in scaled units; zero for a polygon seen edge-on (or with
+    /// collinear vertices).
+    pub fn c(&self) -> i128 {
+        self.normal[2]
+    }
+
+    /// Whether Newell's normal vanishes: the vertices are collinear (or the
+    /// loops of a self-intersecting polygon cancel), so there is no plane.
+    pub fn is_degenerate(&self) -> bool {
+        self.normal == [0, 0, 0]
+    }
+
+    /// The plane through vertex 1 with Newell's normal, in the polygon's own
+    /// units, reduced.
+    pub fn plane(&self) -> PlaneEquation {
+        reduced_plane(self.normal, self.points[0], self.scale())
+    }
+
+    /// Checks every vertex against the plane through vertex 1 and the first two
+    /// vertices that are not collinear with it, so that the vertex named is the
+    /// first one off that plane (Newell's averaged normal would blame others).
+    fn check_planar(&self) -> Result<(), GeometryError> {
+        let p1 = self.points[0];
+        let sub = |p: [i128; 3]| [p[0] - p1[0], p[1] - p1[1], p[2] - p1[2]];
+        let Some(i) = self.points.iter().position(|p| *p != p1) else { return Ok(()) };
+        let u = sub(self.points[i]);
+        let found = self.points.iter().enumerate().skip(i + 1).find_map(|(k, p)| {
+            let v = sub(*p);
+            let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+            (n != [0, 0, 0]).then_some((k, n))
+        });
+        let Some((k, normal)) = found else { return Ok(()) };
+        for (index, point) in self.points.iter().enumerate() {
+            let w = sub(*point);
+            // Bounded by 3·8R²·2R < 2^108 (see MAX_SCALED).
+            let residual = normal[0] * w[0] + normal[1] * w[1] + normal[2] * w[2];
+            if residual == 0 {
+                continue;
+            }
+            let plane = reduced_plane(normal, p1, self.scale());
+            let (off_by, along_z) = if normal[2] != 0 {
+                // residual = n_z·ΔZ in scaled units, and Δz = ΔZ / 2D.
+                (Q::new(residual, normal[2] * self.scale()), true)
+            } else {
+                // Without a z term, report the reduced equation's value at the vertex.
+                let [x, y, z] = point.map(|v| Q::new(v, self.scale()));
+                let value = Q::from_integer(plane.a) * x
+                    + Q::from_integer(plane.b) * y
+                    + Q::from_integer(plane.c) * z
+                    + Q::from_integer(plane.d);
+                (value, false)
+            };
+            return Err(GeometryError::NotPlanar(Box::new(OffPlane {
+                vertex: index + 1,
+                through: [1, i + 1, k + 1],
+                plane,
+                off_by,
+                along_z,
+            })));
+        }
+        Ok(())
+    }
+}
+
+/// The plane with `normal` (scaled units) through `point` (scaled units), in
+/// polygon units, reduced and signed as the book prints it.
+///
+/// In scaled units the plane is `a·X + b·Y + c·Z + d' = 0` with
+/// `d' = −(a·X₁ + b·Y₁ + c·Z₁)`; with `X = 2D·x` that is
+/// `2D·a·x + 2D·b·y + 2D·c·z + d' = 0`, then divided by the gcd.
+fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> PlaneEquation {
+    let [a, b, c] = normal;
+    let d = -(a * point[0] + b * point[1] + c * point[2]);
+    let coefficients = [a * scale, b * scale, c * scale, d];
+    let divisor = coefficients.iter().fold(0i128, |g, v| g.gcd(v));
+    let leading = coefficients[..3].iter().rev().find(|v| **v != 0).copied().unwrap_or(0);
+    let divisor = if leading < 0 { -divisor } else { divisor };
+    if divisor == 0 {
+        return PlaneEquation { a: 0, b: 0, c: 0, d: 0 };
+    }
+    PlaneEquation { a: a * scale / divisor, b: b * scale / divisor, c: c * scale / divisor, d: d / divisor }
+}
+
+/// Newell's method (seed 002): `a = Σ(yᵢ − yᵢ₊₁)(zᵢ + zᵢ₊₁)`,
+/// `b = Σ(zᵢ − zᵢ₊₁)(xᵢ + xᵢ₊₁)`, `c = Σ(xᵢ − xᵢ₊₁)(yᵢ + yᵢ₊₁)`, indices
+/// taken around the polygon.
+pub fn newell(points: &[[i128; 3]]) -> [i128; 3] {
+    let mut normal = [0i128; 3];
+    for (i, p) in points.iter().enumerate() {
+        let q = points[(i + 1) % points.len()];
+        normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
+        normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
+        normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    normal
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(values: &[[i64; 3]]) -> Vec<[Q; 3]> {
+        values.iter().map(|v| v.map(|c| Q::from_integer(c as i128))).collect()
+    }
+
+    #[test]
+    fn book_triangle_plane_is_3x_y_4z_minus_120() {
+        let triangle = Geometry::new(&q(&[[15, 15, 15], [25, 25, 5], [30, 10, 5]])).unwrap();
+        assert!(triangle.c() < 0, "P5, P6, P7 run clockwise; the book prints the plane with c > 0");
+        assert_eq!(triangle.plane(), PlaneEquation { a: 3, b: 1, c: 4, d: -120 });
+        assert_eq!(triangle.plane().to_string(), "3x + y + 4z - 120 = 0");
+    }
+
+    #[test]
+    fn book_rectangle_runs_clockwise() {
+        let rectangle = Geometry::new(&q(&[[10, 5, 10], [10, 25, 10], [25, 25, 10], [25, 5, 10]])).unwrap();
+        assert_eq!(rectangle.plane().to_string(), "z - 10 = 0");
+        assert!(rectangle.c() < 0, "Newell's c < 0 means clockwise seen from +z");
+    }
+
+    #[test]
+    fn fractional_vertices_scale_to_integers() {
+        let vertices = vec![
+            [Q::new(1, 2), Q::new(1, 3), Q::from_integer(0)],
+            [Q::from_integer(4), Q::new(1, 3), Q::from_integer(0)],
+            [Q::from_integer(4), Q::from_integer(5), Q::from_integer(0)],
+        ];
+        let geometry = Geometry::new(&vertices).unwrap();
+        assert_eq!(geometry.denominator, 6);
+        assert_eq!(geometry.points[0], [6, 4, 0]);
+        assert_eq!(geometry.plane().to_string(), "z = 0");
+    }
+
+    #[test]
+    fn off_plane_vertex_is_named_with_its_distance() {
+        let err = Geometry::new(&q(&[[0, 0, 0], [4, 0, 0], [4, 4, 0], [0, 4, 1]])).unwrap_err();
+        match err {
+            GeometryError::NotPlanar(off) => {
+                assert_eq!(off.vertex, 4);
+                assert_eq!(off.off_by, Q::from_integer(1));
+                assert!(off.along_z);
+            }
+            other => panic!("expected NotPlanar, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn collinear_vertices_are_degenerate_not_an_error() {
+        let geometry = Geometry::new(&q(&[[0, 0, 0], [1, 1, 1], [2, 2, 2]])).unwrap();
+        assert!(geometry.is_degenerate());
+    }
+
+    #[test]
+    fn coordinates_beyond_the_exact_range_are_refused() {
+        let err = Geometry::new(&q(&[[0, 0, 0], [(1 << 33) + 1, 0, 0], [0, 1, 0]])).unwrap_err();
+        assert!(matches!(err, GeometryError::OutOfRange { vertex: 2, .. }), "{err:?}");
+        // At the limit: 2^33 scaled by 2 is exactly 2^34.
+        assert!(Geometry::new(&q(&[[0, 0, 0], [1 << 33, 0, 0], [0, 1, 0]])).is_ok());
+        assert!(Geometry::new(&q(&[[0, 0, 0], [-(1 << 33), 0, 0], [0, 1, 0]])).is_ok());
+    }
+}

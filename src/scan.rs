@@ -1,0 +1,195 @@
+//! Scan conversion: half-interval scanlines, edge crossings, spans and the
+//! pixel-centre rule, all on a polygon's scaled integer coordinates (see
+//! [`crate::plane`]).
+
+use std::cmp::Ordering;
+use std::ops::RangeInclusive;
+
+use crate::exact::{Q, ceil_div, floor_div};
+
+/// An x position in scaled units as the fraction `numerator / denominator`
+/// (`denominator > 0`), where a crossing falls on a scanline.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Crossing {
+    /// Numerator, in scaled units; at most `6R²` in magnitude.
+    pub numerator: i128,
+    /// Positive denominator, at most `2R`.
+    pub denominator: i128,
+}
+
+impl Crossing {
+    /// The position in pixel units, given the polygon's scale `2D`.
+    pub fn x(self, scale: i128) -> Q {
+        Q::new(self.numerator, self.denominator * scale)
+    }
+
+    fn cmp_position(&self, other: &Crossing) -> Ordering {
+        // Both products are below 6R²·2R < 2^107.
+        (self.numerator * other.denominator).cmp(&(other.numerator * self.denominator))
+    }
+}
+
+/// A pair of crossings, left and right, and the pixel columns whose centres
+/// lie between them (boundary included), clipped to the raster.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Span {
+    /// The left crossing.
+    pub left: Crossing,
+    /// The right crossing.
+    pub right: Crossing,
+    /// The covered columns, or `None` when no centre lies within the pair or
+    /// all of them lie outside the raster.
+    pub columns: Option<(u32, u32)>,
+}
+
+/// Scaled height of scanline `row`: the pixel centres' `y = row + 1/2`,
+/// i.e. `(2row + 1)·D` in scaled units.
+pub fn scanline_y(row: u32, denominator: i128) -> i128 {
+    (2 * i128::from(row) + 1) * denominator
+}
+
+/// The rows whose scanlines can meet the polygon: those with
+/// `y_min ≤ row + 1/2 < y_max`, clipped to `0 .. height`.
+pub fn rows(points: &[[i128; 3]], denominator: i128, height: u32) -> Option<RangeInclusive<u32>> {
+    let y_min = points.iter().map(|p| p[1]).min()?;
+    let y_max = points.iter().map(|p| p[1]).max()?;
+    // (2r + 1)·D ≥ y_min  ⇔  r ≥ ⌈(y_min − D) / 2D⌉
+    let first = ceil_div(y_min - denominator, 2 * denominator).max(0);
+    // (2r + 1)·D < y_max  ⇔  r < (y_max − D) / 2D  ⇔  r ≤ ⌈(y_max − D) / 2D⌉ − 1
+    let last = (ceil_div(y_max - denominator, 2 * denominator) - 1).min(i128::from(height) - 1);
+    (first <= last).then_some(first as u32..=last as u32)
+}
+
+/// The crossings of the polygon's edges with the scanline at scaled height
+/// `scan_y`, sorted left to right, written into `out`.
+///
+/// Rogers' half-interval convention: an edge crosses when
+/// `min(y₁, y₂) ≤ y < max(y₁, y₂)`, so a vertex on the scanline counts only
+/// for the edge whose lower end it is, and horizontal edges never cross.
+pub fn crossings(points: &[[i128; 3]], scan_y: i128, out: &mut Vec<Crossing>) {
+    out.clear();
+    let count = points.len();
+    for i in 0..count {
+        let [x1, y1, _] = points[i];
+        let [x2, y2, _] = points[(i + 1) % count];
+        if y1 == y2 || scan_y < y1.min(y2) || scan_y >= y1.max(y2) {
+            continue;
+        }
+        // x = x₁ + (x₂ − x₁)(y − y₁)/(y₂ − y₁), kept as one fraction.
+        let (numerator, denominator) = (x1 * (y2 - y1) + (x2 - x1) * (scan_y - y1), y2 - y1);
+        let (numerator, denominator) =
+            if denominator < 0 { (-numerator, -denominator) } else { (numerator, denominator) };
+        out.push(Crossing { numerator, denominator });
+    }
+    out.sort_unstable_by(Crossing::cmp_position);
+}
+
+/// The columns whose centres `x + 1/2` lie within `[left, right]`, boundary
+/// included ("the pixel whose centre lies inside or on the boundary"),
+/// clipped to `0 .. width`.
+pub fn columns(left: Crossing, right: Crossing, denominator: i128, width: u32) -> Option<(u32, u32)> {
+    // (2x + 1)·D ≥ n/d  ⇔  x ≥ ⌈(n − D·d) / 2D·d⌉
+    let first = ceil_div(left.numerator - denominator * left.denominator, 2 * denominator * left.denominator);
+    // (2x + 1)·D ≤ n/d  ⇔  x ≤ ⌊(n − D·d) / 2D·d⌋
+    let last = floor_div(right.numerator - denominator * right.denominator, 2 * denominator * right.denominator).0;
+    let first = first.max(0);
+    let last = last.min(i128::from(width) - 1);
+    (first <= last).then_some((first as u32, last as u32))
+}
+
+/// Pairs sorted crossings 1st–2nd, 3rd–4th, … into spans (an odd last
+/// crossing cannot happen for a closed polygon and is ignored).
+pub fn spans(crossings: &[Crossing], denominator: i128, width: u32, out: &mut Vec<Span>) {
+    out.clear();
+    out.extend(crossings.chunks_exact(2).map(|pair| Span {
+        left: pair[0],
+        right: pair[1],
+        columns: columns(pair[0], pair[1], denominator, width),
+    }));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Scaled points for integer vertices (D = 1, scale 2).
+    fn scaled(points: &[[i128; 2]]) -> Vec<[i128; 3]> {
+        points.iter().map(|p| [2 * p[0], 2 * p[1], 0]).collect()
+    }
+
+    fn crossing_xs(points: &[[i128; 3]], row: u32) -> Vec<Q> {
+        let mut out = Vec::new();
+        crossings(points, scanline_y(row, 1), &mut out);
+        out.iter().map(|c| c.x(2)).collect()
+    }
+
+    #[test]
+    fn vertex_on_scanline_counts_for_lower_edge_only() {
+        // A diamond whose side vertices sit exactly on scanline y = 2.5.
+        let points: Vec<[i128; 3]> = [[4, 1], [6, 5], [4, 9], [2, 5]].iter().map(|p| [p[0], p[1], 0]).collect();
+        // In scaled units with D = 1 a point at y = 5 is y = 2.5.
+        let mut out = Vec::new();
+        crossings(&points, 5, &mut out);
+        assert_eq!(out.len(), 2, "each side vertex counts once, for the edge it is the lower end of");
+        assert_eq!(out.iter().map(|c| c.x(2)).collect::<Vec<_>>(), vec![Q::from_integer(1), Q::from_integer(3)]);
+    }
+
+    #[test]
+    fn top_vertex_on_scanline_adds_no_crossing() {
+        // Triangle with apex exactly at y = 2.5 (scaled 5): the apex is the upper end of both edges.
+        let points: Vec<[i128; 3]> = [[0, 1], [8, 1], [4, 5]].iter().map(|p| [p[0], p[1], 0]).collect();
+        let mut out = Vec::new();
+        crossings(&points, 5, &mut out);
+        assert!(out.is_empty());
+        crossings(&points, 1, &mut out);
+        assert_eq!(out.len(), 2, "the base's scanline counts the two edges whose lower end is on it");
+    }
+
+    #[test]
+    fn horizontal_edges_never_cross() {
+        let points = scaled(&[[0, 0], [4, 0], [4, 4], [0, 4]]);
+        assert_eq!(crossing_xs(&points, 0), vec![Q::from_integer(0), Q::from_integer(4)]);
+        assert!(crossing_xs(&points, 4).is_empty(), "row 4's scanline 4.5 is above the square");
+    }
+
+    #[test]
+    fn centre_on_right_edge_is_covered() {
+        // Span [0.5, 2.5] covers centres 0.5, 1.5 and 2.5: both boundaries included.
+        let left = Crossing { numerator: 1, denominator: 1 };
+        let right = Crossing { numerator: 5, denominator: 1 };
+        assert_eq!(columns(left, right, 1, 32), Some((0, 2)));
+    }
+
+    #[test]
+    fn span_between_centres_covers_nothing() {
+        let left = Crossing { numerator: 6, denominator: 5 }; // 0.6
+        let right = Crossing { numerator: 14, denominator: 5 }; // 1.4
+        assert_eq!(columns(left, right, 1, 32), None);
+    }
+
+    #[test]
+    fn span_shrinking_to_one_centre_covers_it() {
+        let centre = Crossing { numerator: 3, denominator: 1 }; // 1.5
+        assert_eq!(columns(centre, centre, 1, 32), Some((1, 1)));
+    }
+
+    #[test]
+    fn spans_are_clipped_to_the_raster() {
+        let left = Crossing { numerator: -20, denominator: 1 };
+        let right = Crossing { numerator: 200, denominator: 1 };
+        assert_eq!(columns(left, right, 1, 32), Some((0, 31)));
+        let beyond = Crossing { numerator: 100, denominator: 1 };
+        assert_eq!(columns(beyond, right, 1, 32), None);
+    }
+
+    #[test]
+    fn rows_follow_the_half_open_rule() {
+        // y from 5 to 25: centres 5.5 … 24.5, rows 5 … 24.
+        let points = scaled(&[[10, 5], [10, 25], [25, 25], [25, 5]]);
+        assert_eq!(rows(&points, 1, 32), Some(5..=24));
+        // y from 5.5 to 6.5: only the centre 5.5 lies in [5.5, 6.5).
+        let points: Vec<[i128; 3]> = [[0, 11], [4, 11], [4, 13]].iter().map(|p| [p[0], p[1], 0]).collect();
+        assert_eq!(rows(&points, 1, 32), Some(5..=5));
+        assert_eq!(rows(&points, 1, 5), None);
+    }
+}

@@ -1,0 +1,382 @@
+//! Scene files: the JSON format (serde types) and its validation, once, into
+//! the domain type [`Scene`].
+//!
+//! ```json
+//! {
+//!   "width": 32, "height": 32, "frame_bits": 2, "depth_bits": 4,
+//!   "depth_test": "greater", "background": 0,
+//!   "effects": {"section": 12, "cull": "cw"},
+//!   "polygons": [
+//!     {"name": "triangle", "value": 2, "vertices": [[15, 15, 15], [25, 25, 5], [30, 10, 5]]}
+//!   ]
+//! }
+//! ```
+//!
+//! Numbers are JSON integers, JSON decimals read exactly (`2.1` is `21/10`),
+//! or strings holding a fraction (`"5/2"`) or a decimal (`"2.5"`). Unknown
+//! keys anywhere are errors.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+use serde::de::Error as _;
+
+use crate::depth::DepthTest;
+use crate::error::{Error, PolygonProblem};
+use crate::exact::{Q, parse_number};
+use crate::plane::Geometry;
+
+/// Largest width or height.
+pub const MAX_SIDE: u64 = 16_384;
+/// Largest number of pixels, checked before any buffer is allocated
+/// (2^26 pixels: 512 MiB for both buffers).
+pub const MAX_CELLS: u64 = 1 << 26;
+
+/// Which way a polygon's vertices run, seen from the viewer (x right, y up).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Winding {
+    /// Clockwise: Newell's `c < 0`.
+    Cw,
+    /// Counter-clockwise: Newell's `c > 0`.
+    Ccw,
+}
+
+impl Winding {
+    /// The winding of a polygon with Newell's `c`, or `None` when edge-on.
+    pub fn of(c: i128) -> Option<Winding> {
+        match c.signum() {
+            -1 => Some(Winding::Cw),
+            1 => Some(Winding::Ccw),
+            _ => None,
+        }
+    }
+
+    /// The name used in scene files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Winding::Cw => "cw",
+            Winding::Ccw => "ccw",
+        }
+    }
+}
+
+/// The optional effects a scene asks for; the plain algorithm runs when all
+/// are absent.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Effects {
+    /// Cross-section depth (seed 002): with `greater`, pixels are written only
+    /// where `z ≤ section`; with `less`, only where `z ≥ section`.
+    pub section: Option<Q>,
+    /// Back-face culling: skip polygons whose vertices run this way.
+    pub cull: Option<Winding>,
+}
+
+impl Effects {
+    /// The names of the effects the scene asks for, in a fixed order.
+    pub fn names(&self) -> Vec<&'static str> {
+        let mut names = Vec::new();
+        if self.section.is_some() {
+            names.push("section");
+        }
+        if self.cull.is_some() {
+            names.push("cull");
+        }
+        names
+    }
+}
+
+/// One validated polygon.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Polygon {
+    /// Its name (from the file, or `polygon N`).
+    pub name: String,
+    /// The framebuffer value it writes; fits `frame_bits`.
+    pub value: u32,
+    /// Its vertices as given, exact.
+    pub vertices: Vec<[Q; 3]>,
+    /// Its scaled integer geometry and plane.
+    pub geometry: Geometry,
+}
+
+/// A validated scene: every guarantee the rasterizer relies on holds.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Scene {
+    /// Raster width, 1 … [`MAX_SIDE`].
+    pub width: u32,
+    /// Raster height, 1 … [`MAX_SIDE`]; `width·height ≤` [`MAX_CELLS`].
+    pub height: u32,
+    /// Bits per framebuffer cell, 1 … 32.
+    pub frame_bits: u32,
+    /// Bits per z-buffer cell, 1 … 32.
+    pub depth_bits: u32,
+    /// Which depth is nearer.
+    pub depth_test: DepthTest,
+    /// The framebuffer's clear value; fits `frame_bits`.
+    pub background: u32,
+    /// The effects asked for.
+    pub effects: Effects,
+    /// The polygons in drawing order.
+    pub polygons: Vec<Polygon>,
+}
+
+impl Scene {
+    /// The largest value the z-buffer holds: `2^depth_bits − 1`.
+    pub fn depth_max(&self) -> u32 {
+        max_for_bits(self.depth_bits)
+    }
+
+    /// Reads and validates a scene file.
+    pub fn load(path: &Path) -> Result<Scene, Error> {
+        let text = std::fs::read_to_string(path).map_err(|source| Error::Read { path: path.to_owned(), source })?;
+        Scene::from_json(&text, path)
+    }
+
+    /// Validates scene JSON; `path` is used in error messages only.
+    pub fn from_json(text: &str, path: &Path) -> Result<Scene, Error> {
+        let mut deserializer = serde_json::Deserializer::from_str(text);
+        let file: SceneFile =
+            serde_path_to_error::deserialize(&mut deserializer).map_err(|error| Error::SceneFormat {
+                path: path.to_owned(),
+                location: describe_location(&error.path().to_string()),
+                message: json_message(error.inner()),
+            })?;
+        deserializer.end().map_err(|error| Error::SceneFormat {
+            path: path.to_owned(),
+            location: String::new(),
+            message: json_message(&error),
+        })?;
+        file.validate(path)
+    }
+
+    /// Finds a polygon by 1-based number or by name.
+    pub fn find_polygon(&self, spec: &str) -> Result<usize, Error> {
+        if let Ok(number) = spec.parse::<usize>() {
+            if (1..=self.polygons.len()).contains(&number) {
+                return Ok(number - 1);
+            }
+            return Err(Error::Usage(format!(
+                "there is no polygon {number}: the scene has {} (number them from 1)",
+                self.polygons.len()
+            )));
+        }
+        self.polygons.iter().position(|p| p.name == spec).ok_or_else(|| {
+            let names: Vec<String> = self.polygons.iter().map(|p| format!("\"{}\"", p.name)).collect();
+            Error::Usage(format!("there is no polygon named \"{spec}\": the scene has {}", names.join(", ")))
+        })
+    }
+}
+
+/// `2^bits − 1` for 1 ≤ bits ≤ 32.
+pub fn max_for_bits(bits: u32) -> u32 {
+    debug_assert!((1..=32).contains(&bits));
+    (u64::MAX >> (64 - bits)) as u32
+}
+
+/// serde_json's message, saying "not valid JSON" when the syntax is at fault.
+fn json_message(error: &serde_json::Error) -> String {
+    match error.classify() {
+        serde_json::error::Category::Syntax | serde_json::error::Category::Eof => format!("not valid JSON: {error}"),
+        _ => error.to_string(),
+    }
+}
+
+/// Turns serde's path `polygons[1].vertices[0][2]` into
+/// `polygon 2: vertices[0][2]`, so messages name polygons as the CLI does.
+fn describe_location(path: &str) -> String {
+    if path == "." {
+        return String::new();
+    }
+    if let Some(rest) = path.strip_prefix("polygons[")
+        && let Some((index, tail)) = rest.split_once(']')
+        && let Ok(index) = index.parse::<usize>()
+    {
+        let tail = tail.trim_start_matches('.');
+        return if tail.is_empty() {
+            format!("polygon {}", index + 1)
+        } else {
+            format!("polygon {}: {tail}", index + 1)
+        };
+    }
+    path.to_string()
+}
+
+/// An exact number as written in a scene file.
+#[derive(Debug, Clone, Copy)]
+struct Number(Q);
+
+impl<'de> Deserialize<'de> for Number {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Number, D::Error> {
+        // With serde_json's `arbitrary_precision`, a JSON number keeps its digits.
+        let text = match serde_json::Value::deserialize(deserializer)? {
+            serde_json::Value::Number(number) => number.to_string(),
+            serde_json::Value::String(text) => text,
+            other => return Err(D::Error::custom(format!("expected a number, found {}", kind(&other)))),
+        };
+        parse_number(&text).map(Number).map_err(D::Error::custom)
+    }
+}
+
+fn kind(value: &serde_json::Value) -> &'static str {
+    match value {
+        serde_json::Value::Null => "null",
+        serde_json::Value::Bool(_) => "a boolean",
+        serde_json::Value::Number(_) => "a number",
+        serde_json::Value::String(_) => "a string",
+        serde_json::Value::Array(_) => "a list",
+        serde_json::Value::Object(_) => "an object",
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    width: Option<u64>,
+    height: Option<u64>,
+    frame_bits: Option<u64>,
+    depth_bits: Option<u64>,
+    depth_test: Option<DepthTest>,
+    background: Option<u64>,
+    #[serde(default)]
+    effects: EffectsFile,
+    polygons: Vec<PolygonFile>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct EffectsFile {
+    section: Option<Number>,
+    cull: Option<Winding>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PolygonFile {
+    name: Option<String>,
+    value: u64,
+    vertices: Vec<[Number; 3]>,
+}
+
+impl SceneFile {
+    fn validate(self, path: &Path) -> Result<Scene, Error> {
+        let setting = |key: &'static str, message: String| Error::Setting { path: path.to_owned(), key, message };
+        let bits = |key: &'static str, value: Option<u64>, default: u32| -> Result<u32, Error> {
+            match value.unwrap_or(u64::from(default)) {
+                bits @ 1..=32 => Ok(bits as u32),
+                other => Err(setting(key, format!("{other} is not supported: use 1 to 32 bits"))),
+            }
+        };
+        let side = |key: &'static str, value: Option<u64>| -> Result<u32, Error> {
+            match value.unwrap_or(32) {
+                0 => Err(setting(key, "must be at least 1 pixel".into())),
+                side if side > MAX_SIDE => {
+                    Err(setting(key, format!("{side} is beyond the limit of {MAX_SIDE} pixels")))
+                }
+                side => Ok(side as u32),
+            }
+        };
+        let width = side("width", self.width)?;
+        let height = side("height", self.height)?;
+        if u64::from(width) * u64::from(height) > MAX_CELLS {
+            return Err(setting(
+                "width",
+                format!(
+                    "{width}×{height} is {} pixels, beyond the limit of {MAX_CELLS}",
+                    u64::from(width) * u64::from(height)
+                ),
+            ));
+        }
+        let frame_bits = bits("frame_bits", self.frame_bits, 2)?;
+        let depth_bits = bits("depth_bits", self.depth_bits, 4)?;
+        let frame_max = u64::from(max_for_bits(frame_bits));
+        let background = self.background.unwrap_or(0);
+        if background > frame_max {
+            return Err(setting(
+                "background",
+                format!("{background} does not fit a {frame_bits}-bit framebuffer (at most {frame_max})"),
+            ));
+        }
+        let mut polygons = Vec::with_capacity(self.polygons.len());
+        for (index, polygon) in self.polygons.into_iter().enumerate() {
+            polygons.push(polygon.validate(index, frame_bits, path)?);
+        }
+        Ok(Scene {
+            width,
+            height,
+            frame_bits,
+            depth_bits,
+            depth_test: self.depth_test.unwrap_or_default(),
+            background: background as u32,
+            effects: Effects { section: self.effects.section.map(|n| n.0), cull: self.effects.cull },
+            polygons,
+        })
+    }
+}
+
+impl PolygonFile {
+    fn validate(self, index: usize, frame_bits: u32, path: &Path) -> Result<Polygon, Error> {
+        let name = self.name.unwrap_or_else(|| format!("polygon {}", index + 1));
+        let fail = |name: &str, problem: PolygonProblem| Error::Polygon {
+            path: PathBuf::from(path),
+            index,
+            name: name.to_owned(),
+            problem: Box::new(problem),
+        };
+        if self.value > u64::from(max_for_bits(frame_bits)) {
+            return Err(fail(&name, PolygonProblem::ValueTooWide { value: self.value, frame_bits }));
+        }
+        let vertices: Vec<[Q; 3]> = self.vertices.iter().map(|v| v.map(|n| n.0)).collect();
+        let geometry = Geometry::new(&vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
+        Ok(Polygon { name, value: self.value as u32, vertices, geometry })
+    }
+}
+
+impl fmt::Display for Winding {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Winding::Cw => "clockwise",
+            Winding::Ccw => "counter-clockwise",
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Scene, String> {
+        Scene::from_json(text, Path::new("s.json")).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn defaults_are_the_books() {
+        let scene = parse(r#"{"polygons": []}"#).unwrap();
+        assert_eq!((scene.width, scene.height, scene.frame_bits, scene.depth_bits), (32, 32, 2, 4));
+        assert_eq!(scene.depth_test, DepthTest::Greater);
+        assert_eq!(scene.depth_max(), 15);
+    }
+
+    #[test]
+    fn json_decimals_keep_their_digits() {
+        let scene =
+            parse(r#"{"polygons": [{"value": 1, "vertices": [[0.1, 0, 2.1], [3, 0, "5/2"], [0, 3, 0]]}]}"#).unwrap();
+        assert_eq!(scene.polygons[0].vertices[0][0], Q::new(1, 10));
+        assert_eq!(scene.polygons[0].vertices[0][2], Q::new(21, 10));
+        assert_eq!(scene.polygons[0].vertices[1][2], Q::new(5, 2));
+    }
+
+    #[test]
+    fn errors_name_the_polygon() {
+        let err = parse(r#"{"polygons": [{"value": 1, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}, {"value": 1, "vertices": [[0, 0, "abc"]]}]}"#)
+            .unwrap_err();
+        assert!(err.starts_with("s.json: polygon 2: vertices[0][2]: \"abc\" is not a number"), "{err}");
+    }
+
+    #[test]
+    fn bits_of_32_are_supported() {
+        let scene = parse(r#"{"frame_bits": 32, "depth_bits": 32, "background": 4294967295, "polygons": []}"#).unwrap();
+        assert_eq!(scene.depth_max(), u32::MAX);
+        assert_eq!(scene.background, u32::MAX);
+    }
+}

@@ -1,0 +1,86 @@
+//! Every bad input is refused with exit status 2, one line on stderr naming the
+//! file (and the polygon, where there is one), and nothing on stdout.
+
+use crate::{scene_file, snapshot, zsim_in};
+
+const TRIANGLE: &str = r#"{"name": "ok", "value": 1, "vertices": [[0, 0, 0], [4, 0, 0], [0, 4, 0]]}"#;
+
+/// Runs `zsim run` on a scene written from `text` and returns its one-line error.
+fn refused(file: &str, text: &str) -> String {
+    let (dir, name) = scene_file(file, text);
+    let run = zsim_in(Some(&dir), &["run", &name]);
+    assert_eq!(run.code, 2, "exit status for {file}; stderr: {}", run.stderr);
+    assert_eq!(run.stdout, "", "nothing on stdout for {file}");
+    assert_eq!(run.stderr.lines().count(), 1, "one line on stderr for {file}: {}", run.stderr);
+    assert!(run.stderr.contains(file), "the message names the file: {}", run.stderr);
+    run.stderr
+}
+
+#[test]
+fn bad_scenes_are_refused_with_one_line_each() {
+    let cases: Vec<(&str, String)> = vec![
+        ("not_json.json", "this is not json".into()),
+        ("trailing.json", format!(r#"{{"polygons": [{TRIANGLE}]}} extra"#)),
+        ("unknown_key.json", format!(r#"{{"widht": 32, "polygons": [{TRIANGLE}]}}"#)),
+        (
+            "unknown_polygon_key.json",
+            r#"{"polygons": [{"value": 1, "colour": 2, "vertices": [[0,0,0],[1,0,0],[0,1,0]]}]}"#.into(),
+        ),
+        ("unknown_effect.json", format!(r#"{{"effects": {{"sectoin": 3}}, "polygons": [{TRIANGLE}]}}"#)),
+        ("bad_cull.json", format!(r#"{{"effects": {{"cull": "left"}}, "polygons": [{TRIANGLE}]}}"#)),
+        ("bad_depth_test.json", format!(r#"{{"depth_test": "nearer", "polygons": [{TRIANGLE}]}}"#)),
+        (
+            "value_too_wide.json",
+            r#"{"polygons": [{"name": "wide", "value": 4, "vertices": [[0,0,0],[1,0,0],[0,1,0]]}]}"#.into(),
+        ),
+        ("background_too_wide.json", format!(r#"{{"background": 7, "polygons": [{TRIANGLE}]}}"#)),
+        ("frame_bits_zero.json", format!(r#"{{"frame_bits": 0, "polygons": [{TRIANGLE}]}}"#)),
+        ("depth_bits_33.json", format!(r#"{{"depth_bits": 33, "polygons": [{TRIANGLE}]}}"#)),
+        ("width_zero.json", format!(r#"{{"width": 0, "polygons": [{TRIANGLE}]}}"#)),
+        ("height_huge.json", format!(r#"{{"height": 100000, "polygons": [{TRIANGLE}]}}"#)),
+        ("too_many_cells.json", format!(r#"{{"width": 16384, "height": 16384, "polygons": [{TRIANGLE}]}}"#)),
+        ("negative_width.json", format!(r#"{{"width": -3, "polygons": [{TRIANGLE}]}}"#)),
+        ("two_vertices.json", r#"{"polygons": [{"name": "stick", "value": 1, "vertices": [[0,0,0],[1,1,1]]}]}"#.into()),
+        ("short_vertex.json", r#"{"polygons": [{"value": 1, "vertices": [[0,0,0],[1,0],[0,1,0]]}]}"#.into()),
+        (
+            "not_planar.json",
+            r#"{"polygons": [{"name": "bent", "value": 1, "vertices": [[0,0,0],[4,0,0],[4,4,0],[0,4,1]]}]}"#.into(),
+        ),
+        ("not_a_number.json", r#"{"polygons": [{"value": 1, "vertices": [[0,0,"abc"],[1,0,0],[0,1,0]]}]}"#.into()),
+        ("divide_by_zero.json", r#"{"polygons": [{"value": 1, "vertices": [[0,0,"1/0"],[1,0,0],[0,1,0]]}]}"#.into()),
+        ("boolean_coordinate.json", r#"{"polygons": [{"value": 1, "vertices": [[0,0,true],[1,0,0],[0,1,0]]}]}"#.into()),
+        ("bad_section.json", format!(r#"{{"effects": {{"section": "x"}}, "polygons": [{TRIANGLE}]}}"#)),
+        (
+            "out_of_range.json",
+            r#"{"polygons": [{"name": "far", "value": 1, "vertices": [[0,0,0],[8589934593,0,0],[0,1,0]]}]}"#.into(),
+        ),
+        (
+            "fine_decimals_out_of_range.json",
+            r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [[0.0000001,0,0],[1000,0,0],[0,1,0]]}]}"#.into(),
+        ),
+        (
+            "second_polygon.json",
+            format!(r#"{{"polygons": [{TRIANGLE}, {{"name": "bad", "value": 1, "vertices": [[0,0,0],[1,0,0]]}}]}}"#),
+        ),
+    ];
+    let mut messages = String::new();
+    for (file, text) in &cases {
+        messages.push_str(&refused(file, text));
+    }
+    snapshot!("bad_input_messages", messages);
+}
+
+#[test]
+fn missing_file_is_refused() {
+    let run = zsim_in(None, &["run", "no/such/scene.json"]);
+    assert_eq!(run.code, 2);
+    assert_eq!(run.stdout, "");
+    assert!(run.stderr.starts_with("zsim: no/such/scene.json: cannot read:"), "{}", run.stderr);
+}
+
+#[test]
+fn usage_errors_exit_with_2() {
+    let run = zsim_in(None, &["run", "examples/rogers.json", "--format", "xml"]);
+    assert_eq!(run.code, 2);
+    assert_eq!(run.stdout, "");
+}

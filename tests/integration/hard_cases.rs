@@ -1,0 +1,160 @@
+//! The numerically hard cases of the exact rules, each pinned by a named test
+//! with exact expected buffers.
+
+use std::path::Path;
+
+use zsim::pipeline::Simulation;
+use zsim::scene::Scene;
+use zsim::trace::Unobserved;
+
+/// Runs a scene given as JSON and returns (framebuffer, z-buffer), top row first.
+fn run(json: &str) -> (Vec<Vec<u32>>, Vec<Vec<u32>>) {
+    let scene = Scene::from_json(json, Path::new("inline.json")).unwrap();
+    let mut simulation = Simulation::new(&scene);
+    simulation.finish(&mut Unobserved);
+    (simulation.buffers().frame_rows(), simulation.buffers().depth_rows())
+}
+
+fn rows(text: &str) -> Vec<Vec<u32>> {
+    crate::parse_matrix(text)
+}
+
+#[test]
+fn vertices_on_pixel_centres_are_covered() {
+    // Triangle with its corners exactly on the centres of (0,0), (4,0) and (0,4).
+    let (frame, _) = run(
+        r#"{"width": 6, "height": 5, "polygons": [{"value": 1, "vertices": [[0.5,0.5,5],[4.5,0.5,5],[0.5,4.5,5]]}]}"#,
+    );
+    assert_eq!(
+        frame,
+        rows("0 0 0 0 0 0\n1 1 0 0 0 0\n1 1 1 0 0 0\n1 1 1 1 0 0\n1 1 1 1 1 0"),
+        "the top vertex's row (y + 1/2 = 4.5 = y_max) is excluded by the half-open rule; the others are in"
+    );
+}
+
+#[test]
+fn edge_through_pixel_centres_covers_them() {
+    // The hypotenuse x + y = 5 passes through the centres (0.5, 4.5), (1.5, 3.5), …
+    let (frame, _) =
+        run(r#"{"width": 5, "height": 5, "polygons": [{"value": 1, "vertices": [[0,0,5],[5,0,5],[0,5,5]]}]}"#);
+    assert_eq!(frame, rows("1 0 0 0 0\n1 1 0 0 0\n1 1 1 0 0\n1 1 1 1 0\n1 1 1 1 1"));
+}
+
+#[test]
+fn vertex_exactly_on_a_scanline_counts_once() {
+    // A diamond whose left and right vertices lie on scanline 2.5.
+    let (frame, _) = run(
+        r#"{"width": 7, "height": 5, "polygons": [{"value": 1, "vertices": [[3.5,0,5],[6,2.5,5],[3.5,5,5],[1,2.5,5]]}]}"#,
+    );
+    assert_eq!(frame, rows("0 0 0 1 0 0 0\n0 0 1 1 1 0 0\n0 1 1 1 1 1 0\n0 0 1 1 1 0 0\n0 0 0 1 0 0 0"));
+}
+
+#[test]
+fn horizontal_edges_bound_rows_half_open() {
+    // A square from y = 1 to y = 3: rows 1 and 2 (centres 1.5, 2.5); row 3's 3.5 is out.
+    let (frame, _) =
+        run(r#"{"width": 4, "height": 5, "polygons": [{"value": 1, "vertices": [[1,1,5],[3,1,5],[3,3,5],[1,3,5]]}]}"#);
+    assert_eq!(frame, rows("0 0 0 0\n0 0 0 0\n0 1 1 0\n0 1 1 0\n0 0 0 0"));
+}
+
+#[test]
+fn span_shrinking_to_one_centre_covers_exactly_it() {
+    // A downward-pointing triangle whose span on scanline 0.5 is the single point x = 2.5.
+    let (frame, _) =
+        run(r#"{"width": 5, "height": 2, "polygons": [{"value": 1, "vertices": [[2.5,0.5,5],[4.5,2,5],[0.5,2,5]]}]}"#);
+    assert_eq!(frame, rows("0 1 1 1 0\n0 0 1 0 0"));
+}
+
+#[test]
+fn sliver_thinner_than_a_pixel_covers_only_centres_inside_it() {
+    // A sliver 1/256 wide around x = 2.5 covers column 2 on every row; one beside it covers nothing.
+    let (frame, _) = run(r#"{"width": 5, "height": 4, "polygons": [
+            {"value": 1, "vertices": [["639/256",0,5],["641/256",0,5],["641/256",4,5],["639/256",4,5]]},
+            {"value": 2, "vertices": [["700/256",0,5],["701/256",0,5],["701/256",4,5],["700/256",4,5]]}]}"#);
+    assert_eq!(frame, rows("0 0 1 0 0\n0 0 1 0 0\n0 0 1 0 0\n0 0 1 0 0"));
+}
+
+#[test]
+fn depth_exactly_half_rounds_up() {
+    // Plane z = x / 2 + 1/4: at the centre of column 0, z = 1/2; column 2, z = 3/2; column 4, 5/2.
+    let (_, depth) = run(
+        r#"{"width": 5, "height": 1, "depth_bits": 4, "polygons": [{"value": 1, "vertices": [[0,0,"1/4"],[5,0,"11/4"],[5,1,"11/4"],[0,1,"1/4"]]}]}"#,
+    );
+    assert_eq!(depth, rows("1 1 2 2 3"));
+}
+
+#[test]
+fn depth_equal_to_the_stored_value_does_not_overwrite() {
+    // Two coincident squares at z = 5: the first drawn keeps every pixel.
+    let (frame, depth) = run(r#"{"width": 2, "height": 1, "polygons": [
+            {"value": 1, "vertices": [[0,0,5],[2,0,5],[2,1,5],[0,1,5]]},
+            {"value": 2, "vertices": [[0,0,5],[2,0,5],[2,1,5],[0,1,5]]}]}"#);
+    assert_eq!((frame, depth), (rows("1 1"), rows("5 5")));
+}
+
+#[test]
+fn depth_below_zero_and_above_the_maximum_saturates() {
+    // greater: a plane at z = −3 never beats the cleared 0; a plane at z = 40 stores 15.
+    let (frame, depth) = run(r#"{"width": 2, "height": 1, "polygons": [
+            {"value": 1, "vertices": [[0,0,-3],[1,0,-3],[1,1,-3],[0,1,-3]]},
+            {"value": 2, "vertices": [[1,0,40],[2,0,40],[2,1,40],[1,1,40]]}]}"#);
+    assert_eq!((frame, depth), (rows("0 2"), rows("0 15")));
+    // less: cleared to 15; a plane at z = −3 is written and stores 0, one at 40 is hidden.
+    let (frame, depth) = run(r#"{"width": 2, "height": 1, "depth_test": "less", "polygons": [
+            {"value": 1, "vertices": [[0,0,-3],[1,0,-3],[1,1,-3],[0,1,-3]]},
+            {"value": 2, "vertices": [[1,0,40],[2,0,40],[2,1,40],[1,1,40]]}]}"#);
+    assert_eq!((frame, depth), (rows("1 0"), rows("0 15")));
+}
+
+#[test]
+fn concave_polygon_leaves_its_notch_empty() {
+    // A "U" shape: the notch between x = 2 and x = 4 above y = 2 stays background.
+    let (frame, _) = run(
+        r#"{"width": 6, "height": 4, "polygons": [{"value": 1, "vertices": [[0,0,5],[6,0,5],[6,4,5],[4,4,5],[4,2,5],[2,2,5],[2,4,5],[0,4,5]]}]}"#,
+    );
+    assert_eq!(frame, rows("1 1 0 0 1 1\n1 1 0 0 1 1\n1 1 1 1 1 1\n1 1 1 1 1 1"));
+}
+
+#[test]
+fn self_intersecting_polygon_fills_by_even_odd_pairs() {
+    // A bow-tie in the plane z = 0 whose two loops run opposite ways: Newell's
+    // normal cancels, so it has no plane and covers nothing.
+    let (frame, _) =
+        run(r#"{"width": 4, "height": 4, "polygons": [{"value": 1, "vertices": [[0,0,5],[4,4,5],[4,0,5],[0,4,5]]}]}"#);
+    assert_eq!(frame, rows("0 0 0 0\n0 0 0 0\n0 0 0 0\n0 0 0 0"));
+    // A pentagram: the crossings pair 1st–2nd, 3rd–4th, so the centre pentagon
+    // is a hole and only the five points are filled. (Expected matrix worked out
+    // with an even-odd count of Python `Fraction` crossings at each centre.)
+    let (frame, _) = run(
+        r#"{"width": 10, "height": 10, "polygons": [{"value": 1, "vertices": [[5,10,5],[8,0,5],[0,6,5],[10,6,5],[2,0,5]]}]}"#,
+    );
+    assert_eq!(
+        frame,
+        rows(
+            "0 0 0 0 0 0 0 0 0 0
+             0 0 0 0 0 0 0 0 0 0
+             0 0 0 0 1 1 0 0 0 0
+             0 0 0 0 1 1 0 0 0 0
+             0 1 1 1 0 0 1 1 1 0
+             0 0 1 0 0 0 0 1 0 0
+             0 0 0 0 0 0 0 0 0 0
+             0 0 0 1 1 1 1 0 0 0
+             0 0 1 1 0 0 1 1 0 0
+             0 0 1 0 0 0 0 1 0 0"
+        )
+    );
+}
+
+#[test]
+fn collinear_polygon_covers_nothing() {
+    let (frame, depth) =
+        run(r#"{"width": 3, "height": 3, "polygons": [{"value": 1, "vertices": [[0,0,0],[1,1,1],[3,3,3]]}]}"#);
+    assert_eq!((frame, depth), (rows("0 0 0\n0 0 0\n0 0 0"), rows("0 0 0\n0 0 0\n0 0 0")));
+}
+
+#[test]
+fn edge_on_polygon_covers_nothing() {
+    let (frame, _) =
+        run(r#"{"width": 3, "height": 3, "polygons": [{"value": 1, "vertices": [[1,0,0],[1,3,0],[1,3,5],[1,0,5]]}]}"#);
+    assert_eq!(frame, rows("0 0 0\n0 0 0\n0 0 0"));
+}

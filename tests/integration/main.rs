@@ -1,0 +1,76 @@
+//! zsim's integration tests: one binary, a module per area.
+//!
+//! - To add a scene: put it in `examples/` (or write it inline with
+//!   [`scene_file`]), run it with [`zsim`] and snapshot what a person reads
+//!   with [`snapshot!`].
+//! - Snapshots live in the top-level `snapshots/` folder. After a deliberate
+//!   change in output run `cargo insta review` (or `cargo insta test
+//!   --review`), read each diff and accept it only if it is right.
+//! - CLI tests run the real binary and check stdout, stderr and the exit code.
+
+mod bad_input;
+mod golden;
+mod hard_cases;
+mod run_command;
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// What one run of the binary produced.
+pub struct Run {
+    pub code: i32,
+    pub stdout: String,
+    pub stderr: String,
+}
+
+/// Runs the real `zsim` binary in `dir` (the project root when `None`).
+pub fn zsim_in(dir: Option<&Path>, args: &[&str]) -> Run {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(args)
+        .current_dir(dir.unwrap_or(root))
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("the zsim binary runs");
+    Run {
+        code: output.status.code().expect("zsim exits with a code, not a signal"),
+        stdout: String::from_utf8(output.stdout).expect("stdout is UTF-8"),
+        stderr: String::from_utf8(output.stderr).expect("stderr is UTF-8"),
+    }
+}
+
+/// Runs the real `zsim` binary in the project root.
+pub fn zsim(args: &[&str]) -> Run {
+    zsim_in(None, args)
+}
+
+/// Writes a scene into the test scratch folder and returns that folder and
+/// the file name, so error messages carry a short, stable path.
+pub fn scene_file(name: &str, text: &str) -> (PathBuf, String) {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("scenes");
+    std::fs::create_dir_all(&dir).expect("scratch folder");
+    std::fs::write(dir.join(name), text).expect("scene written");
+    (dir, name.to_string())
+}
+
+/// Parses a matrix as the book prints it: whitespace-separated integers, top row first.
+pub fn parse_matrix(text: &str) -> Vec<Vec<u32>> {
+    text.lines()
+        .filter(|line| !line.trim().is_empty())
+        .map(|line| line.split_whitespace().map(|v| v.parse().expect("a matrix cell")).collect())
+        .collect()
+}
+
+/// Snapshots into the top-level `snapshots/` folder.
+#[macro_export]
+macro_rules! snapshot {
+    ($name:expr, $value:expr) => {
+        insta::with_settings!({
+            snapshot_path => "../../snapshots",
+            prepend_module_to_snapshot => false,
+            omit_expression => true,
+        }, {
+            insta::assert_snapshot!($name, $value);
+        })
+    };
+}

@@ -1,0 +1,65 @@
+//! `zsim run`: text, `--final`, `--axes`, `--format json` and `--format none`.
+
+use crate::{scene_file, snapshot, zsim, zsim_in};
+
+#[test]
+fn json_has_one_step_per_polygon_top_row_first() {
+    let run = zsim(&["run", "examples/rogers.json", "--format", "json"]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    let json: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
+    let keys: Vec<&str> = json.as_object().unwrap().keys().map(String::as_str).collect();
+    assert_eq!(keys, ["effects", "height", "steps", "width"]);
+    assert_eq!(json["width"], 32);
+    assert_eq!(json["height"], 32);
+    assert_eq!(json["effects"], serde_json::json!([]));
+    let steps = json["steps"].as_array().unwrap();
+    assert_eq!(steps.len(), 2);
+    assert_eq!(steps[0]["polygon"], "rectangle");
+    assert_eq!(steps[1]["polygon"], "triangle");
+    // Row 0 of the output is y = 31; pixel (20, 15) is in row 31 − 15 = 16.
+    assert_eq!(steps[1]["frame"][16][20], 2);
+    assert_eq!(steps[1]["depth"][16][20], 11);
+    assert_eq!(steps[1]["depth"].as_array().unwrap().len(), 32);
+}
+
+#[test]
+fn json_lists_the_effects_simulated_and_keeps_steps_that_draw_nothing() {
+    let (dir, name) = scene_file(
+        "section_and_edge_on.json",
+        r#"{"width": 8, "height": 8, "effects": {"section": 12},
+            "polygons": [{"name": "wall", "value": 1, "vertices": [[2,0,0],[2,8,0],[2,8,9],[2,0,9]]},
+                         {"name": "floor", "value": 2, "vertices": [[0,0,10],[8,0,10],[8,8,10],[0,8,10]]}]}"#,
+    );
+    let run = zsim_in(Some(&dir), &["run", &name, "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
+    assert_eq!(json["effects"], serde_json::json!(["section"]));
+    assert_eq!(json["steps"][0]["polygon"], "wall");
+    assert_eq!(json["steps"][0]["frame"], serde_json::json!(vec![vec![0; 8]; 8]));
+    assert_eq!(json["steps"][1]["frame"], serde_json::json!(vec![vec![2; 8]; 8]));
+}
+
+#[test]
+fn final_prints_only_the_last_state() {
+    let run = zsim(&["run", "examples/rogers.json", "--final"]);
+    assert_eq!(run.code, 0);
+    assert_eq!(run.stdout.matches("framebuffer after").count(), 1);
+    assert!(run.stdout.contains("framebuffer after polygon 2 \"triangle\""));
+    let json = zsim(&["run", "examples/rogers.json", "--final", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_str(&json.stdout).unwrap();
+    assert_eq!(json["steps"].as_array().unwrap().len(), 1);
+}
+
+#[test]
+fn format_none_prints_one_summary_line() {
+    let run = zsim(&["run", "examples/rogers.json", "--format", "none"]);
+    assert_eq!(run.code, 0);
+    assert_eq!(run.stdout.lines().count(), 1);
+    snapshot!("run_rogers_none", run.stdout);
+}
+
+#[test]
+fn axes_label_rows_and_columns() {
+    let run = zsim(&["run", "examples/rogers.json", "--final", "--axes"]);
+    assert_eq!(run.code, 0);
+    snapshot!("run_rogers_final_axes", run.stdout);
+}
