@@ -68,9 +68,12 @@
 #![warn(missing_docs)]
 
 pub mod buffer;
+pub mod check;
 pub mod depth;
 pub mod error;
 pub mod exact;
+pub mod explain;
+pub mod figure;
 pub mod pipeline;
 pub mod plane;
 pub mod report;

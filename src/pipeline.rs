@@ -73,6 +73,11 @@ impl<'s> Simulation<'s> {
         Some(index)
     }
 
+    /// Draws the remaining polygons up to and including polygon `last`.
+    pub fn draw_through<O: Observer>(&mut self, last: usize, observer: &mut O) {
+        while self.next <= last && self.draw_next(observer).is_some() {}
+    }
+
     /// Draws every remaining polygon.
     pub fn finish<O: Observer>(&mut self, observer: &mut O) {
         while self.draw_next(observer).is_some() {}

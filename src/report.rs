@@ -47,37 +47,82 @@ pub fn polygon_heading(scene: &Scene, index: usize) -> String {
     }
 }
 
+/// How [`matrix`] prints.
+#[derive(Debug, Clone, Default)]
+pub struct MatrixStyle {
+    /// Label rows with y and columns with x.
+    pub axes: bool,
+    /// Colour cells by value with ANSI escapes (for terminals only).
+    pub color: bool,
+    /// Print only the rows with y in this range (all when `None`).
+    pub rows: Option<std::ops::RangeInclusive<u32>>,
+    /// Mark the row with this y with `▶`.
+    pub mark: Option<u32>,
+}
+
 /// Formats a matrix (rows top first) as the book prints it: each column
 /// right-aligned to its widest value, columns separated by one space.
 /// With `axes`, rows are labelled with y (top row = `height − 1`) and
 /// columns with x.
 pub fn matrix(rows: &[Vec<u32>], axes: bool) -> String {
+    matrix_styled(rows, &MatrixStyle { axes, ..MatrixStyle::default() })
+}
+
+/// [`matrix`] with colour, a window of rows and a marked row.
+pub fn matrix_styled(rows: &[Vec<u32>], style: &MatrixStyle) -> String {
     let height = rows.len();
     let width = rows.first().map_or(0, Vec::len);
     let mut column_widths: Vec<usize> =
         (0..width).map(|x| rows.iter().map(|row| digits(row[x])).max().unwrap_or(1)).collect();
-    if axes {
+    if style.axes {
         for (x, w) in column_widths.iter_mut().enumerate() {
             *w = (*w).max(digits(x as u32));
         }
     }
     let label_width = digits(height.saturating_sub(1) as u32);
+    let marker = |y: u32| match style.mark {
+        Some(m) if m == y => "▶ ",
+        Some(_) => "  ",
+        None => "",
+    };
     let mut out = String::new();
     for (i, row) in rows.iter().enumerate() {
-        if axes {
-            out.push_str(&format!("{:>label_width$} | ", height - 1 - i));
+        let y = (height - 1 - i) as u32;
+        if style.rows.as_ref().is_some_and(|r| !r.contains(&y)) {
+            continue;
         }
-        let cells: Vec<String> = row.iter().zip(&column_widths).map(|(value, w)| format!("{value:>w$}")).collect();
+        out.push_str(marker(y));
+        if style.axes {
+            out.push_str(&format!("{y:>label_width$} | "));
+        }
+        let cells: Vec<String> = row
+            .iter()
+            .zip(&column_widths)
+            .map(|(value, w)| paint(&format!("{value:>w$}"), *value, style.color))
+            .collect();
         out.push_str(&cells.join(" "));
         out.push('\n');
     }
-    if axes {
+    if style.axes {
+        let pad = if style.mark.is_some() { "  " } else { "" };
         let total: usize = column_widths.iter().sum::<usize>() + width.saturating_sub(1);
-        out.push_str(&format!("{:>label_width$} +-{}\n", "", "-".repeat(total)));
+        out.push_str(&format!("{pad}{:>label_width$} +-{}\n", "", "-".repeat(total)));
         let labels: Vec<String> = column_widths.iter().enumerate().map(|(x, w)| format!("{x:>w$}")).collect();
-        out.push_str(&format!("{:>label_width$}   {}\n", "", labels.join(" ")));
+        out.push_str(&format!("{pad}{:>label_width$}   {}\n", "", labels.join(" ")));
     }
     out
+}
+
+/// Wraps a cell in an ANSI colour chosen by its value (0 is dim).
+pub fn paint(text: &str, value: u32, color: bool) -> String {
+    const PALETTE: [u8; 6] = [33, 36, 35, 32, 34, 31];
+    if !color {
+        return text.to_string();
+    }
+    if value == 0 {
+        return format!("\x1b[2m{text}\x1b[0m");
+    }
+    format!("\x1b[{}m{text}\x1b[0m", PALETTE[(value as usize - 1) % PALETTE.len()])
 }
 
 fn digits(value: u32) -> usize {

@@ -1,9 +1,13 @@
 //! The command line: the only place that prints. Exit codes: 0 ok, 1 an
 //! answer differs (`check`), 2 bad input or usage.
 
+mod check;
+mod explain;
+mod figure;
 mod run;
+mod step;
 
-use std::io::{self, Write};
+use std::io::{self, IsTerminal, Write};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -21,6 +25,14 @@ struct Cli {
 enum Command {
     /// Draw a scene and print the framebuffer and z-buffer after each polygon.
     Run(run::RunArgs),
+    /// Step through the algorithm one scanline at a time.
+    Step(step::StepArgs),
+    /// The history of one pixel through the whole scene.
+    Explain(explain::ExplainArgs),
+    /// Check a homework answer (a framebuffer and/or z-buffer) and explain every wrong cell.
+    Check(check::CheckArgs),
+    /// Draw the raster as an SVG figure: grid, centres, scanlines, outlines, covered pixels.
+    Figure(figure::FigureArgs),
 }
 
 /// How a command ended, when it did not fail.
@@ -28,6 +40,8 @@ enum Command {
 pub enum Finish {
     /// Everything fine: exit 0.
     Ok,
+    /// An answer differs from zsim's: exit 1.
+    Differs,
 }
 
 /// What can stop a command.
@@ -58,10 +72,15 @@ pub fn main() -> ExitCode {
     let mut out = io::BufWriter::new(stdout.lock());
     let result = match cli.command {
         Command::Run(args) => run::run(&args, &mut out),
+        Command::Step(args) => step::run(&args, &mut out),
+        Command::Explain(args) => explain::run(&args, &mut out),
+        Command::Check(args) => check::run(&args, &mut out),
+        Command::Figure(args) => figure::run(&args, &mut out),
     };
     let result = result.and_then(|finish| out.flush().map(|()| finish).map_err(Failure::Io));
     match result {
         Ok(Finish::Ok) => ExitCode::SUCCESS,
+        Ok(Finish::Differs) => ExitCode::from(1),
         Err(Failure::Io(error)) if error.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
         Err(Failure::Io(error)) => {
             eprintln!("zsim: cannot write the output: {error}");
@@ -72,6 +91,11 @@ pub fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// Whether to colour output: only on a terminal, and never with `NO_COLOR` set.
+fn use_color() -> bool {
+    io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
 }
 
 /// Writes text, turning a closed pipe into a quiet stop.

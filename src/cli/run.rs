@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 use zsim::pipeline::{self, Simulation};
-use zsim::report::{self, RunJson, StepJson};
+use zsim::report::{self, MatrixStyle, RunJson, StepJson};
 use zsim::scene::Scene;
 use zsim::trace::Unobserved;
 
@@ -86,10 +86,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
 }
 
 fn buffers_text(simulation: &Simulation<'_>, index: usize, name: &str, axes: bool) -> String {
+    let style = MatrixStyle { axes, color: super::use_color(), ..MatrixStyle::default() };
     format!(
         "\nframebuffer after polygon {n} \"{name}\":\n{}\nz-buffer after polygon {n} \"{name}\":\n{}",
-        report::matrix(&simulation.buffers().frame_rows(), axes),
-        report::matrix(&simulation.buffers().depth_rows(), axes),
+        report::matrix_styled(&simulation.buffers().frame_rows(), &style),
+        report::matrix_styled(&simulation.buffers().depth_rows(), &style),
         n = index + 1,
     )
 }

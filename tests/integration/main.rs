@@ -12,6 +12,7 @@ mod bad_input;
 mod golden;
 mod hard_cases;
 mod run_command;
+mod teaching;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -1,0 +1,116 @@
+//! `zsim check`: compares a student's matrices with zsim's and explains every
+//! differing cell.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+use comfy_table::{Table, presets};
+use zsim::check::{Matrix, Mismatch, compare, parse_answer};
+use zsim::error::Error;
+use zsim::explain::{Buffer, polygon_name, why};
+use zsim::pipeline::Simulation;
+use zsim::scene::Scene;
+use zsim::trace::{PixelWatcher, Unobserved};
+
+use super::{Failure, Finish, emit};
+
+/// Arguments of `zsim check`.
+#[derive(Debug, Args)]
+pub struct CheckArgs {
+    /// The scene file (JSON).
+    scene: PathBuf,
+    /// The answer for the framebuffer: integers as the book prints them, top row first.
+    #[arg(long, value_name = "FILE")]
+    frame: Option<PathBuf>,
+    /// The answer for the z-buffer.
+    #[arg(long, value_name = "FILE")]
+    depth: Option<PathBuf>,
+    /// Check the state after this polygon (number from 1, or name); default: the last.
+    #[arg(long, value_name = "N|NAME")]
+    after: Option<String>,
+}
+
+fn read_answer(path: &Path, scene: &Scene) -> Result<Matrix, Error> {
+    let text = std::fs::read_to_string(path).map_err(|source| Error::Read { path: path.to_owned(), source })?;
+    parse_answer(&text, scene.width, scene.height).map_err(|message| Error::Answer { path: path.to_owned(), message })
+}
+
+pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let scene = Scene::load(&args.scene)?;
+    if args.frame.is_none() && args.depth.is_none() {
+        return Err(Error::Usage("check needs an answer: --frame FILE and/or --depth FILE".into()).into());
+    }
+    if scene.polygons.is_empty() {
+        return Err(Error::Usage(format!("{}: the scene has no polygons to check", args.scene.display())).into());
+    }
+    let last = match &args.after {
+        Some(spec) => scene.find_polygon(spec)?,
+        None => scene.polygons.len() - 1,
+    };
+    // Read every answer before printing anything, so a malformed file prints nothing.
+    let mut answers = Vec::new();
+    for (buffer, path) in [(Buffer::Frame, &args.frame), (Buffer::Depth, &args.depth)] {
+        if let Some(path) = path {
+            answers.push((buffer, path, read_answer(path, &scene)?));
+        }
+    }
+    let mut simulation = Simulation::new(&scene);
+    simulation.draw_through(last, &mut Unobserved);
+    let cells = scene.width as usize * scene.height as usize;
+    let mut results = Vec::new();
+    for (buffer, path, answer) in answers {
+        let expected = match buffer {
+            Buffer::Frame => simulation.buffers().frame_rows(),
+            Buffer::Depth => simulation.buffers().depth_rows(),
+        };
+        results.push((buffer, path, compare(&answer, &expected)));
+    }
+    // Watch the differing cells through a second run, to explain each.
+    let mut watcher = PixelWatcher::new(results.iter().flat_map(|(_, _, m)| m.iter().map(|c| (c.x, c.y))));
+    if results.iter().any(|(_, _, m)| !m.is_empty()) {
+        Simulation::new(&scene).draw_through(last, &mut watcher);
+    }
+    let mut text = String::new();
+    let mut differs = false;
+    for (buffer, path, mismatches) in &results {
+        let after = polygon_name(&scene, last);
+        if mismatches.is_empty() {
+            text.push_str(&format!(
+                "{} {}: all {cells} cells match the {} after {after}\n",
+                buffer.name(),
+                path.display(),
+                buffer.name()
+            ));
+            continue;
+        }
+        differs = true;
+        let plural = if mismatches.len() == 1 { "cell differs" } else { "cells differ" };
+        text.push_str(&format!(
+            "{} {}: {} of {cells} {plural} from the {} after {after}\n",
+            buffer.name(),
+            path.display(),
+            mismatches.len(),
+            buffer.name()
+        ));
+        text.push_str(&format!("{}\n", table(&scene, *buffer, mismatches, &watcher)));
+    }
+    emit(out, &text)?;
+    Ok(if differs { Finish::Differs } else { Finish::Ok })
+}
+
+fn table(scene: &Scene, buffer: Buffer, mismatches: &[Mismatch], watcher: &PixelWatcher) -> Table {
+    let mut table = Table::new();
+    table.load_style(presets::ASCII_MARKDOWN).set_header(["x", "y", "answer", "right", "why"]);
+    for cell in mismatches {
+        let history = watcher.history(cell.x, cell.y);
+        table.add_row([
+            cell.x.to_string(),
+            cell.y.to_string(),
+            cell.answer.to_string(),
+            cell.expected.to_string(),
+            why(scene, buffer, cell.x, cell.y, history),
+        ]);
+    }
+    table
+}

@@ -1,0 +1,419 @@
+//! `zsim step`: one scanline at a time, in a terminal or driven line by line
+//! from standard input, with an optional quiz.
+
+use std::io::{BufRead, IsTerminal, Write};
+use std::path::PathBuf;
+
+use clap::Args;
+use comfy_table::{Cell, Color, Table, presets};
+use zsim::buffer::Buffers;
+use zsim::error::Error;
+use zsim::exact::{Q, exact_and_decimal, fraction};
+use zsim::explain::{fate_text, pixel_reason, polygon_name, scanline_text};
+use zsim::pipeline::Simulation;
+use zsim::report::{self, MatrixStyle};
+use zsim::scene::Scene;
+use zsim::trace::{Fate, Outcome, PixelEvent, Recorder, ScanlineRecord};
+
+use super::{Failure, Finish, emit};
+
+/// Arguments of `zsim step`.
+#[derive(Debug, Args)]
+pub struct StepArgs {
+    /// The scene file (JSON).
+    scene: PathBuf,
+    /// Show one step of this polygon (number from 1, or name) and exit; needs --scanline.
+    #[arg(long, value_name = "N|NAME", requires = "scanline")]
+    polygon: Option<String>,
+    /// The row of the scanline to show (the scanline is at y = row + 1/2); needs --polygon.
+    #[arg(long, value_name = "Y", requires = "polygon")]
+    scanline: Option<u32>,
+    /// Before each pixel's result is shown, ask what the z-buffer will hold.
+    #[arg(long, conflicts_with = "polygon")]
+    quiz: bool,
+}
+
+/// One polygon's recorded scanlines, with the buffers before it.
+struct PolygonTrace {
+    fate: Fate,
+    before: Buffers,
+    scanlines: Vec<ScanlineRecord>,
+}
+
+/// Records polygons as the user reaches them.
+struct Tracer<'s> {
+    scene: &'s Scene,
+    simulation: Simulation<'s>,
+    traces: Vec<PolygonTrace>,
+}
+
+impl<'s> Tracer<'s> {
+    fn new(scene: &'s Scene) -> Tracer<'s> {
+        Tracer { scene, simulation: Simulation::new(scene), traces: Vec::new() }
+    }
+
+    /// The trace of polygon `index`, drawing the polygons up to it if needed.
+    fn trace(&mut self, index: usize) -> &PolygonTrace {
+        while self.traces.len() <= index {
+            let before = self.simulation.buffers().clone();
+            let mut recorder = Recorder::default();
+            self.simulation.draw_next(&mut recorder);
+            let fate = recorder.polygons.first().map_or(Fate::Drawn, |p| p.1);
+            self.traces.push(PolygonTrace { fate, before, scanlines: recorder.scanlines });
+        }
+        &self.traces[index]
+    }
+
+    /// The positions (polygon, scanline) that have covered pixels, after `from` (exclusive) or from the start.
+    fn next_stop(&mut self, from: Option<(usize, usize)>) -> (Option<(usize, usize)>, Vec<String>) {
+        let mut skipped = Vec::new();
+        let (mut polygon, mut scanline) = match from {
+            Some((p, s)) => (p, s + 1),
+            None => (0, 0),
+        };
+        while polygon < self.scene.polygons.len() {
+            let scene = self.scene;
+            let trace = self.trace(polygon);
+            if let Some(text) = fate_text(trace.fate) {
+                skipped.push(format!("{}: {text}", polygon_name(scene, polygon)));
+            } else if trace.scanlines.is_empty() && scanline == 0 {
+                skipped.push(format!("{}: reaches no scanline of the raster", polygon_name(scene, polygon)));
+            }
+            while scanline < trace.scanlines.len() {
+                let record = &trace.scanlines[scanline];
+                if !record.pixels.is_empty() {
+                    return (Some((polygon, scanline)), skipped);
+                }
+                skipped.push(format!(
+                    "{}, scanline {}: no pixel centre covered{}",
+                    polygon_name(scene, polygon),
+                    scanline_text(record.row),
+                    if record.crossings.is_empty() { " (no crossings)" } else { "" }
+                ));
+                scanline += 1;
+            }
+            polygon += 1;
+            scanline = 0;
+        }
+        (None, skipped)
+    }
+
+    fn previous_stop(&mut self, from: (usize, usize)) -> Option<(usize, usize)> {
+        let mut stops = Vec::new();
+        for polygon in 0..=from.0 {
+            let trace = self.trace(polygon);
+            for (k, record) in trace.scanlines.iter().enumerate() {
+                if !record.pixels.is_empty() && (polygon, k) < from {
+                    stops.push((polygon, k));
+                }
+            }
+        }
+        stops.pop()
+    }
+
+    /// The buffers after scanline `k` of polygon `p`.
+    fn buffers_after(&mut self, p: usize, k: usize) -> Buffers {
+        let trace = self.trace(p);
+        let mut buffers = trace.before.clone();
+        for record in &trace.scanlines[..=k] {
+            for pixel in &record.pixels {
+                buffers.store(pixel.x, pixel.y, pixel.frame_after, pixel.stored_after);
+            }
+        }
+        buffers
+    }
+}
+
+pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let scene = Scene::load(&args.scene)?;
+    let color = super::use_color();
+    let mut tracer = Tracer::new(&scene);
+    if let (Some(spec), Some(row)) = (&args.polygon, args.scanline) {
+        let polygon = scene.find_polygon(spec)?;
+        let trace = tracer.trace(polygon);
+        if let Some(text) = fate_text(trace.fate) {
+            return Err(Error::Usage(format!("{} has no scanlines: {text}", polygon_name(&scene, polygon))).into());
+        }
+        let Some(k) = trace.scanlines.iter().position(|r| r.row == row) else {
+            let rows = match (trace.scanlines.first(), trace.scanlines.last()) {
+                (Some(first), Some(last)) => format!("its rows are {} … {}", first.row, last.row),
+                _ => "it reaches no row of the raster".to_string(),
+            };
+            return Err(Error::Usage(format!(
+                "{} does not reach the scanline {}: {rows}",
+                polygon_name(&scene, polygon),
+                scanline_text(row)
+            ))
+            .into());
+        };
+        emit(out, &stop_text(&mut tracer, polygon, k, color))?;
+        return Ok(Finish::Ok);
+    }
+    interactive(&scene, &args.scene.display().to_string(), &mut tracer, args.quiz, color, out)
+}
+
+/// Lines typed by the user (or piped in by a script).
+struct Input {
+    lines: std::io::Lines<std::io::StdinLock<'static>>,
+    terminal: bool,
+}
+
+impl Input {
+    fn stdin() -> Input {
+        let stdin = std::io::stdin();
+        Input { terminal: stdin.is_terminal(), lines: stdin.lock().lines() }
+    }
+
+    /// The next line; the prompt is shown only on a terminal. `None` at the end of input.
+    fn read(&mut self, out: &mut dyn Write, prompt: &str) -> Result<Option<String>, Failure> {
+        if self.terminal {
+            emit(out, prompt)?;
+            out.flush()?;
+        }
+        Ok(self.lines.next().transpose()?)
+    }
+}
+
+/// What the user asked for at the prompt.
+enum Command {
+    Next,
+    NextPolygon,
+    Back,
+    Go(u32),
+    Quit,
+    Unknown(String),
+}
+
+fn parse_command(line: &str) -> Command {
+    let words: Vec<&str> = line.split_whitespace().collect();
+    match words.as_slice() {
+        [] | ["n"] => Command::Next,
+        ["p"] => Command::NextPolygon,
+        ["b"] => Command::Back,
+        ["q"] => Command::Quit,
+        ["g", row] => row.parse().map_or_else(|_| Command::Unknown(line.to_string()), Command::Go),
+        _ => Command::Unknown(line.to_string()),
+    }
+}
+
+const HELP: &str = "keys: Enter or n next scanline, p next polygon, b back, g Y go to scanline Y, q quit";
+
+fn interactive(
+    scene: &Scene,
+    path: &str,
+    tracer: &mut Tracer<'_>,
+    quiz: bool,
+    color: bool,
+    out: &mut dyn Write,
+) -> Result<Finish, Failure> {
+    let mut input = Input::stdin();
+    let mut score = (0usize, 0usize);
+    emit(out, &format!("{}{HELP}\n", report::scene_header(scene, path)))?;
+    let (mut position, skipped) = tracer.next_stop(None);
+    emit(out, &mentions(&skipped))?;
+    let mut show = true;
+    loop {
+        match position {
+            Some((p, k)) if show => {
+                if quiz && !ask(scene, tracer, (p, k), &mut score, &mut input, out)? {
+                    break;
+                }
+                emit(out, &stop_text(tracer, p, k, color))?;
+            }
+            None if show => emit(out, "end of the scene: no more scanlines (b back, q quit)\n")?,
+            _ => {}
+        }
+        let Some(line) = input.read(out, "zsim step> ")? else { break };
+        show = true;
+        match parse_command(&line) {
+            Command::Quit => break,
+            Command::Next => {
+                let (next, skipped) = match position {
+                    Some(at) => tracer.next_stop(Some(at)),
+                    None => (None, Vec::new()),
+                };
+                emit(out, &mentions(&skipped))?;
+                position = next;
+            }
+            Command::NextPolygon => {
+                let from = position.map(|(p, _)| {
+                    let count = tracer.trace(p).scanlines.len();
+                    (p, count.saturating_sub(1))
+                });
+                if from.is_some() {
+                    let (next, skipped) = tracer.next_stop(from);
+                    emit(out, &mentions(&skipped))?;
+                    position = next;
+                }
+            }
+            Command::Back => {
+                let previous = match position {
+                    Some(at) => tracer.previous_stop(at),
+                    None => tracer.previous_stop((scene.polygons.len(), 0)),
+                };
+                match previous {
+                    Some(at) => position = Some(at),
+                    None => {
+                        emit(out, "already at the first scanline\n")?;
+                        show = false;
+                    }
+                }
+            }
+            Command::Go(row) => {
+                let p = position.map_or(0, |(p, _)| p).min(scene.polygons.len().saturating_sub(1));
+                let found = tracer.trace(p).scanlines.iter().position(|r| r.row == row);
+                match found {
+                    Some(k) => position = Some((p, k)),
+                    None => {
+                        let message =
+                            format!("{} does not reach the scanline {}\n", polygon_name(scene, p), scanline_text(row));
+                        emit(out, &message)?;
+                        show = false;
+                    }
+                }
+            }
+            Command::Unknown(text) => {
+                emit(out, &format!("unknown command \"{text}\"; {HELP}\n"))?;
+                show = false;
+            }
+        }
+    }
+    if quiz {
+        emit(out, &format!("quiz score: {} of {} right\n", score.0, score.1))?;
+    }
+    Ok(Finish::Ok)
+}
+
+fn mentions(skipped: &[String]) -> String {
+    skipped.iter().map(|line| format!("  · {line}\n")).collect()
+}
+
+/// Asks the quiz question for each pixel of a stop; `false` when the user quits.
+fn ask(
+    scene: &Scene,
+    tracer: &mut Tracer<'_>,
+    (p, k): (usize, usize),
+    score: &mut (usize, usize),
+    input: &mut Input,
+    out: &mut dyn Write,
+) -> Result<bool, Failure> {
+    let record = tracer.trace(p).scanlines[k].clone();
+    emit(
+        out,
+        &format!(
+            "quiz: {}, scanline {}; for each pixel type the z-buffer value after it, - if it is not written, q to stop\n",
+            polygon_name(scene, p),
+            scanline_text(record.row)
+        ),
+    )?;
+    for pixel in &record.pixels {
+        let prompt = format!("pixel ({}, {}), stored {}: z-buffer after? ", pixel.x, pixel.y, pixel.stored_before);
+        let Some(answer) = input.read(out, &prompt)? else { return Ok(false) };
+        let answer = answer.trim();
+        if answer == "q" {
+            return Ok(false);
+        }
+        let expected = if pixel.outcome == Outcome::Written { pixel.stored_after.to_string() } else { "-".into() };
+        score.1 += 1;
+        let verdict = if answer == expected {
+            score.0 += 1;
+            "right"
+        } else {
+            "wrong"
+        };
+        emit(
+            out,
+            &format!(
+                "  ({}, {}): you said {answer}, {verdict}: {} [score {}/{}]\n",
+                pixel.x,
+                pixel.y,
+                pixel_reason(scene, pixel),
+                score.0,
+                score.1
+            ),
+        )?;
+    }
+    Ok(true)
+}
+
+/// Everything shown for one scanline of one polygon.
+fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String {
+    let scene = tracer.scene;
+    let record = tracer.trace(p).scanlines[k].clone();
+    let geometry = &scene.polygons[p].geometry;
+    let [a, _, c] = geometry.normal;
+    let mut text = format!("\n── {}\n", report::polygon_heading(scene, p));
+    text.push_str(&format!("   along a scanline z steps by −a/c = {}\n", fraction(Q::new(-a, c))));
+    text.push_str(&format!("scanline {} (row {})\n", scanline_text(record.row), record.row));
+    let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(*x)).collect();
+    text.push_str(&format!(
+        "crossings: {}\n",
+        if crossings.is_empty() { "none".to_string() } else { crossings.join(", ") }
+    ));
+    for (n, span) in record.spans.iter().enumerate() {
+        let columns = match span.columns {
+            Some((first, last)) => format!("centres of columns {first} … {last}"),
+            None => "no pixel centre inside".to_string(),
+        };
+        text.push_str(&format!(
+            "span {}: x_a = {}, z_a = {}; x_b = {}, z_b = {}; {columns}\n",
+            n + 1,
+            exact_and_decimal(span.left),
+            exact_and_decimal(span.left_depth),
+            exact_and_decimal(span.right),
+            exact_and_decimal(span.right_depth),
+        ));
+    }
+    if !record.pixels.is_empty() {
+        text.push_str(&format!("{}\n", pixel_table(scene, &record.pixels, color)));
+    }
+    let buffers = tracer.buffers_after(p, k);
+    let low = record.row.saturating_sub(2);
+    let high = (record.row + 2).min(scene.height - 1);
+    let style = MatrixStyle { axes: true, color, rows: Some(low..=high), mark: Some(record.row) };
+    text.push_str(&format!(
+        "framebuffer after this scanline (rows {low} … {high}):\n{}",
+        report::matrix_styled(&buffers.frame_rows(), &style)
+    ));
+    text.push_str(&format!(
+        "z-buffer after this scanline (rows {low} … {high}):\n{}",
+        report::matrix_styled(&buffers.depth_rows(), &style)
+    ));
+    text
+}
+
+fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
+    let mut table = Table::new();
+    table
+        .load_style(presets::ASCII_MARKDOWN)
+        .set_header(["x", "centre", "z", "≈ z", "step", "stored", "test", "after", "frame"]);
+    let op = scene.depth_test.symbol();
+    for (i, pixel) in pixels.iter().enumerate() {
+        let z = pixel.depth.value();
+        let step = match i.checked_sub(1).map(|j| pixels[j]) {
+            Some(previous) if previous.x + 1 == pixel.x => fraction(z - previous.depth.value()),
+            _ => "start".to_string(),
+        };
+        let test = match pixel.outcome {
+            Outcome::Written => format!("{} {op} {}: written", fraction(z), pixel.stored_before),
+            Outcome::Hidden => format!("{} {op} {}: no, hidden", fraction(z), pixel.stored_before),
+            Outcome::BeyondSection => format!("{op} {}, beyond the section", pixel.stored_before),
+        };
+        let mut test = Cell::new(test);
+        if color {
+            test = test.fg(if pixel.outcome == Outcome::Written { Color::Green } else { Color::Red });
+        }
+        table.add_row(vec![
+            Cell::new(pixel.x),
+            Cell::new(exact_and_decimal(Q::new(2 * i128::from(pixel.x) + 1, 2))),
+            Cell::new(fraction(z)),
+            Cell::new(zsim::exact::decimal(z, 2)),
+            Cell::new(step),
+            Cell::new(pixel.stored_before),
+            test,
+            Cell::new(pixel.stored_after),
+            Cell::new(pixel.frame_after),
+        ]);
+    }
+    table
+}

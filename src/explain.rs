@@ -1,0 +1,186 @@
+//! Explanations in words a student can follow, built from the rasterizer's
+//! events: what the depth test made of a pixel, the history of a pixel
+//! through a scene, and why a cell holds its value.
+
+use crate::depth::Depth;
+use crate::exact::{Q, exact_and_decimal};
+use crate::scene::Scene;
+use crate::trace::{Fate, Outcome, PixelEvent, PixelHistoryEntry, ScanlineRecord, SpanRecord};
+
+/// Which buffer a sentence is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Buffer {
+    /// The framebuffer.
+    Frame,
+    /// The z-buffer.
+    Depth,
+}
+
+impl Buffer {
+    /// `framebuffer` or `z-buffer`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Buffer::Frame => "framebuffer",
+            Buffer::Depth => "z-buffer",
+        }
+    }
+}
+
+/// `polygon 2 "triangle"`.
+pub fn polygon_name(scene: &Scene, index: usize) -> String {
+    format!("polygon {} \"{}\"", index + 1, scene.polygons[index].name)
+}
+
+/// `43/4 ≈ 10.75 … 179/6 ≈ 29.83`.
+pub fn span_text(span: &SpanRecord) -> String {
+    format!("{} … {}", exact_and_decimal(span.left), exact_and_decimal(span.right))
+}
+
+/// `y = 15.5`: the scanline through row `row`.
+pub fn scanline_text(row: u32) -> String {
+    format!("y = {row}.5")
+}
+
+/// What is stored for an exact depth, with a note when it saturates.
+pub fn stored_text(scene: &Scene, depth: Depth) -> String {
+    let stored = depth.quantized(scene.depth_max());
+    let rounded = depth.rounded();
+    if rounded == i128::from(stored) {
+        stored.to_string()
+    } else {
+        format!("{stored} ({} rounds to {rounded}, saturated to {stored})", exact_and_decimal(depth.value()))
+    }
+}
+
+/// One sentence on what the depth test made of a covered pixel:
+/// `z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored and the framebuffer gets 2`.
+pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
+    let z = exact_and_decimal(event.depth.value());
+    let op = scene.depth_test.symbol();
+    match event.outcome {
+        Outcome::Written => format!(
+            "z = {z} {op} {} stored, so {} is stored and the framebuffer gets {}",
+            event.stored_before,
+            stored_text(scene, event.depth),
+            event.frame_after
+        ),
+        Outcome::Hidden => format!("z = {z} is not {op} {} stored: hidden, nothing changes", event.stored_before),
+        Outcome::BeyondSection => {
+            let section = scene.effects.section.map_or(String::new(), exact_and_decimal);
+            format!(
+                "z = {z} {op} {} stored, but the cross-section keeps only z {} {section}: not written",
+                event.stored_before,
+                scene.depth_test.section_symbol()
+            )
+        }
+    }
+}
+
+/// Why a polygon was not drawn at all, or `None` when it was.
+pub fn fate_text(fate: Fate) -> Option<String> {
+    match fate {
+        Fate::Drawn => None,
+        Fate::Culled(winding) => Some(format!("culled: its vertices run {winding}, so it is not drawn")),
+        Fate::EdgeOn => Some("seen edge-on (c = 0): it covers no pixel".to_string()),
+        Fate::Degenerate => Some("degenerate (Newell's normal is zero): it covers no pixel".to_string()),
+    }
+}
+
+/// What one polygon did at pixel (x, y), in one sentence.
+pub fn entry_text(scene: &Scene, x: u32, y: u32, entry: &PixelHistoryEntry) -> String {
+    if let Some(text) = fate_text(entry.fate) {
+        return text;
+    }
+    let centre = Q::new(2 * i128::from(x) + 1, 2);
+    match (&entry.scanline, &entry.pixel) {
+        (None, _) => format!("its y range does not reach the scanline {}", scanline_text(y)),
+        (Some(scanline), Some(pixel)) => {
+            let span = scanline.span_covering(x).map_or(String::new(), |s| format!(" {}", span_text(s)));
+            format!(
+                "on the scanline {} it spans{span}, which holds the centre x = {}; {}",
+                scanline_text(y),
+                exact_and_decimal(centre),
+                pixel_reason(scene, pixel)
+            )
+        }
+        (Some(scanline), None) => {
+            format!(
+                "on the scanline {} {}; the centre x = {} is not inside",
+                scanline_text(y),
+                spans_of(scanline, "it"),
+                exact_and_decimal(centre)
+            )
+        }
+    }
+}
+
+/// `it spans 57/2 … 179/6` (or has no crossings), with `subject` for "it".
+fn spans_of(scanline: &ScanlineRecord, subject: &str) -> String {
+    if scanline.spans.is_empty() {
+        return format!("{subject} has no crossings");
+    }
+    let spans: Vec<String> = scanline.spans.iter().map(span_text).collect();
+    format!("{subject} spans {}", spans.join(" and "))
+}
+
+/// Why cell (x, y) of `buffer` holds what it holds after the polygons in
+/// `history` (all of them up to the one the check is after), in one sentence.
+pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistoryEntry]) -> String {
+    let last_write = history
+        .iter()
+        .rev()
+        .find_map(|entry| entry.pixel.filter(|p| p.outcome == Outcome::Written).map(|p| (entry.index, p)));
+    let result = |pixel: &PixelEvent| match buffer {
+        Buffer::Frame => format!("the framebuffer holds {}", pixel.frame_after),
+        Buffer::Depth => format!("{} is stored", stored_text(scene, pixel.depth)),
+    };
+    if let Some((index, pixel)) = last_write {
+        let z = exact_and_decimal(pixel.depth.value());
+        let mut text = format!(
+            "{} covers ({x}, {y}): z = {z} {} {} stored, so {}",
+            polygon_name(scene, index),
+            scene.depth_test.symbol(),
+            pixel.stored_before,
+            result(&pixel)
+        );
+        let later: Vec<String> = history
+            .iter()
+            .filter(|entry| entry.index > index && entry.pixel.is_some())
+            .map(|entry| {
+                format!("{} ({})", polygon_name(scene, entry.index), pixel_reason(scene, &entry.pixel.unwrap()))
+            })
+            .collect();
+        if !later.is_empty() {
+            text.push_str(&format!("; later {}", later.join("; ")));
+        }
+        return text;
+    }
+    let cleared = match buffer {
+        Buffer::Frame => format!("the background {}", scene.background),
+        Buffer::Depth => format!("the cleared depth {}", scene.depth_test.clear_value(scene.depth_max())),
+    };
+    let covered: Vec<String> = history
+        .iter()
+        .filter_map(|entry| {
+            entry
+                .pixel
+                .map(|p| format!("{} covers it but {}", polygon_name(scene, entry.index), pixel_reason(scene, &p)))
+        })
+        .collect();
+    if !covered.is_empty() {
+        return format!("nothing was written at ({x}, {y}): {}; it keeps {cleared}", covered.join("; "));
+    }
+    let reaching: Vec<String> = history
+        .iter()
+        .filter_map(|entry| entry.scanline.as_ref().map(|s| spans_of(s, &polygon_name(scene, entry.index))))
+        .collect();
+    if reaching.is_empty() {
+        format!("no polygon covers ({x}, {y}): none reaches the scanline {}; it keeps {cleared}", scanline_text(y))
+    } else {
+        format!(
+            "no polygon covers ({x}, {y}): on the scanline {} {}; it keeps {cleared}",
+            scanline_text(y),
+            reaching.join(" and ")
+        )
+    }
+}

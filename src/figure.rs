@@ -1,0 +1,179 @@
+//! The raster as an SVG figure like the book's: the pixel grid, pixel
+//! centres, half-interval scanlines, polygon outlines and covered pixels
+//! filled by framebuffer value (or shaded by depth). Coordinates are written
+//! from exact values with [`crate::exact::decimal`]; nothing passes through
+//! floating point.
+
+use std::fmt::Write as _;
+
+use crate::buffer::Buffers;
+use crate::exact::{Q, decimal};
+use crate::scene::Scene;
+
+/// Largest raster side a figure draws (a bigger one would be unreadable).
+pub const MAX_FIGURE_SIDE: u32 = 256;
+
+/// Size of one pixel in the figure, in SVG user units.
+const CELL: i128 = 24;
+const MARGIN_LEFT: i128 = 40;
+const MARGIN_TOP: i128 = 36;
+const MARGIN_RIGHT: i128 = 16;
+const MARGIN_BOTTOM: i128 = 40;
+
+/// Fill colours for framebuffer values 1, 2, …; 0 (the usual background) is white.
+const PALETTE: [&str; 8] = ["#f4a259", "#5b8e7d", "#8cb369", "#bc4b51", "#6c8ead", "#e9c46a", "#9a7aa0", "#2a9d8f"];
+
+/// What the cells show.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shading {
+    /// Filled by framebuffer value.
+    Frame,
+    /// Shaded by z-buffer value: nearer is darker.
+    Depth,
+}
+
+/// Draws the buffers after polygon `last` (0-based): polygons `0 ..= last`
+/// are outlined. The raster must be at most [`MAX_FIGURE_SIDE`] on a side.
+pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, title: &str) -> String {
+    let (width, height) = (i128::from(scene.width), i128::from(scene.height));
+    let total_width = MARGIN_LEFT + width * CELL + MARGIN_RIGHT;
+    let total_height = MARGIN_TOP + height * CELL + MARGIN_BOTTOM;
+    // Pixel-unit point to SVG coordinates: x right, y up (flipped).
+    let sx = |x: Q| decimal(Q::from_integer(MARGIN_LEFT) + x * CELL, 2);
+    let sy = |y: Q| decimal(Q::from_integer(MARGIN_TOP) + (Q::from_integer(height) - y) * CELL, 2);
+    let int = |v: i128| Q::from_integer(v);
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{total_width}" height="{total_height}" viewBox="0 0 {total_width} {total_height}" font-family="sans-serif" font-size="11">"#
+    );
+    let _ = writeln!(out, r#"<title>{}</title>"#, escape(title));
+    let _ = writeln!(out, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    let _ = writeln!(out, r#"<text x="{MARGIN_LEFT}" y="20" font-size="13">{}</text>"#, escape(title));
+    // Covered pixels.
+    let _ = writeln!(out, r#"<g id="pixels" stroke="none">"#);
+    let clear = scene.depth_test.clear_value(scene.depth_max());
+    for y in 0..scene.height {
+        for x in 0..scene.width {
+            let fill = match shading {
+                Shading::Frame => {
+                    let value = buffers.frame(x, y);
+                    if value == scene.background {
+                        continue;
+                    }
+                    PALETTE[(value as usize).saturating_sub(1) % PALETTE.len()].to_string()
+                }
+                Shading::Depth => {
+                    let value = buffers.depth(x, y);
+                    if value == clear {
+                        continue;
+                    }
+                    depth_grey(value, scene)
+                }
+            };
+            let _ = writeln!(
+                out,
+                r#"<rect x="{}" y="{}" width="{CELL}" height="{CELL}" fill="{fill}"><title>({x}, {y}): frame {}, depth {}</title></rect>"#,
+                sx(int(i128::from(x))),
+                sy(int(i128::from(y) + 1)),
+                buffers.frame(x, y),
+                buffers.depth(x, y)
+            );
+        }
+    }
+    let _ = writeln!(out, "</g>");
+    // The pixel grid.
+    let _ = writeln!(out, r##"<g id="grid" stroke="#b0b0b0" stroke-width="0.5">"##);
+    for x in 0..=width {
+        let _ =
+            writeln!(out, r#"<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>"#, sx(int(x)), sy(int(0)), sy(int(height)));
+    }
+    for y in 0..=height {
+        let _ = writeln!(out, r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#, sy(int(y)), sx(int(0)), sx(int(width)));
+    }
+    let _ = writeln!(out, "</g>");
+    // Half-interval scanlines through the centres.
+    let _ = writeln!(out, r##"<g id="scanlines" stroke="#3a6ea5" stroke-width="0.6" stroke-dasharray="3 3">"##);
+    for row in 0..height {
+        let y = Q::new(2 * row + 1, 2);
+        let _ = writeln!(out, r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#, sy(y), sx(int(0)), sx(int(width)));
+    }
+    let _ = writeln!(out, "</g>");
+    // Pixel centres.
+    let _ = writeln!(out, r##"<g id="centres" fill="#333333">"##);
+    for row in 0..height {
+        for column in 0..width {
+            let (cx, cy) = (Q::new(2 * column + 1, 2), Q::new(2 * row + 1, 2));
+            let _ = writeln!(out, r#"<circle cx="{}" cy="{}" r="1.3"/>"#, sx(cx), sy(cy));
+        }
+    }
+    let _ = writeln!(out, "</g>");
+    // Polygon outlines, with their names.
+    let _ = writeln!(out, r#"<g id="polygons" fill="none" stroke="black" stroke-width="1.5">"#);
+    for (index, polygon) in scene.polygons.iter().enumerate().take(last + 1) {
+        let points: Vec<String> = polygon.vertices.iter().map(|v| format!("{},{}", sx(v[0]), sy(v[1]))).collect();
+        let _ = writeln!(
+            out,
+            r#"<polygon points="{}"><title>{}</title></polygon>"#,
+            points.join(" "),
+            escape(&polygon.name)
+        );
+        let first = polygon.vertices[0];
+        let _ = writeln!(
+            out,
+            r#"<text x="{}" y="{}" stroke="none" fill="black">{} {}</text>"#,
+            sx(first[0]),
+            sy(first[1]),
+            index + 1,
+            escape(&polygon.name)
+        );
+    }
+    let _ = writeln!(out, "</g>");
+    // Axes: column numbers below, row numbers on the left.
+    let step = if width.max(height) > 64 {
+        8
+    } else if width.max(height) > 32 {
+        4
+    } else {
+        1
+    };
+    let _ = writeln!(out, r#"<g id="axes" fill="black" text-anchor="middle">"#);
+    let below = decimal(Q::from_integer(MARGIN_TOP + height * CELL + 14), 2);
+    for column in (0..width).step_by(step) {
+        let _ = writeln!(out, r#"<text x="{}" y="{below}">{column}</text>"#, sx(Q::new(2 * column + 1, 2)));
+    }
+    let _ = writeln!(
+        out,
+        r#"<text x="{}" y="{}">x</text>"#,
+        sx(Q::new(width, 2)),
+        decimal(Q::from_integer(MARGIN_TOP + height * CELL + 30), 2)
+    );
+    for row in (0..height).step_by(step) {
+        let _ = writeln!(
+            out,
+            r#"<text x="{}" y="{}" text-anchor="end">{row}</text>"#,
+            MARGIN_LEFT - 6,
+            sy(Q::new(2 * row + 1, 2) - Q::new(1, 3))
+        );
+    }
+    let _ = writeln!(out, r#"<text x="12" y="{}">y</text>"#, sy(Q::new(height, 2)));
+    let _ = writeln!(out, "</g>");
+    let _ = writeln!(out, "</svg>");
+    out
+}
+
+/// A grey for a depth: nearer (by the depth test) is darker.
+fn depth_grey(value: u32, scene: &Scene) -> String {
+    let max = u64::from(scene.depth_max());
+    let nearness = match scene.depth_test {
+        crate::depth::DepthTest::Greater => u64::from(value),
+        crate::depth::DepthTest::Less => max - u64::from(value),
+    };
+    // 230 (far) … 60 (near), in whole steps.
+    let level = 230 - (170 * nearness / max.max(1)) as u8;
+    format!("#{level:02x}{level:02x}{level:02x}")
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}

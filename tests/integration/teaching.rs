@@ -1,0 +1,285 @@
+//! The teaching tools: `step` (one scanline, and driven through standard
+//! input), `explain`, `check` and `figure`, all on the real binary.
+
+use std::process::{Command, Stdio};
+
+use crate::{Run, scene_file, snapshot, zsim, zsim_in};
+
+/// Runs `zsim` with `input` on standard input (not a terminal).
+fn zsim_with_input(args: &[&str], input: &str) -> Run {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("NO_COLOR", "1")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("zsim starts");
+    child.stdin.take().unwrap().write_all(input.as_bytes()).unwrap();
+    let output = child.wait_with_output().unwrap();
+    Run {
+        code: output.status.code().unwrap(),
+        stdout: String::from_utf8(output.stdout).unwrap(),
+        stderr: String::from_utf8(output.stderr).unwrap(),
+    }
+}
+
+/// The cells of the table row for pixel `x` in `step` output.
+fn table_row(stdout: &str, x: u32) -> Vec<String> {
+    let line = stdout
+        .lines()
+        .find(|line| line.starts_with(&format!("| {x} ")))
+        .unwrap_or_else(|| panic!("no table row for pixel {x} in:\n{stdout}"));
+    line.trim_matches('|').split('|').map(|cell| cell.trim().to_string()).collect()
+}
+
+#[test]
+fn step_one_scanline_shows_the_books_pixel_20_15() {
+    let run = zsim(&["step", "examples/rogers.json", "--polygon", "2", "--scanline", "15"]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert!(run.stdout.contains("crossings: 31/2 ≈ 15.50, 169/6 ≈ 28.17"), "{}", run.stdout);
+    // x, centre, z, ≈ z, step, stored, test, after, frame
+    assert_eq!(
+        table_row(&run.stdout, 20),
+        ["20", "41/2 ≈ 20.50", "43/4", "10.75", "-3/4", "10", "43/4 > 10: written", "11", "2"]
+    );
+    // Pixel (20, 17) on its own scanline: written though the stored value stays 10.
+    let run = zsim(&["step", "examples/rogers.json", "--polygon", "triangle", "--scanline", "17"]);
+    assert_eq!(table_row(&run.stdout, 20)[2..=8], ["41/4", "10.25", "-3/4", "10", "41/4 > 10: written", "10", "2"]);
+    snapshot!(
+        "step_rogers_triangle_15",
+        zsim(&["step", "examples/rogers.json", "--polygon", "2", "--scanline", "15"]).stdout
+    );
+}
+
+#[test]
+fn step_refuses_a_scanline_the_polygon_does_not_reach() {
+    let run = zsim(&["step", "examples/rogers.json", "--polygon", "2", "--scanline", "30"]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert_eq!(run.stderr, "zsim: polygon 2 \"triangle\" does not reach the scanline y = 30.5: its rows are 10 … 24\n");
+    let run = zsim(&["step", "examples/rogers.json", "--polygon", "9", "--scanline", "3"]);
+    assert_eq!(run.code, 2);
+    assert_eq!(run.stderr, "zsim: there is no polygon 9: the scene has 2 (number them from 1)\n");
+}
+
+#[test]
+fn step_is_driven_by_commands_on_standard_input() {
+    // next, back, go to scanline 20, next polygon, an unknown command, quit.
+    let run = zsim_with_input(&["step", "examples/rogers.json"], "n\nb\ng 20\np\nx\nq\n");
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    let scanlines: Vec<&str> = run.stdout.lines().filter(|l| l.starts_with("scanline ")).collect();
+    assert_eq!(
+        scanlines,
+        [
+            "scanline y = 5.5 (row 5)",
+            "scanline y = 6.5 (row 6)",
+            "scanline y = 5.5 (row 5)",
+            "scanline y = 20.5 (row 20)",
+            "scanline y = 10.5 (row 10)"
+        ]
+    );
+    assert!(run.stdout.contains("unknown command \"x\""));
+    snapshot!("step_rogers_stdin", run.stdout);
+}
+
+#[test]
+fn step_passes_over_empty_scanlines_and_skipped_polygons_with_a_mention() {
+    let (dir, name) = scene_file(
+        "step_skips.json",
+        r#"{"width": 6, "height": 6, "effects": {"cull": "cw"}, "polygons": [
+            {"name": "back", "value": 1, "vertices": [[0,0,5],[0,6,5],[6,0,5]]},
+            {"name": "thin", "value": 2, "vertices": [[0.6,0,5],[1.4,0,5],[1.4,3,5],[0.6,3,5]]},
+            {"name": "front", "value": 3, "vertices": [[0,0,5],[6,0,5],[0,6,5]]}]}"#,
+    );
+    let run = crate::zsim_in(Some(&dir), &["step", &name]);
+    let mentions: Vec<&str> = run.stdout.lines().filter(|l| l.starts_with("  · ")).collect();
+    assert_eq!(
+        mentions,
+        [
+            "  · polygon 1 \"back\": culled: its vertices run clockwise, so it is not drawn",
+            "  · polygon 2 \"thin\", scanline y = 0.5: no pixel centre covered",
+            "  · polygon 2 \"thin\", scanline y = 1.5: no pixel centre covered",
+            "  · polygon 2 \"thin\", scanline y = 2.5: no pixel centre covered",
+        ]
+    );
+    assert!(run.stdout.contains("── polygon 3 \"front\""));
+}
+
+#[test]
+fn quiz_scores_the_students_answers() {
+    // The triangle's first scanline (row 10) covers pixels 28 and 29: 6 and 5 are stored.
+    let run = zsim_with_input(&["step", "examples/rogers.json", "--quiz"], "p\n\n6\n4\nq\n");
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    // The first answer "p" is read as an answer to the quiz for the rectangle's first pixel.
+    assert!(run.stdout.contains("(10, 5): you said p, wrong: z = 10 > 0 stored, so 10 is stored"), "{}", run.stdout);
+    let verdicts: Vec<&str> = run.stdout.lines().filter(|l| l.contains("you said")).collect();
+    assert_eq!(verdicts.len(), 4);
+    assert!(verdicts[2].contains("(12, 5): you said 6, wrong"));
+    assert!(run.stdout.ends_with("quiz score: 0 of 4 right\n"), "{}", run.stdout);
+    let run = zsim_with_input(&["step", "examples/rogers.json", "--quiz"], "10\n10\n-\nq\n");
+    assert!(run.stdout.contains("(10, 5): you said 10, right"));
+    assert!(run.stdout.contains("(12, 5): you said -, wrong"));
+    assert!(run.stdout.ends_with("quiz score: 2 of 3 right\n"));
+}
+
+#[test]
+fn explain_walks_through_pixel_20_15_like_the_book() {
+    let run = zsim(&["explain", "examples/rogers.json", "--pixel", "20,15"]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert!(run.stdout.contains(
+        "polygon 2 \"triangle\": on the scanline y = 15.5 it spans 31/2 ≈ 15.50 … 169/6 ≈ 28.17, which holds the centre x = 41/2 ≈ 20.50; z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored and the framebuffer gets 2"
+    ));
+    assert!(run.stdout.ends_with("final: framebuffer 2, z-buffer 11\n"));
+    snapshot!("explain_rogers_20_15", run.stdout);
+    snapshot!("explain_rogers_27_10", zsim(&["explain", "examples/rogers.json", "--pixel", "27,10"]).stdout);
+    snapshot!("explain_section_16_15", zsim(&["explain", "examples/section.json", "--pixel", "16,15"]).stdout);
+}
+
+#[test]
+fn explain_refuses_pixels_off_the_raster() {
+    let run = zsim(&["explain", "examples/rogers.json", "--pixel", "32,0"]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert_eq!(run.stderr, "zsim: pixel (32, 0) is outside the 32×32 raster (x 0 … 31, y 0 … 31)\n");
+    let run = zsim(&["explain", "examples/rogers.json", "--pixel", "3"]);
+    assert_eq!(run.code, 2);
+}
+
+#[test]
+fn check_finds_the_books_errata() {
+    // The printed z-buffer after the triangle differs at exactly the misprinted cells.
+    let run = zsim(&["check", "examples/rogers.json", "--depth", "tests/fixtures/rogers/depth_after_triangle.txt"]);
+    assert_eq!((run.code, run.stderr.as_str()), (1, ""));
+    let cells: Vec<(String, String)> = run
+        .stdout
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| x"))
+        .map(|l| {
+            let cells: Vec<&str> = l.trim_matches('|').split('|').map(str::trim).collect();
+            (cells[0].to_string(), cells[1].to_string())
+        })
+        .collect();
+    let expected: Vec<(String, String)> =
+        [("27", "10"), ("28", "10"), ("29", "10")].iter().map(|(x, y)| (x.to_string(), y.to_string())).collect();
+    assert_eq!(cells, expected);
+    assert!(run.stdout.contains("no polygon covers (27, 10): on the scanline y = 10.5 polygon 1 \"rectangle\" spans 10 … 25 and polygon 2 \"triangle\" spans 57/2 ≈ 28.50 … 179/6 ≈ 29.83"));
+    snapshot!("check_rogers_book_depth", run.stdout);
+    // The printed framebuffer has 33 rows: refused as the wrong shape.
+    let run = zsim(&["check", "examples/rogers.json", "--frame", "tests/fixtures/rogers/frame_after_triangle.txt"]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert_eq!(run.stderr, "zsim: tests/fixtures/rogers/frame_after_triangle.txt: 33 rows; the raster has 32\n");
+}
+
+#[test]
+fn check_accepts_a_right_answer_after_any_polygon() {
+    let run = zsim(&[
+        "check",
+        "examples/rogers.json",
+        "--after",
+        "rectangle",
+        "--frame",
+        "tests/fixtures/rogers/frame_after_rectangle.txt",
+        "--depth",
+        "tests/fixtures/rogers/depth_after_rectangle.txt",
+    ]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""), "{}", run.stdout);
+    assert_eq!(run.stdout.lines().filter(|l| l.contains("all 1024 cells match")).count(), 2);
+}
+
+#[test]
+fn check_explains_a_students_mistakes() {
+    // A student who compared rounded depths would leave (20, 17) as the rectangle's 1.
+    let mut answer = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/rogers/depth_after_triangle.txt"),
+    )
+    .unwrap();
+    answer = answer.replace(
+        "10 10 10 10 10 10 10 10 10 10 10 10 10 10 10 0 0 6 5 0 0 0",
+        "10 10 10 10 10 10 10 10 10 10 10 10 10 10 10 0 0 0 6 5 0 0",
+    );
+    let mut lines: Vec<String> = answer.lines().map(str::to_string).collect();
+    lines.insert(0, "# my z-buffer after the triangle".to_string());
+    // Row y = 15 (line 17 of the 32 rows, top first): say 10 at (20, 15).
+    let row = 31 - 15 + 1;
+    let mut cells: Vec<String> = lines[row].split_whitespace().map(str::to_string).collect();
+    cells[20] = "10".to_string();
+    lines[row] = cells.join(" ");
+    let (dir, _) = scene_file("unused.json", "{}");
+    let answer_path = dir.join("student_depth.txt");
+    std::fs::write(&answer_path, lines.join("\n")).unwrap();
+    let run = zsim(&["check", "examples/rogers.json", "--depth", answer_path.to_str().unwrap()]);
+    assert_eq!(run.code, 1);
+    assert!(run.stdout.contains("1 of 1024 cell differs"), "{}", run.stdout);
+    assert!(run.stdout.contains(
+        "| 20 | 15 | 10     | 11    | polygon 2 \"triangle\" covers (20, 15): z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored |"
+    ), "{}", run.stdout);
+}
+
+#[test]
+fn check_refuses_malformed_answers() {
+    let (dir, _) = scene_file("unused2.json", "{}");
+    let bad = dir.join("bad_answer.txt");
+    std::fs::write(&bad, "0 0 x\n").unwrap();
+    let run = zsim(&["check", "examples/rogers.json", "--frame", bad.to_str().unwrap()]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert!(
+        run.stderr.ends_with("bad_answer.txt: line 1, value 3: \"x\" is not a whole number from 0 to 4294967295\n"),
+        "{}",
+        run.stderr
+    );
+    let run = zsim(&["check", "examples/rogers.json"]);
+    assert_eq!(run.code, 2);
+    assert_eq!(run.stderr, "zsim: check needs an answer: --frame FILE and/or --depth FILE\n");
+}
+
+#[test]
+fn figure_writes_a_well_formed_svg() {
+    let (dir, _) = scene_file("unused3.json", "{}");
+    let output = dir.join("rogers.svg");
+    let run = zsim_in(None, &["figure", "examples/rogers.json", "-o", output.to_str().unwrap()]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    let svg = std::fs::read_to_string(&output).unwrap();
+    let document = roxmltree::Document::parse(&svg).expect("the SVG is well-formed XML");
+    let count = |id: &str, tag: &str| {
+        let group = document.descendants().find(|n| n.attribute("id") == Some(id)).unwrap();
+        group.children().filter(|n| n.has_tag_name(tag)).count()
+    };
+    assert_eq!(count("centres", "circle"), 1024, "one centre per pixel");
+    assert_eq!(count("scanlines", "line"), 32, "one half-interval scanline per row");
+    assert_eq!(count("polygons", "polygon"), 2);
+    assert_eq!(count("pixels", "rect"), 337, "the non-background cells of the book's framebuffer after the triangle");
+    snapshot!("figure_rogers_svg", svg);
+    let depth = dir.join("rogers_depth.svg");
+    let run =
+        zsim_in(None, &["figure", "examples/rogers.json", "--depth", "--after", "1", "-o", depth.to_str().unwrap()]);
+    assert_eq!(run.code, 0);
+    let svg = std::fs::read_to_string(&depth).unwrap();
+    assert!(roxmltree::Document::parse(&svg).is_ok());
+    assert_eq!(svg.matches("<polygon ").count(), 1, "only the polygons up to --after are outlined");
+}
+
+#[test]
+fn colour_only_on_a_terminal_and_never_with_no_color() {
+    // Piped output (every test above) has no escape codes.
+    assert!(!zsim(&["run", "examples/rogers.json"]).stdout.contains('\x1b'));
+    // On a pseudo-terminal (util-linux `script`), matrices are coloured unless NO_COLOR is set.
+    let binary = env!("CARGO_BIN_EXE_zsim");
+    let on_terminal = |no_color: bool| {
+        let mut command = Command::new("script");
+        command.args(["-qec", &format!("{binary} run examples/rogers.json --final"), "/dev/null"]);
+        command.current_dir(env!("CARGO_MANIFEST_DIR")).env_remove("NO_COLOR");
+        if no_color {
+            command.env("NO_COLOR", "1");
+        }
+        command.output()
+    };
+    match on_terminal(false) {
+        Ok(output) if output.status.success() => {
+            assert!(String::from_utf8_lossy(&output.stdout).contains('\x1b'), "coloured on a terminal");
+            let plain = on_terminal(true).unwrap();
+            assert!(!String::from_utf8_lossy(&plain.stdout).contains('\x1b'), "NO_COLOR turns colour off");
+        }
+        _ => eprintln!("notice: `script` is not available, so colour on a terminal was not tested"),
+    }
+}
