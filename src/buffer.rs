@@ -4,21 +4,36 @@
 //! book numbers pixels; [`Buffers::frame_rows`] and [`Buffers::depth_rows`]
 //! give them top row first, as the book prints them.
 
+use crate::depth::Stored;
+use crate::exact::Q;
+
 /// A framebuffer and a z-buffer of the same size.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Buffers {
     width: u32,
     height: u32,
     frame: Vec<u32>,
-    depth: Vec<u32>,
+    depth: DepthCells,
+}
+
+/// The z-buffer's cells: integer levels (4 bytes each) or exact values.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum DepthCells {
+    Levels(Vec<u32>),
+    Exact(Vec<Q>),
 }
 
 impl Buffers {
-    /// Buffers filled with the background value and the clear depth.
+    /// Buffers filled with the background value and the clear depth, whose
+    /// kind (level or exact) fixes the kind of every cell.
     /// The size must already be validated (see `scene::MAX_CELLS`).
-    pub fn new(width: u32, height: u32, background: u32, clear_depth: u32) -> Buffers {
+    pub fn new(width: u32, height: u32, background: u32, clear_depth: Stored) -> Buffers {
         let cells = width as usize * height as usize;
-        Buffers { width, height, frame: vec![background; cells], depth: vec![clear_depth; cells] }
+        let depth = match clear_depth {
+            Stored::Level(level) => DepthCells::Levels(vec![level; cells]),
+            Stored::Exact(q) => DepthCells::Exact(vec![q; cells]),
+        };
+        Buffers { width, height, frame: vec![background; cells], depth }
     }
 
     /// Width in pixels.
@@ -42,15 +57,23 @@ impl Buffers {
     }
 
     /// The z-buffer value at pixel (x, y).
-    pub fn depth(&self, x: u32, y: u32) -> u32 {
-        self.depth[self.index(x, y)]
+    pub fn depth(&self, x: u32, y: u32) -> Stored {
+        let index = self.index(x, y);
+        match &self.depth {
+            DepthCells::Levels(cells) => Stored::Level(cells[index]),
+            DepthCells::Exact(cells) => Stored::Exact(cells[index]),
+        }
     }
 
-    /// Writes both buffers at pixel (x, y).
-    pub fn store(&mut self, x: u32, y: u32, frame: u32, depth: u32) {
+    /// Writes both buffers at pixel (x, y); the depth is of the buffer's kind.
+    pub fn store(&mut self, x: u32, y: u32, frame: u32, depth: Stored) {
         let index = self.index(x, y);
         self.frame[index] = frame;
-        self.depth[index] = depth;
+        match (&mut self.depth, depth) {
+            (DepthCells::Levels(cells), Stored::Level(level)) => cells[index] = level,
+            (DepthCells::Exact(cells), Stored::Exact(q)) => cells[index] = q,
+            _ => debug_assert!(false, "depth of the wrong kind stored: please report this bug"),
+        }
     }
 
     /// The framebuffer as rows, top row (y = height − 1) first.
@@ -59,13 +82,30 @@ impl Buffers {
     }
 
     /// The z-buffer as rows, top row (y = height − 1) first.
-    pub fn depth_rows(&self) -> Vec<Vec<u32>> {
-        rows_top_first(&self.depth, self.width)
+    pub fn depth_rows(&self) -> Vec<Vec<Stored>> {
+        match &self.depth {
+            DepthCells::Levels(cells) => rows_top_first(cells, self.width)
+                .into_iter()
+                .map(|r| r.into_iter().map(Stored::Level).collect())
+                .collect(),
+            DepthCells::Exact(cells) => rows_top_first(cells, self.width)
+                .into_iter()
+                .map(|r| r.into_iter().map(Stored::Exact).collect())
+                .collect(),
+        }
+    }
+
+    /// The z-buffer as integer rows, top row first, when it holds levels.
+    pub fn depth_level_rows(&self) -> Option<Vec<Vec<u32>>> {
+        match &self.depth {
+            DepthCells::Levels(cells) => Some(rows_top_first(cells, self.width)),
+            DepthCells::Exact(_) => None,
+        }
     }
 }
 
-fn rows_top_first(cells: &[u32], width: u32) -> Vec<Vec<u32>> {
-    cells.chunks_exact(width as usize).rev().map(<[u32]>::to_vec).collect()
+fn rows_top_first<T: Clone>(cells: &[T], width: u32) -> Vec<Vec<T>> {
+    cells.chunks_exact(width as usize).rev().map(<[T]>::to_vec).collect()
 }
 
 #[cfg(test)]
@@ -74,9 +114,9 @@ mod tests {
 
     #[test]
     fn pixel_origin_is_bottom_left_and_printed_last() {
-        let mut buffers = Buffers::new(3, 2, 0, 0);
-        buffers.store(0, 0, 7, 9);
+        let mut buffers = Buffers::new(3, 2, 0, Stored::Level(0));
+        buffers.store(0, 0, 7, Stored::Level(9));
         assert_eq!(buffers.frame_rows(), vec![vec![0, 0, 0], vec![7, 0, 0]]);
-        assert_eq!(buffers.depth_rows()[1][0], 9);
+        assert_eq!(buffers.depth_rows()[1][0], Stored::Level(9));
     }
 }

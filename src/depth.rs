@@ -5,8 +5,46 @@ use std::cmp::Ordering;
 
 use serde::{Deserialize, Serialize};
 
-use crate::exact::{Q, cmp_fractions, floor_div};
+use crate::exact::{Q, cmp_fractions, exact_and_decimal, floor_div};
 use crate::plane::Geometry;
+use crate::rules::DepthStore;
+
+/// A value held by one z-buffer cell.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stored {
+    /// An integer level `0 … 2^depth_bits − 1` ([`DepthStore::Quantized`]).
+    Level(u32),
+    /// An exact depth ([`DepthStore::Exact`]).
+    Exact(Q),
+}
+
+impl Stored {
+    /// The value as a rational.
+    pub fn value(self) -> Q {
+        match self {
+            Stored::Level(level) => Q::from_integer(i128::from(level)),
+            Stored::Exact(q) => q,
+        }
+    }
+
+    /// The integer level, when the z-buffer is quantized.
+    pub fn level(self) -> Option<u32> {
+        match self {
+            Stored::Level(level) => Some(level),
+            Stored::Exact(_) => None,
+        }
+    }
+}
+
+impl std::fmt::Display for Stored {
+    /// A level as an integer (`11`); an exact value as `43/4 ≈ 10.75`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Stored::Level(level) => write!(f, "{level}"),
+            Stored::Exact(q) => f.write_str(&exact_and_decimal(*q)),
+        }
+    }
+}
 
 /// Which depth is nearer the viewer, and so which test a pixel must pass.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -30,10 +68,13 @@ impl DepthTest {
         }
     }
 
-    /// Whether an incoming exact depth replaces the stored integer. Equal
+    /// Whether an incoming exact depth replaces the stored value. Equal
     /// depths never overwrite: the first polygon drawn keeps the pixel.
-    pub fn passes(self, incoming: Depth, stored: u32) -> bool {
-        let ord = incoming.cmp_integer(i128::from(stored));
+    pub fn passes(self, incoming: Depth, stored: Stored) -> bool {
+        let ord = match stored {
+            Stored::Level(level) => incoming.cmp_integer(i128::from(level)),
+            Stored::Exact(q) => incoming.cmp_q(q),
+        };
         match self {
             DepthTest::Greater => ord == Ordering::Greater,
             DepthTest::Less => ord == Ordering::Less,
@@ -122,10 +163,18 @@ impl Depth {
         self.whole + i128::from(2 * self.remainder >= self.denominator)
     }
 
-    /// What the z-buffer stores: rounded half up, then saturated to
+    /// What a quantized z-buffer stores: rounded half up, then saturated to
     /// `0 ..= depth_max`.
     pub fn quantized(self, depth_max: u32) -> u32 {
         self.rounded().clamp(0, i128::from(depth_max)) as u32
+    }
+
+    /// What the z-buffer stores under `store`.
+    pub fn stored(self, store: DepthStore, depth_max: u32) -> Stored {
+        match store {
+            DepthStore::Quantized => Stored::Level(self.quantized(depth_max)),
+            DepthStore::Exact => Stored::Exact(self.value()),
+        }
     }
 }
 
@@ -214,18 +263,23 @@ mod tests {
     #[test]
     fn equal_depth_does_not_overwrite() {
         let ten = Depth::from_fraction(10, 1);
-        assert!(!DepthTest::Greater.passes(ten, 10));
-        assert!(!DepthTest::Less.passes(ten, 10));
-        assert!(DepthTest::Greater.passes(Depth::from_fraction(41, 4), 10));
-        assert!(!DepthTest::Less.passes(Depth::from_fraction(41, 4), 10));
-        assert!(DepthTest::Less.passes(Depth::from_fraction(39, 4), 10));
+        let stored = Stored::Level(10);
+        assert!(!DepthTest::Greater.passes(ten, stored));
+        assert!(!DepthTest::Less.passes(ten, stored));
+        assert!(DepthTest::Greater.passes(Depth::from_fraction(41, 4), stored));
+        assert!(!DepthTest::Less.passes(Depth::from_fraction(41, 4), stored));
+        assert!(DepthTest::Less.passes(Depth::from_fraction(39, 4), stored));
+        // Exact stored values compare exactly too.
+        let exact = Stored::Exact(Q::new(41, 4));
+        assert!(!DepthTest::Less.passes(Depth::from_fraction(82, 8), exact));
+        assert!(DepthTest::Less.passes(Depth::from_fraction(81, 8), exact));
     }
 
     #[test]
     fn exact_depth_beats_rounded_depth() {
         // The book's pixel (20, 17): z = 41/4 rounds to 10 but is still nearer than 10.
         let z = Depth::from_fraction(41, 4);
-        assert!(DepthTest::Greater.passes(z, 10));
+        assert!(DepthTest::Greater.passes(z, Stored::Level(10)));
         assert_eq!(z.quantized(15), 10);
     }
 

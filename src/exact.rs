@@ -160,6 +160,52 @@ pub fn ceil_div(n: i128, d: i128) -> i128 {
     Integer::div_ceil(&n, &d)
 }
 
+/// The `f64` nearest to a rational (ties to even), computed exactly from the
+/// integers: 55 significant bits by long division, then a sticky bit.
+///
+/// ```
+/// use zsim::exact::{to_f64, Q};
+/// assert_eq!(to_f64(Q::new(1, 10)), 0.1);
+/// assert_eq!(to_f64(Q::new(-979798, 1000000)), -0.979798);
+/// ```
+pub fn to_f64(value: Q) -> f64 {
+    let negative = *value.numer() < 0;
+    let (numer, denom) = (value.numer().unsigned_abs(), value.denom().unsigned_abs());
+    if numer == 0 {
+        return 0.0;
+    }
+    // mantissa holds the leading significant bits; exponent e: value ≈ mantissa·2^e.
+    let whole = numer / denom;
+    let mut remainder = numer % denom;
+    let (mut mantissa, mut exponent): (u128, i32) = (whole, 0);
+    let mut sticky = false;
+    let bits = |m: u128| 128 - m.leading_zeros() as i32;
+    if bits(mantissa) > 55 {
+        let shift = bits(mantissa) - 55;
+        sticky = mantissa & ((1u128 << shift) - 1) != 0 || remainder != 0;
+        mantissa >>= shift;
+        exponent = shift;
+    } else {
+        // denom < 2^127, so 2·remainder fits in u128.
+        while bits(mantissa) < 55 {
+            remainder <<= 1;
+            mantissa = (mantissa << 1) | u128::from(remainder >= denom);
+            if remainder >= denom {
+                remainder -= denom;
+            }
+            exponent -= 1;
+        }
+        sticky = sticky || remainder != 0;
+    }
+    // 55 bits: 53 kept, a guard bit and a round bit; round half to even.
+    let kept = mantissa >> 2;
+    let guard = (mantissa >> 1) & 1 == 1;
+    let round_or_sticky = mantissa & 1 == 1 || sticky;
+    let kept = if guard && (round_or_sticky || kept & 1 == 1) { kept + 1 } else { kept };
+    let magnitude = (kept as f64) * 2f64.powi(exponent + 2);
+    if negative { -magnitude } else { magnitude }
+}
+
 /// Formats a rational the way zsim prints exact values: reduced, `43/4`, or
 /// `10` when whole.
 pub fn fraction(value: Q) -> String {
@@ -251,6 +297,18 @@ mod tests {
         let big = 1i128 << 120;
         assert_eq!(cmp_fractions(big + 1, big, big, big - 1), Ordering::Less);
         assert_eq!(cmp_fractions(big, big - 1, big + 1, big), Ordering::Greater);
+    }
+
+    #[test]
+    fn nearest_f64_matches_the_correctly_rounded_parse() {
+        for text in ["0.1", "0.9797980", "-1.8316516", "123456.789", "0.0078125", "1e-7", "2.5e20", "-7"] {
+            let value = parse_number(text).unwrap();
+            assert_eq!(to_f64(value), text.parse::<f64>().unwrap(), "{text}");
+        }
+        for (n, d) in [(1, 3), (2, 3), (-22, 7), (355, 113), (1, 1 << 100), ((1 << 100) + 1, 3)] {
+            let expected = format!("{}", n as f64 / d as f64);
+            assert_eq!(to_f64(Q::new(n, d)).to_string(), expected, "{n}/{d}");
+        }
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! events: what the depth test made of a pixel, the history of a pixel
 //! through a scene, and why a cell holds its value.
 
-use crate::depth::Depth;
+use crate::depth::{Depth, Stored};
 use crate::exact::{Q, exact_and_decimal};
 use crate::scene::Scene;
 use crate::trace::{Fate, Outcome, PixelEvent, PixelHistoryEntry, ScanlineRecord, SpanRecord};
@@ -43,12 +43,16 @@ pub fn scanline_text(row: u32) -> String {
 
 /// What is stored for an exact depth, with a note when it saturates.
 pub fn stored_text(scene: &Scene, depth: Depth) -> String {
-    let stored = depth.quantized(scene.depth_max());
-    let rounded = depth.rounded();
-    if rounded == i128::from(stored) {
-        stored.to_string()
-    } else {
-        format!("{stored} ({} rounds to {rounded}, saturated to {stored})", exact_and_decimal(depth.value()))
+    match depth.stored(scene.rules.store, scene.depth_max()) {
+        Stored::Level(stored) => {
+            let rounded = depth.rounded();
+            if rounded == i128::from(stored) {
+                stored.to_string()
+            } else {
+                format!("{stored} ({} rounds to {rounded}, saturated to {stored})", exact_and_decimal(depth.value()))
+            }
+        }
+        exact @ Stored::Exact(_) => format!("{exact} (exactly)"),
     }
 }
 
@@ -65,6 +69,14 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
             event.frame_after
         ),
         Outcome::Hidden => format!("z = {z} is not {op} {} stored: hidden, nothing changes", event.stored_before),
+        Outcome::OutsideDepthRange => {
+            let (front, rear) = scene.depth_range.unwrap_or((Q::from_integer(0), Q::from_integer(0)));
+            format!(
+                "z = {z} is outside the depth range {} … {}: discarded",
+                exact_and_decimal(front),
+                exact_and_decimal(rear)
+            )
+        }
         Outcome::BeyondSection => {
             let section = scene.effects.section.map_or(String::new(), exact_and_decimal);
             format!(
@@ -157,7 +169,7 @@ pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistor
     }
     let cleared = match buffer {
         Buffer::Frame => format!("the background {}", scene.background),
-        Buffer::Depth => format!("the cleared depth {}", scene.depth_test.clear_value(scene.depth_max())),
+        Buffer::Depth => format!("the cleared depth {}", scene.clear_depth),
     };
     let covered: Vec<String> = history
         .iter()

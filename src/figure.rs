@@ -7,6 +7,7 @@
 use std::fmt::Write as _;
 
 use crate::buffer::Buffers;
+use crate::depth::Stored;
 use crate::exact::{Q, decimal};
 use crate::scene::Scene;
 
@@ -52,7 +53,8 @@ pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, titl
     let _ = writeln!(out, r#"<text x="{MARGIN_LEFT}" y="20" font-size="13">{}</text>"#, escape(title));
     // Covered pixels.
     let _ = writeln!(out, r#"<g id="pixels" stroke="none">"#);
-    let clear = scene.depth_test.clear_value(scene.depth_max());
+    let range = exact_range(scene, buffers);
+    let clear = scene.clear_depth;
     for y in 0..scene.height {
         for x in 0..scene.width {
             let fill = match shading {
@@ -68,7 +70,7 @@ pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, titl
                     if value == clear {
                         continue;
                     }
-                    depth_grey(value, scene)
+                    depth_grey(value, scene, range)
                 }
             };
             let _ = writeln!(
@@ -162,16 +164,32 @@ pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, titl
     out
 }
 
-/// A grey for a depth: nearer (by the depth test) is darker.
-fn depth_grey(value: u32, scene: &Scene) -> String {
-    let max = u64::from(scene.depth_max());
+/// A grey for a depth: nearer (by the depth test) is darker. Levels are
+/// scaled by the level range; exact depths by the range `[low, high]` of the
+/// values in the buffer.
+fn depth_grey(value: Stored, scene: &Scene, (low, high): (Q, Q)) -> String {
+    let (value, low, high) = match value {
+        Stored::Level(level) => {
+            (Q::from_integer(i128::from(level)), Q::from_integer(0), Q::from_integer(i128::from(scene.depth_max())))
+        }
+        Stored::Exact(q) => (q, low, high),
+    };
+    let span = if high > low { high - low } else { Q::from_integer(1) };
     let nearness = match scene.depth_test {
-        crate::depth::DepthTest::Greater => u64::from(value),
-        crate::depth::DepthTest::Less => max - u64::from(value),
+        crate::depth::DepthTest::Greater => (value - low) / span,
+        crate::depth::DepthTest::Less => (high - value) / span,
     };
     // 230 (far) … 60 (near), in whole steps.
-    let level = 230 - (170 * nearness / max.max(1)) as u8;
+    let level = 230 - (nearness * 170).floor().to_integer().clamp(0, 170) as u8;
     format!("#{level:02x}{level:02x}{level:02x}")
+}
+
+/// The least and greatest exact depths written (for shading).
+fn exact_range(scene: &Scene, buffers: &Buffers) -> (Q, Q) {
+    let written = buffers.depth_rows().into_iter().flatten().filter(|v| *v != scene.clear_depth).map(Stored::value);
+    written
+        .fold(None, |range: Option<(Q, Q)>, v| Some(range.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v)))))
+        .unwrap_or((Q::from_integer(0), Q::from_integer(1)))
 }
 
 fn escape(text: &str) -> String {

@@ -77,6 +77,7 @@ pub mod figure;
 pub mod pipeline;
 pub mod plane;
 pub mod report;
+pub mod rules;
 pub mod scan;
 pub mod scene;
 pub mod trace;

@@ -4,6 +4,8 @@
 
 use crate::buffer::Buffers;
 use crate::depth::DepthStepper;
+use crate::exact::fraction;
+use crate::rules::{DepthStore, RowRule};
 use crate::scan::{self, Crossing, Span};
 use crate::scene::{Scene, Winding};
 use crate::trace::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent};
@@ -33,10 +35,9 @@ pub struct Simulation<'s> {
 impl<'s> Simulation<'s> {
     /// Cleared buffers: the background value, and the depth test's farthest depth.
     pub fn new(scene: &'s Scene) -> Simulation<'s> {
-        let clear = scene.depth_test.clear_value(scene.depth_max());
         Simulation {
             scene,
-            buffers: Buffers::new(scene.width, scene.height, scene.background, clear),
+            buffers: Buffers::new(scene.width, scene.height, scene.background, scene.clear_depth),
             next: 0,
             stats: Stats::default(),
             crossings: Vec::new(),
@@ -88,13 +89,20 @@ impl<'s> Simulation<'s> {
         let polygon = &scene.polygons[index];
         let geometry = &polygon.geometry;
         let depth_max = scene.depth_max();
-        let Some(rows) = scan::rows(&geometry.points, geometry.denominator, scene.height) else {
+        let rules = scene.rules;
+        let Some(rows) = scan::rows(&geometry.points, geometry.denominator, scene.height, rules.rows) else {
             return;
         };
         for row in rows {
             let scan_y = scan::scanline_y(row, geometry.denominator);
-            scan::crossings(&geometry.points, scan_y, &mut self.crossings);
-            scan::spans(&self.crossings, geometry.denominator, scene.width, &mut self.spans);
+            scan::crossings(&geometry.points, scan_y, rules.rows, &mut self.crossings);
+            scan::spans(
+                &self.crossings,
+                geometry.denominator,
+                scene.width,
+                (rules.rows, rules.columns),
+                &mut self.spans,
+            );
             observer.scanline(&ScanlineEvent { index, polygon, row, crossings: &self.crossings, spans: &self.spans });
             for span in &self.spans {
                 let Some((first, last)) = span.columns else { continue };
@@ -104,7 +112,12 @@ impl<'s> Simulation<'s> {
                     stepper.advance();
                     let stored_before = self.buffers.depth(x, row);
                     let frame_before = self.buffers.frame(x, row);
-                    let outcome = if !scene.depth_test.passes(depth, stored_before) {
+                    let outcome = if scene
+                        .depth_range
+                        .is_some_and(|(front, rear)| depth.cmp_q(front).is_lt() || depth.cmp_q(rear).is_gt())
+                    {
+                        Outcome::OutsideDepthRange
+                    } else if !scene.depth_test.passes(depth, stored_before) {
                         Outcome::Hidden
                     } else if scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(depth, z)) {
                         Outcome::BeyondSection
@@ -114,7 +127,7 @@ impl<'s> Simulation<'s> {
                     self.stats.tested += 1;
                     let (stored_after, frame_after) = if outcome == Outcome::Written {
                         self.stats.written += 1;
-                        let stored = depth.quantized(depth_max);
+                        let stored = depth.stored(rules.store, depth_max);
                         self.buffers.store(x, row, polygon.value, stored);
                         (stored, polygon.value)
                     } else {
@@ -156,15 +169,29 @@ pub fn stages(scene: &Scene) -> Vec<String> {
     if let Some(winding) = scene.effects.cull {
         stages.push(format!("back-face culling ({} polygons skipped)", winding.name()));
     }
-    stages.push("scan conversion".to_string());
-    stages.push(format!("depth test (z {} stored)", scene.depth_test.symbol()));
-    if let Some(section) = scene.effects.section {
+    if let Some(window) = scene.window {
         stages.push(format!(
-            "cross-section (z {} {})",
-            scene.depth_test.section_symbol(),
-            crate::exact::fraction(section)
+            "window {} … {} × {} … {} onto the raster",
+            fraction(window.left),
+            fraction(window.right),
+            fraction(window.bottom),
+            fraction(window.top)
         ));
     }
-    stages.push(format!("store (rounded half up, saturated to 0…{})", scene.depth_max()));
+    stages.push(match scene.rules.rows {
+        RowRule::HalfOpen => "scan conversion".to_string(),
+        RowRule::Closed => "scan conversion (closed rows, cells holding the crossings)".to_string(),
+    });
+    if let Some((front, rear)) = scene.depth_range {
+        stages.push(format!("depth range (discard z outside {} … {})", fraction(front), fraction(rear)));
+    }
+    stages.push(format!("depth test (z {} stored)", scene.depth_test.symbol()));
+    if let Some(section) = scene.effects.section {
+        stages.push(format!("cross-section (z {} {})", scene.depth_test.section_symbol(), fraction(section)));
+    }
+    stages.push(match scene.rules.store {
+        DepthStore::Quantized => format!("store (rounded half up, saturated to 0…{})", scene.depth_max()),
+        DepthStore::Exact => "store (exact depth)".to_string(),
+    });
     stages
 }

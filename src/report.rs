@@ -3,6 +3,19 @@
 
 use serde::Serialize;
 
+use crate::depth::Stored;
+use crate::exact::{decimal, to_f64};
+
+impl Serialize for Stored {
+    /// A level as an integer; an exact depth as the nearest `f64`.
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match self {
+            Stored::Level(level) => serializer.serialize_u32(*level),
+            Stored::Exact(q) => serializer.serialize_f64(to_f64(*q)),
+        }
+    }
+}
+
 use crate::pipeline::{fate, stages};
 use crate::scene::{Scene, Winding};
 use crate::trace::Fate;
@@ -64,16 +77,49 @@ pub struct MatrixStyle {
 /// right-aligned to its widest value, columns separated by one space.
 /// With `axes`, rows are labelled with y (top row = `height − 1`) and
 /// columns with x.
-pub fn matrix(rows: &[Vec<u32>], axes: bool) -> String {
+pub fn matrix<T: MatrixCell>(rows: &[Vec<T>], axes: bool) -> String {
     matrix_styled(rows, &MatrixStyle { axes, ..MatrixStyle::default() })
 }
 
+/// A value printed in a matrix cell.
+pub trait MatrixCell {
+    /// Its text.
+    fn text(&self) -> String;
+    /// The number that picks its colour.
+    fn colour_key(&self) -> u32;
+}
+
+impl MatrixCell for u32 {
+    fn text(&self) -> String {
+        self.to_string()
+    }
+
+    fn colour_key(&self) -> u32 {
+        *self
+    }
+}
+
+impl MatrixCell for Stored {
+    /// A level as an integer; an exact depth as a decimal with 6 places.
+    fn text(&self) -> String {
+        match self {
+            Stored::Level(level) => level.to_string(),
+            Stored::Exact(q) => decimal(*q, 6),
+        }
+    }
+
+    fn colour_key(&self) -> u32 {
+        self.level().unwrap_or(1)
+    }
+}
+
 /// [`matrix`] with colour, a window of rows and a marked row.
-pub fn matrix_styled(rows: &[Vec<u32>], style: &MatrixStyle) -> String {
+pub fn matrix_styled<T: MatrixCell>(rows: &[Vec<T>], style: &MatrixStyle) -> String {
     let height = rows.len();
     let width = rows.first().map_or(0, Vec::len);
+    let texts: Vec<Vec<String>> = rows.iter().map(|row| row.iter().map(MatrixCell::text).collect()).collect();
     let mut column_widths: Vec<usize> =
-        (0..width).map(|x| rows.iter().map(|row| digits(row[x])).max().unwrap_or(1)).collect();
+        (0..width).map(|x| texts.iter().map(|row| row[x].chars().count()).max().unwrap_or(1)).collect();
     if style.axes {
         for (x, w) in column_widths.iter_mut().enumerate() {
             *w = (*w).max(digits(x as u32));
@@ -97,8 +143,9 @@ pub fn matrix_styled(rows: &[Vec<u32>], style: &MatrixStyle) -> String {
         }
         let cells: Vec<String> = row
             .iter()
+            .zip(&texts[i])
             .zip(&column_widths)
-            .map(|(value, w)| paint(&format!("{value:>w$}"), *value, style.color))
+            .map(|((value, text), w)| paint(&format!("{text:>w$}"), value.colour_key(), style.color))
             .collect();
         out.push_str(&cells.join(" "));
         out.push('\n');
@@ -150,8 +197,9 @@ pub struct StepJson {
     pub polygon: String,
     /// The framebuffer, top row first.
     pub frame: Vec<Vec<u32>>,
-    /// The z-buffer, top row first.
-    pub depth: Vec<Vec<u32>>,
+    /// The z-buffer, top row first: integer levels, or for an exact z-buffer
+    /// the nearest `f64` of each exact depth.
+    pub depth: Vec<Vec<Stored>>,
 }
 
 #[cfg(test)]

@@ -6,6 +6,7 @@ use std::cmp::Ordering;
 use std::ops::RangeInclusive;
 
 use crate::exact::{Q, ceil_div, floor_div};
+use crate::rules::{ColumnRule, RowRule};
 
 /// An x position in scaled units as the fraction `numerator / denominator`
 /// (`denominator > 0`), where a crossing falls on a scanline.
@@ -48,31 +49,42 @@ pub fn scanline_y(row: u32, denominator: i128) -> i128 {
     (2 * i128::from(row) + 1) * denominator
 }
 
-/// The rows whose scanlines can meet the polygon: those with
-/// `y_min ≤ row + 1/2 < y_max`, clipped to `0 .. height`.
-pub fn rows(points: &[[i128; 3]], denominator: i128, height: u32) -> Option<RangeInclusive<u32>> {
+/// The rows whose scanlines can meet the polygon, clipped to `0 .. height`:
+/// those with `y_min ≤ row + 1/2 < y_max` (half-open), or
+/// `y_min ≤ row + 1/2 ≤ y_max` (closed).
+pub fn rows(points: &[[i128; 3]], denominator: i128, height: u32, rule: RowRule) -> Option<RangeInclusive<u32>> {
     let y_min = points.iter().map(|p| p[1]).min()?;
     let y_max = points.iter().map(|p| p[1]).max()?;
     // (2r + 1)·D ≥ y_min  ⇔  r ≥ ⌈(y_min − D) / 2D⌉
     let first = ceil_div(y_min - denominator, 2 * denominator).max(0);
-    // (2r + 1)·D < y_max  ⇔  r < (y_max − D) / 2D  ⇔  r ≤ ⌈(y_max − D) / 2D⌉ − 1
-    let last = (ceil_div(y_max - denominator, 2 * denominator) - 1).min(i128::from(height) - 1);
+    let last = match rule {
+        // (2r + 1)·D < y_max  ⇔  r < (y_max − D) / 2D  ⇔  r ≤ ⌈(y_max − D) / 2D⌉ − 1
+        RowRule::HalfOpen => ceil_div(y_max - denominator, 2 * denominator) - 1,
+        // (2r + 1)·D ≤ y_max  ⇔  r ≤ ⌊(y_max − D) / 2D⌋
+        RowRule::Closed => floor_div(y_max - denominator, 2 * denominator).0,
+    };
+    let last = last.min(i128::from(height) - 1);
     (first <= last).then_some(first as u32..=last as u32)
 }
 
 /// The crossings of the polygon's edges with the scanline at scaled height
 /// `scan_y`, sorted left to right, written into `out`.
 ///
-/// Rogers' half-interval convention: an edge crosses when
-/// `min(y₁, y₂) ≤ y < max(y₁, y₂)`, so a vertex on the scanline counts only
-/// for the edge whose lower end it is, and horizontal edges never cross.
-pub fn crossings(points: &[[i128; 3]], scan_y: i128, out: &mut Vec<Crossing>) {
+/// Rogers' half-interval convention ([`RowRule::HalfOpen`]): an edge crosses
+/// when `min(y₁, y₂) ≤ y < max(y₁, y₂)`, so a vertex on the scanline counts
+/// only for the edge whose lower end it is. With [`RowRule::Closed`] an edge
+/// crosses when `min(y₁, y₂) ≤ y ≤ max(y₁, y₂)`. Horizontal edges never cross.
+pub fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
     out.clear();
     let count = points.len();
     for i in 0..count {
         let [x1, y1, _] = points[i];
         let [x2, y2, _] = points[(i + 1) % count];
-        if y1 == y2 || scan_y < y1.min(y2) || scan_y >= y1.max(y2) {
+        let above = match rule {
+            RowRule::HalfOpen => scan_y >= y1.max(y2),
+            RowRule::Closed => scan_y > y1.max(y2),
+        };
+        if y1 == y2 || scan_y < y1.min(y2) || above {
             continue;
         }
         // x = x₁ + (x₂ − x₁)(y − y₁)/(y₂ − y₁), kept as one fraction.
@@ -84,28 +96,48 @@ pub fn crossings(points: &[[i128; 3]], scan_y: i128, out: &mut Vec<Crossing>) {
     out.sort_unstable_by(Crossing::cmp_position);
 }
 
-/// The columns whose centres `x + 1/2` lie within `[left, right]`, boundary
-/// included ("the pixel whose centre lies inside or on the boundary"),
-/// clipped to `0 .. width`.
-pub fn columns(left: Crossing, right: Crossing, denominator: i128, width: u32) -> Option<(u32, u32)> {
-    // (2x + 1)·D ≥ n/d  ⇔  x ≥ ⌈(n − D·d) / 2D·d⌉
-    let first = ceil_div(left.numerator - denominator * left.denominator, 2 * denominator * left.denominator);
-    // (2x + 1)·D ≤ n/d  ⇔  x ≤ ⌊(n − D·d) / 2D·d⌋
-    let last = floor_div(right.numerator - denominator * right.denominator, 2 * denominator * right.denominator).0;
+/// The columns a span covers, clipped to `0 .. width`: with
+/// [`ColumnRule::CentreInside`] those whose centres `x + 1/2` lie within
+/// `[left, right]`, boundary included ("the pixel whose centre lies inside or
+/// on the boundary"); with [`ColumnRule::CellHolds`] from `⌊left⌋` to `⌊right⌋`.
+pub fn columns(left: Crossing, right: Crossing, denominator: i128, width: u32, rule: ColumnRule) -> Option<(u32, u32)> {
+    let (first, last) = match rule {
+        ColumnRule::CentreInside => (
+            // (2x + 1)·D ≥ n/d  ⇔  x ≥ ⌈(n − D·d) / 2D·d⌉
+            ceil_div(left.numerator - denominator * left.denominator, 2 * denominator * left.denominator),
+            // (2x + 1)·D ≤ n/d  ⇔  x ≤ ⌊(n − D·d) / 2D·d⌋
+            floor_div(right.numerator - denominator * right.denominator, 2 * denominator * right.denominator).0,
+        ),
+        // x = n / (2D·d) in pixel units: the cell holding it is ⌊n / 2D·d⌋.
+        ColumnRule::CellHolds => (
+            floor_div(left.numerator, 2 * denominator * left.denominator).0,
+            floor_div(right.numerator, 2 * denominator * right.denominator).0,
+        ),
+    };
     let first = first.max(0);
     let last = last.min(i128::from(width) - 1);
     (first <= last).then_some((first as u32, last as u32))
 }
 
-/// Pairs sorted crossings 1st–2nd, 3rd–4th, … into spans (an odd last
-/// crossing cannot happen for a closed polygon and is ignored).
-pub fn spans(crossings: &[Crossing], denominator: i128, width: u32, out: &mut Vec<Span>) {
+/// Turns sorted crossings into spans: paired 1st–2nd, 3rd–4th, … with
+/// [`RowRule::HalfOpen`] (an odd last crossing cannot happen for a closed
+/// polygon and is ignored), or one span from the first to the last with
+/// [`RowRule::Closed`].
+pub fn spans(crossings: &[Crossing], denominator: i128, width: u32, rules: (RowRule, ColumnRule), out: &mut Vec<Span>) {
     out.clear();
-    out.extend(crossings.chunks_exact(2).map(|pair| Span {
-        left: pair[0],
-        right: pair[1],
-        columns: columns(pair[0], pair[1], denominator, width),
-    }));
+    let span = |left: Crossing, right: Crossing| Span {
+        left,
+        right,
+        columns: columns(left, right, denominator, width, rules.1),
+    };
+    match rules.0 {
+        RowRule::HalfOpen => out.extend(crossings.chunks_exact(2).map(|pair| span(pair[0], pair[1]))),
+        RowRule::Closed => {
+            if let (Some(first), Some(last)) = (crossings.first(), crossings.last()) {
+                out.push(span(*first, *last));
+            }
+        }
+    }
 }
 
 #[cfg(test)]
@@ -119,7 +151,7 @@ mod tests {
 
     fn crossing_xs(points: &[[i128; 3]], row: u32) -> Vec<Q> {
         let mut out = Vec::new();
-        crossings(points, scanline_y(row, 1), &mut out);
+        crossings(points, scanline_y(row, 1), RowRule::HalfOpen, &mut out);
         out.iter().map(|c| c.x(2)).collect()
     }
 
@@ -129,7 +161,7 @@ mod tests {
         let points: Vec<[i128; 3]> = [[4, 1], [6, 5], [4, 9], [2, 5]].iter().map(|p| [p[0], p[1], 0]).collect();
         // In scaled units with D = 1 a point at y = 5 is y = 2.5.
         let mut out = Vec::new();
-        crossings(&points, 5, &mut out);
+        crossings(&points, 5, RowRule::HalfOpen, &mut out);
         assert_eq!(out.len(), 2, "each side vertex counts once, for the edge it is the lower end of");
         assert_eq!(out.iter().map(|c| c.x(2)).collect::<Vec<_>>(), vec![Q::from_integer(1), Q::from_integer(3)]);
     }
@@ -139,9 +171,9 @@ mod tests {
         // Triangle with apex exactly at y = 2.5 (scaled 5): the apex is the upper end of both edges.
         let points: Vec<[i128; 3]> = [[0, 1], [8, 1], [4, 5]].iter().map(|p| [p[0], p[1], 0]).collect();
         let mut out = Vec::new();
-        crossings(&points, 5, &mut out);
+        crossings(&points, 5, RowRule::HalfOpen, &mut out);
         assert!(out.is_empty());
-        crossings(&points, 1, &mut out);
+        crossings(&points, 1, RowRule::HalfOpen, &mut out);
         assert_eq!(out.len(), 2, "the base's scanline counts the two edges whose lower end is on it");
     }
 
@@ -157,39 +189,62 @@ mod tests {
         // Span [0.5, 2.5] covers centres 0.5, 1.5 and 2.5: both boundaries included.
         let left = Crossing { numerator: 1, denominator: 1 };
         let right = Crossing { numerator: 5, denominator: 1 };
-        assert_eq!(columns(left, right, 1, 32), Some((0, 2)));
+        assert_eq!(columns(left, right, 1, 32, ColumnRule::CentreInside), Some((0, 2)));
     }
 
     #[test]
     fn span_between_centres_covers_nothing() {
         let left = Crossing { numerator: 6, denominator: 5 }; // 0.6
         let right = Crossing { numerator: 14, denominator: 5 }; // 1.4
-        assert_eq!(columns(left, right, 1, 32), None);
+        assert_eq!(columns(left, right, 1, 32, ColumnRule::CentreInside), None);
     }
 
     #[test]
     fn span_shrinking_to_one_centre_covers_it() {
         let centre = Crossing { numerator: 3, denominator: 1 }; // 1.5
-        assert_eq!(columns(centre, centre, 1, 32), Some((1, 1)));
+        assert_eq!(columns(centre, centre, 1, 32, ColumnRule::CentreInside), Some((1, 1)));
     }
 
     #[test]
     fn spans_are_clipped_to_the_raster() {
         let left = Crossing { numerator: -20, denominator: 1 };
         let right = Crossing { numerator: 200, denominator: 1 };
-        assert_eq!(columns(left, right, 1, 32), Some((0, 31)));
+        assert_eq!(columns(left, right, 1, 32, ColumnRule::CentreInside), Some((0, 31)));
         let beyond = Crossing { numerator: 100, denominator: 1 };
-        assert_eq!(columns(beyond, right, 1, 32), None);
+        assert_eq!(columns(beyond, right, 1, 32, ColumnRule::CentreInside), None);
+    }
+
+    #[test]
+    fn closed_rows_include_the_top_vertex_row() {
+        // y from 5.5 to 6.5: the closed rule takes centres 5.5 and 6.5.
+        let points: Vec<[i128; 3]> = [[0, 11], [4, 11], [4, 13]].iter().map(|p| [p[0], p[1], 0]).collect();
+        assert_eq!(rows(&points, 1, 32, RowRule::Closed), Some(5..=6));
+        // The apex at y = 6.5 gives two equal crossings there.
+        let mut out = Vec::new();
+        crossings(&points, 13, RowRule::Closed, &mut out);
+        assert_eq!(out.len(), 2);
+        assert_eq!(out[0].x(2), out[1].x(2));
+    }
+
+    #[test]
+    fn cell_rule_takes_the_cells_holding_the_crossings() {
+        // Span 0.6 … 1.4: no centre inside, but the cells holding 0.6 and 1.4 are 0 and 1.
+        let left = Crossing { numerator: 6, denominator: 5 };
+        let right = Crossing { numerator: 14, denominator: 5 };
+        assert_eq!(columns(left, right, 1, 32, ColumnRule::CellHolds), Some((0, 1)));
+        // A crossing exactly on a cell boundary (x = 2) belongs to the cell on its right.
+        let on_line = Crossing { numerator: 4, denominator: 1 };
+        assert_eq!(columns(on_line, on_line, 1, 32, ColumnRule::CellHolds), Some((2, 2)));
     }
 
     #[test]
     fn rows_follow_the_half_open_rule() {
         // y from 5 to 25: centres 5.5 … 24.5, rows 5 … 24.
         let points = scaled(&[[10, 5], [10, 25], [25, 25], [25, 5]]);
-        assert_eq!(rows(&points, 1, 32), Some(5..=24));
+        assert_eq!(rows(&points, 1, 32, RowRule::HalfOpen), Some(5..=24));
         // y from 5.5 to 6.5: only the centre 5.5 lies in [5.5, 6.5).
         let points: Vec<[i128; 3]> = [[0, 11], [4, 11], [4, 13]].iter().map(|p| [p[0], p[1], 0]).collect();
-        assert_eq!(rows(&points, 1, 32), Some(5..=5));
-        assert_eq!(rows(&points, 1, 5), None);
+        assert_eq!(rows(&points, 1, 32, RowRule::HalfOpen), Some(5..=5));
+        assert_eq!(rows(&points, 1, 5, RowRule::HalfOpen), None);
     }
 }

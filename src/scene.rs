@@ -22,10 +22,13 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 use serde::de::Error as _;
 
-use crate::depth::DepthTest;
+use num_traits::{CheckedDiv, CheckedMul, CheckedSub};
+
+use crate::depth::{DepthTest, Stored};
 use crate::error::{Error, PolygonProblem};
-use crate::exact::{Q, parse_number};
+use crate::exact::{Q, fraction, parse_number};
 use crate::plane::Geometry;
+use crate::rules::{DepthStore, Preset, Rules};
 
 /// Largest width or height.
 pub const MAX_SIDE: u64 = 16_384;
@@ -87,6 +90,31 @@ impl Effects {
     }
 }
 
+/// The world rectangle mapped onto the raster: `left … right` onto columns
+/// `0 … width`, `bottom … top` onto rows `0 … height`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Window {
+    /// World x of the raster's left edge.
+    pub left: Q,
+    /// World x of the raster's right edge.
+    pub right: Q,
+    /// World y of the raster's bottom edge.
+    pub bottom: Q,
+    /// World y of the raster's top edge.
+    pub top: Q,
+}
+
+impl Window {
+    /// Maps a world point to pixel units: `x_px = (x − left)·width/(right − left)`,
+    /// likewise y; z is unchanged. `None` when the result does not fit `i128`.
+    pub fn to_pixels(&self, point: [Q; 3], width: u32, height: u32) -> Option<[Q; 3]> {
+        let map = |v: Q, low: Q, high: Q, size: u32| -> Option<Q> {
+            v.checked_sub(&low)?.checked_mul(&Q::from_integer(i128::from(size)))?.checked_div(&high.checked_sub(&low)?)
+        };
+        Some([map(point[0], self.left, self.right, width)?, map(point[1], self.bottom, self.top, height)?, point[2]])
+    }
+}
+
 /// One validated polygon.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Polygon {
@@ -94,7 +122,8 @@ pub struct Polygon {
     pub name: String,
     /// The framebuffer value it writes; fits `frame_bits`.
     pub value: u32,
-    /// Its vertices as given, exact.
+    /// Its vertices, exact, in pixel units (mapped through the scene's
+    /// window when it has one).
     pub vertices: Vec<[Q; 3]>,
     /// Its scaled integer geometry and plane.
     pub geometry: Geometry,
@@ -117,6 +146,15 @@ pub struct Scene {
     pub background: u32,
     /// The effects asked for.
     pub effects: Effects,
+    /// The rasterizer's rule choices.
+    pub rules: Rules,
+    /// The world rectangle mapped onto the raster, when not pixel units.
+    pub window: Option<Window>,
+    /// Fragments with z outside `[front, rear]` are discarded (BUET).
+    pub depth_range: Option<(Q, Q)>,
+    /// What the z-buffer is cleared to: a level, or an exact value with an
+    /// exact store.
+    pub clear_depth: Stored,
     /// The polygons in drawing order.
     pub polygons: Vec<Polygon>,
 }
@@ -240,7 +278,46 @@ struct SceneFile {
     background: Option<u64>,
     #[serde(default)]
     effects: EffectsFile,
+    rules: Option<serde_json::Value>,
+    window: Option<WindowFile>,
+    depth_range: Option<[Number; 2]>,
+    clear_depth: Option<Number>,
     polygons: Vec<PolygonFile>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct WindowFile {
+    left: Number,
+    right: Number,
+    bottom: Number,
+    top: Number,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RulesFile {
+    preset: Option<Preset>,
+    rows: Option<crate::rules::RowRule>,
+    columns: Option<crate::rules::ColumnRule>,
+    store: Option<DepthStore>,
+}
+
+/// Reads `"rules"`: a preset name, or an object naming a preset and overrides.
+fn rules_from(value: Option<serde_json::Value>) -> Result<Rules, String> {
+    let Some(value) = value else { return Ok(Rules::default()) };
+    if value.is_string() {
+        let preset: Preset = serde_json::from_value(value).map_err(|e| e.to_string())?;
+        return Ok(Rules::preset(preset));
+    }
+    let file: RulesFile = serde_json::from_value(value).map_err(|e| e.to_string())?;
+    let base = Rules::preset(file.preset.unwrap_or(Preset::Rogers));
+    Ok(Rules {
+        preset: base.preset,
+        rows: file.rows.unwrap_or(base.rows),
+        columns: file.columns.unwrap_or(base.columns),
+        store: file.store.unwrap_or(base.store),
+    })
 }
 
 #[derive(Deserialize, Default)]
@@ -297,25 +374,79 @@ impl SceneFile {
                 format!("{background} does not fit a {frame_bits}-bit framebuffer (at most {frame_max})"),
             ));
         }
+        let rules = rules_from(self.rules).map_err(|message| setting("rules", message))?;
+        let default_test = if rules.preset == Preset::Buet { DepthTest::Less } else { DepthTest::Greater };
+        let depth_test = self.depth_test.unwrap_or(default_test);
+        let window = match self.window {
+            None => None,
+            Some(w) => {
+                let window = Window { left: w.left.0, right: w.right.0, bottom: w.bottom.0, top: w.top.0 };
+                if window.left >= window.right || window.bottom >= window.top {
+                    return Err(setting(
+                        "window",
+                        format!(
+                            "left {} must be below right {} and bottom {} below top {}",
+                            fraction(window.left),
+                            fraction(window.right),
+                            fraction(window.bottom),
+                            fraction(window.top)
+                        ),
+                    ));
+                }
+                Some(window)
+            }
+        };
+        let depth_range = match self.depth_range {
+            Some([front, rear]) if front.0 > rear.0 => {
+                return Err(setting(
+                    "depth_range",
+                    format!("[{}, {}]: the front must not exceed the rear", fraction(front.0), fraction(rear.0)),
+                ));
+            }
+            Some([front, rear]) => Some((front.0, rear.0)),
+            None => None,
+        };
+        let depth_max = max_for_bits(depth_bits);
+        let clear_depth = match (rules.store, self.clear_depth) {
+            (DepthStore::Quantized, None) => Stored::Level(depth_test.clear_value(depth_max)),
+            (DepthStore::Quantized, Some(_)) => {
+                return Err(setting(
+                    "clear_depth",
+                    "applies only to an exact z-buffer (rules with \"store\": \"exact\"); a quantized one is cleared to its farthest level".into(),
+                ));
+            }
+            (DepthStore::Exact, Some(value)) => Stored::Exact(value.0),
+            (DepthStore::Exact, None) => Stored::Exact(Q::from_integer(i128::from(depth_test.clear_value(depth_max)))),
+        };
         let mut polygons = Vec::with_capacity(self.polygons.len());
         for (index, polygon) in self.polygons.into_iter().enumerate() {
-            polygons.push(polygon.validate(index, frame_bits, path)?);
+            polygons.push(polygon.validate(index, frame_bits, window.map(|w| (w, width, height)), path)?);
         }
         Ok(Scene {
             width,
             height,
             frame_bits,
             depth_bits,
-            depth_test: self.depth_test.unwrap_or_default(),
+            depth_test,
             background: background as u32,
             effects: Effects { section: self.effects.section.map(|n| n.0), cull: self.effects.cull },
+            rules,
+            window,
+            depth_range,
+            clear_depth,
             polygons,
         })
     }
 }
 
 impl PolygonFile {
-    fn validate(self, index: usize, frame_bits: u32, path: &Path) -> Result<Polygon, Error> {
+    fn validate(
+        self,
+        index: usize,
+        frame_bits: u32,
+        window: Option<(Window, u32, u32)>,
+        path: &Path,
+    ) -> Result<Polygon, Error> {
         let name = self.name.unwrap_or_else(|| format!("polygon {}", index + 1));
         let fail = |name: &str, problem: PolygonProblem| Error::Polygon {
             path: PathBuf::from(path),
@@ -326,7 +457,21 @@ impl PolygonFile {
         if self.value > u64::from(max_for_bits(frame_bits)) {
             return Err(fail(&name, PolygonProblem::ValueTooWide { value: self.value, frame_bits }));
         }
-        let vertices: Vec<[Q; 3]> = self.vertices.iter().map(|v| v.map(|n| n.0)).collect();
+        let mut vertices: Vec<[Q; 3]> = self.vertices.iter().map(|v| v.map(|n| n.0)).collect();
+        if let Some((window, width, height)) = window {
+            for (number, vertex) in vertices.iter_mut().enumerate() {
+                *vertex = window.to_pixels(*vertex, width, height).ok_or_else(|| {
+                    fail(
+                        &name,
+                        PolygonProblem::Geometry(crate::plane::GeometryError::OutOfRange {
+                            vertex: number + 1,
+                            value: vertex[0],
+                            denominator: *vertex[0].denom(),
+                        }),
+                    )
+                })?;
+            }
+        }
         let geometry = Geometry::new(&vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
         Ok(Polygon { name, value: self.value as u32, vertices, geometry })
     }

@@ -5,7 +5,7 @@
 
 use std::collections::BTreeMap;
 
-use crate::depth::{Depth, depth_at};
+use crate::depth::{Depth, Stored, depth_at};
 use crate::exact::Q;
 use crate::scan::{Crossing, Span};
 use crate::scene::{Polygon, Winding};
@@ -75,6 +75,8 @@ pub enum Outcome {
     Hidden,
     /// The depth test passed but the depth lies in front of the cross-section.
     BeyondSection,
+    /// The depth lies outside the scene's depth range: discarded before the test.
+    OutsideDepthRange,
 }
 
 /// One covered pixel centre and what the depth test made of it.
@@ -89,13 +91,13 @@ pub struct PixelEvent {
     /// The exact depth at the centre.
     pub depth: Depth,
     /// The z-buffer before.
-    pub stored_before: u32,
+    pub stored_before: Stored,
     /// The framebuffer before.
     pub frame_before: u32,
     /// What happened.
     pub outcome: Outcome,
     /// The z-buffer after.
-    pub stored_after: u32,
+    pub stored_after: Stored,
     /// The framebuffer after.
     pub frame_after: u32,
 }

@@ -62,7 +62,12 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     for (buffer, path, answer) in answers {
         let expected = match buffer {
             Buffer::Frame => simulation.buffers().frame_rows(),
-            Buffer::Depth => simulation.buffers().depth_rows(),
+            Buffer::Depth => simulation.buffers().depth_level_rows().ok_or_else(|| {
+                Error::Usage(format!(
+                    "{}: this scene keeps exact depths, so its z-buffer has no integer matrix to check; check the framebuffer, or a BUET z_buffer.txt with `zsim buet check`",
+                    args.scene.display()
+                ))
+            })?,
         };
         results.push((buffer, path, compare(&answer, &expected)));
     }

@@ -398,6 +398,7 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
             Outcome::Written => format!("{} {op} {}: written", fraction(z), pixel.stored_before),
             Outcome::Hidden => format!("{} {op} {}: no, hidden", fraction(z), pixel.stored_before),
             Outcome::BeyondSection => format!("{op} {}, beyond the section", pixel.stored_before),
+            Outcome::OutsideDepthRange => format!("{}: outside the depth range, discarded", fraction(z)),
         };
         let mut test = Cell::new(test);
         if color {

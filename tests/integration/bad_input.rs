@@ -58,6 +58,21 @@ fn bad_scenes_are_refused_with_one_line_each() {
             "fine_decimals_out_of_range.json",
             r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [[0.0000001,0,0],[1000,0,0],[0,1,0]]}]}"#.into(),
         ),
+        ("unknown_preset.json", format!(r#"{{"rules": "mit", "polygons": [{TRIANGLE}]}}"#)),
+        (
+            "unknown_rule.json",
+            format!(r#"{{"rules": {{"preset": "buet", "rowz": "closed"}}, "polygons": [{TRIANGLE}]}}"#),
+        ),
+        ("bad_rule_value.json", format!(r#"{{"rules": {{"columns": "nearest"}}, "polygons": [{TRIANGLE}]}}"#)),
+        (
+            "inverted_window.json",
+            format!(r#"{{"window": {{"left": 1, "right": -1, "bottom": -1, "top": 1}}, "polygons": [{TRIANGLE}]}}"#),
+        ),
+        (
+            "inverted_depth_range.json",
+            format!(r#"{{"rules": "buet", "depth_range": [1, -1], "polygons": [{TRIANGLE}]}}"#),
+        ),
+        ("clear_depth_quantized.json", format!(r#"{{"clear_depth": 2, "polygons": [{TRIANGLE}]}}"#)),
         (
             "second_polygon.json",
             format!(r#"{{"polygons": [{TRIANGLE}, {{"name": "bad", "value": 1, "vertices": [[0,0,0],[1,0,0]]}}]}}"#),

@@ -31,7 +31,7 @@ fn simulate() -> Vec<(Matrix, Matrix)> {
     let mut simulation = Simulation::new(&scene);
     let mut states = Vec::new();
     while simulation.draw_next(&mut Unobserved).is_some() {
-        states.push((simulation.buffers().frame_rows(), simulation.buffers().depth_rows()));
+        states.push((simulation.buffers().frame_rows(), simulation.buffers().depth_level_rows().unwrap()));
     }
     states
 }

@@ -12,7 +12,7 @@ fn run(json: &str) -> (Vec<Vec<u32>>, Vec<Vec<u32>>) {
     let scene = Scene::from_json(json, Path::new("inline.json")).unwrap();
     let mut simulation = Simulation::new(&scene);
     simulation.finish(&mut Unobserved);
-    (simulation.buffers().frame_rows(), simulation.buffers().depth_rows())
+    (simulation.buffers().frame_rows(), simulation.buffers().depth_level_rows().unwrap())
 }
 
 fn rows(text: &str) -> Vec<Vec<u32>> {

@@ -1,0 +1,121 @@
+//! Rules as data: the choices that differ between courses, each written once
+//! and named, so one rasterizer serves every rule set.
+//!
+//! | choice | `rogers` (the book) | `buet` (BUET CSE 410, Offline 2) |
+//! |---|---|---|
+//! | window | 0 … width × 0 … height, in pixel units | left … right × bottom … top from the config, mapped onto the raster |
+//! | rows | half-open: an edge crosses when min ≤ y < max | closed: every row whose centre lies in [y_min, y_max]; every non-horizontal edge whose closed y range holds it |
+//! | spans | crossings paired 1st–2nd, 3rd–4th, … | one span from the least to the greatest crossing |
+//! | columns | centres inside [x_l, x_r] | from the column whose cell holds x_a to the one whose cell holds x_b |
+//! | depth | quantized to depth_bits, rounded half up, saturated | stored exactly |
+//! | test | `greater` (or `less`) | `less`, buffer cleared to z_max, fragments outside [z_front, z_rear] discarded |
+//!
+//! Pixel centres are at the middle of each cell in both.
+
+use serde::Deserialize;
+
+/// Which rows a polygon covers, which edges cross a scanline and how the
+/// crossings become spans.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum RowRule {
+    /// Rogers' half-interval convention: an edge crosses when
+    /// `min(y₁, y₂) ≤ y < max(y₁, y₂)`; crossings paired 1st–2nd, 3rd–4th, ….
+    #[serde(rename = "half-open")]
+    HalfOpen,
+    /// BUET: every non-horizontal edge whose closed y range holds the
+    /// scanline crosses; one span from the least to the greatest crossing.
+    #[serde(rename = "closed")]
+    Closed,
+}
+
+/// Which columns a span covers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum ColumnRule {
+    /// The book: columns whose centre lies within `[x_l, x_r]`, ends included.
+    #[serde(rename = "centre")]
+    CentreInside,
+    /// BUET: from the column whose cell holds `x_a` to the one whose cell
+    /// holds `x_b`, i.e. round-half-up of `(x − first centre)/dx`, which in
+    /// pixel units is `⌊x⌋`; both included.
+    #[serde(rename = "cell")]
+    CellHolds,
+}
+
+/// What the z-buffer keeps.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum DepthStore {
+    /// The book: z rounded half up to an integer and saturated to
+    /// `0 … 2^depth_bits − 1`.
+    #[serde(rename = "quantized")]
+    Quantized,
+    /// BUET: z kept exactly (a rational); `depth_bits` does not apply.
+    #[serde(rename = "exact")]
+    Exact,
+}
+
+/// A named rule set.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Preset {
+    /// The textbook's rules (the default).
+    Rogers,
+    /// BUET CSE 410's "Offline 2: Rasterization".
+    Buet,
+}
+
+/// The rasterizer's choices.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Rules {
+    /// The preset these choices started from.
+    pub preset: Preset,
+    /// Rows and crossings.
+    pub rows: RowRule,
+    /// Columns.
+    pub columns: ColumnRule,
+    /// What the z-buffer keeps.
+    pub store: DepthStore,
+}
+
+impl Rules {
+    /// The choices of a preset.
+    pub fn preset(preset: Preset) -> Rules {
+        match preset {
+            Preset::Rogers => Rules {
+                preset,
+                rows: RowRule::HalfOpen,
+                columns: ColumnRule::CentreInside,
+                store: DepthStore::Quantized,
+            },
+            Preset::Buet => {
+                Rules { preset, rows: RowRule::Closed, columns: ColumnRule::CellHolds, store: DepthStore::Exact }
+            }
+        }
+    }
+
+    /// One line naming each choice, for reports.
+    pub fn describe(&self) -> String {
+        let preset = match self.preset {
+            Preset::Rogers => "rogers",
+            Preset::Buet => "buet",
+        };
+        let rows = match self.rows {
+            RowRule::HalfOpen => "rows half-open (min ≤ y < max), crossings paired",
+            RowRule::Closed => "rows closed (min ≤ y ≤ max), one span from the least to the greatest crossing",
+        };
+        let columns = match self.columns {
+            ColumnRule::CentreInside => "columns whose centre lies in the span",
+            ColumnRule::CellHolds => "columns from the cell holding x_a to the cell holding x_b",
+        };
+        let store = match self.store {
+            DepthStore::Quantized => "depth rounded half up and saturated",
+            DepthStore::Exact => "depth stored exactly",
+        };
+        format!("rules {preset}: {rows}; {columns}; {store}")
+    }
+}
+
+impl Default for Rules {
+    fn default() -> Rules {
+        Rules::preset(Preset::Rogers)
+    }
+}
