@@ -5,7 +5,7 @@ use std::cmp::Ordering;
 
 use serde::{Deserialize, Serialize};
 
-use crate::exact::{Q, cmp_fractions, exact_and_decimal, floor_div};
+use crate::exact::{Q, cmp_fractions, exact_and_places, floor_div};
 use crate::plane::Geometry;
 use crate::rules::DepthStore;
 
@@ -37,11 +37,13 @@ impl Stored {
 }
 
 impl std::fmt::Display for Stored {
-    /// A level as an integer (`11`); an exact value as `43/4 ≈ 10.75`.
+    /// A level as an integer (`11`); an exact value with 6 decimals
+    /// (`4876543/5000000 ≈ 0.975309`), as the exact store is used for depths
+    /// in small ranges.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Stored::Level(level) => write!(f, "{level}"),
-            Stored::Exact(q) => f.write_str(&exact_and_decimal(*q)),
+            Stored::Exact(q) => f.write_str(&exact_and_places(*q, 6)),
         }
     }
 }

@@ -251,10 +251,16 @@ pub fn decimal(value: Q, places: u32) -> String {
     if places == 0 { format!("{sign}{whole}") } else { format!("{sign}{whole}.{frac}") }
 }
 
-/// `43/4 (10.75)`: the exact value and its decimal, as zsim shows depths and
-/// crossings. Whole numbers print once: `10`.
+/// `43/4 ≈ 10.75`: the exact value and its decimal with 2 places, as zsim
+/// shows depths and crossings. Whole numbers print once: `10`.
 pub fn exact_and_decimal(value: Q) -> String {
-    if value.is_integer() { fraction(value) } else { format!("{} ≈ {}", fraction(value), decimal(value, 2)) }
+    exact_and_places(value, 2)
+}
+
+/// The exact value and its decimal with `places` places (`4876543/5000000 ≈
+/// 0.975309`); whole numbers print once.
+pub fn exact_and_places(value: Q, places: u32) -> String {
+    if value.is_integer() { fraction(value) } else { format!("{} ≈ {}", fraction(value), decimal(value, places)) }
 }
 
 #[cfg(test)]

@@ -3,7 +3,8 @@
 //! through a scene, and why a cell holds its value.
 
 use crate::depth::{Depth, Stored};
-use crate::exact::{Q, exact_and_decimal};
+use crate::exact::{Q, exact_and_decimal, exact_and_places};
+use crate::rules::DepthStore;
 use crate::scene::Scene;
 use crate::trace::{Fate, Outcome, PixelEvent, PixelHistoryEntry, ScanlineRecord, SpanRecord};
 
@@ -23,6 +24,15 @@ impl Buffer {
             Buffer::Frame => "framebuffer",
             Buffer::Depth => "z-buffer",
         }
+    }
+}
+
+/// A depth as shown for this scene: 2 decimals with a quantized z-buffer,
+/// 6 with an exact one (whose depths usually lie within −1 … 1).
+pub fn depth_text(scene: &Scene, z: Q) -> String {
+    match scene.rules.store {
+        DepthStore::Quantized => exact_and_decimal(z),
+        DepthStore::Exact => exact_and_places(z, 6),
     }
 }
 
@@ -59,7 +69,7 @@ pub fn stored_text(scene: &Scene, depth: Depth) -> String {
 /// One sentence on what the depth test made of a covered pixel:
 /// `z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored and the framebuffer gets 2`.
 pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
-    let z = exact_and_decimal(event.depth.value());
+    let z = depth_text(scene, event.depth.value());
     let op = scene.depth_test.symbol();
     match event.outcome {
         Outcome::Written => format!(
@@ -73,12 +83,12 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
             let (front, rear) = scene.depth_range.unwrap_or((Q::from_integer(0), Q::from_integer(0)));
             format!(
                 "z = {z} is outside the depth range {} … {}: discarded",
-                exact_and_decimal(front),
-                exact_and_decimal(rear)
+                depth_text(scene, front),
+                depth_text(scene, rear)
             )
         }
         Outcome::BeyondSection => {
-            let section = scene.effects.section.map_or(String::new(), exact_and_decimal);
+            let section = scene.effects.section.map_or(String::new(), |z| depth_text(scene, z));
             format!(
                 "z = {z} {op} {} stored, but the cross-section keeps only z {} {section}: not written",
                 event.stored_before,
@@ -147,7 +157,7 @@ pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistor
         Buffer::Depth => format!("{} is stored", stored_text(scene, pixel.depth)),
     };
     if let Some((index, pixel)) = last_write {
-        let z = exact_and_decimal(pixel.depth.value());
+        let z = depth_text(scene, pixel.depth.value());
         let mut text = format!(
             "{} covers ({x}, {y}): z = {z} {} {} stored, so {}",
             polygon_name(scene, index),

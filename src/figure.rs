@@ -11,8 +11,12 @@ use crate::depth::Stored;
 use crate::exact::{Q, decimal};
 use crate::scene::Scene;
 
-/// Largest raster side a figure draws (a bigger one would be unreadable).
-pub const MAX_FIGURE_SIDE: u32 = 256;
+/// Largest raster side a figure draws.
+pub const MAX_FIGURE_SIDE: u32 = 1024;
+
+/// Largest raster side for which the grid, the centres and the scanlines are
+/// drawn; beyond it they would cover the picture.
+pub const MAX_DETAILED_SIDE: u32 = 64;
 
 /// Size of one pixel in the figure, in SVG user units.
 const CELL: i128 = 24;
@@ -52,58 +56,57 @@ pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, titl
     let _ = writeln!(out, r#"<rect width="100%" height="100%" fill="white"/>"#);
     let _ = writeln!(out, r#"<text x="{MARGIN_LEFT}" y="20" font-size="13">{}</text>"#, escape(title));
     // Covered pixels.
-    let _ = writeln!(out, r#"<g id="pixels" stroke="none">"#);
+    let _ = writeln!(out, r#"<g id="pixels" stroke="none" shape-rendering="crispEdges">"#);
     let range = exact_range(scene, buffers);
-    let clear = scene.clear_depth;
     for y in 0..scene.height {
-        for x in 0..scene.width {
-            let fill = match shading {
-                Shading::Frame => {
-                    let value = buffers.frame(x, y);
-                    if value == scene.background {
-                        continue;
-                    }
-                    PALETTE[(value as usize).saturating_sub(1) % PALETTE.len()].to_string()
-                }
-                Shading::Depth => {
-                    let value = buffers.depth(x, y);
-                    if value == clear {
-                        continue;
-                    }
-                    depth_grey(value, scene, range)
-                }
-            };
-            let _ = writeln!(
-                out,
-                r#"<rect x="{}" y="{}" width="{CELL}" height="{CELL}" fill="{fill}"><title>({x}, {y}): frame {}, depth {}</title></rect>"#,
-                sx(int(i128::from(x))),
-                sy(int(i128::from(y) + 1)),
-                buffers.frame(x, y),
-                buffers.depth(x, y)
-            );
+        // Runs of equal cells in a row become one rectangle.
+        let mut x = 0;
+        while x < scene.width {
+            let fill = cell_fill(scene, buffers, x, y, shading, range);
+            let mut end = x + 1;
+            while end < scene.width && cell_fill(scene, buffers, end, y, shading, range) == fill {
+                end += 1;
+            }
+            if let Some(fill) = fill {
+                let what = if end - x == 1 {
+                    format!("({x}, {y}): frame {}, depth {}", buffers.frame(x, y), buffers.depth(x, y))
+                } else {
+                    format!("({x} … {}, {y}): frame {}", end - 1, buffers.frame(x, y))
+                };
+                let _ = writeln!(
+                    out,
+                    r#"<rect x="{}" y="{}" width="{}" height="{CELL}" fill="{fill}"><title>{}</title></rect>"#,
+                    sx(int(i128::from(x))),
+                    sy(int(i128::from(y) + 1)),
+                    CELL * i128::from(end - x),
+                    escape(&what)
+                );
+            }
+            x = end;
         }
     }
     let _ = writeln!(out, "</g>");
+    let detailed = scene.width.max(scene.height) <= MAX_DETAILED_SIDE;
     // The pixel grid.
     let _ = writeln!(out, r##"<g id="grid" stroke="#b0b0b0" stroke-width="0.5">"##);
     for x in 0..=width {
         let _ =
             writeln!(out, r#"<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>"#, sx(int(x)), sy(int(0)), sy(int(height)));
     }
-    for y in 0..=height {
+    for y in (0..=height).filter(|_| detailed) {
         let _ = writeln!(out, r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#, sy(int(y)), sx(int(0)), sx(int(width)));
     }
     let _ = writeln!(out, "</g>");
     // Half-interval scanlines through the centres.
     let _ = writeln!(out, r##"<g id="scanlines" stroke="#3a6ea5" stroke-width="0.6" stroke-dasharray="3 3">"##);
-    for row in 0..height {
+    for row in (0..height).filter(|_| detailed) {
         let y = Q::new(2 * row + 1, 2);
         let _ = writeln!(out, r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#, sy(y), sx(int(0)), sx(int(width)));
     }
     let _ = writeln!(out, "</g>");
     // Pixel centres.
     let _ = writeln!(out, r##"<g id="centres" fill="#333333">"##);
-    for row in 0..height {
+    for row in (0..height).filter(|_| detailed) {
         for column in 0..width {
             let (cx, cy) = (Q::new(2 * column + 1, 2), Q::new(2 * row + 1, 2));
             let _ = writeln!(out, r#"<circle cx="{}" cy="{}" r="1.3"/>"#, sx(cx), sy(cy));
@@ -162,6 +165,30 @@ pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, titl
     let _ = writeln!(out, "</g>");
     let _ = writeln!(out, "</svg>");
     out
+}
+
+/// The fill of cell (x, y), or `None` where it shows the background.
+fn cell_fill(scene: &Scene, buffers: &Buffers, x: u32, y: u32, shading: Shading, range: (Q, Q)) -> Option<String> {
+    match shading {
+        Shading::Frame => {
+            let value = buffers.frame(x, y);
+            (value != scene.background).then(|| frame_fill(scene, value))
+        }
+        Shading::Depth => {
+            let value = buffers.depth(x, y);
+            (value != scene.clear_depth).then(|| depth_grey(value, scene, range))
+        }
+    }
+}
+
+/// A framebuffer value's fill: the palette for small values, the value
+/// itself as RGB when the framebuffer holds 24-bit colours.
+fn frame_fill(scene: &Scene, value: u32) -> String {
+    if scene.frame_bits == 24 {
+        format!("#{value:06x}")
+    } else {
+        PALETTE[(value as usize).saturating_sub(1) % PALETTE.len()].to_string()
+    }
 }
 
 /// A grey for a depth: nearer (by the depth test) is darker. Levels are

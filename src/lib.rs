@@ -67,6 +67,7 @@
 //! ```
 #![warn(missing_docs)]
 
+pub mod buet;
 pub mod buffer;
 pub mod check;
 pub mod depth;

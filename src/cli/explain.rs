@@ -64,14 +64,10 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         text.push_str(&format!(
             "cross-section: only z {} {} is written\n",
             scene.depth_test.section_symbol(),
-            exact_and_decimal(section)
+            zsim::explain::depth_text(&scene, section)
         ));
     }
-    text.push_str(&format!(
-        "start: framebuffer {}, z-buffer {} (cleared)\n",
-        scene.background,
-        scene.depth_test.clear_value(scene.depth_max())
-    ));
+    text.push_str(&format!("start: framebuffer {}, z-buffer {} (cleared)\n", scene.background, scene.clear_depth));
     for entry in watcher.history(x, y) {
         text.push_str(&format!("{}: {}\n", polygon_name(&scene, entry.index), entry_text(&scene, x, y, entry)));
     }

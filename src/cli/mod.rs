@@ -1,6 +1,7 @@
 //! The command line: the only place that prints. Exit codes: 0 ok, 1 an
 //! answer differs (`check`), 2 bad input or usage.
 
+mod buet;
 mod check;
 mod explain;
 mod figure;
@@ -31,6 +32,8 @@ enum Command {
     Explain(explain::ExplainArgs),
     /// Check a homework answer (a framebuffer and/or z-buffer) and explain every wrong cell.
     Check(check::CheckArgs),
+    /// BUET CSE 410 "Offline 2" cases: run, import, check.
+    Buet(buet::BuetArgs),
     /// Draw the raster as an SVG figure: grid, centres, scanlines, outlines, covered pixels.
     Figure(figure::FigureArgs),
 }
@@ -76,6 +79,7 @@ pub fn main() -> ExitCode {
         Command::Explain(args) => explain::run(&args, &mut out),
         Command::Check(args) => check::run(&args, &mut out),
         Command::Figure(args) => figure::run(&args, &mut out),
+        Command::Buet(args) => buet::run(&args, &mut out),
     };
     let result = result.and_then(|finish| out.flush().map(|()| finish).map_err(Failure::Io));
     match result {

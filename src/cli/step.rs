@@ -9,7 +9,7 @@ use comfy_table::{Cell, Color, Table, presets};
 use zsim::buffer::Buffers;
 use zsim::error::Error;
 use zsim::exact::{Q, exact_and_decimal, fraction};
-use zsim::explain::{fate_text, pixel_reason, polygon_name, scanline_text};
+use zsim::explain::{depth_text, fate_text, pixel_reason, polygon_name, scanline_text};
 use zsim::pipeline::Simulation;
 use zsim::report::{self, MatrixStyle};
 use zsim::scene::Scene;
@@ -352,16 +352,16 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
     ));
     for (n, span) in record.spans.iter().enumerate() {
         let columns = match span.columns {
-            Some((first, last)) => format!("centres of columns {first} … {last}"),
-            None => "no pixel centre inside".to_string(),
+            Some((first, last)) => format!("columns {first} … {last}"),
+            None => "no column".to_string(),
         };
         text.push_str(&format!(
             "span {}: x_a = {}, z_a = {}; x_b = {}, z_b = {}; {columns}\n",
             n + 1,
             exact_and_decimal(span.left),
-            exact_and_decimal(span.left_depth),
+            depth_text(scene, span.left_depth),
             exact_and_decimal(span.right),
-            exact_and_decimal(span.right_depth),
+            depth_text(scene, span.right_depth),
         ));
     }
     if !record.pixels.is_empty() {

@@ -9,6 +9,7 @@
 //! - CLI tests run the real binary and check stdout, stderr and the exit code.
 
 mod bad_input;
+mod buet;
 mod golden;
 mod hard_cases;
 mod run_command;

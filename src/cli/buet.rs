@@ -1,0 +1,197 @@
+//! `zsim buet`: BUET CSE 410 "Offline 2" cases: run, import, check.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use clap::{Args, Subcommand, ValueEnum};
+use comfy_table::{Table, presets};
+use zsim::buet::{self, Case, Source};
+use zsim::error::Error;
+use zsim::explain::{Buffer, why};
+use zsim::pipeline::Simulation;
+use zsim::trace::{PixelWatcher, Unobserved};
+
+use super::{Failure, Finish, emit};
+
+/// Arguments of `zsim buet`.
+#[derive(Debug, Args)]
+pub struct BuetArgs {
+    #[command(subcommand)]
+    command: BuetCommand,
+}
+
+#[derive(Debug, Subcommand)]
+enum BuetCommand {
+    /// Run a case: write the stage files computed, z_buffer.txt and out.bmp.
+    Run {
+        /// The case folder (config.txt, and stage3.txt or scene.txt).
+        case: PathBuf,
+        /// Where stage 4's triangles come from (default: stage3 when the case has it).
+        #[arg(long, value_enum)]
+        from: Option<From>,
+        /// The folder to write into.
+        #[arg(short, long, value_name = "OUT_DIR")]
+        output: PathBuf,
+    },
+    /// Print the case as a zsim scene, for run, step, explain and figure.
+    Import {
+        /// The case folder.
+        case: PathBuf,
+        /// Where the triangles come from (default: stage3 when the case has it).
+        #[arg(long, value_enum)]
+        from: Option<From>,
+    },
+    /// Compare a student's z_buffer.txt with the case's and explain each difference.
+    Check {
+        /// The case folder.
+        case: PathBuf,
+        /// The student's z_buffer.txt.
+        #[arg(long, value_name = "FILE")]
+        answer: PathBuf,
+        /// Where the triangles come from (default: stage3 when the case has it).
+        #[arg(long, value_enum)]
+        from: Option<From>,
+    },
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum From {
+    /// The case's stage3.txt.
+    Stage3,
+    /// scene.txt, through stages 1–3 computed by zsim.
+    Scene,
+}
+
+fn source(from: Option<From>) -> Option<Source> {
+    from.map(|f| match f {
+        From::Stage3 => Source::Stage3,
+        From::Scene => Source::Scene,
+    })
+}
+
+pub fn run(args: &BuetArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    match &args.command {
+        BuetCommand::Run { case, from, output } => run_case(case, source(*from), output, out),
+        BuetCommand::Import { case, from } => {
+            let case = Case::load(case, source(*from))?;
+            emit(out, &case.scene_json)?;
+            Ok(Finish::Ok)
+        }
+        BuetCommand::Check { case, answer, from } => check(case, source(*from), answer, out),
+    }
+}
+
+fn write(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+    std::fs::write(path, bytes).map_err(|source| Error::Write { path: path.to_owned(), source })
+}
+
+fn run_case(dir: &Path, from: Option<Source>, output: &Path, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let case = Case::load(dir, from)?;
+    std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
+    let mut written = Vec::new();
+    if let Some(stages) = &case.stages {
+        for (n, triangles) in stages.iter().enumerate() {
+            let path = output.join(format!("stage{}.txt", n + 1));
+            write(&path, buet::stage_text(triangles).as_bytes())?;
+            written.push(path);
+        }
+    }
+    let mut simulation = Simulation::new(&case.scene);
+    simulation.finish(&mut Unobserved);
+    let z_buffer = output.join("z_buffer.txt");
+    write(&z_buffer, buet::z_buffer_text(simulation.buffers(), case.config.z_max).as_bytes())?;
+    written.push(z_buffer);
+    let image = output.join("out.bmp");
+    write(&image, &buet::bmp(simulation.buffers()))?;
+    written.push(image);
+    let stats = simulation.stats();
+    let mut text = format!(
+        "{}: {} triangles on {}×{}, {} pixel centres tested, {} written\n",
+        dir.display(),
+        case.stage3.len(),
+        case.config.width,
+        case.config.height,
+        stats.tested,
+        stats.written
+    );
+    for path in written {
+        text.push_str(&format!("wrote {}\n", path.display()));
+    }
+    emit(out, &text)?;
+    Ok(Finish::Ok)
+}
+
+/// A student's z_buffer.txt: per row, the values written.
+fn parse_answer(path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
+    let text = std::fs::read_to_string(path).map_err(|source| Error::Read { path: path.to_owned(), source })?;
+    let rows: Vec<Vec<String>> =
+        text.lines().map(|line| line.split_whitespace().map(str::to_string).collect()).collect();
+    for (i, row) in rows.iter().enumerate() {
+        for (k, value) in row.iter().enumerate() {
+            if value.parse::<f64>().is_err() {
+                return Err(Error::Answer {
+                    path: path.to_owned(),
+                    message: format!("line {}, value {}: \"{value}\" is not a number", i + 1, k + 1),
+                });
+            }
+        }
+    }
+    if rows.len() != height as usize {
+        return Err(Error::Answer {
+            path: path.to_owned(),
+            message: format!("{} rows; the raster has {height}", rows.len()),
+        });
+    }
+    Ok(rows)
+}
+
+fn check(dir: &Path, from: Option<Source>, answer: &Path, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let case = Case::load(dir, from)?;
+    let scene = &case.scene;
+    let answer_rows = parse_answer(answer, scene.height)?;
+    let mut simulation = Simulation::new(scene);
+    simulation.finish(&mut Unobserved);
+    let expected = buet::z_buffer_cells(simulation.buffers(), case.config.z_max);
+    // (row from the top, value index, answer, right, column)
+    let mut differences: Vec<(usize, usize, String, String, Option<u32>)> = Vec::new();
+    for (i, (given, right)) in answer_rows.iter().zip(&expected).enumerate() {
+        for k in 0..given.len().max(right.len()) {
+            let a = given.get(k).cloned().unwrap_or_else(|| "(none)".into());
+            let (column, r) = right.get(k).map_or((None, "(none)".to_string()), |(x, v)| (Some(*x), v.clone()));
+            if a != r {
+                differences.push((i, k, a, r, column));
+            }
+        }
+    }
+    if differences.is_empty() {
+        emit(out, &format!("{}: every row matches the z-buffer of {}\n", answer.display(), dir.display()))?;
+        return Ok(Finish::Ok);
+    }
+    let mut watcher = PixelWatcher::new(
+        differences.iter().filter_map(|(i, _, _, _, column)| column.map(|x| (x, scene.height - 1 - *i as u32))),
+    );
+    Simulation::new(scene).finish(&mut watcher);
+    let mut table = Table::new();
+    table.load_style(presets::ASCII_MARKDOWN).set_header(["line", "value", "answer", "right", "why"]);
+    for (i, k, a, r, column) in &differences {
+        let reason = match column {
+            Some(x) => {
+                let y = scene.height - 1 - *i as u32;
+                format!("cell ({x}, {y}): {}", why(scene, Buffer::Depth, *x, y, watcher.history(*x, y)))
+            }
+            None => "zsim writes fewer values on this line: the answer has an extra one".to_string(),
+        };
+        table.add_row([(i + 1).to_string(), (k + 1).to_string(), a.clone(), r.clone(), reason]);
+    }
+    let plural = if differences.len() == 1 { "value differs" } else { "values differ" };
+    emit(
+        out,
+        &format!(
+            "{}: {} {plural} from the z-buffer of {}\n{table}\n",
+            answer.display(),
+            differences.len(),
+            dir.display()
+        ),
+    )?;
+    Ok(Finish::Differs)
+}
