@@ -248,7 +248,14 @@ fn figure_writes_a_well_formed_svg() {
     assert_eq!(count("centres", "circle"), 1024, "one centre per pixel");
     assert_eq!(count("scanlines", "line"), 32, "one half-interval scanline per row");
     assert_eq!(count("polygons", "polygon"), 2);
-    assert_eq!(count("pixels", "rect"), 337, "the non-background cells of the book's framebuffer after the triangle");
+    // Runs of equal cells in a row are one rectangle 24 units high and 24 units per cell wide.
+    let pixels = document.descendants().find(|n| n.attribute("id") == Some("pixels")).unwrap();
+    let cells: u32 = pixels
+        .children()
+        .filter(|n| n.has_tag_name("rect"))
+        .map(|n| n.attribute("width").unwrap().parse::<u32>().unwrap() / 24)
+        .sum();
+    assert_eq!(cells, 337, "the non-background cells of the book's framebuffer after the triangle");
     snapshot!("figure_rogers_svg", svg);
     let depth = dir.join("rogers_depth.svg");
     let run =
