@@ -137,6 +137,11 @@ impl Depth {
         Depth { whole, remainder, denominator }
     }
 
+    /// The value as `(numerator, denominator)`, denominator positive, not reduced.
+    pub fn fraction(self) -> (i128, i128) {
+        (self.whole * self.denominator + self.remainder, self.denominator)
+    }
+
     /// The exact value, reduced.
     pub fn value(self) -> Q {
         Q::new(self.whole * self.denominator + self.remainder, self.denominator)

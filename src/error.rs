@@ -70,6 +70,8 @@ pub enum Error {
 pub enum PolygonProblem {
     /// Its vertices (count, range, planarity).
     Geometry(GeometryError),
+    /// Anything else, said in words.
+    Other(String),
     /// Its value does not fit the framebuffer.
     ValueTooWide {
         /// The value given.
@@ -83,6 +85,7 @@ impl fmt::Display for PolygonProblem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             PolygonProblem::Geometry(error) => error.fmt(f),
+            PolygonProblem::Other(message) => f.write_str(message),
             PolygonProblem::ValueTooWide { value, frame_bits } => write!(
                 f,
                 "value {value} does not fit a {frame_bits}-bit framebuffer (at most {})",

@@ -69,13 +69,25 @@ pub fn stored_text(scene: &Scene, depth: Depth) -> String {
 /// One sentence on what the depth test made of a covered pixel:
 /// `z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored and the framebuffer gets 2`.
 pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
-    let z = depth_text(scene, event.depth.value());
+    let z = match scene.effects.perspective {
+        Some(perspective) if perspective.store_w => format!(
+            "{} (the w-buffer's eye-space depth; projected z' = {})",
+            depth_text(scene, event.compared.value()),
+            depth_text(scene, event.depth.value())
+        ),
+        Some(perspective) => format!(
+            "{} (projected z'; eye-space w = {})",
+            depth_text(scene, event.depth.value()),
+            depth_text(scene, perspective.eye_value(event.depth.value()))
+        ),
+        None => depth_text(scene, event.compared.value()),
+    };
     let op = scene.depth_test.symbol();
     match event.outcome {
         Outcome::Written => format!(
             "z = {z} {op} {} stored, so {} is stored and the framebuffer gets {}",
             event.stored_before,
-            stored_text(scene, event.depth),
+            stored_text(scene, event.compared),
             event.frame_after
         ),
         Outcome::Hidden => format!("z = {z} is not {op} {} stored: hidden, nothing changes", event.stored_before),
@@ -105,6 +117,7 @@ pub fn fate_text(fate: Fate) -> Option<String> {
         Fate::Culled(winding) => Some(format!("culled: its vertices run {winding}, so it is not drawn")),
         Fate::EdgeOn => Some("seen edge-on (c = 0): it covers no pixel".to_string()),
         Fate::Degenerate => Some("degenerate (Newell's normal is zero): it covers no pixel".to_string()),
+        Fate::ClippedAway => Some("every vertex lies behind the near plane: clipped away, not drawn".to_string()),
     }
 }
 
@@ -154,10 +167,10 @@ pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistor
         .find_map(|entry| entry.pixel.filter(|p| p.outcome == Outcome::Written).map(|p| (entry.index, p)));
     let result = |pixel: &PixelEvent| match buffer {
         Buffer::Frame => format!("the framebuffer holds {}", pixel.frame_after),
-        Buffer::Depth => format!("{} is stored", stored_text(scene, pixel.depth)),
+        Buffer::Depth => format!("{} is stored", stored_text(scene, pixel.compared)),
     };
     if let Some((index, pixel)) = last_write {
-        let z = depth_text(scene, pixel.depth.value());
+        let z = depth_text(scene, pixel.compared.value());
         let mut text = format!(
             "{} covers ({x}, {y}): z = {z} {} {} stored, so {}",
             polygon_name(scene, index),

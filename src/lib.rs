@@ -75,6 +75,8 @@ pub mod error;
 pub mod exact;
 pub mod explain;
 pub mod figure;
+pub mod generate;
+pub mod perspective;
 pub mod pipeline;
 pub mod plane;
 pub mod report;

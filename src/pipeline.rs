@@ -3,11 +3,12 @@
 //! with only the stages the scene asks for.
 
 use crate::buffer::Buffers;
-use crate::depth::DepthStepper;
-use crate::exact::fraction;
-use crate::rules::{DepthStore, RowRule};
+use crate::depth::{Depth, DepthStepper, DepthTest, Stored};
+use crate::exact::{Q, fraction};
+use crate::plane::Geometry;
+use crate::rules::{DepthStore, RowRule, Rules};
 use crate::scan::{self, Crossing, Span};
-use crate::scene::{Scene, Winding};
+use crate::scene::{Polygon, Scene, Winding};
 use crate::trace::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent};
 
 /// Counts of a run so far.
@@ -21,6 +22,152 @@ pub struct Stats {
     pub written: u64,
 }
 
+/// Reusable space for the crossings and spans of one scanline, so the
+/// rasterizer allocates nothing per row.
+#[derive(Debug, Clone, Default)]
+pub struct Scratch {
+    crossings: Vec<Crossing>,
+    spans: Vec<Span>,
+}
+
+/// Receives what [`rasterize`] finds.
+pub trait RasterSink {
+    /// A row's crossings (sorted) and spans.
+    fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]);
+    /// A covered pixel centre and the exact depth of the polygon's plane there.
+    fn pixel(&mut self, x: u32, y: u32, depth: Depth);
+}
+
+/// Scan-converts one polygon with the scene's rules: for each row inside the
+/// raster and the polygon's y range, the sink gets the crossings and spans;
+/// for each covered pixel centre, left to right, (x, y) and the exact depth
+/// there. This is the one rasterizer; everything else (the depth test,
+/// effects, stepping, explaining, supersampling) observes it.
+pub fn rasterize(
+    geometry: &Geometry,
+    rules: Rules,
+    (width, height): (u32, u32),
+    scratch: &mut Scratch,
+    sink: &mut impl RasterSink,
+) {
+    let Some(rows) = scan::rows(&geometry.points, geometry.denominator, height, rules.rows) else {
+        return;
+    };
+    for row in rows {
+        let scan_y = scan::scanline_y(row, geometry.denominator);
+        scan::crossings(&geometry.points, scan_y, rules.rows, &mut scratch.crossings);
+        scan::spans(&scratch.crossings, geometry.denominator, width, (rules.rows, rules.columns), &mut scratch.spans);
+        sink.scanline(row, &scratch.crossings, &scratch.spans);
+        for span in &scratch.spans {
+            let Some((first, last)) = span.columns else { continue };
+            let mut stepper = DepthStepper::start(geometry, i128::from(first), scan_y);
+            for x in first..=last {
+                sink.pixel(x, row, stepper.current());
+                stepper.advance();
+            }
+        }
+    }
+}
+
+/// What the per-pixel stages make of one covered centre.
+#[derive(Debug, Clone, Copy)]
+pub struct Decision {
+    /// What happened.
+    pub outcome: Outcome,
+    /// The depth that was compared (and stored when written).
+    pub compared: Depth,
+    /// The z-buffer after.
+    pub stored: Stored,
+    /// The framebuffer after.
+    pub frame: u32,
+}
+
+/// The per-pixel stages between the exact depth and the buffers, chosen once
+/// per run from the scene, so a scene without effects runs a loop with no
+/// effect code in it.
+pub trait PixelStages {
+    /// Decides one covered centre of `polygon` with exact depth `depth`.
+    fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision;
+}
+
+/// The plain algorithm: the depth test and the store, nothing else.
+#[derive(Debug, Clone, Copy)]
+pub struct Plain {
+    test: DepthTest,
+    store: DepthStore,
+    depth_max: u32,
+}
+
+impl PixelStages for Plain {
+    #[inline]
+    fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision {
+        if self.test.passes(depth, stored) {
+            let stored = depth.stored(self.store, self.depth_max);
+            Decision { outcome: Outcome::Written, compared: depth, stored, frame: polygon.value }
+        } else {
+            Decision { outcome: Outcome::Hidden, compared: depth, stored, frame }
+        }
+    }
+}
+
+/// Every per-pixel stage: the depth range, the w-buffer's depth, the depth
+/// test, the cross-section, blending by opacity, and the store.
+#[derive(Debug, Clone, Copy)]
+pub struct WithEffects<'s> {
+    scene: &'s Scene,
+}
+
+impl PixelStages for WithEffects<'_> {
+    fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision {
+        let scene = self.scene;
+        let compared = match scene.effects.perspective {
+            Some(perspective) if perspective.store_w => perspective.eye_depth(depth),
+            _ => depth,
+        };
+        let unchanged = |outcome| Decision { outcome, compared, stored, frame };
+        if scene.depth_range.is_some_and(|(front, rear)| compared.cmp_q(front).is_lt() || compared.cmp_q(rear).is_gt())
+        {
+            return unchanged(Outcome::OutsideDepthRange);
+        }
+        if !scene.depth_test.passes(compared, stored) {
+            return unchanged(Outcome::Hidden);
+        }
+        if scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(compared, z)) {
+            return unchanged(Outcome::BeyondSection);
+        }
+        let frame = match polygon.opacity {
+            Some(alpha) => blend(polygon.value, frame, alpha),
+            None => polygon.value,
+        };
+        Decision {
+            outcome: Outcome::Written,
+            compared,
+            stored: compared.stored(scene.rules.store, scene.depth_max()),
+            frame,
+        }
+    }
+}
+
+/// `α·value + (1 − α)·under`, rounded half up to an integer (the framebuffer
+/// holds integers).
+pub fn blend(value: u32, under: u32, alpha: Q) -> u32 {
+    let mixed =
+        alpha * Q::from_integer(i128::from(value)) + (Q::from_integer(1) - alpha) * Q::from_integer(i128::from(under));
+    (mixed + Q::new(1, 2)).floor().to_integer() as u32
+}
+
+/// Which per-pixel stages a simulation runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum StageSet {
+    /// Only those the scene asks for (the default): a scene without
+    /// per-pixel effects runs [`Plain`].
+    #[default]
+    AsAsked,
+    /// [`WithEffects`] even when the scene asks for none (for benchmarks and
+    /// for the test that both paths agree).
+    AllCompiledIn,
+}
+
 /// A scene being drawn, one polygon at a time.
 #[derive(Debug, Clone)]
 pub struct Simulation<'s> {
@@ -28,20 +175,25 @@ pub struct Simulation<'s> {
     buffers: Buffers,
     next: usize,
     stats: Stats,
-    crossings: Vec<Crossing>,
-    spans: Vec<Span>,
+    scratch: Scratch,
+    stage_set: StageSet,
 }
 
 impl<'s> Simulation<'s> {
     /// Cleared buffers: the background value, and the depth test's farthest depth.
     pub fn new(scene: &'s Scene) -> Simulation<'s> {
+        Simulation::with_stages(scene, StageSet::AsAsked)
+    }
+
+    /// Like [`Simulation::new`], choosing the per-pixel stages.
+    pub fn with_stages(scene: &'s Scene, stage_set: StageSet) -> Simulation<'s> {
         Simulation {
             scene,
             buffers: Buffers::new(scene.width, scene.height, scene.background, scene.clear_depth),
             next: 0,
             stats: Stats::default(),
-            crossings: Vec::new(),
-            spans: Vec::new(),
+            scratch: Scratch::default(),
+            stage_set,
         }
     }
 
@@ -69,7 +221,13 @@ impl<'s> Simulation<'s> {
         let fate = fate(self.scene, index);
         observer.polygon(&PolygonEvent { index, polygon, fate });
         if fate == Fate::Drawn {
-            self.draw(index, observer);
+            let scene = self.scene;
+            if self.stage_set == StageSet::AsAsked && !scene.has_pixel_effects() {
+                let plain = Plain { test: scene.depth_test, store: scene.rules.store, depth_max: scene.depth_max() };
+                self.draw(index, &plain, observer);
+            } else {
+                self.draw(index, &WithEffects { scene }, observer);
+            }
         }
         Some(index)
     }
@@ -84,75 +242,63 @@ impl<'s> Simulation<'s> {
         while self.draw_next(observer).is_some() {}
     }
 
-    fn draw<O: Observer>(&mut self, index: usize, observer: &mut O) {
+    fn draw<S: PixelStages, O: Observer>(&mut self, index: usize, stages: &S, observer: &mut O) {
         let scene = self.scene;
         let polygon = &scene.polygons[index];
-        let geometry = &polygon.geometry;
-        let depth_max = scene.depth_max();
-        let rules = scene.rules;
-        let Some(rows) = scan::rows(&geometry.points, geometry.denominator, scene.height, rules.rows) else {
-            return;
-        };
-        for row in rows {
-            let scan_y = scan::scanline_y(row, geometry.denominator);
-            scan::crossings(&geometry.points, scan_y, rules.rows, &mut self.crossings);
-            scan::spans(
-                &self.crossings,
-                geometry.denominator,
-                scene.width,
-                (rules.rows, rules.columns),
-                &mut self.spans,
-            );
-            observer.scanline(&ScanlineEvent { index, polygon, row, crossings: &self.crossings, spans: &self.spans });
-            for span in &self.spans {
-                let Some((first, last)) = span.columns else { continue };
-                let mut stepper = DepthStepper::start(geometry, i128::from(first), scan_y);
-                for x in first..=last {
-                    let depth = stepper.current();
-                    stepper.advance();
-                    let stored_before = self.buffers.depth(x, row);
-                    let frame_before = self.buffers.frame(x, row);
-                    let outcome = if scene
-                        .depth_range
-                        .is_some_and(|(front, rear)| depth.cmp_q(front).is_lt() || depth.cmp_q(rear).is_gt())
-                    {
-                        Outcome::OutsideDepthRange
-                    } else if !scene.depth_test.passes(depth, stored_before) {
-                        Outcome::Hidden
-                    } else if scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(depth, z)) {
-                        Outcome::BeyondSection
-                    } else {
-                        Outcome::Written
-                    };
-                    self.stats.tested += 1;
-                    let (stored_after, frame_after) = if outcome == Outcome::Written {
-                        self.stats.written += 1;
-                        let stored = depth.stored(rules.store, depth_max);
-                        self.buffers.store(x, row, polygon.value, stored);
-                        (stored, polygon.value)
-                    } else {
-                        (stored_before, frame_before)
-                    };
-                    observer.pixel(&PixelEvent {
-                        index,
-                        x,
-                        y: row,
-                        depth,
-                        stored_before,
-                        frame_before,
-                        outcome,
-                        stored_after,
-                        frame_after,
-                    });
-                }
-            }
+        let mut sink =
+            DrawSink { index, polygon, stages, buffers: &mut self.buffers, stats: &mut self.stats, observer };
+        rasterize(&polygon.geometry, scene.rules, (scene.width, scene.height), &mut self.scratch, &mut sink);
+    }
+}
+
+/// Tests and stores each covered pixel of one polygon, and tells the observer.
+struct DrawSink<'a, S, O> {
+    index: usize,
+    polygon: &'a Polygon,
+    stages: &'a S,
+    buffers: &'a mut Buffers,
+    stats: &'a mut Stats,
+    observer: &'a mut O,
+}
+
+impl<S: PixelStages, O: Observer> RasterSink for DrawSink<'_, S, O> {
+    fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
+        let (index, polygon) = (self.index, self.polygon);
+        self.observer.scanline(&ScanlineEvent { index, polygon, row, crossings, spans });
+    }
+
+    #[inline]
+    fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
+        let stored_before = self.buffers.depth(x, y);
+        let frame_before = self.buffers.frame(x, y);
+        let decision = self.stages.decide(self.polygon, depth, stored_before, frame_before);
+        self.stats.tested += 1;
+        if decision.outcome == Outcome::Written {
+            self.stats.written += 1;
+            self.buffers.store(x, y, decision.frame, decision.stored);
         }
+        self.observer.pixel(&PixelEvent {
+            index: self.index,
+            x,
+            y,
+            depth,
+            compared: decision.compared,
+            stored_before,
+            frame_before,
+            outcome: decision.outcome,
+            stored_after: decision.stored,
+            frame_after: decision.frame,
+        });
     }
 }
 
 /// Whether polygon `index` is drawn, and if not, why.
 pub fn fate(scene: &Scene, index: usize) -> Fate {
-    let geometry = &scene.polygons[index].geometry;
+    let polygon = &scene.polygons[index];
+    if polygon.clip == crate::perspective::Clip::Away {
+        return Fate::ClippedAway;
+    }
+    let geometry = &polygon.geometry;
     if geometry.is_degenerate() {
         return Fate::Degenerate;
     }
@@ -168,6 +314,13 @@ pub fn stages(scene: &Scene) -> Vec<String> {
     let mut stages = Vec::new();
     if let Some(winding) = scene.effects.cull {
         stages.push(format!("back-face culling ({} polygons skipped)", winding.name()));
+    }
+    if let Some(perspective) = scene.effects.perspective {
+        stages.push(format!(
+            "near-plane clipping (keep z ≤ {}) and perspective projection (eye at z = {})",
+            fraction(perspective.near_plane()),
+            fraction(perspective.distance)
+        ));
     }
     if let Some(window) = scene.window {
         stages.push(format!(
@@ -185,9 +338,15 @@ pub fn stages(scene: &Scene) -> Vec<String> {
     if let Some((front, rear)) = scene.depth_range {
         stages.push(format!("depth range (discard z outside {} … {})", fraction(front), fraction(rear)));
     }
+    if scene.effects.perspective.is_some_and(|p| p.store_w) {
+        stages.push("w-buffer (eye-space depth z = d·z'/(d + z'))".to_string());
+    }
     stages.push(format!("depth test (z {} stored)", scene.depth_test.symbol()));
     if let Some(section) = scene.effects.section {
         stages.push(format!("cross-section (z {} {})", scene.depth_test.section_symbol(), fraction(section)));
+    }
+    if scene.effects.transparency {
+        stages.push("blend by opacity (α·value + (1 − α)·under, rounded half up)".to_string());
     }
     stages.push(match scene.rules.store {
         DepthStore::Quantized => format!("store (rounded half up, saturated to 0…{})", scene.depth_max()),

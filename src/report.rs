@@ -16,6 +16,7 @@ impl Serialize for Stored {
     }
 }
 
+use crate::perspective::Clip;
 use crate::pipeline::{fate, stages};
 use crate::scene::{Scene, Winding};
 use crate::trace::Fate;
@@ -49,13 +50,23 @@ pub fn polygon_heading(scene: &Scene, index: usize) -> String {
         Fate::Degenerate => format!(
             "{start}: degenerate: Newell's normal is zero (collinear vertices, or loops that cancel), so it has no plane and covers no pixel"
         ),
+        Fate::ClippedAway => format!("{start}: behind the near plane: clipped away, not drawn"),
         Fate::EdgeOn => format!("{start}: plane {}: seen edge-on (c = 0), it covers no pixel", geometry.plane()),
         Fate::Culled(winding) => {
             format!("{start}: plane {}, {winding}: culled (cull {}), not drawn", geometry.plane(), winding.name())
         }
         Fate::Drawn => {
             let winding = Winding::of(geometry.c()).map_or(String::new(), |w| format!(", {w}"));
-            format!("{start}: plane {}{winding}", geometry.plane())
+            let clipped = match polygon.clip {
+                Clip::Kept { front, of } if front < of => format!(
+                    "; {front} of {of} vertices in front of the near plane, drawn as one {}-gon",
+                    polygon.vertices.len()
+                ),
+                _ => String::new(),
+            };
+            let projected = if polygon.eye_vertices.is_some() { "projected " } else { "" };
+            let opacity = polygon.opacity.map_or(String::new(), |a| format!(", opacity {}", crate::exact::fraction(a)));
+            format!("{start}: {projected}plane {}{winding}{opacity}{clipped}", geometry.plane())
         }
     }
 }

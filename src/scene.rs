@@ -27,6 +27,7 @@ use num_traits::{CheckedDiv, CheckedMul, CheckedSub};
 use crate::depth::{DepthTest, Stored};
 use crate::error::{Error, PolygonProblem};
 use crate::exact::{Q, fraction, parse_number};
+use crate::perspective::{Clip, Perspective};
 use crate::plane::Geometry;
 use crate::rules::{DepthStore, Preset, Rules};
 
@@ -74,6 +75,21 @@ pub struct Effects {
     pub section: Option<Q>,
     /// Back-face culling: skip polygons whose vertices run this way.
     pub cull: Option<Winding>,
+    /// Perspective with near-plane clipping (seed 002 §2.2, seed 004).
+    pub perspective: Option<Perspective>,
+    /// Antialiasing by post-filtering (seed 002).
+    pub antialias: Option<Antialias>,
+    /// Whether some polygon has an opacity (transparency, seeds 000 and 002).
+    pub transparency: bool,
+}
+
+/// Antialiasing by post-filtering: k×k sub-pixel samples per pixel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Antialias {
+    /// k: samples per pixel along each axis.
+    pub samples: u32,
+    /// Where depth is kept: at each sample, or once per pixel at its centre.
+    pub depth_at_samples: bool,
 }
 
 impl Effects {
@@ -85,6 +101,15 @@ impl Effects {
         }
         if self.cull.is_some() {
             names.push("cull");
+        }
+        if self.perspective.is_some() {
+            names.push("perspective");
+        }
+        if self.antialias.is_some() {
+            names.push("antialias");
+        }
+        if self.transparency {
+            names.push("transparency");
         }
         names
     }
@@ -127,6 +152,13 @@ pub struct Polygon {
     pub vertices: Vec<[Q; 3]>,
     /// Its scaled integer geometry and plane.
     pub geometry: Geometry,
+    /// Its opacity α (0 … 1) when it is transparent; `None` is opaque.
+    pub opacity: Option<Q>,
+    /// With perspective: the vertices as given (eye space), before clipping
+    /// and projection; `vertices` then holds the projected ones.
+    pub eye_vertices: Option<Vec<[Q; 3]>>,
+    /// How the polygon fared against the near plane.
+    pub clip: Clip,
 }
 
 /// A validated scene: every guarantee the rasterizer relies on holds.
@@ -160,6 +192,16 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// Whether the scene asks for a stage between the depth and the store
+    /// (depth range, w-buffer, cross-section, opacity); if not, the plain
+    /// loop runs.
+    pub fn has_pixel_effects(&self) -> bool {
+        self.depth_range.is_some()
+            || self.effects.section.is_some()
+            || self.effects.transparency
+            || self.effects.perspective.is_some_and(|p| p.store_w)
+    }
+
     /// The largest value the z-buffer holds: `2^depth_bits − 1`.
     pub fn depth_max(&self) -> u32 {
         max_for_bits(self.depth_bits)
@@ -325,6 +367,38 @@ fn rules_from(value: Option<serde_json::Value>) -> Result<Rules, String> {
 struct EffectsFile {
     section: Option<Number>,
     cull: Option<Winding>,
+    perspective: Option<PerspectiveFile>,
+    antialias: Option<AntialiasFile>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PerspectiveFile {
+    distance: Number,
+    near: Number,
+    store: Option<StoreFile>,
+}
+
+#[derive(Deserialize)]
+enum StoreFile {
+    #[serde(rename = "z'", alias = "z")]
+    Projected,
+    #[serde(rename = "w")]
+    W,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AntialiasFile {
+    samples: u32,
+    depth: Option<AntialiasDepth>,
+}
+
+#[derive(Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+enum AntialiasDepth {
+    Pixel,
+    Sample,
 }
 
 #[derive(Deserialize)]
@@ -332,6 +406,7 @@ struct EffectsFile {
 struct PolygonFile {
     name: Option<String>,
     value: u64,
+    opacity: Option<Number>,
     vertices: Vec<[Number; 3]>,
 }
 
@@ -418,9 +493,58 @@ impl SceneFile {
             (DepthStore::Exact, Some(value)) => Stored::Exact(value.0),
             (DepthStore::Exact, None) => Stored::Exact(Q::from_integer(i128::from(depth_test.clear_value(depth_max)))),
         };
+        let perspective = match self.effects.perspective {
+            None => None,
+            Some(p) => {
+                let perspective = Perspective {
+                    distance: p.distance.0,
+                    near: p.near.0,
+                    store_w: matches!(p.store, Some(StoreFile::W)),
+                };
+                let small = |v: Q| v.numer().abs() <= 1 << 20 && *v.denom() <= 1 << 20;
+                if perspective.distance <= Q::from_integer(0) || perspective.near <= Q::from_integer(0) {
+                    return Err(setting("effects", "perspective: distance and near must be positive".into()));
+                }
+                if !small(perspective.distance) || !small(perspective.near) {
+                    return Err(setting(
+                        "effects",
+                        "perspective: distance and near must have numerators and denominators of at most 2^20".into(),
+                    ));
+                }
+                Some(perspective)
+            }
+        };
+        let antialias = match self.effects.antialias {
+            None => None,
+            Some(a) => {
+                if !(1..=16).contains(&a.samples) {
+                    return Err(setting(
+                        "effects",
+                        format!("antialias: samples {} is not supported: use 1 to 16", a.samples),
+                    ));
+                }
+                if u64::from(width) * u64::from(height) * u64::from(a.samples).pow(2) > MAX_CELLS {
+                    return Err(setting(
+                        "effects",
+                        format!(
+                            "antialias: {width}×{height} pixels × {}² samples is beyond the limit of {MAX_CELLS} cells",
+                            a.samples
+                        ),
+                    ));
+                }
+                Some(Antialias { samples: a.samples, depth_at_samples: a.depth != Some(AntialiasDepth::Pixel) })
+            }
+        };
+        let transparency = self.polygons.iter().any(|p| p.opacity.is_some());
         let mut polygons = Vec::with_capacity(self.polygons.len());
         for (index, polygon) in self.polygons.into_iter().enumerate() {
-            polygons.push(polygon.validate(index, frame_bits, window.map(|w| (w, width, height)), path)?);
+            let frame = Frame {
+                bits: frame_bits,
+                window: window.map(|w| (w, width, height)),
+                perspective,
+                size: (width, height),
+            };
+            polygons.push(polygon.validate(index, &frame, path)?);
         }
         Ok(Scene {
             width,
@@ -429,7 +553,13 @@ impl SceneFile {
             depth_bits,
             depth_test,
             background: background as u32,
-            effects: Effects { section: self.effects.section.map(|n| n.0), cull: self.effects.cull },
+            effects: Effects {
+                section: self.effects.section.map(|n| n.0),
+                cull: self.effects.cull,
+                perspective,
+                antialias,
+                transparency,
+            },
             rules,
             window,
             depth_range,
@@ -439,14 +569,16 @@ impl SceneFile {
     }
 }
 
+/// What a polygon's validation needs to know of the scene.
+struct Frame {
+    bits: u32,
+    window: Option<(Window, u32, u32)>,
+    perspective: Option<Perspective>,
+    size: (u32, u32),
+}
+
 impl PolygonFile {
-    fn validate(
-        self,
-        index: usize,
-        frame_bits: u32,
-        window: Option<(Window, u32, u32)>,
-        path: &Path,
-    ) -> Result<Polygon, Error> {
+    fn validate(self, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
         let name = self.name.unwrap_or_else(|| format!("polygon {}", index + 1));
         let fail = |name: &str, problem: PolygonProblem| Error::Polygon {
             path: PathBuf::from(path),
@@ -454,27 +586,89 @@ impl PolygonFile {
             name: name.to_owned(),
             problem: Box::new(problem),
         };
+        let frame_bits = frame.bits;
         if self.value > u64::from(max_for_bits(frame_bits)) {
             return Err(fail(&name, PolygonProblem::ValueTooWide { value: self.value, frame_bits }));
         }
+        let opacity = self.opacity.map(|n| n.0);
+        if let Some(alpha) = opacity
+            && (alpha < Q::from_integer(0) || alpha > Q::from_integer(1))
+        {
+            return Err(fail(&name, PolygonProblem::Other(format!("opacity {} is outside 0 … 1", fraction(alpha)))));
+        }
+        let out_of_range = |number: usize, value: Q| {
+            fail(
+                &name,
+                PolygonProblem::Geometry(crate::plane::GeometryError::OutOfRange {
+                    vertex: number + 1,
+                    value,
+                    denominator: *value.denom(),
+                }),
+            )
+        };
         let mut vertices: Vec<[Q; 3]> = self.vertices.iter().map(|v| v.map(|n| n.0)).collect();
-        if let Some((window, width, height)) = window {
+        if let Some((window, width, height)) = frame.window {
             for (number, vertex) in vertices.iter_mut().enumerate() {
-                *vertex = window.to_pixels(*vertex, width, height).ok_or_else(|| {
-                    fail(
-                        &name,
-                        PolygonProblem::Geometry(crate::plane::GeometryError::OutOfRange {
-                            vertex: number + 1,
-                            value: vertex[0],
-                            denominator: *vertex[0].denom(),
-                        }),
-                    )
-                })?;
+                *vertex = window.to_pixels(*vertex, width, height).ok_or_else(|| out_of_range(number, vertex[0]))?;
             }
         }
+        if vertices.len() < 3 {
+            let error = crate::plane::GeometryError::TooFewVertices(vertices.len());
+            return Err(fail(&name, PolygonProblem::Geometry(error)));
+        }
+        let (eye_vertices, clip) = match frame.perspective {
+            None => (None, Clip::NotClipped),
+            Some(perspective) => {
+                // Check planarity in eye space first, where the user wrote the polygon.
+                Geometry::new(&vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
+                let eye = vertices.clone();
+                let (kept, clip) = perspective.clip(&vertices).ok_or_else(|| out_of_range(0, vertices[0][0]))?;
+                if clip == Clip::Away {
+                    // Nothing is drawn; keep the eye-space geometry for reports.
+                    let geometry = Geometry::new(&eye).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
+                    return Ok(Polygon {
+                        name,
+                        value: self.value as u32,
+                        vertices: eye.clone(),
+                        geometry,
+                        opacity,
+                        eye_vertices: Some(eye),
+                        clip,
+                    });
+                }
+                let (width, height) = frame.size;
+                let mut projected = Vec::with_capacity(kept.len());
+                for (number, v) in kept.iter().enumerate() {
+                    projected.push(perspective.project(*v, width, height).ok_or_else(|| out_of_range(number, v[0]))?);
+                }
+                vertices = projected;
+                (Some(eye), clip)
+            }
+        };
         let geometry = Geometry::new(&vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
-        Ok(Polygon { name, value: self.value as u32, vertices, geometry })
+        if let Some(perspective) = frame.perspective
+            && perspective.store_w
+            && !w_fits(&geometry)
+        {
+            return Err(fail(
+                &name,
+                PolygonProblem::Other(
+                    "its projected coordinates are too fine for the w-buffer's exact arithmetic (use coarser coordinates or a smaller distance)".into(),
+                ),
+            ));
+        }
+        Ok(Polygon { name, value: self.value as u32, vertices, geometry, opacity, eye_vertices, clip })
     }
+}
+
+/// Whether the w-buffer's `p·n / (p·den + q·n)` fits `i128` for every pixel of
+/// this geometry: the depth numerator is below `20·n·R³` (see `plane`), and
+/// `p, q ≤ 2^20`.
+fn w_fits(geometry: &Geometry) -> bool {
+    let bits = |v: u128| 128 - v.leading_zeros();
+    let r = geometry.points.iter().flatten().map(|v| v.unsigned_abs()).max().unwrap_or(0).max(1);
+    let n = geometry.points.len() as u128;
+    3 * bits(r) + bits(20 * n) + 21 <= 125
 }
 
 impl fmt::Display for Winding {

@@ -38,6 +38,8 @@ pub enum Fate {
     EdgeOn,
     /// Newell's normal is zero (collinear vertices, or loops that cancel): no plane, no pixel.
     Degenerate,
+    /// With perspective, every vertex lies behind the near plane: nothing is drawn.
+    ClippedAway,
 }
 
 /// A polygon starts.
@@ -88,8 +90,10 @@ pub struct PixelEvent {
     pub x: u32,
     /// Row.
     pub y: u32,
-    /// The exact depth at the centre.
+    /// The exact depth of the polygon's plane at the centre (with perspective, the projected z').
     pub depth: Depth,
+    /// The depth that was tested and stored: `depth`, or with a w-buffer the eye-space depth.
+    pub compared: Depth,
     /// The z-buffer before.
     pub stored_before: Stored,
     /// The framebuffer before.

@@ -5,6 +5,7 @@ mod buet;
 mod check;
 mod explain;
 mod figure;
+mod generate;
 mod run;
 mod step;
 
@@ -32,6 +33,10 @@ enum Command {
     Explain(explain::ExplainArgs),
     /// Check a homework answer (a framebuffer and/or z-buffer) and explain every wrong cell.
     Check(check::CheckArgs),
+    /// Bits and bytes of the framebuffer and z-buffer for a raster.
+    Memory(generate::MemoryArgs),
+    /// Print a scene of random triangles (the same for the same seed).
+    Random(generate::RandomArgs),
     /// BUET CSE 410 "Offline 2" cases: run, import, check.
     Buet(buet::BuetArgs),
     /// Draw the raster as an SVG figure: grid, centres, scanlines, outlines, covered pixels.
@@ -80,6 +85,8 @@ pub fn main() -> ExitCode {
         Command::Check(args) => check::run(&args, &mut out),
         Command::Figure(args) => figure::run(&args, &mut out),
         Command::Buet(args) => buet::run(&args, &mut out),
+        Command::Memory(args) => generate::memory_command(&args, &mut out),
+        Command::Random(args) => generate::random_command(&args, &mut out),
     };
     let result = result.and_then(|finish| out.flush().map(|()| finish).map_err(Failure::Io));
     match result {

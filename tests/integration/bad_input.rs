@@ -58,6 +58,25 @@ fn bad_scenes_are_refused_with_one_line_each() {
             "fine_decimals_out_of_range.json",
             r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [[0.0000001,0,0],[1000,0,0],[0,1,0]]}]}"#.into(),
         ),
+        (
+            "perspective_negative.json",
+            format!(r#"{{"effects": {{"perspective": {{"distance": -4, "near": 1}}}}, "polygons": [{TRIANGLE}]}}"#),
+        ),
+        (
+            "perspective_store.json",
+            format!(
+                r#"{{"effects": {{"perspective": {{"distance": 40, "near": 1, "store": "x"}}}}, "polygons": [{TRIANGLE}]}}"#
+            ),
+        ),
+        (
+            "antialias_zero.json",
+            format!(r#"{{"effects": {{"antialias": {{"samples": 0}}}}, "polygons": [{TRIANGLE}]}}"#),
+        ),
+        (
+            "opacity_two.json",
+            r#"{"polygons": [{"name": "glass", "value": 1, "opacity": 2, "vertices": [[0,0,0],[1,0,0],[0,1,0]]}]}"#
+                .into(),
+        ),
         ("unknown_preset.json", format!(r#"{{"rules": "mit", "polygons": [{TRIANGLE}]}}"#)),
         (
             "unknown_rule.json",

@@ -10,6 +10,8 @@
 
 mod bad_input;
 mod buet;
+mod effects;
+mod generate;
 mod golden;
 mod hard_cases;
 mod run_command;

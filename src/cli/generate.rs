@@ -1,0 +1,159 @@
+//! `zsim memory` and `zsim random`.
+
+use std::io::Write;
+
+use clap::{Args, ValueEnum};
+use comfy_table::{Table, presets};
+use zsim::error::Error;
+use zsim::generate::{RandomScene, memory};
+
+use super::{Failure, Finish, emit};
+
+/// Arguments of `zsim memory`.
+#[derive(Debug, Args)]
+pub struct MemoryArgs {
+    /// Raster width in pixels.
+    #[arg(long, default_value_t = 32)]
+    width: u64,
+    /// Raster height in pixels.
+    #[arg(long, default_value_t = 32)]
+    height: u64,
+    /// Bits per framebuffer cell.
+    #[arg(long, default_value_t = 2)]
+    frame_bits: u32,
+    /// Bits per z-buffer cell.
+    #[arg(long, default_value_t = 4)]
+    depth_bits: u32,
+    /// Supersampling: K×K sub-pixels per pixel.
+    #[arg(long, default_value_t = 1, value_name = "K")]
+    supersample: u64,
+    /// Where the depth is kept when supersampling (seed 002's two approaches).
+    #[arg(long, value_enum, default_value_t = DepthAt::Sample)]
+    depth_at: DepthAt,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum DepthAt {
+    /// Both buffers at the higher resolution (the second approach).
+    Sample,
+    /// The z-buffer at screen resolution, depth at each pixel's centre (the first approach).
+    Pixel,
+}
+
+fn megabytes(bytes: u64) -> String {
+    format!("{}.{:03} MB ({:.3} MiB)", bytes / 1_000_000, (bytes % 1_000_000) / 1000, bytes as f64 / 1_048_576.0)
+}
+
+pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    for (name, bits) in [("--frame-bits", args.frame_bits), ("--depth-bits", args.depth_bits)] {
+        if !(1..=64).contains(&bits) {
+            return Err(Error::Usage(format!("{name} {bits}: use 1 to 64 bits")).into());
+        }
+    }
+    if args.width == 0 || args.height == 0 || args.supersample == 0 {
+        return Err(Error::Usage("--width, --height and --supersample must be at least 1".into()).into());
+    }
+    if args
+        .width
+        .checked_mul(args.height)
+        .and_then(|c| c.checked_mul(args.supersample.pow(2)))
+        .is_none_or(|c| c > 1 << 50)
+    {
+        return Err(Error::Usage("the raster is too large to count (more than 2^50 cells)".into()).into());
+    }
+    let [frame, depth] = memory(
+        args.width,
+        args.height,
+        args.frame_bits,
+        args.depth_bits,
+        args.supersample,
+        args.depth_at == DepthAt::Sample,
+    );
+    let mut table = Table::new();
+    table.load_style(presets::ASCII_MARKDOWN).set_header(["buffer", "cells", "bits per cell", "bits", "bytes"]);
+    for (name, buffer) in [("framebuffer", frame), ("z-buffer", depth)] {
+        table.add_row([
+            name.to_string(),
+            buffer.cells.to_string(),
+            buffer.bits_per_cell.to_string(),
+            buffer.bits().to_string(),
+            buffer.bytes().to_string(),
+        ]);
+    }
+    let total = frame.bytes() + depth.bytes();
+    table.add_row([
+        "total".to_string(),
+        String::new(),
+        String::new(),
+        (frame.bits() + depth.bits()).to_string(),
+        total.to_string(),
+    ]);
+    let k = args.supersample;
+    let sampling = if k == 1 {
+        String::new()
+    } else {
+        format!(
+            ", supersampled {k}×{k} with the depth at each {}",
+            if args.depth_at == DepthAt::Sample { "sample" } else { "pixel" }
+        )
+    };
+    emit(
+        out,
+        &format!(
+            "{}×{} pixels, framebuffer {} bits, z-buffer {} bits{sampling}\n{table}\ntotal: {total} bytes = {}\n",
+            args.width,
+            args.height,
+            args.frame_bits,
+            args.depth_bits,
+            megabytes(total)
+        ),
+    )?;
+    Ok(Finish::Ok)
+}
+
+/// Arguments of `zsim random`.
+#[derive(Debug, Args)]
+pub struct RandomArgs {
+    /// Number of triangles.
+    #[arg(long)]
+    count: usize,
+    /// Seed: the same seed prints the same scene.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Raster width.
+    #[arg(long, default_value_t = 32)]
+    width: u32,
+    /// Raster height.
+    #[arg(long, default_value_t = 32)]
+    height: u32,
+    /// Largest extent of a triangle in x and in y, in pixels (default: the raster).
+    #[arg(long, value_name = "PX")]
+    max_size: Option<u32>,
+    /// Bits per framebuffer cell.
+    #[arg(long, default_value_t = 2)]
+    frame_bits: u32,
+    /// Bits per z-buffer cell (depths are drawn from 0 … 2^min(bits, 24) − 1).
+    #[arg(long, default_value_t = 4)]
+    depth_bits: u32,
+}
+
+pub fn random_command(args: &RandomArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    if !(1..=32).contains(&args.frame_bits) || !(1..=32).contains(&args.depth_bits) {
+        return Err(Error::Usage("--frame-bits and --depth-bits take 1 to 32".into()).into());
+    }
+    let side = zsim::scene::MAX_SIDE as u32;
+    if !(1..=side).contains(&args.width) || !(1..=side).contains(&args.height) {
+        return Err(Error::Usage(format!("--width and --height take 1 to {side}")).into());
+    }
+    let spec = RandomScene {
+        count: args.count,
+        seed: args.seed,
+        width: args.width,
+        height: args.height,
+        max_size: args.max_size.unwrap_or(args.width.max(args.height)),
+        frame_bits: args.frame_bits,
+        depth_bits: args.depth_bits,
+    };
+    emit(out, &spec.json())?;
+    Ok(Finish::Ok)
+}
