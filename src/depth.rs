@@ -152,6 +152,13 @@ impl Depth {
         self.whole.cmp(&stored).then(if self.remainder > 0 { Ordering::Greater } else { Ordering::Equal })
     }
 
+    /// Compares two exact depths without overflow.
+    pub fn cmp_depth(self, other: Depth) -> Ordering {
+        self.whole
+            .cmp(&other.whole)
+            .then_with(|| cmp_fractions(self.remainder, self.denominator, other.remainder, other.denominator))
+    }
+
     /// Compares with an exact rational without overflow.
     pub fn cmp_q(self, other: Q) -> Ordering {
         match self.whole.cmp(&other.floor().to_integer()) {

@@ -67,6 +67,7 @@
 //! ```
 #![warn(missing_docs)]
 
+pub mod antialias;
 pub mod buet;
 pub mod buffer;
 pub mod check;
@@ -84,3 +85,4 @@ pub mod rules;
 pub mod scan;
 pub mod scene;
 pub mod trace;
+pub mod variants;

@@ -38,25 +38,47 @@ pub trait RasterSink {
     fn pixel(&mut self, x: u32, y: u32, depth: Depth);
 }
 
-/// Scan-converts one polygon with the scene's rules: for each row inside the
-/// raster and the polygon's y range, the sink gets the crossings and spans;
+/// A rectangle of pixels, inclusive: the raster, or one segment of it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PixelRect {
+    /// First and last column.
+    pub columns: (u32, u32),
+    /// First and last row.
+    pub rows: (u32, u32),
+}
+
+impl PixelRect {
+    /// The whole raster.
+    pub fn raster(width: u32, height: u32) -> PixelRect {
+        PixelRect { columns: (0, width - 1), rows: (0, height - 1) }
+    }
+}
+
+/// Scan-converts one polygon with the scene's rules: for each row inside
+/// `rect` and the polygon's y range, the sink gets the crossings and spans;
 /// for each covered pixel centre, left to right, (x, y) and the exact depth
 /// there. This is the one rasterizer; everything else (the depth test,
 /// effects, stepping, explaining, supersampling) observes it.
 pub fn rasterize(
     geometry: &Geometry,
     rules: Rules,
-    (width, height): (u32, u32),
+    rect: PixelRect,
     scratch: &mut Scratch,
     sink: &mut impl RasterSink,
 ) {
-    let Some(rows) = scan::rows(&geometry.points, geometry.denominator, height, rules.rows) else {
+    let Some(rows) = scan::rows(&geometry.points, geometry.denominator, rect.rows, rules.rows) else {
         return;
     };
     for row in rows {
         let scan_y = scan::scanline_y(row, geometry.denominator);
         scan::crossings(&geometry.points, scan_y, rules.rows, &mut scratch.crossings);
-        scan::spans(&scratch.crossings, geometry.denominator, width, (rules.rows, rules.columns), &mut scratch.spans);
+        scan::spans(
+            &scratch.crossings,
+            geometry.denominator,
+            rect.columns,
+            (rules.rows, rules.columns),
+            &mut scratch.spans,
+        );
         sink.scanline(row, &scratch.crossings, &scratch.spans);
         for span in &scratch.spans {
             let Some((first, last)) = span.columns else { continue };
@@ -98,6 +120,13 @@ pub struct Plain {
     depth_max: u32,
 }
 
+impl Plain {
+    /// The plain stages of a scene.
+    pub fn new(scene: &Scene) -> Plain {
+        Plain { test: scene.depth_test, store: scene.rules.store, depth_max: scene.depth_max() }
+    }
+}
+
 impl PixelStages for Plain {
     #[inline]
     fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision {
@@ -115,6 +144,13 @@ impl PixelStages for Plain {
 #[derive(Debug, Clone, Copy)]
 pub struct WithEffects<'s> {
     scene: &'s Scene,
+}
+
+impl<'s> WithEffects<'s> {
+    /// Every stage, as the scene sets them.
+    pub fn new(scene: &'s Scene) -> WithEffects<'s> {
+        WithEffects { scene }
+    }
 }
 
 impl PixelStages for WithEffects<'_> {
@@ -223,8 +259,7 @@ impl<'s> Simulation<'s> {
         if fate == Fate::Drawn {
             let scene = self.scene;
             if self.stage_set == StageSet::AsAsked && !scene.has_pixel_effects() {
-                let plain = Plain { test: scene.depth_test, store: scene.rules.store, depth_max: scene.depth_max() };
-                self.draw(index, &plain, observer);
+                self.draw(index, &Plain::new(scene), observer);
             } else {
                 self.draw(index, &WithEffects { scene }, observer);
             }
@@ -247,7 +282,8 @@ impl<'s> Simulation<'s> {
         let polygon = &scene.polygons[index];
         let mut sink =
             DrawSink { index, polygon, stages, buffers: &mut self.buffers, stats: &mut self.stats, observer };
-        rasterize(&polygon.geometry, scene.rules, (scene.width, scene.height), &mut self.scratch, &mut sink);
+        let rect = PixelRect::raster(scene.width, scene.height);
+        rasterize(&polygon.geometry, scene.rules, rect, &mut self.scratch, &mut sink);
     }
 }
 

@@ -124,6 +124,17 @@ impl MatrixCell for Stored {
     }
 }
 
+impl MatrixCell for crate::exact::Q {
+    /// An exact value as a reduced fraction (`3/4`), whole numbers plain.
+    fn text(&self) -> String {
+        crate::exact::fraction(*self)
+    }
+
+    fn colour_key(&self) -> u32 {
+        self.round().to_integer().clamp(0, i128::from(u32::MAX)) as u32
+    }
+}
+
 /// [`matrix`] with colour, a window of rows and a marked row.
 pub fn matrix_styled<T: MatrixCell>(rows: &[Vec<T>], style: &MatrixStyle) -> String {
     let height = rows.len();

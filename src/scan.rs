@@ -49,21 +49,22 @@ pub fn scanline_y(row: u32, denominator: i128) -> i128 {
     (2 * i128::from(row) + 1) * denominator
 }
 
-/// The rows whose scanlines can meet the polygon, clipped to `0 .. height`:
+/// The rows whose scanlines can meet the polygon, clipped to `limit`
+/// (first and last row, inclusive):
 /// those with `y_min ≤ row + 1/2 < y_max` (half-open), or
 /// `y_min ≤ row + 1/2 ≤ y_max` (closed).
-pub fn rows(points: &[[i128; 3]], denominator: i128, height: u32, rule: RowRule) -> Option<RangeInclusive<u32>> {
+pub fn rows(points: &[[i128; 3]], denominator: i128, limit: (u32, u32), rule: RowRule) -> Option<RangeInclusive<u32>> {
     let y_min = points.iter().map(|p| p[1]).min()?;
     let y_max = points.iter().map(|p| p[1]).max()?;
     // (2r + 1)·D ≥ y_min  ⇔  r ≥ ⌈(y_min − D) / 2D⌉
-    let first = ceil_div(y_min - denominator, 2 * denominator).max(0);
+    let first = ceil_div(y_min - denominator, 2 * denominator).max(i128::from(limit.0));
     let last = match rule {
         // (2r + 1)·D < y_max  ⇔  r < (y_max − D) / 2D  ⇔  r ≤ ⌈(y_max − D) / 2D⌉ − 1
         RowRule::HalfOpen => ceil_div(y_max - denominator, 2 * denominator) - 1,
         // (2r + 1)·D ≤ y_max  ⇔  r ≤ ⌊(y_max − D) / 2D⌋
         RowRule::Closed => floor_div(y_max - denominator, 2 * denominator).0,
     };
-    let last = last.min(i128::from(height) - 1);
+    let last = last.min(i128::from(limit.1));
     (first <= last).then_some(first as u32..=last as u32)
 }
 
@@ -96,11 +97,17 @@ pub fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Ve
     out.sort_unstable_by(Crossing::cmp_position);
 }
 
-/// The columns a span covers, clipped to `0 .. width`: with
+/// The columns a span covers, clipped to `limit` (first and last column, inclusive): with
 /// [`ColumnRule::CentreInside`] those whose centres `x + 1/2` lie within
 /// `[left, right]`, boundary included ("the pixel whose centre lies inside or
 /// on the boundary"); with [`ColumnRule::CellHolds`] from `⌊left⌋` to `⌊right⌋`.
-pub fn columns(left: Crossing, right: Crossing, denominator: i128, width: u32, rule: ColumnRule) -> Option<(u32, u32)> {
+pub fn columns(
+    left: Crossing,
+    right: Crossing,
+    denominator: i128,
+    limit: (u32, u32),
+    rule: ColumnRule,
+) -> Option<(u32, u32)> {
     let (first, last) = match rule {
         ColumnRule::CentreInside => (
             // (2x + 1)·D ≥ n/d  ⇔  x ≥ ⌈(n − D·d) / 2D·d⌉
@@ -114,8 +121,8 @@ pub fn columns(left: Crossing, right: Crossing, denominator: i128, width: u32, r
             floor_div(right.numerator, 2 * denominator * right.denominator).0,
         ),
     };
-    let first = first.max(0);
-    let last = last.min(i128::from(width) - 1);
+    let first = first.max(i128::from(limit.0));
+    let last = last.min(i128::from(limit.1));
     (first <= last).then_some((first as u32, last as u32))
 }
 
@@ -123,12 +130,18 @@ pub fn columns(left: Crossing, right: Crossing, denominator: i128, width: u32, r
 /// [`RowRule::HalfOpen`] (an odd last crossing cannot happen for a closed
 /// polygon and is ignored), or one span from the first to the last with
 /// [`RowRule::Closed`].
-pub fn spans(crossings: &[Crossing], denominator: i128, width: u32, rules: (RowRule, ColumnRule), out: &mut Vec<Span>) {
+pub fn spans(
+    crossings: &[Crossing],
+    denominator: i128,
+    limit: (u32, u32),
+    rules: (RowRule, ColumnRule),
+    out: &mut Vec<Span>,
+) {
     out.clear();
     let span = |left: Crossing, right: Crossing| Span {
         left,
         right,
-        columns: columns(left, right, denominator, width, rules.1),
+        columns: columns(left, right, denominator, limit, rules.1),
     };
     match rules.0 {
         RowRule::HalfOpen => out.extend(crossings.chunks_exact(2).map(|pair| span(pair[0], pair[1]))),
@@ -189,36 +202,36 @@ mod tests {
         // Span [0.5, 2.5] covers centres 0.5, 1.5 and 2.5: both boundaries included.
         let left = Crossing { numerator: 1, denominator: 1 };
         let right = Crossing { numerator: 5, denominator: 1 };
-        assert_eq!(columns(left, right, 1, 32, ColumnRule::CentreInside), Some((0, 2)));
+        assert_eq!(columns(left, right, 1, (0, 31), ColumnRule::CentreInside), Some((0, 2)));
     }
 
     #[test]
     fn span_between_centres_covers_nothing() {
         let left = Crossing { numerator: 6, denominator: 5 }; // 0.6
         let right = Crossing { numerator: 14, denominator: 5 }; // 1.4
-        assert_eq!(columns(left, right, 1, 32, ColumnRule::CentreInside), None);
+        assert_eq!(columns(left, right, 1, (0, 31), ColumnRule::CentreInside), None);
     }
 
     #[test]
     fn span_shrinking_to_one_centre_covers_it() {
         let centre = Crossing { numerator: 3, denominator: 1 }; // 1.5
-        assert_eq!(columns(centre, centre, 1, 32, ColumnRule::CentreInside), Some((1, 1)));
+        assert_eq!(columns(centre, centre, 1, (0, 31), ColumnRule::CentreInside), Some((1, 1)));
     }
 
     #[test]
     fn spans_are_clipped_to_the_raster() {
         let left = Crossing { numerator: -20, denominator: 1 };
         let right = Crossing { numerator: 200, denominator: 1 };
-        assert_eq!(columns(left, right, 1, 32, ColumnRule::CentreInside), Some((0, 31)));
+        assert_eq!(columns(left, right, 1, (0, 31), ColumnRule::CentreInside), Some((0, 31)));
         let beyond = Crossing { numerator: 100, denominator: 1 };
-        assert_eq!(columns(beyond, right, 1, 32, ColumnRule::CentreInside), None);
+        assert_eq!(columns(beyond, right, 1, (0, 31), ColumnRule::CentreInside), None);
     }
 
     #[test]
     fn closed_rows_include_the_top_vertex_row() {
         // y from 5.5 to 6.5: the closed rule takes centres 5.5 and 6.5.
         let points: Vec<[i128; 3]> = [[0, 11], [4, 11], [4, 13]].iter().map(|p| [p[0], p[1], 0]).collect();
-        assert_eq!(rows(&points, 1, 32, RowRule::Closed), Some(5..=6));
+        assert_eq!(rows(&points, 1, (0, 31), RowRule::Closed), Some(5..=6));
         // The apex at y = 6.5 gives two equal crossings there.
         let mut out = Vec::new();
         crossings(&points, 13, RowRule::Closed, &mut out);
@@ -231,20 +244,20 @@ mod tests {
         // Span 0.6 … 1.4: no centre inside, but the cells holding 0.6 and 1.4 are 0 and 1.
         let left = Crossing { numerator: 6, denominator: 5 };
         let right = Crossing { numerator: 14, denominator: 5 };
-        assert_eq!(columns(left, right, 1, 32, ColumnRule::CellHolds), Some((0, 1)));
+        assert_eq!(columns(left, right, 1, (0, 31), ColumnRule::CellHolds), Some((0, 1)));
         // A crossing exactly on a cell boundary (x = 2) belongs to the cell on its right.
         let on_line = Crossing { numerator: 4, denominator: 1 };
-        assert_eq!(columns(on_line, on_line, 1, 32, ColumnRule::CellHolds), Some((2, 2)));
+        assert_eq!(columns(on_line, on_line, 1, (0, 31), ColumnRule::CellHolds), Some((2, 2)));
     }
 
     #[test]
     fn rows_follow_the_half_open_rule() {
         // y from 5 to 25: centres 5.5 … 24.5, rows 5 … 24.
         let points = scaled(&[[10, 5], [10, 25], [25, 25], [25, 5]]);
-        assert_eq!(rows(&points, 1, 32, RowRule::HalfOpen), Some(5..=24));
+        assert_eq!(rows(&points, 1, (0, 31), RowRule::HalfOpen), Some(5..=24));
         // y from 5.5 to 6.5: only the centre 5.5 lies in [5.5, 6.5).
         let points: Vec<[i128; 3]> = [[0, 11], [4, 11], [4, 13]].iter().map(|p| [p[0], p[1], 0]).collect();
-        assert_eq!(rows(&points, 1, 32, RowRule::HalfOpen), Some(5..=5));
-        assert_eq!(rows(&points, 1, 5, RowRule::HalfOpen), None);
+        assert_eq!(rows(&points, 1, (0, 31), RowRule::HalfOpen), Some(5..=5));
+        assert_eq!(rows(&points, 1, (0, 4), RowRule::HalfOpen), None);
     }
 }

@@ -8,6 +8,7 @@ mod figure;
 mod generate;
 mod run;
 mod step;
+mod variants;
 
 use std::io::{self, IsTerminal, Write};
 use std::process::ExitCode;

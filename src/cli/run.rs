@@ -25,6 +25,33 @@ pub struct RunArgs {
     /// Label rows with y and columns with x.
     #[arg(long)]
     axes: bool,
+    /// Loop order: polygons then their pixels (the z-buffer), or every pixel then every polygon (seed 001).
+    #[arg(long, value_enum, default_value_t = Order::Polygons)]
+    order: Order,
+    /// The point-in-polygon test of --order pixels.
+    #[arg(long, value_enum, default_value_t = InsideTest::Ray)]
+    inside: InsideTest,
+    /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (seed 000).
+    #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
+    segments: Option<zsim::variants::Segments>,
+}
+
+/// The loop order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Order {
+    /// For every polygon, for every pixel it covers: the z-buffer.
+    Polygons,
+    /// For every pixel, for every polygon, with one depth variable (seed 001).
+    Pixels,
+}
+
+/// The point-in-polygon test.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum InsideTest {
+    /// Ray casting with the left-open/right-closed vertex rule; on the boundary counts.
+    Ray,
+    /// The arc-length method with its quadrant table; on the boundary counts.
+    Arc,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -39,6 +66,24 @@ enum Format {
 
 pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(&args.scene)?;
+    let path = args.scene.display().to_string();
+    let json = args.format == Format::Json;
+    if args.segments.is_some() || args.order == Order::Pixels || scene.effects.antialias.is_some() {
+        if args.format == Format::None {
+            return Err(zsim::error::Error::Usage("--format none summarizes the z-buffer loop; use text or json with --segments, --order pixels or antialias".into()).into());
+        }
+        let variant = super::variants::Variant {
+            segments: args.segments,
+            pixel_order: (args.order == Order::Pixels).then_some(match args.inside {
+                InsideTest::Ray => zsim::variants::Inside::Ray,
+                InsideTest::Arc => zsim::variants::Inside::Arc,
+            }),
+            axes: args.axes,
+            json,
+            final_only: args.final_only,
+        };
+        return super::variants::run(&scene, &path, &variant, out);
+    }
     let mut simulation = Simulation::new(&scene);
     match args.format {
         Format::Text => {
@@ -59,6 +104,9 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                     text.push_str(&buffers_text(&simulation, index, &polygon.name, args.axes));
                 }
                 emit(out, &text)?;
+            }
+            if scene.effects.transparency {
+                emit(out, &super::variants::local_errors_text(&scene, simulation.buffers()))?;
             }
         }
         Format::Json => {

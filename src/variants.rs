@@ -1,0 +1,420 @@
+//! Other loop orders and smaller z-buffers (seeds 000, 001, 003), all driving
+//! the same scan conversion or the same crossing rule:
+//!
+//! - segmented z-buffers: strips, tiles or one scanline, processing the image
+//!   segment by segment with a z-buffer only as large as one segment, each
+//!   segment seeing only the polygons whose bounding boxes touch it;
+//! - the "for every pixel, for every polygon" order with one depth variable
+//!   (seed 001), with a point-in-polygon test at each centre: ray casting or
+//!   the arc-length (quadrant) method.
+
+use std::cmp::Ordering;
+
+use crate::buffer::Buffers;
+use crate::depth::{Depth, DepthStepper};
+use crate::exact::Q;
+use crate::pipeline::{Decision, PixelRect, PixelStages, Plain, RasterSink, Scratch, WithEffects, fate, rasterize};
+use crate::scan::{Crossing, Span};
+use crate::scene::{Polygon, Scene};
+use crate::trace::{Fate, Outcome};
+
+/// The per-pixel stages the scene asks for, as a trait object.
+fn stages(scene: &Scene) -> Box<dyn PixelStages + '_> {
+    if scene.has_pixel_effects() { Box::new(WithEffects::new(scene)) } else { Box::new(Plain::new(scene)) }
+}
+
+/// How the image is cut into segments.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Segments {
+    /// N horizontal strips of (about) equal height.
+    Strips(u32),
+    /// N×N tiles of (about) equal size.
+    Tiles(u32),
+    /// One scanline at a time (the limit the seeds mention).
+    Rows,
+}
+
+impl Segments {
+    /// Reads `strips:N`, `tiles:N` or `rows:1`.
+    pub fn parse(text: &str) -> Result<Segments, String> {
+        let (kind, count) =
+            text.split_once(':').ok_or_else(|| format!("\"{text}\" is not strips:N, tiles:N or rows:1"))?;
+        let count: u32 = count.parse().map_err(|_| format!("\"{count}\" is not a whole number"))?;
+        match (kind, count) {
+            ("strips", 1..) => Ok(Segments::Strips(count)),
+            ("tiles", 1..) => Ok(Segments::Tiles(count)),
+            ("rows", 1) => Ok(Segments::Rows),
+            ("rows", _) => Err("rows takes only 1 (one scanline at a time)".into()),
+            _ => Err(format!("\"{text}\" is not strips:N, tiles:N or rows:1 (N ≥ 1)")),
+        }
+    }
+
+    /// The segments of a `width`×`height` raster, bottom to top, left to right.
+    pub fn rects(self, width: u32, height: u32) -> Vec<PixelRect> {
+        let cuts = |size: u32, parts: u32| -> Vec<(u32, u32)> {
+            let parts = parts.min(size);
+            (0..parts).map(|i| (size * i / parts, size * (i + 1) / parts - 1)).collect()
+        };
+        let (column_cuts, row_cuts) = match self {
+            Segments::Strips(n) => (vec![(0, width - 1)], cuts(height, n)),
+            Segments::Tiles(n) => (cuts(width, n), cuts(height, n)),
+            Segments::Rows => (vec![(0, width - 1)], cuts(height, height)),
+        };
+        row_cuts.iter().flat_map(|&rows| column_cuts.iter().map(move |&columns| PixelRect { columns, rows })).collect()
+    }
+}
+
+impl std::fmt::Display for Segments {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Segments::Strips(n) => write!(f, "strips:{n}"),
+            Segments::Tiles(n) => write!(f, "tiles:{n}"),
+            Segments::Rows => write!(f, "rows:1"),
+        }
+    }
+}
+
+/// What a segmented run measured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SegmentStats {
+    /// Number of segments.
+    pub segments: usize,
+    /// Cells of the largest segment: the z-buffer's size.
+    pub depth_cells: u64,
+    /// (polygon, segment) pairs processed; the plain z-buffer visits each polygon once.
+    pub polygon_visits: u64,
+}
+
+/// Draws the scene segment by segment. Returns the assembled buffers (the
+/// framebuffer is the screen; the z-buffer is assembled from each segment's
+/// final contents only so it can be shown and compared) and the statistics.
+pub fn run_segmented(scene: &Scene, segments: Segments) -> (Buffers, SegmentStats) {
+    let stages = stages(scene);
+    let mut screen = Buffers::new(scene.width, scene.height, scene.background, scene.clear_depth);
+    let rects = segments.rects(scene.width, scene.height);
+    let mut stats = SegmentStats { segments: rects.len(), depth_cells: 0, polygon_visits: 0 };
+    let mut scratch = Scratch::default();
+    // Seed 000's "sorting on the plane": each polygon's bounding box in pixels.
+    let boxes: Vec<Option<PixelRect>> = scene.polygons.iter().map(bounding_rect).collect();
+    for rect in rects {
+        let (w, h) = (rect.columns.1 - rect.columns.0 + 1, rect.rows.1 - rect.rows.0 + 1);
+        stats.depth_cells = stats.depth_cells.max(u64::from(w) * u64::from(h));
+        let mut segment = Buffers::new(w, h, scene.background, scene.clear_depth);
+        for (index, polygon) in scene.polygons.iter().enumerate() {
+            let touches = boxes[index].is_some_and(|b| overlaps(b, rect));
+            if !touches || fate(scene, index) != Fate::Drawn {
+                continue;
+            }
+            stats.polygon_visits += 1;
+            let mut sink = SegmentSink {
+                polygon,
+                stages: stages.as_ref(),
+                origin: (rect.columns.0, rect.rows.0),
+                buffers: &mut segment,
+            };
+            rasterize(&polygon.geometry, scene.rules, rect, &mut scratch, &mut sink);
+        }
+        for y in 0..h {
+            for x in 0..w {
+                screen.store(rect.columns.0 + x, rect.rows.0 + y, segment.frame(x, y), segment.depth(x, y));
+            }
+        }
+    }
+    (screen, stats)
+}
+
+/// Writes one polygon's pixels into a segment's own buffers.
+struct SegmentSink<'a> {
+    polygon: &'a Polygon,
+    stages: &'a dyn PixelStages,
+    origin: (u32, u32),
+    buffers: &'a mut Buffers,
+}
+
+impl RasterSink for SegmentSink<'_> {
+    fn scanline(&mut self, _row: u32, _crossings: &[Crossing], _spans: &[Span]) {}
+
+    fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
+        let (sx, sy) = (x - self.origin.0, y - self.origin.1);
+        let decision = self.stages.decide(self.polygon, depth, self.buffers.depth(sx, sy), self.buffers.frame(sx, sy));
+        if decision.outcome == Outcome::Written {
+            self.buffers.store(sx, sy, decision.frame, decision.stored);
+        }
+    }
+}
+
+/// The pixel rectangle a polygon's vertices span (clipped to nothing when
+/// wholly outside the non-negative quadrant); `None` for an empty box.
+fn bounding_rect(polygon: &Polygon) -> Option<PixelRect> {
+    let floor = |v: Q| v.floor().to_integer().clamp(0, i128::from(u32::MAX)) as u32;
+    let xs = polygon.vertices.iter().map(|v| v[0]);
+    let ys = polygon.vertices.iter().map(|v| v[1]);
+    let (x0, x1) = (xs.clone().min()?, xs.max()?);
+    let (y0, y1) = (ys.clone().min()?, ys.max()?);
+    // A centre at x + 1/2 inside [x0, x1] needs x ≥ ⌊x0⌋ − 1 … x ≤ ⌊x1⌋; the cell rule takes ⌊x0⌋ … ⌊x1⌋.
+    Some(PixelRect {
+        columns: (floor(x0).saturating_sub(1), floor(x1)),
+        rows: (floor(y0).saturating_sub(1), floor(y1)),
+    })
+}
+
+fn overlaps(a: PixelRect, b: PixelRect) -> bool {
+    a.columns.0 <= b.columns.1 && b.columns.0 <= a.columns.1 && a.rows.0 <= b.rows.1 && b.rows.0 <= a.rows.1
+}
+
+/// The point-in-polygon test of the pixel-order loop.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Inside {
+    /// Ray casting to the right, counting edges by the left-open/right-closed
+    /// (half-interval) vertex rule; a centre on a crossing counts as inside
+    /// ("on the boundary counts").
+    Ray,
+    /// The arc-length method: the winding number by the quadrant table; a
+    /// centre on the boundary counts as inside.
+    Arc,
+}
+
+/// Why the arc-length test decided differently from the scanline rule.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ArcDifference {
+    /// The centre lies exactly on the polygon's boundary where the
+    /// half-interval rule leaves it out (a top edge or vertex, or the right
+    /// end of a horizontal edge).
+    OnBoundary,
+    /// The polygon winds around the centre an even, non-zero number of times:
+    /// arc counts it inside, the paired crossings (even-odd) outside.
+    Winding(i64),
+}
+
+/// One cell where `--inside arc` gives a different polygon than the plain z-buffer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct InsideDifference {
+    /// Column.
+    pub x: u32,
+    /// Row.
+    pub y: u32,
+    /// 0-based polygon whose inside test differs there.
+    pub polygon: usize,
+    /// Why.
+    pub why: ArcDifference,
+}
+
+/// "For every pixel, for every polygon" with one depth variable per pixel
+/// (seed 001). Returns the buffers and, with [`Inside::Arc`], every
+/// (pixel, polygon) whose inside test differs from the scanline rule.
+pub fn run_pixel_order(scene: &Scene, inside: Inside) -> (Buffers, Vec<InsideDifference>) {
+    let stages = stages(scene);
+    let mut buffers = Buffers::new(scene.width, scene.height, scene.background, scene.clear_depth);
+    let drawn: Vec<usize> = (0..scene.polygons.len()).filter(|&i| fate(scene, i) == Fate::Drawn).collect();
+    let mut differences = Vec::new();
+    for y in 0..scene.height {
+        for x in 0..scene.width {
+            // The one depth variable (and frame value) of this pixel.
+            let (mut stored, mut frame) = (scene.clear_depth, scene.background);
+            for &index in &drawn {
+                let polygon = &scene.polygons[index];
+                let by_ray = ray_inside(polygon, x, y);
+                let is_inside = match inside {
+                    Inside::Ray => by_ray,
+                    Inside::Arc => {
+                        let (by_arc, why) = arc_inside(polygon, x, y);
+                        if by_arc != by_ray {
+                            differences.push(InsideDifference { x, y, polygon: index, why });
+                        }
+                        by_arc
+                    }
+                };
+                if !is_inside {
+                    continue;
+                }
+                let scan_y = (2 * i128::from(y) + 1) * polygon.geometry.denominator;
+                let depth = DepthStepper::start(&polygon.geometry, i128::from(x), scan_y).current();
+                let Decision { outcome, stored: after, frame: frame_after, .. } =
+                    stages.decide(polygon, depth, stored, frame);
+                if outcome == Outcome::Written {
+                    (stored, frame) = (after, frame_after);
+                }
+            }
+            buffers.store(x, y, frame, stored);
+        }
+    }
+    (buffers, differences)
+}
+
+/// The centre of pixel (x, y) in a polygon's scaled units.
+fn centre(polygon: &Polygon, x: u32, y: u32) -> (i128, i128) {
+    let d = polygon.geometry.denominator;
+    ((2 * i128::from(x) + 1) * d, (2 * i128::from(y) + 1) * d)
+}
+
+/// Ray casting from the centre to the right with the half-interval vertex
+/// rule (an edge counts when `min(y₁, y₂) ≤ y < max(y₁, y₂)`); a crossing
+/// exactly at the centre means the centre is on the boundary: inside.
+pub fn ray_inside(polygon: &Polygon, x: u32, y: u32) -> bool {
+    let (cx, cy) = centre(polygon, x, y);
+    let points = &polygon.geometry.points;
+    let mut right = 0;
+    for (i, p) in points.iter().enumerate() {
+        let q = points[(i + 1) % points.len()];
+        let (y1, y2) = (p[1], q[1]);
+        if y1 == y2 || cy < y1.min(y2) || cy >= y1.max(y2) {
+            continue;
+        }
+        // Crossing x = (x₁(y₂ − y₁) + (x₂ − x₁)(y − y₁)) / (y₂ − y₁), compared with cx.
+        let crossing = Crossing { numerator: p[0] * (y2 - y1) + (q[0] - p[0]) * (cy - y1), denominator: y2 - y1 };
+        let (n, d) = if crossing.denominator < 0 {
+            (-crossing.numerator, -crossing.denominator)
+        } else {
+            (crossing.numerator, crossing.denominator)
+        };
+        match n.cmp(&(cx * d)) {
+            Ordering::Equal => return true,
+            Ordering::Greater => right += 1,
+            Ordering::Less => {}
+        }
+    }
+    right % 2 == 1
+}
+
+/// The arc-length method with the quadrant table: each vertex's quadrant
+/// around the centre (0: x ≥ 0, y ≥ 0; 1: x < 0, y ≥ 0; 2: x < 0, y < 0;
+/// 3: x ≥ 0, y < 0); each edge adds +1 or −1 for a neighbouring quadrant and
+/// ±2 for the opposite one, by the sign of the cross product; the sum is four
+/// times the winding number. A centre on the boundary counts as inside.
+/// Returns the decision and, for a difference report, its kind.
+pub fn arc_inside(polygon: &Polygon, x: u32, y: u32) -> (bool, ArcDifference) {
+    let (cx, cy) = centre(polygon, x, y);
+    let points = &polygon.geometry.points;
+    let quadrant = |p: &[i128; 3]| match (p[0] - cx >= 0, p[1] - cy >= 0) {
+        (true, true) => 0i64,
+        (false, true) => 1,
+        (false, false) => 2,
+        (true, false) => 3,
+    };
+    let mut sum = 0i64;
+    for (i, p) in points.iter().enumerate() {
+        let q = points[(i + 1) % points.len()];
+        let (ax, ay, bx, by) = (p[0] - cx, p[1] - cy, q[0] - cx, q[1] - cy);
+        let cross = ax * by - ay * bx;
+        // On the segment: collinear with the centre and between the ends.
+        if cross == 0 && ax.min(bx) <= 0 && 0 <= ax.max(bx) && ay.min(by) <= 0 && 0 <= ay.max(by) {
+            return (true, ArcDifference::OnBoundary);
+        }
+        sum += match (quadrant(&q) - quadrant(p)).rem_euclid(4) {
+            0 => 0,
+            1 => 1,
+            3 => -1,
+            _ => {
+                if cross > 0 {
+                    2
+                } else {
+                    -2
+                }
+            }
+        };
+    }
+    let winding = sum / 4;
+    (winding != 0, ArcDifference::Winding(winding))
+}
+
+/// Keeps every fragment of every pixel, for the back-to-front comparison.
+#[derive(Debug, Clone, Copy)]
+struct Fragment {
+    index: usize,
+    depth: Depth,
+}
+
+/// One cell where drawing order with opacity gave another value than the
+/// correct back-to-front blend (the seeds' "local errors").
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct LocalError {
+    /// Column.
+    pub x: u32,
+    /// Row.
+    pub y: u32,
+    /// The value the z-buffer gave in drawing order.
+    pub drawn: u32,
+    /// The value of blending every fragment back to front.
+    pub correct: u32,
+    /// The polygons covering the cell, back to front.
+    pub back_to_front: Vec<usize>,
+}
+
+/// Compares the z-buffer's result with the correct back-to-front blend of all
+/// fragments at each pixel (ties: the earlier polygon counts as nearer, as the
+/// z-buffer keeps the first of equal depths).
+pub fn local_errors(scene: &Scene, drawn: &Buffers) -> Vec<LocalError> {
+    let width = scene.width as usize;
+    let mut fragments: Vec<Vec<Fragment>> = vec![Vec::new(); width * scene.height as usize];
+    let mut scratch = Scratch::default();
+    for (index, polygon) in scene.polygons.iter().enumerate() {
+        if fate(scene, index) != Fate::Drawn {
+            continue;
+        }
+        let mut sink = CollectSink { index, width, fragments: &mut fragments, scene };
+        rasterize(
+            &polygon.geometry,
+            scene.rules,
+            PixelRect::raster(scene.width, scene.height),
+            &mut scratch,
+            &mut sink,
+        );
+    }
+    let mut errors = Vec::new();
+    for (cell, list) in fragments.iter_mut().enumerate() {
+        let (x, y) = ((cell % width) as u32, (cell / width) as u32);
+        // Back to front: farthest first by the depth test; among equal depths the later polygon first.
+        list.sort_by(|a, b| {
+            let nearer = a.depth.cmp_depth(b.depth);
+            let farther_first = match scene.depth_test {
+                crate::depth::DepthTest::Greater => nearer,
+                crate::depth::DepthTest::Less => nearer.reverse(),
+            };
+            farther_first.then(b.index.cmp(&a.index))
+        });
+        let mut value = scene.background;
+        for fragment in list.iter() {
+            let polygon = &scene.polygons[fragment.index];
+            value = match polygon.opacity {
+                Some(alpha) => crate::pipeline::blend(polygon.value, value, alpha),
+                None => polygon.value,
+            };
+        }
+        if value != drawn.frame(x, y) {
+            errors.push(LocalError {
+                x,
+                y,
+                drawn: drawn.frame(x, y),
+                correct: value,
+                back_to_front: list.iter().map(|f| f.index).collect(),
+            });
+        }
+    }
+    errors
+}
+
+struct CollectSink<'a> {
+    index: usize,
+    width: usize,
+    fragments: &'a mut Vec<Vec<Fragment>>,
+    scene: &'a Scene,
+}
+
+impl RasterSink for CollectSink<'_> {
+    fn scanline(&mut self, _row: u32, _crossings: &[Crossing], _spans: &[Span]) {}
+
+    fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
+        let scene = self.scene;
+        let depth = match scene.effects.perspective {
+            Some(p) if p.store_w => p.eye_depth(depth),
+            _ => depth,
+        };
+        // Fragments the depth range or the cross-section discard never show.
+        let outside =
+            scene.depth_range.is_some_and(|(front, rear)| depth.cmp_q(front).is_lt() || depth.cmp_q(rear).is_gt());
+        if outside || scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(depth, z)) {
+            return;
+        }
+        self.fragments[y as usize * self.width + x as usize].push(Fragment { index: self.index, depth });
+    }
+}
