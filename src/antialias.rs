@@ -59,6 +59,27 @@ pub fn supersampled(scene: &Scene, k: u32) -> Result<Scene, Error> {
 
 /// Runs an antialiased scene; one averaged picture per polygon, in order.
 pub fn run(scene: &Scene, settings: Antialias) -> Result<Vec<Averaged>, Error> {
+    run_watching(scene, settings, None).map(|(pictures, _)| pictures)
+}
+
+/// What pixel mode did at one watched pixel, per polygon (for `explain`).
+#[derive(Debug, Clone)]
+pub struct PixelModeNote {
+    /// 0-based polygon index.
+    pub index: usize,
+    /// The covered samples, as (i, j) within the pixel.
+    pub samples: Vec<(u32, u32)>,
+    /// The plane's depth at the pixel centre, and what the test made of it.
+    pub decision: crate::pipeline::Decision,
+}
+
+/// [`run`], noting in pixel mode what happens at pixel `watch`.
+pub fn run_watching(
+    scene: &Scene,
+    settings: Antialias,
+    watch: Option<(u32, u32)>,
+) -> Result<(Vec<Averaged>, Vec<PixelModeNote>), Error> {
+    let mut notes = Vec::new();
     let k = settings.samples;
     let big = supersampled(scene, k)?;
     if settings.depth_at_samples {
@@ -73,7 +94,7 @@ pub fn run(scene: &Scene, settings: Antialias) -> Result<Vec<Averaged>, Error> {
                 |x, y| buffers.depth(x, y).value(),
             ));
         }
-        return Ok(pictures);
+        return Ok((pictures, notes));
     }
     // Pixel mode: samples' framebuffer at k×, z-buffer at screen resolution.
     let stages: Box<dyn PixelStages> =
@@ -98,6 +119,10 @@ pub fn run(scene: &Scene, settings: Antialias) -> Result<Vec<Averaged>, Error> {
                     DepthStepper::start(&polygon.geometry, i128::from(x), scanline_y(y, polygon.geometry.denominator))
                         .current();
                 let decision = stages.decide(polygon, centre_depth, depth.depth(x, y), depth.frame(x, y));
+                if watch == Some((x, y)) {
+                    let samples = covered.iter().map(|(sx, sy)| (sx - x * k, sy - y * k)).collect();
+                    notes.push(PixelModeNote { index, samples, decision });
+                }
                 if decision.outcome != Outcome::Written {
                     continue;
                 }
@@ -116,7 +141,7 @@ pub fn run(scene: &Scene, settings: Antialias) -> Result<Vec<Averaged>, Error> {
             |x, y| depth.depth(x / k, y / k).value(),
         ));
     }
-    Ok(pictures)
+    Ok((pictures, notes))
 }
 
 /// Groups one polygon's covered samples by screen pixel.

@@ -84,12 +84,26 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
     };
     let op = scene.depth_test.symbol();
     match event.outcome {
-        Outcome::Written => format!(
-            "z = {z} {op} {} stored, so {} is stored and the framebuffer gets {}",
-            event.stored_before,
-            stored_text(scene, event.compared),
-            event.frame_after
-        ),
+        Outcome::Written => {
+            let polygon = &scene.polygons[event.index];
+            let frame = match polygon.opacity {
+                Some(alpha) => format!(
+                    "{} (opacity {}: {}·{} + {}·{} under, rounded half up)",
+                    event.frame_after,
+                    crate::exact::fraction(alpha),
+                    crate::exact::fraction(alpha),
+                    polygon.value,
+                    crate::exact::fraction(Q::from_integer(1) - alpha),
+                    event.frame_before
+                ),
+                None => event.frame_after.to_string(),
+            };
+            format!(
+                "z = {z} {op} {} stored, so {} is stored and the framebuffer gets {frame}",
+                event.stored_before,
+                stored_text(scene, event.compared)
+            )
+        }
         Outcome::Hidden => format!("z = {z} is not {op} {} stored: hidden, nothing changes", event.stored_before),
         Outcome::OutsideDepthRange => {
             let (front, rear) = scene.depth_range.unwrap_or((Q::from_integer(0), Q::from_integer(0)));

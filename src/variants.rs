@@ -94,17 +94,12 @@ pub fn run_segmented(scene: &Scene, segments: Segments) -> (Buffers, SegmentStat
     let rects = segments.rects(scene.width, scene.height);
     let mut stats = SegmentStats { segments: rects.len(), depth_cells: 0, polygon_visits: 0 };
     let mut scratch = Scratch::default();
-    // Seed 000's "sorting on the plane": each polygon's bounding box in pixels.
-    let boxes: Vec<Option<PixelRect>> = scene.polygons.iter().map(bounding_rect).collect();
     for rect in rects {
         let (w, h) = (rect.columns.1 - rect.columns.0 + 1, rect.rows.1 - rect.rows.0 + 1);
         stats.depth_cells = stats.depth_cells.max(u64::from(w) * u64::from(h));
         let mut segment = Buffers::new(w, h, scene.background, scene.clear_depth);
-        for (index, polygon) in scene.polygons.iter().enumerate() {
-            let touches = boxes[index].is_some_and(|b| overlaps(b, rect));
-            if !touches || fate(scene, index) != Fate::Drawn {
-                continue;
-            }
+        for index in visited_in(scene, rect) {
+            let polygon = &scene.polygons[index];
             stats.polygon_visits += 1;
             let mut sink = SegmentSink {
                 polygon,
@@ -121,6 +116,16 @@ pub fn run_segmented(scene: &Scene, segments: Segments) -> (Buffers, SegmentStat
         }
     }
     (screen, stats)
+}
+
+/// The polygons (0-based, in order) a segment visits: those drawn whose
+/// bounding boxes touch it.
+pub fn visited_in(scene: &Scene, rect: PixelRect) -> Vec<usize> {
+    (0..scene.polygons.len())
+        .filter(|&i| {
+            fate(scene, i) == Fate::Drawn && bounding_rect(&scene.polygons[i]).is_some_and(|b| overlaps(b, rect))
+        })
+        .collect()
 }
 
 /// Writes one polygon's pixels into a segment's own buffers.

@@ -21,6 +21,12 @@ pub struct ExplainArgs {
     /// The pixel, as X,Y (pixel (0, 0) is bottom left).
     #[arg(long, value_parser = parse_pixel, value_name = "X,Y")]
     pixel: (u32, u32),
+    /// Also show each polygon's point-in-polygon tests at the centre (ray and arc), as `--order pixels` uses them.
+    #[arg(long)]
+    inside: bool,
+    /// Also show which segment holds the pixel and which polygons that segment visits.
+    #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
+    segments: Option<zsim::variants::Segments>,
 }
 
 /// Parses `X,Y`.
@@ -68,11 +74,121 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         ));
     }
     text.push_str(&format!("start: framebuffer {}, z-buffer {} (cleared)\n", scene.background, scene.clear_depth));
+    if let Some(segments) = args.segments {
+        text.push_str(&segment_text(&scene, segments, (x, y)));
+    }
     for entry in watcher.history(x, y) {
         text.push_str(&format!("{}: {}\n", polygon_name(&scene, entry.index), entry_text(&scene, x, y, entry)));
+        if args.inside && entry.fate == zsim::trace::Fate::Drawn {
+            text.push_str(&format!("  {}\n", inside_text(&scene.polygons[entry.index], x, y)));
+        }
     }
     let buffers = simulation.buffers();
     text.push_str(&format!("final: framebuffer {}, z-buffer {}\n", buffers.frame(x, y), buffers.depth(x, y)));
+    if let Some(settings) = scene.effects.antialias {
+        text.push_str(&antialias_text(&scene, settings, (x, y))?);
+    }
     emit(out, &text)?;
     Ok(Finish::Ok)
+}
+
+/// The two point-in-polygon tests at the centre of (x, y).
+fn inside_text(polygon: &zsim::scene::Polygon, x: u32, y: u32) -> String {
+    use zsim::variants::{ArcDifference, arc_inside, ray_inside};
+    let ray = if ray_inside(polygon, x, y) { "inside" } else { "outside" };
+    let arc = match arc_inside(polygon, x, y) {
+        (_, ArcDifference::OnBoundary) => "on the boundary, so inside".to_string(),
+        (inside, ArcDifference::Winding(w)) => {
+            format!("winding number {w}, so {}", if inside { "inside" } else { "outside" })
+        }
+    };
+    format!("inside tests at the centre: ray casting says {ray}; arc length: {arc}")
+}
+
+/// The segment holding (x, y) and the polygons it visits.
+fn segment_text(scene: &Scene, segments: zsim::variants::Segments, (x, y): (u32, u32)) -> String {
+    let rects = segments.rects(scene.width, scene.height);
+    let Some((number, rect)) = rects
+        .iter()
+        .enumerate()
+        .find(|(_, r)| (r.columns.0..=r.columns.1).contains(&x) && (r.rows.0..=r.rows.1).contains(&y))
+    else {
+        return String::new();
+    };
+    let visited: Vec<String> =
+        zsim::variants::visited_in(scene, *rect).into_iter().map(|i| polygon_name(scene, i)).collect();
+    format!(
+        "segment {} of {} ({segments}): columns {} … {}, rows {} … {}; its z-buffer holds {} cells; it visits {}\n",
+        number + 1,
+        rects.len(),
+        rect.columns.0,
+        rect.columns.1,
+        rect.rows.0,
+        rect.rows.1,
+        u64::from(rect.columns.1 - rect.columns.0 + 1) * u64::from(rect.rows.1 - rect.rows.0 + 1),
+        if visited.is_empty() { "no polygon".to_string() } else { visited.join(", ") }
+    )
+}
+
+/// What antialiasing does at (x, y): each sample's history (depth at the
+/// samples) or each polygon's covered samples and centre-depth test (depth at
+/// the pixel), and the mean.
+fn antialias_text(scene: &Scene, settings: zsim::scene::Antialias, (x, y): (u32, u32)) -> Result<String, Failure> {
+    let k = settings.samples;
+    let (pictures, notes) = zsim::antialias::run_watching(scene, settings, Some((x, y)))?;
+    let mut text = format!(
+        "antialiasing, {k}×{k} samples (the lines above are the pixel's centre without it; sample lines count in 1/{k} pixels)\n"
+    );
+    if settings.depth_at_samples {
+        let big = zsim::antialias::supersampled(scene, k)?;
+        let samples: Vec<(u32, u32)> = (0..k).flat_map(|j| (0..k).map(move |i| (x * k + i, y * k + j))).collect();
+        let mut watcher = PixelWatcher::new(samples.iter().copied());
+        let mut simulation = Simulation::new(&big);
+        simulation.finish(&mut watcher);
+        for &(sx, sy) in &samples {
+            text.push_str(&format!(
+                "sample ({}, {}) at ({}, {}): framebuffer {}, z-buffer {}\n",
+                sx - x * k,
+                sy - y * k,
+                zsim::exact::exact_and_decimal(Q::new(2 * i128::from(sx) + 1, 2 * i128::from(k))),
+                zsim::exact::exact_and_decimal(Q::new(2 * i128::from(sy) + 1, 2 * i128::from(k))),
+                simulation.buffers().frame(sx, sy),
+                simulation.buffers().depth(sx, sy)
+            ));
+            for entry in watcher.history(sx, sy) {
+                if entry.pixel.is_some() {
+                    text.push_str(&format!(
+                        "  {}: {}\n",
+                        polygon_name(scene, entry.index),
+                        entry_text(&big, sx, sy, entry)
+                    ));
+                }
+            }
+        }
+    } else {
+        for note in &notes {
+            let samples: Vec<String> = note.samples.iter().map(|(i, j)| format!("({i}, {j})")).collect();
+            let d = note.decision;
+            text.push_str(&format!(
+                "{} covers samples {}; its plane's depth at the pixel centre is {}: {}\n",
+                polygon_name(scene, note.index),
+                samples.join(" "),
+                zsim::explain::depth_text(scene, d.compared.value()),
+                match d.outcome {
+                    zsim::trace::Outcome::Written =>
+                        format!("written, the z-buffer holds {} and those samples take the value", d.stored),
+                    _ => "not written".to_string(),
+                }
+            ));
+        }
+    }
+    if let Some(last) = pictures.last() {
+        let row = (scene.height - 1 - y) as usize;
+        text.push_str(&format!(
+            "mean over the samples: framebuffer {}, z-buffer {}\n",
+            zsim::exact::fraction(last.frame[row][x as usize]),
+            zsim::exact::fraction(last.depth[row][x as usize])
+        ));
+    }
+    Ok(text)
 }

@@ -212,3 +212,27 @@ fn transparency_reports_the_local_errors_of_drawing_order() {
     assert_eq!(cells, vec![(4, 1, 3, 4), (5, 1, 3, 4), (4, 2, 3, 4), (5, 2, 3, 4), (4, 3, 3, 4), (5, 3, 3, 4)]);
     snapshot!("run_transparency", zsim(&["run", "examples/transparency.json", "--final"]).stdout);
 }
+
+#[test]
+fn explain_shows_each_effect_at_a_pixel() {
+    let transparency = zsim(&["explain", "examples/transparency.json", "--pixel", "4,2"]);
+    assert!(
+        transparency.stdout.contains("the framebuffer gets 3 (opacity 1/2: 1/2·6 + 1/2·0 under, rounded half up)"),
+        "{}",
+        transparency.stdout
+    );
+    let arc = zsim(&["explain", "examples/concave.json", "--pixel", "14,5", "--inside", "--segments", "tiles:2"]);
+    assert!(
+        arc.stdout.contains("segment 2 of 4 (tiles:2): columns 10 … 19, rows 0 … 5; its z-buffer holds 60 cells"),
+        "{}",
+        arc.stdout
+    );
+    assert!(
+        arc.stdout.contains("ray casting says outside; arc length: winding number -2, so inside"),
+        "{}",
+        arc.stdout
+    );
+    let samples = zsim(&["explain", "examples/antialias.json", "--pixel", "2,4"]);
+    assert!(samples.stdout.ends_with("mean over the samples: framebuffer 5/2, z-buffer 7\n"), "{}", samples.stdout);
+    snapshot!("explain_antialias_2_4", samples.stdout);
+}
