@@ -95,6 +95,15 @@ impl Buffers {
         }
     }
 
+    /// Both buffers' cells (rows bottom first) when the z-buffer holds
+    /// levels, for loops that write many cells.
+    pub fn level_cells_mut(&mut self) -> Option<(&mut [u32], &mut [u32])> {
+        match &mut self.depth {
+            DepthCells::Levels(depth) => Some((&mut self.frame, depth)),
+            DepthCells::Exact(_) => None,
+        }
+    }
+
     /// The z-buffer as integer rows, top row first, when it holds levels.
     pub fn depth_level_rows(&self) -> Option<Vec<Vec<u32>>> {
         match &self.depth {

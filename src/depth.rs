@@ -72,6 +72,7 @@ impl DepthTest {
 
     /// Whether an incoming exact depth replaces the stored value. Equal
     /// depths never overwrite: the first polygon drawn keeps the pixel.
+    #[inline]
     pub fn passes(self, incoming: Depth, stored: Stored) -> bool {
         let ord = match stored {
             Stored::Level(level) => incoming.cmp_integer(i128::from(level)),
@@ -148,6 +149,7 @@ impl Depth {
     }
 
     /// Compares with an integer stored value.
+    #[inline]
     pub fn cmp_integer(self, stored: i128) -> Ordering {
         self.whole.cmp(&stored).then(if self.remainder > 0 { Ordering::Greater } else { Ordering::Equal })
     }
@@ -179,6 +181,7 @@ impl Depth {
 
     /// What a quantized z-buffer stores: rounded half up, then saturated to
     /// `0 ..= depth_max`.
+    #[inline]
     pub fn quantized(self, depth_max: u32) -> u32 {
         self.rounded().clamp(0, i128::from(depth_max)) as u32
     }
@@ -231,6 +234,7 @@ impl DepthStepper {
     }
 
     /// Moves one pixel to the right.
+    #[inline]
     pub fn advance(&mut self) {
         self.depth.whole += self.step_whole;
         self.depth.remainder += self.step_remainder;

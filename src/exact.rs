@@ -151,12 +151,20 @@ pub fn cmp_fractions(mut n1: i128, mut d1: i128, mut n2: i128, mut d2: i128) -> 
 /// Floor of `n / d` for `d > 0`, as whole part and remainder `0 ≤ r < d`.
 pub fn floor_div(n: i128, d: i128) -> (i128, i128) {
     debug_assert!(d > 0);
+    // 128-bit division is a slow library call; most operands fit 64 bits.
+    if let (Ok(n64), Ok(d64)) = (i64::try_from(n), i64::try_from(d)) {
+        let (q, r) = n64.div_mod_floor(&d64);
+        return (i128::from(q), i128::from(r));
+    }
     n.div_mod_floor(&d)
 }
 
 /// Ceiling of `n / d` for `d > 0`.
 pub fn ceil_div(n: i128, d: i128) -> i128 {
     debug_assert!(d > 0);
+    if let (Ok(n64), Ok(d64)) = (i64::try_from(n), i64::try_from(d)) {
+        return i128::from(Integer::div_ceil(&n64, &d64));
+    }
     Integer::div_ceil(&n, &d)
 }
 

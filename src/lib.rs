@@ -67,7 +67,9 @@
 //! ```
 #![warn(missing_docs)]
 
+pub mod accuracy;
 pub mod antialias;
+pub mod arith;
 pub mod buet;
 pub mod buffer;
 pub mod check;

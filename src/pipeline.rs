@@ -110,6 +110,12 @@ pub struct Decision {
 pub trait PixelStages {
     /// Decides one covered centre of `polygon` with exact depth `depth`.
     fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision;
+
+    /// For the plain stages on a quantized z-buffer: the test and the largest
+    /// level, so the loop can work on the buffers' cells directly.
+    fn plain_levels(&self) -> Option<(DepthTest, u32)> {
+        None
+    }
 }
 
 /// The plain algorithm: the depth test and the store, nothing else.
@@ -128,6 +134,10 @@ impl Plain {
 }
 
 impl PixelStages for Plain {
+    fn plain_levels(&self) -> Option<(DepthTest, u32)> {
+        (self.store == DepthStore::Quantized).then_some((self.test, self.depth_max))
+    }
+
     #[inline]
     fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision {
         if self.test.passes(depth, stored) {
@@ -280,10 +290,69 @@ impl<'s> Simulation<'s> {
     fn draw<S: PixelStages, O: Observer>(&mut self, index: usize, stages: &S, observer: &mut O) {
         let scene = self.scene;
         let polygon = &scene.polygons[index];
+        let rect = PixelRect::raster(scene.width, scene.height);
+        if let Some((test, depth_max)) = stages.plain_levels()
+            && let Some((frame, depth)) = self.buffers.level_cells_mut()
+        {
+            let width = scene.width as usize;
+            let mut sink =
+                LevelSink { index, polygon, test, depth_max, width, frame, depth, stats: &mut self.stats, observer };
+            rasterize(&polygon.geometry, scene.rules, rect, &mut self.scratch, &mut sink);
+            return;
+        }
         let mut sink =
             DrawSink { index, polygon, stages, buffers: &mut self.buffers, stats: &mut self.stats, observer };
-        let rect = PixelRect::raster(scene.width, scene.height);
         rasterize(&polygon.geometry, scene.rules, rect, &mut self.scratch, &mut sink);
+    }
+}
+
+/// The plain stages on a quantized z-buffer, working on the cells directly:
+/// the same decisions as [`Plain::decide`], without a match per access.
+struct LevelSink<'a, O> {
+    index: usize,
+    polygon: &'a Polygon,
+    test: DepthTest,
+    depth_max: u32,
+    width: usize,
+    frame: &'a mut [u32],
+    depth: &'a mut [u32],
+    stats: &'a mut Stats,
+    observer: &'a mut O,
+}
+
+impl<O: Observer> RasterSink for LevelSink<'_, O> {
+    fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
+        let (index, polygon) = (self.index, self.polygon);
+        self.observer.scanline(&ScanlineEvent { index, polygon, row, crossings, spans });
+    }
+
+    #[inline]
+    fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
+        let cell = y as usize * self.width + x as usize;
+        let (stored_before, frame_before) = (self.depth[cell], self.frame[cell]);
+        self.stats.tested += 1;
+        let written = self.test.passes(depth, Stored::Level(stored_before));
+        let (stored_after, frame_after) = if written {
+            self.stats.written += 1;
+            let level = depth.quantized(self.depth_max);
+            self.depth[cell] = level;
+            self.frame[cell] = self.polygon.value;
+            (level, self.polygon.value)
+        } else {
+            (stored_before, frame_before)
+        };
+        self.observer.pixel(&PixelEvent {
+            index: self.index,
+            x,
+            y,
+            depth,
+            compared: depth,
+            stored_before: Stored::Level(stored_before),
+            frame_before,
+            outcome: if written { Outcome::Written } else { Outcome::Hidden },
+            stored_after: Stored::Level(stored_after),
+            frame_after,
+        });
     }
 }
 
@@ -356,6 +425,13 @@ pub fn stages(scene: &Scene) -> Vec<String> {
             "near-plane clipping (keep z ≤ {}) and perspective projection (eye at z = {})",
             fraction(perspective.near_plane()),
             fraction(perspective.distance)
+        ));
+    }
+    if let Some(antialias) = scene.effects.antialias {
+        stages.push(format!(
+            "supersampling {0}×{0} (depth at each {1}), then averaging",
+            antialias.samples,
+            if antialias.depth_at_samples { "sample" } else { "pixel's centre" }
         ));
     }
     if let Some(window) = scene.window {

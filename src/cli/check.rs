@@ -29,6 +29,9 @@ pub struct CheckArgs {
     /// Check the state after this polygon (number from 1, or name); default: the last.
     #[arg(long, value_name = "N|NAME")]
     after: Option<String>,
+    /// The arithmetic the answer was computed in: exact, f64, f64-incremental, f32-incremental, f32 or fixed:K.
+    #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
+    arith: zsim::arith::Arith,
 }
 
 fn read_answer(path: &Path, scene: &Scene) -> Result<Matrix, Error> {
@@ -55,14 +58,24 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             answers.push((buffer, path, read_answer(path, &scene)?));
         }
     }
+    zsim::arith::check_supported(&scene, args.arith)?;
     let mut simulation = Simulation::new(&scene);
     simulation.draw_through(last, &mut Unobserved);
+    // An inexact mode's buffers after polygon `last`: run it on the scene cut after that polygon.
+    let mode_buffers = if args.arith == zsim::arith::Arith::Exact {
+        None
+    } else {
+        let mut prefix = scene.clone();
+        prefix.polygons.truncate(last + 1);
+        Some(zsim::arith::run(&prefix, args.arith)?.0)
+    };
+    let reference = mode_buffers.as_ref().unwrap_or(simulation.buffers());
     let cells = scene.width as usize * scene.height as usize;
     let mut results = Vec::new();
     for (buffer, path, answer) in answers {
         let expected = match buffer {
-            Buffer::Frame => simulation.buffers().frame_rows(),
-            Buffer::Depth => simulation.buffers().depth_level_rows().ok_or_else(|| {
+            Buffer::Frame => reference.frame_rows(),
+            Buffer::Depth => reference.depth_level_rows().ok_or_else(|| {
                 Error::Usage(format!(
                     "{}: this scene keeps exact depths, so its z-buffer has no integer matrix to check; check the framebuffer, or a BUET z_buffer.txt with `zsim buet check`",
                     args.scene.display()
@@ -98,23 +111,43 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             mismatches.len(),
             buffer.name()
         ));
-        text.push_str(&format!("{}\n", table(&scene, *buffer, mismatches, &watcher)));
+        text.push_str(&format!(
+            "{}\n",
+            table(&scene, *buffer, mismatches, &watcher, (args.arith, simulation.buffers()))
+        ));
     }
     emit(out, &text)?;
     Ok(if differs { Finish::Differs } else { Finish::Ok })
 }
 
-fn table(scene: &Scene, buffer: Buffer, mismatches: &[Mismatch], watcher: &PixelWatcher) -> Table {
+fn table(
+    scene: &Scene,
+    buffer: Buffer,
+    mismatches: &[Mismatch],
+    watcher: &PixelWatcher,
+    (arith, exact): (zsim::arith::Arith, &zsim::buffer::Buffers),
+) -> Table {
     let mut table = Table::new();
     table.load_style(presets::ASCII_MARKDOWN).set_header(["x", "y", "answer", "right", "why"]);
     for cell in mismatches {
         let history = watcher.history(cell.x, cell.y);
+        let mut reason = why(scene, buffer, cell.x, cell.y, history);
+        let exact_value = match buffer {
+            Buffer::Frame => exact.frame(cell.x, cell.y),
+            Buffer::Depth => exact.depth(cell.x, cell.y).level().unwrap_or(0),
+        };
+        if exact_value != cell.expected {
+            reason = format!(
+                "in {arith} arithmetic the cell holds {}; in exact arithmetic {exact_value}: {reason}",
+                cell.expected
+            );
+        }
         table.add_row([
             cell.x.to_string(),
             cell.y.to_string(),
             cell.answer.to_string(),
             cell.expected.to_string(),
-            why(scene, buffer, cell.x, cell.y, history),
+            reason,
         ]);
     }
     table

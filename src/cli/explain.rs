@@ -24,6 +24,9 @@ pub struct ExplainArgs {
     /// Also show each polygon's point-in-polygon tests at the centre (ray and arc), as `--order pixels` uses them.
     #[arg(long)]
     inside: bool,
+    /// Also show what this arithmetic leaves in the pixel: f64, f64-incremental, f32-incremental, f32 or fixed:K.
+    #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
+    arith: zsim::arith::Arith,
     /// Also show which segment holds the pixel and which polygons that segment visits.
     #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
     segments: Option<zsim::variants::Segments>,
@@ -87,6 +90,18 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     text.push_str(&format!("final: framebuffer {}, z-buffer {}\n", buffers.frame(x, y), buffers.depth(x, y)));
     if let Some(settings) = scene.effects.antialias {
         text.push_str(&antialias_text(&scene, settings, (x, y))?);
+    }
+    if args.arith != zsim::arith::Arith::Exact {
+        zsim::arith::check_supported(&scene, args.arith)?;
+        let (mode, _) = zsim::arith::run(&scene, args.arith)?;
+        let same = mode.frame(x, y) == buffers.frame(x, y) && mode.depth(x, y) == buffers.depth(x, y);
+        text.push_str(&format!(
+            "in {} arithmetic: framebuffer {}, z-buffer {} ({})\n",
+            args.arith,
+            mode.frame(x, y),
+            mode.depth(x, y),
+            if same { "the same as exact" } else { "not what exact arithmetic gives" }
+        ));
     }
     emit(out, &text)?;
     Ok(Finish::Ok)

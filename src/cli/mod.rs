@@ -1,6 +1,7 @@
 //! The command line: the only place that prints. Exit codes: 0 ok, 1 an
 //! answer differs (`check`), 2 bad input or usage.
 
+mod accuracy;
 mod buet;
 mod check;
 mod explain;
@@ -34,6 +35,8 @@ enum Command {
     Explain(explain::ExplainArgs),
     /// Check a homework answer (a framebuffer and/or z-buffer) and explain every wrong cell.
     Check(check::CheckArgs),
+    /// Every arithmetic mode against exact: mismatches and time; a depth-bits sweep.
+    Accuracy(accuracy::AccuracyArgs),
     /// Bits and bytes of the framebuffer and z-buffer for a raster.
     Memory(generate::MemoryArgs),
     /// Print a scene of random triangles (the same for the same seed).
@@ -86,6 +89,7 @@ pub fn main() -> ExitCode {
         Command::Check(args) => check::run(&args, &mut out),
         Command::Figure(args) => figure::run(&args, &mut out),
         Command::Buet(args) => buet::run(&args, &mut out),
+        Command::Accuracy(args) => accuracy::run(&args, &mut out),
         Command::Memory(args) => generate::memory_command(&args, &mut out),
         Command::Random(args) => generate::random_command(&args, &mut out),
     };

@@ -3,7 +3,13 @@
 use std::io::Write;
 use std::path::PathBuf;
 
+use std::io::IsTerminal;
+use std::time::{Duration, Instant};
+
 use clap::{Args, ValueEnum};
+use indicatif::{ProgressBar, ProgressStyle};
+use zsim::arith::Arith;
+use zsim::pipeline::Stats;
 use zsim::pipeline::{self, Simulation};
 use zsim::report::{self, MatrixStyle, RunJson, StepJson};
 use zsim::scene::Scene;
@@ -34,6 +40,9 @@ pub struct RunArgs {
     /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (seed 000).
     #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
     segments: Option<zsim::variants::Segments>,
+    /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32 or fixed:K.
+    #[arg(long, default_value = "exact", value_parser = Arith::parse)]
+    arith: Arith,
 }
 
 /// The loop order.
@@ -65,8 +74,13 @@ enum Format {
 }
 
 pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let reading = Instant::now();
     let scene = Scene::load(&args.scene)?;
+    let read_time = reading.elapsed();
     let path = args.scene.display().to_string();
+    if args.arith != Arith::Exact {
+        return run_inexact(args, &scene, &path, read_time, out);
+    }
     let json = args.format == Format::Json;
     if args.segments.is_some() || args.order == Order::Pixels || scene.effects.antialias.is_some() {
         if args.format == Format::None {
@@ -126,8 +140,14 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             emit(out, &format!("{text}\n"))?;
         }
         Format::None => {
-            simulation.finish(&mut Unobserved);
-            emit(out, &format!("{}\n", summary(&scene, &args.scene.display().to_string(), &simulation)))?;
+            let progress = progress_bar(scene.polygons.len());
+            let rasterizing = Instant::now();
+            while simulation.draw_next(&mut Unobserved).is_some() {
+                progress.inc(1);
+            }
+            let raster_time = rasterizing.elapsed();
+            progress.finish_and_clear();
+            emit(out, &format!("{}\n", summary(&scene, &path, simulation.stats(), (read_time, raster_time))))?;
         }
     }
     Ok(Finish::Ok)
@@ -143,15 +163,92 @@ fn buffers_text(simulation: &Simulation<'_>, index: usize, name: &str, axes: boo
     )
 }
 
-fn summary(scene: &Scene, path: &str, simulation: &Simulation<'_>) -> String {
-    let stats = simulation.stats();
+/// A progress bar over polygons on standard error, shown only there on a
+/// terminal and only for long runs.
+fn progress_bar(polygons: usize) -> ProgressBar {
+    if polygons < 10_000 || !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(polygons as u64);
+    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} polygons, {per_sec}") {
+        bar.set_style(style);
+    }
+    bar
+}
+
+/// The one-line summary: counts, effects, stages and the time spent reading and rasterizing.
+fn summary(scene: &Scene, path: &str, stats: Stats, (read, raster): (Duration, Duration)) -> String {
     let effects = scene.effects.names();
+    let rate = stats.tested as f64 / raster.as_secs_f64().max(1e-9) / 1e6;
     format!(
-        "{path}: {} polygons, {} pixel centres tested, {} written; effects: {}; stages: {}",
+        "{path}: {} polygons, {} pixel centres tested, {} written; effects: {}; stages: {}; read {:.1} ms, rasterized {:.1} ms ({rate:.1} M pixels/s)",
         stats.polygons,
         stats.tested,
         stats.written,
         if effects.is_empty() { "none".to_string() } else { effects.join(", ") },
         pipeline::stages(scene).join(" → "),
+        read.as_secs_f64() * 1000.0,
+        raster.as_secs_f64() * 1000.0,
     )
+}
+
+/// `run --arith MODE` for an inexact mode: the final buffers, and how they differ from exact.
+fn run_inexact(
+    args: &RunArgs,
+    scene: &Scene,
+    path: &str,
+    read_time: Duration,
+    out: &mut dyn Write,
+) -> Result<Finish, Failure> {
+    zsim::arith::check_supported(scene, args.arith)?;
+    if args.segments.is_some() || args.order != Order::Polygons {
+        return Err(zsim::error::Error::Usage(
+            "--arith other than exact runs the plain z-buffer loop; drop --segments and --order".into(),
+        )
+        .into());
+    }
+    let prepared = zsim::arith::Prepared::new(scene, args.arith)?;
+    let rasterizing = Instant::now();
+    let (buffers, stats) = prepared.raster();
+    let raster_time = rasterizing.elapsed();
+    let last = scene.polygons.last().map_or(String::new(), |p| p.name.clone());
+    match args.format {
+        Format::Json => {
+            let json = RunJson {
+                width: scene.width,
+                height: scene.height,
+                effects: scene.effects.names(),
+                steps: vec![StepJson { polygon: last, frame: buffers.frame_rows(), depth: buffers.depth_rows() }],
+            };
+            emit(out, &format!("{}\n", serde_json::to_string(&json).expect("serializing plain data cannot fail")))?;
+        }
+        Format::None => {
+            let text = summary(scene, path, stats, (read_time, raster_time));
+            emit(out, &format!("{text}; arithmetic {}\n", args.arith))?;
+        }
+        Format::Text => {
+            // Only the text report compares with exact, so timing a mode runs that mode alone.
+            let (exact, _) = zsim::arith::run(scene, Arith::Exact)?;
+            let differing = |f: &dyn Fn(&zsim::buffer::Buffers, u32, u32) -> bool| -> usize {
+                (0..scene.height)
+                    .flat_map(|y| (0..scene.width).map(move |x| (x, y)))
+                    .filter(|&(x, y)| f(&buffers, x, y))
+                    .count()
+            };
+            let frame_cells = differing(&|b, x, y| b.frame(x, y) != exact.frame(x, y));
+            let depth_cells = differing(&|b, x, y| b.depth(x, y) != exact.depth(x, y));
+            let style = MatrixStyle { axes: args.axes, color: super::use_color(), ..MatrixStyle::default() };
+            emit(
+                out,
+                &format!(
+                    "{}arithmetic: {}; compared with exact arithmetic, {frame_cells} framebuffer and {depth_cells} z-buffer cells differ\n\nframebuffer after all polygons:\n{}\nz-buffer after all polygons:\n{}",
+                    report::scene_header(scene, path),
+                    args.arith,
+                    report::matrix_styled(&buffers.frame_rows(), &style),
+                    report::matrix_styled(&buffers.depth_rows(), &style)
+                ),
+            )?;
+        }
+    }
+    Ok(Finish::Ok)
 }

@@ -8,6 +8,7 @@
 //!   --review`), read each diff and accept it only if it is right.
 //! - CLI tests run the real binary and check stdout, stderr and the exit code.
 
+mod accuracy;
 mod bad_input;
 mod buet;
 mod effects;
