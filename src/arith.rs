@@ -99,17 +99,8 @@ pub fn check_supported(scene: &Scene, arith: Arith) -> Result<(), Error> {
 /// The scene must pass [`check_supported`].
 pub fn run(scene: &Scene, arith: Arith) -> Result<(Buffers, Stats), Error> {
     match arith {
-        Arith::Exact => {
-            let mut simulation = Simulation::new(scene);
-            simulation.finish(&mut Unobserved);
-            Ok((simulation.buffers().clone(), simulation.stats()))
-        }
-        Arith::Fixed(bits) => {
-            let snapped = snap(scene, bits)?;
-            let mut simulation = Simulation::new(&snapped);
-            simulation.finish(&mut Unobserved);
-            Ok((simulation.buffers().clone(), simulation.stats()))
-        }
+        Arith::Exact => Ok(exact_raster(scene)),
+        Arith::Fixed(bits) => Ok(exact_raster(&snap(scene, bits)?)),
         Arith::F64 => Ok(raster_float(scene, &prepare_scene::<f64>(scene), false)),
         Arith::F64Incremental => Ok(raster_float(scene, &prepare_scene::<f64>(scene), true)),
         Arith::F32 => Ok(raster_float(scene, &prepare_scene::<f32>(scene), false)),
@@ -120,8 +111,10 @@ pub fn run(scene: &Scene, arith: Arith) -> Result<(Buffers, Stats), Error> {
 /// A scene's input converted for one mode (vertices snapped, or converted
 /// to floating point with their planes), so that timing covers the raster only.
 pub enum Prepared<'s> {
-    /// The exact core on this scene (for `exact`, and `fixed:K` after snapping).
-    Exact(std::borrow::Cow<'s, Scene>),
+    /// The exact core on the scene.
+    Exact(&'s Scene),
+    /// The exact core on the scene snapped to fixed point.
+    Snapped(Box<Scene>),
     /// Floating-point polygons in `f64`.
     F64(&'s Scene, Vec<Option<FloatPolygon<f64>>>, bool),
     /// Floating-point polygons in `f32`.
@@ -132,8 +125,8 @@ impl<'s> Prepared<'s> {
     /// Converts a scene's input for `arith`.
     pub fn new(scene: &'s Scene, arith: Arith) -> Result<Prepared<'s>, Error> {
         Ok(match arith {
-            Arith::Exact => Prepared::Exact(std::borrow::Cow::Borrowed(scene)),
-            Arith::Fixed(bits) => Prepared::Exact(std::borrow::Cow::Owned(snap(scene, bits)?)),
+            Arith::Exact => Prepared::Exact(scene),
+            Arith::Fixed(bits) => Prepared::Snapped(Box::new(snap(scene, bits)?)),
             Arith::F64 => Prepared::F64(scene, prepare_scene(scene), false),
             Arith::F64Incremental => Prepared::F64(scene, prepare_scene(scene), true),
             Arith::F32 => Prepared::F32(scene, prepare_scene(scene), false),
@@ -144,15 +137,18 @@ impl<'s> Prepared<'s> {
     /// Rasterizes: the final buffers and the counts.
     pub fn raster(&self) -> (Buffers, Stats) {
         match self {
-            Prepared::Exact(scene) => {
-                let mut simulation = Simulation::new(scene);
-                simulation.finish(&mut Unobserved);
-                (simulation.buffers().clone(), simulation.stats())
-            }
+            Prepared::Exact(scene) => exact_raster(scene),
+            Prepared::Snapped(scene) => exact_raster(scene),
             Prepared::F64(scene, polygons, incremental) => raster_float(scene, polygons, *incremental),
             Prepared::F32(scene, polygons, incremental) => raster_float(scene, polygons, *incremental),
         }
     }
+}
+
+fn exact_raster(scene: &Scene) -> (Buffers, Stats) {
+    let mut simulation = Simulation::new(scene);
+    simulation.finish(&mut Unobserved);
+    (simulation.buffers().clone(), simulation.stats())
 }
 
 /// Every polygon drawn (by the exact fate) converted to `F`; `None` for the others.
