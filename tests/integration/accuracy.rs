@@ -39,11 +39,10 @@ fn f32_stepping_error_grows_with_span_length() {
     // One plane z = x·(1/3) + 10^6 across spans of growing length: stepping by −a/c in
     // f32 drifts from the per-pixel value, and the drift grows with the span.
     let worst = |width: u32| -> u32 {
+        let far = format!("{}/3", 3_000_000 + width);
         let scene = Scene::from_json(
             &format!(
-                r#"{{"width": {width}, "height": 1, "depth_bits": 24, "polygons": [{{"value": 1, "vertices": [[0, 0, 1000000], [{width}, 0, "{}"], [{width}, 1, "{}"], [0, 1, 1000000]]}}]}}"#,
-                format!("{}/3", 3_000_000 + width),
-                format!("{}/3", 3_000_000 + width)
+                r#"{{"width": {width}, "height": 1, "depth_bits": 24, "polygons": [{{"value": 1, "vertices": [[0, 0, 1000000], [{width}, 0, "{far}"], [{width}, 1, "{far}"], [0, 1, 1000000]]}}]}}"#
             ),
             Path::new("ramp.json"),
         )
