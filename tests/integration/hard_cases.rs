@@ -158,3 +158,56 @@ fn edge_on_polygon_covers_nothing() {
         run(r#"{"width": 3, "height": 3, "polygons": [{"value": 1, "vertices": [[1,0,0],[1,3,0],[1,3,5],[1,0,5]]}]}"#);
     assert_eq!(frame, rows("0 0 0\n0 0 0\n0 0 0"));
 }
+
+#[test]
+fn sliver_1_256_thin_and_thousands_of_pixels_long() {
+    // A quad 1/256 px thick around the scanline y = 0.5, 4096 px long: every centre of row 0 lies in it.
+    let (frame, _) = run(
+        r#"{"width": 4096, "height": 2, "polygons": [{"value": 1, "vertices": [[0, "127/256", 5], [4096, "127/256", 5], [4096, "129/256", 5], [0, "129/256", 5]]}]}"#,
+    );
+    assert_eq!(frame[1].iter().filter(|&&v| v == 1).count(), 4096, "row 0: all 4096 centres covered");
+    assert!(frame[0].iter().all(|&v| v == 0), "row 1 untouched");
+    // The same sliver just above the centres covers nothing.
+    let (frame, _) = run(
+        r#"{"width": 4096, "height": 2, "polygons": [{"value": 1, "vertices": [[0, "129/256", 5], [4096, "129/256", 5], [4096, "130/256", 5], [0, "130/256", 5]]}]}"#,
+    );
+    assert!(frame.iter().flatten().all(|&v| v == 0));
+}
+
+#[test]
+fn nearly_edge_on_plane_saturates_instead_of_overflowing() {
+    // z = 2^30·y: the normal lies almost in the picture plane. Depths run to 2^32 and beyond
+    // the 4-bit range; they saturate at 15 (and the arithmetic, overflow-checked in tests, holds).
+    let (frame, depth) = run(
+        r#"{"width": 4, "height": 4, "polygons": [{"value": 1, "vertices": [[0, 0, 0], [4, 0, 0], [4, 4, 4294967296], [0, 4, 4294967296]]}]}"#,
+    );
+    assert!(frame.iter().flatten().all(|&v| v == 1));
+    assert!(depth.iter().flatten().all(|&v| v == 15), "{depth:?}");
+}
+
+#[test]
+fn intersecting_polygons_are_owned_by_the_sign_of_the_exact_depth_difference() {
+    // Plane A: z = x; plane B: z = 8 − x + 1/3. They cross at x = 25/6 ≈ 4.17: centres 0.5 … 3.5
+    // are B's (B nearer), 4.5 … 7.5 are A's. A is drawn first; B wins only where strictly nearer.
+    let (frame, _) = run(r#"{"width": 8, "height": 1, "depth_bits": 8, "polygons": [
+            {"value": 1, "vertices": [[0, 0, 0], [8, 0, 8], [8, 1, 8], [0, 1, 0]]},
+            {"value": 2, "vertices": [[0, 0, "25/3"], [8, 0, "1/3"], [8, 1, "1/3"], [0, 1, "25/3"]]}]}"#);
+    assert_eq!(frame, rows("2 2 2 2 1 1 1 1"));
+    // Coplanar and overlapping: equal depths everywhere, so the first drawn keeps every pixel.
+    let (frame, _) = run(r#"{"width": 4, "height": 1, "polygons": [
+            {"value": 1, "vertices": [[0, 0, 3], [3, 0, 6], [3, 1, 6], [0, 1, 3]]},
+            {"value": 2, "vertices": [[1, 0, 4], [4, 0, 7], [4, 1, 7], [1, 1, 4]]}]}"#);
+    assert_eq!(frame, rows("1 1 1 2"));
+}
+
+#[test]
+fn coordinates_at_the_documented_limit_do_not_overflow() {
+    // |coordinate|·2D ≤ 2^34 with D = 1: integer coordinates up to ±2^33. A triangle that large
+    // covers the whole raster; every intermediate value stays in i128 (overflow checks are on in tests).
+    let (frame, depth) = run(
+        r#"{"width": 4, "height": 4, "depth_bits": 32, "polygons": [{"value": 1, "vertices": [[-8589934592, -8589934592, -8589934592], [8589934592, -8589934592, 8589934592], [0, 8589934592, 0]]}]}"#,
+    );
+    assert!(frame.iter().flatten().all(|&v| v == 1));
+    // The plane is z = x: at the centre x + 1/2 the depth is stored rounded half up.
+    assert_eq!(depth[3], vec![1, 2, 3, 4], "{depth:?}");
+}

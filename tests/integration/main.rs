@@ -16,6 +16,7 @@ mod generate;
 mod golden;
 mod hard_cases;
 mod run_command;
+mod stability;
 mod teaching;
 
 use std::path::{Path, PathBuf};
