@@ -38,7 +38,10 @@ fn scene_json(polygons: &[Vec<(i64, i64, i64)>]) -> String {
     format!("{{\"width\": {W}, \"height\": {H}, \"depth_bits\": 4, \"polygons\": [{}]}}", list.join(", "))
 }
 
-fn run(json: &str) -> Option<(Vec<Vec<u32>>, Vec<Vec<u32>>)> {
+/// A framebuffer and a z-buffer, rows top first.
+type Buffers = (Vec<Vec<u32>>, Vec<Vec<u32>>);
+
+fn run(json: &str) -> Option<Buffers> {
     let scene = Scene::from_json(json, Path::new("prop.json")).ok()?;
     let mut simulation = Simulation::new(&scene);
     simulation.finish(&mut Unobserved);
@@ -48,7 +51,7 @@ fn run(json: &str) -> Option<(Vec<Vec<u32>>, Vec<Vec<u32>>)> {
 /// The reference: for every pixel, every polygon in order; inside by counting
 /// the crossings (half-open in y) left of or at the centre and pairing them;
 /// depth from the plane through three vertices, by Cramer's rule in `Q`.
-fn reference(polygons: &[Vec<(i64, i64, i64)>]) -> (Vec<Vec<u32>>, Vec<Vec<u32>>) {
+fn reference(polygons: &[Vec<(i64, i64, i64)>]) -> Buffers {
     let mut frame = vec![vec![0u32; W as usize]; H as usize];
     let mut depth = vec![vec![0u32; W as usize]; H as usize];
     for (i, p) in polygons.iter().enumerate() {
