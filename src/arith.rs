@@ -148,7 +148,8 @@ impl<'s> Prepared<'s> {
 fn exact_raster(scene: &Scene) -> (Buffers, Stats) {
     let mut simulation = Simulation::new(scene);
     simulation.finish(&mut Unobserved);
-    (simulation.buffers().clone(), simulation.stats())
+    let stats = simulation.stats();
+    (simulation.into_buffers(), stats)
 }
 
 /// Every polygon drawn (by the exact fate) converted to `F`; `None` for the others.
@@ -273,6 +274,68 @@ fn raster_float<F: Float>(scene: &Scene, polygons: &[Option<FloatPolygon<F>>], i
         }
     }
     (buffers, stats)
+}
+
+/// What an inexact mode computes on one scanline of one polygon (for
+/// `zsim step --arith`): its crossings, its spans' columns, and its depth at
+/// each of those columns, stepped or evaluated as the mode does.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FloatScanline {
+    /// The crossings, sorted, as `f64` (an `f32` mode's values widened).
+    pub crossings: Vec<f64>,
+    /// The covered columns and the depth the mode computes at each.
+    pub pixels: Vec<(u32, f64)>,
+}
+
+/// The scanline `row` of polygon `index` in an inexact mode (`None` for
+/// `exact` and `fixed:K`, which run the exact core).
+pub fn float_scanline(scene: &Scene, index: usize, row: u32, mode: Arith) -> Option<FloatScanline> {
+    match mode {
+        Arith::F64 => Some(scanline_in::<f64>(scene, index, row, false)),
+        Arith::F64Incremental => Some(scanline_in::<f64>(scene, index, row, true)),
+        Arith::F32 => Some(scanline_in::<f32>(scene, index, row, false)),
+        Arith::F32Incremental => Some(scanline_in::<f32>(scene, index, row, true)),
+        Arith::Exact | Arith::Fixed(_) => None,
+    }
+}
+
+fn scanline_in<F: Float>(scene: &Scene, index: usize, row: u32, incremental: bool) -> FloatScanline {
+    let polygon = &scene.polygons[index];
+    let p = prepare::<F>(&polygon.vertices, polygon.value);
+    let [a, b, c, d] = p.plane;
+    let half = F::from(0.5).unwrap_or_else(F::nan);
+    let y = F::from(row).unwrap_or_else(F::nan) + half;
+    let mut crossings: Vec<F> = if incremental {
+        Edge::table(&p.points, half).iter_mut().filter_map(|e| e.at(i64::from(row))).collect()
+    } else {
+        p.points
+            .iter()
+            .enumerate()
+            .filter_map(|(i, v)| {
+                let w = p.points[(i + 1) % p.points.len()];
+                (v[1] != w[1] && y >= v[1].min(w[1]) && y < v[1].max(w[1]))
+                    .then(|| v[0] + (w[0] - v[0]) * (y - v[1]) / (w[1] - v[1]))
+            })
+            .collect()
+    };
+    crossings.sort_by(|l, r| l.partial_cmp(r).unwrap_or(std::cmp::Ordering::Equal));
+    let mut pixels = Vec::new();
+    for pair in crossings.chunks_exact(2) {
+        let first = (pair[0] - half).ceil().max(F::zero()).to_i64();
+        let last = (pair[1] - half).floor().min(F::from(scene.width - 1).unwrap_or_else(F::nan)).to_i64();
+        let (Some(first), Some(last)) = (first, last) else { continue };
+        let mut z = -(a * (F::from(first).unwrap_or_else(F::nan) + half) + b * y + d) / c;
+        for x in first..=last {
+            if !incremental {
+                z = -(a * (F::from(x).unwrap_or_else(F::nan) + half) + b * y + d) / c;
+            }
+            pixels.push((x as u32, z.to_f64().unwrap_or(f64::NAN)));
+            if incremental {
+                z = z + (-a / c);
+            }
+        }
+    }
+    FloatScanline { crossings: crossings.iter().map(|v| v.to_f64().unwrap_or(f64::NAN)).collect(), pixels }
 }
 
 /// An edge for the incremental modes: x stepped by Δx per scanline (seed 000).

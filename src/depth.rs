@@ -206,6 +206,58 @@ pub struct DepthStepper {
     step_remainder: i128,
 }
 
+/// A polygon's plane prepared for stepping: the step per pixel split once
+/// into whole part and remainder, and the depth numerator at any centre by
+/// multiplication only.
+#[derive(Debug, Clone, Copy)]
+pub struct DepthPlane {
+    /// −a, b and the constant of `N = c·Z₁ − a(X − X₁) − b(Y − Y₁)`, signs folded so the denominator is positive.
+    minus_a: i128,
+    minus_b: i128,
+    constant: i128,
+    denominator: i128,
+    half_unit: i128,
+    step_whole: i128,
+    step_remainder: i128,
+}
+
+impl DepthPlane {
+    /// Prepares a polygon whose Newell `c` is non-zero.
+    pub fn new(geometry: &Geometry) -> DepthPlane {
+        let [a, b, c] = geometry.normal;
+        debug_assert!(c != 0, "depth of an edge-on polygon: please report this bug");
+        let [x1, y1, z1] = geometry.points[0];
+        let sign = if c < 0 { -1 } else { 1 };
+        let denominator = c * geometry.scale() * sign;
+        let (minus_a, minus_b) = (-a * sign, -b * sign);
+        let constant = (c * z1 + a * x1 + b * y1) * sign;
+        let (step_whole, step_remainder) = floor_div(minus_a * 2 * geometry.denominator, denominator);
+        DepthPlane {
+            minus_a,
+            minus_b,
+            constant,
+            denominator,
+            half_unit: geometry.denominator,
+            step_whole,
+            step_remainder,
+        }
+    }
+
+    /// A stepper at the centre of pixel `column` on the scanline at scaled height `scan_y`;
+    /// identical to [`DepthStepper::start`].
+    #[inline]
+    pub fn start(&self, column: i128, scan_y: i128) -> DepthStepper {
+        let centre_x = (2 * column + 1) * self.half_unit;
+        let numerator = self.constant + self.minus_a * centre_x + self.minus_b * scan_y;
+        let (whole, remainder) = floor_div(numerator, self.denominator);
+        DepthStepper {
+            depth: Depth { whole, remainder, denominator: self.denominator },
+            step_whole: self.step_whole,
+            step_remainder: self.step_remainder,
+        }
+    }
+}
+
 impl DepthStepper {
     /// Starts at the centre of pixel `column` on the scanline at scaled height
     /// `scan_y`, for a polygon whose Newell `c` is non-zero.
@@ -228,6 +280,11 @@ impl DepthStepper {
         DepthStepper { depth, step_whole, step_remainder }
     }
 
+    /// The state as `(whole, remainder, denominator, step whole, step remainder)`.
+    pub fn parts(&self) -> (i128, i128, i128, i128, i128) {
+        (self.depth.whole, self.depth.remainder, self.depth.denominator, self.step_whole, self.step_remainder)
+    }
+
     /// The depth at the current pixel centre.
     pub fn current(&self) -> Depth {
         self.depth
@@ -246,16 +303,22 @@ impl DepthStepper {
 }
 
 /// The exact depth of a polygon's plane at any point given in polygon units
-/// (for reports: span ends, explanations). `None` when the plane has no z term.
+/// (for reports: span ends, explanations). `None` when the plane has no z
+/// term, or when the exact value does not fit `i128` (possible for a point
+/// that is not a pixel centre, such as an edge crossing, with coordinates
+/// near the exact range's limit: reports then say so instead of a number).
 pub fn depth_at(geometry: &Geometry, x: Q, y: Q) -> Option<Q> {
+    use num_traits::{CheckedAdd, CheckedDiv, CheckedMul, CheckedSub};
     let [a, b, c] = geometry.normal;
     if c == 0 {
         return None;
     }
     let scale = Q::from_integer(geometry.scale());
     let [x1, y1, z1] = geometry.points[0].map(Q::from_integer);
-    let z = z1 - (Q::from_integer(a) * (x * scale - x1) + Q::from_integer(b) * (y * scale - y1)) / Q::from_integer(c);
-    Some(z / scale)
+    let along_x = Q::from_integer(a).checked_mul(&x.checked_mul(&scale)?.checked_sub(&x1)?)?;
+    let along_y = Q::from_integer(b).checked_mul(&y.checked_mul(&scale)?.checked_sub(&y1)?)?;
+    let z = z1.checked_sub(&along_x.checked_add(&along_y)?.checked_div(&Q::from_integer(c))?)?;
+    z.checked_div(&scale)
 }
 
 #[cfg(test)]
@@ -318,7 +381,14 @@ mod tests {
         for row in 0..32i128 {
             let scan_y = (2 * row + 1) * geometry.denominator;
             let mut stepper = DepthStepper::start(&geometry, 0, scan_y);
+            let plane = DepthPlane::new(&geometry);
             for column in 0..32i128 {
+                assert_eq!(plane.start(column, scan_y).current(), {
+                    let mut fresh = DepthStepper::start(&geometry, column, scan_y);
+                    let depth = fresh.current();
+                    fresh.advance();
+                    depth
+                });
                 let expected = depth_at(&geometry, Q::new(2 * column + 1, 2), Q::new(2 * row + 1, 2)).unwrap();
                 assert_eq!(stepper.current().value(), expected, "depth at (x={column}, y={row})");
                 stepper.advance();

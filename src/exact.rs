@@ -153,8 +153,8 @@ pub fn floor_div(n: i128, d: i128) -> (i128, i128) {
     debug_assert!(d > 0);
     // 128-bit division is a slow library call; most operands fit 64 bits.
     if let (Ok(n64), Ok(d64)) = (i64::try_from(n), i64::try_from(d)) {
-        let (q, r) = n64.div_mod_floor(&d64);
-        return (i128::from(q), i128::from(r));
+        // d > 0, so Euclidean division is floor division.
+        return (i128::from(n64.div_euclid(d64)), i128::from(n64.rem_euclid(d64)));
     }
     n.div_mod_floor(&d)
 }
@@ -163,7 +163,7 @@ pub fn floor_div(n: i128, d: i128) -> (i128, i128) {
 pub fn ceil_div(n: i128, d: i128) -> i128 {
     debug_assert!(d > 0);
     if let (Ok(n64), Ok(d64)) = (i64::try_from(n), i64::try_from(d)) {
-        return i128::from(Integer::div_ceil(&n64, &d64));
+        return -i128::from((-n64).div_euclid(d64));
     }
     Integer::div_ceil(&n, &d)
 }

@@ -78,7 +78,9 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
         Some(perspective) => format!(
             "{} (projected z'; eye-space w = {})",
             depth_text(scene, event.depth.value()),
-            depth_text(scene, perspective.eye_value(event.depth.value()))
+            perspective
+                .eye_value(event.depth.value())
+                .map_or_else(|| "(beyond 128-bit exact arithmetic)".to_string(), |w| depth_text(scene, w))
         ),
         None => depth_text(scene, event.compared.value()),
     };

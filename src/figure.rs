@@ -201,13 +201,19 @@ fn depth_grey(value: Stored, scene: &Scene, (low, high): (Q, Q)) -> String {
         }
         Stored::Exact(q) => (q, low, high),
     };
-    let span = if high > low { high - low } else { Q::from_integer(1) };
-    let nearness = match scene.depth_test {
-        crate::depth::DepthTest::Greater => (value - low) / span,
-        crate::depth::DepthTest::Less => (high - value) / span,
+    use num_traits::{CheckedDiv, CheckedMul, CheckedSub};
+    let span = if high > low { high.checked_sub(&low) } else { Some(Q::from_integer(1)) };
+    let offset = match scene.depth_test {
+        crate::depth::DepthTest::Greater => value.checked_sub(&low),
+        crate::depth::DepthTest::Less => high.checked_sub(&value),
     };
-    // 230 (far) … 60 (near), in whole steps.
-    let level = 230 - (nearness * 170).floor().to_integer().clamp(0, 170) as u8;
+    // 230 (far) … 60 (near), in whole steps; a middle grey where the shade does not fit i128.
+    let shade = offset
+        .zip(span)
+        .and_then(|(o, s)| o.checked_div(&s))
+        .and_then(|n| n.checked_mul(&Q::from_integer(170)))
+        .map_or(85, |v| v.floor().to_integer().clamp(0, 170));
+    let level = 230 - shade as u8;
     format!("#{level:02x}{level:02x}{level:02x}")
 }
 

@@ -107,9 +107,10 @@ impl Perspective {
         Depth::from_fraction(p * n, p * den + q * n)
     }
 
-    /// The eye-space depth of an exact projected value (for reports).
-    pub fn eye_value(&self, projected: Q) -> Q {
-        self.distance * projected / (self.distance + projected)
+    /// The eye-space depth of an exact projected value (for reports); `None`
+    /// when it does not fit `i128`.
+    pub fn eye_value(&self, projected: Q) -> Option<Q> {
+        self.distance.checked_mul(&projected)?.checked_div(&self.distance.checked_add(&projected)?)
     }
 }
 
@@ -147,7 +148,7 @@ mod tests {
         let v = p.project([q(26), q(6), q(20)], 32, 32).unwrap();
         // scale d/(d − z) = 40/20 = 2: x' = 16 + 10·2 = 36, y' = 16 − 10·2 = −4, z' = 40.
         assert_eq!(v, [q(36), q(-4), q(40)]);
-        assert_eq!(p.eye_value(v[2]), q(20));
+        assert_eq!(p.eye_value(v[2]), Some(q(20)));
         assert_eq!(p.eye_depth(Depth::from_fraction(40, 1)).value(), q(20));
     }
 }

@@ -3,13 +3,13 @@
 //! with only the stages the scene asks for.
 
 use crate::buffer::Buffers;
-use crate::depth::{Depth, DepthStepper, DepthTest, Stored};
+use crate::depth::{Depth, DepthPlane, DepthStepper, DepthTest, Stored};
 use crate::exact::{Q, fraction};
 use crate::plane::Geometry;
 use crate::rules::{DepthStore, RowRule, Rules};
 use crate::scan::{self, Crossing, Span};
 use crate::scene::{Polygon, Scene, Winding};
-use crate::trace::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent};
+use crate::trace::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};
 
 /// Counts of a run so far.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -26,6 +26,7 @@ pub struct Stats {
 /// rasterizer allocates nothing per row.
 #[derive(Debug, Clone, Default)]
 pub struct Scratch {
+    edges: scan::EdgeTable,
     crossings: Vec<Crossing>,
     spans: Vec<Span>,
 }
@@ -36,6 +37,16 @@ pub trait RasterSink {
     fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]);
     /// A covered pixel centre and the exact depth of the polygon's plane there.
     fn pixel(&mut self, x: u32, y: u32, depth: Depth);
+
+    /// The covered centres `first ..= last` of `row`, left to right, with the
+    /// depth stepped from the first; by default one [`RasterSink::pixel`] each.
+    #[inline]
+    fn span(&mut self, row: u32, first: u32, last: u32, mut stepper: DepthStepper) {
+        for x in first..=last {
+            self.pixel(x, row, stepper.current());
+            stepper.advance();
+        }
+    }
 }
 
 /// A rectangle of pixels, inclusive: the raster, or one segment of it.
@@ -69,9 +80,11 @@ pub fn rasterize(
     let Some(rows) = scan::rows(&geometry.points, geometry.denominator, rect.rows, rules.rows) else {
         return;
     };
+    scratch.edges.prepare(&geometry.points, geometry.denominator, &rows, rules.rows);
+    let plane = DepthPlane::new(geometry);
     for row in rows {
         let scan_y = scan::scanline_y(row, geometry.denominator);
-        scan::crossings(&geometry.points, scan_y, rules.rows, &mut scratch.crossings);
+        scratch.edges.crossings(row, &mut scratch.crossings);
         scan::spans(
             &scratch.crossings,
             geometry.denominator,
@@ -82,11 +95,7 @@ pub fn rasterize(
         sink.scanline(row, &scratch.crossings, &scratch.spans);
         for span in &scratch.spans {
             let Some((first, last)) = span.columns else { continue };
-            let mut stepper = DepthStepper::start(geometry, i128::from(first), scan_y);
-            for x in first..=last {
-                sink.pixel(x, row, stepper.current());
-                stepper.advance();
-            }
+            sink.span(row, first, last, plane.start(i128::from(first), scan_y));
         }
     }
 }
@@ -248,6 +257,11 @@ impl<'s> Simulation<'s> {
         &self.buffers
     }
 
+    /// The buffers, giving up the simulation.
+    pub fn into_buffers(self) -> Buffers {
+        self.buffers
+    }
+
     /// The counts so far.
     pub fn stats(&self) -> Stats {
         self.stats
@@ -287,6 +301,69 @@ impl<'s> Simulation<'s> {
         while self.draw_next(observer).is_some() {}
     }
 
+    /// Draws every remaining polygon tile by tile (`tile`×`tile` pixels), so
+    /// that the cells being written stay in the processor's cache: polygons
+    /// are binned by the tiles their bounding boxes touch, and each tile draws
+    /// its polygons in scene order, so every pixel sees the same sequence of
+    /// depth tests as [`Simulation::finish`] and the result is identical
+    /// whatever the tile size. Used for unobserved runs of the plain loop; any
+    /// other scene is drawn by [`Simulation::finish`].
+    pub fn finish_tiled(&mut self, tile: u32) {
+        let scene = self.scene;
+        let plain = Plain::new(scene);
+        if tile == 0
+            || scene.has_pixel_effects()
+            || self.stage_set != StageSet::AsAsked
+            || plain.plain_levels().is_none()
+            || self.buffers.level_cells_mut().is_none()
+        {
+            self.finish(&mut Unobserved);
+            return;
+        }
+        let (tiles_x, tiles_y) = (scene.width.div_ceil(tile), scene.height.div_ceil(tile));
+        let mut bins: Vec<Vec<u32>> = vec![Vec::new(); tiles_x as usize * tiles_y as usize];
+        for index in self.next..scene.polygons.len() {
+            self.stats.polygons += 1;
+            if fate(scene, index) != Fate::Drawn {
+                continue;
+            }
+            let Some(rect) = pixel_bounds(&scene.polygons[index].geometry, scene.width, scene.height) else { continue };
+            for ty in rect.rows.0 / tile..=rect.rows.1 / tile {
+                for tx in rect.columns.0 / tile..=rect.columns.1 / tile {
+                    bins[(ty * tiles_x + tx) as usize].push(index as u32);
+                }
+            }
+        }
+        self.next = scene.polygons.len();
+        let (test, depth_max) = plain.plain_levels().expect("checked above");
+        let width = scene.width as usize;
+        let Simulation { buffers, stats, scratch, .. } = self;
+        let (frame, depth) = buffers.level_cells_mut().expect("checked above");
+        for ty in 0..tiles_y {
+            for tx in 0..tiles_x {
+                let rect = PixelRect {
+                    columns: (tx * tile, ((tx + 1) * tile).min(scene.width) - 1),
+                    rows: (ty * tile, ((ty + 1) * tile).min(scene.height) - 1),
+                };
+                for &index in &bins[(ty * tiles_x + tx) as usize] {
+                    let polygon = &scene.polygons[index as usize];
+                    let mut sink = LevelSink {
+                        index: index as usize,
+                        polygon,
+                        test,
+                        depth_max,
+                        width,
+                        frame: &mut *frame,
+                        depth: &mut *depth,
+                        stats: &mut *stats,
+                        observer: &mut Unobserved,
+                    };
+                    rasterize(&polygon.geometry, scene.rules, rect, scratch, &mut sink);
+                }
+            }
+        }
+    }
+
     fn draw<S: PixelStages, O: Observer>(&mut self, index: usize, stages: &S, observer: &mut O) {
         let scene = self.scene;
         let polygon = &scene.polygons[index];
@@ -320,7 +397,60 @@ struct LevelSink<'a, O> {
     observer: &'a mut O,
 }
 
+impl<O: Observer> LevelSink<'_, O> {
+    /// The span in 64-bit integers when nobody watches the pixels and every
+    /// value of the span fits: the same decisions as [`LevelSink::pixel`].
+    /// Returns `false` (having done nothing) when it does not apply.
+    #[inline]
+    fn span_fast(&mut self, row: u32, first: u32, last: u32, stepper: &DepthStepper) -> bool {
+        const LIMIT: i128 = 1 << 61;
+        let (whole, remainder, denominator, step_whole, step_remainder) = stepper.parts();
+        let length = i128::from(last - first) + 1;
+        if O::OBSERVES_PIXELS || denominator >= LIMIT || whole.abs() + length * (step_whole.abs() + 1) >= LIMIT {
+            return false;
+        }
+        let (mut whole, mut remainder) = (whole as i64, remainder as i64);
+        let (denominator, step_whole, step_remainder) = (denominator as i64, step_whole as i64, step_remainder as i64);
+        let greater = self.test == DepthTest::Greater;
+        let max = i64::from(self.depth_max);
+        let start = row as usize * self.width;
+        let (mut tested, mut written) = (0u64, 0u64);
+        for cell in start + first as usize..=start + last as usize {
+            let stored = i64::from(self.depth[cell]);
+            // z = whole + remainder/denominator with 0 ≤ remainder < denominator.
+            let passes = if greater { whole > stored || (whole == stored && remainder > 0) } else { whole < stored };
+            tested += 1;
+            if passes {
+                written += 1;
+                let rounded = whole + i64::from(2 * remainder >= denominator);
+                self.depth[cell] = rounded.clamp(0, max) as u32;
+                self.frame[cell] = self.polygon.value;
+            }
+            whole += step_whole;
+            remainder += step_remainder;
+            if remainder >= denominator {
+                remainder -= denominator;
+                whole += 1;
+            }
+        }
+        self.stats.tested += tested;
+        self.stats.written += written;
+        true
+    }
+}
+
 impl<O: Observer> RasterSink for LevelSink<'_, O> {
+    #[inline]
+    fn span(&mut self, row: u32, first: u32, last: u32, mut stepper: DepthStepper) {
+        if self.span_fast(row, first, last, &stepper) {
+            return;
+        }
+        for x in first..=last {
+            self.pixel(x, row, stepper.current());
+            stepper.advance();
+        }
+    }
+
     fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
         let (index, polygon) = (self.index, self.polygon);
         self.observer.scanline(&ScanlineEvent { index, polygon, row, crossings, spans });
@@ -395,6 +525,24 @@ impl<S: PixelStages, O: Observer> RasterSink for DrawSink<'_, S, O> {
             frame_after: decision.frame,
         });
     }
+}
+
+/// The pixels a polygon's bounding box can cover (centres or cells), clipped
+/// to the raster; `None` when it lies outside.
+fn pixel_bounds(geometry: &Geometry, width: u32, height: u32) -> Option<PixelRect> {
+    let scale = geometry.scale();
+    let (mut x0, mut x1, mut y0, mut y1) = (i128::MAX, i128::MIN, i128::MAX, i128::MIN);
+    for p in &geometry.points {
+        (x0, x1, y0, y1) = (x0.min(p[0]), x1.max(p[0]), y0.min(p[1]), y1.max(p[1]));
+    }
+    // Cell ⌊x⌋ in pixel units is ⌊X / 2D⌋; widen by one cell each way for safety.
+    let cell = |v: i128| crate::exact::floor_div(v, scale).0;
+    let clamp = |v: i128, max: u32| v.clamp(0, i128::from(max) - 1) as u32;
+    let (c0, c1, r0, r1) = (cell(x0) - 1, cell(x1) + 1, cell(y0) - 1, cell(y1) + 1);
+    if c1 < 0 || r1 < 0 || c0 >= i128::from(width) || r0 >= i128::from(height) {
+        return None;
+    }
+    Some(PixelRect { columns: (clamp(c0, width), clamp(c1, width)), rows: (clamp(r0, height), clamp(r1, height)) })
 }
 
 /// Whether polygon `index` is drawn, and if not, why.

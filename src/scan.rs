@@ -97,6 +97,82 @@ pub fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Ve
     out.sort_unstable_by(Crossing::cmp_position);
 }
 
+/// One edge walked down the scanlines: its crossing numerator is stepped by a
+/// constant per row (Bresenham-style), so no multiplication or division is
+/// needed per row, and the result equals [`crossings`]' formula exactly.
+#[derive(Debug, Clone, Copy)]
+struct WalkedEdge {
+    first_row: u32,
+    last_row: u32,
+    /// Crossing numerator at the next row to visit (over `denominator`).
+    numerator: i128,
+    /// Added per row: (x₂ − x₁)·2D.
+    step: i128,
+    denominator: i128,
+}
+
+/// The edges of one polygon, walked row by row in increasing order.
+#[derive(Debug, Clone, Default)]
+pub struct EdgeTable {
+    edges: Vec<WalkedEdge>,
+}
+
+impl EdgeTable {
+    /// Prepares the edges that cross any row of `rows` under `rule`.
+    pub fn prepare(&mut self, points: &[[i128; 3]], denominator: i128, rows: &RangeInclusive<u32>, rule: RowRule) {
+        self.edges.clear();
+        let count = points.len();
+        for i in 0..count {
+            let (p, q) = (points[i], points[(i + 1) % count]);
+            if p[1] == q[1] {
+                continue;
+            }
+            let (low, high) = if p[1] < q[1] { (p, q) } else { (q, p) };
+            // Rows whose scanline (2r + 1)·D lies in [y_low, y_high) (half-open) or [y_low, y_high] (closed).
+            let first = ceil_div(low[1] - denominator, 2 * denominator).max(i128::from(*rows.start()));
+            let last = match rule {
+                RowRule::HalfOpen => ceil_div(high[1] - denominator, 2 * denominator) - 1,
+                RowRule::Closed => floor_div(high[1] - denominator, 2 * denominator).0,
+            }
+            .min(i128::from(*rows.end()));
+            if first > last {
+                continue;
+            }
+            let den = high[1] - low[1];
+            let scan_y = (2 * first + 1) * denominator;
+            // x = x_low + (x_high − x_low)(y − y_low)/(y_high − y_low), as one fraction.
+            let numerator = low[0] * den + (high[0] - low[0]) * (scan_y - low[1]);
+            let step = (high[0] - low[0]) * 2 * denominator;
+            self.edges.push(WalkedEdge {
+                first_row: first as u32,
+                last_row: last as u32,
+                numerator,
+                step,
+                denominator: den,
+            });
+        }
+    }
+
+    /// The crossings on `row`, sorted; rows must be visited in increasing order.
+    pub fn crossings(&mut self, row: u32, out: &mut Vec<Crossing>) {
+        out.clear();
+        for edge in &mut self.edges {
+            if row < edge.first_row || row > edge.last_row {
+                continue;
+            }
+            out.push(Crossing { numerator: edge.numerator, denominator: edge.denominator });
+            edge.numerator += edge.step;
+        }
+        if out.len() == 2 {
+            if out[0].cmp_position(&out[1]) == Ordering::Greater {
+                out.swap(0, 1);
+            }
+        } else {
+            out.sort_unstable_by(Crossing::cmp_position);
+        }
+    }
+}
+
 /// The columns a span covers, clipped to `limit` (first and last column, inclusive): with
 /// [`ColumnRule::CentreInside`] those whose centres `x + 1/2` lie within
 /// `[left, right]`, boundary included ("the pixel whose centre lies inside or
@@ -144,7 +220,12 @@ pub fn spans(
         columns: columns(left, right, denominator, limit, rules.1),
     };
     match rules.0 {
-        RowRule::HalfOpen => out.extend(crossings.chunks_exact(2).map(|pair| span(pair[0], pair[1]))),
+        RowRule::HalfOpen => {
+            let mut pairs = crossings.chunks_exact(2);
+            for pair in &mut pairs {
+                out.push(span(pair[0], pair[1]));
+            }
+        }
         RowRule::Closed => {
             if let (Some(first), Some(last)) = (crossings.first(), crossings.last()) {
                 out.push(span(*first, *last));
@@ -225,6 +306,25 @@ mod tests {
         assert_eq!(columns(left, right, 1, (0, 31), ColumnRule::CentreInside), Some((0, 31)));
         let beyond = Crossing { numerator: 100, denominator: 1 };
         assert_eq!(columns(beyond, right, 1, (0, 31), ColumnRule::CentreInside), None);
+    }
+
+    #[test]
+    fn walked_edges_give_the_formulas_crossings() {
+        // A concave, self-crossing polygon with fractional vertices (scaled by 2D = 6).
+        let points: Vec<[i128; 3]> =
+            [[3, 1], [40, 7], [22, 25], [31, 45], [-4, 30], [9, 13]].iter().map(|p| [p[0], p[1], 0]).collect();
+        for rule in [RowRule::HalfOpen, RowRule::Closed] {
+            let rows = rows(&points, 3, (0, 31), rule).unwrap();
+            let mut table = EdgeTable::default();
+            table.prepare(&points, 3, &rows, rule);
+            let (mut walked, mut direct) = (Vec::new(), Vec::new());
+            for row in rows {
+                table.crossings(row, &mut walked);
+                crossings(&points, scanline_y(row, 3), rule, &mut direct);
+                let as_q = |v: &[Crossing]| v.iter().map(|c| c.x(6)).collect::<Vec<_>>();
+                assert_eq!(as_q(&walked), as_q(&direct), "row {row}, {rule:?}");
+            }
+        }
     }
 
     #[test]

@@ -532,6 +532,12 @@ impl SceneFile {
                         ),
                     ));
                 }
+                if rules.store == DepthStore::Exact {
+                    return Err(setting(
+                        "effects",
+                        "antialias averages a quantized z-buffer; it does not combine with an exact store".into(),
+                    ));
+                }
                 Some(Antialias { samples: a.samples, depth_at_samples: a.depth != Some(AntialiasDepth::Pixel) })
             }
         };

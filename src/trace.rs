@@ -12,6 +12,10 @@ use crate::scene::{Polygon, Winding};
 
 /// Receives the rasterizer's events. Every method defaults to doing nothing.
 pub trait Observer {
+    /// Whether this observer looks at pixel events at all; the rasterizer
+    /// skips building them (and may take a faster inner loop) when not.
+    const OBSERVES_PIXELS: bool = true;
+
     /// A polygon is about to be drawn (or skipped, see [`Fate`]).
     fn polygon(&mut self, _event: &PolygonEvent<'_>) {}
     /// A scanline of the current polygon has its crossings and spans; sent
@@ -25,7 +29,9 @@ pub trait Observer {
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Unobserved;
 
-impl Observer for Unobserved {}
+impl Observer for Unobserved {
+    const OBSERVES_PIXELS: bool = false;
+}
 
 /// What happens to a polygon as a whole.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -113,10 +119,10 @@ pub struct SpanRecord {
     pub left: Q,
     /// Right crossing `x_b`.
     pub right: Q,
-    /// The plane's depth at `(x_a, y)` (seed 000's `z_a`).
-    pub left_depth: Q,
-    /// The plane's depth at `(x_b, y)` (`z_b`).
-    pub right_depth: Q,
+    /// The plane's depth at `(x_a, y)` (seed 000's `z_a`); `None` when it does not fit `i128`.
+    pub left_depth: Option<Q>,
+    /// The plane's depth at `(x_b, y)` (`z_b`); `None` when it does not fit `i128`.
+    pub right_depth: Option<Q>,
     /// The covered columns, if any.
     pub columns: Option<(u32, u32)>,
 }
@@ -142,8 +148,8 @@ impl ScanlineRecord {
         let geometry = &event.polygon.geometry;
         let scale = geometry.scale();
         let y = Q::new(2 * i128::from(event.row) + 1, 2);
-        // Scanline events are only sent for drawn polygons, whose c ≠ 0.
-        let depth = |x: Q| depth_at(geometry, x, y).expect("a drawn polygon has a z term");
+        // Scanline events are only sent for drawn polygons, whose c ≠ 0; None only when too large.
+        let depth = |x: Q| depth_at(geometry, x, y);
         ScanlineRecord {
             index: event.index,
             row: event.row,

@@ -40,6 +40,9 @@ pub struct RunArgs {
     /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (seed 000).
     #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
     segments: Option<zsim::variants::Segments>,
+    /// With --format none: draw tile by tile, N×N pixels (0: polygon by polygon, with a progress bar on long runs).
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    tile: u32,
     /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32 or fixed:K.
     #[arg(long, default_value = "exact", value_parser = Arith::parse)]
     arith: Arith,
@@ -140,13 +143,18 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             emit(out, &format!("{text}\n"))?;
         }
         Format::None => {
-            let progress = progress_bar(scene.polygons.len());
             let rasterizing = Instant::now();
-            while simulation.draw_next(&mut Unobserved).is_some() {
-                progress.inc(1);
+            if args.tile > 0 {
+                // Tiles keep the cells in cache; the result is the same as polygon by polygon.
+                simulation.finish_tiled(args.tile);
+            } else {
+                let progress = progress_bar(scene.polygons.len());
+                while simulation.draw_next(&mut Unobserved).is_some() {
+                    progress.inc(1);
+                }
+                progress.finish_and_clear();
             }
             let raster_time = rasterizing.elapsed();
-            progress.finish_and_clear();
             emit(out, &format!("{}\n", summary(&scene, &path, simulation.stats(), (read_time, raster_time))))?;
         }
     }

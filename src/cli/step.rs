@@ -31,6 +31,9 @@ pub struct StepArgs {
     /// Before each pixel's result is shown, ask what the z-buffer will hold.
     #[arg(long, conflicts_with = "polygon")]
     quiz: bool,
+    /// Also show what an inexact arithmetic computes on each scanline: f64, f64-incremental, f32-incremental or f32.
+    #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
+    arith: zsim::arith::Arith,
 }
 
 /// One polygon's recorded scanlines, with the buffers before it.
@@ -45,11 +48,12 @@ struct Tracer<'s> {
     scene: &'s Scene,
     simulation: Simulation<'s>,
     traces: Vec<PolygonTrace>,
+    arith: zsim::arith::Arith,
 }
 
 impl<'s> Tracer<'s> {
-    fn new(scene: &'s Scene) -> Tracer<'s> {
-        Tracer { scene, simulation: Simulation::new(scene), traces: Vec::new() }
+    fn new(scene: &'s Scene, arith: zsim::arith::Arith) -> Tracer<'s> {
+        Tracer { scene, simulation: Simulation::new(scene), traces: Vec::new(), arith }
     }
 
     /// The trace of polygon `index`, drawing the polygons up to it if needed.
@@ -126,8 +130,9 @@ impl<'s> Tracer<'s> {
 
 pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(&args.scene)?;
+    zsim::arith::check_supported(&scene, args.arith)?;
     let color = super::use_color();
-    let mut tracer = Tracer::new(&scene);
+    let mut tracer = Tracer::new(&scene, args.arith);
     if let (Some(spec), Some(row)) = (&args.polygon, args.scanline) {
         let polygon = scene.find_polygon(spec)?;
         let trace = tracer.trace(polygon);
@@ -359,13 +364,43 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
             "span {}: x_a = {}, z_a = {}; x_b = {}, z_b = {}; {columns}\n",
             n + 1,
             exact_and_decimal(span.left),
-            depth_text(scene, span.left_depth),
+            span.left_depth.map_or_else(|| "(beyond 128-bit exact arithmetic)".to_string(), |z| depth_text(scene, z)),
             exact_and_decimal(span.right),
-            depth_text(scene, span.right_depth),
+            span.right_depth.map_or_else(|| "(beyond 128-bit exact arithmetic)".to_string(), |z| depth_text(scene, z)),
         ));
     }
     if !record.pixels.is_empty() {
         text.push_str(&format!("{}\n", pixel_table(scene, &record.pixels, color)));
+    }
+    if let Some(float) = zsim::arith::float_scanline(scene, p, record.row, tracer.arith) {
+        let crossings: Vec<String> = float.crossings.iter().map(|x| format!("{x:.9}")).collect();
+        let pixels: Vec<String> = float
+            .pixels
+            .iter()
+            .map(|(x, z)| {
+                let exact = record.pixels.iter().find(|e| e.x == *x).map(|e| e.depth.value());
+                let note = match exact {
+                    Some(e) => format!(" (exact {})", zsim::exact::decimal(e, 9)),
+                    None => " (exact arithmetic does not cover it)".to_string(),
+                };
+                format!("x = {x}: z = {z:.9}{note}")
+            })
+            .collect();
+        let missed: Vec<String> = record
+            .pixels
+            .iter()
+            .filter(|e| !float.pixels.iter().any(|(x, _)| *x == e.x))
+            .map(|e| e.x.to_string())
+            .collect();
+        text.push_str(&format!(
+            "in {} arithmetic: crossings {}\n  {}\n",
+            tracer.arith,
+            if crossings.is_empty() { "none".to_string() } else { crossings.join(", ") },
+            if pixels.is_empty() { "no pixel covered".to_string() } else { pixels.join("\n  ") }
+        ));
+        if !missed.is_empty() {
+            text.push_str(&format!("  it misses the exact centres x = {}\n", missed.join(", ")));
+        }
     }
     let buffers = tracer.buffers_after(p, k);
     let low = record.row.saturating_sub(2);
@@ -391,7 +426,10 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
     for (i, pixel) in pixels.iter().enumerate() {
         let z = pixel.depth.value();
         let step = match i.checked_sub(1).map(|j| pixels[j]) {
-            Some(previous) if previous.x + 1 == pixel.x => fraction(z - previous.depth.value()),
+            Some(previous) if previous.x + 1 == pixel.x => {
+                use num_traits::CheckedSub;
+                z.checked_sub(&previous.depth.value()).map_or_else(|| "(beyond i128)".to_string(), fraction)
+            }
             _ => "start".to_string(),
         };
         let test = match pixel.outcome {

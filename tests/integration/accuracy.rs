@@ -115,3 +115,40 @@ fn accuracy_prints_both_tables_and_the_json_shape() {
         .collect();
     snapshot!("accuracy_32_mismatches", stable);
 }
+
+#[test]
+fn step_and_explain_show_what_an_inexact_mode_computes() {
+    let step =
+        zsim(&["step", "examples/rogers.json", "--polygon", "2", "--scanline", "14", "--arith", "f32-incremental"]);
+    assert_eq!(step.code, 0, "{}", step.stderr);
+    assert!(
+        step.stdout.contains("in f32-incremental arithmetic: crossings 16.500000000, 28.499998093"),
+        "{}",
+        step.stdout
+    );
+    assert!(step.stdout.contains("it misses the exact centres x = 28"), "{}", step.stdout);
+    let explain = zsim(&["explain", "examples/rogers.json", "--pixel", "28,14", "--arith", "f32-incremental"]);
+    assert!(
+        explain
+            .stdout
+            .ends_with("in f32-incremental arithmetic: framebuffer 0, z-buffer 0 (not what exact arithmetic gives)\n"),
+        "{}",
+        explain.stdout
+    );
+    let check = zsim(&[
+        "check",
+        "examples/rogers.json",
+        "--depth",
+        "tests/fixtures/rogers/depth_after_triangle.txt",
+        "--arith",
+        "f32-incremental",
+    ]);
+    assert_eq!(check.code, 1);
+    assert!(
+        check.stdout.contains(
+            "| 28 | 14 | 5      | 0     | in f32-incremental arithmetic the cell holds 0; in exact arithmetic 5:"
+        ),
+        "{}",
+        check.stdout
+    );
+}

@@ -236,3 +236,20 @@ fn explain_shows_each_effect_at_a_pixel() {
     assert!(samples.stdout.ends_with("mean over the samples: framebuffer 5/2, z-buffer 7\n"), "{}", samples.stdout);
     snapshot!("explain_antialias_2_4", samples.stdout);
 }
+
+#[test]
+fn tiles_of_any_size_give_the_same_buffers() {
+    for (name, scene) in examples() {
+        let plain = final_buffers(&scene, StageSet::AsAsked);
+        for tile in [1, 3, 8, 64] {
+            let mut simulation = Simulation::new(&scene);
+            simulation.finish_tiled(tile);
+            assert_eq!(
+                (simulation.buffers().frame_rows(), simulation.buffers().depth_rows()),
+                plain,
+                "{name}, tile {tile}"
+            );
+            assert_eq!(simulation.stats().polygons, scene.polygons.len(), "{name}");
+        }
+    }
+}

@@ -211,3 +211,21 @@ fn coordinates_at_the_documented_limit_do_not_overflow() {
     // The plane is z = x: at the centre x + 1/2 the depth is stored rounded half up.
     assert_eq!(depth[3], vec![1, 2, 3, 4], "{depth:?}");
 }
+
+/// Regression (found by the fuzzer): the exact depth at a span's end, a crossing
+/// rather than a pixel centre, overflowed `i128` for coordinates near the limit and
+/// panicked while `step` recorded the scanline. It is now reported as too large.
+#[test]
+fn span_end_depth_beyond_i128_is_reported_not_a_panic() {
+    let scene = Scene::from_json(
+        r#"{"width": 16, "height": 16, "depth_bits": 21, "polygons": [{"value": 1, "vertices": [[5722406912, 168441290, -4290115062], [36, -8236231403, -8589934592], [-8589934592, -8589934592, -8589934592]]}]}"#,
+        Path::new("fuzz.json"),
+    )
+    .unwrap();
+    let mut recorder = zsim::trace::Recorder::default();
+    Simulation::new(&scene).finish(&mut recorder);
+    let ends: Vec<Option<zsim::exact::Q>> =
+        recorder.scanlines.iter().flat_map(|s| s.spans.iter().map(|span| span.left_depth)).collect();
+    assert_eq!(ends.len(), 16, "one span per row");
+    assert!(ends.iter().any(Option::is_none), "some span ends are beyond i128");
+}

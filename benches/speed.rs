@@ -1,0 +1,118 @@
+//! What accuracy costs in time, measured as ratios in one run
+//! (`cargo bench --bench speed`):
+//!
+//! - `arithmetic`: the accuracy set (256×256, triangles of 4 … 256 px, the hard
+//!   cases) in exact mode and in `f32-incremental`;
+//! - `small triangles`: a cache-resident scene of small triangles, for pixels per second;
+//! - `tracing`: the same run unobserved, with an observer that counts pixels,
+//!   and with the full recorder that `step` uses;
+//! - `large scene`: 4096×4096 with 100,000 random triangles, polygon by
+//!   polygon and in 64-pixel tiles.
+
+use std::path::Path;
+
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use zsim::accuracy::{self, Settings};
+use zsim::arith::{Arith, Prepared};
+use zsim::generate::RandomScene;
+use zsim::pipeline::Simulation;
+use zsim::scene::Scene;
+use zsim::trace::{Observer, PixelEvent, Recorder, Unobserved};
+
+fn random(count: usize, side: u32, max_size: u32, seed: u64) -> Scene {
+    let spec = RandomScene { count, seed, width: side, height: side, max_size, frame_bits: 8, depth_bits: 24 };
+    Scene::from_json(&spec.json(), Path::new("random.json")).expect("a valid random scene")
+}
+
+fn pixels(scene: &Scene) -> u64 {
+    let mut simulation = Simulation::new(scene);
+    simulation.finish(&mut Unobserved);
+    simulation.stats().tested
+}
+
+fn arithmetic(c: &mut Criterion) {
+    let scenes = accuracy::scenes(&Settings { seed: 1, width: 256, height: 256, scenes: 2 }).expect("the accuracy set");
+    let mut group = c.benchmark_group("arithmetic on the accuracy set");
+    group.sample_size(10);
+    for mode in [Arith::Exact, Arith::F32Incremental] {
+        let inputs: Vec<Prepared> = scenes.iter().map(|s| Prepared::new(s, mode).expect("supported")).collect();
+        group.bench_function(mode.to_string(), |b| b.iter(|| inputs.iter().map(|p| p.raster().1.tested).sum::<u64>()));
+    }
+    group.finish();
+}
+
+fn small_triangles(c: &mut Criterion) {
+    let scene = random(4000, 256, 12, 2);
+    let mut group = c.benchmark_group("small triangles, 256x256");
+    group.sample_size(20).throughput(Throughput::Elements(pixels(&scene)));
+    group.bench_function("exact", |b| {
+        b.iter(|| {
+            let mut simulation = Simulation::new(&scene);
+            simulation.finish(&mut Unobserved);
+            simulation.stats().written
+        })
+    });
+    group.finish();
+}
+
+/// Counts pixel events: the least an observer can do.
+#[derive(Default)]
+struct Counter(u64);
+
+impl Observer for Counter {
+    fn pixel(&mut self, _event: &PixelEvent) {
+        self.0 += 1;
+    }
+}
+
+fn tracing(c: &mut Criterion) {
+    let scene = random(2000, 256, 24, 3);
+    let mut group = c.benchmark_group("tracing, 2000 triangles on 256x256");
+    group.sample_size(20);
+    group.bench_function("unobserved", |b| {
+        b.iter(|| {
+            let mut simulation = Simulation::new(&scene);
+            simulation.finish(&mut Unobserved);
+            simulation.stats().written
+        })
+    });
+    group.bench_function("counting observer", |b| {
+        b.iter(|| {
+            let mut counter = Counter::default();
+            Simulation::new(&scene).finish(&mut counter);
+            counter.0
+        })
+    });
+    group.bench_function("recorder (step)", |b| {
+        b.iter(|| {
+            let mut recorder = Recorder::default();
+            Simulation::new(&scene).finish(&mut recorder);
+            recorder.scanlines.len()
+        })
+    });
+    group.finish();
+}
+
+fn large_scene(c: &mut Criterion) {
+    let scene = random(100_000, 4096, 30, 1);
+    let mut group = c.benchmark_group("4096x4096, 100000 triangles");
+    group.sample_size(10).throughput(Throughput::Elements(pixels(&scene)));
+    group.bench_function("polygon by polygon", |b| {
+        b.iter(|| {
+            let mut simulation = Simulation::new(&scene);
+            simulation.finish(&mut Unobserved);
+            simulation.stats().written
+        })
+    });
+    group.bench_function("tiles of 64", |b| {
+        b.iter(|| {
+            let mut simulation = Simulation::new(&scene);
+            simulation.finish_tiled(64);
+            simulation.stats().written
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, arithmetic, small_triangles, tracing, large_scene);
+criterion_main!(benches);
