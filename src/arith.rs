@@ -199,78 +199,102 @@ fn prepare<F: Float>(vertices: &[[Q; 3]], value: u32) -> FloatPolygon<F> {
     FloatPolygon { points, plane: [a, b, c, d], value }
 }
 
+/// One polygon's rows in `F`: crossings per scanline (evaluated, or stepped
+/// down each edge), paired into spans, and the depth at each covered centre
+/// (evaluated, or stepped by −a/c). Both the raster and `step --arith` use it.
+struct FloatWalker<'p, F> {
+    polygon: &'p FloatPolygon<F>,
+    edges: Vec<Edge<F>>,
+    incremental: bool,
+    half: F,
+    crossings: Vec<F>,
+}
+
+impl<'p, F: Float> FloatWalker<'p, F> {
+    fn new(polygon: &'p FloatPolygon<F>, incremental: bool) -> FloatWalker<'p, F> {
+        let half = F::from(0.5).unwrap_or_else(F::nan);
+        let edges = if incremental { Edge::table(&polygon.points, half) } else { Vec::new() };
+        FloatWalker { polygon, edges, incremental, half, crossings: Vec::new() }
+    }
+
+    /// The rows with `y_min ≤ row + 1/2 < y_max`, clipped to the raster.
+    fn rows(&self, height: u32) -> Option<(i64, i64)> {
+        let points = &self.polygon.points;
+        let y_min = points.iter().map(|v| v[1]).fold(F::infinity(), F::min);
+        let y_max = points.iter().map(|v| v[1]).fold(F::neg_infinity(), F::max);
+        let first = (y_min - self.half).ceil().max(F::zero()).to_i64()?;
+        let last = ((y_max - self.half).ceil() - F::one()).min(F::from(height - 1)?).to_i64()?;
+        Some((first, last))
+    }
+
+    /// Row `row` (rows in increasing order): sets `self.crossings` and calls
+    /// `pixel(x, z)` for each covered centre left to right.
+    fn row(&mut self, row: i64, width: u32, mut pixel: impl FnMut(i64, F)) {
+        let half = self.half;
+        let p = self.polygon;
+        let y = F::from(row).unwrap_or_else(F::nan) + half;
+        self.crossings.clear();
+        if self.incremental {
+            self.crossings.extend(self.edges.iter_mut().filter_map(|edge| edge.at(row)));
+        } else {
+            for (i, v) in p.points.iter().enumerate() {
+                let w = p.points[(i + 1) % p.points.len()];
+                if v[1] != w[1] && y >= v[1].min(w[1]) && y < v[1].max(w[1]) {
+                    self.crossings.push(v[0] + (w[0] - v[0]) * (y - v[1]) / (w[1] - v[1]));
+                }
+            }
+        }
+        self.crossings.sort_by(|l, r| l.partial_cmp(r).unwrap_or(std::cmp::Ordering::Equal));
+        let [a, b, c, d] = p.plane;
+        for pair in self.crossings.chunks_exact(2) {
+            let first = (pair[0] - half).ceil().max(F::zero());
+            let last = (pair[1] - half).floor().min(F::from(width - 1).unwrap_or_else(F::nan));
+            let (Some(first), Some(last)) = (first.to_i64(), last.to_i64()) else { continue };
+            // z = −(a·x + b·y + d)/c at the first centre; then z − a/c per pixel, or evaluated again.
+            let step = -a / c;
+            let mut xc = F::from(first).unwrap_or_else(F::nan) + half;
+            let mut z = -(a * xc + b * y + d) / c;
+            for x in first..=last {
+                if !self.incremental {
+                    z = -(a * xc + b * y + d) / c;
+                    xc = xc + F::one();
+                }
+                pixel(x, z);
+                if self.incremental {
+                    z = z + step;
+                }
+            }
+        }
+    }
+}
+
 /// The plain z-buffer in `F`, per-pixel (`incremental = false`) or with the
 /// seeds' incremental steps.
 fn raster_float<F: Float>(scene: &Scene, polygons: &[Option<FloatPolygon<F>>], incremental: bool) -> (Buffers, Stats) {
     let mut buffers = Buffers::new(scene.width, scene.height, scene.background, scene.clear_depth);
     let mut stats = Stats::default();
     let half = F::from(0.5).unwrap_or_else(F::nan);
-    let depth_max = scene.depth_max();
-    let max = F::from(depth_max).unwrap_or_else(F::max_value);
+    let max = F::from(scene.depth_max()).unwrap_or_else(F::max_value);
     let greater = scene.depth_test == crate::depth::DepthTest::Greater;
-    let mut crossings: Vec<F> = Vec::new();
-    let mut edges: Vec<Edge<F>> = Vec::new();
+    let width = scene.width as usize;
+    let (frame, depth) = buffers.level_cells_mut().expect("inexact modes run quantized z-buffers");
     for polygon in polygons {
         stats.polygons += 1;
         let Some(p) = polygon else { continue };
-        let [a, b, c, d] = p.plane;
-        let y_min = p.points.iter().map(|v| v[1]).fold(F::infinity(), F::min);
-        let y_max = p.points.iter().map(|v| v[1]).fold(F::neg_infinity(), F::max);
-        let first_row = (y_min - half).ceil().max(F::zero());
-        let last_row = ((y_max - half).ceil() - F::one()).min(F::from(scene.height - 1).unwrap_or_else(F::nan));
-        let (Some(first_row), Some(last_row)) = (first_row.to_i64(), last_row.to_i64()) else { continue };
-        if incremental {
-            edges.clear();
-            edges.extend(Edge::table(&p.points, half));
-        }
+        let mut walker = FloatWalker::new(p, incremental);
+        let Some((first_row, last_row)) = walker.rows(scene.height) else { continue };
         for row in first_row..=last_row {
-            let y = F::from(row).unwrap_or_else(F::nan) + half;
-            crossings.clear();
-            if incremental {
-                for edge in edges.iter_mut() {
-                    if let Some(x) = edge.at(row) {
-                        crossings.push(x);
-                    }
+            let row_start = row as usize * width;
+            walker.row(row, scene.width, |x, z| {
+                let cell = row_start + x as usize;
+                stats.tested += 1;
+                let stored = F::from(depth[cell]).unwrap_or_else(F::nan);
+                if if greater { z > stored } else { z < stored } {
+                    stats.written += 1;
+                    frame[cell] = p.value;
+                    depth[cell] = (z + half).floor().max(F::zero()).min(max).to_u32().unwrap_or(0);
                 }
-            } else {
-                for (i, v) in p.points.iter().enumerate() {
-                    let w = p.points[(i + 1) % p.points.len()];
-                    if v[1] == w[1] || y < v[1].min(w[1]) || y >= v[1].max(w[1]) {
-                        continue;
-                    }
-                    crossings.push(v[0] + (w[0] - v[0]) * (y - v[1]) / (w[1] - v[1]));
-                }
-            }
-            crossings.sort_by(|l, r| l.partial_cmp(r).unwrap_or(std::cmp::Ordering::Equal));
-            for pair in crossings.chunks_exact(2) {
-                let first = (pair[0] - half).ceil().max(F::zero());
-                let last = (pair[1] - half).floor().min(F::from(scene.width - 1).unwrap_or_else(F::nan));
-                let (Some(first), Some(last)) = (first.to_i64(), last.to_i64()) else { continue };
-                // z = −(a·x + b·y + d)/c at the first centre; then z − a/c per pixel, or evaluated again.
-                let step = -a / c;
-                let mut xc = F::from(first).unwrap_or_else(F::nan) + half;
-                let mut z = -(a * xc + b * y + d) / c;
-                let (frame, depth) = buffers.level_cells_mut().expect("inexact modes run quantized z-buffers");
-                let row_start = row as usize * scene.width as usize;
-                for x in first..=last {
-                    if !incremental {
-                        z = -(a * xc + b * y + d) / c;
-                        xc = xc + F::one();
-                    }
-                    let cell = row_start + x as usize;
-                    stats.tested += 1;
-                    let stored = F::from(depth[cell]).unwrap_or_else(F::nan);
-                    let passes = if greater { z > stored } else { z < stored };
-                    if passes {
-                        stats.written += 1;
-                        frame[cell] = p.value;
-                        depth[cell] = (z + half).floor().max(F::zero()).min(max).to_u32().unwrap_or(0);
-                    }
-                    if incremental {
-                        z = z + step;
-                    }
-                }
-            }
+            });
         }
     }
     (buffers, stats)
@@ -302,40 +326,10 @@ pub fn float_scanline(scene: &Scene, index: usize, row: u32, mode: Arith) -> Opt
 fn scanline_in<F: Float>(scene: &Scene, index: usize, row: u32, incremental: bool) -> FloatScanline {
     let polygon = &scene.polygons[index];
     let p = prepare::<F>(&polygon.vertices, polygon.value);
-    let [a, b, c, d] = p.plane;
-    let half = F::from(0.5).unwrap_or_else(F::nan);
-    let y = F::from(row).unwrap_or_else(F::nan) + half;
-    let mut crossings: Vec<F> = if incremental {
-        Edge::table(&p.points, half).iter_mut().filter_map(|e| e.at(i64::from(row))).collect()
-    } else {
-        p.points
-            .iter()
-            .enumerate()
-            .filter_map(|(i, v)| {
-                let w = p.points[(i + 1) % p.points.len()];
-                (v[1] != w[1] && y >= v[1].min(w[1]) && y < v[1].max(w[1]))
-                    .then(|| v[0] + (w[0] - v[0]) * (y - v[1]) / (w[1] - v[1]))
-            })
-            .collect()
-    };
-    crossings.sort_by(|l, r| l.partial_cmp(r).unwrap_or(std::cmp::Ordering::Equal));
+    let mut walker = FloatWalker::new(&p, incremental);
     let mut pixels = Vec::new();
-    for pair in crossings.chunks_exact(2) {
-        let first = (pair[0] - half).ceil().max(F::zero()).to_i64();
-        let last = (pair[1] - half).floor().min(F::from(scene.width - 1).unwrap_or_else(F::nan)).to_i64();
-        let (Some(first), Some(last)) = (first, last) else { continue };
-        let mut z = -(a * (F::from(first).unwrap_or_else(F::nan) + half) + b * y + d) / c;
-        for x in first..=last {
-            if !incremental {
-                z = -(a * (F::from(x).unwrap_or_else(F::nan) + half) + b * y + d) / c;
-            }
-            pixels.push((x as u32, z.to_f64().unwrap_or(f64::NAN)));
-            if incremental {
-                z = z + (-a / c);
-            }
-        }
-    }
-    FloatScanline { crossings: crossings.iter().map(|v| v.to_f64().unwrap_or(f64::NAN)).collect(), pixels }
+    walker.row(i64::from(row), scene.width, |x, z| pixels.push((x as u32, z.to_f64().unwrap_or(f64::NAN))));
+    FloatScanline { crossings: walker.crossings.iter().map(|v| v.to_f64().unwrap_or(f64::NAN)).collect(), pixels }
 }
 
 /// An edge for the incremental modes: x stepped by Δx per scanline (seed 000).
