@@ -342,7 +342,9 @@ struct Edge<F> {
 }
 
 impl<F: Float> Edge<F> {
-    /// The non-horizontal edges with their rows (half-open rule), x at the first row, and Δx.
+    /// The non-horizontal edges with their rows (half-open rule), x at the
+    /// first row on the raster (row ≥ 0, evaluated directly, as a rasterizer
+    /// sets an edge up where it enters the screen), and Δx.
     fn table(points: &[[F; 3]], half: F) -> Vec<Edge<F>> {
         let mut edges = Vec::new();
         for (i, v) in points.iter().enumerate() {
@@ -351,7 +353,7 @@ impl<F: Float> Edge<F> {
                 continue;
             }
             let (low, high) = if v[1] < w[1] { (*v, w) } else { (w, *v) };
-            let first = (low[1] - half).ceil();
+            let first = (low[1] - half).ceil().max(F::zero());
             let last = (high[1] - half).ceil() - F::one();
             let (Some(first_row), Some(last_row)) = (first.to_i64(), last.to_i64()) else { continue };
             let dx = (high[0] - low[0]) / (high[1] - low[1]);

@@ -229,3 +229,20 @@ fn span_end_depth_beyond_i128_is_reported_not_a_panic() {
     assert_eq!(ends.len(), 16, "one span per row");
     assert!(ends.iter().any(Option::is_none), "some span ends are beyond i128");
 }
+
+/// Regression (found by the fuzzer): in the incremental float modes an edge
+/// starting billions of rows below the raster was stepped row by row up to it,
+/// which hung; edges are now set up at the first row on the raster.
+#[test]
+fn incremental_edges_start_at_the_raster_not_far_below_it() {
+    let scene = Scene::from_json(
+        r#"{"width": 16, "height": 16, "depth_bits": 5, "polygons": [{"value": 1, "vertices": [[36, 12, 29], [29, -7027767160, -8589934592], [-8589934592, -8589934592, -8589934592], [-8589934592, -8589934592, -8589934592]]}]}"#,
+        Path::new("fuzz.json"),
+    )
+    .unwrap();
+    let start = std::time::Instant::now();
+    let (stepped, _) = zsim::arith::run(&scene, zsim::arith::Arith::F32Incremental).unwrap();
+    let (exact, _) = zsim::arith::run(&scene, zsim::arith::Arith::Exact).unwrap();
+    assert!(start.elapsed().as_secs() < 5, "set up at the raster, not stepped from row −7·10^9");
+    assert_eq!(stepped.width(), exact.width());
+}
