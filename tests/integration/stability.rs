@@ -95,8 +95,60 @@ fn reference(polygons: &[Vec<(i64, i64, i64)>]) -> Buffers {
     (frame, depth)
 }
 
+/// JSON-like text: scene keys, numbers of every form, nesting and junk.
+fn scene_text() -> impl Strategy<Value = String> {
+    let number = prop_oneof![
+        any::<i64>().prop_map(|v| v.to_string()),
+        any::<f64>().prop_map(|v| v.to_string()),
+        "\"-?[0-9]{1,40}/-?[0-9]{1,40}\"",
+        "-?[0-9]{0,40}\\.[0-9]{0,40}([eE]-?[0-9]{1,3})?",
+        "\"[a-z0-9./]{0,8}\"",
+    ];
+    let vertex = prop::collection::vec(number.clone(), 0..5).prop_map(|v| format!("[{}]", v.join(", ")));
+    let polygon =
+        (prop::collection::vec(vertex, 0..6), number.clone(), "[a-z]{0,6}").prop_map(|(vertices, value, key)| {
+            format!("{{\"value\": {value}, \"vertices\": [{}], \"{key}\": 1}}", vertices.join(", "))
+        });
+    let key = prop_oneof![
+        Just("width"),
+        Just("height"),
+        Just("frame_bits"),
+        Just("depth_bits"),
+        Just("background"),
+        Just("depth_test"),
+        Just("clear_depth"),
+        Just("window"),
+        Just("rules"),
+        Just("effects"),
+        Just("depth_range"),
+        Just("widht"),
+    ];
+    (prop::collection::vec((key, number), 0..5), prop::collection::vec(polygon, 0..4), "[ -~]{0,3}").prop_map(
+        |(settings, polygons, junk)| {
+            let settings: Vec<String> = settings.iter().map(|(k, v)| format!("\"{k}\": {v}")).collect();
+            format!(
+                "{{{} \"polygons\": [{}]}}{junk}",
+                settings.iter().map(|s| format!("{s}, ")).collect::<String>(),
+                polygons.join(", ")
+            )
+        },
+    )
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    /// The everyday guard against panics in the reader: any text is a scene or an error,
+    /// and a scene small enough runs.
+    #[test]
+    fn any_scene_text_is_read_or_refused_without_panicking(text in scene_text()) {
+        if let Ok(scene) = Scene::from_json(&text, Path::new("arbitrary.json"))
+            && u64::from(scene.width) * u64::from(scene.height) <= 64 * 64
+        {
+            let mut simulation = Simulation::new(&scene);
+            simulation.finish(&mut Unobserved);
+        }
+    }
 
     #[test]
     fn exact_mode_matches_an_independent_reference(polygons in prop::collection::vec(polygon(), 1..5)) {
