@@ -8,40 +8,20 @@ use crate::{snapshot, zsim};
 
 #[test]
 fn memory_gives_the_books_figures() {
-    let run = zsim(&["memory", "--width", "512", "--height", "512", "--frame-bits", "24", "--depth-bits", "20"]);
+    // 512×512, 24-bit framebuffer, 20-bit z-buffer, plus `extra` options.
+    let book = |extra: &[&str]| {
+        let mut args = vec!["memory", "--width", "512", "--height", "512", "--frame-bits", "24", "--depth-bits", "20"];
+        args.extend_from_slice(extra);
+        zsim(&args)
+    };
+    let run = book(&[]);
     assert_eq!(run.code, 0);
     assert!(run.stdout.ends_with("total: 1441792 bytes = 1.441 MB (1.375 MiB)\n"), "{}", run.stdout);
     snapshot!("memory_512_24_20", run.stdout);
-    let run = zsim(&[
-        "memory",
-        "--width",
-        "512",
-        "--height",
-        "512",
-        "--frame-bits",
-        "24",
-        "--depth-bits",
-        "20",
-        "--supersample",
-        "2",
-    ]);
+    let run = book(&["--supersample", "2"]);
     assert!(run.stdout.ends_with("total: 5767168 bytes = 5.767 MB (5.500 MiB)\n"), "{}", run.stdout);
     // The first approach keeps the z-buffer at screen resolution: 4·786432 + 655360 bytes.
-    let run = zsim(&[
-        "memory",
-        "--width",
-        "512",
-        "--height",
-        "512",
-        "--frame-bits",
-        "24",
-        "--depth-bits",
-        "20",
-        "--supersample",
-        "2",
-        "--depth-at",
-        "pixel",
-    ]);
+    let run = book(&["--supersample", "2", "--depth-at", "pixel"]);
     assert!(run.stdout.contains("total: 3801088 bytes"), "{}", run.stdout);
     let run = zsim(&["memory", "--frame-bits", "0"]);
     assert_eq!((run.code, run.stderr.as_str()), (2, "zsim: --frame-bits 0: use 1 to 64 bits\n"));
