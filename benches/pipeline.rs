@@ -9,8 +9,9 @@ use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use zsim::generate::RandomScene;
-use zsim::pipeline::{Simulation, StageSet};
+use zsim::pipeline::Simulation;
 use zsim::scene::Scene;
+use zsim::stages::StageSet;
 use zsim::trace::Unobserved;
 
 fn plain_scene() -> Scene {

@@ -19,13 +19,12 @@ use crate::buffer::Buffers;
 use crate::depth::{Depth, DepthStepper};
 use crate::error::{Error, PolygonProblem};
 use crate::exact::Q;
-use crate::pipeline::{
-    PixelRect, PixelStages, Plain, RasterSink, Scratch, Simulation, WithEffects, blend, fate, rasterize,
-};
+use crate::pipeline::{PixelRect, RasterSink, Scratch, Simulation, fate, rasterize};
 use crate::plane::Geometry;
 use crate::scan::scanline_y;
 use crate::scan::{Crossing, Span};
 use crate::scene::{Antialias, Scene};
+use crate::stages::{PixelStages, Plain, WithEffects, blend};
 use crate::trace::{Fate, Outcome, Unobserved};
 
 /// The averaged picture after one polygon.
@@ -70,7 +69,7 @@ pub struct PixelModeNote {
     /// The covered samples, as (i, j) within the pixel.
     pub samples: Vec<(u32, u32)>,
     /// The plane's depth at the pixel centre, and what the test made of it.
-    pub decision: crate::pipeline::Decision,
+    pub decision: crate::stages::Decision,
 }
 
 /// [`run`], noting in pixel mode what happens at pixel `watch`.

@@ -86,5 +86,6 @@ pub mod report;
 pub mod rules;
 pub mod scan;
 pub mod scene;
+pub mod stages;
 pub mod trace;
 pub mod variants;

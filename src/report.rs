@@ -17,8 +17,9 @@ impl Serialize for Stored {
 }
 
 use crate::perspective::Clip;
-use crate::pipeline::{fate, stages};
+use crate::pipeline::fate;
 use crate::scene::{Scene, Winding};
+use crate::stages::describe as stages;
 use crate::trace::Fate;
 
 /// The lines that open a text report: the scene's size, bit depths, test,

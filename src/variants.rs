@@ -13,9 +13,10 @@ use std::cmp::Ordering;
 use crate::buffer::Buffers;
 use crate::depth::{Depth, DepthStepper};
 use crate::exact::Q;
-use crate::pipeline::{Decision, PixelRect, PixelStages, Plain, RasterSink, Scratch, WithEffects, fate, rasterize};
+use crate::pipeline::{PixelRect, RasterSink, Scratch, fate, rasterize};
 use crate::scan::{Crossing, Span};
 use crate::scene::{Polygon, Scene};
+use crate::stages::{Decision, PixelStages, Plain, WithEffects};
 use crate::trace::{Fate, Outcome};
 
 /// The per-pixel stages the scene asks for, as a trait object.
@@ -381,7 +382,7 @@ pub fn local_errors(scene: &Scene, drawn: &Buffers) -> Vec<LocalError> {
         for fragment in list.iter() {
             let polygon = &scene.polygons[fragment.index];
             value = match polygon.opacity {
-                Some(alpha) => crate::pipeline::blend(polygon.value, value, alpha),
+                Some(alpha) => crate::stages::blend(polygon.value, value, alpha),
                 None => polygon.value,
             };
         }

@@ -8,7 +8,8 @@
 
 use std::path::Path;
 
-use zsim::pipeline::{Simulation, StageSet};
+use zsim::pipeline::Simulation;
+use zsim::stages::StageSet;
 use zsim::scene::Scene;
 use zsim::trace::{PixelWatcher, Recorder, Unobserved};
 

@@ -9,8 +9,8 @@ use std::time::{Duration, Instant};
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use zsim::arith::Arith;
+use zsim::pipeline::Simulation;
 use zsim::pipeline::Stats;
-use zsim::pipeline::{self, Simulation};
 use zsim::report::{self, MatrixStyle, RunJson, StepJson};
 use zsim::scene::Scene;
 use zsim::trace::Unobserved;
@@ -194,7 +194,7 @@ fn summary(scene: &Scene, path: &str, stats: Stats, (read, raster): (Duration, D
         stats.tested,
         stats.written,
         if effects.is_empty() { "none".to_string() } else { effects.join(", ") },
-        pipeline::stages(scene).join(" → "),
+        zsim::stages::describe(scene).join(" → "),
         read.as_secs_f64() * 1000.0,
         raster.as_secs_f64() * 1000.0,
     )

@@ -4,8 +4,9 @@
 
 use std::path::Path;
 
-use zsim::pipeline::{Simulation, StageSet};
+use zsim::pipeline::Simulation;
 use zsim::scene::Scene;
+use zsim::stages::StageSet;
 use zsim::trace::Unobserved;
 
 use crate::{snapshot, zsim};
