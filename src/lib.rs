@@ -86,6 +86,7 @@ pub mod report;
 pub mod rules;
 pub mod scan;
 pub mod scene;
+mod scene_file;
 pub mod stages;
 pub mod trace;
 pub mod variants;

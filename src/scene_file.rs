@@ -1,0 +1,454 @@
+//! The scene file's JSON (serde types, exact numbers, unknown keys refused)
+//! and its validation, once, into the domain type [`Scene`].
+
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+use serde::de::Error as _;
+
+use crate::depth::{DepthTest, Stored};
+use crate::error::{Error, PolygonProblem};
+use crate::exact::{Q, fraction, parse_number};
+use crate::perspective::{Clip, Perspective};
+use crate::plane::Geometry;
+use crate::rules::{DepthStore, Preset, Rules};
+use crate::scene::{Antialias, Effects, MAX_CELLS, MAX_SIDE, Polygon, Scene, Winding, Window, max_for_bits};
+
+/// Reads and validates scene JSON; `path` is used in error messages only.
+pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
+    let mut deserializer = serde_json::Deserializer::from_str(text);
+    let file: SceneFile = serde_path_to_error::deserialize(&mut deserializer).map_err(|error| Error::SceneFormat {
+        path: path.to_owned(),
+        location: describe_location(&error.path().to_string()),
+        message: json_message(error.inner()),
+    })?;
+    deserializer.end().map_err(|error| Error::SceneFormat {
+        path: path.to_owned(),
+        location: String::new(),
+        message: json_message(&error),
+    })?;
+    file.validate(path)
+}
+
+/// serde_json's message, saying "not valid JSON" when the syntax is at fault.
+fn json_message(error: &serde_json::Error) -> String {
+    match error.classify() {
+        serde_json::error::Category::Syntax | serde_json::error::Category::Eof => format!("not valid JSON: {error}"),
+        _ => error.to_string(),
+    }
+}
+
+/// Turns serde's path `polygons[1].vertices[0][2]` into
+/// `polygon 2: vertices[0][2]`, so messages name polygons as the CLI does.
+fn describe_location(path: &str) -> String {
+    if path == "." {
+        return String::new();
+    }
+    if let Some(rest) = path.strip_prefix("polygons[")
+        && let Some((index, tail)) = rest.split_once(']')
+        && let Ok(index) = index.parse::<usize>()
+    {
+        let tail = tail.trim_start_matches('.');
+        return if tail.is_empty() {
+            format!("polygon {}", index + 1)
+        } else {
+            format!("polygon {}: {tail}", index + 1)
+        };
+    }
+    path.to_string()
+}
+
+/// An exact number as written in a scene file.
+#[derive(Debug, Clone, Copy)]
+struct Number(Q);
+
+impl<'de> Deserialize<'de> for Number {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Number, D::Error> {
+        // With serde_json's `arbitrary_precision`, a JSON number keeps its digits.
+        let text = match serde_json::Value::deserialize(deserializer)? {
+            serde_json::Value::Number(number) => number.to_string(),
+            serde_json::Value::String(text) => text,
+            other => return Err(D::Error::custom(format!("expected a number, found {}", kind(&other)))),
+        };
+        parse_number(&text).map(Number).map_err(D::Error::custom)
+    }
+}
+
+fn kind(value: &serde_json::Value) -> &'static str {
+    match value {
+        serde_json::Value::Null => "null",
+        serde_json::Value::Bool(_) => "a boolean",
+        serde_json::Value::Number(_) => "a number",
+        serde_json::Value::String(_) => "a string",
+        serde_json::Value::Array(_) => "a list",
+        serde_json::Value::Object(_) => "an object",
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    width: Option<u64>,
+    height: Option<u64>,
+    frame_bits: Option<u64>,
+    depth_bits: Option<u64>,
+    depth_test: Option<DepthTest>,
+    background: Option<u64>,
+    #[serde(default)]
+    effects: EffectsFile,
+    rules: Option<serde_json::Value>,
+    window: Option<WindowFile>,
+    depth_range: Option<[Number; 2]>,
+    clear_depth: Option<Number>,
+    polygons: Vec<PolygonFile>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct WindowFile {
+    left: Number,
+    right: Number,
+    bottom: Number,
+    top: Number,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RulesFile {
+    preset: Option<Preset>,
+    rows: Option<crate::rules::RowRule>,
+    columns: Option<crate::rules::ColumnRule>,
+    store: Option<DepthStore>,
+}
+
+/// Reads `"rules"`: a preset name, or an object naming a preset and overrides.
+fn rules_from(value: Option<serde_json::Value>) -> Result<Rules, String> {
+    let Some(value) = value else { return Ok(Rules::default()) };
+    if value.is_string() {
+        let preset: Preset = serde_json::from_value(value).map_err(|e| e.to_string())?;
+        return Ok(Rules::preset(preset));
+    }
+    let file: RulesFile = serde_json::from_value(value).map_err(|e| e.to_string())?;
+    let base = Rules::preset(file.preset.unwrap_or(Preset::Rogers));
+    Ok(Rules {
+        preset: base.preset,
+        rows: file.rows.unwrap_or(base.rows),
+        columns: file.columns.unwrap_or(base.columns),
+        store: file.store.unwrap_or(base.store),
+    })
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct EffectsFile {
+    section: Option<Number>,
+    cull: Option<Winding>,
+    perspective: Option<PerspectiveFile>,
+    antialias: Option<AntialiasFile>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PerspectiveFile {
+    distance: Number,
+    near: Number,
+    store: Option<StoreFile>,
+}
+
+#[derive(Deserialize)]
+enum StoreFile {
+    #[serde(rename = "z'", alias = "z")]
+    Projected,
+    #[serde(rename = "w")]
+    W,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AntialiasFile {
+    samples: u32,
+    depth: Option<AntialiasDepth>,
+}
+
+#[derive(Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+enum AntialiasDepth {
+    Pixel,
+    Sample,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PolygonFile {
+    name: Option<String>,
+    value: u64,
+    opacity: Option<Number>,
+    vertices: Vec<[Number; 3]>,
+}
+
+impl SceneFile {
+    fn validate(self, path: &Path) -> Result<Scene, Error> {
+        let setting = |key: &'static str, message: String| Error::Setting { path: path.to_owned(), key, message };
+        let bits = |key: &'static str, value: Option<u64>, default: u32| -> Result<u32, Error> {
+            match value.unwrap_or(u64::from(default)) {
+                bits @ 1..=32 => Ok(bits as u32),
+                other => Err(setting(key, format!("{other} is not supported: use 1 to 32 bits"))),
+            }
+        };
+        let side = |key: &'static str, value: Option<u64>| -> Result<u32, Error> {
+            match value.unwrap_or(32) {
+                0 => Err(setting(key, "must be at least 1 pixel".into())),
+                side if side > MAX_SIDE => {
+                    Err(setting(key, format!("{side} is beyond the limit of {MAX_SIDE} pixels")))
+                }
+                side => Ok(side as u32),
+            }
+        };
+        let width = side("width", self.width)?;
+        let height = side("height", self.height)?;
+        if u64::from(width) * u64::from(height) > MAX_CELLS {
+            return Err(setting(
+                "width",
+                format!(
+                    "{width}×{height} is {} pixels, beyond the limit of {MAX_CELLS}",
+                    u64::from(width) * u64::from(height)
+                ),
+            ));
+        }
+        let frame_bits = bits("frame_bits", self.frame_bits, 2)?;
+        let depth_bits = bits("depth_bits", self.depth_bits, 4)?;
+        let frame_max = u64::from(max_for_bits(frame_bits));
+        let background = self.background.unwrap_or(0);
+        if background > frame_max {
+            return Err(setting(
+                "background",
+                format!("{background} does not fit a {frame_bits}-bit framebuffer (at most {frame_max})"),
+            ));
+        }
+        let rules = rules_from(self.rules).map_err(|message| setting("rules", message))?;
+        let default_test = if rules.preset == Preset::Buet { DepthTest::Less } else { DepthTest::Greater };
+        let depth_test = self.depth_test.unwrap_or(default_test);
+        let window = match self.window {
+            None => None,
+            Some(w) => {
+                let window = Window { left: w.left.0, right: w.right.0, bottom: w.bottom.0, top: w.top.0 };
+                if window.left >= window.right || window.bottom >= window.top {
+                    return Err(setting(
+                        "window",
+                        format!(
+                            "left {} must be below right {} and bottom {} below top {}",
+                            fraction(window.left),
+                            fraction(window.right),
+                            fraction(window.bottom),
+                            fraction(window.top)
+                        ),
+                    ));
+                }
+                Some(window)
+            }
+        };
+        let depth_range = match self.depth_range {
+            Some([front, rear]) if front.0 > rear.0 => {
+                return Err(setting(
+                    "depth_range",
+                    format!("[{}, {}]: the front must not exceed the rear", fraction(front.0), fraction(rear.0)),
+                ));
+            }
+            Some([front, rear]) => Some((front.0, rear.0)),
+            None => None,
+        };
+        let depth_max = max_for_bits(depth_bits);
+        let clear_depth = match (rules.store, self.clear_depth) {
+            (DepthStore::Quantized, None) => Stored::Level(depth_test.clear_value(depth_max)),
+            (DepthStore::Quantized, Some(_)) => {
+                return Err(setting(
+                    "clear_depth",
+                    "applies only to an exact z-buffer (rules with \"store\": \"exact\"); a quantized one is cleared to its farthest level".into(),
+                ));
+            }
+            (DepthStore::Exact, Some(value)) => Stored::Exact(value.0),
+            (DepthStore::Exact, None) => Stored::Exact(Q::from_integer(i128::from(depth_test.clear_value(depth_max)))),
+        };
+        let perspective = match self.effects.perspective {
+            None => None,
+            Some(p) => {
+                let perspective = Perspective {
+                    distance: p.distance.0,
+                    near: p.near.0,
+                    store_w: matches!(p.store, Some(StoreFile::W)),
+                };
+                let small = |v: Q| v.numer().abs() <= 1 << 20 && *v.denom() <= 1 << 20;
+                if perspective.distance <= Q::from_integer(0) || perspective.near <= Q::from_integer(0) {
+                    return Err(setting("effects", "perspective: distance and near must be positive".into()));
+                }
+                if !small(perspective.distance) || !small(perspective.near) {
+                    return Err(setting(
+                        "effects",
+                        "perspective: distance and near must have numerators and denominators of at most 2^20".into(),
+                    ));
+                }
+                Some(perspective)
+            }
+        };
+        let antialias = match self.effects.antialias {
+            None => None,
+            Some(a) => {
+                if !(1..=16).contains(&a.samples) {
+                    return Err(setting(
+                        "effects",
+                        format!("antialias: samples {} is not supported: use 1 to 16", a.samples),
+                    ));
+                }
+                if u64::from(width) * u64::from(height) * u64::from(a.samples).pow(2) > MAX_CELLS {
+                    return Err(setting(
+                        "effects",
+                        format!(
+                            "antialias: {width}×{height} pixels × {}² samples is beyond the limit of {MAX_CELLS} cells",
+                            a.samples
+                        ),
+                    ));
+                }
+                if rules.store == DepthStore::Exact {
+                    return Err(setting(
+                        "effects",
+                        "antialias averages a quantized z-buffer; it does not combine with an exact store".into(),
+                    ));
+                }
+                Some(Antialias { samples: a.samples, depth_at_samples: a.depth != Some(AntialiasDepth::Pixel) })
+            }
+        };
+        let transparency = self.polygons.iter().any(|p| p.opacity.is_some());
+        let mut polygons = Vec::with_capacity(self.polygons.len());
+        for (index, polygon) in self.polygons.into_iter().enumerate() {
+            let frame = Frame {
+                bits: frame_bits,
+                window: window.map(|w| (w, width, height)),
+                perspective,
+                size: (width, height),
+            };
+            polygons.push(polygon.validate(index, &frame, path)?);
+        }
+        Ok(Scene {
+            width,
+            height,
+            frame_bits,
+            depth_bits,
+            depth_test,
+            background: background as u32,
+            effects: Effects {
+                section: self.effects.section.map(|n| n.0),
+                cull: self.effects.cull,
+                perspective,
+                antialias,
+                transparency,
+            },
+            rules,
+            window,
+            depth_range,
+            clear_depth,
+            polygons,
+        })
+    }
+}
+
+/// What a polygon's validation needs to know of the scene.
+struct Frame {
+    bits: u32,
+    window: Option<(Window, u32, u32)>,
+    perspective: Option<Perspective>,
+    size: (u32, u32),
+}
+
+impl PolygonFile {
+    fn validate(self, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
+        let name = self.name.unwrap_or_else(|| format!("polygon {}", index + 1));
+        let fail = |name: &str, problem: PolygonProblem| Error::Polygon {
+            path: PathBuf::from(path),
+            index,
+            name: name.to_owned(),
+            problem: Box::new(problem),
+        };
+        let frame_bits = frame.bits;
+        if self.value > u64::from(max_for_bits(frame_bits)) {
+            return Err(fail(&name, PolygonProblem::ValueTooWide { value: self.value, frame_bits }));
+        }
+        let opacity = self.opacity.map(|n| n.0);
+        if let Some(alpha) = opacity
+            && (alpha < Q::from_integer(0) || alpha > Q::from_integer(1))
+        {
+            return Err(fail(&name, PolygonProblem::Other(format!("opacity {} is outside 0 … 1", fraction(alpha)))));
+        }
+        let out_of_range = |number: usize, value: Q| {
+            fail(
+                &name,
+                PolygonProblem::Geometry(crate::plane::GeometryError::OutOfRange {
+                    vertex: number + 1,
+                    value,
+                    denominator: *value.denom(),
+                }),
+            )
+        };
+        let mut vertices: Vec<[Q; 3]> = self.vertices.iter().map(|v| v.map(|n| n.0)).collect();
+        if let Some((window, width, height)) = frame.window {
+            for (number, vertex) in vertices.iter_mut().enumerate() {
+                *vertex = window.to_pixels(*vertex, width, height).ok_or_else(|| out_of_range(number, vertex[0]))?;
+            }
+        }
+        if vertices.len() < 3 {
+            let error = crate::plane::GeometryError::TooFewVertices(vertices.len());
+            return Err(fail(&name, PolygonProblem::Geometry(error)));
+        }
+        let (eye_vertices, clip) = match frame.perspective {
+            None => (None, Clip::NotClipped),
+            Some(perspective) => {
+                // Check planarity in eye space first, where the user wrote the polygon.
+                Geometry::new(&vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
+                let eye = vertices.clone();
+                let (kept, clip) = perspective.clip(&vertices).ok_or_else(|| out_of_range(0, vertices[0][0]))?;
+                if clip == Clip::Away {
+                    // Nothing is drawn; keep the eye-space geometry for reports.
+                    let geometry = Geometry::new(&eye).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
+                    return Ok(Polygon {
+                        name,
+                        value: self.value as u32,
+                        vertices: eye.clone(),
+                        geometry,
+                        opacity,
+                        eye_vertices: Some(eye),
+                        clip,
+                    });
+                }
+                let (width, height) = frame.size;
+                let mut projected = Vec::with_capacity(kept.len());
+                for (number, v) in kept.iter().enumerate() {
+                    projected.push(perspective.project(*v, width, height).ok_or_else(|| out_of_range(number, v[0]))?);
+                }
+                vertices = projected;
+                (Some(eye), clip)
+            }
+        };
+        let geometry = Geometry::new(&vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
+        if let Some(perspective) = frame.perspective
+            && perspective.store_w
+            && !w_fits(&geometry)
+        {
+            return Err(fail(
+                &name,
+                PolygonProblem::Other(
+                    "its projected coordinates are too fine for the w-buffer's exact arithmetic (use coarser coordinates or a smaller distance)".into(),
+                ),
+            ));
+        }
+        Ok(Polygon { name, value: self.value as u32, vertices, geometry, opacity, eye_vertices, clip })
+    }
+}
+
+/// Whether the w-buffer's `p·n / (p·den + q·n)` fits `i128` for every pixel of
+/// this geometry: the depth numerator is below `20·n·R³` (see `plane`), and
+/// `p, q ≤ 2^20`.
+fn w_fits(geometry: &Geometry) -> bool {
+    let bits = |v: u128| 128 - v.leading_zeros();
+    let r = geometry.points.iter().flatten().map(|v| v.unsigned_abs()).max().unwrap_or(0).max(1);
+    let n = geometry.points.len() as u128;
+    3 * bits(r) + bits(20 * n) + 21 <= 125
+}
