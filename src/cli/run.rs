@@ -127,20 +127,28 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             }
         }
         Format::Json => {
-            let mut steps = Vec::with_capacity(scene.polygons.len());
+            // The same object as `RunJson`, written one step at a time so that memory stays
+            // bounded by one step and a closed pipe stops the run early.
+            let empty =
+                RunJson { width: scene.width, height: scene.height, effects: scene.effects.names(), steps: Vec::new() };
+            let head = serde_json::to_string(&empty).expect("serializing plain data cannot fail");
+            let head = head.strip_suffix("]}").expect("RunJson ends with its steps list");
+            emit(out, head)?;
+            let mut first = true;
             while let Some(index) = simulation.draw_next(&mut Unobserved) {
                 if args.final_only && index + 1 != scene.polygons.len() {
                     continue;
                 }
-                steps.push(StepJson {
+                let step = StepJson {
                     polygon: scene.polygons[index].name.clone(),
                     frame: simulation.buffers().frame_rows(),
                     depth: simulation.buffers().depth_rows(),
-                });
+                };
+                let text = serde_json::to_string(&step).expect("serializing plain data cannot fail");
+                emit(out, &format!("{}{text}", if first { "" } else { "," }))?;
+                first = false;
             }
-            let json = RunJson { width: scene.width, height: scene.height, effects: scene.effects.names(), steps };
-            let text = serde_json::to_string(&json).expect("serializing plain data cannot fail");
-            emit(out, &format!("{text}\n"))?;
+            emit(out, "]}\n")?;
         }
         Format::None => {
             let rasterizing = Instant::now();

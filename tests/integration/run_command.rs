@@ -67,3 +67,36 @@ fn axes_label_rows_and_columns() {
     assert_eq!(run.code, 0);
     snapshot!("run_rogers_final_axes", run.stdout);
 }
+
+/// Regression: `--format json` built every step in memory before writing, so a large
+/// scene ran out of memory (and `| head` could not stop it). Steps now stream, and a
+/// closed pipe ends the run quietly with status 0.
+#[test]
+fn json_streams_and_stops_quietly_on_a_closed_pipe() {
+    use std::io::Read;
+    use std::process::{Command, Stdio};
+    let spec = zsim::generate::RandomScene {
+        count: 400,
+        seed: 5,
+        width: 512,
+        height: 512,
+        max_size: 64,
+        frame_bits: 8,
+        depth_bits: 16,
+    };
+    let (dir, name) = scene_file("many_steps.json", &spec.json());
+    let mut child = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(["run", &name, "--format", "json"])
+        .current_dir(&dir)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 64];
+    child.stdout.as_mut().unwrap().read_exact(&mut first).unwrap();
+    assert!(first.starts_with(br#"{"width":512,"height":512,"effects":[],"steps":[{"polygon":"t1""#));
+    drop(child.stdout.take());
+    let output = child.wait_with_output().unwrap();
+    assert_eq!(output.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&output.stderr), "");
+}
