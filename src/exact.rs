@@ -53,6 +53,14 @@ impl fmt::Display for NumberError {
 /// ```
 pub fn parse_number(text: &str) -> Result<Q, NumberError> {
     let trimmed = text.trim();
+    // Most scene numbers are plain integers: no fraction to reduce.
+    if trimmed.len() <= 18
+        && !trimmed.is_empty()
+        && trimmed.bytes().enumerate().all(|(i, b)| b.is_ascii_digit() || (i == 0 && b == b'-' && trimmed.len() > 1))
+        && let Ok(value) = trimmed.parse::<i64>()
+    {
+        return Ok(Q::from_integer(i128::from(value)));
+    }
     if let Some((num, den)) = trimmed.split_once('/') {
         let num = parse_decimal(num.trim(), text)?;
         let den = parse_decimal(den.trim(), text)?;

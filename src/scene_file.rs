@@ -64,24 +64,57 @@ struct Number(Q);
 
 impl<'de> Deserialize<'de> for Number {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Number, D::Error> {
-        // With serde_json's `arbitrary_precision`, a JSON number keeps its digits.
-        let text = match serde_json::Value::deserialize(deserializer)? {
-            serde_json::Value::Number(number) => number.to_string(),
-            serde_json::Value::String(text) => text,
-            other => return Err(D::Error::custom(format!("expected a number, found {}", kind(&other)))),
-        };
-        parse_number(&text).map(Number).map_err(D::Error::custom)
+        deserializer.deserialize_any(NumberVisitor)
     }
 }
 
-fn kind(value: &serde_json::Value) -> &'static str {
-    match value {
-        serde_json::Value::Null => "null",
-        serde_json::Value::Bool(_) => "a boolean",
-        serde_json::Value::Number(_) => "a number",
-        serde_json::Value::String(_) => "a string",
-        serde_json::Value::Array(_) => "a list",
-        serde_json::Value::Object(_) => "an object",
+/// The key under which serde_json's `arbitrary_precision` hands over a JSON
+/// number's digits (its private number token).
+const NUMBER_TOKEN: &str = "$serde_json::private::Number";
+
+/// Reads a number straight from the parser, without building a JSON value:
+/// a JSON number's digits, or a string holding a fraction or a decimal.
+struct NumberVisitor;
+
+impl<'de> serde::de::Visitor<'de> for NumberVisitor {
+    type Value = Number;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a number, or a string holding a fraction or a decimal")
+    }
+
+    fn visit_str<E: serde::de::Error>(self, text: &str) -> Result<Number, E> {
+        parse_number(text).map(Number).map_err(E::custom)
+    }
+
+    fn visit_i64<E: serde::de::Error>(self, value: i64) -> Result<Number, E> {
+        Ok(Number(Q::from_integer(i128::from(value))))
+    }
+
+    fn visit_u64<E: serde::de::Error>(self, value: u64) -> Result<Number, E> {
+        Ok(Number(Q::from_integer(i128::from(value))))
+    }
+
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Number, A::Error> {
+        match map.next_key::<String>()? {
+            Some(key) if key == NUMBER_TOKEN => {
+                let digits: String = map.next_value()?;
+                parse_number(&digits).map(Number).map_err(A::Error::custom)
+            }
+            _ => Err(A::Error::custom("expected a number, found an object")),
+        }
+    }
+
+    fn visit_bool<E: serde::de::Error>(self, _: bool) -> Result<Number, E> {
+        Err(E::custom("expected a number, found a boolean"))
+    }
+
+    fn visit_unit<E: serde::de::Error>(self) -> Result<Number, E> {
+        Err(E::custom("expected a number, found null"))
+    }
+
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, _: A) -> Result<Number, A::Error> {
+        Err(A::Error::custom("expected a number, found a list"))
     }
 }
 
