@@ -1,15 +1,20 @@
 //! What the effects cost a scene that asks for none: the same plain scene
-//! through the loop the scene selects (the plain stages only) and through the
-//! loop with every effect stage compiled in and checked per pixel. Criterion
-//! measures both in one run; compare their times as a ratio.
+//! through the core alone (the rasterizer with a bench-local depth test and
+//! store, no simulation, no effects), through the simulation as shipped (every
+//! effect compiled in; the scene selects the plain stages), and through the
+//! loop with every effect stage checked per pixel. Criterion measures all
+//! three in one run; compare their times as ratios.
 //!
 //! Run with `cargo bench --bench pipeline`.
 
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use zsim::depth::{Depth, Stored};
 use zsim::generate::RandomScene;
 use zsim::pipeline::Simulation;
+use zsim::pipeline::{PixelRect, RasterSink, Scratch, rasterize};
+use zsim::scan::{Crossing, Span};
 use zsim::scene::Scene;
 use zsim::stages::StageSet;
 use zsim::trace::Unobserved;
@@ -20,9 +25,52 @@ fn plain_scene() -> Scene {
     Scene::from_json(&spec.json(), Path::new("random.json")).expect("a valid random scene")
 }
 
+/// The core alone: the book's depth test and store on plain vectors.
+struct CoreOnly<'a> {
+    width: usize,
+    value: u32,
+    depth_max: u32,
+    frame: &'a mut [u32],
+    depth: &'a mut [u32],
+}
+
+impl RasterSink for CoreOnly<'_> {
+    fn scanline(&mut self, _row: u32, _crossings: &[Crossing], _spans: &[Span]) {}
+
+    fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
+        let cell = y as usize * self.width + x as usize;
+        if zsim::depth::DepthTest::Greater.passes(depth, Stored::Level(self.depth[cell])) {
+            self.depth[cell] = depth.quantized(self.depth_max);
+            self.frame[cell] = self.value;
+        }
+    }
+}
+
 fn stages(c: &mut Criterion) {
     let scene = plain_scene();
     let mut group = c.benchmark_group("plain scene, 2000 triangles on 256x256");
+    group.bench_function("core alone (rasterizer and a bare depth test)", |b| {
+        b.iter(|| {
+            let cells = scene.width as usize * scene.height as usize;
+            let (mut frame, mut depth) = (vec![0u32; cells], vec![0u32; cells]);
+            let mut scratch = Scratch::default();
+            let rect = PixelRect::raster(scene.width, scene.height);
+            for (index, polygon) in scene.polygons.iter().enumerate() {
+                if zsim::pipeline::fate(&scene, index) != zsim::trace::Fate::Drawn {
+                    continue;
+                }
+                let mut sink = CoreOnly {
+                    width: scene.width as usize,
+                    value: polygon.value,
+                    depth_max: scene.depth_max(),
+                    frame: &mut frame,
+                    depth: &mut depth,
+                };
+                rasterize(&polygon.geometry, scene.rules, rect, &mut scratch, &mut sink);
+            }
+            depth[0]
+        })
+    });
     for (name, stage_set) in [
         ("stages as asked (plain loop)", StageSet::AsAsked),
         ("all effect stages compiled in", StageSet::AllCompiledIn),
