@@ -35,14 +35,14 @@ pub struct RunArgs {
     #[arg(long, value_enum, default_value_t = Order::Polygons)]
     order: Order,
     /// The point-in-polygon test of --order pixels.
-    #[arg(long, value_enum, default_value_t = InsideTest::Ray)]
-    inside: InsideTest,
+    #[arg(long, value_enum)]
+    inside: Option<InsideTest>,
     /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (seed 000).
     #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
     segments: Option<zsim::variants::Segments>,
-    /// With --format none: draw tile by tile, N×N pixels (0: polygon by polygon, with a progress bar on long runs).
-    #[arg(long, value_name = "N", default_value_t = 0)]
-    tile: u32,
+    /// With --format none: draw tile by tile, N×N pixels (without it: polygon by polygon, with a progress bar on long runs).
+    #[arg(long, value_name = "N")]
+    tile: Option<u32>,
     /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32 or fixed:K.
     #[arg(long, default_value = "exact", value_parser = Arith::parse)]
     arith: Arith,
@@ -77,6 +77,18 @@ enum Format {
 }
 
 pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    if args.inside.is_some() && args.order != Order::Pixels {
+        return Err(zsim::error::Error::Usage(
+            "--inside chooses the point-in-polygon test of --order pixels; add --order pixels".into(),
+        )
+        .into());
+    }
+    if args.tile.is_some() && args.format != Format::None {
+        return Err(zsim::error::Error::Usage(
+            "--tile applies to --format none (the other formats show the state after each polygon)".into(),
+        )
+        .into());
+    }
     let reading = Instant::now();
     let scene = Scene::load(&args.scene)?;
     let read_time = reading.elapsed();
@@ -91,7 +103,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         }
         let variant = super::variants::Variant {
             segments: args.segments,
-            pixel_order: (args.order == Order::Pixels).then_some(match args.inside {
+            pixel_order: (args.order == Order::Pixels).then_some(match args.inside.unwrap_or(InsideTest::Ray) {
                 InsideTest::Ray => zsim::variants::Inside::Ray,
                 InsideTest::Arc => zsim::variants::Inside::Arc,
             }),
@@ -152,9 +164,9 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         }
         Format::None => {
             let rasterizing = Instant::now();
-            if args.tile > 0 {
+            if let Some(tile) = args.tile.filter(|t| *t > 0) {
                 // Tiles keep the cells in cache; the result is the same as polygon by polygon.
-                simulation.finish_tiled(args.tile);
+                simulation.finish_tiled(tile);
             } else {
                 let progress = progress_bar(scene.polygons.len());
                 while simulation.draw_next(&mut Unobserved).is_some() {

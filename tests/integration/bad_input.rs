@@ -117,4 +117,14 @@ fn usage_errors_exit_with_2() {
     let run = zsim_in(None, &["run", "examples/rogers.json", "--format", "xml"]);
     assert_eq!(run.code, 2);
     assert_eq!(run.stdout, "");
+    // Options that would otherwise be ignored say what they need.
+    let run = zsim_in(None, &["run", "examples/rogers.json", "--inside", "arc"]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert_eq!(run.stderr, "zsim: --inside chooses the point-in-polygon test of --order pixels; add --order pixels\n");
+    let run = zsim_in(None, &["run", "examples/rogers.json", "--tile", "8"]);
+    assert_eq!(run.code, 2);
+    assert_eq!(
+        run.stderr,
+        "zsim: --tile applies to --format none (the other formats show the state after each polygon)\n"
+    );
 }
