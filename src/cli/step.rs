@@ -372,6 +372,12 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
     if !record.pixels.is_empty() {
         text.push_str(&format!("{}\n", pixel_table(scene, &record.pixels, color)));
     }
+    if let zsim::arith::Arith::Fixed(bits) = tracer.arith {
+        text.push_str(&format!(
+            "in fixed:{bits} arithmetic the vertices are first snapped to multiples of 1/{}, then these exact rules run on the snapped polygon (`zsim run --arith fixed:{bits}` shows the result)\n",
+            1u64 << bits
+        ));
+    }
     if let Some(float) = zsim::arith::float_scanline(scene, p, record.row, tracer.arith) {
         let crossings: Vec<String> = float.crossings.iter().map(|x| format!("{x:.9}")).collect();
         let pixels: Vec<String> = float
