@@ -76,6 +76,18 @@ impl Buffers {
         }
     }
 
+    /// How many framebuffer cells and how many z-buffer cells differ from
+    /// `other`'s (buffers of the same size and kind).
+    pub fn differences(&self, other: &Buffers) -> (u64, u64) {
+        let frame = self.frame.iter().zip(&other.frame).filter(|(a, b)| a != b).count() as u64;
+        let depth = match (&self.depth, &other.depth) {
+            (DepthCells::Levels(a), DepthCells::Levels(b)) => a.iter().zip(b).filter(|(x, y)| x != y).count(),
+            (DepthCells::Exact(a), DepthCells::Exact(b)) => a.iter().zip(b).filter(|(x, y)| x != y).count(),
+            _ => self.depth.len(),
+        } as u64;
+        (frame, depth)
+    }
+
     /// The framebuffer as rows, top row (y = height − 1) first.
     pub fn frame_rows(&self) -> Vec<Vec<u32>> {
         rows_top_first(&self.frame, self.width)
@@ -117,6 +129,15 @@ fn rows_top_first<T: Clone>(cells: &[T], width: u32) -> Vec<Vec<T>> {
     cells.chunks_exact(width as usize).rev().map(<[T]>::to_vec).collect()
 }
 
+impl DepthCells {
+    fn len(&self) -> usize {
+        match self {
+            DepthCells::Levels(cells) => cells.len(),
+            DepthCells::Exact(cells) => cells.len(),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -127,5 +148,6 @@ mod tests {
         buffers.store(0, 0, 7, Stored::Level(9));
         assert_eq!(buffers.frame_rows(), vec![vec![0, 0, 0], vec![7, 0, 0]]);
         assert_eq!(buffers.depth_rows()[1][0], Stored::Level(9));
+        assert_eq!(buffers.differences(&Buffers::new(3, 2, 0, Stored::Level(0))), (1, 1));
     }
 }

@@ -144,11 +144,6 @@ impl<'s> Simulation<'s> {
         self.stats
     }
 
-    /// The index of the polygon the next [`Simulation::draw_next`] draws.
-    pub fn next_index(&self) -> usize {
-        self.next
-    }
-
     /// Draws the next polygon; returns its index, or `None` when all are done.
     pub fn draw_next<O: Observer>(&mut self, observer: &mut O) -> Option<usize> {
         let index = self.next;

@@ -257,14 +257,7 @@ fn run_inexact(
         Format::Text => {
             // Only the text report compares with exact, so timing a mode runs that mode alone.
             let (exact, _) = zsim::arith::run(scene, Arith::Exact)?;
-            let differing = |f: &dyn Fn(&zsim::buffer::Buffers, u32, u32) -> bool| -> usize {
-                (0..scene.height)
-                    .flat_map(|y| (0..scene.width).map(move |x| (x, y)))
-                    .filter(|&(x, y)| f(&buffers, x, y))
-                    .count()
-            };
-            let frame_cells = differing(&|b, x, y| b.frame(x, y) != exact.frame(x, y));
-            let depth_cells = differing(&|b, x, y| b.depth(x, y) != exact.depth(x, y));
+            let (frame_cells, depth_cells) = buffers.differences(&exact);
             let style = MatrixStyle { axes: args.axes, color: super::use_color(), ..MatrixStyle::default() };
             emit(
                 out,

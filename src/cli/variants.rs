@@ -46,10 +46,8 @@ fn matrices(buffers: &Buffers, what: &str, axes: bool) -> String {
 
 /// Whether two runs left the same buffers, in words.
 fn comparison(ours: &Buffers, plain: &Buffers) -> String {
-    let cells = |b: &Buffers| (b.frame_rows(), b.depth_rows());
-    let (a, b) = (cells(ours), cells(plain));
-    let differing = a.0.iter().flatten().zip(b.0.iter().flatten()).filter(|(x, y)| x != y).count()
-        + a.1.iter().flatten().zip(b.1.iter().flatten()).filter(|(x, y)| x != y).count();
+    let (frame, depth) = ours.differences(plain);
+    let differing = frame + depth;
     if differing == 0 {
         "identical to the plain z-buffer's (framebuffer and z-buffer)".to_string()
     } else {
