@@ -35,6 +35,8 @@ struct CoreOnly<'a> {
 }
 
 impl RasterSink for CoreOnly<'_> {
+    const OBSERVES_SCANLINES: bool = false;
+
     fn scanline(&mut self, _row: u32, _crossings: &[Crossing], _spans: &[Span]) {}
 
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {

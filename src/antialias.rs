@@ -150,6 +150,8 @@ struct Covered {
 }
 
 impl RasterSink for Covered {
+    const OBSERVES_SCANLINES: bool = false;
+
     fn scanline(&mut self, _row: u32, _crossings: &[Crossing], _spans: &[Span]) {}
 
     fn pixel(&mut self, x: u32, y: u32, _depth: Depth) {

@@ -5,7 +5,7 @@ use std::cmp::Ordering;
 
 use serde::{Deserialize, Serialize};
 
-use crate::exact::{Q, cmp_fractions, exact_and_places, floor_div};
+use crate::exact::{Q, Word, cmp_fractions, exact_and_places, floor_div};
 use crate::plane::Geometry;
 use crate::rules::DepthStore;
 
@@ -198,32 +198,36 @@ impl Depth {
 /// The exact depth along one scanline, stepped from pixel to pixel by the
 /// seed's increment `z₁ = z − a/c` using a whole part and a remainder
 /// (Bresenham-style), so no division happens per pixel and the result is
-/// identical to evaluating the plane at every centre.
+/// identical to evaluating the plane at every centre. `W` is the machine
+/// integer the polygon runs on ([`Word`]).
 #[derive(Debug, Clone, Copy)]
-pub struct DepthStepper {
-    depth: Depth,
-    step_whole: i128,
-    step_remainder: i128,
+pub struct DepthStepper<W = i128> {
+    whole: W,
+    remainder: W,
+    denominator: W,
+    step_whole: W,
+    step_remainder: W,
 }
 
 /// A polygon's plane prepared for stepping: the step per pixel split once
 /// into whole part and remainder, and the depth numerator at any centre by
 /// multiplication only.
 #[derive(Debug, Clone, Copy)]
-pub struct DepthPlane {
+pub struct DepthPlane<W = i128> {
     /// −a, b and the constant of `N = c·Z₁ − a(X − X₁) − b(Y − Y₁)`, signs folded so the denominator is positive.
-    minus_a: i128,
-    minus_b: i128,
-    constant: i128,
-    denominator: i128,
-    half_unit: i128,
-    step_whole: i128,
-    step_remainder: i128,
+    minus_a: W,
+    minus_b: W,
+    constant: W,
+    denominator: W,
+    half_unit: W,
+    step_whole: W,
+    step_remainder: W,
 }
 
-impl DepthPlane {
-    /// Prepares a polygon whose Newell `c` is non-zero.
-    pub fn new(geometry: &Geometry) -> DepthPlane {
+impl<W: Word> DepthPlane<W> {
+    /// Prepares a polygon whose Newell `c` is non-zero (for `W = i64`, one
+    /// that [`Geometry::fits_i64`]).
+    pub fn new(geometry: &Geometry) -> DepthPlane<W> {
         let [a, b, c] = geometry.normal;
         debug_assert!(c != 0, "depth of an edge-on polygon: please report this bug");
         let [x1, y1, z1] = geometry.points[0];
@@ -231,30 +235,53 @@ impl DepthPlane {
         let denominator = c * geometry.scale() * sign;
         let (minus_a, minus_b) = (-a * sign, -b * sign);
         let constant = (c * z1 + a * x1 + b * y1) * sign;
-        let (step_whole, step_remainder) = floor_div(minus_a * 2 * geometry.denominator, denominator);
+        let denominator = W::narrow(denominator);
+        let (step_whole, step_remainder) = W::narrow(minus_a * 2 * geometry.denominator).floor_div(denominator);
         DepthPlane {
-            minus_a,
-            minus_b,
-            constant,
+            minus_a: W::narrow(minus_a),
+            minus_b: W::narrow(minus_b),
+            constant: W::narrow(constant),
             denominator,
-            half_unit: geometry.denominator,
+            half_unit: W::narrow(geometry.denominator),
             step_whole,
             step_remainder,
         }
     }
 
-    /// A stepper at the centre of pixel `column` on the scanline at scaled height `scan_y`;
-    /// identical to [`DepthStepper::start`].
+    /// The part of the depth numerator that depends on the row: its value at
+    /// `X = 0` on the scanline at scaled height `scan_y`.
     #[inline]
-    pub fn start(&self, column: i128, scan_y: i128) -> DepthStepper {
-        let centre_x = (2 * column + 1) * self.half_unit;
-        let numerator = self.constant + self.minus_a * centre_x + self.minus_b * scan_y;
-        let (whole, remainder) = floor_div(numerator, self.denominator);
+    pub fn row_numerator(&self, scan_y: W) -> W {
+        self.constant + self.minus_b * scan_y
+    }
+
+    /// What [`DepthPlane::row_numerator`] gains from one row to the next (2D in y).
+    #[inline]
+    pub fn row_step(&self) -> W {
+        self.minus_b * (self.half_unit + self.half_unit)
+    }
+
+    /// A stepper at the centre of pixel `column` on the row whose
+    /// [`DepthPlane::row_numerator`] is `row_numerator`.
+    #[inline]
+    pub fn start_at(&self, row_numerator: W, column: u32) -> DepthStepper<W> {
+        let column = W::narrow(i128::from(column));
+        let centre_x = (column + column + W::ONE) * self.half_unit;
+        let (whole, remainder) = (row_numerator + self.minus_a * centre_x).floor_div(self.denominator);
         DepthStepper {
-            depth: Depth { whole, remainder, denominator: self.denominator },
+            whole,
+            remainder,
+            denominator: self.denominator,
             step_whole: self.step_whole,
             step_remainder: self.step_remainder,
         }
+    }
+
+    /// A stepper at the centre of pixel `column` on the scanline at scaled
+    /// height `scan_y`; identical to [`DepthStepper::start`].
+    #[inline]
+    pub fn start(&self, column: u32, scan_y: W) -> DepthStepper<W> {
+        self.start_at(self.row_numerator(scan_y), column)
     }
 }
 
@@ -277,27 +304,36 @@ impl DepthStepper {
         let step = -a * 2 * geometry.denominator;
         let step = if denominator < 0 { -step } else { step };
         let (step_whole, step_remainder) = floor_div(step, depth.denominator);
-        DepthStepper { depth, step_whole, step_remainder }
+        DepthStepper {
+            whole: depth.whole,
+            remainder: depth.remainder,
+            denominator: depth.denominator,
+            step_whole,
+            step_remainder,
+        }
     }
+}
 
+impl<W: Word> DepthStepper<W> {
     /// The state as `(whole, remainder, denominator, step whole, step remainder)`.
-    pub fn parts(&self) -> (i128, i128, i128, i128, i128) {
-        (self.depth.whole, self.depth.remainder, self.depth.denominator, self.step_whole, self.step_remainder)
+    pub fn parts(&self) -> (W, W, W, W, W) {
+        (self.whole, self.remainder, self.denominator, self.step_whole, self.step_remainder)
     }
 
     /// The depth at the current pixel centre.
+    #[inline]
     pub fn current(&self) -> Depth {
-        self.depth
+        Depth { whole: self.whole.wide(), remainder: self.remainder.wide(), denominator: self.denominator.wide() }
     }
 
     /// Moves one pixel to the right.
     #[inline]
     pub fn advance(&mut self) {
-        self.depth.whole += self.step_whole;
-        self.depth.remainder += self.step_remainder;
-        if self.depth.remainder >= self.depth.denominator {
-            self.depth.remainder -= self.depth.denominator;
-            self.depth.whole += 1;
+        self.whole += self.step_whole;
+        self.remainder += self.step_remainder;
+        if self.remainder >= self.denominator {
+            self.remainder -= self.denominator;
+            self.whole += W::ONE;
         }
     }
 }
@@ -381,9 +417,14 @@ mod tests {
         for row in 0..32i128 {
             let scan_y = (2 * row + 1) * geometry.denominator;
             let mut stepper = DepthStepper::start(&geometry, 0, scan_y);
-            let plane = DepthPlane::new(&geometry);
+            let plane = DepthPlane::<i128>::new(&geometry);
+            let narrow = DepthPlane::<i64>::new(&geometry);
             for column in 0..32i128 {
-                assert_eq!(plane.start(column, scan_y).current(), {
+                assert_eq!(
+                    narrow.start(column as u32, scan_y as i64).current(),
+                    plane.start(column as u32, scan_y).current()
+                );
+                assert_eq!(plane.start(column as u32, scan_y).current(), {
                     let mut fresh = DepthStepper::start(&geometry, column, scan_y);
                     let depth = fresh.current();
                     fresh.advance();

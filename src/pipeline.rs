@@ -2,11 +2,14 @@
 //! half-interval scanlines, its covered centres depth-tested and stored,
 //! with only the stages the scene asks for.
 
+use std::hint::select_unpredictable;
+
 use crate::buffer::Buffers;
 use crate::depth::{Depth, DepthPlane, DepthStepper, DepthTest, Stored};
+use crate::exact::Word;
 use crate::plane::Geometry;
 use crate::rules::Rules;
-use crate::scan::{self, Crossing, Span};
+use crate::scan::{self, Crossing, RowCrossing, Span};
 use crate::scene::{Polygon, Scene, Winding};
 use crate::stages::{PixelStages, Plain, StageSet, WithEffects};
 use crate::trace::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};
@@ -22,17 +25,29 @@ pub struct Stats {
     pub written: u64,
 }
 
-/// Reusable space for the crossings and spans of one scanline, so the
+/// Reusable space for the edges, crossings and spans of one polygon, so the
 /// rasterizer allocates nothing per row.
 #[derive(Debug, Clone, Default)]
 pub struct Scratch {
-    edges: scan::EdgeTable,
+    narrow: Walk<i64>,
+    wide: Walk<i128>,
     crossings: Vec<Crossing>,
     spans: Vec<Span>,
 }
 
+/// The edge table and one row's crossings, in one machine word.
+#[derive(Debug, Clone, Default)]
+struct Walk<W> {
+    edges: scan::EdgeTable<W>,
+    row: Vec<RowCrossing<W>>,
+}
+
 /// Receives what [`rasterize`] finds.
 pub trait RasterSink {
+    /// Whether [`RasterSink::scanline`] does anything; when not, the rasterizer
+    /// does not build the crossings and spans it would be given.
+    const OBSERVES_SCANLINES: bool = true;
+
     /// A row's crossings (sorted) and spans.
     fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]);
     /// A covered pixel centre and the exact depth of the polygon's plane there.
@@ -41,7 +56,7 @@ pub trait RasterSink {
     /// The covered centres `first ..= last` of `row`, left to right, with the
     /// depth stepped from the first; by default one [`RasterSink::pixel`] each.
     #[inline]
-    fn span(&mut self, row: u32, first: u32, last: u32, mut stepper: DepthStepper) {
+    fn span<W: Word>(&mut self, row: u32, first: u32, last: u32, mut stepper: DepthStepper<W>) {
         for x in first..=last {
             self.pixel(x, row, stepper.current());
             stepper.advance();
@@ -70,33 +85,63 @@ impl PixelRect {
 /// for each covered pixel centre, left to right, (x, y) and the exact depth
 /// there. This is the one rasterizer; everything else (the depth test,
 /// effects, stepping, explaining, supersampling) observes it.
-pub fn rasterize(
+///
+/// It runs on 64-bit integers when the polygon's values fit them
+/// ([`Geometry::fits_i64`]) and on 128-bit integers otherwise; the same code
+/// either way ([`Word`]), with the same results.
+pub fn rasterize<S: RasterSink>(
     geometry: &Geometry,
     rules: Rules,
     rect: PixelRect,
     scratch: &mut Scratch,
-    sink: &mut impl RasterSink,
+    sink: &mut S,
 ) {
-    let Some(rows) = scan::rows(&geometry.points, geometry.denominator, rect.rows, rules.rows) else {
+    let Scratch { narrow, wide, crossings, spans } = scratch;
+    if geometry.fits_i64() {
+        rasterize_in(geometry, rules, rect, narrow, (crossings, spans), sink);
+    } else {
+        rasterize_in(geometry, rules, rect, wide, (crossings, spans), sink);
+    }
+}
+
+fn rasterize_in<W: Word, S: RasterSink>(
+    geometry: &Geometry,
+    rules: Rules,
+    rect: PixelRect,
+    walk: &mut Walk<W>,
+    events: (&mut Vec<Crossing>, &mut Vec<Span>),
+    sink: &mut S,
+) {
+    let Some(rows) = walk.edges.prepare(&geometry.points, geometry.denominator, rect.rows, (rules.rows, rules.columns))
+    else {
         return;
     };
-    scratch.edges.prepare(&geometry.points, geometry.denominator, &rows, rules.rows);
-    let plane = DepthPlane::new(geometry);
+    let plane = DepthPlane::<W>::new(geometry);
+    let mut row_numerator = plane.row_numerator(W::narrow(scan::scanline_y(*rows.start(), geometry.denominator)));
+    let row_step = plane.row_step();
     for row in rows {
-        let scan_y = scan::scanline_y(row, geometry.denominator);
-        scratch.edges.crossings(row, &mut scratch.crossings);
-        scan::spans(
-            &scratch.crossings,
-            geometry.denominator,
-            rect.columns,
-            (rules.rows, rules.columns),
-            &mut scratch.spans,
-        );
-        sink.scanline(row, &scratch.crossings, &scratch.spans);
-        for span in &scratch.spans {
-            let Some((first, last)) = span.columns else { continue };
-            sink.span(row, first, last, plane.start(i128::from(first), scan_y));
+        walk.edges.crossings(row, rules.columns, &mut walk.row);
+        let found = &walk.row;
+        let pairs = scan::pairs(found.len(), rules.rows);
+        let columns =
+            |(i, j): (usize, usize)| scan::clip_columns(found[i].first_column, found[j].last_column, rect.columns);
+        if S::OBSERVES_SCANLINES {
+            let (crossings, spans) = (&mut *events.0, &mut *events.1);
+            crossings.clear();
+            crossings.extend(found.iter().map(RowCrossing::crossing));
+            spans.clear();
+            spans.extend(pairs.clone().map(|(i, j)| Span {
+                left: crossings[i],
+                right: crossings[j],
+                columns: columns((i, j)),
+            }));
+            sink.scanline(row, crossings, spans);
         }
+        for pair in pairs {
+            let Some((first, last)) = columns(pair) else { continue };
+            sink.span(row, first, last, plane.start_at(row_numerator, first));
+        }
+        row_numerator += row_step;
     }
 }
 
@@ -274,36 +319,43 @@ impl<O: Observer> LevelSink<'_, O> {
     /// value of the span fits: the same decisions as [`LevelSink::pixel`].
     /// Returns `false` (having done nothing) when it does not apply.
     #[inline]
-    fn span_fast(&mut self, row: u32, first: u32, last: u32, stepper: &DepthStepper) -> bool {
+    fn span_fast<W: Word>(&mut self, row: u32, first: u32, last: u32, stepper: &DepthStepper<W>) -> bool {
         const LIMIT: i128 = 1 << 61;
-        let (whole, remainder, denominator, step_whole, step_remainder) = stepper.parts();
-        let length = i128::from(last - first) + 1;
-        if O::OBSERVES_PIXELS || denominator >= LIMIT || whole.abs() + length * (step_whole.abs() + 1) >= LIMIT {
+        if O::OBSERVES_PIXELS {
             return false;
         }
-        let (mut whole, mut remainder) = (whole as i64, remainder as i64);
-        let (denominator, step_whole, step_remainder) = (denominator as i64, step_whole as i64, step_remainder as i64);
+        let (whole, remainder, denominator, step_whole, step_remainder) = stepper.parts();
+        let (Some(mut whole), Some(mut remainder), Some(denominator), Some(step_whole), Some(step_remainder)) =
+            (whole.to_i64(), remainder.to_i64(), denominator.to_i64(), step_whole.to_i64(), step_remainder.to_i64())
+        else {
+            return false;
+        };
+        // The whole parts along the span and twice a remainder must fit too:
+        // proven for a polygon that runs on 64 bits (Geometry::fits_i64), checked otherwise.
+        let length = i128::from(last - first) + 1;
+        let reach = || i128::from(whole).abs() + length * (i128::from(step_whole).abs() + 1);
+        if !W::NARROW && (i128::from(denominator) >= LIMIT || reach() >= LIMIT) {
+            return false;
+        }
         let greater = self.test == DepthTest::Greater;
-        let max = i64::from(self.depth_max);
-        let start = row as usize * self.width;
-        let (mut tested, mut written) = (0u64, 0u64);
-        for cell in start + first as usize..=start + last as usize {
-            let stored = i64::from(self.depth[cell]);
-            // z = whole + remainder/denominator with 0 ≤ remainder < denominator.
-            let passes = if greater { whole > stored || (whole == stored && remainder > 0) } else { whole < stored };
-            tested += 1;
-            if passes {
-                written += 1;
-                let rounded = whole + i64::from(2 * remainder >= denominator);
-                self.depth[cell] = rounded.clamp(0, max) as u32;
-                self.frame[cell] = self.polygon.value;
-            }
+        let (max, value) = (i64::from(self.depth_max), self.polygon.value);
+        let cells = row as usize * self.width + first as usize..=row as usize * self.width + last as usize;
+        let (tested, mut written) = (u64::from(last - first) + 1, 0u64);
+        // Branch-free: every cell is rewritten with its old or its new value.
+        for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
+            let stored = i64::from(*depth);
+            // z = whole + remainder/denominator with 0 ≤ remainder < denominator:
+            // z > stored ⇔ ⌈z⌉ > stored, and z < stored ⇔ ⌊z⌋ < stored.
+            let passes = if greater { whole + i64::from(remainder != 0) > stored } else { whole < stored };
+            let rounded = (whole + i64::from(2 * remainder >= denominator)).clamp(0, max) as u32;
+            *depth = select_unpredictable(passes, rounded, *depth);
+            *frame = select_unpredictable(passes, value, *frame);
+            written += u64::from(passes);
             whole += step_whole;
             remainder += step_remainder;
-            if remainder >= denominator {
-                remainder -= denominator;
-                whole += 1;
-            }
+            let carry = remainder >= denominator;
+            remainder -= select_unpredictable(carry, denominator, 0);
+            whole += i64::from(carry);
         }
         self.stats.tested += tested;
         self.stats.written += written;
@@ -312,8 +364,10 @@ impl<O: Observer> LevelSink<'_, O> {
 }
 
 impl<O: Observer> RasterSink for LevelSink<'_, O> {
+    const OBSERVES_SCANLINES: bool = O::OBSERVES_SCANLINES;
+
     #[inline]
-    fn span(&mut self, row: u32, first: u32, last: u32, mut stepper: DepthStepper) {
+    fn span<W: Word>(&mut self, row: u32, first: u32, last: u32, mut stepper: DepthStepper<W>) {
         if self.span_fast(row, first, last, &stepper) {
             return;
         }
@@ -369,6 +423,8 @@ struct DrawSink<'a, S, O> {
 }
 
 impl<S: PixelStages, O: Observer> RasterSink for DrawSink<'_, S, O> {
+    const OBSERVES_SCANLINES: bool = O::OBSERVES_SCANLINES;
+
     fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
         let (index, polygon) = (self.index, self.polygon);
         self.observer.scanline(&ScanlineEvent { index, polygon, row, crossings, spans });
@@ -431,5 +487,72 @@ pub fn fate(scene: &Scene, index: usize) -> Fate {
         None => Fate::EdgeOn,
         Some(winding) if scene.effects.cull == Some(winding) => Fate::Culled(winding),
         Some(_) => Fate::Drawn,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+
+    use super::*;
+    use crate::exact::Q;
+    use crate::rules::{ColumnRule, RowRule};
+
+    /// Everything a sink is told, in order.
+    #[derive(Default)]
+    struct Collect(Vec<String>);
+
+    impl RasterSink for Collect {
+        fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
+            self.0.push(format!("row {row}: {crossings:?} {spans:?}"));
+        }
+
+        fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
+            self.0.push(format!("({x}, {y}) {:?}", depth.fraction()));
+        }
+    }
+
+    fn run<W: Word>(geometry: &Geometry, rules: Rules, rect: PixelRect) -> Vec<String> {
+        let (mut walk, mut crossings, mut spans, mut sink) =
+            (Walk::<W>::default(), Vec::new(), Vec::new(), Collect::default());
+        rasterize_in(geometry, rules, rect, &mut walk, (&mut crossings, &mut spans), &mut sink);
+        sink.0
+    }
+
+    proptest! {
+        /// The 64-bit and the 128-bit words give the same crossings, spans,
+        /// pixels and depths, under every rule and in any clipping rectangle.
+        #[test]
+        fn both_words_rasterize_alike(
+            vertices in prop::collection::vec((-40i64..80, -40i64..80, 1i64..5), 3..7),
+            plane in (-9i64..10, -9i64..10, -60i64..60, 1i64..8),
+            half_open in any::<bool>(),
+            centre in any::<bool>(),
+            rect in (0u32..20, 0u32..20, 0u32..20, 0u32..20),
+        ) {
+            // A planar polygon: z = (a·x + b·y + c) / e, vertices over denominators 1 … 4,
+            // depths of both signs and with every remainder.
+            let (a, b, c, e) = plane;
+            let q = |n: i64, d: i64| Q::new(n.into(), d.into());
+            let vertices: Vec<[Q; 3]> = vertices
+                .iter()
+                .map(|&(x, y, d)| {
+                    let (x, y) = (q(x, d), q(y, d));
+                    [x, y, (x * q(a, 1) + y * q(b, 1) + q(c, 1)) / q(e, 1)]
+                })
+                .collect();
+            let Ok(geometry) = Geometry::new(&vertices) else { return Ok(()) };
+            prop_assume!(geometry.c() != 0 && geometry.fits_i64());
+            let rules = Rules {
+                rows: if half_open { RowRule::HalfOpen } else { RowRule::Closed },
+                columns: if centre { ColumnRule::CentreInside } else { ColumnRule::CellHolds },
+                ..Rules::default()
+            };
+            let rect = PixelRect {
+                columns: (rect.0.min(rect.1), rect.0.max(rect.1) + 10),
+                rows: (rect.2.min(rect.3), rect.2.max(rect.3) + 10),
+            };
+            prop_assert_eq!(run::<i64>(&geometry, rules, rect), run::<i128>(&geometry, rules, rect));
+        }
     }
 }

@@ -145,6 +145,8 @@ pub struct Geometry {
     pub points: Vec<[i128; 3]>,
     /// Newell's normal `(a, b, c)` computed on the scaled vertices.
     pub normal: [i128; 3],
+    /// Whether the rasterizer's integers fit 64 bits ([`Geometry::fits_i64`]).
+    narrow: bool,
 }
 
 impl Geometry {
@@ -183,8 +185,9 @@ impl Geometry {
             points.push(point);
         }
         let normal = newell(&points);
-        let geometry = Geometry { denominator, points, normal };
+        let mut geometry = Geometry { denominator, points, normal, narrow: false };
         geometry.check_planar()?;
+        geometry.narrow = geometry.bounds_fit_i64();
         Ok(geometry)
     }
 
@@ -203,6 +206,36 @@ impl Geometry {
     /// loops of a self-intersecting polygon cancel), so there is no plane.
     pub fn is_degenerate(&self) -> bool {
         self.normal == [0, 0, 0]
+    }
+
+    /// Whether every integer the rasterizer computes for this polygon fits
+    /// 64 bits, so that it can run on `i64` ([`crate::exact::Word`]) with the
+    /// same results. With `R` the largest `|x|`, `|y|` of a scaled vertex plus
+    /// one pixel (`2D`), so that every covered centre and scanline lies
+    /// within `±R`:
+    /// - an edge's crossing numerator (also one row past its end) is at most
+    ///   `8R² + 4RD`, and sorting multiplies it by a denominator `≤ 2R`;
+    /// - the depth numerator at a centre, `c·Z₁ − a(X − X₁) − b(Y − Y₁)`, is at
+    ///   most `|c·Z₁| + |a|(|X₁| + R) + |b|(|Y₁| + R)` plus a row's step, and its
+    ///   denominator is `|c|·2D`.
+    ///
+    /// Each of these must stay below `2^61`, which leaves room for the sums of two.
+    /// Decided once, when the geometry is made.
+    #[inline]
+    pub fn fits_i64(&self) -> bool {
+        self.narrow
+    }
+
+    fn bounds_fit_i64(&self) -> bool {
+        const LIMIT: i128 = 1 << 61;
+        let d = self.denominator;
+        let r = self.points.iter().map(|p| p[0].abs().max(p[1].abs())).max().unwrap_or(0) + 2 * d;
+        // All below 2^123 by MAX_SCALED, so none of these overflows i128.
+        let crossing = 8 * r * r + 4 * r * d;
+        let [a, b, c] = self.normal.map(i128::abs);
+        let [x1, y1, z1] = self.points[0].map(i128::abs);
+        let depth = c * z1 + a * (x1 + r) + b * (y1 + r) + (a + b) * 2 * d;
+        crossing < LIMIT && crossing * 2 * r < LIMIT && depth < LIMIT && c * 2 * d < LIMIT
     }
 
     /// The plane through vertex 1 with Newell's normal, in the polygon's own

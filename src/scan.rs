@@ -3,9 +3,10 @@
 //! [`crate::plane`]).
 
 use std::cmp::Ordering;
+use std::hint::select_unpredictable;
 use std::ops::RangeInclusive;
 
-use crate::exact::{Q, ceil_div, floor_div};
+use crate::exact::{Q, Word, ceil_div, floor_div};
 use crate::rules::{ColumnRule, RowRule};
 
 /// An x position in scaled units as the fraction `numerator / denominator`
@@ -49,6 +50,35 @@ pub fn scanline_y(row: u32, denominator: i128) -> i128 {
     (2 * i128::from(row) + 1) * denominator
 }
 
+/// The first row whose scanline lies at or above scaled height `y`:
+/// `(2r + 1)·D ≥ y  ⇔  r ≥ ⌈(y − D) / 2D⌉`. An edge or polygon whose lower
+/// end is at `y` starts there.
+#[inline]
+fn first_row_from<W: Word>(y: W, denominator: W) -> W {
+    (y - denominator).ceil_div(denominator + denominator)
+}
+
+/// The last row whose scanline an edge or polygon whose upper end is at
+/// scaled height `y` reaches: `(2r + 1)·D < y` ([`RowRule::HalfOpen`]) or
+/// `≤ y` ([`RowRule::Closed`]).
+#[inline]
+fn last_row_to<W: Word>(y: W, denominator: W, rule: RowRule) -> W {
+    match rule {
+        // r < (y − D) / 2D  ⇔  r ≤ ⌈(y − D) / 2D⌉ − 1
+        RowRule::HalfOpen => (y - denominator).ceil_div(denominator + denominator) - W::ONE,
+        // r ≤ ⌊(y − D) / 2D⌋
+        RowRule::Closed => (y - denominator).floor_div(denominator + denominator).0,
+    }
+}
+
+/// The rows `first ..= last` clipped to `limit`, or `None` when empty.
+#[inline]
+fn clip_rows<W: Word>(first: W, last: W, limit: (u32, u32)) -> Option<RangeInclusive<u32>> {
+    let first = first.max(W::narrow(i128::from(limit.0)));
+    let last = last.min(W::narrow(i128::from(limit.1)));
+    (first <= last).then(|| first.wide() as u32..=last.wide() as u32)
+}
+
 /// The rows whose scanlines can meet the polygon, clipped to `limit`
 /// (first and last row, inclusive):
 /// those with `y_min ≤ row + 1/2 < y_max` (half-open), or
@@ -56,16 +86,7 @@ pub fn scanline_y(row: u32, denominator: i128) -> i128 {
 pub fn rows(points: &[[i128; 3]], denominator: i128, limit: (u32, u32), rule: RowRule) -> Option<RangeInclusive<u32>> {
     let y_min = points.iter().map(|p| p[1]).min()?;
     let y_max = points.iter().map(|p| p[1]).max()?;
-    // (2r + 1)·D ≥ y_min  ⇔  r ≥ ⌈(y_min − D) / 2D⌉
-    let first = ceil_div(y_min - denominator, 2 * denominator).max(i128::from(limit.0));
-    let last = match rule {
-        // (2r + 1)·D < y_max  ⇔  r < (y_max − D) / 2D  ⇔  r ≤ ⌈(y_max − D) / 2D⌉ − 1
-        RowRule::HalfOpen => ceil_div(y_max - denominator, 2 * denominator) - 1,
-        // (2r + 1)·D ≤ y_max  ⇔  r ≤ ⌊(y_max − D) / 2D⌋
-        RowRule::Closed => floor_div(y_max - denominator, 2 * denominator).0,
-    };
-    let last = last.min(i128::from(limit.1));
-    (first <= last).then_some(first as u32..=last as u32)
+    clip_rows(first_row_from(y_min, denominator), last_row_to(y_max, denominator, rule), limit)
 }
 
 /// The crossings of the polygon's edges with the scanline at scaled height
@@ -97,80 +118,251 @@ pub fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Ve
     out.sort_unstable_by(Crossing::cmp_position);
 }
 
-/// One edge walked down the scanlines: its crossing numerator is stepped by a
-/// constant per row (Bresenham-style), so no multiplication or division is
-/// needed per row, and the result equals [`crossings`]' formula exactly.
+/// One edge walked down the scanlines. Its crossing `numerator / denominator`
+/// and the column bound `(numerator − offset·denominator) / modulus`, kept as
+/// whole part and remainder, are both stepped by a constant per row
+/// (Bresenham-style): no multiplication or division per row, and the results
+/// equal [`crossings`]' and [`columns`]' formulas exactly.
 #[derive(Debug, Clone, Copy)]
-struct WalkedEdge {
+struct WalkedEdge<W> {
     first_row: u32,
     last_row: u32,
     /// Crossing numerator at the next row to visit (over `denominator`).
-    numerator: i128,
+    numerator: W,
     /// Added per row: (x₂ − x₁)·2D.
-    step: i128,
-    denominator: i128,
+    step: W,
+    denominator: W,
+    /// ⌊(numerator − offset·denominator) / modulus⌋ and its remainder, where
+    /// `modulus = 2D·denominator` and `offset` is `D` for
+    /// [`ColumnRule::CentreInside`] (centres sit at `(2x + 1)·D`), 0 for
+    /// [`ColumnRule::CellHolds`].
+    column: W,
+    column_remainder: W,
+    modulus: W,
+    /// `step / modulus` as whole part and remainder.
+    column_step: W,
+    column_step_remainder: W,
 }
 
-/// The edges of one polygon, walked row by row in increasing order.
+/// A crossing found by the [`EdgeTable`] on one row, with the columns it
+/// bounds: a span starting at this crossing covers from `first_column`, a
+/// span ending at it covers up to `last_column`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct RowCrossing<W> {
+    /// Numerator of the crossing's x, in scaled units.
+    pub numerator: W,
+    /// Its positive denominator.
+    pub denominator: W,
+    /// The first column on or after the crossing ([`ColumnRule::CentreInside`]:
+    /// the first centre at or right of it; [`ColumnRule::CellHolds`]: the cell holding it).
+    pub first_column: W,
+    /// The last column on or before it (the last centre at or left of it, or the cell holding it).
+    pub last_column: W,
+}
+
+impl<W: Word> RowCrossing<W> {
+    /// The crossing as reported to observers.
+    pub fn crossing(&self) -> Crossing {
+        Crossing { numerator: self.numerator.wide(), denominator: self.denominator.wide() }
+    }
+
+    fn cmp_position(&self, other: &Self) -> Ordering {
+        // Below 2^107 in i128 (see Crossing), below 2^61 in i64 (Geometry::fits_i64).
+        (self.numerator * other.denominator).cmp(&(other.numerator * self.denominator))
+    }
+}
+
+/// The edges of one polygon, walked row by row in increasing order, in the
+/// machine integers `W` (see [`Word`]).
 #[derive(Debug, Clone, Default)]
-pub struct EdgeTable {
-    edges: Vec<WalkedEdge>,
+pub struct EdgeTable<W> {
+    edges: Vec<WalkedEdge<W>>,
+    points: Vec<ScaledVertex<W>>,
+    /// Indices of the edges crossing the current row.
+    active: Vec<usize>,
+    /// The first row at which `active` must be rebuilt.
+    next_change: u32,
 }
 
-impl EdgeTable {
-    /// Prepares the edges that cross any row of `rows` under `rule`.
-    pub fn prepare(&mut self, points: &[[i128; 3]], denominator: i128, rows: &RangeInclusive<u32>, rule: RowRule) {
+/// A vertex's scaled x and y, and the rows an edge starting (`from`) or
+/// ending (`to`) there reaches (see [`first_row_from`], [`last_row_to`]).
+#[derive(Debug, Clone, Copy)]
+struct ScaledVertex<W> {
+    x: W,
+    y: W,
+    from: W,
+    to: W,
+}
+
+impl<W: Word> EdgeTable<W> {
+    /// Prepares the edges of the polygon with scaled `points` that cross any
+    /// row of `limit` under `rules`; returns the rows to visit (as [`rows`]).
+    pub fn prepare(
+        &mut self,
+        points: &[[i128; 3]],
+        denominator: i128,
+        limit: (u32, u32),
+        rules: (RowRule, ColumnRule),
+    ) -> Option<RangeInclusive<u32>> {
         self.edges.clear();
-        let count = points.len();
-        for i in 0..count {
-            let (p, q) = (points[i], points[(i + 1) % count]);
-            if p[1] == q[1] {
+        self.points.clear();
+        self.next_change = 0;
+        let d = W::narrow(denominator);
+        let two_d = d + d;
+        // Per vertex, once: the first row at or above it and the last row below
+        // (or at) it, from one division.
+        self.points.extend(points.iter().map(|p| {
+            let y = W::narrow(p[1]);
+            let (whole, remainder) = (y - d).floor_div(two_d);
+            let from = select_unpredictable(remainder == W::ZERO, whole, whole + W::ONE);
+            let to = match rules.0 {
+                RowRule::HalfOpen => from - W::ONE,
+                RowRule::Closed => whole,
+            };
+            ScaledVertex { x: W::narrow(p[0]), y, from, to }
+        }));
+        let first_vertex = *self.points.first()?;
+        let (mut first, mut last) = (first_vertex.from, first_vertex.to);
+        for p in &self.points {
+            (first, last) = (first.min(p.from), last.max(p.to));
+        }
+        let rows = clip_rows(first, last, limit)?;
+        let (row_first, row_last) = (W::narrow(i128::from(*rows.start())), W::narrow(i128::from(*rows.end())));
+        let offset = match rules.1 {
+            ColumnRule::CentreInside => d,
+            ColumnRule::CellHolds => W::ZERO,
+        };
+        let mut previous = self.points[self.points.len() - 1];
+        for &vertex in &self.points {
+            let (p, q) = (previous, vertex);
+            previous = vertex;
+            if p.y == q.y {
                 continue;
             }
-            let (low, high) = if p[1] < q[1] { (p, q) } else { (q, p) };
-            // Rows whose scanline (2r + 1)·D lies in [y_low, y_high) (half-open) or [y_low, y_high] (closed).
-            let first = ceil_div(low[1] - denominator, 2 * denominator).max(i128::from(*rows.start()));
-            let last = match rule {
-                RowRule::HalfOpen => ceil_div(high[1] - denominator, 2 * denominator) - 1,
-                RowRule::Closed => floor_div(high[1] - denominator, 2 * denominator).0,
-            }
-            .min(i128::from(*rows.end()));
+            let rising = p.y < q.y;
+            let (low, high) = (select_unpredictable(rising, p, q), select_unpredictable(rising, q, p));
+            let (first, last) = (low.from.max(row_first), high.to.min(row_last));
             if first > last {
                 continue;
             }
-            let den = high[1] - low[1];
-            let scan_y = (2 * first + 1) * denominator;
+            let den = high.y - low.y;
+            let scan_y = (first + first + W::ONE) * d;
             // x = x_low + (x_high − x_low)(y − y_low)/(y_high − y_low), as one fraction.
-            let numerator = low[0] * den + (high[0] - low[0]) * (scan_y - low[1]);
-            let step = (high[0] - low[0]) * 2 * denominator;
+            let numerator = low.x * den + (high.x - low.x) * (scan_y - low.y);
+            let step = (high.x - low.x) * two_d;
+            let modulus = two_d * den;
+            let (column, column_remainder) = (numerator - offset * den).floor_div(modulus);
+            // step / modulus = (x_high − x_low) / den.
+            let (column_step, remainder) = (high.x - low.x).floor_div(den);
             self.edges.push(WalkedEdge {
-                first_row: first as u32,
-                last_row: last as u32,
+                first_row: first.wide() as u32,
+                last_row: last.wide() as u32,
                 numerator,
                 step,
                 denominator: den,
+                column,
+                column_remainder,
+                modulus,
+                column_step,
+                column_step_remainder: remainder * two_d,
             });
         }
+        Some(rows)
     }
 
-    /// The crossings on `row`, sorted; rows must be visited in increasing order.
-    pub fn crossings(&mut self, row: u32, out: &mut Vec<Crossing>) {
-        out.clear();
-        for edge in &mut self.edges {
-            if row < edge.first_row || row > edge.last_row {
-                continue;
-            }
-            out.push(Crossing { numerator: edge.numerator, denominator: edge.denominator });
-            edge.numerator += edge.step;
+    /// The crossings on `row`, sorted left to right, with the columns they
+    /// bound under `rule`; rows must be visited in increasing order, starting
+    /// at or after the first row [`EdgeTable::prepare`] returned.
+    #[inline]
+    pub fn crossings(&mut self, row: u32, rule: ColumnRule, out: &mut Vec<RowCrossing<W>>) {
+        if row >= self.next_change {
+            self.activate(row);
         }
+        out.clear();
+        for &index in &self.active {
+            let edge = &mut self.edges[index];
+            let on_centre_or_cell = match rule {
+                ColumnRule::CentreInside => edge.column_remainder == W::ZERO,
+                ColumnRule::CellHolds => true,
+            };
+            out.push(RowCrossing {
+                numerator: edge.numerator,
+                denominator: edge.denominator,
+                first_column: select_unpredictable(on_centre_or_cell, edge.column, edge.column + W::ONE),
+                last_column: edge.column,
+            });
+            edge.numerator += edge.step;
+            edge.column += edge.column_step;
+            edge.column_remainder += edge.column_step_remainder;
+            // The carry comes as often as not: chosen without a branch.
+            let carry = edge.column_remainder >= edge.modulus;
+            edge.column_remainder -= select_unpredictable(carry, edge.modulus, W::ZERO);
+            edge.column += select_unpredictable(carry, W::ONE, W::ZERO);
+        }
+        // The active edges were sorted when they became active, so this finds
+        // them in order unless two of them cross between vertices.
         if out.len() == 2 {
             if out[0].cmp_position(&out[1]) == Ordering::Greater {
                 out.swap(0, 1);
             }
         } else {
-            out.sort_unstable_by(Crossing::cmp_position);
+            out.sort_unstable_by(RowCrossing::cmp_position);
         }
     }
+
+    /// The edges that cross `row`, and the next row where that set changes
+    /// (an edge starts or ends): rows between changes step only these edges,
+    /// with no test per edge and row.
+    fn activate(&mut self, row: u32) {
+        self.active.clear();
+        self.next_change = u32::MAX;
+        for (index, edge) in self.edges.iter().enumerate() {
+            if row < edge.first_row {
+                self.next_change = self.next_change.min(edge.first_row);
+            } else if row <= edge.last_row {
+                self.active.push(index);
+                self.next_change = self.next_change.min(edge.last_row.saturating_add(1));
+            }
+        }
+        // In order of their crossings on this row (numerator over denominator).
+        let edges = &self.edges;
+        let position = |index: &usize| (edges[*index].numerator, edges[*index].denominator);
+        let order = |i: &usize, j: &usize| {
+            let ((n1, d1), (n2, d2)) = (position(i), position(j));
+            (n1 * d2).cmp(&(n2 * d1))
+        };
+        if let [first, second] = self.active[..] {
+            if order(&first, &second) == Ordering::Greater {
+                self.active.swap(0, 1);
+            }
+        } else {
+            self.active.sort_unstable_by(order);
+        }
+    }
+}
+
+/// Which sorted crossings pair into spans, as index pairs: 1st–2nd, 3rd–4th,
+/// … with [`RowRule::HalfOpen`] (an odd last crossing cannot happen for a
+/// closed polygon and is ignored), or the first with the last with
+/// [`RowRule::Closed`].
+#[inline]
+pub fn pairs(count: usize, rule: RowRule) -> impl Iterator<Item = (usize, usize)> + Clone {
+    let pairs = match rule {
+        RowRule::HalfOpen => count / 2,
+        RowRule::Closed => count.min(1),
+    };
+    (0..pairs).map(move |k| match rule {
+        RowRule::HalfOpen => (2 * k, 2 * k + 1),
+        RowRule::Closed => (0, count - 1),
+    })
+}
+
+/// The columns `first ..= last` clipped to `limit`, or `None` when empty.
+#[inline]
+pub fn clip_columns<W: Word>(first: W, last: W, limit: (u32, u32)) -> Option<(u32, u32)> {
+    let first = first.max(W::narrow(i128::from(limit.0)));
+    let last = last.min(W::narrow(i128::from(limit.1)));
+    (first <= last).then(|| (first.wide() as u32, last.wide() as u32))
 }
 
 /// The columns a span covers, clipped to `limit` (first and last column, inclusive): with
@@ -197,41 +389,7 @@ pub fn columns(
             floor_div(right.numerator, 2 * denominator * right.denominator).0,
         ),
     };
-    let first = first.max(i128::from(limit.0));
-    let last = last.min(i128::from(limit.1));
-    (first <= last).then_some((first as u32, last as u32))
-}
-
-/// Turns sorted crossings into spans: paired 1st–2nd, 3rd–4th, … with
-/// [`RowRule::HalfOpen`] (an odd last crossing cannot happen for a closed
-/// polygon and is ignored), or one span from the first to the last with
-/// [`RowRule::Closed`].
-pub fn spans(
-    crossings: &[Crossing],
-    denominator: i128,
-    limit: (u32, u32),
-    rules: (RowRule, ColumnRule),
-    out: &mut Vec<Span>,
-) {
-    out.clear();
-    let span = |left: Crossing, right: Crossing| Span {
-        left,
-        right,
-        columns: columns(left, right, denominator, limit, rules.1),
-    };
-    match rules.0 {
-        RowRule::HalfOpen => {
-            let mut pairs = crossings.chunks_exact(2);
-            for pair in &mut pairs {
-                out.push(span(pair[0], pair[1]));
-            }
-        }
-        RowRule::Closed => {
-            if let (Some(first), Some(last)) = (crossings.first(), crossings.last()) {
-                out.push(span(*first, *last));
-            }
-        }
-    }
+    clip_columns(first, last, limit)
 }
 
 #[cfg(test)]
@@ -308,23 +466,49 @@ mod tests {
         assert_eq!(columns(beyond, right, 1, (0, 31), ColumnRule::CentreInside), None);
     }
 
+    /// The walker's crossings and column bounds, in both machine words, equal
+    /// the formulas ([`crossings`], [`columns`]) on every row and every rule.
+    fn check_walker<W: Word>(points: &[[i128; 3]], denominator: i128, limit: (u32, u32)) {
+        for row_rule in [RowRule::HalfOpen, RowRule::Closed] {
+            for column_rule in [ColumnRule::CentreInside, ColumnRule::CellHolds] {
+                let mut table = EdgeTable::<W>::default();
+                let prepared = table.prepare(points, denominator, limit, (row_rule, column_rule));
+                assert_eq!(prepared, rows(points, denominator, limit, row_rule));
+                let (mut walked, mut direct) = (Vec::new(), Vec::new());
+                for row in prepared.into_iter().flatten() {
+                    table.crossings(row, column_rule, &mut walked);
+                    crossings(points, scanline_y(row, denominator), row_rule, &mut direct);
+                    let scale = 2 * denominator;
+                    let as_q = |v: &[Crossing]| v.iter().map(|c| c.x(scale)).collect::<Vec<_>>();
+                    let walked_crossings: Vec<Crossing> = walked.iter().map(RowCrossing::crossing).collect();
+                    assert_eq!(as_q(&walked_crossings), as_q(&direct), "row {row}, {row_rule:?}");
+                    let by_walker: Vec<_> = pairs(walked.len(), row_rule)
+                        .map(|(i, j)| clip_columns(walked[i].first_column, walked[j].last_column, (0, 31)))
+                        .collect();
+                    let by_formula: Vec<_> = pairs(direct.len(), row_rule)
+                        .map(|(i, j)| columns(direct[i], direct[j], denominator, (0, 31), column_rule))
+                        .collect();
+                    assert_eq!(by_walker, by_formula, "row {row}, {row_rule:?}, {column_rule:?}");
+                }
+            }
+        }
+    }
+
     #[test]
-    fn walked_edges_give_the_formulas_crossings() {
+    fn walked_edges_give_the_formulas_crossings_and_columns() {
         // A concave, self-crossing polygon with fractional vertices (scaled by 2D = 6).
         let points: Vec<[i128; 3]> =
             [[3, 1], [40, 7], [22, 25], [31, 45], [-4, 30], [9, 13]].iter().map(|p| [p[0], p[1], 0]).collect();
-        for rule in [RowRule::HalfOpen, RowRule::Closed] {
-            let rows = rows(&points, 3, (0, 31), rule).unwrap();
-            let mut table = EdgeTable::default();
-            table.prepare(&points, 3, &rows, rule);
-            let (mut walked, mut direct) = (Vec::new(), Vec::new());
-            for row in rows {
-                table.crossings(row, &mut walked);
-                crossings(&points, scanline_y(row, 3), rule, &mut direct);
-                let as_q = |v: &[Crossing]| v.iter().map(|c| c.x(6)).collect::<Vec<_>>();
-                assert_eq!(as_q(&walked), as_q(&direct), "row {row}, {rule:?}");
-            }
+        for limit in [(0, 31), (3, 5)] {
+            check_walker::<i64>(&points, 3, limit);
+            check_walker::<i128>(&points, 3, limit);
         }
+        // Vertices on centres and on half-pixel lines (D = 1): crossings land exactly on centres.
+        let on_lines = scaled(&[[1, 0], [9, 4], [5, 12], [0, 7]]);
+        check_walker::<i64>(&on_lines, 1, (0, 31));
+        check_walker::<i128>(&on_lines, 1, (0, 31));
+        let half: Vec<[i128; 3]> = [[1, 1], [19, 9], [3, 25]].iter().map(|p| [p[0], p[1], 0]).collect();
+        check_walker::<i64>(&half, 1, (0, 31));
     }
 
     #[test]

@@ -15,6 +15,9 @@ pub trait Observer {
     /// Whether this observer looks at pixel events at all; the rasterizer
     /// skips building them (and may take a faster inner loop) when not.
     const OBSERVES_PIXELS: bool = true;
+    /// Whether this observer looks at scanline events; the rasterizer skips
+    /// building their crossings and spans when not.
+    const OBSERVES_SCANLINES: bool = true;
 
     /// A polygon is about to be drawn (or skipped, see [`Fate`]).
     fn polygon(&mut self, _event: &PolygonEvent<'_>) {}
@@ -31,6 +34,7 @@ pub struct Unobserved;
 
 impl Observer for Unobserved {
     const OBSERVES_PIXELS: bool = false;
+    const OBSERVES_SCANLINES: bool = false;
 }
 
 /// What happens to a polygon as a whole.

@@ -138,6 +138,8 @@ struct SegmentSink<'a> {
 }
 
 impl RasterSink for SegmentSink<'_> {
+    const OBSERVES_SCANLINES: bool = false;
+
     fn scanline(&mut self, _row: u32, _crossings: &[Crossing], _spans: &[Span]) {}
 
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
@@ -407,6 +409,8 @@ struct CollectSink<'a> {
 }
 
 impl RasterSink for CollectSink<'_> {
+    const OBSERVES_SCANLINES: bool = false;
+
     fn scanline(&mut self, _row: u32, _crossings: &[Crossing], _spans: &[Span]) {}
 
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {

@@ -169,8 +169,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 simulation.finish_tiled(tile);
             } else {
                 let progress = progress_bar(scene.polygons.len());
-                while simulation.draw_next(&mut Unobserved).is_some() {
-                    progress.inc(1);
+                // The bar moves every 1024 polygons, so that it costs nothing per polygon.
+                for first in (0..scene.polygons.len()).step_by(1024) {
+                    let last = (first + 1024).min(scene.polygons.len()) - 1;
+                    simulation.draw_through(last, &mut Unobserved);
+                    progress.set_position(last as u64 + 1);
                 }
                 progress.finish_and_clear();
             }
