@@ -211,13 +211,17 @@ pub struct DepthStepper<W = i128> {
 
 /// A polygon's plane prepared for stepping: the step per pixel split once
 /// into whole part and remainder, and the depth numerator at any centre by
-/// multiplication only.
+/// multiplication only, measured from vertex 1 so that the products stay as
+/// small as the polygon (see [`Geometry::fits_i64`]).
 #[derive(Debug, Clone, Copy)]
 pub struct DepthPlane<W = i128> {
-    /// −a, b and the constant of `N = c·Z₁ − a(X − X₁) − b(Y − Y₁)`, signs folded so the denominator is positive.
+    /// −a, −b and `c·Z₁` of `N = c·Z₁ − a(X − X₁) − b(Y − Y₁)`, signs folded so the denominator `c·2D` is positive.
     minus_a: W,
     minus_b: W,
-    constant: W,
+    at_first_vertex: W,
+    /// `X₁` and `Y₁`, vertex 1's scaled x and y.
+    x1: W,
+    y1: W,
     denominator: W,
     half_unit: W,
     step_whole: W,
@@ -232,15 +236,15 @@ impl<W: Word> DepthPlane<W> {
         debug_assert!(c != 0, "depth of an edge-on polygon: please report this bug");
         let [x1, y1, z1] = geometry.points[0];
         let sign = if c < 0 { -1 } else { 1 };
-        let denominator = c * geometry.scale() * sign;
-        let (minus_a, minus_b) = (-a * sign, -b * sign);
-        let constant = (c * z1 + a * x1 + b * y1) * sign;
-        let denominator = W::narrow(denominator);
+        let denominator = W::narrow(c * geometry.scale() * sign);
+        let minus_a = -a * sign;
         let (step_whole, step_remainder) = W::narrow(minus_a * 2 * geometry.denominator).floor_div(denominator);
         DepthPlane {
             minus_a: W::narrow(minus_a),
-            minus_b: W::narrow(minus_b),
-            constant: W::narrow(constant),
+            minus_b: W::narrow(-b * sign),
+            at_first_vertex: W::narrow(c * z1 * sign),
+            x1: W::narrow(x1),
+            y1: W::narrow(y1),
             denominator,
             half_unit: W::narrow(geometry.denominator),
             step_whole,
@@ -249,10 +253,10 @@ impl<W: Word> DepthPlane<W> {
     }
 
     /// The part of the depth numerator that depends on the row: its value at
-    /// `X = 0` on the scanline at scaled height `scan_y`.
+    /// `X = X₁` on the scanline at scaled height `scan_y`.
     #[inline]
     pub fn row_numerator(&self, scan_y: W) -> W {
-        self.constant + self.minus_b * scan_y
+        self.at_first_vertex + self.minus_b * (scan_y - self.y1)
     }
 
     /// What [`DepthPlane::row_numerator`] gains from one row to the next (2D in y).
@@ -267,7 +271,7 @@ impl<W: Word> DepthPlane<W> {
     pub fn start_at(&self, row_numerator: W, column: u32) -> DepthStepper<W> {
         let column = W::narrow(i128::from(column));
         let centre_x = (column + column + W::ONE) * self.half_unit;
-        let (whole, remainder) = (row_numerator + self.minus_a * centre_x).floor_div(self.denominator);
+        let (whole, remainder) = (row_numerator + self.minus_a * (centre_x - self.x1)).floor_div(self.denominator);
         DepthStepper {
             whole,
             remainder,

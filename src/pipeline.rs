@@ -193,6 +193,11 @@ impl<'s> Simulation<'s> {
     pub fn draw_next<O: Observer>(&mut self, observer: &mut O) -> Option<usize> {
         let index = self.next;
         let polygon = self.scene.polygons.get(index)?;
+        // Each polygon's vertices live in their own allocation: ask for those
+        // of a polygon a few steps ahead, so that they are in cache when drawn.
+        if let Some(ahead) = self.scene.polygons.get(index + 4) {
+            prefetch(ahead.geometry.points.as_ptr());
+        }
         self.next += 1;
         self.stats.polygons += 1;
         let fate = fate(self.scene, index);
@@ -262,7 +267,16 @@ impl<'s> Simulation<'s> {
                     columns: (tx * tile, ((tx + 1) * tile).min(scene.width) - 1),
                     rows: (ty * tile, ((ty + 1) * tile).min(scene.height) - 1),
                 };
-                for &index in &bins[(ty * tiles_x + tx) as usize] {
+                let bin = &bins[(ty * tiles_x + tx) as usize];
+                for (k, &index) in bin.iter().enumerate() {
+                    // The polygons of a tile lie far apart in memory: ask for the
+                    // ones a few steps ahead while this one is drawn.
+                    if let Some(&ahead) = bin.get(k + 4) {
+                        prefetch(&scene.polygons[ahead as usize].geometry);
+                    }
+                    if let Some(&ahead) = bin.get(k + 2) {
+                        prefetch(scene.polygons[ahead as usize].geometry.points.as_ptr());
+                    }
                     let polygon = &scene.polygons[index as usize];
                     let mut sink = LevelSink {
                         index: index as usize,
@@ -471,6 +485,20 @@ fn pixel_bounds(geometry: &Geometry, width: u32, height: u32) -> Option<PixelRec
         return None;
     }
     Some(PixelRect { columns: (clamp(c0, width), clamp(c1, width)), rows: (clamp(r0, height), clamp(r1, height)) })
+}
+
+/// Asks the processor to bring the memory at `data` into its cache (a hint;
+/// nothing on processors without one).
+#[inline]
+fn prefetch<T>(data: *const T) {
+    // SAFETY: a prefetch is only a hint: it reads nothing the program sees and
+    // cannot fault, whatever the address; SSE is part of every x86-64 processor.
+    #[cfg(target_arch = "x86_64")]
+    unsafe {
+        std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(data.cast());
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = data;
 }
 
 /// Whether polygon `index` is drawn, and if not, why.

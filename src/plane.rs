@@ -210,14 +210,15 @@ impl Geometry {
 
     /// Whether every integer the rasterizer computes for this polygon fits
     /// 64 bits, so that it can run on `i64` ([`crate::exact::Word`]) with the
-    /// same results. With `R` the largest `|x|`, `|y|` of a scaled vertex plus
-    /// one pixel (`2D`), so that every covered centre and scanline lies
-    /// within `±R`:
+    /// same results. Every covered centre and scanline lies within one pixel
+    /// (`2D`) of the polygon's bounding box. With `R` the largest `|x|`, `|y|`
+    /// of a scaled vertex plus `2D`, and `Δx`, `Δy` the largest distances of a
+    /// vertex from vertex 1 plus `4D`:
     /// - an edge's crossing numerator (also one row past its end) is at most
     ///   `8R² + 4RD`, and sorting multiplies it by a denominator `≤ 2R`;
     /// - the depth numerator at a centre, `c·Z₁ − a(X − X₁) − b(Y − Y₁)`, is at
-    ///   most `|c·Z₁| + |a|(|X₁| + R) + |b|(|Y₁| + R)` plus a row's step, and its
-    ///   denominator is `|c|·2D`.
+    ///   most `|c·Z₁| + |a|·Δx + |b|·Δy` plus a row's and a column's step
+    ///   `(|a| + |b|)·2D`, and its denominator is `|c|·2D`.
     ///
     /// Each of these must stay below `2^61`, which leaves room for the sums of two.
     /// Decided once, when the geometry is made.
@@ -230,11 +231,13 @@ impl Geometry {
         const LIMIT: i128 = 1 << 61;
         let d = self.denominator;
         let r = self.points.iter().map(|p| p[0].abs().max(p[1].abs())).max().unwrap_or(0) + 2 * d;
+        let [x1, y1, z1] = self.points[0];
+        let reach =
+            |axis: usize, first: i128| self.points.iter().map(|p| (p[axis] - first).abs()).max().unwrap_or(0) + 4 * d;
         // All below 2^123 by MAX_SCALED, so none of these overflows i128.
         let crossing = 8 * r * r + 4 * r * d;
         let [a, b, c] = self.normal.map(i128::abs);
-        let [x1, y1, z1] = self.points[0].map(i128::abs);
-        let depth = c * z1 + a * (x1 + r) + b * (y1 + r) + (a + b) * 2 * d;
+        let depth = c * z1.abs() + a * reach(0, x1) + b * reach(1, y1) + (a + b) * 2 * d;
         crossing < LIMIT && crossing * 2 * r < LIMIT && depth < LIMIT && c * 2 * d < LIMIT
     }
 
