@@ -36,6 +36,17 @@ impl Buffers {
         Buffers { width, height, frame: vec![background; cells], depth }
     }
 
+    /// The bytes both buffers' cells take in memory, as zsim stores them
+    /// (4 bytes a level, a whole rational an exact value); `zsim memory`
+    /// gives the book's packed figures instead.
+    pub fn memory_bytes(&self) -> u64 {
+        let depth = match &self.depth {
+            DepthCells::Levels(cells) => std::mem::size_of_val(cells.as_slice()),
+            DepthCells::Exact(cells) => std::mem::size_of_val(cells.as_slice()),
+        };
+        (std::mem::size_of_val(self.frame.as_slice()) + depth) as u64
+    }
+
     /// Width in pixels.
     pub fn width(&self) -> u32 {
         self.width
@@ -149,5 +160,6 @@ mod tests {
         assert_eq!(buffers.frame_rows(), vec![vec![0, 0, 0], vec![7, 0, 0]]);
         assert_eq!(buffers.depth_rows()[1][0], Stored::Level(9));
         assert_eq!(buffers.differences(&Buffers::new(3, 2, 0, Stored::Level(0))), (1, 1));
+        assert_eq!(buffers.memory_bytes(), 6 * 4 + 6 * 4);
     }
 }

@@ -205,7 +205,7 @@ impl Geometry {
     /// Whether Newell's normal vanishes: the vertices are collinear (or the
     /// loops of a self-intersecting polygon cancel), so there is no plane.
     pub fn is_degenerate(&self) -> bool {
-        self.normal == [0, 0, 0]
+        self.normal.iter().all(|&v| v == 0)
     }
 
     /// Whether every integer the rasterizer computes for this polygon fits

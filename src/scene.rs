@@ -200,6 +200,26 @@ impl Scene {
             || self.effects.perspective.is_some_and(|p| p.store_w)
     }
 
+    /// The bytes this scene holds in memory: its own struct, and for each
+    /// polygon its struct and the heap blocks it owns (name, vertices, scaled
+    /// points, eye-space vertices), counted by their capacities. The
+    /// allocator's bookkeeping per block (a few bytes) is not counted.
+    pub fn memory_bytes(&self) -> u64 {
+        use std::mem::size_of;
+        let vertex = size_of::<[Q; 3]>();
+        let polygons: usize = self
+            .polygons
+            .iter()
+            .map(|p| {
+                p.name.capacity()
+                    + p.vertices.capacity() * vertex
+                    + p.geometry.points.capacity() * size_of::<[i128; 3]>()
+                    + p.eye_vertices.as_ref().map_or(0, |v| v.capacity() * vertex)
+            })
+            .sum();
+        (size_of::<Scene>() + self.polygons.capacity() * size_of::<Polygon>() + polygons) as u64
+    }
+
     /// The largest value the z-buffer holds: `2^depth_bits − 1`.
     pub fn depth_max(&self) -> u32 {
         max_for_bits(self.depth_bits)

@@ -178,7 +178,19 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 progress.finish_and_clear();
             }
             let raster_time = rasterizing.elapsed();
-            emit(out, &format!("{}\n", summary(&scene, &path, simulation.stats(), (read_time, raster_time))))?;
+            emit(
+                out,
+                &format!(
+                    "{}\n",
+                    summary(
+                        &scene,
+                        &path,
+                        simulation.stats(),
+                        simulation.buffers().memory_bytes(),
+                        (read_time, raster_time)
+                    )
+                ),
+            )?;
         }
     }
     Ok(Finish::Ok)
@@ -207,12 +219,23 @@ fn progress_bar(polygons: usize) -> ProgressBar {
     bar
 }
 
-/// The one-line summary: counts, effects, stages and the time spent reading and rasterizing.
-fn summary(scene: &Scene, path: &str, stats: Stats, (read, raster): (Duration, Duration)) -> String {
+/// The one-line summary: counts, effects, stages, the time spent reading and
+/// rasterizing, and the memory held: the buffers' cells, the scene, and the
+/// process's peak resident size (where the system tells it).
+fn summary(scene: &Scene, path: &str, stats: Stats, buffers: u64, (read, raster): (Duration, Duration)) -> String {
     let effects = scene.effects.names();
     let rate = stats.tested as f64 / raster.as_secs_f64().max(1e-9) / 1e6;
+    let scene_bytes = scene.memory_bytes();
+    let peak = match peak_resident_bytes() {
+        Some(peak) => format!(
+            ", peak resident {} ({:.2}× buffers + scene)",
+            bytes(peak),
+            peak as f64 / (buffers + scene_bytes) as f64
+        ),
+        None => String::new(),
+    };
     format!(
-        "{path}: {} polygons, {} pixel centres tested, {} written; effects: {}; stages: {}; read {:.1} ms, rasterized {:.1} ms ({rate:.1} M pixels/s)",
+        "{path}: {} polygons, {} pixel centres tested, {} written; effects: {}; stages: {}; read {:.1} ms, rasterized {:.1} ms ({rate:.1} M pixels/s); memory: buffers {}, scene {}{peak}",
         stats.polygons,
         stats.tested,
         stats.written,
@@ -220,7 +243,28 @@ fn summary(scene: &Scene, path: &str, stats: Stats, (read, raster): (Duration, D
         zsim::stages::describe(scene).join(" → "),
         read.as_secs_f64() * 1000.0,
         raster.as_secs_f64() * 1000.0,
+        bytes(buffers),
+        bytes(scene_bytes),
     )
+}
+
+/// A size in KiB (below 1 MiB) or MiB, one decimal.
+fn bytes(count: u64) -> String {
+    const KIB: f64 = 1024.0;
+    if (count as f64) < KIB * KIB {
+        format!("{:.1} KiB", count as f64 / KIB)
+    } else {
+        format!("{:.1} MiB", count as f64 / (KIB * KIB))
+    }
+}
+
+/// The process's peak resident size so far, from `/proc/self/status`
+/// (`VmHWM`); `None` where there is no such file (systems other than Linux).
+fn peak_resident_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kib: u64 = line.trim_start_matches("VmHWM:").trim().trim_end_matches("kB").trim().parse().ok()?;
+    Some(kib * 1024)
 }
 
 /// `run --arith MODE` for an inexact mode: the final buffers, and how they differ from exact.
@@ -254,7 +298,7 @@ fn run_inexact(
             emit(out, &format!("{}\n", serde_json::to_string(&json).expect("serializing plain data cannot fail")))?;
         }
         Format::None => {
-            let text = summary(scene, path, stats, (read_time, raster_time));
+            let text = summary(scene, path, stats, buffers.memory_bytes(), (read_time, raster_time));
             emit(out, &format!("{text}; arithmetic {}\n", args.arith))?;
         }
         Format::Text => {

@@ -57,7 +57,17 @@ fn format_none_prints_one_summary_line() {
     // The times differ from run to run: check their form, snapshot the rest.
     let (counts, times) = run.stdout.split_once("; read ").expect("the summary ends with the times");
     let shape = times.trim_end().replace(|c: char| c.is_ascii_digit(), "9");
-    assert!(shape.starts_with("9") && shape.contains(" ms, rasterized ") && shape.ends_with(" M pixels/s)"), "{times}");
+    assert!(
+        shape.starts_with("9") && shape.contains(" ms, rasterized ") && shape.contains(" M pixels/s); "),
+        "{times}"
+    );
+    // 32×32 cells of 4 bytes in each buffer; the scene and the peak are measured.
+    let memory = times.split_once("; memory: ").expect("the times end with the memory").1;
+    assert!(memory.starts_with("buffers 8.0 KiB, scene "), "{memory}");
+    if cfg!(target_os = "linux") {
+        let peak = memory.split_once("peak resident ").expect("Linux tells the peak").1;
+        assert!(peak.trim_end().ends_with("× buffers + scene)"), "{peak}");
+    }
     snapshot!("run_rogers_none", format!("{counts}\n"));
 }
 
