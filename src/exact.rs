@@ -209,6 +209,9 @@ pub trait Word:
     fn floor_div(self, d: Self) -> (Self, Self);
     /// Ceiling of `self / d` for `d > 0`.
     fn ceil_div(self, d: Self) -> Self;
+    /// Floor of `self / 2^shift`, as whole part and remainder: the same as
+    /// [`Word::floor_div`] by a power of two, by a shift and a mask.
+    fn floor_div_pow2(self, shift: u32) -> (Self, Self);
 }
 
 impl Word for i64 {
@@ -243,6 +246,11 @@ impl Word for i64 {
     }
 
     #[inline]
+    fn floor_div_pow2(self, shift: u32) -> (i64, i64) {
+        (self >> shift, self & ((1 << shift) - 1))
+    }
+
+    #[inline]
     fn ceil_div(self, d: i64) -> i64 {
         debug_assert!(d > 0);
         let (quotient, remainder) = self.floor_div(d);
@@ -273,6 +281,11 @@ impl Word for i128 {
     #[inline]
     fn floor_div(self, d: i128) -> (i128, i128) {
         floor_div(self, d)
+    }
+
+    #[inline]
+    fn floor_div_pow2(self, shift: u32) -> (i128, i128) {
+        (self >> shift, self & ((1 << shift) - 1))
     }
 
     #[inline]
@@ -387,6 +400,23 @@ pub fn exact_and_places(value: Q, places: u32) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn both_words_divide_alike_by_any_divisor_and_by_shifts() {
+        for n in -300i64..300 {
+            for d in 1i64..40 {
+                let (q, r) = n.floor_div(d);
+                assert_eq!((q, r), (n.div_euclid(d), n.rem_euclid(d)), "{n} / {d}");
+                assert_eq!(i128::from(n).floor_div(i128::from(d)), (i128::from(q), i128::from(r)));
+                assert_eq!(n.ceil_div(d), q + i64::from(r != 0), "⌈{n} / {d}⌉");
+                assert_eq!(i128::from(n).ceil_div(i128::from(d)), i128::from(q + i64::from(r != 0)));
+            }
+            for shift in 0..6 {
+                assert_eq!(n.floor_div_pow2(shift), n.floor_div(1 << shift), "{n} >> {shift}");
+                assert_eq!(i128::from(n).floor_div_pow2(shift), i128::from(n).floor_div(1 << shift));
+            }
+        }
+    }
 
     #[test]
     fn decimals_are_read_exactly() {

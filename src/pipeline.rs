@@ -2,6 +2,7 @@
 //! half-interval scanlines, its covered centres depth-tested and stored,
 //! with only the stages the scene asks for.
 
+use std::cmp::Ordering;
 use std::hint::select_unpredictable;
 
 use crate::buffer::Buffers;
@@ -117,31 +118,68 @@ fn rasterize_in<W: Word, S: RasterSink>(
         return;
     };
     let plane = DepthPlane::<W>::new(geometry);
-    let mut row_numerator = plane.row_numerator(W::narrow(scan::scanline_y(*rows.start(), geometry.denominator)));
+    let (first_row, last_row) = (*rows.start(), *rows.end());
+    let mut row_numerator = plane.row_numerator(W::narrow(scan::scanline_y(first_row, geometry.denominator)));
     let row_step = plane.row_step();
-    for row in rows {
-        walk.edges.crossings(row, rules.columns, &mut walk.row);
-        let found = &walk.row;
-        let pairs = scan::pairs(found.len(), rules.rows);
-        let columns =
-            |(i, j): (usize, usize)| scan::clip_columns(found[i].first_column, found[j].last_column, rect.columns);
-        if S::OBSERVES_SCANLINES {
-            let (crossings, spans) = (&mut *events.0, &mut *events.1);
-            crossings.clear();
-            crossings.extend(found.iter().map(RowCrossing::crossing));
-            spans.clear();
-            spans.extend(pairs.clone().map(|(i, j)| Span {
-                left: crossings[i],
-                right: crossings[j],
-                columns: columns((i, j)),
-            }));
-            sink.scanline(row, crossings, spans);
+    // Rows in bands over which the same edges cross them.
+    let mut row = first_row;
+    while row <= last_row {
+        let band_last = walk.edges.activate(row).min(last_row);
+        match walk.edges.pair() {
+            // Two edges and nobody to tell the crossings: walk them here, one span per row.
+            Some([mut one, mut other]) if !S::OBSERVES_SCANLINES => {
+                for row in row..=band_last {
+                    let (a, b) = (one.crossing(rules.columns), other.crossing(rules.columns));
+                    one.advance();
+                    other.advance();
+                    // In order unless the two edges cross between vertices.
+                    let (left, right) = if a.cmp_position(&b) == Ordering::Greater { (b, a) } else { (a, b) };
+                    span(sink, &plane, rect.columns, row, (&left, &right), row_numerator);
+                    row_numerator += row_step;
+                }
+                walk.edges.set_pair([one, other]);
+            }
+            _ => {
+                for row in row..=band_last {
+                    walk.edges.crossings(row, rules.columns, &mut walk.row);
+                    let found = &walk.row;
+                    let pairs = scan::pairs(found.len(), rules.rows);
+                    if S::OBSERVES_SCANLINES {
+                        let (crossings, spans) = (&mut *events.0, &mut *events.1);
+                        crossings.clear();
+                        crossings.extend(found.iter().map(RowCrossing::crossing));
+                        spans.clear();
+                        spans.extend(pairs.clone().map(|(i, j)| Span {
+                            left: crossings[i],
+                            right: crossings[j],
+                            columns: scan::clip_columns(found[i].first_column, found[j].last_column, rect.columns),
+                        }));
+                        sink.scanline(row, crossings, spans);
+                    }
+                    for (i, j) in pairs {
+                        span(sink, &plane, rect.columns, row, (&found[i], &found[j]), row_numerator);
+                    }
+                    row_numerator += row_step;
+                }
+            }
         }
-        for pair in pairs {
-            let Some((first, last)) = columns(pair) else { continue };
-            sink.span(row, first, last, plane.start_at(row_numerator, first));
-        }
-        row_numerator += row_step;
+        row = band_last + 1;
+    }
+}
+
+/// A span between two crossings: its columns within `limit`, and the depth
+/// at the first of them.
+#[inline]
+fn span<W: Word, S: RasterSink>(
+    sink: &mut S,
+    plane: &DepthPlane<W>,
+    limit: (u32, u32),
+    row: u32,
+    (left, right): (&RowCrossing<W>, &RowCrossing<W>),
+    row_numerator: W,
+) {
+    if let Some((first, last)) = scan::clip_columns(left.first_column, right.last_column, limit) {
+        sink.span(row, first, last, plane.start_at(row_numerator, first));
     }
 }
 
@@ -511,10 +549,13 @@ pub fn fate(scene: &Scene, index: usize) -> Fate {
     if geometry.is_degenerate() {
         return Fate::Degenerate;
     }
-    match Winding::of(geometry.c()) {
-        None => Fate::EdgeOn,
-        Some(winding) if scene.effects.cull == Some(winding) => Fate::Culled(winding),
-        Some(_) => Fate::Drawn,
+    if geometry.c() == 0 {
+        return Fate::EdgeOn;
+    }
+    // The winding matters only when culling is on (and its sign comes as it comes).
+    match scene.effects.cull {
+        Some(cull) if Winding::of(geometry.c()) == Some(cull) => Fate::Culled(cull),
+        _ => Fate::Drawn,
     }
 }
 

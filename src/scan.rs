@@ -124,7 +124,7 @@ pub fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Ve
 /// (Bresenham-style): no multiplication or division per row, and the results
 /// equal [`crossings`]' and [`columns`]' formulas exactly.
 #[derive(Debug, Clone, Copy)]
-struct WalkedEdge<W> {
+pub struct WalkedEdge<W> {
     first_row: u32,
     last_row: u32,
     /// Crossing numerator at the next row to visit (over `denominator`).
@@ -166,7 +166,9 @@ impl<W: Word> RowCrossing<W> {
         Crossing { numerator: self.numerator.wide(), denominator: self.denominator.wide() }
     }
 
-    fn cmp_position(&self, other: &Self) -> Ordering {
+    /// Compares the positions of two crossings on the same row.
+    #[inline]
+    pub fn cmp_position(&self, other: &Self) -> Ordering {
         // Below 2^107 in i128 (see Crossing), below 2^61 in i64 (Geometry::fits_i64).
         (self.numerator * other.denominator).cmp(&(other.numerator * self.denominator))
     }
@@ -210,10 +212,14 @@ impl<W: Word> EdgeTable<W> {
         let d = W::narrow(denominator);
         let two_d = d + d;
         // Per vertex, once: the first row at or above it and the last row below
-        // (or at) it, from one division.
+        // (or at) it, from one division (a shift when 2D is a power of two, as
+        // for integer and binary-fraction vertices).
+        let shift = denominator.trailing_zeros() + 1;
+        let power_of_two = denominator == 1 << (shift - 1);
         self.points.extend(points.iter().map(|p| {
             let y = W::narrow(p[1]);
-            let (whole, remainder) = (y - d).floor_div(two_d);
+            let (whole, remainder) =
+                if power_of_two { (y - d).floor_div_pow2(shift) } else { (y - d).floor_div(two_d) };
             let from = select_unpredictable(remainder == W::ZERO, whole, whole + W::ONE);
             let to = match rules.0 {
                 RowRule::HalfOpen => from - W::ONE,
@@ -281,23 +287,8 @@ impl<W: Word> EdgeTable<W> {
         out.clear();
         for &index in &self.active {
             let edge = &mut self.edges[index];
-            let on_centre_or_cell = match rule {
-                ColumnRule::CentreInside => edge.column_remainder == W::ZERO,
-                ColumnRule::CellHolds => true,
-            };
-            out.push(RowCrossing {
-                numerator: edge.numerator,
-                denominator: edge.denominator,
-                first_column: select_unpredictable(on_centre_or_cell, edge.column, edge.column + W::ONE),
-                last_column: edge.column,
-            });
-            edge.numerator += edge.step;
-            edge.column += edge.column_step;
-            edge.column_remainder += edge.column_step_remainder;
-            // The carry comes as often as not: chosen without a branch.
-            let carry = edge.column_remainder >= edge.modulus;
-            edge.column_remainder -= select_unpredictable(carry, edge.modulus, W::ZERO);
-            edge.column += select_unpredictable(carry, W::ONE, W::ZERO);
+            out.push(edge.crossing(rule));
+            edge.advance();
         }
         // The active edges were sorted when they became active, so this finds
         // them in order unless two of them cross between vertices.
@@ -310,27 +301,27 @@ impl<W: Word> EdgeTable<W> {
         }
     }
 
-    /// The edges that cross `row`, and the next row where that set changes
-    /// (an edge starts or ends): rows between changes step only these edges,
-    /// with no test per edge and row.
-    fn activate(&mut self, row: u32) {
+    /// Makes the edges that cross `row` the active ones, in order of their
+    /// crossings there, and returns the last row before an edge starts or
+    /// ends: rows up to it step only these edges, with no test per edge and
+    /// row. [`EdgeTable::crossings`] calls it when needed.
+    pub fn activate(&mut self, row: u32) -> u32 {
+        // Without branches: which edges start or end where comes as it comes.
         self.active.clear();
+        self.active.resize(self.edges.len(), 0);
         self.next_change = u32::MAX;
+        let mut count = 0;
         for (index, edge) in self.edges.iter().enumerate() {
-            if row < edge.first_row {
-                self.next_change = self.next_change.min(edge.first_row);
-            } else if row <= edge.last_row {
-                self.active.push(index);
-                self.next_change = self.next_change.min(edge.last_row.saturating_add(1));
-            }
+            let (ahead, crossing) = (row < edge.first_row, edge.first_row <= row && row <= edge.last_row);
+            let change = select_unpredictable(ahead, edge.first_row, edge.last_row.saturating_add(1));
+            self.next_change = self.next_change.min(select_unpredictable(ahead || crossing, change, u32::MAX));
+            self.active[count] = index;
+            count += usize::from(crossing);
         }
+        self.active.truncate(count);
         // In order of their crossings on this row (numerator over denominator).
         let edges = &self.edges;
-        let position = |index: &usize| (edges[*index].numerator, edges[*index].denominator);
-        let order = |i: &usize, j: &usize| {
-            let ((n1, d1), (n2, d2)) = (position(i), position(j));
-            (n1 * d2).cmp(&(n2 * d1))
-        };
+        let order = |i: &usize, j: &usize| edges[*i].position().cmp_position(&edges[*j].position());
         if let [first, second] = self.active[..] {
             if order(&first, &second) == Ordering::Greater {
                 self.active.swap(0, 1);
@@ -338,6 +329,61 @@ impl<W: Word> EdgeTable<W> {
         } else {
             self.active.sort_unstable_by(order);
         }
+        self.next_change - 1
+    }
+
+    /// The active edges, left then right, when there are exactly two (every
+    /// row of a triangle or a convex polygon): copies for the caller to walk
+    /// row by row, to be handed back by [`EdgeTable::set_pair`].
+    #[inline]
+    pub fn pair(&self) -> Option<[WalkedEdge<W>; 2]> {
+        match self.active[..] {
+            [left, right] => Some([self.edges[left], self.edges[right]]),
+            _ => None,
+        }
+    }
+
+    /// Takes back the edges [`EdgeTable::pair`] gave, walked on.
+    #[inline]
+    pub fn set_pair(&mut self, pair: [WalkedEdge<W>; 2]) {
+        if let [left, right] = self.active[..] {
+            (self.edges[left], self.edges[right]) = (pair[0], pair[1]);
+        }
+    }
+}
+
+impl<W: Word> WalkedEdge<W> {
+    /// The crossing on the current row, with the columns it bounds under `rule`.
+    #[inline]
+    pub fn crossing(&self, rule: ColumnRule) -> RowCrossing<W> {
+        let on_centre_or_cell = match rule {
+            ColumnRule::CentreInside => self.column_remainder == W::ZERO,
+            ColumnRule::CellHolds => true,
+        };
+        RowCrossing {
+            numerator: self.numerator,
+            denominator: self.denominator,
+            first_column: select_unpredictable(on_centre_or_cell, self.column, self.column + W::ONE),
+            last_column: self.column,
+        }
+    }
+
+    /// The crossing's position alone, for ordering.
+    fn position(&self) -> RowCrossing<W> {
+        RowCrossing { numerator: self.numerator, denominator: self.denominator, ..RowCrossing::default() }
+    }
+
+    /// Steps to the next row: the crossing and the column bound by their
+    /// constant increments.
+    #[inline]
+    pub fn advance(&mut self) {
+        self.numerator += self.step;
+        self.column += self.column_step;
+        self.column_remainder += self.column_step_remainder;
+        // The carry comes as often as not: chosen without a branch.
+        let carry = self.column_remainder >= self.modulus;
+        self.column_remainder -= select_unpredictable(carry, self.modulus, W::ZERO);
+        self.column += select_unpredictable(carry, W::ONE, W::ZERO);
     }
 }
 
