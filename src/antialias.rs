@@ -98,8 +98,8 @@ pub fn run_watching(
     // Pixel mode: samples' framebuffer at k×, z-buffer at screen resolution.
     let stages: Box<dyn PixelStages> =
         if scene.has_pixel_effects() { Box::new(WithEffects::new(scene)) } else { Box::new(Plain::new(scene)) };
-    let mut samples = Buffers::new(big.width, big.height, scene.background, scene.clear_depth);
-    let mut depth = Buffers::new(scene.width, scene.height, scene.background, scene.clear_depth);
+    let mut samples = Buffers::new(big.width, big.height, scene.frame_bits, scene.background, scene.clear_depth);
+    let mut depth = Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth);
     let mut scratch = Scratch::default();
     let mut pictures = Vec::with_capacity(scene.polygons.len());
     for (index, polygon) in scene.polygons.iter().enumerate() {

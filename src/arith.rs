@@ -19,7 +19,7 @@ use std::fmt;
 
 use num_traits::Float;
 
-use crate::buffer::Buffers;
+use crate::buffer::{Buffers, FrameCell, LevelCells};
 use crate::error::{Error, PolygonProblem};
 use crate::exact::{Q, to_f64};
 use crate::pipeline::{Simulation, Stats, fate};
@@ -271,33 +271,52 @@ impl<'p, F: Float> FloatWalker<'p, F> {
 /// The plain z-buffer in `F`, per-pixel (`incremental = false`) or with the
 /// seeds' incremental steps.
 fn raster_float<F: Float>(scene: &Scene, polygons: &[Option<FloatPolygon<F>>], incremental: bool) -> (Buffers, Stats) {
-    let mut buffers = Buffers::new(scene.width, scene.height, scene.background, scene.clear_depth);
-    let mut stats = Stats::default();
-    let half = F::from(0.5).unwrap_or_else(F::nan);
-    let max = F::from(scene.depth_max()).unwrap_or_else(F::max_value);
-    let greater = scene.depth_test == crate::depth::DepthTest::Greater;
-    let width = scene.width as usize;
-    let (frame, depth) = buffers.level_cells_mut().expect("inexact modes run quantized z-buffers");
-    for polygon in polygons {
-        stats.polygons += 1;
-        let Some(p) = polygon else { continue };
-        let mut walker = FloatWalker::new(p, incremental);
-        let Some((first_row, last_row)) = walker.rows(scene.height) else { continue };
-        for row in first_row..=last_row {
-            let row_start = row as usize * width;
-            walker.row(row, scene.width, |x, z| {
-                let cell = row_start + x as usize;
-                stats.tested += 1;
-                let stored = F::from(depth[cell]).unwrap_or_else(F::nan);
-                if if greater { z > stored } else { z < stored } {
-                    stats.written += 1;
-                    frame[cell] = p.value;
-                    depth[cell] = (z + half).floor().max(F::zero()).min(max).to_u32().unwrap_or(0);
-                }
-            });
-        }
-    }
+    let mut buffers = Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth);
+    let stats = buffers
+        .with_level_cells(FloatRaster { scene, polygons, incremental })
+        .expect("inexact modes run quantized z-buffers");
     (buffers, stats)
+}
+
+/// The float loop, on the cells whatever the framebuffer's cell width.
+struct FloatRaster<'a, F> {
+    scene: &'a Scene,
+    polygons: &'a [Option<FloatPolygon<F>>],
+    incremental: bool,
+}
+
+impl<F: Float> LevelCells for FloatRaster<'_, F> {
+    type Output = Stats;
+
+    fn run<C: FrameCell>(self, frame: &mut [C], depth: &mut [u32]) -> Stats {
+        let scene = self.scene;
+        let mut stats = Stats::default();
+        let half = F::from(0.5).unwrap_or_else(F::nan);
+        let max = F::from(scene.depth_max()).unwrap_or_else(F::max_value);
+        let greater = scene.depth_test == crate::depth::DepthTest::Greater;
+        let width = scene.width as usize;
+        for polygon in self.polygons {
+            stats.polygons += 1;
+            let Some(p) = polygon else { continue };
+            let value = C::from_value(p.value);
+            let mut walker = FloatWalker::new(p, self.incremental);
+            let Some((first_row, last_row)) = walker.rows(scene.height) else { continue };
+            for row in first_row..=last_row {
+                let row_start = row as usize * width;
+                walker.row(row, scene.width, |x, z| {
+                    let cell = row_start + x as usize;
+                    stats.tested += 1;
+                    let stored = F::from(depth[cell]).unwrap_or_else(F::nan);
+                    if if greater { z > stored } else { z < stored } {
+                        stats.written += 1;
+                        frame[cell] = value;
+                        depth[cell] = (z + half).floor().max(F::zero()).min(max).to_u32().unwrap_or(0);
+                    }
+                });
+            }
+        }
+        stats
+    }
 }
 
 /// What an inexact mode computes on one scanline of one polygon (for

@@ -12,8 +12,56 @@ use crate::exact::Q;
 pub struct Buffers {
     width: u32,
     height: u32,
-    frame: Vec<u32>,
+    frame: FrameCells,
     depth: DepthCells,
+}
+
+/// A framebuffer cell: the smallest unsigned integer that holds the scene's
+/// `frame_bits` (1 byte up to 8 bits, 2 up to 16, 4 beyond), so that large
+/// rasters take no more memory than their values need.
+pub trait FrameCell: Copy + Eq + Default + std::fmt::Debug {
+    /// The cell holding `value`, which fits (values are checked against
+    /// `frame_bits` when the scene is read).
+    fn from_value(value: u32) -> Self;
+    /// The value held.
+    fn value(self) -> u32;
+}
+
+macro_rules! frame_cell {
+    ($($cell:ty),*) => {$(
+        impl FrameCell for $cell {
+            #[inline]
+            fn from_value(value: u32) -> $cell {
+                debug_assert!(<$cell>::try_from(value).is_ok(), "value {value} wider than its cell: please report this bug");
+                value as $cell
+            }
+
+            #[inline]
+            fn value(self) -> u32 {
+                u32::from(self)
+            }
+        }
+    )*};
+}
+
+frame_cell!(u8, u16, u32);
+
+/// The framebuffer's cells, in the width its bits need.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum FrameCells {
+    Bytes(Vec<u8>),
+    Halves(Vec<u16>),
+    Words(Vec<u32>),
+}
+
+/// Code that works on the cells of a quantized z-buffer and of the
+/// framebuffer, whatever the framebuffer's cell width: see
+/// [`Buffers::with_level_cells`].
+pub trait LevelCells {
+    /// What it returns.
+    type Output;
+    /// Runs on both buffers' cells, rows bottom first.
+    fn run<F: FrameCell>(self, frame: &mut [F], depth: &mut [u32]) -> Self::Output;
 }
 
 /// The z-buffer's cells: integer levels (4 bytes each) or exact values.
@@ -27,24 +75,51 @@ impl Buffers {
     /// Buffers filled with the background value and the clear depth, whose
     /// kind (level or exact) fixes the kind of every cell.
     /// The size must already be validated (see `scene::MAX_CELLS`).
-    pub fn new(width: u32, height: u32, background: u32, clear_depth: Stored) -> Buffers {
+    /// The framebuffer's cells are as wide as `frame_bits` need (see [`FrameCell`]).
+    pub fn new(width: u32, height: u32, frame_bits: u32, background: u32, clear_depth: Stored) -> Buffers {
         let cells = width as usize * height as usize;
         let depth = match clear_depth {
             Stored::Level(level) => DepthCells::Levels(vec![level; cells]),
             Stored::Exact(q) => DepthCells::Exact(vec![q; cells]),
         };
-        Buffers { width, height, frame: vec![background; cells], depth }
+        let frame = match frame_bits {
+            0..=8 => FrameCells::Bytes(vec![u8::from_value(background); cells]),
+            9..=16 => FrameCells::Halves(vec![u16::from_value(background); cells]),
+            _ => FrameCells::Words(vec![background; cells]),
+        };
+        Buffers { width, height, frame, depth }
     }
 
-    /// The bytes both buffers' cells take in memory, as zsim stores them
-    /// (4 bytes a level, a whole rational an exact value); `zsim memory`
-    /// gives the book's packed figures instead.
+    /// Runs `code` on both buffers' cells when the z-buffer holds levels
+    /// (`None` when it holds exact values): the loops that write many cells.
+    pub fn with_level_cells<C: LevelCells>(&mut self, code: C) -> Option<C::Output> {
+        let DepthCells::Levels(depth) = &mut self.depth else { return None };
+        Some(match &mut self.frame {
+            FrameCells::Bytes(frame) => code.run(frame, depth),
+            FrameCells::Halves(frame) => code.run(frame, depth),
+            FrameCells::Words(frame) => code.run(frame, depth),
+        })
+    }
+
+    /// Whether the z-buffer holds levels, so that [`Buffers::with_level_cells`] runs.
+    pub fn holds_levels(&self) -> bool {
+        matches!(self.depth, DepthCells::Levels(_))
+    }
+
+    /// The bytes both buffers' cells take in memory, as zsim stores them (a
+    /// framebuffer cell of 1, 2 or 4 bytes, 4 bytes a depth level, a whole
+    /// rational an exact depth); `zsim memory` gives the book's packed figures.
     pub fn memory_bytes(&self) -> u64 {
         let depth = match &self.depth {
             DepthCells::Levels(cells) => std::mem::size_of_val(cells.as_slice()),
             DepthCells::Exact(cells) => std::mem::size_of_val(cells.as_slice()),
         };
-        (std::mem::size_of_val(self.frame.as_slice()) + depth) as u64
+        let frame = match &self.frame {
+            FrameCells::Bytes(cells) => cells.len(),
+            FrameCells::Halves(cells) => cells.len() * 2,
+            FrameCells::Words(cells) => cells.len() * 4,
+        };
+        (frame + depth) as u64
     }
 
     /// Width in pixels.
@@ -64,7 +139,7 @@ impl Buffers {
 
     /// The framebuffer value at pixel (x, y).
     pub fn frame(&self, x: u32, y: u32) -> u32 {
-        self.frame[self.index(x, y)]
+        self.frame.get(self.index(x, y))
     }
 
     /// The z-buffer value at pixel (x, y).
@@ -79,7 +154,7 @@ impl Buffers {
     /// Writes both buffers at pixel (x, y); the depth is of the buffer's kind.
     pub fn store(&mut self, x: u32, y: u32, frame: u32, depth: Stored) {
         let index = self.index(x, y);
-        self.frame[index] = frame;
+        self.frame.set(index, frame);
         match (&mut self.depth, depth) {
             (DepthCells::Levels(cells), Stored::Level(level)) => cells[index] = level,
             (DepthCells::Exact(cells), Stored::Exact(q)) => cells[index] = q,
@@ -90,7 +165,7 @@ impl Buffers {
     /// How many framebuffer cells and how many z-buffer cells differ from
     /// `other`'s (buffers of the same size and kind).
     pub fn differences(&self, other: &Buffers) -> (u64, u64) {
-        let frame = self.frame.iter().zip(&other.frame).filter(|(a, b)| a != b).count() as u64;
+        let frame = (0..self.frame.len()).filter(|&i| self.frame.get(i) != other.frame.get(i)).count() as u64;
         let depth = match (&self.depth, &other.depth) {
             (DepthCells::Levels(a), DepthCells::Levels(b)) => a.iter().zip(b).filter(|(x, y)| x != y).count(),
             (DepthCells::Exact(a), DepthCells::Exact(b)) => a.iter().zip(b).filter(|(x, y)| x != y).count(),
@@ -101,7 +176,8 @@ impl Buffers {
 
     /// The framebuffer as rows, top row (y = height − 1) first.
     pub fn frame_rows(&self) -> Vec<Vec<u32>> {
-        rows_top_first(&self.frame, self.width)
+        let values: Vec<u32> = (0..self.frame.len()).map(|i| self.frame.get(i)).collect();
+        rows_top_first(&values, self.width)
     }
 
     /// The z-buffer as rows, top row (y = height − 1) first.
@@ -118,15 +194,6 @@ impl Buffers {
         }
     }
 
-    /// Both buffers' cells (rows bottom first) when the z-buffer holds
-    /// levels, for loops that write many cells.
-    pub fn level_cells_mut(&mut self) -> Option<(&mut [u32], &mut [u32])> {
-        match &mut self.depth {
-            DepthCells::Levels(depth) => Some((&mut self.frame, depth)),
-            DepthCells::Exact(_) => None,
-        }
-    }
-
     /// The z-buffer as integer rows, top row first, when it holds levels.
     pub fn depth_level_rows(&self) -> Option<Vec<Vec<u32>>> {
         match &self.depth {
@@ -138,6 +205,32 @@ impl Buffers {
 
 fn rows_top_first<T: Clone>(cells: &[T], width: u32) -> Vec<Vec<T>> {
     cells.chunks_exact(width as usize).rev().map(<[T]>::to_vec).collect()
+}
+
+impl FrameCells {
+    fn len(&self) -> usize {
+        match self {
+            FrameCells::Bytes(cells) => cells.len(),
+            FrameCells::Halves(cells) => cells.len(),
+            FrameCells::Words(cells) => cells.len(),
+        }
+    }
+
+    fn get(&self, index: usize) -> u32 {
+        match self {
+            FrameCells::Bytes(cells) => cells[index].value(),
+            FrameCells::Halves(cells) => cells[index].value(),
+            FrameCells::Words(cells) => cells[index],
+        }
+    }
+
+    fn set(&mut self, index: usize, value: u32) {
+        match self {
+            FrameCells::Bytes(cells) => cells[index] = u8::from_value(value),
+            FrameCells::Halves(cells) => cells[index] = u16::from_value(value),
+            FrameCells::Words(cells) => cells[index] = value,
+        }
+    }
 }
 
 impl DepthCells {
@@ -155,11 +248,17 @@ mod tests {
 
     #[test]
     fn pixel_origin_is_bottom_left_and_printed_last() {
-        let mut buffers = Buffers::new(3, 2, 0, Stored::Level(0));
+        let mut buffers = Buffers::new(3, 2, 2, 0, Stored::Level(0));
         buffers.store(0, 0, 7, Stored::Level(9));
         assert_eq!(buffers.frame_rows(), vec![vec![0, 0, 0], vec![7, 0, 0]]);
         assert_eq!(buffers.depth_rows()[1][0], Stored::Level(9));
-        assert_eq!(buffers.differences(&Buffers::new(3, 2, 0, Stored::Level(0))), (1, 1));
-        assert_eq!(buffers.memory_bytes(), 6 * 4 + 6 * 4);
+        assert_eq!(buffers.differences(&Buffers::new(3, 2, 2, 0, Stored::Level(0))), (1, 1));
+        // 2-bit framebuffer values in bytes, depth levels in 4 bytes.
+        assert_eq!(buffers.memory_bytes(), 6 + 6 * 4);
+        assert_eq!(Buffers::new(3, 2, 9, 0, Stored::Level(0)).memory_bytes(), 6 * 2 + 6 * 4);
+        assert_eq!(Buffers::new(3, 2, 17, 0, Stored::Level(0)).memory_bytes(), 6 * 4 + 6 * 4);
+        let mut wide = Buffers::new(3, 2, 32, 0, Stored::Level(0));
+        wide.store(2, 1, u32::MAX, Stored::Level(1));
+        assert_eq!(wide.frame(2, 1), u32::MAX);
     }
 }

@@ -5,7 +5,7 @@
 use std::cmp::Ordering;
 use std::hint::select_unpredictable;
 
-use crate::buffer::Buffers;
+use crate::buffer::{Buffers, FrameCell, LevelCells};
 use crate::depth::{Depth, DepthPlane, DepthStepper, DepthTest, Stored};
 use crate::exact::Word;
 use crate::plane::Geometry;
@@ -204,7 +204,7 @@ impl<'s> Simulation<'s> {
     pub fn with_stages(scene: &'s Scene, stage_set: StageSet) -> Simulation<'s> {
         Simulation {
             scene,
-            buffers: Buffers::new(scene.width, scene.height, scene.background, scene.clear_depth),
+            buffers: Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth),
             next: 0,
             stats: Stats::default(),
             scratch: Scratch::default(),
@@ -275,7 +275,7 @@ impl<'s> Simulation<'s> {
             || scene.has_pixel_effects()
             || self.stage_set != StageSet::AsAsked
             || plain.plain_levels().is_none()
-            || self.buffers.level_cells_mut().is_none()
+            || !self.buffers.holds_levels()
         {
             self.finish(&mut Unobserved);
             return;
@@ -296,16 +296,101 @@ impl<'s> Simulation<'s> {
         }
         self.next = scene.polygons.len();
         let (test, depth_max) = plain.plain_levels().expect("checked above");
-        let width = scene.width as usize;
-        let Simulation { buffers, stats, scratch, .. } = self;
-        let (frame, depth) = buffers.level_cells_mut().expect("checked above");
+        let (stats, scratch) = (&mut self.stats, &mut self.scratch);
+        let levels = Levels { scene, test, depth_max, stats, scratch };
+        self.buffers.with_level_cells(Tiles { levels, bins, tile });
+    }
+
+    fn draw<S: PixelStages, O: Observer>(&mut self, index: usize, stages: &S, observer: &mut O) {
+        let scene = self.scene;
+        let polygon = &scene.polygons[index];
+        let rect = PixelRect::raster(scene.width, scene.height);
+        if let Some((test, depth_max)) = stages.plain_levels()
+            && self.buffers.holds_levels()
+        {
+            let (stats, scratch) = (&mut self.stats, &mut self.scratch);
+            let levels = Levels { scene, test, depth_max, stats, scratch };
+            self.buffers.with_level_cells(OnePolygon { levels, index, observer });
+            return;
+        }
+        let mut sink =
+            DrawSink { index, polygon, stages, buffers: &mut self.buffers, stats: &mut self.stats, observer };
+        rasterize(&polygon.geometry, scene.rules, rect, &mut self.scratch, &mut sink);
+    }
+}
+
+/// What the plain loop on a quantized z-buffer needs besides the cells.
+struct Levels<'a, 's> {
+    scene: &'s Scene,
+    test: DepthTest,
+    depth_max: u32,
+    stats: &'a mut Stats,
+    scratch: &'a mut Scratch,
+}
+
+impl<'s> Levels<'_, 's> {
+    /// Draws polygon `index` within `rect` on the cells.
+    #[inline]
+    fn draw<F: FrameCell, O: Observer>(
+        &mut self,
+        (frame, depth): (&mut [F], &mut [u32]),
+        index: usize,
+        rect: PixelRect,
+        observer: &mut O,
+    ) {
+        let polygon = &self.scene.polygons[index];
+        let mut sink = LevelSink {
+            index,
+            polygon,
+            value: F::from_value(polygon.value),
+            test: self.test,
+            depth_max: self.depth_max,
+            width: self.scene.width as usize,
+            frame,
+            depth,
+            stats: &mut *self.stats,
+            observer,
+        };
+        rasterize(&polygon.geometry, self.scene.rules, rect, self.scratch, &mut sink);
+    }
+}
+
+/// One polygon on the whole raster.
+struct OnePolygon<'a, 's, O> {
+    levels: Levels<'a, 's>,
+    index: usize,
+    observer: &'a mut O,
+}
+
+impl<O: Observer> LevelCells for OnePolygon<'_, '_, O> {
+    type Output = ();
+
+    fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
+        let rect = PixelRect::raster(self.levels.scene.width, self.levels.scene.height);
+        self.levels.draw((frame, depth), self.index, rect, self.observer);
+    }
+}
+
+/// Binned polygons, drawn tile by tile.
+struct Tiles<'a, 's> {
+    levels: Levels<'a, 's>,
+    bins: Vec<Vec<u32>>,
+    tile: u32,
+}
+
+impl LevelCells for Tiles<'_, '_> {
+    type Output = ();
+
+    fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
+        let scene = self.levels.scene;
+        let (tiles_x, tiles_y, tile) = (scene.width.div_ceil(self.tile), scene.height.div_ceil(self.tile), self.tile);
         for ty in 0..tiles_y {
             for tx in 0..tiles_x {
                 let rect = PixelRect {
                     columns: (tx * tile, ((tx + 1) * tile).min(scene.width) - 1),
                     rows: (ty * tile, ((ty + 1) * tile).min(scene.height) - 1),
                 };
-                let bin = &bins[(ty * tiles_x + tx) as usize];
+                let bin = &self.bins[(ty * tiles_x + tx) as usize];
                 for (k, &index) in bin.iter().enumerate() {
                     // The polygons of a tile lie far apart in memory: ask for the
                     // ones a few steps ahead while this one is drawn.
@@ -315,58 +400,30 @@ impl<'s> Simulation<'s> {
                     if let Some(&ahead) = bin.get(k + 2) {
                         prefetch(scene.polygons[ahead as usize].geometry.points.as_ptr());
                     }
-                    let polygon = &scene.polygons[index as usize];
-                    let mut sink = LevelSink {
-                        index: index as usize,
-                        polygon,
-                        test,
-                        depth_max,
-                        width,
-                        frame: &mut *frame,
-                        depth: &mut *depth,
-                        stats: &mut *stats,
-                        observer: &mut Unobserved,
-                    };
-                    rasterize(&polygon.geometry, scene.rules, rect, scratch, &mut sink);
+                    self.levels.draw((&mut *frame, &mut *depth), index as usize, rect, &mut Unobserved);
                 }
             }
         }
-    }
-
-    fn draw<S: PixelStages, O: Observer>(&mut self, index: usize, stages: &S, observer: &mut O) {
-        let scene = self.scene;
-        let polygon = &scene.polygons[index];
-        let rect = PixelRect::raster(scene.width, scene.height);
-        if let Some((test, depth_max)) = stages.plain_levels()
-            && let Some((frame, depth)) = self.buffers.level_cells_mut()
-        {
-            let width = scene.width as usize;
-            let mut sink =
-                LevelSink { index, polygon, test, depth_max, width, frame, depth, stats: &mut self.stats, observer };
-            rasterize(&polygon.geometry, scene.rules, rect, &mut self.scratch, &mut sink);
-            return;
-        }
-        let mut sink =
-            DrawSink { index, polygon, stages, buffers: &mut self.buffers, stats: &mut self.stats, observer };
-        rasterize(&polygon.geometry, scene.rules, rect, &mut self.scratch, &mut sink);
     }
 }
 
 /// The plain stages on a quantized z-buffer, working on the cells directly:
 /// the same decisions as [`Plain::decide`], without a match per access.
-struct LevelSink<'a, O> {
+struct LevelSink<'a, O, F> {
     index: usize,
     polygon: &'a Polygon,
+    /// The polygon's value in a framebuffer cell.
+    value: F,
     test: DepthTest,
     depth_max: u32,
     width: usize,
-    frame: &'a mut [u32],
+    frame: &'a mut [F],
     depth: &'a mut [u32],
     stats: &'a mut Stats,
     observer: &'a mut O,
 }
 
-impl<O: Observer> LevelSink<'_, O> {
+impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
     /// The span in 64-bit integers when nobody watches the pixels and every
     /// value of the span fits: the same decisions as [`LevelSink::pixel`].
     /// Returns `false` (having done nothing) when it does not apply.
@@ -390,7 +447,7 @@ impl<O: Observer> LevelSink<'_, O> {
             return false;
         }
         let greater = self.test == DepthTest::Greater;
-        let (max, value) = (i64::from(self.depth_max), self.polygon.value);
+        let (max, value) = (i64::from(self.depth_max), self.value);
         let cells = row as usize * self.width + first as usize..=row as usize * self.width + last as usize;
         let (tested, mut written) = (u64::from(last - first) + 1, 0u64);
         // Branch-free: every cell is rewritten with its old or its new value.
@@ -415,7 +472,7 @@ impl<O: Observer> LevelSink<'_, O> {
     }
 }
 
-impl<O: Observer> RasterSink for LevelSink<'_, O> {
+impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
     const OBSERVES_SCANLINES: bool = O::OBSERVES_SCANLINES;
 
     #[inline]
@@ -437,14 +494,14 @@ impl<O: Observer> RasterSink for LevelSink<'_, O> {
     #[inline]
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
         let cell = y as usize * self.width + x as usize;
-        let (stored_before, frame_before) = (self.depth[cell], self.frame[cell]);
+        let (stored_before, frame_before) = (self.depth[cell], self.frame[cell].value());
         self.stats.tested += 1;
         let written = self.test.passes(depth, Stored::Level(stored_before));
         let (stored_after, frame_after) = if written {
             self.stats.written += 1;
             let level = depth.quantized(self.depth_max);
             self.depth[cell] = level;
-            self.frame[cell] = self.polygon.value;
+            self.frame[cell] = self.value;
             (level, self.polygon.value)
         } else {
             (stored_before, frame_before)

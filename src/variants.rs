@@ -91,14 +91,14 @@ pub struct SegmentStats {
 /// final contents only so it can be shown and compared) and the statistics.
 pub fn run_segmented(scene: &Scene, segments: Segments) -> (Buffers, SegmentStats) {
     let stages = stages(scene);
-    let mut screen = Buffers::new(scene.width, scene.height, scene.background, scene.clear_depth);
+    let mut screen = Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth);
     let rects = segments.rects(scene.width, scene.height);
     let mut stats = SegmentStats { segments: rects.len(), depth_cells: 0, polygon_visits: 0 };
     let mut scratch = Scratch::default();
     for rect in rects {
         let (w, h) = (rect.columns.1 - rect.columns.0 + 1, rect.rows.1 - rect.rows.0 + 1);
         stats.depth_cells = stats.depth_cells.max(u64::from(w) * u64::from(h));
-        let mut segment = Buffers::new(w, h, scene.background, scene.clear_depth);
+        let mut segment = Buffers::new(w, h, scene.frame_bits, scene.background, scene.clear_depth);
         for index in visited_in(scene, rect) {
             let polygon = &scene.polygons[index];
             stats.polygon_visits += 1;
@@ -212,7 +212,7 @@ pub struct InsideDifference {
 /// (pixel, polygon) whose inside test differs from the scanline rule.
 pub fn run_pixel_order(scene: &Scene, inside: Inside) -> (Buffers, Vec<InsideDifference>) {
     let stages = stages(scene);
-    let mut buffers = Buffers::new(scene.width, scene.height, scene.background, scene.clear_depth);
+    let mut buffers = Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth);
     let drawn: Vec<usize> = (0..scene.polygons.len()).filter(|&i| fate(scene, i) == Fate::Drawn).collect();
     let mut differences = Vec::new();
     for y in 0..scene.height {

@@ -61,9 +61,10 @@ fn format_none_prints_one_summary_line() {
         shape.starts_with("9") && shape.contains(" ms, rasterized ") && shape.contains(" M pixels/s); "),
         "{times}"
     );
-    // 32×32 cells of 4 bytes in each buffer; the scene and the peak are measured.
+    // 32×32 cells: a byte each for the 2-bit framebuffer, 4 bytes each for
+    // the depth levels; the scene and the peak are measured.
     let memory = times.split_once("; memory: ").expect("the times end with the memory").1;
-    assert!(memory.starts_with("buffers 8.0 KiB, scene "), "{memory}");
+    assert!(memory.starts_with("buffers 5.0 KiB, scene "), "{memory}");
     if cfg!(target_os = "linux") {
         let peak = memory.split_once("peak resident ").expect("Linux tells the peak").1;
         assert!(peak.trim_end().ends_with("× buffers + scene)"), "{peak}");
