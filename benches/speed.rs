@@ -42,16 +42,20 @@ fn arithmetic(c: &mut Criterion) {
 }
 
 fn small_triangles(c: &mut Criterion) {
-    let scene = random(4000, 256, 12, 2);
     let mut group = c.benchmark_group("small triangles, 256x256");
-    group.sample_size(20).throughput(Throughput::Elements(pixels(&scene)));
-    group.bench_function("exact", |b| {
-        b.iter(|| {
-            let mut simulation = Simulation::new(&scene);
-            simulation.finish(&mut Unobserved);
-            simulation.stats().written
-        })
-    });
+    group.sample_size(20);
+    // 4000 triangles within squares of 8 … 24 px (on average about 6 … 60 covered pixels each).
+    for max_size in [8, 12, 16, 24] {
+        let scene = random(4000, 256, max_size, 2);
+        group.throughput(Throughput::Elements(pixels(&scene)));
+        group.bench_function(format!("exact, up to {max_size} px"), |b| {
+            b.iter(|| {
+                let mut simulation = Simulation::new(&scene);
+                simulation.finish(&mut Unobserved);
+                simulation.stats().written
+            })
+        });
+    }
     group.finish();
 }
 
