@@ -113,6 +113,8 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         };
         return super::variants::run(&scene, &path, &variant, out);
     }
+    // Clearing the buffers is the algorithm's first step: `--format none` times it with the raster.
+    let rasterizing = Instant::now();
     let mut simulation = Simulation::new(&scene);
     match args.format {
         Format::Text => {
@@ -163,7 +165,6 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             emit(out, "]}\n")?;
         }
         Format::None => {
-            let rasterizing = Instant::now();
             if let Some(tile) = args.tile.filter(|t| *t > 0) {
                 // Tiles keep the cells in cache; the result is the same as polygon by polygon.
                 simulation.finish_tiled(tile);
@@ -220,7 +221,7 @@ fn progress_bar(polygons: usize) -> ProgressBar {
 }
 
 /// The one-line summary: counts, effects, stages, the time spent reading and
-/// rasterizing, and the memory held: the buffers' cells, the scene, and the
+/// rasterizing (from clearing the buffers to the last polygon), and the memory held: the buffers' cells, the scene, and the
 /// process's peak resident size (where the system tells it).
 fn summary(scene: &Scene, path: &str, stats: Stats, buffers: u64, (read, raster): (Duration, Duration)) -> String {
     let effects = scene.effects.names();
