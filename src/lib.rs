@@ -44,7 +44,10 @@
 //! - **Exactness.** No floating point anywhere: coordinates are rationals, each
 //!   polygon is scaled to integers over its common denominator (see
 //!   [`plane`]), and coordinates whose scaled size could overflow `i128` are
-//!   refused ([`plane::MAX_SCALED`]).
+//!   refused ([`plane::MAX_SCALED`]). A polygon whose integers all fit 64 bits
+//!   ([`plane::Geometry::fits_i64`]: most of them) runs on `i64`, the others on
+//!   `i128`; the same code, with the same results
+//!   (`pipeline::tests::both_words_rasterize_alike`).
 //!
 //! # Example
 //!

@@ -5,7 +5,9 @@
 //! integers `x·2D`, `y·2D`, `z·2D`. In those units the centre of pixel column
 //! `x` is `(2x + 1)·D` and scanline `row` lies at `(2row + 1)·D`, so pixel
 //! centres and half-interval scanlines are integers too, and the whole
-//! rasterizer runs on `i128` integers with no rounding anywhere.
+//! rasterizer runs on integers with no rounding anywhere: `i128` always fits
+//! (see [`MAX_SCALED`]), and `i64` does for most polygons
+//! ([`Geometry::fits_i64`]).
 
 use std::fmt;
 
