@@ -232,19 +232,24 @@ impl<W: Word> DepthPlane<W> {
     /// Prepares a polygon whose Newell `c` is non-zero (for `W = i64`, one
     /// that [`Geometry::fits_i64`]).
     pub fn new(geometry: &Geometry) -> DepthPlane<W> {
-        let [a, b, c] = geometry.normal;
-        debug_assert!(c != 0, "depth of an edge-on polygon: please report this bug");
-        let [x1, y1, z1] = geometry.points[0];
-        let sign = if c < 0 { -1 } else { 1 };
-        let denominator = W::narrow(c * geometry.scale() * sign);
-        let minus_a = -a * sign;
-        let (step_whole, step_remainder) = W::narrow(minus_a * 2 * geometry.denominator).floor_div(denominator);
+        debug_assert!(geometry.c() != 0, "depth of an edge-on polygon: please report this bug");
+        // Every input and product here is within the bounds of Geometry::fits_i64
+        // when W is i64, so the work is done in W.
+        let [a, b, c] = geometry.normal.map(W::narrow);
+        let [x1, y1, z1] = geometry.points[0].map(W::narrow);
+        let two_d = W::narrow(2 * geometry.denominator);
+        // Signs folded so that the denominator c·2D is positive.
+        let flip = c < W::ZERO;
+        let signed = |v: W| if flip { W::ZERO - v } else { v };
+        let denominator = signed(c) * two_d;
+        let minus_a = signed(W::ZERO - a);
+        let (step_whole, step_remainder) = (minus_a * two_d).floor_div(denominator);
         DepthPlane {
-            minus_a: W::narrow(minus_a),
-            minus_b: W::narrow(-b * sign),
-            at_first_vertex: W::narrow(c * z1 * sign),
-            x1: W::narrow(x1),
-            y1: W::narrow(y1),
+            minus_a,
+            minus_b: signed(W::ZERO - b),
+            at_first_vertex: signed(c) * z1,
+            x1,
+            y1,
             denominator,
             half_unit: W::narrow(geometry.denominator),
             step_whole,

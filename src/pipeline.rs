@@ -258,7 +258,38 @@ impl<'s> Simulation<'s> {
 
     /// Draws every remaining polygon.
     pub fn finish<O: Observer>(&mut self, observer: &mut O) {
+        if !(O::OBSERVES_POLYGONS || O::OBSERVES_SCANLINES || O::OBSERVES_PIXELS) && self.plain_levels().is_some() {
+            // Nobody watches and the plain loop runs: one loop over the polygons.
+            self.draw_plain(None);
+            return;
+        }
         while self.draw_next(observer).is_some() {}
+    }
+
+    /// The depth test and the largest level when the plain loop runs on a
+    /// quantized z-buffer (no per-pixel effect, no stages forced on).
+    fn plain_levels(&self) -> Option<(DepthTest, u32)> {
+        let scene = self.scene;
+        if scene.has_pixel_effects() || self.stage_set != StageSet::AsAsked || !self.buffers.holds_levels() {
+            return None;
+        }
+        Plain::new(scene).plain_levels()
+    }
+
+    /// Draws every remaining polygon with the plain loop, unobserved: in
+    /// scene order, or binned into tiles of `tile`×`tile` pixels.
+    fn draw_plain(&mut self, tile: Option<u32>) {
+        let scene = self.scene;
+        let Some((test, depth_max)) = self.plain_levels() else { return };
+        let first = self.next;
+        self.next = scene.polygons.len();
+        self.stats.polygons += scene.polygons.len() - first;
+        let (stats, scratch) = (&mut self.stats, &mut self.scratch);
+        let levels = Levels { scene, test, depth_max, stats, scratch };
+        match tile {
+            None => self.buffers.with_level_cells(InOrder { levels, first }),
+            Some(tile) => self.buffers.with_level_cells(Tiles { levels, bins: bins(scene, first, tile), tile }),
+        };
     }
 
     /// Draws every remaining polygon tile by tile (`tile`×`tile` pixels), so
@@ -269,36 +300,11 @@ impl<'s> Simulation<'s> {
     /// whatever the tile size. Used for unobserved runs of the plain loop; any
     /// other scene is drawn by [`Simulation::finish`].
     pub fn finish_tiled(&mut self, tile: u32) {
-        let scene = self.scene;
-        let plain = Plain::new(scene);
-        if tile == 0
-            || scene.has_pixel_effects()
-            || self.stage_set != StageSet::AsAsked
-            || plain.plain_levels().is_none()
-            || !self.buffers.holds_levels()
-        {
+        if tile == 0 || self.plain_levels().is_none() {
             self.finish(&mut Unobserved);
-            return;
+        } else {
+            self.draw_plain(Some(tile));
         }
-        let (tiles_x, tiles_y) = (scene.width.div_ceil(tile), scene.height.div_ceil(tile));
-        let mut bins: Vec<Vec<u32>> = vec![Vec::new(); tiles_x as usize * tiles_y as usize];
-        for index in self.next..scene.polygons.len() {
-            self.stats.polygons += 1;
-            if fate(scene, index) != Fate::Drawn {
-                continue;
-            }
-            let Some(rect) = pixel_bounds(&scene.polygons[index].geometry, scene.width, scene.height) else { continue };
-            for ty in rect.rows.0 / tile..=rect.rows.1 / tile {
-                for tx in rect.columns.0 / tile..=rect.columns.1 / tile {
-                    bins[(ty * tiles_x + tx) as usize].push(index as u32);
-                }
-            }
-        }
-        self.next = scene.polygons.len();
-        let (test, depth_max) = plain.plain_levels().expect("checked above");
-        let (stats, scratch) = (&mut self.stats, &mut self.scratch);
-        let levels = Levels { scene, test, depth_max, stats, scratch };
-        self.buffers.with_level_cells(Tiles { levels, bins, tile });
     }
 
     fn draw<S: PixelStages, O: Observer>(&mut self, index: usize, stages: &S, observer: &mut O) {
@@ -405,6 +411,50 @@ impl LevelCells for Tiles<'_, '_> {
             }
         }
     }
+}
+
+/// Every polygon from `first` on, in scene order, on the whole raster.
+struct InOrder<'a, 's> {
+    levels: Levels<'a, 's>,
+    first: usize,
+}
+
+impl LevelCells for InOrder<'_, '_> {
+    type Output = ();
+
+    fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
+        let scene = self.levels.scene;
+        let rect = PixelRect::raster(scene.width, scene.height);
+        for index in self.first..scene.polygons.len() {
+            // Each polygon's vertices live in their own allocation: ask for those
+            // of a polygon a few steps ahead, so that they are in cache when drawn.
+            if let Some(ahead) = scene.polygons.get(index + 4) {
+                prefetch(ahead.geometry.points.as_ptr());
+            }
+            if fate(scene, index) == Fate::Drawn {
+                self.levels.draw((&mut *frame, &mut *depth), index, rect, &mut Unobserved);
+            }
+        }
+    }
+}
+
+/// The drawn polygons from `first` on, binned by the `tile`×`tile` tiles
+/// their bounding boxes touch, each bin in scene order.
+fn bins(scene: &Scene, first: usize, tile: u32) -> Vec<Vec<u32>> {
+    let tiles_x = scene.width.div_ceil(tile);
+    let mut bins: Vec<Vec<u32>> = vec![Vec::new(); tiles_x as usize * scene.height.div_ceil(tile) as usize];
+    for index in first..scene.polygons.len() {
+        if fate(scene, index) != Fate::Drawn {
+            continue;
+        }
+        let Some(rect) = pixel_bounds(&scene.polygons[index].geometry, scene.width, scene.height) else { continue };
+        for ty in rect.rows.0 / tile..=rect.rows.1 / tile {
+            for tx in rect.columns.0 / tile..=rect.columns.1 / tile {
+                bins[(ty * tiles_x + tx) as usize].push(index as u32);
+            }
+        }
+    }
+    bins
 }
 
 /// The plain stages on a quantized z-buffer, working on the cells directly:

@@ -18,6 +18,9 @@ pub trait Observer {
     /// Whether this observer looks at scanline events; the rasterizer skips
     /// building their crossings and spans when not.
     const OBSERVES_SCANLINES: bool = true;
+    /// Whether this observer looks at polygon events; a run that looks at
+    /// none of the three draws its polygons in one loop without them.
+    const OBSERVES_POLYGONS: bool = true;
 
     /// A polygon is about to be drawn (or skipped, see [`Fate`]).
     fn polygon(&mut self, _event: &PolygonEvent<'_>) {}
@@ -35,6 +38,7 @@ pub struct Unobserved;
 impl Observer for Unobserved {
     const OBSERVES_PIXELS: bool = false;
     const OBSERVES_SCANLINES: bool = false;
+    const OBSERVES_POLYGONS: bool = false;
 }
 
 /// What happens to a polygon as a whole.
