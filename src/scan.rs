@@ -323,9 +323,10 @@ impl<W: Word> EdgeTable<W> {
         let edges = &self.edges;
         let order = |i: &usize, j: &usize| edges[*i].position().cmp_position(&edges[*j].position());
         if let [first, second] = self.active[..] {
-            if order(&first, &second) == Ordering::Greater {
-                self.active.swap(0, 1);
-            }
+            // Which comes first is a toss-up per polygon: chosen without a branch.
+            let swap = order(&first, &second) == Ordering::Greater;
+            self.active[0] = select_unpredictable(swap, second, first);
+            self.active[1] = select_unpredictable(swap, first, second);
         } else {
             self.active.sort_unstable_by(order);
         }
