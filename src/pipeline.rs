@@ -695,6 +695,34 @@ mod tests {
         sink.0
     }
 
+    /// A steep triangle as large as the 64-bit bound allows: it runs on `i64`
+    /// without overflow (the test profile checks) and draws as on `i128`;
+    /// one pixel larger no longer fits.
+    #[test]
+    fn the_largest_steep_polygon_that_fits_64_bits_draws_as_on_128() {
+        let triangle = |size: i128| {
+            let q = |v: i128| Q::from_integer(v);
+            let rise = 1 << 30;
+            Geometry::new(&[[q(0), q(0), q(7)], [q(size), q(1), q(7 + rise)], [q(2), q(size), q(7 - rise)]]).unwrap()
+        };
+        // The largest size that fits, by bisection.
+        let (mut fits, mut fails) = (16i128, 1i128 << 32);
+        assert!(triangle(fits).fits_i64() && !triangle(fails).fits_i64());
+        while fails - fits > 1 {
+            let middle = (fits + fails) / 2;
+            if triangle(middle).fits_i64() { fits = middle } else { fails = middle }
+        }
+        let rect = PixelRect { columns: (0, 15), rows: (0, 15) };
+        for rules in
+            [Rules::default(), Rules { rows: RowRule::Closed, columns: ColumnRule::CellHolds, ..Rules::default() }]
+        {
+            let drawn = run::<i64>(&triangle(fits), rules, rect);
+            assert!(drawn.iter().filter(|line| line.starts_with('(')).count() > 20, "{drawn:?}");
+            assert_eq!(drawn, run::<i128>(&triangle(fits), rules, rect));
+        }
+        assert!(!triangle(fits + 1).fits_i64());
+    }
+
     proptest! {
         /// The 64-bit and the 128-bit words give the same crossings, spans,
         /// pixels and depths, under every rule and in any clipping rectangle.
