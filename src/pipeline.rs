@@ -127,7 +127,7 @@ fn rasterize_in<W: Word, S: RasterSink>(
         let band_last = walk.edges.activate(row).min(last_row);
         match walk.edges.pair() {
             // Two edges and nobody to tell the crossings: walk them here, one span per row.
-            Some([mut one, mut other]) if !S::OBSERVES_SCANLINES => {
+            Some([one, other]) if !S::OBSERVES_SCANLINES => {
                 for row in row..=band_last {
                     let (a, b) = (one.crossing(rules.columns), other.crossing(rules.columns));
                     one.advance();
@@ -137,7 +137,6 @@ fn rasterize_in<W: Word, S: RasterSink>(
                     span(sink, &plane, rect.columns, row, (&left, &right), row_numerator);
                     row_numerator += row_step;
                 }
-                walk.edges.set_pair([one, other]);
             }
             _ => {
                 for row in row..=band_last {

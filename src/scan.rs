@@ -334,21 +334,13 @@ impl<W: Word> EdgeTable<W> {
     }
 
     /// The active edges, left then right, when there are exactly two (every
-    /// row of a triangle or a convex polygon): copies for the caller to walk
-    /// row by row, to be handed back by [`EdgeTable::set_pair`].
+    /// row of a triangle or a convex polygon), for the caller to walk row by
+    /// row.
     #[inline]
-    pub fn pair(&self) -> Option<[WalkedEdge<W>; 2]> {
+    pub fn pair(&mut self) -> Option<[&mut WalkedEdge<W>; 2]> {
         match self.active[..] {
-            [left, right] => Some([self.edges[left], self.edges[right]]),
+            [left, right] => self.edges.get_disjoint_mut([left, right]).ok(),
             _ => None,
-        }
-    }
-
-    /// Takes back the edges [`EdgeTable::pair`] gave, walked on.
-    #[inline]
-    pub fn set_pair(&mut self, pair: [WalkedEdge<W>; 2]) {
-        if let [left, right] = self.active[..] {
-            (self.edges[left], self.edges[right]) = (pair[0], pair[1]);
         }
     }
 }
