@@ -230,11 +230,7 @@ impl<'s> Simulation<'s> {
     pub fn draw_next<O: Observer>(&mut self, observer: &mut O) -> Option<usize> {
         let index = self.next;
         let polygon = self.scene.polygons.get(index)?;
-        // Each polygon's vertices live in their own allocation: ask for those
-        // of a polygon a few steps ahead, so that they are in cache when drawn.
-        if let Some(ahead) = self.scene.polygons.get(index + 4) {
-            prefetch(ahead.geometry.points.as_ptr());
-        }
+        prefetch_ahead(self.scene, index);
         self.next += 1;
         self.stats.polygons += 1;
         let fate = fate(self.scene, index);
@@ -425,11 +421,7 @@ impl LevelCells for InOrder<'_, '_> {
         let scene = self.levels.scene;
         let rect = PixelRect::raster(scene.width, scene.height);
         for index in self.first..scene.polygons.len() {
-            // Each polygon's vertices live in their own allocation: ask for those
-            // of a polygon a few steps ahead, so that they are in cache when drawn.
-            if let Some(ahead) = scene.polygons.get(index + 4) {
-                prefetch(ahead.geometry.points.as_ptr());
-            }
+            prefetch_ahead(scene, index);
             if fate(scene, index) == Fate::Drawn {
                 self.levels.draw((&mut *frame, &mut *depth), index, rect, &mut Unobserved);
             }
@@ -629,6 +621,16 @@ fn pixel_bounds(geometry: &Geometry, width: u32, height: u32) -> Option<PixelRec
         return None;
     }
     Some(PixelRect { columns: (clamp(c0, width), clamp(c1, width)), rows: (clamp(r0, height), clamp(r1, height)) })
+}
+
+/// Each polygon's vertices live in their own allocation: asks for those of
+/// the polygon a few steps after `index` in scene order, so that they are in
+/// cache when it is drawn.
+#[inline]
+fn prefetch_ahead(scene: &Scene, index: usize) {
+    if let Some(ahead) = scene.polygons.get(index + 4) {
+        prefetch(ahead.geometry.points.as_ptr());
+    }
 }
 
 /// Asks the processor to bring the memory at `data` into its cache (a hint;
