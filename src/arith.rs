@@ -16,6 +16,7 @@
 //! differ only in the arithmetic of the raster.
 
 use std::fmt;
+use std::hint::select_unpredictable;
 
 use num_traits::Float;
 
@@ -213,8 +214,21 @@ struct FloatWalker<'p, F> {
 impl<'p, F: Float> FloatWalker<'p, F> {
     fn new(polygon: &'p FloatPolygon<F>, incremental: bool) -> FloatWalker<'p, F> {
         let half = F::from(0.5).unwrap_or_else(F::nan);
-        let edges = if incremental { Edge::table(&polygon.points, half) } else { Vec::new() };
+        let mut edges = Vec::new();
+        if incremental {
+            Edge::fill(&mut edges, &polygon.points, half);
+        }
         FloatWalker { polygon, edges, incremental, half, crossings: Vec::new() }
+    }
+
+    /// The walker for another polygon, in the same space: no allocation per polygon.
+    fn next<'q>(self, polygon: &'q FloatPolygon<F>) -> FloatWalker<'q, F> {
+        let FloatWalker { mut edges, incremental, half, crossings, .. } = self;
+        edges.clear();
+        if incremental {
+            Edge::fill(&mut edges, &polygon.points, half);
+        }
+        FloatWalker { polygon, edges, incremental, half, crossings }
     }
 
     /// The rows with `y_min ≤ row + 1/2 < y_max`, clipped to the raster.
@@ -295,25 +309,33 @@ impl<F: Float> LevelCells for FloatRaster<'_, F> {
         let max = F::from(scene.depth_max()).unwrap_or_else(F::max_value);
         let greater = scene.depth_test == crate::depth::DepthTest::Greater;
         let width = scene.width as usize;
+        let mut space: Option<FloatWalker<'_, F>> = None;
         for polygon in self.polygons {
             stats.polygons += 1;
             let Some(p) = polygon else { continue };
             let value = C::from_value(p.value);
-            let mut walker = FloatWalker::new(p, self.incremental);
-            let Some((first_row, last_row)) = walker.rows(scene.height) else { continue };
-            for row in first_row..=last_row {
-                let row_start = row as usize * width;
-                walker.row(row, scene.width, |x, z| {
-                    let cell = row_start + x as usize;
-                    stats.tested += 1;
-                    let stored = F::from(depth[cell]).unwrap_or_else(F::nan);
-                    if if greater { z > stored } else { z < stored } {
-                        stats.written += 1;
-                        frame[cell] = value;
-                        depth[cell] = (z + half).floor().max(F::zero()).min(max).to_u32().unwrap_or(0);
-                    }
-                });
+            let mut walker = match space.take() {
+                Some(walker) => walker.next(p),
+                None => FloatWalker::new(p, self.incremental),
+            };
+            if let Some((first_row, last_row)) = walker.rows(scene.height) {
+                for row in first_row..=last_row {
+                    let row_start = row as usize * width;
+                    walker.row(row, scene.width, |x, z| {
+                        let cell = row_start + x as usize;
+                        stats.tested += 1;
+                        let stored = F::from(depth[cell]).unwrap_or_else(F::nan);
+                        // As the exact loop: every cell rewritten with its old or new
+                        // value, without a branch (a NaN depth never passes).
+                        let passes = if greater { z > stored } else { z < stored };
+                        let level = (z + half).floor().max(F::zero()).min(max).to_u32().unwrap_or(0);
+                        stats.written += u64::from(passes);
+                        frame[cell] = select_unpredictable(passes, value, frame[cell]);
+                        depth[cell] = select_unpredictable(passes, level, depth[cell]);
+                    });
+                }
             }
+            space = Some(walker);
         }
         stats
     }
@@ -364,8 +386,7 @@ impl<F: Float> Edge<F> {
     /// The non-horizontal edges with their rows (half-open rule), x at the
     /// first row on the raster (row ≥ 0, evaluated directly, as a rasterizer
     /// sets an edge up where it enters the screen), and Δx.
-    fn table(points: &[[F; 3]], half: F) -> Vec<Edge<F>> {
-        let mut edges = Vec::new();
+    fn fill(edges: &mut Vec<Edge<F>>, points: &[[F; 3]], half: F) {
         for (i, v) in points.iter().enumerate() {
             let w = points[(i + 1) % points.len()];
             if v[1] == w[1] {
@@ -379,7 +400,6 @@ impl<F: Float> Edge<F> {
             let x = low[0] + dx * (first + half - low[1]);
             edges.push(Edge { first_row, last_row, row: first_row, x, dx });
         }
-        edges
     }
 
     /// The edge's x on `row`, stepping from the previous row; `None` off the edge.
