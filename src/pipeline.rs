@@ -253,9 +253,11 @@ impl<'s> Simulation<'s> {
 
     /// Draws every remaining polygon.
     pub fn finish<O: Observer>(&mut self, observer: &mut O) {
-        if !(O::OBSERVES_POLYGONS || O::OBSERVES_SCANLINES || O::OBSERVES_PIXELS) && self.plain_levels().is_some() {
+        if !(O::OBSERVES_POLYGONS || O::OBSERVES_SCANLINES || O::OBSERVES_PIXELS)
+            && let Some(levels) = self.plain_levels()
+        {
             // Nobody watches and the plain loop runs: one loop over the polygons.
-            self.draw_plain(None);
+            self.draw_plain(levels, None);
             return;
         }
         while self.draw_next(observer).is_some() {}
@@ -273,9 +275,8 @@ impl<'s> Simulation<'s> {
 
     /// Draws every remaining polygon with the plain loop, unobserved: in
     /// scene order, or binned into tiles of `tile`×`tile` pixels.
-    fn draw_plain(&mut self, tile: Option<u32>) {
+    fn draw_plain(&mut self, (test, depth_max): (DepthTest, u32), tile: Option<u32>) {
         let scene = self.scene;
-        let Some((test, depth_max)) = self.plain_levels() else { return };
         let first = self.next;
         self.next = scene.polygons.len();
         self.stats.polygons += scene.polygons.len() - first;
@@ -295,10 +296,9 @@ impl<'s> Simulation<'s> {
     /// whatever the tile size. Used for unobserved runs of the plain loop; any
     /// other scene is drawn by [`Simulation::finish`].
     pub fn finish_tiled(&mut self, tile: u32) {
-        if tile == 0 || self.plain_levels().is_none() {
-            self.finish(&mut Unobserved);
-        } else {
-            self.draw_plain(Some(tile));
+        match self.plain_levels() {
+            Some(levels) if tile > 0 => self.draw_plain(levels, Some(tile)),
+            _ => self.finish(&mut Unobserved),
         }
     }
 
