@@ -285,13 +285,6 @@ impl<W: Word> DepthPlane<W> {
             step_remainder: self.step_remainder,
         }
     }
-
-    /// A stepper at the centre of pixel `column` on the scanline at scaled
-    /// height `scan_y`; identical to [`DepthStepper::start`].
-    #[inline]
-    pub fn start(&self, column: u32, scan_y: W) -> DepthStepper<W> {
-        self.start_at(self.row_numerator(scan_y), column)
-    }
 }
 
 impl DepthStepper {
@@ -430,10 +423,10 @@ mod tests {
             let narrow = DepthPlane::<i64>::new(&geometry);
             for column in 0..32i128 {
                 assert_eq!(
-                    narrow.start(column as u32, scan_y as i64).current(),
-                    plane.start(column as u32, scan_y).current()
+                    narrow.start_at(narrow.row_numerator(scan_y as i64), column as u32).current(),
+                    plane.start_at(plane.row_numerator(scan_y), column as u32).current()
                 );
-                assert_eq!(plane.start(column as u32, scan_y).current(), {
+                assert_eq!(plane.start_at(plane.row_numerator(scan_y), column as u32).current(), {
                     let mut fresh = DepthStepper::start(&geometry, column, scan_y);
                     let depth = fresh.current();
                     fresh.advance();
