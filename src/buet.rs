@@ -451,7 +451,7 @@ pub struct Case {
 }
 
 fn read(path: &Path) -> Result<String, Error> {
-    std::fs::read_to_string(path).map_err(|source| Error::Read { path: path.to_owned(), source })
+    crate::text::read_text(path)
 }
 
 fn located(path: &Path, error: CaseError) -> Error {

@@ -91,5 +91,6 @@ pub mod scan;
 pub mod scene;
 mod scene_file;
 pub mod stages;
+pub mod text;
 pub mod trace;
 pub mod variants;

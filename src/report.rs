@@ -35,7 +35,7 @@ pub fn scene_header(scene: &Scene, path: &str) -> String {
         scene.depth_max(),
         scene.depth_test.name(),
         scene.depth_test.symbol(),
-        scene.depth_test.clear_value(scene.depth_max()),
+        scene.clear_depth,
         stages(scene).join(" → "),
         if effects.is_empty() { "none".to_string() } else { effects.join(", ") },
     )
@@ -228,6 +228,47 @@ pub struct StepJson {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Found by a new user: with `"store": "exact"` and `"clear_depth": 1` the
+    /// heading said "cleared to 15" while the buffer held 1.
+    #[test]
+    fn heading_tells_the_clear_value_the_buffer_holds_for_every_preset_and_override() {
+        use crate::pipeline::Simulation;
+        let mut checked = 0;
+        for preset in ["rogers", "buet"] {
+            for store in [None, Some("quantized"), Some("exact")] {
+                for test in [None, Some("greater"), Some("less")] {
+                    for clear in [None, Some("1"), Some("\"5/2\"")] {
+                        let quantized = store == Some("quantized") || (store.is_none() && preset == "rogers");
+                        if quantized && clear.is_some() {
+                            continue; // refused: a quantized z-buffer is cleared to its farthest level
+                        }
+                        let rules = match store {
+                            None => format!("\"{preset}\""),
+                            Some(store) => format!(r#"{{"preset": "{preset}", "store": "{store}"}}"#),
+                        };
+                        let test_key = test.map_or(String::new(), |t| format!(r#""depth_test": "{t}", "#));
+                        let clear_key = clear.map_or(String::new(), |c| format!(r#""clear_depth": {c}, "#));
+                        let json = format!(
+                            r#"{{"width": 4, "height": 3, "rules": {rules}, {test_key}{clear_key}"polygons": [{{"value": 1, "vertices": [[0, 0, "1/2"], [1, 0, "1/2"], [0, 1, "1/2"]]}}]}}"#
+                        );
+                        let scene = Scene::from_json(&json, std::path::Path::new("s.json")).expect(&json);
+                        let mut simulation = Simulation::new(&scene);
+                        simulation.finish(&mut crate::trace::Unobserved);
+                        // (3, 2) is far from the one small triangle: it keeps the clear value.
+                        let held = simulation.buffers().depth(3, 2);
+                        let heading = scene_header(&scene, "s.json");
+                        assert!(
+                            heading.contains(&format!("cleared to {held}\n")),
+                            "{json}\nthe buffer holds {held}, the heading says: {heading}"
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(checked, 36, "every combination that is not refused was checked");
+    }
 
     #[test]
     fn columns_are_right_aligned_to_their_widest_value() {

@@ -141,7 +141,9 @@ impl Window {
 /// One validated polygon.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Polygon {
-    /// Its name (from the file, or `polygon N`).
+    /// Its name (from the file, or `polygon N`), with control characters
+    /// escaped as `\u{1b}` ([`crate::text::printable`]) so that no report can
+    /// carry them to a terminal.
     pub name: String,
     /// The framebuffer value it writes; fits `frame_bits`.
     pub value: u32,
@@ -227,7 +229,7 @@ impl Scene {
 
     /// Reads and validates a scene file.
     pub fn load(path: &Path) -> Result<Scene, Error> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Read { path: path.to_owned(), source })?;
+        let text = crate::text::read_text(path)?;
         Scene::from_json(&text, path)
     }
 

@@ -13,9 +13,19 @@ use crate::perspective::{Clip, Perspective};
 use crate::plane::Geometry;
 use crate::rules::{DepthStore, Preset, Rules};
 use crate::scene::{Antialias, Effects, MAX_CELLS, MAX_SIDE, Polygon, Scene, Winding, Window, max_for_bits};
+use crate::text::printable;
 
 /// Reads and validates scene JSON; `path` is used in error messages only.
 pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
+    if let Some(found) = top_level_kind(text) {
+        return Err(Error::SceneFormat {
+            path: path.to_owned(),
+            location: String::new(),
+            message: format!(
+                "a scene is a JSON object such as {{\"width\": 32, \"height\": 32, \"polygons\": [...]}}, not {found}"
+            ),
+        });
+    }
     let mut deserializer = serde_json::Deserializer::from_str(text);
     let file: SceneFile = serde_path_to_error::deserialize(&mut deserializer).map_err(|error| Error::SceneFormat {
         path: path.to_owned(),
@@ -28,6 +38,20 @@ pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
         message: json_message(&error),
     })?;
     file.validate(path)
+}
+
+/// What the file's first value is when it is valid-looking JSON but not an
+/// object (`an array`, `a string`, …); `None` for an object or for text that
+/// the JSON reader should report itself.
+fn top_level_kind(text: &str) -> Option<&'static str> {
+    match text.trim_start().bytes().next()? {
+        b'[' => Some("an array"),
+        b'"' => Some("a string"),
+        b'-' | b'0'..=b'9' => Some("a number"),
+        b't' | b'f' if text.trim().parse::<bool>().is_ok() => Some("true or false"),
+        b'n' if text.trim() == "null" => Some("null"),
+        _ => None,
+    }
 }
 
 /// serde_json's message, saying "not valid JSON" when the syntax is at fault.
@@ -394,7 +418,8 @@ struct Frame {
 
 impl PolygonFile {
     fn validate(self, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
-        let name = self.name.unwrap_or_else(|| format!("polygon {}", index + 1));
+        // Names reach terminals in every report: control characters are kept escaped (`\u{1b}`).
+        let name = self.name.map_or_else(|| format!("polygon {}", index + 1), |name| printable(&name).into_owned());
         let fail = |name: &str, problem: PolygonProblem| Error::Polygon {
             path: PathBuf::from(path),
             index,

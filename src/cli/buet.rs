@@ -123,7 +123,7 @@ fn run_case(dir: &Path, from: Option<Source>, output: &Path, out: &mut dyn Write
 
 /// A student's z_buffer.txt: per row, the values written.
 fn parse_answer(path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
-    let text = std::fs::read_to_string(path).map_err(|source| Error::Read { path: path.to_owned(), source })?;
+    let text = zsim::text::read_text(path)?;
     let rows: Vec<Vec<String>> =
         text.lines().map(|line| line.split_whitespace().map(str::to_string).collect()).collect();
     for (i, row) in rows.iter().enumerate() {

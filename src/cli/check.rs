@@ -35,7 +35,7 @@ pub struct CheckArgs {
 }
 
 fn read_answer(path: &Path, scene: &Scene) -> Result<Matrix, Error> {
-    let text = std::fs::read_to_string(path).map_err(|source| Error::Read { path: path.to_owned(), source })?;
+    let text = zsim::text::read_text(path)?;
     parse_answer(&text, scene.width, scene.height).map_err(|message| Error::Answer { path: path.to_owned(), message })
 }
 

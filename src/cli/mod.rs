@@ -103,7 +103,8 @@ pub fn main() -> ExitCode {
             ExitCode::from(2)
         }
         Err(Failure::Input(error)) => {
-            eprintln!("zsim: {error}");
+            // Messages quote the input (names, tokens): never let it steer the terminal.
+            eprintln!("zsim: {}", zsim::text::printable(&error.to_string()));
             ExitCode::from(2)
         }
     }

@@ -15,6 +15,7 @@ mod effects;
 mod generate;
 mod golden;
 mod hard_cases;
+mod hardening;
 mod run_command;
 mod stability;
 mod teaching;

@@ -1,0 +1,105 @@
+//! What a new user found by trying zsim on files from elsewhere: names that
+//! carry terminal escapes, files saved with a byte-order mark, a scene that
+//! is not a JSON object.
+
+use std::path::{Path, PathBuf};
+
+use crate::{scene_file, zsim_in};
+
+/// A scene of one triangle over the raster's lower-left half, named `name` (JSON text).
+fn named_scene(file: &str, name_json: &str) -> (PathBuf, String) {
+    scene_file(
+        file,
+        &format!(
+            r#"{{"width": 4, "height": 3, "polygons": [{{"name": {name_json}, "value": 1, "vertices": [[0, 0, 5], [4, 0, 5], [0, 3, 5]]}}]}}"#
+        ),
+    )
+}
+
+/// Found by a new user: a scene handed out on a course site could retitle
+/// (`ESC ] 0 ; … BEL`) or recolour (`ESC [ 31 m`) the terminal through a
+/// polygon's name, and a newline in a name broke one-line messages.
+#[test]
+fn names_with_control_characters_reach_no_terminal_raw() {
+    for (file, name_json, shown) in [
+        ("title_escape.json", r#""\u001b]0;title\u0007""#, r"\u{1b}]0;title\u{7}"),
+        ("colour_escape.json", r#""\u001b[31mred""#, r"\u{1b}[31mred"),
+        ("newline.json", r#""two\nlines""#, r"two\u{a}lines"),
+    ] {
+        let (dir, name) = named_scene(file, name_json);
+        let answer = dir.join(format!("{file}.answer.txt"));
+        std::fs::write(&answer, "0 0 0 0\n1 1 0 0\n1 1 1 1\n").unwrap();
+        let commands: [Vec<&str>; 4] = [
+            vec!["run", &name],
+            vec!["explain", &name, "--pixel", "0,0"],
+            vec!["step", &name, "--polygon", "1", "--scanline", "0"],
+            vec!["check", &name, "--frame", answer.to_str().unwrap()],
+        ];
+        for args in commands {
+            let run = zsim_in(Some(&dir), &args);
+            let all = format!("{}{}", run.stdout, run.stderr);
+            assert!(!all.contains(['\u{1b}', '\u{7}']), "{file}: `zsim {}` printed a raw control character", args[0]);
+            assert!(all.contains(shown), "{file}: `zsim {}` shows the name as {shown}:\n{all}", args[0]);
+            assert!(!all.contains("two\nlines"), "{file}: `zsim {}` printed the newline raw", args[0]);
+        }
+        // Where a name is only quoted (an error message), it is escaped too.
+        let run = zsim_in(Some(&dir), &["run", &name, "--after", "\u{1b}[2J"]);
+        assert!(!run.stderr.contains('\u{1b}'), "an error quoting a name or argument is escaped: {}", run.stderr);
+    }
+}
+
+/// Found by a new user: a scene saved by Windows Notepad (UTF-8 with a
+/// byte-order mark) was refused as `expected value at line 1 column 1`.
+#[test]
+fn files_with_a_byte_order_mark_are_read() {
+    let plain =
+        r#"{"width": 4, "height": 3, "polygons": [{"value": 1, "vertices": [[0, 0, 5], [4, 0, 5], [0, 3, 5]]}]}"#;
+    let (dir, _) = scene_file("bom_plain.json", plain);
+    let (_, bom) = scene_file("bom_scene.json", &format!("\u{feff}{plain}"));
+    let expected = zsim_in(Some(&dir), &["run", "bom_plain.json", "--format", "json"]);
+    let run = zsim_in(Some(&dir), &["run", &bom, "--format", "json"]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert_eq!(run.stdout, expected.stdout, "a BOM changes nothing");
+    // An answer file with a BOM.
+    std::fs::write(dir.join("bom_answer.txt"), "\u{feff}1 0 0 0\n1 1 0 0\n1 1 1 0\n").unwrap();
+    let run = zsim_in(Some(&dir), &["check", &bom, "--frame", "bom_answer.txt"]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""), "{}", run.stdout);
+    // A course file with a BOM (BUET's scene.txt), when the course's cases are beside the project.
+    let case = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/peer/buet-cse410-a/1");
+    if !case.is_dir() {
+        eprintln!("NOTICE: {} is absent, so a BUET file with a BOM was NOT checked", case.display());
+        return;
+    }
+    let copy = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("buet-bom");
+    std::fs::create_dir_all(&copy).unwrap();
+    for file in ["scene.txt", "config.txt"] {
+        let text = std::fs::read(case.join(file)).unwrap();
+        std::fs::write(copy.join(file), [b"\xef\xbb\xbf".as_slice(), &text].concat()).unwrap();
+    }
+    let run = zsim_in(None, &["buet", "import", copy.to_str().unwrap()]);
+    let expected = zsim_in(None, &["buet", "import", case.to_str().unwrap()]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert_eq!(run.stdout, expected.stdout);
+}
+
+/// Found by a new user: `[1, 2]` was reported as
+/// `[0]: invalid type: sequence, expected u64`.
+#[test]
+fn a_scene_that_is_not_an_object_says_what_a_scene_is() {
+    for (file, text, found) in [
+        ("array.json", "[1, 2]", "an array"),
+        ("array_of_polygons.json", r#"[{"value": 1}]"#, "an array"),
+        ("number.json", "42", "a number"),
+        ("string.json", r#""scene""#, "a string"),
+    ] {
+        let (dir, name) = scene_file(file, text);
+        let run = zsim_in(Some(&dir), &["run", &name]);
+        assert_eq!(run.code, 2);
+        assert_eq!(
+            run.stderr,
+            format!(
+                "zsim: {file}: a scene is a JSON object such as {{\"width\": 32, \"height\": 32, \"polygons\": [...]}}, not {found}\n"
+            )
+        );
+    }
+}
