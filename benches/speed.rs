@@ -7,7 +7,7 @@
 //! - `tracing`: the same run unobserved, with an observer that counts pixels,
 //!   and with the full recorder that `step` uses;
 //! - `large scene`: 4096×4096 with 100,000 random triangles, polygon by
-//!   polygon and in 64-pixel tiles.
+//!   polygon and in 64-pixel tiles on one thread, two, and all cores.
 
 use std::path::Path;
 
@@ -108,13 +108,17 @@ fn large_scene(c: &mut Criterion) {
             simulation.stats().written
         })
     });
-    group.bench_function("tiles of 64", |b| {
-        b.iter(|| {
-            let mut simulation = Simulation::new(&scene);
-            simulation.finish_tiled(64);
-            simulation.stats().written
-        })
-    });
+    // Clearing the buffers is inside every measurement, as in `run --format none`.
+    let cores = std::thread::available_parallelism().map_or(1, usize::from);
+    for threads in [1, 2, cores].into_iter().collect::<std::collections::BTreeSet<_>>() {
+        group.bench_function(format!("tiles of 64, {threads} thread{}", if threads == 1 { "" } else { "s" }), |b| {
+            b.iter(|| {
+                let mut simulation = Simulation::new(&scene);
+                simulation.finish_parallel(64, threads, &|| {});
+                simulation.stats().written
+            })
+        });
+    }
     group.finish();
 }
 

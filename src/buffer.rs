@@ -19,7 +19,7 @@ pub struct Buffers {
 /// A framebuffer cell: the smallest unsigned integer that holds the scene's
 /// `frame_bits` (1 byte up to 8 bits, 2 up to 16, 4 beyond), so that large
 /// rasters take no more memory than their values need.
-pub trait FrameCell: Copy + Eq + Default + std::fmt::Debug {
+pub trait FrameCell: Copy + Eq + Default + Send + std::fmt::Debug {
     /// The cell holding `value`, which fits (values are checked against
     /// `frame_bits` when the scene is read).
     fn from_value(value: u32) -> Self;

@@ -274,18 +274,30 @@ impl<'s> Simulation<'s> {
     }
 
     /// Draws every remaining polygon with the plain loop, unobserved: in
-    /// scene order, or binned into tiles of `tile`×`tile` pixels.
-    fn draw_plain(&mut self, (test, depth_max): (DepthTest, u32), tile: Option<u32>) {
+    /// scene order, or binned into tiles as `tiling` says.
+    /// Returns how many threads drew.
+    fn draw_plain(&mut self, (test, depth_max): (DepthTest, u32), tiling: Option<Tiling<'_>>) -> usize {
         let scene = self.scene;
         let first = self.next;
         self.next = scene.polygons.len();
         self.stats.polygons += scene.polygons.len() - first;
-        let (stats, scratch) = (&mut self.stats, &mut self.scratch);
-        let levels = Levels { scene, test, depth_max, stats, scratch };
-        match tile {
-            None => self.buffers.with_level_cells(InOrder { levels, first }),
-            Some(tile) => self.buffers.with_level_cells(Tiles { levels, bins: bins(scene, first, tile), tile }),
-        };
+        match tiling {
+            None => {
+                let (stats, scratch) = (&mut self.stats, &mut self.scratch);
+                let levels = Levels { scene, test, depth_max, stats, scratch };
+                self.buffers.with_level_cells(InOrder { levels, first });
+                1
+            }
+            Some(tiling) => {
+                let bins = bins(scene, first, tiling.tile);
+                let tiles = Tiles { scene, test, depth_max, bins, tiling };
+                let (stats, threads) =
+                    self.buffers.with_level_cells(tiles).expect("plain levels imply a level z-buffer");
+                self.stats.tested += stats.tested;
+                self.stats.written += stats.written;
+                threads
+            }
+        }
     }
 
     /// Draws every remaining polygon tile by tile (`tile`×`tile` pixels), so
@@ -294,11 +306,30 @@ impl<'s> Simulation<'s> {
     /// its polygons in scene order, so every pixel sees the same sequence of
     /// depth tests as [`Simulation::finish`] and the result is identical
     /// whatever the tile size. Used for unobserved runs of the plain loop; any
-    /// other scene is drawn by [`Simulation::finish`].
+    /// other scene is drawn by [`Simulation::finish`]. One thread; see
+    /// [`Simulation::finish_parallel`] for more.
     pub fn finish_tiled(&mut self, tile: u32) {
+        self.finish_parallel(tile, 1, &|| {});
+    }
+
+    /// Like [`Simulation::finish_tiled`], on `threads` threads: each band of
+    /// one tile row (`tile` rows of the raster, a contiguous part of both
+    /// buffers) is one job of rayon's work-stealing pool, drawn tile by tile
+    /// as one thread draws it, so the result is identical for every thread
+    /// count and tile size. `band_done` is called after each band (for a
+    /// progress bar; there are `height.div_ceil(tile)` of them).
+    ///
+    /// Returns how many threads drew: `threads` (at least 1) when the plain
+    /// loop ran, 1 when the scene needed the general loop ([`Simulation::finish`]).
+    pub fn finish_parallel(&mut self, tile: u32, threads: usize, band_done: &(dyn Fn() + Sync)) -> usize {
         match self.plain_levels() {
-            Some(levels) if tile > 0 => self.draw_plain(levels, Some(tile)),
-            _ => self.finish(&mut Unobserved),
+            Some(levels) if tile > 0 => {
+                self.draw_plain(levels, Some(Tiling { tile, threads: threads.max(1), band_done }))
+            }
+            _ => {
+                self.finish(&mut Unobserved);
+                1
+            }
         }
     }
 
@@ -335,6 +366,7 @@ impl<'s> Levels<'_, 's> {
     fn draw<F: FrameCell, O: Observer>(
         &mut self,
         (frame, depth): (&mut [F], &mut [u32]),
+        first_row: u32,
         index: usize,
         rect: PixelRect,
         observer: &mut O,
@@ -347,6 +379,7 @@ impl<'s> Levels<'_, 's> {
             test: self.test,
             depth_max: self.depth_max,
             width: self.scene.width as usize,
+            first_row,
             frame,
             depth,
             stats: &mut *self.stats,
@@ -368,43 +401,92 @@ impl<O: Observer> LevelCells for OnePolygon<'_, '_, O> {
 
     fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
         let rect = PixelRect::raster(self.levels.scene.width, self.levels.scene.height);
-        self.levels.draw((frame, depth), self.index, rect, self.observer);
+        self.levels.draw((frame, depth), 0, self.index, rect, self.observer);
     }
 }
 
-/// Binned polygons, drawn tile by tile.
-struct Tiles<'a, 's> {
-    levels: Levels<'a, 's>,
-    bins: Vec<Vec<u32>>,
+/// How a tiled run is spread.
+#[derive(Clone, Copy)]
+struct Tiling<'a> {
+    /// The side of a tile, in pixels.
     tile: u32,
+    /// How many threads draw (1: bands one after the other on this thread).
+    threads: usize,
+    /// Called after each band.
+    band_done: &'a (dyn Fn() + Sync),
 }
 
-impl LevelCells for Tiles<'_, '_> {
-    type Output = ();
+/// Binned polygons, drawn tile by tile, a band of tile rows a job.
+struct Tiles<'a> {
+    scene: &'a Scene,
+    test: DepthTest,
+    depth_max: u32,
+    bins: Vec<Vec<u32>>,
+    tiling: Tiling<'a>,
+}
 
-    fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
-        let scene = self.levels.scene;
-        let (tiles_x, tiles_y, tile) = (scene.width.div_ceil(self.tile), scene.height.div_ceil(self.tile), self.tile);
-        for ty in 0..tiles_y {
-            for tx in 0..tiles_x {
-                let rect = PixelRect {
-                    columns: (tx * tile, ((tx + 1) * tile).min(scene.width) - 1),
-                    rows: (ty * tile, ((ty + 1) * tile).min(scene.height) - 1),
-                };
-                let bin = &self.bins[(ty * tiles_x + tx) as usize];
-                for (k, &index) in bin.iter().enumerate() {
-                    // The polygons of a tile lie far apart in memory: ask for the
-                    // ones a few steps ahead while this one is drawn.
-                    if let Some(&ahead) = bin.get(k + 4) {
-                        prefetch(&scene.polygons[ahead as usize].geometry);
-                    }
-                    if let Some(&ahead) = bin.get(k + 2) {
-                        prefetch(scene.polygons[ahead as usize].geometry.points.as_ptr());
-                    }
-                    self.levels.draw((&mut *frame, &mut *depth), index as usize, rect, &mut Unobserved);
+impl Tiles<'_> {
+    /// Draws band `ty` (raster rows `ty·tile …`) on its own cells, which start
+    /// at that band's first row; returns its counts.
+    fn band<F: FrameCell>(&self, ty: u32, frame: &mut [F], depth: &mut [u32]) -> Stats {
+        let scene = self.scene;
+        let tile = self.tiling.tile;
+        let tiles_x = scene.width.div_ceil(tile);
+        let (mut stats, mut scratch) = (Stats::default(), Scratch::default());
+        let mut levels =
+            Levels { scene, test: self.test, depth_max: self.depth_max, stats: &mut stats, scratch: &mut scratch };
+        let first_row = ty * tile;
+        for tx in 0..tiles_x {
+            let rect = PixelRect {
+                columns: (tx * tile, ((tx + 1) * tile).min(scene.width) - 1),
+                rows: (first_row, ((ty + 1) * tile).min(scene.height) - 1),
+            };
+            let bin = &self.bins[(ty * tiles_x + tx) as usize];
+            for (k, &index) in bin.iter().enumerate() {
+                // The polygons of a tile lie far apart in memory: ask for the
+                // ones a few steps ahead while this one is drawn.
+                if let Some(&ahead) = bin.get(k + 4) {
+                    prefetch(&scene.polygons[ahead as usize].geometry);
                 }
+                if let Some(&ahead) = bin.get(k + 2) {
+                    prefetch(scene.polygons[ahead as usize].geometry.points.as_ptr());
+                }
+                levels.draw((&mut *frame, &mut *depth), first_row, index as usize, rect, &mut Unobserved);
             }
         }
+        (self.tiling.band_done)();
+        stats
+    }
+}
+
+impl LevelCells for Tiles<'_> {
+    /// The counts, and how many threads drew.
+    type Output = (Stats, usize);
+
+    fn run<F: FrameCell>(self, frame: &mut [F], depth: &mut [u32]) -> (Stats, usize) {
+        let band_cells = self.tiling.tile as usize * self.scene.width as usize;
+        let bands = frame.chunks_mut(band_cells).zip(depth.chunks_mut(band_cells)).enumerate();
+        let add =
+            |a: Stats, b: Stats| Stats { polygons: 0, tested: a.tested + b.tested, written: a.written + b.written };
+        let one_thread = |bands: std::iter::Enumerate<_>| {
+            (bands.map(|(ty, (frame, depth))| self.band(ty as u32, frame, depth)).fold(Stats::default(), add), 1)
+        };
+        if self.tiling.threads == 1 {
+            return one_thread(bands);
+        }
+        use rayon::prelude::*;
+        let Ok(pool) = rayon::ThreadPoolBuilder::new().num_threads(self.tiling.threads).build() else {
+            // The system would not start the threads: one thread draws the same cells.
+            return one_thread(bands);
+        };
+        let bands: Vec<_> = bands.collect();
+        let stats = pool.install(|| {
+            bands
+                .into_par_iter()
+                .map(|(ty, (frame, depth))| self.band(ty as u32, frame, depth))
+                .reduce(Stats::default, add)
+        });
+        (stats, self.tiling.threads)
     }
 }
 
@@ -423,7 +505,7 @@ impl LevelCells for InOrder<'_, '_> {
         for index in self.first..scene.polygons.len() {
             prefetch_ahead(scene, index);
             if fate(scene, index) == Fate::Drawn {
-                self.levels.draw((&mut *frame, &mut *depth), index, rect, &mut Unobserved);
+                self.levels.draw((&mut *frame, &mut *depth), 0, index, rect, &mut Unobserved);
             }
         }
     }
@@ -458,6 +540,8 @@ struct LevelSink<'a, O, F> {
     test: DepthTest,
     depth_max: u32,
     width: usize,
+    /// The raster row of the cells' first row (a band's cells start there).
+    first_row: u32,
     frame: &'a mut [F],
     depth: &'a mut [u32],
     stats: &'a mut Stats,
@@ -489,7 +573,8 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         }
         let greater = self.test == DepthTest::Greater;
         let (max, value) = (i64::from(self.depth_max), self.value);
-        let cells = row as usize * self.width + first as usize..=row as usize * self.width + last as usize;
+        let start = (row - self.first_row) as usize * self.width;
+        let cells = start + first as usize..=start + last as usize;
         let (tested, mut written) = (u64::from(last - first) + 1, 0u64);
         // Branch-free: every cell is rewritten with its old or its new value.
         for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
@@ -534,7 +619,7 @@ impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
 
     #[inline]
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
-        let cell = y as usize * self.width + x as usize;
+        let cell = (y - self.first_row) as usize * self.width + x as usize;
         let (stored_before, frame_before) = (self.depth[cell], self.frame[cell].value());
         self.stats.tested += 1;
         let written = self.test.passes(depth, Stored::Level(stored_before));

@@ -40,13 +40,19 @@ pub struct RunArgs {
     /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (seed 000).
     #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
     segments: Option<zsim::variants::Segments>,
-    /// With --format none: draw tile by tile, N×N pixels (without it: polygon by polygon, with a progress bar on long runs).
+    /// With --format none: draw tile by tile, N×N pixels (default 64 when more than one thread draws).
     #[arg(long, value_name = "N")]
     tile: Option<u32>,
+    /// With --format none: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    threads: Option<u32>,
     /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32 or fixed:K.
     #[arg(long, default_value = "exact", value_parser = Arith::parse)]
     arith: Arith,
 }
+
+/// The tile side when more than one thread draws and `--tile` is not given.
+const DEFAULT_TILE: u32 = 64;
 
 /// The loop order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -83,9 +89,9 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         )
         .into());
     }
-    if args.tile.is_some() && args.format != Format::None {
+    if (args.tile.is_some() || args.threads.is_some()) && args.format != Format::None {
         return Err(zsim::error::Error::Usage(
-            "--tile applies to --format none (the other formats show the state after each polygon)".into(),
+            "--tile and --threads apply to --format none (the other formats show the state after each polygon, drawn in order)".into(),
         )
         .into());
     }
@@ -165,11 +171,23 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             emit(out, "]}\n")?;
         }
         Format::None => {
-            if let Some(tile) = args.tile.filter(|t| *t > 0) {
-                // Tiles keep the cells in cache; the result is the same as polygon by polygon.
-                simulation.finish_tiled(tile);
+            let threads = args.threads.map_or_else(
+                || std::thread::available_parallelism().map_or(1, usize::from),
+                |threads| threads as usize,
+            );
+            // A bar only where a person waits: scenes of 10,000 polygons or more.
+            let long_run = scene.polygons.len() >= 10_000;
+            let drew = if threads > 1 || args.tile.is_some_and(|t| t > 0) {
+                // Tiles keep the cells in cache and are drawn a band of tiles per job on
+                // `threads` threads; the result is the same as polygon by polygon.
+                let tile = args.tile.filter(|t| *t > 0).unwrap_or(DEFAULT_TILE);
+                let progress = progress_bar(long_run, scene.height.div_ceil(tile) as usize, "bands of tiles");
+                let band_done = || progress.inc(1);
+                let drew = simulation.finish_parallel(tile, threads, &band_done);
+                progress.finish_and_clear();
+                drew
             } else {
-                let progress = progress_bar(scene.polygons.len());
+                let progress = progress_bar(long_run, scene.polygons.len(), "polygons");
                 // The bar moves every 1024 polygons, so that it costs nothing per polygon.
                 for first in (0..scene.polygons.len()).step_by(1024) {
                     let last = (first + 1024).min(scene.polygons.len()) - 1;
@@ -177,7 +195,8 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                     progress.set_position(last as u64 + 1);
                 }
                 progress.finish_and_clear();
-            }
+                1
+            };
             let raster_time = rasterizing.elapsed();
             emit(
                 out,
@@ -188,7 +207,8 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                         &path,
                         simulation.stats(),
                         simulation.buffers().memory_bytes(),
-                        (read_time, raster_time)
+                        (read_time, raster_time),
+                        drew,
                     )
                 ),
             )?;
@@ -207,14 +227,14 @@ fn buffers_text(simulation: &Simulation<'_>, index: usize, name: &str, axes: boo
     )
 }
 
-/// A progress bar over polygons on standard error, shown only there on a
+/// A progress bar over `length` `unit`s (polygons, bands of tiles) on standard error, shown only there on a
 /// terminal and only for long runs.
-fn progress_bar(polygons: usize) -> ProgressBar {
-    if polygons < 10_000 || !std::io::stderr().is_terminal() {
+fn progress_bar(long: bool, length: usize, unit: &str) -> ProgressBar {
+    if !long || !std::io::stderr().is_terminal() {
         return ProgressBar::hidden();
     }
-    let bar = ProgressBar::new(polygons as u64);
-    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} polygons, {per_sec}") {
+    let bar = ProgressBar::new(length as u64);
+    if let Ok(style) = ProgressStyle::with_template(&format!("{{bar:40}} {{pos}}/{{len}} {unit}, {{per_sec}}")) {
         bar.set_style(style);
     }
     bar
@@ -223,7 +243,14 @@ fn progress_bar(polygons: usize) -> ProgressBar {
 /// The one-line summary: counts, effects, stages, the time spent reading and
 /// rasterizing (from clearing the buffers to the last polygon), and the memory held: the buffers' cells, the scene, and the
 /// process's peak resident size (where the system tells it).
-fn summary(scene: &Scene, path: &str, stats: Stats, buffers: u64, (read, raster): (Duration, Duration)) -> String {
+fn summary(
+    scene: &Scene,
+    path: &str,
+    stats: Stats,
+    buffers: u64,
+    (read, raster): (Duration, Duration),
+    threads: usize,
+) -> String {
     let effects = scene.effects.names();
     let rate = stats.tested as f64 / raster.as_secs_f64().max(1e-9) / 1e6;
     let scene_bytes = scene.memory_bytes();
@@ -236,7 +263,7 @@ fn summary(scene: &Scene, path: &str, stats: Stats, buffers: u64, (read, raster)
         None => String::new(),
     };
     format!(
-        "{path}: {} polygons, {} pixel centres tested, {} written; effects: {}; stages: {}; read {:.1} ms, rasterized {:.1} ms ({rate:.1} M pixels/s); memory: buffers {}, scene {}{peak}",
+        "{path}: {} polygons, {} pixel centres tested, {} written; effects: {}; stages: {}; read {:.1} ms, rasterized {:.1} ms on {threads} thread{} ({rate:.1} M pixels/s); memory: buffers {}, scene {}{peak}",
         stats.polygons,
         stats.tested,
         stats.written,
@@ -244,6 +271,7 @@ fn summary(scene: &Scene, path: &str, stats: Stats, buffers: u64, (read, raster)
         zsim::stages::describe(scene).join(" → "),
         read.as_secs_f64() * 1000.0,
         raster.as_secs_f64() * 1000.0,
+        if threads == 1 { "" } else { "s" },
         bytes(buffers),
         bytes(scene_bytes),
     )
@@ -299,7 +327,7 @@ fn run_inexact(
             emit(out, &format!("{}\n", serde_json::to_string(&json).expect("serializing plain data cannot fail")))?;
         }
         Format::None => {
-            let text = summary(scene, path, stats, buffers.memory_bytes(), (read_time, raster_time));
+            let text = summary(scene, path, stats, buffers.memory_bytes(), (read_time, raster_time), 1);
             emit(out, &format!("{text}; arithmetic {}\n", args.arith))?;
         }
         Format::Text => {

@@ -125,6 +125,11 @@ fn usage_errors_exit_with_2() {
     assert_eq!(run.code, 2);
     assert_eq!(
         run.stderr,
-        "zsim: --tile applies to --format none (the other formats show the state after each polygon)\n"
+        "zsim: --tile and --threads apply to --format none (the other formats show the state after each polygon, drawn in order)\n"
     );
+    let run = zsim_in(None, &["run", "examples/rogers.json", "--threads", "2", "--format", "json"]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert!(run.stderr.starts_with("zsim: --tile and --threads apply to --format none"), "{}", run.stderr);
+    let run = zsim_in(None, &["run", "examples/rogers.json", "--threads", "0", "--format", "none"]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""), "no thread cannot draw");
 }

@@ -19,6 +19,7 @@ mod hardening;
 mod run_command;
 mod stability;
 mod teaching;
+mod threads;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -73,6 +73,30 @@ fn format_none_prints_one_summary_line() {
 }
 
 #[test]
+fn format_none_says_how_many_threads_drew() {
+    let drew = |args: &[&str]| {
+        let run = zsim(&[&["run", "examples/rogers.json", "--format", "none"], args].concat());
+        assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+        let (_, after) = run.stdout.split_once(" ms on ").expect("the summary names the threads");
+        after.split_once(" (").expect("then the rate").0.to_string()
+    };
+    assert_eq!(drew(&["--threads", "1"]), "1 thread", "one thread, polygon by polygon");
+    assert_eq!(drew(&["--threads", "1", "--tile", "8"]), "1 thread");
+    assert_eq!(drew(&["--threads", "3", "--tile", "8"]), "3 threads");
+    assert_eq!(drew(&["--threads", "2"]), "2 threads", "tiles of 64 by default");
+    let cores = std::thread::available_parallelism().map_or(1, usize::from);
+    let all = drew(&[]);
+    assert_eq!(
+        all,
+        if cores == 1 { "1 thread".to_string() } else { format!("{cores} threads") },
+        "all cores by default"
+    );
+    // A scene with a per-pixel effect runs the general loop, on one thread, and says so.
+    let run = zsim(&["run", "examples/section.json", "--format", "none", "--threads", "2"]);
+    assert!(run.stdout.contains(" ms on 1 thread ("), "{}", run.stdout);
+}
+
+#[test]
 fn axes_label_rows_and_columns() {
     let run = zsim(&["run", "examples/rogers.json", "--final", "--axes"]);
     assert_eq!(run.code, 0);

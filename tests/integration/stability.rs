@@ -164,10 +164,14 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
 
     /// The unobserved run (its own loop, two-edge bands, 64-bit spans), a
-    /// watched run (the general path) and tiled runs leave the same buffers
-    /// and the same counts.
+    /// watched run (the general path) and tiled runs on 1 to 4 threads leave
+    /// the same buffers and the same counts.
     #[test]
-    fn every_path_draws_alike(polygons in prop::collection::vec(planar_polygon(), 1..5), tile in 1u32..6) {
+    fn every_path_draws_alike(
+        polygons in prop::collection::vec(planar_polygon(), 1..5),
+        tile in 1u32..6,
+        threads in 1usize..5,
+    ) {
         let json = scene_json(&polygons);
         let Ok(scene) = Scene::from_json(&json, Path::new("prop.json")) else { return Ok(()) };
         let mut quiet = Simulation::new(&scene);
@@ -176,9 +180,9 @@ proptest! {
         let mut watching = Watching::default();
         watched.finish(&mut watching);
         let mut tiled = Simulation::new(&scene);
-        tiled.finish_tiled(tile);
+        tiled.finish_parallel(tile, threads, &|| {});
         prop_assert_eq!(quiet.buffers(), watched.buffers(), "scene: {}", json);
-        prop_assert_eq!(quiet.buffers(), tiled.buffers(), "tile {}, scene: {}", tile, json);
+        prop_assert_eq!(quiet.buffers(), tiled.buffers(), "tile {}, {} threads, scene: {}", tile, threads, json);
         prop_assert_eq!(quiet.stats(), watched.stats());
         prop_assert_eq!(watching.pixels, quiet.stats().tested);
         prop_assert_eq!(quiet.stats().written, tiled.stats().written);
