@@ -2,7 +2,11 @@
 //! (`cargo bench --bench speed`):
 //!
 //! - `arithmetic`: the accuracy set (256×256, triangles of 4 … 256 px, the hard
-//!   cases) in exact mode and in `f32-incremental`;
+//!   cases) in exact mode, in `f32-incremental` and in `f32-edge` (the loop a
+//!   GPU runs: edge functions over the bounding box);
+//! - `peer`: the same small triangles drawn by zsim (exact and `f32-edge`)
+//!   and by a public crate's software rasterizer, `euc` 0.5 (barycentric
+//!   weights per pixel over the bounding box, an `f32` depth buffer);
 //! - `small triangles`: a cache-resident scene of small triangles, for pixels per second;
 //! - `tracing`: the same run unobserved, with an observer that counts pixels,
 //!   and with the full recorder that `step` uses;
@@ -34,7 +38,7 @@ fn arithmetic(c: &mut Criterion) {
     let scenes = accuracy::scenes(&Settings { seed: 1, width: 256, height: 256, scenes: 2 }).expect("the accuracy set");
     let mut group = c.benchmark_group("arithmetic on the accuracy set");
     group.sample_size(10);
-    for mode in [Arith::Exact, Arith::F32Incremental] {
+    for mode in [Arith::Exact, Arith::F32Incremental, Arith::F32Edge] {
         let inputs: Vec<Prepared> = scenes.iter().map(|s| Prepared::new(s, mode).expect("supported")).collect();
         group.bench_function(mode.to_string(), |b| b.iter(|| inputs.iter().map(|p| p.raster().1.tested).sum::<u64>()));
     }
@@ -122,5 +126,80 @@ fn large_scene(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, arithmetic, small_triangles, tracing, large_scene);
+/// The triangles of a scene as `euc` draws them: one value and one depth per
+/// triangle, vertices in its clip space (x, y in −1 … 1 over the raster; euc
+/// puts y = 1 at the top row, so the picture is mirrored, which costs nothing).
+struct Flat;
+
+impl euc::Pipeline for Flat {
+    type Vertex = ([f32; 4], u8);
+    type VsOut = ();
+    type Pixel = u8;
+
+    #[inline(always)]
+    fn vert(&self, vertex: &Self::Vertex) -> ([f32; 4], Self::VsOut) {
+        (vertex.0, ())
+    }
+
+    #[inline(always)]
+    fn frag(&self, _: &Self::VsOut) -> u8 {
+        1
+    }
+
+    #[inline(always)]
+    fn get_depth_strategy(&self) -> euc::DepthStrategy {
+        // zsim's `greater`: the larger depth is nearer.
+        euc::DepthStrategy::IfMoreWrite
+    }
+}
+
+fn euc_vertices(scene: &Scene) -> Vec<([f32; 4], u8)> {
+    let (w, h) = (scene.width as f64, scene.height as f64);
+    scene
+        .polygons
+        .iter()
+        .flat_map(|p| {
+            p.vertices.iter().map(move |v| {
+                let [x, y, z] = v.map(zsim::exact::to_f64);
+                ([(2.0 * x / w - 1.0) as f32, (2.0 * y / h - 1.0) as f32, z as f32, 1.0], p.value as u8)
+            })
+        })
+        .collect()
+}
+
+fn peer(c: &mut Criterion) {
+    use euc::{Pipeline, buffer::Buffer2d, rasterizer};
+    let mut group = c.benchmark_group("peer rasterizer, 4000 triangles on 256x256");
+    group.sample_size(20);
+    for max_size in [8, 24] {
+        let scene = random(4000, 256, max_size, 2);
+        group.throughput(Throughput::Elements(pixels(&scene)));
+        group.bench_function(format!("zsim exact, up to {max_size} px"), |b| {
+            b.iter(|| {
+                let mut simulation = Simulation::new(&scene);
+                simulation.finish(&mut Unobserved);
+                simulation.stats().written
+            })
+        });
+        let edge = Prepared::new(&scene, Arith::F32Edge).expect("supported");
+        group.bench_function(format!("zsim f32-edge, up to {max_size} px"), |b| b.iter(|| edge.raster().1.written));
+        let vertices = euc_vertices(&scene);
+        group.bench_function(format!("euc 0.5, up to {max_size} px"), |b| {
+            b.iter(|| {
+                // Cleared for every run, as zsim's buffers are.
+                let mut frame = Buffer2d::new([256, 256], 0u8);
+                let mut depth = Buffer2d::new([256, 256], 0.0f32);
+                Flat.draw::<rasterizer::Triangles<_, rasterizer::BackfaceCullingDisabled>, _>(
+                    &vertices,
+                    &mut frame,
+                    Some(&mut depth),
+                );
+                frame.as_ref()[0]
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, arithmetic, small_triangles, tracing, large_scene, peer);
 criterion_main!(benches);

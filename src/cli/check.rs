@@ -29,7 +29,7 @@ pub struct CheckArgs {
     /// Check the state after this polygon (number from 1, or name); default: the last.
     #[arg(long, value_name = "N|NAME")]
     after: Option<String>,
-    /// The arithmetic the answer was computed in: exact, f64, f64-incremental, f32-incremental, f32 or fixed:K.
+    /// The arithmetic the answer was computed in: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
     #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
     arith: zsim::arith::Arith,
 }

@@ -24,7 +24,7 @@ pub struct ExplainArgs {
     /// Also show each polygon's point-in-polygon tests at the centre (ray and arc), as `--order pixels` uses them.
     #[arg(long)]
     inside: bool,
-    /// Also show what this arithmetic leaves in the pixel: f64, f64-incremental, f32-incremental, f32 or fixed:K.
+    /// Also show what this arithmetic leaves in the pixel: f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
     #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
     arith: zsim::arith::Arith,
     /// Also show which segment holds the pixel and which polygons that segment visits.

@@ -46,7 +46,7 @@ pub struct RunArgs {
     /// With --format none: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
-    /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32 or fixed:K.
+    /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
     #[arg(long, default_value = "exact", value_parser = Arith::parse)]
     arith: Arith,
 }

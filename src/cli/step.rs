@@ -31,7 +31,7 @@ pub struct StepArgs {
     /// Before each pixel's result is shown, ask what the z-buffer will hold.
     #[arg(long, conflicts_with = "polygon")]
     quiz: bool,
-    /// Also show what an inexact arithmetic computes on each scanline: f64, f64-incremental, f32-incremental or f32.
+    /// Also show what an inexact arithmetic computes on each scanline: f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
     #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
     arith: zsim::arith::Arith,
 }
@@ -398,10 +398,16 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
             .filter(|e| !float.pixels.iter().any(|(x, _)| *x == e.x))
             .map(|e| e.x.to_string())
             .collect();
+        let found = match float.bounding_columns {
+            Some((first, last)) => {
+                format!("edge functions at the centres of the bounding box's columns {first} … {last}")
+            }
+            None if crossings.is_empty() => "crossings none".to_string(),
+            None => format!("crossings {}", crossings.join(", ")),
+        };
         text.push_str(&format!(
-            "in {} arithmetic: crossings {}\n  {}\n",
+            "in {} arithmetic: {found}\n  {}\n",
             tracer.arith,
-            if crossings.is_empty() { "none".to_string() } else { crossings.join(", ") },
             if pixels.is_empty() { "no pixel covered".to_string() } else { pixels.join("\n  ") }
         ));
         if !missed.is_empty() {
