@@ -346,6 +346,19 @@ pub fn fraction(value: Q) -> String {
     if value.is_integer() { value.numer().to_string() } else { format!("{}/{}", value.numer(), value.denom()) }
 }
 
+/// A number as a student writes it: `12`, `12.5`, `5.375`, or a fraction
+/// (`41/3`) when no decimal of at most four places is exact.
+///
+/// ```
+/// use zsim::exact::{Q, short};
+/// assert_eq!((short(Q::new(13, 2)), short(Q::new(43, 8)), short(Q::new(41, 3))), ("6.5".into(), "5.375".into(), "41/3".into()));
+/// ```
+pub fn short(value: Q) -> String {
+    (0..=4)
+        .find(|places| (value * Q::from_integer(10i128.pow(*places))).is_integer())
+        .map_or_else(|| fraction(value), |places| decimal(value, places))
+}
+
 /// The decimal approximation printed beside an exact value: always `places`
 /// digits after the point, rounded half away from zero, computed exactly.
 pub fn decimal(value: Q, places: u32) -> String {

@@ -8,7 +8,7 @@ use std::fmt::Write as _;
 
 use crate::buffer::Buffers;
 use crate::depth::Stored;
-use crate::exact::{Q, decimal};
+use crate::exact::{Q, decimal, short};
 use crate::scene::Scene;
 
 /// Largest raster side a figure draws.
@@ -37,14 +37,41 @@ pub enum Shading {
     Depth,
 }
 
+/// What a figure adds for a worksheet or an answer key.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Extras {
+    /// Label each outlined polygon's vertices with their coordinates `(x, y, z)`.
+    pub vertex_labels: bool,
+    /// Lines of text below the axes (what to fill in, say).
+    pub caption: Vec<String>,
+}
+
 /// Draws the buffers after polygon `last` (0-based): polygons `0 ..= last`
 /// are outlined. The raster must be at most [`MAX_FIGURE_SIDE`] on a side.
 pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, title: &str) -> String {
+    svg_with(scene, buffers, last, shading, title, &Extras::default())
+}
+
+/// Like [`svg`], with vertex labels and a caption.
+pub fn svg_with(
+    scene: &Scene,
+    buffers: &Buffers,
+    last: usize,
+    shading: Shading,
+    title: &str,
+    extras: &Extras,
+) -> String {
     let (width, height) = (i128::from(scene.width), i128::from(scene.height));
-    let total_width = MARGIN_LEFT + width * CELL + MARGIN_RIGHT;
-    let total_height = MARGIN_TOP + height * CELL + MARGIN_BOTTOM;
+    // Vertex labels reach out beside the raster: room for them on both sides.
+    let pad = if extras.vertex_labels { 100 } else { 0 };
+    let (left, right) = (MARGIN_LEFT + pad, MARGIN_RIGHT + pad);
+    let total_width = left + width * CELL + right;
+    // About 6 units a character at font size 11.
+    let caption = wrap(&extras.caption, ((total_width - left - 8) / 6).max(20) as usize);
+    let caption_height = 16 * caption.len() as i128;
+    let total_height = MARGIN_TOP + height * CELL + MARGIN_BOTTOM + caption_height;
     // Pixel-unit point to SVG coordinates: x right, y up (flipped).
-    let sx = |x: Q| decimal(Q::from_integer(MARGIN_LEFT) + x * CELL, 2);
+    let sx = |x: Q| decimal(Q::from_integer(left) + x * CELL, 2);
     let sy = |y: Q| decimal(Q::from_integer(MARGIN_TOP) + (Q::from_integer(height) - y) * CELL, 2);
     let int = |v: i128| Q::from_integer(v);
     let mut out = String::new();
@@ -54,7 +81,7 @@ pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, titl
     );
     let _ = writeln!(out, r#"<title>{}</title>"#, escape(title));
     let _ = writeln!(out, r#"<rect width="100%" height="100%" fill="white"/>"#);
-    let _ = writeln!(out, r#"<text x="{MARGIN_LEFT}" y="20" font-size="13">{}</text>"#, escape(title));
+    let _ = writeln!(out, r#"<text x="{left}" y="20" font-size="13">{}</text>"#, escape(title));
     // Covered pixels.
     let _ = writeln!(out, r#"<g id="pixels" stroke="none" shape-rendering="crispEdges">"#);
     let range = exact_range(scene, buffers);
@@ -123,17 +150,27 @@ pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, titl
             points.join(" "),
             escape(&polygon.name)
         );
-        let first = polygon.vertices[0];
+        // At vertex 1; with vertex labels (which sit there) at the polygon's middle, on a halo.
+        let n = Q::from_integer(polygon.vertices.len() as i128);
+        let (at, halo) = if extras.vertex_labels {
+            let middle = |axis: usize| polygon.vertices.iter().map(|v| v[axis]).sum::<Q>() / n;
+            ([middle(0), middle(1)], r#" stroke="white" stroke-width="3" paint-order="stroke" font-weight="bold""#)
+        } else {
+            ([polygon.vertices[0][0], polygon.vertices[0][1]], r#" stroke="none""#)
+        };
         let _ = writeln!(
             out,
-            r#"<text x="{}" y="{}" stroke="none" fill="black">{} {}</text>"#,
-            sx(first[0]),
-            sy(first[1]),
+            r#"<text x="{}" y="{}"{halo} fill="black">{} {}</text>"#,
+            sx(at[0]),
+            sy(at[1]),
             index + 1,
             escape(&polygon.name)
         );
     }
     let _ = writeln!(out, "</g>");
+    if extras.vertex_labels {
+        vertex_labels(&mut out, scene, last, (&sx, &sy));
+    }
     // Axes: column numbers below, row numbers on the left.
     let step = if width.max(height) > 64 {
         8
@@ -157,14 +194,53 @@ pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, titl
         let _ = writeln!(
             out,
             r#"<text x="{}" y="{}" text-anchor="end">{row}</text>"#,
-            MARGIN_LEFT - 6,
+            left - 6,
             sy(Q::new(2 * row + 1, 2) - Q::new(1, 3))
         );
     }
-    let _ = writeln!(out, r#"<text x="12" y="{}">y</text>"#, sy(Q::new(height, 2)));
+    let _ = writeln!(out, r#"<text x="{}" y="{}">y</text>"#, left - 28, sy(Q::new(height, 2)));
     let _ = writeln!(out, "</g>");
+    if !caption.is_empty() {
+        let _ = writeln!(out, r#"<g id="caption" fill="black">"#);
+        for (k, line) in caption.iter().enumerate() {
+            let y = MARGIN_TOP + height * CELL + MARGIN_BOTTOM + 16 * k as i128 + 4;
+            let _ = writeln!(out, r#"<text x="{left}" y="{y}">{}</text>"#, escape(line));
+        }
+        let _ = writeln!(out, "</g>");
+    }
     let _ = writeln!(out, "</svg>");
     out
+}
+
+/// Each vertex of polygons `0 ..= last` labelled `(x, y, z)`, set off from
+/// the vertex away from its polygon's middle, on a white halo so that the
+/// label stays readable over lines.
+fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&dyn Fn(Q) -> String, &dyn Fn(Q) -> String)) {
+    let _ = writeln!(
+        out,
+        r#"<g id="vertices" font-size="10" fill="black" stroke="white" stroke-width="3" paint-order="stroke">"#
+    );
+    for polygon in scene.polygons.iter().take(last + 1) {
+        let n = Q::from_integer(polygon.vertices.len() as i128);
+        let middle_x = polygon.vertices.iter().map(|v| v[0]).sum::<Q>() / n;
+        let middle_y = polygon.vertices.iter().map(|v| v[1]).sum::<Q>() / n;
+        for v in &polygon.vertices {
+            // Left of the middle: the label ends at the vertex; right: it starts there.
+            let (anchor, dx) = if v[0] < middle_x { ("end", Q::new(-1, 4)) } else { ("start", Q::new(1, 4)) };
+            let dy = if v[1] < middle_y { Q::new(-1, 2) } else { Q::new(1, 4) };
+            let label = format!("({}, {}, {})", short(v[0]), short(v[1]), short(v[2]));
+            let _ = writeln!(
+                out,
+                r#"<circle cx="{}" cy="{}" r="2.5" stroke="none"/><text x="{}" y="{}" text-anchor="{anchor}">{}</text>"#,
+                sx(v[0]),
+                sy(v[1]),
+                sx(v[0] + dx),
+                sy(v[1] + dy),
+                escape(&label)
+            );
+        }
+    }
+    let _ = writeln!(out, "</g>");
 }
 
 /// The fill of cell (x, y), or `None` where it shows the background.
@@ -223,6 +299,25 @@ fn exact_range(scene: &Scene, buffers: &Buffers) -> (Q, Q) {
     written
         .fold(None, |range: Option<(Q, Q)>, v| Some(range.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v)))))
         .unwrap_or((Q::from_integer(0), Q::from_integer(1)))
+}
+
+/// The lines, each broken at spaces to at most `width` characters.
+fn wrap(lines: &[String], width: usize) -> Vec<String> {
+    let mut out = Vec::new();
+    for line in lines {
+        let mut current = String::new();
+        for word in line.split(' ') {
+            if !current.is_empty() && current.chars().count() + 1 + word.chars().count() > width {
+                out.push(std::mem::take(&mut current));
+            }
+            if !current.is_empty() {
+                current.push(' ');
+            }
+            current.push_str(word);
+        }
+        out.push(current);
+    }
+    out
 }
 
 fn escape(text: &str) -> String {

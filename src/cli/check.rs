@@ -34,7 +34,8 @@ pub struct CheckArgs {
     arith: zsim::arith::Arith,
 }
 
-fn read_answer(path: &Path, scene: &Scene) -> Result<Matrix, Error> {
+/// Reads an answer file for `scene`: a matrix as the book prints it.
+pub fn read_answer(path: &Path, scene: &Scene) -> Result<Matrix, Error> {
     let text = zsim::text::read_text(path)?;
     parse_answer(&text, scene.width, scene.height).map_err(|message| Error::Answer { path: path.to_owned(), message })
 }
@@ -55,19 +56,42 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let mut answers = Vec::new();
     for (buffer, path) in [(Buffer::Frame, &args.frame), (Buffer::Depth, &args.depth)] {
         if let Some(path) = path {
-            answers.push((buffer, path, read_answer(path, &scene)?));
+            answers.push((buffer, path.as_path(), read_answer(path, &scene)?));
         }
     }
-    zsim::arith::check_supported(&scene, args.arith)?;
-    let mut simulation = Simulation::new(&scene);
+    let report = report(&scene, &args.scene, last, answers, args.arith)?;
+    emit(out, &report.text)?;
+    Ok(if report.differs { Finish::Differs } else { Finish::Ok })
+}
+
+/// What checking one student's answers found.
+pub struct Report {
+    /// What `zsim check` prints: per answer, "all cells match" or the table of wrong cells.
+    pub text: String,
+    /// Whether any cell differs.
+    pub differs: bool,
+}
+
+/// Checks `answers` (already read) against the buffers after polygon `last`,
+/// computed in `arith`, and explains every wrong cell: `zsim check`'s output,
+/// also the feedback `zsim grade` writes for each student.
+pub fn report(
+    scene: &Scene,
+    scene_path: &Path,
+    last: usize,
+    answers: Vec<(Buffer, &Path, Matrix)>,
+    arith: zsim::arith::Arith,
+) -> Result<Report, Error> {
+    zsim::arith::check_supported(scene, arith)?;
+    let mut simulation = Simulation::new(scene);
     simulation.draw_through(last, &mut Unobserved);
     // An inexact mode's buffers after polygon `last`: run it on the scene cut after that polygon.
-    let mode_buffers = if args.arith == zsim::arith::Arith::Exact {
+    let mode_buffers = if arith == zsim::arith::Arith::Exact {
         None
     } else {
         let mut prefix = scene.clone();
         prefix.polygons.truncate(last + 1);
-        Some(zsim::arith::run(&prefix, args.arith)?.0)
+        Some(zsim::arith::run(&prefix, arith)?.0)
     };
     let reference = mode_buffers.as_ref().unwrap_or(simulation.buffers());
     let cells = scene.width as usize * scene.height as usize;
@@ -78,7 +102,7 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             Buffer::Depth => reference.depth_level_rows().ok_or_else(|| {
                 Error::Usage(format!(
                     "{}: this scene keeps exact depths, so its z-buffer has no integer matrix to check; check the framebuffer, or a BUET z_buffer.txt with `zsim buet check`",
-                    args.scene.display()
+                    scene_path.display()
                 ))
             })?,
         };
@@ -87,12 +111,12 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     // Watch the differing cells through a second run, to explain each.
     let mut watcher = PixelWatcher::new(results.iter().flat_map(|(_, _, m)| m.iter().map(|c| (c.x, c.y))));
     if results.iter().any(|(_, _, m)| !m.is_empty()) {
-        Simulation::new(&scene).draw_through(last, &mut watcher);
+        Simulation::new(scene).draw_through(last, &mut watcher);
     }
     let mut text = String::new();
     let mut differs = false;
     for (buffer, path, mismatches) in &results {
-        let after = polygon_name(&scene, last);
+        let after = polygon_name(scene, last);
         if mismatches.is_empty() {
             text.push_str(&format!(
                 "{} {}: all {cells} cells match the {} after {after}\n",
@@ -111,13 +135,9 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             mismatches.len(),
             buffer.name()
         ));
-        text.push_str(&format!(
-            "{}\n",
-            table(&scene, *buffer, mismatches, &watcher, (args.arith, simulation.buffers()))
-        ));
+        text.push_str(&format!("{}\n", table(scene, *buffer, mismatches, &watcher, (arith, simulation.buffers()))));
     }
-    emit(out, &text)?;
-    Ok(if differs { Finish::Differs } else { Finish::Ok })
+    Ok(Report { text, differs })
 }
 
 fn table(

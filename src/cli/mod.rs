@@ -4,9 +4,11 @@
 mod accuracy;
 mod buet;
 mod check;
+mod exercise;
 mod explain;
 mod figure;
 mod generate;
+mod grade;
 mod run;
 mod step;
 mod variants;
@@ -35,6 +37,10 @@ enum Command {
     Explain(explain::ExplainArgs),
     /// Check a homework answer (a framebuffer and/or z-buffer) and explain every wrong cell.
     Check(check::CheckArgs),
+    /// Make a new exercise: scene, worksheet, answer key, the hard cases it contains.
+    Exercise(exercise::ExerciseArgs),
+    /// Grade a class: every student's answers in a folder, the common mistakes, feedback files.
+    Grade(grade::GradeArgs),
     /// Every arithmetic mode against exact: mismatches and time; a depth-bits sweep.
     Accuracy(accuracy::AccuracyArgs),
     /// Bits and bytes of the framebuffer and z-buffer for a raster.
@@ -87,6 +93,8 @@ pub fn main() -> ExitCode {
         Command::Step(args) => step::run(&args, &mut out),
         Command::Explain(args) => explain::run(&args, &mut out),
         Command::Check(args) => check::run(&args, &mut out),
+        Command::Grade(args) => grade::run(&args, &mut out),
+        Command::Exercise(args) => exercise::run(&args, &mut out),
         Command::Figure(args) => figure::run(&args, &mut out),
         Command::Buet(args) => buet::run(&args, &mut out),
         Command::Accuracy(args) => accuracy::run(&args, &mut out),

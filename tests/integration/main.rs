@@ -11,6 +11,7 @@
 mod accuracy;
 mod bad_input;
 mod buet;
+mod classroom;
 mod effects;
 mod generate;
 mod golden;

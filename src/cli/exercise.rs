@@ -1,0 +1,167 @@
+//! `zsim exercise`: a new exercise in the book's style, with its worksheet
+//! and answer key, repeatable from its seed.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+use zsim::error::Error;
+use zsim::exercise::{Exercise, HardCase, Spec, make};
+use zsim::figure::{Extras, Shading, svg_with};
+use zsim::pipeline::Simulation;
+use zsim::report::matrix;
+use zsim::trace::Unobserved;
+
+use super::{Failure, Finish, emit};
+
+/// Arguments of `zsim exercise`.
+#[derive(Debug, Args)]
+pub struct ExerciseArgs {
+    /// Seed: the same seed (and options) gives byte-identical files.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Raster size, WxH (4 … 64 each).
+    #[arg(long, default_value = "16x16", value_parser = parse_size)]
+    size: (u32, u32),
+    /// How many polygons (1 … 8).
+    #[arg(long, default_value_t = 2)]
+    polygons: usize,
+    /// Framebuffer bits (1 … 8).
+    #[arg(long, default_value_t = 2)]
+    frame_bits: u32,
+    /// z-buffer bits (1 … 16).
+    #[arg(long, default_value_t = 4)]
+    depth_bits: u32,
+    /// Cases the exercise must contain, comma-separated: vertex-on-scanline, centre-on-edge, half-depth, saturation, hidden, intersecting, concave.
+    #[arg(long, value_name = "LIST")]
+    hard: Option<String>,
+    /// Also write the answer after each polygon (answer.after-N.frame.txt, …).
+    #[arg(long)]
+    each_polygon: bool,
+    /// The folder to write into (made if need be).
+    #[arg(short, long, value_name = "DIR")]
+    output: PathBuf,
+}
+
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    text.split_once(['x', '×'])
+        .and_then(|(w, h)| Some((w.trim().parse().ok()?, h.trim().parse().ok()?)))
+        .ok_or_else(|| format!("\"{text}\" is not a size: write WxH, e.g. 16x16"))
+}
+
+pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let spec = Spec {
+        seed: args.seed,
+        width: args.size.0,
+        height: args.size.1,
+        polygons: args.polygons,
+        frame_bits: args.frame_bits,
+        depth_bits: args.depth_bits,
+        hard: HardCase::parse_list(args.hard.as_deref().unwrap_or(""))
+            .map_err(|e| Error::Usage(format!("--hard: {e}")))?,
+    };
+    let exercise = make(&spec).map_err(Error::Usage)?;
+    let dir = &args.output;
+    std::fs::create_dir_all(dir).map_err(|source| Error::Write { path: dir.clone(), source })?;
+    let write = |name: &str, text: &str| {
+        let path = dir.join(name);
+        std::fs::write(&path, text).map_err(|source| Error::Write { path, source })
+    };
+    write("scene.json", &exercise.json)?;
+    let scene = &exercise.scene;
+    let last = scene.polygons.len() - 1;
+    let mut simulation = Simulation::new(scene);
+    let mut written = vec!["scene.json".to_string()];
+    while let Some(index) = simulation.draw_next(&mut Unobserved) {
+        if args.each_polygon && index < last {
+            for (kind, text) in answers(&simulation) {
+                let name = format!("answer.after-{}.{kind}.txt", index + 1);
+                write(&name, &text)?;
+                written.push(name);
+            }
+        }
+    }
+    for (kind, text) in answers(&simulation) {
+        let name = format!("answer.{kind}.txt");
+        write(&name, &text)?;
+        written.push(name);
+    }
+    let label = format!("exercise, seed {}", args.seed);
+    let worksheet = svg_with(
+        scene,
+        Simulation::new(scene).buffers(),
+        last,
+        Shading::Frame,
+        &format!("{label}: {}×{} raster, {} polygons", scene.width, scene.height, scene.polygons.len()),
+        &Extras {
+            vertex_labels: true,
+            caption: vec![
+                format!(
+                    "Draw the polygons in order (A first) with the z-buffer algorithm: larger z is nearer, the z-buffer starts at 0, holds 0 … {} (rounded, saturated).",
+                    scene.depth_max()
+                ),
+                "Write the framebuffer (each polygon's value) and the z-buffer after the last polygon, top row first."
+                    .to_string(),
+            ],
+        },
+    );
+    write("worksheet.svg", &worksheet)?;
+    written.push("worksheet.svg".into());
+    let solution = svg_with(
+        scene,
+        simulation.buffers(),
+        last,
+        Shading::Frame,
+        &format!("{label}: the framebuffer after the last polygon"),
+        &Extras { vertex_labels: true, caption: Vec::new() },
+    );
+    write("solution.svg", &solution)?;
+    written.push("solution.svg".into());
+    let notes = notes(&exercise, &spec, args);
+    write("exercise.txt", &notes)?;
+    written.push("exercise.txt".into());
+    emit(out, &format!("{notes}wrote {} in {}\n", written.join(", "), dir.display()))?;
+    Ok(Finish::Ok)
+}
+
+/// The framebuffer and the z-buffer as `zsim check` reads them.
+fn answers(simulation: &Simulation<'_>) -> [(&'static str, String); 2] {
+    let buffers = simulation.buffers();
+    let depth = buffers.depth_level_rows().expect("exercises keep a quantized z-buffer");
+    [("frame", matrix(&buffers.frame_rows(), false)), ("depth", matrix(&depth, false))]
+}
+
+/// What the teacher reads: the settings, the cases asked for and found, and where.
+fn notes(exercise: &Exercise, spec: &Spec, args: &ExerciseArgs) -> String {
+    let scene = &exercise.scene;
+    let asked: Vec<&str> = spec.hard.iter().map(|c| c.name()).collect();
+    let mut text = format!(
+        "exercise: seed {}, {}×{} raster, {} polygons, framebuffer {} bits, z-buffer {} bits (0 … {}), depth test greater\n",
+        spec.seed,
+        scene.width,
+        scene.height,
+        scene.polygons.len(),
+        scene.frame_bits,
+        scene.depth_bits,
+        scene.depth_max()
+    );
+    text.push_str(&format!(
+        "asked for: {} (candidate {} of the seed's sequence)\n",
+        if asked.is_empty() { "no particular case".to_string() } else { asked.join(", ") },
+        exercise.tries
+    ));
+    text.push_str("it contains (found in the run's trace, first place each):\n");
+    if exercise.found.is_empty() {
+        text.push_str("  none of the hard cases\n");
+    }
+    for found in &exercise.found {
+        text.push_str(&format!("  {}: {}\n", found.case, found.place));
+    }
+    let dir = args.output.display();
+    text.push_str(&format!(
+        "check an answer: zsim check {} --frame FRAME.txt --depth DEPTH.txt; grade a class: zsim grade {} CLASS_DIR\n",
+        Path::new(&dir.to_string()).join("scene.json").display(),
+        Path::new(&dir.to_string()).join("scene.json").display()
+    ));
+    text
+}

@@ -1,0 +1,323 @@
+//! `zsim grade`: every student's answers in a folder, one row a student, the
+//! cells most students got wrong, and optionally a feedback file each.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use clap::{Args, ValueEnum};
+use comfy_table::{ContentArrangement, Table, presets};
+use zsim::arith::Arith;
+use zsim::error::Error;
+use zsim::explain::{Buffer, polygon_name, why};
+use zsim::grade::{CommonMistake, Grade, Handed, Submission, common_mistakes, file_kind, grade};
+use zsim::pipeline::Simulation;
+use zsim::scene::Scene;
+use zsim::text::printable;
+use zsim::trace::{PixelWatcher, Unobserved};
+
+use super::check::{read_answer, report};
+use super::{Failure, Finish, emit};
+
+/// Arguments of `zsim grade`.
+#[derive(Debug, Args)]
+pub struct GradeArgs {
+    /// The scene file (JSON) of the exercise.
+    scene: PathBuf,
+    /// The folder of answers: NAME.frame.txt and/or NAME.depth.txt per student, as `zsim check` reads them.
+    class: PathBuf,
+    /// Grade the state after this polygon (number from 1, or name); default: the last.
+    #[arg(long, value_name = "N|NAME")]
+    after: Option<String>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+    /// Write each student's feedback (`zsim check`'s explanation of every wrong cell) to FOLDER/NAME.txt, and the common mistakes to FOLDER/common-mistakes.txt.
+    #[arg(short, long, value_name = "FOLDER")]
+    output: Option<PathBuf>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Format {
+    /// A table, then the common mistakes.
+    Text,
+    /// One row a student with a header row: student,frame_wrong,depth_wrong,score,status.
+    Csv,
+    /// One object: students and common mistakes.
+    Json,
+}
+
+/// How many common mistakes are listed.
+const MISTAKES_LISTED: usize = 10;
+
+pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let scene = Scene::load(&args.scene)?;
+    if scene.polygons.is_empty() {
+        return Err(Error::Usage(format!("{}: the scene has no polygons to grade", args.scene.display())).into());
+    }
+    let last = match &args.after {
+        Some(spec) => scene.find_polygon(spec)?,
+        None => scene.polygons.len() - 1,
+    };
+    let files = answer_files(&args.class)?;
+    let mut simulation = Simulation::new(&scene);
+    simulation.draw_through(last, &mut Unobserved);
+    let mut expected = Vec::new();
+    for buffer in [Buffer::Frame, Buffer::Depth] {
+        if !files.iter().any(|(_, b, _)| *b == buffer) {
+            continue;
+        }
+        let matrix = match buffer {
+            Buffer::Frame => simulation.buffers().frame_rows(),
+            Buffer::Depth => simulation.buffers().depth_level_rows().ok_or_else(|| {
+                Error::Usage(format!(
+                    "{}: this scene keeps exact depths, so its z-buffer has no integer matrix to grade; grade the framebuffers",
+                    args.scene.display()
+                ))
+            })?,
+        };
+        expected.push((buffer, matrix));
+    }
+    let submissions = submissions(&files, &expected, &scene);
+    let graded = grade(&submissions, &expected);
+    let mistakes = common_mistakes(&graded, MISTAKES_LISTED);
+    let reasons = reasons(&scene, last, &mistakes);
+    let after = polygon_name(&scene, last);
+    let mistakes_text = mistakes_text(&mistakes, &reasons, graded.len());
+    let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
+    let text = match args.format {
+        Format::Csv => csv(&rows),
+        Format::Json => json(&args.scene, &after, &rows, &mistakes, &reasons),
+        Format::Text => {
+            let counts = |f: fn(&Grade) -> bool| rows.iter().filter(|g| f(g)).count();
+            format!(
+                "class {} on {} after {after}: {} students; {} ok, {} wrong, {} malformed, {} missing an answer\n{}\n\n{mistakes_text}",
+                args.class.display(),
+                args.scene.display(),
+                rows.len(),
+                counts(|g| g.status == zsim::grade::Status::Ok),
+                counts(|g| g.status == zsim::grade::Status::Wrong),
+                counts(|g| matches!(g.status, zsim::grade::Status::Malformed(_))),
+                counts(|g| matches!(g.status, zsim::grade::Status::Missing(_))),
+                table(&rows)
+            )
+        }
+    };
+    if let Some(folder) = &args.output {
+        write_feedback(folder, &scene, args, last, &files, &graded, &mistakes_text)?;
+    }
+    emit(out, &text)?;
+    Ok(if rows.iter().all(|g| g.status == zsim::grade::Status::Ok) { Finish::Ok } else { Finish::Differs })
+}
+
+/// The answer files in the class folder: (student, buffer, path), by student
+/// then framebuffer before z-buffer. Other files are passed over.
+fn answer_files(class: &Path) -> Result<Vec<(String, Buffer, PathBuf)>, Error> {
+    let entries = std::fs::read_dir(class).map_err(|source| Error::Read { path: class.to_owned(), source })?;
+    let mut files = Vec::new();
+    for entry in entries {
+        let entry = entry.map_err(|source| Error::Read { path: class.to_owned(), source })?;
+        let name = entry.file_name().to_string_lossy().into_owned();
+        for buffer in [Buffer::Frame, Buffer::Depth] {
+            if let Some(student) = name.strip_suffix(&format!(".{}.txt", file_kind(buffer)))
+                && !student.is_empty()
+                && !student.starts_with('.')
+            {
+                files.push((student.to_string(), buffer, entry.path()));
+            }
+        }
+    }
+    if files.is_empty() {
+        return Err(Error::Usage(format!(
+            "{}: no answers found: name each student's files NAME.frame.txt and/or NAME.depth.txt",
+            class.display()
+        )));
+    }
+    files.sort_by(|a, b| a.0.cmp(&b.0).then((a.1 == Buffer::Depth).cmp(&(b.1 == Buffer::Depth))));
+    Ok(files)
+}
+
+/// Each student's answers for the buffers the class hands in, read and checked for shape.
+fn submissions(
+    files: &[(String, Buffer, PathBuf)],
+    expected: &[(Buffer, Vec<Vec<u32>>)],
+    scene: &Scene,
+) -> Vec<Submission> {
+    let mut students: Vec<&str> = files.iter().map(|(s, _, _)| s.as_str()).collect();
+    students.dedup();
+    students
+        .into_iter()
+        .map(|student| {
+            let answers = expected
+                .iter()
+                .map(|(buffer, _)| {
+                    let file = files.iter().find(|(s, b, _)| s == student && b == buffer);
+                    let handed = match file {
+                        None => Handed::Missing,
+                        Some((_, _, path)) => match read_answer(path, scene) {
+                            Ok(matrix) => Handed::Matrix(matrix),
+                            Err(Error::Answer { message, .. }) => Handed::Malformed(message),
+                            Err(other) => Handed::Malformed(other.to_string()),
+                        },
+                    };
+                    (*buffer, handed)
+                })
+                .collect();
+            Submission { student: printable(student).into_owned(), answers }
+        })
+        .collect()
+}
+
+/// zsim's reason for each common mistake, from one watched run.
+fn reasons(scene: &Scene, last: usize, mistakes: &[CommonMistake]) -> Vec<String> {
+    let mut watcher = PixelWatcher::new(mistakes.iter().map(|m| (m.x, m.y)));
+    if !mistakes.is_empty() {
+        Simulation::new(scene).draw_through(last, &mut watcher);
+    }
+    mistakes.iter().map(|m| why(scene, m.buffer, m.x, m.y, watcher.history(m.x, m.y))).collect()
+}
+
+fn table(rows: &[&Grade]) -> Table {
+    let mut table = Table::new();
+    table.load_style(presets::ASCII_MARKDOWN).set_header([
+        "student",
+        "frame wrong",
+        "depth wrong",
+        "score %",
+        "status",
+    ]);
+    for grade in rows {
+        let count = |c: Option<usize>| c.map_or_else(|| "-".to_string(), |c| c.to_string());
+        table.add_row([
+            grade.student.clone(),
+            count(grade.frame_wrong),
+            count(grade.depth_wrong),
+            grade.percent(),
+            grade.status.to_string(),
+        ]);
+    }
+    table
+}
+
+fn mistakes_text(mistakes: &[CommonMistake], reasons: &[String], students: usize) -> String {
+    if mistakes.is_empty() {
+        return "common mistakes: no cell was got wrong by more than one student\n".to_string();
+    }
+    let mut table = Table::new();
+    table
+        .load_style(presets::ASCII_MARKDOWN)
+        .set_content_arrangement(ContentArrangement::Dynamic)
+        .set_width(100)
+        .set_header(["buffer", "x", "y", "wrong", "right", "answered", "why"]);
+    for (mistake, reason) in mistakes.iter().zip(reasons) {
+        let answered: Vec<String> =
+            mistake.answers.iter().map(|(value, count)| format!("{value} ({count}×)")).collect();
+        table.add_row([
+            mistake.buffer.name().to_string(),
+            mistake.x.to_string(),
+            mistake.y.to_string(),
+            format!("{} of {students}", mistake.students.len()),
+            mistake.right.to_string(),
+            answered.join(", "),
+            reason.clone(),
+        ]);
+    }
+    format!("common mistakes (cells at least two students got wrong, most first):\n{table}\n")
+}
+
+/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
+fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) { format!("\"{}\"", text.replace('"', "\"\"")) } else { text.to_string() }
+}
+
+fn csv(rows: &[&Grade]) -> String {
+    let mut text = String::from("student,frame_wrong,depth_wrong,score,status\n");
+    for grade in rows {
+        let count = |c: Option<usize>| c.map_or_else(String::new, |c| c.to_string());
+        text.push_str(&format!(
+            "{},{},{},{},{}\n",
+            csv_field(&grade.student),
+            count(grade.frame_wrong),
+            count(grade.depth_wrong),
+            grade.percent(),
+            csv_field(&grade.status.to_string())
+        ));
+    }
+    text
+}
+
+fn json(scene: &Path, after: &str, rows: &[&Grade], mistakes: &[CommonMistake], reasons: &[String]) -> String {
+    let students: Vec<serde_json::Value> = rows
+        .iter()
+        .map(|g| {
+            serde_json::json!({
+                "student": g.student,
+                "frame_wrong": g.frame_wrong,
+                "depth_wrong": g.depth_wrong,
+                "score": g.percent(),
+                "status": g.status.to_string(),
+            })
+        })
+        .collect();
+    let mistakes: Vec<serde_json::Value> = mistakes
+        .iter()
+        .zip(reasons)
+        .map(|(m, why)| {
+            serde_json::json!({
+                "buffer": m.buffer.name(),
+                "x": m.x,
+                "y": m.y,
+                "right": m.right,
+                "students": m.students,
+                "answers": m.answers.iter().map(|(value, count)| serde_json::json!({"value": value, "count": count})).collect::<Vec<_>>(),
+                "why": why,
+            })
+        })
+        .collect();
+    let object = serde_json::json!({
+        "scene": scene.display().to_string(),
+        "after": after,
+        "students": students,
+        "common_mistakes": mistakes,
+    });
+    format!("{}\n", serde_json::to_string_pretty(&object).expect("serializing plain data cannot fail"))
+}
+
+/// FOLDER/NAME.txt for each student and FOLDER/common-mistakes.txt.
+fn write_feedback(
+    folder: &Path,
+    scene: &Scene,
+    args: &GradeArgs,
+    last: usize,
+    files: &[(String, Buffer, PathBuf)],
+    graded: &[(Grade, Vec<zsim::grade::WrongCells>)],
+    mistakes_text: &str,
+) -> Result<(), Error> {
+    let write = |path: PathBuf, text: &str| std::fs::write(&path, text).map_err(|source| Error::Write { path, source });
+    std::fs::create_dir_all(folder).map_err(|source| Error::Write { path: folder.to_owned(), source })?;
+    for (grade, _) in graded {
+        let mut text = format!(
+            "{}: {} after {}: score {} %, {}\n",
+            grade.student,
+            args.scene.display(),
+            polygon_name(scene, last),
+            grade.percent(),
+            grade.status
+        );
+        // The answers that were read, explained as `zsim check` explains them.
+        let mut answers = Vec::new();
+        for (student, buffer, path) in files {
+            if printable(student) != grade.student {
+                continue;
+            }
+            match read_answer(path, scene) {
+                Ok(matrix) => answers.push((*buffer, path.as_path(), matrix)),
+                Err(error) => text.push_str(&format!("{}\n", printable(&error.to_string()))),
+            }
+        }
+        if !answers.is_empty() {
+            text.push_str(&report(scene, &args.scene, last, answers, Arith::Exact)?.text);
+        }
+        write(folder.join(format!("{}.txt", grade.student)), &text)?;
+    }
+    write(folder.join("common-mistakes.txt"), mistakes_text)
+}

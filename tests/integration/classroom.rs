@@ -1,0 +1,340 @@
+//! For the teacher: `zsim exercise` makes an exercise with its answer key,
+//! `zsim grade` grades a folder of answers. Both through the real binary.
+
+use std::path::{Path, PathBuf};
+
+use zsim::exact::Q;
+use zsim::pipeline::Simulation;
+use zsim::scene::Scene;
+use zsim::trace::{Outcome, Recorder};
+
+use crate::zsim;
+
+/// A fresh scratch folder.
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn path(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// The book's final matrices as `zsim run --format json --final` gives them, as answer text.
+fn book_answers() -> (String, String) {
+    let run = zsim(&["run", "examples/rogers.json", "--format", "json", "--final"]);
+    let json: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
+    let text = |key: &str| -> String {
+        json["steps"][0][key]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|row| row.as_array().unwrap().iter().map(|v| v.to_string()).collect::<Vec<_>>().join(" ") + "\n")
+            .collect()
+    };
+    (text("frame"), text("depth"))
+}
+
+/// Replaces the value at (x, y) (y up, 32 rows) in an answer's text.
+fn with_cell(answer: &str, x: usize, y: usize, value: u32) -> String {
+    let mut rows: Vec<Vec<String>> =
+        answer.lines().map(|l| l.split_whitespace().map(str::to_string).collect()).collect();
+    let height = rows.len();
+    rows[height - 1 - y][x] = value.to_string();
+    rows.iter().map(|r| r.join(" ") + "\n").collect()
+}
+
+/// A class: ana right, bo and cy wrong at the book's subtle cells, di's
+/// framebuffer malformed, ed without a z-buffer answer.
+fn class_folder(name: &str) -> PathBuf {
+    let dir = scratch(name);
+    let (frame, depth) = book_answers();
+    let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).unwrap();
+    write("ana.frame.txt", &frame);
+    write("ana.depth.txt", &depth);
+    // (20, 15) holds 11 and (20, 17) holds 10: the rounding the book turns on.
+    let mistaken = with_cell(&with_cell(&depth, 20, 15, 10), 20, 17, 11);
+    write("bo.frame.txt", &frame);
+    write("bo.depth.txt", &mistaken);
+    write("cy.frame.txt", &with_cell(&frame, 0, 0, 2));
+    write("cy.depth.txt", &mistaken);
+    write("di.frame.txt", "0 1 x\n");
+    write("di.depth.txt", &depth);
+    write("ed.frame.txt", &frame);
+    write("notes.md", "passed over: not an answer");
+    dir
+}
+
+#[test]
+fn grade_gives_a_row_per_student_sorted_with_the_status_of_each() {
+    let class = class_folder("class-rows");
+    let run = zsim(&["grade", "examples/rogers.json", path(&class), "--format", "csv"]);
+    assert_eq!((run.code, run.stderr.as_str()), (1, ""), "some answers are wrong: exit 1");
+    assert_eq!(
+        run.stdout,
+        "student,frame_wrong,depth_wrong,score,status\n\
+         ana,0,0,100.0,ok\n\
+         bo,0,2,99.9,wrong\n\
+         cy,1,2,99.9,wrong\n\
+         di,,0,50.0,\"malformed: di.frame.txt: line 1, value 3: \"\"x\"\" is not a whole number from 0 to 4294967295\"\n\
+         ed,0,,50.0,missing: ed.depth.txt\n"
+    );
+}
+
+#[test]
+fn grade_lists_the_common_mistakes_with_zsims_reason() {
+    let class = class_folder("class-mistakes");
+    let run = zsim(&["grade", "examples/rogers.json", path(&class)]);
+    assert_eq!(run.code, 1);
+    assert!(
+        run.stdout.starts_with("class ")
+            && run.stdout.contains(": 5 students; 1 ok, 2 wrong, 1 malformed, 1 missing an answer\n"),
+        "{}",
+        run.stdout
+    );
+    let mistakes = run.stdout.split_once("common mistakes").expect("a common-mistakes section").1;
+    // Both of bo's and cy's shared cells, with the reason; cy's own (0, 0) is not common.
+    assert!(mistakes.contains("| z-buffer | 20 | 17 | 2 of 5 | 10    | 11 (2×)"), "{mistakes}");
+    assert!(mistakes.contains("| z-buffer | 20 | 15 | 2 of 5 | 11    | 10 (2×)"), "{mistakes}");
+    assert!(mistakes.contains("z = 41/4"), "{mistakes}");
+    assert!(!mistakes.contains("| framebuffer | 0  | 0 "), "{mistakes}");
+    let json = zsim(&["grade", "examples/rogers.json", path(&class), "--format", "json"]);
+    let value: serde_json::Value = serde_json::from_str(&json.stdout).unwrap();
+    assert_eq!(value["students"].as_array().unwrap().len(), 5);
+    assert_eq!(value["students"][1]["depth_wrong"], 2);
+    assert_eq!(value["students"][3]["frame_wrong"], serde_json::Value::Null);
+    assert_eq!(value["common_mistakes"][0]["students"], serde_json::json!(["bo", "cy"]));
+}
+
+#[test]
+fn grade_writes_each_student_checks_explanation() {
+    let class = class_folder("class-feedback");
+    let feedback = scratch("feedback");
+    let run = zsim(&["grade", "examples/rogers.json", path(&class), "--format", "csv", "-o", path(&feedback)]);
+    assert_eq!(run.code, 1);
+    let bo = std::fs::read_to_string(feedback.join("bo.txt")).unwrap();
+    let check = zsim(&[
+        "check",
+        "examples/rogers.json",
+        "--frame",
+        path(&class.join("bo.frame.txt")),
+        "--depth",
+        path(&class.join("bo.depth.txt")),
+    ]);
+    let (heading, rest) = bo.split_once('\n').unwrap();
+    assert_eq!(heading, "bo: examples/rogers.json after polygon 2 \"triangle\": score 99.9 %, wrong");
+    assert_eq!(rest, check.stdout, "the feedback is what `zsim check` says");
+    let di = std::fs::read_to_string(feedback.join("di.txt")).unwrap();
+    assert!(di.contains("di.frame.txt: line 1, value 3: \"x\" is not a whole number"), "{di}");
+    assert!(di.contains("di.depth.txt: all 1024 cells match"), "the answer that was read is still checked: {di}");
+    assert!(std::fs::read_to_string(feedback.join("common-mistakes.txt")).unwrap().contains("2 of 5"));
+}
+
+#[test]
+fn grade_exits_0_for_a_right_class_and_2_for_bad_usage() {
+    let (frame, depth) = book_answers();
+    let right = scratch("class-right");
+    std::fs::write(right.join("ana.frame.txt"), &frame).unwrap();
+    std::fs::write(right.join("ana.depth.txt"), &depth).unwrap();
+    let run = zsim(&["grade", "examples/rogers.json", path(&right), "--format", "csv"]);
+    assert_eq!(
+        (run.code, run.stdout.as_str()),
+        (0, "student,frame_wrong,depth_wrong,score,status\nana,0,0,100.0,ok\n")
+    );
+    let run = zsim(&["grade", "examples/rogers.json", "no/such/folder"]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert!(run.stderr.starts_with("zsim: no/such/folder: cannot read"), "{}", run.stderr);
+    let empty = scratch("class-empty");
+    let run = zsim(&["grade", "examples/rogers.json", path(&empty)]);
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.contains("no answers found: name each student's files NAME.frame.txt"), "{}", run.stderr);
+    let run = zsim(&["grade", "no-such-scene.json", path(&right)]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+}
+
+/// The cases of an exercise, found here from a recorded trace, apart from zsim's own finder.
+fn cases_in_trace(scene: &Scene) -> Vec<&'static str> {
+    let mut recorder = Recorder::default();
+    Simulation::new(scene).finish(&mut recorder);
+    let mut cases = Vec::new();
+    let half = Q::new(1, 2);
+    let on_scanline = recorder.scanlines.iter().any(|s| {
+        let y = Q::from_integer(i128::from(s.row)) + half;
+        scene.polygons[s.index].vertices.iter().any(|v| v[1] == y)
+    });
+    let centre_on_edge = recorder
+        .scanlines
+        .iter()
+        .any(|s| s.pixels.iter().any(|p| s.crossings.contains(&(Q::from_integer(i128::from(p.x)) + half))));
+    let pixels: Vec<_> = recorder.scanlines.iter().flat_map(|s| s.pixels.iter()).collect();
+    let half_depth = pixels.iter().any(|p| p.compared.value() - p.compared.value().floor() == half);
+    let saturation = pixels.iter().any(|p| {
+        p.outcome == Outcome::Written
+            && (p.compared.rounded() < 0 || p.compared.rounded() > i128::from(scene.depth_max()))
+    });
+    let hidden = pixels.iter().any(|p| p.outcome == Outcome::Hidden);
+    // Intersecting: a later polygon both overwrites and is hidden by the same earlier one.
+    let mut owner = vec![None; (scene.width * scene.height) as usize];
+    let (mut over, mut under) = (Vec::new(), Vec::new());
+    for p in &pixels {
+        let cell = (p.y * scene.width + p.x) as usize;
+        match (p.outcome, owner[cell]) {
+            (Outcome::Written, Some(o)) if o != p.index => over.push((o, p.index)),
+            (Outcome::Hidden, Some(o)) if o != p.index => under.push((o, p.index)),
+            _ => {}
+        }
+        if p.outcome == Outcome::Written {
+            owner[cell] = Some(p.index);
+        }
+    }
+    let intersecting = over.iter().any(|pair| under.contains(pair));
+    let concave = recorder.scanlines.iter().any(|s| s.spans.len() >= 2);
+    for (present, name) in [
+        (on_scanline, "vertex-on-scanline"),
+        (centre_on_edge, "centre-on-edge"),
+        (half_depth, "half-depth"),
+        (saturation, "saturation"),
+        (hidden, "hidden"),
+        (intersecting, "intersecting"),
+        (concave, "concave"),
+    ] {
+        if present {
+            cases.push(name);
+        }
+    }
+    cases
+}
+
+#[test]
+fn an_exercise_contains_every_hard_case_asked_for_and_its_key_checks() {
+    let all = "vertex-on-scanline,centre-on-edge,half-depth,saturation,hidden,intersecting,concave";
+    for (seed, hard, polygons) in
+        [("1", all, "3"), ("2", "concave", "1"), ("3", "hidden,half-depth", "2"), ("4", "", "2")]
+    {
+        let dir = scratch(&format!("exercise-{seed}"));
+        let mut args = vec!["exercise", "--seed", seed, "--polygons", polygons, "-o", path(&dir)];
+        if !hard.is_empty() {
+            args.extend(["--hard", hard]);
+        }
+        let run = zsim(&args);
+        assert_eq!((run.code, run.stderr.as_str()), (0, ""), "seed {seed}");
+        let scene = Scene::load(&dir.join("scene.json")).unwrap();
+        let present = cases_in_trace(&scene);
+        for case in hard.split(',').filter(|c| !c.is_empty()) {
+            assert!(present.contains(&case), "seed {seed}: {case} is not in the trace; found {present:?}");
+            assert!(run.stdout.contains(&format!("\n  {case}: ")), "seed {seed}: the exercise states {case}");
+        }
+        // The exercise states exactly the cases the trace shows.
+        let stated: Vec<&str> =
+            run.stdout.lines().filter_map(|l| l.strip_prefix("  ")?.split_once(':').map(|s| s.0)).collect();
+        assert_eq!(stated, present, "seed {seed}");
+        let check = zsim(&[
+            "check",
+            path(&dir.join("scene.json")),
+            "--frame",
+            path(&dir.join("answer.frame.txt")),
+            "--depth",
+            path(&dir.join("answer.depth.txt")),
+        ]);
+        assert_eq!(check.code, 0, "seed {seed}: {}", check.stdout);
+        let worksheet = std::fs::read_to_string(dir.join("worksheet.svg")).unwrap();
+        let document = roxmltree::Document::parse(&worksheet).expect("the worksheet is well-formed SVG");
+        let labels = document
+            .descendants()
+            .filter(|n| n.parent().is_some_and(|p| p.attribute("id") == Some("vertices")) && n.has_tag_name("text"))
+            .count();
+        let vertices: usize = scene.polygons.iter().map(|p| p.vertices.len()).sum();
+        assert_eq!(labels, vertices, "seed {seed}: every vertex labelled");
+        assert!(
+            !worksheet.contains(
+                r#"<g id="pixels" stroke="none" shape-rendering="crispEdges">
+<rect"#
+            ),
+            "seed {seed}: the worksheet's grid is empty"
+        );
+    }
+}
+
+#[test]
+fn the_same_seed_gives_byte_identical_files() {
+    let (one, two) = (scratch("exercise-same-1"), scratch("exercise-same-2"));
+    for dir in [&one, &two] {
+        let run = zsim(&[
+            "exercise",
+            "--seed",
+            "42",
+            "--hard",
+            "hidden,concave",
+            "--polygons",
+            "3",
+            "--each-polygon",
+            "-o",
+            path(dir),
+        ]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+    }
+    let mut names: Vec<String> =
+        std::fs::read_dir(&one).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    assert_eq!(
+        names,
+        [
+            "answer.after-1.depth.txt",
+            "answer.after-1.frame.txt",
+            "answer.after-2.depth.txt",
+            "answer.after-2.frame.txt",
+            "answer.depth.txt",
+            "answer.frame.txt",
+            "exercise.txt",
+            "scene.json",
+            "solution.svg",
+            "worksheet.svg"
+        ]
+    );
+    for name in &names {
+        let (a, b) = (std::fs::read(one.join(name)).unwrap(), std::fs::read(two.join(name)).unwrap());
+        // exercise.txt names its folder; everything else is the same byte for byte.
+        if name == "exercise.txt" {
+            let strip = |t: Vec<u8>| {
+                String::from_utf8(t)
+                    .unwrap()
+                    .lines()
+                    .filter(|l| !l.starts_with("check an answer"))
+                    .collect::<Vec<_>>()
+                    .join("\n")
+            };
+            assert_eq!(strip(a), strip(b));
+        } else {
+            assert_eq!(a, b, "{name}");
+        }
+    }
+    // The answer after polygon 1 checks as the state after polygon 1.
+    let run = zsim(&[
+        "check",
+        path(&one.join("scene.json")),
+        "--after",
+        "1",
+        "--depth",
+        path(&one.join("answer.after-1.depth.txt")),
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stdout);
+}
+
+#[test]
+fn exercise_refuses_what_it_cannot_make() {
+    let dir = scratch("exercise-bad");
+    let run = zsim(&["exercise", "--hard", "tricky", "-o", path(&dir)]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert!(
+        run.stderr.starts_with("zsim: --hard: \"tricky\" is not a hard case: vertex-on-scanline"),
+        "{}",
+        run.stderr
+    );
+    let run = zsim(&["exercise", "--hard", "hidden", "--polygons", "1", "-o", path(&dir)]);
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.contains("need two polygons or more"), "{}", run.stderr);
+    let run = zsim(&["exercise", "--size", "100x100", "-o", path(&dir)]);
+    assert_eq!(run.code, 2);
+}
