@@ -28,12 +28,21 @@ pub struct StepArgs {
     /// The row of the scanline to show (the scanline is at y = row + 1/2); needs --polygon.
     #[arg(long, value_name = "Y", requires = "polygon")]
     scanline: Option<u32>,
-    /// Before each pixel's result is shown, ask what the z-buffer will hold.
-    #[arg(long, conflicts_with = "polygon")]
-    quiz: bool,
+    /// A quiz: before each pixel's result, ask what the z-buffer will hold; `--quiz coverage` first asks which centres the scanline covers. With --polygon and --scanline it starts there.
+    #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "depth", value_name = "depth|coverage")]
+    quiz: Option<QuizMode>,
     /// Also show what an inexact arithmetic computes on each scanline: f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
     #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
     arith: zsim::arith::Arith,
+}
+
+/// What the quiz asks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum QuizMode {
+    /// The z-buffer value after each covered pixel.
+    Depth,
+    /// First which centres the scanline covers, then the z-buffer values.
+    Coverage,
 }
 
 /// One polygon's recorded scanlines, with the buffers before it.
@@ -133,6 +142,7 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     zsim::arith::check_supported(&scene, args.arith)?;
     let color = super::use_color();
     let mut tracer = Tracer::new(&scene, args.arith);
+    let mut start = None;
     if let (Some(spec), Some(row)) = (&args.polygon, args.scanline) {
         let polygon = scene.find_polygon(spec)?;
         let trace = tracer.trace(polygon);
@@ -151,10 +161,13 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             ))
             .into());
         };
-        emit(out, &stop_text(&mut tracer, polygon, k, color))?;
-        return Ok(Finish::Ok);
+        if args.quiz.is_none() {
+            emit(out, &stop_text(&mut tracer, polygon, k, color))?;
+            return Ok(Finish::Ok);
+        }
+        start = Some((polygon, k));
     }
-    interactive(&scene, &args.scene.display().to_string(), &mut tracer, args.quiz, color, out)
+    interactive(&scene, &args.scene.display().to_string(), &mut tracer, (args.quiz, start), color, out)
 }
 
 /// Lines typed by the user (or piped in by a script).
@@ -207,28 +220,48 @@ fn interactive(
     scene: &Scene,
     path: &str,
     tracer: &mut Tracer<'_>,
-    quiz: bool,
+    (quiz, start): (Option<QuizMode>, Option<(usize, usize)>),
     color: bool,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
     let mut input = Input::stdin();
-    let mut score = (0usize, 0usize);
+    let mut quiz_state = QuizState::default();
     emit(out, &format!("{}{HELP}\n", report::scene_header(scene, path)))?;
-    let (mut position, skipped) = tracer.next_stop(None);
-    emit(out, &mentions(&skipped))?;
+    let mut position = match start {
+        Some(at) => Some(at),
+        None => {
+            let (first, skipped) = tracer.next_stop(None);
+            emit(out, &mentions(&skipped))?;
+            first
+        }
+    };
     let mut show = true;
     loop {
+        let mut typed = None;
         match position {
             Some((p, k)) if show => {
-                if quiz && !ask(scene, tracer, (p, k), &mut score, &mut input, out)? {
-                    break;
+                if let Some(mode) = quiz {
+                    match ask(scene, tracer, (p, k), mode, &mut quiz_state, &mut input, out)? {
+                        Asked::Answered => {}
+                        Asked::Quit => break,
+                        // A navigation key during the questions: leave them and go.
+                        Asked::Navigate(line) => typed = Some(line),
+                    }
                 }
-                emit(out, &stop_text(tracer, p, k, color))?;
+                if typed.is_none() {
+                    emit(out, &stop_text(tracer, p, k, color))?;
+                }
             }
             None if show => emit(out, "end of the scene: no more scanlines (b back, q quit)\n")?,
             _ => {}
         }
-        let Some(line) = input.read(out, "zsim step> ")? else { break };
+        let line = match typed {
+            Some(line) => line,
+            None => match input.read(out, "zsim step> ")? {
+                Some(line) => line,
+                None => break,
+            },
+        };
         show = true;
         match parse_command(&line) {
             Command::Quit => break,
@@ -264,6 +297,10 @@ fn interactive(
                     }
                 }
             }
+            Command::Go(row) if row >= scene.height => {
+                emit(out, &format!("row {row} is outside the raster (rows 0 … {})\n", scene.height - 1))?;
+                show = false;
+            }
             Command::Go(row) => {
                 let p = position.map_or(0, |(p, _)| p).min(scene.polygons.len().saturating_sub(1));
                 let found = tracer.trace(p).scanlines.iter().position(|r| r.row == row);
@@ -283,62 +320,217 @@ fn interactive(
             }
         }
     }
-    if quiz {
-        emit(out, &format!("quiz score: {} of {} right\n", score.0, score.1))?;
+    if quiz.is_some() {
+        emit(out, &quiz_state.summary())?;
     }
     Ok(Finish::Ok)
+}
+
+/// The quiz's score and the mistakes made, for the summary.
+#[derive(Debug, Default)]
+struct QuizState {
+    right: usize,
+    asked: usize,
+    mistakes: Vec<String>,
+}
+
+impl QuizState {
+    /// Scores one answer and says so: `right` or `wrong` with the reason.
+    fn score(&mut self, right: bool, mistake: impl FnOnce() -> String) -> &'static str {
+        self.asked += 1;
+        if right {
+            self.right += 1;
+            "right"
+        } else {
+            self.mistakes.push(mistake());
+            "wrong"
+        }
+    }
+
+    /// The score, and each mistake with what was right and why.
+    fn summary(&self) -> String {
+        let mut text = format!("quiz score: {} of {} right\n", self.right, self.asked);
+        if !self.mistakes.is_empty() {
+            text.push_str("your mistakes:\n");
+            for mistake in &self.mistakes {
+                text.push_str(&format!("  {mistake}\n"));
+            }
+        }
+        text
+    }
+}
+
+/// How one scanline's questions ended.
+enum Asked {
+    /// Every question answered.
+    Answered,
+    /// `q`, or the end of input.
+    Quit,
+    /// A navigation command typed instead of an answer: carried out.
+    Navigate(String),
+}
+
+/// A quiz answer for a pixel: a value or "not written".
+enum Answer {
+    NotWritten,
+    Value(Q),
+}
+
+/// Reads lines until one is an answer (`-` or a number), `q`, or a navigation command.
+fn read_answer(
+    input: &mut Input,
+    out: &mut dyn Write,
+    prompt: &str,
+    hint: &str,
+) -> Result<Result<String, Asked>, Failure> {
+    loop {
+        let Some(line) = input.read(out, prompt)? else { return Ok(Err(Asked::Quit)) };
+        let answer = line.trim();
+        if answer == "q" {
+            return Ok(Err(Asked::Quit));
+        }
+        if matches!(parse_command(answer), Command::NextPolygon | Command::Back | Command::Go(_)) || answer == "n" {
+            return Ok(Err(Asked::Navigate(answer.to_string())));
+        }
+        if !answer.is_empty() {
+            return Ok(Ok(answer.to_string()));
+        }
+        emit(out, &format!("{hint}\n"))?;
+    }
+}
+
+/// The covered columns as a student writes them: `16-27`, `3-5 9-12`, or `-` for none.
+fn columns_text(columns: &[u32]) -> String {
+    let mut runs: Vec<(u32, u32)> = Vec::new();
+    for &x in columns {
+        match runs.last_mut() {
+            Some((_, last)) if *last + 1 == x => *last = x,
+            _ => runs.push((x, x)),
+        }
+    }
+    if runs.is_empty() {
+        return "-".to_string();
+    }
+    runs.iter().map(|(a, b)| if a == b { a.to_string() } else { format!("{a}-{b}") }).collect::<Vec<_>>().join(" ")
+}
+
+/// Reads `16-27`, `3-5 9-12`, `4` or `-` as columns; `None` when it is not that.
+fn parse_columns(text: &str) -> Option<Vec<u32>> {
+    if text == "-" {
+        return Some(Vec::new());
+    }
+    let mut columns = Vec::new();
+    for run in text.split([' ', ',']).filter(|r| !r.is_empty()) {
+        let (a, b) = run.split_once(['-', '…']).unwrap_or((run, run));
+        let (a, b): (u32, u32) = (a.trim().parse().ok()?, b.trim().parse().ok()?);
+        if a > b || b - a > 100_000 {
+            return None;
+        }
+        columns.extend(a..=b);
+    }
+    columns.sort_unstable();
+    columns.dedup();
+    Some(columns)
 }
 
 fn mentions(skipped: &[String]) -> String {
     skipped.iter().map(|line| format!("  · {line}\n")).collect()
 }
 
-/// Asks the quiz question for each pixel of a stop; `false` when the user quits.
+/// Asks the quiz questions of a stop: with `coverage`, first which centres
+/// the scanline covers; then, for each covered pixel, what the z-buffer holds after it.
 fn ask(
     scene: &Scene,
     tracer: &mut Tracer<'_>,
     (p, k): (usize, usize),
-    score: &mut (usize, usize),
+    mode: QuizMode,
+    state: &mut QuizState,
     input: &mut Input,
     out: &mut dyn Write,
-) -> Result<bool, Failure> {
+) -> Result<Asked, Failure> {
     let record = tracer.trace(p).scanlines[k].clone();
-    emit(
-        out,
-        &format!(
-            "quiz: {}, scanline {}; for each pixel type the z-buffer value after it, - if it is not written, q to stop\n",
-            polygon_name(scene, p),
-            scanline_text(record.row)
-        ),
-    )?;
-    for pixel in &record.pixels {
-        let prompt = format!("pixel ({}, {}), stored {}: z-buffer after? ", pixel.x, pixel.y, pixel.stored_before);
-        let Some(answer) = input.read(out, &prompt)? else { return Ok(false) };
-        let answer = answer.trim();
-        if answer == "q" {
-            return Ok(false);
-        }
-        let expected = if pixel.outcome == Outcome::Written { pixel.stored_after.to_string() } else { "-".into() };
-        score.1 += 1;
-        let verdict = if answer == expected {
-            score.0 += 1;
-            "right"
-        } else {
-            "wrong"
+    let (name, row) = (polygon_name(scene, p), record.row);
+    if mode == QuizMode::Coverage {
+        emit(out, &format!("quiz: {name}, scanline {}: which centres does it cover?\n", scanline_text(row)))?;
+        let covered: Vec<u32> = record.pixels.iter().map(|e| e.x).collect();
+        let hint = "type the covered columns as first-last (e.g. 16-27, several runs apart: 3-5 9-12), or - for none";
+        let columns = loop {
+            let answer = match read_answer(input, out, "columns covered? ", hint)? {
+                Ok(answer) => answer,
+                Err(asked) => return Ok(asked),
+            };
+            match parse_columns(&answer) {
+                Some(columns) => break (answer, columns),
+                None => emit(out, &format!("{hint}\n"))?,
+            }
         };
+        let right_text = columns_text(&covered);
+        let spans: Vec<String> = record
+            .spans
+            .iter()
+            .map(|s| format!("{} … {}", exact_and_decimal(s.left), exact_and_decimal(s.right)))
+            .collect();
+        let why =
+            format!("the spans are {}; a column is covered when its centre x + 1/2 lies within one", spans.join(", "));
+        let verdict = state.score(columns.1 == covered, || {
+            format!("row {row} of {name}: you said columns {}, right {right_text}: {why}", columns.0)
+        });
         emit(
             out,
             &format!(
-                "  ({}, {}): you said {answer}, {verdict}: {} [score {}/{}]\n",
-                pixel.x,
-                pixel.y,
-                pixel_reason(scene, pixel),
-                score.0,
-                score.1
+                "  columns {right_text}: you said {}, {verdict}: {why} [score {}/{}]\n",
+                columns.0, state.right, state.asked
             ),
         )?;
     }
-    Ok(true)
+    emit(
+        out,
+        &format!(
+            "quiz: {name}, scanline {}; for each pixel type the z-buffer value after it, - if it is not written, q to stop\n",
+            scanline_text(row)
+        ),
+    )?;
+    let hint = "type the value the z-buffer will hold, or - for not written (q stops the quiz)";
+    for pixel in &record.pixels {
+        let prompt = format!("pixel ({}, {}), stored {}: z-buffer after? ", pixel.x, pixel.y, pixel.stored_before);
+        let answer = loop {
+            let text = match read_answer(input, out, &prompt, hint)? {
+                Ok(text) => text,
+                Err(asked) => return Ok(asked),
+            };
+            match text.as_str() {
+                "-" => break (text, Answer::NotWritten),
+                _ => match zsim::exact::parse_number(&text) {
+                    Ok(value) => break (text, Answer::Value(value)),
+                    Err(_) => emit(out, &format!("\"{text}\" is not an answer: {hint}\n"))?,
+                },
+            }
+        };
+        let written = pixel.outcome == Outcome::Written;
+        // Right: the value held after it; for a pixel not written, "-" or the value it keeps.
+        let (right, meant) = match &answer.1 {
+            Answer::NotWritten => (!written, "not written"),
+            Answer::Value(v) if *v == pixel.stored_after.value() => {
+                (true, if written { "the value written" } else { "not written: the value it keeps" })
+            }
+            Answer::Value(_) => (false, "a value"),
+        };
+        let expected =
+            if written { pixel.stored_after.to_string() } else { format!("- (it keeps {})", pixel.stored_after) };
+        let reason = pixel_reason(scene, pixel);
+        let verdict = state.score(right, || {
+            format!("({}, {}) of {name}: you said {}, right {expected}: {reason}", pixel.x, pixel.y, answer.0)
+        });
+        let said = if right { format!("you said {} ({meant})", answer.0) } else { format!("you said {}", answer.0) };
+        emit(
+            out,
+            &format!(
+                "  ({}, {}): {said}, {verdict}: {reason} [score {}/{}]\n",
+                pixel.x, pixel.y, state.right, state.asked
+            ),
+        )?;
+    }
+    Ok(Asked::Answered)
 }
 
 /// Everything shown for one scanline of one polygon.

@@ -109,19 +109,81 @@ fn step_passes_over_empty_scanlines_and_skipped_polygons_with_a_mention() {
 
 #[test]
 fn quiz_scores_the_students_answers() {
-    // The triangle's first scanline (row 10) covers pixels 28 and 29: 6 and 5 are stored.
-    let run = zsim_with_input(&["step", "examples/rogers.json", "--quiz"], "p\n\n6\n4\nq\n");
-    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
-    // The first answer "p" is read as an answer to the quiz for the rectangle's first pixel.
-    assert!(run.stdout.contains("(10, 5): you said p, wrong: z = 10 > 0 stored, so 10 is stored"), "{}", run.stdout);
-    let verdicts: Vec<&str> = run.stdout.lines().filter(|l| l.contains("you said")).collect();
-    assert_eq!(verdicts.len(), 4);
-    assert!(verdicts[2].contains("(12, 5): you said 6, wrong"));
-    assert!(run.stdout.ends_with("quiz score: 0 of 4 right\n"), "{}", run.stdout);
+    // The rectangle's first scanline (row 5): 10 is stored at every pixel.
     let run = zsim_with_input(&["step", "examples/rogers.json", "--quiz"], "10\n10\n-\nq\n");
-    assert!(run.stdout.contains("(10, 5): you said 10, right"));
-    assert!(run.stdout.contains("(12, 5): you said -, wrong"));
-    assert!(run.stdout.ends_with("quiz score: 2 of 3 right\n"));
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert!(run.stdout.contains("(10, 5): you said 10 (the value written), right"), "{}", run.stdout);
+    assert!(run.stdout.contains("(12, 5): you said -, wrong"), "{}", run.stdout);
+    assert!(run.stdout.ends_with(
+        "quiz score: 2 of 3 right\nyour mistakes:\n  (12, 5) of polygon 1 \"rectangle\": you said -, right 10: z = 10 > 0 stored, so 10 is stored and the framebuffer gets 1\n"
+    ), "{}", run.stdout);
+}
+
+/// Found by a new user: `p`, `n`, `g 15`, `abc` and a bare Enter were each scored as a wrong guess.
+#[test]
+fn quiz_navigates_on_navigation_keys_and_asks_again_on_anything_else() {
+    // `p` leaves the rectangle's questions for the triangle's first scanline (row 10),
+    // whose pixels 28 and 29 get 6 and 5; the bare line and "abc" are asked again.
+    let run = zsim_with_input(&["step", "examples/rogers.json", "--quiz"], "p\n\n6\nabc\n4\nq\n");
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    let verdicts: Vec<&str> = run.stdout.lines().filter(|l| l.contains("you said") && l.ends_with(']')).collect();
+    assert_eq!(verdicts.len(), 2, "{}", run.stdout);
+    assert!(verdicts[0].starts_with("  (28, 10): you said 6 (the value written), right"), "{}", verdicts[0]);
+    assert!(verdicts[1].starts_with("  (29, 10): you said 4, wrong"), "{}", verdicts[1]);
+    assert!(run.stdout.contains("type the value the z-buffer will hold, or - for not written"));
+    assert!(run.stdout.contains("\"abc\" is not an answer: type the value"), "{}", run.stdout);
+    assert!(run.stdout.contains("quiz score: 1 of 2 right\nyour mistakes:\n  (29, 10) of polygon 2"), "{}", run.stdout);
+    // `p` then `g 15`: the triangle's scanline 15, not a question eaten.
+    let run = zsim_with_input(&["step", "examples/rogers.json", "--quiz"], "p\ng 15\nq\n");
+    assert!(run.stdout.contains("quiz: polygon 2 \"triangle\", scanline y = 15.5"), "{}", run.stdout);
+    assert!(run.stdout.ends_with("quiz score: 0 of 0 right\n"), "{}", run.stdout);
+}
+
+/// Found by a new user: at the hidden pixel (21, 15) the value it keeps, 10, was marked wrong.
+#[test]
+fn quiz_accepts_both_answers_for_a_hidden_pixel_and_starts_where_asked() {
+    let answers = "15\n14\n13\n12\n12\n11\n10\nq\n";
+    let run =
+        zsim_with_input(&["step", "examples/rogers.json", "--quiz", "--polygon", "2", "--scanline", "15"], answers);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert!(run.stdout.contains("(20, 15): you said 11 (the value written), right"), "{}", run.stdout);
+    assert!(
+        run.stdout
+            .contains("(21, 15): you said 10 (not written: the value it keeps), right: z = 10 is not > 10 stored"),
+        "{}",
+        run.stdout
+    );
+    let run = zsim_with_input(
+        &["step", "examples/rogers.json", "--quiz", "--polygon", "2", "--scanline", "15"],
+        "15\n14\n13\n12\n12\n11\n-\nq\n",
+    );
+    assert!(run.stdout.contains("(21, 15): you said - (not written), right"), "{}", run.stdout);
+}
+
+#[test]
+fn quiz_coverage_asks_which_centres_are_covered_first() {
+    let run = zsim_with_input(
+        &["step", "examples/rogers.json", "--quiz", "coverage", "--polygon", "2", "--scanline", "15"],
+        "16-28\nq\n",
+    );
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert!(run.stdout.contains("which centres does it cover?"), "{}", run.stdout);
+    assert!(
+        run.stdout.contains("  columns 15-27: you said 16-28, wrong: the spans are 31/2 ≈ 15.50 … 169/6 ≈ 28.17"),
+        "{}",
+        run.stdout
+    );
+    assert!(
+        run.stdout.contains("your mistakes:\n  row 15 of polygon 2 \"triangle\": you said columns 16-28, right 15-27"),
+        "{}",
+        run.stdout
+    );
+}
+
+#[test]
+fn go_to_a_row_off_the_raster_says_so() {
+    let run = zsim_with_input(&["step", "examples/rogers.json"], "g 99\nq\n");
+    assert!(run.stdout.contains("row 99 is outside the raster (rows 0 … 31)\n"), "{}", run.stdout);
 }
 
 #[test]
