@@ -24,9 +24,13 @@ const MARGIN_LEFT: i128 = 40;
 const MARGIN_TOP: i128 = 36;
 const MARGIN_RIGHT: i128 = 16;
 const MARGIN_BOTTOM: i128 = 40;
+/// Height of the legend's row below the axes.
+const LEGEND: i128 = 22;
 
-/// Fill colours for framebuffer values 1, 2, …; 0 (the usual background) is white.
-const PALETTE: [&str; 8] = ["#f4a259", "#5b8e7d", "#8cb369", "#bc4b51", "#6c8ead", "#e9c46a", "#9a7aa0", "#2a9d8f"];
+/// Fill colours for framebuffer values 1, 2, …; 0 (the usual background) is
+/// white. Okabe and Ito's colour-blind-safe set, ordered so that 1, 2 and 3
+/// (a 2-bit framebuffer) are light, middle and dark in grey print too.
+const PALETTE: [&str; 7] = ["#f0e442", "#e69f00", "#0072b2", "#009e73", "#cc79a7", "#56b4e9", "#d55e00"];
 
 /// What the cells show.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -44,6 +48,8 @@ pub struct Extras {
     pub vertex_labels: bool,
     /// Lines of text below the axes (what to fill in, say).
     pub caption: Vec<String>,
+    /// Print each cell's value (framebuffer or z-buffer, as shaded) in its pixel.
+    pub values: bool,
 }
 
 /// Draws the buffers after polygon `last` (0-based): polygons `0 ..= last`
@@ -69,10 +75,14 @@ pub fn svg_with(
     // About 6 units a character at font size 11.
     let caption = wrap(&extras.caption, ((total_width - left - 8) / 6).max(20) as usize);
     let caption_height = 16 * caption.len() as i128;
-    let total_height = MARGIN_TOP + height * CELL + MARGIN_BOTTOM + caption_height;
+    // The title wraps too (font size 13: about 7.5 units a character); the raster starts below it.
+    let title_lines = wrap(&[title.to_string()], ((total_width - left - 8) * 2 / 15).max(20) as usize);
+    let top = MARGIN_TOP + 18 * (title_lines.len() as i128 - 1);
+    let legend = legend(scene, buffers, shading);
+    let total_height = top + height * CELL + MARGIN_BOTTOM + LEGEND + caption_height;
     // Pixel-unit point to SVG coordinates: x right, y up (flipped).
     let sx = |x: Q| decimal(Q::from_integer(left) + x * CELL, 2);
-    let sy = |y: Q| decimal(Q::from_integer(MARGIN_TOP) + (Q::from_integer(height) - y) * CELL, 2);
+    let sy = |y: Q| decimal(Q::from_integer(top) + (Q::from_integer(height) - y) * CELL, 2);
     let int = |v: i128| Q::from_integer(v);
     let mut out = String::new();
     let _ = writeln!(
@@ -81,7 +91,9 @@ pub fn svg_with(
     );
     let _ = writeln!(out, r#"<title>{}</title>"#, escape(title));
     let _ = writeln!(out, r#"<rect width="100%" height="100%" fill="white"/>"#);
-    let _ = writeln!(out, r#"<text x="{left}" y="20" font-size="13">{}</text>"#, escape(title));
+    for (k, line) in title_lines.iter().enumerate() {
+        let _ = writeln!(out, r#"<text x="{left}" y="{}" font-size="13">{}</text>"#, 20 + 18 * k, escape(line));
+    }
     // Covered pixels.
     let _ = writeln!(out, r#"<g id="pixels" stroke="none" shape-rendering="crispEdges">"#);
     let range = exact_range(scene, buffers);
@@ -131,9 +143,9 @@ pub fn svg_with(
         let _ = writeln!(out, r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#, sy(y), sx(int(0)), sx(int(width)));
     }
     let _ = writeln!(out, "</g>");
-    // Pixel centres.
+    // Pixel centres (left out where values are printed in the cells).
     let _ = writeln!(out, r##"<g id="centres" fill="#333333">"##);
-    for row in (0..height).filter(|_| detailed) {
+    for row in (0..height).filter(|_| detailed && !extras.values) {
         for column in 0..width {
             let (cx, cy) = (Q::new(2 * column + 1, 2), Q::new(2 * row + 1, 2));
             let _ = writeln!(out, r#"<circle cx="{}" cy="{}" r="1.3"/>"#, sx(cx), sy(cy));
@@ -150,24 +162,23 @@ pub fn svg_with(
             points.join(" "),
             escape(&polygon.name)
         );
-        // At vertex 1; with vertex labels (which sit there) at the polygon's middle, on a halo.
+        // At the polygon's middle, off the vertices and the outline, on a white halo
+        // so that it reads over any fill.
         let n = Q::from_integer(polygon.vertices.len() as i128);
-        let (at, halo) = if extras.vertex_labels {
-            let middle = |axis: usize| polygon.vertices.iter().map(|v| v[axis]).sum::<Q>() / n;
-            ([middle(0), middle(1)], r#" stroke="white" stroke-width="3" paint-order="stroke" font-weight="bold""#)
-        } else {
-            ([polygon.vertices[0][0], polygon.vertices[0][1]], r#" stroke="none""#)
-        };
+        let middle = |axis: usize| polygon.vertices.iter().map(|v| v[axis]).sum::<Q>() / n;
         let _ = writeln!(
             out,
-            r#"<text x="{}" y="{}"{halo} fill="black">{} {}</text>"#,
-            sx(at[0]),
-            sy(at[1]),
+            r#"<text x="{}" y="{}" stroke="white" stroke-width="3" paint-order="stroke" font-weight="bold" text-anchor="middle" fill="black">{} {}</text>"#,
+            sx(middle(0)),
+            sy(middle(1)),
             index + 1,
             escape(&polygon.name)
         );
     }
     let _ = writeln!(out, "</g>");
+    if extras.values {
+        cell_values(&mut out, scene, buffers, shading, (&sx, &sy));
+    }
     if extras.vertex_labels {
         vertex_labels(&mut out, scene, last, (&sx, &sy));
     }
@@ -180,7 +191,7 @@ pub fn svg_with(
         1
     };
     let _ = writeln!(out, r#"<g id="axes" fill="black" text-anchor="middle">"#);
-    let below = decimal(Q::from_integer(MARGIN_TOP + height * CELL + 14), 2);
+    let below = decimal(Q::from_integer(top + height * CELL + 14), 2);
     for column in (0..width).step_by(step) {
         let _ = writeln!(out, r#"<text x="{}" y="{below}">{column}</text>"#, sx(Q::new(2 * column + 1, 2)));
     }
@@ -188,7 +199,7 @@ pub fn svg_with(
         out,
         r#"<text x="{}" y="{}">x</text>"#,
         sx(Q::new(width, 2)),
-        decimal(Q::from_integer(MARGIN_TOP + height * CELL + 30), 2)
+        decimal(Q::from_integer(top + height * CELL + 30), 2)
     );
     for row in (0..height).step_by(step) {
         let _ = writeln!(
@@ -200,16 +211,107 @@ pub fn svg_with(
     }
     let _ = writeln!(out, r#"<text x="{}" y="{}">y</text>"#, left - 28, sy(Q::new(height, 2)));
     let _ = writeln!(out, "</g>");
+    let legend_top = top + height * CELL + MARGIN_BOTTOM;
+    let _ = writeln!(out, r#"<g id="legend" fill="black">"#);
+    let mut x = left;
+    for (fill, label) in &legend {
+        let _ = writeln!(
+            out,
+            r##"<rect x="{x}" y="{}" width="12" height="12" fill="{fill}" stroke="#808080" stroke-width="0.5"/><text x="{}" y="{}">{}</text>"##,
+            legend_top,
+            x + 16,
+            legend_top + 10,
+            escape(label)
+        );
+        x += 16 + 7 * label.chars().count() as i128 + 14;
+    }
+    let _ = writeln!(out, "</g>");
     if !caption.is_empty() {
         let _ = writeln!(out, r#"<g id="caption" fill="black">"#);
         for (k, line) in caption.iter().enumerate() {
-            let y = MARGIN_TOP + height * CELL + MARGIN_BOTTOM + 16 * k as i128 + 4;
+            let y = legend_top + LEGEND + 16 * k as i128 + 4;
             let _ = writeln!(out, r#"<text x="{left}" y="{y}">{}</text>"#, escape(line));
         }
         let _ = writeln!(out, "</g>");
     }
     let _ = writeln!(out, "</svg>");
     out
+}
+
+/// The legend's entries, `(fill, label)`: each framebuffer value present
+/// (the background first), or for depth shading the far and near ends.
+fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, String)> {
+    match shading {
+        Shading::Frame => {
+            let mut values: Vec<u32> = buffers.frame_rows().into_iter().flatten().collect();
+            values.sort_unstable();
+            values.dedup();
+            if !values.contains(&scene.background) {
+                values.insert(0, scene.background);
+            }
+            values
+                .into_iter()
+                .map(|v| {
+                    if v == scene.background {
+                        ("#ffffff".to_string(), format!("{v}: background"))
+                    } else {
+                        (frame_fill(scene, v), format!("value {v}"))
+                    }
+                })
+                .collect()
+        }
+        Shading::Depth => {
+            let range = exact_range(scene, buffers);
+            let (far, near) = match scene.depth_test {
+                crate::depth::DepthTest::Greater => ("lower z: farther", "higher z: nearer"),
+                crate::depth::DepthTest::Less => ("higher z: farther", "lower z: nearer"),
+            };
+            vec![
+                ("#ffffff".to_string(), format!("cleared ({})", scene.clear_depth)),
+                ("#e6e6e6".to_string(), far.to_string()),
+                ("#3c3c3c".to_string(), near.to_string()),
+            ]
+            .into_iter()
+            .filter(|_| range.0 <= range.1)
+            .collect()
+        }
+    }
+}
+
+/// Each cell's value written in its pixel: black on light fills, white on dark.
+fn cell_values(
+    out: &mut String,
+    scene: &Scene,
+    buffers: &Buffers,
+    shading: Shading,
+    (sx, sy): (&dyn Fn(Q) -> String, &dyn Fn(Q) -> String),
+) {
+    let _ = writeln!(out, r#"<g id="values" font-size="9" text-anchor="middle">"#);
+    let range = exact_range(scene, buffers);
+    for y in 0..scene.height {
+        for x in 0..scene.width {
+            let (text, fill) = match shading {
+                Shading::Frame => (buffers.frame(x, y).to_string(), cell_fill(scene, buffers, x, y, shading, range)),
+                Shading::Depth => {
+                    let text = match buffers.depth(x, y) {
+                        Stored::Level(level) => level.to_string(),
+                        Stored::Exact(q) => short(q),
+                    };
+                    (text, cell_fill(scene, buffers, x, y, shading, range))
+                }
+            };
+            let colour = if fill.as_deref().is_some_and(is_dark) { "white" } else { "black" };
+            let (cx, cy) = (Q::new(2 * i128::from(x) + 1, 2), Q::new(2 * i128::from(y) + 1, 2) - Q::new(1, 6));
+            let _ = writeln!(out, r#"<text x="{}" y="{}" fill="{colour}">{}</text>"#, sx(cx), sy(cy), escape(&text));
+        }
+    }
+    let _ = writeln!(out, "</g>");
+}
+
+/// Whether a `#rrggbb` fill is dark enough for white text (luma below one half).
+fn is_dark(fill: &str) -> bool {
+    let channel = |k: usize| u32::from_str_radix(fill.get(1 + 2 * k..3 + 2 * k).unwrap_or("ff"), 16).unwrap_or(255);
+    299 * channel(0) + 587 * channel(1) + 114 * channel(2) < 500 * 255
 }
 
 /// Each vertex of polygons `0 ..= last` labelled `(x, y, z)`, set off from
@@ -220,6 +322,8 @@ fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&dyn F
         out,
         r#"<g id="vertices" font-size="10" fill="black" stroke="white" stroke-width="3" paint-order="stroke">"#
     );
+    // Vertices already labelled, so that a point shared by two polygons gets its labels one under the other.
+    let mut labelled: Vec<[Q; 2]> = Vec::new();
     for polygon in scene.polygons.iter().take(last + 1) {
         let n = Q::from_integer(polygon.vertices.len() as i128);
         let middle_x = polygon.vertices.iter().map(|v| v[0]).sum::<Q>() / n;
@@ -227,7 +331,9 @@ fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&dyn F
         for v in &polygon.vertices {
             // Left of the middle: the label ends at the vertex; right: it starts there.
             let (anchor, dx) = if v[0] < middle_x { ("end", Q::new(-1, 4)) } else { ("start", Q::new(1, 4)) };
-            let dy = if v[1] < middle_y { Q::new(-1, 2) } else { Q::new(1, 4) };
+            let below = labelled.iter().filter(|p| **p == [v[0], v[1]]).count() as i128;
+            labelled.push([v[0], v[1]]);
+            let dy = if v[1] < middle_y { Q::new(-1, 2) } else { Q::new(1, 4) } - Q::new(below, 2);
             let label = format!("({}, {}, {})", short(v[0]), short(v[1]), short(v[2]));
             let _ = writeln!(
                 out,
@@ -322,4 +428,31 @@ fn wrap(lines: &[String], width: usize) -> Vec<String> {
 
 fn escape(text: &str) -> String {
     text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Luma of a `#rrggbb` colour, 0 … 1000.
+    fn luma(fill: &str) -> u32 {
+        let channel = |k: usize| u32::from_str_radix(&fill[1 + 2 * k..3 + 2 * k], 16).unwrap();
+        (299 * channel(0) + 587 * channel(1) + 114 * channel(2)) / 255
+    }
+
+    /// Found by a new user: values 2 and 3 were two similar greens. A 2-bit
+    /// framebuffer's values 1, 2, 3 and the white background differ in grey print
+    /// by at least a sixth of the range.
+    #[test]
+    fn palette_levels_are_distinct_in_grey() {
+        let lumas: Vec<u32> = ["#ffffff", PALETTE[0], PALETTE[1], PALETTE[2]].iter().map(|c| luma(c)).collect();
+        for pair in lumas.windows(2) {
+            assert!(pair[0] > pair[1] + 160, "{lumas:?}");
+        }
+    }
+
+    #[test]
+    fn text_wraps_at_spaces() {
+        assert_eq!(wrap(&["a bb ccc dd".to_string()], 5), ["a bb", "ccc", "dd"]);
+    }
 }

@@ -103,6 +103,7 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
                 "Write the framebuffer (each polygon's value) and the z-buffer after the last polygon, top row first."
                     .to_string(),
             ],
+            values: false,
         },
     );
     write("worksheet.svg", &worksheet)?;
@@ -113,7 +114,7 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         last,
         Shading::Frame,
         &format!("{label}: the framebuffer after the last polygon"),
-        &Extras { vertex_labels: true, caption: Vec::new() },
+        &Extras { vertex_labels: true, caption: Vec::new(), values: true },
     );
     write("solution.svg", &solution)?;
     written.push("solution.svg".into());

@@ -1,12 +1,12 @@
-//! `zsim figure`: the raster as an SVG for a handout.
+//! `zsim figure`: the raster as an SVG (or PNG) for a handout.
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use clap::Args;
 use zsim::error::Error;
 use zsim::explain::polygon_name;
-use zsim::figure::{MAX_FIGURE_SIDE, Shading, svg};
+use zsim::figure::{Extras, MAX_FIGURE_SIDE, Shading, svg_with};
 use zsim::pipeline::Simulation;
 use zsim::scene::Scene;
 use zsim::trace::Unobserved;
@@ -18,18 +18,41 @@ use super::{Failure, Finish, emit};
 pub struct FigureArgs {
     /// The scene file (JSON).
     scene: PathBuf,
-    /// Draw the state after this polygon (number from 1, or name); default: the last.
+    /// Draw the state after this polygon (number from 1, or name); default: the last. 0: the empty grid with every outline and vertex, a worksheet.
     #[arg(long, value_name = "N|NAME")]
     after: Option<String>,
     /// Shade pixels by z-buffer value instead of filling them by framebuffer value.
     #[arg(long)]
     depth: bool,
-    /// The SVG file to write.
-    #[arg(short, long, value_name = "FILE.svg")]
+    /// Print each cell's value (framebuffer, or z-buffer with --depth) in its pixel, as an answer key does.
+    #[arg(long)]
+    values: bool,
+    /// The title (default: the scene's file name and what is drawn).
+    #[arg(long)]
+    title: Option<String>,
+    /// The file to write: FILE.svg, or FILE.png for a picture.
+    #[arg(short, long, value_name = "FILE.svg|FILE.png")]
     output: PathBuf,
 }
 
+/// What the output file's extension asks for.
+enum Kind {
+    Svg,
+    Png,
+}
+
 pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let kind = match args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+        Some("svg") => Kind::Svg,
+        Some("png") => Kind::Png,
+        _ => {
+            return Err(Error::Usage(format!(
+                "{}: a figure is written as .svg or .png (for a PDF, convert the SVG, e.g. rsvg-convert -f pdf)",
+                args.output.display()
+            ))
+            .into());
+        }
+    };
     let scene = Scene::load(&args.scene)?;
     if scene.width > MAX_FIGURE_SIDE || scene.height > MAX_FIGURE_SIDE {
         return Err(Error::Usage(format!(
@@ -43,17 +66,68 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if scene.polygons.is_empty() {
         return Err(Error::Usage(format!("{}: the scene has no polygons to draw", args.scene.display())).into());
     }
+    // `--after 0`: nothing drawn yet, every polygon outlined with its vertices: a worksheet.
+    let worksheet = args.after.as_deref() == Some("0");
     let last = match &args.after {
+        Some(_) if worksheet => scene.polygons.len() - 1,
         Some(spec) => scene.find_polygon(spec)?,
         None => scene.polygons.len() - 1,
     };
-    let mut simulation = Simulation::new(&scene);
-    simulation.draw_through(last, &mut Unobserved);
     let shading = if args.depth { Shading::Depth } else { Shading::Frame };
     let what = if args.depth { "z-buffer" } else { "framebuffer" };
-    let title = format!("{}: {what} after {}", args.scene.display(), polygon_name(&scene, last));
-    let text = svg(&scene, simulation.buffers(), last, shading, &title);
-    std::fs::write(&args.output, text).map_err(|source| Error::Write { path: args.output.clone(), source })?;
+    let name = args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
+    let mut title = if worksheet {
+        format!("{name}: the polygons to draw, on an empty raster")
+    } else {
+        format!("{name}: {what} after {}", polygon_name(&scene, last))
+    };
+    // Antialiasing: the figure shows the samples, before they are averaged, and says so.
+    let scene = match scene.effects.antialias {
+        Some(settings) if !worksheet => {
+            let k = settings.samples;
+            title.push_str(&format!(", its {k}×{k} samples per pixel before averaging (`zsim run` gives the means)"));
+            zsim::antialias::supersampled(&scene, k)?
+        }
+        _ => scene,
+    };
+    let title = args.title.clone().unwrap_or(title);
+    let mut simulation = Simulation::new(&scene);
+    if !worksheet {
+        simulation.draw_through(last, &mut Unobserved);
+    }
+    let extras = Extras { vertex_labels: worksheet, caption: Vec::new(), values: args.values };
+    let text = svg_with(&scene, simulation.buffers(), last, shading, &title, &extras);
+    let bytes = match kind {
+        Kind::Svg => text.into_bytes(),
+        Kind::Png => png(&text, &args.output)?,
+    };
+    std::fs::write(&args.output, bytes).map_err(|source| Error::Write { path: args.output.clone(), source })?;
     emit(out, &format!("wrote {} ({title})\n", args.output.display()))?;
     Ok(Finish::Ok)
+}
+
+/// The SVG drawn as a PNG at twice its size (text in the system's sans-serif font).
+fn png(svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+    let failed = |why: String| Error::Usage(format!("{}: cannot draw the PNG: {why}", path.display()));
+    let mut options = resvg::usvg::Options::default();
+    let fonts = options.fontdb_mut();
+    fonts.load_system_fonts();
+    // The figure asks for "sans-serif"; take the first of the usual sans fonts the system has.
+    let families: Vec<String> =
+        fonts.faces().flat_map(|face| face.families.iter().map(|(name, _)| name.clone())).collect();
+    let sans = ["DejaVu Sans", "Liberation Sans", "Arial", "Helvetica", "Noto Sans", "FreeSans"]
+        .into_iter()
+        .find(|wanted| families.iter().any(|f| f == wanted))
+        .map(str::to_string)
+        .or_else(|| families.first().cloned())
+        .ok_or_else(|| {
+            failed("this system has no fonts, so its text would be missing; write an SVG (-o FILE.svg)".into())
+        })?;
+    fonts.set_sans_serif_family(sans);
+    let tree = resvg::usvg::Tree::from_str(svg, &options).map_err(|e| failed(e.to_string()))?;
+    let size = tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed("the figure is too large".into()))?;
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
+        .ok_or_else(|| failed("the figure is too large".into()))?;
+    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(2.0, 2.0), &mut pixmap.as_mut());
+    pixmap.encode_png().map_err(|e| failed(e.to_string()))
 }

@@ -226,7 +226,7 @@ fn interactive(
 ) -> Result<Finish, Failure> {
     let mut input = Input::stdin();
     let mut quiz_state = QuizState::default();
-    emit(out, &format!("{}{HELP}\n", report::scene_header(scene, path)))?;
+    emit(out, &format!("{}{}{HELP}\n", report::scene_header(scene, path), antialias_note(scene)))?;
     let mut position = match start {
         Some(at) => Some(at),
         None => {
@@ -533,6 +533,17 @@ fn ask(
     Ok(Asked::Answered)
 }
 
+/// For an antialiased scene, what `step` shows and what it does not.
+fn antialias_note(scene: &Scene) -> String {
+    match scene.effects.antialias {
+        Some(settings) => format!(
+            "   note: this scene asks for {k}×{k} supersampling; step shows each pixel centre's plain coverage and depth, before supersampling and averaging (`zsim run` shows the averaged buffers, `zsim explain --pixel X,Y` each pixel's samples)\n",
+            k = settings.samples
+        ),
+        None => String::new(),
+    }
+}
+
 /// Everything shown for one scanline of one polygon.
 fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String {
     let scene = tracer.scene;
@@ -540,6 +551,7 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
     let geometry = &scene.polygons[p].geometry;
     let [a, _, c] = geometry.normal;
     let mut text = format!("\n── {}\n", report::polygon_heading(scene, p));
+    text.push_str(&antialias_note(scene));
     text.push_str(&format!("   along a scanline z steps by −a/c = {}\n", fraction(Q::new(-a, c))));
     text.push_str(&format!("scanline {} (row {})\n", scanline_text(record.row), record.row));
     let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(*x)).collect();

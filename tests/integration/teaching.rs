@@ -352,3 +352,84 @@ fn colour_only_on_a_terminal_and_never_with_no_color() {
         _ => eprintln!("notice: `script` is not available, so colour on a terminal was not tested"),
     }
 }
+
+/// Found by a new user: no legend, labels on outlines, two similar greens,
+/// no values in the cells, no worksheet, SVG written into a `.png`.
+#[test]
+fn figure_has_a_legend_values_a_worksheet_and_png() {
+    let (dir, _) = scene_file("unused4.json", "{}");
+    let svg_path = dir.join("values.svg");
+    let run = zsim(&["figure", "examples/rogers.json", "--values", "-o", svg_path.to_str().unwrap()]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    let svg = std::fs::read_to_string(&svg_path).unwrap();
+    let document = roxmltree::Document::parse(&svg).unwrap();
+    let group = |id: &str| document.descendants().find(|n| n.attribute("id") == Some(id)).unwrap();
+    let values: Vec<&str> =
+        group("values").children().filter(|n| n.has_tag_name("text")).filter_map(|n| n.text()).collect();
+    assert_eq!(values.len(), 1024, "a value in every cell");
+    assert_eq!(values.iter().filter(|v| **v == "2").count(), 64, "the triangle's 64 written pixels");
+    let legend: Vec<&str> =
+        group("legend").children().filter(|n| n.has_tag_name("text")).filter_map(|n| n.text()).collect();
+    assert_eq!(legend, ["0: background", "value 1", "value 2"]);
+    // The worksheet: an empty raster, every outline, every vertex labelled.
+    let worksheet = dir.join("worksheet.svg");
+    let run = zsim(&["figure", "examples/rogers.json", "--after", "0", "-o", worksheet.to_str().unwrap()]);
+    assert_eq!(run.code, 0);
+    let svg = std::fs::read_to_string(&worksheet).unwrap();
+    let document = roxmltree::Document::parse(&svg).unwrap();
+    let group = |id: &str| document.descendants().find(|n| n.attribute("id") == Some(id)).unwrap();
+    assert_eq!(group("pixels").children().filter(|n| n.has_tag_name("rect")).count(), 0, "nothing filled");
+    assert_eq!(group("polygons").children().filter(|n| n.has_tag_name("polygon")).count(), 2);
+    let labels: Vec<&str> =
+        group("vertices").children().filter(|n| n.has_tag_name("text")).filter_map(|n| n.text()).collect();
+    assert_eq!(
+        labels,
+        ["(10, 5, 10)", "(10, 25, 10)", "(25, 25, 10)", "(25, 5, 10)", "(15, 15, 15)", "(25, 25, 5)", "(30, 10, 5)"]
+    );
+    // A PNG for .png; a PDF is refused with what to do instead.
+    let png = dir.join("rogers.png");
+    let run = zsim(&["figure", "examples/rogers.json", "-o", png.to_str().unwrap()]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG\r\n\x1a\n"), "a PNG file");
+    let run = zsim(&["figure", "examples/rogers.json", "-o", dir.join("rogers.pdf").to_str().unwrap()]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert!(run.stderr.contains("a figure is written as .svg or .png"), "{}", run.stderr);
+}
+
+/// Found by a new user: the title held the path as typed and was cut off on small rasters.
+#[test]
+fn figure_titles_wrap_and_can_be_chosen() {
+    let (dir, _) = scene_file("unused5.json", "{}");
+    let path = dir.join("aa.svg");
+    let run = zsim(&["figure", "examples/antialias.json", "-o", path.to_str().unwrap()]);
+    assert_eq!(run.code, 0);
+    let svg = std::fs::read_to_string(&path).unwrap();
+    let document = roxmltree::Document::parse(&svg).unwrap();
+    let width: usize = document.root_element().attribute("width").unwrap().parse().unwrap();
+    let lines: Vec<&str> = document
+        .root_element()
+        .children()
+        .filter(|n| n.has_tag_name("text") && n.attribute("font-size") == Some("13"))
+        .filter_map(|n| n.text())
+        .collect();
+    assert!(lines.len() >= 2, "the long title wraps: {lines:?}");
+    assert!(lines.iter().all(|l| l.chars().count() * 15 / 2 <= width), "each line fits {width} units: {lines:?}");
+    assert!(lines.join(" ").starts_with(
+        "antialias.json: framebuffer after polygon 2 \"wedge\", its 2×2 samples per pixel before averaging"
+    ));
+    let run = zsim(&["figure", "examples/rogers.json", "--title", "Exercise 3", "-o", path.to_str().unwrap()]);
+    assert_eq!(run.code, 0);
+    assert!(std::fs::read_to_string(&path).unwrap().contains(r#"font-size="13">Exercise 3</text>"#));
+}
+
+/// Found by a new user: `step` announced supersampling but showed plain coverage without saying so.
+#[test]
+fn step_says_it_shows_coverage_before_antialiasing() {
+    let run = zsim(&["step", "examples/antialias.json", "--polygon", "2", "--scanline", "3"]);
+    assert_eq!(run.code, 0);
+    assert!(
+        run.stdout.contains("note: this scene asks for 2×2 supersampling; step shows each pixel centre's plain coverage and depth, before supersampling and averaging"),
+        "{}",
+        run.stdout
+    );
+}
