@@ -4,33 +4,51 @@
 /// A matrix read from an answer file, top row first.
 pub type Matrix = Vec<Vec<u32>>;
 
-/// Reads an answer: whitespace-separated integers, top row first, one row a
-/// line; blank lines and lines starting with `#` are ignored. Checks the
-/// shape against the raster; the error says what was found.
-pub fn parse_answer(text: &str, width: u32, height: u32) -> Result<Matrix, String> {
+/// What an answer's cells may hold: `0 ..= max`, said as `a 2-bit framebuffer`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CellRange<'a> {
+    /// The largest value a cell holds.
+    pub max: u32,
+    /// The buffer, for messages: `a 2-bit framebuffer`, `a 4-bit z-buffer`.
+    pub buffer: &'a str,
+}
+
+/// Reads an answer: integers separated by spaces or commas (`0, 1, 2` as
+/// handed in is fine), top row first, one row a line; blank lines and lines
+/// starting with `#` are ignored. Checks each value against `range` and the
+/// shape against the raster; the error names the line, the column and the
+/// raster cell, and says what was found.
+pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Matrix, String> {
+    let lines: Vec<(usize, &str)> = text
+        .lines()
+        .enumerate()
+        .map(|(n, line)| (n + 1, line.trim()))
+        .filter(|(_, line)| !line.is_empty() && !line.starts_with('#'))
+        .collect();
     let mut rows = Vec::new();
-    for (line_number, line) in text.lines().enumerate() {
-        let trimmed = line.trim();
-        if trimmed.is_empty() || trimmed.starts_with('#') {
-            continue;
+    for (row_index, (line_number, line)) in lines.iter().enumerate() {
+        // The raster row this line stands for when the shape is right: the top row first.
+        let y = (height as usize).checked_sub(row_index + 1);
+        let cells: Vec<&str> = line.split([' ', '\t', ',']).filter(|cell| !cell.is_empty()).collect();
+        let mut row = Vec::with_capacity(cells.len());
+        for (column, cell) in cells.iter().enumerate() {
+            let at = match y {
+                Some(y) if column < width as usize => {
+                    format!("line {line_number}, value {} (x = {column}, y = {y})", column + 1)
+                }
+                _ => format!("line {line_number}, value {}", column + 1),
+            };
+            let value: u64 = cell.parse().map_err(|_| {
+                format!("{at}: \"{cell}\" is not a whole number ({} holds 0 … {})", range.buffer, range.max)
+            })?;
+            if value > u64::from(range.max) {
+                return Err(format!("{at}: {value} does not fit {} (0 … {})", range.buffer, range.max));
+            }
+            row.push(value as u32);
         }
-        let row: Result<Vec<u32>, String> = trimmed
-            .split_whitespace()
-            .enumerate()
-            .map(|(column, cell)| {
-                cell.parse::<u32>().map_err(|_| {
-                    format!(
-                        "line {}, value {}: \"{cell}\" is not a whole number from 0 to 4294967295",
-                        line_number + 1,
-                        column + 1
-                    )
-                })
-            })
-            .collect();
-        let row = row?;
         if row.len() != width as usize {
             let plural = if row.len() == 1 { "" } else { "s" };
-            return Err(format!("line {}: {} value{plural}; the raster is {width} wide", line_number + 1, row.len()));
+            return Err(format!("line {line_number}: {} value{plural}; the raster is {width} wide", row.len()));
         }
         rows.push(row);
     }
@@ -38,6 +56,21 @@ pub fn parse_answer(text: &str, width: u32, height: u32) -> Result<Matrix, Strin
         return Err(format!("{} rows; the raster has {height}", rows.len()));
     }
     Ok(rows)
+}
+
+/// When an answer that differs would match, or nearly, read another way:
+/// bottom row first (upside down) or with rows and columns swapped. Returns
+/// how it was written and how many cells differ when read that way.
+pub fn misreading(answer: &Matrix, expected: &Matrix) -> Option<(&'static str, usize)> {
+    let differing = compare(answer, expected).len();
+    let upside_down: Matrix = answer.iter().rev().cloned().collect();
+    let mut readings = vec![("bottom row first", compare(&upside_down, expected).len())];
+    if answer.len() == answer.first().map_or(0, Vec::len) {
+        let transposed: Matrix = (0..answer.len()).map(|c| answer.iter().map(|row| row[c]).collect()).collect();
+        readings.push(("with rows and columns swapped", compare(&transposed, expected).len()));
+    }
+    // Worth saying when that reading leaves at most a quarter of the differences.
+    readings.into_iter().filter(|(_, count)| *count * 4 <= differing).min_by_key(|(_, count)| *count)
 }
 
 /// One cell where the answer differs from zsim.
@@ -72,20 +105,47 @@ pub fn compare(answer: &Matrix, expected: &Matrix) -> Vec<Mismatch> {
 mod tests {
     use super::*;
 
+    const FRAME: CellRange<'static> = CellRange { max: 3, buffer: "a 2-bit framebuffer" };
+
     #[test]
-    fn comments_and_blank_lines_are_ignored() {
-        let text = "# my answer\n\n1 2\n\n3 4\n";
-        assert_eq!(parse_answer(text, 2, 2).unwrap(), vec![vec![1, 2], vec![3, 4]]);
+    fn comments_blank_lines_and_commas_are_taken() {
+        let text = "# my answer\n\n1 2\n\n3, 0\n";
+        assert_eq!(parse_answer(text, 2, 2, FRAME).unwrap(), vec![vec![1, 2], vec![3, 0]]);
+        assert_eq!(parse_answer("1,2\n3 ,0\n", 2, 2, FRAME).unwrap(), vec![vec![1, 2], vec![3, 0]]);
     }
 
     #[test]
     fn wrong_shapes_say_what_was_found() {
-        assert_eq!(parse_answer("1 2\n3 4\n5 6\n", 2, 2).unwrap_err(), "3 rows; the raster has 2");
-        assert_eq!(parse_answer("1 2\n3\n", 2, 2).unwrap_err(), "line 2: 1 value; the raster is 2 wide");
+        assert_eq!(parse_answer("1 2\n3 0\n1 1\n", 2, 2, FRAME).unwrap_err(), "3 rows; the raster has 2");
+        assert_eq!(parse_answer("1 2\n3\n", 2, 2, FRAME).unwrap_err(), "line 2: 1 value; the raster is 2 wide");
         assert_eq!(
-            parse_answer("1 x\n", 2, 1).unwrap_err(),
-            "line 1, value 2: \"x\" is not a whole number from 0 to 4294967295"
+            parse_answer("1 x\n", 2, 1, FRAME).unwrap_err(),
+            "line 1, value 2 (x = 1, y = 0): \"x\" is not a whole number (a 2-bit framebuffer holds 0 … 3)"
         );
+    }
+
+    /// Found by a new user: a 7 in a 2-bit framebuffer was an ordinary wrong cell.
+    #[test]
+    fn a_value_the_buffer_cannot_hold_is_named_at_its_cell() {
+        assert_eq!(
+            parse_answer("0 0\n0 7\n", 2, 2, FRAME).unwrap_err(),
+            "line 2, value 2 (x = 1, y = 0): 7 does not fit a 2-bit framebuffer (0 … 3)"
+        );
+    }
+
+    #[test]
+    fn answers_written_upside_down_or_transposed_are_recognised() {
+        let expected = vec![vec![1, 1, 0], vec![1, 0, 0], vec![0, 0, 0]];
+        let upside_down: Matrix = expected.iter().rev().cloned().collect();
+        assert_eq!(misreading(&upside_down, &expected), Some(("bottom row first", 0)));
+        let transposed = vec![vec![1, 1, 0], vec![1, 0, 0], vec![0, 0, 0]];
+        let other = vec![vec![0, 1, 1], vec![0, 0, 1], vec![0, 0, 0]];
+        let transposed_other: Matrix = (0..3).map(|c| other.iter().map(|row| row[c]).collect()).collect();
+        assert_eq!(misreading(&transposed_other, &other), Some(("with rows and columns swapped", 0)));
+        // A plain mistake is not a misreading.
+        let mut one_wrong = transposed.clone();
+        one_wrong[0][0] = 2;
+        assert_eq!(misreading(&one_wrong, &expected), None);
     }
 
     #[test]

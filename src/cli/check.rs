@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use comfy_table::{Table, presets};
-use zsim::check::{Matrix, Mismatch, compare, parse_answer};
+use zsim::check::{CellRange, Matrix, Mismatch, compare, misreading, parse_answer};
 use zsim::error::Error;
 use zsim::explain::{Buffer, polygon_name, why};
 use zsim::pipeline::Simulation;
@@ -34,10 +34,17 @@ pub struct CheckArgs {
     arith: zsim::arith::Arith,
 }
 
-/// Reads an answer file for `scene`: a matrix as the book prints it.
-pub fn read_answer(path: &Path, scene: &Scene) -> Result<Matrix, Error> {
+/// Reads an answer file for one of `scene`'s buffers: a matrix as the book prints it.
+pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer) -> Result<Matrix, Error> {
     let text = zsim::text::read_text(path)?;
-    parse_answer(&text, scene.width, scene.height).map_err(|message| Error::Answer { path: path.to_owned(), message })
+    let (max, description) = match buffer {
+        Buffer::Frame => {
+            (zsim::scene::max_for_bits(scene.frame_bits), format!("a {}-bit framebuffer", scene.frame_bits))
+        }
+        Buffer::Depth => (scene.depth_max(), format!("a {}-bit z-buffer", scene.depth_bits)),
+    };
+    parse_answer(&text, scene.width, scene.height, CellRange { max, buffer: &description })
+        .map_err(|message| Error::Answer { path: path.to_owned(), message })
 }
 
 pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
@@ -52,16 +59,27 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         Some(spec) => scene.find_polygon(spec)?,
         None => scene.polygons.len() - 1,
     };
-    // Read every answer before printing anything, so a malformed file prints nothing.
+    // A malformed file is reported (exit 2), but the other answer is still checked.
     let mut answers = Vec::new();
+    let mut malformed = None;
     for (buffer, path) in [(Buffer::Frame, &args.frame), (Buffer::Depth, &args.depth)] {
         if let Some(path) = path {
-            answers.push((buffer, path.as_path(), read_answer(path, &scene)?));
+            match read_answer(path, &scene, buffer) {
+                Ok(answer) => answers.push((buffer, path.as_path(), answer)),
+                Err(error) => {
+                    malformed.get_or_insert(error);
+                }
+            }
         }
     }
-    let report = report(&scene, &args.scene, last, answers, args.arith)?;
-    emit(out, &report.text)?;
-    Ok(if report.differs { Finish::Differs } else { Finish::Ok })
+    if !answers.is_empty() {
+        let report = report(&scene, &args.scene, last, answers, args.arith)?;
+        emit(out, &report.text)?;
+        if malformed.is_none() {
+            return Ok(if report.differs { Finish::Differs } else { Finish::Ok });
+        }
+    }
+    Err(malformed.expect("an answer was given, read or malformed").into())
 }
 
 /// What checking one student's answers found.
@@ -106,16 +124,17 @@ pub fn report(
                 ))
             })?,
         };
-        results.push((buffer, path, compare(&answer, &expected)));
+        let hint = misreading(&answer, &expected);
+        results.push((buffer, path, compare(&answer, &expected), hint));
     }
     // Watch the differing cells through a second run, to explain each.
-    let mut watcher = PixelWatcher::new(results.iter().flat_map(|(_, _, m)| m.iter().map(|c| (c.x, c.y))));
-    if results.iter().any(|(_, _, m)| !m.is_empty()) {
+    let mut watcher = PixelWatcher::new(results.iter().flat_map(|(_, _, m, _)| m.iter().map(|c| (c.x, c.y))));
+    if results.iter().any(|(_, _, m, _)| !m.is_empty()) {
         Simulation::new(scene).draw_through(last, &mut watcher);
     }
     let mut text = String::new();
     let mut differs = false;
-    for (buffer, path, mismatches) in &results {
+    for (buffer, path, mismatches, hint) in &results {
         let after = polygon_name(scene, last);
         if mismatches.is_empty() {
             text.push_str(&format!(
@@ -135,6 +154,13 @@ pub fn report(
             mismatches.len(),
             buffer.name()
         ));
+        if let Some((how, left)) = hint {
+            let rest = if *left == 0 { "it matches".to_string() } else { format!("only {left} cells differ") };
+            text.push_str(&format!(
+                "hint: read {how}, {rest}; write the top row (y = {}) first and each row from x = 0, as the book prints them\n",
+                scene.height - 1
+            ));
+        }
         text.push_str(&format!("{}\n", table(scene, *buffer, mismatches, &watcher, (arith, simulation.buffers()))));
     }
     Ok(Report { text, differs })
@@ -148,7 +174,12 @@ fn table(
     (arith, exact): (zsim::arith::Arith, &zsim::buffer::Buffers),
 ) -> Table {
     let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_header(["x", "y", "answer", "right", "why"]);
+    // Wrapped to 80 columns: the "why" column breaks over lines instead of running on.
+    table
+        .load_style(presets::ASCII_MARKDOWN)
+        .set_content_arrangement(comfy_table::ContentArrangement::Dynamic)
+        .set_width(80)
+        .set_header(["x", "y", "answer", "right", "why"]);
     for cell in mismatches {
         let history = watcher.history(cell.x, cell.y);
         let mut reason = why(scene, buffer, cell.x, cell.y, history);

@@ -153,7 +153,7 @@ fn submissions(
                     let file = files.iter().find(|(s, b, _)| s == student && b == buffer);
                     let handed = match file {
                         None => Handed::Missing,
-                        Some((_, _, path)) => match read_answer(path, scene) {
+                        Some((_, _, path)) => match read_answer(path, scene, *buffer) {
                             Ok(matrix) => Handed::Matrix(matrix),
                             Err(Error::Answer { message, .. }) => Handed::Malformed(message),
                             Err(other) => Handed::Malformed(other.to_string()),
@@ -309,7 +309,7 @@ fn write_feedback(
             if printable(student) != grade.student {
                 continue;
             }
-            match read_answer(path, scene) {
+            match read_answer(path, scene, *buffer) {
                 Ok(matrix) => answers.push((*buffer, path.as_path(), matrix)),
                 Err(error) => text.push_str(&format!("{}\n", printable(&error.to_string()))),
             }

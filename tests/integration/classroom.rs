@@ -78,7 +78,7 @@ fn grade_gives_a_row_per_student_sorted_with_the_status_of_each() {
          ana,0,0,100.0,ok\n\
          bo,0,2,99.9,wrong\n\
          cy,1,2,99.9,wrong\n\
-         di,,0,50.0,\"malformed: di.frame.txt: line 1, value 3: \"\"x\"\" is not a whole number from 0 to 4294967295\"\n\
+         di,,0,50.0,\"malformed: di.frame.txt: line 1, value 3 (x = 2, y = 31): \"\"x\"\" is not a whole number (a 2-bit framebuffer holds 0 … 3)\"\n\
          ed,0,,50.0,missing: ed.depth.txt\n"
     );
 }
@@ -127,7 +127,7 @@ fn grade_writes_each_student_checks_explanation() {
     assert_eq!(heading, "bo: examples/rogers.json after polygon 2 \"triangle\": score 99.9 %, wrong");
     assert_eq!(rest, check.stdout, "the feedback is what `zsim check` says");
     let di = std::fs::read_to_string(feedback.join("di.txt")).unwrap();
-    assert!(di.contains("di.frame.txt: line 1, value 3: \"x\" is not a whole number"), "{di}");
+    assert!(di.contains("di.frame.txt: line 1, value 3 (x = 2, y = 31): \"x\" is not a whole number"), "{di}");
     assert!(di.contains("di.depth.txt: all 1024 cells match"), "the answer that was read is still checked: {di}");
     assert!(std::fs::read_to_string(feedback.join("common-mistakes.txt")).unwrap().contains("2 of 5"));
 }

@@ -83,3 +83,24 @@ macro_rules! snapshot {
         })
     };
 }
+
+/// The rows of a markdown table as comfy-table prints it, with a wrapped
+/// cell's continuation lines (first cell empty) joined to its row by a space.
+pub fn table_rows(text: &str) -> Vec<Vec<String>> {
+    let mut rows: Vec<Vec<String>> = Vec::new();
+    for line in text.lines().filter(|l| l.starts_with('|') && !l.starts_with("|-")) {
+        let cells: Vec<String> = line.trim_matches('|').split('|').map(|c| c.trim().to_string()).collect();
+        match rows.last_mut() {
+            Some(row) if cells[0].is_empty() => {
+                for (cell, more) in row.iter_mut().zip(cells) {
+                    if !more.is_empty() {
+                        cell.push(' ');
+                        cell.push_str(&more);
+                    }
+                }
+            }
+            _ => rows.push(cells),
+        }
+    }
+    rows
+}

@@ -213,19 +213,13 @@ fn check_finds_the_books_errata() {
     // The printed z-buffer after the triangle differs at exactly the misprinted cells.
     let run = zsim(&["check", "examples/rogers.json", "--depth", "tests/fixtures/rogers/depth_after_triangle.txt"]);
     assert_eq!((run.code, run.stderr.as_str()), (1, ""));
-    let cells: Vec<(String, String)> = run
-        .stdout
-        .lines()
-        .filter(|l| l.starts_with("| ") && !l.starts_with("| x"))
-        .map(|l| {
-            let cells: Vec<&str> = l.trim_matches('|').split('|').map(str::trim).collect();
-            (cells[0].to_string(), cells[1].to_string())
-        })
-        .collect();
-    let expected: Vec<(String, String)> =
-        [("27", "10"), ("28", "10"), ("29", "10")].iter().map(|(x, y)| (x.to_string(), y.to_string())).collect();
-    assert_eq!(cells, expected);
-    assert!(run.stdout.contains("no polygon covers (27, 10): on the scanline y = 10.5 polygon 1 \"rectangle\" spans 10 … 25 and polygon 2 \"triangle\" spans 57/2 ≈ 28.50 … 179/6 ≈ 29.83"));
+    let rows = crate::table_rows(&run.stdout);
+    let cells: Vec<(&str, &str)> = rows.iter().skip(1).map(|r| (r[0].as_str(), r[1].as_str())).collect();
+    assert_eq!(cells, [("27", "10"), ("28", "10"), ("29", "10")]);
+    assert_eq!(
+        rows[1][4],
+        "no polygon covers (27, 10): on the scanline y = 10.5 polygon 1 \"rectangle\" spans 10 … 25 and polygon 2 \"triangle\" spans 57/2 ≈ 28.50 … 179/6 ≈ 29.83; it keeps the cleared depth 0"
+    );
     snapshot!("check_rogers_book_depth", run.stdout);
     // The printed framebuffer has 33 rows: refused as the wrong shape.
     let run = zsim(&["check", "examples/rogers.json", "--frame", "tests/fixtures/rogers/frame_after_triangle.txt"]);
@@ -273,9 +267,16 @@ fn check_explains_a_students_mistakes() {
     let run = zsim(&["check", "examples/rogers.json", "--depth", answer_path.to_str().unwrap()]);
     assert_eq!(run.code, 1);
     assert!(run.stdout.contains("1 of 1024 cell differs"), "{}", run.stdout);
-    assert!(run.stdout.contains(
-        "| 20 | 15 | 10     | 11    | polygon 2 \"triangle\" covers (20, 15): z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored |"
-    ), "{}", run.stdout);
+    assert_eq!(
+        crate::table_rows(&run.stdout)[1],
+        [
+            "20",
+            "15",
+            "10",
+            "11",
+            "polygon 2 \"triangle\" covers (20, 15): z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored"
+        ]
+    );
 }
 
 #[test]
@@ -286,7 +287,9 @@ fn check_refuses_malformed_answers() {
     let run = zsim(&["check", "examples/rogers.json", "--frame", bad.to_str().unwrap()]);
     assert_eq!((run.code, run.stdout.as_str()), (2, ""));
     assert!(
-        run.stderr.ends_with("bad_answer.txt: line 1, value 3: \"x\" is not a whole number from 0 to 4294967295\n"),
+        run.stderr.ends_with(
+            "bad_answer.txt: line 1, value 3 (x = 2, y = 31): \"x\" is not a whole number (a 2-bit framebuffer holds 0 … 3)\n"
+        ),
         "{}",
         run.stderr
     );
@@ -432,4 +435,66 @@ fn step_says_it_shows_coverage_before_antialiasing() {
         "{}",
         run.stdout
     );
+}
+
+/// The book's final answers from `zsim run --format json --final`, as answer text.
+fn final_answers() -> (String, String) {
+    let run = zsim(&["run", "examples/rogers.json", "--format", "json", "--final"]);
+    let json: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
+    let text = |key: &str, separator: &str| -> String {
+        json["steps"][0][key]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|row| row.as_array().unwrap().iter().map(|v| v.to_string()).collect::<Vec<_>>().join(separator) + "\n")
+            .collect()
+    };
+    (text("frame", ", "), text("depth", " "))
+}
+
+/// Found by a new user: a 7 in a 2-bit framebuffer, commas, a bad file next to a
+/// good one, an answer written bottom row first, and a table 200 columns wide.
+#[test]
+fn check_reads_handed_in_answers_as_students_write_them() {
+    let (dir, _) = scene_file("unused6.json", "{}");
+    let (frame, depth) = final_answers();
+    let (frame_path, depth_path) = (dir.join("commas.frame.txt"), dir.join("good.depth.txt"));
+    std::fs::write(&frame_path, &frame).unwrap();
+    std::fs::write(&depth_path, &depth).unwrap();
+    let run = zsim(&["check", "examples/rogers.json", "--frame", frame_path.to_str().unwrap()]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""), "commas between numbers are read");
+    // A value the buffer cannot hold, named at its line, column and cell.
+    let seven = dir.join("seven.frame.txt");
+    std::fs::write(&seven, frame.replacen("0, 0", "0, 7", 1)).unwrap();
+    let run = zsim(&[
+        "check",
+        "examples/rogers.json",
+        "--frame",
+        seven.to_str().unwrap(),
+        "--depth",
+        depth_path.to_str().unwrap(),
+    ]);
+    assert_eq!(run.code, 2, "a malformed file is bad input");
+    assert_eq!(
+        run.stderr,
+        format!(
+            "zsim: {}: line 1, value 2 (x = 1, y = 31): 7 does not fit a 2-bit framebuffer (0 … 3)\n",
+            seven.display()
+        )
+    );
+    assert!(run.stdout.contains("all 1024 cells match the z-buffer"), "the good file is still checked: {}", run.stdout);
+    // Written bottom row first: said so.
+    let upside_down: String = depth.lines().rev().map(|l| format!("{l}\n")).collect();
+    let flipped = dir.join("flipped.depth.txt");
+    std::fs::write(&flipped, upside_down).unwrap();
+    let run = zsim(&["check", "examples/rogers.json", "--depth", flipped.to_str().unwrap()]);
+    assert_eq!(run.code, 1);
+    assert!(
+        run.stdout.contains("hint: read bottom row first, it matches; write the top row (y = 31) first and each row from x = 0, as the book prints them\n"),
+        "{}",
+        run.stdout
+    );
+    // The table fits 80 columns.
+    let wide = run.stdout.lines().map(|l| l.chars().count()).max().unwrap();
+    assert!(run.stdout.lines().filter(|l| l.starts_with('|')).all(|l| l.chars().count() <= 80), "widest line {wide}");
 }
