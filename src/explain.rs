@@ -51,18 +51,27 @@ pub fn scanline_text(row: u32) -> String {
     format!("y = {row}.5")
 }
 
-/// What is stored for an exact depth, with a note when it saturates.
+/// What is stored for an exact depth, naming the rounding when z is not
+/// whole (`10 is stored (10.25 rounds to 10)`, the book's pixel (20, 17))
+/// and the saturation when it does not fit.
 pub fn stored_text(scene: &Scene, depth: Depth) -> String {
     match depth.stored(scene.rules.store, scene.depth_max()) {
         Stored::Level(stored) => {
             let rounded = depth.rounded();
-            if rounded == i128::from(stored) {
-                stored.to_string()
+            let value = depth.value();
+            if rounded == i128::from(stored) && value.is_integer() {
+                format!("{stored} is stored")
+            } else if rounded == i128::from(stored) {
+                let how = if Q::from_integer(rounded) > value { "up " } else { "" };
+                format!("{stored} is stored ({} rounds {how}to {stored})", crate::exact::short(value))
             } else {
-                format!("{stored} ({} rounds to {rounded}, saturated to {stored})", exact_and_decimal(depth.value()))
+                format!(
+                    "{stored} is stored ({} rounds to {rounded}, saturated to {stored})",
+                    exact_and_decimal(depth.value())
+                )
             }
         }
-        exact @ Stored::Exact(_) => format!("{exact} (exactly)"),
+        exact @ Stored::Exact(_) => format!("{exact} is stored (exactly)"),
     }
 }
 
@@ -101,7 +110,7 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
                 None => event.frame_after.to_string(),
             };
             format!(
-                "z = {z} {op} {} stored, so {} is stored and the framebuffer gets {frame}",
+                "z = {z} {op} {} stored, so {} and the framebuffer gets {frame}",
                 event.stored_before,
                 stored_text(scene, event.compared)
             )
@@ -183,7 +192,7 @@ pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistor
         .find_map(|entry| entry.pixel.filter(|p| p.outcome == Outcome::Written).map(|p| (entry.index, p)));
     let result = |pixel: &PixelEvent| match buffer {
         Buffer::Frame => format!("the framebuffer holds {}", pixel.frame_after),
-        Buffer::Depth => format!("{} is stored", stored_text(scene, pixel.compared)),
+        Buffer::Depth => stored_text(scene, pixel.compared),
     };
     if let Some((index, pixel)) = last_write {
         let z = depth_text(scene, pixel.compared.value());

@@ -4,15 +4,25 @@
 use serde::Serialize;
 
 use crate::depth::Stored;
-use crate::exact::{decimal, to_f64};
+use crate::exact::{Q, decimal};
 
 impl Serialize for Stored {
-    /// A level as an integer; an exact depth as the nearest `f64`.
+    /// A level as an integer; an exact depth as [`exact_json`] writes it.
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         match self {
             Stored::Level(level) => serializer.serialize_u32(*level),
-            Stored::Exact(q) => serializer.serialize_f64(to_f64(*q)),
+            Stored::Exact(q) => exact_json(*q).serialize(serializer),
         }
+    }
+}
+
+/// An exact value in JSON output, never a float: an integer when it is
+/// whole (`4`), otherwise the reduced fraction as a string (`"5/2"`), so that
+/// every cell of a matrix has one of two types whatever the scene.
+pub fn exact_json(value: Q) -> serde_json::Value {
+    match i64::try_from(*value.numer()) {
+        Ok(whole) if value.is_integer() => serde_json::Value::from(whole),
+        _ => serde_json::Value::from(crate::exact::fraction(value)),
     }
 }
 
@@ -221,7 +231,7 @@ pub struct StepJson {
     /// The framebuffer, top row first.
     pub frame: Vec<Vec<u32>>,
     /// The z-buffer, top row first: integer levels, or for an exact z-buffer
-    /// the nearest `f64` of each exact depth.
+    /// each exact depth as [`exact_json`] writes it.
     pub depth: Vec<Vec<Stored>>,
 }
 

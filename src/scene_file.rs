@@ -27,10 +27,15 @@ pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
         });
     }
     let mut deserializer = serde_json::Deserializer::from_str(text);
-    let file: SceneFile = serde_path_to_error::deserialize(&mut deserializer).map_err(|error| Error::SceneFormat {
-        path: path.to_owned(),
-        location: describe_location(&error.path().to_string()),
-        message: json_message(error.inner()),
+    let file: SceneFile = serde_path_to_error::deserialize(&mut deserializer).map_err(|error| {
+        // A syntax error has no place in the scene's structure: its line and column say where.
+        let syntax =
+            matches!(error.inner().classify(), serde_json::error::Category::Syntax | serde_json::error::Category::Eof);
+        Error::SceneFormat {
+            path: path.to_owned(),
+            location: if syntax { String::new() } else { describe_location(&error.path().to_string()) },
+            message: format!("{}{}", json_message(error.inner()), missing_comma(text, error.inner())),
+        }
     })?;
     deserializer.end().map_err(|error| Error::SceneFormat {
         path: path.to_owned(),
@@ -51,6 +56,31 @@ fn top_level_kind(text: &str) -> Option<&'static str> {
         b't' | b'f' if text.trim().parse::<bool>().is_ok() => Some("true or false"),
         b'n' if text.trim() == "null" => Some("null"),
         _ => None,
+    }
+}
+
+/// For "expected `,`", where the comma belongs: serde_json reports the
+/// token after the gap, often on the next line; the comma is missing after
+/// the last character before it.
+fn missing_comma(text: &str, error: &serde_json::Error) -> String {
+    if !error.to_string().starts_with("expected `,`") || error.line() == 0 {
+        return String::new();
+    }
+    // The offset of (line, column), both from 1; then back over white space.
+    let line_start: usize = text.split_inclusive('\n').take(error.line() - 1).map(str::len).sum();
+    let at = text[line_start..]
+        .char_indices()
+        .nth(error.column().saturating_sub(1))
+        .map_or(text.len(), |(i, _)| line_start + i);
+    let Some((before, _)) = text[..at].char_indices().rev().find(|(_, c)| !c.is_whitespace()) else {
+        return String::new();
+    };
+    let line = text[..before].matches('\n').count() + 1;
+    if line < error.line() {
+        format!(" (a comma is missing at the end of line {line})")
+    } else {
+        let column = text[..before].rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        format!(" (a comma is missing after line {line} column {column})")
     }
 }
 

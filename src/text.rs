@@ -7,10 +7,14 @@ use std::path::Path;
 
 use crate::error::Error;
 
-/// Reads a whole input file as UTF-8, skipping a leading byte-order mark.
-/// Every file zsim reads (scenes, answers, course files) comes through here.
+/// Reads a whole input file as UTF-8, skipping a leading byte-order mark;
+/// `-` reads standard input, as Unix tools do. Every file zsim reads (scenes,
+/// answers, course files) comes through here.
 pub fn read_text(path: &Path) -> Result<String, Error> {
-    let mut text = std::fs::read_to_string(path).map_err(|source| Error::Read { path: path.to_owned(), source })?;
+    let read = || {
+        if path == Path::new("-") { std::io::read_to_string(std::io::stdin()) } else { std::fs::read_to_string(path) }
+    };
+    let mut text = read().map_err(|source| Error::Read { path: path.to_owned(), source })?;
     if text.starts_with('\u{feff}') {
         text.drain(..'\u{feff}'.len_utf8());
     }

@@ -18,7 +18,7 @@ use super::{Failure, Finish, emit};
 /// Arguments of `zsim check`.
 #[derive(Debug, Args)]
 pub struct CheckArgs {
-    /// The scene file (JSON).
+    /// The scene file (JSON), or - for standard input.
     scene: PathBuf,
     /// The answer for the framebuffer: integers as the book prints them, top row first.
     #[arg(long, value_name = "FILE")]

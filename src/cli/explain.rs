@@ -16,7 +16,7 @@ use super::{Failure, Finish, emit};
 /// Arguments of `zsim explain`.
 #[derive(Debug, Args)]
 pub struct ExplainArgs {
-    /// The scene file (JSON).
+    /// The scene file (JSON), or - for standard input.
     scene: PathBuf,
     /// The pixel, as X,Y (pixel (0, 0) is bottom left).
     #[arg(long, value_parser = parse_pixel, value_name = "X,Y")]

@@ -16,7 +16,7 @@ use super::{Failure, Finish, emit};
 /// Arguments of `zsim figure`.
 #[derive(Debug, Args)]
 pub struct FigureArgs {
-    /// The scene file (JSON).
+    /// The scene file (JSON), or - for standard input.
     scene: PathBuf,
     /// Draw the state after this polygon (number from 1, or name); default: the last. 0: the empty grid with every outline and vertex, a worksheet.
     #[arg(long, value_name = "N|NAME")]

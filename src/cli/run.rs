@@ -20,11 +20,14 @@ use super::{Failure, Finish, emit};
 /// Arguments of `zsim run`.
 #[derive(Debug, Args)]
 pub struct RunArgs {
-    /// The scene file (JSON).
+    /// The scene file (JSON), or - for standard input.
     scene: PathBuf,
     /// Print only the state after the last polygon.
     #[arg(long = "final")]
     final_only: bool,
+    /// Print only the state after this polygon (number from 1, or name); the polygons after it are not drawn.
+    #[arg(long, value_name = "N|NAME")]
+    after: Option<String>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
@@ -96,8 +99,14 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         .into());
     }
     let reading = Instant::now();
-    let scene = Scene::load(&args.scene)?;
+    let mut scene = Scene::load(&args.scene)?;
     let read_time = reading.elapsed();
+    // `--after N`: the scene up to polygon N, shown as `--final` shows the last.
+    let final_only = args.final_only || args.after.is_some();
+    if let Some(spec) = &args.after {
+        let last = scene.find_polygon(spec)?;
+        scene.polygons.truncate(last + 1);
+    }
     let path = args.scene.display().to_string();
     if args.arith != Arith::Exact {
         return run_inexact(args, &scene, &path, read_time, out);
@@ -115,7 +124,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             }),
             axes: args.axes,
             json,
-            final_only: args.final_only,
+            final_only,
         };
         return super::variants::run(&scene, &path, &variant, out);
     }
@@ -130,16 +139,14 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             while let Some(index) = simulation.draw_next(&mut Unobserved) {
                 let after = simulation.stats();
                 let polygon = &scene.polygons[index];
-                let mut text = format!("\n{}\n", report::polygon_heading(&scene, index));
-                text.push_str(&format!(
-                    "  {} pixel centres covered, {} written\n",
-                    after.tested - before.tested,
-                    after.written - before.written
-                ));
+                let counts = (after.tested - before.tested, after.written - before.written);
                 before = after;
-                if !args.final_only || Some(index) == last {
-                    text.push_str(&buffers_text(&simulation, index, &polygon.name, args.axes));
+                if final_only && Some(index) != last {
+                    continue;
                 }
+                let mut text = format!("\n{}\n", report::polygon_heading(&scene, index));
+                text.push_str(&format!("  {} pixel centres covered, {} written\n", counts.0, counts.1));
+                text.push_str(&buffers_text(&simulation, index, &polygon.name, args.axes));
                 emit(out, &text)?;
             }
             if scene.effects.transparency {
@@ -156,7 +163,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             emit(out, head)?;
             let mut first = true;
             while let Some(index) = simulation.draw_next(&mut Unobserved) {
-                if args.final_only && index + 1 != scene.polygons.len() {
+                if final_only && index + 1 != scene.polygons.len() {
                     continue;
                 }
                 let step = StepJson {
@@ -254,12 +261,15 @@ fn summary(
     let effects = scene.effects.names();
     let rate = stats.tested as f64 / raster.as_secs_f64().max(1e-9) / 1e6;
     let scene_bytes = scene.memory_bytes();
+    // The ratio means something only where the buffers and the scene dominate the
+    // process (from 16 MiB); below, the program itself is most of the peak.
     let peak = match peak_resident_bytes() {
-        Some(peak) => format!(
+        Some(peak) if buffers + scene_bytes >= 16 << 20 => format!(
             ", peak resident {} ({:.2}× buffers + scene)",
             bytes(peak),
             peak as f64 / (buffers + scene_bytes) as f64
         ),
+        Some(peak) => format!(", peak resident {}", bytes(peak)),
         None => String::new(),
     };
     format!(

@@ -20,7 +20,7 @@ use super::{Failure, Finish, emit};
 /// Arguments of `zsim step`.
 #[derive(Debug, Args)]
 pub struct StepArgs {
-    /// The scene file (JSON).
+    /// The scene file (JSON), or - for standard input.
     scene: PathBuf,
     /// Show one step of this polygon (number from 1, or name) and exit; needs --scanline.
     #[arg(long, value_name = "N|NAME", requires = "scanline")]

@@ -25,7 +25,7 @@ pub struct Variant {
 }
 
 fn exact_json(rows: &[Vec<zsim::exact::Q>]) -> serde_json::Value {
-    rows.iter().map(|row| row.iter().map(|q| zsim::exact::to_f64(*q)).collect::<Vec<_>>()).collect()
+    rows.iter().map(|row| row.iter().map(|q| zsim::report::exact_json(*q)).collect::<Vec<_>>()).collect()
 }
 
 fn buffers_json(scene: &Scene, name: &str, buffers: &Buffers) -> serde_json::Value {

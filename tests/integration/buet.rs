@@ -123,7 +123,7 @@ fn an_imported_case_runs_steps_and_explains_like_any_scene() {
     assert_eq!(value["width"], 500);
     // Pixel (250, 250) is the first triangle's, at z = 4876543/5000000.
     let explain = zsim_in(Some(&scratch), &["explain", &name, "--pixel", "250,250"]);
-    assert!(explain.stdout.contains("so 4876543/5000000 ≈ 0.975309 (exactly) is stored"), "{}", explain.stdout);
+    assert!(explain.stdout.contains("so 4876543/5000000 ≈ 0.975309 is stored (exactly)"), "{}", explain.stdout);
     assert!(
         explain.stdout.ends_with("final: framebuffer 2696126, z-buffer 4876543/5000000 ≈ 0.975309\n"),
         "{}",

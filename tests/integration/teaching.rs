@@ -191,8 +191,17 @@ fn explain_walks_through_pixel_20_15_like_the_book() {
     let run = zsim(&["explain", "examples/rogers.json", "--pixel", "20,15"]);
     assert_eq!((run.code, run.stderr.as_str()), (0, ""));
     assert!(run.stdout.contains(
-        "polygon 2 \"triangle\": on the scanline y = 15.5 it spans 31/2 ≈ 15.50 … 169/6 ≈ 28.17, which holds the centre x = 41/2 ≈ 20.50; z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored and the framebuffer gets 2"
+        "polygon 2 \"triangle\": on the scanline y = 15.5 it spans 31/2 ≈ 15.50 … 169/6 ≈ 28.17, which holds the centre x = 41/2 ≈ 20.50; z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored (10.75 rounds up to 11) and the framebuffer gets 2"
     ));
+    // Found by a new user: the book's key subtlety, z = 41/4 > 10 written though 10 is stored, named.
+    let pixel_20_17 = zsim(&["explain", "examples/rogers.json", "--pixel", "20,17"]);
+    assert!(
+        pixel_20_17
+            .stdout
+            .contains("z = 41/4 ≈ 10.25 > 10 stored, so 10 is stored (10.25 rounds to 10) and the framebuffer gets 2"),
+        "{}",
+        pixel_20_17.stdout
+    );
     assert!(run.stdout.ends_with("final: framebuffer 2, z-buffer 11\n"));
     snapshot!("explain_rogers_20_15", run.stdout);
     snapshot!("explain_rogers_27_10", zsim(&["explain", "examples/rogers.json", "--pixel", "27,10"]).stdout);
@@ -274,7 +283,7 @@ fn check_explains_a_students_mistakes() {
             "15",
             "10",
             "11",
-            "polygon 2 \"triangle\" covers (20, 15): z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored"
+            "polygon 2 \"triangle\" covers (20, 15): z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored (10.75 rounds up to 11)"
         ]
     );
 }
