@@ -1,7 +1,7 @@
 //! zsim simulates the z-buffer hidden-surface algorithm exactly as the
 //! textbook teaches it (Rogers, *Procedural Elements for Computer Graphics*,
-//! the worked example of a rectangle pierced by a triangle; seed 002 in this
-//! project's sources).
+//! the worked example of a rectangle pierced by a triangle, as the Russian
+//! coursework among this project's sources reproduces it).
 //!
 //! # Conventions
 //!

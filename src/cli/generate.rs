@@ -27,7 +27,7 @@ pub struct MemoryArgs {
     /// Supersampling: K×K sub-pixels per pixel.
     #[arg(long, default_value_t = 1, value_name = "K")]
     supersample: u64,
-    /// Where the depth is kept when supersampling (seed 002's two approaches).
+    /// Where the depth is kept when supersampling (the two approaches of the Russian coursework on Rogers' example).
     #[arg(long, value_enum, default_value_t = DepthAt::Sample)]
     depth_at: DepthAt,
 }

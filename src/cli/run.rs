@@ -34,13 +34,13 @@ pub struct RunArgs {
     /// Label rows with y and columns with x.
     #[arg(long)]
     axes: bool,
-    /// Loop order: polygons then their pixels (the z-buffer), or every pixel then every polygon (seed 001).
+    /// Loop order: polygons then their pixels (the z-buffer), or every pixel then every polygon (the Chinese course notes).
     #[arg(long, value_enum, default_value_t = Order::Polygons)]
     order: Order,
     /// The point-in-polygon test of --order pixels.
     #[arg(long, value_enum)]
     inside: Option<InsideTest>,
-    /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (seed 000).
+    /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (the Russian lecture notes).
     #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
     segments: Option<zsim::variants::Segments>,
     /// With --format none: draw tile by tile, N×N pixels (default 64 when more than one thread draws).
@@ -62,7 +62,7 @@ const DEFAULT_TILE: u32 = 64;
 pub enum Order {
     /// For every polygon, for every pixel it covers: the z-buffer.
     Polygons,
-    /// For every pixel, for every polygon, with one depth variable (seed 001).
+    /// For every pixel, for every polygon, with one depth variable (the Chinese course notes).
     Pixels,
 }
 

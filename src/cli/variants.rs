@@ -98,7 +98,7 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
             Inside::Arc => "the arc-length method (quadrant table; on the boundary counts)",
         };
         text.push_str(&format!(
-            "order: for every pixel, for every polygon, one depth variable (seed 001); inside test: {test}\n"
+            "order: for every pixel, for every polygon, one depth variable (the Chinese course notes); inside test: {test}\n"
         ));
         text.push_str(&format!("result: {}\n", comparison(&buffers, plain.buffers())));
         if !differences.is_empty() {
