@@ -335,32 +335,15 @@ impl<F: Float + AsPrimitive<u32>> LevelCells for FloatRaster<'_, F> {
         let mut stats = Stats::default();
         let max = F::from(scene.depth_max()).unwrap_or_else(F::max_value);
         let nearer = nearer_sign(scene);
-        let width = scene.width as usize;
         let mut space: Option<FloatWalker<'_, F>> = None;
         for polygon in self.polygons {
             stats.polygons += 1;
             let Some(p) = polygon else { continue };
-            let value = C::from_value(p.value);
             let mut walker = match space.take() {
                 Some(walker) => walker.next(p),
                 None => FloatWalker::new(p, self.incremental),
             };
-            if let Some((first_row, last_row)) = walker.rows(scene.height) {
-                for row in first_row..=last_row {
-                    let row_start = row as usize * width;
-                    walker.row(row, scene.width, |x, z| {
-                        test_and_store(
-                            &mut stats,
-                            (frame, depth),
-                            row_start + x as usize,
-                            value,
-                            true,
-                            z,
-                            (nearer, max),
-                        );
-                    });
-                }
-            }
+            draw_walked(&mut walker, scene, (&mut *frame, &mut *depth), (nearer, max), &mut stats);
             space = Some(walker);
         }
         stats
@@ -428,32 +411,36 @@ impl LevelCells for EdgeRaster<'_> {
                 Some(EdgeShape::Triangle(p)) => draw_edges(p, (frame, depth), width, limits, &mut stats),
                 Some(EdgeShape::Quad(p)) => draw_edges(p, (frame, depth), width, limits, &mut stats),
                 Some(EdgeShape::Other(p)) => {
-                    let value = C::from_value(p.value);
                     let mut walker = match space.take() {
                         Some(walker) => walker.next(p),
                         None => FloatWalker::new(p, false),
                     };
-                    if let Some((first_row, last_row)) = walker.rows(scene.height) {
-                        for row in first_row..=last_row {
-                            let row_start = row as usize * width;
-                            walker.row(row, scene.width, |x, z| {
-                                test_and_store(
-                                    &mut stats,
-                                    (frame, depth),
-                                    row_start + x as usize,
-                                    value,
-                                    true,
-                                    z,
-                                    limits,
-                                );
-                            });
-                        }
-                    }
+                    draw_walked(&mut walker, scene, (&mut *frame, &mut *depth), limits, &mut stats);
                     space = Some(walker);
                 }
             }
         }
         stats
+    }
+}
+
+/// One polygon's rows through the scanline walker, each covered centre tested and stored.
+fn draw_walked<F: Float + AsPrimitive<u32>, C: FrameCell>(
+    walker: &mut FloatWalker<'_, F>,
+    scene: &Scene,
+    (frame, depth): (&mut [C], &mut [u32]),
+    limits: (F, F),
+    stats: &mut Stats,
+) {
+    let value = C::from_value(walker.polygon.value);
+    let width = scene.width as usize;
+    if let Some((first_row, last_row)) = walker.rows(scene.height) {
+        for row in first_row..=last_row {
+            let row_start = row as usize * width;
+            walker.row(row, scene.width, |x, z| {
+                test_and_store(stats, (&mut *frame, &mut *depth), row_start + x as usize, value, true, z, limits);
+            });
+        }
     }
 }
 

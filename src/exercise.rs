@@ -11,7 +11,7 @@ use crate::exact::{Q, fraction, short};
 use crate::generate::SplitMix64;
 use crate::pipeline::Simulation;
 use crate::scene::{Scene, max_for_bits};
-use crate::trace::{Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent};
+use crate::trace::{Observer, Outcome, PixelEvent, ScanlineEvent};
 
 /// A case that students get wrong, which an exercise can be asked to contain.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -133,8 +133,6 @@ impl CaseFinder {
 }
 
 impl Observer for CaseFinder {
-    fn polygon(&mut self, _event: &PolygonEvent<'_>) {}
-
     fn scanline(&mut self, event: &ScanlineEvent<'_>) {
         let (index, row) = (event.index, event.row);
         let scan_y = Q::new(2 * i128::from(row) + 1, 2);

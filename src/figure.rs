@@ -261,7 +261,6 @@ fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, St
                 .collect()
         }
         Shading::Depth => {
-            let range = exact_range(scene, buffers);
             let (far, near) = match scene.depth_test {
                 crate::depth::DepthTest::Greater => ("lower z: farther", "higher z: nearer"),
                 crate::depth::DepthTest::Less => ("higher z: farther", "lower z: nearer"),
@@ -271,9 +270,6 @@ fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, St
                 ("#e6e6e6".to_string(), far.to_string()),
                 ("#3c3c3c".to_string(), near.to_string()),
             ]
-            .into_iter()
-            .filter(|_| range.0 <= range.1)
-            .collect()
         }
     }
 }

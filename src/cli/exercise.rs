@@ -2,7 +2,7 @@
 //! and answer key, repeatable from its seed.
 
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::Args;
 use zsim::error::Error;
@@ -158,11 +158,10 @@ fn notes(exercise: &Exercise, spec: &Spec, args: &ExerciseArgs) -> String {
     for found in &exercise.found {
         text.push_str(&format!("  {}: {}\n", found.case, found.place));
     }
-    let dir = args.output.display();
+    let scene_path = args.output.join("scene.json");
     text.push_str(&format!(
-        "check an answer: zsim check {} --frame FRAME.txt --depth DEPTH.txt; grade a class: zsim grade {} CLASS_DIR\n",
-        Path::new(&dir.to_string()).join("scene.json").display(),
-        Path::new(&dir.to_string()).join("scene.json").display()
+        "check an answer: zsim check {0} --frame FRAME.txt --depth DEPTH.txt; grade a class: zsim grade {0} CLASS_DIR\n",
+        scene_path.display()
     ));
     text
 }
