@@ -105,6 +105,12 @@ pub fn check_supported(scene: &Scene, arith: Arith) -> Result<(), Error> {
             "--arith {arith} simulates the plain algorithm with the book's rules; this scene asks for other rules or per-pixel effects (use --arith exact)"
         )));
     }
+    if scene.depth_test.equal_passes() {
+        return Err(Error::Usage(format!(
+            "--arith {arith} simulates the depth tests greater and less; this scene asks for {} (use --arith exact)",
+            scene.depth_test.name()
+        )));
+    }
     Ok(())
 }
 
@@ -352,7 +358,7 @@ impl<F: Float + AsPrimitive<u32>> LevelCells for FloatRaster<'_, F> {
 
 /// `1` when larger depths are nearer (`greater`), `−1` when smaller are (`less`).
 fn nearer_sign<F: Float>(scene: &Scene) -> F {
-    if scene.depth_test == crate::depth::DepthTest::Greater { F::one() } else { -F::one() }
+    if scene.depth_test.larger_is_nearer() { F::one() } else { -F::one() }
 }
 
 /// The depth test and the store of one covered-or-not cell, as the exact

@@ -59,15 +59,30 @@ pub enum DepthTest {
     /// Seeds 003/004: smaller z is nearer, buffer cleared to `2^depth_bits − 1`,
     /// written when `z < stored`.
     Less,
+    /// As `greater`, but an equal depth passes too (GL's `GL_GEQUAL`): of two
+    /// polygons at the same depth, the later one keeps the pixel.
+    #[serde(rename = "greater-equal")]
+    GreaterEqual,
+    /// As `less`, but an equal depth passes too (GL's `GL_LEQUAL`, the usual
+    /// choice for multi-pass drawing): the later polygon keeps the pixel.
+    #[serde(rename = "less-equal")]
+    LessEqual,
 }
 
 impl DepthTest {
+    /// Whether a larger z is nearer the viewer (`greater`, `greater-equal`).
+    pub fn larger_is_nearer(self) -> bool {
+        matches!(self, DepthTest::Greater | DepthTest::GreaterEqual)
+    }
+
+    /// Whether an equal depth passes (`greater-equal`, `less-equal`).
+    pub fn equal_passes(self) -> bool {
+        matches!(self, DepthTest::GreaterEqual | DepthTest::LessEqual)
+    }
+
     /// The value the z-buffer is cleared to: the farthest depth it can hold.
     pub fn clear_value(self, depth_max: u32) -> u32 {
-        match self {
-            DepthTest::Greater => 0,
-            DepthTest::Less => depth_max,
-        }
+        if self.larger_is_nearer() { 0 } else { depth_max }
     }
 
     /// Whether an incoming exact depth replaces the stored value. Equal
@@ -81,22 +96,28 @@ impl DepthTest {
         match self {
             DepthTest::Greater => ord == Ordering::Greater,
             DepthTest::Less => ord == Ordering::Less,
+            DepthTest::GreaterEqual => ord != Ordering::Less,
+            DepthTest::LessEqual => ord != Ordering::Greater,
         }
     }
 
-    /// The comparison operator as printed: `>` or `<`.
+    /// The comparison operator as printed: `>`, `<`, `≥` or `≤`.
     pub fn symbol(self) -> &'static str {
         match self {
             DepthTest::Greater => ">",
             DepthTest::Less => "<",
+            DepthTest::GreaterEqual => "≥",
+            DepthTest::LessEqual => "≤",
         }
     }
 
-    /// The name used in scene files: `greater` or `less`.
+    /// The name used in scene files: `greater`, `less`, `greater-equal` or `less-equal`.
     pub fn name(self) -> &'static str {
         match self {
             DepthTest::Greater => "greater",
             DepthTest::Less => "less",
+            DepthTest::GreaterEqual => "greater-equal",
+            DepthTest::LessEqual => "less-equal",
         }
     }
 
@@ -104,18 +125,12 @@ impl DepthTest {
     /// (seed 002: `z ≤ Zsection` when larger z is nearer; mirrored for `Less`).
     pub fn keeps_section(self, incoming: Depth, section: Q) -> bool {
         let ord = incoming.cmp_q(section);
-        match self {
-            DepthTest::Greater => ord != Ordering::Greater,
-            DepthTest::Less => ord != Ordering::Less,
-        }
+        if self.larger_is_nearer() { ord != Ordering::Greater } else { ord != Ordering::Less }
     }
 
     /// The section comparison as printed: `≤` or `≥`.
     pub fn section_symbol(self) -> &'static str {
-        match self {
-            DepthTest::Greater => "≤",
-            DepthTest::Less => "≥",
-        }
+        if self.larger_is_nearer() { "≤" } else { "≥" }
     }
 }
 
@@ -392,6 +407,20 @@ mod tests {
         let exact = Stored::Exact(Q::new(41, 4));
         assert!(!DepthTest::Less.passes(Depth::from_fraction(82, 8), exact));
         assert!(DepthTest::Less.passes(Depth::from_fraction(81, 8), exact));
+    }
+
+    #[test]
+    fn equal_depth_overwrites_with_greater_equal_and_less_equal() {
+        let stored = Stored::Level(10);
+        for (z, greater_equal, less_equal) in [((10, 1), true, true), ((41, 4), true, false), ((39, 4), false, true)] {
+            let z = Depth::from_fraction(z.0, z.1);
+            assert_eq!(DepthTest::GreaterEqual.passes(z, stored), greater_equal, "{z:?} ≥ 10");
+            assert_eq!(DepthTest::LessEqual.passes(z, stored), less_equal, "{z:?} ≤ 10");
+        }
+        // They clear and cut sections as their strict partners do.
+        assert_eq!((DepthTest::GreaterEqual.clear_value(15), DepthTest::LessEqual.clear_value(15)), (0, 15));
+        assert_eq!((DepthTest::GreaterEqual.section_symbol(), DepthTest::LessEqual.section_symbol()), ("≤", "≥"));
+        assert_eq!((DepthTest::GreaterEqual.symbol(), DepthTest::LessEqual.symbol()), ("≥", "≤"));
     }
 
     #[test]

@@ -261,9 +261,10 @@ fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, St
                 .collect()
         }
         Shading::Depth => {
-            let (far, near) = match scene.depth_test {
-                crate::depth::DepthTest::Greater => ("lower z: farther", "higher z: nearer"),
-                crate::depth::DepthTest::Less => ("higher z: farther", "lower z: nearer"),
+            let (far, near) = if scene.depth_test.larger_is_nearer() {
+                ("lower z: farther", "higher z: nearer")
+            } else {
+                ("higher z: farther", "lower z: nearer")
             };
             vec![
                 ("#ffffff".to_string(), format!("cleared ({})", scene.clear_depth)),
@@ -381,10 +382,7 @@ fn depth_grey(value: Stored, scene: &Scene, (low, high): (Q, Q)) -> String {
     };
     use num_traits::{CheckedDiv, CheckedMul, CheckedSub};
     let span = if high > low { high.checked_sub(&low) } else { Some(Q::from_integer(1)) };
-    let offset = match scene.depth_test {
-        crate::depth::DepthTest::Greater => value.checked_sub(&low),
-        crate::depth::DepthTest::Less => high.checked_sub(&value),
-    };
+    let offset = if scene.depth_test.larger_is_nearer() { value.checked_sub(&low) } else { high.checked_sub(&value) };
     // 230 (far) … 60 (near), in whole steps; a middle grey where the shade does not fit i128.
     let shade = offset
         .zip(span)

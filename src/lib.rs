@@ -35,7 +35,9 @@
 //!   +∞ on z, larger z is nearer, the z-buffer is cleared to 0 and a pixel is
 //!   written when its exact z is greater than the stored integer. `less`
 //!   (seeds 003/004): cleared to `2^depth_bits − 1`, written when less.
-//!   Equal depths never overwrite (`depth::tests::equal_depth_does_not_overwrite`);
+//!   Equal depths never overwrite (`depth::tests::equal_depth_does_not_overwrite`),
+//!   except with `greater-equal` and `less-equal`, where they do
+//!   (`depth::tests::equal_depth_overwrites_with_greater_equal_and_less_equal`);
 //!   the comparison uses the exact z, not the rounded one (the book's pixel
 //!   (20, 17): z = 41/4 > 10 wins though it stores 10).
 //! - **Rounding and saturation.** The z-buffer stores z rounded to the nearest

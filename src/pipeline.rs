@@ -571,7 +571,13 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         if !W::NARROW && (i128::from(denominator) >= LIMIT || reach() >= LIMIT) {
             return false;
         }
-        let greater = self.test == DepthTest::Greater;
+        // z = whole + remainder/denominator with 0 ≤ remainder < denominator and an
+        // integer stored s: z > s ⇔ ⌈z⌉ > s, z ≥ s ⇔ ⌊z⌋ ≥ s, z < s ⇔ ⌊z⌋ < s,
+        // z ≤ s ⇔ ⌈z⌉ ≤ s. So each test is sign·(v − s) > threshold, with v the
+        // floor or the ceiling, sign ±1 and threshold 0 (strict) or −1 (or equal).
+        let use_ceiling = matches!(self.test, DepthTest::Greater | DepthTest::LessEqual);
+        let sign: i64 = if self.test.larger_is_nearer() { 1 } else { -1 };
+        let threshold = -i64::from(self.test.equal_passes());
         let (max, value) = (i64::from(self.depth_max), self.value);
         let start = (row - self.first_row) as usize * self.width;
         let cells = start + first as usize..=start + last as usize;
@@ -579,9 +585,8 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         // Branch-free: every cell is rewritten with its old or its new value.
         for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
             let stored = i64::from(*depth);
-            // z = whole + remainder/denominator with 0 ≤ remainder < denominator:
-            // z > stored ⇔ ⌈z⌉ > stored, and z < stored ⇔ ⌊z⌋ < stored.
-            let passes = if greater { whole + i64::from(remainder != 0) > stored } else { whole < stored };
+            let v = whole + i64::from(use_ceiling & (remainder != 0));
+            let passes = sign * (v - stored) > threshold;
             let rounded = (whole + i64::from(2 * remainder >= denominator)).clamp(0, max) as u32;
             *depth = select_unpredictable(passes, rounded, *depth);
             *frame = select_unpredictable(passes, value, *frame);

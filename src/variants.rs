@@ -374,10 +374,7 @@ pub fn local_errors(scene: &Scene, drawn: &Buffers) -> Vec<LocalError> {
         // Back to front: farthest first by the depth test; among equal depths the later polygon first.
         list.sort_by(|a, b| {
             let nearer = a.depth.cmp_depth(b.depth);
-            let farther_first = match scene.depth_test {
-                crate::depth::DepthTest::Greater => nearer,
-                crate::depth::DepthTest::Less => nearer.reverse(),
-            };
+            let farther_first = if scene.depth_test.larger_is_nearer() { nearer } else { nearer.reverse() };
             farther_first.then(b.index.cmp(&a.index))
         });
         let mut value = scene.background;

@@ -26,6 +26,11 @@ fn polygon() -> impl Strategy<Value = Vec<(i64, i64, i64)>> {
 }
 
 fn scene_json(polygons: &[Vec<(i64, i64, i64)>]) -> String {
+    scene_json_with_test(polygons, "greater")
+}
+
+/// The scene with the depth test `test` (`greater`, `less`, `greater-equal`, `less-equal`).
+fn scene_json_with_test(polygons: &[Vec<(i64, i64, i64)>], test: &str) -> String {
     let list: Vec<String> = polygons
         .iter()
         .enumerate()
@@ -35,7 +40,10 @@ fn scene_json(polygons: &[Vec<(i64, i64, i64)>]) -> String {
             format!("{{\"value\": {}, \"vertices\": [{}]}}", i % 3 + 1, vertices.join(", "))
         })
         .collect();
-    format!("{{\"width\": {W}, \"height\": {H}, \"depth_bits\": 4, \"polygons\": [{}]}}", list.join(", "))
+    format!(
+        "{{\"width\": {W}, \"height\": {H}, \"depth_bits\": 4, \"depth_test\": \"{test}\", \"polygons\": [{}]}}",
+        list.join(", ")
+    )
 }
 
 /// A framebuffer and a z-buffer, rows top first.
@@ -171,8 +179,10 @@ proptest! {
         polygons in prop::collection::vec(planar_polygon(), 1..5),
         tile in 1u32..6,
         threads in 1usize..5,
+        test in prop::sample::select(vec!["greater", "less", "greater-equal", "less-equal"]),
     ) {
-        let json = scene_json(&polygons);
+        // Every depth test: the unobserved loop's branch-free comparison against `DepthTest::passes`.
+        let json = scene_json_with_test(&polygons, test);
         let Ok(scene) = Scene::from_json(&json, Path::new("prop.json")) else { return Ok(()) };
         let mut quiet = Simulation::new(&scene);
         quiet.finish(&mut Unobserved);
