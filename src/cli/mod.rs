@@ -11,6 +11,7 @@ mod generate;
 mod grade;
 mod run;
 mod step;
+mod tui;
 mod variants;
 
 use std::io::{self, IsTerminal, Write};

@@ -46,27 +46,27 @@ enum QuizMode {
 }
 
 /// One polygon's recorded scanlines, with the buffers before it.
-struct PolygonTrace {
-    fate: Fate,
+pub(super) struct PolygonTrace {
+    pub(super) fate: Fate,
     before: Buffers,
-    scanlines: Vec<ScanlineRecord>,
+    pub(super) scanlines: Vec<ScanlineRecord>,
 }
 
 /// Records polygons as the user reaches them.
-struct Tracer<'s> {
-    scene: &'s Scene,
+pub(super) struct Tracer<'s> {
+    pub(super) scene: &'s Scene,
     simulation: Simulation<'s>,
     traces: Vec<PolygonTrace>,
     arith: zsim::arith::Arith,
 }
 
 impl<'s> Tracer<'s> {
-    fn new(scene: &'s Scene, arith: zsim::arith::Arith) -> Tracer<'s> {
+    pub(super) fn new(scene: &'s Scene, arith: zsim::arith::Arith) -> Tracer<'s> {
         Tracer { scene, simulation: Simulation::new(scene), traces: Vec::new(), arith }
     }
 
     /// The trace of polygon `index`, drawing the polygons up to it if needed.
-    fn trace(&mut self, index: usize) -> &PolygonTrace {
+    pub(super) fn trace(&mut self, index: usize) -> &PolygonTrace {
         while self.traces.len() <= index {
             let before = self.simulation.buffers().clone();
             let mut recorder = Recorder::default();
@@ -78,7 +78,7 @@ impl<'s> Tracer<'s> {
     }
 
     /// The positions (polygon, scanline) that have covered pixels, after `from` (exclusive) or from the start.
-    fn next_stop(&mut self, from: Option<(usize, usize)>) -> (Option<(usize, usize)>, Vec<String>) {
+    pub(super) fn next_stop(&mut self, from: Option<(usize, usize)>) -> (Option<(usize, usize)>, Vec<String>) {
         let mut skipped = Vec::new();
         let (mut polygon, mut scanline) = match from {
             Some((p, s)) => (p, s + 1),
@@ -111,7 +111,7 @@ impl<'s> Tracer<'s> {
         (None, skipped)
     }
 
-    fn previous_stop(&mut self, from: (usize, usize)) -> Option<(usize, usize)> {
+    pub(super) fn previous_stop(&mut self, from: (usize, usize)) -> Option<(usize, usize)> {
         let mut stops = Vec::new();
         for polygon in 0..=from.0 {
             let trace = self.trace(polygon);
@@ -126,10 +126,17 @@ impl<'s> Tracer<'s> {
 
     /// The buffers after scanline `k` of polygon `p`.
     fn buffers_after(&mut self, p: usize, k: usize) -> Buffers {
+        self.buffers_through(p, k, usize::MAX)
+    }
+
+    /// The buffers after the scanlines before `k` of polygon `p` and the first
+    /// `pixels` covered pixels of scanline `k`.
+    pub(super) fn buffers_through(&mut self, p: usize, k: usize, pixels: usize) -> Buffers {
         let trace = self.trace(p);
         let mut buffers = trace.before.clone();
-        for record in &trace.scanlines[..=k] {
-            for pixel in &record.pixels {
+        for (j, record) in trace.scanlines[..=k].iter().enumerate() {
+            let count = if j == k { pixels.min(record.pixels.len()) } else { record.pixels.len() };
+            for pixel in &record.pixels[..count] {
                 buffers.store(pixel.x, pixel.y, pixel.frame_after, pixel.stored_after);
             }
         }
@@ -166,6 +173,12 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             return Ok(Finish::Ok);
         }
         start = Some((polygon, k));
+    }
+    // On a terminal, the full-screen app; piped or redirected, the line mode scripts rely on.
+    if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
+        let mut app = super::tui::App::new(&mut tracer, start, args.quiz.is_some());
+        super::tui::run(&mut app)?;
+        return Ok(Finish::Ok);
     }
     interactive(&scene, &args.scene.display().to_string(), &mut tracer, (args.quiz, start), color, out)
 }

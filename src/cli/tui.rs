@@ -1,0 +1,591 @@
+//! `zsim step` on a terminal: a full-screen app redrawn in place. The raster
+//! on the left (framebuffer or z-buffer) with the scanline marked, the
+//! current span highlighted and this polygon's earlier pixels set apart; on
+//! the right the polygon, the scanline, its crossings and spans, and the
+//! current pixel's row of the table. Keys act without Enter. Everything shown
+//! comes from the same recorded trace as the line mode ([`super::step`]).
+
+use ratatui::Frame;
+use ratatui::crossterm::event::{self, Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
+use zsim::buffer::Buffers;
+use zsim::exact::{Q, exact_and_decimal, fraction};
+use zsim::explain::{pixel_reason, polygon_name, scanline_text};
+use zsim::report;
+use zsim::trace::{Outcome, ScanlineRecord};
+
+use super::step::Tracer;
+
+/// Which buffer the raster shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum View {
+    /// The framebuffer.
+    Frame,
+    /// The z-buffer.
+    Depth,
+}
+
+/// The quiz inside the app: the answer being typed, and the score.
+#[derive(Debug, Default)]
+struct Quiz {
+    typed: String,
+    /// The verdict on the last answer, shown until the next key.
+    verdict: Option<String>,
+    right: usize,
+    asked: usize,
+}
+
+/// The stepper's state. Keys change it ([`App::key`]); [`App::draw`] shows it.
+pub struct App<'t, 's> {
+    tracer: &'t mut Tracer<'s>,
+    /// The current stop: polygon and recorded scanline; `None` at the end.
+    at: Option<(usize, usize)>,
+    /// In pixel steps, how many of the scanline's pixels are done (shown);
+    /// in scanline steps, `None` (all of them).
+    pixel: Option<usize>,
+    view: View,
+    help: bool,
+    /// The `g` prompt's text while it is open.
+    go: Option<String>,
+    message: String,
+    /// Rows and columns the raster is scrolled by, from where it centres itself.
+    scroll: (i32, i32),
+    /// Lines the right panel is scrolled by.
+    table_scroll: u16,
+    quiz: Option<Quiz>,
+    /// Set by `q`, Esc or Ctrl-C.
+    pub quit: bool,
+}
+
+impl<'t, 's> App<'t, 's> {
+    /// The app at `start`, or at the first scanline that covers a pixel.
+    pub fn new(tracer: &'t mut Tracer<'s>, start: Option<(usize, usize)>, quiz: bool) -> App<'t, 's> {
+        let at = start.or_else(|| tracer.next_stop(None).0);
+        App {
+            tracer,
+            at,
+            pixel: quiz.then_some(0),
+            view: View::Frame,
+            help: false,
+            go: None,
+            message: String::new(),
+            scroll: (0, 0),
+            table_scroll: 0,
+            quiz: quiz.then(Quiz::default),
+            quit: false,
+        }
+    }
+
+    fn record(&mut self) -> Option<ScanlineRecord> {
+        let (p, k) = self.at?;
+        Some(self.tracer.trace(p).scanlines[k].clone())
+    }
+
+    /// Handles one key press.
+    pub fn key(&mut self, key: KeyEvent) {
+        self.message.clear();
+        if key.modifiers.contains(KeyModifiers::CONTROL) && key.code == KeyCode::Char('c') {
+            self.quit = true;
+            return;
+        }
+        if let Some(text) = &mut self.go {
+            match key.code {
+                KeyCode::Char(c) if c.is_ascii_digit() => text.push(c),
+                KeyCode::Backspace => {
+                    text.pop();
+                }
+                KeyCode::Enter => {
+                    let row = text.parse::<u32>().ok();
+                    self.go = None;
+                    if let Some(row) = row {
+                        self.go_to(row);
+                    }
+                }
+                KeyCode::Esc => self.go = None,
+                _ => {}
+            }
+            return;
+        }
+        if self.quiz.is_some() && self.asking() && self.quiz_key(key) {
+            return;
+        }
+        if self.help && !matches!(key.code, KeyCode::Char('q') | KeyCode::Esc) {
+            self.help = false;
+            return;
+        }
+        match key.code {
+            KeyCode::Char('q') | KeyCode::Esc => self.quit = true,
+            KeyCode::Char('n' | ' ') | KeyCode::Enter | KeyCode::Right | KeyCode::Down => self.next(),
+            KeyCode::Char('b') | KeyCode::Left | KeyCode::Up => self.back(),
+            KeyCode::Char('p') => self.next_polygon(),
+            KeyCode::Char('P') => self.previous_polygon(),
+            KeyCode::Char('g') => self.go = Some(String::new()),
+            KeyCode::Char('f') => self.view = View::Frame,
+            KeyCode::Char('z') => self.view = View::Depth,
+            KeyCode::Char('m') if self.quiz.is_none() => {
+                self.pixel = if self.pixel.is_some() { None } else { Some(1) };
+            }
+            KeyCode::Char('?') => self.help = true,
+            KeyCode::PageUp => self.scroll.0 -= 4,
+            KeyCode::PageDown => self.scroll.0 += 4,
+            KeyCode::Char('<') => self.scroll.1 -= 4,
+            KeyCode::Char('>') => self.scroll.1 += 4,
+            KeyCode::Char('[') => self.table_scroll = self.table_scroll.saturating_sub(4),
+            KeyCode::Char(']') => self.table_scroll += 4,
+            _ => self.message = "that key does nothing here: ? shows the keys".into(),
+        }
+    }
+
+    /// Whether the quiz waits for the value of the next pixel.
+    fn asking(&mut self) -> bool {
+        let Some(record) = self.record() else { return false };
+        let done = self.pixel.unwrap_or(0);
+        done < record.pixels.len() && self.quiz.as_ref().is_some_and(|q| q.verdict.is_none())
+    }
+
+    /// A key while the quiz asks: digits, `-`, Backspace and Enter answer;
+    /// others navigate as usual (`false`).
+    fn quiz_key(&mut self, key: KeyEvent) -> bool {
+        let Some(record) = self.record() else { return false };
+        let scene = self.tracer.scene;
+        let Some(quiz) = &mut self.quiz else { return false };
+        match key.code {
+            KeyCode::Char(c) if c.is_ascii_digit() || c == '-' || c == '/' => quiz.typed.push(c),
+            KeyCode::Backspace => {
+                quiz.typed.pop();
+            }
+            KeyCode::Enter if !quiz.typed.is_empty() => {
+                let done = self.pixel.unwrap_or(0);
+                let pixel = record.pixels[done];
+                let written = pixel.outcome == Outcome::Written;
+                let typed = std::mem::take(&mut quiz.typed);
+                let right = match typed.as_str() {
+                    "-" => !written,
+                    text => zsim::exact::parse_number(text).is_ok_and(|v| v == pixel.stored_after.value()),
+                };
+                quiz.asked += 1;
+                quiz.right += usize::from(right);
+                quiz.verdict = Some(format!(
+                    "({}, {}): you said {typed}: {}: {}",
+                    pixel.x,
+                    pixel.y,
+                    if right { "right" } else { "wrong" },
+                    pixel_reason(scene, &pixel)
+                ));
+                self.pixel = Some(done + 1);
+            }
+            _ => return false,
+        }
+        true
+    }
+
+    fn next(&mut self) {
+        if let Some(quiz) = &mut self.quiz {
+            quiz.verdict = None;
+        }
+        let Some(at) = self.at else { return };
+        if let Some(done) = self.pixel {
+            let count = self.tracer.trace(at.0).scanlines[at.1].pixels.len();
+            if done < count {
+                if self.quiz.is_none() {
+                    self.pixel = Some(done + 1);
+                }
+                return;
+            }
+        }
+        let (next, skipped) = self.tracer.next_stop(Some(at));
+        if !skipped.is_empty() {
+            self.message = format!("passed over: {}", skipped.join("; "));
+        }
+        match next {
+            Some(stop) => self.arrive(stop),
+            None => self.message = "end of the scene: no more scanlines (b back, q quit)".into(),
+        }
+    }
+
+    fn back(&mut self) {
+        let Some(at) = self.at else { return };
+        match self.pixel {
+            Some(done) if done > 1 && self.quiz.is_none() => self.pixel = Some(done - 1),
+            _ => match self.tracer.previous_stop(at) {
+                Some(stop) => self.arrive(stop),
+                None => self.message = "already at the first scanline".into(),
+            },
+        }
+    }
+
+    fn arrive(&mut self, stop: (usize, usize)) {
+        self.at = Some(stop);
+        self.scroll = (0, 0);
+        self.table_scroll = 0;
+        if self.pixel.is_some() {
+            self.pixel = Some(if self.quiz.is_some() { 0 } else { 1 });
+        }
+    }
+
+    fn next_polygon(&mut self) {
+        let Some((p, _)) = self.at else { return };
+        let last = self.tracer.trace(p).scanlines.len().saturating_sub(1);
+        match self.tracer.next_stop(Some((p, last))).0 {
+            Some(stop) => self.arrive(stop),
+            None => self.message = "no later polygon covers a pixel".into(),
+        }
+    }
+
+    fn previous_polygon(&mut self) {
+        let Some((p, _)) = self.at else { return };
+        let mut stop = self.tracer.previous_stop((p, 0));
+        // To the first covering scanline of that polygon.
+        while let Some(s) = stop {
+            match self.tracer.previous_stop(s) {
+                Some(earlier) if earlier.0 == s.0 => stop = Some(earlier),
+                _ => break,
+            }
+        }
+        match stop {
+            Some(s) => self.arrive(s),
+            None => self.message = "no earlier polygon covers a pixel".into(),
+        }
+    }
+
+    fn go_to(&mut self, row: u32) {
+        let scene = self.tracer.scene;
+        if row >= scene.height {
+            self.message = format!("row {row} is outside the raster (rows 0 … {})", scene.height - 1);
+            return;
+        }
+        let p = self.at.map_or(0, |(p, _)| p);
+        match self.tracer.trace(p).scanlines.iter().position(|r| r.row == row) {
+            Some(k) => self.arrive((p, k)),
+            None => {
+                self.message = format!("{} does not reach the scanline {}", polygon_name(scene, p), scanline_text(row))
+            }
+        }
+    }
+
+    /// Draws the whole screen.
+    pub fn draw(&mut self, frame: &mut Frame<'_>) {
+        let area = frame.area();
+        let [title, body, status] =
+            Layout::vertical([Constraint::Length(1), Constraint::Min(3), Constraint::Length(2)]).areas(area);
+        let scene = self.tracer.scene;
+        let record = self.record();
+        let heading = match (self.at, &record) {
+            (Some((p, _)), Some(r)) => format!(" {}, scanline {}", polygon_name(scene, p), scanline_text(r.row)),
+            _ => " end of the scene".to_string(),
+        };
+        let view = match self.view {
+            View::Frame => "framebuffer",
+            View::Depth => "z-buffer",
+        };
+        let score = self.quiz.as_ref().map_or(String::new(), |q| format!(" · quiz {}/{}", q.right, q.asked));
+        frame.render_widget(
+            Paragraph::new(format!("zsim step ·{heading} · {view}{score} · ? keys"))
+                .style(Style::new().add_modifier(Modifier::REVERSED)),
+            title,
+        );
+        let raster_width = (area.width * 11 / 20).max(20);
+        let [left, right] = Layout::horizontal([Constraint::Length(raster_width), Constraint::Min(20)]).areas(body);
+        self.draw_raster(frame, left, record.as_ref());
+        if self.help {
+            frame.render_widget(Paragraph::new(HELP.join("\n")).block(Block::bordered().title(" keys ")), right);
+        } else {
+            let lines = self.details(record.as_ref());
+            frame.render_widget(
+                Paragraph::new(lines)
+                    .wrap(Wrap { trim: false })
+                    .scroll((self.table_scroll, 0))
+                    .block(Block::new().borders(Borders::LEFT)),
+                right,
+            );
+        }
+        let status_text = if let Some(text) = &self.go {
+            format!("go to scanline of row: {text}▏ (Enter to go, Esc to cancel)")
+        } else if let Some(verdict) = self.quiz.as_ref().and_then(|q| q.verdict.clone()) {
+            format!("{verdict}   (n: next)")
+        } else if self.quiz.is_some() && self.asking() {
+            let record = record.as_ref().expect("asking implies a scanline");
+            let pixel = record.pixels[self.pixel.unwrap_or(0)];
+            let typed = self.quiz.as_ref().map_or("", |q| q.typed.as_str());
+            format!(
+                "quiz: the z-buffer after ({}, {}), stored {}? (a value, or - for not written; Enter) {typed}▏",
+                pixel.x, pixel.y, pixel.stored_before
+            )
+        } else if !self.message.is_empty() {
+            self.message.clone()
+        } else {
+            "n/→ next · b/← back · p/P polygon · g go · f/z buffer · m pixel steps · q quit".to_string()
+        };
+        frame.render_widget(Paragraph::new(status_text).wrap(Wrap { trim: true }), status);
+    }
+
+    /// The raster's rows that fit, top row first, centred on the scanline.
+    fn draw_raster(&mut self, frame: &mut Frame<'_>, area: Rect, record: Option<&ScanlineRecord>) {
+        let scene = self.tracer.scene;
+        let Some((p, k)) = self.at else {
+            frame.render_widget(Paragraph::new("no scanline"), area);
+            return;
+        };
+        let done = self.pixel.unwrap_or(usize::MAX);
+        let buffers: Buffers = self.tracer.buffers_through(p, k, done);
+        let values: Vec<Vec<String>> = match self.view {
+            View::Frame => buffers.frame_rows().iter().map(|r| r.iter().map(u32::to_string).collect()).collect(),
+            View::Depth => {
+                buffers.depth_rows().iter().map(|r| r.iter().map(report::MatrixCell::text).collect()).collect()
+            }
+        };
+        let cell = values.iter().flatten().map(String::len).max().unwrap_or(1) + 1;
+        let (width, height) = (scene.width as i32, scene.height as i32);
+        let rows_shown = (area.height as i32 - 1).max(1);
+        let columns_shown = ((area.width as i32 - 5) / cell as i32).max(1);
+        let row = record.map_or(0, |r| r.row as i32);
+        let (span_first, span_last) = record
+            .and_then(|r| r.spans.iter().filter_map(|s| s.columns).reduce(|a, b| (a.0.min(b.0), a.1.max(b.1))))
+            .map_or((0, 0), |(a, b)| (a as i32, b as i32));
+        // Top row shown, and first column shown: centred, then scrolled, then kept on the raster.
+        let top = (row + rows_shown / 2 - self.scroll.0).clamp((rows_shown - 1).min(height - 1), height - 1);
+        let first =
+            ((span_first + span_last) / 2 - columns_shown / 2 + self.scroll.1).clamp(0, (width - columns_shown).max(0));
+        let trace_pixels: Vec<(u32, u32)> = self.tracer.trace(p).scanlines[..k]
+            .iter()
+            .flat_map(|r| r.pixels.iter().filter(|e| e.outcome == Outcome::Written).map(|e| (e.x, e.y)))
+            .collect();
+        let current: Vec<u32> = record.map_or(Vec::new(), |r| r.pixels.iter().map(|e| e.x).collect());
+        let focus = record.and_then(|r| done.checked_sub(1).and_then(|i| r.pixels.get(i))).map(|e| e.x);
+        let mut lines = Vec::new();
+        for y in (0..=top).rev().take(rows_shown as usize) {
+            let marker = if y == row { "▶" } else { " " };
+            let mut spans = vec![Span::raw(format!("{marker}{y:>3}│"))];
+            for x in first..(first + columns_shown).min(width) {
+                let text = format!("{:>cell$}", values[(height - 1 - y) as usize][x as usize]);
+                let (xu, yu) = (x as u32, y as u32);
+                let mut style = Style::new();
+                if trace_pixels.contains(&(xu, yu)) {
+                    style = style.fg(Color::Cyan);
+                }
+                if y == row && current.contains(&xu) {
+                    style = style.bg(Color::Yellow).fg(Color::Black);
+                }
+                if y == row && focus == Some(xu) {
+                    style = style.add_modifier(Modifier::REVERSED | Modifier::BOLD);
+                }
+                spans.push(Span::styled(text, style));
+            }
+            lines.push(Line::from(spans));
+        }
+        let last_shown = (first + columns_shown).min(width) - 1;
+        lines.push(Line::from(format!("    x {first} … {last_shown} of 0 … {}", width - 1)));
+        frame.render_widget(Paragraph::new(lines), area);
+    }
+
+    /// The right panel: the polygon, the scanline, crossings, spans, and the pixel's row.
+    fn details(&mut self, record: Option<&ScanlineRecord>) -> Vec<Line<'static>> {
+        let scene = self.tracer.scene;
+        let (Some((p, _)), Some(record)) = (self.at, record) else {
+            return vec![Line::from("end of the scene")];
+        };
+        let geometry = &scene.polygons[p].geometry;
+        let [a, _, c] = geometry.normal;
+        let mut lines = vec![
+            Line::styled(report::polygon_heading(scene, p), Style::new().add_modifier(Modifier::BOLD)),
+            Line::from(format!("z steps by −a/c = {} along a scanline", fraction(Q::new(-a, c)))),
+            Line::from(format!("scanline {} (row {})", scanline_text(record.row), record.row)),
+        ];
+        let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(*x)).collect();
+        lines.push(Line::from(format!("crossings: {}", crossings.join(", "))));
+        for (i, span) in record.spans.iter().enumerate() {
+            let columns = span.columns.map_or("no centre".to_string(), |(f, l)| format!("columns {f} … {l}"));
+            lines.push(Line::from(format!(
+                "span {}: {} … {}; {columns}",
+                i + 1,
+                exact_and_decimal(span.left),
+                exact_and_decimal(span.right)
+            )));
+        }
+        lines.push(Line::from(""));
+        let Some(done) = self.pixel else {
+            // Scanline steps: the table, one line a pixel: x, z, the test, what is stored.
+            let op = scene.depth_test.symbol();
+            let zs: Vec<String> = record.pixels.iter().map(|e| exact_and_decimal(e.depth.value())).collect();
+            let width = zs.iter().map(|z| z.chars().count()).max().unwrap_or(1);
+            lines.push(Line::styled(
+                format!("  x {:<width$} test → stored (frame)", "z"),
+                Style::new().add_modifier(Modifier::BOLD),
+            ));
+            for (pixel, z) in record.pixels.iter().zip(&zs) {
+                let (test, verdict, style) = match pixel.outcome {
+                    Outcome::Written => ("", format!("{} ({})", pixel.stored_after, pixel.frame_after), Color::Green),
+                    _ => ("not ", "hidden".to_string(), Color::Red),
+                };
+                let line = format!("{:>3} {z:<width$} {test}{op}{} → {verdict}", pixel.x, pixel.stored_before);
+                lines.push(Line::styled(line, Style::new().fg(style)));
+            }
+            lines.push(Line::from("m: pixel by pixel, with the reasons"));
+            return lines;
+        };
+        // Pixel steps: the pixel just done (none yet at the start).
+        let shown: Vec<_> = done.checked_sub(1).and_then(|i| record.pixels.get(i)).into_iter().collect();
+        let first_z = record.pixels.first().map(|e| e.depth.value());
+        for pixel in shown {
+            let z = pixel.depth.value();
+            let step = match first_z {
+                Some(start) if pixel.x > record.pixels[0].x => {
+                    format!(", {} steps of −a/c from {}", pixel.x - record.pixels[0].x, fraction(start))
+                }
+                _ => String::new(),
+            };
+            lines.push(Line::from(format!(
+                "({}, {}): centre x = {}, z = {}{step}",
+                pixel.x,
+                pixel.y,
+                exact_and_decimal(Q::new(2 * i128::from(pixel.x) + 1, 2)),
+                exact_and_decimal(z)
+            )));
+            let style = if pixel.outcome == Outcome::Written {
+                Style::new().fg(Color::Green)
+            } else {
+                Style::new().fg(Color::Red)
+            };
+            lines.push(Line::styled(format!("  {}", pixel_reason(scene, pixel)), style));
+        }
+        lines
+    }
+}
+
+const HELP: [&str; 13] = [
+    "n Space Enter → ↓  next scanline (or pixel)",
+    "b ← ↑              back",
+    "p / P              next / previous polygon",
+    "g                  go to the scanline of a row",
+    "f / z              show the framebuffer / z-buffer",
+    "m                  step by pixel / by scanline",
+    "PgUp PgDn < >      scroll the raster",
+    "[ ]                scroll the table",
+    "?                  these keys (any key closes)",
+    "q Esc Ctrl-C       quit",
+    "",
+    "yellow: the span's covered pixels",
+    "cyan: this polygon's earlier writes",
+];
+
+/// Runs the app on the terminal until the user quits; the terminal is given
+/// back as it was (raw mode off, alternate screen left) on quitting and on a
+/// panic (ratatui's hook).
+pub fn run(app: &mut App<'_, '_>) -> std::io::Result<()> {
+    let mut terminal = ratatui::init();
+    let result = (|| {
+        while !app.quit {
+            terminal.draw(|frame| app.draw(frame))?;
+            if let Event::Key(key) = event::read()?
+                && key.kind == KeyEventKind::Press
+            {
+                app.key(key);
+            }
+        }
+        Ok(())
+    })();
+    ratatui::restore();
+    result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ratatui::Terminal;
+    use ratatui::backend::TestBackend;
+    use zsim::scene::Scene;
+
+    fn book() -> Scene {
+        Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
+    }
+
+    /// The screen as text, one line a row.
+    fn screen(app: &mut App<'_, '_>, width: u16, height: u16) -> String {
+        let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
+        terminal.draw(|frame| app.draw(frame)).unwrap();
+        let buffer = terminal.backend().buffer();
+        (0..height)
+            .map(|y| (0..width).map(|x| buffer[(x, y)].symbol()).collect::<String>().trim_end().to_string() + "\n")
+            .collect()
+    }
+
+    fn press(app: &mut App<'_, '_>, keys: &str) {
+        for c in keys.chars() {
+            let code = match c {
+                '\n' => KeyCode::Enter,
+                '→' => KeyCode::Right,
+                '←' => KeyCode::Left,
+                c => KeyCode::Char(c),
+            };
+            app.key(KeyEvent::new(code, KeyModifiers::NONE));
+        }
+    }
+
+    fn snapshot(name: &str, text: String) {
+        insta::with_settings!({snapshot_path => "../../snapshots", prepend_module_to_snapshot => false, omit_expression => true}, {
+            insta::assert_snapshot!(name, text);
+        });
+    }
+
+    #[test]
+    fn the_first_screen_fits_80_by_24() {
+        let scene = book();
+        let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+        let mut app = App::new(&mut tracer, None, false);
+        let text = screen(&mut app, 80, 24);
+        assert!(text.lines().all(|l| l.chars().count() <= 80));
+        assert!(
+            text.starts_with("zsim step · polygon 1 \"rectangle\", scanline y = 5.5 · framebuffer · ? keys"),
+            "{text}"
+        );
+        snapshot("tui_rogers_first_80x24", text);
+    }
+
+    #[test]
+    fn keys_move_without_enter_and_the_book_pixel_shows() {
+        let scene = book();
+        let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+        let mut app = App::new(&mut tracer, None, false);
+        // p: the triangle's first scanline (row 10); g15⏎: its scanline 15; z: the z-buffer.
+        press(&mut app, "pg15\nz");
+        let text = screen(&mut app, 100, 30);
+        assert!(text.contains("polygon 2 \"triangle\", scanline y = 15.5 · z-buffer"), "{text}");
+        assert!(text.contains(" 20 43/4 ≈ 10.75 >10 → 11 (2)"), "{text}");
+        assert!(text.contains(" 21 10           not >10 → hidden"), "{text}");
+        snapshot("tui_rogers_triangle_15_depth", text);
+        // → then ←: the next scanline and back.
+        press(&mut app, "→");
+        assert!(screen(&mut app, 100, 30).contains("scanline y = 16.5"));
+        press(&mut app, "←");
+        assert!(screen(&mut app, 100, 30).contains("scanline y = 15.5"));
+        // m: pixel steps; the first pixel's reason in full.
+        press(&mut app, "m");
+        let text = screen(&mut app, 100, 30);
+        assert!(text.contains("(15, 15): centre x = 31/2 ≈ 15.50, z ="), "{text}");
+        assert!(text.contains("z = 29/2 ≈ 14.50 > 10 stored, so 15 is"), "{text}");
+        press(&mut app, "m");
+        press(&mut app, "g99\n");
+        assert!(screen(&mut app, 100, 30).contains("row 99 is outside the raster (rows 0 … 31)"));
+        press(&mut app, "q");
+        assert!(app.quit);
+    }
+
+    #[test]
+    fn the_quiz_asks_before_each_pixel_is_shown() {
+        let scene = book();
+        let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+        // The triangle's scanline 15 (its recorded scanline 5: rows 10 … 15).
+        let mut app = App::new(&mut tracer, Some((1, 5)), true);
+        let text = screen(&mut app, 100, 30);
+        assert!(text.contains("quiz: the z-buffer after (15, 15), stored 10?"), "{text}");
+        press(&mut app, "15\n");
+        let text = screen(&mut app, 100, 30);
+        assert!(text.contains("(15, 15): you said 15: right: z = 29/2 ≈ 14.50 > 10 stored"), "{text}");
+        assert!(text.contains("quiz 1/1"), "{text}");
+        press(&mut app, "n9\n");
+        assert!(screen(&mut app, 100, 30).contains("(16, 15): you said 9: wrong"));
+    }
+}
