@@ -9,6 +9,7 @@ mod explain;
 mod figure;
 mod generate;
 mod grade;
+mod page;
 mod run;
 mod step;
 mod tui;

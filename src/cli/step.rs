@@ -31,6 +31,12 @@ pub struct StepArgs {
     /// A quiz: before each pixel's result, ask what the z-buffer will hold; `--quiz coverage` first asks which centres the scanline covers. With --polygon and --scanline it starts there.
     #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "depth", value_name = "depth|coverage")]
     quiz: Option<QuizMode>,
+    /// Write the stepper as one self-contained HTML page (-o FILE.html) instead of running it.
+    #[arg(long, requires = "output", conflicts_with_all = ["polygon", "quiz"])]
+    html: bool,
+    /// The page to write, with --html.
+    #[arg(short, long, value_name = "FILE.html", requires = "html")]
+    output: Option<PathBuf>,
     /// Also show what an inexact arithmetic computes on each scanline: f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
     #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
     arith: zsim::arith::Arith,
@@ -125,7 +131,7 @@ impl<'s> Tracer<'s> {
     }
 
     /// The buffers after scanline `k` of polygon `p`.
-    fn buffers_after(&mut self, p: usize, k: usize) -> Buffers {
+    pub(super) fn buffers_after(&mut self, p: usize, k: usize) -> Buffers {
         self.buffers_through(p, k, usize::MAX)
     }
 
@@ -149,6 +155,14 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     zsim::arith::check_supported(&scene, args.arith)?;
     let color = super::use_color();
     let mut tracer = Tracer::new(&scene, args.arith);
+    if let (true, Some(output)) = (args.html, &args.output) {
+        let name =
+            args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
+        let page = super::page::page(&mut tracer, &name);
+        std::fs::write(output, page).map_err(|source| Error::Write { path: output.clone(), source })?;
+        emit(out, &format!("wrote {} (open it in a browser; it needs no network)\n", output.display()))?;
+        return Ok(Finish::Ok);
+    }
     let mut start = None;
     if let (Some(spec), Some(row)) = (&args.polygon, args.scanline) {
         let polygon = scene.find_polygon(spec)?;

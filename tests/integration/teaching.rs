@@ -507,3 +507,43 @@ fn check_reads_handed_in_answers_as_students_write_them() {
     let wide = run.stdout.lines().map(|l| l.chars().count()).max().unwrap();
     assert!(run.stdout.lines().filter(|l| l.starts_with('|')).all(|l| l.chars().count() <= 80), "widest line {wide}");
 }
+
+/// The stepper as a page: one self-contained file that a real browser loads
+/// without errors, whose Next moves to the next scanline, and that shows the
+/// book's depth 43/4 at pixel (20, 15) on the triangle's scanline 15.
+#[test]
+fn step_writes_a_self_contained_page_that_a_browser_steps_through() {
+    let (dir, _) = scene_file("unused7.json", "{}");
+    let page = dir.join("step.html");
+    let run = zsim(&["step", "examples/rogers.json", "--html", "-o", page.to_str().unwrap()]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    let html = std::fs::read_to_string(&page).unwrap();
+    for outside in ["http://", "https://", "<script src", "<link", "@import"] {
+        assert!(!html.contains(outside), "the page needs nothing from outside: found {outside}");
+    }
+    let Some(browser) = ["chromium", "chromium-browser", "google-chrome"]
+        .into_iter()
+        .find(|b| Command::new(b).arg("--version").output().is_ok_and(|o| o.status.success()))
+    else {
+        eprintln!(
+            "NOTICE: no Chromium on this machine, so the page was NOT opened in a browser (apt-get install chromium)"
+        );
+        return;
+    };
+    let output = Command::new(browser)
+        .args(["--headless", "--no-sandbox", "--disable-gpu", "--virtual-time-budget=3000", "--dump-dom"])
+        .arg(format!("file://{}#selftest", page.display()))
+        .output()
+        .expect("the browser runs");
+    let dom = String::from_utf8_lossy(&output.stdout);
+    let report = dom.split_once("<pre id=\"selftest\">").expect("the page ran its self-test").1;
+    let report = report.split_once("</pre>").unwrap().0;
+    assert!(report.contains("start: scanline y = 5.5 (row 5)\n"), "{report}");
+    assert!(report.contains("after Next: scanline y = 6.5 (row 6)\n"), "a click on Next moves on: {report}");
+    assert!(report.contains("at: scanline y = 15.5 (row 15)\n"), "{report}");
+    assert!(
+        report.contains("2043/4 ≈ 10.751011z = 43/4 ≈ 10.75 &gt; 10 stored, so 11 is stored"),
+        "pixel (20, 15): {report}"
+    );
+    assert!(report.ends_with("errors: none"), "{report}");
+}

@@ -1,0 +1,198 @@
+//! `zsim step --html`: the stepper as one self-contained page (no network,
+//! no external script or style) for a course site or a lecture. Every number
+//! on it comes from the recorded trace, embedded as data; the page's script
+//! only shows it.
+
+use zsim::exact::exact_and_decimal;
+use zsim::explain::{pixel_reason, scanline_text};
+use zsim::report::{self, MatrixCell};
+use zsim::trace::Outcome;
+
+use super::step::Tracer;
+
+/// The page for the whole scene: every scanline that covers a pixel, in order.
+pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {
+    let scene = tracer.scene;
+    let mut stops = Vec::new();
+    let mut at = tracer.next_stop(None).0;
+    while let Some((p, k)) = at {
+        let record = tracer.trace(p).scanlines[k].clone();
+        let buffers = tracer.buffers_after(p, k);
+        let pixels: Vec<serde_json::Value> = record
+            .pixels
+            .iter()
+            .map(|e| {
+                serde_json::json!({
+                    "x": e.x, "z": exact_and_decimal(e.depth.value()), "stored": e.stored_before.to_string(),
+                    "written": e.outcome == Outcome::Written, "after": e.stored_after.to_string(),
+                    "afterValue": zsim::report::exact_json(e.stored_after.value()), "frame": e.frame_after,
+                    "reason": pixel_reason(scene, e),
+                })
+            })
+            .collect();
+        let spans: Vec<String> = record
+            .spans
+            .iter()
+            .map(|s| {
+                let columns = s.columns.map_or("no centre".to_string(), |(f, l)| format!("columns {f} … {l}"));
+                format!("{} … {}; {columns}", exact_and_decimal(s.left), exact_and_decimal(s.right))
+            })
+            .collect();
+        stops.push(serde_json::json!({
+            "polygon": p, "heading": report::polygon_heading(scene, p), "row": record.row,
+            "scanline": scanline_text(record.row),
+            "crossings": record.crossings.iter().map(|x| exact_and_decimal(*x)).collect::<Vec<_>>(),
+            "spans": spans, "pixels": pixels,
+            "frame": buffers.frame_rows(),
+            "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        }));
+        at = tracer.next_stop(Some((p, k))).0;
+    }
+    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "op": scene.depth_test.symbol(), "stops": stops});
+    // Inside a <script> element, "</" would end it early.
+    let data = serde_json::to_string(&data).expect("serializing plain data cannot fail").replace("</", "<\\/");
+    TEMPLATE.replace("{{TITLE}}", &escape(title)).replace("{{DATA}}", &data)
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+const TEMPLATE: &str = r##"<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>zsim step: {{TITLE}}</title>
+<style>
+body { font-family: sans-serif; margin: 1em; color: #222; }
+#main { display: flex; gap: 1.5em; align-items: flex-start; }
+table.raster { border-collapse: collapse; font-family: monospace; font-size: 12px; }
+table.raster td { border: 1px solid #ddd; padding: 1px 3px; text-align: right; min-width: 1.4em; }
+table.raster th { font-weight: normal; color: #888; padding: 0 4px; }
+tr.current td { border-top: 2px solid #3a6ea5; border-bottom: 2px solid #3a6ea5; }
+td.span { background: #f0e442; }
+td.earlier { color: #0072b2; font-weight: bold; }
+#panel { max-width: 40em; }
+#pixels { border-collapse: collapse; font-size: 13px; }
+#pixels td, #pixels th { border-bottom: 1px solid #eee; padding: 2px 6px; text-align: left; }
+.written { color: #1a7f37; } .hidden { color: #b42318; }
+button { margin: 0 .3em .5em 0; }
+#status { color: #555; }
+</style></head>
+<body>
+<h1>zsim step: {{TITLE}}</h1>
+<div>
+<button id="back">◀ Back (b)</button><button id="next">Next ▶ (n)</button>
+<button id="prevPolygon">◀◀ Polygon (P)</button><button id="nextPolygon">Polygon ▶▶ (p)</button>
+<button id="frame">Framebuffer (f)</button><button id="depth">Z-buffer (z)</button>
+<label><input type="checkbox" id="quiz"> quiz</label>
+<span id="status"></span>
+</div>
+<div id="main"><div id="raster"></div><div id="panel"></div></div>
+<pre id="selftest" hidden></pre>
+<script>const pageErrors = []; window.addEventListener("error", e => pageErrors.push(e.message));</script>
+<script type="application/json" id="data">{{DATA}}</script>
+<script>
+"use strict";
+const data = JSON.parse(document.getElementById("data").textContent);
+let at = 0, view = "frame";
+const el = (tag, text, cls) => { const e = document.createElement(tag); if (text !== undefined) e.textContent = text; if (cls) e.className = cls; return e; };
+function render() {
+  const stop = data.stops[at];
+  if (!stop) { document.getElementById("panel").textContent = "This scene covers no pixel."; return; }
+  const covered = new Set(stop.pixels.map(p => p.x));
+  const earlier = new Set();
+  for (let i = 0; i < at; i++) {
+    const s = data.stops[i];
+    if (s.polygon === stop.polygon) s.pixels.filter(p => p.written).forEach(p => earlier.add(s.row + "," + p.x));
+  }
+  const table = el("table", undefined, "raster");
+  const rows = view === "frame" ? stop.frame : stop.depth;
+  rows.forEach((row, i) => {
+    const y = data.height - 1 - i;
+    const tr = el("tr", undefined, y === stop.row ? "current" : "");
+    tr.appendChild(el("th", (y === stop.row ? "▶ " : "") + y));
+    row.forEach((v, x) => {
+      const cls = y === stop.row && covered.has(x) ? "span" : earlier.has(y + "," + x) ? "earlier" : "";
+      tr.appendChild(el("td", String(v), cls));
+    });
+    table.appendChild(tr);
+  });
+  const raster = document.getElementById("raster");
+  raster.replaceChildren(el("div", view === "frame" ? "framebuffer after this scanline" : "z-buffer after this scanline"), table);
+  const panel = document.getElementById("panel");
+  panel.replaceChildren(el("h2", stop.heading), el("p", "scanline " + stop.scanline + " (row " + stop.row + ")"),
+    el("p", "crossings: " + stop.crossings.join(", ")));
+  stop.spans.forEach((s, i) => panel.appendChild(el("p", "span " + (i + 1) + ": " + s)));
+  const quiz = document.getElementById("quiz").checked;
+  const pixels = el("table"); pixels.id = "pixels";
+  const head = el("tr"); ["x", "z", "stored", quiz ? "your z-buffer after" : "z-buffer after", "why"].forEach(h => head.appendChild(el("th", h)));
+  pixels.appendChild(head);
+  stop.pixels.forEach(p => {
+    const tr = el("tr", undefined, p.written ? "written" : "hidden");
+    tr.appendChild(el("td", String(p.x))); tr.appendChild(el("td", p.z)); tr.appendChild(el("td", p.stored));
+    if (quiz) {
+      const td = el("td"); const input = el("input"); input.size = 4; input.dataset.x = p.x; td.appendChild(input); tr.appendChild(td);
+      tr.appendChild(el("td", "", "why"));
+    } else {
+      tr.appendChild(el("td", p.written ? p.after : "– (keeps " + p.after + ")"));
+      tr.appendChild(el("td", p.reason));
+    }
+    pixels.appendChild(tr);
+  });
+  panel.appendChild(pixels);
+  if (quiz) {
+    const check = el("button", "Check my answers"); check.id = "check";
+    check.onclick = () => {
+      let right = 0;
+      pixels.querySelectorAll("input").forEach((input, i) => {
+        const p = stop.pixels[i], typed = input.value.trim();
+        const ok = typed === "-" ? !p.written : typed !== "" && typed === String(p.afterValue);
+        right += ok ? 1 : 0;
+        input.parentElement.nextSibling.textContent = (ok ? "right: " : "wrong: ") + p.reason;
+      });
+      document.getElementById("status").textContent = "quiz: " + right + " of " + stop.pixels.length + " right on this scanline";
+    };
+    panel.appendChild(check);
+  }
+  document.getElementById("status").textContent = "scanline " + (at + 1) + " of " + data.stops.length;
+}
+function go(i) { at = Math.max(0, Math.min(data.stops.length - 1, i)); render(); }
+function polygon(direction) {
+  const p = data.stops[at].polygon;
+  let i = at;
+  if (direction > 0) { while (i < data.stops.length && data.stops[i].polygon === p) i++; }
+  else { while (i > 0 && data.stops[i - 1].polygon === p) i--; if (i > 0) { const q = data.stops[i - 1].polygon; i--; while (i > 0 && data.stops[i - 1].polygon === q) i--; } }
+  if (i < data.stops.length) go(i);
+}
+document.getElementById("next").onclick = () => go(at + 1);
+document.getElementById("back").onclick = () => go(at - 1);
+document.getElementById("nextPolygon").onclick = () => polygon(1);
+document.getElementById("prevPolygon").onclick = () => polygon(-1);
+document.getElementById("frame").onclick = () => { view = "frame"; render(); };
+document.getElementById("depth").onclick = () => { view = "depth"; render(); };
+document.getElementById("quiz").onchange = render;
+document.addEventListener("keydown", e => {
+  if (e.target.tagName === "INPUT" && e.target.type !== "checkbox") return;
+  const k = e.key;
+  if (k === "n" || k === " " || k === "ArrowRight" || k === "ArrowDown") go(at + 1);
+  else if (k === "b" || k === "ArrowLeft" || k === "ArrowUp") go(at - 1);
+  else if (k === "p") polygon(1); else if (k === "P") polygon(-1);
+  else if (k === "f") { view = "frame"; render(); } else if (k === "z") { view = "depth"; render(); }
+  else return;
+  e.preventDefault();
+});
+render();
+// #selftest: clicks through as a person would and writes what the page showed (for the tests).
+if (location.hash === "#selftest") {
+  const seen = [];
+  const heading = () => document.querySelector("#panel p").textContent;
+  seen.push("start: " + heading());
+  document.getElementById("next").click(); seen.push("after Next: " + heading());
+  document.getElementById("nextPolygon").click();
+  while (data.stops[at].row !== 15 && at < data.stops.length - 1) document.getElementById("next").click();
+  seen.push("at: " + heading());
+  seen.push("panel: " + document.getElementById("panel").textContent);
+  seen.push("errors: " + (pageErrors.length ? pageErrors.join("; ") : "none"));
+  const out = document.getElementById("selftest"); out.hidden = false; out.textContent = seen.join("\n");
+}
+</script>
+</body></html>
+"##;
