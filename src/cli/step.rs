@@ -397,10 +397,21 @@ enum Asked {
     Navigate(String),
 }
 
-/// A quiz answer for a pixel: a value or "not written".
-enum Answer {
-    NotWritten,
-    Value(Q),
+/// Judges a quiz answer for a pixel: whether it is right, and what the
+/// student meant; `None` when the text is neither `-` nor a number. Right is
+/// the value the z-buffer holds after the pixel; for a pixel not written,
+/// `-` or the value it keeps. The line mode and the full-screen app both ask this.
+pub(super) fn judge(pixel: &PixelEvent, typed: &str) -> Option<(bool, &'static str)> {
+    let written = pixel.outcome == Outcome::Written;
+    if typed == "-" {
+        return Some((!written, "not written"));
+    }
+    let value = zsim::exact::parse_number(typed).ok()?;
+    Some(match value == pixel.stored_after.value() {
+        true if written => (true, "the value written"),
+        true => (true, "not written: the value it keeps"),
+        false => (false, "a value"),
+    })
 }
 
 /// Reads lines until one is an answer (`-` or a number), `q`, or a navigation command.
@@ -525,23 +536,13 @@ fn ask(
                 Ok(text) => text,
                 Err(asked) => return Ok(asked),
             };
-            match text.as_str() {
-                "-" => break (text, Answer::NotWritten),
-                _ => match zsim::exact::parse_number(&text) {
-                    Ok(value) => break (text, Answer::Value(value)),
-                    Err(_) => emit(out, &format!("\"{text}\" is not an answer: {hint}\n"))?,
-                },
+            match judge(pixel, &text) {
+                Some(judged) => break (text, judged),
+                None => emit(out, &format!("\"{text}\" is not an answer: {hint}\n"))?,
             }
         };
+        let (right, meant) = answer.1;
         let written = pixel.outcome == Outcome::Written;
-        // Right: the value held after it; for a pixel not written, "-" or the value it keeps.
-        let (right, meant) = match &answer.1 {
-            Answer::NotWritten => (!written, "not written"),
-            Answer::Value(v) if *v == pixel.stored_after.value() => {
-                (true, if written { "the value written" } else { "not written: the value it keeps" })
-            }
-            Answer::Value(_) => (false, "a value"),
-        };
         let expected =
             if written { pixel.stored_after.to_string() } else { format!("- (it keeps {})", pixel.stored_after) };
         let reason = pixel_reason(scene, pixel);

@@ -160,12 +160,8 @@ impl<'t, 's> App<'t, 's> {
             KeyCode::Enter if !quiz.typed.is_empty() => {
                 let done = self.pixel.unwrap_or(0);
                 let pixel = record.pixels[done];
-                let written = pixel.outcome == Outcome::Written;
                 let typed = std::mem::take(&mut quiz.typed);
-                let right = match typed.as_str() {
-                    "-" => !written,
-                    text => zsim::exact::parse_number(text).is_ok_and(|v| v == pixel.stored_after.value()),
-                };
+                let right = super::step::judge(&pixel, &typed).is_some_and(|(right, _)| right);
                 quiz.asked += 1;
                 quiz.right += usize::from(right);
                 quiz.verdict = Some(format!(
@@ -349,7 +345,7 @@ impl<'t, 's> App<'t, 's> {
         let top = (row + rows_shown / 2 - self.scroll.0).clamp((rows_shown - 1).min(height - 1), height - 1);
         let first =
             ((span_first + span_last) / 2 - columns_shown / 2 + self.scroll.1).clamp(0, (width - columns_shown).max(0));
-        let trace_pixels: Vec<(u32, u32)> = self.tracer.trace(p).scanlines[..k]
+        let trace_pixels: std::collections::HashSet<(u32, u32)> = self.tracer.trace(p).scanlines[..k]
             .iter()
             .flat_map(|r| r.pixels.iter().filter(|e| e.outcome == Outcome::Written).map(|e| (e.x, e.y)))
             .collect();

@@ -104,3 +104,19 @@ pub fn table_rows(text: &str) -> Vec<Vec<String>> {
     }
     rows
 }
+
+/// The book's final framebuffer or z-buffer (`key`: `frame` or `depth`) as
+/// `zsim run --format json --final` gives it, written as an answer file with
+/// `separator` between the values.
+pub fn book_answer(key: &str, separator: &str) -> String {
+    let run = zsim(&["run", "examples/rogers.json", "--format", "json", "--final"]);
+    let json: serde_json::Value = serde_json::from_str(&run.stdout).expect("run's JSON");
+    json["steps"][0][key]
+        .as_array()
+        .expect("a matrix")
+        .iter()
+        .map(|row| {
+            row.as_array().expect("a row").iter().map(|v| v.to_string()).collect::<Vec<_>>().join(separator) + "\n"
+        })
+        .collect()
+}

@@ -446,27 +446,12 @@ fn step_says_it_shows_coverage_before_antialiasing() {
     );
 }
 
-/// The book's final answers from `zsim run --format json --final`, as answer text.
-fn final_answers() -> (String, String) {
-    let run = zsim(&["run", "examples/rogers.json", "--format", "json", "--final"]);
-    let json: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
-    let text = |key: &str, separator: &str| -> String {
-        json["steps"][0][key]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|row| row.as_array().unwrap().iter().map(|v| v.to_string()).collect::<Vec<_>>().join(separator) + "\n")
-            .collect()
-    };
-    (text("frame", ", "), text("depth", " "))
-}
-
 /// Found by a new user: a 7 in a 2-bit framebuffer, commas, a bad file next to a
 /// good one, an answer written bottom row first, and a table 200 columns wide.
 #[test]
 fn check_reads_handed_in_answers_as_students_write_them() {
     let (dir, _) = scene_file("unused6.json", "{}");
-    let (frame, depth) = final_answers();
+    let (frame, depth) = (crate::book_answer("frame", ", "), crate::book_answer("depth", " "));
     let (frame_path, depth_path) = (dir.join("commas.frame.txt"), dir.join("good.depth.txt"));
     std::fs::write(&frame_path, &frame).unwrap();
     std::fs::write(&depth_path, &depth).unwrap();
