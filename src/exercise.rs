@@ -5,6 +5,7 @@
 //! the generator keeps drawing candidates until the trace shows every case
 //! asked for.
 
+use std::collections::BTreeSet;
 use std::fmt;
 
 use crate::exact::{Q, fraction, short};
@@ -107,8 +108,8 @@ struct CaseFinder {
     /// Which polygon wrote each cell last, row-major from the bottom.
     owner: Vec<Option<usize>>,
     /// Pairs `(earlier, later)` where the later polygon won a cell from the earlier, and where it lost one.
-    won: Vec<(usize, usize)>,
-    lost: Vec<(usize, usize)>,
+    won: BTreeSet<(usize, usize)>,
+    lost: BTreeSet<(usize, usize)>,
     found: Vec<Found>,
 }
 
@@ -119,8 +120,8 @@ impl CaseFinder {
             depth_max: scene.depth_max(),
             quantized: scene.clear_depth.level().is_some(),
             owner: vec![None; scene.width as usize * scene.height as usize],
-            won: Vec::new(),
-            lost: Vec::new(),
+            won: BTreeSet::new(),
+            lost: BTreeSet::new(),
             found: Vec::new(),
         }
     }
@@ -193,10 +194,13 @@ impl Observer for CaseFinder {
         }
         let cell = y as usize * self.width as usize + x as usize;
         let owner = self.owner[cell];
+        // The pair (earlier, this) that this cell was won or lost against.
+        let mut pair = None;
         match event.outcome {
             Outcome::Written => {
                 if let Some(earlier) = owner.filter(|o| *o != index) {
-                    self.won.push((earlier, index));
+                    self.won.insert((earlier, index));
+                    pair = Some((earlier, index));
                 }
                 self.owner[cell] = Some(index);
             }
@@ -210,12 +214,14 @@ impl Observer for CaseFinder {
                     )
                 });
                 if let Some(earlier) = owner.filter(|o| *o != index) {
-                    self.lost.push((earlier, index));
+                    self.lost.insert((earlier, index));
+                    pair = Some((earlier, index));
                 }
             }
             Outcome::BeyondSection | Outcome::OutsideDepthRange => {}
         }
-        if let Some(&(a, b)) = self.won.iter().find(|pair| self.lost.contains(pair)) {
+        // Only the pair this event touched can have become both won and lost.
+        if let Some((a, b)) = pair.filter(|p| self.won.contains(p) && self.lost.contains(p)) {
             self.note(HardCase::Intersecting, || {
                 format!("polygons {} and {}: each is in front of the other somewhere", a + 1, b + 1)
             });
