@@ -821,8 +821,8 @@ mod tests {
         fn both_words_rasterize_alike(
             vertices in prop::collection::vec((-40i64..80, -40i64..80, 1i64..5), 3..7),
             plane in (-9i64..10, -9i64..10, -60i64..60, 1i64..8),
-            half_open in any::<bool>(),
-            centre in any::<bool>(),
+            row_rule in 0usize..3,
+            column_rule in 0usize..3,
             rect in (0u32..20, 0u32..20, 0u32..20, 0u32..20),
         ) {
             // A planar polygon: z = (a·x + b·y + c) / e, vertices over denominators 1 … 4,
@@ -839,8 +839,8 @@ mod tests {
             let Ok(geometry) = Geometry::new(&vertices) else { return Ok(()) };
             prop_assume!(geometry.c() != 0 && geometry.fits_i64());
             let rules = Rules {
-                rows: if half_open { RowRule::HalfOpen } else { RowRule::Closed },
-                columns: if centre { ColumnRule::CentreInside } else { ColumnRule::CellHolds },
+                rows: [RowRule::HalfOpen, RowRule::Closed, RowRule::TopLeft][row_rule],
+                columns: [ColumnRule::CentreInside, ColumnRule::CellHolds, ColumnRule::HalfOpen][column_rule],
                 ..Rules::default()
             };
             let rect = PixelRect {
@@ -849,5 +849,102 @@ mod tests {
             };
             prop_assert_eq!(run::<i64>(&geometry, rules, rect), run::<i128>(&geometry, rules, rect));
         }
+    }
+
+    /// The pixels a polygon covers under `rules`, as (x, y).
+    fn covered(vertices: &[[i64; 2]], rules: Rules, size: u32) -> Vec<(u32, u32)> {
+        let q = |v: i64| Q::new(v.into(), 2);
+        let points: Vec<[Q; 3]> = vertices.iter().map(|p| [q(p[0]), q(p[1]), Q::from_integer(5)]).collect();
+        let geometry = Geometry::new(&points).unwrap();
+        let drawn = run::<i128>(&geometry, rules, PixelRect { columns: (0, size - 1), rows: (0, size - 1) });
+        let mut cells: Vec<(u32, u32)> = drawn
+            .iter()
+            .filter_map(|line| {
+                let (x, rest) = line.strip_prefix('(')?.split_once(", ")?;
+                Some((x.parse().ok()?, rest.split_once(')')?.0.parse().ok()?))
+            })
+            .collect();
+        cells.sort_unstable();
+        cells
+    }
+
+    /// The Direct3D 11 rule itself, written independently with edge
+    /// functions: a centre is covered when strictly inside every edge, or on
+    /// an edge that is a top or left edge (and strictly inside the others).
+    /// "Top" is as displayed, and zsim displays row 0 at the bottom, so a top
+    /// edge is the horizontal edge with the largest y. Vertices in half units.
+    fn direct3d(vertices: &[[i64; 2]], size: u32) -> Vec<(u32, u32)> {
+        let n = vertices.len();
+        let area: i64 =
+            (0..n).map(|i| vertices[i][0] * vertices[(i + 1) % n][1] - vertices[(i + 1) % n][0] * vertices[i][1]).sum();
+        let mut cells = Vec::new();
+        for y in 0..size {
+            for x in 0..size {
+                let (px, py) = (2 * i64::from(x) + 1, 2 * i64::from(y) + 1);
+                let inside = (0..n).all(|i| {
+                    let ([ax, ay], [bx, by]) = (vertices[i], vertices[(i + 1) % n]);
+                    // Positive inside, for either winding.
+                    let e = ((bx - ax) * (py - ay) - (by - ay) * (px - ax)) * area.signum();
+                    // Interior on the edge's left when walking counter-clockwise: a left edge
+                    // runs downwards (as displayed, y up: by < ay), a top edge runs right to left.
+                    let (dx, dy) = ((bx - ax) * area.signum(), (by - ay) * area.signum());
+                    let top = dy == 0 && dx < 0;
+                    let left = dy < 0;
+                    e > 0 || (e == 0 && (top || left))
+                });
+                if inside {
+                    cells.push((x, y));
+                }
+            }
+        }
+        cells.sort_unstable();
+        cells
+    }
+
+    fn gpu() -> Rules {
+        Rules::preset(crate::rules::Preset::Gpu)
+    }
+
+    /// Each case of the top-left rule, with a centre exactly on the edge or
+    /// vertex named (vertices in half units: 2·x, so odd numbers are centres).
+    #[test]
+    fn top_left_rule_matches_direct3d_on_every_kind_of_edge() {
+        let cases: [(&str, &[[i64; 2]]); 8] = [
+            ("a centre on a left (slanted) edge is covered", &[[3, 1], [13, 1], [13, 11]]),
+            ("a centre on a right (slanted) edge is not", &[[1, 1], [11, 1], [1, 11]]),
+            ("a centre on a top (horizontal, largest y) edge is covered", &[[1, 1], [9, 9], [1, 9]]),
+            ("a centre on a bottom (horizontal, smallest y) edge is not", &[[1, 1], [9, 1], [1, 9]]),
+            ("a centre at a top vertex is not (left and right edges meet)", &[[0, 2], [10, 2], [5, 9]]),
+            ("a centre at a bottom vertex is not", &[[5, 1], [10, 8], [0, 8]]),
+            ("a centre at a left vertex is covered (two left edges)", &[[1, 5], [10, 0], [10, 10]]),
+            ("a centre at a right vertex is not (two right edges)", &[[0, 0], [9, 5], [0, 10]]),
+        ];
+        for (case, vertices) in cases {
+            let expected = direct3d(vertices, 8);
+            assert!(!expected.is_empty(), "{case}: the case covers something");
+            assert_eq!(covered(vertices, gpu(), 8), expected, "{case}");
+            let reversed: Vec<[i64; 2]> = vertices.iter().rev().copied().collect();
+            assert_eq!(covered(&reversed, gpu(), 8), expected, "{case}, vertices in the other order");
+        }
+    }
+
+    /// Two triangles sharing an edge through centres: the book's rule draws
+    /// the shared centres twice, the top-left rule once, and together they
+    /// cover the square exactly.
+    #[test]
+    fn shared_edges_are_drawn_once_under_the_top_left_rule() {
+        let (lower, upper): (&[[i64; 2]], &[[i64; 2]]) = (&[[1, 1], [13, 1], [13, 13]], &[[1, 1], [13, 13], [1, 13]]);
+        let (a, b) = (covered(lower, gpu(), 8), covered(upper, gpu(), 8));
+        assert!(a.iter().all(|cell| !b.contains(cell)), "no centre drawn twice");
+        let mut both: Vec<(u32, u32)> = a.iter().chain(&b).copied().collect();
+        both.sort_unstable();
+        assert_eq!(both, direct3d(&[[1, 1], [13, 1], [13, 13], [1, 13]], 8));
+        let (a, b) = (covered(lower, Rules::default(), 8), covered(upper, Rules::default(), 8));
+        let twice: Vec<&(u32, u32)> = a.iter().filter(|cell| b.contains(cell)).collect();
+        assert_eq!(
+            twice,
+            vec![&(0, 0), &(1, 1), &(2, 2), &(3, 3), &(4, 4), &(5, 5)],
+            "the book draws the diagonal twice"
+        );
     }
 }

@@ -10,6 +10,19 @@
 //! | depth | quantized to depth_bits, rounded half up, saturated | stored exactly |
 //! | test | `greater` (or `less`) | `less`, buffer cleared to z_max, fragments outside [z_front, z_rear] discarded |
 //!
+//! The `gpu` preset is the book's with the top-left rule of Direct3D and
+//! OpenGL for coverage: rows `top-left` (`y_min < y ≤ y_max`) and columns
+//! `half-open` (`x_l ≤ x < x_r`). zsim's raster is y-up and drawn with row 0
+//! at the bottom, so its *top* edge is the one with the largest y: a centre
+//! exactly on a horizontal edge is covered when that edge is the polygon's
+//! top as drawn, and a centre on a slanted edge when the polygon lies to its
+//! right. This is the Direct3D 11 functional specification's rule (3.4.2.1:
+//! a top edge is exactly horizontal and above the other edges, a left edge is
+//! not horizontal and on the left side of the triangle; a centre on an edge
+//! is drawn only when the edge is top or left), with "above" meaning above
+//! on the screen. Shared edges are drawn once: a centre on the edge two
+//! polygons share belongs to exactly one of them (tests in `pipeline`).
+//!
 //! Pixel centres are at the middle of each cell in both.
 
 use serde::Deserialize;
@@ -26,6 +39,12 @@ pub enum RowRule {
     /// scanline crosses; one span from the least to the greatest crossing.
     #[serde(rename = "closed")]
     Closed,
+    /// The top half of the top-left rule, in zsim's y-up raster: an edge
+    /// crosses when `min(y₁, y₂) < y ≤ max(y₁, y₂)`, so a centre exactly on
+    /// a horizontal edge is covered when that edge is the top one as drawn
+    /// (y largest) and not when it is the bottom one; crossings paired.
+    #[serde(rename = "top-left")]
+    TopLeft,
 }
 
 /// Which columns a span covers.
@@ -39,6 +58,11 @@ pub enum ColumnRule {
     /// pixel units is `⌊x⌋`; both included.
     #[serde(rename = "cell")]
     CellHolds,
+    /// The left half of the top-left rule: columns whose centre lies within
+    /// `[x_l, x_r)`, so a centre exactly on a left edge is covered and one
+    /// on a right edge is not.
+    #[serde(rename = "half-open")]
+    HalfOpen,
 }
 
 /// What the z-buffer keeps.
@@ -61,6 +85,10 @@ pub enum Preset {
     Rogers,
     /// BUET CSE 410's "Offline 2: Rasterization".
     Buet,
+    /// The top-left rule of Direct3D and OpenGL, as displayed: centre
+    /// samples, rows [`RowRule::TopLeft`], columns [`ColumnRule::HalfOpen`];
+    /// depth as the book stores it.
+    Gpu,
 }
 
 /// The rasterizer's choices.
@@ -89,6 +117,9 @@ impl Rules {
             Preset::Buet => {
                 Rules { preset, rows: RowRule::Closed, columns: ColumnRule::CellHolds, store: DepthStore::Exact }
             }
+            Preset::Gpu => {
+                Rules { preset, rows: RowRule::TopLeft, columns: ColumnRule::HalfOpen, store: DepthStore::Quantized }
+            }
         }
     }
 
@@ -97,14 +128,21 @@ impl Rules {
         let preset = match self.preset {
             Preset::Rogers => "rogers",
             Preset::Buet => "buet",
+            Preset::Gpu => "gpu",
         };
         let rows = match self.rows {
             RowRule::HalfOpen => "rows half-open (min ≤ y < max), crossings paired",
             RowRule::Closed => "rows closed (min ≤ y ≤ max), one span from the least to the greatest crossing",
+            RowRule::TopLeft => {
+                "rows top-left (min < y ≤ max: a top edge's centres in, a bottom edge's out), crossings paired"
+            }
         };
         let columns = match self.columns {
             ColumnRule::CentreInside => "columns whose centre lies in the span",
             ColumnRule::CellHolds => "columns from the cell holding x_a to the cell holding x_b",
+            ColumnRule::HalfOpen => {
+                "columns whose centre lies in [x_l, x_r): a left edge's centres in, a right edge's out"
+            }
         };
         let store = match self.store {
             DepthStore::Quantized => "depth rounded half up and saturated",

@@ -50,24 +50,27 @@ pub fn scanline_y(row: u32, denominator: i128) -> i128 {
     (2 * i128::from(row) + 1) * denominator
 }
 
-/// The first row whose scanline lies at or above scaled height `y`:
-/// `(2r + 1)·D ≥ y  ⇔  r ≥ ⌈(y − D) / 2D⌉`. An edge or polygon whose lower
-/// end is at `y` starts there.
+/// The first row whose scanline an edge or polygon whose lower end is at
+/// scaled height `y` reaches: `(2r + 1)·D ≥ y  ⇔  r ≥ ⌈(y − D) / 2D⌉`, or
+/// strictly above it, `r ≥ ⌊(y − D) / 2D⌋ + 1` ([`RowRule::TopLeft`]).
 #[inline]
-fn first_row_from<W: Word>(y: W, denominator: W) -> W {
-    (y - denominator).ceil_div(denominator + denominator)
+fn first_row_from<W: Word>(y: W, denominator: W, rule: RowRule) -> W {
+    match rule {
+        RowRule::TopLeft => (y - denominator).floor_div(denominator + denominator).0 + W::ONE,
+        RowRule::HalfOpen | RowRule::Closed => (y - denominator).ceil_div(denominator + denominator),
+    }
 }
 
 /// The last row whose scanline an edge or polygon whose upper end is at
 /// scaled height `y` reaches: `(2r + 1)·D < y` ([`RowRule::HalfOpen`]) or
-/// `≤ y` ([`RowRule::Closed`]).
+/// `≤ y` ([`RowRule::Closed`], [`RowRule::TopLeft`]).
 #[inline]
 fn last_row_to<W: Word>(y: W, denominator: W, rule: RowRule) -> W {
     match rule {
         // r < (y − D) / 2D  ⇔  r ≤ ⌈(y − D) / 2D⌉ − 1
         RowRule::HalfOpen => (y - denominator).ceil_div(denominator + denominator) - W::ONE,
         // r ≤ ⌊(y − D) / 2D⌋
-        RowRule::Closed => (y - denominator).floor_div(denominator + denominator).0,
+        RowRule::Closed | RowRule::TopLeft => (y - denominator).floor_div(denominator + denominator).0,
     }
 }
 
@@ -81,12 +84,12 @@ fn clip_rows<W: Word>(first: W, last: W, limit: (u32, u32)) -> Option<RangeInclu
 
 /// The rows whose scanlines can meet the polygon, clipped to `limit`
 /// (first and last row, inclusive):
-/// those with `y_min ≤ row + 1/2 < y_max` (half-open), or
-/// `y_min ≤ row + 1/2 ≤ y_max` (closed).
+/// those with `y_min ≤ row + 1/2 < y_max` (half-open),
+/// `y_min ≤ row + 1/2 ≤ y_max` (closed), or `y_min < row + 1/2 ≤ y_max` (top-left).
 pub fn rows(points: &[[i128; 3]], denominator: i128, limit: (u32, u32), rule: RowRule) -> Option<RangeInclusive<u32>> {
     let y_min = points.iter().map(|p| p[1]).min()?;
     let y_max = points.iter().map(|p| p[1]).max()?;
-    clip_rows(first_row_from(y_min, denominator), last_row_to(y_max, denominator, rule), limit)
+    clip_rows(first_row_from(y_min, denominator, rule), last_row_to(y_max, denominator, rule), limit)
 }
 
 /// The crossings of the polygon's edges with the scanline at scaled height
@@ -95,18 +98,21 @@ pub fn rows(points: &[[i128; 3]], denominator: i128, limit: (u32, u32), rule: Ro
 /// Rogers' half-interval convention ([`RowRule::HalfOpen`]): an edge crosses
 /// when `min(y₁, y₂) ≤ y < max(y₁, y₂)`, so a vertex on the scanline counts
 /// only for the edge whose lower end it is. With [`RowRule::Closed`] an edge
-/// crosses when `min(y₁, y₂) ≤ y ≤ max(y₁, y₂)`. Horizontal edges never cross.
+/// crosses when `min(y₁, y₂) ≤ y ≤ max(y₁, y₂)`, with [`RowRule::TopLeft`]
+/// when `min(y₁, y₂) < y ≤ max(y₁, y₂)` (a vertex counts for the edge whose
+/// upper end it is). Horizontal edges never cross.
 pub fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
     out.clear();
     let count = points.len();
     for i in 0..count {
         let [x1, y1, _] = points[i];
         let [x2, y2, _] = points[(i + 1) % count];
-        let above = match rule {
-            RowRule::HalfOpen => scan_y >= y1.max(y2),
-            RowRule::Closed => scan_y > y1.max(y2),
+        let (below, above) = match rule {
+            RowRule::HalfOpen => (scan_y < y1.min(y2), scan_y >= y1.max(y2)),
+            RowRule::Closed => (scan_y < y1.min(y2), scan_y > y1.max(y2)),
+            RowRule::TopLeft => (scan_y <= y1.min(y2), scan_y > y1.max(y2)),
         };
-        if y1 == y2 || scan_y < y1.min(y2) || above {
+        if y1 == y2 || below || above {
             continue;
         }
         // x = x₁ + (x₂ − x₁)(y − y₁)/(y₂ − y₁), kept as one fraction.
@@ -220,10 +226,14 @@ impl<W: Word> EdgeTable<W> {
             let y = W::narrow(p[1]);
             let (whole, remainder) =
                 if power_of_two { (y - d).floor_div_pow2(shift) } else { (y - d).floor_div(two_d) };
-            let from = select_unpredictable(remainder == W::ZERO, whole, whole + W::ONE);
-            let to = match rules.0 {
-                RowRule::HalfOpen => from - W::ONE,
-                RowRule::Closed => whole,
+            let (from, to) = match rules.0 {
+                RowRule::HalfOpen => {
+                    let from = select_unpredictable(remainder == W::ZERO, whole, whole + W::ONE);
+                    (from, from - W::ONE)
+                }
+                RowRule::Closed => (select_unpredictable(remainder == W::ZERO, whole, whole + W::ONE), whole),
+                // A centre exactly at a vertex belongs to the edge below it, never above.
+                RowRule::TopLeft => (whole + W::ONE, whole),
             };
             ScaledVertex { x: W::narrow(p[0]), y, from, to }
         }));
@@ -235,7 +245,7 @@ impl<W: Word> EdgeTable<W> {
         let rows = clip_rows(first, last, limit)?;
         let (row_first, row_last) = (W::narrow(i128::from(*rows.start())), W::narrow(i128::from(*rows.end())));
         let offset = match rules.1 {
-            ColumnRule::CentreInside => d,
+            ColumnRule::CentreInside | ColumnRule::HalfOpen => d,
             ColumnRule::CellHolds => W::ZERO,
         };
         let mut previous = self.points[self.points.len() - 1];
@@ -349,15 +359,18 @@ impl<W: Word> WalkedEdge<W> {
     /// The crossing on the current row, with the columns it bounds under `rule`.
     #[inline]
     pub fn crossing(&self, rule: ColumnRule) -> RowCrossing<W> {
+        let on_centre = self.column_remainder == W::ZERO;
         let on_centre_or_cell = match rule {
-            ColumnRule::CentreInside => self.column_remainder == W::ZERO,
+            ColumnRule::CentreInside | ColumnRule::HalfOpen => on_centre,
             ColumnRule::CellHolds => true,
         };
+        // Half-open spans [x_l, x_r) leave out a centre exactly on their right end.
+        let right_open = rule == ColumnRule::HalfOpen && on_centre;
         RowCrossing {
             numerator: self.numerator,
             denominator: self.denominator,
             first_column: select_unpredictable(on_centre_or_cell, self.column, self.column + W::ONE),
-            last_column: self.column,
+            last_column: select_unpredictable(right_open, self.column - W::ONE, self.column),
         }
     }
 
@@ -381,17 +394,17 @@ impl<W: Word> WalkedEdge<W> {
 }
 
 /// Which sorted crossings pair into spans, as index pairs: 1st–2nd, 3rd–4th,
-/// … with [`RowRule::HalfOpen`] (an odd last crossing cannot happen for a
-/// closed polygon and is ignored), or the first with the last with
-/// [`RowRule::Closed`].
+/// … with [`RowRule::HalfOpen`] and [`RowRule::TopLeft`] (an odd last
+/// crossing cannot happen for a closed polygon and is ignored), or the first
+/// with the last with [`RowRule::Closed`].
 #[inline]
 pub fn pairs(count: usize, rule: RowRule) -> impl Iterator<Item = (usize, usize)> + Clone {
     let pairs = match rule {
-        RowRule::HalfOpen => count / 2,
+        RowRule::HalfOpen | RowRule::TopLeft => count / 2,
         RowRule::Closed => count.min(1),
     };
     (0..pairs).map(move |k| match rule {
-        RowRule::HalfOpen => (2 * k, 2 * k + 1),
+        RowRule::HalfOpen | RowRule::TopLeft => (2 * k, 2 * k + 1),
         RowRule::Closed => (0, count - 1),
     })
 }
@@ -407,7 +420,8 @@ pub fn clip_columns<W: Word>(first: W, last: W, limit: (u32, u32)) -> Option<(u3
 /// The columns a span covers, clipped to `limit` (first and last column, inclusive): with
 /// [`ColumnRule::CentreInside`] those whose centres `x + 1/2` lie within
 /// `[left, right]`, boundary included ("the pixel whose centre lies inside or
-/// on the boundary"); with [`ColumnRule::CellHolds`] from `⌊left⌋` to `⌊right⌋`.
+/// on the boundary"); with [`ColumnRule::HalfOpen`] those within
+/// `[left, right)`; with [`ColumnRule::CellHolds`] from `⌊left⌋` to `⌊right⌋`.
 pub fn columns(
     left: Crossing,
     right: Crossing,
@@ -421,6 +435,11 @@ pub fn columns(
             ceil_div(left.numerator - denominator * left.denominator, 2 * denominator * left.denominator),
             // (2x + 1)·D ≤ n/d  ⇔  x ≤ ⌊(n − D·d) / 2D·d⌋
             floor_div(right.numerator - denominator * right.denominator, 2 * denominator * right.denominator).0,
+        ),
+        ColumnRule::HalfOpen => (
+            ceil_div(left.numerator - denominator * left.denominator, 2 * denominator * left.denominator),
+            // (2x + 1)·D < n/d  ⇔  x ≤ ⌈(n − D·d) / 2D·d⌉ − 1
+            ceil_div(right.numerator - denominator * right.denominator, 2 * denominator * right.denominator) - 1,
         ),
         // x = n / (2D·d) in pixel units: the cell holding it is ⌊n / 2D·d⌋.
         ColumnRule::CellHolds => (
@@ -508,8 +527,8 @@ mod tests {
     /// The walker's crossings and column bounds, in both machine words, equal
     /// the formulas ([`crossings`], [`columns`]) on every row and every rule.
     fn check_walker<W: Word>(points: &[[i128; 3]], denominator: i128, limit: (u32, u32)) {
-        for row_rule in [RowRule::HalfOpen, RowRule::Closed] {
-            for column_rule in [ColumnRule::CentreInside, ColumnRule::CellHolds] {
+        for row_rule in [RowRule::HalfOpen, RowRule::Closed, RowRule::TopLeft] {
+            for column_rule in [ColumnRule::CentreInside, ColumnRule::CellHolds, ColumnRule::HalfOpen] {
                 let mut table = EdgeTable::<W>::default();
                 let prepared = table.prepare(points, denominator, limit, (row_rule, column_rule));
                 assert_eq!(prepared, rows(points, denominator, limit, row_rule));

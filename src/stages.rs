@@ -164,6 +164,7 @@ pub fn describe(scene: &Scene) -> Vec<String> {
     stages.push(match scene.rules.rows {
         RowRule::HalfOpen => "scan conversion".to_string(),
         RowRule::Closed => "scan conversion (closed rows, cells holding the crossings)".to_string(),
+        RowRule::TopLeft => "scan conversion (top-left rule)".to_string(),
     });
     if let Some((front, rear)) = scene.depth_range {
         stages.push(format!("depth range (discard z outside {} … {})", fraction(front), fraction(rear)));

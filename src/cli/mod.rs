@@ -4,6 +4,7 @@
 mod accuracy;
 mod buet;
 mod check;
+mod cs418;
 mod exercise;
 mod explain;
 mod figure;
@@ -51,6 +52,8 @@ enum Command {
     Random(generate::RandomArgs),
     /// BUET CSE 410 "Offline 2" cases: run, import, check.
     Buet(buet::BuetArgs),
+    /// UIUC CS 418 rasterizer cases (rast-*.txt): run in the course's floats or exactly, compare, import.
+    Cs418(cs418::Cs418Args),
     /// Draw the raster as an SVG figure: grid, centres, scanlines, outlines, covered pixels.
     Figure(figure::FigureArgs),
 }
@@ -99,6 +102,7 @@ pub fn main() -> ExitCode {
         Command::Exercise(args) => exercise::run(&args, &mut out),
         Command::Figure(args) => figure::run(&args, &mut out),
         Command::Buet(args) => buet::run(&args, &mut out),
+        Command::Cs418(args) => cs418::run(&args, &mut out),
         Command::Accuracy(args) => accuracy::run(&args, &mut out),
         Command::Memory(args) => generate::memory_command(&args, &mut out),
         Command::Random(args) => generate::random_command(&args, &mut out),

@@ -49,6 +49,9 @@ pub struct RunArgs {
     /// With --format none: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
+    /// List the cells where the scene's rules and this preset's (rogers, buet or gpu) draw differently, and why.
+    #[arg(long, value_name = "PRESET", value_parser = preset_parser)]
+    compare_rules: Option<zsim::rules::Preset>,
     /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
     #[arg(long, default_value = "exact", value_parser = Arith::parse)]
     arith: Arith,
@@ -108,6 +111,10 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         scene.polygons.truncate(last + 1);
     }
     let path = args.scene.display().to_string();
+    if let Some(preset) = args.compare_rules {
+        emit(out, &compare_rules(&scene, &path, preset))?;
+        return Ok(Finish::Ok);
+    }
     if args.arith != Arith::Exact {
         return run_inexact(args, &scene, &path, read_time, out);
     }
@@ -358,4 +365,83 @@ fn run_inexact(
         }
     }
     Ok(Finish::Ok)
+}
+
+fn preset_parser(text: &str) -> Result<zsim::rules::Preset, String> {
+    serde_json::from_value(serde_json::Value::String(text.to_string()))
+        .map_err(|_| format!("\"{text}\" is not a rule preset: use rogers, buet or gpu"))
+}
+
+/// `--compare-rules`: the cells two rule sets draw differently, each with the
+/// polygons covering it and the edge its centre lies on.
+fn compare_rules(scene: &Scene, path: &str, preset: zsim::rules::Preset) -> String {
+    use std::fmt::Write as _;
+    let other = zsim::rules::Rules { store: scene.rules.store, ..zsim::rules::Rules::preset(preset) };
+    let differences = zsim::tie::compare_rules(scene, other);
+    let mut text = format!("{path}\n  this scene's {}\n  compared with {}\n", scene.rules.describe(), other.describe());
+    if differences.is_empty() {
+        text.push_str("every pixel comes out the same: no centre lies exactly on an edge where the rules differ\n");
+        return text;
+    }
+    let _ = writeln!(text, "{} pixel{} differ:", differences.len(), if differences.len() == 1 { "" } else { "s" });
+    let names = |list: &[usize]| -> String {
+        if list.is_empty() {
+            return "nothing".to_string();
+        }
+        list.iter().map(|&i| format!("\"{}\"", scene.polygons[i].name)).collect::<Vec<_>>().join(" and ")
+    };
+    let point = |p: [zsim::exact::Q; 2]| format!("({}, {})", zsim::exact::fraction(p[0]), zsim::exact::fraction(p[1]));
+    for d in &differences {
+        let _ = writeln!(
+            text,
+            "  ({}, {}): {} → {}; covered by {} under {}, by {} under {}",
+            d.x,
+            d.y,
+            d.values.0,
+            d.values.1,
+            names(&d.covering.0),
+            preset_name(scene.rules.preset),
+            names(&d.covering.1),
+            preset_name(preset)
+        );
+        for (polygon, boundary, a, b) in &d.ties {
+            let name = &scene.polygons[*polygon].name;
+            if *boundary == zsim::tie::Boundary::Vertex {
+                let _ = writeln!(
+                    text,
+                    "      the centre ({}.5, {}.5) is the vertex {} of \"{name}\": the edges meeting there decide, under each rule set as on its own edges",
+                    d.x,
+                    d.y,
+                    point(*a)
+                );
+                continue;
+            }
+            let verdict = |rules: zsim::rules::Rules| match zsim::tie::rule_covers(rules, *boundary) {
+                Some(true) => "covered",
+                _ => "left out",
+            };
+            let _ = writeln!(
+                text,
+                "      the centre ({}.5, {}.5) lies on the {} of \"{name}\" from {} to {}: {} under {}, {} under {}",
+                d.x,
+                d.y,
+                boundary.words(),
+                point(*a),
+                point(*b),
+                verdict(scene.rules),
+                preset_name(scene.rules.preset),
+                verdict(other),
+                preset_name(preset)
+            );
+        }
+    }
+    text
+}
+
+fn preset_name(preset: zsim::rules::Preset) -> &'static str {
+    match preset {
+        zsim::rules::Preset::Rogers => "the book's rules",
+        zsim::rules::Preset::Buet => "BUET's rules",
+        zsim::rules::Preset::Gpu => "the top-left rule",
+    }
 }

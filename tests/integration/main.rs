@@ -12,6 +12,7 @@ mod accuracy;
 mod bad_input;
 mod buet;
 mod classroom;
+mod cs418;
 mod effects;
 mod generate;
 mod golden;

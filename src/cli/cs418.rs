@@ -1,0 +1,238 @@
+//! `zsim cs418`: UIUC CS 418's rasterizer cases: run, compare, import.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use clap::{Args, Subcommand, ValueEnum};
+use zsim::cs418::{self, Arithmetic, Case, Comparison, Image, Reason};
+use zsim::error::Error;
+
+use super::{Failure, Finish, emit};
+
+/// Arguments of `zsim cs418`.
+#[derive(Debug, Args)]
+pub struct Cs418Args {
+    #[command(subcommand)]
+    command: Cs418Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Cs418Command {
+    /// Run a case: write the PNG its first line names into OUT_DIR.
+    Run {
+        /// The case file (rast-*.txt).
+        case: PathBuf,
+        /// The folder to write into.
+        #[arg(short, long, value_name = "OUT_DIR")]
+        output: PathBuf,
+        /// The arithmetic: the course's f64 DDA (its reference images), or
+        /// exact, which also lists the samples where the two disagree and why.
+        #[arg(long, value_enum, default_value = "dda-f64")]
+        arith: Arith,
+        /// Compare the image with this PNG (the course's reference or a
+        /// student's); exit 1 when a channel differs by more than --tolerance.
+        #[arg(long, value_name = "PNG")]
+        compare: Option<PathBuf>,
+        /// Largest difference per channel that --compare accepts.
+        #[arg(long, default_value_t = 1)]
+        tolerance: u8,
+    },
+    /// Not written yet: will print the case's triangles as a zsim scene
+    /// (gpu rules, the course's samples on zsim's pixel centres).
+    Import {
+        /// The case file.
+        case: PathBuf,
+    },
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Arith {
+    /// The course's arithmetic: f64 throughout, the DDA stepped by adding.
+    #[value(name = "dda-f64")]
+    DdaF64,
+    /// Exact rationals; reports where the course's floats differ.
+    Exact,
+}
+
+pub fn run(args: &Cs418Args, out: &mut dyn Write) -> Result<Finish, Failure> {
+    match &args.command {
+        Cs418Command::Run { case, output, arith, compare, tolerance } => {
+            run_case(case, output, *arith, compare.as_deref(), *tolerance, out)
+        }
+        Cs418Command::Import { case } => {
+            load(case)?;
+            Err(Error::Usage(
+                "zsim cs418 import is not written yet: run the case with zsim cs418 run (see the README, \"A CS 418 case, end to end\")"
+                    .into(),
+            )
+            .into())
+        }
+    }
+}
+
+fn located(path: &Path, error: cs418::CaseError) -> Error {
+    Error::SceneFormat {
+        path: path.to_owned(),
+        location: error.line.map_or(String::new(), |line| format!("line {line}")),
+        message: error.message,
+    }
+}
+
+fn load(path: &Path) -> Result<Case, Error> {
+    let text = zsim::text::read_text(path)?;
+    let folder = path.parent().unwrap_or(Path::new("."));
+    let case = Case::parse(&text, &|name| folder.join(name).is_file()).map_err(|e| located(path, e))?;
+    Ok(case)
+}
+
+fn run_case(
+    path: &Path,
+    output: &Path,
+    arith: Arith,
+    compare: Option<&Path>,
+    tolerance: u8,
+    out: &mut dyn Write,
+) -> Result<Finish, Failure> {
+    let case = load(path)?;
+    let arithmetic = match arith {
+        Arith::DdaF64 => Arithmetic::DdaF64,
+        Arith::Exact => Arithmetic::Exact,
+    };
+    let reference = match compare {
+        Some(png) => {
+            let bytes = std::fs::read(png).map_err(|source| Error::Read { path: png.to_owned(), source })?;
+            let image = Image::from_png(&bytes).map_err(|message| Error::Answer { path: png.to_owned(), message })?;
+            Some((png, image))
+        }
+        None => None,
+    };
+    let result = cs418::render(&case, arithmetic).map_err(|e| located(path, e))?;
+    std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
+    let written = output.join(&case.output);
+    std::fs::write(&written, result.image.to_png()).map_err(|source| Error::Write { path: written.clone(), source })?;
+    let mut text = format!(
+        "{}: {} × {}, {} arithmetic{}: wrote {}\n",
+        path.display(),
+        case.width,
+        case.height,
+        arithmetic.name(),
+        features(&case),
+        written.display()
+    );
+    if arithmetic == Arithmetic::Exact {
+        let course = cs418::render(&case, Arithmetic::DdaF64).map_err(|e| located(path, e))?;
+        text.push_str(&disagreements(&course, &result));
+    }
+    let mut finish = Finish::Ok;
+    if let Some((png, image)) = reference {
+        match cs418::compare_images(&result.image, &image, tolerance) {
+            None => {
+                return Err(Error::Answer {
+                    path: png.to_owned(),
+                    message: format!(
+                        "the image is {} × {}, the case draws {} × {}",
+                        image.width, image.height, case.width, case.height
+                    ),
+                }
+                .into());
+            }
+            Some(difference) if difference.pixels.is_empty() => text.push_str(&format!(
+                "{}: every channel of every pixel within {tolerance} (largest difference {})\n",
+                png.display(),
+                difference.largest
+            )),
+            Some(difference) => {
+                finish = Finish::Differs;
+                text.push_str(&format!(
+                    "{}: {} pixel{} differ by more than {tolerance} (largest difference {}):\n",
+                    png.display(),
+                    difference.pixels.len(),
+                    if difference.pixels.len() == 1 { "" } else { "s" },
+                    difference.largest
+                ));
+                for (x, y, ours, theirs) in difference.pixels.iter().take(20) {
+                    text.push_str(&format!("  ({x}, {y}): zsim {ours:?}, image {theirs:?}\n"));
+                }
+                if difference.pixels.len() > 20 {
+                    text.push_str(&format!("  … and {} more\n", difference.pixels.len() - 20));
+                }
+            }
+        }
+    }
+    emit(out, &text)?;
+    Ok(finish)
+}
+
+fn features(case: &Case) -> String {
+    let f = case.features;
+    let mut on: Vec<String> =
+        [(f.depth, "depth"), (f.srgb, "sRGB"), (f.hyp, "hyp"), (f.cull, "cull"), (f.frustum, "frustum")]
+            .into_iter()
+            .filter(|(on, _)| *on)
+            .map(|(_, name)| name.to_string())
+            .collect();
+    if f.fsaa > 1 {
+        on.push(format!("fsaa {}", f.fsaa));
+    }
+    if on.is_empty() { String::new() } else { format!(", {}", on.join(", ")) }
+}
+
+/// The samples where the course's floats and exact arithmetic disagree, each with why.
+fn disagreements(course: &Comparison, exact: &Comparison) -> String {
+    let cells = cs418::differences(course, exact);
+    if cells.is_empty() {
+        return "the course's f64 arithmetic and exact arithmetic draw every sample alike\n".to_string();
+    }
+    let mut text = format!(
+        "{} sample{} where the course's f64 arithmetic and exact arithmetic disagree:\n",
+        cells.len(),
+        if cells.len() == 1 { "" } else { "s" }
+    );
+    for cell in &cells {
+        let place = if course.level > 1 {
+            format!("sample ({}, {}) of pixel ({}, {})", cell.x, cell.y, cell.pixel.0, cell.pixel.1)
+        } else {
+            format!("pixel ({}, {})", cell.x, cell.y)
+        };
+        let why = match &cell.reason {
+            Reason::Span { primitive, course, exact } => {
+                let span = |s: &Option<(String, String)>| match s {
+                    Some((l, r)) => format!("[{l}, {r})"),
+                    None => "no span".to_string(),
+                };
+                format!(
+                    "{primitive}: on row {} its span is {} in f64 but {} exactly, so x = {} is {} in f64 and {} exactly",
+                    cell.y,
+                    span(course),
+                    span(exact),
+                    cell.x,
+                    inside(course, cell.x),
+                    inside(exact, cell.x)
+                )
+            }
+            Reason::Depth { course, exact } => {
+                let who = |p: &Option<cs418::Primitive>| p.as_ref().map_or("nothing".to_string(), ToString::to_string);
+                format!(
+                    "both arithmetics cover it with the same primitives, but the depth test keeps {} in f64 and {} exactly (equal depths, or within rounding)",
+                    who(course),
+                    who(exact)
+                )
+            }
+        };
+        text.push_str(&format!("  {place}: {why}\n"));
+    }
+    text
+}
+
+fn inside(span: &Option<(String, String)>, x: u32) -> &'static str {
+    let parse = |t: &str| -> f64 {
+        match t.split_once('/') {
+            Some((n, d)) => n.parse::<f64>().unwrap_or(f64::NAN) / d.parse::<f64>().unwrap_or(f64::NAN),
+            None => t.parse().unwrap_or(f64::NAN),
+        }
+    };
+    match span {
+        Some((l, r)) if parse(l).ceil() <= f64::from(x) && f64::from(x) < parse(r) => "inside",
+        _ => "outside",
+    }
+}

@@ -1,0 +1,782 @@
+//! The course's pipeline, written once over a number type ([`Scalar`]) and
+//! run in `f64` (the course's arithmetic) or in exact rationals.
+
+use std::collections::BTreeMap;
+use std::fmt;
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{ToPrimitive, Zero};
+
+use super::{Case, CaseError, Command, Number, error};
+
+/// The arithmetic the course's algorithm runs in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Arithmetic {
+    /// The course's own: every number read as the nearest `f64`, the viewport
+    /// computed as `(x/w + 1)·W/2`, and each DDA started at `a + (⌈a_d⌉ − a_d)·s`
+    /// and stepped by adding `s`, all in `f64`, as its reference images were made.
+    DdaF64,
+    /// The same algorithm on exact rationals: the numbers as written, every
+    /// step exact, so each sample is inside or outside as the geometry says.
+    Exact,
+}
+
+impl Arithmetic {
+    /// The name used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Arithmetic::DdaF64 => "dda-f64",
+            Arithmetic::Exact => "exact",
+        }
+    }
+}
+
+/// A number type the pipeline runs on.
+trait Scalar: Clone + PartialOrd + fmt::Debug {
+    fn number(n: &Number) -> Self;
+    fn int(v: i64) -> Self;
+    fn add(&self, o: &Self) -> Self;
+    fn sub(&self, o: &Self) -> Self;
+    fn mul(&self, o: &Self) -> Self;
+    fn div(&self, o: &Self) -> Self;
+    fn ceil(&self) -> Self;
+    fn to_f64(&self) -> f64;
+    fn is_zero(&self) -> bool;
+    /// The value as a person reads it: the shortest decimal that reads back
+    /// as this `f64`, or an exact fraction.
+    fn text(&self) -> String;
+}
+
+impl Scalar for f64 {
+    fn number(n: &Number) -> f64 {
+        n.value
+    }
+    fn int(v: i64) -> f64 {
+        v as f64
+    }
+    fn add(&self, o: &f64) -> f64 {
+        self + o
+    }
+    fn sub(&self, o: &f64) -> f64 {
+        self - o
+    }
+    fn mul(&self, o: &f64) -> f64 {
+        self * o
+    }
+    fn div(&self, o: &f64) -> f64 {
+        self / o
+    }
+    fn ceil(&self) -> f64 {
+        f64::ceil(*self)
+    }
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0.0
+    }
+    fn text(&self) -> String {
+        format!("{self}")
+    }
+}
+
+impl Scalar for BigRational {
+    fn number(n: &Number) -> BigRational {
+        exact_decimal(&n.text)
+    }
+    fn int(v: i64) -> BigRational {
+        BigRational::from_integer(BigInt::from(v))
+    }
+    fn add(&self, o: &Self) -> Self {
+        self + o
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self - o
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self * o
+    }
+    fn div(&self, o: &Self) -> Self {
+        self / o
+    }
+    fn ceil(&self) -> Self {
+        BigRational::ceil(self)
+    }
+    fn to_f64(&self) -> f64 {
+        ToPrimitive::to_f64(self).unwrap_or(f64::NAN)
+    }
+    fn is_zero(&self) -> bool {
+        Zero::is_zero(self)
+    }
+    fn text(&self) -> String {
+        if self.is_integer() { self.numer().to_string() } else { format!("{}/{}", self.numer(), self.denom()) }
+    }
+}
+
+/// A decimal as written (`-0.5`, `.2`, `1e-3`, `+4`), exactly. The parser
+/// has already checked that `f64` reads it.
+fn exact_decimal(text: &str) -> BigRational {
+    let (mantissa, exponent) = match text.find(['e', 'E']) {
+        Some(at) => (&text[..at], text[at + 1..].parse::<i64>().unwrap_or(0)),
+        None => (text, 0),
+    };
+    let (negative, digits) = match mantissa.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
+    };
+    let (whole, fraction) = digits.split_once('.').unwrap_or((digits, ""));
+    let all: String = format!("{whole}{fraction}");
+    let mut value = BigInt::parse_bytes(if all.is_empty() { b"0" } else { all.as_bytes() }, 10).unwrap_or_default();
+    if negative {
+        value = -value;
+    }
+    let scale = exponent - fraction.len() as i64;
+    let ten = BigInt::from(10);
+    if scale >= 0 {
+        BigRational::from_integer(value * num_traits::pow(ten, scale as usize))
+    } else {
+        BigRational::new(value, num_traits::pow(ten, (-scale) as usize))
+    }
+}
+
+/// Components of a vertex as the pipeline carries it. In clip space:
+/// x, y, z, w, r, g, b, a. On screen: x', y', z/w, 1/w, then the colour
+/// (divided by w under `hyp`, recovered by dividing by the interpolated 1/w).
+const COMPONENTS: usize = 8;
+type Vertex<S> = Vec<S>;
+
+/// An RGBA image, rows from the top, 8 bits a channel.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Image {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// `width × height × 4` bytes, row by row from the top.
+    pub rgba: Vec<u8>,
+}
+
+impl Image {
+    /// The four channels of pixel (x, y), y counted from the top.
+    pub fn pixel(&self, x: u32, y: u32) -> [u8; 4] {
+        let at = ((y * self.width + x) * 4) as usize;
+        [self.rgba[at], self.rgba[at + 1], self.rgba[at + 2], self.rgba[at + 3]]
+    }
+}
+
+impl Image {
+    /// The image as PNG bytes (8-bit RGBA).
+    pub fn to_png(&self) -> Vec<u8> {
+        let mut bytes = Vec::new();
+        {
+            let mut encoder = png::Encoder::new(&mut bytes, self.width, self.height);
+            encoder.set_color(png::ColorType::Rgba);
+            encoder.set_depth(png::BitDepth::Eight);
+            // Writing into a Vec cannot fail.
+            let mut writer = encoder.write_header().expect("PNG header into memory");
+            writer.write_image_data(&self.rgba).expect("PNG data into memory");
+        }
+        bytes
+    }
+
+    /// Reads a PNG (any colour type and depth png expands to 8-bit RGB or
+    /// RGBA, grey included); `Err` says why not.
+    pub fn from_png(bytes: &[u8]) -> Result<Image, String> {
+        let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+        decoder.set_transformations(png::Transformations::normalize_to_color8() | png::Transformations::ALPHA);
+        let mut reader = decoder.read_info().map_err(|e| format!("not a PNG image ({e})"))?;
+        let size = reader.output_buffer_size().ok_or("the PNG is too large")?;
+        let mut buffer = vec![0; size];
+        let frame = reader.next_frame(&mut buffer).map_err(|e| format!("a broken PNG image ({e})"))?;
+        buffer.truncate(frame.buffer_size());
+        let rgba = match frame.color_type {
+            png::ColorType::Rgba => buffer,
+            png::ColorType::GrayscaleAlpha => buffer.chunks(2).flat_map(|c| [c[0], c[0], c[0], c[1]]).collect(),
+            other => return Err(format!("an unexpected PNG colour type {other:?}")),
+        };
+        Ok(Image { width: frame.width, height: frame.height, rgba })
+    }
+}
+
+/// One drawing command's primitive (a triangle or a point), for reports.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Primitive {
+    /// The line of the draw command.
+    pub line: usize,
+    /// The vertex indices it reads.
+    pub vertices: Vec<usize>,
+}
+
+impl fmt::Display for Primitive {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let kind = if self.vertices.len() == 1 { "point" } else { "triangle" };
+        let list: Vec<String> = self.vertices.iter().map(ToString::to_string).collect();
+        write!(f, "the {kind} of vertices {} (line {})", list.join(", "), self.line)
+    }
+}
+
+/// Where a triangle's span on one sample row begins and ends, `[left, right)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Span {
+    /// The left end, as computed.
+    pub left: String,
+    /// The right end, as computed.
+    pub right: String,
+    /// The left end as an `f64` (for comparisons).
+    left_value: f64,
+    /// The right end as an `f64`.
+    right_value: f64,
+}
+
+impl Span {
+    fn covers(&self, x: i64) -> bool {
+        self.left_value.ceil() <= x as f64 && (x as f64) < self.right_value
+    }
+}
+
+/// A finished run: the image and, per sample, which primitive wrote it last.
+#[derive(Debug, Clone)]
+pub struct Comparison {
+    /// The image.
+    pub image: Image,
+    /// The arithmetic it ran in.
+    pub arithmetic: Arithmetic,
+    /// Samples per pixel side (`fsaa`).
+    pub level: u32,
+    /// The primitives drawn, in order; `owners` index them from 1.
+    pub primitives: Vec<Primitive>,
+    /// Per sample, row by row from the top: 0 for none, else 1 + the index
+    /// in `primitives` of the last one written.
+    owners: Vec<u32>,
+    /// Each triangle's spans by (primitive, sample row).
+    spans: BTreeMap<(u32, i64), Vec<Span>>,
+}
+
+/// Runs a case in an arithmetic.
+pub fn render(case: &Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
+    match arithmetic {
+        Arithmetic::DdaF64 => Pipeline::<f64>::run(case, arithmetic),
+        Arithmetic::Exact => Pipeline::<BigRational>::run(case, arithmetic),
+    }
+}
+
+struct Pipeline<'a, S> {
+    case: &'a Case,
+    level: u32,
+    width: usize,
+    height: usize,
+    colour: Vec<[f64; 4]>,
+    depth: Vec<S>,
+    owners: Vec<u32>,
+    primitives: Vec<Primitive>,
+    spans: BTreeMap<(u32, i64), Vec<Span>>,
+    positions: Vec<[S; 4]>,
+    colours: Vec<[S; 4]>,
+    elements: Vec<usize>,
+    sizes: Vec<S>,
+    matrix: Option<Vec<S>>,
+}
+
+impl<'a, S: Scalar> Pipeline<'a, S> {
+    fn run(case: &'a Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
+        let level = case.features.fsaa.max(1);
+        let (width, height) = ((case.width * level) as usize, (case.height * level) as usize);
+        let mut pipeline = Pipeline {
+            case,
+            level,
+            width,
+            height,
+            colour: vec![[0.0; 4]; width * height],
+            depth: vec![S::int(1); if case.features.depth { width * height } else { 0 }],
+            owners: vec![0; width * height],
+            primitives: Vec::new(),
+            spans: BTreeMap::new(),
+            positions: Vec::new(),
+            colours: Vec::new(),
+            elements: Vec::new(),
+            sizes: Vec::new(),
+            matrix: None,
+        };
+        for (line, command) in &case.commands {
+            pipeline.command(*line, command)?;
+        }
+        Ok(Comparison {
+            image: pipeline.resolve(),
+            arithmetic,
+            level,
+            primitives: pipeline.primitives,
+            owners: pipeline.owners,
+            spans: pipeline.spans,
+        })
+    }
+
+    fn command(&mut self, line: usize, command: &Command) -> Result<(), CaseError> {
+        match command {
+            Command::Position { size, numbers } => {
+                self.positions = numbers
+                    .chunks(*size)
+                    .map(|c| {
+                        let get = |i: usize, default: i64| c.get(i).map_or(S::int(default), S::number);
+                        [get(0, 0), get(1, 0), get(2, 0), get(3, 1)]
+                    })
+                    .collect();
+            }
+            Command::Color { size, numbers } => {
+                self.colours = numbers
+                    .chunks(*size)
+                    .map(|c| {
+                        let get = |i: usize| c.get(i).map_or(S::int(1), S::number);
+                        [get(0), get(1), get(2), get(3)]
+                    })
+                    .collect();
+            }
+            Command::Elements(indices) => self.elements.clone_from(indices),
+            Command::PointSize(numbers) => self.sizes = numbers.iter().map(S::number).collect(),
+            Command::Matrix(numbers) => self.matrix = Some(numbers.iter().map(S::number).collect()),
+            Command::DrawArrays { first, count } => {
+                let indices: Vec<usize> = (*first..first + count).collect();
+                self.triangles(line, &indices)?;
+            }
+            Command::DrawElements { count, offset } => {
+                let Some(indices) = self.elements.get(*offset..offset + count).map(<[usize]>::to_vec) else {
+                    return Err(error(
+                        line,
+                        format!(
+                            "drawElementsTriangles {count} {offset} reads elements {offset}…{}, but \"elements\" has {}",
+                            offset + count - 1,
+                            self.elements.len()
+                        ),
+                    ));
+                };
+                self.triangles(line, &indices)?;
+            }
+            Command::DrawPoints { first, count } => {
+                for index in *first..first + count {
+                    let size = self.sizes.get(index).cloned().ok_or_else(|| {
+                        error(
+                            line,
+                            format!(
+                                "drawArraysPoints reads point size {index}, but \"pointsize\" has {}",
+                                self.sizes.len()
+                            ),
+                        )
+                    })?;
+                    let vertex = self.vertex(line, index)?;
+                    self.primitives.push(Primitive { line, vertices: vec![index] });
+                    self.point(vertex, size);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Vertex `index` in clip space: its position times the matrix, and its colour.
+    fn vertex(&self, line: usize, index: usize) -> Result<Vertex<S>, CaseError> {
+        let position = self.positions.get(index).ok_or_else(|| {
+            error(line, format!("vertex {index} is read, but \"position\" has {} vertices", self.positions.len()))
+        })?;
+        let colour = self.colours.get(index).ok_or_else(|| {
+            error(line, format!("vertex {index} is read, but \"color\" has {} vertices", self.colours.len()))
+        })?;
+        let position: Vec<S> = match &self.matrix {
+            // Column-major: entry (row, column) is matrix[column·4 + row].
+            Some(m) => (0..4)
+                .map(|row| {
+                    (1..4).fold(m[row].mul(&position[0]), |sum, column| {
+                        sum.add(&m[column * 4 + row].mul(&position[column]))
+                    })
+                })
+                .collect(),
+            None => position.to_vec(),
+        };
+        Ok(position.into_iter().chain(colour.iter().cloned()).collect())
+    }
+
+    fn triangles(&mut self, line: usize, indices: &[usize]) -> Result<(), CaseError> {
+        for corners in indices.chunks_exact(3) {
+            let vertices =
+                [self.vertex(line, corners[0])?, self.vertex(line, corners[1])?, self.vertex(line, corners[2])?];
+            self.primitives.push(Primitive { line, vertices: corners.to_vec() });
+            let primitive = self.primitives.len() as u32;
+            let pieces: Vec<Vec<Vertex<S>>> = if self.case.features.frustum {
+                // The clipped polygon, as a fan from its first vertex.
+                let polygon = clip(vertices.to_vec());
+                (1..polygon.len().saturating_sub(1))
+                    .map(|i| vec![polygon[0].clone(), polygon[i].clone(), polygon[i + 1].clone()])
+                    .collect()
+            } else {
+                vec![vertices.to_vec()]
+            };
+            for piece in &pieces {
+                let Some(screen) = piece.iter().map(|v| self.to_screen(v)).collect::<Option<Vec<_>>>() else {
+                    continue;
+                };
+                if self.case.features.cull && !clockwise(&screen) {
+                    continue;
+                }
+                self.scanline(&screen, primitive);
+            }
+        }
+        Ok(())
+    }
+
+    /// Division by w and the viewport: `(x/w + 1)·W/2` in the course's order
+    /// of operations. `None` for w = 0 (a vertex at infinity: not drawn).
+    fn to_screen(&self, v: &[S]) -> Option<Vertex<S>> {
+        let w = &v[3];
+        if w.is_zero() {
+            return None;
+        }
+        let one = S::int(1);
+        let two = S::int(2);
+        let x = v[0].div(w).add(&one).mul(&S::int(self.width as i64)).div(&two);
+        let y = v[1].div(w).add(&one).mul(&S::int(self.height as i64)).div(&two);
+        let inverse = one.div(w);
+        let mut out = vec![x, y, v[2].div(w), inverse.clone()];
+        for c in &v[4..COMPONENTS] {
+            out.push(if self.case.features.hyp { c.div(w) } else { c.clone() });
+        }
+        Some(out)
+    }
+
+    /// The course's scanline algorithm: the vertices sorted by y, a DDA along
+    /// the long edge and one along each short edge, and a DDA in x between
+    /// them on every row.
+    fn scanline(&mut self, vertices: &[Vertex<S>], primitive: u32) {
+        let mut sorted: Vec<&Vertex<S>> = vertices.iter().collect();
+        sorted.sort_by(|a, b| a[1].partial_cmp(&b[1]).unwrap_or(std::cmp::Ordering::Equal));
+        let [top, middle, bottom] = [sorted[0], sorted[1], sorted[2]];
+        let Some(mut long) = Dda::new(top, bottom, 1) else { return };
+        for (from, to) in [(top, middle), (middle, bottom)] {
+            let Some(mut short) = Dda::new(from, to, 1) else { continue };
+            while short.live() {
+                self.row(&short.p, &long.p, primitive);
+                short.step();
+                long.step();
+            }
+        }
+    }
+
+    fn row(&mut self, a: &[S], b: &[S], primitive: u32) {
+        let row = a[1].to_f64().round() as i64;
+        let (left, right) = if a[0] <= b[0] { (a, b) } else { (b, a) };
+        self.spans.entry((primitive, row)).or_default().push(Span {
+            left: left[0].text(),
+            right: right[0].text(),
+            left_value: left[0].to_f64(),
+            right_value: right[0].to_f64(),
+        });
+        let Some(mut dda) = Dda::new(a, b, 0) else { return };
+        while dda.live() {
+            let x = dda.p[0].to_f64().round() as i64;
+            let p = dda.p.clone();
+            self.fragment(x, row, &p, None, primitive);
+            dda.step();
+        }
+    }
+
+    fn point(&mut self, vertex: Vertex<S>, size: S) {
+        let primitive = self.primitives.len() as u32;
+        let (w, z) = (&vertex[3], &vertex[2]);
+        if self.case.features.frustum && (z.add(w) < S::int(0) || w.sub(z) < S::int(0)) {
+            return;
+        }
+        let Some(screen) = self.to_screen(&vertex) else { return };
+        let half = size.mul(&S::int(i64::from(self.level))).div(&S::int(2));
+        let (x0, x1) = (screen[0].sub(&half), screen[0].add(&half));
+        let (y0, y1) = (screen[1].sub(&half), screen[1].add(&half));
+        let colour: Vec<S> = vertex[4..COMPONENTS].to_vec();
+        let mut y = y0.ceil();
+        while y < y1 {
+            let mut x = x0.ceil();
+            while x < x1 {
+                let (xi, yi) = (x.to_f64() as i64, y.to_f64() as i64);
+                self.fragment(xi, yi, &screen, Some(&colour), primitive);
+                x = x.add(&S::int(1));
+            }
+            y = y.add(&S::int(1));
+        }
+    }
+
+    /// One fragment: bounds, the depth test, then "over" onto the sample.
+    fn fragment(&mut self, x: i64, y: i64, p: &[S], flat: Option<&[S]>, primitive: u32) {
+        if x < 0 || y < 0 || x >= self.width as i64 || y >= self.height as i64 {
+            return;
+        }
+        let index = y as usize * self.width + x as usize;
+        if self.case.features.depth {
+            // Kept when z/w ≤ stored (a NaN depth, from a vertex at infinity, is not).
+            if p[2].partial_cmp(&self.depth[index]).is_none_or(|o| o == std::cmp::Ordering::Greater) {
+                return;
+            }
+            self.depth[index] = p[2].clone();
+        }
+        let colour: Vec<f64> = match flat {
+            Some(c) => c.iter().map(Scalar::to_f64).collect(),
+            None if self.case.features.hyp => p[4..COMPONENTS].iter().map(|c| c.div(&p[3]).to_f64()).collect(),
+            None => p[4..COMPONENTS].iter().map(Scalar::to_f64).collect(),
+        };
+        let below = self.colour[index];
+        let alpha = colour[3] + below[3] * (1.0 - colour[3]);
+        let mut out = [0.0, 0.0, 0.0, alpha];
+        if alpha > 0.0 {
+            for k in 0..3 {
+                out[k] = (colour[k] * colour[3] + below[k] * below[3] * (1.0 - colour[3])) / alpha;
+            }
+        }
+        self.colour[index] = out;
+        self.owners[index] = primitive;
+    }
+
+    /// Averages each pixel's samples (colour weighted by alpha), converts to
+    /// sRGB when asked, and rounds to 8 bits.
+    fn resolve(&self) -> Image {
+        let (width, height, level) = (self.case.width, self.case.height, self.level as usize);
+        let mut rgba = Vec::with_capacity((width * height * 4) as usize);
+        for y in 0..height as usize {
+            for x in 0..width as usize {
+                let mut sum = [0.0f64; 4];
+                for sy in 0..level {
+                    for sx in 0..level {
+                        let c = self.colour[(y * level + sy) * self.width + x * level + sx];
+                        for k in 0..3 {
+                            sum[k] += c[k] * c[3];
+                        }
+                        sum[3] += c[3];
+                    }
+                }
+                let samples = (level * level) as f64;
+                let alpha = sum[3] / samples;
+                for k in 0..3 {
+                    let linear = if sum[3] > 0.0 { sum[k] / sum[3] } else { 0.0 };
+                    let shown = if self.case.features.srgb { to_srgb(linear) } else { linear };
+                    rgba.push(byte(shown));
+                }
+                rgba.push(byte(alpha));
+            }
+        }
+        Image { width, height, rgba }
+    }
+}
+
+/// The sRGB transfer function (IEC 61966-2-1) from linear light.
+fn to_srgb(linear: f64) -> f64 {
+    if linear <= 0.0031308 { 12.92 * linear } else { 1.055 * linear.powf(1.0 / 2.4) - 0.055 }
+}
+
+fn byte(value: f64) -> u8 {
+    (value.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+/// Whether a screen triangle's vertices run clockwise as the image shows
+/// them (y down), the front faces `cull` keeps.
+fn clockwise<S: Scalar>(v: &[Vertex<S>]) -> bool {
+    let cross =
+        v[1][0].sub(&v[0][0]).mul(&v[2][1].sub(&v[0][1])).sub(&v[2][0].sub(&v[0][0]).mul(&v[1][1].sub(&v[0][1])));
+    cross < S::int(0)
+}
+
+/// The view volume's planes, in the order clipped: near and far first
+/// (−w ≤ z ≤ w), then −w ≤ x ≤ w and −w ≤ y ≤ w; each as (axis, sign).
+const PLANES: [(usize, i8); 6] = [(2, -1), (2, 1), (0, -1), (0, 1), (1, -1), (1, 1)];
+
+/// Clips a triangle in clip space to the view volume (Sutherland–Hodgman, one
+/// plane at a time), interpolating every component linearly.
+fn clip<S: Scalar>(polygon: Vec<Vertex<S>>) -> Vec<Vertex<S>> {
+    let zero = S::int(0);
+    let mut polygon = polygon;
+    for (axis, sign) in PLANES {
+        // How far inside the plane: w − x for x ≤ w, w + x for −w ≤ x.
+        let distance = |v: &Vertex<S>| if sign > 0 { v[3].sub(&v[axis]) } else { v[3].add(&v[axis]) };
+        let mut out = Vec::new();
+        for i in 0..polygon.len() {
+            let (a, b) = (&polygon[i], &polygon[(i + 1) % polygon.len()]);
+            let (da, db) = (distance(a), distance(b));
+            if da >= zero {
+                out.push(a.clone());
+            }
+            if (da >= zero) != (db >= zero) {
+                // Where the edge a → b crosses the plane, measured from b.
+                let t = db.div(&db.sub(&da));
+                out.push(b.iter().zip(a).map(|(x, y)| x.add(&t.mul(&y.sub(x)))).collect());
+            }
+        }
+        polygon = out;
+        if polygon.len() < 3 {
+            return Vec::new();
+        }
+    }
+    polygon
+}
+
+/// The course's DDA: from `a` to `b` along coordinate `d`, every point where
+/// `d` is an integer, `a_d` included when it is one, `b_d` never.
+struct Dda<S> {
+    p: Vec<S>,
+    s: Vec<S>,
+    end: S,
+    d: usize,
+}
+
+impl<S: Scalar> Dda<S> {
+    fn new(a: &[S], b: &[S], d: usize) -> Option<Dda<S>> {
+        if a[d] == b[d] {
+            return None;
+        }
+        let (a, b) = if a[d] > b[d] { (b, a) } else { (a, b) };
+        let delta = b[d].sub(&a[d]);
+        let s: Vec<S> = a.iter().zip(b).map(|(x, y)| y.sub(x).div(&delta)).collect();
+        let e = a[d].ceil().sub(&a[d]);
+        let p = a.iter().zip(&s).map(|(x, step)| x.add(&e.mul(step))).collect();
+        Some(Dda { p, s, end: b[d].clone(), d })
+    }
+
+    fn live(&self) -> bool {
+        self.p[self.d] < self.end
+    }
+
+    fn step(&mut self) {
+        for (p, s) in self.p.iter_mut().zip(&self.s) {
+            *p = p.add(s);
+        }
+    }
+}
+
+/// How two images differ: pixels over a tolerance, and the largest difference.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ImageDifference {
+    /// Pixels with some channel differing by more than the tolerance.
+    pub pixels: Vec<(u32, u32, [u8; 4], [u8; 4])>,
+    /// The largest difference of any channel.
+    pub largest: u8,
+}
+
+/// Compares two images channel by channel; `None` when their sizes differ.
+pub fn compare_images(ours: &Image, theirs: &Image, tolerance: u8) -> Option<ImageDifference> {
+    if (ours.width, ours.height) != (theirs.width, theirs.height) {
+        return None;
+    }
+    let mut pixels = Vec::new();
+    let mut largest = 0;
+    for y in 0..ours.height {
+        for x in 0..ours.width {
+            let (a, b) = (ours.pixel(x, y), theirs.pixel(x, y));
+            let worst = a.iter().zip(&b).map(|(p, q)| p.abs_diff(*q)).max().unwrap_or(0);
+            largest = largest.max(worst);
+            if worst > tolerance {
+                pixels.push((x, y, a, b));
+            }
+        }
+    }
+    Some(ImageDifference { pixels, largest })
+}
+
+/// Why a sample came out differently in the two arithmetics.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Reason {
+    /// A triangle covers the sample in one arithmetic and not the other,
+    /// because its span on the sample's row ends on the other side of it.
+    Span {
+        /// The triangle.
+        primitive: Primitive,
+        /// Its span on the row in the course's floats (`None`: no span).
+        course: Option<(String, String)>,
+        /// Its span on the row exactly.
+        exact: Option<(String, String)>,
+    },
+    /// Both arithmetics cover the sample with the same primitives; the depth
+    /// test chose differently (two depths equal or within rounding).
+    Depth {
+        /// What the course's floats kept.
+        course: Option<Primitive>,
+        /// What exact arithmetic kept.
+        exact: Option<Primitive>,
+    },
+}
+
+/// One sample whose last writer differs between the two arithmetics.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CellDifference {
+    /// Sample column (pixel column × fsaa level + sub-sample).
+    pub x: u32,
+    /// Sample row, from the top.
+    pub y: u32,
+    /// The pixel it belongs to.
+    pub pixel: (u32, u32),
+    /// Why.
+    pub reason: Reason,
+}
+
+/// The samples whose last writer differs between a run in the course's
+/// floats and one in exact arithmetic of the same case, each with its reason.
+pub fn differences(course: &Comparison, exact: &Comparison) -> Vec<CellDifference> {
+    let width = (course.image.width * course.level) as usize;
+    let mut out = Vec::new();
+    for (index, (&a, &b)) in course.owners.iter().zip(&exact.owners).enumerate() {
+        if a == b {
+            continue;
+        }
+        let (x, y) = ((index % width) as i64, (index / width) as i64);
+        let covers =
+            |run: &Comparison, p: u32| run.spans.get(&(p, y)).is_some_and(|spans| spans.iter().any(|s| s.covers(x)));
+        let span = |run: &Comparison, p: u32| {
+            run.spans
+                .get(&(p, y))
+                .and_then(|spans| spans.iter().find(|s| s.covers(x)).or(spans.first()))
+                .map(|s| (s.left.clone(), s.right.clone()))
+        };
+        let disputed = [a, b].into_iter().filter(|&p| p != 0).find(|&p| covers(course, p) != covers(exact, p));
+        let primitive = |run: &Comparison, p: u32| (p != 0).then(|| run.primitives[p as usize - 1].clone());
+        let reason = match disputed {
+            Some(p) => Reason::Span {
+                primitive: primitive(course, p).expect("nonzero"),
+                course: span(course, p),
+                exact: span(exact, p),
+            },
+            None => Reason::Depth { course: primitive(course, a), exact: primitive(exact, b) },
+        };
+        let level = i64::from(course.level);
+        out.push(CellDifference { x: x as u32, y: y as u32, pixel: ((x / level) as u32, (y / level) as u32), reason });
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exact_decimals_read_as_written() {
+        let q = |n: i64, d: i64| BigRational::new(BigInt::from(n), BigInt::from(d));
+        assert_eq!(exact_decimal("0.6934"), q(6934, 10000));
+        assert_eq!(exact_decimal("-.5"), q(-1, 2));
+        assert_eq!(exact_decimal("1e-3"), q(1, 1000));
+        assert_eq!(exact_decimal("+2.5E1"), q(25, 1));
+        assert_eq!(exact_decimal("-0.0000"), q(0, 1));
+    }
+
+    #[test]
+    fn dda_includes_the_first_integer_and_never_the_end() {
+        let points = |a: f64, b: f64| {
+            let mut dda = Dda::new(&[a], &[b], 0).unwrap();
+            let mut out = Vec::new();
+            while dda.live() {
+                out.push(dda.p[0]);
+                dda.step();
+            }
+            out
+        };
+        assert_eq!(points(2.0, 5.0), vec![2.0, 3.0, 4.0]);
+        assert_eq!(points(1.5, 4.0), vec![2.0, 3.0]);
+        assert_eq!(points(4.0, 1.5), vec![2.0, 3.0]);
+    }
+
+    #[test]
+    fn srgb_transfer_matches_the_standard() {
+        assert_eq!(byte(to_srgb(0.5)), 188);
+        assert_eq!(byte(to_srgb(0.0)), 0);
+        assert_eq!(byte(to_srgb(1.0)), 255);
+        assert_eq!(byte(to_srgb(0.002)), 7);
+    }
+}
