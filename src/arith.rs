@@ -105,7 +105,7 @@ pub fn check_supported(scene: &Scene, arith: Arith) -> Result<(), Error> {
             "--arith {arith} simulates the plain algorithm with the book's rules; this scene asks for other rules or per-pixel effects (use --arith exact)"
         )));
     }
-    if scene.depth_test.equal_passes() {
+    if scene.depth_test.equal_passes() || !scene.depth_test.compares() {
         return Err(Error::Usage(format!(
             "--arith {arith} simulates the depth tests greater and less; this scene asks for {} (use --arith exact)",
             scene.depth_test.name()

@@ -67,12 +67,24 @@ pub enum DepthTest {
     /// choice for multi-pass drawing): the later polygon keeps the pixel.
     #[serde(rename = "less-equal")]
     LessEqual,
+    /// Every fragment passes (GL's `GL_ALWAYS`): the z-buffer is written but
+    /// never consulted, so the last polygon drawn wins, as with no z-buffer.
+    /// Cleared as `greater`.
+    Always,
+    /// No fragment passes (GL's `GL_NEVER`): nothing is drawn.
+    Never,
 }
 
 impl DepthTest {
-    /// Whether a larger z is nearer the viewer (`greater`, `greater-equal`).
+    /// Whether a larger z is nearer the viewer (`greater`, `greater-equal`;
+    /// `always` and `never`, which compare nothing, are cleared as `greater`).
     pub fn larger_is_nearer(self) -> bool {
-        matches!(self, DepthTest::Greater | DepthTest::GreaterEqual)
+        matches!(self, DepthTest::Greater | DepthTest::GreaterEqual | DepthTest::Always | DepthTest::Never)
+    }
+
+    /// Whether the test compares depths at all (not `always` or `never`).
+    pub fn compares(self) -> bool {
+        !matches!(self, DepthTest::Always | DepthTest::Never)
     }
 
     /// Whether an equal depth passes (`greater-equal`, `less-equal`).
@@ -98,16 +110,43 @@ impl DepthTest {
             DepthTest::Less => ord == Ordering::Less,
             DepthTest::GreaterEqual => ord != Ordering::Less,
             DepthTest::LessEqual => ord != Ordering::Greater,
+            DepthTest::Always => true,
+            DepthTest::Never => false,
         }
     }
 
-    /// The comparison operator as printed: `>`, `<`, `≥` or `≤`.
+    /// The comparison operator as printed: `>`, `<`, `≥` or `≤`; for
+    /// `always` and `never`, which compare nothing, the word itself (use
+    /// [`DepthTest::rule_text`] and [`DepthTest::outcome_text`] in sentences).
     pub fn symbol(self) -> &'static str {
         match self {
             DepthTest::Greater => ">",
             DepthTest::Less => "<",
             DepthTest::GreaterEqual => "≥",
             DepthTest::LessEqual => "≤",
+            DepthTest::Always => "always",
+            DepthTest::Never => "never",
+        }
+    }
+
+    /// The rule in a heading's words: `z > stored`, or `every fragment
+    /// passes`, `no fragment passes`.
+    pub fn rule_text(self) -> String {
+        match self {
+            DepthTest::Always => "every fragment passes".to_string(),
+            DepthTest::Never => "no fragment passes".to_string(),
+            other => format!("z {} stored", other.symbol()),
+        }
+    }
+
+    /// A test's outcome in words, for `z` against `stored`: `43/4 > 10
+    /// stored`, `43/4 is not > 10 stored`, or for the tests that compare
+    /// nothing `43/4 (always passes; 10 stored)`.
+    pub fn outcome_text(self, z: &str, stored: &str, passed: bool) -> String {
+        match (self, passed) {
+            (DepthTest::Always | DepthTest::Never, _) => format!("{z} ({} passes; {stored} stored)", self.symbol()),
+            (_, true) => format!("{z} {} {stored} stored", self.symbol()),
+            (_, false) => format!("{z} is not {} {stored} stored", self.symbol()),
         }
     }
 
@@ -118,6 +157,8 @@ impl DepthTest {
             DepthTest::Less => "less",
             DepthTest::GreaterEqual => "greater-equal",
             DepthTest::LessEqual => "less-equal",
+            DepthTest::Always => "always",
+            DepthTest::Never => "never",
         }
     }
 
@@ -466,5 +507,18 @@ mod tests {
                 stepper.advance();
             }
         }
+    }
+
+    #[test]
+    fn always_passes_and_never_does_not_whatever_is_stored() {
+        for (z, stored) in
+            [(Depth::from_fraction(41, 4), Stored::Level(10)), (Depth::from_fraction(1, 1), Stored::Level(15))]
+        {
+            assert!(DepthTest::Always.passes(z, stored));
+            assert!(!DepthTest::Never.passes(z, stored));
+        }
+        assert_eq!(DepthTest::Always.outcome_text("43/4", "10", true), "43/4 (always passes; 10 stored)");
+        assert_eq!(DepthTest::Greater.outcome_text("43/4", "11", false), "43/4 is not > 11 stored");
+        assert_eq!(DepthTest::Never.rule_text(), "no fragment passes");
     }
 }

@@ -93,7 +93,6 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
         ),
         None => depth_text(scene, event.compared.value()),
     };
-    let op = scene.depth_test.symbol();
     match event.outcome {
         Outcome::Written => {
             let polygon = &scene.polygons[event.index];
@@ -110,12 +109,15 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
                 None => event.frame_after.to_string(),
             };
             format!(
-                "z = {z} {op} {} stored, so {} and the framebuffer gets {frame}",
-                event.stored_before,
+                "z = {}, so {} and the framebuffer gets {frame}",
+                scene.depth_test.outcome_text(&z, &event.stored_before.to_string(), true),
                 stored_text(scene, event.compared)
             )
         }
-        Outcome::Hidden => format!("z = {z} is not {op} {} stored: hidden, nothing changes", event.stored_before),
+        Outcome::Hidden => format!(
+            "z = {}: hidden, nothing changes",
+            scene.depth_test.outcome_text(&z, &event.stored_before.to_string(), false)
+        ),
         Outcome::OutsideDepthRange => {
             let (front, rear) = scene.depth_range.unwrap_or((Q::from_integer(0), Q::from_integer(0)));
             format!(
@@ -127,8 +129,8 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
         Outcome::BeyondSection => {
             let section = scene.effects.section.map_or(String::new(), |z| depth_text(scene, z));
             format!(
-                "z = {z} {op} {} stored, but the cross-section keeps only z {} {section}: not written",
-                event.stored_before,
+                "z = {}, but the cross-section keeps only z {} {section}: not written",
+                scene.depth_test.outcome_text(&z, &event.stored_before.to_string(), true),
                 scene.depth_test.section_symbol()
             )
         }
@@ -152,12 +154,15 @@ pub fn entry_text(scene: &Scene, x: u32, y: u32, entry: &PixelHistoryEntry) -> S
         return text;
     }
     let centre = Q::new(2 * i128::from(x) + 1, 2);
+    // A centre exactly on the boundary: say which rule decided it.
+    let tie = crate::tie::tie_text(scene.rules, &scene.polygons[entry.index].vertices, x, y)
+        .map_or(String::new(), |t| format!(" ({t})"));
     match (&entry.scanline, &entry.pixel) {
-        (None, _) => format!("its y range does not reach the scanline {}", scanline_text(y)),
+        (None, _) => format!("its y range does not reach the scanline {}{tie}", scanline_text(y)),
         (Some(scanline), Some(pixel)) => {
             let span = scanline.span_covering(x).map_or(String::new(), |s| format!(" {}", span_text(s)));
             format!(
-                "on the scanline {} it spans{span}, which holds the centre x = {}; {}",
+                "on the scanline {} it spans{span}, which holds the centre x = {}{tie}; {}",
                 scanline_text(y),
                 exact_and_decimal(centre),
                 pixel_reason(scene, pixel)
@@ -165,7 +170,7 @@ pub fn entry_text(scene: &Scene, x: u32, y: u32, entry: &PixelHistoryEntry) -> S
         }
         (Some(scanline), None) => {
             format!(
-                "on the scanline {} {}; the centre x = {} is not inside",
+                "on the scanline {} {}; the centre x = {} is not inside{tie}",
                 scanline_text(y),
                 spans_of(scanline, "it"),
                 exact_and_decimal(centre)
@@ -197,10 +202,9 @@ pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistor
     if let Some((index, pixel)) = last_write {
         let z = depth_text(scene, pixel.compared.value());
         let mut text = format!(
-            "{} covers ({x}, {y}): z = {z} {} {} stored, so {}",
+            "{} covers ({x}, {y}): z = {}, so {}",
             polygon_name(scene, index),
-            scene.depth_test.symbol(),
-            pixel.stored_before,
+            scene.depth_test.outcome_text(&z, &pixel.stored_before.to_string(), true),
             result(&pixel)
         );
         let later: Vec<String> = history

@@ -37,14 +37,14 @@ use crate::trace::Fate;
 pub fn scene_header(scene: &Scene, path: &str) -> String {
     let effects = scene.effects.names();
     format!(
-        "scene {path}: {}×{} pixels, framebuffer {} bits, z-buffer {} bits (0…{}), depth test {} (z {} stored), cleared to {}\nstages: {}\neffects: {}\n",
+        "scene {path}: {}×{} pixels, framebuffer {} bits, z-buffer {} bits (0…{}), depth test {} ({}), cleared to {}\nstages: {}\neffects: {}\n",
         scene.width,
         scene.height,
         scene.frame_bits,
         scene.depth_bits,
         scene.depth_max(),
         scene.depth_test.name(),
-        scene.depth_test.symbol(),
+        scene.depth_test.rule_text(),
         scene.clear_depth,
         stages(scene).join(" → "),
         if effects.is_empty() { "none".to_string() } else { effects.join(", ") },

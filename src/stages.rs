@@ -172,7 +172,7 @@ pub fn describe(scene: &Scene) -> Vec<String> {
     if scene.effects.perspective.is_some_and(|p| p.store_w) {
         stages.push("w-buffer (eye-space depth z = d·z'/(d + z'))".to_string());
     }
-    stages.push(format!("depth test (z {} stored)", scene.depth_test.symbol()));
+    stages.push(format!("depth test ({})", scene.depth_test.rule_text()));
     if let Some(section) = scene.effects.section {
         stages.push(format!("cross-section (z {} {})", scene.depth_test.section_symbol(), fraction(section)));
     }

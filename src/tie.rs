@@ -166,3 +166,70 @@ pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
     }
     out
 }
+
+/// Which of a rule set's choices decides a centre on this kind of boundary,
+/// in words: "the book's columns (centres in [x_l, x_r])", ….
+fn deciding_rule(rules: Rules, boundary: Boundary) -> &'static str {
+    use crate::rules::{ColumnRule, RowRule};
+    match boundary {
+        Boundary::LeftEdge | Boundary::RightEdge => match rules.columns {
+            ColumnRule::CentreInside => "the book's column rule (centres in [x_l, x_r], ends included)",
+            ColumnRule::CellHolds => "BUET's column rule (from the cell holding x_a to the one holding x_b)",
+            ColumnRule::HalfOpen => "the top-left rule (centres in [x_l, x_r): left edges in, right edges out)",
+        },
+        Boundary::TopEdge | Boundary::BottomEdge | Boundary::Vertex => match rules.rows {
+            RowRule::HalfOpen => "the book's half-interval rule (an edge counts for min ≤ y < max)",
+            RowRule::Closed => "BUET's closed rows (min ≤ y ≤ max)",
+            RowRule::TopLeft => "the top-left rule (an edge counts for min < y ≤ max: top edges in, bottom edges out)",
+        },
+    }
+}
+
+/// One sentence on a centre exactly on a polygon's boundary and the rule
+/// that decides it, or `None` when pixel (x, y)'s centre is not on it.
+pub fn tie_text(rules: Rules, vertices: &[[Q; 3]], x: u32, y: u32) -> Option<String> {
+    let (boundary, a, b) = boundary_at(vertices, x, y)?;
+    let point = |p: [Q; 2]| format!("({}, {})", crate::exact::fraction(p[0]), crate::exact::fraction(p[1]));
+    Some(match rule_covers(rules, boundary) {
+        None => format!(
+            "the centre is exactly the vertex {}: the edges meeting there decide, by {}",
+            point(a),
+            deciding_rule(rules, boundary)
+        ),
+        Some(covers) => format!(
+            "the centre lies exactly on the {} from {} to {}, which {} {}",
+            boundary.words(),
+            point(a),
+            point(b),
+            deciding_rule(rules, boundary),
+            if covers { "includes" } else { "leaves out" }
+        ),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rules::Preset;
+
+    fn triangle() -> Vec<[Q; 3]> {
+        // (1/2, 1/2), (13/2, 1/2), (13/2, 13/2): centres on its right and bottom edges.
+        let q = |n: i128| Q::new(n, 2);
+        vec![[q(1), q(1), q(10)], [q(13), q(1), q(10)], [q(13), q(13), q(10)]]
+    }
+
+    #[test]
+    fn ties_are_named_with_the_rule_that_decides_them() {
+        let gpu = Rules::preset(Preset::Gpu);
+        assert_eq!(
+            tie_text(gpu, &triangle(), 6, 3).unwrap(),
+            "the centre lies exactly on the right edge from (13/2, 1/2) to (13/2, 13/2), which the top-left rule (centres in [x_l, x_r): left edges in, right edges out) leaves out"
+        );
+        assert_eq!(
+            tie_text(Rules::default(), &triangle(), 3, 0).unwrap(),
+            "the centre lies exactly on the bottom edge from (1/2, 1/2) to (13/2, 1/2), which the book's half-interval rule (an edge counts for min ≤ y < max) includes"
+        );
+        assert!(tie_text(gpu, &triangle(), 4, 2).is_none(), "an inside centre is no tie");
+        assert!(tie_text(gpu, &triangle(), 0, 0).unwrap().starts_with("the centre is exactly the vertex (1/2, 1/2)"));
+    }
+}

@@ -62,12 +62,12 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     simulation.finish(&mut watcher);
     let centre = |v: u32| exact_and_decimal(Q::new(2 * i128::from(v) + 1, 2));
     let mut text = format!(
-        "pixel ({x}, {y}) of {}: centre ({}, {}), depth test {} (z {} stored)\n",
+        "pixel ({x}, {y}) of {}: centre ({}, {}), depth test {} ({})\n",
         args.scene.display(),
         centre(x),
         centre(y),
         scene.depth_test.name(),
-        scene.depth_test.symbol()
+        scene.depth_test.rule_text()
     );
     if let Some(section) = scene.effects.section {
         text.push_str(&format!(

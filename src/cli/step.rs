@@ -604,6 +604,12 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
     if !record.pixels.is_empty() {
         text.push_str(&format!("{}\n", pixel_table(scene, &record.pixels, color)));
     }
+    // Centres exactly on the polygon's boundary along this scanline, and the rule deciding each.
+    for x in 0..scene.width {
+        if let Some(tie) = zsim::tie::tie_text(scene.rules, &scene.polygons[p].vertices, x, record.row) {
+            text.push_str(&format!("tie at x = {x}: {tie}\n"));
+        }
+    }
     if let zsim::arith::Arith::Fixed(bits) = tracer.arith {
         text.push_str(&format!(
             "in fixed:{bits} arithmetic the vertices are first snapped to multiples of 1/{}, then these exact rules run on the snapped polygon (`zsim run --arith fixed:{bits}` shows the result)\n",
@@ -666,7 +672,8 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
     table
         .load_style(presets::ASCII_MARKDOWN)
         .set_header(["x", "centre", "z", "≈ z", "step", "stored", "test", "after", "frame"]);
-    let op = scene.depth_test.symbol();
+    let depth_test = scene.depth_test;
+    let op = depth_test.symbol();
     for (i, pixel) in pixels.iter().enumerate() {
         let z = pixel.depth.value();
         let step = match i.checked_sub(1).map(|j| pixels[j]) {
@@ -676,7 +683,11 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
             }
             _ => "start".to_string(),
         };
+        // `always` and `never` compare nothing: they say so instead of a symbol.
+        let uncompared = |passed| depth_test.outcome_text(&fraction(z), &pixel.stored_before.to_string(), passed);
         let test = match pixel.outcome {
+            Outcome::Written if !depth_test.compares() => format!("{}: written", uncompared(true)),
+            Outcome::Hidden if !depth_test.compares() => format!("{}: hidden", uncompared(false)),
             Outcome::Written => format!("{} {op} {}: written", fraction(z), pixel.stored_before),
             Outcome::Hidden => format!("{} {op} {}: no, hidden", fraction(z), pixel.stored_before),
             Outcome::BeyondSection => format!("{op} {}, beyond the section", pixel.stored_before),

@@ -404,7 +404,11 @@ impl<'t, 's> App<'t, 's> {
         lines.push(Line::from(""));
         let Some(done) = self.pixel else {
             // Scanline steps: the table, one line a pixel: x, z, the test, what is stored.
-            let op = scene.depth_test.symbol();
+            // `always` and `never` compare nothing: say so instead of a symbol.
+            let (op, compares) = match scene.depth_test.compares() {
+                true => (scene.depth_test.symbol().to_string(), true),
+                false => (format!("{} passes, ", scene.depth_test.symbol()), false),
+            };
             let zs: Vec<String> = record.pixels.iter().map(|e| exact_and_decimal(e.depth.value())).collect();
             let width = zs.iter().map(|z| z.chars().count()).max().unwrap_or(1);
             lines.push(Line::styled(
@@ -414,7 +418,7 @@ impl<'t, 's> App<'t, 's> {
             for (pixel, z) in record.pixels.iter().zip(&zs) {
                 let (test, verdict, style) = match pixel.outcome {
                     Outcome::Written => ("", format!("{} ({})", pixel.stored_after, pixel.frame_after), Color::Green),
-                    _ => ("not ", "hidden".to_string(), Color::Red),
+                    _ => (if compares { "not " } else { "" }, "hidden".to_string(), Color::Red),
                 };
                 let line = format!("{:>3} {z:<width$} {test}{op}{} → {verdict}", pixel.x, pixel.stored_before);
                 lines.push(Line::styled(line, Style::new().fg(style)));

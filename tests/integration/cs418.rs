@@ -155,29 +155,25 @@ fn points1_matches_the_reference_outside_the_missing_textures_sprites() {
 fn run_writes_the_named_png_and_compares_it() {
     let Some(dir) = cases() else { return };
     let out_dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cs418-gray");
-    let out = zsim(&[
-        "cs418",
-        "run",
-        dir.join("rast-gray.txt").to_str().unwrap(),
-        "-o",
-        out_dir.to_str().unwrap(),
-        "--compare",
-        dir.join("rast-gray.png").to_str().unwrap(),
-    ]);
+    let gray_against = |png: &str| {
+        let (case, reference) = (dir.join("rast-gray.txt"), dir.join(png));
+        zsim(&[
+            "cs418",
+            "run",
+            case.to_str().unwrap(),
+            "-o",
+            out_dir.to_str().unwrap(),
+            "--compare",
+            reference.to_str().unwrap(),
+        ])
+    };
+    let out = gray_against("rast-gray.png");
     assert_eq!(out.code, 0, "{}", out.stderr);
     assert!(out.stdout.contains("every channel of every pixel within 1"), "{}", out.stdout);
     let written = Image::from_png(&std::fs::read(out_dir.join("gray.png")).unwrap()).unwrap();
     assert_eq!((written.width, written.height), (20, 30));
     // A wrong answer exits 1 and lists the pixels.
-    let out = zsim(&[
-        "cs418",
-        "run",
-        dir.join("rast-gray.txt").to_str().unwrap(),
-        "-o",
-        out_dir.to_str().unwrap(),
-        "--compare",
-        dir.join("rast-smoothcolor.png").to_str().unwrap(),
-    ]);
+    let out = gray_against("rast-smoothcolor.png");
     assert_eq!(out.code, 1);
     assert!(out.stdout.contains("pixels differ by more than 1"), "{}", out.stdout);
 }

@@ -29,7 +29,7 @@ fn scene_json(polygons: &[Vec<(i64, i64, i64)>]) -> String {
     scene_json_with_test(polygons, "greater")
 }
 
-/// The scene with the depth test `test` (`greater`, `less`, `greater-equal`, `less-equal`).
+/// The scene with the depth test `test` (`greater`, `less`, `greater-equal`, `less-equal`, `always`, `never`).
 fn scene_json_with_test(polygons: &[Vec<(i64, i64, i64)>], test: &str) -> String {
     let list: Vec<String> = polygons
         .iter()
@@ -179,7 +179,7 @@ proptest! {
         polygons in prop::collection::vec(planar_polygon(), 1..5),
         tile in 1u32..6,
         threads in 1usize..5,
-        test in prop::sample::select(vec!["greater", "less", "greater-equal", "less-equal"]),
+        test in prop::sample::select(vec!["greater", "less", "greater-equal", "less-equal", "always", "never"]),
     ) {
         // Every depth test: the unobserved loop's branch-free comparison against `DepthTest::passes`.
         let json = scene_json_with_test(&polygons, test);
