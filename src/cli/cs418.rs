@@ -37,8 +37,9 @@ enum Cs418Command {
         #[arg(long, default_value_t = 1)]
         tolerance: u8,
     },
-    /// Not written yet: will print the case's triangles as a zsim scene
-    /// (gpu rules, the course's samples on zsim's pixel centres).
+    /// Print what the case draws as a zsim scene (gpu rules, the course's
+    /// samples on zsim's pixel centres, each polygon's value its primitive's
+    /// number), for run, step, explain, check and figure.
     Import {
         /// The case file.
         case: PathBuf,
@@ -60,12 +61,9 @@ pub fn run(args: &Cs418Args, out: &mut dyn Write) -> Result<Finish, Failure> {
             run_case(case, output, *arith, compare.as_deref(), *tolerance, out)
         }
         Cs418Command::Import { case } => {
-            load(case)?;
-            Err(Error::Usage(
-                "zsim cs418 import is not written yet: run the case with zsim cs418 run (see the README, \"A CS 418 case, end to end\")"
-                    .into(),
-            )
-            .into())
+            let scene = zsim::cs418::import::scene_json(&load(case)?).map_err(|e| located(case, e))?;
+            emit(out, &scene)?;
+            Ok(Finish::Ok)
         }
     }
 }

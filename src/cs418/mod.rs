@@ -28,6 +28,7 @@
 //!   correct); `fsaa n` renders n×n samples per pixel and averages them,
 //!   colours weighted by alpha.
 
+pub mod import;
 mod raster;
 
 use std::fmt;

@@ -251,6 +251,28 @@ pub struct Comparison {
     owners: Vec<u32>,
     /// Each triangle's spans by (primitive, sample row).
     spans: BTreeMap<(u32, i64), Vec<Span>>,
+    /// What was drawn, as polygons in zsim's coordinates (see [`Shape`]).
+    pub shapes: Vec<Shape>,
+}
+
+/// A triangle (after clipping and culling) or a point's square as drawn, in
+/// zsim's coordinates on the sample raster: x + 1/2 and height − y − 1/2, so
+/// that the course's sample at integer (x, y) is zsim's centre of column x,
+/// row height − 1 − y, and the picture is not flipped; depth z/w.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Shape {
+    /// The primitive (1-based index into `primitives`).
+    pub primitive: u32,
+    /// Its corners as text (exact fractions in exact arithmetic).
+    pub vertices: Vec<[String; 3]>,
+}
+
+impl Comparison {
+    /// The primitive sample (x, y) shows last (1-based into `primitives`), 0
+    /// for none; x and y on the sample raster, y from the top.
+    pub fn owner(&self, x: u32, y: u32) -> u32 {
+        self.owners[(y * self.image.width * self.level + x) as usize]
+    }
 }
 
 /// Runs a case in an arithmetic.
@@ -271,6 +293,7 @@ struct Pipeline<'a, S> {
     owners: Vec<u32>,
     primitives: Vec<Primitive>,
     spans: BTreeMap<(u32, i64), Vec<Span>>,
+    shapes: Vec<Shape>,
     positions: Vec<[S; 4]>,
     colours: Vec<[S; 4]>,
     elements: Vec<usize>,
@@ -292,6 +315,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             owners: vec![0; width * height],
             primitives: Vec::new(),
             spans: BTreeMap::new(),
+            shapes: Vec::new(),
             positions: Vec::new(),
             colours: Vec::new(),
             elements: Vec::new(),
@@ -308,6 +332,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             primitives: pipeline.primitives,
             owners: pipeline.owners,
             spans: pipeline.spans,
+            shapes: pipeline.shapes,
         })
     }
 
@@ -415,6 +440,10 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 if self.case.features.cull && !clockwise(&screen) {
                     continue;
                 }
+                self.record_shape(
+                    primitive,
+                    screen.iter().map(|v| [v[0].clone(), v[1].clone(), v[2].clone()]).collect(),
+                );
                 self.scanline(&screen, primitive);
             }
         }
@@ -487,6 +516,9 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         let (x0, x1) = (screen[0].sub(&half), screen[0].add(&half));
         let (y0, y1) = (screen[1].sub(&half), screen[1].add(&half));
         let colour: Vec<S> = vertex[4..COMPONENTS].to_vec();
+        let z = screen[2].clone();
+        let corners = [(&x0, &y0), (&x1, &y0), (&x1, &y1), (&x0, &y1)];
+        self.record_shape(primitive, corners.iter().map(|(x, y)| [(*x).clone(), (*y).clone(), z.clone()]).collect());
         let mut y = y0.ceil();
         while y < y1 {
             let mut x = x0.ceil();
@@ -497,6 +529,15 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             }
             y = y.add(&S::int(1));
         }
+    }
+
+    /// Keeps a drawn shape in zsim's coordinates (see [`Shape`]).
+    fn record_shape(&mut self, primitive: u32, corners: Vec<[S; 3]>) {
+        let half = S::int(1).div(&S::int(2));
+        let height = S::int(self.height as i64);
+        let vertices =
+            corners.iter().map(|[x, y, z]| [x.add(&half).text(), height.sub(y).sub(&half).text(), z.text()]).collect();
+        self.shapes.push(Shape { primitive, vertices });
     }
 
     /// One fragment: bounds, the depth test, then "over" onto the sample.
