@@ -58,16 +58,35 @@ pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -
     Ok(rows)
 }
 
+/// Another way an answer may have been written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Misreading {
+    /// The bottom row first (upside down).
+    BottomRowFirst,
+    /// Column by column: rows and columns swapped.
+    Transposed,
+}
+
+impl Misreading {
+    /// How it was written, in words: `bottom row first`.
+    pub fn words(self) -> String {
+        match self {
+            Misreading::BottomRowFirst => words!("misreading-upside-down"),
+            Misreading::Transposed => words!("misreading-transposed"),
+        }
+    }
+}
+
 /// When an answer that differs would match, or nearly, read another way:
 /// bottom row first (upside down) or with rows and columns swapped. Returns
 /// how it was written and how many cells differ when read that way.
-pub fn misreading(answer: &Matrix, expected: &Matrix) -> Option<(&'static str, usize)> {
+pub fn misreading(answer: &Matrix, expected: &Matrix) -> Option<(Misreading, usize)> {
     let differing = compare(answer, expected).len();
     let upside_down: Matrix = answer.iter().rev().cloned().collect();
-    let mut readings = vec![("bottom row first", compare(&upside_down, expected).len())];
+    let mut readings = vec![(Misreading::BottomRowFirst, compare(&upside_down, expected).len())];
     if answer.len() == answer.first().map_or(0, Vec::len) {
         let transposed: Matrix = (0..answer.len()).map(|c| answer.iter().map(|row| row[c]).collect()).collect();
-        readings.push(("with rows and columns swapped", compare(&transposed, expected).len()));
+        readings.push((Misreading::Transposed, compare(&transposed, expected).len()));
     }
     // Worth saying when that reading leaves at most a quarter of the differences.
     readings.into_iter().filter(|(_, count)| *count * 4 <= differing).min_by_key(|(_, count)| *count)
@@ -137,11 +156,11 @@ mod tests {
     fn answers_written_upside_down_or_transposed_are_recognised() {
         let expected = vec![vec![1, 1, 0], vec![1, 0, 0], vec![0, 0, 0]];
         let upside_down: Matrix = expected.iter().rev().cloned().collect();
-        assert_eq!(misreading(&upside_down, &expected), Some(("bottom row first", 0)));
+        assert_eq!(misreading(&upside_down, &expected), Some((Misreading::BottomRowFirst, 0)));
         let transposed = vec![vec![1, 1, 0], vec![1, 0, 0], vec![0, 0, 0]];
         let other = vec![vec![0, 1, 1], vec![0, 0, 1], vec![0, 0, 0]];
         let transposed_other: Matrix = (0..3).map(|c| other.iter().map(|row| row[c]).collect()).collect();
-        assert_eq!(misreading(&transposed_other, &other), Some(("with rows and columns swapped", 0)));
+        assert_eq!(misreading(&transposed_other, &other), Some((Misreading::Transposed, 0)));
         // A plain mistake is not a misreading.
         let mut one_wrong = transposed.clone();
         one_wrong[0][0] = 2;

@@ -133,9 +133,9 @@ impl DepthTest {
     /// passes`, `no fragment passes`.
     pub fn rule_text(self) -> String {
         match self {
-            DepthTest::Always => "every fragment passes".to_string(),
-            DepthTest::Never => "no fragment passes".to_string(),
-            other => format!("z {} stored", other.symbol()),
+            DepthTest::Always => words!("rule-always"),
+            DepthTest::Never => words!("rule-never"),
+            other => words!("rule-compared", op = other.symbol()),
         }
     }
 
@@ -144,9 +144,11 @@ impl DepthTest {
     /// nothing `43/4 (always passes; 10 stored)`.
     pub fn outcome_text(self, z: &str, stored: &str, passed: bool) -> String {
         match (self, passed) {
-            (DepthTest::Always | DepthTest::Never, _) => format!("{z} ({} passes; {stored} stored)", self.symbol()),
-            (_, true) => format!("{z} {} {stored} stored", self.symbol()),
-            (_, false) => format!("{z} is not {} {stored} stored", self.symbol()),
+            (DepthTest::Always | DepthTest::Never, _) => {
+                words!("test-uncompared", z = z, test = self.symbol(), stored = stored)
+            }
+            (_, true) => words!("test-passed", z = z, op = self.symbol(), stored = stored),
+            (_, false) => words!("test-failed", z = z, op = self.symbol(), stored = stored),
         }
     }
 

@@ -356,7 +356,7 @@ pub fn fraction(value: Q) -> String {
 pub fn short(value: Q) -> String {
     (0..=4)
         .find(|places| (value * Q::from_integer(10i128.pow(*places))).is_integer())
-        .map_or_else(|| fraction(value), |places| decimal(value, places))
+        .map_or_else(|| fraction(value), |places| crate::words::localize_decimal(decimal(value, places)))
 }
 
 /// The decimal approximation printed beside an exact value: always `places`
@@ -407,7 +407,12 @@ pub fn exact_and_decimal(value: Q) -> String {
 /// The exact value and its decimal with `places` places (`4876543/5000000 ≈
 /// 0.975309`); whole numbers print once.
 pub fn exact_and_places(value: Q, places: u32) -> String {
-    if value.is_integer() { fraction(value) } else { format!("{} ≈ {}", fraction(value), decimal(value, places)) }
+    if value.is_integer() {
+        fraction(value)
+    } else {
+        // The decimal in the reader's convention (10,75 in Russian); the fraction stays as it is.
+        format!("{} ≈ {}", fraction(value), crate::words::localize_decimal(decimal(value, places)))
+    }
 }
 
 #[cfg(test)]

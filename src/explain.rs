@@ -18,11 +18,11 @@ pub enum Buffer {
 }
 
 impl Buffer {
-    /// `framebuffer` or `z-buffer`.
-    pub fn name(self) -> &'static str {
+    /// `framebuffer` or `z-buffer`, in the current language.
+    pub fn name(self) -> String {
         match self {
-            Buffer::Frame => "framebuffer",
-            Buffer::Depth => "z-buffer",
+            Buffer::Frame => words!("buffer-frame"),
+            Buffer::Depth => words!("buffer-depth"),
         }
     }
 }
@@ -38,17 +38,30 @@ pub fn depth_text(scene: &Scene, z: Q) -> String {
 
 /// `polygon 2 "triangle"`.
 pub fn polygon_name(scene: &Scene, index: usize) -> String {
-    format!("polygon {} \"{}\"", index + 1, scene.polygons[index].name)
+    words!("polygon-name", number = index + 1, name = &scene.polygons[index].name)
+}
+
+/// `polygon 2 "triangle"` after "after" (a genitive in some languages).
+pub fn polygon_after(scene: &Scene, index: usize) -> String {
+    words!("polygon-after", number = index + 1, name = &scene.polygons[index].name)
 }
 
 /// `43/4 ≈ 10.75 … 179/6 ≈ 29.83`.
 pub fn span_text(span: &SpanRecord) -> String {
-    format!("{} … {}", exact_and_decimal(span.left), exact_and_decimal(span.right))
+    words!("span", left = exact_and_decimal(span.left), right = exact_and_decimal(span.right))
 }
 
 /// `y = 15.5`: the scanline through row `row`.
 pub fn scanline_text(row: u32) -> String {
-    format!("y = {row}.5")
+    words!("scanline", y = crate::words::localize_decimal(format!("{row}.5")))
+}
+
+/// The direction a polygon's vertices run, in words.
+pub fn winding_text(winding: crate::scene::Winding) -> String {
+    match winding {
+        crate::scene::Winding::Cw => words!("winding-cw"),
+        crate::scene::Winding::Ccw => words!("winding-ccw"),
+    }
 }
 
 /// What is stored for an exact depth, naming the rounding when z is not
@@ -60,18 +73,20 @@ pub fn stored_text(scene: &Scene, depth: Depth) -> String {
             let rounded = depth.rounded();
             let value = depth.value();
             if rounded == i128::from(stored) && value.is_integer() {
-                format!("{stored} is stored")
+                words!("stored-whole", stored = stored)
             } else if rounded == i128::from(stored) {
-                let how = if Q::from_integer(rounded) > value { "up " } else { "" };
-                format!("{stored} is stored ({} rounds {how}to {stored})", crate::exact::short(value))
+                let key = if Q::from_integer(rounded) > value { "stored-rounded-up" } else { "stored-rounded" };
+                words!(key, stored = stored, value = crate::exact::short(value))
             } else {
-                format!(
-                    "{stored} is stored ({} rounds to {rounded}, saturated to {stored})",
-                    exact_and_decimal(depth.value())
+                words!(
+                    "stored-saturated",
+                    stored = stored,
+                    value = exact_and_decimal(depth.value()),
+                    rounded = rounded.to_string()
                 )
             }
         }
-        exact @ Stored::Exact(_) => format!("{exact} is stored (exactly)"),
+        exact @ Stored::Exact(_) => words!("stored-exact", stored = exact.to_string()),
     }
 }
 
@@ -79,59 +94,52 @@ pub fn stored_text(scene: &Scene, depth: Depth) -> String {
 /// `z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored and the framebuffer gets 2`.
 pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
     let z = match scene.effects.perspective {
-        Some(perspective) if perspective.store_w => format!(
-            "{} (the w-buffer's eye-space depth; projected z' = {})",
-            depth_text(scene, event.compared.value()),
-            depth_text(scene, event.depth.value())
+        Some(perspective) if perspective.store_w => words!(
+            "z-w-buffer",
+            w = depth_text(scene, event.compared.value()),
+            z = depth_text(scene, event.depth.value())
         ),
-        Some(perspective) => format!(
-            "{} (projected z'; eye-space w = {})",
-            depth_text(scene, event.depth.value()),
-            perspective
-                .eye_value(event.depth.value())
-                .map_or_else(|| "(beyond 128-bit exact arithmetic)".to_string(), |w| depth_text(scene, w))
+        Some(perspective) => words!(
+            "z-projected",
+            z = depth_text(scene, event.depth.value()),
+            w = perspective.eye_value(event.depth.value()).map_or_else(|| words!("z-beyond"), |w| depth_text(scene, w))
         ),
         None => depth_text(scene, event.compared.value()),
     };
+    let stored_before = event.stored_before.to_string();
     match event.outcome {
         Outcome::Written => {
             let polygon = &scene.polygons[event.index];
             let frame = match polygon.opacity {
-                Some(alpha) => format!(
-                    "{} (opacity {}: {}·{} + {}·{} under, rounded half up)",
-                    event.frame_after,
-                    crate::exact::fraction(alpha),
-                    crate::exact::fraction(alpha),
-                    polygon.value,
-                    crate::exact::fraction(Q::from_integer(1) - alpha),
-                    event.frame_before
+                Some(alpha) => words!(
+                    "frame-blended",
+                    frame = event.frame_after,
+                    alpha = crate::exact::fraction(alpha),
+                    value = polygon.value,
+                    rest = crate::exact::fraction(Q::from_integer(1) - alpha),
+                    under = event.frame_before
                 ),
                 None => event.frame_after.to_string(),
             };
-            format!(
-                "z = {}, so {} and the framebuffer gets {frame}",
-                scene.depth_test.outcome_text(&z, &event.stored_before.to_string(), true),
-                stored_text(scene, event.compared)
+            words!(
+                "reason-written",
+                test = scene.depth_test.outcome_text(&z, &stored_before, true),
+                stored = stored_text(scene, event.compared),
+                frame = frame
             )
         }
-        Outcome::Hidden => format!(
-            "z = {}: hidden, nothing changes",
-            scene.depth_test.outcome_text(&z, &event.stored_before.to_string(), false)
-        ),
+        Outcome::Hidden => words!("reason-hidden", test = scene.depth_test.outcome_text(&z, &stored_before, false)),
         Outcome::OutsideDepthRange => {
             let (front, rear) = scene.depth_range.unwrap_or((Q::from_integer(0), Q::from_integer(0)));
-            format!(
-                "z = {z} is outside the depth range {} … {}: discarded",
-                depth_text(scene, front),
-                depth_text(scene, rear)
-            )
+            words!("reason-outside-range", z = z, front = depth_text(scene, front), rear = depth_text(scene, rear))
         }
         Outcome::BeyondSection => {
             let section = scene.effects.section.map_or(String::new(), |z| depth_text(scene, z));
-            format!(
-                "z = {}, but the cross-section keeps only z {} {section}: not written",
-                scene.depth_test.outcome_text(&z, &event.stored_before.to_string(), true),
-                scene.depth_test.section_symbol()
+            words!(
+                "reason-beyond-section",
+                test = scene.depth_test.outcome_text(&z, &stored_before, true),
+                op = scene.depth_test.section_symbol(),
+                section = section
             )
         }
     }
@@ -141,10 +149,10 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
 pub fn fate_text(fate: Fate) -> Option<String> {
     match fate {
         Fate::Drawn => None,
-        Fate::Culled(winding) => Some(format!("culled: its vertices run {winding}, so it is not drawn")),
-        Fate::EdgeOn => Some("seen edge-on (c = 0): it covers no pixel".to_string()),
-        Fate::Degenerate => Some("degenerate (Newell's normal is zero): it covers no pixel".to_string()),
-        Fate::ClippedAway => Some("every vertex lies behind the near plane: clipped away, not drawn".to_string()),
+        Fate::Culled(winding) => Some(words!("fate-culled", winding = winding_text(winding))),
+        Fate::EdgeOn => Some(words!("fate-edge-on")),
+        Fate::Degenerate => Some(words!("fate-degenerate")),
+        Fate::ClippedAway => Some(words!("fate-clipped")),
     }
 }
 
@@ -156,36 +164,46 @@ pub fn entry_text(scene: &Scene, x: u32, y: u32, entry: &PixelHistoryEntry) -> S
     let centre = Q::new(2 * i128::from(x) + 1, 2);
     // A centre exactly on the boundary: say which rule decided it.
     let tie = crate::tie::tie_text(scene.rules, &scene.polygons[entry.index].vertices, x, y)
-        .map_or(String::new(), |t| format!(" ({t})"));
+        .map_or(String::new(), |t| words!("tie-wrap", text = t));
     match (&entry.scanline, &entry.pixel) {
-        (None, _) => format!("its y range does not reach the scanline {}{tie}", scanline_text(y)),
+        (None, _) => words!("entry-no-row", scanline = scanline_text(y), tie = tie),
         (Some(scanline), Some(pixel)) => {
-            let span = scanline.span_covering(x).map_or(String::new(), |s| format!(" {}", span_text(s)));
-            format!(
-                "on the scanline {} it spans{span}, which holds the centre x = {}{tie}; {}",
-                scanline_text(y),
-                exact_and_decimal(centre),
-                pixel_reason(scene, pixel)
-            )
+            let reason = pixel_reason(scene, pixel);
+            match scanline.span_covering(x) {
+                Some(span) => words!(
+                    "entry-covered",
+                    scanline = scanline_text(y),
+                    span = span_text(span),
+                    centre = exact_and_decimal(centre),
+                    tie = tie,
+                    reason = reason
+                ),
+                None => words!(
+                    "entry-covered-no-span",
+                    scanline = scanline_text(y),
+                    centre = exact_and_decimal(centre),
+                    tie = tie,
+                    reason = reason
+                ),
+            }
         }
-        (Some(scanline), None) => {
-            format!(
-                "on the scanline {} {}; the centre x = {} is not inside{tie}",
-                scanline_text(y),
-                spans_of(scanline, "it"),
-                exact_and_decimal(centre)
-            )
-        }
+        (Some(scanline), None) => words!(
+            "entry-not-inside",
+            scanline = scanline_text(y),
+            spans = spans_of(scanline, &words!("subject-it")),
+            centre = exact_and_decimal(centre),
+            tie = tie
+        ),
     }
 }
 
 /// `it spans 57/2 … 179/6` (or has no crossings), with `subject` for "it".
 fn spans_of(scanline: &ScanlineRecord, subject: &str) -> String {
     if scanline.spans.is_empty() {
-        return format!("{subject} has no crossings");
+        return words!("spans-none", subject = subject);
     }
     let spans: Vec<String> = scanline.spans.iter().map(span_text).collect();
-    format!("{subject} spans {}", spans.join(" and "))
+    words!("spans-some", subject = subject, spans = spans.join(&words!("list-and")))
 }
 
 /// Why cell (x, y) of `buffer` holds what it holds after the polygons in
@@ -196,55 +214,65 @@ pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistor
         .rev()
         .find_map(|entry| entry.pixel.filter(|p| p.outcome == Outcome::Written).map(|p| (entry.index, p)));
     let result = |pixel: &PixelEvent| match buffer {
-        Buffer::Frame => format!("the framebuffer holds {}", pixel.frame_after),
+        Buffer::Frame => words!("result-frame", value = pixel.frame_after),
         Buffer::Depth => stored_text(scene, pixel.compared),
     };
+    let semicolon = words!("list-semicolon");
     if let Some((index, pixel)) = last_write {
         let z = depth_text(scene, pixel.compared.value());
-        let mut text = format!(
-            "{} covers ({x}, {y}): z = {}, so {}",
-            polygon_name(scene, index),
-            scene.depth_test.outcome_text(&z, &pixel.stored_before.to_string(), true),
-            result(&pixel)
+        let mut text = words!(
+            "why-covers",
+            polygon = polygon_name(scene, index),
+            x = x,
+            y = y,
+            test = scene.depth_test.outcome_text(&z, &pixel.stored_before.to_string(), true),
+            result = result(&pixel)
         );
         let later: Vec<String> = history
             .iter()
             .filter(|entry| entry.index > index && entry.pixel.is_some())
             .map(|entry| {
-                format!("{} ({})", polygon_name(scene, entry.index), pixel_reason(scene, &entry.pixel.unwrap()))
+                words!(
+                    "why-later-item",
+                    polygon = polygon_name(scene, entry.index),
+                    reason = pixel_reason(scene, &entry.pixel.unwrap())
+                )
             })
             .collect();
         if !later.is_empty() {
-            text.push_str(&format!("; later {}", later.join("; ")));
+            text.push_str(&words!("why-later", list = later.join(&semicolon)));
         }
         return text;
     }
     let cleared = match buffer {
-        Buffer::Frame => format!("the background {}", scene.background),
-        Buffer::Depth => format!("the cleared depth {}", scene.clear_depth),
+        Buffer::Frame => words!("cleared-frame", value = scene.background),
+        Buffer::Depth => words!("cleared-depth", value = scene.clear_depth.to_string()),
     };
     let covered: Vec<String> = history
         .iter()
         .filter_map(|entry| {
-            entry
-                .pixel
-                .map(|p| format!("{} covers it but {}", polygon_name(scene, entry.index), pixel_reason(scene, &p)))
+            entry.pixel.map(|p| {
+                words!("why-covered-item", polygon = polygon_name(scene, entry.index), reason = pixel_reason(scene, &p))
+            })
         })
         .collect();
     if !covered.is_empty() {
-        return format!("nothing was written at ({x}, {y}): {}; it keeps {cleared}", covered.join("; "));
+        return words!("why-nothing-written", x = x, y = y, list = covered.join(&semicolon), cleared = cleared);
     }
     let reaching: Vec<String> = history
         .iter()
         .filter_map(|entry| entry.scanline.as_ref().map(|s| spans_of(s, &polygon_name(scene, entry.index))))
         .collect();
     if reaching.is_empty() {
-        format!("no polygon covers ({x}, {y}): none reaches the scanline {}; it keeps {cleared}", scanline_text(y))
+        words!("why-none-reaches", x = x, y = y, scanline = scanline_text(y), cleared = cleared)
     } else {
-        format!(
-            "no polygon covers ({x}, {y}): on the scanline {} {}; it keeps {cleared}",
-            scanline_text(y),
-            reaching.join(" and ")
+        words!(
+            "why-not-covered",
+            x = x,
+            y = y,
+            scanline = scanline_text(y),
+            list = reaching.join(&words!("list-and")),
+            cleared = cleared
         )
     }
 }

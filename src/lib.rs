@@ -72,6 +72,8 @@
 //! ```
 #![warn(missing_docs)]
 
+#[macro_use]
+pub mod words;
 pub mod accuracy;
 pub mod antialias;
 pub mod arith;

@@ -168,19 +168,19 @@ pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
 }
 
 /// Which of a rule set's choices decides a centre on this kind of boundary,
-/// in words: "the book's columns (centres in [x_l, x_r])", ….
-fn deciding_rule(rules: Rules, boundary: Boundary) -> &'static str {
+/// in words: "the book's column rule (centres in [x_l, x_r], ends included)", ….
+fn deciding_rule(rules: Rules, boundary: Boundary) -> String {
     use crate::rules::{ColumnRule, RowRule};
     match boundary {
         Boundary::LeftEdge | Boundary::RightEdge => match rules.columns {
-            ColumnRule::CentreInside => "the book's column rule (centres in [x_l, x_r], ends included)",
-            ColumnRule::CellHolds => "BUET's column rule (from the cell holding x_a to the one holding x_b)",
-            ColumnRule::HalfOpen => "the top-left rule (centres in [x_l, x_r): left edges in, right edges out)",
+            ColumnRule::CentreInside => words!("rule-columns-centre"),
+            ColumnRule::CellHolds => words!("rule-columns-cell"),
+            ColumnRule::HalfOpen => words!("rule-columns-half-open"),
         },
         Boundary::TopEdge | Boundary::BottomEdge | Boundary::Vertex => match rules.rows {
-            RowRule::HalfOpen => "the book's half-interval rule (an edge counts for min ≤ y < max)",
-            RowRule::Closed => "BUET's closed rows (min ≤ y ≤ max)",
-            RowRule::TopLeft => "the top-left rule (an edge counts for min < y ≤ max: top edges in, bottom edges out)",
+            RowRule::HalfOpen => words!("rule-rows-half-open"),
+            RowRule::Closed => words!("rule-rows-closed"),
+            RowRule::TopLeft => words!("rule-rows-top-left"),
         },
     }
 }
@@ -190,19 +190,21 @@ fn deciding_rule(rules: Rules, boundary: Boundary) -> &'static str {
 pub fn tie_text(rules: Rules, vertices: &[[Q; 3]], x: u32, y: u32) -> Option<String> {
     let (boundary, a, b) = boundary_at(vertices, x, y)?;
     let point = |p: [Q; 2]| format!("({}, {})", crate::exact::fraction(p[0]), crate::exact::fraction(p[1]));
+    let place = match boundary {
+        Boundary::TopEdge => words!("boundary-top"),
+        Boundary::BottomEdge => words!("boundary-bottom"),
+        Boundary::LeftEdge => words!("boundary-left"),
+        Boundary::RightEdge => words!("boundary-right"),
+        Boundary::Vertex => words!("boundary-vertex"),
+    };
     Some(match rule_covers(rules, boundary) {
-        None => format!(
-            "the centre is exactly the vertex {}: the edges meeting there decide, by {}",
-            point(a),
-            deciding_rule(rules, boundary)
-        ),
-        Some(covers) => format!(
-            "the centre lies exactly on the {} from {} to {}, which {} {}",
-            boundary.words(),
-            point(a),
-            point(b),
-            deciding_rule(rules, boundary),
-            if covers { "includes" } else { "leaves out" }
+        None => words!("tie-vertex", point = point(a), rule = deciding_rule(rules, boundary)),
+        Some(covers) => words!(
+            if covers { "tie-edge-in" } else { "tie-edge-out" },
+            boundary = place,
+            a = point(a),
+            b = point(b),
+            rule = deciding_rule(rules, boundary)
         ),
     })
 }

@@ -8,7 +8,7 @@ use clap::Args;
 use comfy_table::{Table, presets};
 use zsim::check::{CellRange, Matrix, Mismatch, compare, misreading, parse_answer};
 use zsim::error::Error;
-use zsim::explain::{Buffer, polygon_name, why};
+use zsim::explain::{Buffer, why};
 use zsim::pipeline::Simulation;
 use zsim::scene::Scene;
 use zsim::trace::{PixelWatcher, Unobserved};
@@ -135,31 +135,34 @@ pub fn report(
     let mut text = String::new();
     let mut differs = false;
     for (buffer, path, mismatches, hint) in &results {
-        let after = polygon_name(scene, last);
+        let (after, file) = (zsim::explain::polygon_after(scene, last), path.display().to_string());
         if mismatches.is_empty() {
-            text.push_str(&format!(
-                "{} {}: all {cells} cells match the {} after {after}\n",
-                buffer.name(),
-                path.display(),
-                buffer.name()
-            ));
+            let line =
+                zsim::words!("check-all-match", buffer = buffer.name(), file = file, cells = cells, after = after);
+            text.push_str(&line);
+            text.push('\n');
             continue;
         }
         differs = true;
-        let plural = if mismatches.len() == 1 { "cell differs" } else { "cells differ" };
-        text.push_str(&format!(
-            "{} {}: {} of {cells} {plural} from the {} after {after}\n",
-            buffer.name(),
-            path.display(),
-            mismatches.len(),
-            buffer.name()
-        ));
+        let line = zsim::words!(
+            "check-differ",
+            buffer = buffer.name(),
+            file = file,
+            count = mismatches.len(),
+            cells = cells,
+            after = after
+        );
+        text.push_str(&line);
+        text.push('\n');
         if let Some((how, left)) = hint {
-            let rest = if *left == 0 { "it matches".to_string() } else { format!("only {left} cells differ") };
-            text.push_str(&format!(
-                "hint: read {how}, {rest}; write the top row (y = {}) first and each row from x = 0, as the book prints them\n",
-                scene.height - 1
-            ));
+            let (how, top) = (how.words(), scene.height - 1);
+            let line = if *left == 0 {
+                zsim::words!("check-hint-matches", how = how, top = top)
+            } else {
+                zsim::words!("check-hint-fewer", how = how, left = *left, top = top)
+            };
+            text.push_str(&line);
+            text.push('\n');
         }
         text.push_str(&format!("{}\n", table(scene, *buffer, mismatches, &watcher, (arith, simulation.buffers()))));
     }
@@ -179,7 +182,13 @@ fn table(
         .load_style(presets::ASCII_MARKDOWN)
         .set_content_arrangement(comfy_table::ContentArrangement::Dynamic)
         .set_width(80)
-        .set_header(["x", "y", "answer", "right", "why"]);
+        .set_header([
+            "x".to_string(),
+            "y".to_string(),
+            zsim::words!("check-column-answer"),
+            zsim::words!("check-column-right"),
+            zsim::words!("check-column-why"),
+        ]);
     for cell in mismatches {
         let history = watcher.history(cell.x, cell.y);
         let mut reason = why(scene, buffer, cell.x, cell.y, history);
@@ -188,9 +197,12 @@ fn table(
             Buffer::Depth => exact.depth(cell.x, cell.y).level().unwrap_or(0),
         };
         if exact_value != cell.expected {
-            reason = format!(
-                "in {arith} arithmetic the cell holds {}; in exact arithmetic {exact_value}: {reason}",
-                cell.expected
+            reason = zsim::words!(
+                "check-in-arith",
+                arith = arith.to_string(),
+                mode = cell.expected,
+                exact = exact_value,
+                reason = reason
             );
         }
         table.add_row([

@@ -61,14 +61,16 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let mut simulation = Simulation::new(&scene);
     simulation.finish(&mut watcher);
     let centre = |v: u32| exact_and_decimal(Q::new(2 * i128::from(v) + 1, 2));
-    let mut text = format!(
-        "pixel ({x}, {y}) of {}: centre ({}, {}), depth test {} ({})\n",
-        args.scene.display(),
-        centre(x),
-        centre(y),
-        scene.depth_test.name(),
-        scene.depth_test.rule_text()
-    );
+    let mut text = zsim::words!(
+        "explain-heading",
+        x = x,
+        y = y,
+        file = args.scene.display().to_string(),
+        cx = centre(x),
+        cy = centre(y),
+        test = scene.depth_test.name(),
+        rule = scene.depth_test.rule_text()
+    ) + "\n";
     if let Some(section) = scene.effects.section {
         text.push_str(&format!(
             "cross-section: only z {} {} is written\n",
@@ -76,18 +78,26 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             zsim::explain::depth_text(&scene, section)
         ));
     }
-    text.push_str(&format!("start: framebuffer {}, z-buffer {} (cleared)\n", scene.background, scene.clear_depth));
+    text.push_str(&zsim::words!("explain-start", frame = scene.background, depth = scene.clear_depth.to_string()));
+    text.push('\n');
     if let Some(segments) = args.segments {
         text.push_str(&segment_text(&scene, segments, (x, y)));
     }
     for entry in watcher.history(x, y) {
-        text.push_str(&format!("{}: {}\n", polygon_name(&scene, entry.index), entry_text(&scene, x, y, entry)));
+        let line = zsim::words!(
+            "polygon-line",
+            polygon = polygon_name(&scene, entry.index),
+            text = entry_text(&scene, x, y, entry)
+        );
+        text.push_str(&line);
+        text.push('\n');
         if args.inside && entry.fate == zsim::trace::Fate::Drawn {
             text.push_str(&format!("  {}\n", inside_text(&scene.polygons[entry.index], x, y)));
         }
     }
     let buffers = simulation.buffers();
-    text.push_str(&format!("final: framebuffer {}, z-buffer {}\n", buffers.frame(x, y), buffers.depth(x, y)));
+    text.push_str(&zsim::words!("explain-final", frame = buffers.frame(x, y), depth = buffers.depth(x, y).to_string()));
+    text.push('\n');
     if let Some(settings) = scene.effects.antialias {
         text.push_str(&antialias_text(&scene, settings, (x, y))?);
     }

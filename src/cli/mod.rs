@@ -28,6 +28,14 @@ use zsim::error::Error;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// The language zsim explains in: en, ru, uk or zh (default: from LC_ALL, LC_MESSAGES or LANG, else English). explain and check speak it; --help stays English.
+    #[arg(long, global = true, value_name = "LANG", value_parser = language)]
+    lang: Option<zsim::words::Lang>,
+}
+
+fn language(code: &str) -> Result<zsim::words::Lang, String> {
+    zsim::words::Lang::parse(code)
+        .ok_or_else(|| format!("\"{code}\" is not a language zsim speaks: use en, ru, uk or zh"))
 }
 
 #[derive(Debug, Subcommand)]
@@ -91,6 +99,7 @@ impl From<io::Error> for Failure {
 /// Parses the arguments, runs the command and maps the outcome to an exit code.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
+    zsim::words::set_language(cli.lang.unwrap_or_else(zsim::words::Lang::from_env));
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
     let result = match cli.command {

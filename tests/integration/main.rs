@@ -18,6 +18,7 @@ mod generate;
 mod golden;
 mod hard_cases;
 mod hardening;
+mod languages;
 mod run_command;
 mod stability;
 mod teaching;
@@ -35,11 +36,21 @@ pub struct Run {
 
 /// Runs the real `zsim` binary in `dir` (the project root when `None`).
 pub fn zsim_in(dir: Option<&Path>, args: &[&str]) -> Run {
+    zsim_with(dir, args, &[])
+}
+
+/// Runs the real `zsim` binary in `dir` with `LANG=C.UTF-8` (English) and
+/// no other locale variables, then `env` on top.
+pub fn zsim_with(dir: Option<&Path>, args: &[&str], env: &[(&str, &str)]) -> Run {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
         .args(args)
         .current_dir(dir.unwrap_or(root))
         .env("NO_COLOR", "1")
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .env("LANG", "C.UTF-8")
+        .envs(env.iter().copied())
         .output()
         .expect("the zsim binary runs");
     Run {

@@ -1,0 +1,98 @@
+# zsim's words in English. Each message is one sentence or phrase; the
+# facts arrive as arguments already written as numbers ($z = "43/4 ≈ 10.75").
+# Spaces at either end of a message are kept with string literals ({ " and " }).
+
+buffer-frame = framebuffer
+buffer-depth = z-buffer
+polygon-name = polygon { $number } "{ $name }"
+# After "after" (a genitive in Russian and Ukrainian).
+polygon-after = polygon { $number } "{ $name }"
+span = { $left } … { $right }
+scanline = y = { $y }
+list-and = { " and " }
+list-semicolon = { "; " }
+
+winding-cw = clockwise
+winding-ccw = counter-clockwise
+
+stored-whole = { $stored } is stored
+stored-rounded-up = { $stored } is stored ({ $value } rounds up to { $stored })
+stored-rounded = { $stored } is stored ({ $value } rounds to { $stored })
+stored-saturated = { $stored } is stored ({ $value } rounds to { $rounded }, saturated to { $stored })
+stored-exact = { $stored } is stored (exactly)
+
+z-w-buffer = { $w } (the w-buffer's eye-space depth; projected z' = { $z })
+z-projected = { $z } (projected z'; eye-space w = { $w })
+z-beyond = (beyond 128-bit exact arithmetic)
+
+test-passed = { $z } { $op } { $stored } stored
+test-failed = { $z } is not { $op } { $stored } stored
+test-uncompared = { $z } ({ $test } passes; { $stored } stored)
+rule-compared = z { $op } stored
+rule-always = every fragment passes
+rule-never = no fragment passes
+
+frame-blended = { $frame } (opacity { $alpha }: { $alpha }·{ $value } + { $rest }·{ $under } under, rounded half up)
+reason-written = z = { $test }, so { $stored } and the framebuffer gets { $frame }
+reason-hidden = z = { $test }: hidden, nothing changes
+reason-outside-range = z = { $z } is outside the depth range { $front } … { $rear }: discarded
+reason-beyond-section = z = { $test }, but the cross-section keeps only z { $op } { $section }: not written
+
+fate-culled = culled: its vertices run { $winding }, so it is not drawn
+fate-edge-on = seen edge-on (c = 0): it covers no pixel
+fate-degenerate = degenerate (Newell's normal is zero): it covers no pixel
+fate-clipped = every vertex lies behind the near plane: clipped away, not drawn
+
+entry-no-row = its y range does not reach the scanline { $scanline }{ $tie }
+entry-covered = on the scanline { $scanline } it spans { $span }, which holds the centre x = { $centre }{ $tie }; { $reason }
+entry-covered-no-span = on the scanline { $scanline } it spans, which holds the centre x = { $centre }{ $tie }; { $reason }
+entry-not-inside = on the scanline { $scanline } { $spans }; the centre x = { $centre } is not inside{ $tie }
+spans-none = { $subject } has no crossings
+spans-some = { $subject } spans { $spans }
+subject-it = it
+tie-wrap = { " (" }{ $text })
+
+why-covers = { $polygon } covers ({ $x }, { $y }): z = { $test }, so { $result }
+why-later = { "; later " }{ $list }
+why-later-item = { $polygon } ({ $reason })
+result-frame = the framebuffer holds { $value }
+cleared-frame = the background { $value }
+cleared-depth = the cleared depth { $value }
+why-covered-item = { $polygon } covers it but { $reason }
+why-nothing-written = nothing was written at ({ $x }, { $y }): { $list }; it keeps { $cleared }
+why-none-reaches = no polygon covers ({ $x }, { $y }): none reaches the scanline { $scanline }; it keeps { $cleared }
+why-not-covered = no polygon covers ({ $x }, { $y }): on the scanline { $scanline } { $list }; it keeps { $cleared }
+
+boundary-top = top edge
+boundary-bottom = bottom edge
+boundary-left = left edge
+boundary-right = right edge
+boundary-vertex = vertex
+tie-vertex = the centre is exactly the vertex { $point }: the edges meeting there decide, by { $rule }
+tie-edge-in = the centre lies exactly on the { $boundary } from { $a } to { $b }, which { $rule } includes
+tie-edge-out = the centre lies exactly on the { $boundary } from { $a } to { $b }, which { $rule } leaves out
+rule-columns-centre = the book's column rule (centres in [x_l, x_r], ends included)
+rule-columns-cell = BUET's column rule (from the cell holding x_a to the one holding x_b)
+rule-columns-half-open = the top-left rule (centres in [x_l, x_r): left edges in, right edges out)
+rule-rows-half-open = the book's half-interval rule (an edge counts for min ≤ y < max)
+rule-rows-closed = BUET's closed rows (min ≤ y ≤ max)
+rule-rows-top-left = the top-left rule (an edge counts for min < y ≤ max: top edges in, bottom edges out)
+
+explain-heading = pixel ({ $x }, { $y }) of { $file }: centre ({ $cx }, { $cy }), depth test { $test } ({ $rule })
+polygon-line = { $polygon }: { $text }
+explain-start = start: framebuffer { $frame }, z-buffer { $depth } (cleared)
+explain-final = final: framebuffer { $frame }, z-buffer { $depth }
+
+check-all-match = { $buffer } { $file }: all { $cells } cells match the { $buffer } after { $after }
+check-differ = { $buffer } { $file }: { $count } of { $cells } { $count ->
+    [one] cell differs
+   *[other] cells differ
+  } from the { $buffer } after { $after }
+check-hint-matches = hint: read { $how }, it matches; write the top row (y = { $top }) first and each row from x = 0, as the book prints them
+check-hint-fewer = hint: read { $how }, only { $left } cells differ; write the top row (y = { $top }) first and each row from x = 0, as the book prints them
+check-column-answer = answer
+check-column-right = right
+check-column-why = why
+check-in-arith = in { $arith } arithmetic the cell holds { $mode }; in exact arithmetic { $exact }: { $reason }
+misreading-upside-down = bottom row first
+misreading-transposed = with rows and columns swapped

@@ -1,0 +1,275 @@
+//! The words of the program: every sentence a person reads about the
+//! algorithm is rendered here from facts, in the student's language.
+//!
+//! Each language is a Fluent catalogue (`en.ftl`, `ru.ftl`, `uk.ftl`,
+//! `zh.ftl`, built into the binary) with one message per sentence or phrase
+//! and the facts as arguments; Fluent chooses plural forms by the language's
+//! CLDR rules. Numbers arrive already written: exact values stay exact
+//! (`43/4`), and the decimal beside them uses the language's separator
+//! ([`Lang::decimal_separator`]: `10,75` in Russian and Ukrainian).
+//!
+//! The language is chosen once per thread ([`set_language`]; the command line
+//! does it from `--lang` or the environment, [`Lang::from_env`]); English is
+//! the default. JSON output never passes through here.
+
+use std::cell::{Cell, RefCell};
+use std::collections::HashMap;
+
+use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
+
+/// A language zsim speaks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Lang {
+    /// English (the default).
+    #[default]
+    En,
+    /// Russian.
+    Ru,
+    /// Ukrainian.
+    Uk,
+    /// Simplified Chinese.
+    Zh,
+}
+
+impl Lang {
+    /// Every language, English first.
+    pub const ALL: [Lang; 4] = [Lang::En, Lang::Ru, Lang::Uk, Lang::Zh];
+
+    /// The language of a code or locale: `ru`, `ru_RU.UTF-8`, `uk-UA`,
+    /// `zh_CN`, `en_US`; `None` for others (and for `C` and `POSIX`).
+    pub fn parse(code: &str) -> Option<Lang> {
+        let language = code.split(['_', '-', '.', '@']).next()?.to_ascii_lowercase();
+        match language.as_str() {
+            "en" => Some(Lang::En),
+            "ru" => Some(Lang::Ru),
+            "uk" => Some(Lang::Uk),
+            "zh" => Some(Lang::Zh),
+            _ => None,
+        }
+    }
+
+    /// The language the environment asks for: the first of `LC_ALL`,
+    /// `LC_MESSAGES` and `LANG` that is set and not empty decides (as
+    /// gettext reads them); English when it names another language.
+    pub fn from_env() -> Lang {
+        Lang::from_vars(|name| std::env::var(name).ok())
+    }
+
+    /// [`Lang::from_env`] over any source of variables (for tests).
+    pub fn from_vars(var: impl Fn(&str) -> Option<String>) -> Lang {
+        ["LC_ALL", "LC_MESSAGES", "LANG"]
+            .iter()
+            .find_map(|name| var(name).filter(|v| !v.is_empty()))
+            .and_then(|value| Lang::parse(&value))
+            .unwrap_or_default()
+    }
+
+    /// The code: `en`, `ru`, `uk`, `zh`.
+    pub fn code(self) -> &'static str {
+        match self {
+            Lang::En => "en",
+            Lang::Ru => "ru",
+            Lang::Uk => "uk",
+            Lang::Zh => "zh",
+        }
+    }
+
+    /// The decimal separator: a comma in Russian and Ukrainian, a point otherwise.
+    pub fn decimal_separator(self) -> char {
+        match self {
+            Lang::Ru | Lang::Uk => ',',
+            Lang::En | Lang::Zh => '.',
+        }
+    }
+
+    fn catalogue(self) -> &'static str {
+        match self {
+            Lang::En => include_str!("en.ftl"),
+            Lang::Ru => include_str!("ru.ftl"),
+            Lang::Uk => include_str!("uk.ftl"),
+            Lang::Zh => include_str!("zh.ftl"),
+        }
+    }
+}
+
+thread_local! {
+    static CURRENT: Cell<Lang> = const { Cell::new(Lang::En) };
+    static BUNDLES: RefCell<HashMap<Lang, FluentBundle<FluentResource>>> = RefCell::new(HashMap::new());
+}
+
+/// Chooses the language of this thread's sentences.
+pub fn set_language(lang: Lang) {
+    CURRENT.with(|c| c.set(lang));
+}
+
+/// The language of this thread's sentences.
+pub fn language() -> Lang {
+    CURRENT.with(Cell::get)
+}
+
+fn bundle(lang: Lang) -> FluentBundle<FluentResource> {
+    let resource = FluentResource::try_new(lang.catalogue().to_string()).unwrap_or_else(|(_, errors)| {
+        panic!("the {} catalogue does not parse: {errors:?}: please report this bug", lang.code())
+    });
+    let id: unic_langid::LanguageIdentifier = lang.code().parse().expect("a language code");
+    let mut bundle = FluentBundle::new(vec![id]);
+    // No Unicode isolation marks around arguments: terminals show them as gaps.
+    bundle.set_use_isolating(false);
+    bundle.add_resource(resource).expect("one resource per bundle");
+    bundle
+}
+
+/// An argument of a message: text, or a number (for plural choices).
+#[derive(Debug, Clone)]
+pub enum Arg {
+    /// Already written text.
+    Text(String),
+    /// A whole number.
+    Number(i64),
+}
+
+impl From<&str> for Arg {
+    fn from(text: &str) -> Arg {
+        Arg::Text(text.to_string())
+    }
+}
+
+impl From<String> for Arg {
+    fn from(text: String) -> Arg {
+        Arg::Text(text)
+    }
+}
+
+impl From<&String> for Arg {
+    fn from(text: &String) -> Arg {
+        Arg::Text(text.clone())
+    }
+}
+
+macro_rules! number_arg {
+    ($($t:ty),*) => {$(
+        impl From<$t> for Arg {
+            fn from(value: $t) -> Arg {
+                Arg::Number(value as i64)
+            }
+        }
+    )*};
+}
+number_arg!(u32, usize, u64, i32, i64);
+
+/// The message `key` in this thread's language with `args`; a key missing
+/// from a catalogue falls back to English (the key-coverage test keeps that
+/// from happening).
+pub fn text(key: &str, args: &[(&str, Arg)]) -> String {
+    let lang = language();
+    BUNDLES.with(|bundles| {
+        let mut bundles = bundles.borrow_mut();
+        let lang = if bundle_has(&mut bundles, lang, key) { lang } else { Lang::En };
+        let bundle = bundles.entry(lang).or_insert_with(|| bundle(lang));
+        let message = bundle.get_message(key).and_then(|m| m.value());
+        let Some(pattern) = message else {
+            debug_assert!(false, "message {key} is missing: please report this bug");
+            return key.to_string();
+        };
+        let mut fluent_args = FluentArgs::new();
+        for (name, value) in args {
+            match value {
+                Arg::Text(t) => fluent_args.set(*name, FluentValue::from(t.as_str())),
+                Arg::Number(n) => fluent_args.set(*name, FluentValue::from(*n)),
+            }
+        }
+        let mut errors = Vec::new();
+        let out = bundle.format_pattern(pattern, Some(&fluent_args), &mut errors).into_owned();
+        debug_assert!(errors.is_empty(), "message {key}: {errors:?}: please report this bug");
+        out
+    })
+}
+
+fn bundle_has(bundles: &mut HashMap<Lang, FluentBundle<FluentResource>>, lang: Lang, key: &str) -> bool {
+    bundles.entry(lang).or_insert_with(|| bundle(lang)).has_message(key)
+}
+
+/// `words!("key", name = value, …)`: the message in this thread's language.
+#[macro_export]
+macro_rules! words {
+    ($key:expr $(, $name:ident = $value:expr)* $(,)?) => {
+        $crate::words::text($key, &[$((stringify!($name), $crate::words::Arg::from($value))),*])
+    };
+}
+
+/// A decimal written with a point, in this thread's language's convention.
+pub fn localize_decimal(text: String) -> String {
+    match language().decimal_separator() {
+        '.' => text,
+        separator => text.replace('.', &separator.to_string()),
+    }
+}
+
+/// The message keys of a catalogue, in order.
+pub fn keys(lang: Lang) -> Vec<String> {
+    let resource = FluentResource::try_new(lang.catalogue().to_string()).unwrap_or_else(|(r, _)| r);
+    resource
+        .entries()
+        .filter_map(|entry| match entry {
+            fluent_syntax::ast::Entry::Message(m) => Some(m.id.name.to_string()),
+            _ => None,
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every message of the English catalogue exists in every other, and no
+    /// catalogue has a message English lacks or a syntax error.
+    #[test]
+    fn every_message_key_exists_in_every_catalogue() {
+        let english = keys(Lang::En);
+        assert!(english.len() > 50);
+        for lang in Lang::ALL {
+            FluentResource::try_new(lang.catalogue().to_string())
+                .unwrap_or_else(|(_, errors)| panic!("{}: {errors:?}", lang.code()));
+            let theirs = keys(lang);
+            let missing: Vec<&String> = english.iter().filter(|k| !theirs.contains(k)).collect();
+            let extra: Vec<&String> = theirs.iter().filter(|k| !english.contains(k)).collect();
+            assert_eq!((missing, extra), (vec![], vec![]), "{}", lang.code());
+        }
+    }
+
+    #[test]
+    fn the_environment_chooses_the_language_as_gettext_does() {
+        let env = |pairs: &'static [(&str, &str)]| {
+            move |name: &str| pairs.iter().find(|(k, _)| *k == name).map(|(_, v)| v.to_string())
+        };
+        assert_eq!(Lang::from_vars(env(&[("LANG", "ru_RU.UTF-8")])), Lang::Ru);
+        assert_eq!(Lang::from_vars(env(&[("LANG", "ru_RU.UTF-8"), ("LC_ALL", "uk_UA.UTF-8")])), Lang::Uk);
+        assert_eq!(Lang::from_vars(env(&[("LANG", "zh_CN.UTF-8"), ("LC_MESSAGES", "")])), Lang::Zh);
+        assert_eq!(Lang::from_vars(env(&[("LANG", "C.UTF-8")])), Lang::En);
+        assert_eq!(Lang::from_vars(env(&[("LANG", "de_DE.UTF-8")])), Lang::En);
+    }
+
+    #[test]
+    fn plurals_follow_each_language() {
+        let differ = |lang: Lang, count: i64| {
+            set_language(lang);
+            let out = text(
+                "check-differ",
+                &[
+                    ("buffer", "b".into()),
+                    ("file", "f".into()),
+                    ("count", Arg::Number(count)),
+                    ("cells", Arg::Number(1024)),
+                    ("after", "p".into()),
+                ],
+            );
+            set_language(Lang::En);
+            out
+        };
+        assert_eq!(differ(Lang::En, 1), "b f: 1 of 1024 cell differs from the b after p");
+        assert_eq!(differ(Lang::En, 3), "b f: 3 of 1024 cells differ from the b after p");
+        assert!(differ(Lang::Ru, 1).contains("отличается 1"), "{}", differ(Lang::Ru, 1));
+        assert!(differ(Lang::Ru, 3).contains("отличаются 3"), "{}", differ(Lang::Ru, 3));
+        assert!(differ(Lang::Ru, 5).contains("отличаются 5"), "{}", differ(Lang::Ru, 5));
+    }
+}

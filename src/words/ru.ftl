@@ -1,0 +1,97 @@
+# Слова zsim по-русски, в терминах учебника (Роджерс в русском переводе):
+# пиксел, буфер кадра, z-буфер, многоугольник, сканирующая строка.
+
+buffer-frame = буфер кадра
+buffer-depth = z-буфер
+polygon-name = многоугольник { $number } «{ $name }»
+polygon-after = многоугольника { $number } «{ $name }»
+span = { $left } … { $right }
+scanline = y = { $y }
+list-and = { " и " }
+list-semicolon = { "; " }
+
+winding-cw = по часовой стрелке
+winding-ccw = против часовой стрелки
+
+stored-whole = в z-буфер записывается { $stored }
+stored-rounded-up = в z-буфер записывается { $stored } ({ $value } округляется вверх до { $stored })
+stored-rounded = в z-буфер записывается { $stored } ({ $value } округляется до { $stored })
+stored-saturated = в z-буфер записывается { $stored } ({ $value } округляется до { $rounded } и ограничивается значением { $stored })
+stored-exact = в z-буфер записывается { $stored } (точно)
+
+z-w-buffer = { $w } (глубина в системе координат наблюдателя для w-буфера; после проецирования z' = { $z })
+z-projected = { $z } (z' после проецирования; глубина в системе координат наблюдателя w = { $w })
+z-beyond = (за пределами 128-битной точной арифметики)
+
+test-passed = { $z } { $op } { $stored }
+test-failed = { $z }, условие z { $op } { $stored } не выполняется
+test-uncompared = { $z } (тест глубины { $test }; в z-буфере было { $stored })
+rule-compared = z { $op } значения в z-буфере
+rule-always = проходит любой фрагмент
+rule-never = не проходит ни один фрагмент
+
+frame-blended = { $frame } (непрозрачность { $alpha }: { $alpha }·{ $value } + { $rest }·{ $under } под ним, половина округляется вверх)
+reason-written = z = { $test }, поэтому { $stored }, а в буфер кадра — { $frame }
+reason-hidden = z = { $test }: пиксел скрыт, ничего не меняется
+reason-outside-range = z = { $z } вне диапазона глубины { $front } … { $rear }: фрагмент отбрасывается
+reason-beyond-section = z = { $test }, но сечение оставляет только z { $op } { $section }: не записывается
+
+fate-culled = отбрасывается как нелицевой: его вершины обходятся { $winding }, поэтому он не рисуется
+fate-edge-on = виден с ребра (c = 0): не покрывает ни одного пиксела
+fate-degenerate = вырожден (нормаль по Ньюэлу нулевая): не покрывает ни одного пиксела
+fate-clipped = все вершины лежат за ближней плоскостью: отсекается целиком и не рисуется
+
+entry-no-row = его диапазон по y не достигает сканирующей строки { $scanline }{ $tie }
+entry-covered = на сканирующей строке { $scanline } он занимает отрезок { $span }, в котором лежит центр x = { $centre }{ $tie }; { $reason }
+entry-covered-no-span = на сканирующей строке { $scanline } он покрывает центр x = { $centre }{ $tie }; { $reason }
+entry-not-inside = на сканирующей строке { $scanline } { $spans }; центр x = { $centre } не попадает внутрь{ $tie }
+spans-none = { $subject } не пересекает строку
+spans-some = { $subject } занимает { $spans }
+subject-it = он
+tie-wrap = { " (" }{ $text })
+
+why-covers = { $polygon } покрывает ({ $x }, { $y }): z = { $test }, поэтому { $result }
+why-later = { "; затем " }{ $list }
+why-later-item = { $polygon } ({ $reason })
+result-frame = в буфере кадра { $value }
+cleared-frame = фон { $value }
+cleared-depth = начальная глубина { $value }
+why-covered-item = { $polygon } покрывает его, но { $reason }
+why-nothing-written = в ({ $x }, { $y }) ничего не записано: { $list }; там остаётся { $cleared }
+why-none-reaches = ни один многоугольник не покрывает ({ $x }, { $y }): ни один не достигает сканирующей строки { $scanline }; там остаётся { $cleared }
+why-not-covered = ни один многоугольник не покрывает ({ $x }, { $y }): на сканирующей строке { $scanline } { $list }; там остаётся { $cleared }
+
+boundary-top = верхнем ребре
+boundary-bottom = нижнем ребре
+boundary-left = левом ребре
+boundary-right = правом ребре
+boundary-vertex = вершине
+tie-vertex = центр совпадает с вершиной { $point }: решают сходящиеся в ней рёбра по правилу: { $rule }
+tie-edge-in = центр лежит точно на { $boundary } от { $a } до { $b }, и { $rule } его включает
+tie-edge-out = центр лежит точно на { $boundary } от { $a } до { $b }, и { $rule } его исключает
+rule-columns-centre = правило книги для столбцов (центры в [x_l, x_r], концы включены)
+rule-columns-cell = правило BUET для столбцов (от ячейки с x_a до ячейки с x_b)
+rule-columns-half-open = правило «верх-лево» (центры в [x_l, x_r): левые рёбра включаются, правые нет)
+rule-rows-half-open = правило полуинтервала из книги (ребро учитывается при min ≤ y < max)
+rule-rows-closed = замкнутые строки BUET (min ≤ y ≤ max)
+rule-rows-top-left = правило «верх-лево» (ребро учитывается при min < y ≤ max: верхние рёбра включаются, нижние нет)
+
+explain-heading = пиксел ({ $x }, { $y }) сцены { $file }: центр ({ $cx }; { $cy }), тест глубины { $test } ({ $rule })
+polygon-line = { $polygon }: { $text }
+explain-start = начало: буфер кадра { $frame }, z-буфер { $depth } (после очистки)
+explain-final = итог: буфер кадра { $frame }, z-буфер { $depth }
+
+check-all-match = { $buffer } { $file }: совпадает с верным ответом после { $after } (ячеек: { $cells })
+check-differ = { $buffer } { $file }: { $count ->
+    [one] отличается { $count } ячейка
+    [few] отличаются { $count } ячейки
+   *[many] отличаются { $count } ячеек
+  } из { $cells } после { $after }
+check-hint-matches = подсказка: если читать { $how }, ответ совпадает; записывайте сначала верхнюю строку (y = { $top }), каждую строку от x = 0, как в книге
+check-hint-fewer = подсказка: если читать { $how }, расхождений остаётся: { $left }; записывайте сначала верхнюю строку (y = { $top }), каждую строку от x = 0, как в книге
+check-column-answer = ответ
+check-column-right = верно
+check-column-why = почему
+check-in-arith = в арифметике { $arith } в ячейке { $mode }; в точной арифметике { $exact }: { $reason }
+misreading-upside-down = с нижней строки
+misreading-transposed = по столбцам (строки и столбцы переставлены)

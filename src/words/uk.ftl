@@ -1,0 +1,97 @@
+# Слова zsim українською, у термінах статті «Z-буферизація»: піксель,
+# буфер кадру, z-буфер, багатокутник, рядок сканування.
+
+buffer-frame = буфер кадру
+buffer-depth = z-буфер
+polygon-name = багатокутник { $number } «{ $name }»
+polygon-after = багатокутника { $number } «{ $name }»
+span = { $left } … { $right }
+scanline = y = { $y }
+list-and = { " і " }
+list-semicolon = { "; " }
+
+winding-cw = за годинниковою стрілкою
+winding-ccw = проти годинникової стрілки
+
+stored-whole = в z-буфер записується { $stored }
+stored-rounded-up = в z-буфер записується { $stored } ({ $value } округлюється вгору до { $stored })
+stored-rounded = в z-буфер записується { $stored } ({ $value } округлюється до { $stored })
+stored-saturated = в z-буфер записується { $stored } ({ $value } округлюється до { $rounded } й обмежується значенням { $stored })
+stored-exact = в z-буфер записується { $stored } (точно)
+
+z-w-buffer = { $w } (глибина в системі координат спостерігача для w-буфера; після проєціювання z' = { $z })
+z-projected = { $z } (z' після проєціювання; глибина в системі координат спостерігача w = { $w })
+z-beyond = (поза межами 128-бітної точної арифметики)
+
+test-passed = { $z } { $op } { $stored }
+test-failed = { $z }, умова z { $op } { $stored } не виконується
+test-uncompared = { $z } (тест глибини { $test }; у z-буфері було { $stored })
+rule-compared = z { $op } значення в z-буфері
+rule-always = проходить будь-який фрагмент
+rule-never = не проходить жоден фрагмент
+
+frame-blended = { $frame } (непрозорість { $alpha }: { $alpha }·{ $value } + { $rest }·{ $under } під ним, половина округлюється вгору)
+reason-written = z = { $test }, тому { $stored }, а в буфер кадру — { $frame }
+reason-hidden = z = { $test }: піксель прихований, нічого не змінюється
+reason-outside-range = z = { $z } поза діапазоном глибини { $front } … { $rear }: фрагмент відкидається
+reason-beyond-section = z = { $test }, але переріз залишає лише z { $op } { $section }: не записується
+
+fate-culled = відкидається як нелицьовий: його вершини обходяться { $winding }, тому він не малюється
+fate-edge-on = видно з ребра (c = 0): не покриває жодного пікселя
+fate-degenerate = вироджений (нормаль за Ньюелом нульова): не покриває жодного пікселя
+fate-clipped = усі вершини лежать за ближньою площиною: відсікається повністю й не малюється
+
+entry-no-row = його діапазон за y не сягає рядка сканування { $scanline }{ $tie }
+entry-covered = на рядку сканування { $scanline } він займає відрізок { $span }, у якому лежить центр x = { $centre }{ $tie }; { $reason }
+entry-covered-no-span = на рядку сканування { $scanline } він покриває центр x = { $centre }{ $tie }; { $reason }
+entry-not-inside = на рядку сканування { $scanline } { $spans }; центр x = { $centre } не потрапляє всередину{ $tie }
+spans-none = { $subject } не перетинає рядка
+spans-some = { $subject } займає { $spans }
+subject-it = він
+tie-wrap = { " (" }{ $text })
+
+why-covers = { $polygon } покриває ({ $x }, { $y }): z = { $test }, тому { $result }
+why-later = { "; потім " }{ $list }
+why-later-item = { $polygon } ({ $reason })
+result-frame = у буфері кадру { $value }
+cleared-frame = тло { $value }
+cleared-depth = початкова глибина { $value }
+why-covered-item = { $polygon } покриває його, але { $reason }
+why-nothing-written = у ({ $x }, { $y }) нічого не записано: { $list }; там залишається { $cleared }
+why-none-reaches = жоден багатокутник не покриває ({ $x }, { $y }): жоден не сягає рядка сканування { $scanline }; там залишається { $cleared }
+why-not-covered = жоден багатокутник не покриває ({ $x }, { $y }): на рядку сканування { $scanline } { $list }; там залишається { $cleared }
+
+boundary-top = верхньому ребрі
+boundary-bottom = нижньому ребрі
+boundary-left = лівому ребрі
+boundary-right = правому ребрі
+boundary-vertex = вершині
+tie-vertex = центр збігається з вершиною { $point }: вирішують ребра, що в ній сходяться, за правилом: { $rule }
+tie-edge-in = центр лежить точно на { $boundary } від { $a } до { $b }, і { $rule } його включає
+tie-edge-out = центр лежить точно на { $boundary } від { $a } до { $b }, і { $rule } його виключає
+rule-columns-centre = правило книги для стовпців (центри в [x_l, x_r], кінці включно)
+rule-columns-cell = правило BUET для стовпців (від клітинки з x_a до клітинки з x_b)
+rule-columns-half-open = правило «верх-ліво» (центри в [x_l, x_r): ліві ребра включаються, праві — ні)
+rule-rows-half-open = правило напівінтервалу з книги (ребро враховується при min ≤ y < max)
+rule-rows-closed = замкнені рядки BUET (min ≤ y ≤ max)
+rule-rows-top-left = правило «верх-ліво» (ребро враховується при min < y ≤ max: верхні ребра включаються, нижні — ні)
+
+explain-heading = піксель ({ $x }, { $y }) сцени { $file }: центр ({ $cx }; { $cy }), тест глибини { $test } ({ $rule })
+polygon-line = { $polygon }: { $text }
+explain-start = початок: буфер кадру { $frame }, z-буфер { $depth } (після очищення)
+explain-final = підсумок: буфер кадру { $frame }, z-буфер { $depth }
+
+check-all-match = { $buffer } { $file }: збігається з правильною відповіддю після { $after } (клітинок: { $cells })
+check-differ = { $buffer } { $file }: { $count ->
+    [one] відрізняється { $count } клітинка
+    [few] відрізняються { $count } клітинки
+   *[many] відрізняються { $count } клітинок
+  } з { $cells } після { $after }
+check-hint-matches = підказка: якщо читати { $how }, відповідь збігається; записуйте спочатку верхній рядок (y = { $top }), кожен рядок від x = 0, як у книзі
+check-hint-fewer = підказка: якщо читати { $how }, розбіжностей лишається: { $left }; записуйте спочатку верхній рядок (y = { $top }), кожен рядок від x = 0, як у книзі
+check-column-answer = відповідь
+check-column-right = правильно
+check-column-why = чому
+check-in-arith = в арифметиці { $arith } у клітинці { $mode }; у точній арифметиці { $exact }: { $reason }
+misreading-upside-down = з нижнього рядка
+misreading-transposed = по стовпцях (рядки й стовпці переставлено)

@@ -1,0 +1,93 @@
+# zsim 的简体中文用语，沿用教材（消隐、Z缓冲区算法）的术语：
+# 像素、帧缓冲器、z缓冲器、多边形、扫描线。
+
+buffer-frame = 帧缓冲器
+buffer-depth = z缓冲器
+polygon-name = 多边形 { $number }“{ $name }”
+polygon-after = 多边形 { $number }“{ $name }”
+span = { $left } … { $right }
+scanline = y = { $y }
+list-and = { " 和 " }
+list-semicolon = { "；" }
+
+winding-cw = 顺时针
+winding-ccw = 逆时针
+
+stored-whole = 向z缓冲器写入 { $stored }
+stored-rounded-up = 向z缓冲器写入 { $stored }（{ $value } 向上舍入为 { $stored }）
+stored-rounded = 向z缓冲器写入 { $stored }（{ $value } 舍入为 { $stored }）
+stored-saturated = 向z缓冲器写入 { $stored }（{ $value } 舍入为 { $rounded }，再截断为 { $stored }）
+stored-exact = 向z缓冲器写入 { $stored }（精确值）
+
+z-w-buffer = { $w }（w缓冲器使用的观察坐标系深度；投影后 z' = { $z }）
+z-projected = { $z }（投影后的 z'；观察坐标系深度 w = { $w }）
+z-beyond = （超出 128 位精确运算的范围）
+
+test-passed = { $z } { $op } { $stored }
+test-failed = { $z }，不满足 z { $op } { $stored }
+test-uncompared = { $z }（深度测试 { $test }；z缓冲器中原值为 { $stored }）
+rule-compared = z { $op } z缓冲器中的值
+rule-always = 所有片元都通过
+rule-never = 没有片元通过
+
+frame-blended = { $frame }（不透明度 { $alpha }：{ $alpha }·{ $value } + { $rest }·{ $under }（下层），四舍五入）
+reason-written = z = { $test }，因此{ $stored }，并向帧缓冲器写入 { $frame }
+reason-hidden = z = { $test }：被遮挡，不作任何改变
+reason-outside-range = z = { $z } 超出深度范围 { $front } … { $rear }：被丢弃
+reason-beyond-section = z = { $test }，但剖切只保留 z { $op } { $section } 的部分：不写入
+
+fate-culled = 被剔除：其顶点按{ $winding }方向排列，因此不绘制
+fate-edge-on = 侧对视点（c = 0）：不覆盖任何像素
+fate-degenerate = 退化（Newell 法向量为零）：不覆盖任何像素
+fate-clipped = 所有顶点都在近平面之后：被完全裁剪，不绘制
+
+entry-no-row = 其 y 范围不到达扫描线 { $scanline }{ $tie }
+entry-covered = 在扫描线 { $scanline } 上它的区段是 { $span }，包含像素中心 x = { $centre }{ $tie }；{ $reason }
+entry-covered-no-span = 在扫描线 { $scanline } 上它包含像素中心 x = { $centre }{ $tie }；{ $reason }
+entry-not-inside = 在扫描线 { $scanline } 上{ $spans }；像素中心 x = { $centre } 不在其中{ $tie }
+spans-none = { $subject }与该扫描线没有交点
+spans-some = { $subject }的区段是 { $spans }
+subject-it = 它
+tie-wrap = { "（" }{ $text }）
+
+why-covers = { $polygon } 覆盖 ({ $x }, { $y })：z = { $test }，因此{ $result }
+why-later = { "；之后 " }{ $list }
+why-later-item = { $polygon }（{ $reason }）
+result-frame = 帧缓冲器中为 { $value }
+cleared-frame = 背景值 { $value }
+cleared-depth = 初始深度 { $value }
+why-covered-item = { $polygon } 覆盖该像素，但{ $reason }
+why-nothing-written = ({ $x }, { $y }) 处没有写入任何值：{ $list }；保持{ $cleared }
+why-none-reaches = 没有多边形覆盖 ({ $x }, { $y })：没有多边形到达扫描线 { $scanline }；保持{ $cleared }
+why-not-covered = 没有多边形覆盖 ({ $x }, { $y })：在扫描线 { $scanline } 上{ $list }；保持{ $cleared }
+
+boundary-top = 上边
+boundary-bottom = 下边
+boundary-left = 左边
+boundary-right = 右边
+boundary-vertex = 顶点
+tie-vertex = 像素中心恰好是顶点 { $point }：由在此相交的边决定，依据{ $rule }
+tie-edge-in = 像素中心恰好位于从 { $a } 到 { $b } 的{ $boundary }上，{ $rule }将其包含在内
+tie-edge-out = 像素中心恰好位于从 { $a } 到 { $b } 的{ $boundary }上，{ $rule }将其排除在外
+rule-columns-centre = 教材的列规则（中心在 [x_l, x_r] 内，含端点）
+rule-columns-cell = BUET 的列规则（从含 x_a 的单元到含 x_b 的单元）
+rule-columns-half-open = 左上规则（中心在 [x_l, x_r) 内：含左边，不含右边）
+rule-rows-half-open = 教材的半开区间规则（边在 min ≤ y < max 时计入）
+rule-rows-closed = BUET 的闭区间行规则（min ≤ y ≤ max）
+rule-rows-top-left = 左上规则（边在 min < y ≤ max 时计入：含上边，不含下边）
+
+explain-heading = 场景 { $file } 的像素 ({ $x }, { $y })：中心 ({ $cx }, { $cy })，深度测试 { $test }（{ $rule }）
+polygon-line = { $polygon }：{ $text }
+explain-start = 开始：帧缓冲器 { $frame }，z缓冲器 { $depth }（已清除）
+explain-final = 结果：帧缓冲器 { $frame }，z缓冲器 { $depth }
+
+check-all-match = { $buffer } { $file }：{ $after } 之后全部 { $cells } 个单元都正确
+check-differ = { $buffer } { $file }：{ $after } 之后，{ $cells } 个单元中有 { $count } 个不同
+check-hint-matches = 提示：如果按{ $how }读取，答案完全正确；请先写最上面一行（y = { $top }），每行从 x = 0 写起，与教材的印法相同
+check-hint-fewer = 提示：如果按{ $how }读取，只有 { $left } 个单元不同；请先写最上面一行（y = { $top }），每行从 x = 0 写起，与教材的印法相同
+check-column-answer = 答案
+check-column-right = 正确值
+check-column-why = 原因
+check-in-arith = 在 { $arith } 运算中该单元为 { $mode }；在精确运算中为 { $exact }：{ $reason }
+misreading-upside-down = 从最下面一行开始的顺序
+misreading-transposed = 行列互换的方式

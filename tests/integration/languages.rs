@@ -1,0 +1,59 @@
+//! The student's language: the book's example explained and checked in
+//! English, Russian, Ukrainian and Chinese, chosen by `--lang` or the locale.
+
+use crate::{snapshot, zsim, zsim_with};
+
+const ANSWER: &str = "tests/fixtures/rogers/depth_after_triangle.txt";
+
+/// `explain --pixel 20,15` tells the pixel's story in each language with the
+/// same exact numbers; the decimal beside them follows the language.
+#[test]
+fn explain_tells_the_books_pixel_in_each_language() {
+    for lang in ["en", "ru", "uk", "zh"] {
+        let out = zsim(&["explain", "examples/rogers.json", "--pixel", "20,15", "--lang", lang]);
+        assert_eq!(out.code, 0, "{lang}: {}", out.stderr);
+        assert!(out.stdout.contains("43/4"), "{lang}: the exact depth is there");
+        snapshot!(format!("explain_rogers_20_15_{lang}"), out.stdout);
+    }
+    // English is the default and unchanged: the same text as without --lang.
+    assert_eq!(
+        zsim(&["explain", "examples/rogers.json", "--pixel", "20,15"]).stdout,
+        zsim(&["explain", "examples/rogers.json", "--pixel", "20,15", "--lang", "en"]).stdout
+    );
+}
+
+/// `check` of the z-buffer as the book prints it (three cells differ: the
+/// printed errata) in each language.
+#[test]
+fn check_explains_the_books_misprints_in_each_language() {
+    for lang in ["en", "ru", "uk", "zh"] {
+        let out = zsim(&["check", "examples/rogers.json", "--depth", ANSWER, "--lang", lang]);
+        assert_eq!(out.code, 1, "{lang}: {}", out.stderr);
+        snapshot!(format!("check_rogers_depth_{lang}"), out.stdout);
+    }
+}
+
+/// Without `--lang` the locale decides, as gettext reads it: `LC_ALL`, then
+/// `LC_MESSAGES`, then `LANG`; an unknown language is English.
+#[test]
+fn the_locale_chooses_the_language() {
+    let check =
+        |env: &[(&str, &str)]| zsim_with(None, &["check", "examples/rogers.json", "--depth", ANSWER], env).stdout;
+    let russian = check(&[("LANG", "ru_RU.UTF-8")]);
+    assert!(
+        russian.starts_with("z-буфер tests/fixtures/rogers/depth_after_triangle.txt: отличаются 3 ячейки из 1024"),
+        "{russian}"
+    );
+    assert!(check(&[("LANG", "ru_RU.UTF-8"), ("LC_ALL", "zh_CN.UTF-8")]).starts_with("z缓冲器"));
+    assert!(check(&[("LANG", "de_DE.UTF-8")]).starts_with("z-buffer"));
+    // --lang wins over the locale.
+    let forced = zsim_with(
+        None,
+        &["check", "examples/rogers.json", "--depth", ANSWER, "--lang", "uk"],
+        &[("LANG", "ru_RU.UTF-8")],
+    );
+    assert!(forced.stdout.contains("відрізняються 3 клітинки"), "{}", forced.stdout);
+    let bad = zsim(&["check", "examples/rogers.json", "--depth", ANSWER, "--lang", "fr"]);
+    assert_eq!(bad.code, 2);
+    assert!(bad.stderr.contains("\"fr\" is not a language zsim speaks: use en, ru, uk or zh"), "{}", bad.stderr);
+}
