@@ -36,18 +36,23 @@ use crate::trace::Fate;
 /// the stages that run and the effects asked for.
 pub fn scene_header(scene: &Scene, path: &str) -> String {
     let effects = scene.effects.names();
+    let header = words!(
+        "scene-header",
+        path = path,
+        width = scene.width.to_string(),
+        height = scene.height.to_string(),
+        frame_bits = scene.frame_bits.to_string(),
+        depth_bits = scene.depth_bits.to_string(),
+        depth_max = scene.depth_max().to_string(),
+        test = scene.depth_test.name(),
+        rule = scene.depth_test.rule_text(),
+        clear = scene.clear_depth.to_string()
+    );
+    let effects = if effects.is_empty() { words!("effects-none") } else { effects.join(", ") };
     format!(
-        "scene {path}: {}×{} pixels, framebuffer {} bits, z-buffer {} bits (0…{}), depth test {} ({}), cleared to {}\nstages: {}\neffects: {}\n",
-        scene.width,
-        scene.height,
-        scene.frame_bits,
-        scene.depth_bits,
-        scene.depth_max(),
-        scene.depth_test.name(),
-        scene.depth_test.rule_text(),
-        scene.clear_depth,
-        stages(scene).join(" → "),
-        if effects.is_empty() { "none".to_string() } else { effects.join(", ") },
+        "{header}\n{}\n{}\n",
+        words!("scene-stages", stages = stages(scene).join(" → ")),
+        words!("scene-effects", effects = effects)
     )
 }
 
@@ -56,28 +61,35 @@ pub fn scene_header(scene: &Scene, path: &str) -> String {
 pub fn polygon_heading(scene: &Scene, index: usize) -> String {
     let polygon = &scene.polygons[index];
     let geometry = &polygon.geometry;
-    let start = format!("polygon {} \"{}\" (value {})", index + 1, polygon.name, polygon.value);
+    let start = words!("heading-start", number = index + 1, name = &polygon.name, value = polygon.value.to_string());
+    let plane = geometry.plane().to_string();
     match fate(scene, index) {
-        Fate::Degenerate => format!(
-            "{start}: degenerate: Newell's normal is zero (collinear vertices, or loops that cancel), so it has no plane and covers no pixel"
+        Fate::Degenerate => words!("heading-degenerate", start = start),
+        Fate::ClippedAway => words!("heading-clipped-away", start = start),
+        Fate::EdgeOn => words!("heading-edge-on", start = start, plane = plane),
+        Fate::Culled(winding) => words!(
+            "heading-culled",
+            start = start,
+            plane = plane,
+            winding = crate::explain::winding_text(winding),
+            cull = winding.name()
         ),
-        Fate::ClippedAway => format!("{start}: behind the near plane: clipped away, not drawn"),
-        Fate::EdgeOn => format!("{start}: plane {}: seen edge-on (c = 0), it covers no pixel", geometry.plane()),
-        Fate::Culled(winding) => {
-            format!("{start}: plane {}, {winding}: culled (cull {}), not drawn", geometry.plane(), winding.name())
-        }
         Fate::Drawn => {
-            let winding = Winding::of(geometry.c()).map_or(String::new(), |w| format!(", {w}"));
+            let winding = Winding::of(geometry.c())
+                .map_or(String::new(), |w| words!("heading-winding", winding = crate::explain::winding_text(w)));
             let clipped = match polygon.clip {
-                Clip::Kept { front, of } if front < of => format!(
-                    "; {front} of {of} vertices in front of the near plane, drawn as one {}-gon",
-                    polygon.vertices.len()
+                Clip::Kept { front, of } if front < of => words!(
+                    "heading-clipped",
+                    front = front.to_string(),
+                    of = of.to_string(),
+                    n = polygon.vertices.len().to_string()
                 ),
                 _ => String::new(),
             };
-            let projected = if polygon.eye_vertices.is_some() { "projected " } else { "" };
-            let opacity = polygon.opacity.map_or(String::new(), |a| format!(", opacity {}", crate::exact::fraction(a)));
-            format!("{start}: {projected}plane {}{winding}{opacity}{clipped}", geometry.plane())
+            let opacity =
+                polygon.opacity.map_or(String::new(), |a| words!("heading-opacity", alpha = crate::exact::fraction(a)));
+            let key = if polygon.eye_vertices.is_some() { "heading-drawn-projected" } else { "heading-drawn" };
+            words!(key, start = start, plane = plane, winding = winding, opacity = opacity, clipped = clipped)
         }
     }
 }

@@ -136,52 +136,49 @@ pub enum StageSet {
 pub fn describe(scene: &Scene) -> Vec<String> {
     let mut stages = Vec::new();
     if let Some(winding) = scene.effects.cull {
-        stages.push(format!("back-face culling ({} polygons skipped)", winding.name()));
+        stages.push(words!("stage-cull", winding = winding.name()));
     }
     if let Some(perspective) = scene.effects.perspective {
-        stages.push(format!(
-            "near-plane clipping (keep z ≤ {}) and perspective projection (eye at z = {})",
-            fraction(perspective.near_plane()),
-            fraction(perspective.distance)
+        stages.push(words!(
+            "stage-near-plane",
+            near = fraction(perspective.near_plane()),
+            eye = fraction(perspective.distance)
         ));
     }
     if let Some(antialias) = scene.effects.antialias {
-        stages.push(format!(
-            "supersampling {0}×{0} (depth at each {1}), then averaging",
-            antialias.samples,
-            if antialias.depth_at_samples { "sample" } else { "pixel's centre" }
-        ));
+        let key = if antialias.depth_at_samples { "stage-supersampling-sample" } else { "stage-supersampling-pixel" };
+        stages.push(words!(key, k = antialias.samples.to_string()));
     }
     if let Some(window) = scene.window {
-        stages.push(format!(
-            "window {} … {} × {} … {} onto the raster",
-            fraction(window.left),
-            fraction(window.right),
-            fraction(window.bottom),
-            fraction(window.top)
+        stages.push(words!(
+            "stage-window",
+            left = fraction(window.left),
+            right = fraction(window.right),
+            bottom = fraction(window.bottom),
+            top = fraction(window.top)
         ));
     }
     stages.push(match scene.rules.rows {
-        RowRule::HalfOpen => "scan conversion".to_string(),
-        RowRule::Closed => "scan conversion (closed rows, cells holding the crossings)".to_string(),
-        RowRule::TopLeft => "scan conversion (top-left rule)".to_string(),
+        RowRule::HalfOpen => words!("stage-scan"),
+        RowRule::Closed => words!("stage-scan-closed"),
+        RowRule::TopLeft => words!("stage-scan-top-left"),
     });
     if let Some((front, rear)) = scene.depth_range {
-        stages.push(format!("depth range (discard z outside {} … {})", fraction(front), fraction(rear)));
+        stages.push(words!("stage-depth-range", front = fraction(front), rear = fraction(rear)));
     }
     if scene.effects.perspective.is_some_and(|p| p.store_w) {
-        stages.push("w-buffer (eye-space depth z = d·z'/(d + z'))".to_string());
+        stages.push(words!("stage-w-buffer"));
     }
-    stages.push(format!("depth test ({})", scene.depth_test.rule_text()));
+    stages.push(words!("stage-depth-test", rule = scene.depth_test.rule_text()));
     if let Some(section) = scene.effects.section {
-        stages.push(format!("cross-section (z {} {})", scene.depth_test.section_symbol(), fraction(section)));
+        stages.push(words!("stage-section", op = scene.depth_test.section_symbol(), section = fraction(section)));
     }
     if scene.effects.transparency {
-        stages.push("blend by opacity (α·value + (1 − α)·under, rounded half up)".to_string());
+        stages.push(words!("stage-blend"));
     }
     stages.push(match scene.rules.store {
-        DepthStore::Quantized => format!("store (rounded half up, saturated to 0…{})", scene.depth_max()),
-        DepthStore::Exact => "store (exact depth)".to_string(),
+        DepthStore::Quantized => words!("stage-store-quantized", max = scene.depth_max().to_string()),
+        DepthStore::Exact => words!("stage-store-exact"),
     });
     stages
 }

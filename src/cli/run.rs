@@ -152,7 +152,8 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                     continue;
                 }
                 let mut text = format!("\n{}\n", report::polygon_heading(&scene, index));
-                text.push_str(&format!("  {} pixel centres covered, {} written\n", counts.0, counts.1));
+                let counts = zsim::words!("run-counts", covered = counts.0.to_string(), written = counts.1.to_string());
+                text.push_str(&format!("  {counts}\n"));
                 text.push_str(&buffers_text(&simulation, index, &polygon.name, args.axes));
                 emit(out, &text)?;
             }
@@ -234,10 +235,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
 fn buffers_text(simulation: &Simulation<'_>, index: usize, name: &str, axes: bool) -> String {
     let style = MatrixStyle { axes, color: super::use_color(), ..MatrixStyle::default() };
     format!(
-        "\nframebuffer after polygon {n} \"{name}\":\n{}\nz-buffer after polygon {n} \"{name}\":\n{}",
+        "\n{}\n{}\n{}\n{}",
+        zsim::words!("run-frame-after", number = index + 1, name = name),
         report::matrix_styled(&simulation.buffers().frame_rows(), &style),
+        zsim::words!("run-depth-after", number = index + 1, name = name),
         report::matrix_styled(&simulation.buffers().depth_rows(), &style),
-        n = index + 1,
     )
 }
 

@@ -241,7 +241,10 @@ fn parse_command(line: &str) -> Command {
     }
 }
 
-const HELP: &str = "keys: Enter or n next scanline, p next polygon, b back, g Y go to scanline Y, q quit";
+/// The keys of the line mode, in words.
+fn help() -> String {
+    zsim::words!("step-help")
+}
 
 fn interactive(
     scene: &Scene,
@@ -253,7 +256,7 @@ fn interactive(
 ) -> Result<Finish, Failure> {
     let mut input = Input::stdin();
     let mut quiz_state = QuizState::default();
-    emit(out, &format!("{}{}{HELP}\n", report::scene_header(scene, path), antialias_note(scene)))?;
+    emit(out, &format!("{}{}{}\n", report::scene_header(scene, path), antialias_note(scene), help()))?;
     let mut position = match start {
         Some(at) => Some(at),
         None => {
@@ -279,12 +282,12 @@ fn interactive(
                     emit(out, &stop_text(tracer, p, k, color))?;
                 }
             }
-            None if show => emit(out, "end of the scene: no more scanlines (b back, q quit)\n")?,
+            None if show => emit(out, &format!("{}\n", zsim::words!("step-end")))?,
             _ => {}
         }
         let line = match typed {
             Some(line) => line,
-            None => match input.read(out, "zsim step> ")? {
+            None => match input.read(out, &zsim::words!("step-prompt"))? {
                 Some(line) => line,
                 None => break,
             },
@@ -319,13 +322,14 @@ fn interactive(
                 match previous {
                     Some(at) => position = Some(at),
                     None => {
-                        emit(out, "already at the first scanline\n")?;
+                        emit(out, &format!("{}\n", zsim::words!("step-first")))?;
                         show = false;
                     }
                 }
             }
             Command::Go(row) if row >= scene.height => {
-                emit(out, &format!("row {row} is outside the raster (rows 0 … {})\n", scene.height - 1))?;
+                let last = (scene.height - 1).to_string();
+                emit(out, &format!("{}\n", zsim::words!("step-outside-raster", row = row.to_string(), last = last)))?;
                 show = false;
             }
             Command::Go(row) => {
@@ -334,15 +338,18 @@ fn interactive(
                 match found {
                     Some(k) => position = Some((p, k)),
                     None => {
-                        let message =
-                            format!("{} does not reach the scanline {}\n", polygon_name(scene, p), scanline_text(row));
+                        let message = zsim::words!(
+                            "step-not-reach",
+                            polygon = polygon_name(scene, p),
+                            scanline = scanline_text(row)
+                        ) + "\n";
                         emit(out, &message)?;
                         show = false;
                     }
                 }
             }
             Command::Unknown(text) => {
-                emit(out, &format!("unknown command \"{text}\"; {HELP}\n"))?;
+                emit(out, &format!("{}\n", zsim::words!("step-unknown", text = text, help = help())))?;
                 show = false;
             }
         }
@@ -580,26 +587,34 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
     let [a, _, c] = geometry.normal;
     let mut text = format!("\n── {}\n", report::polygon_heading(scene, p));
     text.push_str(&antialias_note(scene));
-    text.push_str(&format!("   along a scanline z steps by −a/c = {}\n", fraction(Q::new(-a, c))));
-    text.push_str(&format!("scanline {} (row {})\n", scanline_text(record.row), record.row));
+    text.push_str(&format!("   {}\n", zsim::words!("step-slope", slope = fraction(Q::new(-a, c)))));
+    let heading = zsim::words!("step-scanline", scanline = scanline_text(record.row), row = record.row.to_string());
+    text.push_str(&format!("{heading}\n"));
     let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(*x)).collect();
-    text.push_str(&format!(
-        "crossings: {}\n",
-        if crossings.is_empty() { "none".to_string() } else { crossings.join(", ") }
-    ));
+    let list = if crossings.is_empty() {
+        zsim::words!("step-crossings-none")
+    } else {
+        crossings.join(&zsim::words!("list-comma"))
+    };
+    text.push_str(&format!("{}\n", zsim::words!("step-crossings", list = list)));
     for (n, span) in record.spans.iter().enumerate() {
         let columns = match span.columns {
-            Some((first, last)) => format!("columns {first} … {last}"),
-            None => "no column".to_string(),
+            Some((first, last)) => {
+                zsim::words!("step-columns", first = first.to_string(), last = last.to_string())
+            }
+            None => zsim::words!("step-no-column"),
         };
-        text.push_str(&format!(
-            "span {}: x_a = {}, z_a = {}; x_b = {}, z_b = {}; {columns}\n",
-            n + 1,
-            exact_and_decimal(span.left),
-            span.left_depth.map_or_else(|| "(beyond 128-bit exact arithmetic)".to_string(), |z| depth_text(scene, z)),
-            exact_and_decimal(span.right),
-            span.right_depth.map_or_else(|| "(beyond 128-bit exact arithmetic)".to_string(), |z| depth_text(scene, z)),
-        ));
+        let depth = |z: Option<Q>| z.map_or_else(|| zsim::words!("z-beyond"), |z| depth_text(scene, z));
+        let line = zsim::words!(
+            "step-span",
+            n = (n + 1).to_string(),
+            xa = exact_and_decimal(span.left),
+            za = depth(span.left_depth),
+            xb = exact_and_decimal(span.right),
+            zb = depth(span.right_depth),
+            columns = columns
+        );
+        text.push_str(&format!("{line}\n"));
     }
     if !record.pixels.is_empty() {
         text.push_str(&format!("{}\n", pixel_table(scene, &record.pixels, color)));
@@ -607,7 +622,7 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
     // Centres exactly on the polygon's boundary along this scanline, and the rule deciding each.
     for x in 0..scene.width {
         if let Some(tie) = zsim::tie::tie_text(scene.rules, &scene.polygons[p].vertices, x, record.row) {
-            text.push_str(&format!("tie at x = {x}: {tie}\n"));
+            text.push_str(&format!("{}\n", zsim::words!("step-tie", x = x.to_string(), text = tie)));
         }
     }
     if let zsim::arith::Arith::Fixed(bits) = tracer.arith {
@@ -656,12 +671,15 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
     let low = record.row.saturating_sub(2);
     let high = (record.row + 2).min(scene.height - 1);
     let style = MatrixStyle { axes: true, color, rows: Some(low..=high), mark: Some(record.row) };
+    let (low, high) = (low.to_string(), high.to_string());
     text.push_str(&format!(
-        "framebuffer after this scanline (rows {low} … {high}):\n{}",
+        "{}\n{}",
+        zsim::words!("step-frame-after", low = &low, high = &high),
         report::matrix_styled(&buffers.frame_rows(), &style)
     ));
     text.push_str(&format!(
-        "z-buffer after this scanline (rows {low} … {high}):\n{}",
+        "{}\n{}",
+        zsim::words!("step-depth-after", low = &low, high = &high),
         report::matrix_styled(&buffers.depth_rows(), &style)
     ));
     text
@@ -669,9 +687,17 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
 
 fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
     let mut table = Table::new();
-    table
-        .load_style(presets::ASCII_MARKDOWN)
-        .set_header(["x", "centre", "z", "≈ z", "step", "stored", "test", "after", "frame"]);
+    table.load_style(presets::ASCII_MARKDOWN).set_header([
+        "x".to_string(),
+        zsim::words!("step-col-centre"),
+        "z".to_string(),
+        "≈ z".to_string(),
+        zsim::words!("step-col-step"),
+        zsim::words!("step-col-stored"),
+        zsim::words!("step-col-test"),
+        zsim::words!("step-col-after"),
+        zsim::words!("step-col-frame"),
+    ]);
     let depth_test = scene.depth_test;
     let op = depth_test.symbol();
     for (i, pixel) in pixels.iter().enumerate() {
@@ -679,19 +705,25 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
         let step = match i.checked_sub(1).map(|j| pixels[j]) {
             Some(previous) if previous.x + 1 == pixel.x => {
                 use num_traits::CheckedSub;
-                z.checked_sub(&previous.depth.value()).map_or_else(|| "(beyond i128)".to_string(), fraction)
+                z.checked_sub(&previous.depth.value()).map_or_else(|| zsim::words!("step-beyond"), fraction)
             }
-            _ => "start".to_string(),
+            _ => zsim::words!("step-start"),
         };
         // `always` and `never` compare nothing: they say so instead of a symbol.
         let uncompared = |passed| depth_test.outcome_text(&fraction(z), &pixel.stored_before.to_string(), passed);
         let test = match pixel.outcome {
-            Outcome::Written if !depth_test.compares() => format!("{}: written", uncompared(true)),
-            Outcome::Hidden if !depth_test.compares() => format!("{}: hidden", uncompared(false)),
-            Outcome::Written => format!("{} {op} {}: written", fraction(z), pixel.stored_before),
-            Outcome::Hidden => format!("{} {op} {}: no, hidden", fraction(z), pixel.stored_before),
-            Outcome::BeyondSection => format!("{op} {}, beyond the section", pixel.stored_before),
-            Outcome::OutsideDepthRange => format!("{}: outside the depth range, discarded", fraction(z)),
+            Outcome::Written if !depth_test.compares() => zsim::words!("step-written", test = uncompared(true)),
+            Outcome::Hidden if !depth_test.compares() => zsim::words!("step-hidden", test = uncompared(false)),
+            Outcome::Written => {
+                zsim::words!("step-test-written", z = fraction(z), op = op, stored = pixel.stored_before.to_string())
+            }
+            Outcome::Hidden => {
+                zsim::words!("step-test-hidden", z = fraction(z), op = op, stored = pixel.stored_before.to_string())
+            }
+            Outcome::BeyondSection => {
+                zsim::words!("step-beyond-section", op = op, stored = pixel.stored_before.to_string())
+            }
+            Outcome::OutsideDepthRange => zsim::words!("step-outside-range", z = fraction(z)),
         };
         let mut test = Cell::new(test);
         if color {
@@ -701,7 +733,7 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
             Cell::new(pixel.x),
             Cell::new(exact_and_decimal(Q::new(2 * i128::from(pixel.x) + 1, 2))),
             Cell::new(fraction(z)),
-            Cell::new(zsim::exact::decimal(z, 2)),
+            Cell::new(zsim::words::localize_decimal(zsim::exact::decimal(z, 2))),
             Cell::new(step),
             Cell::new(pixel.stored_before),
             test,

@@ -11,6 +11,7 @@ span = { $left } … { $right }
 scanline = y = { $y }
 list-and = { " and " }
 list-semicolon = { "; " }
+list-comma = { ", " }
 
 winding-cw = clockwise
 winding-ccw = counter-clockwise
@@ -96,3 +97,72 @@ check-column-why = why
 check-in-arith = in { $arith } arithmetic the cell holds { $mode }; in exact arithmetic { $exact }: { $reason }
 misreading-upside-down = bottom row first
 misreading-transposed = with rows and columns swapped
+
+## run and step: the scene's heading, the stages, a polygon's heading
+
+scene-header = scene { $path }: { $width }×{ $height } pixels, framebuffer { $frame_bits } bits, z-buffer { $depth_bits } bits (0…{ $depth_max }), depth test { $test } ({ $rule }), cleared to { $clear }
+scene-stages = stages: { $stages }
+scene-effects = effects: { $effects }
+effects-none = none
+stage-cull = back-face culling ({ $winding } polygons skipped)
+stage-near-plane = near-plane clipping (keep z ≤ { $near }) and perspective projection (eye at z = { $eye })
+stage-supersampling-sample = supersampling { $k }×{ $k } (depth at each sample), then averaging
+stage-supersampling-pixel = supersampling { $k }×{ $k } (depth at each pixel's centre), then averaging
+stage-window = window { $left } … { $right } × { $bottom } … { $top } onto the raster
+stage-scan = scan conversion
+stage-scan-closed = scan conversion (closed rows, cells holding the crossings)
+stage-scan-top-left = scan conversion (top-left rule)
+stage-depth-range = depth range (discard z outside { $front } … { $rear })
+stage-w-buffer = w-buffer (eye-space depth z = d·z'/(d + z'))
+stage-depth-test = depth test ({ $rule })
+stage-section = cross-section (z { $op } { $section })
+stage-blend = blend by opacity (α·value + (1 − α)·under, rounded half up)
+stage-store-quantized = store (rounded half up, saturated to 0…{ $max })
+stage-store-exact = store (exact depth)
+heading-start = polygon { $number } "{ $name }" (value { $value })
+heading-degenerate = { $start }: degenerate: Newell's normal is zero (collinear vertices, or loops that cancel), so it has no plane and covers no pixel
+heading-clipped-away = { $start }: behind the near plane: clipped away, not drawn
+heading-edge-on = { $start }: plane { $plane }: seen edge-on (c = 0), it covers no pixel
+heading-culled = { $start }: plane { $plane }, { $winding }: culled (cull { $cull }), not drawn
+heading-drawn = { $start }: plane { $plane }{ $winding }{ $opacity }{ $clipped }
+heading-drawn-projected = { $start }: projected plane { $plane }{ $winding }{ $opacity }{ $clipped }
+heading-winding = { ", " }{ $winding }
+heading-opacity = { ", opacity " }{ $alpha }
+heading-clipped = { "; " }{ $front } of { $of } vertices in front of the near plane, drawn as one { $n }-gon
+run-counts = { $covered } pixel centres covered, { $written } written
+run-frame-after = framebuffer after polygon { $number } "{ $name }":
+run-depth-after = z-buffer after polygon { $number } "{ $name }":
+
+## step, line by line
+
+step-slope = along a scanline z steps by −a/c = { $slope }
+step-scanline = scanline { $scanline } (row { $row })
+step-crossings = crossings: { $list }
+step-crossings-none = none
+step-span = span { $n }: x_a = { $xa }, z_a = { $za }; x_b = { $xb }, z_b = { $zb }; { $columns }
+step-columns = columns { $first } … { $last }
+step-no-column = no column
+step-col-centre = centre
+step-col-step = step
+step-col-stored = stored
+step-col-test = test
+step-col-after = after
+step-col-frame = frame
+step-start = start
+step-beyond = (beyond i128)
+step-written = { $test }: written
+step-hidden = { $test }: hidden
+step-test-written = { $z } { $op } { $stored }: written
+step-test-hidden = { $z } { $op } { $stored }: no, hidden
+step-beyond-section = { $op } { $stored }, beyond the section
+step-outside-range = { $z }: outside the depth range, discarded
+step-tie = tie at x = { $x }: { $text }
+step-frame-after = framebuffer after this scanline (rows { $low } … { $high }):
+step-depth-after = z-buffer after this scanline (rows { $low } … { $high }):
+step-help = keys: Enter or n next scanline, p next polygon, b back, g Y go to scanline Y, q quit
+step-end = end of the scene: no more scanlines (b back, q quit)
+step-first = already at the first scanline
+step-outside-raster = row { $row } is outside the raster (rows 0 … { $last })
+step-not-reach = { $polygon } does not reach the scanline { $scanline }
+step-unknown = unknown command "{ $text }"; { $help }
+step-prompt = { "zsim step> " }

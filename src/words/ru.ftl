@@ -9,6 +9,8 @@ span = { $left } … { $right }
 scanline = y = { $y }
 list-and = { " и " }
 list-semicolon = { "; " }
+# Decimals take the comma, so lists of numbers take semicolons.
+list-comma = { "; " }
 
 winding-cw = по часовой стрелке
 winding-ccw = против часовой стрелки
@@ -95,3 +97,72 @@ check-column-why = почему
 check-in-arith = в арифметике { $arith } в ячейке { $mode }; в точной арифметике { $exact }: { $reason }
 misreading-upside-down = с нижней строки
 misreading-transposed = по столбцам (строки и столбцы переставлены)
+
+## run и step: заголовок сцены, этапы, заголовок многоугольника
+
+scene-header = сцена { $path }: { $width }×{ $height } пикселов, буфер кадра { $frame_bits } бит, z-буфер { $depth_bits } бит (0…{ $depth_max }), тест глубины { $test } ({ $rule }), после очистки { $clear }
+scene-stages = этапы: { $stages }
+scene-effects = эффекты: { $effects }
+effects-none = нет
+stage-cull = отбрасывание нелицевых граней (пропускаются многоугольники с обходом { $winding })
+stage-near-plane = отсечение ближней плоскостью (остаётся z ≤ { $near }) и перспективная проекция (глаз в z = { $eye })
+stage-supersampling-sample = суперсэмплинг { $k }×{ $k } (глубина в каждом отсчёте), затем усреднение
+stage-supersampling-pixel = суперсэмплинг { $k }×{ $k } (глубина в центре пиксела), затем усреднение
+stage-window = окно { $left } … { $right } × { $bottom } … { $top } на растр
+stage-scan = разложение в растр
+stage-scan-closed = разложение в растр (замкнутые строки, ячейки с пересечениями)
+stage-scan-top-left = разложение в растр (правило «верх-лево»)
+stage-depth-range = диапазон глубины (отбрасываются z вне { $front } … { $rear })
+stage-w-buffer = w-буфер (глубина в системе наблюдателя z = d·z'/(d + z'))
+stage-depth-test = тест глубины ({ $rule })
+stage-section = сечение (z { $op } { $section })
+stage-blend = смешивание по непрозрачности (α·значение + (1 − α)·нижнее, половина округляется вверх)
+stage-store-quantized = запись (половина округляется вверх, ограничение 0…{ $max })
+stage-store-exact = запись (точная глубина)
+heading-start = многоугольник { $number } «{ $name }» (значение { $value })
+heading-degenerate = { $start }: вырожден: нормаль по Ньюэлу нулевая (вершины на одной прямой или взаимно гасящиеся петли), поэтому у него нет плоскости и он не покрывает ни одного пиксела
+heading-clipped-away = { $start }: за ближней плоскостью: отсекается целиком, не рисуется
+heading-edge-on = { $start }: плоскость { $plane }: виден с ребра (c = 0), не покрывает ни одного пиксела
+heading-culled = { $start }: плоскость { $plane }, { $winding }: отбрасывается как нелицевой (cull { $cull }), не рисуется
+heading-drawn = { $start }: плоскость { $plane }{ $winding }{ $opacity }{ $clipped }
+heading-drawn-projected = { $start }: плоскость после проецирования { $plane }{ $winding }{ $opacity }{ $clipped }
+heading-winding = { ", обход " }{ $winding }
+heading-opacity = { ", непрозрачность " }{ $alpha }
+heading-clipped = { "; " }перед ближней плоскостью { $front } из { $of } вершин, рисуется как { $n }-угольник
+run-counts = покрыто центров пикселов: { $covered }, записано: { $written }
+run-frame-after = буфер кадра после многоугольника { $number } «{ $name }»:
+run-depth-after = z-буфер после многоугольника { $number } «{ $name }»:
+
+## step по строкам
+
+step-slope = вдоль сканирующей строки z меняется на −a/c = { $slope }
+step-scanline = сканирующая строка { $scanline } (строка растра { $row })
+step-crossings = пересечения: { $list }
+step-crossings-none = нет
+step-span = отрезок { $n }: x_a = { $xa }, z_a = { $za }; x_b = { $xb }, z_b = { $zb }; { $columns }
+step-columns = столбцы { $first } … { $last }
+step-no-column = ни одного столбца
+step-col-centre = центр
+step-col-step = шаг
+step-col-stored = в z-буфере
+step-col-test = тест
+step-col-after = после
+step-col-frame = кадр
+step-start = начало
+step-beyond = (вне i128)
+step-written = { $test }: записано
+step-hidden = { $test }: скрыт
+step-test-written = { $z } { $op } { $stored }: записано
+step-test-hidden = { $z } { $op } { $stored }: нет, скрыт
+step-beyond-section = { $op } { $stored }, за сечением
+step-outside-range = { $z }: вне диапазона глубины, отброшено
+step-tie = граничный случай при x = { $x }: { $text }
+step-frame-after = буфер кадра после этой строки (строки { $low } … { $high }):
+step-depth-after = z-буфер после этой строки (строки { $low } … { $high }):
+step-help = клавиши: Enter или n следующая строка, p следующий многоугольник, b назад, g Y перейти к строке Y, q выход
+step-end = конец сцены: строк больше нет (b назад, q выход)
+step-first = это уже первая строка
+step-outside-raster = строка { $row } вне растра (строки 0 … { $last })
+step-not-reach = { $polygon } не достигает сканирующей строки { $scanline }
+step-unknown = неизвестная команда «{ $text }»; { $help }
+step-prompt = { "zsim step> " }

@@ -9,6 +9,8 @@ span = { $left } … { $right }
 scanline = y = { $y }
 list-and = { " і " }
 list-semicolon = { "; " }
+# Decimals take the comma, so lists of numbers take semicolons.
+list-comma = { "; " }
 
 winding-cw = за годинниковою стрілкою
 winding-ccw = проти годинникової стрілки
@@ -95,3 +97,72 @@ check-column-why = чому
 check-in-arith = в арифметиці { $arith } у клітинці { $mode }; у точній арифметиці { $exact }: { $reason }
 misreading-upside-down = з нижнього рядка
 misreading-transposed = по стовпцях (рядки й стовпці переставлено)
+
+## run і step: заголовок сцени, етапи, заголовок багатокутника
+
+scene-header = сцена { $path }: { $width }×{ $height } пікселів, буфер кадру { $frame_bits } біт, z-буфер { $depth_bits } біт (0…{ $depth_max }), тест глибини { $test } ({ $rule }), після очищення { $clear }
+scene-stages = етапи: { $stages }
+scene-effects = ефекти: { $effects }
+effects-none = немає
+stage-cull = відкидання нелицьових граней (пропускаються багатокутники з обходом { $winding })
+stage-near-plane = відсікання ближньою площиною (лишається z ≤ { $near }) і перспективна проєкція (око в z = { $eye })
+stage-supersampling-sample = суперсемплінг { $k }×{ $k } (глибина в кожному відліку), потім усереднення
+stage-supersampling-pixel = суперсемплінг { $k }×{ $k } (глибина в центрі пікселя), потім усереднення
+stage-window = вікно { $left } … { $right } × { $bottom } … { $top } на растр
+stage-scan = розкладання в растр
+stage-scan-closed = розкладання в растр (замкнені рядки, клітинки з перетинами)
+stage-scan-top-left = розкладання в растр (правило «верх-ліво»)
+stage-depth-range = діапазон глибини (відкидаються z поза { $front } … { $rear })
+stage-w-buffer = w-буфер (глибина в системі спостерігача z = d·z'/(d + z'))
+stage-depth-test = тест глибини ({ $rule })
+stage-section = переріз (z { $op } { $section })
+stage-blend = змішування за непрозорістю (α·значення + (1 − α)·нижнє, половина округлюється вгору)
+stage-store-quantized = запис (половина округлюється вгору, обмеження 0…{ $max })
+stage-store-exact = запис (точна глибина)
+heading-start = багатокутник { $number } «{ $name }» (значення { $value })
+heading-degenerate = { $start }: вироджений: нормаль за Ньюелом нульова (вершини на одній прямій або петлі, що взаємно гасяться), тому він не має площини й не покриває жодного пікселя
+heading-clipped-away = { $start }: за ближньою площиною: відсікається повністю, не малюється
+heading-edge-on = { $start }: площина { $plane }: видно з ребра (c = 0), не покриває жодного пікселя
+heading-culled = { $start }: площина { $plane }, { $winding }: відкидається як нелицьовий (cull { $cull }), не малюється
+heading-drawn = { $start }: площина { $plane }{ $winding }{ $opacity }{ $clipped }
+heading-drawn-projected = { $start }: площина після проєціювання { $plane }{ $winding }{ $opacity }{ $clipped }
+heading-winding = { ", обхід " }{ $winding }
+heading-opacity = { ", непрозорість " }{ $alpha }
+heading-clipped = { "; " }перед ближньою площиною { $front } з { $of } вершин, малюється як { $n }-кутник
+run-counts = покрито центрів пікселів: { $covered }, записано: { $written }
+run-frame-after = буфер кадру після багатокутника { $number } «{ $name }»:
+run-depth-after = z-буфер після багатокутника { $number } «{ $name }»:
+
+## step рядок за рядком
+
+step-slope = уздовж рядка сканування z змінюється на −a/c = { $slope }
+step-scanline = рядок сканування { $scanline } (рядок растра { $row })
+step-crossings = перетини: { $list }
+step-crossings-none = немає
+step-span = відрізок { $n }: x_a = { $xa }, z_a = { $za }; x_b = { $xb }, z_b = { $zb }; { $columns }
+step-columns = стовпці { $first } … { $last }
+step-no-column = жодного стовпця
+step-col-centre = центр
+step-col-step = крок
+step-col-stored = у z-буфері
+step-col-test = тест
+step-col-after = після
+step-col-frame = кадр
+step-start = початок
+step-beyond = (поза i128)
+step-written = { $test }: записано
+step-hidden = { $test }: прихований
+step-test-written = { $z } { $op } { $stored }: записано
+step-test-hidden = { $z } { $op } { $stored }: ні, прихований
+step-beyond-section = { $op } { $stored }, за перерізом
+step-outside-range = { $z }: поза діапазоном глибини, відкинуто
+step-tie = граничний випадок при x = { $x }: { $text }
+step-frame-after = буфер кадру після цього рядка (рядки { $low } … { $high }):
+step-depth-after = z-буфер після цього рядка (рядки { $low } … { $high }):
+step-help = клавіші: Enter або n наступний рядок, p наступний багатокутник, b назад, g Y перейти до рядка Y, q вихід
+step-end = кінець сцени: рядків більше немає (b назад, q вихід)
+step-first = це вже перший рядок
+step-outside-raster = рядок { $row } поза растром (рядки 0 … { $last })
+step-not-reach = { $polygon } не сягає рядка сканування { $scanline }
+step-unknown = невідома команда «{ $text }»; { $help }
+step-prompt = { "zsim step> " }

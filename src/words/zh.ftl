@@ -9,6 +9,7 @@ span = { $left } … { $right }
 scanline = y = { $y }
 list-and = { " 和 " }
 list-semicolon = { "；" }
+list-comma = { "，" }
 
 winding-cw = 顺时针
 winding-ccw = 逆时针
@@ -91,3 +92,72 @@ check-column-why = 原因
 check-in-arith = 在 { $arith } 运算中该单元为 { $mode }；在精确运算中为 { $exact }：{ $reason }
 misreading-upside-down = 从最下面一行开始的顺序
 misreading-transposed = 行列互换的方式
+
+## run 与 step：场景标题、各阶段、多边形标题
+
+scene-header = 场景 { $path }：{ $width }×{ $height } 像素，帧缓冲器 { $frame_bits } 位，z缓冲器 { $depth_bits } 位（0…{ $depth_max }），深度测试 { $test }（{ $rule }），初值 { $clear }
+scene-stages = 阶段：{ $stages }
+scene-effects = 效果：{ $effects }
+effects-none = 无
+stage-cull = 背面剔除（跳过{ $winding }的多边形）
+stage-near-plane = 近平面裁剪（保留 z ≤ { $near }）与透视投影（视点在 z = { $eye }）
+stage-supersampling-sample = { $k }×{ $k } 超采样（每个采样点取深度），然后求平均
+stage-supersampling-pixel = { $k }×{ $k } 超采样（在像素中心取深度），然后求平均
+stage-window = 窗口 { $left } … { $right } × { $bottom } … { $top } 映射到光栅
+stage-scan = 扫描转换
+stage-scan-closed = 扫描转换（闭区间行，取包含交点的单元）
+stage-scan-top-left = 扫描转换（左上规则）
+stage-depth-range = 深度范围（丢弃 { $front } … { $rear } 之外的 z）
+stage-w-buffer = w缓冲器（观察坐标系深度 z = d·z'/(d + z')）
+stage-depth-test = 深度测试（{ $rule }）
+stage-section = 剖切（z { $op } { $section }）
+stage-blend = 按不透明度混合（α·值 + (1 − α)·下层，四舍五入）
+stage-store-quantized = 写入（四舍五入，截断到 0…{ $max }）
+stage-store-exact = 写入（精确深度）
+heading-start = 多边形 { $number }“{ $name }”（值 { $value }）
+heading-degenerate = { $start }：退化：Newell 法向量为零（顶点共线，或环路相互抵消），因此没有平面，不覆盖任何像素
+heading-clipped-away = { $start }：在近平面之后：被完全裁剪，不绘制
+heading-edge-on = { $start }：平面 { $plane }：侧对视点（c = 0），不覆盖任何像素
+heading-culled = { $start }：平面 { $plane }，{ $winding }：被剔除（cull { $cull }），不绘制
+heading-drawn = { $start }：平面 { $plane }{ $winding }{ $opacity }{ $clipped }
+heading-drawn-projected = { $start }：投影后的平面 { $plane }{ $winding }{ $opacity }{ $clipped }
+heading-winding = { "，" }{ $winding }
+heading-opacity = { "，不透明度 " }{ $alpha }
+heading-clipped = { "；" }{ $of } 个顶点中有 { $front } 个在近平面之前，按 { $n } 边形绘制
+run-counts = 覆盖像素中心 { $covered } 个，写入 { $written } 个
+run-frame-after = 多边形 { $number }“{ $name }”之后的帧缓冲器：
+run-depth-after = 多边形 { $number }“{ $name }”之后的z缓冲器：
+
+## 逐行的 step
+
+step-slope = 沿扫描线 z 每步变化 −a/c = { $slope }
+step-scanline = 扫描线 { $scanline }（光栅第 { $row } 行）
+step-crossings = 交点：{ $list }
+step-crossings-none = 无
+step-span = 区段 { $n }：x_a = { $xa }，z_a = { $za }；x_b = { $xb }，z_b = { $zb }；{ $columns }
+step-columns = 列 { $first } … { $last }
+step-no-column = 不含任何列
+step-col-centre = 中心
+step-col-step = 步长
+step-col-stored = 原值
+step-col-test = 测试
+step-col-after = 之后
+step-col-frame = 帧
+step-start = 起点
+step-beyond = （超出 i128）
+step-written = { $test }：写入
+step-hidden = { $test }：被遮挡
+step-test-written = { $z } { $op } { $stored }：写入
+step-test-hidden = { $z } { $op } { $stored }：否，被遮挡
+step-beyond-section = { $op } { $stored }，在剖切面之外
+step-outside-range = { $z }：超出深度范围，被丢弃
+step-tie = x = { $x } 处的边界情形：{ $text }
+step-frame-after = 本扫描线之后的帧缓冲器（第 { $low } … { $high } 行）：
+step-depth-after = 本扫描线之后的z缓冲器（第 { $low } … { $high } 行）：
+step-help = 按键：Enter 或 n 下一条扫描线，p 下一个多边形，b 后退，g Y 转到扫描线 Y，q 退出
+step-end = 场景结束：没有更多扫描线（b 后退，q 退出）
+step-first = 已经是第一条扫描线
+step-outside-raster = 第 { $row } 行不在光栅内（行 0 … { $last }）
+step-not-reach = { $polygon } 不到达扫描线 { $scanline }
+step-unknown = 未知命令“{ $text }”；{ $help }
+step-prompt = { "zsim step> " }

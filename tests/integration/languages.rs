@@ -57,3 +57,17 @@ fn the_locale_chooses_the_language() {
     assert_eq!(bad.code, 2);
     assert!(bad.stderr.contains("\"fr\" is not a language zsim speaks: use en, ru, uk or zh"), "{}", bad.stderr);
 }
+
+/// One scanline of `step` (line mode) in each language: the book's
+/// triangle on the scanline through pixel (20, 15).
+#[test]
+fn step_shows_one_scanline_in_each_language() {
+    for lang in ["en", "ru", "uk", "zh"] {
+        let out = crate::zsim_stdin(
+            &["step", "examples/rogers.json", "--polygon", "2", "--scanline", "15", "--lang", lang],
+            "q\n",
+        );
+        assert_eq!(out.code, 0, "{lang}: {}", out.stderr);
+        snapshot!(format!("step_rogers_triangle_15_{lang}"), out.stdout);
+    }
+}

@@ -42,17 +42,37 @@ pub fn zsim_in(dir: Option<&Path>, args: &[&str]) -> Run {
 /// Runs the real `zsim` binary in `dir` with `LANG=C.UTF-8` (English) and
 /// no other locale variables, then `env` on top.
 pub fn zsim_with(dir: Option<&Path>, args: &[&str], env: &[(&str, &str)]) -> Run {
+    zsim_full(dir, args, env, None)
+}
+
+/// Runs the real `zsim` binary in the project root with `input` on standard
+/// input (a pipe, not a terminal).
+pub fn zsim_stdin(args: &[&str], input: &str) -> Run {
+    zsim_full(None, args, &[], Some(input))
+}
+
+fn zsim_full(dir: Option<&Path>, args: &[&str], env: &[(&str, &str)], input: Option<&str>) -> Run {
+    use std::io::Write;
+    use std::process::Stdio;
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
+    let mut child = Command::new(env!("CARGO_BIN_EXE_zsim"))
         .args(args)
         .current_dir(dir.unwrap_or(root))
         .env("NO_COLOR", "1")
+        // English unless a test asks for another language.
         .env_remove("LC_ALL")
         .env_remove("LC_MESSAGES")
         .env("LANG", "C.UTF-8")
         .envs(env.iter().copied())
-        .output()
+        .stdin(if input.is_some() { Stdio::piped() } else { Stdio::null() })
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
         .expect("the zsim binary runs");
+    if let Some(input) = input {
+        child.stdin.take().expect("a pipe").write_all(input.as_bytes()).expect("input written");
+    }
+    let output = child.wait_with_output().expect("the zsim binary runs");
     Run {
         code: output.status.code().expect("zsim exits with a code, not a signal"),
         stdout: String::from_utf8(output.stdout).expect("stdout is UTF-8"),

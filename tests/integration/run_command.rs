@@ -179,16 +179,7 @@ fn run_after_a_polygon_and_from_standard_input() {
     let final_only = zsim(&["run", "examples/rogers.json", "--final"]);
     assert_eq!(final_only.stdout.matches("\npolygon ").count(), 1, "--final prints the last heading only");
     // `-` reads the scene from standard input.
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_zsim"))
-        .args(["run", "-", "--final"])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .stdin(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    use std::io::Write;
-    child.stdin.take().unwrap().write_all(&std::fs::read("examples/rogers.json").unwrap()).unwrap();
-    let output = child.wait_with_output().unwrap();
-    let stdout = String::from_utf8(output.stdout).unwrap();
+    let stdout =
+        crate::zsim_stdin(&["run", "-", "--final"], &std::fs::read_to_string("examples/rogers.json").unwrap()).stdout;
     assert_eq!(stdout.replacen("scene -:", "scene examples/rogers.json:", 1), final_only.stdout);
 }

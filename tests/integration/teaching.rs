@@ -1,29 +1,13 @@
 //! The teaching tools: `step` (one scanline, and driven through standard
 //! input), `explain`, `check` and `figure`, all on the real binary.
 
-use std::process::{Command, Stdio};
+use std::process::Command;
 
 use crate::{Run, scene_file, snapshot, zsim, zsim_in};
 
 /// Runs `zsim` with `input` on standard input (not a terminal).
 fn zsim_with_input(args: &[&str], input: &str) -> Run {
-    use std::io::Write;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_zsim"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .env("NO_COLOR", "1")
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("zsim starts");
-    child.stdin.take().unwrap().write_all(input.as_bytes()).unwrap();
-    let output = child.wait_with_output().unwrap();
-    Run {
-        code: output.status.code().unwrap(),
-        stdout: String::from_utf8(output.stdout).unwrap(),
-        stderr: String::from_utf8(output.stderr).unwrap(),
-    }
+    crate::zsim_stdin(args, input)
 }
 
 /// The cells of the table row for pixel `x` in `step` output.
