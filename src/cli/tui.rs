@@ -135,7 +135,7 @@ impl<'t, 's> App<'t, 's> {
             KeyCode::Char('>') => self.scroll.1 += 4,
             KeyCode::Char('[') => self.table_scroll = self.table_scroll.saturating_sub(4),
             KeyCode::Char(']') => self.table_scroll += 4,
-            _ => self.message = "that key does nothing here: ? shows the keys".into(),
+            _ => self.message = zsim::words!("tui-key-nothing"),
         }
     }
 
@@ -164,12 +164,13 @@ impl<'t, 's> App<'t, 's> {
                 let right = super::step::judge(&pixel, &typed).is_some_and(|(right, _)| right);
                 quiz.asked += 1;
                 quiz.right += usize::from(right);
-                quiz.verdict = Some(format!(
-                    "({}, {}): you said {typed}: {}: {}",
-                    pixel.x,
-                    pixel.y,
-                    if right { "right" } else { "wrong" },
-                    pixel_reason(scene, &pixel)
+                quiz.verdict = Some(zsim::words!(
+                    "tui-quiz-verdict",
+                    x = pixel.x,
+                    y = pixel.y,
+                    typed = &typed,
+                    verdict = if right { zsim::words!("tui-right") } else { zsim::words!("tui-wrong") },
+                    reason = pixel_reason(scene, &pixel)
                 ));
                 self.pixel = Some(done + 1);
             }
@@ -194,11 +195,11 @@ impl<'t, 's> App<'t, 's> {
         }
         let (next, skipped) = self.tracer.next_stop(Some(at));
         if !skipped.is_empty() {
-            self.message = format!("passed over: {}", skipped.join("; "));
+            self.message = zsim::words!("tui-passed-over", list = skipped.join(&zsim::words!("list-semicolon")));
         }
         match next {
             Some(stop) => self.arrive(stop),
-            None => self.message = "end of the scene: no more scanlines (b back, q quit)".into(),
+            None => self.message = zsim::words!("step-end"),
         }
     }
 
@@ -208,7 +209,7 @@ impl<'t, 's> App<'t, 's> {
             Some(done) if done > 1 && self.quiz.is_none() => self.pixel = Some(done - 1),
             _ => match self.tracer.previous_stop(at) {
                 Some(stop) => self.arrive(stop),
-                None => self.message = "already at the first scanline".into(),
+                None => self.message = zsim::words!("step-first"),
             },
         }
     }
@@ -227,7 +228,7 @@ impl<'t, 's> App<'t, 's> {
         let last = self.tracer.trace(p).scanlines.len().saturating_sub(1);
         match self.tracer.next_stop(Some((p, last))).0 {
             Some(stop) => self.arrive(stop),
-            None => self.message = "no later polygon covers a pixel".into(),
+            None => self.message = zsim::words!("tui-no-later"),
         }
     }
 
@@ -243,21 +244,23 @@ impl<'t, 's> App<'t, 's> {
         }
         match stop {
             Some(s) => self.arrive(s),
-            None => self.message = "no earlier polygon covers a pixel".into(),
+            None => self.message = zsim::words!("tui-no-earlier"),
         }
     }
 
     fn go_to(&mut self, row: u32) {
         let scene = self.tracer.scene;
         if row >= scene.height {
-            self.message = format!("row {row} is outside the raster (rows 0 … {})", scene.height - 1);
+            let last = (scene.height - 1).to_string();
+            self.message = zsim::words!("step-outside-raster", row = row.to_string(), last = last);
             return;
         }
         let p = self.at.map_or(0, |(p, _)| p);
         match self.tracer.trace(p).scanlines.iter().position(|r| r.row == row) {
             Some(k) => self.arrive((p, k)),
             None => {
-                self.message = format!("{} does not reach the scanline {}", polygon_name(scene, p), scanline_text(row))
+                self.message =
+                    zsim::words!("step-not-reach", polygon = polygon_name(scene, p), scanline = scanline_text(row))
             }
         }
     }
@@ -270,16 +273,20 @@ impl<'t, 's> App<'t, 's> {
         let scene = self.tracer.scene;
         let record = self.record();
         let heading = match (self.at, &record) {
-            (Some((p, _)), Some(r)) => format!(" {}, scanline {}", polygon_name(scene, p), scanline_text(r.row)),
-            _ => " end of the scene".to_string(),
+            (Some((p, _)), Some(r)) => {
+                zsim::words!("tui-heading", polygon = polygon_name(scene, p), scanline = scanline_text(r.row))
+            }
+            _ => zsim::words!("tui-heading-end"),
         };
         let view = match self.view {
-            View::Frame => "framebuffer",
-            View::Depth => "z-buffer",
+            View::Frame => zsim::words!("buffer-frame"),
+            View::Depth => zsim::words!("buffer-depth"),
         };
-        let score = self.quiz.as_ref().map_or(String::new(), |q| format!(" · quiz {}/{}", q.right, q.asked));
+        let score = self.quiz.as_ref().map_or(String::new(), |q| {
+            zsim::words!("tui-score", right = q.right.to_string(), asked = q.asked.to_string())
+        });
         frame.render_widget(
-            Paragraph::new(format!("zsim step ·{heading} · {view}{score} · ? keys"))
+            Paragraph::new(zsim::words!("tui-title", heading = heading, view = view, score = score))
                 .style(Style::new().add_modifier(Modifier::REVERSED)),
             title,
         );
@@ -287,7 +294,10 @@ impl<'t, 's> App<'t, 's> {
         let [left, right] = Layout::horizontal([Constraint::Length(raster_width), Constraint::Min(20)]).areas(body);
         self.draw_raster(frame, left, record.as_ref());
         if self.help {
-            frame.render_widget(Paragraph::new(HELP.join("\n")).block(Block::bordered().title(" keys ")), right);
+            let help = Paragraph::new(zsim::words!("tui-help"))
+                .wrap(Wrap { trim: false })
+                .block(Block::bordered().title(zsim::words!("tui-keys")));
+            frame.render_widget(help, right);
         } else {
             let lines = self.details(record.as_ref());
             frame.render_widget(
@@ -299,21 +309,24 @@ impl<'t, 's> App<'t, 's> {
             );
         }
         let status_text = if let Some(text) = &self.go {
-            format!("go to scanline of row: {text}▏ (Enter to go, Esc to cancel)")
+            zsim::words!("tui-go", text = text)
         } else if let Some(verdict) = self.quiz.as_ref().and_then(|q| q.verdict.clone()) {
-            format!("{verdict}   (n: next)")
+            zsim::words!("tui-verdict-next", verdict = verdict)
         } else if self.quiz.is_some() && self.asking() {
             let record = record.as_ref().expect("asking implies a scanline");
             let pixel = record.pixels[self.pixel.unwrap_or(0)];
             let typed = self.quiz.as_ref().map_or("", |q| q.typed.as_str());
-            format!(
-                "quiz: the z-buffer after ({}, {}), stored {}? (a value, or - for not written; Enter) {typed}▏",
-                pixel.x, pixel.y, pixel.stored_before
+            zsim::words!(
+                "tui-quiz-ask",
+                x = pixel.x,
+                y = pixel.y,
+                stored = pixel.stored_before.to_string(),
+                typed = typed
             )
         } else if !self.message.is_empty() {
             self.message.clone()
         } else {
-            "n/→ next · b/← back · p/P polygon · g go · f/z buffer · m pixel steps · q quit".to_string()
+            zsim::words!("tui-status")
         };
         frame.render_widget(Paragraph::new(status_text).wrap(Wrap { trim: true }), status);
     }
@@ -322,7 +335,7 @@ impl<'t, 's> App<'t, 's> {
     fn draw_raster(&mut self, frame: &mut Frame<'_>, area: Rect, record: Option<&ScanlineRecord>) {
         let scene = self.tracer.scene;
         let Some((p, k)) = self.at else {
-            frame.render_widget(Paragraph::new("no scanline"), area);
+            frame.render_widget(Paragraph::new(zsim::words!("tui-no-scanline")), area);
             return;
         };
         let done = self.pixel.unwrap_or(usize::MAX);
@@ -373,7 +386,13 @@ impl<'t, 's> App<'t, 's> {
             lines.push(Line::from(spans));
         }
         let last_shown = (first + columns_shown).min(width) - 1;
-        lines.push(Line::from(format!("    x {first} … {last_shown} of 0 … {}", width - 1)));
+        let shown = zsim::words!(
+            "tui-columns-shown",
+            first = first.to_string(),
+            last = last_shown.to_string(),
+            max = (width - 1).to_string()
+        );
+        lines.push(Line::from(format!("    {shown}")));
         frame.render_widget(Paragraph::new(lines), area);
     }
 
@@ -381,24 +400,32 @@ impl<'t, 's> App<'t, 's> {
     fn details(&mut self, record: Option<&ScanlineRecord>) -> Vec<Line<'static>> {
         let scene = self.tracer.scene;
         let (Some((p, _)), Some(record)) = (self.at, record) else {
-            return vec![Line::from("end of the scene")];
+            return vec![Line::from(zsim::words!("tui-end"))];
         };
         let geometry = &scene.polygons[p].geometry;
         let [a, _, c] = geometry.normal;
         let mut lines = vec![
             Line::styled(report::polygon_heading(scene, p), Style::new().add_modifier(Modifier::BOLD)),
-            Line::from(format!("z steps by −a/c = {} along a scanline", fraction(Q::new(-a, c)))),
-            Line::from(format!("scanline {} (row {})", scanline_text(record.row), record.row)),
+            Line::from(zsim::words!("tui-slope", slope = fraction(Q::new(-a, c)))),
+            Line::from(zsim::words!(
+                "step-scanline",
+                scanline = scanline_text(record.row),
+                row = record.row.to_string()
+            )),
         ];
         let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(*x)).collect();
-        lines.push(Line::from(format!("crossings: {}", crossings.join(", "))));
+        lines.push(Line::from(zsim::words!("step-crossings", list = crossings.join(&zsim::words!("list-comma")))));
         for (i, span) in record.spans.iter().enumerate() {
-            let columns = span.columns.map_or("no centre".to_string(), |(f, l)| format!("columns {f} … {l}"));
-            lines.push(Line::from(format!(
-                "span {}: {} … {}; {columns}",
-                i + 1,
-                exact_and_decimal(span.left),
-                exact_and_decimal(span.right)
+            let columns = span.columns.map_or_else(
+                || zsim::words!("tui-no-centre"),
+                |(f, l)| zsim::words!("step-columns", first = f.to_string(), last = l.to_string()),
+            );
+            lines.push(Line::from(zsim::words!(
+                "tui-span",
+                n = (i + 1).to_string(),
+                left = exact_and_decimal(span.left),
+                right = exact_and_decimal(span.right),
+                columns = columns
             )));
         }
         lines.push(Line::from(""));
@@ -407,23 +434,29 @@ impl<'t, 's> App<'t, 's> {
             // `always` and `never` compare nothing: say so instead of a symbol.
             let (op, compares) = match scene.depth_test.compares() {
                 true => (scene.depth_test.symbol().to_string(), true),
-                false => (format!("{} passes, ", scene.depth_test.symbol()), false),
+                false => (zsim::words!("tui-uncompared", test = scene.depth_test.symbol()), false),
             };
             let zs: Vec<String> = record.pixels.iter().map(|e| exact_and_decimal(e.depth.value())).collect();
             let width = zs.iter().map(|z| z.chars().count()).max().unwrap_or(1);
             lines.push(Line::styled(
-                format!("  x {:<width$} test → stored (frame)", "z"),
+                format!("  {}", zsim::words!("tui-table-heading", z = format!("{:<width$}", "z"))),
                 Style::new().add_modifier(Modifier::BOLD),
             ));
             for (pixel, z) in record.pixels.iter().zip(&zs) {
                 let (test, verdict, style) = match pixel.outcome {
-                    Outcome::Written => ("", format!("{} ({})", pixel.stored_after, pixel.frame_after), Color::Green),
-                    _ => (if compares { "not " } else { "" }, "hidden".to_string(), Color::Red),
+                    Outcome::Written => {
+                        (String::new(), format!("{} ({})", pixel.stored_after, pixel.frame_after), Color::Green)
+                    }
+                    _ => (
+                        if compares { zsim::words!("tui-not") } else { String::new() },
+                        zsim::words!("tui-hidden"),
+                        Color::Red,
+                    ),
                 };
                 let line = format!("{:>3} {z:<width$} {test}{op}{} → {verdict}", pixel.x, pixel.stored_before);
                 lines.push(Line::styled(line, Style::new().fg(style)));
             }
-            lines.push(Line::from("m: pixel by pixel, with the reasons"));
+            lines.push(Line::from(zsim::words!("tui-pixel-by-pixel")));
             return lines;
         };
         // Pixel steps: the pixel just done (none yet at the start).
@@ -433,16 +466,18 @@ impl<'t, 's> App<'t, 's> {
             let z = pixel.depth.value();
             let step = match first_z {
                 Some(start) if pixel.x > record.pixels[0].x => {
-                    format!(", {} steps of −a/c from {}", pixel.x - record.pixels[0].x, fraction(start))
+                    let count = (pixel.x - record.pixels[0].x).to_string();
+                    zsim::words!("tui-steps-from", count = count, start = fraction(start))
                 }
                 _ => String::new(),
             };
-            lines.push(Line::from(format!(
-                "({}, {}): centre x = {}, z = {}{step}",
-                pixel.x,
-                pixel.y,
-                exact_and_decimal(Q::new(2 * i128::from(pixel.x) + 1, 2)),
-                exact_and_decimal(z)
+            lines.push(Line::from(zsim::words!(
+                "tui-pixel",
+                x = pixel.x,
+                y = pixel.y,
+                centre = exact_and_decimal(Q::new(2 * i128::from(pixel.x) + 1, 2)),
+                z = exact_and_decimal(z),
+                steps = step
             )));
             let style = if pixel.outcome == Outcome::Written {
                 Style::new().fg(Color::Green)
@@ -454,22 +489,6 @@ impl<'t, 's> App<'t, 's> {
         lines
     }
 }
-
-const HELP: [&str; 13] = [
-    "n Space Enter → ↓  next scanline (or pixel)",
-    "b ← ↑              back",
-    "p / P              next / previous polygon",
-    "g                  go to the scanline of a row",
-    "f / z              show the framebuffer / z-buffer",
-    "m                  step by pixel / by scanline",
-    "PgUp PgDn < >      scroll the raster",
-    "[ ]                scroll the table",
-    "?                  these keys (any key closes)",
-    "q Esc Ctrl-C       quit",
-    "",
-    "yellow: the span's covered pixels",
-    "cyan: this polygon's earlier writes",
-];
 
 /// Runs the app on the terminal until the user quits; the terminal is given
 /// back as it was (raw mode off, alternate screen left) on quitting and on a
@@ -507,8 +526,23 @@ mod tests {
         let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
         terminal.draw(|frame| app.draw(frame)).unwrap();
         let buffer = terminal.backend().buffer();
+        // A wide character (CJK) fills two cells; the second holds a blank to skip.
+        let wide = |s: &str| {
+            s.chars().next().is_some_and(|c| {
+                matches!(c as u32, 0x1100..=0x115F | 0x2E80..=0xA4CF | 0xAC00..=0xD7A3 | 0xF900..=0xFAFF | 0xFE30..=0xFE4F | 0xFF00..=0xFF60 | 0xFFE0..=0xFFE6)
+            })
+        };
         (0..height)
-            .map(|y| (0..width).map(|x| buffer[(x, y)].symbol()).collect::<String>().trim_end().to_string() + "\n")
+            .map(|y| {
+                let mut line = String::new();
+                let mut x = 0;
+                while x < width {
+                    let symbol = buffer[(x, y)].symbol();
+                    line.push_str(symbol);
+                    x += if wide(symbol) { 2 } else { 1 };
+                }
+                line.trim_end().to_string() + "\n"
+            })
             .collect()
     }
 
@@ -528,6 +562,21 @@ mod tests {
         insta::with_settings!({snapshot_path => "../../snapshots", prepend_module_to_snapshot => false, omit_expression => true}, {
             insta::assert_snapshot!(name, text);
         });
+    }
+
+    /// The app speaks the student's language: the book's triangle on the
+    /// scanline through (20, 15), in Chinese, at 100 × 30.
+    #[test]
+    fn the_app_speaks_the_chosen_language() {
+        let scene = book();
+        let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+        let mut app = App::new(&mut tracer, None, false);
+        zsim::words::set_language(zsim::words::Lang::Zh);
+        press(&mut app, "pg15\n");
+        let text = screen(&mut app, 100, 30);
+        zsim::words::set_language(zsim::words::Lang::En);
+        assert!(text.starts_with("zsim step · 多边形 2“triangle”，扫描线 y = 15.5 · 帧缓冲器 · ? 按键"), "{text}");
+        snapshot("tui_rogers_triangle_15_zh", text);
     }
 
     #[test]

@@ -166,3 +166,49 @@ step-outside-raster = row { $row } is outside the raster (rows 0 … { $last })
 step-not-reach = { $polygon } does not reach the scanline { $scanline }
 step-unknown = unknown command "{ $text }"; { $help }
 step-prompt = { "zsim step> " }
+
+## step on a terminal: the full-screen app
+
+tui-title = zsim step ·{ $heading } · { $view }{ $score } · ? keys
+tui-heading = { " " }{ $polygon }, scanline { $scanline }
+tui-heading-end = { " end of the scene" }
+tui-score = { " · quiz " }{ $right }/{ $asked }
+tui-key-nothing = that key does nothing here: ? shows the keys
+tui-quiz-verdict = ({ $x }, { $y }): you said { $typed }: { $verdict }: { $reason }
+tui-right = right
+tui-wrong = wrong
+tui-passed-over = passed over: { $list }
+tui-no-later = no later polygon covers a pixel
+tui-no-earlier = no earlier polygon covers a pixel
+tui-go = go to scanline of row: { $text }▏ (Enter to go, Esc to cancel)
+tui-verdict-next = { $verdict }   (n: next)
+tui-quiz-ask = quiz: the z-buffer after ({ $x }, { $y }), stored { $stored }? (a value, or - for not written; Enter) { $typed }▏
+tui-status = n/→ next · b/← back · p/P polygon · g go · f/z buffer · m pixel steps · q quit
+tui-no-scanline = no scanline
+tui-columns-shown = x { $first } … { $last } of 0 … { $max }
+tui-end = end of the scene
+tui-slope = z steps by −a/c = { $slope } along a scanline
+tui-span = span { $n }: { $left } … { $right }; { $columns }
+tui-no-centre = no centre
+tui-table-heading = x { $z } test → stored (frame)
+tui-uncompared = { $test } passes,{ " " }
+tui-not = { "not " }
+tui-hidden = hidden
+tui-pixel-by-pixel = m: pixel by pixel, with the reasons
+tui-steps-from = { ", " }{ $count } steps of −a/c from { $start }
+tui-pixel = ({ $x }, { $y }): centre x = { $centre }, z = { $z }{ $steps }
+tui-keys = { " keys " }
+tui-help =
+    n Space Enter → ↓  next scanline (or pixel)
+    b ← ↑              back
+    p / P              next / previous polygon
+    g                  go to the scanline of a row
+    f / z              show the framebuffer / z-buffer
+    m                  step by pixel / by scanline
+    PgUp PgDn < >      scroll the raster
+    { "[ ]" }                scroll the table
+    ?                  these keys (any key closes)
+    q Esc Ctrl-C       quit
+
+    yellow: the span's covered pixels
+    cyan: this polygon's earlier writes

@@ -166,3 +166,49 @@ step-outside-raster = строка { $row } вне растра (строки 0 
 step-not-reach = { $polygon } не достигает сканирующей строки { $scanline }
 step-unknown = неизвестная команда «{ $text }»; { $help }
 step-prompt = { "zsim step> " }
+
+## step в терминале: полноэкранный режим
+
+tui-title = zsim step ·{ $heading } · { $view }{ $score } · ? клавиши
+tui-heading = { " " }{ $polygon }, сканирующая строка { $scanline }
+tui-heading-end = { " конец сцены" }
+tui-score = { " · опрос " }{ $right }/{ $asked }
+tui-key-nothing = эта клавиша здесь ничего не делает: ? покажет клавиши
+tui-quiz-verdict = ({ $x }, { $y }): ваш ответ { $typed }: { $verdict }: { $reason }
+tui-right = верно
+tui-wrong = неверно
+tui-passed-over = пропущено: { $list }
+tui-no-later = ни один следующий многоугольник не покрывает пикселов
+tui-no-earlier = ни один предыдущий многоугольник не покрывает пикселов
+tui-go = перейти к сканирующей строке ряда: { $text }▏ (Enter — перейти, Esc — отмена)
+tui-verdict-next = { $verdict }   (n: дальше)
+tui-quiz-ask = опрос: что будет в z-буфере после ({ $x }, { $y }), сейчас { $stored }? (значение или - если не записывается; Enter) { $typed }▏
+tui-status = n/→ дальше · b/← назад · p/P многоугольник · g перейти · f/z буфер · m по пикселам · q выход
+tui-no-scanline = нет сканирующей строки
+tui-columns-shown = x { $first } … { $last } из 0 … { $max }
+tui-end = конец сцены
+tui-slope = вдоль сканирующей строки z меняется на −a/c = { $slope }
+tui-span = отрезок { $n }: { $left } … { $right }; { $columns }
+tui-no-centre = ни одного центра
+tui-table-heading = x { $z } тест → в z-буфер (кадр)
+tui-uncompared = { $test } пропускает,{ " " }
+tui-not = { "не " }
+tui-hidden = скрыт
+tui-pixel-by-pixel = m: по пикселам, с объяснениями
+tui-steps-from = { ", " }шагов −a/c от { $start }: { $count }
+tui-pixel = ({ $x }, { $y }): центр x = { $centre }, z = { $z }{ $steps }
+tui-keys = { " клавиши " }
+tui-help =
+    n Space Enter → ↓  следующая строка (или пиксел)
+    b ← ↑              назад
+    p / P              следующий / предыдущий многоугольник
+    g                  перейти к сканирующей строке ряда
+    f / z              показать буфер кадра / z-буфер
+    m                  по пикселам / по строкам
+    PgUp PgDn < >      прокрутить растр
+    { "[ ]" }                прокрутить таблицу
+    ?                  эти клавиши (любая клавиша закрывает)
+    q Esc Ctrl-C       выход
+
+    жёлтым: покрытые пикселы отрезка
+    голубым: прежние записи этого многоугольника

@@ -166,3 +166,49 @@ step-outside-raster = рядок { $row } поза растром (рядки 0 
 step-not-reach = { $polygon } не сягає рядка сканування { $scanline }
 step-unknown = невідома команда «{ $text }»; { $help }
 step-prompt = { "zsim step> " }
+
+## step у терміналі: повноекранний режим
+
+tui-title = zsim step ·{ $heading } · { $view }{ $score } · ? клавіші
+tui-heading = { " " }{ $polygon }, рядок сканування { $scanline }
+tui-heading-end = { " кінець сцени" }
+tui-score = { " · опитування " }{ $right }/{ $asked }
+tui-key-nothing = ця клавіша тут нічого не робить: ? покаже клавіші
+tui-quiz-verdict = ({ $x }, { $y }): ваша відповідь { $typed }: { $verdict }: { $reason }
+tui-right = правильно
+tui-wrong = неправильно
+tui-passed-over = пропущено: { $list }
+tui-no-later = жоден наступний багатокутник не покриває пікселів
+tui-no-earlier = жоден попередній багатокутник не покриває пікселів
+tui-go = перейти до рядка сканування ряду: { $text }▏ (Enter — перейти, Esc — скасувати)
+tui-verdict-next = { $verdict }   (n: далі)
+tui-quiz-ask = опитування: що буде в z-буфері після ({ $x }, { $y }), зараз { $stored }? (значення або - якщо не записується; Enter) { $typed }▏
+tui-status = n/→ далі · b/← назад · p/P багатокутник · g перейти · f/z буфер · m по пікселях · q вихід
+tui-no-scanline = немає рядка сканування
+tui-columns-shown = x { $first } … { $last } з 0 … { $max }
+tui-end = кінець сцени
+tui-slope = уздовж рядка сканування z змінюється на −a/c = { $slope }
+tui-span = відрізок { $n }: { $left } … { $right }; { $columns }
+tui-no-centre = жодного центру
+tui-table-heading = x { $z } тест → у z-буфер (кадр)
+tui-uncompared = { $test } пропускає,{ " " }
+tui-not = { "не " }
+tui-hidden = прихований
+tui-pixel-by-pixel = m: по пікселях, з поясненнями
+tui-steps-from = { ", " }кроків −a/c від { $start }: { $count }
+tui-pixel = ({ $x }, { $y }): центр x = { $centre }, z = { $z }{ $steps }
+tui-keys = { " клавіші " }
+tui-help =
+    n Space Enter → ↓  наступний рядок (або піксель)
+    b ← ↑              назад
+    p / P              наступний / попередній багатокутник
+    g                  перейти до рядка сканування ряду
+    f / z              показати буфер кадру / z-буфер
+    m                  по пікселях / по рядках
+    PgUp PgDn < >      прокрутити растр
+    { "[ ]" }                прокрутити таблицю
+    ?                  ці клавіші (будь-яка клавіша закриває)
+    q Esc Ctrl-C       вихід
+
+    жовтим: покриті пікселі відрізка
+    блакитним: попередні записи цього багатокутника

@@ -161,3 +161,49 @@ step-outside-raster = 第 { $row } 行不在光栅内（行 0 … { $last }）
 step-not-reach = { $polygon } 不到达扫描线 { $scanline }
 step-unknown = 未知命令“{ $text }”；{ $help }
 step-prompt = { "zsim step> " }
+
+## 终端中的 step：全屏界面
+
+tui-title = zsim step ·{ $heading } · { $view }{ $score } · ? 按键
+tui-heading = { " " }{ $polygon }，扫描线 { $scanline }
+tui-heading-end = { " 场景结束" }
+tui-score = { " · 测验 " }{ $right }/{ $asked }
+tui-key-nothing = 这个键在这里不起作用：按 ? 查看按键
+tui-quiz-verdict = ({ $x }, { $y })：你的答案 { $typed }：{ $verdict }：{ $reason }
+tui-right = 正确
+tui-wrong = 错误
+tui-passed-over = 已跳过：{ $list }
+tui-no-later = 后面没有覆盖像素的多边形
+tui-no-earlier = 前面没有覆盖像素的多边形
+tui-go = 转到该行的扫描线：{ $text }▏（Enter 转到，Esc 取消）
+tui-verdict-next = { $verdict }   （n：下一步）
+tui-quiz-ask = 测验：({ $x }, { $y }) 之后 z缓冲器中是多少？原值 { $stored }（输入数值，不写入则输入 -；Enter）{ $typed }▏
+tui-status = n/→ 下一步 · b/← 后退 · p/P 多边形 · g 转到 · f/z 缓冲器 · m 逐像素 · q 退出
+tui-no-scanline = 没有扫描线
+tui-columns-shown = x { $first } … { $last }，共 0 … { $max }
+tui-end = 场景结束
+tui-slope = 沿扫描线 z 每步变化 −a/c = { $slope }
+tui-span = 区段 { $n }：{ $left } … { $right }；{ $columns }
+tui-no-centre = 不含任何像素中心
+tui-table-heading = x { $z } 测试 → 写入值（帧）
+tui-uncompared = { $test } 通过，
+tui-not = { "不满足 " }
+tui-hidden = 被遮挡
+tui-pixel-by-pixel = m：逐像素显示，附原因
+tui-steps-from = { "，从 " }{ $start } 起走了 { $count } 步 −a/c
+tui-pixel = ({ $x }, { $y })：中心 x = { $centre }，z = { $z }{ $steps }
+tui-keys = { " 按键 " }
+tui-help =
+    n Space Enter → ↓  下一条扫描线（或下一个像素）
+    b ← ↑              后退
+    p / P              下一个 / 上一个多边形
+    g                  转到某行的扫描线
+    f / z              显示帧缓冲器 / z缓冲器
+    m                  逐像素 / 逐扫描线
+    PgUp PgDn < >      滚动光栅
+    { "[ ]" }                滚动表格
+    ?                  显示这些按键（按任意键关闭）
+    q Esc Ctrl-C       退出
+
+    黄色：区段内被覆盖的像素
+    青色：本多边形此前写入的像素
