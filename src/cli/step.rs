@@ -370,22 +370,23 @@ struct QuizState {
 
 impl QuizState {
     /// Scores one answer and says so: `right` or `wrong` with the reason.
-    fn score(&mut self, right: bool, mistake: impl FnOnce() -> String) -> &'static str {
+    fn score(&mut self, right: bool, mistake: impl FnOnce() -> String) -> String {
         self.asked += 1;
         if right {
             self.right += 1;
-            "right"
+            zsim::words!("tui-right")
         } else {
             self.mistakes.push(mistake());
-            "wrong"
+            zsim::words!("tui-wrong")
         }
     }
 
     /// The score, and each mistake with what was right and why.
     fn summary(&self) -> String {
-        let mut text = format!("quiz score: {} of {} right\n", self.right, self.asked);
+        let score = zsim::words!("quiz-score", right = self.right.to_string(), asked = self.asked.to_string());
+        let mut text = format!("{score}\n");
         if !self.mistakes.is_empty() {
-            text.push_str("your mistakes:\n");
+            text.push_str(&format!("{}\n", zsim::words!("quiz-mistakes")));
             for mistake in &self.mistakes {
                 text.push_str(&format!("  {mistake}\n"));
             }
@@ -408,17 +409,41 @@ enum Asked {
 /// student meant; `None` when the text is neither `-` nor a number. Right is
 /// the value the z-buffer holds after the pixel; for a pixel not written,
 /// `-` or the value it keeps. The line mode and the full-screen app both ask this.
-pub(super) fn judge(pixel: &PixelEvent, typed: &str) -> Option<(bool, &'static str)> {
+pub(super) fn judge(pixel: &PixelEvent, typed: &str) -> Option<(bool, Meant)> {
     let written = pixel.outcome == Outcome::Written;
     if typed == "-" {
-        return Some((!written, "not written"));
+        return Some((!written, Meant::NotWritten));
     }
     let value = zsim::exact::parse_number(typed).ok()?;
     Some(match value == pixel.stored_after.value() {
-        true if written => (true, "the value written"),
-        true => (true, "not written: the value it keeps"),
-        false => (false, "a value"),
+        true if written => (true, Meant::ValueWritten),
+        true => (true, Meant::ValueKept),
+        false => (false, Meant::Value),
     })
+}
+
+/// What a quiz answer meant.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Meant {
+    /// `-`: not written.
+    NotWritten,
+    /// The value written.
+    ValueWritten,
+    /// The value a pixel not written keeps.
+    ValueKept,
+    /// Some value.
+    Value,
+}
+
+impl Meant {
+    fn words(self) -> String {
+        match self {
+            Meant::NotWritten => zsim::words!("meant-not-written"),
+            Meant::ValueWritten => zsim::words!("meant-value-written"),
+            Meant::ValueKept => zsim::words!("meant-value-kept"),
+            Meant::Value => zsim::words!("meant-value"),
+        }
+    }
 }
 
 /// Reads lines until one is an answer (`-` or a number), `q`, or a navigation command.
@@ -495,12 +520,14 @@ fn ask(
 ) -> Result<Asked, Failure> {
     let record = tracer.trace(p).scanlines[k].clone();
     let (name, row) = (polygon_name(scene, p), record.row);
+    let of_name = zsim::explain::polygon_after(scene, p);
     if mode == QuizMode::Coverage {
-        emit(out, &format!("quiz: {name}, scanline {}: which centres does it cover?\n", scanline_text(row)))?;
+        let ask = zsim::words!("quiz-coverage-ask", polygon = &name, scanline = scanline_text(row));
+        emit(out, &format!("{ask}\n"))?;
         let covered: Vec<u32> = record.pixels.iter().map(|e| e.x).collect();
-        let hint = "type the covered columns as first-last (e.g. 16-27, several runs apart: 3-5 9-12), or - for none";
+        let hint = zsim::words!("quiz-coverage-hint");
         let columns = loop {
-            let answer = match read_answer(input, out, "columns covered? ", hint)? {
+            let answer = match read_answer(input, out, &zsim::words!("quiz-coverage-prompt"), &hint)? {
                 Ok(answer) => answer,
                 Err(asked) => return Ok(asked),
             };
@@ -513,57 +540,81 @@ fn ask(
         let spans: Vec<String> = record
             .spans
             .iter()
-            .map(|s| format!("{} … {}", exact_and_decimal(s.left), exact_and_decimal(s.right)))
+            .map(|s| zsim::words!("span", left = exact_and_decimal(s.left), right = exact_and_decimal(s.right)))
             .collect();
-        let why =
-            format!("the spans are {}; a column is covered when its centre x + 1/2 lies within one", spans.join(", "));
+        let why = zsim::words!("quiz-coverage-why", spans = spans.join(&zsim::words!("list-comma")));
         let verdict = state.score(columns.1 == covered, || {
-            format!("row {row} of {name}: you said columns {}, right {right_text}: {why}", columns.0)
+            zsim::words!(
+                "quiz-coverage-mistake",
+                row = row.to_string(),
+                polygon = &of_name,
+                said = &columns.0,
+                right = &right_text,
+                why = &why
+            )
         });
-        emit(
-            out,
-            &format!(
-                "  columns {right_text}: you said {}, {verdict}: {why} [score {}/{}]\n",
-                columns.0, state.right, state.asked
-            ),
-        )?;
+        let line = zsim::words!(
+            "quiz-coverage-verdict",
+            right = &right_text,
+            said = &columns.0,
+            verdict = verdict,
+            why = &why,
+            score = state.right.to_string(),
+            asked = state.asked.to_string()
+        );
+        emit(out, &format!("  {line}\n"))?;
     }
-    emit(
-        out,
-        &format!(
-            "quiz: {name}, scanline {}; for each pixel type the z-buffer value after it, - if it is not written, q to stop\n",
-            scanline_text(row)
-        ),
-    )?;
-    let hint = "type the value the z-buffer will hold, or - for not written (q stops the quiz)";
+    let ask = zsim::words!("quiz-depth-ask", polygon = &name, scanline = scanline_text(row));
+    emit(out, &format!("{ask}\n"))?;
+    let hint = zsim::words!("quiz-depth-hint");
     for pixel in &record.pixels {
-        let prompt = format!("pixel ({}, {}), stored {}: z-buffer after? ", pixel.x, pixel.y, pixel.stored_before);
+        let prompt =
+            zsim::words!("quiz-depth-prompt", x = pixel.x, y = pixel.y, stored = pixel.stored_before.to_string());
         let answer = loop {
-            let text = match read_answer(input, out, &prompt, hint)? {
+            let text = match read_answer(input, out, &prompt, &hint)? {
                 Ok(text) => text,
                 Err(asked) => return Ok(asked),
             };
             match judge(pixel, &text) {
                 Some(judged) => break (text, judged),
-                None => emit(out, &format!("\"{text}\" is not an answer: {hint}\n"))?,
+                None => emit(out, &format!("{}\n", zsim::words!("quiz-not-an-answer", text = &text, hint = &hint)))?,
             }
         };
         let (right, meant) = answer.1;
         let written = pixel.outcome == Outcome::Written;
-        let expected =
-            if written { pixel.stored_after.to_string() } else { format!("- (it keeps {})", pixel.stored_after) };
+        let expected = if written {
+            pixel.stored_after.to_string()
+        } else {
+            zsim::words!("quiz-keeps", value = pixel.stored_after.to_string())
+        };
         let reason = pixel_reason(scene, pixel);
         let verdict = state.score(right, || {
-            format!("({}, {}) of {name}: you said {}, right {expected}: {reason}", pixel.x, pixel.y, answer.0)
+            zsim::words!(
+                "quiz-depth-mistake",
+                x = pixel.x,
+                y = pixel.y,
+                polygon = &of_name,
+                said = &answer.0,
+                right = &expected,
+                reason = &reason
+            )
         });
-        let said = if right { format!("you said {} ({meant})", answer.0) } else { format!("you said {}", answer.0) };
-        emit(
-            out,
-            &format!(
-                "  ({}, {}): {said}, {verdict}: {reason} [score {}/{}]\n",
-                pixel.x, pixel.y, state.right, state.asked
-            ),
-        )?;
+        let said = if right {
+            zsim::words!("quiz-said-meant", said = &answer.0, meant = meant.words())
+        } else {
+            zsim::words!("quiz-said", said = &answer.0)
+        };
+        let line = zsim::words!(
+            "quiz-depth-verdict",
+            x = pixel.x,
+            y = pixel.y,
+            said = said,
+            verdict = verdict,
+            reason = &reason,
+            score = state.right.to_string(),
+            asked = state.asked.to_string()
+        );
+        emit(out, &format!("  {line}\n"))?;
     }
     Ok(Asked::Answered)
 }

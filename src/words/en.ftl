@@ -212,3 +212,27 @@ tui-help =
 
     yellow: the span's covered pixels
     cyan: this polygon's earlier writes
+
+## the quiz (step --quiz)
+
+quiz-score = quiz score: { $right } of { $asked } right
+quiz-mistakes = your mistakes:
+meant-not-written = not written
+meant-value-written = the value written
+meant-value-kept = not written: the value it keeps
+meant-value = a value
+quiz-coverage-ask = quiz: { $polygon }, scanline { $scanline }: which centres does it cover?
+quiz-coverage-hint = type the covered columns as first-last (e.g. 16-27, several runs apart: 3-5 9-12), or - for none
+quiz-coverage-prompt = { "columns covered? " }
+quiz-coverage-why = the spans are { $spans }; a column is covered when its centre x + 1/2 lies within one
+quiz-coverage-mistake = row { $row } of { $polygon }: you said columns { $said }, right { $right }: { $why }
+quiz-coverage-verdict = columns { $right }: you said { $said }, { $verdict }: { $why } [score { $score }/{ $asked }]
+quiz-depth-ask = quiz: { $polygon }, scanline { $scanline }; for each pixel type the z-buffer value after it, - if it is not written, q to stop
+quiz-depth-hint = type the value the z-buffer will hold, or - for not written (q stops the quiz)
+quiz-depth-prompt = pixel ({ $x }, { $y }), stored { $stored }: z-buffer after?{ " " }
+quiz-not-an-answer = "{ $text }" is not an answer: { $hint }
+quiz-keeps = - (it keeps { $value })
+quiz-depth-mistake = ({ $x }, { $y }) of { $polygon }: you said { $said }, right { $right }: { $reason }
+quiz-said-meant = you said { $said } ({ $meant })
+quiz-said = you said { $said }
+quiz-depth-verdict = ({ $x }, { $y }): { $said }, { $verdict }: { $reason } [score { $score }/{ $asked }]

@@ -212,3 +212,27 @@ tui-help =
 
     жёлтым: покрытые пикселы отрезка
     голубым: прежние записи этого многоугольника
+
+## опрос (step --quiz)
+
+quiz-score = итог опроса: верно { $right } из { $asked }
+quiz-mistakes = ваши ошибки:
+meant-not-written = не записывается
+meant-value-written = записанное значение
+meant-value-kept = не записывается: значение, которое остаётся
+meant-value = значение
+quiz-coverage-ask = опрос: { $polygon }, сканирующая строка { $scanline }: какие центры он покрывает?
+quiz-coverage-hint = введите покрытые столбцы как первый-последний (например 16-27, несколько отрезков через пробел: 3-5 9-12) или -, если ни одного
+quiz-coverage-prompt = { "покрытые столбцы? " }
+quiz-coverage-why = отрезки: { $spans }; столбец покрыт, если его центр x + 1/2 лежит в одном из них
+quiz-coverage-mistake = строка { $row } { $polygon }: ваш ответ — столбцы { $said }, верно { $right }: { $why }
+quiz-coverage-verdict = столбцы { $right }: ваш ответ { $said }, { $verdict }: { $why } [счёт { $score }/{ $asked }]
+quiz-depth-ask = опрос: { $polygon }, сканирующая строка { $scanline }; для каждого пиксела введите значение z-буфера после него, - если не записывается, q для выхода
+quiz-depth-hint = введите значение, которое будет в z-буфере, или - если не записывается (q завершает опрос)
+quiz-depth-prompt = пиксел ({ $x }, { $y }), сейчас { $stored }: что в z-буфере после?{ " " }
+quiz-not-an-answer = «{ $text }» — не ответ: { $hint }
+quiz-keeps = - (остаётся { $value })
+quiz-depth-mistake = ({ $x }, { $y }) { $polygon }: ваш ответ { $said }, верно { $right }: { $reason }
+quiz-said-meant = ваш ответ { $said } ({ $meant })
+quiz-said = ваш ответ { $said }
+quiz-depth-verdict = ({ $x }, { $y }): { $said }, { $verdict }: { $reason } [счёт { $score }/{ $asked }]

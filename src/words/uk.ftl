@@ -212,3 +212,27 @@ tui-help =
 
     жовтим: покриті пікселі відрізка
     блакитним: попередні записи цього багатокутника
+
+## опитування (step --quiz)
+
+quiz-score = підсумок опитування: правильно { $right } з { $asked }
+quiz-mistakes = ваші помилки:
+meant-not-written = не записується
+meant-value-written = записане значення
+meant-value-kept = не записується: значення, що залишається
+meant-value = значення
+quiz-coverage-ask = опитування: { $polygon }, рядок сканування { $scanline }: які центри він покриває?
+quiz-coverage-hint = введіть покриті стовпці як перший-останній (наприклад 16-27, кілька відрізків через пробіл: 3-5 9-12) або -, якщо жодного
+quiz-coverage-prompt = { "покриті стовпці? " }
+quiz-coverage-why = відрізки: { $spans }; стовпець покритий, якщо його центр x + 1/2 лежить в одному з них
+quiz-coverage-mistake = рядок { $row } { $polygon }: ваша відповідь — стовпці { $said }, правильно { $right }: { $why }
+quiz-coverage-verdict = стовпці { $right }: ваша відповідь { $said }, { $verdict }: { $why } [рахунок { $score }/{ $asked }]
+quiz-depth-ask = опитування: { $polygon }, рядок сканування { $scanline }; для кожного пікселя введіть значення z-буфера після нього, - якщо не записується, q для виходу
+quiz-depth-hint = введіть значення, яке буде в z-буфері, або - якщо не записується (q завершує опитування)
+quiz-depth-prompt = піксель ({ $x }, { $y }), зараз { $stored }: що в z-буфері після?{ " " }
+quiz-not-an-answer = «{ $text }» — не відповідь: { $hint }
+quiz-keeps = - (залишається { $value })
+quiz-depth-mistake = ({ $x }, { $y }) { $polygon }: ваша відповідь { $said }, правильно { $right }: { $reason }
+quiz-said-meant = ваша відповідь { $said } ({ $meant })
+quiz-said = ваша відповідь { $said }
+quiz-depth-verdict = ({ $x }, { $y }): { $said }, { $verdict }: { $reason } [рахунок { $score }/{ $asked }]

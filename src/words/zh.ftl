@@ -207,3 +207,27 @@ tui-help =
 
     黄色：区段内被覆盖的像素
     青色：本多边形此前写入的像素
+
+## 测验（step --quiz）
+
+quiz-score = 测验得分：{ $asked } 题中答对 { $right } 题
+quiz-mistakes = 你的错误：
+meant-not-written = 不写入
+meant-value-written = 写入的值
+meant-value-kept = 不写入：保持原值
+meant-value = 一个值
+quiz-coverage-ask = 测验：{ $polygon }，扫描线 { $scanline }：它覆盖哪些像素中心？
+quiz-coverage-hint = 请输入被覆盖的列，格式为 起-止（例如 16-27，多段用空格分开：3-5 9-12），没有则输入 -
+quiz-coverage-prompt = { "被覆盖的列？ " }
+quiz-coverage-why = 区段为 { $spans }；某列的中心 x + 1/2 落在区段内时，该列被覆盖
+quiz-coverage-mistake = { $polygon } 的第 { $row } 行：你的答案是列 { $said }，正确为 { $right }：{ $why }
+quiz-coverage-verdict = 列 { $right }：你的答案 { $said }，{ $verdict }：{ $why } [得分 { $score }/{ $asked }]
+quiz-depth-ask = 测验：{ $polygon }，扫描线 { $scanline }；对每个像素输入处理后 z缓冲器中的值，不写入则输入 -，输入 q 结束
+quiz-depth-hint = 请输入 z缓冲器将保存的值，不写入则输入 -（q 结束测验）
+quiz-depth-prompt = 像素 ({ $x }, { $y })，原值 { $stored }：之后 z缓冲器中是多少？{ " " }
+quiz-not-an-answer = “{ $text }”不是答案：{ $hint }
+quiz-keeps = -（保持 { $value }）
+quiz-depth-mistake = { $polygon } 的 ({ $x }, { $y })：你的答案 { $said }，正确为 { $right }：{ $reason }
+quiz-said-meant = 你的答案 { $said }（{ $meant }）
+quiz-said = 你的答案 { $said }
+quiz-depth-verdict = ({ $x }, { $y })：{ $said }，{ $verdict }：{ $reason } [得分 { $score }/{ $asked }]
