@@ -33,25 +33,66 @@ pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {
         let spans: Vec<String> = record
             .spans
             .iter()
-            .map(|s| {
-                let columns = s.columns.map_or("no centre".to_string(), |(f, l)| format!("columns {f} … {l}"));
-                format!("{} … {}; {columns}", exact_and_decimal(s.left), exact_and_decimal(s.right))
+            .enumerate()
+            .map(|(i, s)| {
+                let columns = s.columns.map_or_else(
+                    || zsim::words!("tui-no-centre"),
+                    |(f, l)| zsim::words!("step-columns", first = f.to_string(), last = l.to_string()),
+                );
+                zsim::words!(
+                    "tui-span",
+                    n = (i + 1).to_string(),
+                    left = exact_and_decimal(s.left),
+                    right = exact_and_decimal(s.right),
+                    columns = columns
+                )
             })
             .collect();
+        let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(*x)).collect();
         stops.push(serde_json::json!({
             "polygon": p, "heading": report::polygon_heading(scene, p), "row": record.row,
-            "scanline": scanline_text(record.row),
-            "crossings": record.crossings.iter().map(|x| exact_and_decimal(*x)).collect::<Vec<_>>(),
+            "scanline": zsim::words!("step-scanline", scanline = scanline_text(record.row), row = record.row.to_string()),
+            "crossings": zsim::words!("step-crossings", list = crossings.join(&zsim::words!("list-comma"))),
             "spans": spans, "pixels": pixels,
             "frame": buffers.frame_rows(),
             "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
         }));
         at = tracer.next_stop(Some((p, k))).0;
     }
-    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "op": scene.depth_test.symbol(), "stops": stops});
+    // The page's words, in the student's language; {…} marks what the script fills in.
+    let words = serde_json::json!({
+        "noPixel": zsim::words!("page-no-pixel"),
+        "frameAfter": zsim::words!("page-frame-after"),
+        "depthAfter": zsim::words!("page-depth-after"),
+        "stored": zsim::words!("page-column-stored"),
+        "yours": zsim::words!("page-column-yours"),
+        "after": zsim::words!("page-column-after"),
+        "why": zsim::words!("page-column-why"),
+        "check": zsim::words!("page-check"),
+        "keeps": zsim::words!("page-keeps", value = "{after}"),
+        "right": zsim::words!("page-right"),
+        "wrong": zsim::words!("page-wrong"),
+        "quizScore": zsim::words!("page-quiz-score", right = "{right}", total = "{total}"),
+        "status": zsim::words!("page-status", at = "{at}", count = "{count}"),
+    });
+    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "op": scene.depth_test.symbol(), "words": words, "stops": stops});
     // Inside a <script> element, "</" would end it early.
     let data = serde_json::to_string(&data).expect("serializing plain data cannot fail").replace("</", "<\\/");
-    TEMPLATE.replace("{{TITLE}}", &escape(title)).replace("{{DATA}}", &data)
+    let mut page = TEMPLATE.replace("{{TITLE}}", &escape(title)).replace("{{DATA}}", &data);
+    for (marker, key) in [
+        ("{{LANG}}", None),
+        ("{{BACK}}", Some("page-back")),
+        ("{{NEXT}}", Some("page-next")),
+        ("{{PREVIOUS_POLYGON}}", Some("page-previous-polygon")),
+        ("{{NEXT_POLYGON}}", Some("page-next-polygon")),
+        ("{{FRAME}}", Some("page-frame")),
+        ("{{DEPTH}}", Some("page-depth")),
+        ("{{QUIZ}}", Some("page-quiz")),
+    ] {
+        let text = key.map_or_else(|| zsim::words::language().code().to_string(), |key| zsim::words::text(key, &[]));
+        page = page.replace(marker, &escape(&text));
+    }
+    page
 }
 
 fn escape(text: &str) -> String {
@@ -59,7 +100,7 @@ fn escape(text: &str) -> String {
 }
 
 const TEMPLATE: &str = r##"<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"><title>zsim step: {{TITLE}}</title>
+<html lang="{{LANG}}"><head><meta charset="utf-8"><title>zsim step: {{TITLE}}</title>
 <style>
 body { font-family: sans-serif; margin: 1em; color: #222; }
 #main { display: flex; gap: 1.5em; align-items: flex-start; }
@@ -79,10 +120,10 @@ button { margin: 0 .3em .5em 0; }
 <body>
 <h1>zsim step: {{TITLE}}</h1>
 <div>
-<button id="back">◀ Back (b)</button><button id="next">Next ▶ (n)</button>
-<button id="prevPolygon">◀◀ Polygon (P)</button><button id="nextPolygon">Polygon ▶▶ (p)</button>
-<button id="frame">Framebuffer (f)</button><button id="depth">Z-buffer (z)</button>
-<label><input type="checkbox" id="quiz"> quiz</label>
+<button id="back">{{BACK}}</button><button id="next">{{NEXT}}</button>
+<button id="prevPolygon">{{PREVIOUS_POLYGON}}</button><button id="nextPolygon">{{NEXT_POLYGON}}</button>
+<button id="frame">{{FRAME}}</button><button id="depth">{{DEPTH}}</button>
+<label><input type="checkbox" id="quiz"> {{QUIZ}}</label>
 <span id="status"></span>
 </div>
 <div id="main"><div id="raster"></div><div id="panel"></div></div>
@@ -92,11 +133,12 @@ button { margin: 0 .3em .5em 0; }
 <script>
 "use strict";
 const data = JSON.parse(document.getElementById("data").textContent);
+const words = data.words;
 let at = 0, view = "frame";
 const el = (tag, text, cls) => { const e = document.createElement(tag); if (text !== undefined) e.textContent = text; if (cls) e.className = cls; return e; };
 function render() {
   const stop = data.stops[at];
-  if (!stop) { document.getElementById("panel").textContent = "This scene covers no pixel."; return; }
+  if (!stop) { document.getElementById("panel").textContent = words.noPixel; return; }
   const covered = new Set(stop.pixels.map(p => p.x));
   const earlier = new Set();
   for (let i = 0; i < at; i++) {
@@ -116,14 +158,13 @@ function render() {
     table.appendChild(tr);
   });
   const raster = document.getElementById("raster");
-  raster.replaceChildren(el("div", view === "frame" ? "framebuffer after this scanline" : "z-buffer after this scanline"), table);
+  raster.replaceChildren(el("div", view === "frame" ? words.frameAfter : words.depthAfter), table);
   const panel = document.getElementById("panel");
-  panel.replaceChildren(el("h2", stop.heading), el("p", "scanline " + stop.scanline + " (row " + stop.row + ")"),
-    el("p", "crossings: " + stop.crossings.join(", ")));
-  stop.spans.forEach((s, i) => panel.appendChild(el("p", "span " + (i + 1) + ": " + s)));
+  panel.replaceChildren(el("h2", stop.heading), el("p", stop.scanline), el("p", stop.crossings));
+  stop.spans.forEach(s => panel.appendChild(el("p", s)));
   const quiz = document.getElementById("quiz").checked;
   const pixels = el("table"); pixels.id = "pixels";
-  const head = el("tr"); ["x", "z", "stored", quiz ? "your z-buffer after" : "z-buffer after", "why"].forEach(h => head.appendChild(el("th", h)));
+  const head = el("tr"); ["x", "z", words.stored, quiz ? words.yours : words.after, words.why].forEach(h => head.appendChild(el("th", h)));
   pixels.appendChild(head);
   stop.pixels.forEach(p => {
     const tr = el("tr", undefined, p.written ? "written" : "hidden");
@@ -132,27 +173,27 @@ function render() {
       const td = el("td"); const input = el("input"); input.size = 4; input.dataset.x = p.x; td.appendChild(input); tr.appendChild(td);
       tr.appendChild(el("td", "", "why"));
     } else {
-      tr.appendChild(el("td", p.written ? p.after : "– (keeps " + p.after + ")"));
+      tr.appendChild(el("td", p.written ? p.after : words.keeps.replace("{after}", p.after)));
       tr.appendChild(el("td", p.reason));
     }
     pixels.appendChild(tr);
   });
   panel.appendChild(pixels);
   if (quiz) {
-    const check = el("button", "Check my answers"); check.id = "check";
+    const check = el("button", words.check); check.id = "check";
     check.onclick = () => {
       let right = 0;
       pixels.querySelectorAll("input").forEach((input, i) => {
         const p = stop.pixels[i], typed = input.value.trim();
         const ok = typed === "-" ? !p.written : typed !== "" && typed === String(p.afterValue);
         right += ok ? 1 : 0;
-        input.parentElement.nextSibling.textContent = (ok ? "right: " : "wrong: ") + p.reason;
+        input.parentElement.nextSibling.textContent = (ok ? words.right : words.wrong) + p.reason;
       });
-      document.getElementById("status").textContent = "quiz: " + right + " of " + stop.pixels.length + " right on this scanline";
+      document.getElementById("status").textContent = words.quizScore.replace("{right}", right).replace("{total}", stop.pixels.length);
     };
     panel.appendChild(check);
   }
-  document.getElementById("status").textContent = "scanline " + (at + 1) + " of " + data.stops.length;
+  document.getElementById("status").textContent = words.status.replace("{at}", at + 1).replace("{count}", data.stops.length);
 }
 function go(i) { at = Math.max(0, Math.min(data.stops.length - 1, i)); render(); }
 function polygon(direction) {

@@ -236,3 +236,26 @@ quiz-depth-mistake = ({ $x }, { $y }) of { $polygon }: you said { $said }, right
 quiz-said-meant = you said { $said } ({ $meant })
 quiz-said = you said { $said }
 quiz-depth-verdict = ({ $x }, { $y }): { $said }, { $verdict }: { $reason } [score { $score }/{ $asked }]
+
+## step --html: the page
+
+page-back = ◀ Back (b)
+page-next = Next ▶ (n)
+page-previous-polygon = ◀◀ Polygon (P)
+page-next-polygon = Polygon ▶▶ (p)
+page-frame = Framebuffer (f)
+page-depth = Z-buffer (z)
+page-quiz = quiz
+page-no-pixel = This scene covers no pixel.
+page-frame-after = framebuffer after this scanline
+page-depth-after = z-buffer after this scanline
+page-column-stored = stored
+page-column-yours = your z-buffer after
+page-column-after = z-buffer after
+page-column-why = why
+page-keeps = – (keeps { $value })
+page-check = Check my answers
+page-right = { "right: " }
+page-wrong = { "wrong: " }
+page-quiz-score = quiz: { $right } of { $total } right on this scanline
+page-status = scanline { $at } of { $count }

@@ -236,3 +236,26 @@ quiz-depth-mistake = ({ $x }, { $y }) { $polygon }: ваш ответ { $said },
 quiz-said-meant = ваш ответ { $said } ({ $meant })
 quiz-said = ваш ответ { $said }
 quiz-depth-verdict = ({ $x }, { $y }): { $said }, { $verdict }: { $reason } [счёт { $score }/{ $asked }]
+
+## step --html: страница
+
+page-back = ◀ Назад (b)
+page-next = Дальше ▶ (n)
+page-previous-polygon = ◀◀ Многоугольник (P)
+page-next-polygon = Многоугольник ▶▶ (p)
+page-frame = Буфер кадра (f)
+page-depth = Z-буфер (z)
+page-quiz = опрос
+page-no-pixel = Эта сцена не покрывает ни одного пиксела.
+page-frame-after = буфер кадра после этой строки
+page-depth-after = z-буфер после этой строки
+page-column-stored = было
+page-column-yours = ваш z-буфер после
+page-column-after = z-буфер после
+page-column-why = почему
+page-keeps = – (остаётся { $value })
+page-check = Проверить ответы
+page-right = { "верно: " }
+page-wrong = { "неверно: " }
+page-quiz-score = опрос: верно { $right } из { $total } на этой строке
+page-status = строка { $at } из { $count }

@@ -236,3 +236,26 @@ quiz-depth-mistake = ({ $x }, { $y }) { $polygon }: ваша відповідь 
 quiz-said-meant = ваша відповідь { $said } ({ $meant })
 quiz-said = ваша відповідь { $said }
 quiz-depth-verdict = ({ $x }, { $y }): { $said }, { $verdict }: { $reason } [рахунок { $score }/{ $asked }]
+
+## step --html: сторінка
+
+page-back = ◀ Назад (b)
+page-next = Далі ▶ (n)
+page-previous-polygon = ◀◀ Багатокутник (P)
+page-next-polygon = Багатокутник ▶▶ (p)
+page-frame = Буфер кадру (f)
+page-depth = Z-буфер (z)
+page-quiz = опитування
+page-no-pixel = Ця сцена не покриває жодного пікселя.
+page-frame-after = буфер кадру після цього рядка
+page-depth-after = z-буфер після цього рядка
+page-column-stored = було
+page-column-yours = ваш z-буфер після
+page-column-after = z-буфер після
+page-column-why = чому
+page-keeps = – (залишається { $value })
+page-check = Перевірити відповіді
+page-right = { "правильно: " }
+page-wrong = { "неправильно: " }
+page-quiz-score = опитування: правильно { $right } з { $total } на цьому рядку
+page-status = рядок { $at } з { $count }

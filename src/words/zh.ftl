@@ -231,3 +231,26 @@ quiz-depth-mistake = { $polygon } 的 ({ $x }, { $y })：你的答案 { $said }�
 quiz-said-meant = 你的答案 { $said }（{ $meant }）
 quiz-said = 你的答案 { $said }
 quiz-depth-verdict = ({ $x }, { $y })：{ $said }，{ $verdict }：{ $reason } [得分 { $score }/{ $asked }]
+
+## step --html：网页
+
+page-back = ◀ 后退 (b)
+page-next = 下一步 ▶ (n)
+page-previous-polygon = ◀◀ 多边形 (P)
+page-next-polygon = 多边形 ▶▶ (p)
+page-frame = 帧缓冲器 (f)
+page-depth = z缓冲器 (z)
+page-quiz = 测验
+page-no-pixel = 此场景不覆盖任何像素。
+page-frame-after = 本扫描线之后的帧缓冲器
+page-depth-after = 本扫描线之后的z缓冲器
+page-column-stored = 原值
+page-column-yours = 你填的 z缓冲器值
+page-column-after = 之后的 z缓冲器值
+page-column-why = 原因
+page-keeps = –（保持 { $value }）
+page-check = 检查答案
+page-right = { "正确：" }
+page-wrong = { "错误：" }
+page-quiz-score = 测验：本扫描线 { $total } 题中答对 { $right } 题
+page-status = 第 { $at } 条扫描线，共 { $count } 条
