@@ -32,28 +32,40 @@ pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -
         let cells: Vec<&str> = line.split([' ', '\t', ',']).filter(|cell| !cell.is_empty()).collect();
         let mut row = Vec::with_capacity(cells.len());
         for (column, cell) in cells.iter().enumerate() {
+            let (line, place) = (line_number.to_string(), (column + 1).to_string());
             let at = match y {
                 Some(y) if column < width as usize => {
-                    format!("line {line_number}, value {} (x = {column}, y = {y})", column + 1)
+                    words!("answer-at-cell", line = &line, column = &place, x = column.to_string(), y = y.to_string())
                 }
-                _ => format!("line {line_number}, value {}", column + 1),
+                _ => words!("answer-at", line = &line, column = &place),
             };
+            let max = range.max.to_string();
             let value: u64 = cell.parse().map_err(|_| {
-                format!("{at}: \"{cell}\" is not a whole number ({} holds 0 … {})", range.buffer, range.max)
+                words!("answer-not-a-number", at = &at, cell = *cell, buffer = range.buffer, max = &max)
             })?;
             if value > u64::from(range.max) {
-                return Err(format!("{at}: {value} does not fit {} (0 … {})", range.buffer, range.max));
+                return Err(words!(
+                    "answer-too-large",
+                    at = &at,
+                    value = value.to_string(),
+                    buffer = range.buffer,
+                    max = &max
+                ));
             }
             row.push(value as u32);
         }
         if row.len() != width as usize {
-            let plural = if row.len() == 1 { "" } else { "s" };
-            return Err(format!("line {line_number}: {} value{plural}; the raster is {width} wide", row.len()));
+            return Err(words!(
+                "answer-row-length",
+                line = line_number.to_string(),
+                count = row.len(),
+                width = width.to_string()
+            ));
         }
         rows.push(row);
     }
     if rows.len() != height as usize {
-        return Err(format!("{} rows; the raster has {height}", rows.len()));
+        return Err(words!("answer-row-count", count = rows.len().to_string(), height = height.to_string()));
     }
     Ok(rows)
 }

@@ -98,8 +98,12 @@ impl fmt::Display for PolygonProblem {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Error::Read { path, source } => write!(f, "{}: cannot read: {source}", path.display()),
-            Error::Write { path, source } => write!(f, "{}: cannot write: {source}", path.display()),
+            Error::Read { path, source } => {
+                f.write_str(&words!("error-read", path = path.display().to_string(), reason = source.to_string()))
+            }
+            Error::Write { path, source } => {
+                f.write_str(&words!("error-write", path = path.display().to_string(), reason = source.to_string()))
+            }
             Error::SceneFormat { path, location, message } => {
                 if location.is_empty() {
                     write!(f, "{}: {message}", path.display())
@@ -108,9 +112,13 @@ impl fmt::Display for Error {
                 }
             }
             Error::Setting { path, key, message } => write!(f, "{}: {key}: {message}", path.display()),
-            Error::Polygon { path, index, name, problem } => {
-                write!(f, "{}: polygon {} \"{name}\": {problem}", path.display(), index + 1)
-            }
+            Error::Polygon { path, index, name, problem } => f.write_str(&words!(
+                "error-polygon",
+                path = path.display().to_string(),
+                number = (index + 1).to_string(),
+                name = name,
+                problem = problem.to_string()
+            )),
             Error::Usage(message) => f.write_str(message),
             Error::Answer { path, message } => write!(f, "{}: {message}", path.display()),
         }

@@ -65,32 +65,32 @@ pub struct OffPlane {
 impl fmt::Display for GeometryError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            GeometryError::TooFewVertices(n) => {
-                write!(f, "has {n} vertices; a polygon needs at least 3")
-            }
+            GeometryError::TooFewVertices(n) => f.write_str(&words!("geometry-too-few", count = n.to_string())),
             GeometryError::TooManyVertices(n) => {
-                write!(f, "has {n} vertices; zsim takes at most {MAX_VERTICES}")
+                f.write_str(&words!("geometry-too-many", count = n.to_string(), max = MAX_VERTICES.to_string()))
             }
-            GeometryError::OutOfRange { vertex, value, denominator } => write!(
-                f,
-                "vertex {vertex} has coordinate {} beyond the exact range: with the polygon's common denominator {denominator}, |coordinate| × 2 × {denominator} must be at most 2^34 (use smaller coordinates or fewer decimal places)",
-                crate::exact::fraction(*value)
-            ),
+            GeometryError::OutOfRange { vertex, value, denominator } => f.write_str(&words!(
+                "geometry-out-of-range",
+                vertex = vertex.to_string(),
+                value = crate::exact::fraction(*value),
+                denominator = denominator.to_string()
+            )),
             GeometryError::NotPlanar(off) => {
                 let OffPlane { vertex, through: [i, j, k], plane, off_by, along_z } = off.as_ref();
-                if *along_z {
-                    write!(
-                        f,
-                        "is not planar: vertex {vertex} is off the plane {plane} through vertices {i}, {j}, {k} by Δz = {}",
-                        crate::exact::exact_and_decimal(*off_by)
-                    )
+                let (key, off) = if *along_z {
+                    ("geometry-off-plane-z", crate::exact::exact_and_decimal(*off_by))
                 } else {
-                    write!(
-                        f,
-                        "is not planar: vertex {vertex} gives {} instead of 0 in the plane {plane} through vertices {i}, {j}, {k}",
-                        crate::exact::fraction(*off_by)
-                    )
-                }
+                    ("geometry-off-plane", crate::exact::fraction(*off_by))
+                };
+                f.write_str(&words!(
+                    key,
+                    vertex = vertex.to_string(),
+                    plane = plane.to_string(),
+                    i = i.to_string(),
+                    j = j.to_string(),
+                    k = k.to_string(),
+                    off = off
+                ))
             }
         }
     }

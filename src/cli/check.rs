@@ -38,10 +38,11 @@ pub struct CheckArgs {
 pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer) -> Result<Matrix, Error> {
     let text = zsim::text::read_text(path)?;
     let (max, description) = match buffer {
-        Buffer::Frame => {
-            (zsim::scene::max_for_bits(scene.frame_bits), format!("a {}-bit framebuffer", scene.frame_bits))
-        }
-        Buffer::Depth => (scene.depth_max(), format!("a {}-bit z-buffer", scene.depth_bits)),
+        Buffer::Frame => (
+            zsim::scene::max_for_bits(scene.frame_bits),
+            zsim::words!("answer-frame-range", bits = scene.frame_bits.to_string()),
+        ),
+        Buffer::Depth => (scene.depth_max(), zsim::words!("answer-depth-range", bits = scene.depth_bits.to_string())),
     };
     parse_answer(&text, scene.width, scene.height, CellRange { max, buffer: &description })
         .map_err(|message| Error::Answer { path: path.to_owned(), message })

@@ -259,3 +259,25 @@ page-right = { "right: " }
 page-wrong = { "wrong: " }
 page-quiz-score = quiz: { $right } of { $total } right on this scanline
 page-status = scanline { $at } of { $count }
+
+## errors a student meets most: the files, the polygons, the answers
+
+error-read = { $path }: cannot read: { $reason }
+error-write = { $path }: cannot write: { $reason }
+error-polygon = { $path }: polygon { $number } "{ $name }": { $problem }
+geometry-too-few = has { $count } vertices; a polygon needs at least 3
+geometry-too-many = has { $count } vertices; zsim takes at most { $max }
+geometry-out-of-range = vertex { $vertex } has coordinate { $value } beyond the exact range: with the polygon's common denominator { $denominator }, |coordinate| × 2 × { $denominator } must be at most 2^34 (use smaller coordinates or fewer decimal places)
+geometry-off-plane-z = is not planar: vertex { $vertex } is off the plane { $plane } through vertices { $i }, { $j }, { $k } by Δz = { $off }
+geometry-off-plane = is not planar: vertex { $vertex } gives { $off } instead of 0 in the plane { $plane } through vertices { $i }, { $j }, { $k }
+answer-at-cell = line { $line }, value { $column } (x = { $x }, y = { $y })
+answer-at = line { $line }, value { $column }
+answer-not-a-number = { $at }: "{ $cell }" is not a whole number ({ $buffer } holds 0 … { $max })
+answer-too-large = { $at }: { $value } does not fit { $buffer } (0 … { $max })
+answer-row-length = line { $line }: { $count } { $count ->
+    [one] value
+   *[other] values
+  }; the raster is { $width } wide
+answer-row-count = { $count } rows; the raster has { $height }
+answer-frame-range = a { $bits }-bit framebuffer
+answer-depth-range = a { $bits }-bit z-buffer

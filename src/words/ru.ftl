@@ -259,3 +259,26 @@ page-right = { "верно: " }
 page-wrong = { "неверно: " }
 page-quiz-score = опрос: верно { $right } из { $total } на этой строке
 page-status = строка { $at } из { $count }
+
+## ошибки, которые чаще всего встречаются студенту: файлы, многоугольники, ответы
+
+error-read = { $path }: не удаётся прочитать: { $reason }
+error-write = { $path }: не удаётся записать: { $reason }
+error-polygon = { $path }: многоугольник { $number } «{ $name }»: { $problem }
+geometry-too-few = вершин { $count }; у многоугольника их должно быть не меньше 3
+geometry-too-many = вершин { $count }; zsim принимает не больше { $max }
+geometry-out-of-range = у вершины { $vertex } координата { $value } вне точного диапазона: при общем знаменателе многоугольника { $denominator } |координата| × 2 × { $denominator } должна быть не больше 2^34 (возьмите координаты меньше или меньше знаков после запятой)
+geometry-off-plane-z = не плоский: вершина { $vertex } отстоит от плоскости { $plane }, проведённой через вершины { $i }, { $j }, { $k }, на Δz = { $off }
+geometry-off-plane = не плоский: вершина { $vertex } даёт { $off } вместо 0 в уравнении плоскости { $plane }, проведённой через вершины { $i }, { $j }, { $k }
+answer-at-cell = строка { $line }, число { $column } (x = { $x }, y = { $y })
+answer-at = строка { $line }, число { $column }
+answer-not-a-number = { $at }: «{ $cell }» — не целое число ({ $buffer } хранит 0 … { $max })
+answer-too-large = { $at }: { $value } не помещается в { $buffer } (0 … { $max })
+answer-row-length = строка { $line }: { $count ->
+    [one] { $count } число
+    [few] { $count } числа
+   *[many] { $count } чисел
+  }, а ширина растра { $width }
+answer-row-count = строк { $count }, а у растра их { $height }
+answer-frame-range = { $bits }-битный буфер кадра
+answer-depth-range = { $bits }-битный z-буфер

@@ -259,3 +259,26 @@ page-right = { "правильно: " }
 page-wrong = { "неправильно: " }
 page-quiz-score = опитування: правильно { $right } з { $total } на цьому рядку
 page-status = рядок { $at } з { $count }
+
+## помилки, які найчастіше трапляються студентові: файли, багатокутники, відповіді
+
+error-read = { $path }: не вдається прочитати: { $reason }
+error-write = { $path }: не вдається записати: { $reason }
+error-polygon = { $path }: багатокутник { $number } «{ $name }»: { $problem }
+geometry-too-few = вершин { $count }; багатокутник мусить мати щонайменше 3
+geometry-too-many = вершин { $count }; zsim приймає щонайбільше { $max }
+geometry-out-of-range = у вершини { $vertex } координата { $value } поза точним діапазоном: за спільного знаменника багатокутника { $denominator } |координата| × 2 × { $denominator } має бути не більшою за 2^34 (візьміть менші координати або менше знаків після коми)
+geometry-off-plane-z = не плоский: вершина { $vertex } відстоїть від площини { $plane }, проведеної через вершини { $i }, { $j }, { $k }, на Δz = { $off }
+geometry-off-plane = не плоский: вершина { $vertex } дає { $off } замість 0 у рівнянні площини { $plane }, проведеної через вершини { $i }, { $j }, { $k }
+answer-at-cell = рядок { $line }, число { $column } (x = { $x }, y = { $y })
+answer-at = рядок { $line }, число { $column }
+answer-not-a-number = { $at }: «{ $cell }» — не ціле число ({ $buffer } зберігає 0 … { $max })
+answer-too-large = { $at }: { $value } не вміщується в { $buffer } (0 … { $max })
+answer-row-length = рядок { $line }: { $count ->
+    [one] { $count } число
+    [few] { $count } числа
+   *[many] { $count } чисел
+  }, а ширина растра { $width }
+answer-row-count = рядків { $count }, а в растра їх { $height }
+answer-frame-range = { $bits }-бітний буфер кадру
+answer-depth-range = { $bits }-бітний z-буфер

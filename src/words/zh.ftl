@@ -254,3 +254,22 @@ page-right = { "正确：" }
 page-wrong = { "错误：" }
 page-quiz-score = 测验：本扫描线 { $total } 题中答对 { $right } 题
 page-status = 第 { $at } 条扫描线，共 { $count } 条
+
+## 学生最常遇到的错误：文件、多边形、答案
+
+error-read = { $path }：无法读取：{ $reason }
+error-write = { $path }：无法写入：{ $reason }
+error-polygon = { $path }：多边形 { $number }“{ $name }”：{ $problem }
+geometry-too-few = 只有 { $count } 个顶点；多边形至少需要 3 个
+geometry-too-many = 有 { $count } 个顶点；zsim 最多接受 { $max } 个
+geometry-out-of-range = 顶点 { $vertex } 的坐标 { $value } 超出精确范围：多边形的公分母为 { $denominator }，|坐标| × 2 × { $denominator } 不得超过 2^34（请使用更小的坐标或更少的小数位）
+geometry-off-plane-z = 不共面：顶点 { $vertex } 偏离经过顶点 { $i }、{ $j }、{ $k } 的平面 { $plane }，Δz = { $off }
+geometry-off-plane = 不共面：顶点 { $vertex } 代入经过顶点 { $i }、{ $j }、{ $k } 的平面 { $plane } 得 { $off } 而不是 0
+answer-at-cell = 第 { $line } 行第 { $column } 个数（x = { $x }，y = { $y }）
+answer-at = 第 { $line } 行第 { $column } 个数
+answer-not-a-number = { $at }：“{ $cell }”不是整数（{ $buffer }的取值为 0 … { $max }）
+answer-too-large = { $at }：{ $value } 超出{ $buffer }的范围（0 … { $max }）
+answer-row-length = 第 { $line } 行：有 { $count } 个数，而光栅宽度为 { $width }
+answer-row-count = 共 { $count } 行，而光栅有 { $height } 行
+answer-frame-range = { $bits } 位帧缓冲器
+answer-depth-range = { $bits } 位z缓冲器
