@@ -72,11 +72,12 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         rule = scene.depth_test.rule_text()
     ) + "\n";
     if let Some(section) = scene.effects.section {
-        text.push_str(&format!(
-            "cross-section: only z {} {} is written\n",
-            scene.depth_test.section_symbol(),
-            zsim::explain::depth_text(&scene, section)
-        ));
+        let line = zsim::words!(
+            "explain-section",
+            op = scene.depth_test.section_symbol(),
+            section = zsim::explain::depth_text(&scene, section)
+        );
+        text.push_str(&format!("{line}\n"));
     }
     text.push_str(&zsim::words!("explain-start", frame = scene.background, depth = scene.clear_depth.to_string()));
     text.push('\n');
@@ -105,13 +106,14 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         zsim::arith::check_supported(&scene, args.arith)?;
         let (mode, _) = zsim::arith::run(&scene, args.arith)?;
         let same = mode.frame(x, y) == buffers.frame(x, y) && mode.depth(x, y) == buffers.depth(x, y);
-        text.push_str(&format!(
-            "in {} arithmetic: framebuffer {}, z-buffer {} ({})\n",
-            args.arith,
-            mode.frame(x, y),
-            mode.depth(x, y),
-            if same { "the same as exact" } else { "not what exact arithmetic gives" }
-        ));
+        let line = zsim::words!(
+            "explain-arith",
+            arith = args.arith.to_string(),
+            frame = mode.frame(x, y).to_string(),
+            depth = mode.depth(x, y).to_string(),
+            verdict = if same { zsim::words!("explain-arith-same") } else { zsim::words!("explain-arith-differs") }
+        );
+        text.push_str(&format!("{line}\n"));
     }
     emit(out, &text)?;
     Ok(Finish::Ok)
@@ -120,14 +122,16 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
 /// The two point-in-polygon tests at the centre of (x, y).
 fn inside_text(polygon: &zsim::scene::Polygon, x: u32, y: u32) -> String {
     use zsim::variants::{ArcDifference, arc_inside, ray_inside};
-    let ray = if ray_inside(polygon, x, y) { "inside" } else { "outside" };
+    let side =
+        |inside: bool| if inside { zsim::words!("explain-inside-in") } else { zsim::words!("explain-inside-out") };
+    let ray = side(ray_inside(polygon, x, y));
     let arc = match arc_inside(polygon, x, y) {
-        (_, ArcDifference::OnBoundary) => "on the boundary, so inside".to_string(),
+        (_, ArcDifference::OnBoundary) => zsim::words!("explain-arc-boundary"),
         (inside, ArcDifference::Winding(w)) => {
-            format!("winding number {w}, so {}", if inside { "inside" } else { "outside" })
+            zsim::words!("explain-arc-winding", winding = w.to_string(), inside = side(inside))
         }
     };
-    format!("inside tests at the centre: ray casting says {ray}; arc length: {arc}")
+    zsim::words!("explain-inside", ray = ray, arc = arc)
 }
 
 /// The segment holding (x, y) and the polygons it visits.
@@ -142,17 +146,19 @@ fn segment_text(scene: &Scene, segments: zsim::variants::Segments, (x, y): (u32,
     };
     let visited: Vec<String> =
         zsim::variants::visited_in(scene, *rect).into_iter().map(|i| polygon_name(scene, i)).collect();
-    format!(
-        "segment {} of {} ({segments}): columns {} … {}, rows {} … {}; its z-buffer holds {} cells; it visits {}\n",
-        number + 1,
-        rects.len(),
-        rect.columns.0,
-        rect.columns.1,
-        rect.rows.0,
-        rect.rows.1,
-        u64::from(rect.columns.1 - rect.columns.0 + 1) * u64::from(rect.rows.1 - rect.rows.0 + 1),
-        if visited.is_empty() { "no polygon".to_string() } else { visited.join(", ") }
-    )
+    let visited = if visited.is_empty() { zsim::words!("explain-segment-none") } else { visited.join(", ") };
+    zsim::words!(
+        "explain-segment",
+        number = (number + 1).to_string(),
+        count = rects.len().to_string(),
+        segments = segments.to_string(),
+        first = rect.columns.0.to_string(),
+        last = rect.columns.1.to_string(),
+        bottom = rect.rows.0.to_string(),
+        top = rect.rows.1.to_string(),
+        cells = (u64::from(rect.columns.1 - rect.columns.0 + 1) * u64::from(rect.rows.1 - rect.rows.0 + 1)).to_string(),
+        visited = visited
+    ) + "\n"
 }
 
 /// What antialiasing does at (x, y): each sample's history (depth at the
@@ -161,9 +167,7 @@ fn segment_text(scene: &Scene, segments: zsim::variants::Segments, (x, y): (u32,
 fn antialias_text(scene: &Scene, settings: zsim::scene::Antialias, (x, y): (u32, u32)) -> Result<String, Failure> {
     let k = settings.samples;
     let (pictures, notes) = zsim::antialias::run_watching(scene, settings, Some((x, y)))?;
-    let mut text = format!(
-        "antialiasing, {k}×{k} samples (the lines above are the pixel's centre without it; sample lines count in 1/{k} pixels)\n"
-    );
+    let mut text = zsim::words!("explain-antialias", k = k.to_string()) + "\n";
     if settings.depth_at_samples {
         let big = zsim::antialias::supersampled(scene, k)?;
         let samples: Vec<(u32, u32)> = (0..k).flat_map(|j| (0..k).map(move |i| (x * k + i, y * k + j))).collect();
@@ -171,22 +175,24 @@ fn antialias_text(scene: &Scene, settings: zsim::scene::Antialias, (x, y): (u32,
         let mut simulation = Simulation::new(&big);
         simulation.finish(&mut watcher);
         for &(sx, sy) in &samples {
-            text.push_str(&format!(
-                "sample ({}, {}) at ({}, {}): framebuffer {}, z-buffer {}\n",
-                sx - x * k,
-                sy - y * k,
-                zsim::exact::exact_and_decimal(Q::new(2 * i128::from(sx) + 1, 2 * i128::from(k))),
-                zsim::exact::exact_and_decimal(Q::new(2 * i128::from(sy) + 1, 2 * i128::from(k))),
-                simulation.buffers().frame(sx, sy),
-                simulation.buffers().depth(sx, sy)
-            ));
+            let line = zsim::words!(
+                "explain-sample",
+                i = (sx - x * k).to_string(),
+                j = (sy - y * k).to_string(),
+                x = zsim::exact::exact_and_decimal(Q::new(2 * i128::from(sx) + 1, 2 * i128::from(k))),
+                y = zsim::exact::exact_and_decimal(Q::new(2 * i128::from(sy) + 1, 2 * i128::from(k))),
+                frame = simulation.buffers().frame(sx, sy).to_string(),
+                depth = simulation.buffers().depth(sx, sy).to_string()
+            );
+            text.push_str(&format!("{line}\n"));
             for entry in watcher.history(sx, sy) {
                 if entry.pixel.is_some() {
-                    text.push_str(&format!(
-                        "  {}: {}\n",
-                        polygon_name(scene, entry.index),
-                        entry_text(&big, sx, sy, entry)
-                    ));
+                    let line = zsim::words!(
+                        "polygon-line",
+                        polygon = polygon_name(scene, entry.index),
+                        text = entry_text(&big, sx, sy, entry)
+                    );
+                    text.push_str(&format!("  {line}\n"));
                 }
             }
         }
@@ -194,26 +200,30 @@ fn antialias_text(scene: &Scene, settings: zsim::scene::Antialias, (x, y): (u32,
         for note in &notes {
             let samples: Vec<String> = note.samples.iter().map(|(i, j)| format!("({i}, {j})")).collect();
             let d = note.decision;
-            text.push_str(&format!(
-                "{} covers samples {}; its plane's depth at the pixel centre is {}: {}\n",
-                polygon_name(scene, note.index),
-                samples.join(" "),
-                zsim::explain::depth_text(scene, d.compared.value()),
-                match d.outcome {
-                    zsim::trace::Outcome::Written =>
-                        format!("written, the z-buffer holds {} and those samples take the value", d.stored),
-                    _ => "not written".to_string(),
+            let result = match d.outcome {
+                zsim::trace::Outcome::Written => {
+                    zsim::words!("explain-pixel-mode-written", stored = d.stored.to_string())
                 }
-            ));
+                _ => zsim::words!("explain-pixel-mode-not-written"),
+            };
+            let line = zsim::words!(
+                "explain-pixel-mode",
+                polygon = polygon_name(scene, note.index),
+                samples = samples.join(" "),
+                depth = zsim::explain::depth_text(scene, d.compared.value()),
+                result = result
+            );
+            text.push_str(&format!("{line}\n"));
         }
     }
     if let Some(last) = pictures.last() {
         let row = (scene.height - 1 - y) as usize;
-        text.push_str(&format!(
-            "mean over the samples: framebuffer {}, z-buffer {}\n",
-            zsim::exact::fraction(last.frame[row][x as usize]),
-            zsim::exact::fraction(last.depth[row][x as usize])
-        ));
+        let line = zsim::words!(
+            "explain-mean",
+            frame = zsim::exact::fraction(last.frame[row][x as usize]),
+            depth = zsim::exact::fraction(last.depth[row][x as usize])
+        );
+        text.push_str(&format!("{line}\n"));
     }
     Ok(text)
 }

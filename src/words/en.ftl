@@ -281,3 +281,23 @@ answer-row-length = line { $line }: { $count } { $count ->
 answer-row-count = { $count } rows; the raster has { $height }
 answer-frame-range = a { $bits }-bit framebuffer
 answer-depth-range = a { $bits }-bit z-buffer
+
+## explain's extras: sections, segments, inside tests, antialiasing, other arithmetic
+
+explain-section = cross-section: only z { $op } { $section } is written
+explain-inside = inside tests at the centre: ray casting says { $ray }; arc length: { $arc }
+explain-inside-in = inside
+explain-inside-out = outside
+explain-arc-boundary = on the boundary, so inside
+explain-arc-winding = winding number { $winding }, so { $inside }
+explain-segment = segment { $number } of { $count } ({ $segments }): columns { $first } … { $last }, rows { $bottom } … { $top }; its z-buffer holds { $cells } cells; it visits { $visited }
+explain-segment-none = no polygon
+explain-antialias = antialiasing, { $k }×{ $k } samples (the lines above are the pixel's centre without it; sample lines count in 1/{ $k } pixels)
+explain-sample = sample ({ $i }, { $j }) at ({ $x }, { $y }): framebuffer { $frame }, z-buffer { $depth }
+explain-pixel-mode = { $polygon } covers samples { $samples }; its plane's depth at the pixel centre is { $depth }: { $result }
+explain-pixel-mode-written = written, the z-buffer holds { $stored } and those samples take the value
+explain-pixel-mode-not-written = not written
+explain-mean = mean over the samples: framebuffer { $frame }, z-buffer { $depth }
+explain-arith = in { $arith } arithmetic: framebuffer { $frame }, z-buffer { $depth } ({ $verdict })
+explain-arith-same = the same as exact
+explain-arith-differs = not what exact arithmetic gives

@@ -282,3 +282,23 @@ answer-row-length = строка { $line }: { $count ->
 answer-row-count = строк { $count }, а у растра их { $height }
 answer-frame-range = { $bits }-битный буфер кадра
 answer-depth-range = { $bits }-битный z-буфер
+
+## дополнения explain: сечение, сегменты, проверки «внутри», сглаживание, другая арифметика
+
+explain-section = сечение: записываются только z { $op } { $section }
+explain-inside = проверки «внутри» для центра: трассировка луча — { $ray }; сумма углов — { $arc }
+explain-inside-in = внутри
+explain-inside-out = снаружи
+explain-arc-boundary = на границе, значит внутри
+explain-arc-winding = число оборотов { $winding }, значит { $inside }
+explain-segment = сегмент { $number } из { $count } ({ $segments }): столбцы { $first } … { $last }, строки { $bottom } … { $top }; его z-буфер хранит ячеек: { $cells }; его затрагивают: { $visited }
+explain-segment-none = ни один многоугольник
+explain-antialias = сглаживание по сетке отсчётов { $k }×{ $k } (строки выше — центр пиксела без сглаживания; строки отсчётов ведут счёт в 1/{ $k } пиксела)
+explain-sample = отсчёт ({ $i }, { $j }) в точке ({ $x }; { $y }): буфер кадра { $frame }, z-буфер { $depth }
+explain-pixel-mode = { $polygon } покрывает отсчёты { $samples }; глубина его плоскости в центре пиксела { $depth }: { $result }
+explain-pixel-mode-written = записано, в z-буфере { $stored }, и эти отсчёты получают значение
+explain-pixel-mode-not-written = не записано
+explain-mean = среднее по отсчётам: буфер кадра { $frame }, z-буфер { $depth }
+explain-arith = в арифметике { $arith }: буфер кадра { $frame }, z-буфер { $depth } ({ $verdict })
+explain-arith-same = как в точной
+explain-arith-differs = не то, что даёт точная арифметика

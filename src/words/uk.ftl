@@ -282,3 +282,23 @@ answer-row-length = рядок { $line }: { $count ->
 answer-row-count = рядків { $count }, а в растра їх { $height }
 answer-frame-range = { $bits }-бітний буфер кадру
 answer-depth-range = { $bits }-бітний z-буфер
+
+## доповнення explain: переріз, сегменти, перевірки «всередині», згладжування, інша арифметика
+
+explain-section = переріз: записуються лише z { $op } { $section }
+explain-inside = перевірки «всередині» для центру: трасування променя — { $ray }; сума кутів — { $arc }
+explain-inside-in = всередині
+explain-inside-out = зовні
+explain-arc-boundary = на межі, отже всередині
+explain-arc-winding = число обертів { $winding }, отже { $inside }
+explain-segment = сегмент { $number } з { $count } ({ $segments }): стовпці { $first } … { $last }, рядки { $bottom } … { $top }; його z-буфер зберігає клітинок: { $cells }; його зачіпають: { $visited }
+explain-segment-none = жоден багатокутник
+explain-antialias = згладжування за сіткою відліків { $k }×{ $k } (рядки вище — центр пікселя без згладжування; рядки відліків рахують в 1/{ $k } пікселя)
+explain-sample = відлік ({ $i }, { $j }) у точці ({ $x }; { $y }): буфер кадру { $frame }, z-буфер { $depth }
+explain-pixel-mode = { $polygon } покриває відліки { $samples }; глибина його площини в центрі пікселя { $depth }: { $result }
+explain-pixel-mode-written = записано, у z-буфері { $stored }, і ці відліки отримують значення
+explain-pixel-mode-not-written = не записано
+explain-mean = середнє за відліками: буфер кадру { $frame }, z-буфер { $depth }
+explain-arith = в арифметиці { $arith }: буфер кадру { $frame }, z-буфер { $depth } ({ $verdict })
+explain-arith-same = як у точній
+explain-arith-differs = не те, що дає точна арифметика

@@ -273,3 +273,23 @@ answer-row-length = 第 { $line } 行：有 { $count } 个数，而光栅宽度�
 answer-row-count = 共 { $count } 行，而光栅有 { $height } 行
 answer-frame-range = { $bits } 位帧缓冲器
 answer-depth-range = { $bits } 位z缓冲器
+
+## explain 的补充：剖切、分段、内部测试、反走样、其他运算
+
+explain-section = 剖切：只写入 z { $op } { $section } 的部分
+explain-inside = 像素中心的内部测试：射线法判定为{ $ray }；角度和法：{ $arc }
+explain-inside-in = 内部
+explain-inside-out = 外部
+explain-arc-boundary = 在边界上，因此算内部
+explain-arc-winding = 环绕数 { $winding }，因此在{ $inside }
+explain-segment = 分段 { $number }/{ $count }（{ $segments }）：列 { $first } … { $last }，行 { $bottom } … { $top }；其z缓冲器有 { $cells } 个单元；涉及 { $visited }
+explain-segment-none = 无多边形
+explain-antialias = 反走样，{ $k }×{ $k } 个采样点（上面几行是不做反走样时的像素中心；采样点以 1/{ $k } 像素为单位）
+explain-sample = 采样点 ({ $i }, { $j }) 位于 ({ $x }, { $y })：帧缓冲器 { $frame }，z缓冲器 { $depth }
+explain-pixel-mode = { $polygon } 覆盖采样点 { $samples }；其平面在像素中心的深度为 { $depth }：{ $result }
+explain-pixel-mode-written = 写入，z缓冲器为 { $stored }，这些采样点取该值
+explain-pixel-mode-not-written = 不写入
+explain-mean = 采样平均：帧缓冲器 { $frame }，z缓冲器 { $depth }
+explain-arith = 在 { $arith } 运算中：帧缓冲器 { $frame }，z缓冲器 { $depth }（{ $verdict }）
+explain-arith-same = 与精确运算相同
+explain-arith-differs = 与精确运算结果不同
