@@ -45,6 +45,10 @@ pub fn supersampled(scene: &Scene, k: u32) -> Result<Scene, Error> {
     big.height = scene.height * k;
     let factor = Q::from_integer(i128::from(k));
     for (index, polygon) in big.polygons.iter_mut().enumerate() {
+        if polygon.vertices.is_empty() {
+            // Clipped away in clip space: nothing on the raster to scale.
+            continue;
+        }
         polygon.vertices = polygon.vertices.iter().map(|v| [v[0] * factor, v[1] * factor, v[2]]).collect();
         polygon.geometry = Geometry::new(&polygon.vertices).map_err(|e| Error::Polygon {
             path: "(supersampled)".into(),

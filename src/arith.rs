@@ -197,6 +197,10 @@ pub fn snap(scene: &Scene, bits: u32) -> Result<Scene, Error> {
     let round = |v: Q| ((v * unit) + Q::new(1, 2)).floor() / unit;
     let mut snapped = scene.clone();
     for (index, polygon) in snapped.polygons.iter_mut().enumerate() {
+        if polygon.vertices.is_empty() {
+            // Clipped away in clip space: nothing on the raster to snap.
+            continue;
+        }
         polygon.vertices = polygon.vertices.iter().map(|v| [round(v[0]), round(v[1]), v[2]]).collect();
         polygon.geometry = Geometry::new(&polygon.vertices).map_err(|e| Error::Polygon {
             path: format!("(snapped to fixed:{bits})").into(),

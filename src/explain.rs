@@ -153,6 +153,7 @@ pub fn fate_text(fate: Fate) -> Option<String> {
         Fate::EdgeOn => Some(words!("fate-edge-on")),
         Fate::Degenerate => Some(words!("fate-degenerate")),
         Fate::ClippedAway => Some(words!("fate-clipped")),
+        Fate::OutsideView => Some(words!("fate-outside-view")),
     }
 }
 

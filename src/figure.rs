@@ -155,6 +155,10 @@ pub fn svg_with(
     // Polygon outlines, with their names.
     let _ = writeln!(out, r#"<g id="polygons" fill="none" stroke="black" stroke-width="1.5">"#);
     for (index, polygon) in scene.polygons.iter().enumerate().take(last + 1) {
+        if polygon.vertices.is_empty() {
+            // Clipped away in clip space: nothing on the raster to outline.
+            continue;
+        }
         let points: Vec<String> = polygon.vertices.iter().map(|v| format!("{},{}", sx(v[0]), sy(v[1]))).collect();
         let _ = writeln!(
             out,
@@ -321,7 +325,7 @@ fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&dyn F
     );
     // Vertices already labelled, so that a point shared by two polygons gets its labels one under the other.
     let mut labelled: Vec<[Q; 2]> = Vec::new();
-    for polygon in scene.polygons.iter().take(last + 1) {
+    for polygon in scene.polygons.iter().take(last + 1).filter(|p| !p.vertices.is_empty()) {
         let n = Q::from_integer(polygon.vertices.len() as i128);
         let middle_x = polygon.vertices.iter().map(|v| v[0]).sum::<Q>() / n;
         let middle_y = polygon.vertices.iter().map(|v| v[1]).sum::<Q>() / n;

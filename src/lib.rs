@@ -80,6 +80,7 @@ pub mod arith;
 pub mod buet;
 pub mod buffer;
 pub mod check;
+pub mod clip_space;
 pub mod cs418;
 pub mod depth;
 pub mod error;

@@ -41,6 +41,16 @@ pub enum Clip {
     },
     /// Every vertex lies behind the near plane: nothing is drawn.
     Away,
+    /// Given in clip space: `inside` of its `of` vertices lay inside the view
+    /// volume; the part inside is drawn ([`crate::clip_space`]).
+    View {
+        /// Vertices inside the view volume.
+        inside: usize,
+        /// Vertices in all.
+        of: usize,
+    },
+    /// Given in clip space, and nothing of it lies inside the view volume.
+    ViewAway,
 }
 
 impl Perspective {

@@ -745,8 +745,10 @@ fn prefetch<T>(data: *const T) {
 /// Whether polygon `index` is drawn, and if not, why.
 pub fn fate(scene: &Scene, index: usize) -> Fate {
     let polygon = &scene.polygons[index];
-    if polygon.clip == crate::perspective::Clip::Away {
-        return Fate::ClippedAway;
+    match polygon.clip {
+        crate::perspective::Clip::Away => return Fate::ClippedAway,
+        crate::perspective::Clip::ViewAway => return Fate::OutsideView,
+        _ => {}
     }
     let geometry = &polygon.geometry;
     if geometry.is_degenerate() {

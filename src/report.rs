@@ -66,6 +66,7 @@ pub fn polygon_heading(scene: &Scene, index: usize) -> String {
     match fate(scene, index) {
         Fate::Degenerate => words!("heading-degenerate", start = start),
         Fate::ClippedAway => words!("heading-clipped-away", start = start),
+        Fate::OutsideView => words!("heading-outside-view", start = start),
         Fate::EdgeOn => words!("heading-edge-on", start = start, plane = plane),
         Fate::Culled(winding) => words!(
             "heading-culled",
@@ -81,6 +82,12 @@ pub fn polygon_heading(scene: &Scene, index: usize) -> String {
                 Clip::Kept { front, of } if front < of => words!(
                     "heading-clipped",
                     front = front.to_string(),
+                    of = of.to_string(),
+                    n = polygon.vertices.len().to_string()
+                ),
+                Clip::View { inside, of } => words!(
+                    "heading-view",
+                    inside = inside.to_string(),
                     of = of.to_string(),
                     n = polygon.vertices.len().to_string()
                 ),

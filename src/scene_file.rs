@@ -270,7 +270,46 @@ struct PolygonFile {
     name: Option<String>,
     value: u64,
     opacity: Option<Number>,
-    vertices: Vec<[Number; 3]>,
+    vertices: Vec<VertexFile>,
+}
+
+/// A vertex as written: `[x, y, z]` in pixel units (or the window's), or
+/// `[x, y, z, w]` in clip space ([`crate::clip_space`]).
+#[derive(Debug, Clone, Copy)]
+enum VertexFile {
+    Xyz([Q; 3]),
+    Clip([Q; 4]),
+}
+
+impl<'de> Deserialize<'de> for VertexFile {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<VertexFile, D::Error> {
+        deserializer.deserialize_seq(VertexVisitor)
+    }
+}
+
+struct VertexVisitor;
+
+impl<'de> serde::de::Visitor<'de> for VertexVisitor {
+    type Value = VertexFile;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a vertex [x, y, z], or [x, y, z, w] in clip space")
+    }
+
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<VertexFile, A::Error> {
+        let mut values = Vec::with_capacity(4);
+        while let Some(Number(value)) = seq.next_element::<Number>()? {
+            if values.len() == 4 {
+                return Err(A::Error::invalid_length(5, &self));
+            }
+            values.push(value);
+        }
+        match values[..] {
+            [x, y, z] => Ok(VertexFile::Xyz([x, y, z])),
+            [x, y, z, w] => Ok(VertexFile::Clip([x, y, z, w])),
+            _ => Err(A::Error::invalid_length(values.len(), &self)),
+        }
+    }
 }
 
 impl SceneFile {
@@ -409,6 +448,7 @@ impl SceneFile {
         for (index, polygon) in self.polygons.into_iter().enumerate() {
             let frame = Frame {
                 bits: frame_bits,
+                depth_max,
                 window: window.map(|w| (w, width, height)),
                 perspective,
                 size: (width, height),
@@ -441,6 +481,7 @@ impl SceneFile {
 /// What a polygon's validation needs to know of the scene.
 struct Frame {
     bits: u32,
+    depth_max: u32,
     window: Option<(Window, u32, u32)>,
     perspective: Option<Perspective>,
     size: (u32, u32),
@@ -476,7 +517,27 @@ impl PolygonFile {
                 }),
             )
         };
-        let mut vertices: Vec<[Q; 3]> = self.vertices.iter().map(|v| v.map(|n| n.0)).collect();
+        let clip_space: Vec<[Q; 4]> =
+            self.vertices.iter().filter_map(|v| if let VertexFile::Clip(c) = v { Some(*c) } else { None }).collect();
+        let mut vertices: Vec<[Q; 3]> = if clip_space.is_empty() {
+            self.vertices.iter().filter_map(|v| if let VertexFile::Xyz(p) = v { Some(*p) } else { None }).collect()
+        } else if clip_space.len() < self.vertices.len() {
+            return Err(fail(&name, PolygonProblem::Other(words!("clip-space-mixed"))));
+        } else if frame.window.is_some() || frame.perspective.is_some() {
+            return Err(fail(&name, PolygonProblem::Other(words!("clip-space-alone"))));
+        } else {
+            return clip_space_polygon(&clip_space, frame)
+                .map(|(vertices, geometry, clip)| Polygon {
+                    name: name.clone(),
+                    value: self.value as u32,
+                    vertices,
+                    geometry,
+                    opacity,
+                    eye_vertices: None,
+                    clip,
+                })
+                .map_err(|problem| fail(&name, problem));
+        };
         if let Some((window, width, height)) = frame.window {
             for (number, vertex) in vertices.iter_mut().enumerate() {
                 *vertex = window.to_pixels(*vertex, width, height).ok_or_else(|| out_of_range(number, vertex[0]))?;
@@ -539,4 +600,30 @@ fn w_fits(geometry: &Geometry) -> bool {
     let r = geometry.points.iter().flatten().map(|v| v.unsigned_abs()).max().unwrap_or(0).max(1);
     let n = geometry.points.len() as u128;
     3 * bits(r) + bits(20 * n) + 21 <= 125
+}
+
+/// A polygon given in clip space: clipped, divided and mapped by the viewport
+/// ([`crate::clip_space`]); what is left, its geometry and how it was clipped.
+fn clip_space_polygon(clip_space: &[[Q; 4]], frame: &Frame) -> Result<(Vec<[Q; 3]>, Geometry, Clip), PolygonProblem> {
+    let (width, height) = frame.size;
+    let out_of_range = || {
+        PolygonProblem::Geometry(crate::plane::GeometryError::OutOfRange {
+            vertex: 1,
+            value: clip_space[0][0],
+            denominator: *clip_space[0][0].denom(),
+        })
+    };
+    match crate::clip_space::to_raster(clip_space, width, height, frame.depth_max).ok_or_else(out_of_range)? {
+        crate::clip_space::Clipped::Outside => {
+            // Nothing is drawn; a placeholder geometry keeps the polygon in the reports.
+            let (zero, one) = (Q::from_integer(0), Q::from_integer(1));
+            let geometry = Geometry::new(&[[zero, zero, zero], [one, zero, zero], [zero, one, zero]])
+                .expect("a unit triangle is a polygon");
+            Ok((Vec::new(), geometry, Clip::ViewAway))
+        }
+        crate::clip_space::Clipped::Inside { vertices, inside } => {
+            let geometry = Geometry::new(&vertices).map_err(PolygonProblem::Geometry)?;
+            Ok((vertices, geometry, Clip::View { inside, of: clip_space.len() }))
+        }
+    }
 }

@@ -54,6 +54,8 @@ pub enum Fate {
     Degenerate,
     /// With perspective, every vertex lies behind the near plane: nothing is drawn.
     ClippedAway,
+    /// Given in clip space, nothing of it lies inside the view volume.
+    OutsideView,
 }
 
 /// A polygon starts.

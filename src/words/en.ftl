@@ -301,3 +301,11 @@ explain-mean = mean over the samples: framebuffer { $frame }, z-buffer { $depth 
 explain-arith = in { $arith } arithmetic: framebuffer { $frame }, z-buffer { $depth } ({ $verdict })
 explain-arith-same = the same as exact
 explain-arith-differs = not what exact arithmetic gives
+
+## clip-space vertices [x, y, z, w]
+
+clip-space-mixed = mixes [x, y, z] vertices with clip-space [x, y, z, w] ones: write every vertex of a polygon the same way
+clip-space-alone = has clip-space vertices [x, y, z, w], which the viewport maps onto the raster; they do not combine with a window or the perspective effect
+fate-outside-view = it lies outside the view volume (−w ≤ x, y, z ≤ w): clipped away, not drawn
+heading-outside-view = { $start }: outside the view volume (−w ≤ x, y, z ≤ w): clipped away, not drawn
+heading-view = { "; clip space: " }{ $inside } of { $of } vertices inside the view volume, drawn as one { $n }-gon after clipping, division by w and the viewport

@@ -293,3 +293,11 @@ explain-mean = 采样平均：帧缓冲器 { $frame }，z缓冲器 { $depth }
 explain-arith = 在 { $arith } 运算中：帧缓冲器 { $frame }，z缓冲器 { $depth }（{ $verdict }）
 explain-arith-same = 与精确运算相同
 explain-arith-differs = 与精确运算结果不同
+
+## 裁剪空间顶点 [x, y, z, w]
+
+clip-space-mixed = 同时使用了 [x, y, z] 顶点和裁剪空间的 [x, y, z, w] 顶点：同一多边形的顶点请用同一种写法
+clip-space-alone = 使用裁剪空间顶点 [x, y, z, w]，由视口变换映射到光栅上；它们不能与窗口或透视效果同时使用
+fate-outside-view = 它位于视见体（−w ≤ x, y, z ≤ w）之外：被完全裁剪，不绘制
+heading-outside-view = { $start }：位于视见体（−w ≤ x, y, z ≤ w）之外：被完全裁剪，不绘制
+heading-view = { "；裁剪空间：" }{ $of } 个顶点中有 { $inside } 个在视见体内，经裁剪、除以 w 和视口变换后按 { $n } 边形绘制

@@ -254,3 +254,40 @@ fn tiles_of_any_size_give_the_same_buffers() {
         }
     }
 }
+
+/// Clip-space vertices `[x, y, z, w]`: a polygon through the eye is clipped
+/// exactly at the near plane (2 of its 3 vertices inside, drawn as a
+/// pentagon), one wholly behind is not drawn, and the nearer (smaller z',
+/// depth test `less`) wins where they overlap.
+#[test]
+fn clip_space_vertices_are_clipped_divided_and_mapped_by_the_viewport() {
+    let out = crate::zsim(&["run", "examples/clip_space.json"]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(out.stdout.contains(
+        "polygon 2 \"through the eye\" (value 2): plane -50x + 85y + 96z - 1400 = 0, counter-clockwise; clip space: 2 of 3 vertices inside the view volume, drawn as one 5-gon after clipping, division by w and the viewport"
+    ), "{}", out.stdout);
+    assert!(out.stdout.contains(
+        "polygon 3 \"behind\" (value 3): outside the view volume (−w ≤ x, y, z ≤ w): clipped away, not drawn"
+    ));
+    let explain = crate::zsim(&["explain", "examples/clip_space.json", "--pixel", "12,14"]);
+    assert!(explain.stdout.contains("z = 1585/192 ≈ 8.26 < 11 stored, so 8 is stored"), "{}", explain.stdout);
+    assert!(explain.stdout.ends_with("final: framebuffer 2, z-buffer 8\n"), "{}", explain.stdout);
+    // Mixed vertices and a window are refused, naming the polygon.
+    for (name, json, message) in [
+        (
+            "mixed.json",
+            r#"{"polygons": [{"value": 1, "vertices": [[0,0,0,1],[1,0,0],[0,1,0,1]]}]}"#,
+            "mixes [x, y, z] vertices with clip-space [x, y, z, w] ones: write every vertex of a polygon the same way",
+        ),
+        (
+            "window.json",
+            r#"{"window": {"left": 0, "right": 1, "bottom": 0, "top": 1}, "polygons": [{"value": 1, "vertices": [[0,0,0,1],[1,0,0,1],[0,1,0,1]]}]}"#,
+            "they do not combine with a window or the perspective effect",
+        ),
+    ] {
+        let (dir, file) = crate::scene_file(name, json);
+        let out = crate::zsim_in(Some(&dir), &["run", &file]);
+        assert_eq!(out.code, 2);
+        assert!(out.stderr.contains(message), "{}", out.stderr);
+    }
+}
