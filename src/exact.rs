@@ -27,16 +27,9 @@ pub enum NumberError {
 impl fmt::Display for NumberError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            NumberError::NotANumber(text) => write!(
-                f,
-                "\"{text}\" is not a number (write an integer, a decimal such as 2.5, or a fraction such as \"5/2\")"
-            ),
-            NumberError::ZeroDenominator(text) => {
-                write!(f, "\"{text}\" divides by zero")
-            }
-            NumberError::TooLarge(text) => {
-                write!(f, "\"{text}\" has too many digits to hold exactly (at most 30 significant digits)")
-            }
+            NumberError::NotANumber(text) => f.write_str(&words!("number-not-a-number", text = text)),
+            NumberError::ZeroDenominator(text) => f.write_str(&words!("number-zero-denominator", text = text)),
+            NumberError::TooLarge(text) => f.write_str(&words!("number-too-large", text = text)),
         }
     }
 }

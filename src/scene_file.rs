@@ -21,9 +21,7 @@ pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
         return Err(Error::SceneFormat {
             path: path.to_owned(),
             location: String::new(),
-            message: format!(
-                "a scene is a JSON object such as {{\"width\": 32, \"height\": 32, \"polygons\": [...]}}, not {found}"
-            ),
+            message: words!("scene-not-object", found = words!(found)),
         });
     }
     let mut deserializer = serde_json::Deserializer::from_str(text);
@@ -50,11 +48,11 @@ pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
 /// the JSON reader should report itself.
 fn top_level_kind(text: &str) -> Option<&'static str> {
     match text.trim_start().bytes().next()? {
-        b'[' => Some("an array"),
-        b'"' => Some("a string"),
-        b'-' | b'0'..=b'9' => Some("a number"),
-        b't' | b'f' if text.trim().parse::<bool>().is_ok() => Some("true or false"),
-        b'n' if text.trim() == "null" => Some("null"),
+        b'[' => Some("json-array"),
+        b'"' => Some("json-string"),
+        b'-' | b'0'..=b'9' => Some("json-number"),
+        b't' | b'f' if text.trim().parse::<bool>().is_ok() => Some("json-bool"),
+        b'n' if text.trim() == "null" => Some("json-null"),
         _ => None,
     }
 }
@@ -77,17 +75,19 @@ fn missing_comma(text: &str, error: &serde_json::Error) -> String {
     };
     let line = text[..before].matches('\n').count() + 1;
     if line < error.line() {
-        format!(" (a comma is missing at the end of line {line})")
+        words!("json-comma-end", line = line.to_string())
     } else {
         let column = text[..before].rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-        format!(" (a comma is missing after line {line} column {column})")
+        words!("json-comma-after", line = line.to_string(), column = column.to_string())
     }
 }
 
 /// serde_json's message, saying "not valid JSON" when the syntax is at fault.
 fn json_message(error: &serde_json::Error) -> String {
     match error.classify() {
-        serde_json::error::Category::Syntax | serde_json::error::Category::Eof => format!("not valid JSON: {error}"),
+        serde_json::error::Category::Syntax | serde_json::error::Category::Eof => {
+            words!("json-invalid", error = error.to_string())
+        }
         _ => error.to_string(),
     }
 }
@@ -104,9 +104,9 @@ fn describe_location(path: &str) -> String {
     {
         let tail = tail.trim_start_matches('.');
         return if tail.is_empty() {
-            format!("polygon {}", index + 1)
+            words!("location-polygon", number = (index + 1).to_string())
         } else {
-            format!("polygon {}: {tail}", index + 1)
+            format!("{}: {tail}", words!("location-polygon", number = (index + 1).to_string()))
         };
     }
     path.to_string()
@@ -155,20 +155,20 @@ impl<'de> serde::de::Visitor<'de> for NumberVisitor {
                 let digits: String = map.next_value()?;
                 parse_number(&digits).map(Number).map_err(A::Error::custom)
             }
-            _ => Err(A::Error::custom("expected a number, found an object")),
+            _ => Err(A::Error::custom(words!("number-found-object"))),
         }
     }
 
     fn visit_bool<E: serde::de::Error>(self, _: bool) -> Result<Number, E> {
-        Err(E::custom("expected a number, found a boolean"))
+        Err(E::custom(words!("number-found-bool")))
     }
 
     fn visit_unit<E: serde::de::Error>(self) -> Result<Number, E> {
-        Err(E::custom("expected a number, found null"))
+        Err(E::custom(words!("number-found-null")))
     }
 
     fn visit_seq<A: serde::de::SeqAccess<'de>>(self, _: A) -> Result<Number, A::Error> {
-        Err(A::Error::custom("expected a number, found a list"))
+        Err(A::Error::custom(words!("number-found-list")))
     }
 }
 
@@ -318,14 +318,14 @@ impl SceneFile {
         let bits = |key: &'static str, value: Option<u64>, default: u32| -> Result<u32, Error> {
             match value.unwrap_or(u64::from(default)) {
                 bits @ 1..=32 => Ok(bits as u32),
-                other => Err(setting(key, format!("{other} is not supported: use 1 to 32 bits"))),
+                other => Err(setting(key, words!("setting-bits", value = other.to_string()))),
             }
         };
         let side = |key: &'static str, value: Option<u64>| -> Result<u32, Error> {
             match value.unwrap_or(32) {
-                0 => Err(setting(key, "must be at least 1 pixel".into())),
+                0 => Err(setting(key, words!("setting-side-zero"))),
                 side if side > MAX_SIDE => {
-                    Err(setting(key, format!("{side} is beyond the limit of {MAX_SIDE} pixels")))
+                    Err(setting(key, words!("setting-side-large", side = side.to_string(), max = MAX_SIDE.to_string())))
                 }
                 side => Ok(side as u32),
             }
@@ -335,9 +335,12 @@ impl SceneFile {
         if u64::from(width) * u64::from(height) > MAX_CELLS {
             return Err(setting(
                 "width",
-                format!(
-                    "{width}×{height} is {} pixels, beyond the limit of {MAX_CELLS}",
-                    u64::from(width) * u64::from(height)
+                words!(
+                    "setting-cells",
+                    width = width.to_string(),
+                    height = height.to_string(),
+                    cells = (u64::from(width) * u64::from(height)).to_string(),
+                    max = MAX_CELLS.to_string()
                 ),
             ));
         }
@@ -348,7 +351,12 @@ impl SceneFile {
         if background > frame_max {
             return Err(setting(
                 "background",
-                format!("{background} does not fit a {frame_bits}-bit framebuffer (at most {frame_max})"),
+                words!(
+                    "setting-background",
+                    value = background.to_string(),
+                    bits = frame_bits.to_string(),
+                    max = frame_max.to_string()
+                ),
             ));
         }
         let rules = rules_from(self.rules).map_err(|message| setting("rules", message))?;
@@ -361,12 +369,12 @@ impl SceneFile {
                 if window.left >= window.right || window.bottom >= window.top {
                     return Err(setting(
                         "window",
-                        format!(
-                            "left {} must be below right {} and bottom {} below top {}",
-                            fraction(window.left),
-                            fraction(window.right),
-                            fraction(window.bottom),
-                            fraction(window.top)
+                        words!(
+                            "setting-window",
+                            left = fraction(window.left),
+                            right = fraction(window.right),
+                            bottom = fraction(window.bottom),
+                            top = fraction(window.top)
                         ),
                     ));
                 }
@@ -377,7 +385,7 @@ impl SceneFile {
             Some([front, rear]) if front.0 > rear.0 => {
                 return Err(setting(
                     "depth_range",
-                    format!("[{}, {}]: the front must not exceed the rear", fraction(front.0), fraction(rear.0)),
+                    words!("setting-depth-range", front = fraction(front.0), rear = fraction(rear.0)),
                 ));
             }
             Some([front, rear]) => Some((front.0, rear.0)),
@@ -387,10 +395,7 @@ impl SceneFile {
         let clear_depth = match (rules.store, self.clear_depth) {
             (DepthStore::Quantized, None) => Stored::Level(depth_test.clear_value(depth_max)),
             (DepthStore::Quantized, Some(_)) => {
-                return Err(setting(
-                    "clear_depth",
-                    "applies only to an exact z-buffer (rules with \"store\": \"exact\"); a quantized one is cleared to its farthest level".into(),
-                ));
+                return Err(setting("clear_depth", words!("setting-clear-depth")));
             }
             (DepthStore::Exact, Some(value)) => Stored::Exact(value.0),
             (DepthStore::Exact, None) => Stored::Exact(Q::from_integer(i128::from(depth_test.clear_value(depth_max)))),
@@ -405,13 +410,10 @@ impl SceneFile {
                 };
                 let small = |v: Q| v.numer().abs() <= 1 << 20 && *v.denom() <= 1 << 20;
                 if perspective.distance <= Q::from_integer(0) || perspective.near <= Q::from_integer(0) {
-                    return Err(setting("effects", "perspective: distance and near must be positive".into()));
+                    return Err(setting("effects", words!("setting-perspective-positive")));
                 }
                 if !small(perspective.distance) || !small(perspective.near) {
-                    return Err(setting(
-                        "effects",
-                        "perspective: distance and near must have numerators and denominators of at most 2^20".into(),
-                    ));
+                    return Err(setting("effects", words!("setting-perspective-small")));
                 }
                 Some(perspective)
             }
@@ -422,23 +424,23 @@ impl SceneFile {
                 if !(1..=16).contains(&a.samples) {
                     return Err(setting(
                         "effects",
-                        format!("antialias: samples {} is not supported: use 1 to 16", a.samples),
+                        words!("setting-antialias-samples", samples = a.samples.to_string()),
                     ));
                 }
                 if u64::from(width) * u64::from(height) * u64::from(a.samples).pow(2) > MAX_CELLS {
                     return Err(setting(
                         "effects",
-                        format!(
-                            "antialias: {width}×{height} pixels × {}² samples is beyond the limit of {MAX_CELLS} cells",
-                            a.samples
+                        words!(
+                            "setting-antialias-cells",
+                            width = width.to_string(),
+                            height = height.to_string(),
+                            samples = a.samples.to_string(),
+                            max = MAX_CELLS.to_string()
                         ),
                     ));
                 }
                 if rules.store == DepthStore::Exact {
-                    return Err(setting(
-                        "effects",
-                        "antialias averages a quantized z-buffer; it does not combine with an exact store".into(),
-                    ));
+                    return Err(setting("effects", words!("setting-antialias-exact")));
                 }
                 Some(Antialias { samples: a.samples, depth_at_samples: a.depth != Some(AntialiasDepth::Pixel) })
             }
@@ -505,7 +507,7 @@ impl PolygonFile {
         if let Some(alpha) = opacity
             && (alpha < Q::from_integer(0) || alpha > Q::from_integer(1))
         {
-            return Err(fail(&name, PolygonProblem::Other(format!("opacity {} is outside 0 … 1", fraction(alpha)))));
+            return Err(fail(&name, PolygonProblem::Other(words!("polygon-opacity", alpha = fraction(alpha)))));
         }
         let out_of_range = |number: usize, value: Q| {
             fail(

@@ -309,3 +309,37 @@ clip-space-alone = has clip-space vertices [x, y, z, w], which the viewport maps
 fate-outside-view = it lies outside the view volume (−w ≤ x, y, z ≤ w): clipped away, not drawn
 heading-outside-view = { $start }: outside the view volume (−w ≤ x, y, z ≤ w): clipped away, not drawn
 heading-view = { "; clip space: " }{ $inside } of { $of } vertices inside the view volume, drawn as one { $n }-gon after clipping, division by w and the viewport
+
+## the scene reader
+
+scene-not-object = a scene is a JSON object such as {"{"}"width": 32, "height": 32, "polygons": [...]{"}"}, not { $found }
+json-array = an array
+json-string = a string
+json-number = a number
+json-bool = true or false
+json-null = null
+json-comma-end = { " (a comma is missing at the end of line " }{ $line })
+json-comma-after = { " (a comma is missing after line " }{ $line } column { $column })
+json-invalid = not valid JSON: { $error }
+location-polygon = polygon { $number }
+number-found-object = expected a number, found an object
+number-found-bool = expected a number, found a boolean
+number-found-null = expected a number, found null
+number-found-list = expected a number, found a list
+number-not-a-number = "{ $text }" is not a number (write an integer, a decimal such as 2.5, or a fraction such as "5/2")
+number-zero-denominator = "{ $text }" divides by zero
+number-too-large = "{ $text }" has too many digits to hold exactly (at most 30 significant digits)
+setting-bits = { $value } is not supported: use 1 to 32 bits
+setting-side-zero = must be at least 1 pixel
+setting-side-large = { $side } is beyond the limit of { $max } pixels
+setting-cells = { $width }×{ $height } is { $cells } pixels, beyond the limit of { $max }
+setting-background = { $value } does not fit a { $bits }-bit framebuffer (at most { $max })
+setting-window = left { $left } must be below right { $right } and bottom { $bottom } below top { $top }
+setting-depth-range = [{ $front }, { $rear }]: the front must not exceed the rear
+setting-clear-depth = applies only to an exact z-buffer (rules with "store": "exact"); a quantized one is cleared to its farthest level
+setting-perspective-positive = perspective: distance and near must be positive
+setting-perspective-small = perspective: distance and near must have numerators and denominators of at most 2^20
+setting-antialias-samples = antialias: samples { $samples } is not supported: use 1 to 16
+setting-antialias-cells = antialias: { $width }×{ $height } pixels × { $samples }² samples is beyond the limit of { $max } cells
+setting-antialias-exact = antialias averages a quantized z-buffer; it does not combine with an exact store
+polygon-opacity = opacity { $alpha } is outside 0 … 1

@@ -310,3 +310,37 @@ clip-space-alone = задан вершинами [x, y, z, w] в простра�
 fate-outside-view = он вне видимого объёма (−w ≤ x, y, z ≤ w): отсекается целиком и не рисуется
 heading-outside-view = { $start }: вне видимого объёма (−w ≤ x, y, z ≤ w): отсекается целиком, не рисуется
 heading-view = { "; пространство отсечения: " }внутри видимого объёма { $inside } из { $of } вершин, после отсечения, деления на w и области вывода рисуется как { $n }-угольник
+
+## чтение сцены
+
+scene-not-object = сцена — это JSON-объект вида {"{"}"width": 32, "height": 32, "polygons": [...]{"}"}, а не { $found }
+json-array = массив
+json-string = строка
+json-number = число
+json-bool = true или false
+json-null = null
+json-comma-end = { " (в конце строки " }{ $line } не хватает запятой)
+json-comma-after = { " (не хватает запятой после строки " }{ $line }, позиции { $column })
+json-invalid = это не корректный JSON: { $error }
+location-polygon = многоугольник { $number }
+number-found-object = ожидалось число, а найден объект
+number-found-bool = ожидалось число, а найдено логическое значение
+number-found-null = ожидалось число, а найдено null
+number-found-list = ожидалось число, а найден список
+number-not-a-number = «{ $text }» — не число (запишите целое, десятичную дробь вроде 2.5 или дробь вроде "5/2")
+number-zero-denominator = «{ $text }» — деление на ноль
+number-too-large = в «{ $text }» слишком много цифр, чтобы хранить точно (не больше 30 значащих цифр)
+setting-bits = { $value } не поддерживается: допустимо от 1 до 32 бит
+setting-side-zero = должно быть не меньше 1 пиксела
+setting-side-large = { $side } больше предела в { $max } пикселов
+setting-cells = { $width }×{ $height } — это { $cells } пикселов, больше предела { $max }
+setting-background = { $value } не помещается в { $bits }-битный буфер кадра (не больше { $max })
+setting-window = левая граница { $left } должна быть меньше правой { $right }, нижняя { $bottom } — меньше верхней { $top }
+setting-depth-range = [{ $front }, { $rear }]: передняя граница не должна быть больше задней
+setting-clear-depth = применяется только к точному z-буферу (правила с "store": "exact"); квантованный очищается до самого дальнего уровня
+setting-perspective-positive = перспектива: distance и near должны быть положительными
+setting-perspective-small = перспектива: числители и знаменатели distance и near должны быть не больше 2^20
+setting-antialias-samples = сглаживание: { $samples } отсчётов не поддерживается: допустимо от 1 до 16
+setting-antialias-cells = сглаживание: { $width }×{ $height } пикселов × { $samples }² отсчётов больше предела в { $max } ячеек
+setting-antialias-exact = сглаживание усредняет квантованный z-буфер; с точным хранением оно не сочетается
+polygon-opacity = непрозрачность { $alpha } вне диапазона 0 … 1

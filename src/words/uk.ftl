@@ -310,3 +310,37 @@ clip-space-alone = заданий вершинами [x, y, z, w] у прост�
 fate-outside-view = він поза видимим об'ємом (−w ≤ x, y, z ≤ w): відсікається повністю й не малюється
 heading-outside-view = { $start }: поза видимим об'ємом (−w ≤ x, y, z ≤ w): відсікається повністю, не малюється
 heading-view = { "; простір відсікання: " }усередині видимого об'єму { $inside } з { $of } вершин, після відсікання, ділення на w та області виведення малюється як { $n }-кутник
+
+## читання сцени
+
+scene-not-object = сцена — це JSON-об'єкт на кшталт {"{"}"width": 32, "height": 32, "polygons": [...]{"}"}, а не { $found }
+json-array = масив
+json-string = рядок
+json-number = число
+json-bool = true або false
+json-null = null
+json-comma-end = { " (наприкінці рядка " }{ $line } бракує коми)
+json-comma-after = { " (бракує коми після рядка " }{ $line }, позиції { $column })
+json-invalid = це не коректний JSON: { $error }
+location-polygon = багатокутник { $number }
+number-found-object = очікувалося число, а знайдено об'єкт
+number-found-bool = очікувалося число, а знайдено логічне значення
+number-found-null = очікувалося число, а знайдено null
+number-found-list = очікувалося число, а знайдено список
+number-not-a-number = «{ $text }» — не число (запишіть ціле, десятковий дріб на кшталт 2.5 або дріб на кшталт "5/2")
+number-zero-denominator = «{ $text }» — ділення на нуль
+number-too-large = у «{ $text }» забагато цифр, щоб зберігати точно (не більше 30 значущих цифр)
+setting-bits = { $value } не підтримується: допустимо від 1 до 32 біт
+setting-side-zero = має бути щонайменше 1 піксель
+setting-side-large = { $side } перевищує межу в { $max } пікселів
+setting-cells = { $width }×{ $height } — це { $cells } пікселів, більше за межу { $max }
+setting-background = { $value } не вміщується в { $bits }-бітний буфер кадру (щонайбільше { $max })
+setting-window = ліва межа { $left } має бути меншою за праву { $right }, нижня { $bottom } — меншою за верхню { $top }
+setting-depth-range = [{ $front }, { $rear }]: передня межа не має перевищувати задню
+setting-clear-depth = застосовується лише до точного z-буфера (правила з "store": "exact"); квантований очищається до найдальшого рівня
+setting-perspective-positive = перспектива: distance і near мають бути додатними
+setting-perspective-small = перспектива: чисельники й знаменники distance і near мають бути не більшими за 2^20
+setting-antialias-samples = згладжування: { $samples } відліків не підтримується: допустимо від 1 до 16
+setting-antialias-cells = згладжування: { $width }×{ $height } пікселів × { $samples }² відліків перевищує межу в { $max } клітинок
+setting-antialias-exact = згладжування усереднює квантований z-буфер; з точним зберіганням воно не поєднується
+polygon-opacity = непрозорість { $alpha } поза діапазоном 0 … 1

@@ -301,3 +301,37 @@ clip-space-alone = 使用裁剪空间顶点 [x, y, z, w]，由视口变换映射
 fate-outside-view = 它位于视见体（−w ≤ x, y, z ≤ w）之外：被完全裁剪，不绘制
 heading-outside-view = { $start }：位于视见体（−w ≤ x, y, z ≤ w）之外：被完全裁剪，不绘制
 heading-view = { "；裁剪空间：" }{ $of } 个顶点中有 { $inside } 个在视见体内，经裁剪、除以 w 和视口变换后按 { $n } 边形绘制
+
+## 读取场景
+
+scene-not-object = 场景应是形如 {"{"}"width": 32, "height": 32, "polygons": [...]{"}"} 的 JSON 对象，而不是{ $found }
+json-array = 数组
+json-string = 字符串
+json-number = 数字
+json-bool = true 或 false
+json-null = null
+json-comma-end = { "（第 " }{ $line } 行末尾缺少逗号）
+json-comma-after = { "（第 " }{ $line } 行第 { $column } 列之后缺少逗号）
+json-invalid = 不是有效的 JSON：{ $error }
+location-polygon = 多边形 { $number }
+number-found-object = 应为数字，实际是对象
+number-found-bool = 应为数字，实际是布尔值
+number-found-null = 应为数字，实际是 null
+number-found-list = 应为数字，实际是列表
+number-not-a-number = “{ $text }”不是数字（请写整数、像 2.5 这样的小数或像 "5/2" 这样的分数）
+number-zero-denominator = “{ $text }”除以零
+number-too-large = “{ $text }”的位数太多，无法精确保存（最多 30 位有效数字）
+setting-bits = 不支持 { $value }：请使用 1 到 32 位
+setting-side-zero = 至少应为 1 像素
+setting-side-large = { $side } 超过了 { $max } 像素的上限
+setting-cells = { $width }×{ $height } 共 { $cells } 像素，超过了上限 { $max }
+setting-background = { $value } 超出 { $bits } 位帧缓冲器的范围（最大 { $max }）
+setting-window = 左边界 { $left } 应小于右边界 { $right }，下边界 { $bottom } 应小于上边界 { $top }
+setting-depth-range = [{ $front }, { $rear }]：前界不得大于后界
+setting-clear-depth = 只适用于精确z缓冲器（规则中 "store": "exact"）；量化的z缓冲器清除为最远的级别
+setting-perspective-positive = 透视：distance 和 near 必须为正
+setting-perspective-small = 透视：distance 和 near 的分子、分母都不得超过 2^20
+setting-antialias-samples = 反走样：不支持 { $samples } 个采样：请使用 1 到 16
+setting-antialias-cells = 反走样：{ $width }×{ $height } 像素 × { $samples }² 个采样超过了 { $max } 个单元的上限
+setting-antialias-exact = 反走样对量化的z缓冲器求平均；不能与精确保存同时使用
+polygon-opacity = 不透明度 { $alpha } 不在 0 … 1 之内

@@ -71,3 +71,31 @@ fn step_shows_one_scanline_in_each_language() {
         snapshot!(format!("step_rogers_triangle_15_{lang}"), out.stdout);
     }
 }
+
+/// Bad input is refused in the student's language, the file and the place
+/// as they are; JSON output is the same in every language.
+#[test]
+fn errors_speak_the_language_and_json_does_not_change() {
+    let (dir, file) = crate::scene_file(
+        "bent_ru.json",
+        r#"{"polygons": [{"name": "bent", "value": 1, "vertices": [[0,0,0],[4,0,0],[4,4,0],[0,4,1]]}], "frame_bits": 40}"#,
+    );
+    let out = crate::zsim_in(Some(&dir), &["run", &file, "--lang", "ru"]);
+    assert_eq!((out.code, out.stdout.as_str()), (2, ""));
+    assert_eq!(out.stderr, "zsim: bent_ru.json: frame_bits: 40 не поддерживается: допустимо от 1 до 32 бит\n");
+    let (dir, file) = crate::scene_file(
+        "bent_uk.json",
+        r#"{"polygons": [{"name": "bent", "value": 1, "vertices": [[0,0,0],[4,0,0],[4,4,0],[0,4,1]]}]}"#,
+    );
+    let out = crate::zsim_in(Some(&dir), &["run", &file, "--lang", "uk"]);
+    assert_eq!(
+        out.stderr,
+        "zsim: bent_uk.json: багатокутник 1 «bent»: не плоский: вершина 4 відстоїть від площини z = 0, проведеної через вершини 1, 2, 3, на Δz = 1\n"
+    );
+    let json = |lang: &str| zsim(&["run", "examples/rogers.json", "--format", "json", "--lang", lang]).stdout;
+    let english = json("en");
+    assert!(english.starts_with("{\"width\":32"));
+    for lang in ["ru", "uk", "zh"] {
+        assert_eq!(json(lang), english, "{lang}");
+    }
+}
