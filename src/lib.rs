@@ -45,11 +45,13 @@
 //!   `0 … 2^depth_bits − 1` (`depth::tests::depth_saturates_at_both_ends`).
 //! - **Exactness.** No floating point anywhere: coordinates are rationals, each
 //!   polygon is scaled to integers over its common denominator (see
-//!   [`plane`]), and coordinates whose scaled size could overflow `i128` are
-//!   refused ([`plane::MAX_SCALED`]). A polygon whose integers all fit 64 bits
-//!   ([`plane::Geometry::fits_i64`]: most of them) runs on `i64`, the others on
-//!   `i128`; the same code, with the same results
-//!   (`pipeline::tests::both_words_rasterize_alike`).
+//!   [`plane`]). A polygon whose integers all fit 64 bits
+//!   ([`plane::Geometry::fits_i64`]: most of them) runs on `i64`, the others
+//!   within [`plane::MAX_SCALED`] on `i128`; the same code, with the same
+//!   results (`pipeline::tests::both_words_rasterize_alike`). Larger ones run
+//!   on the big-integer tier ([`big`]: the formulas in arbitrary-precision
+//!   integers, same results, `big::tests::the_big_tier_rasterizes_as_the_words_do`);
+//!   only what no 128-bit report can hold is refused ([`plane::MAX_SCALED_BIG`]).
 //!
 //! # Example
 //!
@@ -77,6 +79,7 @@ pub mod words;
 pub mod accuracy;
 pub mod antialias;
 pub mod arith;
+pub mod big;
 pub mod buet;
 pub mod buffer;
 pub mod check;

@@ -98,7 +98,9 @@ pub fn rasterize<S: RasterSink>(
     sink: &mut S,
 ) {
     let Scratch { narrow, wide, crossings, spans } = scratch;
-    if geometry.fits_i64() {
+    if geometry.is_big() {
+        crate::big::rasterize(geometry, rules, rect, (crossings, spans), sink);
+    } else if geometry.fits_i64() {
         rasterize_in(geometry, rules, rect, narrow, (crossings, spans), sink);
     } else {
         rasterize_in(geometry, rules, rect, wide, (crossings, spans), sink);

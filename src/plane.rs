@@ -23,6 +23,13 @@ use crate::exact::Q;
 /// numerator at most `6R² < 2^71` (see `depth` and `scan`).
 pub const MAX_SCALED: i128 = 1 << 34;
 
+/// Largest magnitude of a scaled coordinate in the big-integer tier
+/// ([`Geometry::is_big`]): polygons beyond [`MAX_SCALED`] are drawn by a
+/// rasterizer that multiplies in arbitrary-precision integers
+/// (`crate::big`), as long as what it reports (crossings, depths, the
+/// plane) still fits the 128-bit numbers the rest of zsim speaks.
+pub const MAX_SCALED_BIG: i128 = 1 << 58;
+
 /// Most vertices one polygon may have.
 pub const MAX_VERTICES: usize = 1 << 16;
 
@@ -44,6 +51,14 @@ pub enum GeometryError {
     },
     /// A vertex that does not lie on the plane through the others.
     NotPlanar(Box<OffPlane>),
+    /// Within [`MAX_SCALED_BIG`], but the polygon's depths or plane would
+    /// outgrow the 128-bit numbers zsim reports (`crate::big::fits`).
+    TooLargeForDepth {
+        /// 1-based vertex with the largest coordinate.
+        vertex: usize,
+        /// That coordinate.
+        value: Q,
+    },
 }
 
 /// The first vertex found off a polygon's plane.
@@ -74,6 +89,11 @@ impl fmt::Display for GeometryError {
                 vertex = vertex.to_string(),
                 value = crate::exact::fraction(*value),
                 denominator = denominator.to_string()
+            )),
+            GeometryError::TooLargeForDepth { vertex, value } => f.write_str(&words!(
+                "geometry-too-large-for-depth",
+                vertex = vertex.to_string(),
+                value = crate::exact::fraction(*value)
             )),
             GeometryError::NotPlanar(off) => {
                 let OffPlane { vertex, through: [i, j, k], plane, off_by, along_z } = off.as_ref();
@@ -149,6 +169,9 @@ pub struct Geometry {
     pub normal: [i128; 3],
     /// Whether the rasterizer's integers fit 64 bits ([`Geometry::fits_i64`]).
     narrow: bool,
+    /// Whether the polygon is beyond [`MAX_SCALED`] and runs on the
+    /// big-integer tier ([`Geometry::is_big`]).
+    big: bool,
 }
 
 impl Geometry {
@@ -169,7 +192,7 @@ impl Geometry {
         for (index, vertex) in vertices.iter().enumerate() {
             for value in vertex {
                 let lcm = denominator.lcm(value.denom());
-                if lcm > MAX_SCALED {
+                if lcm > MAX_SCALED_BIG {
                     return Err(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator: lcm });
                 }
                 denominator = lcm;
@@ -180,17 +203,53 @@ impl Geometry {
         for (index, vertex) in vertices.iter().enumerate() {
             let mut point = [0i128; 3];
             for (axis, value) in vertex.iter().enumerate() {
-                let scaled = value.numer().checked_mul(scale / value.denom()).filter(|s| s.abs() <= MAX_SCALED);
+                let scaled = value.numer().checked_mul(scale / value.denom()).filter(|s| s.abs() <= MAX_SCALED_BIG);
                 point[axis] =
                     scaled.ok_or(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator })?;
             }
             points.push(point);
         }
+        let big = denominator > MAX_SCALED || points.iter().flatten().any(|v| v.abs() > MAX_SCALED);
+        if big {
+            let out_of_range = || {
+                let (index, value) = vertices
+                    .iter()
+                    .enumerate()
+                    .flat_map(|(i, v)| v.iter().map(move |q| (i, *q)))
+                    .max_by_key(|(_, q)| q.numer().unsigned_abs() / q.denom().unsigned_abs())
+                    .unwrap_or((0, vertices[0][0]));
+                GeometryError::OutOfRange { vertex: index + 1, value, denominator }
+            };
+            let normal = crate::big::newell(&points).ok_or_else(out_of_range)?;
+            let geometry = Geometry { denominator, points, normal, narrow: false, big: true };
+            crate::big::check_planar(&geometry)?;
+            if !crate::big::fits(&geometry) {
+                let GeometryError::OutOfRange { vertex, value, .. } = out_of_range() else { unreachable!() };
+                return Err(GeometryError::TooLargeForDepth { vertex, value });
+            }
+            return Ok(geometry);
+        }
         let normal = newell(&points);
-        let mut geometry = Geometry { denominator, points, normal, narrow: false };
+        let mut geometry = Geometry { denominator, points, normal, narrow: false, big: false };
         geometry.check_planar()?;
         geometry.narrow = geometry.bounds_fit_i64();
         Ok(geometry)
+    }
+
+    /// The same polygon on the big-integer tier, whatever its size (for the
+    /// tests that compare the tiers).
+    #[cfg(test)]
+    pub(crate) fn on_big_tier(&self) -> Geometry {
+        let normal = crate::big::newell(&self.points).expect("a small polygon's normal fits");
+        Geometry { normal, big: true, narrow: false, ..self.clone() }
+    }
+
+    /// Whether the polygon lies beyond [`MAX_SCALED`], where the word-sized
+    /// rasterizer could overflow: it is then drawn by the big-integer tier
+    /// (`crate::big`), exactly, more slowly, with the same rules and results.
+    /// Its normal is Newell's reduced by the components' common divisor.
+    pub fn is_big(&self) -> bool {
+        self.big
     }
 
     /// The scale factor `2D` between polygon units and scaled units.
@@ -301,17 +360,12 @@ impl Geometry {
 /// In scaled units the plane is `a·X + b·Y + c·Z + d' = 0` with
 /// `d' = −(a·X₁ + b·Y₁ + c·Z₁)`; with `X = 2D·x` that is
 /// `2D·a·x + 2D·b·y + 2D·c·z + d' = 0`, then divided by the gcd.
-fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> PlaneEquation {
-    let [a, b, c] = normal;
-    let d = -(a * point[0] + b * point[1] + c * point[2]);
-    let coefficients = [a * scale, b * scale, c * scale, d];
-    let divisor = coefficients.iter().fold(0i128, |g, v| g.gcd(v));
-    let leading = coefficients[..3].iter().rev().find(|v| **v != 0).copied().unwrap_or(0);
-    let divisor = if leading < 0 { -divisor } else { divisor };
-    if divisor == 0 {
-        return PlaneEquation { a: 0, b: 0, c: 0, d: 0 };
-    }
-    PlaneEquation { a: a * scale / divisor, b: b * scale / divisor, c: c * scale / divisor, d: d / divisor }
+pub(crate) fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> PlaneEquation {
+    // Worked in big integers: for a polygon on the big-integer tier the
+    // products outgrow i128 though the reduced plane fits (checked when the
+    // geometry is made, [`crate::big::fits`]).
+    crate::big::reduced_plane(normal, point, scale)
+        .expect("the reduced plane fits i128: checked when the geometry was made")
 }
 
 /// Newell's method (seed 002): `a = Σ(yᵢ − yᵢ₊₁)(zᵢ + zᵢ₊₁)`,
@@ -384,11 +438,15 @@ mod tests {
     }
 
     #[test]
-    fn coordinates_beyond_the_exact_range_are_refused() {
-        let err = Geometry::new(&q(&[[0, 0, 0], [(1 << 33) + 1, 0, 0], [0, 1, 0]])).unwrap_err();
+    fn coordinates_beyond_the_word_range_run_on_the_big_tier_and_beyond_its_range_are_refused() {
+        // At the word limit: 2^33 scaled by 2 is exactly 2^34, still on the words.
+        assert!(!Geometry::new(&q(&[[0, 0, 0], [1 << 33, 0, 0], [0, 1, 0]])).unwrap().is_big());
+        assert!(!Geometry::new(&q(&[[0, 0, 0], [-(1 << 33), 0, 0], [0, 1, 0]])).unwrap().is_big());
+        // One more: the big-integer tier draws it.
+        assert!(Geometry::new(&q(&[[0, 0, 0], [(1 << 33) + 1, 0, 0], [0, 1, 0]])).unwrap().is_big());
+        // Past MAX_SCALED_BIG (2^57 scaled by 2): refused, naming the vertex.
+        assert!(Geometry::new(&q(&[[0, 0, 0], [1 << 57, 0, 0], [0, 1, 0]])).unwrap().is_big());
+        let err = Geometry::new(&q(&[[0, 0, 0], [(1 << 57) + 1, 0, 0], [0, 1, 0]])).unwrap_err();
         assert!(matches!(err, GeometryError::OutOfRange { vertex: 2, .. }), "{err:?}");
-        // At the limit: 2^33 scaled by 2 is exactly 2^34.
-        assert!(Geometry::new(&q(&[[0, 0, 0], [1 << 33, 0, 0], [0, 1, 0]])).is_ok());
-        assert!(Geometry::new(&q(&[[0, 0, 0], [-(1 << 33), 0, 0], [0, 1, 0]])).is_ok());
     }
 }

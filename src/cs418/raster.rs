@@ -251,7 +251,7 @@ pub struct Comparison {
     owners: Vec<u32>,
     /// Each triangle's spans by (primitive, sample row).
     spans: BTreeMap<(u32, i64), Vec<Span>>,
-    /// What was drawn, as polygons in zsim's coordinates (see [`Shape`]).
+    /// What was drawn, as polygons in zsim's coordinates (see `Shape`).
     pub shapes: Vec<Shape>,
 }
 

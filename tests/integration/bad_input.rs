@@ -52,11 +52,11 @@ fn bad_scenes_are_refused_with_one_line_each() {
         ("bad_section.json", format!(r#"{{"effects": {{"section": "x"}}, "polygons": [{TRIANGLE}]}}"#)),
         (
             "out_of_range.json",
-            r#"{"polygons": [{"name": "far", "value": 1, "vertices": [[0,0,0],[8589934593,0,0],[0,1,0]]}]}"#.into(),
+            r#"{"polygons": [{"name": "far", "value": 1, "vertices": [[0,0,0],[144115188075855873,0,0],[0,1,0]]}]}"#.into(),
         ),
         (
             "fine_decimals_out_of_range.json",
-            r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [[0.0000001,0,0],[1000,0,0],[0,1,0]]}]}"#.into(),
+            r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [[0.0000001,0,0],[1000000000000,0,0],[0,1,0]]}]}"#.into(),
         ),
         (
             "perspective_negative.json",

@@ -1,0 +1,343 @@
+//! The big-integer tier: polygons whose scaled coordinates pass
+//! [`crate::plane::MAX_SCALED`] (2^34), where the word-sized rasterizer's
+//! products could overflow `i128`, are drawn here with the same rules by the
+//! formulas themselves, every product in arbitrary-precision integers
+//! (`num-bigint`).
+//!
+//! What the tier reports is what every tier reports: crossings as
+//! `numerator / denominator` in scaled units, depths as exact fractions, the
+//! plane reduced. Those stay 128-bit numbers, which is what limits the tier:
+//! scaled coordinates up to [`crate::plane::MAX_SCALED_BIG`] (2^58), and a
+//! polygon whose depth at a pixel centre, before reduction, would need more
+//! than 2^125 is refused as beyond the exact range (`fits`).
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{Signed, ToPrimitive, Zero};
+
+use crate::depth::Depth;
+use crate::pipeline::{PixelRect, RasterSink};
+use crate::plane::{Geometry, GeometryError, OffPlane, PlaneEquation};
+use crate::rules::{RowRule, Rules};
+use crate::scan::{self, Crossing, Span};
+
+fn big(v: i128) -> BigInt {
+    BigInt::from(v)
+}
+
+/// Newell's normal of scaled points, divided by its components' greatest
+/// common divisor (the plane is the same); `None` when it does not fit i128.
+pub(crate) fn newell(points: &[[i128; 3]]) -> Option<[i128; 3]> {
+    let mut normal = [BigInt::zero(), BigInt::zero(), BigInt::zero()];
+    for (i, p) in points.iter().enumerate() {
+        let q = points[(i + 1) % points.len()];
+        normal[0] += big(p[1] - q[1]) * big(p[2] + q[2]);
+        normal[1] += big(p[2] - q[2]) * big(p[0] + q[0]);
+        normal[2] += big(p[0] - q[0]) * big(p[1] + q[1]);
+    }
+    let divisor = normal.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
+    if !divisor.is_zero() {
+        for v in &mut normal {
+            *v /= &divisor;
+        }
+    }
+    Some([normal[0].to_i128()?, normal[1].to_i128()?, normal[2].to_i128()?])
+}
+
+/// The plane with `normal` through `point` (scaled units) in polygon units,
+/// reduced and signed as the book prints it (see [`Geometry::plane`]); `None`
+/// when a coefficient does not fit i128.
+pub(crate) fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> Option<PlaneEquation> {
+    let [a, b, c] = normal.map(big);
+    let d = -(&a * big(point[0]) + &b * big(point[1]) + &c * big(point[2]));
+    let scale = big(scale);
+    let coefficients = [&a * &scale, &b * &scale, &c * &scale, d];
+    let divisor = coefficients.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
+    if divisor.is_zero() {
+        return Some(PlaneEquation { a: 0, b: 0, c: 0, d: 0 });
+    }
+    let leading_negative = coefficients[..3].iter().rev().find(|v| !v.is_zero()).is_some_and(Signed::is_negative);
+    let divisor = if leading_negative { -divisor } else { divisor };
+    let [a, b, c, d] = coefficients.map(|v| (v / &divisor).to_i128());
+    Some(PlaneEquation { a: a?, b: b?, c: c?, d: d? })
+}
+
+/// [`Geometry`]'s planarity check in big integers: every vertex on the plane
+/// through vertex 1 and the first two vertices not collinear with it.
+pub(crate) fn check_planar(geometry: &Geometry) -> Result<(), GeometryError> {
+    let points = &geometry.points;
+    let p1 = points[0];
+    let sub = |p: [i128; 3]| [big(p[0] - p1[0]), big(p[1] - p1[1]), big(p[2] - p1[2])];
+    let Some(i) = points.iter().position(|p| *p != p1) else { return Ok(()) };
+    let u = sub(points[i]);
+    let found = points.iter().enumerate().skip(i + 1).find_map(|(k, p)| {
+        let v = sub(*p);
+        let n = [&u[1] * &v[2] - &u[2] * &v[1], &u[2] * &v[0] - &u[0] * &v[2], &u[0] * &v[1] - &u[1] * &v[0]];
+        (!n.iter().all(Zero::is_zero)).then_some((k, n))
+    });
+    let Some((k, normal)) = found else { return Ok(()) };
+    for (index, point) in points.iter().enumerate() {
+        let w = sub(*point);
+        let residual = &normal[0] * &w[0] + &normal[1] * &w[1] + &normal[2] * &w[2];
+        if residual.is_zero() {
+            continue;
+        }
+        // Reported with the plane reduced to 128-bit coefficients.
+        let divisor = normal.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
+        let reduced = normal.clone().map(|v| (v / &divisor).to_i128());
+        let out_of_range = || GeometryError::OutOfRange {
+            vertex: index + 1,
+            value: crate::exact::Q::new(point[0], geometry.scale()),
+            denominator: geometry.denominator,
+        };
+        let [Some(a), Some(b), Some(c)] = reduced else { return Err(out_of_range()) };
+        let plane = reduced_plane([a, b, c], p1, geometry.scale()).ok_or_else(out_of_range)?;
+        let residual = residual / divisor;
+        let (off_by, along_z) = if c != 0 {
+            let (n, d) = (residual, big(c) * big(geometry.scale()));
+            let g = n.gcd(&d);
+            match ((n / &g).to_i128(), (d / &g).to_i128()) {
+                (Some(n), Some(d)) => (crate::exact::Q::new(n, d), true),
+                _ => return Err(out_of_range()),
+            }
+        } else {
+            let scale = big(geometry.scale());
+            let value = (big(plane.a) * big(point[0])
+                + big(plane.b) * big(point[1])
+                + big(plane.c) * big(point[2])
+                + big(plane.d) * &scale)
+                / &scale;
+            match value.to_i128() {
+                Some(v) => (crate::exact::Q::from_integer(v), false),
+                None => return Err(out_of_range()),
+            }
+        };
+        return Err(GeometryError::NotPlanar(Box::new(OffPlane {
+            vertex: index + 1,
+            through: [1, i + 1, k + 1],
+            plane,
+            off_by,
+            along_z,
+        })));
+    }
+    Ok(())
+}
+
+/// Largest depth numerator (before reduction) the tier hands on as a
+/// 128-bit [`Depth`], and largest denominator.
+const DEPTH_NUMERATOR: i128 = 1 << 125;
+const DEPTH_DENOMINATOR: i128 = 1 << 124;
+
+/// Whether what the tier reports for this polygon fits 128 bits: the plane,
+/// a crossing's numerator (`≤ 8R² + 4RD` with R the largest scaled |x|, |y|
+/// plus 2D) and the depth at any centre the polygon covers or comes within
+/// a pixel of (numerator `|c·Z₁| + |a|·Δx + |b|·Δy`, denominator `|c|·2D`).
+pub(crate) fn fits(geometry: &Geometry) -> bool {
+    let d = big(geometry.denominator);
+    let points = &geometry.points;
+    let r = points.iter().map(|p| p[0].abs().max(p[1].abs())).max().unwrap_or(0);
+    let r = big(r) + &d * 2;
+    let [x1, y1, z1] = points[0];
+    let reach =
+        |axis: usize, first: i128| big(points.iter().map(|p| (p[axis] - first).abs()).max().unwrap_or(0)) + &d * 4;
+    let crossing = &r * &r * 8 + &r * &d * 4;
+    let [a, b, c] = geometry.normal.map(|v| big(v.abs()));
+    let depth = &c * big(z1.abs()) + &a * reach(0, x1) + &b * reach(1, y1) + (&a + &b) * &d * 2;
+    let denominator = &c * &d * 2;
+    reduced_plane(geometry.normal, points[0], geometry.scale()).is_some()
+        && crossing < big(1 << 120)
+        && depth < big(DEPTH_NUMERATOR)
+        && denominator < big(DEPTH_DENOMINATOR)
+}
+
+/// The exact depth at the centre `(X, Y)` (scaled units) of the polygon's
+/// plane: `z = (c·Z₁ − a(X − X₁) − b(Y − Y₁)) / (c·2D)`.
+fn depth_at(geometry: &Geometry, x: i128, y: i128) -> Depth {
+    let [a, b, c] = geometry.normal.map(big);
+    let [x1, y1, z1] = geometry.points[0];
+    let numerator = &c * big(z1) - a * big(x - x1) - b * big(y - y1);
+    let denominator = c * big(geometry.scale());
+    // Within DEPTH_NUMERATOR and DEPTH_DENOMINATOR by `fits`.
+    Depth::from_fraction(
+        numerator.to_i128().expect("checked by big::fits"),
+        denominator.to_i128().expect("checked by big::fits"),
+    )
+}
+
+/// The crossings of the polygon's edges with the scanline at scaled height
+/// `scan_y`, sorted left to right, under the row rule (as
+/// [`scan::crossings`], which this tier cannot use: its sort multiplies two
+/// 120-bit numbers).
+fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
+    out.clear();
+    let count = points.len();
+    for i in 0..count {
+        let [x1, y1, _] = points[i];
+        let [x2, y2, _] = points[(i + 1) % count];
+        let (below, above) = match rule {
+            RowRule::HalfOpen => (scan_y < y1.min(y2), scan_y >= y1.max(y2)),
+            RowRule::Closed => (scan_y < y1.min(y2), scan_y > y1.max(y2)),
+            RowRule::TopLeft => (scan_y <= y1.min(y2), scan_y > y1.max(y2)),
+        };
+        if y1 == y2 || below || above {
+            continue;
+        }
+        // Below 2^120 by `fits`.
+        let (numerator, denominator) = (x1 * (y2 - y1) + (x2 - x1) * (scan_y - y1), y2 - y1);
+        let (numerator, denominator) =
+            if denominator < 0 { (-numerator, -denominator) } else { (numerator, denominator) };
+        out.push(Crossing { numerator, denominator });
+    }
+    out.sort_by(|p, q| (big(p.numerator) * big(q.denominator)).cmp(&(big(q.numerator) * big(p.denominator))));
+}
+
+/// Draws a polygon of the big-integer tier: the same events, in the same
+/// order, as the word-sized rasterizer ([`crate::pipeline::rasterize`]).
+pub(crate) fn rasterize<S: RasterSink>(
+    geometry: &Geometry,
+    rules: Rules,
+    rect: PixelRect,
+    (found, spans): (&mut Vec<Crossing>, &mut Vec<Span>),
+    sink: &mut S,
+) {
+    let Some(rows) = scan::rows(&geometry.points, geometry.denominator, rect.rows, rules.rows) else { return };
+    for row in rows {
+        let scan_y = scan::scanline_y(row, geometry.denominator);
+        crossings(&geometry.points, scan_y, rules.rows, found);
+        spans.clear();
+        spans.extend(scan::pairs(found.len(), rules.rows).map(|(i, j)| Span {
+            left: found[i],
+            right: found[j],
+            columns: scan::columns(found[i], found[j], geometry.denominator, rect.columns, rules.columns),
+        }));
+        if S::OBSERVES_SCANLINES {
+            sink.scanline(row, found, spans);
+        }
+        for span in spans.iter() {
+            if let Some((first, last)) = span.columns {
+                for x in first..=last {
+                    let centre = (2 * i128::from(x) + 1) * geometry.denominator;
+                    sink.pixel(x, row, depth_at(geometry, centre, scan_y));
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+
+    use super::*;
+    use crate::exact::Q;
+    use crate::pipeline::{Scratch, rasterize as draw};
+    use crate::rules::ColumnRule;
+
+    /// Every event as values: scanlines' crossings and spans, pixels' depths.
+    #[derive(Default)]
+    struct Values(Vec<String>);
+
+    impl RasterSink for Values {
+        fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
+            let xs: Vec<Q> = crossings.iter().map(|c| Q::new(c.numerator, c.denominator)).collect();
+            let columns: Vec<_> = spans.iter().map(|s| s.columns).collect();
+            self.0.push(format!("row {row}: {xs:?} {columns:?}"));
+        }
+
+        fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
+            self.0.push(format!("({x}, {y}) {:?}", depth.value()));
+        }
+    }
+
+    fn events(geometry: &Geometry, rules: Rules, rect: PixelRect) -> Vec<String> {
+        let mut sink = Values::default();
+        draw(geometry, rules, rect, &mut Scratch::default(), &mut sink);
+        sink.0
+    }
+
+    proptest! {
+        /// The big-integer tier gives the word-sized rasterizer's crossings,
+        /// spans, pixels and exact depths, under every rule, in any rectangle.
+        #[test]
+        fn the_big_tier_rasterizes_as_the_words_do(
+            vertices in prop::collection::vec((-40i64..80, -40i64..80, 1i64..5), 3..7),
+            plane in (-9i64..10, -9i64..10, -60i64..60, 1i64..8),
+            row_rule in 0usize..3,
+            column_rule in 0usize..3,
+            rect in (0u32..20, 0u32..20, 0u32..20, 0u32..20),
+        ) {
+            let (a, b, c, e) = plane;
+            let q = |n: i64, d: i64| Q::new(n.into(), d.into());
+            let vertices: Vec<[Q; 3]> = vertices
+                .iter()
+                .map(|&(x, y, d)| {
+                    let (x, y) = (q(x, d), q(y, d));
+                    [x, y, (x * q(a, 1) + y * q(b, 1) + q(c, 1)) / q(e, 1)]
+                })
+                .collect();
+            let Ok(geometry) = Geometry::new(&vertices) else { return Ok(()) };
+            prop_assume!(geometry.c() != 0);
+            let rules = Rules {
+                rows: [RowRule::HalfOpen, RowRule::Closed, RowRule::TopLeft][row_rule],
+                columns: [ColumnRule::CentreInside, ColumnRule::CellHolds, ColumnRule::HalfOpen][column_rule],
+                ..Rules::default()
+            };
+            let rect = PixelRect {
+                columns: (rect.0.min(rect.1), rect.0.max(rect.1) + 10),
+                rows: (rect.2.min(rect.3), rect.2.max(rect.3) + 10),
+            };
+            prop_assert_eq!(events(&geometry.on_big_tier(), rules, rect), events(&geometry, rules, rect));
+        }
+    }
+
+    /// BUET CSE 410's 2018 assignment maps a window 0.7 wide onto 500 pixels
+    /// from 7-decimal input: the common denominator reaches 10^7 and the
+    /// scaled coordinates pass 2^34. Such a triangle is drawn (on this tier),
+    /// and every covered centre lies inside it, by an independent test in
+    /// big rationals, with the plane's depth there.
+    #[test]
+    fn seven_decimal_input_beyond_the_word_range_is_drawn_exactly() {
+        let d = |text: &str| crate::exact::parse_number(text).unwrap();
+        // Pixel units of a 500-px raster over a 0.7-wide window: 7 decimals times 500/0.7.
+        let window = |v: &str| (d(v) + Q::new(35, 100)) * Q::new(5000, 7);
+        let vertices: Vec<[Q; 3]> = [
+            ["-0.2480390", "-0.1234567", "1.2345678"],
+            ["0.3012345", "-0.2999999", "2.7654321"],
+            ["0.0123457", "0.3301234", "1.9876543"],
+        ]
+        .iter()
+        .map(|[x, y, z]| [window(x), window(y), d(z)])
+        .collect();
+        let geometry = Geometry::new(&vertices).expect("drawn, not refused");
+        assert!(geometry.is_big(), "the scaled coordinates pass 2^34");
+        let rect = PixelRect { columns: (0, 499), rows: (0, 499) };
+        let mut sink = Values::default();
+        draw(&geometry, Rules::default(), rect, &mut Scratch::default(), &mut sink);
+        let pixels: Vec<&String> = sink.0.iter().filter(|e| e.starts_with('(')).collect();
+        assert!(pixels.len() > 10_000, "{}", pixels.len());
+        // Independent check on a sample of pixels: the centre is inside (edge functions in big
+        // rationals, all of one sign) and the depth is the plane's.
+        use num_rational::BigRational;
+        let r = |q: Q| BigRational::new(BigInt::from(*q.numer()), BigInt::from(*q.denom()));
+        let v: Vec<[BigRational; 3]> = vertices.iter().map(|p| p.map(r)).collect();
+        for event in pixels.iter().step_by(997) {
+            let (x, rest) = event[1..].split_once(", ").unwrap();
+            let y: u32 = rest.split_once(')').unwrap().0.parse().unwrap();
+            let x: u32 = x.parse().unwrap();
+            let (cx, cy) = (r(Q::new(2 * i128::from(x) + 1, 2)), r(Q::new(2 * i128::from(y) + 1, 2)));
+            let side = |i: usize| {
+                let (a, b) = (&v[i], &v[(i + 1) % 3]);
+                (&b[0] - &a[0]) * (&cy - &a[1]) - (&b[1] - &a[1]) * (&cx - &a[0])
+            };
+            let signs: Vec<bool> = (0..3).map(|i| side(i).is_positive()).collect();
+            assert!(signs.iter().all(|s| *s == signs[0]), "({x}, {y}) lies inside");
+            // z by the plane through the three vertices (Cramer on the barycentric weights).
+            let det = (&v[1][0] - &v[0][0]) * (&v[2][1] - &v[0][1]) - (&v[2][0] - &v[0][0]) * (&v[1][1] - &v[0][1]);
+            let w1 = ((&cx - &v[0][0]) * (&v[2][1] - &v[0][1]) - (&v[2][0] - &v[0][0]) * (&cy - &v[0][1])) / &det;
+            let w2 = ((&v[1][0] - &v[0][0]) * (&cy - &v[0][1]) - (&cx - &v[0][0]) * (&v[1][1] - &v[0][1])) / &det;
+            let z = &v[0][2] + w1 * (&v[1][2] - &v[0][2]) + w2 * (&v[2][2] - &v[0][2]);
+            let expected = Q::new(z.numer().to_i128().unwrap(), z.denom().to_i128().unwrap());
+            assert!(event.ends_with(&format!("{expected:?}")), "{event}: expected {expected:?}");
+        }
+    }
+}
