@@ -193,3 +193,28 @@ fn malformed_cases_are_refused_with_the_file_and_line() {
         run.stderr
     );
 }
+
+/// The 2018 assignment's kind of input: a window 0.7 wide over 500 pixels
+/// and 7-decimal coordinates (`tests/fixtures/buet-2018`, made for this
+/// test). Its first triangle passes the word range (2^34) and is drawn on the
+/// big-integer tier instead of refused; the depth at pixel (250, 249) equals
+/// the plane's at that centre, 700662989706936810113/36888584653298750000,
+/// computed apart with Python's `fractions` from the decimals as written.
+#[test]
+fn seven_decimal_cases_are_drawn_exactly_instead_of_refused() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/buet-2018");
+    let case = zsim::buet::Case::load(&dir, None).expect("drawn, not refused");
+    assert!(case.scene.polygons[0].geometry.is_big(), "triangle 1 passes 2^34");
+    let out_dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("buet-2018");
+    let out = zsim(&["buet", "run", dir.to_str().unwrap(), "-o", out_dir.to_str().unwrap()]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let (scene_dir, scene) = scene_file("buet-2018.json", &case.scene_json);
+    let explain = zsim_in(Some(&scene_dir), &["explain", &scene, "--pixel", "250,249"]);
+    assert!(
+        explain
+            .stdout
+            .ends_with("final: framebuffer 2696126, z-buffer 700662989706936810113/36888584653298750000 ≈ 18.994033\n"),
+        "{}",
+        explain.stdout
+    );
+}
