@@ -165,29 +165,12 @@ fn depth_at(geometry: &Geometry, x: i128, y: i128) -> Depth {
 }
 
 /// The crossings of the polygon's edges with the scanline at scaled height
-/// `scan_y`, sorted left to right, under the row rule (as
-/// [`scan::crossings`], which this tier cannot use: its sort multiplies two
-/// 120-bit numbers).
+/// `scan_y`, sorted left to right ([`scan::crossings`], sorted here in big
+/// integers: the products of two crossings' numerators and denominators
+/// outgrow i128 on this tier).
 fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
-    out.clear();
-    let count = points.len();
-    for i in 0..count {
-        let [x1, y1, _] = points[i];
-        let [x2, y2, _] = points[(i + 1) % count];
-        let (below, above) = match rule {
-            RowRule::HalfOpen => (scan_y < y1.min(y2), scan_y >= y1.max(y2)),
-            RowRule::Closed => (scan_y < y1.min(y2), scan_y > y1.max(y2)),
-            RowRule::TopLeft => (scan_y <= y1.min(y2), scan_y > y1.max(y2)),
-        };
-        if y1 == y2 || below || above {
-            continue;
-        }
-        // Below 2^120 by `fits`.
-        let (numerator, denominator) = (x1 * (y2 - y1) + (x2 - x1) * (scan_y - y1), y2 - y1);
-        let (numerator, denominator) =
-            if denominator < 0 { (-numerator, -denominator) } else { (numerator, denominator) };
-        out.push(Crossing { numerator, denominator });
-    }
+    // Each numerator stays below 2^120 by `fits`.
+    scan::unsorted_crossings(points, scan_y, rule, out);
     out.sort_by(|p, q| (big(p.numerator) * big(q.denominator)).cmp(&(big(q.numerator) * big(p.denominator))));
 }
 
@@ -226,12 +209,9 @@ pub(crate) fn rasterize<S: RasterSink>(
 
 #[cfg(test)]
 mod tests {
-    use proptest::prelude::*;
-
     use super::*;
     use crate::exact::Q;
     use crate::pipeline::{Scratch, rasterize as draw};
-    use crate::rules::ColumnRule;
 
     /// Every event as values: scanlines' crossings and spans, pixels' depths.
     #[derive(Default)]
@@ -246,47 +226,6 @@ mod tests {
 
         fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
             self.0.push(format!("({x}, {y}) {:?}", depth.value()));
-        }
-    }
-
-    fn events(geometry: &Geometry, rules: Rules, rect: PixelRect) -> Vec<String> {
-        let mut sink = Values::default();
-        draw(geometry, rules, rect, &mut Scratch::default(), &mut sink);
-        sink.0
-    }
-
-    proptest! {
-        /// The big-integer tier gives the word-sized rasterizer's crossings,
-        /// spans, pixels and exact depths, under every rule, in any rectangle.
-        #[test]
-        fn the_big_tier_rasterizes_as_the_words_do(
-            vertices in prop::collection::vec((-40i64..80, -40i64..80, 1i64..5), 3..7),
-            plane in (-9i64..10, -9i64..10, -60i64..60, 1i64..8),
-            row_rule in 0usize..3,
-            column_rule in 0usize..3,
-            rect in (0u32..20, 0u32..20, 0u32..20, 0u32..20),
-        ) {
-            let (a, b, c, e) = plane;
-            let q = |n: i64, d: i64| Q::new(n.into(), d.into());
-            let vertices: Vec<[Q; 3]> = vertices
-                .iter()
-                .map(|&(x, y, d)| {
-                    let (x, y) = (q(x, d), q(y, d));
-                    [x, y, (x * q(a, 1) + y * q(b, 1) + q(c, 1)) / q(e, 1)]
-                })
-                .collect();
-            let Ok(geometry) = Geometry::new(&vertices) else { return Ok(()) };
-            prop_assume!(geometry.c() != 0);
-            let rules = Rules {
-                rows: [RowRule::HalfOpen, RowRule::Closed, RowRule::TopLeft][row_rule],
-                columns: [ColumnRule::CentreInside, ColumnRule::CellHolds, ColumnRule::HalfOpen][column_rule],
-                ..Rules::default()
-            };
-            let rect = PixelRect {
-                columns: (rect.0.min(rect.1), rect.0.max(rect.1) + 10),
-                rows: (rect.2.min(rect.3), rect.2.max(rect.3) + 10),
-            };
-            prop_assert_eq!(events(&geometry.on_big_tier(), rules, rect), events(&geometry, rules, rect));
         }
     }
 

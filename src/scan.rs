@@ -102,6 +102,13 @@ pub fn rows(points: &[[i128; 3]], denominator: i128, limit: (u32, u32), rule: Ro
 /// when `min(y₁, y₂) < y ≤ max(y₁, y₂)` (a vertex counts for the edge whose
 /// upper end it is). Horizontal edges never cross.
 pub fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
+    unsorted_crossings(points, scan_y, rule, out);
+    out.sort_unstable_by(Crossing::cmp_position);
+}
+
+/// [`crossings`] in the order of the edges, for a caller that sorts them
+/// itself (the big-integer tier, whose products outgrow `cmp_position`).
+pub(crate) fn unsorted_crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
     out.clear();
     let count = points.len();
     for i in 0..count {
@@ -121,7 +128,6 @@ pub fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Ve
             if denominator < 0 { (-numerator, -denominator) } else { (numerator, denominator) };
         out.push(Crossing { numerator, denominator });
     }
-    out.sort_unstable_by(Crossing::cmp_position);
 }
 
 /// One edge walked down the scanlines. Its crossing `numerator / denominator`
