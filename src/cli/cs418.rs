@@ -193,7 +193,7 @@ fn disagreements(course: &Comparison, exact: &Comparison) -> String {
             format!("pixel ({}, {})", cell.x, cell.y)
         };
         let why = match &cell.reason {
-            Reason::Span { primitive, course, exact } => {
+            Reason::Span { primitive, course, exact, course_covers } => {
                 let span = |s: &Option<(String, String)>| match s {
                     Some((l, r)) => format!("[{l}, {r})"),
                     None => "no span".to_string(),
@@ -204,8 +204,8 @@ fn disagreements(course: &Comparison, exact: &Comparison) -> String {
                     span(course),
                     span(exact),
                     cell.x,
-                    inside(course, cell.x),
-                    inside(exact, cell.x)
+                    if *course_covers { "inside" } else { "outside" },
+                    if *course_covers { "outside" } else { "inside" }
                 )
             }
             Reason::Depth { course, exact } => {
@@ -220,17 +220,4 @@ fn disagreements(course: &Comparison, exact: &Comparison) -> String {
         text.push_str(&format!("  {place}: {why}\n"));
     }
     text
-}
-
-fn inside(span: &Option<(String, String)>, x: u32) -> &'static str {
-    let parse = |t: &str| -> f64 {
-        match t.split_once('/') {
-            Some((n, d)) => n.parse::<f64>().unwrap_or(f64::NAN) / d.parse::<f64>().unwrap_or(f64::NAN),
-            None => t.parse().unwrap_or(f64::NAN),
-        }
-    };
-    match span {
-        Some((l, r)) if parse(l).ceil() <= f64::from(x) && f64::from(x) < parse(r) => "inside",
-        _ => "outside",
-    }
 }

@@ -725,6 +725,9 @@ pub enum Reason {
         course: Option<(String, String)>,
         /// Its span on the row exactly.
         exact: Option<(String, String)>,
+        /// Whether the course's floats cover the sample (exact arithmetic
+        /// then does not, and the other way round).
+        course_covers: bool,
     },
     /// Both arithmetics cover the sample with the same primitives; the depth
     /// test chose differently (two depths equal or within rounding).
@@ -774,6 +777,7 @@ pub fn differences(course: &Comparison, exact: &Comparison) -> Vec<CellDifferenc
                 primitive: primitive(course, p).expect("nonzero"),
                 course: span(course, p),
                 exact: span(exact, p),
+                course_covers: covers(course, p),
             },
             None => Reason::Depth { course: primitive(course, a), exact: primitive(exact, b) },
         };
