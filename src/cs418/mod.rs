@@ -60,13 +60,14 @@ fn error(line: usize, message: impl Into<String>) -> CaseError {
     CaseError { line: Some(line), message: message.into() }
 }
 
-/// A number as the file writes it, with the `f64` the course reads from it.
+/// A number as the file writes it: the `f64` the course reads from it, and
+/// its exact value.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Number {
-    /// The text, for exact arithmetic.
-    pub text: String,
     /// The nearest `f64`, as the course's programs parse it.
     pub value: f64,
+    /// The decimal as written, exactly.
+    pub exact: crate::exact::Q,
 }
 
 /// One command of the file.
@@ -317,8 +318,9 @@ fn list(values: &[usize]) -> String {
 
 fn number(line: usize, keyword: &str, word: &str) -> Result<Number, CaseError> {
     let finite = word.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.' | b'e' | b'E'));
-    match word.parse::<f64>() {
-        Ok(value) if finite && value.is_finite() => Ok(Number { text: word.to_string(), value }),
+    match (word.parse::<f64>(), crate::exact::parse_number(word)) {
+        (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(Number { value, exact }),
+        (Ok(value), Err(problem)) if finite && value.is_finite() => Err(error(line, format!("{keyword}: {problem}"))),
         _ => Err(error(line, format!("{keyword}: \"{word}\" is not a number"))),
     }
 }

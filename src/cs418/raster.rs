@@ -83,7 +83,7 @@ impl Scalar for f64 {
 
 impl Scalar for BigRational {
     fn number(n: &Number) -> BigRational {
-        exact_decimal(&n.text)
+        BigRational::new(BigInt::from(*n.exact.numer()), BigInt::from(*n.exact.denom()))
     }
     fn int(v: i64) -> BigRational {
         BigRational::from_integer(BigInt::from(v))
@@ -111,32 +111,6 @@ impl Scalar for BigRational {
     }
     fn text(&self) -> String {
         if self.is_integer() { self.numer().to_string() } else { format!("{}/{}", self.numer(), self.denom()) }
-    }
-}
-
-/// A decimal as written (`-0.5`, `.2`, `1e-3`, `+4`), exactly. The parser
-/// has already checked that `f64` reads it.
-fn exact_decimal(text: &str) -> BigRational {
-    let (mantissa, exponent) = match text.find(['e', 'E']) {
-        Some(at) => (&text[..at], text[at + 1..].parse::<i64>().unwrap_or(0)),
-        None => (text, 0),
-    };
-    let (negative, digits) = match mantissa.strip_prefix('-') {
-        Some(rest) => (true, rest),
-        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
-    };
-    let (whole, fraction) = digits.split_once('.').unwrap_or((digits, ""));
-    let all: String = format!("{whole}{fraction}");
-    let mut value = BigInt::parse_bytes(if all.is_empty() { b"0" } else { all.as_bytes() }, 10).unwrap_or_default();
-    if negative {
-        value = -value;
-    }
-    let scale = exponent - fraction.len() as i64;
-    let ten = BigInt::from(10);
-    if scale >= 0 {
-        BigRational::from_integer(value * num_traits::pow(ten, scale as usize))
-    } else {
-        BigRational::new(value, num_traits::pow(ten, (-scale) as usize))
     }
 }
 
@@ -792,13 +766,13 @@ mod tests {
     use super::*;
 
     #[test]
-    fn exact_decimals_read_as_written() {
+    fn numbers_keep_their_exact_value() {
+        let case = super::super::Case::parse("png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| false).unwrap();
+        let super::super::Command::PointSize(numbers) = &case.commands[0].1 else { panic!("pointsize") };
+        let exact: Vec<BigRational> = numbers.iter().map(BigRational::number).collect();
         let q = |n: i64, d: i64| BigRational::new(BigInt::from(n), BigInt::from(d));
-        assert_eq!(exact_decimal("0.6934"), q(6934, 10000));
-        assert_eq!(exact_decimal("-.5"), q(-1, 2));
-        assert_eq!(exact_decimal("1e-3"), q(1, 1000));
-        assert_eq!(exact_decimal("+2.5E1"), q(25, 1));
-        assert_eq!(exact_decimal("-0.0000"), q(0, 1));
+        assert_eq!(exact, vec![q(3467, 5000), q(-1, 2), q(1, 1000), q(4, 1)]);
+        assert_eq!(numbers[0].value, 0.6934);
     }
 
     #[test]
