@@ -142,10 +142,13 @@ fn run_case(
             Some(difference) => {
                 finish = Finish::Differs;
                 text.push_str(&format!(
-                    "{}: {} pixel{} differ by more than {tolerance} (largest difference {}):\n",
+                    "{}: {} by more than {tolerance} (largest difference {}):\n",
                     png.display(),
-                    difference.pixels.len(),
-                    if difference.pixels.len() == 1 { "" } else { "s" },
+                    if difference.pixels.len() == 1 {
+                        "1 pixel differs".to_string()
+                    } else {
+                        format!("{} pixels differ", difference.pixels.len())
+                    },
                     difference.largest
                 ));
                 for (x, y, ours, theirs) in difference.pixels.iter().take(20) {

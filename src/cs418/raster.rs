@@ -114,6 +114,10 @@ impl Scalar for BigRational {
     }
 }
 
+/// How many image sizes away from the image a vertex may land (see
+/// `within_reach`).
+const REACH: f64 = 1000.0;
+
 /// Components of a vertex as the pipeline carries it. In clip space:
 /// x, y, z, w, r, g, b, a. On screen: x', y', z/w, 1/w, then the colour
 /// (divided by w under `hyp`, recovered by dividing by the interpolated 1/w).
@@ -411,6 +415,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 let Some(screen) = piece.iter().map(|v| self.to_screen(v)).collect::<Option<Vec<_>>>() else {
                     continue;
                 };
+                self.within_reach(line, &screen)?;
                 if self.case.features.cull && !clockwise(&screen) {
                     continue;
                 }
@@ -419,6 +424,25 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                     screen.iter().map(|v| [v[0].clone(), v[1].clone(), v[2].clone()]).collect(),
                 );
                 self.scanline(&screen, primitive);
+            }
+        }
+        Ok(())
+    }
+
+    /// Refuses a triangle whose vertices land so far outside the image (or
+    /// at no number at all) that walking its rows and columns would take
+    /// ages: the DDA visits every integer between a vertex and the image.
+    fn within_reach(&self, line: usize, screen: &[Vertex<S>]) -> Result<(), CaseError> {
+        let reach = REACH * (self.width.max(self.height) as f64);
+        for v in screen {
+            let (x, y) = (v[0].to_f64(), v[1].to_f64());
+            if !(x.abs() <= reach && y.abs() <= reach) {
+                return Err(error(
+                    line,
+                    format!(
+                        "a vertex lands at ({x}, {y}) on the image, too far outside it to rasterize (more than {REACH} image sizes away): turn on \"frustum\" to clip it"
+                    ),
+                ));
             }
         }
         Ok(())
@@ -493,9 +517,14 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         let z = screen[2].clone();
         let corners = [(&x0, &y0), (&x1, &y0), (&x1, &y1), (&x0, &y1)];
         self.record_shape(primitive, corners.iter().map(|(x, y)| [(*x).clone(), (*y).clone(), z.clone()]).collect());
-        let mut y = y0.ceil();
+        // Only the image's samples: x and y step by exactly 1, so starting at
+        // the image's edge visits the same samples a walk from far outside would.
+        let (zero, right, bottom) = (S::int(0), S::int(self.width as i64), S::int(self.height as i64));
+        let clamp_low = |v: S| if v < zero { zero.clone() } else { v };
+        let (x1, y1) = (if x1 > right { right } else { x1 }, if y1 > bottom { bottom } else { y1 });
+        let mut y = clamp_low(y0.ceil());
         while y < y1 {
-            let mut x = x0.ceil();
+            let mut x = clamp_low(x0.ceil());
             while x < x1 {
                 let (xi, yi) = (x.to_f64() as i64, y.to_f64() as i64);
                 self.fragment(xi, yi, &screen, Some(&colour), primitive);

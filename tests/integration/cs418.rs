@@ -203,6 +203,11 @@ fn bad_cs418_files_name_the_file_the_line_and_the_problem() {
             "png 4 4 a.png\ntexture wood.png\n",
             "line 2: texture \"wood.png\" is missing: no such file beside the case, and zsim does not simulate textures",
         ),
+        (
+            "far.txt",
+            "png 10 10 a.png\nposition 4 0 0 0 1 1 0 0 0.000000001 0 1 0 1\ncolor 3 1 1 1 1 1 1 1 1 1\ndrawArraysTriangles 0 3\n",
+            "line 4: a vertex lands at (5000000004.999999, 5) on the image, too far outside it to rasterize (more than 1000 image sizes away): turn on \"frustum\" to clip it",
+        ),
     ];
     for (name, text, message) in cases {
         let (dir, file) = scene_file(name, text);
@@ -273,4 +278,17 @@ fn imported_cases_draw_as_the_course_draws_them_exactly() {
     // its polygons' common denominators (near 7·10^9) pass 2^34, so they run on
     // the big-integer tier, and still draw as the course does exactly.
     assert_eq!(refused, Vec::<&str>::new());
+}
+
+/// A point far larger than the image draws only the image's samples, at once.
+#[test]
+fn a_huge_point_fills_the_image_without_walking_beyond_it() {
+    let (dir, file) = scene_file(
+        "huge_point.txt",
+        "png 10 10 huge.png\nposition 2 0 0\ncolor 3 1 1 1\npointsize 1 1000000000000\ndrawArraysPoints 0 1\n",
+    );
+    let out = zsim(&["cs418", "run", dir.join(&file).to_str().unwrap(), "-o", dir.join("huge").to_str().unwrap()]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let image = Image::from_png(&std::fs::read(dir.join("huge/huge.png")).unwrap()).unwrap();
+    assert!(image.rgba.chunks(4).all(|p| p == [255, 255, 255, 255]));
 }
