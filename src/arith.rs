@@ -589,7 +589,7 @@ fn is_convex(points: &[[i128; 3]]) -> bool {
     let mut last_dy = 0;
     for i in 0..n {
         let [p, q, r] = [points[i], points[(i + 1) % n], points[(i + 2) % n]];
-        // Bounded by 2·(2^35)² (plane::MAX_SCALED): no overflow.
+        // Bounded by 2·(2^59)² < 2^120 (plane::MAX_SCALED_BIG, the big tier included): no overflow.
         let turn = (q[0] - p[0]) * (r[1] - q[1]) - (q[1] - p[1]) * (r[0] - q[0]);
         left |= turn > 0;
         right |= turn < 0;

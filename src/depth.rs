@@ -233,7 +233,7 @@ impl Depth {
     /// Rounded to the nearest integer, halves up (the book: "z is rounded to
     /// the nearest integer"; 10.5 becomes 11, −0.5 becomes 0).
     pub fn rounded(self) -> i128 {
-        // remainder < denominator < 2^124 (see plane::MAX_SCALED), so 2·remainder fits.
+        // remainder < denominator < 2^124 (plane::MAX_SCALED; big::fits on the big tier), so 2·remainder fits.
         self.whole + i128::from(2 * self.remainder >= self.denominator)
     }
 
