@@ -150,18 +150,14 @@ pub(crate) fn fits(geometry: &Geometry) -> bool {
         && denominator < big(DEPTH_DENOMINATOR)
 }
 
-/// The exact depth at the centre `(X, Y)` (scaled units) of the polygon's
-/// plane: `z = (c·Z₁ − a(X − X₁) − b(Y − Y₁)) / (c·2D)`.
-fn depth_at(geometry: &Geometry, x: i128, y: i128) -> Depth {
+/// The numerator of the exact depth at the centre `(X, Y)` (scaled units) of
+/// the polygon's plane, `z = (c·Z₁ − a(X − X₁) − b(Y − Y₁)) / (c·2D)`,
+/// multiplied out in big integers; the result is below 2^125 by [`fits`].
+fn depth_numerator(geometry: &Geometry, x: i128, y: i128) -> i128 {
     let [a, b, c] = geometry.normal.map(big);
     let [x1, y1, z1] = geometry.points[0];
-    let numerator = &c * big(z1) - a * big(x - x1) - b * big(y - y1);
-    let denominator = c * big(geometry.scale());
-    // Within DEPTH_NUMERATOR and DEPTH_DENOMINATOR by `fits`.
-    Depth::from_fraction(
-        numerator.to_i128().expect("checked by big::fits"),
-        denominator.to_i128().expect("checked by big::fits"),
-    )
+    let numerator = c * big(z1) - a * big(x - x1) - b * big(y - y1);
+    numerator.to_i128().expect("checked by big::fits")
 }
 
 /// The crossings of the polygon's edges with the scanline at scaled height
@@ -184,6 +180,9 @@ pub(crate) fn rasterize<S: RasterSink>(
     sink: &mut S,
 ) {
     let Some(rows) = scan::rows(&geometry.points, geometry.denominator, rect.rows, rules.rows) else { return };
+    // Below DEPTH_DENOMINATOR and DEPTH_NUMERATOR by `fits`.
+    let denominator = geometry.c() * geometry.scale();
+    let step = geometry.normal[0] * geometry.scale();
     for row in rows {
         let scan_y = scan::scanline_y(row, geometry.denominator);
         crossings(&geometry.points, scan_y, rules.rows, found);
@@ -198,9 +197,13 @@ pub(crate) fn rasterize<S: RasterSink>(
         }
         for span in spans.iter() {
             if let Some((first, last)) = span.columns {
+                // The first centre's depth multiplied out, then z₁ = z − a/c per
+                // column: the numerator falls by a·2D (all below 2^125 by `fits`).
+                let centre = (2 * i128::from(first) + 1) * geometry.denominator;
+                let mut numerator = depth_numerator(geometry, centre, scan_y);
                 for x in first..=last {
-                    let centre = (2 * i128::from(x) + 1) * geometry.denominator;
-                    sink.pixel(x, row, depth_at(geometry, centre, scan_y));
+                    sink.pixel(x, row, Depth::from_fraction(numerator, denominator));
+                    numerator -= step;
                 }
             }
         }

@@ -497,8 +497,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         let Some(mut dda) = Dda::new(a, b, 0) else { return };
         while dda.live() {
             let x = dda.p[0].to_f64().round() as i64;
-            let p = dda.p.clone();
-            self.fragment(x, row, &p, None, primitive);
+            self.fragment(x, row, &dda.p, None, primitive);
             dda.step();
         }
     }
@@ -556,11 +555,10 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             }
             self.depth[index] = p[2].clone();
         }
-        let colour: Vec<f64> = match flat {
-            Some(c) => c.iter().map(Scalar::to_f64).collect(),
-            None if self.case.features.hyp => p[4..COMPONENTS].iter().map(|c| c.div(&p[3]).to_f64()).collect(),
-            None => p[4..COMPONENTS].iter().map(Scalar::to_f64).collect(),
-        };
+        let source = flat.unwrap_or(&p[4..COMPONENTS]);
+        let hyp = flat.is_none() && self.case.features.hyp;
+        let colour: [f64; 4] =
+            std::array::from_fn(|k| if hyp { source[k].div(&p[3]).to_f64() } else { source[k].to_f64() });
         let below = self.colour[index];
         let alpha = colour[3] + below[3] * (1.0 - colour[3]);
         let mut out = [0.0, 0.0, 0.0, alpha];
