@@ -79,7 +79,15 @@ fn located(path: &Path, error: cs418::CaseError) -> Error {
 fn load(path: &Path) -> Result<Case, Error> {
     let text = zsim::text::read_text(path)?;
     let folder = path.parent().unwrap_or(Path::new("."));
-    let case = Case::parse(&text, &|name| folder.join(name).is_file()).map_err(|e| located(path, e))?;
+    let texture = |name: &str| {
+        let file = folder.join(name);
+        if !file.is_file() {
+            return Err("no such file beside the case".to_string());
+        }
+        let bytes = std::fs::read(&file).map_err(|e| format!("cannot be read ({e})"))?;
+        Image::from_png(&bytes)
+    };
+    let case = Case::parse(&text, &texture).map_err(|e| located(path, e))?;
     Ok(case)
 }
 

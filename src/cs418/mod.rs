@@ -27,6 +27,15 @@
 //!   at output; `hyp` interpolates attributes divided by w (perspective
 //!   correct); `fsaa n` renders n×n samples per pixel and averages them,
 //!   colours weighted by alpha.
+//! - **Textures** (`texture FILE`, `texcoord 2 …`): the texture's bytes are
+//!   sRGB, converted to linear when read. A fragment's (s, t), interpolated
+//!   like the colour, is wrapped into 0 … 1 *after* interpolation (repeat)
+//!   and looks up the nearest texel: column `⌊s·W⌋`, row `⌊t·H⌋` counted
+//!   from the file's top row. The texel replaces the vertex colour, or with
+//!   `decals` goes over it: `rgb = tex.rgb·tex.a + colour.rgb·(1 − tex.a)`,
+//!   `a = tex.a + colour.a − tex.a·colour.a`. A point drawn while a texture
+//!   is bound is a sprite: (s, t) runs from (0, 0) at its top-left corner to
+//!   (1, 1) at its bottom-right.
 
 pub mod import;
 mod raster;
@@ -95,6 +104,10 @@ pub enum Command {
     /// `uniformMatrix` and 16 numbers in column-major order: every position
     /// is multiplied by it from then on.
     Matrix(Vec<Number>),
+    /// `texture FILE`: binds `Case::textures[i]` for the draws that follow.
+    Texture(usize),
+    /// `texcoord 2 s t …`: texture coordinates per vertex.
+    TexCoord(Vec<Number>),
     /// `drawArraysTriangles FIRST COUNT`.
     DrawArrays {
         /// The first vertex.
@@ -130,10 +143,21 @@ pub struct Features {
     /// `cull`: only triangles whose vertices run clockwise on the image
     /// (y down) are drawn.
     pub cull: bool,
-    /// `frustum`: clip to the near and far planes (−w ≤ z ≤ w) before dividing.
+    /// `frustum`: clip to the view volume (−w ≤ x, y, z ≤ w) before dividing.
     pub frustum: bool,
     /// `fsaa n`: n×n samples per pixel (1 = off).
     pub fsaa: u32,
+    /// `decals`: a texture goes over the vertex colour instead of replacing it.
+    pub decals: bool,
+}
+
+/// A texture a case names, read from its PNG.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Texture {
+    /// The file name as the case writes it.
+    pub name: String,
+    /// Its pixels (sRGB bytes, as stored).
+    pub image: Image,
 }
 
 /// A whole CS 418 input file.
@@ -149,16 +173,17 @@ pub struct Case {
     pub features: Features,
     /// The commands in order, each with its line.
     pub commands: Vec<(usize, Command)>,
+    /// The textures the case names, in the order first named.
+    pub textures: Vec<Texture>,
 }
 
 /// Largest image side accepted: 16384 × 16384 RGBA in f64 is 8 GiB already.
 pub const MAX_SIDE: u32 = 8192;
 
 impl Case {
-    /// Reads a CS 418 file. `texture_exists` answers whether a texture file
-    /// named by the case is there (the course's textures are not simulated,
-    /// so a file that uses them is refused either way, saying which).
-    pub fn parse(text: &str, texture_exists: &dyn Fn(&str) -> bool) -> Result<Case, CaseError> {
+    /// Reads a CS 418 file. `load_texture` reads a texture the case names
+    /// (the caller knows where the case's folder is), or says why it cannot.
+    pub fn parse(text: &str, load_texture: &dyn Fn(&str) -> Result<Image, String>) -> Result<Case, CaseError> {
         let mut case: Option<Case> = None;
         for (index, raw) in text.lines().enumerate() {
             let line = index + 1;
@@ -194,6 +219,7 @@ impl Case {
                 "hyp" => flag(&mut case.features.hyp)?,
                 "cull" => flag(&mut case.features.cull)?,
                 "frustum" => flag(&mut case.features.frustum)?,
+                "decals" => flag(&mut case.features.decals)?,
                 "fsaa" => {
                     let [level] = integers::<1>(line, keyword, args)?;
                     if !(1..=8).contains(&level) {
@@ -201,11 +227,12 @@ impl Case {
                     }
                     case.features.fsaa = level as u32;
                 }
-                "position" | "color" | "pointsize" => {
+                "position" | "color" | "pointsize" | "texcoord" => {
                     let (size, numbers) = sized(line, keyword, args)?;
                     let allowed: &[usize] = match keyword {
                         "position" => &[1, 2, 3, 4],
                         "color" => &[3, 4],
+                        "texcoord" => &[2],
                         _ => &[1],
                     };
                     if !allowed.contains(&size) {
@@ -216,6 +243,7 @@ impl Case {
                         match keyword {
                             "position" => Command::Position { size, numbers },
                             "color" => Command::Color { size, numbers },
+                            "texcoord" => Command::TexCoord(numbers),
                             _ => Command::PointSize(numbers),
                         },
                     ));
@@ -254,26 +282,19 @@ impl Case {
                 }
                 "texture" => {
                     let name = args.join(" ");
-                    return Err(error(
-                        line,
-                        if name.is_empty() {
-                            "texture needs a file name".to_string()
-                        } else if texture_exists(&name) {
-                            format!(
-                                "texture \"{name}\": textures are not simulated by zsim (the course's optional texture part)"
-                            )
-                        } else {
-                            format!(
-                                "texture \"{name}\" is missing: no such file beside the case, and zsim does not simulate textures"
-                            )
-                        },
-                    ));
-                }
-                "texcoord" | "decals" => {
-                    return Err(error(
-                        line,
-                        format!("\"{keyword}\" belongs to textures, which zsim does not simulate"),
-                    ));
+                    if name.is_empty() {
+                        return Err(error(line, "texture needs a file name"));
+                    }
+                    let index = match case.textures.iter().position(|t| t.name == name) {
+                        Some(index) => index,
+                        None => {
+                            let image =
+                                load_texture(&name).map_err(|why| error(line, format!("texture \"{name}\": {why}")))?;
+                            case.textures.push(Texture { name, image });
+                            case.textures.len() - 1
+                        }
+                    };
+                    case.commands.push((line, Command::Texture(index)));
                 }
                 _ => return Err(error(line, format!("unknown command \"{keyword}\""))),
             }
@@ -305,6 +326,7 @@ fn png_line(line: usize, args: &[&str]) -> Result<Case, CaseError> {
         output: (*file).to_string(),
         features: Features { fsaa: 1, ..Features::default() },
         commands: Vec::new(),
+        textures: Vec::new(),
     })
 }
 
@@ -370,7 +392,7 @@ mod tests {
     use super::*;
 
     fn parse(text: &str) -> Result<Case, CaseError> {
-        Case::parse(text, &|_| false)
+        Case::parse(text, &|_| Err("no such file beside the case".into()))
     }
 
     #[test]
@@ -398,8 +420,9 @@ mod tests {
         );
         assert_eq!(
             message("png 2 2 a.png\ntexture block.png"),
-            "line 2: texture \"block.png\" is missing: no such file beside the case, and zsim does not simulate textures"
+            "line 2: texture \"block.png\": no such file beside the case"
         );
+        assert_eq!(message("png 2 2 a.png\ntexcoord 3 0 0 1"), "line 2: texcoord 3: the size must be 2");
         assert_eq!(message("png 2 2 ../a.png"), "line 1: png: \"../a.png\" must be a plain file name, without folders");
         assert_eq!(message("png 0 2 a.png"), "line 1: png: width \"0\" must be a whole number from 1 to 8192");
         assert_eq!(

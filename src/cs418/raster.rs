@@ -8,7 +8,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{ToPrimitive, Zero};
 
-use super::{Case, CaseError, Command, Number, error};
+use super::{Case, CaseError, Command, Number, Texture, error};
 
 /// The arithmetic the course's algorithm runs in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -41,6 +41,9 @@ trait Scalar: Clone + PartialOrd + fmt::Debug {
     fn mul(&self, o: &Self) -> Self;
     fn div(&self, o: &Self) -> Self;
     fn ceil(&self) -> Self;
+    fn floor(&self) -> Self {
+        Self::int(0).sub(&Self::int(0).sub(self).ceil())
+    }
     fn to_f64(&self) -> f64;
     fn is_zero(&self) -> bool;
     /// The value as a person reads it: the shortest decimal that reads back
@@ -119,9 +122,12 @@ impl Scalar for BigRational {
 const REACH: f64 = 1000.0;
 
 /// Components of a vertex as the pipeline carries it. In clip space:
-/// x, y, z, w, r, g, b, a. On screen: x', y', z/w, 1/w, then the colour
-/// (divided by w under `hyp`, recovered by dividing by the interpolated 1/w).
-const COMPONENTS: usize = 8;
+/// x, y, z, w, then the attributes r, g, b, a, s, t. On screen: x', y', z/w,
+/// 1/w, then the attributes (divided by w under `hyp`, recovered by dividing
+/// by the interpolated 1/w).
+const COMPONENTS: usize = 4 + ATTRIBUTES;
+/// Colour (r, g, b, a) and texture coordinates (s, t).
+const ATTRIBUTES: usize = 6;
 type Vertex<S> = Vec<S>;
 
 /// An RGBA image, rows from the top, 8 bits a channel.
@@ -274,6 +280,11 @@ struct Pipeline<'a, S> {
     shapes: Vec<Shape>,
     positions: Vec<[S; 4]>,
     colours: Vec<[S; 4]>,
+    texcoords: Vec<[S; 2]>,
+    /// Each of the case's textures as linear RGBA, row by row from the top.
+    textures: Vec<Vec<[f64; 4]>>,
+    /// The texture bound (index into the case's textures).
+    texture: Option<usize>,
     elements: Vec<usize>,
     sizes: Vec<S>,
     matrix: Option<Vec<S>>,
@@ -296,6 +307,9 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             shapes: Vec::new(),
             positions: Vec::new(),
             colours: Vec::new(),
+            texcoords: Vec::new(),
+            textures: case.textures.iter().map(linear_texels).collect(),
+            texture: None,
             elements: Vec::new(),
             sizes: Vec::new(),
             matrix: None,
@@ -334,6 +348,10 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                     })
                     .collect();
             }
+            Command::TexCoord(numbers) => {
+                self.texcoords = numbers.chunks(2).map(|c| [S::number(&c[0]), S::number(&c[1])]).collect();
+            }
+            Command::Texture(index) => self.texture = Some(*index),
             Command::Elements(indices) => self.elements.clone_from(indices),
             Command::PointSize(numbers) => self.sizes = numbers.iter().map(S::number).collect(),
             Command::Matrix(numbers) => self.matrix = Some(numbers.iter().map(S::number).collect()),
@@ -365,7 +383,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                             ),
                         )
                     })?;
-                    let vertex = self.vertex(line, index)?;
+                    let vertex = self.vertex(line, index, false)?;
                     self.primitives.push(Primitive { line, vertices: vec![index] });
                     self.point(vertex, size);
                 }
@@ -374,14 +392,26 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         Ok(())
     }
 
-    /// Vertex `index` in clip space: its position times the matrix, and its colour.
-    fn vertex(&self, line: usize, index: usize) -> Result<Vertex<S>, CaseError> {
+    /// Vertex `index` in clip space: its position times the matrix, its
+    /// colour and its texture coordinates (needed only by a triangle drawn
+    /// with a texture; (0, 0) otherwise).
+    fn vertex(&self, line: usize, index: usize, textured: bool) -> Result<Vertex<S>, CaseError> {
         let position = self.positions.get(index).ok_or_else(|| {
             error(line, format!("vertex {index} is read, but \"position\" has {} vertices", self.positions.len()))
         })?;
-        let colour = self.colours.get(index).ok_or_else(|| {
-            error(line, format!("vertex {index} is read, but \"color\" has {} vertices", self.colours.len()))
-        })?;
+        // A texture without decals replaces the colour, so none need be given
+        // (WebGL's default attribute, opaque black, stands in).
+        let replaced = self.texture.is_some() && !self.case.features.decals;
+        let colour = match self.colours.get(index) {
+            Some(colour) => colour.clone(),
+            None if replaced => [S::int(0), S::int(0), S::int(0), S::int(1)],
+            None => {
+                return Err(error(
+                    line,
+                    format!("vertex {index} is read, but \"color\" has {} vertices", self.colours.len()),
+                ));
+            }
+        };
         let position: Vec<S> = match &self.matrix {
             // Column-major: entry (row, column) is matrix[column·4 + row].
             Some(m) => (0..4)
@@ -393,13 +423,30 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 .collect(),
             None => position.to_vec(),
         };
-        Ok(position.into_iter().chain(colour.iter().cloned()).collect())
+        let texcoord = match self.texcoords.get(index) {
+            Some(st) => st.clone(),
+            None if textured => {
+                return Err(error(
+                    line,
+                    format!(
+                        "vertex {index} is drawn with a texture, but \"texcoord\" has {} vertices",
+                        self.texcoords.len()
+                    ),
+                ));
+            }
+            None => [S::int(0), S::int(0)],
+        };
+        Ok(position.into_iter().chain(colour).chain(texcoord).collect())
     }
 
     fn triangles(&mut self, line: usize, indices: &[usize]) -> Result<(), CaseError> {
+        let textured = self.texture.is_some();
         for corners in indices.chunks_exact(3) {
-            let vertices =
-                [self.vertex(line, corners[0])?, self.vertex(line, corners[1])?, self.vertex(line, corners[2])?];
+            let vertices = [
+                self.vertex(line, corners[0], textured)?,
+                self.vertex(line, corners[1], textured)?,
+                self.vertex(line, corners[2], textured)?,
+            ];
             self.primitives.push(Primitive { line, vertices: corners.to_vec() });
             let primitive = self.primitives.len() as u32;
             let pieces: Vec<Vec<Vertex<S>>> = if self.case.features.frustum {
@@ -497,7 +544,10 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         let Some(mut dda) = Dda::new(a, b, 0) else { return };
         while dda.live() {
             let x = dda.p[0].to_f64().round() as i64;
-            self.fragment(x, row, &dda.p, None, primitive);
+            let p = &dda.p;
+            let attributes: [S; ATTRIBUTES] =
+                std::array::from_fn(|k| if self.case.features.hyp { p[4 + k].div(&p[3]) } else { p[4 + k].clone() });
+            self.fragment(x, row, &p[2], attributes, primitive);
             dda.step();
         }
     }
@@ -512,21 +562,28 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         let half = size.mul(&S::int(i64::from(self.level))).div(&S::int(2));
         let (x0, x1) = (screen[0].sub(&half), screen[0].add(&half));
         let (y0, y1) = (screen[1].sub(&half), screen[1].add(&half));
-        let colour: Vec<S> = vertex[4..COMPONENTS].to_vec();
         let z = screen[2].clone();
+        let (width, height) = (x1.sub(&x0), y1.sub(&y0));
         let corners = [(&x0, &y0), (&x1, &y0), (&x1, &y1), (&x0, &y1)];
         self.record_shape(primitive, corners.iter().map(|(x, y)| [(*x).clone(), (*y).clone(), z.clone()]).collect());
         // Only the image's samples: x and y step by exactly 1, so starting at
         // the image's edge visits the same samples a walk from far outside would.
         let (zero, right, bottom) = (S::int(0), S::int(self.width as i64), S::int(self.height as i64));
         let clamp_low = |v: S| if v < zero { zero.clone() } else { v };
-        let (x1, y1) = (if x1 > right { right } else { x1 }, if y1 > bottom { bottom } else { y1 });
+        let (x_end, y_end) =
+            (if x1 > right { right } else { x1.clone() }, if y1 > bottom { bottom } else { y1.clone() });
         let mut y = clamp_low(y0.ceil());
-        while y < y1 {
+        while y < y_end {
             let mut x = clamp_low(x0.ceil());
-            while x < x1 {
+            while x < x_end {
                 let (xi, yi) = (x.to_f64() as i64, y.to_f64() as i64);
-                self.fragment(xi, yi, &screen, Some(&colour), primitive);
+                // The vertex's colour; (s, t) across the square from its top-left corner.
+                let attributes: [S; ATTRIBUTES] = std::array::from_fn(|k| match k {
+                    4 => x.sub(&x0).div(&width),
+                    5 => y.sub(&y0).div(&height),
+                    _ => vertex[4 + k].clone(),
+                });
+                self.fragment(xi, yi, &z, attributes, primitive);
                 x = x.add(&S::int(1));
             }
             y = y.add(&S::int(1));
@@ -542,23 +599,36 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         self.shapes.push(Shape { primitive, vertices });
     }
 
-    /// One fragment: bounds, the depth test, then "over" onto the sample.
-    fn fragment(&mut self, x: i64, y: i64, p: &[S], flat: Option<&[S]>, primitive: u32) {
+    /// One fragment: bounds, the depth test, the texture, then "over" onto
+    /// the sample. `attributes` are its colour and (s, t), already divided by
+    /// the interpolated 1/w under `hyp`.
+    fn fragment(&mut self, x: i64, y: i64, z: &S, attributes: [S; ATTRIBUTES], primitive: u32) {
         if x < 0 || y < 0 || x >= self.width as i64 || y >= self.height as i64 {
             return;
         }
         let index = y as usize * self.width + x as usize;
         if self.case.features.depth {
             // Kept when z/w ≤ stored (a NaN depth, from a vertex at infinity, is not).
-            if p[2].partial_cmp(&self.depth[index]).is_none_or(|o| o == std::cmp::Ordering::Greater) {
+            if z.partial_cmp(&self.depth[index]).is_none_or(|o| o == std::cmp::Ordering::Greater) {
                 return;
             }
-            self.depth[index] = p[2].clone();
+            self.depth[index] = z.clone();
         }
-        let source = flat.unwrap_or(&p[4..COMPONENTS]);
-        let hyp = flat.is_none() && self.case.features.hyp;
-        let colour: [f64; 4] =
-            std::array::from_fn(|k| if hyp { source[k].div(&p[3]).to_f64() } else { source[k].to_f64() });
+        let vertex: [f64; 4] = std::array::from_fn(|k| attributes[k].to_f64());
+        let colour = match self.texture {
+            None => vertex,
+            Some(texture) => {
+                let texel = self.texel(texture, &attributes[4], &attributes[5]);
+                if self.case.features.decals {
+                    let a = texel[3];
+                    let mut out: [f64; 4] = std::array::from_fn(|k| texel[k] * a + vertex[k] * (1.0 - a));
+                    out[3] = a + vertex[3] - a * vertex[3];
+                    out
+                } else {
+                    texel
+                }
+            }
+        };
         let below = self.colour[index];
         let alpha = colour[3] + below[3] * (1.0 - colour[3]);
         let mut out = [0.0, 0.0, 0.0, alpha];
@@ -569,6 +639,18 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         }
         self.colour[index] = out;
         self.owners[index] = primitive;
+    }
+
+    /// The nearest texel of the bound texture to (s, t), both wrapped into
+    /// 0 … 1 first (repeat); linear RGBA.
+    fn texel(&self, texture: usize, s: &S, t: &S) -> [f64; 4] {
+        let image = &self.case.textures[texture].image;
+        let at = |v: &S, size: u32| {
+            let wrapped = v.sub(&v.floor());
+            (wrapped.mul(&S::int(i64::from(size))).floor().to_f64() as i64).clamp(0, i64::from(size) - 1) as usize
+        };
+        let (column, row) = (at(s, image.width), at(t, image.height));
+        self.textures[texture][row * image.width as usize + column]
     }
 
     /// Averages each pixel's samples (colour weighted by alpha), converts to
@@ -600,6 +682,25 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         }
         Image { width, height, rgba }
     }
+}
+
+/// A texture's texels in linear light (the file's bytes are sRGB; alpha is
+/// linear already).
+fn linear_texels(texture: &Texture) -> Vec<[f64; 4]> {
+    texture
+        .image
+        .rgba
+        .chunks_exact(4)
+        .map(|c| {
+            let [r, g, b, a] = [c[0], c[1], c[2], c[3]].map(|v| f64::from(v) / 255.0);
+            [from_srgb(r), from_srgb(g), from_srgb(b), a]
+        })
+        .collect()
+}
+
+/// The inverse of [`to_srgb`]: sRGB-encoded to linear light.
+fn from_srgb(encoded: f64) -> f64 {
+    if encoded <= 0.04045 { encoded / 12.92 } else { ((encoded + 0.055) / 1.055).powf(2.4) }
 }
 
 /// The sRGB transfer function (IEC 61966-2-1) from linear light.
@@ -794,7 +895,10 @@ mod tests {
 
     #[test]
     fn numbers_keep_their_exact_value() {
-        let case = super::super::Case::parse("png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| false).unwrap();
+        let case = super::super::Case::parse("png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| {
+            Err("no textures here".into())
+        })
+        .unwrap();
         let super::super::Command::PointSize(numbers) = &case.commands[0].1 else { panic!("pointsize") };
         let exact: Vec<BigRational> = numbers.iter().map(BigRational::number).collect();
         let q = |n: i64, d: i64| BigRational::new(BigInt::from(n), BigInt::from(d));
@@ -818,11 +922,84 @@ mod tests {
         assert_eq!(points(4.0, 1.5), vec![2.0, 3.0]);
     }
 
+    /// A 2×2 texture: top row red, green; bottom row blue, and a grey whose
+    /// sRGB byte is 188 (linear 0.5) at alpha 128.
+    fn two_by_two() -> Image {
+        let rgba = [[255, 0, 0, 255], [0, 255, 0, 255], [0, 0, 255, 255], [188, 188, 188, 128]];
+        Image { width: 2, height: 2, rgba: rgba.concat() }
+    }
+
+    fn textured(text: &str) -> Image {
+        let case = super::super::Case::parse(text, &|_| Ok(two_by_two())).unwrap();
+        render(&case, Arithmetic::DdaF64).unwrap().image
+    }
+
+    /// The whole image as one quad whose (s, t) run from 0 to 2: each sample
+    /// (x, y) of a 4×4 image has s = x/2, t = y/2, so wrapping repeats the
+    /// texture twice each way, nearest texel, t = 0 at the file's top row.
+    #[test]
+    fn texels_are_nearest_repeated_and_read_from_the_top_row() {
+        let image = textured(
+            "png 4 4 t.png\nsRGB\ntexture t.png\nposition 2 -1 -1 1 -1 -1 1 1 1\ntexcoord 2 0 0 2 0 0 2 2 2\nelements 0 1 2 2 1 3\ndrawElementsTriangles 6 0",
+        );
+        let texture = two_by_two();
+        for y in 0..4 {
+            for x in 0..4 {
+                let [r, g, b, a] = texture.pixel(x % 2, y % 2);
+                // Alpha is not sRGB: the grey texel's 128 goes over the empty
+                // background and comes back as 128; its colour, linear 0.5
+                // inside, is 188 again at output.
+                assert_eq!(image.pixel(x, y), [r, g, b, a], "({x}, {y})");
+            }
+        }
+    }
+
+    /// `decals`: the texel goes over the vertex colour, in linear light.
+    #[test]
+    fn decals_put_the_texel_over_the_vertex_colour() {
+        let image = textured(
+            "png 2 2 d.png\ndecals\ntexture t.png\nposition 2 -1 -1 1 -1 -1 1 1 1\ncolor 3 0 0 1 0 0 1 0 0 1 0 0 1\ntexcoord 2 0 0 1 0 0 1 1 1\nelements 0 1 2 2 1 3\ndrawElementsTriangles 6 0",
+        );
+        // Opaque red over blue is red; the grey texel (linear 0.5 at
+        // alpha 128/255) over opaque blue: rgb = 0.5·a + (0, 0, 1)·(1 − a).
+        assert_eq!(image.pixel(0, 0), [255, 0, 0, 255]);
+        let a = 128.0 / 255.0;
+        let grey = ((188.0f64 / 255.0 + 0.055) / 1.055).powf(2.4);
+        let expected = [byte(grey * a), byte(grey * a), byte(grey * a + (1.0 - a)), 255];
+        assert_eq!(image.pixel(1, 1), expected);
+    }
+
+    /// A point drawn with a texture bound is a sprite: (0, 0) at its top-left.
+    #[test]
+    fn a_textured_point_shows_the_texture_from_its_top_left_corner() {
+        let image = textured(
+            "png 2 2 p.png\ntexture t.png\nposition 2 0 0\ncolor 3 1 1 1\npointsize 1 2\ndrawArraysPoints 0 1",
+        );
+        assert_eq!(image.pixel(0, 0), [255, 0, 0, 255]);
+        assert_eq!(image.pixel(1, 0), [0, 255, 0, 255]);
+        assert_eq!(image.pixel(0, 1), [0, 0, 255, 255]);
+    }
+
+    #[test]
+    fn a_textured_triangle_needs_texture_coordinates() {
+        let case = super::super::Case::parse(
+            "png 2 2 a.png\ntexture t.png\nposition 2 -1 -1 1 -1 -1 1\ntexcoord 2 0 0 1 0\ndrawArraysTriangles 0 3",
+            &|_| Ok(two_by_two()),
+        )
+        .unwrap();
+        let problem = render(&case, Arithmetic::DdaF64).unwrap_err().to_string();
+        assert_eq!(problem, "line 5: vertex 2 is drawn with a texture, but \"texcoord\" has 2 vertices");
+    }
+
     #[test]
     fn srgb_transfer_matches_the_standard() {
         assert_eq!(byte(to_srgb(0.5)), 188);
         assert_eq!(byte(to_srgb(0.0)), 0);
         assert_eq!(byte(to_srgb(1.0)), 255);
         assert_eq!(byte(to_srgb(0.002)), 7);
+        for encoded in 0..=255u8 {
+            let value = f64::from(encoded) / 255.0;
+            assert_eq!(byte(to_srgb(from_srgb(value))), encoded);
+        }
     }
 }

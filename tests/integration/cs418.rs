@@ -2,6 +2,7 @@
 //! reference images, read from `../shared/peer/uiuc-cs418/` (never copied
 //! into the project). Where that folder is absent the tests say so on stderr.
 
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
 use zsim::cs418::{Arithmetic, Case, Image, compare_images, differences, render};
@@ -21,7 +22,7 @@ fn cases() -> Option<PathBuf> {
 
 fn case(dir: &Path, name: &str) -> Case {
     let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).expect("case file");
-    Case::parse(&text, &|_| false).unwrap_or_else(|e| panic!("{name}: {e}"))
+    Case::parse(&text, &|_| Err("no textures here".into())).unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 
 fn reference(dir: &Path, name: &str) -> Image {
@@ -105,49 +106,64 @@ fn exact_arithmetic_shows_where_the_course_floats_land_on_the_other_side() {
     ), "{}", out.stdout);
 }
 
-/// points1's second half draws textured point sprites whose texture is not
-/// in the folder: zsim says so. Its first half (triangles and 11 coloured
-/// points) is checked against the reference wherever the sprites, squares
-/// of their sizes around their centres widened by a pixel, do not reach.
+/// A one-texel texture of one colour, standing in for the course's textures
+/// (block-I-*.png), which are not in the folder.
+fn stand_in(rgba: [u8; 4]) -> Image {
+    Image { width: 1, height: 1, rgba: rgba.to_vec() }
+}
+
+/// points1 and points2 end with textured point sprites whose texture is not
+/// in the folder. Drawn with a stand-in texture of a colour the case never
+/// draws (magenta), every pixel the stand-in does not show equals the
+/// reference within 1, and the pixels it shows are exactly those where the
+/// reference shows the texture: no colour appears in both sets. So the
+/// sprites' squares, their depth against the triangles and points, and
+/// everything else are the course's; only which texel each sprite pixel
+/// shows cannot be checked here.
 #[test]
-fn points1_matches_the_reference_outside_the_missing_textures_sprites() {
+fn points_match_the_reference_with_a_stand_in_for_the_missing_texture() {
     let Some(dir) = cases() else { return };
-    let path = dir.join("rast-points1.txt");
-    let out = zsim(&["cs418", "run", path.to_str().unwrap(), "-o", env!("CARGO_TARGET_TMPDIR")]);
-    assert_eq!(out.code, 2);
-    assert!(out.stdout.is_empty());
-    assert!(out.stderr.ends_with(
-        "rast-points1.txt: line 17: texture \"block-I-orange-background.png\" is missing: no such file beside the case, and zsim does not simulate textures\n"
-    ), "{}", out.stderr);
-    let text = std::fs::read_to_string(&path).unwrap();
-    let (before, after) = text.split_at(text.find("\ntexture").expect("a texture line"));
-    let case = Case::parse(before, &|_| false).unwrap();
-    let sprites =
-        Case::parse(&format!("png 80 80 x.png\n{}", after.replacen("texture", "# texture", 1)), &|_| false).unwrap();
-    let numbers = |keyword: &str| -> Vec<f64> {
-        let line = after.lines().find(|l| l.starts_with(keyword)).unwrap();
-        line.split_whitespace().skip(2).map(|w| w.parse().unwrap()).collect()
-    };
-    assert!(!sprites.commands.is_empty());
-    let (positions, sizes) = (numbers("position"), numbers("pointsize"));
-    let image = render(&case, Arithmetic::DdaF64).unwrap().image;
-    let reference = reference(&dir, "points1");
-    let mut checked = 0;
-    for y in 0..80u32 {
-        for x in 0..80u32 {
-            let under_sprite = sizes.iter().enumerate().any(|(i, size)| {
-                let (cx, cy) = ((positions[4 * i] + 1.0) * 40.0, (positions[4 * i + 1] + 1.0) * 40.0);
-                (f64::from(x) - cx).abs() <= size / 2.0 + 1.0 && (f64::from(y) - cy).abs() <= size / 2.0 + 1.0
-            });
-            if under_sprite {
-                continue;
+    let magenta = [255, 0, 255, 255];
+    for (name, shown) in [("points1", 3342), ("points2", 3770)] {
+        let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).unwrap();
+        let case = Case::parse(&text, &|_| Ok(stand_in(magenta))).unwrap();
+        let image = render(&case, Arithmetic::DdaF64).unwrap().image;
+        let reference = reference(&dir, name);
+        let (mut texture_colours, mut other_colours) = (HashSet::new(), HashSet::new());
+        for y in 0..image.height {
+            for x in 0..image.width {
+                let (a, b) = (image.pixel(x, y), reference.pixel(x, y));
+                if a == magenta {
+                    texture_colours.insert(b);
+                    continue;
+                }
+                other_colours.insert(b);
+                assert!(a.iter().zip(&b).all(|(p, q)| p.abs_diff(*q) <= 1), "{name} ({x}, {y}): {a:?} vs {b:?}");
             }
-            checked += 1;
-            let (a, b) = (image.pixel(x, y), reference.pixel(x, y));
-            assert!(a.iter().zip(&b).all(|(p, q)| p.abs_diff(*q) <= 1), "({x}, {y}): zsim {a:?}, reference {b:?}");
         }
+        let count = image.rgba.chunks(4).filter(|p| *p == magenta).count();
+        assert_eq!(count, shown, "{name}: pixels showing the sprites");
+        assert!(texture_colours.contains(&[240, 88, 56, 255]), "{name}: the texture's orange");
+        assert_eq!(texture_colours.intersection(&other_colours).count(), 0, "{name}");
     }
-    assert_eq!(checked, 2365);
+}
+
+/// textures and decals need four textures that are not in the folder; with
+/// stand-ins (opaque for textures, half transparent for decals) zsim covers
+/// exactly the pixels the reference covers.
+#[test]
+fn textured_cubes_cover_the_reference_pixels_with_stand_in_textures() {
+    let Some(dir) = cases() else { return };
+    for (name, texel) in [("textures", [255, 255, 0, 255]), ("decals", [255, 255, 0, 128])] {
+        let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).unwrap();
+        let case = Case::parse(&text, &|_| Ok(stand_in(texel))).unwrap();
+        let image = render(&case, Arithmetic::DdaF64).unwrap().image;
+        let reference = reference(&dir, name);
+        let covered = |image: &Image| image.rgba.chunks(4).map(|p| p[3] > 0).collect::<Vec<_>>();
+        let ours = covered(&image);
+        assert_eq!(ours, covered(&reference), "{name}");
+        assert_eq!(ours.iter().filter(|c| **c).count(), 32363, "{name}");
+    }
 }
 
 /// The command line writes the PNG the case names and compares it.
@@ -201,7 +217,13 @@ fn bad_cs418_files_name_the_file_the_line_and_the_problem() {
         (
             "texture.txt",
             "png 4 4 a.png\ntexture wood.png\n",
-            "line 2: texture \"wood.png\" is missing: no such file beside the case, and zsim does not simulate textures",
+            "line 2: texture \"wood.png\": no such file beside the case",
+        ),
+        (
+            // The case names itself as its texture: a file, but not a PNG.
+            "itself.txt",
+            "png 4 4 a.png\ntexture itself.txt\n",
+            "line 2: texture \"itself.txt\": not a PNG image (Invalid PNG signature.)",
         ),
         (
             "far.txt",
