@@ -46,12 +46,16 @@ trait Scalar: Clone + PartialOrd + fmt::Debug {
     }
     fn to_f64(&self) -> f64;
     fn is_zero(&self) -> bool;
+    /// Whether adding is exact, so that k steps of a DDA land where one
+    /// step of k times the size does.
+    const EXACT: bool;
     /// The value as a person reads it: the shortest decimal that reads back
     /// as this `f64`, or an exact fraction.
     fn text(&self) -> String;
 }
 
 impl Scalar for f64 {
+    const EXACT: bool = false;
     fn number(n: &Number) -> f64 {
         n.value
     }
@@ -85,6 +89,7 @@ impl Scalar for f64 {
 }
 
 impl Scalar for BigRational {
+    const EXACT: bool = true;
     fn number(n: &Number) -> BigRational {
         BigRational::new(BigInt::from(*n.exact.numer()), BigInt::from(*n.exact.denom()))
     }
@@ -524,7 +529,11 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         let Some(mut long) = Dda::new(top, bottom, 1) else { return };
         for (from, to) in [(top, middle), (middle, bottom)] {
             let Some(mut short) = Dda::new(from, to, 1) else { continue };
+            short.skip_before(0, Some(&mut long));
             while short.live() {
+                if short.at() >= self.height as i64 {
+                    return;
+                }
                 self.row(&short.p, &long.p, primitive);
                 short.step();
                 long.step();
@@ -532,6 +541,9 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         }
     }
 
+    /// One row of a triangle, on the image: its span, and the samples from
+    /// the image's left edge to its right (the DDA's steps before the left
+    /// edge are taken, but visit nothing).
     fn row(&mut self, a: &[S], b: &[S], primitive: u32) {
         let row = a[1].to_f64().round() as i64;
         let (left, right) = if a[0] <= b[0] { (a, b) } else { (b, a) };
@@ -542,8 +554,12 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             right_value: right[0].to_f64(),
         });
         let Some(mut dda) = Dda::new(a, b, 0) else { return };
+        dda.skip_before(0, None);
         while dda.live() {
-            let x = dda.p[0].to_f64().round() as i64;
+            let x = dda.at();
+            if x >= self.width as i64 {
+                break;
+            }
             let p = &dda.p;
             let attributes: [S; ATTRIBUTES] =
                 std::array::from_fn(|k| if self.case.features.hyp { p[4 + k].div(&p[3]) } else { p[4 + k].clone() });
@@ -777,6 +793,42 @@ impl<S: Scalar> Dda<S> {
 
     fn live(&self) -> bool {
         self.p[self.d] < self.end
+    }
+
+    /// The integer the point has reached along `d`.
+    fn at(&self) -> i64 {
+        self.p[self.d].to_f64().round() as i64
+    }
+
+    /// Steps (with `follow` in step) while live and before `target` along
+    /// `d`, as the walk would. In exact arithmetic it jumps there at once,
+    /// to the same point: `⌈min(target, end) − p_d⌉` steps of `s` added as one.
+    fn skip_before(&mut self, target: i64, mut follow: Option<&mut Dda<S>>) {
+        if !S::EXACT {
+            while self.live() && self.at() < target {
+                self.step();
+                if let Some(f) = follow.as_deref_mut() {
+                    f.step();
+                }
+            }
+            return;
+        }
+        let target = S::int(target);
+        if self.p[self.d] >= target {
+            return;
+        }
+        let bound = if self.end < target { self.end.clone() } else { target };
+        let steps = bound.sub(&self.p[self.d]).ceil();
+        self.advance(&steps);
+        if let Some(f) = follow {
+            f.advance(&steps);
+        }
+    }
+
+    fn advance(&mut self, steps: &S) {
+        for (p, s) in self.p.iter_mut().zip(&self.s) {
+            *p = p.add(&s.mul(steps));
+        }
     }
 
     fn step(&mut self) {

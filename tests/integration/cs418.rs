@@ -326,3 +326,173 @@ fn a_huge_point_fills_the_image_without_walking_beyond_it() {
     let image = Image::from_png(&std::fs::read(dir.join("huge/huge.png")).unwrap()).unwrap();
     assert!(image.rgba.chunks(4).all(|p| p == [255, 255, 255, 255]));
 }
+
+/// A triangle reaching 500 image sizes beyond every side of a 20×20 image
+/// with 2×2 samples: its rows above and below the image and its columns left
+/// and right of it visit nothing (exact arithmetic jumps over them to the
+/// same points; the course's floats step over them without drawing), so both
+/// arithmetics fill the image at once instead of walking 20,000² samples.
+#[test]
+fn a_triangle_far_beyond_the_image_visits_only_the_image() {
+    let text = "png 20 20 far.png\nfsaa 2\nposition 2 -999 -999 1999 -999 -999 1999\ncolor 3 1 1 1 1 1 1 1 1 1\ndrawArraysTriangles 0 3\n";
+    let case = Case::parse(text, &|_| Err("no textures here".into())).unwrap();
+    for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
+        let image = render(&case, arithmetic).unwrap().image;
+        assert!(image.rgba.chunks(4).all(|p| p == [255, 255, 255, 255]), "{arithmetic:?}");
+    }
+}
+
+/// Random CS 418 files (every command, sizes and counts right and wrong,
+/// numbers large, small, negative, zero): reading and drawing them in both
+/// arithmetics either works or says what is wrong with a line; never a panic.
+mod never_a_panic {
+    use proptest::prelude::*;
+    use zsim::cs418::{Arithmetic, Case, Image, render};
+
+    /// A number, mostly ordinary, now and then extreme.
+    fn value() -> impl Strategy<Value = String> {
+        prop_oneof![
+            6 => (-3i32..=3).prop_map(|v| v.to_string()),
+            12 => (-2000i32..=2000).prop_map(|v| format!("{}", f64::from(v) / 1000.0)),
+            1 => Just("1e30".to_string()),
+            1 => Just("-1e-30".to_string()),
+            1 => Just("0.000000001".to_string()),
+        ]
+    }
+
+    /// A number or now and then not one.
+    fn number() -> impl Strategy<Value = String> {
+        prop_oneof![20 => value(), 1 => Just("x".to_string())]
+    }
+
+    fn line() -> impl Strategy<Value = String> {
+        let keyword = prop::sample::select(vec![
+            "position",
+            "color",
+            "texcoord",
+            "pointsize",
+            "elements",
+            "uniformMatrix",
+            "drawArraysTriangles",
+            "drawElementsTriangles",
+            "drawArraysPoints",
+            "depth",
+            "sRGB",
+            "hyp",
+            "cull",
+            "frustum",
+            "decals",
+            "fsaa",
+            "texture",
+        ]);
+        (keyword, 0usize..5, prop::collection::vec(number(), 0..18)).prop_map(
+            |(keyword, size, numbers)| match keyword {
+                "position" | "color" | "texcoord" | "pointsize" => format!("{keyword} {size} {}", numbers.join(" ")),
+                "texture" => "texture t.png".to_string(),
+                "elements" | "drawArraysTriangles" | "drawElementsTriangles" | "drawArraysPoints" | "fsaa" => {
+                    let small: Vec<String> =
+                        numbers.iter().map(|n| n.trim_start_matches('-').replace('.', "")).collect();
+                    format!("{keyword} {}", small.join(" "))
+                }
+                _ => format!("{keyword} {}", numbers[..numbers.len().min(size / 4)].join(" ")),
+            },
+        )
+    }
+
+    /// A file that mostly makes sense: switches, then vertices with colours
+    /// and texture coordinates (now and then one short), then draws that
+    /// mostly stay in range.
+    fn drawing() -> impl Strategy<Value = String> {
+        let switches = prop::collection::vec(
+            prop::sample::select(vec!["depth", "sRGB", "hyp", "cull", "frustum", "decals", "fsaa 2", "fsaa 3"]),
+            0..5,
+        );
+        let vertices = prop::collection::vec(prop::collection::vec(value(), 10), 1..8);
+        let draws = prop::collection::vec(
+            (
+                prop::sample::select(vec!["drawArraysTriangles", "drawElementsTriangles", "drawArraysPoints"]),
+                0usize..4,
+                0usize..3,
+            ),
+            1..4,
+        );
+        (switches, vertices, any::<bool>(), any::<bool>(), draws).prop_map(
+            |(switches, vertices, texture, short, draws)| {
+                let column = |range: std::ops::Range<usize>| {
+                    let mut all: Vec<String> = vertices.iter().flat_map(|v| v[range.clone()].to_vec()).collect();
+                    if short {
+                        all.truncate(all.len() - (range.end - range.start));
+                    }
+                    all.join(" ")
+                };
+                let mut text = switches.join("\n");
+                text += &format!(
+                    "\nposition 4 {}",
+                    vertices.iter().map(|v| v[0..4].join(" ")).collect::<Vec<_>>().join(" ")
+                );
+                text += &format!("\ncolor 4 {}", column(4..8));
+                text += &format!("\ntexcoord 2 {}", column(8..10));
+                text += &format!(
+                    "\npointsize 1 {}",
+                    vertices.iter().map(|v| v[4].trim_start_matches('-').to_string()).collect::<Vec<_>>().join(" ")
+                );
+                text += &format!(
+                    "\nelements {}",
+                    (0..vertices.len() + 1).rev().map(|i| i.to_string()).collect::<Vec<_>>().join(" ")
+                );
+                if texture {
+                    text += "\ntexture t.png";
+                }
+                for (command, first, count) in draws {
+                    let count = if command == "drawArraysPoints" { count + 1 } else { 3 * count };
+                    text += &format!(
+                        "\n{command} {} {}",
+                        if command == "drawElementsTriangles" { count } else { first },
+                        if command == "drawElementsTriangles" { first } else { count }
+                    );
+                }
+                text
+            },
+        )
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+        #[test]
+        fn any_drawing_is_drawn_or_refused_with_its_line(width in 1u32..12, height in 1u32..12, body in drawing()) {
+            let text = format!("png {width} {height} out.png\n{body}");
+            let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
+            match Case::parse(&text, &|_| Ok(texture.clone())) {
+                Err(error) => prop_assert!(error.line.is_some(), "{error}"),
+                Ok(case) => {
+                    for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
+                        if let Err(error) = render(&case, arithmetic) {
+                            prop_assert!(error.line.is_some(), "{error}");
+                        }
+                    }
+                }
+            }
+        }
+
+        #[test]
+        fn any_file_is_drawn_or_refused_with_its_line(
+            width in 1u32..12,
+            height in 1u32..12,
+            lines in prop::collection::vec(line(), 0..14),
+        ) {
+            let text = format!("png {width} {height} out.png\n{}", lines.join("\n"));
+            let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
+            match Case::parse(&text, &|_| Ok(texture.clone())) {
+                Err(error) => prop_assert!(error.line.is_some(), "{error}"),
+                Ok(case) => {
+                    for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
+                        if let Err(error) = render(&case, arithmetic) {
+                            prop_assert!(error.line.is_some(), "{error}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
