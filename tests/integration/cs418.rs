@@ -456,23 +456,30 @@ mod never_a_panic {
         )
     }
 
+    /// Reads `text` (any texture is a 2×1 one) and draws it in both
+    /// arithmetics: each step works or names a line.
+    fn drawn_or_refused_with_its_line(text: &str) -> Result<(), TestCaseError> {
+        let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
+        match Case::parse(text, &|_| Ok(texture.clone())) {
+            Err(error) => prop_assert!(error.line.is_some(), "{error}"),
+            Ok(case) => {
+                for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
+                    if let Err(error) = render(&case, arithmetic) {
+                        prop_assert!(error.line.is_some(), "{error}");
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
 
         #[test]
         fn any_drawing_is_drawn_or_refused_with_its_line(width in 1u32..12, height in 1u32..12, body in drawing()) {
             let text = format!("png {width} {height} out.png\n{body}");
-            let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
-            match Case::parse(&text, &|_| Ok(texture.clone())) {
-                Err(error) => prop_assert!(error.line.is_some(), "{error}"),
-                Ok(case) => {
-                    for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
-                        if let Err(error) = render(&case, arithmetic) {
-                            prop_assert!(error.line.is_some(), "{error}");
-                        }
-                    }
-                }
-            }
+            drawn_or_refused_with_its_line(&text)?;
         }
 
         #[test]
@@ -482,17 +489,7 @@ mod never_a_panic {
             lines in prop::collection::vec(line(), 0..14),
         ) {
             let text = format!("png {width} {height} out.png\n{}", lines.join("\n"));
-            let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
-            match Case::parse(&text, &|_| Ok(texture.clone())) {
-                Err(error) => prop_assert!(error.line.is_some(), "{error}"),
-                Ok(case) => {
-                    for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
-                        if let Err(error) = render(&case, arithmetic) {
-                            prop_assert!(error.line.is_some(), "{error}");
-                        }
-                    }
-                }
-            }
+            drawn_or_refused_with_its_line(&text)?;
         }
     }
 }
