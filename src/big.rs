@@ -88,7 +88,7 @@ pub(crate) fn check_planar(geometry: &Geometry) -> Result<(), GeometryError> {
         let out_of_range = || GeometryError::OutOfRange {
             vertex: index + 1,
             value: crate::exact::Q::new(point[0], geometry.scale()),
-            denominator: geometry.denominator,
+            denominator: geometry.denominator.into(),
         };
         let [Some(a), Some(b), Some(c)] = reduced else { return Err(out_of_range()) };
         let plane = reduced_plane([a, b, c], p1, geometry.scale()).ok_or_else(out_of_range)?;

@@ -13,7 +13,9 @@
 //!   `less` (OpenGL's default) for the nearer polygon to win. z/w is linear on
 //!   the screen, so a planar polygon stays planar.
 
-use num_traits::{CheckedAdd, CheckedDiv, CheckedMul, CheckedSub};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, ToPrimitive, Zero};
 
 use crate::exact::Q;
 
@@ -37,28 +39,25 @@ pub enum Clipped {
 }
 
 /// Clips a polygon given in clip space and maps it onto a `width × height`
-/// raster whose z-buffer holds `0 ..= depth_max`; `None` when a value
-/// outgrows 128-bit exact arithmetic.
+/// raster whose z-buffer holds `0 ..= depth_max`. The clipping runs in
+/// arbitrary-precision rationals, so it never overflows; `None` when a vertex
+/// on the raster does not fit the 128-bit fractions zsim speaks.
 pub fn to_raster(vertices: &[[Q; 4]], width: u32, height: u32, depth_max: u32) -> Option<Clipped> {
-    let zero = Q::from_integer(0);
-    let inside =
-        vertices.iter().filter(|v| PLANES.iter().all(|&(axis, sign)| distance(v, axis, sign) >= Some(zero))).count();
-    let mut polygon: Vec<[Q; 4]> = vertices.to_vec();
+    let zero = BigRational::zero();
+    let vertices: Vec<[BigRational; 4]> = vertices.iter().map(|v| v.map(big)).collect();
+    let inside = vertices.iter().filter(|v| PLANES.iter().all(|&(axis, sign)| distance(v, axis, sign) >= zero)).count();
+    let mut polygon = vertices;
     for (axis, sign) in PLANES {
-        let mut out = Vec::with_capacity(polygon.len() + 1);
+        let mut out: Vec<[BigRational; 4]> = Vec::with_capacity(polygon.len() + 1);
         for i in 0..polygon.len() {
-            let (a, b) = (polygon[i], polygon[(i + 1) % polygon.len()]);
-            let (da, db) = (distance(&a, axis, sign)?, distance(&b, axis, sign)?);
+            let (a, b) = (&polygon[i], &polygon[(i + 1) % polygon.len()]);
+            let (da, db) = (distance(a, axis, sign), distance(b, axis, sign));
             if da >= zero {
-                out.push(a);
+                out.push(a.clone());
             }
             if (da >= zero) != (db >= zero) {
-                let t = da.checked_div(&da.checked_sub(&db)?)?;
-                let mut point = [zero; 4];
-                for k in 0..4 {
-                    point[k] = a[k].checked_add(&t.checked_mul(&b[k].checked_sub(&a[k])?)?)?;
-                }
-                out.push(point);
+                let t = &da / (&da - &db);
+                out.push(std::array::from_fn(|k| &a[k] + &t * (&b[k] - &a[k])));
             }
         }
         out.dedup();
@@ -70,24 +69,33 @@ pub fn to_raster(vertices: &[[Q; 4]], width: u32, height: u32, depth_max: u32) -
             return Some(Clipped::Outside);
         }
     }
-    let one = Q::from_integer(1);
-    let (w_half, h_half) = (Q::new(i128::from(width), 2), Q::new(i128::from(height), 2));
-    let depth_half = Q::new(i128::from(depth_max), 2);
+    let one = BigRational::one();
+    let half = |n: u32| BigRational::new(BigInt::from(n), BigInt::from(2));
+    let (w_half, h_half, depth_half) = (half(width), half(height), half(depth_max));
     let mut mapped = Vec::with_capacity(polygon.len());
     for [x, y, z, w] in polygon {
-        if w == zero {
+        if w.is_zero() {
             // Only the origin has w = 0 inside the volume: a point, not a polygon.
             return Some(Clipped::Outside);
         }
-        let map = |c: Q, half: Q| c.checked_div(&w)?.checked_add(&one)?.checked_mul(&half);
-        mapped.push([map(x, w_half)?, map(y, h_half)?, map(z, depth_half)?]);
+        let map = |c: BigRational, half: &BigRational| small(&((c / &w + &one) * half));
+        mapped.push([map(x, &w_half)?, map(y, &h_half)?, map(z, &depth_half)?]);
     }
     Some(Clipped::Inside { vertices: mapped, inside })
 }
 
 /// How far inside the plane `w + sign·coordinate ≥ 0` a vertex lies.
-fn distance(v: &[Q; 4], axis: usize, sign: i128) -> Option<Q> {
-    if sign > 0 { v[3].checked_add(&v[axis]) } else { v[3].checked_sub(&v[axis]) }
+fn distance(v: &[BigRational; 4], axis: usize, sign: i128) -> BigRational {
+    if sign > 0 { &v[3] + &v[axis] } else { &v[3] - &v[axis] }
+}
+
+fn big(q: Q) -> BigRational {
+    BigRational::new(BigInt::from(*q.numer()), BigInt::from(*q.denom()))
+}
+
+/// The value as a 128-bit fraction, when it is one.
+fn small(value: &BigRational) -> Option<Q> {
+    Some(Q::new(value.numer().to_i128()?, value.denom().to_i128()?))
 }
 
 #[cfg(test)]

@@ -79,6 +79,22 @@ pub enum PolygonProblem {
         /// The scene's `frame_bits`.
         frame_bits: u32,
     },
+    /// Mapping its vertices onto the raster gives numbers beyond 128-bit
+    /// fractions.
+    MappedOutOfRange(Mapping),
+    /// The w-buffer's exact arithmetic cannot hold its projected coordinates.
+    TooFineForW,
+}
+
+/// How a polygon's vertices reach the raster.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mapping {
+    /// From the scene's window.
+    Window,
+    /// Through the perspective effect.
+    Perspective,
+    /// From clip space: clipping, division by w, the viewport.
+    ClipSpace,
 }
 
 impl fmt::Display for PolygonProblem {
@@ -86,11 +102,21 @@ impl fmt::Display for PolygonProblem {
         match self {
             PolygonProblem::Geometry(error) => error.fmt(f),
             PolygonProblem::Other(message) => f.write_str(message),
-            PolygonProblem::ValueTooWide { value, frame_bits } => write!(
-                f,
-                "value {value} does not fit a {frame_bits}-bit framebuffer (at most {})",
-                (1u64 << frame_bits) - 1
-            ),
+            PolygonProblem::ValueTooWide { value, frame_bits } => f.write_str(&words!(
+                "polygon-value-too-wide",
+                value = value.to_string(),
+                bits = frame_bits.to_string(),
+                max = ((1u64 << frame_bits) - 1).to_string()
+            )),
+            PolygonProblem::MappedOutOfRange(mapping) => {
+                let stage = match mapping {
+                    Mapping::Window => words!("mapping-window"),
+                    Mapping::Perspective => words!("mapping-perspective"),
+                    Mapping::ClipSpace => words!("mapping-clip-space"),
+                };
+                f.write_str(&words!("polygon-mapped-out-of-range", stage = stage))
+            }
+            PolygonProblem::TooFineForW => f.write_str(&words!("polygon-w-too-fine")),
         }
     }
 }

@@ -46,8 +46,9 @@ pub enum GeometryError {
         vertex: usize,
         /// The offending coordinate.
         value: Q,
-        /// The polygon's least common denominator `D`.
-        denominator: i128,
+        /// The polygon's least common denominator `D` (so far), which may
+        /// itself have outgrown 128 bits.
+        denominator: num_bigint::BigInt,
     },
     /// A vertex that does not lie on the plane through the others.
     NotPlanar(Box<OffPlane>),
@@ -191,11 +192,16 @@ impl Geometry {
         let mut denominator: i128 = 1;
         for (index, vertex) in vertices.iter().enumerate() {
             for value in vertex {
-                let lcm = denominator.lcm(value.denom());
-                if lcm > MAX_SCALED_BIG {
-                    return Err(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator: lcm });
+                // The lcm can outgrow i128 itself before it passes the limit.
+                let lcm = (denominator / denominator.gcd(value.denom())).checked_mul(*value.denom());
+                match lcm {
+                    Some(lcm) if lcm <= MAX_SCALED_BIG => denominator = lcm,
+                    _ => {
+                        let denominator = num_bigint::BigInt::from(denominator / denominator.gcd(value.denom()))
+                            * num_bigint::BigInt::from(*value.denom());
+                        return Err(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator });
+                    }
                 }
-                denominator = lcm;
             }
         }
         let scale = 2 * denominator;
@@ -204,8 +210,11 @@ impl Geometry {
             let mut point = [0i128; 3];
             for (axis, value) in vertex.iter().enumerate() {
                 let scaled = value.numer().checked_mul(scale / value.denom()).filter(|s| s.abs() <= MAX_SCALED_BIG);
-                point[axis] =
-                    scaled.ok_or(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator })?;
+                point[axis] = scaled.ok_or_else(|| GeometryError::OutOfRange {
+                    vertex: index + 1,
+                    value: *value,
+                    denominator: denominator.into(),
+                })?;
             }
             points.push(point);
         }
@@ -218,7 +227,7 @@ impl Geometry {
                     .flat_map(|(i, v)| v.iter().map(move |q| (i, *q)))
                     .max_by_key(|(_, q)| q.numer().unsigned_abs() / q.denom().unsigned_abs())
                     .unwrap_or((0, vertices[0][0]));
-                GeometryError::OutOfRange { vertex: index + 1, value, denominator }
+                GeometryError::OutOfRange { vertex: index + 1, value, denominator: denominator.into() }
             };
             let normal = crate::big::newell(&points).ok_or_else(out_of_range)?;
             let geometry = Geometry { denominator, points, normal, narrow: false, big: true };

@@ -7,7 +7,7 @@ use serde::Deserialize;
 use serde::de::Error as _;
 
 use crate::depth::{DepthTest, Stored};
-use crate::error::{Error, PolygonProblem};
+use crate::error::{Error, Mapping, PolygonProblem};
 use crate::exact::{Q, fraction, parse_number};
 use crate::perspective::{Clip, Perspective};
 use crate::plane::Geometry;
@@ -509,16 +509,7 @@ impl PolygonFile {
         {
             return Err(fail(&name, PolygonProblem::Other(words!("polygon-opacity", alpha = fraction(alpha)))));
         }
-        let out_of_range = |number: usize, value: Q| {
-            fail(
-                &name,
-                PolygonProblem::Geometry(crate::plane::GeometryError::OutOfRange {
-                    vertex: number + 1,
-                    value,
-                    denominator: *value.denom(),
-                }),
-            )
-        };
+        let out_of_range = |mapping: Mapping| fail(&name, PolygonProblem::MappedOutOfRange(mapping));
         let clip_space: Vec<[Q; 4]> =
             self.vertices.iter().filter_map(|v| if let VertexFile::Clip(c) = v { Some(*c) } else { None }).collect();
         let mut vertices: Vec<[Q; 3]> = if clip_space.is_empty() {
@@ -541,8 +532,8 @@ impl PolygonFile {
                 .map_err(|problem| fail(&name, problem));
         };
         if let Some((window, width, height)) = frame.window {
-            for (number, vertex) in vertices.iter_mut().enumerate() {
-                *vertex = window.to_pixels(*vertex, width, height).ok_or_else(|| out_of_range(number, vertex[0]))?;
+            for vertex in &mut vertices {
+                *vertex = window.to_pixels(*vertex, width, height).ok_or_else(|| out_of_range(Mapping::Window))?;
             }
         }
         if vertices.len() < 3 {
@@ -555,7 +546,7 @@ impl PolygonFile {
                 // Check planarity in eye space first, where the user wrote the polygon.
                 Geometry::new(&vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
                 let eye = vertices.clone();
-                let (kept, clip) = perspective.clip(&vertices).ok_or_else(|| out_of_range(0, vertices[0][0]))?;
+                let (kept, clip) = perspective.clip(&vertices).ok_or_else(|| out_of_range(Mapping::Perspective))?;
                 if clip == Clip::Away {
                     // Nothing is drawn; keep the eye-space geometry for reports.
                     let geometry = Geometry::new(&eye).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
@@ -571,8 +562,10 @@ impl PolygonFile {
                 }
                 let (width, height) = frame.size;
                 let mut projected = Vec::with_capacity(kept.len());
-                for (number, v) in kept.iter().enumerate() {
-                    projected.push(perspective.project(*v, width, height).ok_or_else(|| out_of_range(number, v[0]))?);
+                for v in &kept {
+                    projected.push(
+                        perspective.project(*v, width, height).ok_or_else(|| out_of_range(Mapping::Perspective))?,
+                    );
                 }
                 vertices = projected;
                 (Some(eye), clip)
@@ -583,12 +576,7 @@ impl PolygonFile {
             && perspective.store_w
             && !w_fits(&geometry)
         {
-            return Err(fail(
-                &name,
-                PolygonProblem::Other(
-                    "its projected coordinates are too fine for the w-buffer's exact arithmetic (use coarser coordinates or a smaller distance)".into(),
-                ),
-            ));
+            return Err(fail(&name, PolygonProblem::TooFineForW));
         }
         Ok(Polygon { name, value: self.value as u32, vertices, geometry, opacity, eye_vertices, clip })
     }
@@ -608,13 +596,7 @@ fn w_fits(geometry: &Geometry) -> bool {
 /// ([`crate::clip_space`]); what is left, its geometry and how it was clipped.
 fn clip_space_polygon(clip_space: &[[Q; 4]], frame: &Frame) -> Result<(Vec<[Q; 3]>, Geometry, Clip), PolygonProblem> {
     let (width, height) = frame.size;
-    let out_of_range = || {
-        PolygonProblem::Geometry(crate::plane::GeometryError::OutOfRange {
-            vertex: 1,
-            value: clip_space[0][0],
-            denominator: *clip_space[0][0].denom(),
-        })
-    };
+    let out_of_range = || PolygonProblem::MappedOutOfRange(Mapping::ClipSpace);
     match crate::clip_space::to_raster(clip_space, width, height, frame.depth_max).ok_or_else(out_of_range)? {
         crate::clip_space::Clipped::Outside => {
             // Nothing is drawn; a placeholder geometry keeps the polygon in the reports.

@@ -59,6 +59,16 @@ fn bad_scenes_are_refused_with_one_line_each() {
             r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [[0.0000001,0,0],[1000000000000,0,0],[0,1,0]]}]}"#.into(),
         ),
         (
+            // Two denominators whose lcm outgrows 128 bits (it used to overflow).
+            "coprime_denominators.json",
+            r#"{"polygons": [{"name": "coprime", "value": 1, "vertices": [["1/288230376151711717", 0, 0], ["1/100000000000000000000000000001", 4, 0], [0, 4, 0]]}]}"#.into(),
+        ),
+        (
+            // Clipping 30-digit clip-space coordinates gives raster vertices beyond 128-bit fractions.
+            "clip_space_too_fine.json",
+            r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [["0.123456789012345678901234567891", "0.2", "0.3", "1"], ["5", "0.1", "0.2", "1"], ["0.1", "7", "0.1", "0.999999999999999999999999999999"]]}]}"#.into(),
+        ),
+        (
             "perspective_negative.json",
             format!(r#"{{"effects": {{"perspective": {{"distance": -4, "near": 1}}}}, "polygons": [{TRIANGLE}]}}"#),
         ),
