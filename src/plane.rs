@@ -11,6 +11,7 @@
 
 use std::fmt;
 
+use num_bigint::BigInt;
 use num_integer::Integer;
 
 use crate::exact::Q;
@@ -48,7 +49,7 @@ pub enum GeometryError {
         value: Q,
         /// The polygon's least common denominator `D` (so far), which may
         /// itself have outgrown 128 bits.
-        denominator: num_bigint::BigInt,
+        denominator: BigInt,
     },
     /// A vertex that does not lie on the plane through the others.
     NotPlanar(Box<OffPlane>),
@@ -193,12 +194,11 @@ impl Geometry {
         for (index, vertex) in vertices.iter().enumerate() {
             for value in vertex {
                 // The lcm can outgrow i128 itself before it passes the limit.
-                let lcm = (denominator / denominator.gcd(value.denom())).checked_mul(*value.denom());
-                match lcm {
+                let factor = denominator / denominator.gcd(value.denom());
+                match factor.checked_mul(*value.denom()) {
                     Some(lcm) if lcm <= MAX_SCALED_BIG => denominator = lcm,
                     _ => {
-                        let denominator = num_bigint::BigInt::from(denominator / denominator.gcd(value.denom()))
-                            * num_bigint::BigInt::from(*value.denom());
+                        let denominator = BigInt::from(factor) * BigInt::from(*value.denom());
                         return Err(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator });
                     }
                 }
