@@ -555,14 +555,14 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         });
         let Some(mut dda) = Dda::new(a, b, 0) else { return };
         dda.skip_before(0, None);
+        let hyp = self.case.features.hyp;
         while dda.live() {
             let x = dda.at();
             if x >= self.width as i64 {
                 break;
             }
             let p = &dda.p;
-            let attributes: [S; ATTRIBUTES] =
-                std::array::from_fn(|k| if self.case.features.hyp { p[4 + k].div(&p[3]) } else { p[4 + k].clone() });
+            let attributes = || std::array::from_fn(|k| if hyp { p[4 + k].div(&p[3]) } else { p[4 + k].clone() });
             self.fragment(x, row, &p[2], attributes, primitive);
             dda.step();
         }
@@ -594,11 +594,13 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             while x < x_end {
                 let (xi, yi) = (x.to_f64() as i64, y.to_f64() as i64);
                 // The vertex's colour; (s, t) across the square from its top-left corner.
-                let attributes: [S; ATTRIBUTES] = std::array::from_fn(|k| match k {
-                    4 => x.sub(&x0).div(&width),
-                    5 => y.sub(&y0).div(&height),
-                    _ => vertex[4 + k].clone(),
-                });
+                let attributes = || {
+                    std::array::from_fn(|k| match k {
+                        4 => x.sub(&x0).div(&width),
+                        5 => y.sub(&y0).div(&height),
+                        _ => vertex[4 + k].clone(),
+                    })
+                };
                 self.fragment(xi, yi, &z, attributes, primitive);
                 x = x.add(&S::int(1));
             }
@@ -616,9 +618,10 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     }
 
     /// One fragment: bounds, the depth test, the texture, then "over" onto
-    /// the sample. `attributes` are its colour and (s, t), already divided by
-    /// the interpolated 1/w under `hyp`.
-    fn fragment(&mut self, x: i64, y: i64, z: &S, attributes: [S; ATTRIBUTES], primitive: u32) {
+    /// the sample. `attributes` gives its colour and (s, t), already divided
+    /// by the interpolated 1/w under `hyp`, computed only for a fragment that
+    /// passes the depth test.
+    fn fragment(&mut self, x: i64, y: i64, z: &S, attributes: impl FnOnce() -> [S; ATTRIBUTES], primitive: u32) {
         if x < 0 || y < 0 || x >= self.width as i64 || y >= self.height as i64 {
             return;
         }
@@ -630,6 +633,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             }
             self.depth[index] = z.clone();
         }
+        let attributes = attributes();
         let vertex: [f64; 4] = std::array::from_fn(|k| attributes[k].to_f64());
         let colour = match self.texture {
             None => vertex,
