@@ -622,6 +622,58 @@ mod tests {
         assert!(app.quit);
     }
 
+    mod random_keys {
+        use super::*;
+        use proptest::prelude::*;
+
+        fn key() -> impl Strategy<Value = KeyCode> {
+            prop_oneof![
+                prop::sample::select(vec![
+                    'n', ' ', 'b', 'p', 'P', 'g', 'f', 'z', 'm', '?', 'q', '<', '>', '[', ']', '-', '/', '0', '1', '5',
+                    '9', 'x',
+                ])
+                .prop_map(KeyCode::Char),
+                prop::sample::select(vec![
+                    KeyCode::Enter,
+                    KeyCode::Esc,
+                    KeyCode::Backspace,
+                    KeyCode::Left,
+                    KeyCode::Right,
+                    KeyCode::Up,
+                    KeyCode::Down,
+                    KeyCode::PageUp,
+                    KeyCode::PageDown,
+                ]),
+            ]
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+            /// Any keys, on any example scene, in any terminal size, with or
+            /// without the quiz: every screen draws, and nothing panics.
+            #[test]
+            fn any_keys_draw_every_screen(
+                example in prop::sample::select(vec![
+                    "rogers", "antialias", "clip_space", "perspective", "concave", "cull", "section", "transparency",
+                ]),
+                quiz in any::<bool>(),
+                size in (1u16..120, 1u16..40),
+                keys in prop::collection::vec(key(), 0..60),
+            ) {
+                let path = format!("{}/examples/{example}.json", env!("CARGO_MANIFEST_DIR"));
+                let scene = Scene::load(std::path::Path::new(&path)).unwrap();
+                let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+                let mut app = App::new(&mut tracer, None, quiz);
+                screen(&mut app, size.0, size.1);
+                for code in keys {
+                    app.key(KeyEvent::new(code, KeyModifiers::NONE));
+                    screen(&mut app, size.0, size.1);
+                }
+            }
+        }
+    }
+
     #[test]
     fn the_quiz_asks_before_each_pixel_is_shown() {
         let scene = book();
