@@ -37,15 +37,16 @@
 //!   is bound is a sprite: (s, t) runs from (0, 0) at its top-left corner to
 //!   (1, 1) at its bottom-right.
 
+mod compare;
+mod image;
 pub mod import;
 mod raster;
 
 use std::fmt;
 
-pub use raster::{
-    Arithmetic, CellDifference, Comparison, Image, ImageDifference, Primitive, Reason, compare_images, differences,
-    render,
-};
+pub use compare::{CellDifference, Comparison, Primitive, Reason, Shape, differences};
+pub use image::{Image, ImageDifference, compare_images};
+pub use raster::{Arithmetic, render};
 
 /// A problem in a CS 418 file, with its line (1-based).
 #[derive(Debug, Clone, PartialEq, Eq)]

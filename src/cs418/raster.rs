@@ -8,7 +8,9 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{ToPrimitive, Zero};
 
-use super::{Case, CaseError, Command, Number, Texture, error};
+use super::compare::{Comparison, Primitive, Shape, Span};
+use super::image::{Image, byte, linear_texels, to_srgb};
+use super::{Case, CaseError, Command, Number, error};
 
 /// The arithmetic the course's algorithm runs in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -134,135 +136,6 @@ const COMPONENTS: usize = 4 + ATTRIBUTES;
 /// Colour (r, g, b, a) and texture coordinates (s, t).
 const ATTRIBUTES: usize = 6;
 type Vertex<S> = Vec<S>;
-
-/// An RGBA image, rows from the top, 8 bits a channel.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Image {
-    /// Width in pixels.
-    pub width: u32,
-    /// Height in pixels.
-    pub height: u32,
-    /// `width × height × 4` bytes, row by row from the top.
-    pub rgba: Vec<u8>,
-}
-
-impl Image {
-    /// The four channels of pixel (x, y), y counted from the top.
-    pub fn pixel(&self, x: u32, y: u32) -> [u8; 4] {
-        let at = ((y * self.width + x) * 4) as usize;
-        [self.rgba[at], self.rgba[at + 1], self.rgba[at + 2], self.rgba[at + 3]]
-    }
-}
-
-impl Image {
-    /// The image as PNG bytes (8-bit RGBA).
-    pub fn to_png(&self) -> Vec<u8> {
-        let mut bytes = Vec::new();
-        {
-            let mut encoder = png::Encoder::new(&mut bytes, self.width, self.height);
-            encoder.set_color(png::ColorType::Rgba);
-            encoder.set_depth(png::BitDepth::Eight);
-            // Writing into a Vec cannot fail.
-            let mut writer = encoder.write_header().expect("PNG header into memory");
-            writer.write_image_data(&self.rgba).expect("PNG data into memory");
-        }
-        bytes
-    }
-
-    /// Reads a PNG (any colour type and depth png expands to 8-bit RGB or
-    /// RGBA, grey included); `Err` says why not.
-    pub fn from_png(bytes: &[u8]) -> Result<Image, String> {
-        let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
-        decoder.set_transformations(png::Transformations::normalize_to_color8() | png::Transformations::ALPHA);
-        let mut reader = decoder.read_info().map_err(|e| format!("not a PNG image ({e})"))?;
-        let size = reader.output_buffer_size().ok_or("the PNG is too large")?;
-        let mut buffer = vec![0; size];
-        let frame = reader.next_frame(&mut buffer).map_err(|e| format!("a broken PNG image ({e})"))?;
-        buffer.truncate(frame.buffer_size());
-        let rgba = match frame.color_type {
-            png::ColorType::Rgba => buffer,
-            png::ColorType::GrayscaleAlpha => buffer.chunks(2).flat_map(|c| [c[0], c[0], c[0], c[1]]).collect(),
-            other => return Err(format!("an unexpected PNG colour type {other:?}")),
-        };
-        Ok(Image { width: frame.width, height: frame.height, rgba })
-    }
-}
-
-/// One drawing command's primitive (a triangle or a point), for reports.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Primitive {
-    /// The line of the draw command.
-    pub line: usize,
-    /// The vertex indices it reads.
-    pub vertices: Vec<usize>,
-}
-
-impl fmt::Display for Primitive {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let kind = if self.vertices.len() == 1 { "point" } else { "triangle" };
-        let list: Vec<String> = self.vertices.iter().map(ToString::to_string).collect();
-        write!(f, "the {kind} of vertices {} (line {})", list.join(", "), self.line)
-    }
-}
-
-/// Where a triangle's span on one sample row begins and ends, `[left, right)`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Span {
-    /// The left end, as computed.
-    pub left: String,
-    /// The right end, as computed.
-    pub right: String,
-    /// The left end as an `f64` (for comparisons).
-    left_value: f64,
-    /// The right end as an `f64`.
-    right_value: f64,
-}
-
-impl Span {
-    fn covers(&self, x: i64) -> bool {
-        self.left_value.ceil() <= x as f64 && (x as f64) < self.right_value
-    }
-}
-
-/// A finished run: the image and, per sample, which primitive wrote it last.
-#[derive(Debug, Clone)]
-pub struct Comparison {
-    /// The image.
-    pub image: Image,
-    /// The arithmetic it ran in.
-    pub arithmetic: Arithmetic,
-    /// Samples per pixel side (`fsaa`).
-    pub level: u32,
-    /// The primitives drawn, in order; `owners` index them from 1.
-    pub primitives: Vec<Primitive>,
-    /// Per sample, row by row from the top: 0 for none, else 1 + the index
-    /// in `primitives` of the last one written.
-    owners: Vec<u32>,
-    /// Each triangle's spans by (primitive, sample row).
-    spans: BTreeMap<(u32, i64), Vec<Span>>,
-    /// What was drawn, as polygons in zsim's coordinates (see `Shape`).
-    pub shapes: Vec<Shape>,
-}
-
-/// A triangle (after clipping and culling) or a point's square as drawn, in
-/// zsim's coordinates on the sample raster: x + 1/2 and height − y − 1/2, so
-/// that the course's sample at integer (x, y) is zsim's centre of column x,
-/// row height − 1 − y, and the picture is not flipped; depth z/w.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Shape {
-    /// The primitive (1-based index into `primitives`).
-    pub primitive: u32,
-    /// Its corners as text (exact fractions in exact arithmetic).
-    pub vertices: Vec<[String; 3]>,
-}
-
-impl Comparison {
-    /// The primitive sample (x, y) shows last (1-based into `primitives`), 0
-    /// for none; x and y on the sample raster, y from the top.
-    pub fn owner(&self, x: u32, y: u32) -> u32 {
-        self.owners[(y * self.image.width * self.level + x) as usize]
-    }
-}
 
 /// Runs a case in an arithmetic.
 pub fn render(case: &Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
@@ -704,34 +577,6 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     }
 }
 
-/// A texture's texels in linear light (the file's bytes are sRGB; alpha is
-/// linear already).
-fn linear_texels(texture: &Texture) -> Vec<[f64; 4]> {
-    texture
-        .image
-        .rgba
-        .chunks_exact(4)
-        .map(|c| {
-            let [r, g, b, a] = [c[0], c[1], c[2], c[3]].map(|v| f64::from(v) / 255.0);
-            [from_srgb(r), from_srgb(g), from_srgb(b), a]
-        })
-        .collect()
-}
-
-/// The inverse of [`to_srgb`]: sRGB-encoded to linear light.
-fn from_srgb(encoded: f64) -> f64 {
-    if encoded <= 0.04045 { encoded / 12.92 } else { ((encoded + 0.055) / 1.055).powf(2.4) }
-}
-
-/// The sRGB transfer function (IEC 61966-2-1) from linear light.
-fn to_srgb(linear: f64) -> f64 {
-    if linear <= 0.0031308 { 12.92 * linear } else { 1.055 * linear.powf(1.0 / 2.4) - 0.055 }
-}
-
-fn byte(value: f64) -> u8 {
-    (value.clamp(0.0, 1.0) * 255.0).round() as u8
-}
-
 /// Whether a screen triangle's vertices run clockwise as the image shows
 /// them (y down), the front faces `cull` keeps.
 fn clockwise<S: Scalar>(v: &[Vertex<S>]) -> bool {
@@ -842,109 +687,6 @@ impl<S: Scalar> Dda<S> {
     }
 }
 
-/// How two images differ: pixels over a tolerance, and the largest difference.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ImageDifference {
-    /// Pixels with some channel differing by more than the tolerance.
-    pub pixels: Vec<(u32, u32, [u8; 4], [u8; 4])>,
-    /// The largest difference of any channel.
-    pub largest: u8,
-}
-
-/// Compares two images channel by channel; `None` when their sizes differ.
-pub fn compare_images(ours: &Image, theirs: &Image, tolerance: u8) -> Option<ImageDifference> {
-    if (ours.width, ours.height) != (theirs.width, theirs.height) {
-        return None;
-    }
-    let mut pixels = Vec::new();
-    let mut largest = 0;
-    for y in 0..ours.height {
-        for x in 0..ours.width {
-            let (a, b) = (ours.pixel(x, y), theirs.pixel(x, y));
-            let worst = a.iter().zip(&b).map(|(p, q)| p.abs_diff(*q)).max().unwrap_or(0);
-            largest = largest.max(worst);
-            if worst > tolerance {
-                pixels.push((x, y, a, b));
-            }
-        }
-    }
-    Some(ImageDifference { pixels, largest })
-}
-
-/// Why a sample came out differently in the two arithmetics.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Reason {
-    /// A triangle covers the sample in one arithmetic and not the other,
-    /// because its span on the sample's row ends on the other side of it.
-    Span {
-        /// The triangle.
-        primitive: Primitive,
-        /// Its span on the row in the course's floats (`None`: no span).
-        course: Option<(String, String)>,
-        /// Its span on the row exactly.
-        exact: Option<(String, String)>,
-        /// Whether the course's floats cover the sample (exact arithmetic
-        /// then does not, and the other way round).
-        course_covers: bool,
-    },
-    /// Both arithmetics cover the sample with the same primitives; the depth
-    /// test chose differently (two depths equal or within rounding).
-    Depth {
-        /// What the course's floats kept.
-        course: Option<Primitive>,
-        /// What exact arithmetic kept.
-        exact: Option<Primitive>,
-    },
-}
-
-/// One sample whose last writer differs between the two arithmetics.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CellDifference {
-    /// Sample column (pixel column × fsaa level + sub-sample).
-    pub x: u32,
-    /// Sample row, from the top.
-    pub y: u32,
-    /// The pixel it belongs to.
-    pub pixel: (u32, u32),
-    /// Why.
-    pub reason: Reason,
-}
-
-/// The samples whose last writer differs between a run in the course's
-/// floats and one in exact arithmetic of the same case, each with its reason.
-pub fn differences(course: &Comparison, exact: &Comparison) -> Vec<CellDifference> {
-    let width = (course.image.width * course.level) as usize;
-    let mut out = Vec::new();
-    for (index, (&a, &b)) in course.owners.iter().zip(&exact.owners).enumerate() {
-        if a == b {
-            continue;
-        }
-        let (x, y) = ((index % width) as i64, (index / width) as i64);
-        let covers =
-            |run: &Comparison, p: u32| run.spans.get(&(p, y)).is_some_and(|spans| spans.iter().any(|s| s.covers(x)));
-        let span = |run: &Comparison, p: u32| {
-            run.spans
-                .get(&(p, y))
-                .and_then(|spans| spans.iter().find(|s| s.covers(x)).or(spans.first()))
-                .map(|s| (s.left.clone(), s.right.clone()))
-        };
-        let disputed = [a, b].into_iter().filter(|&p| p != 0).find(|&p| covers(course, p) != covers(exact, p));
-        let primitive = |run: &Comparison, p: u32| (p != 0).then(|| run.primitives[p as usize - 1].clone());
-        let reason = match disputed {
-            Some(p) => Reason::Span {
-                primitive: primitive(course, p).expect("nonzero"),
-                course: span(course, p),
-                exact: span(exact, p),
-                course_covers: covers(course, p),
-            },
-            None => Reason::Depth { course: primitive(course, a), exact: primitive(exact, b) },
-        };
-        let level = i64::from(course.level);
-        out.push(CellDifference { x: x as u32, y: y as u32, pixel: ((x / level) as u32, (y / level) as u32), reason });
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1045,17 +787,5 @@ mod tests {
         .unwrap();
         let problem = render(&case, Arithmetic::DdaF64).unwrap_err().to_string();
         assert_eq!(problem, "line 5: vertex 2 is drawn with a texture, but \"texcoord\" has 2 vertices");
-    }
-
-    #[test]
-    fn srgb_transfer_matches_the_standard() {
-        assert_eq!(byte(to_srgb(0.5)), 188);
-        assert_eq!(byte(to_srgb(0.0)), 0);
-        assert_eq!(byte(to_srgb(1.0)), 255);
-        assert_eq!(byte(to_srgb(0.002)), 7);
-        for encoded in 0..=255u8 {
-            let value = f64::from(encoded) / 255.0;
-            assert_eq!(byte(to_srgb(from_srgb(value))), encoded);
-        }
     }
 }
