@@ -135,6 +135,16 @@ const REACH: f64 = 1000.0;
 const COMPONENTS: usize = 4 + ATTRIBUTES;
 /// Colour (r, g, b, a) and texture coordinates (s, t).
 const ATTRIBUTES: usize = 6;
+
+/// A fragment's colour and (s, t).
+enum Attributes<S> {
+    /// In the run's arithmetic.
+    Values([S; ATTRIBUTES]),
+    /// At a sample where the interpolated 1/w is exactly 0 (a triangle
+    /// through infinity, drawn with `hyp` but without `frustum`): each value
+    /// divided by 0 as the course's floats do it, giving infinities and NaN.
+    AtInfinity([f64; ATTRIBUTES]),
+}
 type Vertex<S> = Vec<S>;
 
 /// Runs a case in an arithmetic.
@@ -435,7 +445,11 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 break;
             }
             let p = &dda.p;
-            let attributes = || std::array::from_fn(|k| if hyp { p[4 + k].div(&p[3]) } else { p[4 + k].clone() });
+            let attributes = || match (hyp, p[3].is_zero()) {
+                (true, true) => Attributes::AtInfinity(std::array::from_fn(|k| p[4 + k].to_f64() / 0.0)),
+                (true, false) => Attributes::Values(std::array::from_fn(|k| p[4 + k].div(&p[3]))),
+                (false, _) => Attributes::Values(std::array::from_fn(|k| p[4 + k].clone())),
+            };
             self.fragment(x, row, &p[2], attributes, primitive);
             dda.step();
         }
@@ -468,11 +482,11 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 let (xi, yi) = (x.to_f64() as i64, y.to_f64() as i64);
                 // The vertex's colour; (s, t) across the square from its top-left corner.
                 let attributes = || {
-                    std::array::from_fn(|k| match k {
+                    Attributes::Values(std::array::from_fn(|k| match k {
                         4 => x.sub(&x0).div(&width),
                         5 => y.sub(&y0).div(&height),
                         _ => vertex[4 + k].clone(),
-                    })
+                    }))
                 };
                 self.fragment(xi, yi, &z, attributes, primitive);
                 x = x.add(&S::int(1));
@@ -494,7 +508,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     /// the sample. `attributes` gives its colour and (s, t), already divided
     /// by the interpolated 1/w under `hyp`, computed only for a fragment that
     /// passes the depth test.
-    fn fragment(&mut self, x: i64, y: i64, z: &S, attributes: impl FnOnce() -> [S; ATTRIBUTES], primitive: u32) {
+    fn fragment(&mut self, x: i64, y: i64, z: &S, attributes: impl FnOnce() -> Attributes<S>, primitive: u32) {
         if x < 0 || y < 0 || x >= self.width as i64 || y >= self.height as i64 {
             return;
         }
@@ -506,12 +520,17 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             }
             self.depth[index] = z.clone();
         }
-        let attributes = attributes();
-        let vertex: [f64; 4] = std::array::from_fn(|k| attributes[k].to_f64());
-        let colour = match self.texture {
+        let (vertex, texel): ([f64; 4], _) = match attributes() {
+            Attributes::Values(a) => {
+                (std::array::from_fn(|k| a[k].to_f64()), self.texture.map(|t| self.texel(t, &a[4], &a[5])))
+            }
+            Attributes::AtInfinity(a) => {
+                (std::array::from_fn(|k| a[k]), self.texture.map(|t| self.texel(t, &a[4], &a[5])))
+            }
+        };
+        let colour = match texel {
             None => vertex,
-            Some(texture) => {
-                let texel = self.texel(texture, &attributes[4], &attributes[5]);
+            Some(texel) => {
                 if self.case.features.decals {
                     let a = texel[3];
                     let mut out: [f64; 4] = std::array::from_fn(|k| texel[k] * a + vertex[k] * (1.0 - a));
@@ -536,11 +555,11 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
 
     /// The nearest texel of the bound texture to (s, t), both wrapped into
     /// 0 … 1 first (repeat); linear RGBA.
-    fn texel(&self, texture: usize, s: &S, t: &S) -> [f64; 4] {
+    fn texel<T: Scalar>(&self, texture: usize, s: &T, t: &T) -> [f64; 4] {
         let image = &self.case.textures[texture].image;
-        let at = |v: &S, size: u32| {
+        let at = |v: &T, size: u32| {
             let wrapped = v.sub(&v.floor());
-            (wrapped.mul(&S::int(i64::from(size))).floor().to_f64() as i64).clamp(0, i64::from(size) - 1) as usize
+            (wrapped.mul(&T::int(i64::from(size))).floor().to_f64() as i64).clamp(0, i64::from(size) - 1) as usize
         };
         let (column, row) = (at(s, image.width), at(t, image.height));
         self.textures[texture][row * image.width as usize + column]
@@ -776,6 +795,27 @@ mod tests {
         assert_eq!(image.pixel(0, 0), [255, 0, 0, 255]);
         assert_eq!(image.pixel(1, 0), [0, 255, 0, 255]);
         assert_eq!(image.pixel(0, 1), [0, 0, 255, 255]);
+    }
+
+    /// Found by a random file: with `hyp` and no `frustum`, a triangle whose
+    /// w changes sign passes through infinity, and at a sample where the
+    /// interpolated 1/w is exactly 0 exact arithmetic divided by zero. There
+    /// both arithmetics now give the course's floats' answer (the colour
+    /// divided by 0: NaN alpha, drawn as transparent black), and agree.
+    #[test]
+    fn a_sample_at_infinity_gets_the_floats_colour_in_both_arithmetics() {
+        let case = super::super::Case::parse(
+            "png 4 4 o.png\nhyp\nposition 4 2 1.0 0 -2 0 -1.0 0 2 2 -0.5 0 -1\ncolor 3 1 0 0 0 1 0 0 0 1\ndrawArraysTriangles 0 3",
+            &|_| Err("no textures here".into()),
+        )
+        .unwrap();
+        let (course, exact) = (render(&case, Arithmetic::DdaF64).unwrap(), render(&case, Arithmetic::Exact).unwrap());
+        assert_eq!(course.image, exact.image);
+        let at_infinity: Vec<(u32, u32)> = (0..4)
+            .flat_map(|y| (0..4).map(move |x| (x, y)))
+            .filter(|&(x, y)| exact.owner(x, y) != 0 && exact.image.pixel(x, y) == [0, 0, 0, 0])
+            .collect();
+        assert!(!at_infinity.is_empty(), "some covered sample lies at infinity");
     }
 
     #[test]
