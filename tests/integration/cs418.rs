@@ -482,6 +482,33 @@ mod never_a_panic {
             drawn_or_refused_with_its_line(&text)?;
         }
 
+        /// The import's promise on random drawings: zsim's own rasterizer,
+        /// given the imported scene, leaves in every sample the primitive the
+        /// course's pipeline shows there in exact arithmetic (where the
+        /// scene is within zsim's exact range).
+        #[test]
+        fn any_imported_drawing_draws_as_the_course_does_exactly(
+            width in 1u32..10,
+            height in 1u32..10,
+            body in drawing(),
+        ) {
+            let text = format!("png {width} {height} out.png\n{body}");
+            let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
+            let Ok(case) = Case::parse(&text, &|_| Ok(texture.clone())) else { return Ok(()) };
+            let Ok(json) = zsim::cs418::import::scene_json(&case) else { return Ok(()) };
+            let Ok(scene) = zsim::scene::Scene::from_json(&json, std::path::Path::new("imported.json")) else {
+                return Ok(());
+            };
+            let exact = render(&case, Arithmetic::Exact).unwrap();
+            let mut simulation = zsim::pipeline::Simulation::new(&scene);
+            simulation.finish(&mut zsim::trace::Unobserved);
+            for (y, row) in simulation.buffers().frame_rows().iter().enumerate() {
+                for (x, &value) in row.iter().enumerate() {
+                    prop_assert_eq!(value, exact.owner(x as u32, y as u32), "sample ({}, {})\n{}", x, y, text);
+                }
+            }
+        }
+
         #[test]
         fn any_file_is_drawn_or_refused_with_its_line(
             width in 1u32..12,
