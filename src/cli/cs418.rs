@@ -39,7 +39,8 @@ enum Cs418Command {
     },
     /// Print what the case draws as a zsim scene (gpu rules, the course's
     /// samples on zsim's pixel centres, each polygon's value its primitive's
-    /// number), for run, step, explain, check and figure.
+    /// number), for run, step, explain, check and figure. Textures change no
+    /// sample's primitive, so their files are not read.
     Import {
         /// The case file.
         case: PathBuf,
@@ -61,7 +62,8 @@ pub fn run(args: &Cs418Args, out: &mut dyn Write) -> Result<Finish, Failure> {
             run_case(case, output, *arith, compare.as_deref(), *tolerance, out)
         }
         Cs418Command::Import { case } => {
-            let scene = zsim::cs418::import::scene_json(&load(case)?).map_err(|e| located(case, e))?;
+            let scene =
+                zsim::cs418::import::scene_json(&load(case, Textures::Ignored)?).map_err(|e| located(case, e))?;
             emit(out, &scene)?;
             Ok(Finish::Ok)
         }
@@ -76,10 +78,23 @@ fn located(path: &Path, error: cs418::CaseError) -> Error {
     }
 }
 
-fn load(path: &Path) -> Result<Case, Error> {
+/// Whether a case's texture files are read.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Textures {
+    /// Read from beside the case: the image needs them.
+    Read,
+    /// Not read (each stands in as one transparent texel): what is drawn
+    /// where does not depend on them.
+    Ignored,
+}
+
+fn load(path: &Path, textures: Textures) -> Result<Case, Error> {
     let text = zsim::text::read_text(path)?;
     let folder = path.parent().unwrap_or(Path::new("."));
     let texture = |name: &str| {
+        if textures == Textures::Ignored {
+            return Ok(Image { width: 1, height: 1, rgba: vec![0; 4] });
+        }
         let file = folder.join(name);
         if !file.is_file() {
             return Err("no such file beside the case".to_string());
@@ -99,7 +114,7 @@ fn run_case(
     tolerance: u8,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
-    let case = load(path)?;
+    let case = load(path, Textures::Read)?;
     let arithmetic = match arith {
         Arith::DdaF64 => Arithmetic::DdaF64,
         Arith::Exact => Arithmetic::Exact,

@@ -153,6 +153,25 @@ fn points_match_the_reference_with_a_stand_in_for_the_missing_texture() {
     }
 }
 
+/// What is drawn where does not depend on textures, so `cs418 import` does
+/// not read them: points1 imports though its texture is not in the folder
+/// (while `cs418 run` says which file is missing).
+#[test]
+fn import_does_not_need_the_textures() {
+    let Some(dir) = cases() else { return };
+    let case = dir.join("rast-points1.txt");
+    let out = zsim(&["cs418", "import", case.to_str().unwrap()]);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert_eq!(out.stdout.matches("\"name\": \"point ").count(), 20, "{}", out.stdout);
+    let run = zsim(&["cs418", "run", case.to_str().unwrap(), "-o", env!("CARGO_TARGET_TMPDIR")]);
+    assert_eq!(run.code, 2);
+    assert!(
+        run.stderr.ends_with("line 17: texture \"block-I-orange-background.png\": no such file beside the case\n"),
+        "{}",
+        run.stderr
+    );
+}
+
 /// textures and decals need four textures that are not in the folder; with
 /// stand-ins (opaque for textures, half transparent for decals) zsim covers
 /// exactly the pixels the reference covers.
