@@ -142,4 +142,11 @@ fn usage_errors_exit_with_2() {
     assert!(run.stderr.starts_with("zsim: --tile and --threads apply to --format none"), "{}", run.stderr);
     let run = zsim_in(None, &["run", "examples/rogers.json", "--threads", "0", "--format", "none"]);
     assert_eq!((run.code, run.stdout.as_str()), (2, ""), "no thread cannot draw");
+    // Found by trying absurd arguments: a count this large ran until memory ran out.
+    let run = zsim_in(None, &["random", "--count", "99999999999"]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert_eq!(
+        run.stderr,
+        "zsim: --count 99999999999: at most 10000000 triangles (a scene that large takes about 10 GB to read back)\n"
+    );
 }
