@@ -85,13 +85,16 @@ pub(crate) fn check_planar(geometry: &Geometry) -> Result<(), GeometryError> {
         // Reported with the plane reduced to 128-bit coefficients.
         let divisor = normal.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
         let reduced = normal.clone().map(|v| (v / &divisor).to_i128());
-        let out_of_range = || GeometryError::OutOfRange {
+        // The plane or the distance does not fit the 128-bit numbers a
+        // report prints: say which vertex is off which plane, and what fits.
+        let beyond = |plane: Option<PlaneEquation>| GeometryError::NotPlanarBeyondRange {
             vertex: index + 1,
-            value: crate::exact::Q::new(point[0], geometry.scale()),
-            denominator: geometry.denominator.into(),
+            through: [1, i + 1, k + 1],
+            plane,
         };
-        let [Some(a), Some(b), Some(c)] = reduced else { return Err(out_of_range()) };
-        let plane = reduced_plane([a, b, c], p1, geometry.scale()).ok_or_else(out_of_range)?;
+        let [Some(a), Some(b), Some(c)] = reduced else { return Err(beyond(None)) };
+        let plane = reduced_plane([a, b, c], p1, geometry.scale()).ok_or_else(|| beyond(None))?;
+        let out_of_range = || beyond(Some(plane));
         let residual = residual / divisor;
         let (off_by, along_z) = if c != 0 {
             let (n, d) = (residual, big(c) * big(geometry.scale()));

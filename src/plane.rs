@@ -53,6 +53,16 @@ pub enum GeometryError {
     },
     /// A vertex that does not lie on the plane through the others.
     NotPlanar(Box<OffPlane>),
+    /// As [`GeometryError::NotPlanar`], for a polygon whose plane's
+    /// coefficients or the vertex's distance do not fit 128 bits.
+    NotPlanarBeyondRange {
+        /// 1-based vertex number.
+        vertex: usize,
+        /// The three vertices (1-based) that fix the plane.
+        through: [usize; 3],
+        /// The plane, when its coefficients fit (then the distance does not).
+        plane: Option<PlaneEquation>,
+    },
     /// Within [`MAX_SCALED_BIG`], but the polygon's depths or plane would
     /// outgrow the 128-bit numbers zsim reports (`crate::big::fits`).
     TooLargeForDepth {
@@ -97,6 +107,23 @@ impl fmt::Display for GeometryError {
                 vertex = vertex.to_string(),
                 value = crate::exact::fraction(*value)
             )),
+            GeometryError::NotPlanarBeyondRange { vertex, through: [i, j, k], plane } => f.write_str(&match plane {
+                None => words!(
+                    "geometry-off-plane-large",
+                    vertex = vertex.to_string(),
+                    i = i.to_string(),
+                    j = j.to_string(),
+                    k = k.to_string()
+                ),
+                Some(plane) => words!(
+                    "geometry-off-plane-far",
+                    vertex = vertex.to_string(),
+                    plane = plane.to_string(),
+                    i = i.to_string(),
+                    j = j.to_string(),
+                    k = k.to_string()
+                ),
+            }),
             GeometryError::NotPlanar(off) => {
                 let OffPlane { vertex, through: [i, j, k], plane, off_by, along_z } = off.as_ref();
                 let (key, off) = if *along_z {
@@ -229,12 +256,16 @@ impl Geometry {
                     .unwrap_or((0, vertices[0][0]));
                 GeometryError::OutOfRange { vertex: index + 1, value, denominator: denominator.into() }
             };
-            let normal = crate::big::newell(&points).ok_or_else(out_of_range)?;
+            // A normal beyond 128 bits gives depths beyond them too.
+            let too_large = || {
+                let GeometryError::OutOfRange { vertex, value, .. } = out_of_range() else { unreachable!() };
+                GeometryError::TooLargeForDepth { vertex, value }
+            };
+            let normal = crate::big::newell(&points).ok_or_else(too_large)?;
             let geometry = Geometry { denominator, points, normal, narrow: false, big: true };
             crate::big::check_planar(&geometry)?;
             if !crate::big::fits(&geometry) {
-                let GeometryError::OutOfRange { vertex, value, .. } = out_of_range() else { unreachable!() };
-                return Err(GeometryError::TooLargeForDepth { vertex, value });
+                return Err(too_large());
             }
             return Ok(geometry);
         }

@@ -350,3 +350,5 @@ mapping-perspective = through the perspective projection
 mapping-clip-space = from clip space onto the raster (clipping, dividing by w, the viewport)
 polygon-value-too-wide = value { $value } does not fit a { $bits }-bit framebuffer (at most { $max })
 polygon-w-too-fine = its projected coordinates are too fine for the w-buffer's exact arithmetic (use coarser coordinates or a smaller distance)
+geometry-off-plane-large = is not planar: vertex { $vertex } is off the plane through vertices { $i }, { $j }, { $k } (whose equation has coefficients beyond 128 bits)
+geometry-off-plane-far = is not planar: vertex { $vertex } is off the plane { $plane } through vertices { $i }, { $j }, { $k }, by a distance whose exact fraction needs more than 128 bits

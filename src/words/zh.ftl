@@ -342,3 +342,5 @@ mapping-perspective = 经透视投影
 mapping-clip-space = 从裁剪空间映射到光栅（裁剪、除以 w、视口变换）
 polygon-value-too-wide = 值 { $value } 超出 { $bits } 位帧缓冲器的范围（最大 { $max }）
 polygon-w-too-fine = 其投影坐标过细，w 缓冲器的精确运算无法容纳（请使用更粗的坐标或更小的距离）
+geometry-off-plane-large = 不共面：顶点 { $vertex } 不在经过顶点 { $i }、{ $j }、{ $k } 的平面上（该平面方程的系数超过 128 位）
+geometry-off-plane-far = 不共面：顶点 { $vertex } 不在经过顶点 { $i }、{ $j }、{ $k } 的平面 { $plane } 上，其距离的精确分数需要超过 128 位

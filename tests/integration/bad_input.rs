@@ -59,6 +59,16 @@ fn bad_scenes_are_refused_with_one_line_each() {
             r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [[0.0000001,0,0],[1000000000000,0,0],[0,1,0]]}]}"#.into(),
         ),
         (
+            // Found by a property: this was refused as "beyond the exact range" with a false claim.
+            "not_planar_far.json",
+            r#"{"polygons": [{"name": "bent", "value": 1, "vertices": [[0, "0.123456789012", 0], ["0.123456789012", 0, -4], [-18, "-37/9", "0.123456789012"], [7, 18, "-15.202"]]}]}"#.into(),
+        ),
+        (
+            // The plane through vertices 1-3 has 136-bit coefficients (checked apart in Python's fractions).
+            "not_planar_huge_plane.json",
+            r#"{"polygons": [{"name": "bent", "value": 1, "vertices": [["13", "-8.965147458463", "19"], ["4.36427322", "97/621", "4.601918766151"], ["-7.3178342886648", "33/600", "-4"], ["8.4723050710231", "3.0701032506", "-7.2743050146027"]]}]}"#.into(),
+        ),
+        (
             // Two denominators whose lcm outgrows 128 bits (it used to overflow).
             "coprime_denominators.json",
             r#"{"polygons": [{"name": "coprime", "value": 1, "vertices": [["1/288230376151711717", 0, 0], ["1/100000000000000000000000000001", 4, 0], [0, 4, 0]]}]}"#.into(),
