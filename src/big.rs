@@ -94,14 +94,14 @@ pub(crate) fn check_planar(geometry: &Geometry) -> Result<(), GeometryError> {
         };
         let [Some(a), Some(b), Some(c)] = reduced else { return Err(beyond(None)) };
         let plane = reduced_plane([a, b, c], p1, geometry.scale()).ok_or_else(|| beyond(None))?;
-        let out_of_range = || beyond(Some(plane));
+        let distance_too_large = || beyond(Some(plane));
         let residual = residual / divisor;
         let (off_by, along_z) = if c != 0 {
             let (n, d) = (residual, big(c) * big(geometry.scale()));
             let g = n.gcd(&d);
             match ((n / &g).to_i128(), (d / &g).to_i128()) {
                 (Some(n), Some(d)) => (crate::exact::Q::new(n, d), true),
-                _ => return Err(out_of_range()),
+                _ => return Err(distance_too_large()),
             }
         } else {
             let scale = big(geometry.scale());
@@ -112,7 +112,7 @@ pub(crate) fn check_planar(geometry: &Geometry) -> Result<(), GeometryError> {
                 / &scale;
             match value.to_i128() {
                 Some(v) => (crate::exact::Q::from_integer(v), false),
-                None => return Err(out_of_range()),
+                None => return Err(distance_too_large()),
             }
         };
         return Err(GeometryError::NotPlanar(Box::new(OffPlane {
