@@ -16,12 +16,11 @@
 use std::collections::BTreeMap;
 
 use crate::buffer::Buffers;
-use crate::depth::{Depth, DepthStepper};
+use crate::depth::{Depth, depth_at_centre};
 use crate::error::{Error, PolygonProblem};
 use crate::exact::Q;
 use crate::pipeline::{PixelRect, RasterSink, Scratch, Simulation, fate, rasterize};
 use crate::plane::Geometry;
-use crate::scan::scanline_y;
 use crate::scan::{Crossing, Span};
 use crate::scene::{Antialias, Scene};
 use crate::stages::{PixelStages, Plain, WithEffects, blend};
@@ -118,9 +117,7 @@ pub fn run_watching(
             );
             for ((y, x), covered) in sink.by_pixel {
                 // The depth of the polygon's plane at the pixel's centre, once per pixel.
-                let centre_depth =
-                    DepthStepper::start(&polygon.geometry, i128::from(x), scanline_y(y, polygon.geometry.denominator))
-                        .current();
+                let centre_depth = depth_at_centre(&polygon.geometry, x, y);
                 let decision = stages.decide(polygon, centre_depth, depth.depth(x, y), depth.frame(x, y));
                 if watch == Some((x, y)) {
                     let samples = covered.iter().map(|(sx, sy)| (sx - x * k, sy - y * k)).collect();

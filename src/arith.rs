@@ -19,7 +19,8 @@
 use std::fmt;
 use std::hint::select_unpredictable;
 
-use num_traits::{AsPrimitive, Float};
+use num_bigint::BigInt;
+use num_traits::{AsPrimitive, Float, Num, Signed};
 
 use crate::buffer::{Buffers, FrameCell, LevelCells};
 use crate::error::{Error, PolygonProblem};
@@ -571,7 +572,11 @@ impl EdgeShape {
     fn new(polygon: &crate::scene::Polygon, width: u32, height: u32) -> EdgeShape {
         let float = prepare::<f32>(&polygon.vertices, polygon.value);
         let points = &polygon.geometry.points;
-        let convex = is_convex(points);
+        let convex = if polygon.geometry.is_big() {
+            is_convex(&points.iter().map(|p| p.map(BigInt::from)).collect::<Vec<_>>())
+        } else {
+            is_convex(points)
+        };
         match (points.len(), convex) {
             (3, true) => EdgeShape::Triangle(EdgePolygon::new(&float, polygon.geometry.c(), width, height)),
             (4, true) => EdgeShape::Quad(EdgePolygon::new(&float, polygon.geometry.c(), width, height)),
@@ -583,24 +588,26 @@ impl EdgeShape {
 /// Whether a polygon (scaled integer vertices, seen from +z) is convex and
 /// winds once: every turn the same way (or straight), and its edges go up,
 /// then down, at most once each.
-fn is_convex(points: &[[i128; 3]]) -> bool {
+fn is_convex<T: Num + Ord + Clone + Signed>(points: &[[T; 3]]) -> bool {
     let n = points.len();
     let (mut left, mut right, mut direction_changes) = (false, false, 0);
     let mut last_dy = 0;
+    let dy_sign = |p: &[T; 3], q: &[T; 3]| (q[1].clone() - p[1].clone()).cmp(&T::zero()) as i32;
     for i in 0..n {
-        let [p, q, r] = [points[i], points[(i + 1) % n], points[(i + 2) % n]];
-        // Bounded by 2·(2^59)² < 2^120 (plane::MAX_SCALED_BIG, the big tier included): no overflow.
-        let turn = (q[0] - p[0]) * (r[1] - q[1]) - (q[1] - p[1]) * (r[0] - q[0]);
-        left |= turn > 0;
-        right |= turn < 0;
-        let dy = (q[1] - p[1]).signum();
+        let [p, q, r] = [&points[i], &points[(i + 1) % n], &points[(i + 2) % n]];
+        // In i128 bounded by 2·(2^35)² < 2^71 (plane::MAX_SCALED); the big tier's in BigInt.
+        let turn = (q[0].clone() - p[0].clone()) * (r[1].clone() - q[1].clone())
+            - (q[1].clone() - p[1].clone()) * (r[0].clone() - q[0].clone());
+        left |= turn.is_positive();
+        right |= turn.is_negative();
+        let dy = dy_sign(p, q);
         if dy != 0 {
             direction_changes += i32::from(last_dy != 0 && dy != last_dy);
             last_dy = dy;
         }
     }
     // Close the loop: the first edge that goes up or down against the last.
-    let first_dy = (0..n).map(|i| (points[(i + 1) % n][1] - points[i][1]).signum()).find(|d| *d != 0).unwrap_or(0);
+    let first_dy = (0..n).map(|i| dy_sign(&points[i], &points[(i + 1) % n])).find(|d| *d != 0).unwrap_or(0);
     direction_changes += i32::from(first_dy != 0 && first_dy != last_dy);
     !(left && right) && direction_changes <= 2
 }

@@ -4,18 +4,22 @@
 //! formulas themselves, every product in arbitrary-precision integers
 //! (`num-bigint`).
 //!
-//! What the tier reports is what every tier reports: crossings as
-//! `numerator / denominator` in scaled units, depths as exact fractions, the
-//! plane reduced. Those stay 128-bit numbers, which is what limits the tier:
-//! scaled coordinates up to [`crate::plane::MAX_SCALED_BIG`] (2^58), and a
-//! polygon whose depth at a pixel centre, before reduction, would need more
-//! than 2^125 is refused as beyond the exact range (`fits`).
+//! What the tier reports is what every tier reports: crossings as fractions
+//! in pixel units, depths as exact fractions, the plane reduced, all 128-bit
+//! numbers. The tier computes them from the edges' lines and the plane
+//! reduced in big integers, not from the scaled vertices: a polygon cut by
+//! clipping or divided by w has vertices over huge common denominators, but
+//! its edges and plane are those of the polygon it came from, and small. So
+//! the tier takes scaled coordinates up to [`crate::plane::MAX_SCALED_BIG`]
+//! (2^120), and refuses only a polygon whose plane, crossings or depths at
+//! pixel centres would need more than 128 bits even reduced (`fits`).
 
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{Signed, ToPrimitive, Zero};
 
 use crate::depth::Depth;
+use crate::exact::{ceil_div, floor_div};
 use crate::pipeline::{PixelRect, RasterSink};
 use crate::plane::{Geometry, GeometryError, OffPlane, PlaneEquation};
 use crate::rules::{RowRule, Rules};
@@ -126,51 +130,139 @@ pub(crate) fn check_planar(geometry: &Geometry) -> Result<(), GeometryError> {
     Ok(())
 }
 
-/// Largest depth numerator (before reduction) the tier hands on as a
-/// 128-bit [`Depth`], and largest denominator.
+/// Largest depth numerator the tier hands on as a 128-bit [`Depth`], and
+/// largest denominator; largest crossing numerator and denominator.
 const DEPTH_NUMERATOR: i128 = 1 << 125;
 const DEPTH_DENOMINATOR: i128 = 1 << 124;
+const CROSSING: i128 = 1 << 120;
 
-/// Whether what the tier reports for this polygon fits 128 bits: the plane,
-/// a crossing's numerator (`≤ 8R² + 4RD` with R the largest scaled |x|, |y|
-/// plus 2D) and the depth at any centre the polygon covers or comes within
-/// a pixel of (numerator `|c·Z₁| + |a|·Δx + |b|·Δy`, denominator `|c|·2D`).
-pub(crate) fn fits(geometry: &Geometry) -> bool {
-    let d = big(geometry.denominator);
-    let points = &geometry.points;
-    let r = points.iter().map(|p| p[0].abs().max(p[1].abs())).max().unwrap_or(0);
-    let r = big(r) + &d * 2;
-    let [x1, y1, z1] = points[0];
-    let reach =
-        |axis: usize, first: i128| big(points.iter().map(|p| (p[axis] - first).abs()).max().unwrap_or(0)) + &d * 4;
-    let crossing = &r * &r * 8 + &r * &d * 4;
-    let [a, b, c] = geometry.normal.map(|v| big(v.abs()));
-    let depth = &c * big(z1.abs()) + &a * reach(0, x1) + &b * reach(1, y1) + (&a + &b) * &d * 2;
-    let denominator = &c * &d * 2;
-    reduced_plane(geometry.normal, points[0], geometry.scale()).is_some()
-        && crossing < big(1 << 120)
-        && depth < big(DEPTH_NUMERATOR)
-        && denominator < big(DEPTH_DENOMINATOR)
+/// An edge that crosses scanlines, as the tier walks it: its ends' scaled
+/// heights and its line `αx + βy + γ = 0` in pixel units, reduced, `α > 0`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+struct Edge {
+    ends: [i128; 2],
+    line: [i128; 3],
 }
 
-/// The numerator of the exact depth at the centre `(X, Y)` (scaled units) of
-/// the polygon's plane, `z = (c·Z₁ − a(X − X₁) − b(Y − Y₁)) / (c·2D)`,
-/// multiplied out in big integers; the result is below 2^125 by [`fits`].
-fn depth_numerator(geometry: &Geometry, x: i128, y: i128) -> i128 {
-    let [a, b, c] = geometry.normal.map(big);
-    let [x1, y1, z1] = geometry.points[0];
-    let numerator = c * big(z1) - a * big(x - x1) - b * big(y - y1);
-    numerator.to_i128().expect("checked by big::fits")
+/// What the tier works from: the edges' lines and the plane `Ax + By + Cz +
+/// D = 0`, both in pixel units and reduced, whatever the polygon's common
+/// denominator. A clipped or divided polygon's vertices carry large
+/// denominators, but its edges and plane are those of the polygon it was cut
+/// from and stay small, and so do the crossings and depths computed from them.
+/// Made once, with the geometry ([`Geometry::is_big`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Lines {
+    edges: Vec<Edge>,
+    plane: PlaneEquation,
 }
 
-/// The crossings of the polygon's edges with the scanline at scaled height
-/// `scan_y`, sorted left to right ([`scan::crossings`], sorted here in big
-/// integers: the products of two crossings' numerators and denominators
-/// outgrow i128 on this tier).
-fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
-    // Each numerator stays below 2^120 by `fits`.
-    scan::unsorted_crossings(points, scan_y, rule, out);
-    out.sort_by(|p, q| (big(p.numerator) * big(q.denominator)).cmp(&(big(q.numerator) * big(p.denominator))));
+/// `Σ aᵢ·bᵢ` exactly: in `i128` while no step overflows, else in big
+/// integers; `None` when the sum itself does not fit `i128`.
+fn sum_of_products(terms: &[(i128, i128)]) -> Option<i128> {
+    let fast = terms.iter().try_fold(0i128, |sum, &(a, b)| sum.checked_add(a.checked_mul(b)?));
+    fast.or_else(|| terms.iter().map(|&(a, b)| big(a) * big(b)).sum::<BigInt>().to_i128())
+}
+
+/// Whether `|v| < limit`, for a value that may not have fit `i128` (`None`).
+fn below(v: Option<i128>, limit: i128) -> bool {
+    v.is_some_and(|v| v.unsigned_abs() < limit.unsigned_abs())
+}
+
+/// The line through scaled points `p` and `q` (`p_y ≠ q_y`) in pixel units,
+/// reduced, `α > 0`; `None` when it does not fit `i128`. In scaled units it
+/// is `ΔY·X − ΔX·Y + (ΔX·Y₁ − ΔY·X₁) = 0`, and `X = 2D·x`, `Y = 2D·y`.
+fn reduced_line(p: [i128; 3], q: [i128; 3], scale: i128) -> Option<[i128; 3]> {
+    let words = || {
+        let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+        let line = [
+            dy.checked_mul(scale)?,
+            dx.checked_mul(scale)?.checked_neg()?,
+            sum_of_products(&[(dx, p[1]), (-dy, p[0])])?,
+        ];
+        line.iter().all(|v| *v != i128::MIN).then_some(line)
+    };
+    if let Some(mut line) = words() {
+        let divisor = line.iter().fold(0i128, |g, v| g.gcd(v)) * line[0].signum();
+        for v in &mut line {
+            *v /= divisor;
+        }
+        return Some(line);
+    }
+    let (dx, dy) = (big(q[0]) - big(p[0]), big(q[1]) - big(p[1]));
+    let gamma = &dx * big(p[1]) - &dy * big(p[0]);
+    let mut line = [&dy * big(scale), -(&dx * big(scale)), gamma];
+    let divisor = line.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
+    let divisor = if line[0].is_negative() { -divisor } else { divisor };
+    let [alpha, beta, gamma] = line.each_mut().map(|v| (&*v / &divisor).to_i128());
+    Some([alpha?, beta?, gamma?])
+}
+
+impl Lines {
+    /// The plane, reduced (as [`Geometry::plane`]).
+    pub(crate) fn plane(&self) -> PlaneEquation {
+        self.plane
+    }
+
+    /// The lines, or `None` when a crossing or a depth at a centre within a
+    /// pixel of the polygon could need more than 128 bits: a crossing
+    /// `−(β(2r + 1) + 2γ) / 2α` at any row `r` the edge reaches, a depth
+    /// `−(A(2x + 1) + B(2y + 1) + 2D) / 2C` at the centre of any pixel
+    /// `(x, y)` within one pixel of the polygon's bounding box. Both
+    /// numerators are linear, so they are largest at the ends of those
+    /// ranges, where they are checked.
+    pub(crate) fn new(geometry: &Geometry) -> Option<Lines> {
+        let plane = reduced_plane(geometry.normal, geometry.points[0], geometry.scale())?;
+        let (scale, d) = (geometry.scale(), geometry.denominator);
+        let points = &geometry.points;
+        let mut edges = Vec::with_capacity(points.len());
+        for (i, p) in points.iter().enumerate() {
+            let q = points[(i + 1) % points.len()];
+            if p[1] == q[1] {
+                continue;
+            }
+            let [alpha, beta, gamma] = reduced_line(*p, q, scale)?;
+            // The rows whose scanlines (2r + 1)·D lie within the edge's heights, under any rule.
+            let (low, high) = (p[1].min(q[1]), p[1].max(q[1]));
+            let rows = [ceil_div(low - d, scale), floor_div(high - d, scale).0];
+            let numerator = |r: i128| sum_of_products(&[(beta, 2 * r + 1), (gamma, 2)]);
+            if !rows.iter().all(|&r| below(numerator(r), CROSSING)) || !below(alpha.checked_mul(2), CROSSING) {
+                return None;
+            }
+            edges.push(Edge { ends: [low, high], line: [alpha, beta, gamma] });
+        }
+        // The pixels within one of the polygon's bounding box, along x and along y.
+        let reach = |axis: usize| {
+            let values = points.iter().map(|p| p[axis]);
+            let (low, high) = (values.clone().min().unwrap_or(0), values.max().unwrap_or(0));
+            [floor_div(low, scale).0 - 1, floor_div(high, scale).0 + 1]
+        };
+        let PlaneEquation { a, b, c, d } = plane;
+        let depth = |x: i128, y: i128| sum_of_products(&[(a, 2 * x + 1), (b, 2 * y + 1), (d, 2)]);
+        let fits = reach(0).iter().all(|&x| reach(1).iter().all(|&y| below(depth(x, y), DEPTH_NUMERATOR)));
+        (fits && below(c.checked_mul(2), DEPTH_DENOMINATOR)).then_some(Lines { edges, plane })
+    }
+
+    /// The crossings with the scanline at scaled height `scan_y`, row `row`,
+    /// sorted left to right (as [`scan::crossings`] computes them from the
+    /// vertices).
+    fn crossings(&self, row: u32, scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
+        out.clear();
+        for edge in &self.edges {
+            let [low, high] = edge.ends;
+            let crosses = match rule {
+                RowRule::HalfOpen => low <= scan_y && scan_y < high,
+                RowRule::Closed => low <= scan_y && scan_y <= high,
+                RowRule::TopLeft => low < scan_y && scan_y <= high,
+            };
+            if crosses {
+                // αx = −(βy + γ) at y = (2r + 1)/2; below 2^120 by `Lines::new`.
+                let [alpha, beta, gamma] = edge.line;
+                let numerator = -(beta * (2 * i128::from(row) + 1) + 2 * gamma);
+                out.push(Crossing { numerator, denominator: 2 * alpha });
+            }
+        }
+        out.sort_unstable_by(Crossing::cmp_position);
+    }
 }
 
 /// Draws a polygon of the big-integer tier: the same events, in the same
@@ -183,30 +275,28 @@ pub(crate) fn rasterize<S: RasterSink>(
     sink: &mut S,
 ) {
     let Some(rows) = scan::rows(&geometry.points, geometry.denominator, rect.rows, rules.rows) else { return };
-    // Below DEPTH_DENOMINATOR and DEPTH_NUMERATOR by `fits`.
-    let denominator = geometry.c() * geometry.scale();
-    let step = geometry.normal[0] * geometry.scale();
+    let lines = geometry.lines().expect("a polygon of the big-integer tier has its lines");
+    let PlaneEquation { a, b, c, d } = lines.plane;
     for row in rows {
         let scan_y = scan::scanline_y(row, geometry.denominator);
-        crossings(&geometry.points, scan_y, rules.rows, found);
+        lines.crossings(row, scan_y, rules.rows, found);
         spans.clear();
         spans.extend(scan::pairs(found.len(), rules.rows).map(|(i, j)| Span {
             left: found[i],
             right: found[j],
-            columns: scan::columns(found[i], found[j], geometry.denominator, rect.columns, rules.columns),
+            columns: scan::columns(found[i], found[j], rect.columns, rules.columns),
         }));
         if S::OBSERVES_SCANLINES {
             sink.scanline(row, found, spans);
         }
         for span in spans.iter() {
             if let Some((first, last)) = span.columns {
-                // The first centre's depth multiplied out, then z₁ = z − a/c per
-                // column: the numerator falls by a·2D (all below 2^125 by `fits`).
-                let centre = (2 * i128::from(first) + 1) * geometry.denominator;
-                let mut numerator = depth_numerator(geometry, centre, scan_y);
+                // z = −(Ax + By + D)/C at the first centre, then z₁ = z − A/C per
+                // column (all below 2^125 by `Lines::new`).
+                let mut numerator = -(a * (2 * i128::from(first) + 1) + b * (2 * i128::from(row) + 1) + 2 * d);
                 for x in first..=last {
-                    sink.pixel(x, row, Depth::from_fraction(numerator, denominator));
-                    numerator -= step;
+                    sink.pixel(x, row, Depth::from_fraction(numerator, 2 * c));
+                    numerator -= 2 * a;
                 }
             }
         }
@@ -225,7 +315,7 @@ mod tests {
 
     impl RasterSink for Values {
         fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
-            let xs: Vec<Q> = crossings.iter().map(|c| Q::new(c.numerator, c.denominator)).collect();
+            let xs: Vec<Q> = crossings.iter().map(|c| c.x()).collect();
             let columns: Vec<_> = spans.iter().map(|s| s.columns).collect();
             self.0.push(format!("row {row}: {xs:?} {columns:?}"));
         }

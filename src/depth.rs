@@ -6,7 +6,7 @@ use std::cmp::Ordering;
 use serde::{Deserialize, Serialize};
 
 use crate::exact::{Q, Word, cmp_fractions, exact_and_places, floor_div};
-use crate::plane::Geometry;
+use crate::plane::{Geometry, PlaneEquation};
 use crate::rules::DepthStore;
 
 /// A value held by one z-buffer cell.
@@ -398,23 +398,43 @@ impl<W: Word> DepthStepper<W> {
     }
 }
 
+/// The exact depth at the centre of pixel `(column, row)` of a polygon whose
+/// Newell `c` is non-zero, on any tier: as [`DepthStepper::start`] starts
+/// there, or on the big-integer tier from the reduced plane,
+/// `z = −(A(2x + 1) + B(2y + 1) + 2D) / 2C` (within 128 bits at every centre
+/// within a pixel of the polygon: checked when the polygon was made).
+pub fn depth_at_centre(geometry: &Geometry, column: u32, row: u32) -> Depth {
+    if geometry.is_big() {
+        let PlaneEquation { a, b, c, d } = geometry.plane();
+        let numerator = -(a * (2 * i128::from(column) + 1) + b * (2 * i128::from(row) + 1) + 2 * d);
+        return Depth::from_fraction(numerator, 2 * c);
+    }
+    DepthStepper::start(geometry, i128::from(column), crate::scan::scanline_y(row, geometry.denominator)).current()
+}
+
 /// The exact depth of a polygon's plane at any point given in polygon units
-/// (for reports: span ends, explanations). `None` when the plane has no z
-/// term, or when the exact value does not fit `i128` (possible for a point
-/// that is not a pixel centre, such as an edge crossing, with coordinates
-/// near the exact range's limit: reports then say so instead of a number).
+/// (for reports: span ends, explanations), from the reduced plane
+/// `z = −(Ax + By + D)/C` multiplied out in big integers. `None` when the
+/// plane has no z term, or when the exact value, reduced, does not fit
+/// `i128` (possible for a point that is not a pixel centre, such as an edge
+/// crossing, of a polygon near the exact range's limit: reports then say so
+/// instead of a number).
 pub fn depth_at(geometry: &Geometry, x: Q, y: Q) -> Option<Q> {
-    use num_traits::{CheckedAdd, CheckedDiv, CheckedMul, CheckedSub};
-    let [a, b, c] = geometry.normal;
+    use num_bigint::BigInt;
+    use num_integer::Integer;
+    use num_traits::ToPrimitive;
+    let PlaneEquation { a, b, c, d } = geometry.plane();
     if c == 0 {
         return None;
     }
-    let scale = Q::from_integer(geometry.scale());
-    let [x1, y1, z1] = geometry.points[0].map(Q::from_integer);
-    let along_x = Q::from_integer(a).checked_mul(&x.checked_mul(&scale)?.checked_sub(&x1)?)?;
-    let along_y = Q::from_integer(b).checked_mul(&y.checked_mul(&scale)?.checked_sub(&y1)?)?;
-    let z = z1.checked_sub(&along_x.checked_add(&along_y)?.checked_div(&Q::from_integer(c))?)?;
-    z.checked_div(&scale)
+    // −(A·x + B·y + D)/C over the common denominator x_d·y_d, in big integers.
+    let big = |v: &i128| BigInt::from(*v);
+    let (xn, xd, yn, yd) = (big(x.numer()), big(x.denom()), big(y.numer()), big(y.denom()));
+    let numerator = -(big(&a) * &xn * &yd + big(&b) * &yn * &xd + big(&d) * &xd * &yd);
+    let denominator = big(&c) * &xd * &yd;
+    let divisor = numerator.gcd(&denominator);
+    let (numerator, denominator) = ((numerator / &divisor).to_i128()?, (denominator / &divisor).to_i128()?);
+    Some(Q::new(numerator, denominator))
 }
 
 #[cfg(test)]

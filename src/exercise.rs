@@ -148,9 +148,8 @@ impl Observer for CaseFinder {
                 )
             });
         }
-        let scale = event.polygon.geometry.scale();
         for crossing in event.crossings {
-            let x = crossing.x(scale);
+            let x = crossing.x();
             let doubled = x * Q::from_integer(2);
             if doubled.is_integer() && doubled.to_integer() % 2 != 0 {
                 let column = (doubled.to_integer() - 1) / 2;

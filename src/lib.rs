@@ -50,8 +50,8 @@
 //!   within [`plane::MAX_SCALED`] on `i128`; the same code, with the same
 //!   results (`pipeline::tests::both_words_rasterize_alike`). Larger ones run
 //!   on the big-integer tier ([`big`]: the formulas in arbitrary-precision
-//!   integers, same results, `big::tests::the_big_tier_rasterizes_as_the_words_do`);
-//!   only what no 128-bit report can hold is refused ([`plane::MAX_SCALED_BIG`]).
+//!   integers, same results, the same proptest); only what no 128-bit report
+//!   can hold is refused ([`plane::MAX_SCALED_BIG`], [`big`]).
 //!
 //! # Example
 //!

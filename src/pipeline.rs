@@ -148,7 +148,7 @@ fn rasterize_in<W: Word, S: RasterSink>(
                     if S::OBSERVES_SCANLINES {
                         let (crossings, spans) = (&mut *events.0, &mut *events.1);
                         crossings.clear();
-                        crossings.extend(found.iter().map(RowCrossing::crossing));
+                        crossings.extend(found.iter().map(|c| c.crossing(geometry.scale())));
                         spans.clear();
                         spans.extend(pairs.clone().map(|(i, j)| Span {
                             left: crossings[i],
@@ -781,7 +781,7 @@ mod tests {
     impl RasterSink for Collect {
         fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
             // Values: crossings at the same x may come in either order, over different denominators.
-            let x = |c: &Crossing| Q::new(c.numerator, c.denominator);
+            let x = |c: &Crossing| c.x();
             let crossings: Vec<Q> = crossings.iter().map(x).collect();
             let spans: Vec<_> = spans.iter().map(|s| (x(&s.left), x(&s.right), s.columns)).collect();
             self.0.push(format!("row {row}: {crossings:?} {spans:?}"));

@@ -28,8 +28,11 @@ pub const MAX_SCALED: i128 = 1 << 34;
 /// ([`Geometry::is_big`]): polygons beyond [`MAX_SCALED`] are drawn by a
 /// rasterizer that multiplies in arbitrary-precision integers
 /// (`crate::big`), as long as what it reports (crossings, depths, the
-/// plane) still fits the 128-bit numbers the rest of zsim speaks.
-pub const MAX_SCALED_BIG: i128 = 1 << 58;
+/// plane, all reduced) still fits the 128-bit numbers the rest of zsim
+/// speaks. Sums and differences of two scaled coordinates (and scanline
+/// heights, which lie within the polygon) then fit `i128`; every product
+/// of them is taken in big integers.
+pub const MAX_SCALED_BIG: i128 = 1 << 120;
 
 /// Most vertices one polygon may have.
 pub const MAX_VERTICES: usize = 1 << 16;
@@ -63,8 +66,9 @@ pub enum GeometryError {
         /// The plane, when its coefficients fit (then the distance does not).
         plane: Option<PlaneEquation>,
     },
-    /// Within [`MAX_SCALED_BIG`], but the polygon's depths or plane would
-    /// outgrow the 128-bit numbers zsim reports (`crate::big::fits`).
+    /// Within [`MAX_SCALED_BIG`], but the polygon's plane, an edge's
+    /// crossings or its depths, reduced, would outgrow the 128-bit numbers
+    /// zsim reports (`crate::big::fits`).
     TooLargeForDepth {
         /// 1-based vertex with the largest coordinate.
         vertex: usize,
@@ -198,9 +202,9 @@ pub struct Geometry {
     pub normal: [i128; 3],
     /// Whether the rasterizer's integers fit 64 bits ([`Geometry::fits_i64`]).
     narrow: bool,
-    /// Whether the polygon is beyond [`MAX_SCALED`] and runs on the
-    /// big-integer tier ([`Geometry::is_big`]).
-    big: bool,
+    /// For a polygon beyond [`MAX_SCALED`], which runs on the big-integer
+    /// tier ([`Geometry::is_big`]): its edges' lines and plane, reduced.
+    big: Option<Box<crate::big::Lines>>,
 }
 
 impl Geometry {
@@ -262,15 +266,14 @@ impl Geometry {
                 GeometryError::TooLargeForDepth { vertex, value }
             };
             let normal = crate::big::newell(&points).ok_or_else(too_large)?;
-            let geometry = Geometry { denominator, points, normal, narrow: false, big: true };
+            let mut geometry = Geometry { denominator, points, normal, narrow: false, big: None };
             crate::big::check_planar(&geometry)?;
-            if !crate::big::fits(&geometry) {
-                return Err(too_large());
-            }
+            let lines = crate::big::Lines::new(&geometry).ok_or_else(too_large)?;
+            geometry.big = Some(Box::new(lines));
             return Ok(geometry);
         }
         let normal = newell(&points);
-        let mut geometry = Geometry { denominator, points, normal, narrow: false, big: false };
+        let mut geometry = Geometry { denominator, points, normal, narrow: false, big: None };
         geometry.check_planar()?;
         geometry.narrow = geometry.bounds_fit_i64();
         Ok(geometry)
@@ -281,7 +284,9 @@ impl Geometry {
     #[cfg(test)]
     pub(crate) fn on_big_tier(&self) -> Geometry {
         let normal = crate::big::newell(&self.points).expect("a small polygon's normal fits");
-        Geometry { normal, big: true, narrow: false, ..self.clone() }
+        let geometry = Geometry { normal, big: None, narrow: false, ..self.clone() };
+        let lines = crate::big::Lines::new(&geometry).expect("a small polygon's lines fit");
+        Geometry { big: Some(Box::new(lines)), ..geometry }
     }
 
     /// Whether the polygon lies beyond [`MAX_SCALED`], where the word-sized
@@ -289,7 +294,12 @@ impl Geometry {
     /// (`crate::big`), exactly, more slowly, with the same rules and results.
     /// Its normal is Newell's reduced by the components' common divisor.
     pub fn is_big(&self) -> bool {
-        self.big
+        self.big.is_some()
+    }
+
+    /// The edges' lines and the plane of a polygon on the big-integer tier.
+    pub(crate) fn lines(&self) -> Option<&crate::big::Lines> {
+        self.big.as_deref()
     }
 
     /// The scale factor `2D` between polygon units and scaled units.
@@ -345,6 +355,9 @@ impl Geometry {
     /// The plane through vertex 1 with Newell's normal, in the polygon's own
     /// units, reduced.
     pub fn plane(&self) -> PlaneEquation {
+        if let Some(lines) = &self.big {
+            return lines.plane();
+        }
         reduced_plane(self.normal, self.points[0], self.scale())
     }
 
@@ -426,8 +439,8 @@ pub fn newell(points: &[[i128; 3]]) -> [i128; 3] {
 mod tests {
     use super::*;
 
-    fn q(values: &[[i64; 3]]) -> Vec<[Q; 3]> {
-        values.iter().map(|v| v.map(|c| Q::from_integer(c as i128))).collect()
+    fn q(values: &[[i128; 3]]) -> Vec<[Q; 3]> {
+        values.iter().map(|v| v.map(Q::from_integer)).collect()
     }
 
     #[test]
@@ -484,9 +497,9 @@ mod tests {
         assert!(!Geometry::new(&q(&[[0, 0, 0], [-(1 << 33), 0, 0], [0, 1, 0]])).unwrap().is_big());
         // One more: the big-integer tier draws it.
         assert!(Geometry::new(&q(&[[0, 0, 0], [(1 << 33) + 1, 0, 0], [0, 1, 0]])).unwrap().is_big());
-        // Past MAX_SCALED_BIG (2^57 scaled by 2): refused, naming the vertex.
-        assert!(Geometry::new(&q(&[[0, 0, 0], [1 << 57, 0, 0], [0, 1, 0]])).unwrap().is_big());
-        let err = Geometry::new(&q(&[[0, 0, 0], [(1 << 57) + 1, 0, 0], [0, 1, 0]])).unwrap_err();
+        // Past MAX_SCALED_BIG (2^119 scaled by 2): refused, naming the vertex.
+        assert!(Geometry::new(&q(&[[0, 0, 0], [1 << 119, 0, 0], [0, 1, 0]])).unwrap().is_big());
+        let err = Geometry::new(&q(&[[0, 0, 0], [(1 << 119) + 1, 0, 0], [0, 1, 0]])).unwrap_err();
         assert!(matches!(err, GeometryError::OutOfRange { vertex: 2, .. }), "{err:?}");
     }
 }

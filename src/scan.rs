@@ -6,28 +6,31 @@ use std::cmp::Ordering;
 use std::hint::select_unpredictable;
 use std::ops::RangeInclusive;
 
-use crate::exact::{Q, Word, ceil_div, floor_div};
+use crate::exact::{Q, Word, ceil_div, cmp_fractions, floor_div};
 use crate::rules::{ColumnRule, RowRule};
 
-/// An x position in scaled units as the fraction `numerator / denominator`
-/// (`denominator > 0`), where a crossing falls on a scanline.
+/// An x position in pixel units as the fraction `numerator / denominator`
+/// (`denominator > 0`, not necessarily reduced), where a crossing falls on a
+/// scanline: what every tier reports. Both parts stay below 2^120 (the word
+/// tiers: a numerator of at most `6R²` over `2R·2D`; the big-integer tier:
+/// checked when the polygon is made, `crate::big`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Crossing {
-    /// Numerator, in scaled units; at most `6R²` in magnitude.
+    /// Numerator, in pixel units.
     pub numerator: i128,
-    /// Positive denominator, at most `2R`.
+    /// Positive denominator.
     pub denominator: i128,
 }
 
 impl Crossing {
-    /// The position in pixel units, given the polygon's scale `2D`.
-    pub fn x(self, scale: i128) -> Q {
-        Q::new(self.numerator, self.denominator * scale)
+    /// The position in pixel units, reduced.
+    pub fn x(self) -> Q {
+        Q::new(self.numerator, self.denominator)
     }
 
-    fn cmp_position(&self, other: &Crossing) -> Ordering {
-        // Both products are below 6R²·2R < 2^107.
-        (self.numerator * other.denominator).cmp(&(other.numerator * self.denominator))
+    /// Compares two positions without overflow.
+    pub fn cmp_position(&self, other: &Crossing) -> Ordering {
+        cmp_fractions(self.numerator, self.denominator, other.numerator, other.denominator)
     }
 }
 
@@ -92,8 +95,9 @@ pub fn rows(points: &[[i128; 3]], denominator: i128, limit: (u32, u32), rule: Ro
     clip_rows(first_row_from(y_min, denominator, rule), last_row_to(y_max, denominator, rule), limit)
 }
 
-/// The crossings of the polygon's edges with the scanline at scaled height
-/// `scan_y`, sorted left to right, written into `out`.
+/// The crossings of the polygon's edges (scaled `points`, scale `2D`) with
+/// the scanline at scaled height `scan_y`, sorted left to right, written into
+/// `out`.
 ///
 /// Rogers' half-interval convention ([`RowRule::HalfOpen`]): an edge crosses
 /// when `min(y₁, y₂) ≤ y < max(y₁, y₂)`, so a vertex on the scanline counts
@@ -101,14 +105,11 @@ pub fn rows(points: &[[i128; 3]], denominator: i128, limit: (u32, u32), rule: Ro
 /// crosses when `min(y₁, y₂) ≤ y ≤ max(y₁, y₂)`, with [`RowRule::TopLeft`]
 /// when `min(y₁, y₂) < y ≤ max(y₁, y₂)` (a vertex counts for the edge whose
 /// upper end it is). Horizontal edges never cross.
-pub fn crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
-    unsorted_crossings(points, scan_y, rule, out);
-    out.sort_unstable_by(Crossing::cmp_position);
-}
-
-/// [`crossings`] in the order of the edges, for a caller that sorts them
-/// itself (the big-integer tier, whose products outgrow `cmp_position`).
-pub(crate) fn unsorted_crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
+///
+/// Computed by the formula on the polygon's word-sized scaled coordinates
+/// (within [`crate::plane::MAX_SCALED`]): the independent reference the edge
+/// walker ([`EdgeTable`]) is tested against.
+pub fn crossings(points: &[[i128; 3]], scan_y: i128, scale: i128, rule: RowRule, out: &mut Vec<Crossing>) {
     out.clear();
     let count = points.len();
     for i in 0..count {
@@ -126,8 +127,9 @@ pub(crate) fn unsorted_crossings(points: &[[i128; 3]], scan_y: i128, rule: RowRu
         let (numerator, denominator) = (x1 * (y2 - y1) + (x2 - x1) * (scan_y - y1), y2 - y1);
         let (numerator, denominator) =
             if denominator < 0 { (-numerator, -denominator) } else { (numerator, denominator) };
-        out.push(Crossing { numerator, denominator });
+        out.push(Crossing { numerator, denominator: denominator * scale });
     }
+    out.sort_unstable_by(Crossing::cmp_position);
 }
 
 /// One edge walked down the scanlines. Its crossing `numerator / denominator`
@@ -173,15 +175,16 @@ pub struct RowCrossing<W> {
 }
 
 impl<W: Word> RowCrossing<W> {
-    /// The crossing as reported to observers.
-    pub fn crossing(&self) -> Crossing {
-        Crossing { numerator: self.numerator.wide(), denominator: self.denominator.wide() }
+    /// The crossing as reported to observers, in pixel units (the polygon's
+    /// scale is `2D`): below `6R²` over `2R·2D`.
+    pub fn crossing(&self, scale: i128) -> Crossing {
+        Crossing { numerator: self.numerator.wide(), denominator: self.denominator.wide() * scale }
     }
 
     /// Compares the positions of two crossings on the same row.
     #[inline]
     pub fn cmp_position(&self, other: &Self) -> Ordering {
-        // Below 2^107 in i128 (see Crossing), below 2^61 in i64 (Geometry::fits_i64).
+        // Below 6R²·2R < 2^107 in i128, below 2^61 in i64 (Geometry::fits_i64).
         (self.numerator * other.denominator).cmp(&(other.numerator * self.denominator))
     }
 }
@@ -428,30 +431,24 @@ pub fn clip_columns<W: Word>(first: W, last: W, limit: (u32, u32)) -> Option<(u3
 /// `[left, right]`, boundary included ("the pixel whose centre lies inside or
 /// on the boundary"); with [`ColumnRule::HalfOpen`] those within
 /// `[left, right)`; with [`ColumnRule::CellHolds`] from `⌊left⌋` to `⌊right⌋`.
-pub fn columns(
-    left: Crossing,
-    right: Crossing,
-    denominator: i128,
-    limit: (u32, u32),
-    rule: ColumnRule,
-) -> Option<(u32, u32)> {
+pub fn columns(left: Crossing, right: Crossing, limit: (u32, u32), rule: ColumnRule) -> Option<(u32, u32)> {
+    // The centre x + 1/2 against n/d: 2x + 1 ≥ 2n/d  ⇔  x ≥ (2n − d)/2d (both below 2^122).
+    let centred = |c: Crossing| (2 * c.numerator - c.denominator, 2 * c.denominator);
     let (first, last) = match rule {
         ColumnRule::CentreInside => (
-            // (2x + 1)·D ≥ n/d  ⇔  x ≥ ⌈(n − D·d) / 2D·d⌉
-            ceil_div(left.numerator - denominator * left.denominator, 2 * denominator * left.denominator),
-            // (2x + 1)·D ≤ n/d  ⇔  x ≤ ⌊(n − D·d) / 2D·d⌋
-            floor_div(right.numerator - denominator * right.denominator, 2 * denominator * right.denominator).0,
+            ceil_div(centred(left).0, centred(left).1),
+            // 2x + 1 ≤ 2n/d  ⇔  x ≤ ⌊(2n − d)/2d⌋
+            floor_div(centred(right).0, centred(right).1).0,
         ),
         ColumnRule::HalfOpen => (
-            ceil_div(left.numerator - denominator * left.denominator, 2 * denominator * left.denominator),
-            // (2x + 1)·D < n/d  ⇔  x ≤ ⌈(n − D·d) / 2D·d⌉ − 1
-            ceil_div(right.numerator - denominator * right.denominator, 2 * denominator * right.denominator) - 1,
+            ceil_div(centred(left).0, centred(left).1),
+            // 2x + 1 < 2n/d  ⇔  x ≤ ⌈(2n − d)/2d⌉ − 1
+            ceil_div(centred(right).0, centred(right).1) - 1,
         ),
-        // x = n / (2D·d) in pixel units: the cell holding it is ⌊n / 2D·d⌋.
-        ColumnRule::CellHolds => (
-            floor_div(left.numerator, 2 * denominator * left.denominator).0,
-            floor_div(right.numerator, 2 * denominator * right.denominator).0,
-        ),
+        // The cell holding x = n/d is ⌊n/d⌋.
+        ColumnRule::CellHolds => {
+            (floor_div(left.numerator, left.denominator).0, floor_div(right.numerator, right.denominator).0)
+        }
     };
     clip_columns(first, last, limit)
 }
@@ -467,8 +464,8 @@ mod tests {
 
     fn crossing_xs(points: &[[i128; 3]], row: u32) -> Vec<Q> {
         let mut out = Vec::new();
-        crossings(points, scanline_y(row, 1), RowRule::HalfOpen, &mut out);
-        out.iter().map(|c| c.x(2)).collect()
+        crossings(points, scanline_y(row, 1), 2, RowRule::HalfOpen, &mut out);
+        out.iter().map(|c| c.x()).collect()
     }
 
     #[test]
@@ -477,9 +474,9 @@ mod tests {
         let points: Vec<[i128; 3]> = [[4, 1], [6, 5], [4, 9], [2, 5]].iter().map(|p| [p[0], p[1], 0]).collect();
         // In scaled units with D = 1 a point at y = 5 is y = 2.5.
         let mut out = Vec::new();
-        crossings(&points, 5, RowRule::HalfOpen, &mut out);
+        crossings(&points, 5, 2, RowRule::HalfOpen, &mut out);
         assert_eq!(out.len(), 2, "each side vertex counts once, for the edge it is the lower end of");
-        assert_eq!(out.iter().map(|c| c.x(2)).collect::<Vec<_>>(), vec![Q::from_integer(1), Q::from_integer(3)]);
+        assert_eq!(out.iter().map(|c| c.x()).collect::<Vec<_>>(), vec![Q::from_integer(1), Q::from_integer(3)]);
     }
 
     #[test]
@@ -487,9 +484,9 @@ mod tests {
         // Triangle with apex exactly at y = 2.5 (scaled 5): the apex is the upper end of both edges.
         let points: Vec<[i128; 3]> = [[0, 1], [8, 1], [4, 5]].iter().map(|p| [p[0], p[1], 0]).collect();
         let mut out = Vec::new();
-        crossings(&points, 5, RowRule::HalfOpen, &mut out);
+        crossings(&points, 5, 2, RowRule::HalfOpen, &mut out);
         assert!(out.is_empty());
-        crossings(&points, 1, RowRule::HalfOpen, &mut out);
+        crossings(&points, 1, 2, RowRule::HalfOpen, &mut out);
         assert_eq!(out.len(), 2, "the base's scanline counts the two edges whose lower end is on it");
     }
 
@@ -503,31 +500,31 @@ mod tests {
     #[test]
     fn centre_on_right_edge_is_covered() {
         // Span [0.5, 2.5] covers centres 0.5, 1.5 and 2.5: both boundaries included.
-        let left = Crossing { numerator: 1, denominator: 1 };
-        let right = Crossing { numerator: 5, denominator: 1 };
-        assert_eq!(columns(left, right, 1, (0, 31), ColumnRule::CentreInside), Some((0, 2)));
+        let left = Crossing { numerator: 1, denominator: 2 };
+        let right = Crossing { numerator: 5, denominator: 2 };
+        assert_eq!(columns(left, right, (0, 31), ColumnRule::CentreInside), Some((0, 2)));
     }
 
     #[test]
     fn span_between_centres_covers_nothing() {
-        let left = Crossing { numerator: 6, denominator: 5 }; // 0.6
-        let right = Crossing { numerator: 14, denominator: 5 }; // 1.4
-        assert_eq!(columns(left, right, 1, (0, 31), ColumnRule::CentreInside), None);
+        let left = Crossing { numerator: 6, denominator: 10 }; // 0.6
+        let right = Crossing { numerator: 14, denominator: 10 }; // 1.4
+        assert_eq!(columns(left, right, (0, 31), ColumnRule::CentreInside), None);
     }
 
     #[test]
     fn span_shrinking_to_one_centre_covers_it() {
-        let centre = Crossing { numerator: 3, denominator: 1 }; // 1.5
-        assert_eq!(columns(centre, centre, 1, (0, 31), ColumnRule::CentreInside), Some((1, 1)));
+        let centre = Crossing { numerator: 3, denominator: 2 }; // 1.5
+        assert_eq!(columns(centre, centre, (0, 31), ColumnRule::CentreInside), Some((1, 1)));
     }
 
     #[test]
     fn spans_are_clipped_to_the_raster() {
-        let left = Crossing { numerator: -20, denominator: 1 };
-        let right = Crossing { numerator: 200, denominator: 1 };
-        assert_eq!(columns(left, right, 1, (0, 31), ColumnRule::CentreInside), Some((0, 31)));
-        let beyond = Crossing { numerator: 100, denominator: 1 };
-        assert_eq!(columns(beyond, right, 1, (0, 31), ColumnRule::CentreInside), None);
+        let left = Crossing { numerator: -20, denominator: 2 };
+        let right = Crossing { numerator: 200, denominator: 2 };
+        assert_eq!(columns(left, right, (0, 31), ColumnRule::CentreInside), Some((0, 31)));
+        let beyond = Crossing { numerator: 100, denominator: 2 };
+        assert_eq!(columns(beyond, right, (0, 31), ColumnRule::CentreInside), None);
     }
 
     /// The walker's crossings and column bounds, in both machine words, equal
@@ -541,16 +538,16 @@ mod tests {
                 let (mut walked, mut direct) = (Vec::new(), Vec::new());
                 for row in prepared.into_iter().flatten() {
                     table.crossings(row, column_rule, &mut walked);
-                    crossings(points, scanline_y(row, denominator), row_rule, &mut direct);
                     let scale = 2 * denominator;
-                    let as_q = |v: &[Crossing]| v.iter().map(|c| c.x(scale)).collect::<Vec<_>>();
-                    let walked_crossings: Vec<Crossing> = walked.iter().map(RowCrossing::crossing).collect();
+                    crossings(points, scanline_y(row, denominator), scale, row_rule, &mut direct);
+                    let as_q = |v: &[Crossing]| v.iter().map(|c| c.x()).collect::<Vec<_>>();
+                    let walked_crossings: Vec<Crossing> = walked.iter().map(|c| c.crossing(scale)).collect();
                     assert_eq!(as_q(&walked_crossings), as_q(&direct), "row {row}, {row_rule:?}");
                     let by_walker: Vec<_> = pairs(walked.len(), row_rule)
                         .map(|(i, j)| clip_columns(walked[i].first_column, walked[j].last_column, (0, 31)))
                         .collect();
                     let by_formula: Vec<_> = pairs(direct.len(), row_rule)
-                        .map(|(i, j)| columns(direct[i], direct[j], denominator, (0, 31), column_rule))
+                        .map(|(i, j)| columns(direct[i], direct[j], (0, 31), column_rule))
                         .collect();
                     assert_eq!(by_walker, by_formula, "row {row}, {row_rule:?}, {column_rule:?}");
                 }
@@ -582,20 +579,20 @@ mod tests {
         assert_eq!(rows(&points, 1, (0, 31), RowRule::Closed), Some(5..=6));
         // The apex at y = 6.5 gives two equal crossings there.
         let mut out = Vec::new();
-        crossings(&points, 13, RowRule::Closed, &mut out);
+        crossings(&points, 13, 2, RowRule::Closed, &mut out);
         assert_eq!(out.len(), 2);
-        assert_eq!(out[0].x(2), out[1].x(2));
+        assert_eq!(out[0].x(), out[1].x());
     }
 
     #[test]
     fn cell_rule_takes_the_cells_holding_the_crossings() {
         // Span 0.6 … 1.4: no centre inside, but the cells holding 0.6 and 1.4 are 0 and 1.
-        let left = Crossing { numerator: 6, denominator: 5 };
-        let right = Crossing { numerator: 14, denominator: 5 };
-        assert_eq!(columns(left, right, 1, (0, 31), ColumnRule::CellHolds), Some((0, 1)));
+        let left = Crossing { numerator: 6, denominator: 10 };
+        let right = Crossing { numerator: 14, denominator: 10 };
+        assert_eq!(columns(left, right, (0, 31), ColumnRule::CellHolds), Some((0, 1)));
         // A crossing exactly on a cell boundary (x = 2) belongs to the cell on its right.
-        let on_line = Crossing { numerator: 4, denominator: 1 };
-        assert_eq!(columns(on_line, on_line, 1, (0, 31), ColumnRule::CellHolds), Some((2, 2)));
+        let on_line = Crossing { numerator: 4, denominator: 2 };
+        assert_eq!(columns(on_line, on_line, (0, 31), ColumnRule::CellHolds), Some((2, 2)));
     }
 
     #[test]

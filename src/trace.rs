@@ -156,19 +156,18 @@ impl ScanlineRecord {
     /// Builds the record of a scanline event (pixels are added as they come).
     pub fn from_event(event: &ScanlineEvent<'_>) -> ScanlineRecord {
         let geometry = &event.polygon.geometry;
-        let scale = geometry.scale();
         let y = Q::new(2 * i128::from(event.row) + 1, 2);
         // Scanline events are only sent for drawn polygons, whose c ≠ 0; None only when too large.
         let depth = |x: Q| depth_at(geometry, x, y);
         ScanlineRecord {
             index: event.index,
             row: event.row,
-            crossings: event.crossings.iter().map(|c| c.x(scale)).collect(),
+            crossings: event.crossings.iter().map(|c| c.x()).collect(),
             spans: event
                 .spans
                 .iter()
                 .map(|span| {
-                    let (left, right) = (span.left.x(scale), span.right.x(scale));
+                    let (left, right) = (span.left.x(), span.right.x());
                     SpanRecord {
                         left,
                         right,

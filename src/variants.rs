@@ -10,8 +10,11 @@
 
 use std::cmp::Ordering;
 
+use num_bigint::BigInt;
+use num_traits::Num;
+
 use crate::buffer::Buffers;
-use crate::depth::{Depth, DepthStepper};
+use crate::depth::{Depth, depth_at_centre};
 use crate::exact::Q;
 use crate::pipeline::{PixelRect, RasterSink, Scratch, fate, rasterize};
 use crate::scan::{Crossing, Span};
@@ -235,8 +238,7 @@ pub fn run_pixel_order(scene: &Scene, inside: Inside) -> (Buffers, Vec<InsideDif
                 if !is_inside {
                     continue;
                 }
-                let scan_y = (2 * i128::from(y) + 1) * polygon.geometry.denominator;
-                let depth = DepthStepper::start(&polygon.geometry, i128::from(x), scan_y).current();
+                let depth = depth_at_centre(&polygon.geometry, x, y);
                 let Decision { outcome, stored: after, frame: frame_after, .. } =
                     stages.decide(polygon, depth, stored, frame);
                 if outcome == Outcome::Written {
@@ -249,33 +251,40 @@ pub fn run_pixel_order(scene: &Scene, inside: Inside) -> (Buffers, Vec<InsideDif
     (buffers, differences)
 }
 
-/// The centre of pixel (x, y) in a polygon's scaled units.
-fn centre(polygon: &Polygon, x: u32, y: u32) -> (i128, i128) {
-    let d = polygon.geometry.denominator;
-    ((2 * i128::from(x) + 1) * d, (2 * i128::from(y) + 1) * d)
+/// A polygon's scaled vertices (x, y) relative to the centre of pixel
+/// (x, y), in `T`: `i128` for a word-sized polygon, whose products stay
+/// below 2^123 ([`crate::plane::MAX_SCALED`]), `BigInt` for one of the
+/// big-integer tier, whose products do not.
+fn around<T: From<i128> + Num + Clone>(polygon: &Polygon, x: u32, y: u32) -> Vec<[T; 2]> {
+    let d = T::from(polygon.geometry.denominator);
+    let (cx, cy) = (T::from(2 * i128::from(x) + 1) * d.clone(), T::from(2 * i128::from(y) + 1) * d);
+    polygon.geometry.points.iter().map(|p| [T::from(p[0]) - cx.clone(), T::from(p[1]) - cy.clone()]).collect()
 }
 
 /// Ray casting from the centre to the right with the half-interval vertex
 /// rule (an edge counts when `min(y₁, y₂) ≤ y < max(y₁, y₂)`); a crossing
 /// exactly at the centre means the centre is on the boundary: inside.
 pub fn ray_inside(polygon: &Polygon, x: u32, y: u32) -> bool {
-    let (cx, cy) = centre(polygon, x, y);
-    let points = &polygon.geometry.points;
+    if polygon.geometry.is_big() {
+        ray_inside_from::<BigInt>(&around(polygon, x, y))
+    } else {
+        ray_inside_from::<i128>(&around(polygon, x, y))
+    }
+}
+
+/// [`ray_inside`] on vertices relative to the centre.
+fn ray_inside_from<T: Num + Ord + Clone>(points: &[[T; 2]]) -> bool {
     let mut right = 0;
     for (i, p) in points.iter().enumerate() {
-        let q = points[(i + 1) % points.len()];
-        let (y1, y2) = (p[1], q[1]);
-        if y1 == y2 || cy < y1.min(y2) || cy >= y1.max(y2) {
+        let q = &points[(i + 1) % points.len()];
+        let (y1, y2) = (p[1].clone(), q[1].clone());
+        if y1 == y2 || T::zero() < y1.clone().min(y2.clone()) || T::zero() >= y1.clone().max(y2.clone()) {
             continue;
         }
-        // Crossing x = (x₁(y₂ − y₁) + (x₂ − x₁)(y − y₁)) / (y₂ − y₁), compared with cx.
-        let crossing = Crossing { numerator: p[0] * (y2 - y1) + (q[0] - p[0]) * (cy - y1), denominator: y2 - y1 };
-        let (n, d) = if crossing.denominator < 0 {
-            (-crossing.numerator, -crossing.denominator)
-        } else {
-            (crossing.numerator, crossing.denominator)
-        };
-        match n.cmp(&(cx * d)) {
+        // Crossing x = (x₁(y₂ − y₁) + (x₂ − x₁)(0 − y₁)) / (y₂ − y₁), compared with 0.
+        let numerator = p[0].clone() * (y2.clone() - y1.clone()) - (q[0].clone() - p[0].clone()) * y1.clone();
+        let numerator = if y2 < y1 { T::zero() - numerator } else { numerator };
+        match numerator.cmp(&T::zero()) {
             Ordering::Equal => return true,
             Ordering::Greater => right += 1,
             Ordering::Less => {}
@@ -291,9 +300,17 @@ pub fn ray_inside(polygon: &Polygon, x: u32, y: u32) -> bool {
 /// times the winding number. A centre on the boundary counts as inside.
 /// Returns the decision and, for a difference report, its kind.
 pub fn arc_inside(polygon: &Polygon, x: u32, y: u32) -> (bool, ArcDifference) {
-    let (cx, cy) = centre(polygon, x, y);
-    let points = &polygon.geometry.points;
-    let quadrant = |p: &[i128; 3]| match (p[0] - cx >= 0, p[1] - cy >= 0) {
+    if polygon.geometry.is_big() {
+        arc_inside_from::<BigInt>(&around(polygon, x, y))
+    } else {
+        arc_inside_from::<i128>(&around(polygon, x, y))
+    }
+}
+
+/// [`arc_inside`] on vertices relative to the centre.
+fn arc_inside_from<T: Num + Ord + Clone>(points: &[[T; 2]]) -> (bool, ArcDifference) {
+    let zero = T::zero();
+    let quadrant = |p: &[T; 2]| match (p[0] >= zero, p[1] >= zero) {
         (true, true) => 0i64,
         (false, true) => 1,
         (false, false) => 2,
@@ -301,19 +318,21 @@ pub fn arc_inside(polygon: &Polygon, x: u32, y: u32) -> (bool, ArcDifference) {
     };
     let mut sum = 0i64;
     for (i, p) in points.iter().enumerate() {
-        let q = points[(i + 1) % points.len()];
-        let (ax, ay, bx, by) = (p[0] - cx, p[1] - cy, q[0] - cx, q[1] - cy);
-        let cross = ax * by - ay * bx;
+        let q = &points[(i + 1) % points.len()];
+        let [ax, ay] = p.clone();
+        let [bx, by] = q.clone();
+        let cross = ax.clone() * by.clone() - ay.clone() * bx.clone();
         // On the segment: collinear with the centre and between the ends.
-        if cross == 0 && ax.min(bx) <= 0 && 0 <= ax.max(bx) && ay.min(by) <= 0 && 0 <= ay.max(by) {
+        let between = |a: &T, b: &T| a.clone().min(b.clone()) <= zero && zero <= a.clone().max(b.clone());
+        if cross == zero && between(&ax, &bx) && between(&ay, &by) {
             return (true, ArcDifference::OnBoundary);
         }
-        sum += match (quadrant(&q) - quadrant(p)).rem_euclid(4) {
+        sum += match (quadrant(q) - quadrant(p)).rem_euclid(4) {
             0 => 0,
             1 => 1,
             3 => -1,
             _ => {
-                if cross > 0 {
+                if cross > zero {
                     2
                 } else {
                     -2

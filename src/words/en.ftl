@@ -267,7 +267,7 @@ error-write = { $path }: cannot write: { $reason }
 error-polygon = { $path }: polygon { $number } "{ $name }": { $problem }
 geometry-too-few = has { $count } vertices; a polygon needs at least 3
 geometry-too-many = has { $count } vertices; zsim takes at most { $max }
-geometry-out-of-range = vertex { $vertex } has coordinate { $value } beyond the exact range: with the polygon's common denominator { $denominator }, |coordinate| × 2 × { $denominator } must be at most 2^58 (use smaller coordinates or fewer decimal places)
+geometry-out-of-range = vertex { $vertex } has coordinate { $value } beyond the exact range: with the polygon's common denominator { $denominator }, |coordinate| × 2 × { $denominator } must be at most 2^120 (use smaller coordinates or fewer decimal places)
 geometry-off-plane-z = is not planar: vertex { $vertex } is off the plane { $plane } through vertices { $i }, { $j }, { $k } by Δz = { $off }
 geometry-off-plane = is not planar: vertex { $vertex } gives { $off } instead of 0 in the plane { $plane } through vertices { $i }, { $j }, { $k }
 answer-at-cell = line { $line }, value { $column } (x = { $x }, y = { $y })
@@ -343,7 +343,7 @@ setting-antialias-samples = antialias: samples { $samples } is not supported: us
 setting-antialias-cells = antialias: { $width }×{ $height } pixels × { $samples }² samples is beyond the limit of { $max } cells
 setting-antialias-exact = antialias averages a quantized z-buffer; it does not combine with an exact store
 polygon-opacity = opacity { $alpha } is outside 0 … 1
-geometry-too-large-for-depth = is too large for exact depths: its depth at a pixel centre would need more than 2^125 (vertex { $vertex } has coordinate { $value }); use smaller coordinates or fewer decimal places
+geometry-too-large-for-depth = is too large for exact arithmetic: its plane, an edge's crossings with the scanlines or its depth at a pixel centre would need more than 128 bits (vertex { $vertex } has coordinate { $value }); use smaller coordinates or fewer decimal places
 polygon-mapped-out-of-range = mapping it { $stage } gives numbers beyond the exact range (fractions of 128-bit integers): use fewer decimal places
 mapping-window = from the window onto the raster
 mapping-perspective = through the perspective projection

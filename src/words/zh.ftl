@@ -262,7 +262,7 @@ error-write = { $path }：无法写入：{ $reason }
 error-polygon = { $path }：多边形 { $number }“{ $name }”：{ $problem }
 geometry-too-few = 只有 { $count } 个顶点；多边形至少需要 3 个
 geometry-too-many = 有 { $count } 个顶点；zsim 最多接受 { $max } 个
-geometry-out-of-range = 顶点 { $vertex } 的坐标 { $value } 超出精确范围：多边形的公分母为 { $denominator }，|坐标| × 2 × { $denominator } 不得超过 2^58（请使用更小的坐标或更少的小数位）
+geometry-out-of-range = 顶点 { $vertex } 的坐标 { $value } 超出精确范围：多边形的公分母为 { $denominator }，|坐标| × 2 × { $denominator } 不得超过 2^120（请使用更小的坐标或更少的小数位）
 geometry-off-plane-z = 不共面：顶点 { $vertex } 偏离经过顶点 { $i }、{ $j }、{ $k } 的平面 { $plane }，Δz = { $off }
 geometry-off-plane = 不共面：顶点 { $vertex } 代入经过顶点 { $i }、{ $j }、{ $k } 的平面 { $plane } 得 { $off } 而不是 0
 answer-at-cell = 第 { $line } 行第 { $column } 个数（x = { $x }，y = { $y }）
@@ -335,7 +335,7 @@ setting-antialias-samples = 反走样：不支持 { $samples } 个采样：请�
 setting-antialias-cells = 反走样：{ $width }×{ $height } 像素 × { $samples }² 个采样超过了 { $max } 个单元的上限
 setting-antialias-exact = 反走样对量化的z缓冲器求平均；不能与精确保存同时使用
 polygon-opacity = 不透明度 { $alpha } 不在 0 … 1 之内
-geometry-too-large-for-depth = 过大，无法保存精确深度：像素中心的深度将超过 2^125（顶点 { $vertex } 的坐标为 { $value }）；请使用更小的坐标或更少的小数位
+geometry-too-large-for-depth = 过大，无法精确计算：其平面、边与扫描线的交点或像素中心的深度将超过 128 位（顶点 { $vertex } 的坐标为 { $value }）；请使用更小的坐标或更少的小数位
 polygon-mapped-out-of-range = { $stage }时得到的数超出精确范围（128 位整数之比）：请使用更少的小数位
 mapping-window = 从窗口映射到光栅
 mapping-perspective = 经透视投影

@@ -52,11 +52,11 @@ fn bad_scenes_are_refused_with_one_line_each() {
         ("bad_section.json", format!(r#"{{"effects": {{"section": "x"}}, "polygons": [{TRIANGLE}]}}"#)),
         (
             "out_of_range.json",
-            r#"{"polygons": [{"name": "far", "value": 1, "vertices": [[0,0,0],[144115188075855873,0,0],[0,1,0]]}]}"#.into(),
+            r#"{"polygons": [{"name": "far", "value": 1, "vertices": [[0,0,0],[100000000000000000000000000000,0,0],[0,0.0000001,0]]}]}"#.into(),
         ),
         (
             "fine_decimals_out_of_range.json",
-            r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [[0.0000001,0,0],[1000000000000,0,0],[0,1,0]]}]}"#.into(),
+            r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [[0.00000000000001,0,0],[100000000000000000000000000000,0,0],[0,1,0]]}]}"#.into(),
         ),
         (
             // Found by a property: this was refused as "beyond the exact range" with a false claim.
@@ -67,6 +67,11 @@ fn bad_scenes_are_refused_with_one_line_each() {
             // The plane through vertices 1-3 has 136-bit coefficients (checked apart in Python's fractions).
             "not_planar_huge_plane.json",
             r#"{"polygons": [{"name": "bent", "value": 1, "vertices": [["13", "-8.965147458463", "19"], ["4.36427322", "97/621", "4.601918766151"], ["-7.3178342886648", "33/600", "-4"], ["8.4723050710231", "3.0701032506", "-7.2743050146027"]]}]}"#.into(),
+        ),
+        (
+            // 30-digit coordinates: the plane's coefficients pass 128 bits.
+            "too_large_for_exact.json",
+            r#"{"polygons": [{"name": "huge", "value": 1, "vertices": [[0,0,0],[123456789012345678901234567890,7,3],[5,987654321098765432109876543211,11]]}]}"#.into(),
         ),
         (
             // Two denominators whose lcm outgrows 128 bits (it used to overflow).

@@ -213,21 +213,47 @@ fn coordinates_at_the_documented_limit_do_not_overflow() {
 }
 
 /// Regression (found by the fuzzer): the exact depth at a span's end, a crossing
-/// rather than a pixel centre, overflowed `i128` for coordinates near the limit and
-/// panicked while `step` recorded the scanline. It is now reported as too large.
+/// rather than a pixel centre, overflowed `i128` for coordinates near the word
+/// limit and panicked while `step` recorded the scanline; it was then reported
+/// as too large. Computed from the reduced plane `z = −(Ax + By + D)/C`, every
+/// span end now has its exact depth: the plane through the three vertices, in
+/// big rationals.
 #[test]
-fn span_end_depth_beyond_i128_is_reported_not_a_panic() {
-    let scene = Scene::from_json(
-        r#"{"width": 16, "height": 16, "depth_bits": 21, "polygons": [{"value": 1, "vertices": [[5722406912, 168441290, -4290115062], [36, -8236231403, -8589934592], [-8589934592, -8589934592, -8589934592]]}]}"#,
-        Path::new("fuzz.json"),
-    )
-    .unwrap();
+fn span_end_depths_near_the_word_limit_are_exact() {
+    use num_bigint::BigInt;
+    use num_rational::BigRational;
+    let vertices = [
+        [5722406912i64, 168441290, -4290115062],
+        [36, -8236231403, -8589934592],
+        [-8589934592, -8589934592, -8589934592],
+    ];
+    let json = format!(
+        r#"{{"width": 16, "height": 16, "depth_bits": 21, "polygons": [{{"value": 1, "vertices": {vertices:?}}}]}}"#
+    );
+    let scene = Scene::from_json(&json, Path::new("fuzz.json")).unwrap();
     let mut recorder = zsim::trace::Recorder::default();
     Simulation::new(&scene).finish(&mut recorder);
-    let ends: Vec<Option<zsim::exact::Q>> =
-        recorder.scanlines.iter().flat_map(|s| s.spans.iter().map(|span| span.left_depth)).collect();
-    assert_eq!(ends.len(), 16, "one span per row");
-    assert!(ends.iter().any(Option::is_none), "some span ends are beyond i128");
+    let r = |q: zsim::exact::Q| BigRational::new(BigInt::from(*q.numer()), BigInt::from(*q.denom()));
+    let v: Vec<[BigRational; 3]> = vertices.iter().map(|p| p.map(|c| BigRational::from_integer(c.into()))).collect();
+    // z at (x, y) on the plane through the vertices (barycentric weights by Cramer's rule).
+    let z_at = |x: &BigRational, y: &BigRational| {
+        let det = (&v[1][0] - &v[0][0]) * (&v[2][1] - &v[0][1]) - (&v[2][0] - &v[0][0]) * (&v[1][1] - &v[0][1]);
+        let w1 = ((x - &v[0][0]) * (&v[2][1] - &v[0][1]) - (&v[2][0] - &v[0][0]) * (y - &v[0][1])) / &det;
+        let w2 = ((&v[1][0] - &v[0][0]) * (y - &v[0][1]) - (x - &v[0][0]) * (&v[1][1] - &v[0][1])) / &det;
+        &v[0][2] + w1 * (&v[1][2] - &v[0][2]) + w2 * (&v[2][2] - &v[0][2])
+    };
+    let mut ends = 0;
+    for scanline in &recorder.scanlines {
+        let y = BigRational::new(BigInt::from(2 * scanline.row + 1), BigInt::from(2));
+        for span in &scanline.spans {
+            for (x, depth) in [(span.left, span.left_depth), (span.right, span.right_depth)] {
+                let depth = depth.unwrap_or_else(|| panic!("row {}: no depth at x = {x}", scanline.row));
+                assert_eq!(r(depth), z_at(&r(x), &y), "row {}, x = {x}", scanline.row);
+                ends += 1;
+            }
+        }
+    }
+    assert_eq!(ends, 32, "one span per row, two ends each");
 }
 
 /// Regression (found by the fuzzer): in the incremental float modes an edge

@@ -164,19 +164,19 @@ mod random_scenes {
     }
 
     /// A range refusal says "vertex N has coordinate V … common denominator
-    /// D, |coordinate| × 2 × D must be at most 2^58": that must be so (or D
-    /// itself beyond 2^58, the common denominator outgrowing the range).
+    /// D, |coordinate| × 2 × D must be at most 2^120": that must be so (or D
+    /// itself beyond 2^120, the common denominator outgrowing the range).
     fn range_claim_holds(message: &str) -> bool {
         use num_bigint::BigInt;
         let Some(rest) = message.split(" has coordinate ").nth(1) else { return true };
-        if !message.contains("must be at most 2^58") {
+        if !message.contains("must be at most 2^120") {
             return true;
         }
         let value = rest.split(' ').next().unwrap_or_default();
         let d = message.split("common denominator ").nth(1).and_then(|r| r.split(',').next()).unwrap_or_default();
         let (p, q) = value.split_once('/').unwrap_or((value, "1"));
         let [p, q, d]: [BigInt; 3] = [p, q, d].map(|t| t.trim_start_matches('-').parse().expect("an integer"));
-        let limit = BigInt::from(1u64 << 58);
+        let limit = BigInt::from(1u128 << 120);
         p * 2 * &d > &limit * q || d > limit
     }
 

@@ -14,6 +14,7 @@ mod buet;
 mod classroom;
 mod cs418;
 mod effects;
+mod exact_range;
 mod generate;
 mod golden;
 mod hard_cases;
