@@ -242,6 +242,15 @@ impl Lines {
         (fits && below(c.checked_mul(2), DEPTH_DENOMINATOR)).then_some(Lines { edges, plane })
     }
 
+    /// The exact depth at the centre of pixel `(column, row)`, within a pixel
+    /// of the polygon: `−(A(2x + 1) + B(2y + 1) + 2D) / 2C`, below 2^125 over
+    /// below 2^124 by [`Lines::new`].
+    pub(crate) fn depth_at_centre(&self, column: u32, row: u32) -> Depth {
+        let PlaneEquation { a, b, c, d } = self.plane;
+        let terms = [(a, 2 * i128::from(column) + 1), (b, 2 * i128::from(row) + 1), (d, 2)];
+        Depth::from_fraction(-sum_of_products(&terms).expect("checked by Lines::new"), 2 * c)
+    }
+
     /// The crossings with the scanline at scaled height `scan_y`, row `row`,
     /// sorted left to right (as [`scan::crossings`] computes them from the
     /// vertices).
@@ -257,8 +266,8 @@ impl Lines {
             if crosses {
                 // αx = −(βy + γ) at y = (2r + 1)/2; below 2^120 by `Lines::new`.
                 let [alpha, beta, gamma] = edge.line;
-                let numerator = -(beta * (2 * i128::from(row) + 1) + 2 * gamma);
-                out.push(Crossing { numerator, denominator: 2 * alpha });
+                let numerator = sum_of_products(&[(beta, 2 * i128::from(row) + 1), (gamma, 2)]);
+                out.push(Crossing { numerator: -numerator.expect("checked by Lines::new"), denominator: 2 * alpha });
             }
         }
         out.sort_unstable_by(Crossing::cmp_position);
@@ -276,7 +285,9 @@ pub(crate) fn rasterize<S: RasterSink>(
 ) {
     let Some(rows) = scan::rows(&geometry.points, geometry.denominator, rect.rows, rules.rows) else { return };
     let lines = geometry.lines().expect("a polygon of the big-integer tier has its lines");
-    let PlaneEquation { a, b, c, d } = lines.plane;
+    // z₁ = z − A/C per column: the numerator over |2C| falls by 2A·sign(C),
+    // below 2^125 as the depths at two columns of `Lines::new`'s range are.
+    let step = 2 * lines.plane.a * lines.plane.c.signum();
     for row in rows {
         let scan_y = scan::scanline_y(row, geometry.denominator);
         lines.crossings(row, scan_y, rules.rows, found);
@@ -291,12 +302,12 @@ pub(crate) fn rasterize<S: RasterSink>(
         }
         for span in spans.iter() {
             if let Some((first, last)) = span.columns {
-                // z = −(Ax + By + D)/C at the first centre, then z₁ = z − A/C per
-                // column (all below 2^125 by `Lines::new`).
-                let mut numerator = -(a * (2 * i128::from(first) + 1) + b * (2 * i128::from(row) + 1) + 2 * d);
+                // The first centre's depth, then z₁ = z − A/C per column (every
+                // numerator below 2^125 by `Lines::new`).
+                let (mut numerator, denominator) = lines.depth_at_centre(first, row).fraction();
                 for x in first..=last {
-                    sink.pixel(x, row, Depth::from_fraction(numerator, 2 * c));
-                    numerator -= 2 * a;
+                    sink.pixel(x, row, Depth::from_fraction(numerator, denominator));
+                    numerator -= step;
                 }
             }
         }
@@ -323,6 +334,17 @@ mod tests {
         fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
             self.0.push(format!("({x}, {y}) {:?}", depth.value()));
         }
+    }
+
+    /// The crossings and depths of the tier are sums of products that may
+    /// overflow `i128` on the way though the sum fits: taken exactly.
+    #[test]
+    fn sums_of_products_are_exact_past_an_overflowing_term() {
+        assert_eq!(sum_of_products(&[(i128::MAX, 2), (-i128::MAX, 2), (3, 5)]), Some(15));
+        assert_eq!(sum_of_products(&[(i128::MAX, 2)]), None);
+        assert_eq!(sum_of_products(&[(1 << 62, 1 << 62), (-(1 << 62), 1 << 62)]), Some(0));
+        assert_eq!(sum_of_products(&[(-7, 6), (4, 10)]), Some(-2));
+        assert!(below(Some(-(1 << 119)), CROSSING) && !below(Some(1 << 120), CROSSING) && !below(None, CROSSING));
     }
 
     /// BUET CSE 410's 2018 assignment maps a window 0.7 wide onto 500 pixels

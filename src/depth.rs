@@ -404,10 +404,8 @@ impl<W: Word> DepthStepper<W> {
 /// `z = −(A(2x + 1) + B(2y + 1) + 2D) / 2C` (within 128 bits at every centre
 /// within a pixel of the polygon: checked when the polygon was made).
 pub fn depth_at_centre(geometry: &Geometry, column: u32, row: u32) -> Depth {
-    if geometry.is_big() {
-        let PlaneEquation { a, b, c, d } = geometry.plane();
-        let numerator = -(a * (2 * i128::from(column) + 1) + b * (2 * i128::from(row) + 1) + 2 * d);
-        return Depth::from_fraction(numerator, 2 * c);
+    if let Some(lines) = geometry.lines() {
+        return lines.depth_at_centre(column, row);
     }
     DepthStepper::start(geometry, i128::from(column), crate::scan::scanline_y(row, geometry.denominator)).current()
 }
