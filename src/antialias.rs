@@ -17,7 +17,7 @@ use std::collections::BTreeMap;
 
 use crate::buffer::Buffers;
 use crate::depth::{Depth, depth_at_centre};
-use crate::error::{Error, PolygonProblem};
+use crate::error::{Error, Mapping, PolygonProblem};
 use crate::exact::Q;
 use crate::pipeline::{PixelRect, RasterSink, Scratch, Simulation, fate, rasterize};
 use crate::plane::Geometry;
@@ -25,6 +25,7 @@ use crate::scan::{Crossing, Span};
 use crate::scene::{Antialias, Scene};
 use crate::stages::{PixelStages, Plain, WithEffects, blend};
 use crate::trace::{Fate, Outcome, Unobserved};
+use num_traits::CheckedMul;
 
 /// The averaged picture after one polygon.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -48,13 +49,18 @@ pub fn supersampled(scene: &Scene, k: u32) -> Result<Scene, Error> {
             // Clipped away in clip space: nothing on the raster to scale.
             continue;
         }
-        polygon.vertices = polygon.vertices.iter().map(|v| [v[0] * factor, v[1] * factor, v[2]]).collect();
-        polygon.geometry = Geometry::new(&polygon.vertices).map_err(|e| Error::Polygon {
+        let fail = |problem: PolygonProblem| Error::Polygon {
             path: "(supersampled)".into(),
             index,
             name: polygon.name.clone(),
-            problem: Box::new(PolygonProblem::Geometry(e)),
-        })?;
+            problem: Box::new(problem),
+        };
+        let scaled =
+            polygon.vertices.iter().map(|v| Some([v[0].checked_mul(&factor)?, v[1].checked_mul(&factor)?, v[2]]));
+        let vertices = scaled.collect::<Option<Vec<_>>>();
+        let vertices = vertices.ok_or_else(|| fail(PolygonProblem::MappedOutOfRange(Mapping::Supersampled)))?;
+        polygon.geometry = Geometry::new(&vertices).map_err(|e| fail(PolygonProblem::Geometry(e)))?;
+        polygon.vertices = vertices;
     }
     Ok(big)
 }

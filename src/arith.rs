@@ -19,7 +19,6 @@
 use std::fmt;
 use std::hint::select_unpredictable;
 
-use num_bigint::BigInt;
 use num_traits::{AsPrimitive, Float, Num, Signed};
 
 use crate::buffer::{Buffers, FrameCell, LevelCells};
@@ -572,12 +571,11 @@ impl EdgeShape {
     fn new(polygon: &crate::scene::Polygon, width: u32, height: u32) -> EdgeShape {
         let float = prepare::<f32>(&polygon.vertices, polygon.value);
         let points = &polygon.geometry.points;
-        let convex = if polygon.geometry.is_big() {
-            is_convex(&points.iter().map(|p| p.map(BigInt::from)).collect::<Vec<_>>())
-        } else {
-            is_convex(points)
+        let (convex, count) = match polygon.geometry.big_scaled() {
+            Some((points, _)) => (is_convex(points), points.len()),
+            None => (is_convex(points), points.len()),
         };
-        match (points.len(), convex) {
+        match (count, convex) {
             (3, true) => EdgeShape::Triangle(EdgePolygon::new(&float, polygon.geometry.c(), width, height)),
             (4, true) => EdgeShape::Quad(EdgePolygon::new(&float, polygon.geometry.c(), width, height)),
             _ => EdgeShape::Other(float),

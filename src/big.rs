@@ -1,133 +1,31 @@
 //! The big-integer tier: polygons whose scaled coordinates pass
 //! [`crate::plane::MAX_SCALED`] (2^34), where the word-sized rasterizer's
-//! products could overflow `i128`, are drawn here with the same rules by the
-//! formulas themselves, every product in arbitrary-precision integers
-//! (`num-bigint`).
+//! products could overflow `i128`, are drawn here with the same rules.
 //!
-//! What the tier reports is what every tier reports: crossings as fractions
-//! in pixel units, depths as exact fractions, the plane reduced, all 128-bit
-//! numbers. The tier computes them from the edges' lines and the plane
-//! reduced in big integers, not from the scaled vertices: a polygon cut by
+//! The tier keeps the scaled vertices as arbitrary-precision integers
+//! (`num-bigint`), however large the polygon's common denominator, and works
+//! from what stays small when the vertices do not: each edge's line and the
+//! polygon's plane, reduced once when the polygon is read. A polygon cut by
 //! clipping or divided by w has vertices over huge common denominators, but
-//! its edges and plane are those of the polygon it came from, and small. So
-//! the tier takes scaled coordinates up to [`crate::plane::MAX_SCALED_BIG`]
-//! (2^120), and refuses only a polygon whose plane, crossings or depths at
-//! pixel centres would need more than 128 bits even reduced (`fits`).
+//! its edges and plane are those of the polygon it came from. Its crossings
+//! and depths, computed row by row from the lines and stepped pixel by pixel,
+//! are then the 128-bit fractions every tier reports. The tier refuses only a
+//! polygon whose plane, crossings or depths at pixel centres would need more
+//! than 128 bits even reduced (`BigPolygon::new`).
 
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{Signed, ToPrimitive, Zero};
 
-use crate::depth::Depth;
-use crate::exact::{ceil_div, floor_div};
+use crate::depth::{Depth, DepthStepper};
+use crate::exact::Q;
 use crate::pipeline::{PixelRect, RasterSink};
-use crate::plane::{Geometry, GeometryError, OffPlane, PlaneEquation};
+use crate::plane::{GeometryError, OffPlane, PlaneEquation};
 use crate::rules::{RowRule, Rules};
 use crate::scan::{self, Crossing, Span};
 
 fn big(v: i128) -> BigInt {
     BigInt::from(v)
-}
-
-/// Newell's normal of scaled points, divided by its components' greatest
-/// common divisor (the plane is the same); `None` when it does not fit i128.
-pub(crate) fn newell(points: &[[i128; 3]]) -> Option<[i128; 3]> {
-    let mut normal = [BigInt::zero(), BigInt::zero(), BigInt::zero()];
-    for (i, p) in points.iter().enumerate() {
-        let q = points[(i + 1) % points.len()];
-        normal[0] += big(p[1] - q[1]) * big(p[2] + q[2]);
-        normal[1] += big(p[2] - q[2]) * big(p[0] + q[0]);
-        normal[2] += big(p[0] - q[0]) * big(p[1] + q[1]);
-    }
-    let divisor = normal.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
-    if !divisor.is_zero() {
-        for v in &mut normal {
-            *v /= &divisor;
-        }
-    }
-    Some([normal[0].to_i128()?, normal[1].to_i128()?, normal[2].to_i128()?])
-}
-
-/// The plane with `normal` through `point` (scaled units) in polygon units,
-/// reduced and signed as the book prints it (see [`Geometry::plane`]); `None`
-/// when a coefficient does not fit i128.
-pub(crate) fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> Option<PlaneEquation> {
-    let [a, b, c] = normal.map(big);
-    let d = -(&a * big(point[0]) + &b * big(point[1]) + &c * big(point[2]));
-    let scale = big(scale);
-    let coefficients = [&a * &scale, &b * &scale, &c * &scale, d];
-    let divisor = coefficients.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
-    if divisor.is_zero() {
-        return Some(PlaneEquation { a: 0, b: 0, c: 0, d: 0 });
-    }
-    let leading_negative = coefficients[..3].iter().rev().find(|v| !v.is_zero()).is_some_and(Signed::is_negative);
-    let divisor = if leading_negative { -divisor } else { divisor };
-    let [a, b, c, d] = coefficients.map(|v| (v / &divisor).to_i128());
-    Some(PlaneEquation { a: a?, b: b?, c: c?, d: d? })
-}
-
-/// [`Geometry`]'s planarity check in big integers: every vertex on the plane
-/// through vertex 1 and the first two vertices not collinear with it.
-pub(crate) fn check_planar(geometry: &Geometry) -> Result<(), GeometryError> {
-    let points = &geometry.points;
-    let p1 = points[0];
-    let sub = |p: [i128; 3]| [big(p[0] - p1[0]), big(p[1] - p1[1]), big(p[2] - p1[2])];
-    let Some(i) = points.iter().position(|p| *p != p1) else { return Ok(()) };
-    let u = sub(points[i]);
-    let found = points.iter().enumerate().skip(i + 1).find_map(|(k, p)| {
-        let v = sub(*p);
-        let n = [&u[1] * &v[2] - &u[2] * &v[1], &u[2] * &v[0] - &u[0] * &v[2], &u[0] * &v[1] - &u[1] * &v[0]];
-        (!n.iter().all(Zero::is_zero)).then_some((k, n))
-    });
-    let Some((k, normal)) = found else { return Ok(()) };
-    for (index, point) in points.iter().enumerate() {
-        let w = sub(*point);
-        let residual = &normal[0] * &w[0] + &normal[1] * &w[1] + &normal[2] * &w[2];
-        if residual.is_zero() {
-            continue;
-        }
-        // Reported with the plane reduced to 128-bit coefficients.
-        let divisor = normal.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
-        let reduced = normal.clone().map(|v| (v / &divisor).to_i128());
-        // The plane or the distance does not fit the 128-bit numbers a
-        // report prints: say which vertex is off which plane, and what fits.
-        let beyond = |plane: Option<PlaneEquation>| GeometryError::NotPlanarBeyondRange {
-            vertex: index + 1,
-            through: [1, i + 1, k + 1],
-            plane,
-        };
-        let [Some(a), Some(b), Some(c)] = reduced else { return Err(beyond(None)) };
-        let plane = reduced_plane([a, b, c], p1, geometry.scale()).ok_or_else(|| beyond(None))?;
-        let distance_too_large = || beyond(Some(plane));
-        let residual = residual / divisor;
-        let (off_by, along_z) = if c != 0 {
-            let (n, d) = (residual, big(c) * big(geometry.scale()));
-            let g = n.gcd(&d);
-            match ((n / &g).to_i128(), (d / &g).to_i128()) {
-                (Some(n), Some(d)) => (crate::exact::Q::new(n, d), true),
-                _ => return Err(distance_too_large()),
-            }
-        } else {
-            let scale = big(geometry.scale());
-            let value = (big(plane.a) * big(point[0])
-                + big(plane.b) * big(point[1])
-                + big(plane.c) * big(point[2])
-                + big(plane.d) * &scale)
-                / &scale;
-            match value.to_i128() {
-                Some(v) => (crate::exact::Q::from_integer(v), false),
-                None => return Err(distance_too_large()),
-            }
-        };
-        return Err(GeometryError::NotPlanar(Box::new(OffPlane {
-            vertex: index + 1,
-            through: [1, i + 1, k + 1],
-            plane,
-            off_by,
-            along_z,
-        })));
-    }
-    Ok(())
 }
 
 /// Largest depth numerator the tier hands on as a 128-bit [`Depth`], and
@@ -136,24 +34,36 @@ const DEPTH_NUMERATOR: i128 = 1 << 125;
 const DEPTH_DENOMINATOR: i128 = 1 << 124;
 const CROSSING: i128 = 1 << 120;
 
-/// An edge that crosses scanlines, as the tier walks it: its ends' scaled
-/// heights and its line `αx + βy + γ = 0` in pixel units, reduced, `α > 0`.
+/// An edge that crosses scanlines, as the tier walks it: the rows it
+/// crosses under each [`RowRule`] (first and last, in the order of
+/// [`rule_index`]) and its line `αx + βy + γ = 0` in pixel units, reduced,
+/// `α > 0`.
 #[derive(Debug, Clone, PartialEq, Eq)]
 struct Edge {
-    ends: [i128; 2],
+    rows: [[i128; 2]; 3],
     line: [i128; 3],
 }
 
-/// What the tier works from: the edges' lines and the plane `Ax + By + Cz +
-/// D = 0`, both in pixel units and reduced, whatever the polygon's common
-/// denominator. A clipped or divided polygon's vertices carry large
-/// denominators, but its edges and plane are those of the polygon it was cut
-/// from and stay small, and so do the crossings and depths computed from them.
-/// Made once, with the geometry ([`Geometry::is_big`]).
+fn rule_index(rule: RowRule) -> usize {
+    match rule {
+        RowRule::HalfOpen => 0,
+        RowRule::Closed => 1,
+        RowRule::TopLeft => 2,
+    }
+}
+
+/// A polygon of the big-integer tier (see the module documentation).
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Lines {
+pub struct BigPolygon {
+    /// `D`, the least common denominator of the polygon's coordinates.
+    denominator: BigInt,
+    /// Vertices as `[x·2D, y·2D, z·2D]`.
+    points: Vec<[BigInt; 3]>,
     edges: Vec<Edge>,
+    /// The plane `Ax + By + Cz + D = 0` in pixel units, reduced, `C ≥ 0`.
     plane: PlaneEquation,
+    /// `(A, B, C)` pointing as Newell's normal does (its sign gives the winding).
+    normal: [i128; 3],
 }
 
 /// `Σ aᵢ·bᵢ` exactly: in `i128` while no step overflows, else in big
@@ -168,146 +78,281 @@ fn below(v: Option<i128>, limit: i128) -> bool {
     v.is_some_and(|v| v.unsigned_abs() < limit.unsigned_abs())
 }
 
+/// The values divided by their greatest common divisor, the last non-zero
+/// of the first `lead` made positive; `None` when one does not fit `i128`.
+fn reduced<const N: usize>(values: [BigInt; N], lead: usize) -> Option<[i128; N]> {
+    // Most often the values themselves fit 128 bits: reduced there, faster.
+    let words = values.iter().map(|v| v.to_i128().filter(|w| *w != i128::MIN)).collect::<Option<Vec<i128>>>();
+    if let Some(words) = words {
+        let divisor = words.iter().fold(0i128, |g, v| g.gcd(v));
+        if divisor == 0 {
+            return Some([0; N]);
+        }
+        let negative = words[..lead].iter().rev().find(|v| **v != 0).is_some_and(|v| *v < 0);
+        let divisor = if negative { -divisor } else { divisor };
+        return Some(std::array::from_fn(|i| words[i] / divisor));
+    }
+    let divisor = values.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
+    if divisor.is_zero() {
+        return Some([0; N]);
+    }
+    let negative = values[..lead].iter().rev().find(|v| !v.is_zero()).is_some_and(Signed::is_negative);
+    let divisor = if negative { -divisor } else { divisor };
+    let values = values.map(|v| (v / &divisor).to_i128());
+    values.iter().all(Option::is_some).then(|| values.map(|v| v.expect("checked")))
+}
+
+/// Newell's normal of scaled points (seed 002), in big integers.
+fn newell(points: &[[BigInt; 3]]) -> [BigInt; 3] {
+    let mut normal = [BigInt::zero(), BigInt::zero(), BigInt::zero()];
+    for (i, p) in points.iter().enumerate() {
+        let q = &points[(i + 1) % points.len()];
+        normal[0] += (&p[1] - &q[1]) * (&p[2] + &q[2]);
+        normal[1] += (&p[2] - &q[2]) * (&p[0] + &q[0]);
+        normal[2] += (&p[0] - &q[0]) * (&p[1] + &q[1]);
+    }
+    normal
+}
+
+/// The plane with `normal` through `point` (both in scaled units, scale
+/// `2D`) in pixel units, reduced and signed as the book prints it (see
+/// [`crate::plane::Geometry::plane`]); `None` when a coefficient does not
+/// fit `i128`. In scaled units the plane is `a·X + b·Y + c·Z + d' = 0`
+/// with `d' = −(a·X₁ + b·Y₁ + c·Z₁)`, and `X = 2D·x`.
+fn plane_through(normal: &[BigInt; 3], point: &[BigInt; 3], scale: &BigInt) -> Option<PlaneEquation> {
+    let [a, b, c] = normal;
+    let d = -(a * &point[0] + b * &point[1] + c * &point[2]);
+    let [a, b, c, d] = reduced([a * scale, b * scale, c * scale, d], 3)?;
+    Some(PlaneEquation { a, b, c, d })
+}
+
+/// [`plane_through`] for word-sized scaled values.
+pub(crate) fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> Option<PlaneEquation> {
+    plane_through(&normal.map(big), &point.map(big), &big(scale))
+}
+
+/// `numerator / denominator` as a reduced [`Q`], when it fits.
+fn fraction(numerator: BigInt, denominator: BigInt) -> Option<Q> {
+    let [n, d] = reduced([numerator, denominator], 2)?;
+    Some(Q::new(n, d))
+}
+
+/// The planarity check: every vertex on the plane through vertex 1 and the
+/// first two vertices not collinear with it (as the word tiers check it).
+fn check_planar(points: &[[BigInt; 3]], scale: &BigInt) -> Result<(), GeometryError> {
+    let p1 = &points[0];
+    let sub = |p: &[BigInt; 3]| [&p[0] - &p1[0], &p[1] - &p1[1], &p[2] - &p1[2]];
+    let Some(i) = points.iter().position(|p| p != p1) else { return Ok(()) };
+    let u = sub(&points[i]);
+    let found = points.iter().enumerate().skip(i + 1).find_map(|(k, p)| {
+        let v = sub(p);
+        let n = [&u[1] * &v[2] - &u[2] * &v[1], &u[2] * &v[0] - &u[0] * &v[2], &u[0] * &v[1] - &u[1] * &v[0]];
+        (!n.iter().all(Zero::is_zero)).then_some((k, n))
+    });
+    let Some((k, normal)) = found else { return Ok(()) };
+    for (index, point) in points.iter().enumerate() {
+        let w = sub(point);
+        let residual = &normal[0] * &w[0] + &normal[1] * &w[1] + &normal[2] * &w[2];
+        if residual.is_zero() {
+            continue;
+        }
+        let through = [1, i + 1, k + 1];
+        // The plane or the distance may not fit the 128-bit numbers a report
+        // prints: then say which vertex is off which plane, and what fits.
+        let beyond =
+            |plane: Option<PlaneEquation>| GeometryError::NotPlanarBeyondRange { vertex: index + 1, through, plane };
+        let plane = plane_through(&normal, p1, scale).ok_or_else(|| beyond(None))?;
+        let (off_by, along_z) = if normal[2].is_zero() {
+            // Without a z term, the reduced equation's value at the vertex.
+            let [a, b, c, d] = [plane.a, plane.b, plane.c, plane.d].map(big);
+            let value = a * &point[0] + b * &point[1] + c * &point[2] + d * scale;
+            (fraction(value, scale.clone()), false)
+        } else {
+            // residual = n_z·ΔZ in scaled units, and Δz = ΔZ / 2D.
+            (fraction(residual, &normal[2] * scale), true)
+        };
+        let off_by = off_by.ok_or_else(|| beyond(Some(plane)))?;
+        return Err(GeometryError::NotPlanar(Box::new(OffPlane {
+            vertex: index + 1,
+            through,
+            plane,
+            off_by,
+            along_z,
+        })));
+    }
+    Ok(())
+}
+
 /// The line through scaled points `p` and `q` (`p_y ≠ q_y`) in pixel units,
 /// reduced, `α > 0`; `None` when it does not fit `i128`. In scaled units it
 /// is `ΔY·X − ΔX·Y + (ΔX·Y₁ − ΔY·X₁) = 0`, and `X = 2D·x`, `Y = 2D·y`.
-fn reduced_line(p: [i128; 3], q: [i128; 3], scale: i128) -> Option<[i128; 3]> {
-    let words = || {
-        let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
-        let line = [
-            dy.checked_mul(scale)?,
-            dx.checked_mul(scale)?.checked_neg()?,
-            sum_of_products(&[(dx, p[1]), (-dy, p[0])])?,
-        ];
-        line.iter().all(|v| *v != i128::MIN).then_some(line)
-    };
-    if let Some(mut line) = words() {
-        let divisor = line.iter().fold(0i128, |g, v| g.gcd(v)) * line[0].signum();
-        for v in &mut line {
-            *v /= divisor;
-        }
-        return Some(line);
-    }
-    let (dx, dy) = (big(q[0]) - big(p[0]), big(q[1]) - big(p[1]));
-    let gamma = &dx * big(p[1]) - &dy * big(p[0]);
-    let mut line = [&dy * big(scale), -(&dx * big(scale)), gamma];
-    let divisor = line.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
-    let divisor = if line[0].is_negative() { -divisor } else { divisor };
-    let [alpha, beta, gamma] = line.each_mut().map(|v| (&*v / &divisor).to_i128());
-    Some([alpha?, beta?, gamma?])
+fn reduced_line(p: &[BigInt; 3], q: &[BigInt; 3], scale: &BigInt) -> Option<[i128; 3]> {
+    let (dx, dy) = (&q[0] - &p[0], &q[1] - &p[1]);
+    let gamma = &dx * &p[1] - &dy * &p[0];
+    reduced([&dy * scale, -(&dx * scale), gamma], 1)
 }
 
-impl Lines {
-    /// The plane, reduced (as [`Geometry::plane`]).
+/// `⌊n / d⌋` and `⌈n / d⌉` as `i128` (`d > 0`), when they fit.
+fn floor_i128(n: BigInt, d: &BigInt) -> Option<i128> {
+    n.div_floor(d).to_i128()
+}
+
+fn ceil_i128(n: BigInt, d: &BigInt) -> Option<i128> {
+    n.div_ceil(d).to_i128()
+}
+
+impl BigPolygon {
+    /// The polygon with scaled vertices `points` (over common denominator
+    /// `denominator`): its normal and planarity checked, its edges' lines and
+    /// plane reduced. `Ok(None)` when its plane, a crossing or a depth at a
+    /// centre within a pixel of it would need more than 128 bits: a crossing
+    /// `−(β(2r + 1) + 2γ) / 2α` at any row `r` the edge reaches, a depth
+    /// `−(A(2x + 1) + B(2y + 1) + 2D) / 2C` at the centre of any pixel
+    /// `(x, y)` within one of the polygon's bounding box. Both numerators are
+    /// linear, so they are largest at the ends of those ranges, where they
+    /// are checked.
+    pub(crate) fn new(points: Vec<[BigInt; 3]>, denominator: BigInt) -> Result<Option<BigPolygon>, GeometryError> {
+        let scale = &denominator * 2;
+        check_planar(&points, &scale)?;
+        let newell = newell(&points);
+        let Some(plane) = plane_through(&newell, &points[0], &scale) else { return Ok(None) };
+        // (A, B, C) with Newell's orientation: the plane's is the last non-zero made positive.
+        let flip = newell.iter().rev().find(|v| !v.is_zero()).is_some_and(Signed::is_negative);
+        let sign = if flip { -1 } else { 1 };
+        let normal = [plane.a * sign, plane.b * sign, plane.c * sign];
+        let d = &denominator;
+        let mut edges = Vec::with_capacity(points.len());
+        for (i, p) in points.iter().enumerate() {
+            let q = &points[(i + 1) % points.len()];
+            if p[1] == q[1] {
+                continue;
+            }
+            let Some([alpha, beta, gamma]) = reduced_line(p, q, &scale) else { return Ok(None) };
+            let (low, high) = if p[1] < q[1] { (&p[1], &q[1]) } else { (&q[1], &p[1]) };
+            // Rows whose scanlines (2r + 1)·D lie in [low, high), [low, high], (low, high].
+            let rows = (|| {
+                let (from, to) = (low - d, high - d);
+                let first = ceil_i128(from.clone(), &scale)?;
+                let after = floor_i128(from, &scale)? + 1;
+                let (last_open, last) = (ceil_i128(to.clone(), &scale)? - 1, floor_i128(to, &scale)?);
+                Some([[first, last_open], [first, last], [after, last]])
+            })();
+            let Some(rows) = rows else { return Ok(None) };
+            // The widest range is the closed one; it may be empty.
+            let [first, last] = rows[1];
+            let numerator = |r: i128| sum_of_products(&[(beta, 2 * r + 1), (gamma, 2)]);
+            let fits = first > last || (below(numerator(first), CROSSING) && below(numerator(last), CROSSING));
+            if !fits || !below(alpha.checked_mul(2), CROSSING) {
+                return Ok(None);
+            }
+            edges.push(Edge { rows, line: [alpha, beta, gamma] });
+        }
+        let polygon = BigPolygon { denominator, points, edges, plane, normal };
+        let Some([x0, x1, y0, y1]) = polygon.cells() else { return Ok(None) };
+        let PlaneEquation { a, b, c, d } = plane;
+        let depth = |x: i128, y: i128| sum_of_products(&[(a, 2 * x + 1), (b, 2 * y + 1), (d, 2)]);
+        let corners =
+            [x0 - 1, x1 + 1].iter().all(|&x| [y0 - 1, y1 + 1].iter().all(|&y| below(depth(x, y), DEPTH_NUMERATOR)));
+        Ok((corners && below(c.checked_mul(2), DEPTH_DENOMINATOR)).then_some(polygon))
+    }
+
+    /// The plane, reduced (as [`crate::plane::Geometry::plane`]).
     pub(crate) fn plane(&self) -> PlaneEquation {
         self.plane
     }
 
-    /// The lines, or `None` when a crossing or a depth at a centre within a
-    /// pixel of the polygon could need more than 128 bits: a crossing
-    /// `−(β(2r + 1) + 2γ) / 2α` at any row `r` the edge reaches, a depth
-    /// `−(A(2x + 1) + B(2y + 1) + 2D) / 2C` at the centre of any pixel
-    /// `(x, y)` within one pixel of the polygon's bounding box. Both
-    /// numerators are linear, so they are largest at the ends of those
-    /// ranges, where they are checked.
-    pub(crate) fn new(geometry: &Geometry) -> Option<Lines> {
-        let plane = reduced_plane(geometry.normal, geometry.points[0], geometry.scale())?;
-        let (scale, d) = (geometry.scale(), geometry.denominator);
-        let points = &geometry.points;
-        let mut edges = Vec::with_capacity(points.len());
-        for (i, p) in points.iter().enumerate() {
-            let q = points[(i + 1) % points.len()];
-            if p[1] == q[1] {
-                continue;
-            }
-            let [alpha, beta, gamma] = reduced_line(*p, q, scale)?;
-            // The rows whose scanlines (2r + 1)·D lie within the edge's heights, under any rule.
-            let (low, high) = (p[1].min(q[1]), p[1].max(q[1]));
-            let rows = [ceil_div(low - d, scale), floor_div(high - d, scale).0];
-            let numerator = |r: i128| sum_of_products(&[(beta, 2 * r + 1), (gamma, 2)]);
-            if !rows.iter().all(|&r| below(numerator(r), CROSSING)) || !below(alpha.checked_mul(2), CROSSING) {
-                return None;
-            }
-            edges.push(Edge { ends: [low, high], line: [alpha, beta, gamma] });
-        }
-        // The pixels within one of the polygon's bounding box, along x and along y.
-        let reach = |axis: usize| {
-            let values = points.iter().map(|p| p[axis]);
-            let (low, high) = (values.clone().min().unwrap_or(0), values.max().unwrap_or(0));
-            [floor_div(low, scale).0 - 1, floor_div(high, scale).0 + 1]
+    /// `(A, B, C)` oriented as Newell's normal.
+    pub(crate) fn normal(&self) -> [i128; 3] {
+        self.normal
+    }
+
+    /// The scaled vertices and `D`.
+    pub(crate) fn scaled(&self) -> (&[[BigInt; 3]], &BigInt) {
+        (&self.points, &self.denominator)
+    }
+
+    /// The cells `⌊x⌋`, `⌊y⌋` holding the polygon's bounding box: lowest
+    /// and highest column, lowest and highest row (`None` beyond `i128`).
+    pub(crate) fn cells(&self) -> Option<[i128; 4]> {
+        let scale = &self.denominator * 2;
+        let cell = |axis: usize, high: bool| {
+            let values = self.points.iter().map(|p| &p[axis]);
+            let value = if high { values.max() } else { values.min() };
+            floor_i128(value?.clone(), &scale)
         };
-        let PlaneEquation { a, b, c, d } = plane;
-        let depth = |x: i128, y: i128| sum_of_products(&[(a, 2 * x + 1), (b, 2 * y + 1), (d, 2)]);
-        let fits = reach(0).iter().all(|&x| reach(1).iter().all(|&y| below(depth(x, y), DEPTH_NUMERATOR)));
-        (fits && below(c.checked_mul(2), DEPTH_DENOMINATOR)).then_some(Lines { edges, plane })
+        Some([cell(0, false)?, cell(0, true)?, cell(1, false)?, cell(1, true)?])
     }
 
     /// The exact depth at the centre of pixel `(column, row)`, within a pixel
     /// of the polygon: `−(A(2x + 1) + B(2y + 1) + 2D) / 2C`, below 2^125 over
-    /// below 2^124 by [`Lines::new`].
+    /// below 2^124 by [`BigPolygon::new`].
     pub(crate) fn depth_at_centre(&self, column: u32, row: u32) -> Depth {
         let PlaneEquation { a, b, c, d } = self.plane;
         let terms = [(a, 2 * i128::from(column) + 1), (b, 2 * i128::from(row) + 1), (d, 2)];
-        Depth::from_fraction(-sum_of_products(&terms).expect("checked by Lines::new"), 2 * c)
+        Depth::from_fraction(-sum_of_products(&terms).expect("checked by BigPolygon::new"), 2 * c)
     }
 
-    /// The crossings with the scanline at scaled height `scan_y`, row `row`,
-    /// sorted left to right (as [`scan::crossings`] computes them from the
-    /// vertices).
-    fn crossings(&self, row: u32, scan_y: i128, rule: RowRule, out: &mut Vec<Crossing>) {
+    /// The rows the polygon's scanlines reach under `rule`, clipped to `limit`.
+    fn rows(&self, rule: RowRule, limit: (u32, u32)) -> Option<std::ops::RangeInclusive<u32>> {
+        let ranges = self.edges.iter().map(|e| e.rows[rule_index(rule)]).filter(|[f, l]| f <= l);
+        let (first, last) = ranges.fold((i128::MAX, i128::MIN), |(f, l), [a, b]| (f.min(a), l.max(b)));
+        let (first, last) = (first.max(limit.0.into()), last.min(limit.1.into()));
+        (first <= last).then_some(first as u32..=last as u32)
+    }
+
+    /// The crossings with the scanline of row `row`, sorted left to right (as
+    /// [`scan::crossings`] computes them from the vertices).
+    fn crossings(&self, row: u32, rule: RowRule, out: &mut Vec<Crossing>) {
         out.clear();
+        let r = i128::from(row);
         for edge in &self.edges {
-            let [low, high] = edge.ends;
-            let crosses = match rule {
-                RowRule::HalfOpen => low <= scan_y && scan_y < high,
-                RowRule::Closed => low <= scan_y && scan_y <= high,
-                RowRule::TopLeft => low < scan_y && scan_y <= high,
-            };
-            if crosses {
-                // αx = −(βy + γ) at y = (2r + 1)/2; below 2^120 by `Lines::new`.
+            let [first, last] = edge.rows[rule_index(rule)];
+            if first <= r && r <= last {
+                // αx = −(βy + γ) at y = (2r + 1)/2; below 2^120 by `BigPolygon::new`.
                 let [alpha, beta, gamma] = edge.line;
-                let numerator = sum_of_products(&[(beta, 2 * i128::from(row) + 1), (gamma, 2)]);
-                out.push(Crossing { numerator: -numerator.expect("checked by Lines::new"), denominator: 2 * alpha });
+                let numerator = sum_of_products(&[(beta, 2 * r + 1), (gamma, 2)]);
+                out.push(Crossing {
+                    numerator: -numerator.expect("checked by BigPolygon::new"),
+                    denominator: 2 * alpha,
+                });
             }
         }
         out.sort_unstable_by(Crossing::cmp_position);
     }
-}
 
-/// Draws a polygon of the big-integer tier: the same events, in the same
-/// order, as the word-sized rasterizer ([`crate::pipeline::rasterize`]).
-pub(crate) fn rasterize<S: RasterSink>(
-    geometry: &Geometry,
-    rules: Rules,
-    rect: PixelRect,
-    (found, spans): (&mut Vec<Crossing>, &mut Vec<Span>),
-    sink: &mut S,
-) {
-    let Some(rows) = scan::rows(&geometry.points, geometry.denominator, rect.rows, rules.rows) else { return };
-    let lines = geometry.lines().expect("a polygon of the big-integer tier has its lines");
-    // z₁ = z − A/C per column: the numerator over |2C| falls by 2A·sign(C),
-    // below 2^125 as the depths at two columns of `Lines::new`'s range are.
-    let step = 2 * lines.plane.a * lines.plane.c.signum();
-    for row in rows {
-        let scan_y = scan::scanline_y(row, geometry.denominator);
-        lines.crossings(row, scan_y, rules.rows, found);
-        spans.clear();
-        spans.extend(scan::pairs(found.len(), rules.rows).map(|(i, j)| Span {
-            left: found[i],
-            right: found[j],
-            columns: scan::columns(found[i], found[j], rect.columns, rules.columns),
-        }));
-        if S::OBSERVES_SCANLINES {
-            sink.scanline(row, found, spans);
-        }
-        for span in spans.iter() {
-            if let Some((first, last)) = span.columns {
-                // The first centre's depth, then z₁ = z − A/C per column (every
-                // numerator below 2^125 by `Lines::new`).
-                let (mut numerator, denominator) = lines.depth_at_centre(first, row).fraction();
-                for x in first..=last {
-                    sink.pixel(x, row, Depth::from_fraction(numerator, denominator));
-                    numerator -= step;
+    /// Draws the polygon: the same events, in the same order, as the
+    /// word-sized rasterizer ([`crate::pipeline::rasterize`]).
+    pub(crate) fn rasterize<S: RasterSink>(
+        &self,
+        rules: Rules,
+        rect: PixelRect,
+        (found, spans): (&mut Vec<Crossing>, &mut Vec<Span>),
+        sink: &mut S,
+    ) {
+        let Some(rows) = self.rows(rules.rows, rect.rows) else { return };
+        // z₁ = z − A/C per column: the numerator over |2C| falls by 2A·sign(C),
+        // below 2^125 as the depths at two columns of `BigPolygon::new`'s range are.
+        let step = 2 * self.plane.a * self.plane.c.signum();
+        for row in rows {
+            self.crossings(row, rules.rows, found);
+            spans.clear();
+            spans.extend(scan::pairs(found.len(), rules.rows).map(|(i, j)| Span {
+                left: found[i],
+                right: found[j],
+                columns: scan::columns(found[i], found[j], rect.columns, rules.columns),
+            }));
+            if S::OBSERVES_SCANLINES {
+                sink.scanline(row, found, spans);
+            }
+            for span in spans.iter() {
+                if let Some((first, last)) = span.columns {
+                    // The first centre's depth, then one step per column (every
+                    // numerator below 2^125 by `BigPolygon::new`).
+                    let mut depth = DepthStepper::from_depth(self.depth_at_centre(first, row), -step);
+                    for x in first..=last {
+                        sink.pixel(x, row, depth.current());
+                        depth.advance();
+                    }
                 }
             }
         }
@@ -319,6 +364,7 @@ mod tests {
     use super::*;
     use crate::exact::Q;
     use crate::pipeline::{Scratch, rasterize as draw};
+    use crate::plane::Geometry;
 
     /// Every event as values: scanlines' crossings and spans, pixels' depths.
     #[derive(Default)]

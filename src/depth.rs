@@ -233,7 +233,7 @@ impl Depth {
     /// Rounded to the nearest integer, halves up (the book: "z is rounded to
     /// the nearest integer"; 10.5 becomes 11, −0.5 becomes 0).
     pub fn rounded(self) -> i128 {
-        // remainder < denominator < 2^124 (plane::MAX_SCALED; big::fits on the big tier), so 2·remainder fits.
+        // remainder < denominator < 2^124 (plane::MAX_SCALED; BigPolygon::new on the big tier), so 2·remainder fits.
         self.whole + i128::from(2 * self.remainder >= self.denominator)
     }
 
@@ -346,6 +346,20 @@ impl<W: Word> DepthPlane<W> {
 }
 
 impl DepthStepper {
+    /// Starts at `depth`, stepping by `step / denominator` per pixel (the
+    /// depth's own positive denominator, [`Depth::fraction`]); every value
+    /// reached must fit as the depth does.
+    pub fn from_depth(depth: Depth, step: i128) -> DepthStepper {
+        let (step_whole, step_remainder) = floor_div(step, depth.denominator);
+        DepthStepper {
+            whole: depth.whole,
+            remainder: depth.remainder,
+            denominator: depth.denominator,
+            step_whole,
+            step_remainder,
+        }
+    }
+
     /// Starts at the centre of pixel `column` on the scanline at scaled height
     /// `scan_y`, for a polygon whose Newell `c` is non-zero.
     ///
@@ -404,8 +418,8 @@ impl<W: Word> DepthStepper<W> {
 /// `z = −(A(2x + 1) + B(2y + 1) + 2D) / 2C` (within 128 bits at every centre
 /// within a pixel of the polygon: checked when the polygon was made).
 pub fn depth_at_centre(geometry: &Geometry, column: u32, row: u32) -> Depth {
-    if let Some(lines) = geometry.lines() {
-        return lines.depth_at_centre(column, row);
+    if let Some(polygon) = geometry.big() {
+        return polygon.depth_at_centre(column, row);
     }
     DepthStepper::start(geometry, i128::from(column), crate::scan::scanline_y(row, geometry.denominator)).current()
 }

@@ -95,6 +95,8 @@ pub enum Mapping {
     Perspective,
     /// From clip space: clipping, division by w, the viewport.
     ClipSpace,
+    /// Onto the k× raster of antialiasing by supersampling.
+    Supersampled,
 }
 
 impl fmt::Display for PolygonProblem {
@@ -113,6 +115,7 @@ impl fmt::Display for PolygonProblem {
                     Mapping::Window => words!("mapping-window"),
                     Mapping::Perspective => words!("mapping-perspective"),
                     Mapping::ClipSpace => words!("mapping-clip-space"),
+                    Mapping::Supersampled => words!("mapping-supersampled"),
                 };
                 f.write_str(&words!("polygon-mapped-out-of-range", stage = stage))
             }

@@ -339,6 +339,19 @@ pub fn fraction(value: Q) -> String {
     if value.is_integer() { value.numer().to_string() } else { format!("{}/{}", value.numer(), value.denom()) }
 }
 
+/// A big integer as a message prints it: whole up to 60 digits, beyond
+/// that its first and last 12 digits and how many there are
+/// (`123456789012…345678901234 (1304 digits)`), so a line stays readable.
+pub fn big_integer(value: &num_bigint::BigInt) -> String {
+    let text = value.to_string();
+    let (sign, digits) = text.strip_prefix('-').map_or(("", text.as_str()), |rest| ("-", rest));
+    if digits.len() <= 60 {
+        return text;
+    }
+    let count = words!("digits", count = digits.len().to_string());
+    format!("{sign}{}…{} ({count})", &digits[..12], &digits[digits.len() - 12..])
+}
+
 /// A number as a student writes it: `12`, `12.5`, `5.375`, or a fraction
 /// (`41/3`) when no decimal of at most four places is exact.
 ///

@@ -51,7 +51,7 @@
 //!   results (`pipeline::tests::both_words_rasterize_alike`). Larger ones run
 //!   on the big-integer tier ([`big`]: the formulas in arbitrary-precision
 //!   integers, same results, the same proptest); only what no 128-bit report
-//!   can hold is refused ([`plane::MAX_SCALED_BIG`], [`big`]).
+//!   can hold is refused ([`big`], [`plane::MAX_SCALED_BITS`]).
 //!
 //! # Example
 //!

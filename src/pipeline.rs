@@ -98,8 +98,8 @@ pub fn rasterize<S: RasterSink>(
     sink: &mut S,
 ) {
     let Scratch { narrow, wide, crossings, spans } = scratch;
-    if geometry.is_big() {
-        crate::big::rasterize(geometry, rules, rect, (crossings, spans), sink);
+    if let Some(polygon) = geometry.big() {
+        polygon.rasterize(rules, rect, (crossings, spans), sink);
     } else if geometry.fits_i64() {
         rasterize_in(geometry, rules, rect, narrow, (crossings, spans), sink);
     } else {
@@ -705,15 +705,10 @@ impl<S: PixelStages, O: Observer> RasterSink for DrawSink<'_, S, O> {
 /// The pixels a polygon's bounding box can cover (centres or cells), clipped
 /// to the raster; `None` when it lies outside.
 fn pixel_bounds(geometry: &Geometry, width: u32, height: u32) -> Option<PixelRect> {
-    let scale = geometry.scale();
-    let (mut x0, mut x1, mut y0, mut y1) = (i128::MAX, i128::MIN, i128::MAX, i128::MIN);
-    for p in &geometry.points {
-        (x0, x1, y0, y1) = (x0.min(p[0]), x1.max(p[0]), y0.min(p[1]), y1.max(p[1]));
-    }
-    // Cell ⌊x⌋ in pixel units is ⌊X / 2D⌋; widen by one cell each way for safety.
-    let cell = |v: i128| crate::exact::floor_div(v, scale).0;
+    let [x0, x1, y0, y1] = geometry.cells();
+    // Widen by one cell each way for safety.
     let clamp = |v: i128, max: u32| v.clamp(0, i128::from(max) - 1) as u32;
-    let (c0, c1, r0, r1) = (cell(x0) - 1, cell(x1) + 1, cell(y0) - 1, cell(y1) + 1);
+    let (c0, c1, r0, r1) = (x0 - 1, x1 + 1, y0 - 1, y1 + 1);
     if c1 < 0 || r1 < 0 || c0 >= i128::from(width) || r0 >= i128::from(height) {
         return None;
     }

@@ -24,15 +24,15 @@ use crate::exact::Q;
 /// numerator at most `6R² < 2^71` (see `depth` and `scan`).
 pub const MAX_SCALED: i128 = 1 << 34;
 
-/// Largest magnitude of a scaled coordinate in the big-integer tier
-/// ([`Geometry::is_big`]): polygons beyond [`MAX_SCALED`] are drawn by a
-/// rasterizer that multiplies in arbitrary-precision integers
-/// (`crate::big`), as long as what it reports (crossings, depths, the
-/// plane, all reduced) still fits the 128-bit numbers the rest of zsim
-/// speaks. Sums and differences of two scaled coordinates (and scanline
-/// heights, which lie within the polygon) then fit `i128`; every product
-/// of them is taken in big integers.
-pub const MAX_SCALED_BIG: i128 = 1 << 120;
+/// Largest size, in bits, of a scaled coordinate `|x·2D|` in the
+/// big-integer tier ([`Geometry::is_big`]): polygons beyond [`MAX_SCALED`]
+/// are drawn by a rasterizer that keeps the scaled vertices in
+/// arbitrary-precision integers (`crate::big`), as long as what it reports
+/// (crossings, depths, the plane, all reduced) still fits the 128-bit
+/// numbers the rest of zsim speaks. The bound only keeps absurd input
+/// (hundreds of coprime denominators) from running for ever: 2^4096 is about
+/// 10^1233.
+pub const MAX_SCALED_BITS: u64 = 4096;
 
 /// Most vertices one polygon may have.
 pub const MAX_VERTICES: usize = 1 << 16;
@@ -66,7 +66,7 @@ pub enum GeometryError {
         /// The plane, when its coefficients fit (then the distance does not).
         plane: Option<PlaneEquation>,
     },
-    /// Within [`MAX_SCALED_BIG`], but the polygon's plane, an edge's
+    /// Within [`MAX_SCALED_BITS`], but the polygon's plane, an edge's
     /// crossings or its depths, reduced, would outgrow the 128-bit numbers
     /// zsim reports (`crate::big::fits`).
     TooLargeForDepth {
@@ -104,7 +104,7 @@ impl fmt::Display for GeometryError {
                 "geometry-out-of-range",
                 vertex = vertex.to_string(),
                 value = crate::exact::fraction(*value),
-                denominator = denominator.to_string()
+                denominator = crate::exact::big_integer(denominator)
             )),
             GeometryError::TooLargeForDepth { vertex, value } => f.write_str(&words!(
                 "geometry-too-large-for-depth",
@@ -194,17 +194,21 @@ impl fmt::Display for PlaneEquation {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Geometry {
     /// `D`, the least common denominator of the polygon's coordinates; the
-    /// scale of the scaled coordinates is `2D`.
+    /// scale of the scaled coordinates is `2D`. 0 on the big-integer tier.
     pub denominator: i128,
-    /// Vertices as `[x·2D, y·2D, z·2D]`.
+    /// Vertices as `[x·2D, y·2D, z·2D]`, within [`MAX_SCALED`]; empty on the
+    /// big-integer tier, which keeps them in big integers
+    /// ([`Geometry::big_scaled`]).
     pub points: Vec<[i128; 3]>,
-    /// Newell's normal `(a, b, c)` computed on the scaled vertices.
+    /// Newell's normal `(a, b, c)` computed on the scaled vertices (on the
+    /// big-integer tier: the reduced plane's, pointing the same way).
     pub normal: [i128; 3],
     /// Whether the rasterizer's integers fit 64 bits ([`Geometry::fits_i64`]).
     narrow: bool,
     /// For a polygon beyond [`MAX_SCALED`], which runs on the big-integer
-    /// tier ([`Geometry::is_big`]): its edges' lines and plane, reduced.
-    big: Option<Box<crate::big::Lines>>,
+    /// tier ([`Geometry::is_big`]): its scaled vertices in big integers, its
+    /// edges' lines and plane, reduced.
+    big: Option<Box<crate::big::BigPolygon>>,
 }
 
 impl Geometry {
@@ -221,57 +225,21 @@ impl Geometry {
         if vertices.len() > MAX_VERTICES {
             return Err(GeometryError::TooManyVertices(vertices.len()));
         }
-        let mut denominator: i128 = 1;
-        for (index, vertex) in vertices.iter().enumerate() {
-            for value in vertex {
-                // The lcm can outgrow i128 itself before it passes the limit.
-                let factor = denominator / denominator.gcd(value.denom());
-                match factor.checked_mul(*value.denom()) {
-                    Some(lcm) if lcm <= MAX_SCALED_BIG => denominator = lcm,
-                    _ => {
-                        let denominator = BigInt::from(factor) * BigInt::from(*value.denom());
-                        return Err(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator });
-                    }
+        // The words: D and every scaled coordinate within MAX_SCALED.
+        let words = || {
+            let mut denominator: i128 = 1;
+            for value in vertices.iter().flatten() {
+                denominator = denominator.checked_mul(value.denom() / denominator.gcd(value.denom()))?;
+                if denominator > MAX_SCALED {
+                    return None;
                 }
             }
-        }
-        let scale = 2 * denominator;
-        let mut points = Vec::with_capacity(vertices.len());
-        for (index, vertex) in vertices.iter().enumerate() {
-            let mut point = [0i128; 3];
-            for (axis, value) in vertex.iter().enumerate() {
-                let scaled = value.numer().checked_mul(scale / value.denom()).filter(|s| s.abs() <= MAX_SCALED_BIG);
-                point[axis] = scaled.ok_or_else(|| GeometryError::OutOfRange {
-                    vertex: index + 1,
-                    value: *value,
-                    denominator: denominator.into(),
-                })?;
-            }
-            points.push(point);
-        }
-        let big = denominator > MAX_SCALED || points.iter().flatten().any(|v| v.abs() > MAX_SCALED);
-        if big {
-            let out_of_range = || {
-                let (index, value) = vertices
-                    .iter()
-                    .enumerate()
-                    .flat_map(|(i, v)| v.iter().map(move |q| (i, *q)))
-                    .max_by_key(|(_, q)| q.numer().unsigned_abs() / q.denom().unsigned_abs())
-                    .unwrap_or((0, vertices[0][0]));
-                GeometryError::OutOfRange { vertex: index + 1, value, denominator: denominator.into() }
-            };
-            // A normal beyond 128 bits gives depths beyond them too.
-            let too_large = || {
-                let GeometryError::OutOfRange { vertex, value, .. } = out_of_range() else { unreachable!() };
-                GeometryError::TooLargeForDepth { vertex, value }
-            };
-            let normal = crate::big::newell(&points).ok_or_else(too_large)?;
-            let mut geometry = Geometry { denominator, points, normal, narrow: false, big: None };
-            crate::big::check_planar(&geometry)?;
-            let lines = crate::big::Lines::new(&geometry).ok_or_else(too_large)?;
-            geometry.big = Some(Box::new(lines));
-            return Ok(geometry);
-        }
+            let scale = 2 * denominator;
+            let scaled = |v: &Q| Some(v.numer().checked_mul(scale / v.denom())?).filter(|s| s.abs() <= MAX_SCALED);
+            let points = vertices.iter().map(|v| Some([scaled(&v[0])?, scaled(&v[1])?, scaled(&v[2])?]));
+            Some((denominator, points.collect::<Option<Vec<_>>>()?))
+        };
+        let Some((denominator, points)) = words() else { return Geometry::new_big(vertices) };
         let normal = newell(&points);
         let mut geometry = Geometry { denominator, points, normal, narrow: false, big: None };
         geometry.check_planar()?;
@@ -279,14 +247,53 @@ impl Geometry {
         Ok(geometry)
     }
 
+    /// A polygon beyond the words, on the big-integer tier.
+    fn new_big(vertices: &[[Q; 3]]) -> Result<Geometry, GeometryError> {
+        let big = |v: &i128| BigInt::from(*v);
+        let denominator = vertices.iter().flatten().fold(BigInt::from(1), |d, v| d.lcm(&big(v.denom())));
+        let scale: BigInt = &denominator * 2u32;
+        let points: Vec<[BigInt; 3]> =
+            vertices.iter().map(|v| v.map(|c| big(c.numer()) * scale.div_floor(&big(c.denom())))).collect();
+        let limit = BigInt::from(1) << MAX_SCALED_BITS;
+        let beyond = points
+            .iter()
+            .enumerate()
+            .find_map(|(i, p)| p.iter().position(|v| v.magnitude() > limit.magnitude()).map(|axis| (i, axis)));
+        if let Some((index, axis)) = beyond {
+            return Err(GeometryError::OutOfRange { vertex: index + 1, value: vertices[index][axis], denominator });
+        }
+        // The largest coordinate, named when what the polygon reports would not fit.
+        let (index, value) = vertices
+            .iter()
+            .enumerate()
+            .flat_map(|(i, v)| v.iter().map(move |q| (i, *q)))
+            .max_by(|(_, p), (_, q)| num_traits::Signed::abs(p).cmp(&num_traits::Signed::abs(q)))
+            .unwrap_or((0, vertices[0][0]));
+        let polygon = crate::big::BigPolygon::new(points, denominator)?
+            .ok_or(GeometryError::TooLargeForDepth { vertex: index + 1, value })?;
+        Ok(Geometry::on_big(polygon))
+    }
+
+    /// The geometry of a polygon of the big-integer tier: no word-sized
+    /// scaled vertices (`points` empty, `denominator` 0), the normal
+    /// `(A, B, C)` of its reduced plane pointing as Newell's does.
+    fn on_big(polygon: crate::big::BigPolygon) -> Geometry {
+        Geometry {
+            denominator: 0,
+            points: Vec::new(),
+            normal: polygon.normal(),
+            narrow: false,
+            big: Some(Box::new(polygon)),
+        }
+    }
+
     /// The same polygon on the big-integer tier, whatever its size (for the
     /// tests that compare the tiers).
     #[cfg(test)]
     pub(crate) fn on_big_tier(&self) -> Geometry {
-        let normal = crate::big::newell(&self.points).expect("a small polygon's normal fits");
-        let geometry = Geometry { normal, big: None, narrow: false, ..self.clone() };
-        let lines = crate::big::Lines::new(&geometry).expect("a small polygon's lines fit");
-        Geometry { big: Some(Box::new(lines)), ..geometry }
+        let points = self.points.iter().map(|p| p.map(BigInt::from)).collect();
+        let polygon = crate::big::BigPolygon::new(points, self.denominator.into());
+        Geometry::on_big(polygon.expect("planar").expect("a small polygon fits"))
     }
 
     /// Whether the polygon lies beyond [`MAX_SCALED`], where the word-sized
@@ -297,9 +304,29 @@ impl Geometry {
         self.big.is_some()
     }
 
-    /// The edges' lines and the plane of a polygon on the big-integer tier.
-    pub(crate) fn lines(&self) -> Option<&crate::big::Lines> {
+    /// The big-integer tier's polygon, when this is one.
+    pub(crate) fn big(&self) -> Option<&crate::big::BigPolygon> {
         self.big.as_deref()
+    }
+
+    /// The scaled vertices and `D` of a polygon on the big-integer tier, in
+    /// big integers.
+    pub fn big_scaled(&self) -> Option<(&[[BigInt; 3]], &BigInt)> {
+        self.big.as_deref().map(crate::big::BigPolygon::scaled)
+    }
+
+    /// The cells `⌊x⌋`, `⌊y⌋` holding the polygon's bounding box, on any
+    /// tier: lowest and highest column, lowest and highest row.
+    pub fn cells(&self) -> [i128; 4] {
+        if let Some(polygon) = &self.big {
+            return polygon.cells().expect("checked when the polygon was made");
+        }
+        let (mut x0, mut x1, mut y0, mut y1) = (i128::MAX, i128::MIN, i128::MAX, i128::MIN);
+        for p in &self.points {
+            (x0, x1, y0, y1) = (x0.min(p[0]), x1.max(p[0]), y0.min(p[1]), y1.max(p[1]));
+        }
+        let cell = |v: i128| crate::exact::floor_div(v, self.scale()).0;
+        [cell(x0), cell(x1), cell(y0), cell(y1)]
     }
 
     /// The scale factor `2D` between polygon units and scaled units.
@@ -355,8 +382,8 @@ impl Geometry {
     /// The plane through vertex 1 with Newell's normal, in the polygon's own
     /// units, reduced.
     pub fn plane(&self) -> PlaneEquation {
-        if let Some(lines) = &self.big {
-            return lines.plane();
+        if let Some(polygon) = &self.big {
+            return polygon.plane();
         }
         reduced_plane(self.normal, self.points[0], self.scale())
     }
@@ -414,11 +441,10 @@ impl Geometry {
 /// `d' = −(a·X₁ + b·Y₁ + c·Z₁)`; with `X = 2D·x` that is
 /// `2D·a·x + 2D·b·y + 2D·c·z + d' = 0`, then divided by the gcd.
 pub(crate) fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> PlaneEquation {
-    // Worked in big integers: for a polygon on the big-integer tier the
-    // products outgrow i128 though the reduced plane fits (checked when the
-    // geometry is made, [`crate::big::fits`]).
-    crate::big::reduced_plane(normal, point, scale)
-        .expect("the reduced plane fits i128: checked when the geometry was made")
+    // Worked in big integers: the products can outgrow i128 though the
+    // reduced plane fits (a word-sized polygon's always does: its normal is
+    // below 2^86 and its scale 2^35).
+    crate::big::reduced_plane(normal, point, scale).expect("a word-sized polygon's reduced plane fits i128")
 }
 
 /// Newell's method (seed 002): `a = Σ(yᵢ − yᵢ₊₁)(zᵢ + zᵢ₊₁)`,
@@ -497,9 +523,18 @@ mod tests {
         assert!(!Geometry::new(&q(&[[0, 0, 0], [-(1 << 33), 0, 0], [0, 1, 0]])).unwrap().is_big());
         // One more: the big-integer tier draws it.
         assert!(Geometry::new(&q(&[[0, 0, 0], [(1 << 33) + 1, 0, 0], [0, 1, 0]])).unwrap().is_big());
-        // Past MAX_SCALED_BIG (2^119 scaled by 2): refused, naming the vertex.
-        assert!(Geometry::new(&q(&[[0, 0, 0], [1 << 119, 0, 0], [0, 1, 0]])).unwrap().is_big());
-        let err = Geometry::new(&q(&[[0, 0, 0], [(1 << 119) + 1, 0, 0], [0, 1, 0]])).unwrap_err();
-        assert!(matches!(err, GeometryError::OutOfRange { vertex: 2, .. }), "{err:?}");
+        // Any common denominator: 3^60 (about 2^95) times 2^100 coordinates, on the plane z = 1/3^60.
+        let z = Q::new(1, 3i128.pow(60));
+        let far = [[Q::from_integer(1 << 100), Q::from_integer(0), z], [Q::from_integer(4), Q::from_integer(4), z]];
+        let geometry = Geometry::new(&[[Q::from_integer(0), Q::from_integer(0), z], far[0], far[1]]).unwrap();
+        assert!(geometry.is_big() && geometry.big_scaled().unwrap().1 == &BigInt::from(3i128.pow(60)));
+        // What it reports stays 128-bit: a crossing 2^126 pixels out is refused.
+        let err = Geometry::new(&q(&[[0, 0, 0], [1 << 126, 0, 0], [0, 1, 0]])).unwrap_err();
+        assert!(matches!(err, GeometryError::TooLargeForDepth { vertex: 2, .. }), "{err:?}");
+        // Past MAX_SCALED_BITS: denominators 2 … 3001 have an lcm near e^3000 ≈ 2^4328.
+        let vertices: Vec<[Q; 3]> =
+            (1..=1500).map(|j| [Q::new(1, 2 * j), Q::new(1, 2 * j + 1), Q::from_integer(0)]).collect();
+        let err = Geometry::new(&vertices).unwrap_err();
+        assert!(matches!(err, GeometryError::OutOfRange { .. }), "{err:?}");
     }
 }

@@ -586,6 +586,9 @@ impl PolygonFile {
 /// this geometry: the depth numerator is below `20·n·R³` (see `plane`), and
 /// `p, q ≤ 2^20`.
 fn w_fits(geometry: &Geometry) -> bool {
+    if geometry.is_big() {
+        return false;
+    }
     let bits = |v: u128| 128 - v.leading_zeros();
     let r = geometry.points.iter().flatten().map(|v| v.unsigned_abs()).max().unwrap_or(0).max(1);
     let n = geometry.points.len() as u128;

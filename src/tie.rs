@@ -5,6 +5,10 @@
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::Zero;
+
 use crate::depth::Depth;
 use crate::exact::Q;
 use crate::pipeline::{PixelRect, RasterSink, Scratch, Simulation, rasterize};
@@ -44,30 +48,38 @@ impl Boundary {
 /// Where pixel (x, y)'s centre lies on a polygon's boundary, if it does:
 /// the boundary's kind and the edge (its two vertices) or vertex.
 pub fn boundary_at(vertices: &[[Q; 3]], x: u32, y: u32) -> Option<(Boundary, [Q; 2], [Q; 2])> {
+    // In big rationals: a clipped polygon's vertices are fractions whose
+    // products outgrow 128 bits.
+    let big = |q: Q| BigRational::new(BigInt::from(*q.numer()), BigInt::from(*q.denom()));
     let centre = [Q::new(2 * i128::from(x) + 1, 2), Q::new(2 * i128::from(y) + 1, 2)];
     let n = vertices.len();
-    // Twice the signed area: positive when the vertices run counter-clockwise.
-    let area: Q =
-        (0..n).map(|i| vertices[i][0] * vertices[(i + 1) % n][1] - vertices[(i + 1) % n][0] * vertices[i][1]).sum();
-    let orientation = area.cmp(&Q::from_integer(0));
     for v in vertices {
         if v[0] == centre[0] && v[1] == centre[1] {
             return Some((Boundary::Vertex, [v[0], v[1]], [v[0], v[1]]));
         }
     }
+    let points: Vec<[BigRational; 2]> = vertices.iter().map(|v| [big(v[0]), big(v[1])]).collect();
+    let centre_big = centre.map(big);
+    // Twice the signed area: positive when the vertices run counter-clockwise.
+    let area: BigRational =
+        (0..n).map(|i| &points[i][0] * &points[(i + 1) % n][1] - &points[(i + 1) % n][0] * &points[i][1]).sum();
+    let orientation = area.cmp(&BigRational::zero());
     for i in 0..n {
-        let (a, b) = (vertices[i], vertices[(i + 1) % n]);
-        let cross = (b[0] - a[0]) * (centre[1] - a[1]) - (b[1] - a[1]) * (centre[0] - a[0]);
-        let within = |k: usize| a[k].min(b[k]) <= centre[k] && centre[k] <= a[k].max(b[k]);
-        if cross != Q::from_integer(0) || !within(0) || !within(1) {
+        let (a, b) = (&points[i], &points[(i + 1) % n]);
+        let cross = (&b[0] - &a[0]) * (&centre_big[1] - &a[1]) - (&b[1] - &a[1]) * (&centre_big[0] - &a[0]);
+        let within = |k: usize| {
+            a[k].clone().min(b[k].clone()) <= centre_big[k] && centre_big[k] <= a[k].clone().max(b[k].clone())
+        };
+        if !cross.is_zero() || !within(0) || !within(1) {
             continue;
         }
         // Walking counter-clockwise the interior is on the left of each edge:
         // an edge running down has it to the east (a left edge), one running
         // right to left along a horizontal has it below (a top edge).
         let flip = if orientation == Ordering::Less { -1 } else { 1 };
-        let dy = (b[1] - a[1]).cmp(&Q::from_integer(0)) as i32 * flip;
-        let dx = (b[0] - a[0]).cmp(&Q::from_integer(0)) as i32 * flip;
+        let dy = b[1].cmp(&a[1]) as i32 * flip;
+        let dx = b[0].cmp(&a[0]) as i32 * flip;
+        let (a, b) = (vertices[i], vertices[(i + 1) % n]);
         let kind = match (dy, dx) {
             (0, d) if d < 0 => Boundary::TopEdge,
             (0, _) => Boundary::BottomEdge,

@@ -255,20 +255,20 @@ pub fn run_pixel_order(scene: &Scene, inside: Inside) -> (Buffers, Vec<InsideDif
 /// (x, y), in `T`: `i128` for a word-sized polygon, whose products stay
 /// below 2^123 ([`crate::plane::MAX_SCALED`]), `BigInt` for one of the
 /// big-integer tier, whose products do not.
-fn around<T: From<i128> + Num + Clone>(polygon: &Polygon, x: u32, y: u32) -> Vec<[T; 2]> {
-    let d = T::from(polygon.geometry.denominator);
-    let (cx, cy) = (T::from(2 * i128::from(x) + 1) * d.clone(), T::from(2 * i128::from(y) + 1) * d);
-    polygon.geometry.points.iter().map(|p| [T::from(p[0]) - cx.clone(), T::from(p[1]) - cy.clone()]).collect()
+fn around<T: From<i128> + Num + Clone>(points: &[[T; 3]], denominator: &T, x: u32, y: u32) -> Vec<[T; 2]> {
+    let centre = |i: u32| T::from(2 * i128::from(i) + 1) * denominator.clone();
+    let (cx, cy) = (centre(x), centre(y));
+    points.iter().map(|p| [p[0].clone() - cx.clone(), p[1].clone() - cy.clone()]).collect()
 }
 
 /// Ray casting from the centre to the right with the half-interval vertex
 /// rule (an edge counts when `min(y₁, y₂) ≤ y < max(y₁, y₂)`); a crossing
 /// exactly at the centre means the centre is on the boundary: inside.
 pub fn ray_inside(polygon: &Polygon, x: u32, y: u32) -> bool {
-    if polygon.geometry.is_big() {
-        ray_inside_from::<BigInt>(&around(polygon, x, y))
-    } else {
-        ray_inside_from::<i128>(&around(polygon, x, y))
+    let geometry = &polygon.geometry;
+    match geometry.big_scaled() {
+        Some((points, denominator)) => ray_inside_from::<BigInt>(&around(points, denominator, x, y)),
+        None => ray_inside_from::<i128>(&around(&geometry.points, &geometry.denominator, x, y)),
     }
 }
 
@@ -300,10 +300,10 @@ fn ray_inside_from<T: Num + Ord + Clone>(points: &[[T; 2]]) -> bool {
 /// times the winding number. A centre on the boundary counts as inside.
 /// Returns the decision and, for a difference report, its kind.
 pub fn arc_inside(polygon: &Polygon, x: u32, y: u32) -> (bool, ArcDifference) {
-    if polygon.geometry.is_big() {
-        arc_inside_from::<BigInt>(&around(polygon, x, y))
-    } else {
-        arc_inside_from::<i128>(&around(polygon, x, y))
+    let geometry = &polygon.geometry;
+    match geometry.big_scaled() {
+        Some((points, denominator)) => arc_inside_from::<BigInt>(&around(points, denominator, x, y)),
+        None => arc_inside_from::<i128>(&around(&geometry.points, &geometry.denominator, x, y)),
     }
 }
 

@@ -267,7 +267,8 @@ error-write = { $path }: cannot write: { $reason }
 error-polygon = { $path }: polygon { $number } "{ $name }": { $problem }
 geometry-too-few = has { $count } vertices; a polygon needs at least 3
 geometry-too-many = has { $count } vertices; zsim takes at most { $max }
-geometry-out-of-range = vertex { $vertex } has coordinate { $value } beyond the exact range: with the polygon's common denominator { $denominator }, |coordinate| × 2 × { $denominator } must be at most 2^120 (use smaller coordinates or fewer decimal places)
+geometry-out-of-range = vertex { $vertex } has coordinate { $value } beyond the exact range: with the polygon's common denominator { $denominator }, |coordinate| × 2 × { $denominator } must be at most 2^4096 (use smaller coordinates or fewer decimal places)
+digits = { $count } digits
 geometry-off-plane-z = is not planar: vertex { $vertex } is off the plane { $plane } through vertices { $i }, { $j }, { $k } by Δz = { $off }
 geometry-off-plane = is not planar: vertex { $vertex } gives { $off } instead of 0 in the plane { $plane } through vertices { $i }, { $j }, { $k }
 answer-at-cell = line { $line }, value { $column } (x = { $x }, y = { $y })
@@ -348,6 +349,7 @@ polygon-mapped-out-of-range = mapping it { $stage } gives numbers beyond the exa
 mapping-window = from the window onto the raster
 mapping-perspective = through the perspective projection
 mapping-clip-space = from clip space onto the raster (clipping, dividing by w, the viewport)
+mapping-supersampled = onto the supersampled raster (x and y times the samples per side)
 polygon-value-too-wide = value { $value } does not fit a { $bits }-bit framebuffer (at most { $max })
 polygon-w-too-fine = its projected coordinates are too fine for the w-buffer's exact arithmetic (use coarser coordinates or a smaller distance)
 geometry-off-plane-large = is not planar: vertex { $vertex } is off the plane through vertices { $i }, { $j }, { $k } (whose equation has coefficients beyond 128 bits)

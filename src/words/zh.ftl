@@ -262,7 +262,8 @@ error-write = { $path }：无法写入：{ $reason }
 error-polygon = { $path }：多边形 { $number }“{ $name }”：{ $problem }
 geometry-too-few = 只有 { $count } 个顶点；多边形至少需要 3 个
 geometry-too-many = 有 { $count } 个顶点；zsim 最多接受 { $max } 个
-geometry-out-of-range = 顶点 { $vertex } 的坐标 { $value } 超出精确范围：多边形的公分母为 { $denominator }，|坐标| × 2 × { $denominator } 不得超过 2^120（请使用更小的坐标或更少的小数位）
+geometry-out-of-range = 顶点 { $vertex } 的坐标 { $value } 超出精确范围：多边形的公分母为 { $denominator }，|坐标| × 2 × { $denominator } 不得超过 2^4096（请使用更小的坐标或更少的小数位）
+digits = { $count } 位
 geometry-off-plane-z = 不共面：顶点 { $vertex } 偏离经过顶点 { $i }、{ $j }、{ $k } 的平面 { $plane }，Δz = { $off }
 geometry-off-plane = 不共面：顶点 { $vertex } 代入经过顶点 { $i }、{ $j }、{ $k } 的平面 { $plane } 得 { $off } 而不是 0
 answer-at-cell = 第 { $line } 行第 { $column } 个数（x = { $x }，y = { $y }）
@@ -340,6 +341,7 @@ polygon-mapped-out-of-range = { $stage }时得到的数超出精确范围（128 
 mapping-window = 从窗口映射到光栅
 mapping-perspective = 经透视投影
 mapping-clip-space = 从裁剪空间映射到光栅（裁剪、除以 w、视口变换）
+mapping-supersampled = 映射到超采样光栅（x 和 y 乘以每边的采样数）
 polygon-value-too-wide = 值 { $value } 超出 { $bits } 位帧缓冲器的范围（最大 { $max }）
 polygon-w-too-fine = 其投影坐标过细，w 缓冲器的精确运算无法容纳（请使用更粗的坐标或更小的距离）
 geometry-off-plane-large = 不共面：顶点 { $vertex } 不在经过顶点 { $i }、{ $j }、{ $k } 的平面上（该平面方程的系数超过 128 位）

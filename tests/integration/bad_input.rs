@@ -51,12 +51,12 @@ fn bad_scenes_are_refused_with_one_line_each() {
         ("boolean_coordinate.json", r#"{"polygons": [{"value": 1, "vertices": [[0,0,true],[1,0,0],[0,1,0]]}]}"#.into()),
         ("bad_section.json", format!(r#"{{"effects": {{"section": "x"}}, "polygons": [{TRIANGLE}]}}"#)),
         (
+            // Denominators 2 … 3001: their lcm, about 2^4328, passes the big tier's 2^4096.
             "out_of_range.json",
-            r#"{"polygons": [{"name": "far", "value": 1, "vertices": [[0,0,0],[100000000000000000000000000000,0,0],[0,0.0000001,0]]}]}"#.into(),
-        ),
-        (
-            "fine_decimals_out_of_range.json",
-            r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [[0.00000000000001,0,0],[100000000000000000000000000000,0,0],[0,1,0]]}]}"#.into(),
+            format!(
+                r#"{{"polygons": [{{"name": "absurd", "value": 1, "vertices": [{}]}}]}}"#,
+                (1..=1500).map(|j| format!(r#"["1/{}", "1/{}", 0]"#, 2 * j, 2 * j + 1)).collect::<Vec<_>>().join(", ")
+            ),
         ),
         (
             // Found by a property: this was refused as "beyond the exact range" with a false claim.
@@ -74,7 +74,9 @@ fn bad_scenes_are_refused_with_one_line_each() {
             r#"{"polygons": [{"name": "huge", "value": 1, "vertices": [[0,0,0],[123456789012345678901234567890,7,3],[5,987654321098765432109876543211,11]]}]}"#.into(),
         ),
         (
-            // Two denominators whose lcm outgrows 128 bits (it used to overflow).
+            // Two denominators whose lcm outgrows 128 bits (it used to overflow): drawn on the big
+            // tier but for its edge from (1/288230376151711717, 0) to (1/10^29 + 1, 4), whose line
+            // has coefficients beyond 128 bits.
             "coprime_denominators.json",
             r#"{"polygons": [{"name": "coprime", "value": 1, "vertices": [["1/288230376151711717", 0, 0], ["1/100000000000000000000000000001", 4, 0], [0, 4, 0]]}]}"#.into(),
         ),

@@ -164,19 +164,27 @@ mod random_scenes {
     }
 
     /// A range refusal says "vertex N has coordinate V … common denominator
-    /// D, |coordinate| × 2 × D must be at most 2^120": that must be so (or D
-    /// itself beyond 2^120, the common denominator outgrowing the range).
+    /// D, |coordinate| × 2 × D must be at most 2^4096": that must be so (or D
+    /// itself beyond 2^4096, the common denominator outgrowing the range).
     fn range_claim_holds(message: &str) -> bool {
         use num_bigint::BigInt;
         let Some(rest) = message.split(" has coordinate ").nth(1) else { return true };
-        if !message.contains("must be at most 2^120") {
+        if !message.contains("must be at most 2^4096") {
             return true;
         }
         let value = rest.split(' ').next().unwrap_or_default();
         let d = message.split("common denominator ").nth(1).and_then(|r| r.split(',').next()).unwrap_or_default();
+        // A long D is printed as "123456789012…345678901234 (1304 digits)": at least 10^1303.
+        let d = match d.split_once(" (") {
+            Some((_, count)) => {
+                let digits: usize = count.trim_end_matches(" digits)").parse().expect("a digit count");
+                format!("1{}", "0".repeat(digits - 1))
+            }
+            None => d.to_string(),
+        };
         let (p, q) = value.split_once('/').unwrap_or((value, "1"));
-        let [p, q, d]: [BigInt; 3] = [p, q, d].map(|t| t.trim_start_matches('-').parse().expect("an integer"));
-        let limit = BigInt::from(1u128 << 120);
+        let [p, q, d]: [BigInt; 3] = [p, q, &d].map(|t| t.trim_start_matches('-').parse().expect("an integer"));
+        let limit = BigInt::from(1) << 4096;
         p * 2 * &d > &limit * q || d > limit
     }
 
