@@ -68,7 +68,7 @@ pub enum GeometryError {
     },
     /// Within [`MAX_SCALED_BITS`], but the polygon's plane, an edge's
     /// crossings or its depths, reduced, would outgrow the 128-bit numbers
-    /// zsim reports (`crate::big::fits`).
+    /// zsim reports (`crate::big::BigPolygon::new`).
     TooLargeForDepth {
         /// 1-based vertex with the largest coordinate.
         vertex: usize,
@@ -250,7 +250,17 @@ impl Geometry {
     /// A polygon beyond the words, on the big-integer tier.
     fn new_big(vertices: &[[Q; 3]]) -> Result<Geometry, GeometryError> {
         let big = |v: &i128| BigInt::from(*v);
-        let denominator = vertices.iter().flatten().fold(BigInt::from(1), |d, v| d.lcm(&big(v.denom())));
+        let mut denominator = BigInt::from(1);
+        for (index, vertex) in vertices.iter().enumerate() {
+            for value in vertex {
+                denominator = denominator.lcm(&big(value.denom()));
+                // Far past the bound already (a value's denominator is below 2^127, so
+                // |value| × 2D > 2D / 2^127): stop before the lcm of absurd input grows for ever.
+                if denominator.bits() > MAX_SCALED_BITS + 128 {
+                    return Err(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator });
+                }
+            }
+        }
         let scale: BigInt = &denominator * 2u32;
         let points: Vec<[BigInt; 3]> =
             vertices.iter().map(|v| v.map(|c| big(c.numer()) * scale.div_floor(&big(c.denom())))).collect();
@@ -535,6 +545,13 @@ mod tests {
         let vertices: Vec<[Q; 3]> =
             (1..=1500).map(|j| [Q::new(1, 2 * j), Q::new(1, 2 * j + 1), Q::from_integer(0)]).collect();
         let err = Geometry::new(&vertices).unwrap_err();
-        assert!(matches!(err, GeometryError::OutOfRange { .. }), "{err:?}");
+        assert!(matches!(err, GeometryError::OutOfRange { vertex: 1454, .. }), "{err:?}");
+        // 60,000 coprime-ish denominators: refused as soon as the lcm passes the bound (it once
+        // ran on, the lcm growing to hundreds of thousands of digits).
+        let vertices: Vec<[Q; 3]> = (0..20_000)
+            .map(|j| [Q::new(1, 2 * j + 1_000_003), Q::new(1, 2 * j + 1_000_004), Q::from_integer(0)])
+            .collect();
+        let err = Geometry::new(&vertices).unwrap_err();
+        assert!(matches!(err, GeometryError::OutOfRange { vertex: 151, .. }), "{err:?}");
     }
 }
