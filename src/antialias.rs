@@ -15,6 +15,8 @@
 
 use std::collections::BTreeMap;
 
+use num_traits::CheckedMul;
+
 use crate::buffer::Buffers;
 use crate::depth::{Depth, depth_at_centre};
 use crate::error::{Error, Mapping, PolygonProblem};
@@ -25,7 +27,6 @@ use crate::scan::{Crossing, Span};
 use crate::scene::{Antialias, Scene};
 use crate::stages::{PixelStages, Plain, WithEffects, blend};
 use crate::trace::{Fate, Outcome, Unobserved};
-use num_traits::CheckedMul;
 
 /// The averaged picture after one polygon.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -192,6 +192,11 @@ fn reduced_line(p: &[BigInt; 3], q: &[BigInt; 3], scale: &BigInt) -> Option<[i12
     reduced([&dy * scale, -(&dx * scale), gamma], 1)
 }
 
+/// `2n + 1`, a row's scanline or a column's centre in half pixels, when it fits.
+fn odd(n: i128) -> Option<i128> {
+    n.checked_mul(2)?.checked_add(1)
+}
+
 /// `⌊n / d⌋` and `⌈n / d⌉` as `i128` (`d > 0`), when they fit.
 fn floor_i128(n: BigInt, d: &BigInt) -> Option<i128> {
     n.div_floor(d).to_i128()
@@ -233,14 +238,14 @@ impl BigPolygon {
             let rows = (|| {
                 let (from, to) = (low - d, high - d);
                 let first = ceil_i128(from.clone(), &scale)?;
-                let after = floor_i128(from, &scale)? + 1;
-                let (last_open, last) = (ceil_i128(to.clone(), &scale)? - 1, floor_i128(to, &scale)?);
+                let after = floor_i128(from, &scale)?.checked_add(1)?;
+                let (last_open, last) = (ceil_i128(to.clone(), &scale)?.checked_sub(1)?, floor_i128(to, &scale)?);
                 Some([[first, last_open], [first, last], [after, last]])
             })();
             let Some(rows) = rows else { return Ok(None) };
             // The widest range is the closed one; it may be empty.
             let [first, last] = rows[1];
-            let numerator = |r: i128| sum_of_products(&[(beta, 2 * r + 1), (gamma, 2)]);
+            let numerator = |r: i128| sum_of_products(&[(beta, odd(r)?), (gamma, 2)]);
             let fits = first > last || (below(numerator(first), CROSSING) && below(numerator(last), CROSSING));
             if !fits || !below(alpha.checked_mul(2), CROSSING) {
                 return Ok(None);
@@ -250,9 +255,10 @@ impl BigPolygon {
         let polygon = BigPolygon { denominator, points, edges, plane, normal };
         let Some([x0, x1, y0, y1]) = polygon.cells() else { return Ok(None) };
         let PlaneEquation { a, b, c, d } = plane;
-        let depth = |x: i128, y: i128| sum_of_products(&[(a, 2 * x + 1), (b, 2 * y + 1), (d, 2)]);
-        let corners =
-            [x0 - 1, x1 + 1].iter().all(|&x| [y0 - 1, y1 + 1].iter().all(|&y| below(depth(x, y), DEPTH_NUMERATOR)));
+        // Corners one pixel out (`None` past i128, where nothing would fit anyway).
+        let depth = |x: Option<i128>, y: Option<i128>| sum_of_products(&[(a, odd(x?)?), (b, odd(y?)?), (d, 2)]);
+        let (columns, rows) = ([x0.checked_sub(1), x1.checked_add(1)], [y0.checked_sub(1), y1.checked_add(1)]);
+        let corners = columns.iter().all(|&x| rows.iter().all(|&y| below(depth(x, y), DEPTH_NUMERATOR)));
         Ok((corners && below(c.checked_mul(2), DEPTH_DENOMINATOR)).then_some(polygon))
     }
 
@@ -301,7 +307,7 @@ impl BigPolygon {
     }
 
     /// The crossings with the scanline of row `row`, sorted left to right (as
-    /// [`scan::crossings`] computes them from the vertices).
+    /// the word tiers compute them from the vertices).
     fn crossings(&self, row: u32, rule: RowRule, out: &mut Vec<Crossing>) {
         out.clear();
         let r = i128::from(row);

@@ -56,6 +56,7 @@ pub fn scanline_y(row: u32, denominator: i128) -> i128 {
 /// The first row whose scanline an edge or polygon whose lower end is at
 /// scaled height `y` reaches: `(2r + 1)·D ≥ y  ⇔  r ≥ ⌈(y − D) / 2D⌉`, or
 /// strictly above it, `r ≥ ⌊(y − D) / 2D⌋ + 1` ([`RowRule::TopLeft`]).
+#[cfg(test)]
 #[inline]
 fn first_row_from<W: Word>(y: W, denominator: W, rule: RowRule) -> W {
     match rule {
@@ -67,6 +68,7 @@ fn first_row_from<W: Word>(y: W, denominator: W, rule: RowRule) -> W {
 /// The last row whose scanline an edge or polygon whose upper end is at
 /// scaled height `y` reaches: `(2r + 1)·D < y` ([`RowRule::HalfOpen`]) or
 /// `≤ y` ([`RowRule::Closed`], [`RowRule::TopLeft`]).
+#[cfg(test)]
 #[inline]
 fn last_row_to<W: Word>(y: W, denominator: W, rule: RowRule) -> W {
     match rule {
@@ -89,6 +91,7 @@ fn clip_rows<W: Word>(first: W, last: W, limit: (u32, u32)) -> Option<RangeInclu
 /// (first and last row, inclusive):
 /// those with `y_min ≤ row + 1/2 < y_max` (half-open),
 /// `y_min ≤ row + 1/2 ≤ y_max` (closed), or `y_min < row + 1/2 ≤ y_max` (top-left).
+#[cfg(test)]
 pub fn rows(points: &[[i128; 3]], denominator: i128, limit: (u32, u32), rule: RowRule) -> Option<RangeInclusive<u32>> {
     let y_min = points.iter().map(|p| p[1]).min()?;
     let y_max = points.iter().map(|p| p[1]).max()?;
@@ -109,6 +112,7 @@ pub fn rows(points: &[[i128; 3]], denominator: i128, limit: (u32, u32), rule: Ro
 /// Computed by the formula on the polygon's word-sized scaled coordinates
 /// (within [`crate::plane::MAX_SCALED`]): the independent reference the edge
 /// walker ([`EdgeTable`]) is tested against.
+#[cfg(test)]
 pub fn crossings(points: &[[i128; 3]], scan_y: i128, scale: i128, rule: RowRule, out: &mut Vec<Crossing>) {
     out.clear();
     let count = points.len();
@@ -136,7 +140,7 @@ pub fn crossings(points: &[[i128; 3]], scan_y: i128, scale: i128, rule: RowRule,
 /// and the column bound `(numerator − offset·denominator) / modulus`, kept as
 /// whole part and remainder, are both stepped by a constant per row
 /// (Bresenham-style): no multiplication or division per row, and the results
-/// equal [`crossings`]' and [`columns`]' formulas exactly.
+/// equal the formulas `crossings` (in the tests) and [`columns`] exactly.
 #[derive(Debug, Clone, Copy)]
 pub struct WalkedEdge<W> {
     first_row: u32,
@@ -202,7 +206,7 @@ pub struct EdgeTable<W> {
 }
 
 /// A vertex's scaled x and y, and the rows an edge starting (`from`) or
-/// ending (`to`) there reaches (see [`first_row_from`], [`last_row_to`]).
+/// ending (`to`) there reaches (as `first_row_from` and `last_row_to` do).
 #[derive(Debug, Clone, Copy)]
 struct ScaledVertex<W> {
     x: W,
@@ -213,7 +217,7 @@ struct ScaledVertex<W> {
 
 impl<W: Word> EdgeTable<W> {
     /// Prepares the edges of the polygon with scaled `points` that cross any
-    /// row of `limit` under `rules`; returns the rows to visit (as [`rows`]).
+    /// row of `limit` under `rules`; returns the rows to visit (as the formula `rows` in the tests).
     pub fn prepare(
         &mut self,
         points: &[[i128; 3]],
