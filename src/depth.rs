@@ -376,15 +376,7 @@ impl DepthStepper {
         let depth = Depth::from_fraction(numerator, denominator);
         // One column is 2D scaled units: ΔZ = −a·2D/c, Δz = −a·2D/(c·2D).
         let step = -a * 2 * geometry.denominator;
-        let step = if denominator < 0 { -step } else { step };
-        let (step_whole, step_remainder) = floor_div(step, depth.denominator);
-        DepthStepper {
-            whole: depth.whole,
-            remainder: depth.remainder,
-            denominator: depth.denominator,
-            step_whole,
-            step_remainder,
-        }
+        DepthStepper::from_depth(depth, if denominator < 0 { -step } else { step })
     }
 }
 
