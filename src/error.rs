@@ -144,8 +144,7 @@ impl fmt::Display for Error {
             Error::Polygon { path, index, name, problem } => f.write_str(&words!(
                 "error-polygon",
                 path = path.display().to_string(),
-                number = (index + 1).to_string(),
-                name = name,
+                polygon = crate::explain::polygon_label("polygon-name", *index, name),
                 problem = problem.to_string()
             )),
             Error::Usage(message) => f.write_str(message),

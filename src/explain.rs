@@ -38,12 +38,21 @@ pub fn depth_text(scene: &Scene, z: Q) -> String {
 
 /// `polygon 2 "triangle"`.
 pub fn polygon_name(scene: &Scene, index: usize) -> String {
-    words!("polygon-name", number = index + 1, name = &scene.polygons[index].name)
+    polygon_label("polygon-name", index, &scene.polygons[index].name)
 }
 
 /// `polygon 2 "triangle"` after "after" (a genitive in some languages).
 pub fn polygon_after(scene: &Scene, index: usize) -> String {
-    words!("polygon-after", number = index + 1, name = &scene.polygons[index].name)
+    polygon_label("polygon-after", index, &scene.polygons[index].name)
+}
+
+/// Polygon `index` named `name` as `message` (`polygon-name` or
+/// `polygon-after`) words it: `polygon 2 "triangle"`, or `polygon 2` when
+/// the name is the one an unnamed polygon gets ([`crate::scene::default_name`]),
+/// which would only repeat the number (and in English).
+pub fn polygon_label(message: &str, index: usize, name: &str) -> String {
+    let named = if name == crate::scene::default_name(index) { "no" } else { "yes" };
+    words!(message, number = index + 1, name = name, named = named)
 }
 
 /// `43/4 ≈ 10.75 … 179/6 ≈ 29.83`.

@@ -160,23 +160,21 @@ pub fn svg_with(
             continue;
         }
         let points: Vec<String> = polygon.vertices.iter().map(|v| format!("{},{}", sx(v[0]), sy(v[1]))).collect();
-        let _ = writeln!(
-            out,
-            r#"<polygon points="{}"><title>{}</title></polygon>"#,
-            points.join(" "),
-            escape(&polygon.name)
-        );
+        // An unnamed polygon is labelled by its number alone, titled in the reader's language.
+        let unnamed = polygon.name == crate::scene::default_name(index);
+        let title = if unnamed { crate::explain::polygon_name(scene, index) } else { polygon.name.clone() };
+        let label = if unnamed { (index + 1).to_string() } else { format!("{} {}", index + 1, escape(&polygon.name)) };
+        let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));
         // At the polygon's middle, off the vertices and the outline, on a white halo
         // so that it reads over any fill.
         let n = Q::from_integer(polygon.vertices.len() as i128);
         let middle = |axis: usize| polygon.vertices.iter().map(|v| v[axis]).sum::<Q>() / n;
         let _ = writeln!(
             out,
-            r#"<text x="{}" y="{}" stroke="white" stroke-width="3" paint-order="stroke" font-weight="bold" text-anchor="middle" fill="black">{} {}</text>"#,
+            r#"<text x="{}" y="{}" stroke="white" stroke-width="3" paint-order="stroke" font-weight="bold" text-anchor="middle" fill="black">{}</text>"#,
             sx(middle(0)),
             sy(middle(1)),
-            index + 1,
-            escape(&polygon.name)
+            label
         );
     }
     let _ = writeln!(out, "</g>");

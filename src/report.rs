@@ -61,7 +61,11 @@ pub fn scene_header(scene: &Scene, path: &str) -> String {
 pub fn polygon_heading(scene: &Scene, index: usize) -> String {
     let polygon = &scene.polygons[index];
     let geometry = &polygon.geometry;
-    let start = words!("heading-start", number = index + 1, name = &polygon.name, value = polygon.value.to_string());
+    let start = words!(
+        "heading-start",
+        polygon = crate::explain::polygon_name(scene, index),
+        value = polygon.value.to_string()
+    );
     let plane = geometry.plane().to_string();
     match fate(scene, index) {
         Fate::Degenerate => words!("heading-degenerate", start = start),

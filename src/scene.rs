@@ -141,7 +141,7 @@ impl Window {
 /// One validated polygon.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Polygon {
-    /// Its name (from the file, or `polygon N`), with control characters
+    /// Its name (from the file, or [`default_name`]), with control characters
     /// escaped as `\u{1b}` ([`crate::text::printable`]) so that no report can
     /// carry them to a terminal.
     pub name: String,
@@ -256,6 +256,11 @@ impl Scene {
     }
 }
 
+/// The name of a polygon the file leaves unnamed: `polygon N`, numbered from 1.
+pub fn default_name(index: usize) -> String {
+    format!("polygon {}", index + 1)
+}
+
 /// `2^bits − 1` for 1 ≤ bits ≤ 32.
 pub fn max_for_bits(bits: u32) -> u32 {
     debug_assert!((1..=32).contains(&bits));
@@ -301,6 +306,29 @@ mod tests {
         let err = parse(r#"{"polygons": [{"value": 1, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}, {"value": 1, "vertices": [[0, 0, "abc"]]}]}"#)
             .unwrap_err();
         assert!(err.starts_with("s.json: polygon 2: vertices[0][2]: \"abc\" is not a number"), "{err}");
+    }
+
+    /// An unnamed polygon is `polygon N` in every report, not `polygon N
+    /// "polygon N"` (nor, in Russian, `многоугольник 1 «polygon 1»`); a named
+    /// one keeps its name, and both can be found by number or name.
+    #[test]
+    fn an_unnamed_polygon_is_reported_by_its_number_alone() {
+        let text = r#"{"polygons": [{"value": 1, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]},
+            {"name": "roof", "value": 2, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]}"#;
+        let scene = parse(text).unwrap();
+        assert_eq!(scene.polygons[0].name, default_name(0));
+        let labels = |lang| {
+            crate::words::set_language(lang);
+            let labels = [0, 1].map(|i| crate::explain::polygon_name(&scene, i));
+            crate::words::set_language(crate::words::Lang::En);
+            labels
+        };
+        assert_eq!(labels(crate::words::Lang::En), ["polygon 1".to_string(), "polygon 2 \"roof\"".to_string()]);
+        assert_eq!(
+            labels(crate::words::Lang::Ru),
+            ["многоугольник 1".to_string(), "многоугольник 2 «roof»".to_string()]
+        );
+        assert_eq!((scene.find_polygon("polygon 1").unwrap(), scene.find_polygon("roof").unwrap()), (0, 1));
     }
 
     #[test]

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use zsim::error::Error;
-use zsim::explain::polygon_name;
+use zsim::explain::polygon_after;
 use zsim::figure::{Extras, MAX_FIGURE_SIDE, Shading, svg_with};
 use zsim::pipeline::Simulation;
 use zsim::scene::Scene;
@@ -74,18 +74,18 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         None => scene.polygons.len() - 1,
     };
     let shading = if args.depth { Shading::Depth } else { Shading::Frame };
-    let what = if args.depth { "z-buffer" } else { "framebuffer" };
-    let name = args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
+    let buffer = zsim::words!(if args.depth { "buffer-depth" } else { "buffer-frame" });
+    let file = args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
     let mut title = if worksheet {
-        format!("{name}: the polygons to draw, on an empty raster")
+        zsim::words!("figure-title-worksheet", file = file)
     } else {
-        format!("{name}: {what} after {}", polygon_name(&scene, last))
+        zsim::words!("figure-title-after", file = file, buffer = buffer, polygon = polygon_after(&scene, last))
     };
     // Antialiasing: the figure shows the samples, before they are averaged, and says so.
     let scene = match scene.effects.antialias {
         Some(settings) if !worksheet => {
             let k = settings.samples;
-            title.push_str(&format!(", its {k}×{k} samples per pixel before averaging (`zsim run` gives the means)"));
+            title.push_str(&zsim::words!("figure-title-samples", k = k));
             zsim::antialias::supersampled(&scene, k)?
         }
         _ => scene,
@@ -102,7 +102,10 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         Kind::Png => png(&text, &args.output)?,
     };
     std::fs::write(&args.output, bytes).map_err(|source| Error::Write { path: args.output.clone(), source })?;
-    emit(out, &format!("wrote {} ({title})\n", args.output.display()))?;
+    emit(
+        out,
+        &format!("{}\n", zsim::words!("file-written-about", path = args.output.display().to_string(), about = title)),
+    )?;
     Ok(Finish::Ok)
 }
 

@@ -236,9 +236,9 @@ fn buffers_text(simulation: &Simulation<'_>, index: usize, name: &str, axes: boo
     let style = MatrixStyle { axes, color: super::use_color(), ..MatrixStyle::default() };
     format!(
         "\n{}\n{}\n{}\n{}",
-        zsim::words!("run-frame-after", number = index + 1, name = name),
+        zsim::words!("run-frame-after", polygon = zsim::explain::polygon_label("polygon-after", index, name)),
         report::matrix_styled(&simulation.buffers().frame_rows(), &style),
-        zsim::words!("run-depth-after", number = index + 1, name = name),
+        zsim::words!("run-depth-after", polygon = zsim::explain::polygon_label("polygon-after", index, name)),
         report::matrix_styled(&simulation.buffers().depth_rows(), &style),
     )
 }

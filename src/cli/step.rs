@@ -160,7 +160,7 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
         let page = super::page::page(&mut tracer, &name);
         std::fs::write(output, page).map_err(|source| Error::Write { path: output.clone(), source })?;
-        emit(out, &format!("wrote {} (open it in a browser; it needs no network)\n", output.display()))?;
+        emit(out, &format!("{}\n", zsim::words!("file-written-page", path = output.display().to_string())))?;
         return Ok(Finish::Ok);
     }
     let mut start = None;

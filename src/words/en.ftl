@@ -4,9 +4,15 @@
 
 buffer-frame = framebuffer
 buffer-depth = z-buffer
-polygon-name = polygon { $number } "{ $name }"
+polygon-name = { $named ->
+    [yes] polygon { $number } "{ $name }"
+   *[no] polygon { $number }
+}
 # After "after" (a genitive in Russian and Ukrainian).
-polygon-after = polygon { $number } "{ $name }"
+polygon-after = { $named ->
+    [yes] polygon { $number } "{ $name }"
+   *[no] polygon { $number }
+}
 span = { $left } … { $right }
 scanline = y = { $y }
 list-and = { " and " }
@@ -119,7 +125,7 @@ stage-section = cross-section (z { $op } { $section })
 stage-blend = blend by opacity (α·value + (1 − α)·under, rounded half up)
 stage-store-quantized = store (rounded half up, saturated to 0…{ $max })
 stage-store-exact = store (exact depth)
-heading-start = polygon { $number } "{ $name }" (value { $value })
+heading-start = { $polygon } (value { $value })
 heading-degenerate = { $start }: degenerate: Newell's normal is zero (collinear vertices, or loops that cancel), so it has no plane and covers no pixel
 heading-clipped-away = { $start }: behind the near plane: clipped away, not drawn
 heading-edge-on = { $start }: plane { $plane }: seen edge-on (c = 0), it covers no pixel
@@ -130,8 +136,13 @@ heading-winding = { ", " }{ $winding }
 heading-opacity = { ", opacity " }{ $alpha }
 heading-clipped = { "; " }{ $front } of { $of } vertices in front of the near plane, drawn as one { $n }-gon
 run-counts = { $covered } pixel centres covered, { $written } written
-run-frame-after = framebuffer after polygon { $number } "{ $name }":
-run-depth-after = z-buffer after polygon { $number } "{ $name }":
+run-frame-after = framebuffer after { $polygon }:
+run-depth-after = z-buffer after { $polygon }:
+figure-title-worksheet = { $file }: the polygons to draw, on an empty raster
+figure-title-after = { $file }: { $buffer } after { $polygon }
+figure-title-samples = { ", " }its { $k }×{ $k } samples per pixel before averaging (`zsim run` gives the means)
+file-written-about = wrote { $path } ({ $about })
+file-written-page = wrote { $path } (open it in a browser; it needs no network)
 
 ## step, line by line
 
@@ -264,7 +275,7 @@ page-status = scanline { $at } of { $count }
 
 error-read = { $path }: cannot read: { $reason }
 error-write = { $path }: cannot write: { $reason }
-error-polygon = { $path }: polygon { $number } "{ $name }": { $problem }
+error-polygon = { $path }: { $polygon }: { $problem }
 geometry-too-few = has { $count } vertices; a polygon needs at least 3
 geometry-too-many = has { $count } vertices; zsim takes at most { $max }
 geometry-out-of-range = vertex { $vertex } has coordinate { $value } beyond the exact range: with the polygon's common denominator { $denominator }, |coordinate| × 2 × { $denominator } must be at most 2^4096 (use smaller coordinates or fewer decimal places)

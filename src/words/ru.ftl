@@ -3,8 +3,14 @@
 
 buffer-frame = буфер кадра
 buffer-depth = z-буфер
-polygon-name = многоугольник { $number } «{ $name }»
-polygon-after = многоугольника { $number } «{ $name }»
+polygon-name = { $named ->
+    [yes] многоугольник { $number } «{ $name }»
+   *[no] многоугольник { $number }
+}
+polygon-after = { $named ->
+    [yes] многоугольника { $number } «{ $name }»
+   *[no] многоугольника { $number }
+}
 span = { $left } … { $right }
 scanline = y = { $y }
 list-and = { " и " }
@@ -119,7 +125,7 @@ stage-section = сечение (z { $op } { $section })
 stage-blend = смешивание по непрозрачности (α·значение + (1 − α)·нижнее, половина округляется вверх)
 stage-store-quantized = запись (половина округляется вверх, ограничение 0…{ $max })
 stage-store-exact = запись (точная глубина)
-heading-start = многоугольник { $number } «{ $name }» (значение { $value })
+heading-start = { $polygon } (значение { $value })
 heading-degenerate = { $start }: вырожден: нормаль по Ньюэлу нулевая (вершины на одной прямой или взаимно гасящиеся петли), поэтому у него нет плоскости и он не покрывает ни одного пиксела
 heading-clipped-away = { $start }: за ближней плоскостью: отсекается целиком, не рисуется
 heading-edge-on = { $start }: плоскость { $plane }: виден с ребра (c = 0), не покрывает ни одного пиксела
@@ -130,8 +136,13 @@ heading-winding = { ", обход " }{ $winding }
 heading-opacity = { ", непрозрачность " }{ $alpha }
 heading-clipped = { "; " }перед ближней плоскостью { $front } из { $of } вершин, рисуется как { $n }-угольник
 run-counts = покрыто центров пикселов: { $covered }, записано: { $written }
-run-frame-after = буфер кадра после многоугольника { $number } «{ $name }»:
-run-depth-after = z-буфер после многоугольника { $number } «{ $name }»:
+run-frame-after = буфер кадра после { $polygon }:
+run-depth-after = z-буфер после { $polygon }:
+figure-title-worksheet = { $file }: многоугольники, которые надо нарисовать, на пустом растре
+figure-title-after = { $file }: { $buffer } после { $polygon }
+figure-title-samples = { ", " }по { $k }×{ $k } выборок на пиксел до усреднения (средние даёт `zsim run`)
+file-written-about = записан { $path } ({ $about })
+file-written-page = записан { $path } (откройте его в браузере; сеть не нужна)
 
 ## step по строкам
 
@@ -264,7 +275,7 @@ page-status = строка { $at } из { $count }
 
 error-read = { $path }: не удаётся прочитать: { $reason }
 error-write = { $path }: не удаётся записать: { $reason }
-error-polygon = { $path }: многоугольник { $number } «{ $name }»: { $problem }
+error-polygon = { $path }: { $polygon }: { $problem }
 geometry-too-few = вершин { $count }; у многоугольника их должно быть не меньше 3
 geometry-too-many = вершин { $count }; zsim принимает не больше { $max }
 geometry-out-of-range = у вершины { $vertex } координата { $value } вне точного диапазона: при общем знаменателе многоугольника { $denominator } |координата| × 2 × { $denominator } должна быть не больше 2^4096 (возьмите координаты меньше или меньше знаков после запятой)

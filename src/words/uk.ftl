@@ -3,8 +3,14 @@
 
 buffer-frame = буфер кадру
 buffer-depth = z-буфер
-polygon-name = багатокутник { $number } «{ $name }»
-polygon-after = багатокутника { $number } «{ $name }»
+polygon-name = { $named ->
+    [yes] багатокутник { $number } «{ $name }»
+   *[no] багатокутник { $number }
+}
+polygon-after = { $named ->
+    [yes] багатокутника { $number } «{ $name }»
+   *[no] багатокутника { $number }
+}
 span = { $left } … { $right }
 scanline = y = { $y }
 list-and = { " і " }
@@ -119,7 +125,7 @@ stage-section = переріз (z { $op } { $section })
 stage-blend = змішування за непрозорістю (α·значення + (1 − α)·нижнє, половина округлюється вгору)
 stage-store-quantized = запис (половина округлюється вгору, обмеження 0…{ $max })
 stage-store-exact = запис (точна глибина)
-heading-start = багатокутник { $number } «{ $name }» (значення { $value })
+heading-start = { $polygon } (значення { $value })
 heading-degenerate = { $start }: вироджений: нормаль за Ньюелом нульова (вершини на одній прямій або петлі, що взаємно гасяться), тому він не має площини й не покриває жодного пікселя
 heading-clipped-away = { $start }: за ближньою площиною: відсікається повністю, не малюється
 heading-edge-on = { $start }: площина { $plane }: видно з ребра (c = 0), не покриває жодного пікселя
@@ -130,8 +136,13 @@ heading-winding = { ", обхід " }{ $winding }
 heading-opacity = { ", непрозорість " }{ $alpha }
 heading-clipped = { "; " }перед ближньою площиною { $front } з { $of } вершин, малюється як { $n }-кутник
 run-counts = покрито центрів пікселів: { $covered }, записано: { $written }
-run-frame-after = буфер кадру після багатокутника { $number } «{ $name }»:
-run-depth-after = z-буфер після багатокутника { $number } «{ $name }»:
+run-frame-after = буфер кадру після { $polygon }:
+run-depth-after = z-буфер після { $polygon }:
+figure-title-worksheet = { $file }: багатокутники, які треба намалювати, на порожньому растрі
+figure-title-after = { $file }: { $buffer } після { $polygon }
+figure-title-samples = { ", " }по { $k }×{ $k } вибірок на піксель до усереднення (середні дає `zsim run`)
+file-written-about = записано { $path } ({ $about })
+file-written-page = записано { $path } (відкрийте його в браузері; мережа не потрібна)
 
 ## step рядок за рядком
 
@@ -264,7 +275,7 @@ page-status = рядок { $at } з { $count }
 
 error-read = { $path }: не вдається прочитати: { $reason }
 error-write = { $path }: не вдається записати: { $reason }
-error-polygon = { $path }: багатокутник { $number } «{ $name }»: { $problem }
+error-polygon = { $path }: { $polygon }: { $problem }
 geometry-too-few = вершин { $count }; багатокутник мусить мати щонайменше 3
 geometry-too-many = вершин { $count }; zsim приймає щонайбільше { $max }
 geometry-out-of-range = у вершини { $vertex } координата { $value } поза точним діапазоном: за спільного знаменника багатокутника { $denominator } |координата| × 2 × { $denominator } має бути не більшою за 2^4096 (візьміть менші координати або менше знаків після коми)

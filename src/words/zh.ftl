@@ -3,8 +3,14 @@
 
 buffer-frame = 帧缓冲器
 buffer-depth = z缓冲器
-polygon-name = 多边形 { $number }“{ $name }”
-polygon-after = 多边形 { $number }“{ $name }”
+polygon-name = { $named ->
+    [yes] 多边形 { $number }“{ $name }”
+   *[no] 多边形 { $number }
+}
+polygon-after = { $named ->
+    [yes] 多边形 { $number }“{ $name }”
+   *[no] 多边形 { $number }
+}
 span = { $left } … { $right }
 scanline = y = { $y }
 list-and = { " 和 " }
@@ -114,7 +120,7 @@ stage-section = 剖切（z { $op } { $section }）
 stage-blend = 按不透明度混合（α·值 + (1 − α)·下层，四舍五入）
 stage-store-quantized = 写入（四舍五入，截断到 0…{ $max }）
 stage-store-exact = 写入（精确深度）
-heading-start = 多边形 { $number }“{ $name }”（值 { $value }）
+heading-start = { $polygon }（值 { $value }）
 heading-degenerate = { $start }：退化：Newell 法向量为零（顶点共线，或环路相互抵消），因此没有平面，不覆盖任何像素
 heading-clipped-away = { $start }：在近平面之后：被完全裁剪，不绘制
 heading-edge-on = { $start }：平面 { $plane }：侧对视点（c = 0），不覆盖任何像素
@@ -125,8 +131,13 @@ heading-winding = { "，" }{ $winding }
 heading-opacity = { "，不透明度 " }{ $alpha }
 heading-clipped = { "；" }{ $of } 个顶点中有 { $front } 个在近平面之前，按 { $n } 边形绘制
 run-counts = 覆盖像素中心 { $covered } 个，写入 { $written } 个
-run-frame-after = 多边形 { $number }“{ $name }”之后的帧缓冲器：
-run-depth-after = 多边形 { $number }“{ $name }”之后的z缓冲器：
+run-frame-after = { $polygon }之后的帧缓冲器：
+run-depth-after = { $polygon }之后的z缓冲器：
+figure-title-worksheet = { $file }：待绘制的多边形，栅格为空
+figure-title-after = { $file }：{ $polygon }之后的{ $buffer }
+figure-title-samples = { "，" }每个像素 { $k }×{ $k } 个采样，平均之前（平均值由 `zsim run` 给出）
+file-written-about = 已写入 { $path }（{ $about }）
+file-written-page = 已写入 { $path }（用浏览器打开；无需网络）
 
 ## 逐行的 step
 
@@ -259,7 +270,7 @@ page-status = 第 { $at } 条扫描线，共 { $count } 条
 
 error-read = { $path }：无法读取：{ $reason }
 error-write = { $path }：无法写入：{ $reason }
-error-polygon = { $path }：多边形 { $number }“{ $name }”：{ $problem }
+error-polygon = { $path }：{ $polygon }：{ $problem }
 geometry-too-few = 只有 { $count } 个顶点；多边形至少需要 3 个
 geometry-too-many = 有 { $count } 个顶点；zsim 最多接受 { $max } 个
 geometry-out-of-range = 顶点 { $vertex } 的坐标 { $value } 超出精确范围：多边形的公分母为 { $denominator }，|坐标| × 2 × { $denominator } 不得超过 2^4096（请使用更小的坐标或更少的小数位）

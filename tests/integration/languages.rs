@@ -99,3 +99,26 @@ fn errors_speak_the_language_and_json_does_not_change() {
         assert_eq!(json(lang), english, "{lang}");
     }
 }
+
+/// A figure's title and the line saying where it went speak the language
+/// too; an unnamed polygon is named by its number, in the language's case.
+#[test]
+fn figures_are_titled_in_each_language() {
+    let (dir, file) = crate::scene_file(
+        "unnamed.json",
+        r#"{"width": 8, "height": 8, "polygons": [{"value": 1, "vertices": [[1,1,3],[6,1,3],[3,6,3]]}]}"#,
+    );
+    let expected = [
+        ("en", "wrote unnamed_title.svg (unnamed.json: framebuffer after polygon 1)\n"),
+        ("ru", "записан unnamed_title.svg (unnamed.json: буфер кадра после многоугольника 1)\n"),
+        ("uk", "записано unnamed_title.svg (unnamed.json: буфер кадру після багатокутника 1)\n"),
+        ("zh", "已写入 unnamed_title.svg（unnamed.json：多边形 1之后的帧缓冲器）\n"),
+    ];
+    for (lang, line) in expected {
+        let out = crate::zsim_in(Some(&dir), &["figure", &file, "-o", "unnamed_title.svg", "--lang", lang]);
+        assert_eq!((out.code, out.stdout.as_str()), (0, line), "{lang}: {}", out.stderr);
+        let svg = std::fs::read_to_string(dir.join("unnamed_title.svg")).expect("written");
+        let title = line.split_once(['(', '（']).unwrap().1.trim_end_matches(['\n', ')', '）']);
+        assert!(svg.contains(&format!("<title>{title}</title>")), "{lang}: {svg}");
+    }
+}
