@@ -108,9 +108,15 @@ pub fn svg_with(
             }
             if let Some(fill) = fill {
                 let what = if end - x == 1 {
-                    format!("({x}, {y}): frame {}, depth {}", buffers.frame(x, y), buffers.depth(x, y))
+                    words!(
+                        "figure-cell",
+                        x = x,
+                        y = y,
+                        frame = buffers.frame(x, y),
+                        depth = buffers.depth(x, y).to_string()
+                    )
                 } else {
-                    format!("({x} … {}, {y}): frame {}", end - 1, buffers.frame(x, y))
+                    words!("figure-cells", from = x, to = end - 1, y = y, frame = buffers.frame(x, y))
                 };
                 let _ = writeln!(
                     out,
@@ -225,7 +231,7 @@ pub fn svg_with(
             legend_top + 10,
             escape(label)
         );
-        x += 16 + 7 * label.chars().count() as i128 + 14;
+        x += 16 + text_width(label) + 14;
     }
     let _ = writeln!(out, "</g>");
     if !caption.is_empty() {
@@ -238,6 +244,12 @@ pub fn svg_with(
     }
     let _ = writeln!(out, "</svg>");
     out
+}
+
+/// The width of a legend label in the figure's 11 px sans-serif: about 7 px
+/// a character, 12 for the wide ones of Chinese (from U+2E80 on).
+fn text_width(label: &str) -> i128 {
+    label.chars().map(|c| if u32::from(c) >= 0x2E80 { 12 } else { 7 }).sum()
 }
 
 /// The legend's entries, `(fill, label)`: each framebuffer value present
@@ -255,23 +267,21 @@ fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, St
                 .into_iter()
                 .map(|v| {
                     if v == scene.background {
-                        ("#ffffff".to_string(), format!("{v}: background"))
+                        ("#ffffff".to_string(), words!("figure-background", value = v))
                     } else {
-                        (frame_fill(scene, v), format!("value {v}"))
+                        (frame_fill(scene, v), words!("figure-value", value = v))
                     }
                 })
                 .collect()
         }
         Shading::Depth => {
-            let (far, near) = if scene.depth_test.larger_is_nearer() {
-                ("lower z: farther", "higher z: nearer")
-            } else {
-                ("higher z: farther", "lower z: nearer")
-            };
+            // Which end is far: "higher z" is farther when smaller z is nearer.
+            let larger_is_farther = if scene.depth_test.larger_is_nearer() { "no" } else { "yes" };
+            let larger_is_nearer = if scene.depth_test.larger_is_nearer() { "yes" } else { "no" };
             vec![
-                ("#ffffff".to_string(), format!("cleared ({})", scene.clear_depth)),
-                ("#e6e6e6".to_string(), far.to_string()),
-                ("#3c3c3c".to_string(), near.to_string()),
+                ("#ffffff".to_string(), words!("figure-cleared", value = scene.clear_depth.to_string())),
+                ("#e6e6e6".to_string(), words!("figure-far", larger = larger_is_farther)),
+                ("#3c3c3c".to_string(), words!("figure-near", larger = larger_is_nearer)),
             ]
         }
     }
@@ -445,6 +455,13 @@ mod tests {
         for pair in lumas.windows(2) {
             assert!(pair[0] > pair[1] + 160, "{lumas:?}");
         }
+    }
+
+    /// The legend's labels are spaced by their width: a Chinese character
+    /// takes about twice a Latin or Cyrillic one.
+    #[test]
+    fn legend_labels_are_spaced_by_their_width() {
+        assert_eq!((text_width("value 1"), text_width("значение 1"), text_width("值 1")), (49, 70, 26));
     }
 
     #[test]

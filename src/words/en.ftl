@@ -141,6 +141,19 @@ run-depth-after = z-buffer after { $polygon }:
 figure-title-worksheet = { $file }: the polygons to draw, on an empty raster
 figure-title-after = { $file }: { $buffer } after { $polygon }
 figure-title-samples = { ", " }its { $k }×{ $k } samples per pixel before averaging (`zsim run` gives the means)
+figure-cell = ({ $x }, { $y }): frame { $frame }, depth { $depth }
+figure-cells = ({ $from } … { $to }, { $y }): frame { $frame }
+figure-background = { $value }: background
+figure-value = value { $value }
+figure-cleared = cleared ({ $value })
+figure-far = { $larger ->
+    [yes] higher z: farther
+   *[no] lower z: farther
+}
+figure-near = { $larger ->
+    [yes] higher z: nearer
+   *[no] lower z: nearer
+}
 file-written-about = wrote { $path } ({ $about })
 file-written-page = wrote { $path } (open it in a browser; it needs no network)
 

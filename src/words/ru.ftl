@@ -141,6 +141,19 @@ run-depth-after = z-буфер после { $polygon }:
 figure-title-worksheet = { $file }: многоугольники, которые надо нарисовать, на пустом растре
 figure-title-after = { $file }: { $buffer } после { $polygon }
 figure-title-samples = { ", " }по { $k }×{ $k } выборок на пиксел до усреднения (средние даёт `zsim run`)
+figure-cell = ({ $x }, { $y }): буфер кадра { $frame }, z-буфер { $depth }
+figure-cells = ({ $from } … { $to }, { $y }): буфер кадра { $frame }
+figure-background = { $value }: фон
+figure-value = значение { $value }
+figure-cleared = после очистки ({ $value })
+figure-far = { $larger ->
+    [yes] больше z: дальше
+   *[no] меньше z: дальше
+}
+figure-near = { $larger ->
+    [yes] больше z: ближе
+   *[no] меньше z: ближе
+}
 file-written-about = записан { $path } ({ $about })
 file-written-page = записан { $path } (откройте его в браузере; сеть не нужна)
 

@@ -141,6 +141,19 @@ run-depth-after = z-буфер після { $polygon }:
 figure-title-worksheet = { $file }: багатокутники, які треба намалювати, на порожньому растрі
 figure-title-after = { $file }: { $buffer } після { $polygon }
 figure-title-samples = { ", " }по { $k }×{ $k } вибірок на піксель до усереднення (середні дає `zsim run`)
+figure-cell = ({ $x }, { $y }): буфер кадру { $frame }, z-буфер { $depth }
+figure-cells = ({ $from } … { $to }, { $y }): буфер кадру { $frame }
+figure-background = { $value }: тло
+figure-value = значення { $value }
+figure-cleared = після очищення ({ $value })
+figure-far = { $larger ->
+    [yes] більше z: далі
+   *[no] менше z: далі
+}
+figure-near = { $larger ->
+    [yes] більше z: ближче
+   *[no] менше z: ближче
+}
 file-written-about = записано { $path } ({ $about })
 file-written-page = записано { $path } (відкрийте його в браузері; мережа не потрібна)
 

@@ -136,6 +136,19 @@ run-depth-after = { $polygon }之后的z缓冲器：
 figure-title-worksheet = { $file }：待绘制的多边形，栅格为空
 figure-title-after = { $file }：{ $polygon }之后的{ $buffer }
 figure-title-samples = { "，" }每个像素 { $k }×{ $k } 个采样，平均之前（平均值由 `zsim run` 给出）
+figure-cell = ({ $x }, { $y })：帧缓冲器 { $frame }，z缓冲器 { $depth }
+figure-cells = ({ $from } … { $to }, { $y })：帧缓冲器 { $frame }
+figure-background = { $value }：背景
+figure-value = 值 { $value }
+figure-cleared = 清除值（{ $value }）
+figure-far = { $larger ->
+    [yes] z 较大：较远
+   *[no] z 较小：较远
+}
+figure-near = { $larger ->
+    [yes] z 较大：较近
+   *[no] z 较小：较近
+}
 file-written-about = 已写入 { $path }（{ $about }）
 file-written-page = 已写入 { $path }（用浏览器打开；无需网络）
 
