@@ -48,10 +48,10 @@ pub fn polygon_after(scene: &Scene, index: usize) -> String {
 
 /// Polygon `index` named `name` as `message` (`polygon-name` or
 /// `polygon-after`) words it: `polygon 2 "triangle"`, or `polygon 2` when
-/// the name is the one an unnamed polygon gets ([`crate::scene::default_name`]),
+/// the name is the one an unnamed polygon gets ([`crate::scene::is_default_name`]),
 /// which would only repeat the number (and in English).
 pub fn polygon_label(message: &str, index: usize, name: &str) -> String {
-    let named = if name == crate::scene::default_name(index) { "no" } else { "yes" };
+    let named = if crate::scene::is_default_name(name, index) { "no" } else { "yes" };
     words!(message, number = index + 1, name = name, named = named)
 }
 

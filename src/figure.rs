@@ -167,7 +167,7 @@ pub fn svg_with(
         }
         let points: Vec<String> = polygon.vertices.iter().map(|v| format!("{},{}", sx(v[0]), sy(v[1]))).collect();
         // An unnamed polygon is labelled by its number alone, titled in the reader's language.
-        let unnamed = polygon.name == crate::scene::default_name(index);
+        let unnamed = crate::scene::is_default_name(&polygon.name, index);
         let title = if unnamed { crate::explain::polygon_name(scene, index) } else { polygon.name.clone() };
         let label = if unnamed { (index + 1).to_string() } else { format!("{} {}", index + 1, escape(&polygon.name)) };
         let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));
@@ -275,13 +275,11 @@ fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, St
                 .collect()
         }
         Shading::Depth => {
-            // Which end is far: "higher z" is farther when smaller z is nearer.
-            let larger_is_farther = if scene.depth_test.larger_is_nearer() { "no" } else { "yes" };
-            let larger_is_nearer = if scene.depth_test.larger_is_nearer() { "yes" } else { "no" };
+            let larger_nearer = if scene.depth_test.larger_is_nearer() { "yes" } else { "no" };
             vec![
                 ("#ffffff".to_string(), words!("figure-cleared", value = scene.clear_depth.to_string())),
-                ("#e6e6e6".to_string(), words!("figure-far", larger = larger_is_farther)),
-                ("#3c3c3c".to_string(), words!("figure-near", larger = larger_is_nearer)),
+                ("#e6e6e6".to_string(), words!("figure-far", larger_nearer = larger_nearer)),
+                ("#3c3c3c".to_string(), words!("figure-near", larger_nearer = larger_nearer)),
             ]
         }
     }

@@ -261,6 +261,12 @@ pub fn default_name(index: usize) -> String {
     format!("polygon {}", index + 1)
 }
 
+/// Whether `name` is the one polygon `index` gets when the file names it
+/// not: reports then call it by its number alone.
+pub fn is_default_name(name: &str, index: usize) -> bool {
+    name == default_name(index)
+}
+
 /// `2^bits − 1` for 1 ≤ bits ≤ 32.
 pub fn max_for_bits(bits: u32) -> u32 {
     debug_assert!((1..=32).contains(&bits));

@@ -146,11 +146,11 @@ figure-cells = ({ $from } … { $to }, { $y }): frame { $frame }
 figure-background = { $value }: background
 figure-value = value { $value }
 figure-cleared = cleared ({ $value })
-figure-far = { $larger ->
-    [yes] higher z: farther
-   *[no] lower z: farther
+figure-far = { $larger_nearer ->
+    [yes] lower z: farther
+   *[no] higher z: farther
 }
-figure-near = { $larger ->
+figure-near = { $larger_nearer ->
     [yes] higher z: nearer
    *[no] lower z: nearer
 }

@@ -146,11 +146,11 @@ figure-cells = ({ $from } … { $to }, { $y }): буфер кадра { $frame }
 figure-background = { $value }: фон
 figure-value = значение { $value }
 figure-cleared = после очистки ({ $value })
-figure-far = { $larger ->
-    [yes] больше z: дальше
-   *[no] меньше z: дальше
+figure-far = { $larger_nearer ->
+    [yes] меньше z: дальше
+   *[no] больше z: дальше
 }
-figure-near = { $larger ->
+figure-near = { $larger_nearer ->
     [yes] больше z: ближе
    *[no] меньше z: ближе
 }

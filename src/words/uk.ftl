@@ -146,11 +146,11 @@ figure-cells = ({ $from } … { $to }, { $y }): буфер кадру { $frame }
 figure-background = { $value }: тло
 figure-value = значення { $value }
 figure-cleared = після очищення ({ $value })
-figure-far = { $larger ->
-    [yes] більше z: далі
-   *[no] менше z: далі
+figure-far = { $larger_nearer ->
+    [yes] менше z: далі
+   *[no] більше z: далі
 }
-figure-near = { $larger ->
+figure-near = { $larger_nearer ->
     [yes] більше z: ближче
    *[no] менше z: ближче
 }

@@ -141,11 +141,11 @@ figure-cells = ({ $from } … { $to }, { $y })：帧缓冲器 { $frame }
 figure-background = { $value }：背景
 figure-value = 值 { $value }
 figure-cleared = 清除值（{ $value }）
-figure-far = { $larger ->
-    [yes] z 较大：较远
-   *[no] z 较小：较远
+figure-far = { $larger_nearer ->
+    [yes] z 较小：较远
+   *[no] z 较大：较远
 }
-figure-near = { $larger ->
+figure-near = { $larger_nearer ->
     [yes] z 较大：较近
    *[no] z 较小：较近
 }
