@@ -15,13 +15,13 @@
 
 use std::fmt::Write as _;
 
-use super::{Arithmetic, Case, CaseError, render};
+use super::{Case, CaseError, raster};
 
 /// The scene JSON for a case.
 pub fn scene_json(case: &Case) -> Result<String, CaseError> {
-    let drawn = render(case, Arithmetic::Exact)?;
+    let (primitives, shapes) = raster::shapes(case)?;
     let level = case.features.fsaa.max(1);
-    let count = drawn.primitives.len() as u64;
+    let count = primitives.len() as u64;
     let frame_bits = (64 - count.leading_zeros()).clamp(1, 32);
     if count >= 1 << 32 {
         return Err(CaseError { line: None, message: format!("{count} primitives do not fit a 32-bit framebuffer") });
@@ -35,11 +35,11 @@ pub fn scene_json(case: &Case) -> Result<String, CaseError> {
     let _ = writeln!(out, "  \"depth_test\": \"{test}\", \"clear_depth\": 1,");
     let _ = writeln!(out, "  \"polygons\": [");
     let mut parts = std::collections::BTreeMap::<u32, usize>::new();
-    for (i, shape) in drawn.shapes.iter().enumerate() {
-        let primitive = &drawn.primitives[shape.primitive as usize - 1];
+    for (i, shape) in shapes.iter().enumerate() {
+        let primitive = &primitives[shape.primitive as usize - 1];
         let part = parts.entry(shape.primitive).or_insert(0);
         *part += 1;
-        let pieces = drawn.shapes.iter().filter(|s| s.primitive == shape.primitive).count();
+        let pieces = shapes.iter().filter(|s| s.primitive == shape.primitive).count();
         let name = format!(
             "{} {}{}",
             if primitive.vertices.len() == 1 { "point" } else { "triangle" },
@@ -48,7 +48,7 @@ pub fn scene_json(case: &Case) -> Result<String, CaseError> {
         );
         let vertices: Vec<String> =
             shape.vertices.iter().map(|[x, y, z]| format!("[\"{x}\", \"{y}\", \"{z}\"]")).collect();
-        let comma = if i + 1 < drawn.shapes.len() { "," } else { "" };
+        let comma = if i + 1 < shapes.len() { "," } else { "" };
         let _ = writeln!(
             out,
             "    {{\"name\": \"{name} (line {})\", \"value\": {}, \"vertices\": [{}]}}{comma}",

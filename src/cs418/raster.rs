@@ -155,8 +155,19 @@ pub fn render(case: &Case, arithmetic: Arithmetic) -> Result<Comparison, CaseErr
     }
 }
 
+/// What a case draws, after clipping and culling, in exact arithmetic,
+/// without sampling it: its primitives and their shapes (for `zsim cs418
+/// import`, which leaves the sampling to zsim's rasterizer).
+pub fn shapes(case: &Case) -> Result<(Vec<Primitive>, Vec<Shape>), CaseError> {
+    let pipeline = Pipeline::<BigRational>::new(case, false).draw()?;
+    Ok((pipeline.primitives, pipeline.shapes))
+}
+
 struct Pipeline<'a, S> {
     case: &'a Case,
+    /// Whether triangles and points are sampled, or only clipped, culled and
+    /// kept as shapes.
+    sample: bool,
     level: u32,
     width: usize,
     height: usize,
@@ -180,16 +191,32 @@ struct Pipeline<'a, S> {
 
 impl<'a, S: Scalar> Pipeline<'a, S> {
     fn run(case: &'a Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
+        let pipeline = Pipeline::<S>::new(case, true).draw()?;
+        Ok(Comparison {
+            image: pipeline.resolve(),
+            arithmetic,
+            level: pipeline.level,
+            primitives: pipeline.primitives,
+            owners: pipeline.owners,
+            spans: pipeline.spans,
+            shapes: pipeline.shapes,
+        })
+    }
+
+    /// A pipeline for `case`, its buffers allocated when it samples.
+    fn new(case: &'a Case, sample: bool) -> Self {
         let level = case.features.fsaa.max(1);
         let (width, height) = ((case.width * level) as usize, (case.height * level) as usize);
-        let mut pipeline = Pipeline {
+        let samples = if sample { width * height } else { 0 };
+        Pipeline {
             case,
+            sample,
             level,
             width,
             height,
-            colour: vec![[0.0; 4]; width * height],
-            depth: vec![S::int(1); if case.features.depth { width * height } else { 0 }],
-            owners: vec![0; width * height],
+            colour: vec![[0.0; 4]; samples],
+            depth: vec![S::int(1); if case.features.depth { samples } else { 0 }],
+            owners: vec![0; samples],
             primitives: Vec::new(),
             spans: BTreeMap::new(),
             shapes: Vec::new(),
@@ -201,19 +228,15 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             elements: Vec::new(),
             sizes: Vec::new(),
             matrix: None,
-        };
-        for (line, command) in &case.commands {
-            pipeline.command(*line, command)?;
         }
-        Ok(Comparison {
-            image: pipeline.resolve(),
-            arithmetic,
-            level,
-            primitives: pipeline.primitives,
-            owners: pipeline.owners,
-            spans: pipeline.spans,
-            shapes: pipeline.shapes,
-        })
+    }
+
+    /// Runs the case's commands.
+    fn draw(mut self) -> Result<Self, CaseError> {
+        for (line, command) in &self.case.commands {
+            self.command(*line, command)?;
+        }
+        Ok(self)
     }
 
     fn command(&mut self, line: usize, command: &Command) -> Result<(), CaseError> {
@@ -358,7 +381,9 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                     primitive,
                     screen.iter().map(|v| [v[0].clone(), v[1].clone(), v[2].clone()]).collect(),
                 );
-                self.scanline(&screen, primitive);
+                if self.sample {
+                    self.scanline(&screen, primitive);
+                }
             }
         }
         Ok(())
@@ -469,6 +494,9 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         let (width, height) = (x1.sub(&x0), y1.sub(&y0));
         let corners = [(&x0, &y0), (&x1, &y0), (&x1, &y1), (&x0, &y1)];
         self.record_shape(primitive, corners.iter().map(|(x, y)| [(*x).clone(), (*y).clone(), z.clone()]).collect());
+        if !self.sample {
+            return;
+        }
         // Only the image's samples: x and y step by exactly 1, so starting at
         // the image's edge visits the same samples a walk from far outside would.
         let (zero, right, bottom) = (S::int(0), S::int(self.width as i64), S::int(self.height as i64));
