@@ -323,12 +323,8 @@ mod tests {
             {"name": "roof", "value": 2, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]}"#;
         let scene = parse(text).unwrap();
         assert_eq!(scene.polygons[0].name, default_name(0));
-        let labels = |lang| {
-            crate::words::set_language(lang);
-            let labels = [0, 1].map(|i| crate::explain::polygon_name(&scene, i));
-            crate::words::set_language(crate::words::Lang::En);
-            labels
-        };
+        let labels =
+            |lang| crate::words::with_language(lang, || [0, 1].map(|i| crate::explain::polygon_name(&scene, i)));
         assert_eq!(labels(crate::words::Lang::En), ["polygon 1".to_string(), "polygon 2 \"roof\"".to_string()]);
         assert_eq!(
             labels(crate::words::Lang::Ru),

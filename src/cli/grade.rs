@@ -8,8 +8,8 @@ use clap::{Args, ValueEnum};
 use comfy_table::{ContentArrangement, Table, presets};
 use zsim::arith::Arith;
 use zsim::error::Error;
-use zsim::explain::{Buffer, polygon_name, why};
-use zsim::grade::{CommonMistake, Grade, Handed, Submission, common_mistakes, file_kind, grade};
+use zsim::explain::{Buffer, polygon_after, polygon_name, why};
+use zsim::grade::{CommonMistake, Grade, Handed, Status, Submission, common_mistakes, file_kind, grade};
 use zsim::pipeline::Simulation;
 use zsim::scene::Scene;
 use zsim::text::printable;
@@ -77,32 +77,44 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         };
         expected.push((buffer, matrix));
     }
-    let submissions = submissions(&files, &expected, &scene);
-    let graded = grade(&submissions, &expected);
-    let mistakes = common_mistakes(&graded, MISTAKES_LISTED);
-    let reasons = reasons(&scene, last, &mistakes);
-    let after = polygon_name(&scene, last);
-    let mistakes_text = mistakes_text(&mistakes, &reasons, graded.len());
+    // Each answer graded, the common mistakes and zsim's reason for each, in
+    // this thread's language.
+    let assess = || {
+        let graded = grade(&submissions(&files, &expected, &scene), &expected);
+        let mistakes = common_mistakes(&graded, MISTAKES_LISTED);
+        let reasons = reasons(&scene, last, &mistakes);
+        (graded, mistakes, reasons)
+    };
+    let (graded, mistakes, reasons) = assess();
     let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
     let text = match args.format {
-        Format::Csv => csv(&rows),
-        Format::Json => json(&args.scene, &after, &rows, &mistakes, &reasons),
+        // CSV and JSON are the same in every language: their reasons and names in English.
+        Format::Csv | Format::Json => zsim::words::with_language(zsim::words::Lang::En, || {
+            let (graded, mistakes, reasons) = assess();
+            let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
+            match args.format {
+                Format::Csv => csv(&rows),
+                _ => json(&args.scene, &polygon_name(&scene, last), &rows, &mistakes, &reasons),
+            }
+        }),
         Format::Text => {
             let counts = |f: fn(&Grade) -> bool| rows.iter().filter(|g| f(g)).count();
-            format!(
-                "class {} on {} after {after}: {} students; {} ok, {} wrong, {} malformed, {} missing an answer\n{}\n\n{mistakes_text}",
-                args.class.display(),
-                args.scene.display(),
-                rows.len(),
-                counts(|g| g.status == zsim::grade::Status::Ok),
-                counts(|g| g.status == zsim::grade::Status::Wrong),
-                counts(|g| matches!(g.status, zsim::grade::Status::Malformed(_))),
-                counts(|g| matches!(g.status, zsim::grade::Status::Missing(_))),
-                table(&rows)
-            )
+            let summary = zsim::words!(
+                "grade-summary",
+                class = args.class.display().to_string(),
+                scene = args.scene.display().to_string(),
+                polygon = polygon_after(&scene, last),
+                students = rows.len(),
+                ok = counts(|g| g.status == Status::Ok),
+                wrong = counts(|g| g.status == Status::Wrong),
+                malformed = counts(|g| matches!(g.status, Status::Malformed(_))),
+                missing = counts(|g| matches!(g.status, Status::Missing(_)))
+            );
+            format!("{summary}\n{}\n\n{}", table(&rows), mistakes_text(&mistakes, &reasons, graded.len()))
         }
     };
     if let Some(folder) = &args.output {
+        let mistakes_text = mistakes_text(&mistakes, &reasons, graded.len());
         write_feedback(folder, &scene, args, last, &files, &graded, &mistakes_text)?;
     }
     emit(out, &text)?;
@@ -178,36 +190,58 @@ fn reasons(scene: &Scene, last: usize, mistakes: &[CommonMistake]) -> Vec<String
 
 fn table(rows: &[&Grade]) -> Table {
     let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_header([
-        "student",
-        "frame wrong",
-        "depth wrong",
-        "score %",
-        "status",
-    ]);
+    table.load_style(presets::ASCII_MARKDOWN).set_header(
+        [
+            "grade-column-student",
+            "grade-column-frame",
+            "grade-column-depth",
+            "grade-column-score",
+            "grade-column-status",
+        ]
+        .map(|key| zsim::words!(key)),
+    );
     for grade in rows {
         let count = |c: Option<usize>| c.map_or_else(|| "-".to_string(), |c| c.to_string());
         table.add_row([
             grade.student.clone(),
             count(grade.frame_wrong),
             count(grade.depth_wrong),
-            grade.percent(),
-            grade.status.to_string(),
+            zsim::words::localize_decimal(grade.percent()),
+            status_text(&grade.status),
         ]);
     }
     table
 }
 
+/// A student's status in the reader's language (CSV and JSON keep
+/// [`Status`]'s English words).
+fn status_text(status: &Status) -> String {
+    match status {
+        Status::Ok => zsim::words!("grade-status-ok"),
+        Status::Wrong => zsim::words!("grade-status-wrong"),
+        Status::Malformed(why) => zsim::words!("grade-status-malformed", why = why),
+        Status::Missing(what) => zsim::words!("grade-status-missing", what = what),
+    }
+}
+
 fn mistakes_text(mistakes: &[CommonMistake], reasons: &[String], students: usize) -> String {
     if mistakes.is_empty() {
-        return "common mistakes: no cell was got wrong by more than one student\n".to_string();
+        return format!("{}\n", zsim::words!("grade-mistakes-none"));
     }
     let mut table = Table::new();
     table
         .load_style(presets::ASCII_MARKDOWN)
         .set_content_arrangement(ContentArrangement::Dynamic)
         .set_width(100)
-        .set_header(["buffer", "x", "y", "wrong", "right", "answered", "why"]);
+        .set_header([
+            zsim::words!("grade-column-buffer"),
+            "x".to_string(),
+            "y".to_string(),
+            zsim::words!("grade-column-wrong"),
+            zsim::words!("check-column-right"),
+            zsim::words!("grade-column-answered"),
+            zsim::words!("check-column-why"),
+        ]);
     for (mistake, reason) in mistakes.iter().zip(reasons) {
         let answered: Vec<String> =
             mistake.answers.iter().map(|(value, count)| format!("{value} ({count}×)")).collect();
@@ -215,13 +249,13 @@ fn mistakes_text(mistakes: &[CommonMistake], reasons: &[String], students: usize
             mistake.buffer.name().to_string(),
             mistake.x.to_string(),
             mistake.y.to_string(),
-            format!("{} of {students}", mistake.students.len()),
+            zsim::words!("grade-students-of", count = mistake.students.len(), total = students),
             mistake.right.to_string(),
             answered.join(", "),
             reason.clone(),
         ]);
     }
-    format!("common mistakes (cells at least two students got wrong, most first):\n{table}\n")
+    format!("{}\n{table}\n", zsim::words!("grade-mistakes"))
 }
 
 /// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
@@ -295,14 +329,14 @@ fn write_feedback(
     let write = |path: PathBuf, text: &str| std::fs::write(&path, text).map_err(|source| Error::Write { path, source });
     std::fs::create_dir_all(folder).map_err(|source| Error::Write { path: folder.to_owned(), source })?;
     for (grade, _) in graded {
-        let mut text = format!(
-            "{}: {} after {}: score {} %, {}\n",
-            grade.student,
-            args.scene.display(),
-            polygon_name(scene, last),
-            grade.percent(),
-            grade.status
-        );
+        let mut text = zsim::words!(
+            "grade-feedback",
+            student = &grade.student,
+            scene = args.scene.display().to_string(),
+            polygon = polygon_after(scene, last),
+            score = zsim::words::localize_decimal(grade.percent()),
+            status = status_text(&grade.status)
+        ) + "\n";
         // The answers that were read, explained as `zsim check` explains them.
         let mut answers = Vec::new();
         for (student, buffer, path) in files {

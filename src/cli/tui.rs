@@ -571,10 +571,10 @@ mod tests {
         let scene = book();
         let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
         let mut app = App::new(&mut tracer, None, false);
-        zsim::words::set_language(zsim::words::Lang::Zh);
-        press(&mut app, "pg15\n");
-        let text = screen(&mut app, 100, 30);
-        zsim::words::set_language(zsim::words::Lang::En);
+        let text = zsim::words::with_language(zsim::words::Lang::Zh, || {
+            press(&mut app, "pg15\n");
+            screen(&mut app, 100, 30)
+        });
         assert!(text.starts_with("zsim step · 多边形 2“triangle”，扫描线 y = 15.5 · 帧缓冲器 · ? 按键"), "{text}");
         snapshot("tui_rogers_triangle_15_zh", text);
     }

@@ -101,6 +101,26 @@ check-column-answer = answer
 check-column-right = right
 check-column-why = why
 check-in-arith = in { $arith } arithmetic the cell holds { $mode }; in exact arithmetic { $exact }: { $reason }
+grade-summary = class { $class } on { $scene } after { $polygon }: { $students ->
+    [one] { $students } student
+   *[other] { $students } students
+  }; { $ok } ok, { $wrong } wrong, { $malformed } malformed, { $missing } missing an answer
+grade-column-student = student
+grade-column-frame = frame wrong
+grade-column-depth = depth wrong
+grade-column-score = score %
+grade-column-status = status
+grade-column-buffer = buffer
+grade-column-wrong = wrong
+grade-column-answered = answered
+grade-status-ok = ok
+grade-status-wrong = wrong
+grade-status-malformed = malformed: { $why }
+grade-status-missing = missing: { $what }
+grade-students-of = { $count } of { $total }
+grade-mistakes = common mistakes (cells at least two students got wrong, most first):
+grade-mistakes-none = common mistakes: no cell was got wrong by more than one student
+grade-feedback = { $student }: { $scene } after { $polygon }: score { $score } %, { $status }
 misreading-upside-down = bottom row first
 misreading-transposed = with rows and columns swapped
 

@@ -107,6 +107,17 @@ pub fn language() -> Lang {
     CURRENT.with(Cell::get)
 }
 
+/// `f`'s result with this thread's sentences in `lang`, the language before
+/// restored afterwards: for output that never changes with the language
+/// (JSON, CSV) built from the same words as the text.
+pub fn with_language<T>(lang: Lang, f: impl FnOnce() -> T) -> T {
+    let before = language();
+    set_language(lang);
+    let result = f();
+    set_language(before);
+    result
+}
+
 fn bundle(lang: Lang) -> FluentBundle<FluentResource> {
     let resource = FluentResource::try_new(lang.catalogue().to_string()).unwrap_or_else(|(_, errors)| {
         panic!("the {} catalogue does not parse: {errors:?}: please report this bug", lang.code())

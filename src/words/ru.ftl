@@ -101,6 +101,27 @@ check-column-answer = ответ
 check-column-right = верно
 check-column-why = почему
 check-in-arith = в арифметике { $arith } в ячейке { $mode }; в точной арифметике { $exact }: { $reason }
+grade-summary = класс { $class }, сцена { $scene }, после { $polygon }: { $students ->
+    [one] { $students } студент
+    [few] { $students } студента
+   *[many] { $students } студентов
+  }; верно: { $ok }, с ошибками: { $wrong }, с негодными файлами: { $malformed }, без ответа: { $missing }
+grade-column-student = студент
+grade-column-frame = ошибок в буфере кадра
+grade-column-depth = ошибок в z-буфере
+grade-column-score = баллы, %
+grade-column-status = итог
+grade-column-buffer = буфер
+grade-column-wrong = ошиблись
+grade-column-answered = ответы
+grade-status-ok = верно
+grade-status-wrong = с ошибками
+grade-status-malformed = негодный файл: { $why }
+grade-status-missing = нет файла: { $what }
+grade-students-of = { $count } из { $total }
+grade-mistakes = частые ошибки (ячейки, в которых ошиблись хотя бы двое, сначала самые частые):
+grade-mistakes-none = частые ошибки: ни в одной ячейке не ошиблись двое или больше
+grade-feedback = { $student }: { $scene }, после { $polygon }: { $score } %, { $status }
 misreading-upside-down = с нижней строки
 misreading-transposed = по столбцам (строки и столбцы переставлены)
 

@@ -101,6 +101,27 @@ check-column-answer = відповідь
 check-column-right = правильно
 check-column-why = чому
 check-in-arith = в арифметиці { $arith } у клітинці { $mode }; у точній арифметиці { $exact }: { $reason }
+grade-summary = клас { $class }, сцена { $scene }, після { $polygon }: { $students ->
+    [one] { $students } студент
+    [few] { $students } студенти
+   *[many] { $students } студентів
+  }; правильно: { $ok }, з помилками: { $wrong }, з непридатними файлами: { $malformed }, без відповіді: { $missing }
+grade-column-student = студент
+grade-column-frame = помилок у буфері кадру
+grade-column-depth = помилок у z-буфері
+grade-column-score = бали, %
+grade-column-status = підсумок
+grade-column-buffer = буфер
+grade-column-wrong = помилилися
+grade-column-answered = відповіді
+grade-status-ok = правильно
+grade-status-wrong = з помилками
+grade-status-malformed = непридатний файл: { $why }
+grade-status-missing = немає файлу: { $what }
+grade-students-of = { $count } з { $total }
+grade-mistakes = часті помилки (клітинки, у яких помилилися щонайменше двоє, спершу найчастіші):
+grade-mistakes-none = часті помилки: у жодній клітинці не помилилися двоє чи більше
+grade-feedback = { $student }: { $scene }, після { $polygon }: { $score } %, { $status }
 misreading-upside-down = з нижнього рядка
 misreading-transposed = по стовпцях (рядки й стовпці переставлено)
 

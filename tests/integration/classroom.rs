@@ -117,6 +117,42 @@ fn grade_writes_each_student_checks_explanation() {
     assert!(std::fs::read_to_string(feedback.join("common-mistakes.txt")).unwrap().contains("2 of 5"));
 }
 
+/// The table and each student's feedback speak the student's language
+/// (`--lang` or the locale); CSV and JSON are the same in every language.
+#[test]
+fn grade_speaks_the_language_but_csv_and_json_do_not_change() {
+    let class = class_folder("class-ru");
+    let feedback = scratch("feedback-ru");
+    let run = zsim(&["grade", "examples/rogers.json", path(&class), "--lang", "ru", "-o", path(&feedback)]);
+    assert_eq!(run.code, 1);
+    assert!(
+        run.stdout.contains(
+            "после многоугольника 2 «triangle»: 5 студентов; верно: 1, с ошибками: 2, с негодными файлами: 1, без ответа: 1\n"
+        ),
+        "{}",
+        run.stdout
+    );
+    assert!(
+        run.stdout
+            .contains("| ed      | 0                     | -                 | 50,0     | нет файла: ed.depth.txt"),
+        "{}",
+        run.stdout
+    );
+    assert!(run.stdout.contains("| z-буфер | 20 | 17 | 2 из 5   | 10    | 11 (2×)"), "{}", run.stdout);
+    let bo = std::fs::read_to_string(feedback.join("bo.txt")).unwrap();
+    assert!(
+        bo.starts_with("bo: examples/rogers.json, после многоугольника 2 «triangle»: 99,9 %, с ошибками\n"),
+        "{bo}"
+    );
+    for format in ["csv", "json"] {
+        let english = zsim(&["grade", "examples/rogers.json", path(&class), "--format", format]).stdout;
+        for lang in ["ru", "uk", "zh"] {
+            let other = zsim(&["grade", "examples/rogers.json", path(&class), "--format", format, "--lang", lang]);
+            assert_eq!(other.stdout, english, "{format} in {lang}");
+        }
+    }
+}
+
 #[test]
 fn grade_exits_0_for_a_right_class_and_2_for_bad_usage() {
     let (frame, depth) = (crate::book_answer("frame", " "), crate::book_answer("depth", " "));
