@@ -353,16 +353,23 @@ pub fn big_integer(value: &num_bigint::BigInt) -> String {
 }
 
 /// A number as a student writes it: `12`, `12.5`, `5.375`, or a fraction
-/// (`41/3`) when no decimal of at most four places is exact.
+/// (`41/3`) when no decimal of at most four places is exact; the decimal
+/// separator is the language's (`12,5` in Russian).
 ///
 /// ```
 /// use zsim::exact::{Q, short};
 /// assert_eq!((short(Q::new(13, 2)), short(Q::new(43, 8)), short(Q::new(41, 3))), ("6.5".into(), "5.375".into(), "41/3".into()));
 /// ```
 pub fn short(value: Q) -> String {
+    crate::words::localize_decimal(short_in_files(value))
+}
+
+/// [`short`] with a point in every language: for files (scene files, JSON)
+/// and for English text.
+pub fn short_in_files(value: Q) -> String {
     (0..=4)
         .find(|places| (value * Q::from_integer(10i128.pow(*places))).is_integer())
-        .map_or_else(|| fraction(value), |places| crate::words::localize_decimal(decimal(value, places)))
+        .map_or_else(|| fraction(value), |places| decimal(value, places))
 }
 
 /// The decimal approximation printed beside an exact value: always `places`

@@ -8,7 +8,7 @@
 use std::collections::BTreeSet;
 use std::fmt;
 
-use crate::exact::{Q, fraction, short};
+use crate::exact::{Q, fraction, short_in_files};
 use crate::generate::SplitMix64;
 use crate::pipeline::Simulation;
 use crate::scene::{Scene, max_for_bits};
@@ -143,8 +143,8 @@ impl Observer for CaseFinder {
                     "polygon {}: vertex {} ({}, {}) lies on the scanline of row {row}",
                     index + 1,
                     k + 1,
-                    short(v[0]),
-                    short(v[1])
+                    short_in_files(v[0]),
+                    short_in_files(v[1])
                 )
             });
         }
@@ -356,7 +356,7 @@ fn candidate(spec: &Spec, rng: &mut SplitMix64) -> String {
 
 /// A number for the scene file: an integer or a decimal when exact, else a fraction in a string.
 fn number(value: Q) -> String {
-    let text = short(value);
+    let text = short_in_files(value);
     if text.contains('/') { format!("\"{text}\"") } else { text }
 }
 

@@ -249,7 +249,7 @@ pub fn svg_with(
 /// The width of a legend label in the figure's 11 px sans-serif: about 7 px
 /// a character, 12 for the wide ones of Chinese (from U+2E80 on).
 fn text_width(label: &str) -> i128 {
-    label.chars().map(|c| if u32::from(c) >= 0x2E80 { 12 } else { 7 }).sum()
+    label.chars().map(|c| if is_wide(c) { 12 } else { 7 }).sum()
 }
 
 /// The legend's entries, `(fill, label)`: each framebuffer value present
@@ -341,7 +341,7 @@ fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&dyn F
             let below = labelled.iter().filter(|p| **p == [v[0], v[1]]).count() as i128;
             labelled.push([v[0], v[1]]);
             let dy = if v[1] < middle_y { Q::new(-1, 2) } else { Q::new(1, 4) } - Q::new(below, 2);
-            let label = format!("({}, {}, {})", short(v[0]), short(v[1]), short(v[2]));
+            let label = format!("({})", [v[0], v[1], v[2]].map(short).join(coordinate_separator()));
             let _ = writeln!(
                 out,
                 r#"<circle cx="{}" cy="{}" r="2.5" stroke="none"/><text x="{}" y="{}" text-anchor="{anchor}">{}</text>"#,
@@ -416,11 +416,11 @@ fn wrap(lines: &[String], width: usize) -> Vec<String> {
     let mut out = Vec::new();
     for line in lines {
         let mut current = String::new();
-        for word in line.split(' ') {
-            if !current.is_empty() && current.chars().count() + 1 + word.chars().count() > width {
+        for (spaced, word) in breakable(line) {
+            let joiner = usize::from(spaced && !current.is_empty());
+            if !current.is_empty() && columns(&current) + joiner + columns(word) > width {
                 out.push(std::mem::take(&mut current));
-            }
-            if !current.is_empty() {
+            } else if joiner == 1 {
                 current.push(' ');
             }
             current.push_str(word);
@@ -428,6 +428,45 @@ fn wrap(lines: &[String], width: usize) -> Vec<String> {
         out.push(current);
     }
     out
+}
+
+/// Between a point's coordinates: `, `, or `; ` where the decimal separator
+/// is a comma (`(12,5; 3; 0,25)` in Russian), as `explain` writes centres.
+fn coordinate_separator() -> &'static str {
+    if crate::words::language().decimal_separator() == ',' { "; " } else { ", " }
+}
+
+/// Whether a character is one of Chinese's wide ones (from U+2E80 on),
+/// which take about two columns and may be broken between.
+fn is_wide(c: char) -> bool {
+    u32::from(c) >= 0x2E80
+}
+
+/// The columns a text takes: one a character, two a wide one.
+fn columns(text: &str) -> usize {
+    text.chars().map(|c| if is_wide(c) { 2 } else { 1 }).sum()
+}
+
+/// The pieces a line may be broken between, each with whether a space
+/// precedes it: its words, and within a word each wide character alone.
+fn breakable(line: &str) -> Vec<(bool, &str)> {
+    let mut pieces = Vec::new();
+    for word in line.split(' ') {
+        let mut start = 0;
+        for (i, c) in word.char_indices() {
+            let end = i + c.len_utf8();
+            // A break before and after each wide character, none elsewhere.
+            let next_wide = word[end..].chars().next().is_some_and(is_wide);
+            if is_wide(c) || next_wide || end == word.len() {
+                pieces.push((start == 0, &word[start..end]));
+                start = end;
+            }
+        }
+        if word.is_empty() {
+            pieces.push((true, word));
+        }
+    }
+    pieces
 }
 
 fn escape(text: &str) -> String {
@@ -465,5 +504,13 @@ mod tests {
     #[test]
     fn text_wraps_at_spaces() {
         assert_eq!(wrap(&["a bb ccc dd".to_string()], 5), ["a bb", "ccc", "dd"]);
+    }
+
+    /// Chinese has no spaces: its text breaks between any two characters,
+    /// each counted two columns wide; Latin words within it stay whole.
+    #[test]
+    fn chinese_text_wraps_between_characters() {
+        assert_eq!(wrap(&["写出帧缓冲器和 z 缓冲器".to_string()], 8), ["写出帧缓", "冲器和 z", "缓冲器"]);
+        assert_eq!(wrap(&["值 0 … 15（四舍五入）".to_string()], 10), ["值 0 … 15", "（四舍五入", "）"]);
     }
 }

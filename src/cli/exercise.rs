@@ -86,22 +86,25 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         write(&name, &text)?;
         written.push(name);
     }
-    let label = format!("exercise, seed {}", args.seed);
+    // The worksheet and the solution are handed to students: in their language.
+    let seed = args.seed.to_string();
     let worksheet = svg_with(
         scene,
         Simulation::new(scene).buffers(),
         last,
         Shading::Frame,
-        &format!("{label}: {}×{} raster, {} polygons", scene.width, scene.height, scene.polygons.len()),
+        &zsim::words!(
+            "exercise-title",
+            seed = &seed,
+            width = scene.width,
+            height = scene.height,
+            count = scene.polygons.len()
+        ),
         &Extras {
             vertex_labels: true,
             caption: vec![
-                format!(
-                    "Draw the polygons in order (A first) with the z-buffer algorithm: larger z is nearer, the z-buffer starts at 0, holds 0 … {} (rounded, saturated).",
-                    scene.depth_max()
-                ),
-                "Write the framebuffer (each polygon's value) and the z-buffer after the last polygon, top row first."
-                    .to_string(),
+                zsim::words!("exercise-task-draw", max = scene.depth_max()),
+                zsim::words!("exercise-task-write"),
             ],
             values: false,
         },
@@ -113,7 +116,7 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         simulation.buffers(),
         last,
         Shading::Frame,
-        &format!("{label}: the framebuffer after the last polygon"),
+        &zsim::words!("exercise-solution-title", seed = &seed),
         &Extras { vertex_labels: true, caption: Vec::new(), values: true },
     );
     write("solution.svg", &solution)?;

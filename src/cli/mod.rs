@@ -28,7 +28,7 @@ use zsim::error::Error;
 struct Cli {
     #[command(subcommand)]
     command: Command,
-    /// The language zsim explains in: en, ru, uk or zh (default: from LC_ALL, LC_MESSAGES or LANG, else English). explain and check speak it; --help stays English.
+    /// The language zsim explains in: en, ru, uk or zh (default: from LC_ALL, LC_MESSAGES or LANG, else English). Reports, explanations, figures and feedback speak it; --help, JSON, CSV and the files zsim writes for programs stay the same.
     #[arg(long, global = true, value_name = "LANG", value_parser = language)]
     lang: Option<zsim::words::Lang>,
 }

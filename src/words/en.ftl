@@ -121,6 +121,13 @@ grade-students-of = { $count } of { $total }
 grade-mistakes = common mistakes (cells at least two students got wrong, most first):
 grade-mistakes-none = common mistakes: no cell was got wrong by more than one student
 grade-feedback = { $student }: { $scene } after { $polygon }: score { $score } %, { $status }
+exercise-title = exercise, seed { $seed }: { $width }×{ $height } raster, { $count ->
+    [one] { $count } polygon
+   *[other] { $count } polygons
+  }
+exercise-solution-title = exercise, seed { $seed }: the framebuffer after the last polygon
+exercise-task-draw = Draw the polygons in order (A first) with the z-buffer algorithm: larger z is nearer, the z-buffer starts at 0, holds 0 … { $max } (rounded, saturated).
+exercise-task-write = Write the framebuffer (each polygon's value) and the z-buffer after the last polygon, top row first.
 misreading-upside-down = bottom row first
 misreading-transposed = with rows and columns swapped
 

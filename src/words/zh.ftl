@@ -113,6 +113,10 @@ grade-students-of = { $total } 人中 { $count } 人
 grade-mistakes = 常见错误（至少两名学生答错的单元，按人数从多到少）：
 grade-mistakes-none = 常见错误：没有哪个单元被两名以上学生答错
 grade-feedback = { $student }：{ $scene }，{ $polygon }之后：得分 { $score } %，{ $status }
+exercise-title = 练习，种子 { $seed }：{ $width }×{ $height } 栅格，{ $count } 个多边形
+exercise-solution-title = 练习，种子 { $seed }：最后一个多边形之后的帧缓冲器
+exercise-task-draw = 用 z 缓冲器算法按顺序（先画 A）绘制各多边形：z 越大越近；z 缓冲器初值为 0，取值 0 … { $max }（四舍五入，超出范围取边界值）。
+exercise-task-write = 写出最后一个多边形之后的帧缓冲器（各多边形的值）和 z 缓冲器，从最上一行写起。
 misreading-upside-down = 从最下面一行开始的顺序
 misreading-transposed = 行列互换的方式
 

@@ -121,4 +121,18 @@ fn figures_are_titled_in_each_language() {
         let title = line.split_once(['(', '（']).unwrap().1.trim_end_matches(['\n', ')', '）']);
         assert!(svg.contains(&format!("<title>{title}</title>")), "{lang}: {svg}");
     }
+    // A worksheet's vertex labels: with a decimal comma, coordinates are parted by semicolons.
+    let (dir, file) = crate::scene_file(
+        "halves.json",
+        r#"{"width": 8, "height": 8, "polygons": [{"value": 1, "vertices": [[1.5,1,3],[6,1,3],[3,6,0.25]]}]}"#,
+    );
+    for (lang, label) in [("en", ">(1.5, 1, 3)<"), ("ru", ">(1,5; 1; 3)<"), ("zh", ">(1.5, 1, 3)<")] {
+        let out = crate::zsim_in(Some(&dir), &["figure", &file, "--after", "0", "-o", "halves.svg", "--lang", lang]);
+        assert_eq!(out.code, 0, "{lang}: {}", out.stderr);
+        let svg = std::fs::read_to_string(dir.join("halves.svg")).expect("written");
+        assert!(
+            svg.contains(label) && svg.contains(if lang == "ru" { "(3; 6; 0,25)" } else { "(3, 6, 0.25)" }),
+            "{lang}: {svg}"
+        );
+    }
 }
