@@ -41,7 +41,7 @@ impl RasterSink for CoreOnly<'_> {
 
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
         let cell = y as usize * self.width + x as usize;
-        if zsim::depth::DepthTest::Greater.passes(depth, Stored::Level(self.depth[cell])) {
+        if zsim::depth::DepthTest::Greater.passes(&depth, &Stored::Level(self.depth[cell])) {
             self.depth[cell] = depth.quantized(self.depth_max);
             self.frame[cell] = self.value;
         }

@@ -20,7 +20,7 @@ use num_traits::CheckedMul;
 use crate::buffer::Buffers;
 use crate::depth::{Depth, depth_at_centre};
 use crate::error::{Error, Mapping, PolygonProblem};
-use crate::exact::Q;
+use crate::exact::{Exact, Q};
 use crate::pipeline::{PixelRect, RasterSink, Scratch, Simulation, fate, rasterize};
 use crate::plane::Geometry;
 use crate::scan::{Crossing, Span};
@@ -36,7 +36,7 @@ pub struct Averaged {
     pub frame: Vec<Vec<Q>>,
     /// Each pixel's depth, rows top first: the mean of its samples' depths
     /// (sample mode) or its one z-buffer value (pixel mode).
-    pub depth: Vec<Vec<Q>>,
+    pub depth: Vec<Vec<Exact>>,
 }
 
 /// The scene at k× resolution: every vertex's x and y times k.
@@ -108,8 +108,10 @@ pub fn run_watching(
     // Pixel mode: samples' framebuffer at k×, z-buffer at screen resolution.
     let stages: Box<dyn PixelStages> =
         if scene.has_pixel_effects() { Box::new(WithEffects::new(scene)) } else { Box::new(Plain::new(scene)) };
-    let mut samples = Buffers::new(big.width, big.height, scene.frame_bits, scene.background, scene.clear_depth);
-    let mut depth = Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth);
+    let mut samples =
+        Buffers::new(big.width, big.height, scene.frame_bits, scene.background, scene.clear_depth.clone());
+    let mut depth =
+        Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth.clone());
     let mut scratch = Scratch::default();
     let mut pictures = Vec::with_capacity(scene.polygons.len());
     for (index, polygon) in scene.polygons.iter().enumerate() {
@@ -128,12 +130,12 @@ pub fn run_watching(
                 let decision = stages.decide(polygon, centre_depth, depth.depth(x, y), depth.frame(x, y));
                 if watch == Some((x, y)) {
                     let samples = covered.iter().map(|(sx, sy)| (sx - x * k, sy - y * k)).collect();
-                    notes.push(PixelModeNote { index, samples, decision });
+                    notes.push(PixelModeNote { index, samples, decision: decision.clone() });
                 }
                 if decision.outcome != Outcome::Written {
                     continue;
                 }
-                depth.store(x, y, decision.frame, decision.stored);
+                depth.store(x, y, decision.frame, decision.stored.clone());
                 for (sx, sy) in covered {
                     let under = samples.frame(sx, sy);
                     let value = polygon.opacity.map_or(polygon.value, |alpha| blend(polygon.value, under, alpha));
@@ -169,19 +171,21 @@ impl RasterSink for Covered {
 
 /// Means over each pixel's k×k samples of `frame` and `depth` (sample
 /// coordinates), rows top first.
-fn average(scene: &Scene, k: u32, frame: impl Fn(u32, u32) -> Q, depth: impl Fn(u32, u32) -> Q) -> Averaged {
-    let count = Q::from_integer(i128::from(k) * i128::from(k));
-    let mean = |f: &dyn Fn(u32, u32) -> Q, x: u32, y: u32| -> Q {
-        let mut sum = Q::from_integer(0);
+fn average(scene: &Scene, k: u32, frame: impl Fn(u32, u32) -> Q, depth: impl Fn(u32, u32) -> Exact) -> Averaged {
+    let count = i128::from(k) * i128::from(k);
+    let mean = |f: &dyn Fn(u32, u32) -> Exact, x: u32, y: u32| -> Exact {
+        let mut sum = Exact::Word(Q::from_integer(0));
         for j in 0..k {
             for i in 0..k {
-                sum += f(x * k + i, y * k + j);
+                sum = sum.plus(&f(x * k + i, y * k + j));
             }
         }
-        sum / count
+        sum.divided_by(count)
     };
-    let rows = |f: &dyn Fn(u32, u32) -> Q| -> Vec<Vec<Q>> {
+    let rows = |f: &dyn Fn(u32, u32) -> Exact| -> Vec<Vec<Exact>> {
         (0..scene.height).rev().map(|y| (0..scene.width).map(|x| mean(f, x, y)).collect()).collect()
     };
-    Averaged { frame: rows(&frame), depth: rows(&depth) }
+    let frame = |x, y| Exact::Word(frame(x, y));
+    let frame = rows(&frame).into_iter().map(|row| row.iter().map(|v| v.word().expect("a mean of levels")).collect());
+    Averaged { frame: frame.collect(), depth: rows(&depth) }
 }

@@ -323,7 +323,8 @@ fn raster_float<F: Float + AsPrimitive<u32>>(
     polygons: &[Option<FloatPolygon<F>>],
     incremental: bool,
 ) -> (Buffers, Stats) {
-    let mut buffers = Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth);
+    let mut buffers =
+        Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth.clone());
     let stats = buffers
         .with_level_cells(FloatRaster { scene, polygons, incremental })
         .expect("inexact modes run quantized z-buffers");
@@ -394,7 +395,8 @@ fn test_and_store<F: Float + AsPrimitive<u32>, C: FrameCell>(
 
 /// The plain z-buffer with `f32-edge`.
 fn raster_edges(scene: &Scene, shapes: &[Option<EdgeShape>]) -> (Buffers, Stats) {
-    let mut buffers = Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth);
+    let mut buffers =
+        Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth.clone());
     let stats = buffers.with_level_cells(EdgeRaster { scene, shapes }).expect("inexact modes run quantized z-buffers");
     (buffers, stats)
 }

@@ -7,18 +7,21 @@
 //! from what stays small when the vertices do not: each edge's line and the
 //! polygon's plane, reduced once when the polygon is read. A polygon cut by
 //! clipping or divided by w has vertices over huge common denominators, but
-//! its edges and plane are those of the polygon it came from. Its crossings
-//! and depths, computed row by row from the lines and stepped pixel by pixel,
-//! are then the 128-bit fractions every tier reports. The tier refuses only a
-//! polygon whose plane, crossings or depths at pixel centres would need more
-//! than 128 bits even reduced (`BigPolygon::new`).
+//! its edges and plane are those of the polygon it came from. When its
+//! crossings and depths at pixel centres fit 128-bit fractions (checked
+//! once, [`BigPolygon::new`]) they are computed row by row from the lines in
+//! `i128` and stepped pixel by pixel; when not (a polygon given with 14 or
+//! more significant digits has a plane beyond 128 bits) they are computed
+//! in big integers and reported as big rationals ([`crate::exact::Exact`]),
+//! by the same formulas, more slowly. Nothing within
+//! [`crate::plane::MAX_SCALED_BITS`] is refused.
 
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{Signed, ToPrimitive, Zero};
 
 use crate::depth::{Depth, DepthStepper};
-use crate::exact::Q;
+use crate::exact::Exact;
 use crate::pipeline::{PixelRect, RasterSink};
 use crate::plane::{GeometryError, OffPlane, PlaneEquation};
 use crate::rules::{RowRule, Rules};
@@ -34,14 +37,21 @@ const DEPTH_NUMERATOR: i128 = 1 << 125;
 const DEPTH_DENOMINATOR: i128 = 1 << 124;
 const CROSSING: i128 = 1 << 120;
 
+/// Rows and cells are clamped to `ROW_LOW ..= ROW_HIGH`, just outside the
+/// range of `u32` every raster lies in: a polygon reaching 2^1000 pixels out
+/// is drawn on the raster as one reaching 2^33 would be.
+const ROW_LOW: i64 = -2;
+const ROW_HIGH: i64 = 1 << 33;
+
 /// An edge that crosses scanlines, as the tier walks it: the rows it
 /// crosses under each [`RowRule`] (first and last, in the order of
-/// [`rule_index`]) and its line `αx + βy + γ = 0` in pixel units, reduced,
+/// [`rule_index`], clamped to `ROW_LOW ..= ROW_HIGH`; an empty range as
+/// `[1, 0]`) and its line `αx + βy + γ = 0` in pixel units, reduced,
 /// `α > 0`.
 #[derive(Debug, Clone, PartialEq, Eq)]
 struct Edge {
     rows: [[i128; 2]; 3],
-    line: [i128; 3],
+    line: [BigInt; 3],
 }
 
 fn rule_index(rule: RowRule) -> usize {
@@ -50,6 +60,14 @@ fn rule_index(rule: RowRule) -> usize {
         RowRule::Closed => 1,
         RowRule::TopLeft => 2,
     }
+}
+
+/// The lines and plane in `i128`, when every crossing and depth the
+/// polygon reports fits 128 bits ([`BigPolygon::new`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+struct Words {
+    lines: Vec<[i128; 3]>,
+    plane: [i128; 4],
 }
 
 /// A polygon of the big-integer tier (see the module documentation).
@@ -62,8 +80,11 @@ pub struct BigPolygon {
     edges: Vec<Edge>,
     /// The plane `Ax + By + Cz + D = 0` in pixel units, reduced, `C ≥ 0`.
     plane: PlaneEquation,
-    /// `(A, B, C)` pointing as Newell's normal does (its sign gives the winding).
+    /// `(A, B, C)` pointing as Newell's normal does (its sign gives the
+    /// winding); when a coefficient does not fit `i128`, the signs alone.
     normal: [i128; 3],
+    /// The lines and plane in 128 bits, when all the polygon reports fits.
+    words: Option<Words>,
 }
 
 /// `Σ aᵢ·bᵢ` exactly: in `i128` while no step overflows, else in big
@@ -79,26 +100,30 @@ fn below(v: Option<i128>, limit: i128) -> bool {
 }
 
 /// The values divided by their greatest common divisor, the last non-zero
-/// of the first `lead` made positive; `None` when one does not fit `i128`.
-fn reduced<const N: usize>(values: [BigInt; N], lead: usize) -> Option<[i128; N]> {
+/// of the first `lead` made positive.
+fn reduced<const N: usize>(values: [BigInt; N], lead: usize) -> [BigInt; N] {
     // Most often the values themselves fit 128 bits: reduced there, faster.
-    let words = values.iter().map(|v| v.to_i128().filter(|w| *w != i128::MIN)).collect::<Option<Vec<i128>>>();
-    if let Some(words) = words {
+    if let Some(words) = words(&values) {
         let divisor = words.iter().fold(0i128, |g, v| g.gcd(v));
         if divisor == 0 {
-            return Some([0; N]);
+            return values;
         }
         let negative = words[..lead].iter().rev().find(|v| **v != 0).is_some_and(|v| *v < 0);
         let divisor = if negative { -divisor } else { divisor };
-        return Some(std::array::from_fn(|i| words[i] / divisor));
+        return words.map(|v| BigInt::from(v / divisor));
     }
     let divisor = values.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
     if divisor.is_zero() {
-        return Some([0; N]);
+        return values;
     }
     let negative = values[..lead].iter().rev().find(|v| !v.is_zero()).is_some_and(Signed::is_negative);
     let divisor = if negative { -divisor } else { divisor };
-    let values = values.map(|v| (v / &divisor).to_i128());
+    values.map(|v| v / &divisor)
+}
+
+/// The values as `i128`, when they all fit.
+fn words<const N: usize>(values: &[BigInt; N]) -> Option<[i128; N]> {
+    let values = values.each_ref().map(|v| v.to_i128().filter(|w| *w != i128::MIN));
     values.iter().all(Option::is_some).then(|| values.map(|v| v.expect("checked")))
 }
 
@@ -116,25 +141,14 @@ fn newell(points: &[[BigInt; 3]]) -> [BigInt; 3] {
 
 /// The plane with `normal` through `point` (both in scaled units, scale
 /// `2D`) in pixel units, reduced and signed as the book prints it (see
-/// [`crate::plane::Geometry::plane`]); `None` when a coefficient does not
-/// fit `i128`. In scaled units the plane is `a·X + b·Y + c·Z + d' = 0`
-/// with `d' = −(a·X₁ + b·Y₁ + c·Z₁)`, and `X = 2D·x`.
-fn plane_through(normal: &[BigInt; 3], point: &[BigInt; 3], scale: &BigInt) -> Option<PlaneEquation> {
+/// [`crate::plane::Geometry::plane`]). In scaled units the plane is
+/// `a·X + b·Y + c·Z + d' = 0` with `d' = −(a·X₁ + b·Y₁ + c·Z₁)`, and
+/// `X = 2D·x`.
+pub(crate) fn plane_through(normal: &[BigInt; 3], point: &[BigInt; 3], scale: &BigInt) -> PlaneEquation {
     let [a, b, c] = normal;
     let d = -(a * &point[0] + b * &point[1] + c * &point[2]);
-    let [a, b, c, d] = reduced([a * scale, b * scale, c * scale, d], 3)?;
-    Some(PlaneEquation { a, b, c, d })
-}
-
-/// [`plane_through`] for word-sized scaled values.
-pub(crate) fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> Option<PlaneEquation> {
-    plane_through(&normal.map(big), &point.map(big), &big(scale))
-}
-
-/// `numerator / denominator` as a reduced [`Q`], when it fits.
-fn fraction(numerator: BigInt, denominator: BigInt) -> Option<Q> {
-    let [n, d] = reduced([numerator, denominator], 2)?;
-    Some(Q::new(n, d))
+    let [a, b, c, d] = reduced([a * scale, b * scale, c * scale, d], 3);
+    PlaneEquation { a, b, c, d }
 }
 
 /// The planarity check: every vertex on the plane through vertex 1 and the
@@ -156,25 +170,19 @@ fn check_planar(points: &[[BigInt; 3]], scale: &BigInt) -> Result<(), GeometryEr
         if residual.is_zero() {
             continue;
         }
-        let through = [1, i + 1, k + 1];
-        // The plane or the distance may not fit the 128-bit numbers a report
-        // prints: then say which vertex is off which plane, and what fits.
-        let beyond =
-            |plane: Option<PlaneEquation>| GeometryError::NotPlanarBeyondRange { vertex: index + 1, through, plane };
-        let plane = plane_through(&normal, p1, scale).ok_or_else(|| beyond(None))?;
+        let plane = plane_through(&normal, p1, scale);
         let (off_by, along_z) = if normal[2].is_zero() {
             // Without a z term, the reduced equation's value at the vertex.
-            let [a, b, c, d] = [plane.a, plane.b, plane.c, plane.d].map(big);
+            let PlaneEquation { a, b, c, d } = &plane;
             let value = a * &point[0] + b * &point[1] + c * &point[2] + d * scale;
-            (fraction(value, scale.clone()), false)
+            (Exact::from_big(value, scale.clone()), false)
         } else {
             // residual = n_z·ΔZ in scaled units, and Δz = ΔZ / 2D.
-            (fraction(residual, &normal[2] * scale), true)
+            (Exact::from_big(residual, &normal[2] * scale), true)
         };
-        let off_by = off_by.ok_or_else(|| beyond(Some(plane)))?;
         return Err(GeometryError::NotPlanar(Box::new(OffPlane {
             vertex: index + 1,
-            through,
+            through: [1, i + 1, k + 1],
             plane,
             off_by,
             along_z,
@@ -184,9 +192,9 @@ fn check_planar(points: &[[BigInt; 3]], scale: &BigInt) -> Result<(), GeometryEr
 }
 
 /// The line through scaled points `p` and `q` (`p_y ≠ q_y`) in pixel units,
-/// reduced, `α > 0`; `None` when it does not fit `i128`. In scaled units it
-/// is `ΔY·X − ΔX·Y + (ΔX·Y₁ − ΔY·X₁) = 0`, and `X = 2D·x`, `Y = 2D·y`.
-fn reduced_line(p: &[BigInt; 3], q: &[BigInt; 3], scale: &BigInt) -> Option<[i128; 3]> {
+/// reduced, `α > 0`. In scaled units it is
+/// `ΔY·X − ΔX·Y + (ΔX·Y₁ − ΔY·X₁) = 0`, and `X = 2D·x`, `Y = 2D·y`.
+fn reduced_line(p: &[BigInt; 3], q: &[BigInt; 3], scale: &BigInt) -> [BigInt; 3] {
     let (dx, dy) = (&q[0] - &p[0], &q[1] - &p[1]);
     let gamma = &dx * &p[1] - &dy * &p[0];
     reduced([&dy * scale, -(&dx * scale), gamma], 1)
@@ -197,34 +205,35 @@ fn odd(n: i128) -> Option<i128> {
     n.checked_mul(2)?.checked_add(1)
 }
 
-/// `⌊n / d⌋` and `⌈n / d⌉` as `i128` (`d > 0`), when they fit.
-fn floor_i128(n: BigInt, d: &BigInt) -> Option<i128> {
-    n.div_floor(d).to_i128()
+/// A row or cell index clamped to `ROW_LOW ..= ROW_HIGH`.
+fn clamped(n: BigInt) -> i128 {
+    n.clamp(BigInt::from(ROW_LOW), BigInt::from(ROW_HIGH)).to_i128().expect("clamped")
 }
 
-fn ceil_i128(n: BigInt, d: &BigInt) -> Option<i128> {
-    n.div_ceil(d).to_i128()
+/// The rows `first ..= last`, clamped, or `[1, 0]` when empty.
+fn row_range(first: BigInt, last: BigInt) -> [i128; 2] {
+    if first > last { [1, 0] } else { [clamped(first), clamped(last)] }
 }
 
 impl BigPolygon {
     /// The polygon with scaled vertices `points` (over common denominator
     /// `denominator`): its normal and planarity checked, its edges' lines and
-    /// plane reduced. `Ok(None)` when its plane, a crossing or a depth at a
-    /// centre within a pixel of it would need more than 128 bits: a crossing
+    /// plane reduced, and whether what it reports fits 128 bits: a crossing
     /// `−(β(2r + 1) + 2γ) / 2α` at any row `r` the edge reaches, a depth
     /// `−(A(2x + 1) + B(2y + 1) + 2D) / 2C` at the centre of any pixel
     /// `(x, y)` within one of the polygon's bounding box. Both numerators are
     /// linear, so they are largest at the ends of those ranges, where they
     /// are checked.
-    pub(crate) fn new(points: Vec<[BigInt; 3]>, denominator: BigInt) -> Result<Option<BigPolygon>, GeometryError> {
+    pub(crate) fn new(points: Vec<[BigInt; 3]>, denominator: BigInt) -> Result<BigPolygon, GeometryError> {
         let scale = &denominator * 2;
         check_planar(&points, &scale)?;
         let newell = newell(&points);
-        let Some(plane) = plane_through(&newell, &points[0], &scale) else { return Ok(None) };
+        let plane = plane_through(&newell, &points[0], &scale);
         // (A, B, C) with Newell's orientation: the plane's is the last non-zero made positive.
         let flip = newell.iter().rev().find(|v| !v.is_zero()).is_some_and(Signed::is_negative);
-        let sign = if flip { -1 } else { 1 };
-        let normal = [plane.a * sign, plane.b * sign, plane.c * sign];
+        let oriented = |v: &BigInt| if flip { -v } else { v.clone() };
+        let normal = [oriented(&plane.a), oriented(&plane.b), oriented(&plane.c)];
+        let normal = words(&normal).unwrap_or_else(|| normal.each_ref().map(|v| v.signum().to_i128().expect("a sign")));
         let d = &denominator;
         let mut edges = Vec::with_capacity(points.len());
         for (i, p) in points.iter().enumerate() {
@@ -232,42 +241,60 @@ impl BigPolygon {
             if p[1] == q[1] {
                 continue;
             }
-            let Some([alpha, beta, gamma]) = reduced_line(p, q, &scale) else { return Ok(None) };
+            let line = reduced_line(p, q, &scale);
             let (low, high) = if p[1] < q[1] { (&p[1], &q[1]) } else { (&q[1], &p[1]) };
             // Rows whose scanlines (2r + 1)·D lie in [low, high), [low, high], (low, high].
-            let rows = (|| {
-                let (from, to) = (low - d, high - d);
-                let first = ceil_i128(from.clone(), &scale)?;
-                let after = floor_i128(from, &scale)?.checked_add(1)?;
-                let (last_open, last) = (ceil_i128(to.clone(), &scale)?.checked_sub(1)?, floor_i128(to, &scale)?);
-                Some([[first, last_open], [first, last], [after, last]])
-            })();
-            let Some(rows) = rows else { return Ok(None) };
+            let (from, to) = (low - d, high - d);
+            let (first, after) = (from.div_ceil(&scale), from.div_floor(&scale) + 1);
+            let (last_open, last) = (to.div_ceil(&scale) - 1, to.div_floor(&scale));
+            let rows = [row_range(first.clone(), last_open), row_range(first, last.clone()), row_range(after, last)];
+            edges.push(Edge { rows, line });
+        }
+        let mut polygon = BigPolygon { denominator, points, edges, plane, normal, words: None };
+        polygon.words = polygon.words();
+        Ok(polygon)
+    }
+
+    /// The lines and plane in `i128`, when every crossing and depth fits
+    /// (see [`BigPolygon::new`]).
+    fn words(&self) -> Option<Words> {
+        let mut lines = Vec::with_capacity(self.edges.len());
+        for edge in &self.edges {
+            let [alpha, beta, gamma] = words(&edge.line)?;
             // The widest range is the closed one; it may be empty.
-            let [first, last] = rows[1];
+            let [first, last] = edge.rows[1];
             let numerator = |r: i128| sum_of_products(&[(beta, odd(r)?), (gamma, 2)]);
             let fits = first > last || (below(numerator(first), CROSSING) && below(numerator(last), CROSSING));
             if !fits || !below(alpha.checked_mul(2), CROSSING) {
-                return Ok(None);
+                return None;
             }
-            edges.push(Edge { rows, line: [alpha, beta, gamma] });
+            lines.push([alpha, beta, gamma]);
         }
-        let polygon = BigPolygon { denominator, points, edges, plane, normal };
-        let Some([x0, x1, y0, y1]) = polygon.cells() else { return Ok(None) };
-        let PlaneEquation { a, b, c, d } = plane;
-        // Corners one pixel out (`None` past i128, where nothing would fit anyway).
-        let depth = |x: Option<i128>, y: Option<i128>| sum_of_products(&[(a, odd(x?)?), (b, odd(y?)?), (d, 2)]);
-        let (columns, rows) = ([x0.checked_sub(1), x1.checked_add(1)], [y0.checked_sub(1), y1.checked_add(1)]);
+        let PlaneEquation { a, b, c, d } = &self.plane;
+        let [a, b, c, d] = words(&[a.clone(), b.clone(), c.clone(), d.clone()])?;
+        let [x0, x1, y0, y1] = self.cells();
+        // Corners one pixel out.
+        let depth = |x: i128, y: i128| sum_of_products(&[(a, odd(x)?), (b, odd(y)?), (d, 2)]);
+        let (columns, rows) = ([x0 - 1, x1 + 1], [y0 - 1, y1 + 1]);
         let corners = columns.iter().all(|&x| rows.iter().all(|&y| below(depth(x, y), DEPTH_NUMERATOR)));
-        Ok((corners && below(c.checked_mul(2), DEPTH_DENOMINATOR)).then_some(polygon))
+        (corners && below(c.checked_mul(2), DEPTH_DENOMINATOR)).then_some(Words { lines, plane: [a, b, c, d] })
+    }
+
+    /// The same polygon with its crossings and depths in big integers
+    /// whatever their size (for the tests that compare the tiers).
+    #[cfg(test)]
+    pub(crate) fn without_words(mut self) -> BigPolygon {
+        self.words = None;
+        self
     }
 
     /// The plane, reduced (as [`crate::plane::Geometry::plane`]).
-    pub(crate) fn plane(&self) -> PlaneEquation {
-        self.plane
+    pub(crate) fn plane(&self) -> &PlaneEquation {
+        &self.plane
     }
 
-    /// `(A, B, C)` oriented as Newell's normal.
+    /// `(A, B, C)` oriented as Newell's normal (the signs alone when a
+    /// coefficient does not fit `i128`).
     pub(crate) fn normal(&self) -> [i128; 3] {
         self.normal
     }
@@ -278,24 +305,30 @@ impl BigPolygon {
     }
 
     /// The cells `⌊x⌋`, `⌊y⌋` holding the polygon's bounding box: lowest
-    /// and highest column, lowest and highest row (`None` beyond `i128`).
-    pub(crate) fn cells(&self) -> Option<[i128; 4]> {
+    /// and highest column, lowest and highest row, each clamped to
+    /// `ROW_LOW ..= ROW_HIGH`.
+    pub(crate) fn cells(&self) -> [i128; 4] {
         let scale = &self.denominator * 2;
         let cell = |axis: usize, high: bool| {
             let values = self.points.iter().map(|p| &p[axis]);
             let value = if high { values.max() } else { values.min() };
-            floor_i128(value?.clone(), &scale)
+            clamped(value.expect("a polygon has vertices").div_floor(&scale))
         };
-        Some([cell(0, false)?, cell(0, true)?, cell(1, false)?, cell(1, true)?])
+        [cell(0, false), cell(0, true), cell(1, false), cell(1, true)]
     }
 
-    /// The exact depth at the centre of pixel `(column, row)`, within a pixel
-    /// of the polygon: `−(A(2x + 1) + B(2y + 1) + 2D) / 2C`, below 2^125 over
-    /// below 2^124 by [`BigPolygon::new`].
+    /// The exact depth at the centre of pixel `(column, row)`:
+    /// `−(A(2x + 1) + B(2y + 1) + 2D) / 2C`, within 128 bits near the
+    /// polygon when [`BigPolygon::new`] found it so.
     pub(crate) fn depth_at_centre(&self, column: u32, row: u32) -> Depth {
-        let PlaneEquation { a, b, c, d } = self.plane;
-        let terms = [(a, 2 * i128::from(column) + 1), (b, 2 * i128::from(row) + 1), (d, 2)];
-        Depth::from_fraction(-sum_of_products(&terms).expect("checked by BigPolygon::new"), 2 * c)
+        let (x, y) = (2 * i128::from(column) + 1, 2 * i128::from(row) + 1);
+        if let Some(Words { plane: [a, b, c, d], .. }) = self.words
+            && let Some(numerator) = sum_of_products(&[(a, x), (b, y), (d, 2)])
+        {
+            return Depth::from_fraction(-numerator, 2 * c);
+        }
+        let PlaneEquation { a, b, c, d } = &self.plane;
+        Depth::from_big(-(a * big(x) + b * big(y) + d * 2u32), c * 2u32)
     }
 
     /// The rows the polygon's scanlines reach under `rule`, clipped to `limit`.
@@ -311,15 +344,21 @@ impl BigPolygon {
     fn crossings(&self, row: u32, rule: RowRule, out: &mut Vec<Crossing>) {
         out.clear();
         let r = i128::from(row);
-        for edge in &self.edges {
+        for (index, edge) in self.edges.iter().enumerate() {
             let [first, last] = edge.rows[rule_index(rule)];
             if first <= r && r <= last {
-                // αx = −(βy + γ) at y = (2r + 1)/2; below 2^120 by `BigPolygon::new`.
-                let [alpha, beta, gamma] = edge.line;
-                let numerator = sum_of_products(&[(beta, 2 * r + 1), (gamma, 2)]);
-                out.push(Crossing {
-                    numerator: -numerator.expect("checked by BigPolygon::new"),
-                    denominator: 2 * alpha,
+                // αx = −(βy + γ) at y = (2r + 1)/2.
+                out.push(match &self.words {
+                    // Below 2^120 by `BigPolygon::words`.
+                    Some(words) => {
+                        let [alpha, beta, gamma] = words.lines[index];
+                        let numerator = sum_of_products(&[(beta, 2 * r + 1), (gamma, 2)]);
+                        Crossing::new(-numerator.expect("checked by BigPolygon::words"), 2 * alpha)
+                    }
+                    None => {
+                        let [alpha, beta, gamma] = &edge.line;
+                        Crossing::from_big(-(beta * big(2 * r + 1) + gamma * 2u32), alpha * 2u32)
+                    }
                 });
             }
         }
@@ -336,31 +375,44 @@ impl BigPolygon {
         sink: &mut S,
     ) {
         let Some(rows) = self.rows(rules.rows, rect.rows) else { return };
-        // z₁ = z − A/C per column: the numerator over |2C| falls by 2A·sign(C),
-        // below 2^125 as the depths at two columns of `BigPolygon::new`'s range are.
-        let step = 2 * self.plane.a * self.plane.c.signum();
         for row in rows {
             self.crossings(row, rules.rows, found);
             spans.clear();
             spans.extend(scan::pairs(found.len(), rules.rows).map(|(i, j)| Span {
-                left: found[i],
-                right: found[j],
-                columns: scan::columns(found[i], found[j], rect.columns, rules.columns),
+                left: found[i].clone(),
+                right: found[j].clone(),
+                columns: scan::columns(&found[i], &found[j], rect.columns, rules.columns),
             }));
             if S::OBSERVES_SCANLINES {
                 sink.scanline(row, found, spans);
             }
             for span in spans.iter() {
                 if let Some((first, last)) = span.columns {
-                    // The first centre's depth, then one step per column (every
-                    // numerator below 2^125 by `BigPolygon::new`).
-                    let mut depth = DepthStepper::from_depth(self.depth_at_centre(first, row), -step);
-                    for x in first..=last {
-                        sink.pixel(x, row, depth.current());
-                        depth.advance();
-                    }
+                    self.span(row, first, last, sink);
                 }
             }
+        }
+    }
+
+    /// The pixels `first ..= last` of `row`, the depth stepped by the seed's
+    /// `z₁ = z − A/C` per column.
+    fn span<S: RasterSink>(&self, row: u32, first: u32, last: u32, sink: &mut S) {
+        if let Some(Words { plane: [a, _, c, _], .. }) = self.words {
+            // The numerator over |2C| falls by 2A·sign(C) per column, below 2^125 as
+            // the depths at two columns of `BigPolygon::words`' range are.
+            let mut depth = DepthStepper::from_depth(&self.depth_at_centre(first, row), -2 * a * c.signum());
+            for x in first..=last {
+                sink.pixel(x, row, depth.current());
+                depth.advance();
+            }
+            return;
+        }
+        let PlaneEquation { a, b, c, d } = &self.plane;
+        let (two_a, denominator) = (a * 2u32, c * 2u32);
+        let mut numerator = -(a * big(2 * i128::from(first) + 1) + b * big(2 * i128::from(row) + 1) + d * 2u32);
+        for x in first..=last {
+            sink.pixel(x, row, Depth::from_big(numerator.clone(), denominator.clone()));
+            numerator -= &two_a;
         }
     }
 }
@@ -378,13 +430,13 @@ mod tests {
 
     impl RasterSink for Values {
         fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
-            let xs: Vec<Q> = crossings.iter().map(|c| c.x()).collect();
+            let xs: Vec<Exact> = crossings.iter().map(|c| c.x()).collect();
             let columns: Vec<_> = spans.iter().map(|s| s.columns).collect();
             self.0.push(format!("row {row}: {xs:?} {columns:?}"));
         }
 
         fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
-            self.0.push(format!("({x}, {y}) {:?}", depth.value()));
+            self.0.push(format!("({x}, {y}) {}", depth.value()));
         }
     }
 
@@ -445,8 +497,8 @@ mod tests {
             let w1 = ((&cx - &v[0][0]) * (&v[2][1] - &v[0][1]) - (&v[2][0] - &v[0][0]) * (&cy - &v[0][1])) / &det;
             let w2 = ((&v[1][0] - &v[0][0]) * (&cy - &v[0][1]) - (&cx - &v[0][0]) * (&v[1][1] - &v[0][1])) / &det;
             let z = &v[0][2] + w1 * (&v[1][2] - &v[0][2]) + w2 * (&v[2][2] - &v[0][2]);
-            let expected = Q::new(z.numer().to_i128().unwrap(), z.denom().to_i128().unwrap());
-            assert!(event.ends_with(&format!("{expected:?}")), "{event}: expected {expected:?}");
+            let expected = Exact::from(z);
+            assert!(event.ends_with(&format!(" {expected}")), "{event}: expected {expected}");
         }
     }
 }

@@ -14,7 +14,7 @@ use std::path::Path;
 use crate::buffer::Buffers;
 use crate::depth::Stored;
 use crate::error::Error;
-use crate::exact::{Q, parse_number, to_f64};
+use crate::exact::{Exact, Q, parse_number, to_f64};
 
 /// A problem in a case file, with the line it is on (1-based).
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -511,7 +511,7 @@ pub fn z_buffer_text(buffers: &Buffers, z_max: Q) -> String {
     for row in buffers.depth_rows() {
         for cell in row {
             let value = cell.value();
-            if value < z_max {
+            if value < Exact::Word(z_max) {
                 let _ = write!(out, "{:.6}\t", to_f64(value));
             }
         }
@@ -529,7 +529,7 @@ pub fn z_buffer_cells(buffers: &Buffers, z_max: Q) -> Vec<Vec<(u32, String)>> {
         .map(|row| {
             row.into_iter()
                 .enumerate()
-                .filter(|(_, cell)| cell.value() < z_max)
+                .filter(|(_, cell)| cell.value() < Exact::Word(z_max))
                 .map(|(x, cell): (usize, Stored)| (x as u32, format!("{:.6}", to_f64(cell.value()))))
                 .collect()
         })

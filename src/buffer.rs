@@ -5,7 +5,7 @@
 //! give them top row first, as the book prints them.
 
 use crate::depth::Stored;
-use crate::exact::Q;
+use crate::exact::Exact;
 
 /// A framebuffer and a z-buffer of the same size.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -68,7 +68,7 @@ pub trait LevelCells {
 #[derive(Debug, Clone, PartialEq, Eq)]
 enum DepthCells {
     Levels(Vec<u32>),
-    Exact(Vec<Q>),
+    Exact(Vec<Exact>),
 }
 
 impl Buffers {
@@ -80,7 +80,7 @@ impl Buffers {
         let cells = width as usize * height as usize;
         let depth = match clear_depth {
             Stored::Level(level) => DepthCells::Levels(filled(cells, level)),
-            Stored::Exact(q) => DepthCells::Exact(filled(cells, q)),
+            Stored::Exact(value) => DepthCells::Exact(filled(cells, value)),
         };
         let frame = match frame_bits {
             0..=8 => FrameCells::Bytes(filled(cells, u8::from_value(background))),
@@ -147,7 +147,7 @@ impl Buffers {
         let index = self.index(x, y);
         match &self.depth {
             DepthCells::Levels(cells) => Stored::Level(cells[index]),
-            DepthCells::Exact(cells) => Stored::Exact(cells[index]),
+            DepthCells::Exact(cells) => Stored::Exact(cells[index].clone()),
         }
     }
 
@@ -157,7 +157,7 @@ impl Buffers {
         self.frame.set(index, frame);
         match (&mut self.depth, depth) {
             (DepthCells::Levels(cells), Stored::Level(level)) => cells[index] = level,
-            (DepthCells::Exact(cells), Stored::Exact(q)) => cells[index] = q,
+            (DepthCells::Exact(cells), Stored::Exact(value)) => cells[index] = value,
             _ => debug_assert!(false, "depth of the wrong kind stored: please report this bug"),
         }
     }

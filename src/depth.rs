@@ -5,32 +5,37 @@ use std::cmp::Ordering;
 
 use serde::{Deserialize, Serialize};
 
-use crate::exact::{Q, Word, cmp_fractions, exact_and_places, floor_div};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{Signed, ToPrimitive, Zero};
+
+use crate::exact::{Exact, Q, Word, cmp_fractions, exact_and_places, floor_div};
 use crate::plane::{Geometry, PlaneEquation};
 use crate::rules::DepthStore;
 
 /// A value held by one z-buffer cell.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Stored {
     /// An integer level `0 … 2^depth_bits − 1` ([`DepthStore::Quantized`]).
     Level(u32),
     /// An exact depth ([`DepthStore::Exact`]).
-    Exact(Q),
+    Exact(Exact),
 }
 
 impl Stored {
-    /// The value as a rational.
-    pub fn value(self) -> Q {
+    /// The value as an exact number.
+    pub fn value(&self) -> Exact {
         match self {
-            Stored::Level(level) => Q::from_integer(i128::from(level)),
-            Stored::Exact(q) => q,
+            Stored::Level(level) => Exact::Word(Q::from_integer(i128::from(*level))),
+            Stored::Exact(value) => value.clone(),
         }
     }
 
     /// The integer level, when the z-buffer is quantized.
-    pub fn level(self) -> Option<u32> {
+    pub fn level(&self) -> Option<u32> {
         match self {
-            Stored::Level(level) => Some(level),
+            Stored::Level(level) => Some(*level),
             Stored::Exact(_) => None,
         }
     }
@@ -43,7 +48,7 @@ impl std::fmt::Display for Stored {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Stored::Level(level) => write!(f, "{level}"),
-            Stored::Exact(q) => f.write_str(&exact_and_places(*q, 6)),
+            Stored::Exact(value) => f.write_str(&exact_and_places(value, 6)),
         }
     }
 }
@@ -100,10 +105,10 @@ impl DepthTest {
     /// Whether an incoming exact depth replaces the stored value. Equal
     /// depths never overwrite: the first polygon drawn keeps the pixel.
     #[inline]
-    pub fn passes(self, incoming: Depth, stored: Stored) -> bool {
+    pub fn passes(self, incoming: &Depth, stored: &Stored) -> bool {
         let ord = match stored {
-            Stored::Level(level) => incoming.cmp_integer(i128::from(level)),
-            Stored::Exact(q) => incoming.cmp_q(q),
+            Stored::Level(level) => incoming.cmp_integer(i128::from(*level)),
+            Stored::Exact(value) => incoming.cmp_exact(value),
         };
         match self {
             DepthTest::Greater => ord == Ordering::Greater,
@@ -166,8 +171,8 @@ impl DepthTest {
 
     /// Whether a depth lies on the kept side of a cross-section at `section`
     /// (seed 002: `z ≤ Zsection` when larger z is nearer; mirrored for `Less`).
-    pub fn keeps_section(self, incoming: Depth, section: Q) -> bool {
-        let ord = incoming.cmp_q(section);
+    pub fn keeps_section(self, incoming: &Depth, section: Q) -> bool {
+        let ord = incoming.cmp_exact(&Exact::Word(section));
         if self.larger_is_nearer() { ord != Ordering::Greater } else { ord != Ordering::Less }
     }
 
@@ -177,13 +182,18 @@ impl DepthTest {
     }
 }
 
-/// An exact depth `whole + remainder/denominator` with
-/// `0 ≤ remainder < denominator`: the floor and the fractional part of z.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Depth {
-    whole: i128,
-    remainder: i128,
-    denominator: i128,
+/// An exact depth: `whole + remainder/denominator` with `0 ≤ remainder <
+/// denominator` (the floor and the fractional part of z) in 128 bits, as
+/// every pixel of almost every polygon has it, or a big rational (not
+/// reduced: reducing every pixel's depth would cost a gcd each) for a
+/// polygon whose plane outgrows 128 bits (`crate::big`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Depth(DepthValue);
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum DepthValue {
+    Word { whole: i128, remainder: i128, denominator: i128 },
+    Big(Box<BigRational>),
 }
 
 impl Depth {
@@ -193,59 +203,136 @@ impl Depth {
         let (numerator, denominator) =
             if denominator < 0 { (-numerator, -denominator) } else { (numerator, denominator) };
         let (whole, remainder) = floor_div(numerator, denominator);
-        Depth { whole, remainder, denominator }
+        Depth(DepthValue::Word { whole, remainder, denominator })
     }
 
-    /// The value as `(numerator, denominator)`, denominator positive, not reduced.
-    pub fn fraction(self) -> (i128, i128) {
-        (self.whole * self.denominator + self.remainder, self.denominator)
+    /// The depth `numerator / denominator` in big integers (denominator
+    /// non-zero), held in 128 bits when both fit them.
+    pub fn from_big(numerator: BigInt, denominator: BigInt) -> Depth {
+        let (numerator, denominator) =
+            if denominator.is_negative() { (-numerator, -denominator) } else { (numerator, denominator) };
+        // Within the bounds every 128-bit depth keeps (see `rounded_word`).
+        let words = numerator.to_i128().filter(|n| n.unsigned_abs() < 1 << 125);
+        match (words, denominator.to_i128().filter(|d| *d < 1 << 124)) {
+            (Some(n), Some(d)) => Depth::from_fraction(n, d),
+            _ => Depth(DepthValue::Big(Box::new(BigRational::new_raw(numerator, denominator)))),
+        }
+    }
+
+    /// The depth with an exact value.
+    pub fn from_exact(value: Exact) -> Depth {
+        match value {
+            Exact::Word(q) => Depth::from_fraction(*q.numer(), *q.denom()),
+            Exact::Big(big) => Depth(DepthValue::Big(big)),
+        }
+    }
+
+    /// The value as `(numerator, denominator)`, denominator positive, not
+    /// reduced, when it is held in 128 bits.
+    pub fn fraction(&self) -> Option<(i128, i128)> {
+        match self.0 {
+            DepthValue::Word { whole, remainder, denominator } => Some((whole * denominator + remainder, denominator)),
+            DepthValue::Big(_) => None,
+        }
     }
 
     /// The exact value, reduced.
-    pub fn value(self) -> Q {
-        Q::new(self.whole * self.denominator + self.remainder, self.denominator)
+    pub fn value(&self) -> Exact {
+        match &self.0 {
+            DepthValue::Word { whole, remainder, denominator } => {
+                Exact::Word(Q::new(whole * denominator + remainder, *denominator))
+            }
+            DepthValue::Big(big) => Exact::from(big.reduced()),
+        }
     }
 
     /// Compares with an integer stored value.
     #[inline]
-    pub fn cmp_integer(self, stored: i128) -> Ordering {
-        self.whole.cmp(&stored).then(if self.remainder > 0 { Ordering::Greater } else { Ordering::Equal })
+    pub fn cmp_integer(&self, stored: i128) -> Ordering {
+        match &self.0 {
+            DepthValue::Word { whole, remainder, .. } => {
+                whole.cmp(&stored).then(if *remainder > 0 { Ordering::Greater } else { Ordering::Equal })
+            }
+            DepthValue::Big(big) => big.numer().cmp(&(big.denom() * stored)),
+        }
     }
 
     /// Compares two exact depths without overflow.
-    pub fn cmp_depth(self, other: Depth) -> Ordering {
-        self.whole
-            .cmp(&other.whole)
-            .then_with(|| cmp_fractions(self.remainder, self.denominator, other.remainder, other.denominator))
+    pub fn cmp_depth(&self, other: &Depth) -> Ordering {
+        match (&self.0, &other.0) {
+            (
+                DepthValue::Word { whole, remainder, denominator },
+                DepthValue::Word { whole: other_whole, remainder: other_remainder, denominator: other_denominator },
+            ) => whole
+                .cmp(other_whole)
+                .then_with(|| cmp_fractions(*remainder, *denominator, *other_remainder, *other_denominator)),
+            _ => self.to_big().cmp(&other.to_big()),
+        }
     }
 
-    /// Compares with an exact rational without overflow.
-    pub fn cmp_q(self, other: Q) -> Ordering {
-        match self.whole.cmp(&other.floor().to_integer()) {
-            Ordering::Equal => {
-                let other_rem = (other - other.floor()).numer().to_owned();
-                cmp_fractions(self.remainder, self.denominator, other_rem, *other.denom())
-            }
-            ord => ord,
+    /// The value as a big rational, not reduced.
+    fn to_big(&self) -> BigRational {
+        match &self.0 {
+            DepthValue::Word { .. } => self.value().to_big(),
+            DepthValue::Big(big) => (**big).clone(),
         }
+    }
+
+    /// Compares with an exact value without overflow.
+    pub fn cmp_exact(&self, other: &Exact) -> Ordering {
+        match (&self.0, other) {
+            (DepthValue::Word { whole, remainder, denominator }, Exact::Word(other)) => {
+                match whole.cmp(&other.floor().to_integer()) {
+                    Ordering::Equal => {
+                        let other_rem = (other - other.floor()).numer().to_owned();
+                        cmp_fractions(*remainder, *denominator, other_rem, *other.denom())
+                    }
+                    ord => ord,
+                }
+            }
+            _ => self.to_big().cmp(&other.to_big()),
+        }
+    }
+
+    /// Whether the depth lies in `front ..= rear` (a scene's depth range).
+    pub fn within(&self, (front, rear): (Q, Q)) -> bool {
+        !(self.cmp_exact(&Exact::Word(front)).is_lt() || self.cmp_exact(&Exact::Word(rear)).is_gt())
     }
 
     /// Rounded to the nearest integer, halves up (the book: "z is rounded to
     /// the nearest integer"; 10.5 becomes 11, −0.5 becomes 0).
-    pub fn rounded(self) -> i128 {
-        // remainder < denominator < 2^124 (plane::MAX_SCALED; BigPolygon::new on the big tier), so 2·remainder fits.
-        self.whole + i128::from(2 * self.remainder >= self.denominator)
+    pub fn rounded(&self) -> BigInt {
+        match &self.0 {
+            DepthValue::Word { .. } => BigInt::from(self.rounded_word().expect("held in 128 bits")),
+            // ⌊z + 1/2⌋ = ⌊(2n + d) / 2d⌋.
+            DepthValue::Big(big) => (big.numer() * 2u32 + big.denom()).div_floor(&(big.denom() * 2u32)),
+        }
+    }
+
+    /// [`Depth::rounded`] for a depth held in 128 bits.
+    #[inline]
+    fn rounded_word(&self) -> Option<i128> {
+        match self.0 {
+            // remainder < denominator < 2^126 (plane::MAX_SCALED; BigPolygon::new on the big tier), so 2·remainder fits.
+            DepthValue::Word { whole, remainder, denominator } => {
+                Some(whole + i128::from(2 * remainder >= denominator))
+            }
+            DepthValue::Big(_) => None,
+        }
     }
 
     /// What a quantized z-buffer stores: rounded half up, then saturated to
     /// `0 ..= depth_max`.
     #[inline]
-    pub fn quantized(self, depth_max: u32) -> u32 {
-        self.rounded().clamp(0, i128::from(depth_max)) as u32
+    pub fn quantized(&self, depth_max: u32) -> u32 {
+        match self.rounded_word() {
+            Some(rounded) => rounded.clamp(0, i128::from(depth_max)) as u32,
+            None => self.rounded().clamp(BigInt::zero(), BigInt::from(depth_max)).to_u32().expect("clamped"),
+        }
     }
 
     /// What the z-buffer stores under `store`.
-    pub fn stored(self, store: DepthStore, depth_max: u32) -> Stored {
+    pub fn stored(&self, store: DepthStore, depth_max: u32) -> Stored {
         match store {
             DepthStore::Quantized => Stored::Level(self.quantized(depth_max)),
             DepthStore::Exact => Stored::Exact(self.value()),
@@ -349,15 +436,12 @@ impl DepthStepper {
     /// Starts at `depth`, stepping by `step / denominator` per pixel (the
     /// depth's own positive denominator, [`Depth::fraction`]); every value
     /// reached must fit as the depth does.
-    pub fn from_depth(depth: Depth, step: i128) -> DepthStepper {
-        let (step_whole, step_remainder) = floor_div(step, depth.denominator);
-        DepthStepper {
-            whole: depth.whole,
-            remainder: depth.remainder,
-            denominator: depth.denominator,
-            step_whole,
-            step_remainder,
-        }
+    pub fn from_depth(depth: &Depth, step: i128) -> DepthStepper {
+        let DepthValue::Word { whole, remainder, denominator } = depth.0 else {
+            unreachable!("a depth stepped in 128 bits is held in 128 bits: please report this bug")
+        };
+        let (step_whole, step_remainder) = floor_div(step, denominator);
+        DepthStepper { whole, remainder, denominator, step_whole, step_remainder }
     }
 
     /// Starts at the centre of pixel `column` on the scanline at scaled height
@@ -376,7 +460,7 @@ impl DepthStepper {
         let depth = Depth::from_fraction(numerator, denominator);
         // One column is 2D scaled units: ΔZ = −a·2D/c, Δz = −a·2D/(c·2D).
         let step = -a * 2 * geometry.denominator;
-        DepthStepper::from_depth(depth, if denominator < 0 { -step } else { step })
+        DepthStepper::from_depth(&depth, if denominator < 0 { -step } else { step })
     }
 }
 
@@ -389,7 +473,11 @@ impl<W: Word> DepthStepper<W> {
     /// The depth at the current pixel centre.
     #[inline]
     pub fn current(&self) -> Depth {
-        Depth { whole: self.whole.wide(), remainder: self.remainder.wide(), denominator: self.denominator.wide() }
+        Depth(DepthValue::Word {
+            whole: self.whole.wide(),
+            remainder: self.remainder.wide(),
+            denominator: self.denominator.wide(),
+        })
     }
 
     /// Moves one pixel to the right.
@@ -407,8 +495,8 @@ impl<W: Word> DepthStepper<W> {
 /// The exact depth at the centre of pixel `(column, row)` of a polygon whose
 /// Newell `c` is non-zero, on any tier: as [`DepthStepper::start`] starts
 /// there, or on the big-integer tier from the reduced plane,
-/// `z = −(A(2x + 1) + B(2y + 1) + 2D) / 2C` (within 128 bits at every centre
-/// within a pixel of the polygon: checked when the polygon was made).
+/// `z = −(A(2x + 1) + B(2y + 1) + 2D) / 2C`, in big integers when that
+/// outgrows 128 bits.
 pub fn depth_at_centre(geometry: &Geometry, column: u32, row: u32) -> Depth {
     if let Some(polygon) = geometry.big() {
         return polygon.depth_at_centre(column, row);
@@ -418,27 +506,15 @@ pub fn depth_at_centre(geometry: &Geometry, column: u32, row: u32) -> Depth {
 
 /// The exact depth of a polygon's plane at any point given in polygon units
 /// (for reports: span ends, explanations), from the reduced plane
-/// `z = −(Ax + By + D)/C` multiplied out in big integers. `None` when the
-/// plane has no z term, or when the exact value, reduced, does not fit
-/// `i128` (possible for a point that is not a pixel centre, such as an edge
-/// crossing, of a polygon near the exact range's limit: reports then say so
-/// instead of a number).
-pub fn depth_at(geometry: &Geometry, x: Q, y: Q) -> Option<Q> {
-    use num_bigint::BigInt;
-    use num_integer::Integer;
-    use num_traits::ToPrimitive;
+/// `z = −(Ax + By + D)/C` in big rationals. `None` when the plane has no z
+/// term.
+pub fn depth_at(geometry: &Geometry, x: &Exact, y: &Exact) -> Option<Exact> {
     let PlaneEquation { a, b, c, d } = geometry.plane();
-    if c == 0 {
+    if c.is_zero() {
         return None;
     }
-    // −(A·x + B·y + D)/C over the common denominator x_d·y_d, in big integers.
-    let big = |v: &i128| BigInt::from(*v);
-    let (xn, xd, yn, yd) = (big(x.numer()), big(x.denom()), big(y.numer()), big(y.denom()));
-    let numerator = -(big(&a) * &xn * &yd + big(&b) * &yn * &xd + big(&d) * &xd * &yd);
-    let denominator = big(&c) * &xd * &yd;
-    let divisor = numerator.gcd(&denominator);
-    let (numerator, denominator) = ((numerator / &divisor).to_i128()?, (denominator / &divisor).to_i128()?);
-    Some(Q::new(numerator, denominator))
+    let value = -(x.to_big() * a + y.to_big() * b + BigRational::from_integer(d)) / BigRational::from_integer(c);
+    Some(Exact::from(value))
 }
 
 #[cfg(test)]
@@ -447,11 +523,11 @@ mod tests {
 
     #[test]
     fn depth_half_rounds_up() {
-        assert_eq!(Depth::from_fraction(21, 2).rounded(), 11);
-        assert_eq!(Depth::from_fraction(-1, 2).rounded(), 0);
-        assert_eq!(Depth::from_fraction(-3, 2).rounded(), -1);
-        assert_eq!(Depth::from_fraction(41, 4).rounded(), 10);
-        assert_eq!(Depth::from_fraction(43, 4).rounded(), 11);
+        assert_eq!(Depth::from_fraction(21, 2).rounded(), BigInt::from(11));
+        assert_eq!(Depth::from_fraction(-1, 2).rounded(), BigInt::from(0));
+        assert_eq!(Depth::from_fraction(-3, 2).rounded(), BigInt::from(-1));
+        assert_eq!(Depth::from_fraction(41, 4).rounded(), BigInt::from(10));
+        assert_eq!(Depth::from_fraction(43, 4).rounded(), BigInt::from(11));
     }
 
     #[test]
@@ -465,15 +541,15 @@ mod tests {
     fn equal_depth_does_not_overwrite() {
         let ten = Depth::from_fraction(10, 1);
         let stored = Stored::Level(10);
-        assert!(!DepthTest::Greater.passes(ten, stored));
-        assert!(!DepthTest::Less.passes(ten, stored));
-        assert!(DepthTest::Greater.passes(Depth::from_fraction(41, 4), stored));
-        assert!(!DepthTest::Less.passes(Depth::from_fraction(41, 4), stored));
-        assert!(DepthTest::Less.passes(Depth::from_fraction(39, 4), stored));
+        assert!(!DepthTest::Greater.passes(&ten, &stored));
+        assert!(!DepthTest::Less.passes(&ten, &stored));
+        assert!(DepthTest::Greater.passes(&Depth::from_fraction(41, 4), &stored));
+        assert!(!DepthTest::Less.passes(&Depth::from_fraction(41, 4), &stored));
+        assert!(DepthTest::Less.passes(&Depth::from_fraction(39, 4), &stored));
         // Exact stored values compare exactly too.
-        let exact = Stored::Exact(Q::new(41, 4));
-        assert!(!DepthTest::Less.passes(Depth::from_fraction(82, 8), exact));
-        assert!(DepthTest::Less.passes(Depth::from_fraction(81, 8), exact));
+        let exact = Stored::Exact(Exact::Word(Q::new(41, 4)));
+        assert!(!DepthTest::Less.passes(&Depth::from_fraction(82, 8), &exact));
+        assert!(DepthTest::Less.passes(&Depth::from_fraction(81, 8), &exact));
     }
 
     #[test]
@@ -481,8 +557,8 @@ mod tests {
         let stored = Stored::Level(10);
         for (z, greater_equal, less_equal) in [((10, 1), true, true), ((41, 4), true, false), ((39, 4), false, true)] {
             let z = Depth::from_fraction(z.0, z.1);
-            assert_eq!(DepthTest::GreaterEqual.passes(z, stored), greater_equal, "{z:?} ≥ 10");
-            assert_eq!(DepthTest::LessEqual.passes(z, stored), less_equal, "{z:?} ≤ 10");
+            assert_eq!(DepthTest::GreaterEqual.passes(&z, &stored), greater_equal, "{z:?} ≥ 10");
+            assert_eq!(DepthTest::LessEqual.passes(&z, &stored), less_equal, "{z:?} ≤ 10");
         }
         // They clear and cut sections as their strict partners do.
         assert_eq!((DepthTest::GreaterEqual.clear_value(15), DepthTest::LessEqual.clear_value(15)), (0, 15));
@@ -494,17 +570,17 @@ mod tests {
     fn exact_depth_beats_rounded_depth() {
         // The book's pixel (20, 17): z = 41/4 rounds to 10 but is still nearer than 10.
         let z = Depth::from_fraction(41, 4);
-        assert!(DepthTest::Greater.passes(z, Stored::Level(10)));
+        assert!(DepthTest::Greater.passes(&z, &Stored::Level(10)));
         assert_eq!(z.quantized(15), 10);
     }
 
     #[test]
     fn section_keeps_the_far_side_including_the_plane() {
         let section = Q::from_integer(12);
-        assert!(DepthTest::Greater.keeps_section(Depth::from_fraction(12, 1), section));
-        assert!(!DepthTest::Greater.keeps_section(Depth::from_fraction(49, 4), section));
-        assert!(DepthTest::Less.keeps_section(Depth::from_fraction(49, 4), section));
-        assert!(!DepthTest::Less.keeps_section(Depth::from_fraction(47, 4), section));
+        assert!(DepthTest::Greater.keeps_section(&Depth::from_fraction(12, 1), section));
+        assert!(!DepthTest::Greater.keeps_section(&Depth::from_fraction(49, 4), section));
+        assert!(DepthTest::Less.keeps_section(&Depth::from_fraction(49, 4), section));
+        assert!(!DepthTest::Less.keeps_section(&Depth::from_fraction(47, 4), section));
     }
 
     #[test]
@@ -528,7 +604,8 @@ mod tests {
                     fresh.advance();
                     depth
                 });
-                let expected = depth_at(&geometry, Q::new(2 * column + 1, 2), Q::new(2 * row + 1, 2)).unwrap();
+                let centre = |v: i128| Exact::Word(Q::new(2 * v + 1, 2));
+                let expected = depth_at(&geometry, &centre(column), &centre(row)).unwrap();
                 assert_eq!(stepper.current().value(), expected, "depth at (x={column}, y={row})");
                 stepper.advance();
             }
@@ -540,8 +617,8 @@ mod tests {
         for (z, stored) in
             [(Depth::from_fraction(41, 4), Stored::Level(10)), (Depth::from_fraction(1, 1), Stored::Level(15))]
         {
-            assert!(DepthTest::Always.passes(z, stored));
-            assert!(!DepthTest::Never.passes(z, stored));
+            assert!(DepthTest::Always.passes(&z, &stored));
+            assert!(!DepthTest::Never.passes(&z, &stored));
         }
         assert_eq!(DepthTest::Always.outcome_text("43/4", "10", true), "43/4 (always passes; 10 stored)");
         assert_eq!(DepthTest::Greater.outcome_text("43/4", "11", false), "43/4 is not > 11 stored");

@@ -1,17 +1,150 @@
-//! Exact numbers: the rational type `Q`, reading numbers from scene files, and
-//! overflow-free comparison and rounding helpers on `i128` fractions.
+//! Exact numbers: the rational type `Q`, the reported number [`Exact`] (a
+//! `Q` where it fits, a big rational where not), reading numbers from scene
+//! files, and overflow-free comparison and rounding helpers on `i128`
+//! fractions.
 //!
 //! The rasterizer itself works on integer numerators over a known per-polygon
-//! denominator (see [`crate::plane`]); `Q` is what it reports to people.
+//! denominator (see [`crate::plane`]); `Q` and `Exact` are what it reports to
+//! people.
 
 use std::cmp::Ordering;
 use std::fmt;
 
+use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{CheckedSub, Signed, ToPrimitive, Zero};
 
 /// An exact rational number over `i128`, always reduced with a positive
 /// denominator (`num_rational::Ratio` keeps that invariant).
 pub type Q = num_rational::Ratio<i128>;
+
+/// An exact number as zsim reports it (a depth, a crossing, a stored
+/// value): a [`Q`] whenever the reduced fraction fits 128 bits, which is
+/// almost always, else a big rational (polygons given with 14 or more
+/// significant digits, `crate::big`). The form is canonical: `Big` only
+/// holds values that do not fit `Q`, so equal values are equal as data.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub enum Exact {
+    /// A value that fits 128 bits.
+    Word(Q),
+    /// A value beyond 128 bits, reduced, denominator positive.
+    Big(Box<BigRational>),
+}
+
+impl Exact {
+    /// The value `numerator / denominator` (denominator non-zero), reduced,
+    /// in the smallest form that holds it.
+    pub fn from_big(numerator: BigInt, denominator: BigInt) -> Exact {
+        Exact::from(BigRational::new(numerator, denominator))
+    }
+
+    /// The value as a [`Q`], when it fits.
+    pub fn word(&self) -> Option<Q> {
+        match self {
+            Exact::Word(q) => Some(*q),
+            Exact::Big(_) => None,
+        }
+    }
+
+    /// The value as a big rational.
+    pub fn to_big(&self) -> BigRational {
+        match self {
+            Exact::Word(q) => BigRational::new_raw(BigInt::from(*q.numer()), BigInt::from(*q.denom())),
+            Exact::Big(b) => (**b).clone(),
+        }
+    }
+
+    /// An integer, exactly.
+    pub fn integer(value: BigInt) -> Exact {
+        Exact::from(BigRational::from_integer(value))
+    }
+
+    /// Whether the value is a whole number.
+    pub fn is_integer(&self) -> bool {
+        match self {
+            Exact::Word(q) => q.is_integer(),
+            Exact::Big(b) => b.is_integer(),
+        }
+    }
+
+    /// `self + other`, exactly.
+    pub fn plus(&self, other: &Exact) -> Exact {
+        let word = |a: &Q, b: &Q| Some(Exact::Word(num_traits::CheckedAdd::checked_add(a, b)?));
+        match (self, other) {
+            (Exact::Word(a), Exact::Word(b)) => word(a, b),
+            _ => None,
+        }
+        .unwrap_or_else(|| Exact::from(self.to_big() + other.to_big()))
+    }
+
+    /// `self / divisor` (`divisor ≠ 0`), exactly.
+    pub fn divided_by(&self, divisor: i128) -> Exact {
+        let word = |q: &Q| Some(Exact::Word(Q::new(*q.numer(), q.denom().checked_mul(divisor)?)));
+        self.word().as_ref().and_then(word).unwrap_or_else(|| Exact::from(self.to_big() / BigInt::from(divisor)))
+    }
+
+    /// `self − other`, exactly.
+    pub fn minus(&self, other: &Exact) -> Exact {
+        let word = |a: &Q, b: &Q| Some(Exact::Word(a.checked_sub(b)?));
+        match (self, other) {
+            (Exact::Word(a), Exact::Word(b)) => word(a, b),
+            _ => None,
+        }
+        .unwrap_or_else(|| Exact::from(self.to_big() - other.to_big()))
+    }
+}
+
+impl From<Q> for Exact {
+    fn from(value: Q) -> Exact {
+        Exact::Word(value)
+    }
+}
+
+impl From<&Exact> for Exact {
+    fn from(value: &Exact) -> Exact {
+        value.clone()
+    }
+}
+
+impl From<BigRational> for Exact {
+    /// The canonical form of a reduced big rational (as num-rational's
+    /// arithmetic and `BigRational::new` give it): a `Q` when it fits.
+    fn from(value: BigRational) -> Exact {
+        match (value.numer().to_i128(), value.denom().to_i128()) {
+            (Some(n), Some(d)) if n != i128::MIN => Exact::Word(Q::new(n, d)),
+            _ => Exact::Big(Box::new(value)),
+        }
+    }
+}
+
+impl fmt::Display for Exact {
+    /// As [`fraction`] prints it: `43/4`, `10`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&fraction(self))
+    }
+}
+
+impl PartialEq<Q> for Exact {
+    fn eq(&self, other: &Q) -> bool {
+        self.word() == Some(*other)
+    }
+}
+
+impl Ord for Exact {
+    fn cmp(&self, other: &Exact) -> Ordering {
+        match (self, other) {
+            (Exact::Word(a), Exact::Word(b)) => cmp_fractions(*a.numer(), *a.denom(), *b.numer(), *b.denom()),
+            _ => self.to_big().cmp(&other.to_big()),
+        }
+    }
+}
+
+impl PartialOrd for Exact {
+    fn partial_cmp(&self, other: &Exact) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
 
 /// Why a piece of text is not a number zsim accepts.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -295,7 +428,11 @@ impl Word for i128 {
 /// assert_eq!(to_f64(Q::new(1, 10)), 0.1);
 /// assert_eq!(to_f64(Q::new(-979798, 1000000)), -0.979798);
 /// ```
-pub fn to_f64(value: Q) -> f64 {
+pub fn to_f64(value: impl Into<Exact>) -> f64 {
+    let value = match value.into() {
+        Exact::Word(q) => q,
+        Exact::Big(big) => return big_to_f64(&big),
+    };
     let negative = *value.numer() < 0;
     let (numer, denom) = (value.numer().unsigned_abs(), value.denom().unsigned_abs());
     if numer == 0 {
@@ -333,10 +470,49 @@ pub fn to_f64(value: Q) -> f64 {
     if negative { -magnitude } else { magnitude }
 }
 
+/// [`to_f64`] of a value beyond 128 bits: the 55 leading bits of the
+/// quotient by one big division, then a sticky bit, rounded half to even.
+fn big_to_f64(value: &BigRational) -> f64 {
+    let (numer, denom) = (value.numer().magnitude(), value.denom().magnitude());
+    if numer.is_zero() {
+        return 0.0;
+    }
+    // value ≈ 2^(n − d); shift so that the quotient has 55 or 56 bits.
+    let exponent = numer.bits() as i64 - denom.bits() as i64 - 56;
+    let (scaled_numer, scaled_denom) = if exponent >= 0 {
+        (numer.clone(), denom << exponent as u64)
+    } else {
+        (numer << (-exponent) as u64, denom.clone())
+    };
+    let (quotient, remainder) = scaled_numer.div_rem(&scaled_denom);
+    let mut mantissa = quotient.to_u64().expect("at most 57 bits");
+    let mut exponent = exponent;
+    let mut sticky = !remainder.is_zero();
+    while mantissa >= 1 << 55 {
+        sticky |= mantissa & 1 == 1;
+        mantissa >>= 1;
+        exponent += 1;
+    }
+    let kept = mantissa >> 2;
+    let guard = (mantissa >> 1) & 1 == 1;
+    let round_or_sticky = mantissa & 1 == 1 || sticky;
+    let kept = if guard && (round_or_sticky || kept & 1 == 1) { kept + 1 } else { kept };
+    // 2^exponent may pass f64's range in two steps though the value does not.
+    let magnitude = (kept as f64)
+        * 2f64.powi((exponent + 2).clamp(-1074, 1023) as i32)
+        * 2f64.powi((exponent + 2 - (exponent + 2).clamp(-1074, 1023)) as i32);
+    if value.numer().sign() == Sign::Minus { -magnitude } else { magnitude }
+}
+
 /// Formats a rational the way zsim prints exact values: reduced, `43/4`, or
-/// `10` when whole.
-pub fn fraction(value: Q) -> String {
-    if value.is_integer() { value.numer().to_string() } else { format!("{}/{}", value.numer(), value.denom()) }
+/// `10` when whole (every digit, however large).
+pub fn fraction(value: impl Into<Exact>) -> String {
+    match value.into() {
+        Exact::Word(q) if q.is_integer() => q.numer().to_string(),
+        Exact::Word(q) => format!("{}/{}", q.numer(), q.denom()),
+        Exact::Big(b) if b.is_integer() => b.numer().to_string(),
+        Exact::Big(b) => format!("{}/{}", b.numer(), b.denom()),
+    }
 }
 
 /// A big integer as a message prints it: whole up to 60 digits, beyond
@@ -360,21 +536,26 @@ pub fn big_integer(value: &num_bigint::BigInt) -> String {
 /// use zsim::exact::{Q, short};
 /// assert_eq!((short(Q::new(13, 2)), short(Q::new(43, 8)), short(Q::new(41, 3))), ("6.5".into(), "5.375".into(), "41/3".into()));
 /// ```
-pub fn short(value: Q) -> String {
+pub fn short(value: impl Into<Exact>) -> String {
     crate::words::localize_decimal(short_in_files(value))
 }
 
 /// [`short`] with a point in every language: for files (scene files, JSON)
 /// and for English text.
-pub fn short_in_files(value: Q) -> String {
-    (0..=4)
-        .find(|places| (value * Q::from_integer(10i128.pow(*places))).is_integer())
-        .map_or_else(|| fraction(value), |places| decimal(value, places))
+pub fn short_in_files(value: impl Into<Exact>) -> String {
+    let value = value.into().to_big();
+    (0..=4u32)
+        .find(|places| (&value * BigInt::from(10).pow(*places)).is_integer())
+        .map_or_else(|| fraction(value.clone()), |places| decimal(value.clone(), places))
 }
 
 /// The decimal approximation printed beside an exact value: always `places`
 /// digits after the point, rounded half away from zero, computed exactly.
-pub fn decimal(value: Q, places: u32) -> String {
+pub fn decimal(value: impl Into<Exact>, places: u32) -> String {
+    let value = match value.into() {
+        Exact::Word(q) => q,
+        Exact::Big(big) => return big_decimal(&big, places),
+    };
     let negative = *value.numer() < 0;
     let numer = value.numer().unsigned_abs();
     let denom = value.denom().unsigned_abs();
@@ -411,20 +592,34 @@ pub fn decimal(value: Q, places: u32) -> String {
     if places == 0 { format!("{sign}{whole}") } else { format!("{sign}{whole}.{frac}") }
 }
 
+/// [`decimal`] of a value beyond 128 bits, by one big division.
+fn big_decimal(value: &BigRational, places: u32) -> String {
+    let (numer, denom) = (value.numer().abs(), value.denom());
+    let scale = BigInt::from(10).pow(places);
+    // Rounded half away from zero: ⌊(2·|n|·10^p + d) / 2d⌋.
+    let rounded: BigInt = (numer * &scale * 2 + denom) / (denom * 2);
+    let digits = rounded.to_string();
+    let digits = format!("{digits:0>width$}", width = places as usize + 1);
+    let (whole, frac) = digits.split_at(digits.len() - places as usize);
+    let sign = if value.is_negative() && !rounded.is_zero() { "-" } else { "" };
+    if places == 0 { format!("{sign}{whole}") } else { format!("{sign}{whole}.{frac}") }
+}
+
 /// `43/4 ≈ 10.75`: the exact value and its decimal with 2 places, as zsim
 /// shows depths and crossings. Whole numbers print once: `10`.
-pub fn exact_and_decimal(value: Q) -> String {
+pub fn exact_and_decimal(value: impl Into<Exact>) -> String {
     exact_and_places(value, 2)
 }
 
 /// The exact value and its decimal with `places` places (`4876543/5000000 ≈
 /// 0.975309`); whole numbers print once.
-pub fn exact_and_places(value: Q, places: u32) -> String {
+pub fn exact_and_places(value: impl Into<Exact>, places: u32) -> String {
+    let value = value.into();
     if value.is_integer() {
         fraction(value)
     } else {
         // The decimal in the reader's convention (10,75 in Russian); the fraction stays as it is.
-        format!("{} ≈ {}", fraction(value), crate::words::localize_decimal(decimal(value, places)))
+        format!("{} ≈ {}", fraction(&value), crate::words::localize_decimal(decimal(value, places)))
     }
 }
 

@@ -149,10 +149,11 @@ impl Observer for CaseFinder {
             });
         }
         for crossing in event.crossings {
-            let x = crossing.x();
-            let doubled = x * Q::from_integer(2);
-            if doubled.is_integer() && doubled.to_integer() % 2 != 0 {
-                let column = (doubled.to_integer() - 1) / 2;
+            // A centre x + 1/2 on the crossing: 2x an odd integer (x·2 fits: exercises are small).
+            let doubled = crossing.x().to_big() * num_bigint::BigInt::from(2);
+            let odd = doubled.is_integer() && doubled.to_integer().bit(0);
+            if let (true, Some(doubled)) = (odd, num_traits::ToPrimitive::to_i128(&doubled.to_integer())) {
+                let column = (doubled - 1) / 2;
                 if (0..i128::from(self.width)).contains(&column) {
                     self.note(HardCase::CentreOnEdge, || {
                         format!("pixel ({column}, {row}): its centre lies on an edge of polygon {}", index + 1)
@@ -170,23 +171,25 @@ impl Observer for CaseFinder {
     fn pixel(&mut self, event: &PixelEvent) {
         let (index, x, y) = (event.index, event.x, event.y);
         let z = event.compared.value();
-        if self.quantized && (z - z.floor()) == Q::new(1, 2) {
+        let half = z.to_big() * num_bigint::BigInt::from(2);
+        if self.quantized && half.is_integer() && half.to_integer().bit(0) {
             self.note(HardCase::HalfDepth, || {
                 format!(
                     "pixel ({x}, {y}), polygon {}: z = {} rounds up to {}",
                     index + 1,
-                    fraction(z),
+                    fraction(&z),
                     event.compared.rounded()
                 )
             });
         }
         let rounded = event.compared.rounded();
-        if self.quantized && event.outcome == Outcome::Written && !(0..=i128::from(self.depth_max)).contains(&rounded) {
+        let range = num_bigint::BigInt::from(0)..=num_bigint::BigInt::from(self.depth_max);
+        if self.quantized && event.outcome == Outcome::Written && !range.contains(&rounded) {
             self.note(HardCase::Saturation, || {
                 format!(
                     "pixel ({x}, {y}), polygon {}: z = {} rounds to {rounded}, stored as {}",
                     index + 1,
-                    fraction(z),
+                    fraction(&z),
                     event.stored_after
                 )
             });
@@ -208,7 +211,7 @@ impl Observer for CaseFinder {
                     format!(
                         "pixel ({x}, {y}), polygon {}: z = {} does not pass the test against {} stored",
                         index + 1,
-                        fraction(z),
+                        fraction(&z),
                         event.stored_before
                     )
                 });

@@ -3,7 +3,7 @@
 //! through a scene, and why a cell holds its value.
 
 use crate::depth::{Depth, Stored};
-use crate::exact::{Q, exact_and_decimal, exact_and_places};
+use crate::exact::{Exact, Q, exact_and_decimal, exact_and_places};
 use crate::rules::DepthStore;
 use crate::scene::Scene;
 use crate::trace::{Fate, Outcome, PixelEvent, PixelHistoryEntry, ScanlineRecord, SpanRecord};
@@ -29,7 +29,7 @@ impl Buffer {
 
 /// A depth as shown for this scene: 2 decimals with a quantized z-buffer,
 /// 6 with an exact one (whose depths usually lie within −1 … 1).
-pub fn depth_text(scene: &Scene, z: Q) -> String {
+pub fn depth_text(scene: &Scene, z: impl Into<Exact>) -> String {
     match scene.rules.store {
         DepthStore::Quantized => exact_and_decimal(z),
         DepthStore::Exact => exact_and_places(z, 6),
@@ -57,7 +57,7 @@ pub fn polygon_label(message: &str, index: usize, name: &str) -> String {
 
 /// `43/4 ≈ 10.75 … 179/6 ≈ 29.83`.
 pub fn span_text(span: &SpanRecord) -> String {
-    words!("span", left = exact_and_decimal(span.left), right = exact_and_decimal(span.right))
+    words!("span", left = exact_and_decimal(&span.left), right = exact_and_decimal(&span.right))
 }
 
 /// `y = 15.5`: the scanline through row `row`.
@@ -76,15 +76,15 @@ pub fn winding_text(winding: crate::scene::Winding) -> String {
 /// What is stored for an exact depth, naming the rounding when z is not
 /// whole (`10 is stored (10.25 rounds to 10)`, the book's pixel (20, 17))
 /// and the saturation when it does not fit.
-pub fn stored_text(scene: &Scene, depth: Depth) -> String {
+pub fn stored_text(scene: &Scene, depth: &Depth) -> String {
     match depth.stored(scene.rules.store, scene.depth_max()) {
         Stored::Level(stored) => {
             let rounded = depth.rounded();
             let value = depth.value();
-            if rounded == i128::from(stored) && value.is_integer() {
+            if rounded == stored.into() && value.is_integer() {
                 words!("stored-whole", stored = stored)
-            } else if rounded == i128::from(stored) {
-                let key = if Q::from_integer(rounded) > value { "stored-rounded-up" } else { "stored-rounded" };
+            } else if rounded == stored.into() {
+                let key = if Exact::integer(rounded) > value { "stored-rounded-up" } else { "stored-rounded" };
                 words!(key, stored = stored, value = crate::exact::short(value))
             } else {
                 words!(
@@ -111,7 +111,9 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
         Some(perspective) => words!(
             "z-projected",
             z = depth_text(scene, event.depth.value()),
-            w = perspective.eye_value(event.depth.value()).map_or_else(|| words!("z-beyond"), |w| depth_text(scene, w))
+            w = perspective
+                .eye_value(&event.depth.value())
+                .map_or_else(|| words!("z-beyond"), |w| depth_text(scene, w))
         ),
         None => depth_text(scene, event.compared.value()),
     };
@@ -133,7 +135,7 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
             words!(
                 "reason-written",
                 test = scene.depth_test.outcome_text(&z, &stored_before, true),
-                stored = stored_text(scene, event.compared),
+                stored = stored_text(scene, &event.compared),
                 frame = frame
             )
         }
@@ -222,10 +224,10 @@ pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistor
     let last_write = history
         .iter()
         .rev()
-        .find_map(|entry| entry.pixel.filter(|p| p.outcome == Outcome::Written).map(|p| (entry.index, p)));
+        .find_map(|entry| entry.pixel.as_ref().filter(|p| p.outcome == Outcome::Written).map(|p| (entry.index, p)));
     let result = |pixel: &PixelEvent| match buffer {
         Buffer::Frame => words!("result-frame", value = pixel.frame_after),
-        Buffer::Depth => stored_text(scene, pixel.compared),
+        Buffer::Depth => stored_text(scene, &pixel.compared),
     };
     let semicolon = words!("list-semicolon");
     if let Some((index, pixel)) = last_write {
@@ -236,7 +238,7 @@ pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistor
             x = x,
             y = y,
             test = scene.depth_test.outcome_text(&z, &pixel.stored_before.to_string(), true),
-            result = result(&pixel)
+            result = result(pixel)
         );
         let later: Vec<String> = history
             .iter()
@@ -245,7 +247,7 @@ pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistor
                 words!(
                     "why-later-item",
                     polygon = polygon_name(scene, entry.index),
-                    reason = pixel_reason(scene, &entry.pixel.unwrap())
+                    reason = entry.pixel.as_ref().map_or_else(String::new, |p| pixel_reason(scene, p))
                 )
             })
             .collect();
@@ -261,8 +263,8 @@ pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistor
     let covered: Vec<String> = history
         .iter()
         .filter_map(|entry| {
-            entry.pixel.map(|p| {
-                words!("why-covered-item", polygon = polygon_name(scene, entry.index), reason = pixel_reason(scene, &p))
+            entry.pixel.as_ref().map(|p| {
+                words!("why-covered-item", polygon = polygon_name(scene, entry.index), reason = pixel_reason(scene, p))
             })
         })
         .collect();

@@ -8,7 +8,11 @@ use std::fmt::Write as _;
 
 use crate::buffer::Buffers;
 use crate::depth::Stored;
-use crate::exact::{Q, decimal, short};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+
+use crate::exact::{Exact, Q, decimal, short};
 use crate::scene::Scene;
 
 /// Largest raster side a figure draws.
@@ -101,9 +105,9 @@ pub fn svg_with(
         // Runs of equal cells in a row become one rectangle.
         let mut x = 0;
         while x < scene.width {
-            let fill = cell_fill(scene, buffers, x, y, shading, range);
+            let fill = cell_fill(scene, buffers, x, y, shading, &range);
             let mut end = x + 1;
-            while end < scene.width && cell_fill(scene, buffers, end, y, shading, range) == fill {
+            while end < scene.width && cell_fill(scene, buffers, end, y, shading, &range) == fill {
                 end += 1;
             }
             if let Some(fill) = fill {
@@ -298,13 +302,13 @@ fn cell_values(
     for y in 0..scene.height {
         for x in 0..scene.width {
             let (text, fill) = match shading {
-                Shading::Frame => (buffers.frame(x, y).to_string(), cell_fill(scene, buffers, x, y, shading, range)),
+                Shading::Frame => (buffers.frame(x, y).to_string(), cell_fill(scene, buffers, x, y, shading, &range)),
                 Shading::Depth => {
                     let text = match buffers.depth(x, y) {
                         Stored::Level(level) => level.to_string(),
-                        Stored::Exact(q) => short(q),
+                        Stored::Exact(value) => short(value),
                     };
-                    (text, cell_fill(scene, buffers, x, y, shading, range))
+                    (text, cell_fill(scene, buffers, x, y, shading, &range))
                 }
             };
             let colour = if fill.as_deref().is_some_and(is_dark) { "white" } else { "black" };
@@ -357,7 +361,14 @@ fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&dyn F
 }
 
 /// The fill of cell (x, y), or `None` where it shows the background.
-fn cell_fill(scene: &Scene, buffers: &Buffers, x: u32, y: u32, shading: Shading, range: (Q, Q)) -> Option<String> {
+fn cell_fill(
+    scene: &Scene,
+    buffers: &Buffers,
+    x: u32,
+    y: u32,
+    shading: Shading,
+    range: &(Exact, Exact),
+) -> Option<String> {
     match shading {
         Shading::Frame => {
             let value = buffers.frame(x, y);
@@ -365,7 +376,7 @@ fn cell_fill(scene: &Scene, buffers: &Buffers, x: u32, y: u32, shading: Shading,
         }
         Shading::Depth => {
             let value = buffers.depth(x, y);
-            (value != scene.clear_depth).then(|| depth_grey(value, scene, range))
+            (value != scene.clear_depth).then(|| depth_grey(&value, scene, range))
         }
     }
 }
@@ -383,32 +394,25 @@ fn frame_fill(scene: &Scene, value: u32) -> String {
 /// A grey for a depth: nearer (by the depth test) is darker. Levels are
 /// scaled by the level range; exact depths by the range `[low, high]` of the
 /// values in the buffer.
-fn depth_grey(value: Stored, scene: &Scene, (low, high): (Q, Q)) -> String {
+fn depth_grey(value: &Stored, scene: &Scene, (low, high): &(Exact, Exact)) -> String {
+    let integer = |v: u32| BigRational::from_integer(BigInt::from(v));
     let (value, low, high) = match value {
-        Stored::Level(level) => {
-            (Q::from_integer(i128::from(level)), Q::from_integer(0), Q::from_integer(i128::from(scene.depth_max())))
-        }
-        Stored::Exact(q) => (q, low, high),
+        Stored::Level(level) => (integer(*level), integer(0), integer(scene.depth_max())),
+        Stored::Exact(value) => (value.to_big(), low.to_big(), high.to_big()),
     };
-    use num_traits::{CheckedDiv, CheckedMul, CheckedSub};
-    let span = if high > low { high.checked_sub(&low) } else { Some(Q::from_integer(1)) };
-    let offset = if scene.depth_test.larger_is_nearer() { value.checked_sub(&low) } else { high.checked_sub(&value) };
-    // 230 (far) … 60 (near), in whole steps; a middle grey where the shade does not fit i128.
-    let shade = offset
-        .zip(span)
-        .and_then(|(o, s)| o.checked_div(&s))
-        .and_then(|n| n.checked_mul(&Q::from_integer(170)))
-        .map_or(85, |v| v.floor().to_integer().clamp(0, 170));
-    let level = 230 - shade as u8;
+    let span = if high > low { &high - &low } else { integer(1) };
+    let offset = if scene.depth_test.larger_is_nearer() { value - low } else { high - value };
+    // 230 (far) … 60 (near), in whole steps.
+    let shade = (offset / span * integer(170)).floor().to_integer().clamp(BigInt::from(0), BigInt::from(170));
+    let level = 230 - shade.to_u8().expect("clamped");
     format!("#{level:02x}{level:02x}{level:02x}")
 }
 
 /// The least and greatest exact depths written (for shading).
-fn exact_range(scene: &Scene, buffers: &Buffers) -> (Q, Q) {
-    let written = buffers.depth_rows().into_iter().flatten().filter(|v| *v != scene.clear_depth).map(Stored::value);
-    written
-        .fold(None, |range: Option<(Q, Q)>, v| Some(range.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v)))))
-        .unwrap_or((Q::from_integer(0), Q::from_integer(1)))
+fn exact_range(scene: &Scene, buffers: &Buffers) -> (Exact, Exact) {
+    let written = buffers.depth_rows().into_iter().flatten().filter(|v| *v != scene.clear_depth).map(|v| v.value());
+    let low = written.clone().min();
+    low.zip(written.max()).unwrap_or((Exact::Word(Q::from_integer(0)), Exact::Word(Q::from_integer(1))))
 }
 
 /// The lines, each broken at spaces to at most `width` characters.

@@ -50,8 +50,9 @@
 //!   within [`plane::MAX_SCALED`] on `i128`; the same code, with the same
 //!   results (`pipeline::tests::both_words_rasterize_alike`). Larger ones run
 //!   on the big-integer tier ([`big`]: the formulas in arbitrary-precision
-//!   integers, same results, the same proptest); only what no 128-bit report
-//!   can hold is refused ([`big`], [`plane::MAX_SCALED_BITS`]).
+//!   integers, same results, the same proptest), which reports crossings and
+//!   depths beyond 128 bits as big rationals ([`exact::Exact`]); only absurd
+//!   input is refused ([`plane::MAX_SCALED_BITS`]).
 //!
 //! # Example
 //!

@@ -12,7 +12,7 @@
 use num_traits::{CheckedAdd, CheckedDiv, CheckedMul, CheckedSub};
 
 use crate::depth::Depth;
-use crate::exact::Q;
+use crate::exact::{Exact, Q};
 
 /// The perspective effect's settings.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -110,17 +110,25 @@ impl Perspective {
 
     /// The eye-space depth for a projected depth: `z = d·z'/(d + z')`.
     /// The caller guarantees the products fit (see `scene`'s check on w).
-    pub fn eye_depth(&self, projected: Depth) -> Depth {
-        let (n, den) = projected.fraction();
+    pub fn eye_depth(&self, projected: &Depth) -> Depth {
         let (p, q) = (*self.distance.numer(), *self.distance.denom());
-        // z = (p/q)(n/den) / (p/q + n/den) = p·n / (p·den + q·n).
-        Depth::from_fraction(p * n, p * den + q * n)
+        match projected.fraction() {
+            // z = (p/q)(n/den) / (p/q + n/den) = p·n / (p·den + q·n).
+            Some((n, den)) => Depth::from_fraction(p * n, p * den + q * n),
+            None => {
+                let z = projected.value().to_big();
+                let distance = Exact::Word(self.distance).to_big();
+                Depth::from_exact(Exact::from(&distance * &z / (&distance + &z)))
+            }
+        }
     }
 
     /// The eye-space depth of an exact projected value (for reports); `None`
-    /// when it does not fit `i128`.
-    pub fn eye_value(&self, projected: Q) -> Option<Q> {
-        self.distance.checked_mul(&projected)?.checked_div(&self.distance.checked_add(&projected)?)
+    /// when `d + z' = 0` (the point is at infinity).
+    pub fn eye_value(&self, projected: &Exact) -> Option<Exact> {
+        let (distance, z) = (Exact::Word(self.distance).to_big(), projected.to_big());
+        let sum = &distance + &z;
+        (!num_traits::Zero::is_zero(&sum)).then(|| Exact::from(distance * z / sum))
     }
 }
 
@@ -158,7 +166,7 @@ mod tests {
         let v = p.project([q(26), q(6), q(20)], 32, 32).unwrap();
         // scale d/(d − z) = 40/20 = 2: x' = 16 + 10·2 = 36, y' = 16 − 10·2 = −4, z' = 40.
         assert_eq!(v, [q(36), q(-4), q(40)]);
-        assert_eq!(p.eye_value(v[2]), Some(q(20)));
-        assert_eq!(p.eye_depth(Depth::from_fraction(40, 1)).value(), q(20));
+        assert_eq!(p.eye_value(&Exact::Word(v[2])), Some(Exact::Word(q(20))));
+        assert_eq!(p.eye_depth(&Depth::from_fraction(40, 1)).value(), q(20));
     }
 }

@@ -151,8 +151,8 @@ fn rasterize_in<W: Word, S: RasterSink>(
                         crossings.extend(found.iter().map(|c| c.crossing(geometry.scale())));
                         spans.clear();
                         spans.extend(pairs.clone().map(|(i, j)| Span {
-                            left: crossings[i],
-                            right: crossings[j],
+                            left: crossings[i].clone(),
+                            right: crossings[j].clone(),
                             columns: scan::clip_columns(found[i].first_column, found[j].last_column, rect.columns),
                         }));
                         sink.scanline(row, crossings, spans);
@@ -205,7 +205,13 @@ impl<'s> Simulation<'s> {
     pub fn with_stages(scene: &'s Scene, stage_set: StageSet) -> Simulation<'s> {
         Simulation {
             scene,
-            buffers: Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth),
+            buffers: Buffers::new(
+                scene.width,
+                scene.height,
+                scene.frame_bits,
+                scene.background,
+                scene.clear_depth.clone(),
+            ),
             next: 0,
             stats: Stats::default(),
             scratch: Scratch::default(),
@@ -634,7 +640,7 @@ impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
         let cell = (y - self.first_row) as usize * self.width + x as usize;
         let (stored_before, frame_before) = (self.depth[cell], self.frame[cell].value());
         self.stats.tested += 1;
-        let written = self.test.passes(depth, Stored::Level(stored_before));
+        let written = self.test.passes(&depth, &Stored::Level(stored_before));
         let (stored_after, frame_after) = if written {
             self.stats.written += 1;
             let level = depth.quantized(self.depth_max);
@@ -648,8 +654,8 @@ impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
             index: self.index,
             x,
             y,
+            compared: depth.clone(),
             depth,
-            compared: depth,
             stored_before: Stored::Level(stored_before),
             frame_before,
             outcome: if written { Outcome::Written } else { Outcome::Hidden },
@@ -681,11 +687,11 @@ impl<S: PixelStages, O: Observer> RasterSink for DrawSink<'_, S, O> {
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
         let stored_before = self.buffers.depth(x, y);
         let frame_before = self.buffers.frame(x, y);
-        let decision = self.stages.decide(self.polygon, depth, stored_before, frame_before);
+        let decision = self.stages.decide(self.polygon, depth.clone(), stored_before.clone(), frame_before);
         self.stats.tested += 1;
         if decision.outcome == Outcome::Written {
             self.stats.written += 1;
-            self.buffers.store(x, y, decision.frame, decision.stored);
+            self.buffers.store(x, y, decision.frame, decision.stored.clone());
         }
         self.observer.pixel(&PixelEvent {
             index: self.index,
@@ -777,7 +783,7 @@ mod tests {
         fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
             // Values: crossings at the same x may come in either order, over different denominators.
             let x = |c: &Crossing| c.x();
-            let crossings: Vec<Q> = crossings.iter().map(x).collect();
+            let crossings: Vec<crate::exact::Exact> = crossings.iter().map(x).collect();
             let spans: Vec<_> = spans.iter().map(|s| (x(&s.left), x(&s.right), s.columns)).collect();
             self.0.push(format!("row {row}: {crossings:?} {spans:?}"));
         }
@@ -788,10 +794,12 @@ mod tests {
         }
     }
 
-    /// The events of the big-integer tier for the same polygon.
-    fn run_big(geometry: &Geometry, rules: Rules, rect: PixelRect) -> Vec<String> {
+    /// The events of the big-integer tier for the same polygon: with its
+    /// crossings and depths in 128 bits, or (`huge`) in big integers.
+    fn run_big(geometry: &Geometry, rules: Rules, rect: PixelRect, huge: bool) -> Vec<String> {
         let mut sink = Collect::default();
-        rasterize(&geometry.on_big_tier(), rules, rect, &mut Scratch::default(), &mut sink);
+        let big = if huge { geometry.on_huge_tier() } else { geometry.on_big_tier() };
+        rasterize(&big, rules, rect, &mut Scratch::default(), &mut sink);
         sink.0
     }
 
@@ -831,9 +839,10 @@ mod tests {
     }
 
     proptest! {
-        /// The 64-bit and the 128-bit words, and the big-integer tier, give the
-        /// same crossings, spans, pixels and depths, under every rule and in
-        /// any clipping rectangle.
+        /// The 64-bit and the 128-bit words, and the big-integer tier with its
+        /// reports in 128 bits and in big integers, give the same crossings,
+        /// spans, pixels and depths, under every rule and in any clipping
+        /// rectangle.
         #[test]
         fn both_words_rasterize_alike(
             vertices in prop::collection::vec((-40i64..80, -40i64..80, 1i64..5), 3..7),
@@ -866,7 +875,8 @@ mod tests {
             };
             let words = run::<i128>(&geometry, rules, rect);
             prop_assert_eq!(&run::<i64>(&geometry, rules, rect), &words);
-            prop_assert_eq!(&run_big(&geometry, rules, rect), &words);
+            prop_assert_eq!(&run_big(&geometry, rules, rect, false), &words);
+            prop_assert_eq!(&run_big(&geometry, rules, rect, true), &words);
         }
     }
 

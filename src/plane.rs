@@ -13,8 +13,10 @@ use std::fmt;
 
 use num_bigint::BigInt;
 use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
 
-use crate::exact::Q;
+use crate::exact::{Exact, Q};
 
 /// Largest allowed magnitude of a scaled coordinate `|x·2D|`.
 ///
@@ -27,9 +29,9 @@ pub const MAX_SCALED: i128 = 1 << 34;
 /// Largest size, in bits, of a scaled coordinate `|x·2D|` in the
 /// big-integer tier ([`Geometry::is_big`]): polygons beyond [`MAX_SCALED`]
 /// are drawn by a rasterizer that keeps the scaled vertices in
-/// arbitrary-precision integers (`crate::big`), as long as what it reports
-/// (crossings, depths, the plane, all reduced) still fits the 128-bit
-/// numbers the rest of zsim speaks. The bound only keeps absurd input
+/// arbitrary-precision integers (`crate::big`), and reports crossings,
+/// depths and the plane in big integers where they outgrow 128 bits. The
+/// bound only keeps absurd input
 /// (hundreds of coprime denominators) from running for ever: 2^4096 is about
 /// 10^1233.
 pub const MAX_SCALED_BITS: u64 = 4096;
@@ -56,25 +58,6 @@ pub enum GeometryError {
     },
     /// A vertex that does not lie on the plane through the others.
     NotPlanar(Box<OffPlane>),
-    /// As [`GeometryError::NotPlanar`], for a polygon whose plane's
-    /// coefficients or the vertex's distance do not fit 128 bits.
-    NotPlanarBeyondRange {
-        /// 1-based vertex number.
-        vertex: usize,
-        /// The three vertices (1-based) that fix the plane.
-        through: [usize; 3],
-        /// The plane, when its coefficients fit (then the distance does not).
-        plane: Option<PlaneEquation>,
-    },
-    /// Within [`MAX_SCALED_BITS`], but the polygon's plane, an edge's
-    /// crossings or its depths, reduced, would outgrow the 128-bit numbers
-    /// zsim reports (`crate::big::BigPolygon::new`).
-    TooLargeForDepth {
-        /// 1-based vertex with the largest coordinate.
-        vertex: usize,
-        /// That coordinate.
-        value: Q,
-    },
 }
 
 /// The first vertex found off a polygon's plane.
@@ -88,7 +71,7 @@ pub struct OffPlane {
     pub plane: PlaneEquation,
     /// How far the vertex is off, along z when the plane has a z term,
     /// otherwise the value of the reduced equation at the vertex.
-    pub off_by: Q,
+    pub off_by: Exact,
     /// Whether `off_by` is measured along z.
     pub along_z: bool,
 }
@@ -106,34 +89,12 @@ impl fmt::Display for GeometryError {
                 value = crate::exact::fraction(*value),
                 denominator = crate::exact::big_integer(denominator)
             )),
-            GeometryError::TooLargeForDepth { vertex, value } => f.write_str(&words!(
-                "geometry-too-large-for-depth",
-                vertex = vertex.to_string(),
-                value = crate::exact::fraction(*value)
-            )),
-            GeometryError::NotPlanarBeyondRange { vertex, through: [i, j, k], plane } => f.write_str(&match plane {
-                None => words!(
-                    "geometry-off-plane-large",
-                    vertex = vertex.to_string(),
-                    i = i.to_string(),
-                    j = j.to_string(),
-                    k = k.to_string()
-                ),
-                Some(plane) => words!(
-                    "geometry-off-plane-far",
-                    vertex = vertex.to_string(),
-                    plane = plane.to_string(),
-                    i = i.to_string(),
-                    j = j.to_string(),
-                    k = k.to_string()
-                ),
-            }),
             GeometryError::NotPlanar(off) => {
                 let OffPlane { vertex, through: [i, j, k], plane, off_by, along_z } = off.as_ref();
                 let (key, off) = if *along_z {
-                    ("geometry-off-plane-z", crate::exact::exact_and_decimal(*off_by))
+                    ("geometry-off-plane-z", crate::exact::exact_and_decimal(off_by))
                 } else {
-                    ("geometry-off-plane", crate::exact::fraction(*off_by))
+                    ("geometry-off-plane", crate::exact::fraction(off_by))
                 };
                 f.write_str(&words!(
                     key,
@@ -153,33 +114,43 @@ impl fmt::Display for GeometryError {
 /// their greatest common divisor, in the polygon's own coordinates (not
 /// scaled), signed as the book prints it: `c > 0` (when `c = 0`, `b > 0`;
 /// when both are 0, `a > 0`). The winding is reported apart,
-/// from the sign of Newell's `c` ([`Geometry::c`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// from the sign of Newell's `c` ([`Geometry::c`]). The coefficients are
+/// big integers: a polygon given with many significant digits has a plane
+/// beyond 128 bits (`crate::big`).
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct PlaneEquation {
     /// Coefficient of x.
-    pub a: i128,
+    pub a: BigInt,
     /// Coefficient of y.
-    pub b: i128,
+    pub b: BigInt,
     /// Coefficient of z.
-    pub c: i128,
+    pub c: BigInt,
     /// Constant term.
-    pub d: i128,
+    pub d: BigInt,
+}
+
+impl PlaneEquation {
+    /// The plane with small coefficients (for tests and examples).
+    pub fn of(a: i128, b: i128, c: i128, d: i128) -> PlaneEquation {
+        PlaneEquation { a: a.into(), b: b.into(), c: c.into(), d: d.into() }
+    }
 }
 
 impl fmt::Display for PlaneEquation {
     /// Prints like the book: `3x + y + 4z - 120 = 0`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let mut out = String::new();
-        for (coef, var) in [(self.a, "x"), (self.b, "y"), (self.c, "z"), (self.d, "")] {
-            if coef == 0 {
+        for (coef, var) in [(&self.a, "x"), (&self.b, "y"), (&self.c, "z"), (&self.d, "")] {
+            if coef.is_zero() {
                 continue;
             }
-            let magnitude = coef.unsigned_abs();
-            let number = if magnitude == 1 && !var.is_empty() { String::new() } else { magnitude.to_string() };
+            let magnitude = coef.magnitude();
+            let number = if magnitude.is_one() && !var.is_empty() { String::new() } else { magnitude.to_string() };
+            let negative = coef.is_negative();
             if out.is_empty() {
-                out = format!("{}{number}{var}", if coef < 0 { "-" } else { "" });
+                out = format!("{}{number}{var}", if negative { "-" } else { "" });
             } else {
-                out = format!("{out} {} {number}{var}", if coef < 0 { "-" } else { "+" });
+                out = format!("{out} {} {number}{var}", if negative { "-" } else { "+" });
             }
         }
         if out.is_empty() {
@@ -272,16 +243,7 @@ impl Geometry {
         if let Some((index, axis)) = beyond {
             return Err(GeometryError::OutOfRange { vertex: index + 1, value: vertices[index][axis], denominator });
         }
-        // The largest coordinate, named when what the polygon reports would not fit.
-        let (index, value) = vertices
-            .iter()
-            .enumerate()
-            .flat_map(|(i, v)| v.iter().map(move |q| (i, *q)))
-            .max_by(|(_, p), (_, q)| num_traits::Signed::abs(p).cmp(&num_traits::Signed::abs(q)))
-            .unwrap_or((0, vertices[0][0]));
-        let polygon = crate::big::BigPolygon::new(points, denominator)?
-            .ok_or(GeometryError::TooLargeForDepth { vertex: index + 1, value })?;
-        Ok(Geometry::on_big(polygon))
+        Ok(Geometry::on_big(crate::big::BigPolygon::new(points, denominator)?))
     }
 
     /// The geometry of a polygon of the big-integer tier: no word-sized
@@ -302,8 +264,17 @@ impl Geometry {
     #[cfg(test)]
     pub(crate) fn on_big_tier(&self) -> Geometry {
         let points = self.points.iter().map(|p| p.map(BigInt::from)).collect();
-        let polygon = crate::big::BigPolygon::new(points, self.denominator.into());
-        Geometry::on_big(polygon.expect("planar").expect("a small polygon fits"))
+        Geometry::on_big(crate::big::BigPolygon::new(points, self.denominator.into()).expect("planar"))
+    }
+
+    /// The same polygon on the big-integer tier with its crossings and
+    /// depths computed in big integers, as for a plane beyond 128 bits (for
+    /// the tests that compare the tiers).
+    #[cfg(test)]
+    pub(crate) fn on_huge_tier(&self) -> Geometry {
+        let points = self.points.iter().map(|p| p.map(BigInt::from)).collect();
+        let polygon = crate::big::BigPolygon::new(points, self.denominator.into()).expect("planar");
+        Geometry::on_big(polygon.without_words())
     }
 
     /// Whether the polygon lies beyond [`MAX_SCALED`], where the word-sized
@@ -329,7 +300,7 @@ impl Geometry {
     /// tier: lowest and highest column, lowest and highest row.
     pub fn cells(&self) -> [i128; 4] {
         if let Some(polygon) = &self.big {
-            return polygon.cells().expect("checked when the polygon was made");
+            return polygon.cells();
         }
         let (mut x0, mut x1, mut y0, mut y1) = (i128::MAX, i128::MIN, i128::MAX, i128::MIN);
         for p in &self.points {
@@ -393,9 +364,16 @@ impl Geometry {
     /// units, reduced.
     pub fn plane(&self) -> PlaneEquation {
         if let Some(polygon) = &self.big {
-            return polygon.plane();
+            return polygon.plane().clone();
         }
         reduced_plane(self.normal, self.points[0], self.scale())
+    }
+
+    /// How much z changes from one pixel centre to the next on a scanline,
+    /// `−a/c` (seed 002: `z₁ = z − a/c`); `None` for a polygon seen edge-on.
+    pub fn slope(&self) -> Option<Exact> {
+        let PlaneEquation { a, c, .. } = self.plane();
+        (!c.is_zero()).then(|| Exact::from_big(-a, c))
     }
 
     /// Checks every vertex against the plane through vertex 1 and the first two
@@ -422,15 +400,12 @@ impl Geometry {
             let plane = reduced_plane(normal, p1, self.scale());
             let (off_by, along_z) = if normal[2] != 0 {
                 // residual = n_z·ΔZ in scaled units, and Δz = ΔZ / 2D.
-                (Q::new(residual, normal[2] * self.scale()), true)
+                (Exact::Word(Q::new(residual, normal[2] * self.scale())), true)
             } else {
                 // Without a z term, report the reduced equation's value at the vertex.
-                let [x, y, z] = point.map(|v| Q::new(v, self.scale()));
-                let value = Q::from_integer(plane.a) * x
-                    + Q::from_integer(plane.b) * y
-                    + Q::from_integer(plane.c) * z
-                    + Q::from_integer(plane.d);
-                (value, false)
+                let [x, y, z] = point.map(|v| BigRational::new(v.into(), self.scale().into()));
+                let PlaneEquation { a, b, c, d } = &plane;
+                (Exact::from(x * a + y * b + z * c + BigRational::from_integer(d.clone())), false)
             };
             return Err(GeometryError::NotPlanar(Box::new(OffPlane {
                 vertex: index + 1,
@@ -451,10 +426,8 @@ impl Geometry {
 /// `d' = −(a·X₁ + b·Y₁ + c·Z₁)`; with `X = 2D·x` that is
 /// `2D·a·x + 2D·b·y + 2D·c·z + d' = 0`, then divided by the gcd.
 pub(crate) fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> PlaneEquation {
-    // Worked in big integers: the products can outgrow i128 though the
-    // reduced plane fits (a word-sized polygon's always does: its normal is
-    // below 2^86 and its scale 2^35).
-    crate::big::reduced_plane(normal, point, scale).expect("a word-sized polygon's reduced plane fits i128")
+    // Worked in big integers: the products can outgrow i128.
+    crate::big::plane_through(&normal.map(BigInt::from), &point.map(BigInt::from), &BigInt::from(scale))
 }
 
 /// Newell's method (seed 002): `a = Σ(yᵢ − yᵢ₊₁)(zᵢ + zᵢ₊₁)`,
@@ -483,7 +456,7 @@ mod tests {
     fn book_triangle_plane_is_3x_y_4z_minus_120() {
         let triangle = Geometry::new(&q(&[[15, 15, 15], [25, 25, 5], [30, 10, 5]])).unwrap();
         assert!(triangle.c() < 0, "P5, P6, P7 run clockwise; the book prints the plane with c > 0");
-        assert_eq!(triangle.plane(), PlaneEquation { a: 3, b: 1, c: 4, d: -120 });
+        assert_eq!(triangle.plane(), PlaneEquation::of(3, 1, 4, -120));
         assert_eq!(triangle.plane().to_string(), "3x + y + 4z - 120 = 0");
     }
 
@@ -513,7 +486,7 @@ mod tests {
         match err {
             GeometryError::NotPlanar(off) => {
                 assert_eq!(off.vertex, 4);
-                assert_eq!(off.off_by, Q::from_integer(1));
+                assert_eq!(off.off_by, Exact::Word(Q::from_integer(1)));
                 assert!(off.along_z);
             }
             other => panic!("expected NotPlanar, got {other:?}"),
@@ -538,9 +511,8 @@ mod tests {
         let far = [[Q::from_integer(1 << 100), Q::from_integer(0), z], [Q::from_integer(4), Q::from_integer(4), z]];
         let geometry = Geometry::new(&[[Q::from_integer(0), Q::from_integer(0), z], far[0], far[1]]).unwrap();
         assert!(geometry.is_big() && geometry.big_scaled().unwrap().1 == &BigInt::from(3i128.pow(60)));
-        // What it reports stays 128-bit: a crossing 2^126 pixels out is refused.
-        let err = Geometry::new(&q(&[[0, 0, 0], [1 << 126, 0, 0], [0, 1, 0]])).unwrap_err();
-        assert!(matches!(err, GeometryError::TooLargeForDepth { vertex: 2, .. }), "{err:?}");
+        // What it reports may outgrow 128 bits: a crossing 2^126 pixels out is drawn too.
+        assert!(Geometry::new(&q(&[[0, 0, 0], [1 << 126, 0, 0], [0, 1, 0]])).unwrap().is_big());
         // Past MAX_SCALED_BITS: denominators 2 … 3001 have an lcm near e^3000 ≈ 2^4328.
         let vertices: Vec<[Q; 3]> =
             (1..=1500).map(|j| [Q::new(1, 2 * j), Q::new(1, 2 * j + 1), Q::from_integer(0)]).collect();

@@ -4,14 +4,14 @@
 use serde::Serialize;
 
 use crate::depth::Stored;
-use crate::exact::{Q, decimal};
+use crate::exact::{Exact, decimal};
 
 impl Serialize for Stored {
     /// A level as an integer; an exact depth as [`exact_json`] writes it.
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         match self {
             Stored::Level(level) => serializer.serialize_u32(*level),
-            Stored::Exact(q) => exact_json(*q).serialize(serializer),
+            Stored::Exact(value) => exact_json(value).serialize(serializer),
         }
     }
 }
@@ -19,9 +19,10 @@ impl Serialize for Stored {
 /// An exact value in JSON output, never a float: an integer when it is
 /// whole (`4`), otherwise the reduced fraction as a string (`"5/2"`), so that
 /// every cell of a matrix has one of two types whatever the scene.
-pub fn exact_json(value: Q) -> serde_json::Value {
-    match i64::try_from(*value.numer()) {
-        Ok(whole) if value.is_integer() => serde_json::Value::from(whole),
+pub fn exact_json(value: impl Into<Exact>) -> serde_json::Value {
+    let value = value.into();
+    match value.word().and_then(|q| i64::try_from(*q.numer()).ok()) {
+        Some(whole) if value.is_integer() => serde_json::Value::from(whole),
         _ => serde_json::Value::from(crate::exact::fraction(value)),
     }
 }
@@ -149,12 +150,24 @@ impl MatrixCell for Stored {
     fn text(&self) -> String {
         match self {
             Stored::Level(level) => level.to_string(),
-            Stored::Exact(q) => decimal(*q, 6),
+            Stored::Exact(value) => decimal(value, 6),
         }
     }
 
     fn colour_key(&self) -> u32 {
         self.level().unwrap_or(1)
+    }
+}
+
+impl MatrixCell for Exact {
+    /// An exact value as a reduced fraction (`3/4`), whole numbers plain.
+    fn text(&self) -> String {
+        crate::exact::fraction(self)
+    }
+
+    fn colour_key(&self) -> u32 {
+        let rounded = (self.to_big() + num_rational::BigRational::new(1.into(), 2.into())).floor().to_integer();
+        num_traits::ToPrimitive::to_u32(&rounded.clamp(0.into(), u32::MAX.into())).unwrap_or(0)
     }
 }
 

@@ -6,37 +6,81 @@ use std::cmp::Ordering;
 use std::hint::select_unpredictable;
 use std::ops::RangeInclusive;
 
-use crate::exact::{Q, Word, ceil_div, cmp_fractions, floor_div};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+
+use crate::exact::{Exact, Q, Word, ceil_div, cmp_fractions, floor_div};
 use crate::rules::{ColumnRule, RowRule};
 
-/// An x position in pixel units as the fraction `numerator / denominator`
-/// (`denominator > 0`, not necessarily reduced), where a crossing falls on a
-/// scanline: what every tier reports. Both parts stay below 2^120 (the word
-/// tiers: a numerator of at most `6R²` over `2R·2D`; the big-integer tier:
-/// checked when the polygon is made, `crate::big`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Crossing {
-    /// Numerator, in pixel units.
-    pub numerator: i128,
-    /// Positive denominator.
-    pub denominator: i128,
+/// An x position in pixel units where a crossing falls on a scanline: what
+/// every tier reports. As the fraction `numerator / denominator`
+/// (`denominator > 0`, not necessarily reduced), both parts below 2^120 (the
+/// word tiers: a numerator of at most `6R²` over `2R·2D`; the big-integer
+/// tier: checked when the polygon is made, `crate::big`), or a big rational
+/// for an edge whose line outgrows those bounds.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Crossing(CrossingValue);
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum CrossingValue {
+    Word { numerator: i128, denominator: i128 },
+    Big(Box<BigRational>),
 }
 
 impl Crossing {
+    /// The crossing at `numerator / denominator` (`denominator > 0`, both
+    /// below 2^120).
+    pub fn new(numerator: i128, denominator: i128) -> Crossing {
+        debug_assert!(denominator > 0, "a crossing's denominator is positive");
+        Crossing(CrossingValue::Word { numerator, denominator })
+    }
+
+    /// The crossing at `numerator / denominator` in big integers
+    /// (`denominator > 0`), held in 128 bits when both fit the bounds
+    /// above, else kept as it is (reduced only when reported: a gcd per
+    /// crossing would cost more than the crossing).
+    pub fn from_big(numerator: BigInt, denominator: BigInt) -> Crossing {
+        let small = |v: &BigInt| v.to_i128().filter(|v| v.unsigned_abs() < 1 << 120);
+        match (small(&numerator), small(&denominator)) {
+            (Some(n), Some(d)) => Crossing::new(n, d),
+            _ => Crossing(CrossingValue::Big(Box::new(BigRational::new_raw(numerator, denominator)))),
+        }
+    }
+
     /// The position in pixel units, reduced.
-    pub fn x(self) -> Q {
-        Q::new(self.numerator, self.denominator)
+    pub fn x(&self) -> Exact {
+        match &self.0 {
+            CrossingValue::Word { numerator, denominator } => Exact::Word(Q::new(*numerator, *denominator)),
+            CrossingValue::Big(big) => Exact::from(big.reduced()),
+        }
+    }
+
+    /// The position as a big rational, not reduced.
+    fn to_big(&self) -> BigRational {
+        match &self.0 {
+            CrossingValue::Word { numerator, denominator } => {
+                BigRational::new_raw(BigInt::from(*numerator), BigInt::from(*denominator))
+            }
+            CrossingValue::Big(big) => (**big).clone(),
+        }
     }
 
     /// Compares two positions without overflow.
     pub fn cmp_position(&self, other: &Crossing) -> Ordering {
-        cmp_fractions(self.numerator, self.denominator, other.numerator, other.denominator)
+        match (&self.0, &other.0) {
+            (
+                CrossingValue::Word { numerator, denominator },
+                CrossingValue::Word { numerator: other_numerator, denominator: other_denominator },
+            ) => cmp_fractions(*numerator, *denominator, *other_numerator, *other_denominator),
+            _ => self.to_big().cmp(&other.to_big()),
+        }
     }
 }
 
 /// A pair of crossings, left and right, and the pixel columns whose centres
 /// lie between them (boundary included), clipped to the raster.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Span {
     /// The left crossing.
     pub left: Crossing,
@@ -131,7 +175,7 @@ pub fn crossings(points: &[[i128; 3]], scan_y: i128, scale: i128, rule: RowRule,
         let (numerator, denominator) = (x1 * (y2 - y1) + (x2 - x1) * (scan_y - y1), y2 - y1);
         let (numerator, denominator) =
             if denominator < 0 { (-numerator, -denominator) } else { (numerator, denominator) };
-        out.push(Crossing { numerator, denominator: denominator * scale });
+        out.push(Crossing::new(numerator, denominator * scale));
     }
     out.sort_unstable_by(Crossing::cmp_position);
 }
@@ -182,7 +226,7 @@ impl<W: Word> RowCrossing<W> {
     /// The crossing as reported to observers, in pixel units (the polygon's
     /// scale is `2D`): below `6R²` over `2R·2D`.
     pub fn crossing(&self, scale: i128) -> Crossing {
-        Crossing { numerator: self.numerator.wide(), denominator: self.denominator.wide() * scale }
+        Crossing::new(self.numerator.wide(), self.denominator.wide() * scale)
     }
 
     /// Compares the positions of two crossings on the same row.
@@ -435,9 +479,17 @@ pub fn clip_columns<W: Word>(first: W, last: W, limit: (u32, u32)) -> Option<(u3
 /// `[left, right]`, boundary included ("the pixel whose centre lies inside or
 /// on the boundary"); with [`ColumnRule::HalfOpen`] those within
 /// `[left, right)`; with [`ColumnRule::CellHolds`] from `⌊left⌋` to `⌊right⌋`.
-pub fn columns(left: Crossing, right: Crossing, limit: (u32, u32), rule: ColumnRule) -> Option<(u32, u32)> {
+pub fn columns(left: &Crossing, right: &Crossing, limit: (u32, u32), rule: ColumnRule) -> Option<(u32, u32)> {
+    let (
+        CrossingValue::Word { numerator: left_numerator, denominator: left_denominator },
+        CrossingValue::Word { numerator: right_numerator, denominator: right_denominator },
+    ) = (&left.0, &right.0)
+    else {
+        return big_columns(left.to_big(), right.to_big(), limit, rule);
+    };
+    let (left, right) = ((*left_numerator, *left_denominator), (*right_numerator, *right_denominator));
     // The centre x + 1/2 against n/d: 2x + 1 ≥ 2n/d  ⇔  x ≥ (2n − d)/2d (both below 2^122).
-    let centred = |c: Crossing| (2 * c.numerator - c.denominator, 2 * c.denominator);
+    let centred = |(n, d): (i128, i128)| (2 * n - d, 2 * d);
     let (first, last) = match rule {
         ColumnRule::CentreInside => (
             ceil_div(centred(left).0, centred(left).1),
@@ -450,11 +502,25 @@ pub fn columns(left: Crossing, right: Crossing, limit: (u32, u32), rule: ColumnR
             ceil_div(centred(right).0, centred(right).1) - 1,
         ),
         // The cell holding x = n/d is ⌊n/d⌋.
-        ColumnRule::CellHolds => {
-            (floor_div(left.numerator, left.denominator).0, floor_div(right.numerator, right.denominator).0)
-        }
+        ColumnRule::CellHolds => (floor_div(left.0, left.1).0, floor_div(right.0, right.1).0),
     };
     clip_columns(first, last, limit)
+}
+
+/// [`columns`] for crossings beyond 128 bits, by the same rules in big
+/// rationals; the bounds, clamped just outside the range of `u32`, are then
+/// clipped as [`columns`] clips them.
+fn big_columns(left: BigRational, right: BigRational, limit: (u32, u32), rule: ColumnRule) -> Option<(u32, u32)> {
+    let half = BigRational::new(BigInt::from(1), BigInt::from(2));
+    let (first, last) = match rule {
+        ColumnRule::CentreInside => ((left - &half).ceil(), (right - &half).floor()),
+        ColumnRule::HalfOpen => ((left - &half).ceil(), (right - &half).ceil() - BigInt::from(1)),
+        ColumnRule::CellHolds => (left.floor(), right.floor()),
+    };
+    let clamp = |v: BigRational| {
+        v.to_integer().clamp(BigInt::from(-1), BigInt::from(u64::from(u32::MAX) + 1)).to_i128().expect("clamped")
+    };
+    clip_columns(clamp(first), clamp(last), limit)
 }
 
 #[cfg(test)]
@@ -466,7 +532,7 @@ mod tests {
         points.iter().map(|p| [2 * p[0], 2 * p[1], 0]).collect()
     }
 
-    fn crossing_xs(points: &[[i128; 3]], row: u32) -> Vec<Q> {
+    fn crossing_xs(points: &[[i128; 3]], row: u32) -> Vec<Exact> {
         let mut out = Vec::new();
         crossings(points, scanline_y(row, 1), 2, RowRule::HalfOpen, &mut out);
         out.iter().map(|c| c.x()).collect()
@@ -504,31 +570,31 @@ mod tests {
     #[test]
     fn centre_on_right_edge_is_covered() {
         // Span [0.5, 2.5] covers centres 0.5, 1.5 and 2.5: both boundaries included.
-        let left = Crossing { numerator: 1, denominator: 2 };
-        let right = Crossing { numerator: 5, denominator: 2 };
-        assert_eq!(columns(left, right, (0, 31), ColumnRule::CentreInside), Some((0, 2)));
+        let left = Crossing::new(1, 2);
+        let right = Crossing::new(5, 2);
+        assert_eq!(columns(&left, &right, (0, 31), ColumnRule::CentreInside), Some((0, 2)));
     }
 
     #[test]
     fn span_between_centres_covers_nothing() {
-        let left = Crossing { numerator: 6, denominator: 10 }; // 0.6
-        let right = Crossing { numerator: 14, denominator: 10 }; // 1.4
-        assert_eq!(columns(left, right, (0, 31), ColumnRule::CentreInside), None);
+        let left = Crossing::new(6, 10); // 0.6
+        let right = Crossing::new(14, 10); // 1.4
+        assert_eq!(columns(&left, &right, (0, 31), ColumnRule::CentreInside), None);
     }
 
     #[test]
     fn span_shrinking_to_one_centre_covers_it() {
-        let centre = Crossing { numerator: 3, denominator: 2 }; // 1.5
-        assert_eq!(columns(centre, centre, (0, 31), ColumnRule::CentreInside), Some((1, 1)));
+        let centre = Crossing::new(3, 2); // 1.5
+        assert_eq!(columns(&centre, &centre, (0, 31), ColumnRule::CentreInside), Some((1, 1)));
     }
 
     #[test]
     fn spans_are_clipped_to_the_raster() {
-        let left = Crossing { numerator: -20, denominator: 2 };
-        let right = Crossing { numerator: 200, denominator: 2 };
-        assert_eq!(columns(left, right, (0, 31), ColumnRule::CentreInside), Some((0, 31)));
-        let beyond = Crossing { numerator: 100, denominator: 2 };
-        assert_eq!(columns(beyond, right, (0, 31), ColumnRule::CentreInside), None);
+        let left = Crossing::new(-20, 2);
+        let right = Crossing::new(200, 2);
+        assert_eq!(columns(&left, &right, (0, 31), ColumnRule::CentreInside), Some((0, 31)));
+        let beyond = Crossing::new(100, 2);
+        assert_eq!(columns(&beyond, &right, (0, 31), ColumnRule::CentreInside), None);
     }
 
     /// The walker's crossings and column bounds, in both machine words, equal
@@ -551,7 +617,7 @@ mod tests {
                         .map(|(i, j)| clip_columns(walked[i].first_column, walked[j].last_column, (0, 31)))
                         .collect();
                     let by_formula: Vec<_> = pairs(direct.len(), row_rule)
-                        .map(|(i, j)| columns(direct[i], direct[j], (0, 31), column_rule))
+                        .map(|(i, j)| columns(&direct[i], &direct[j], (0, 31), column_rule))
                         .collect();
                     assert_eq!(by_walker, by_formula, "row {row}, {row_rule:?}, {column_rule:?}");
                 }
@@ -591,12 +657,12 @@ mod tests {
     #[test]
     fn cell_rule_takes_the_cells_holding_the_crossings() {
         // Span 0.6 … 1.4: no centre inside, but the cells holding 0.6 and 1.4 are 0 and 1.
-        let left = Crossing { numerator: 6, denominator: 10 };
-        let right = Crossing { numerator: 14, denominator: 10 };
-        assert_eq!(columns(left, right, (0, 31), ColumnRule::CellHolds), Some((0, 1)));
+        let left = Crossing::new(6, 10);
+        let right = Crossing::new(14, 10);
+        assert_eq!(columns(&left, &right, (0, 31), ColumnRule::CellHolds), Some((0, 1)));
         // A crossing exactly on a cell boundary (x = 2) belongs to the cell on its right.
-        let on_line = Crossing { numerator: 4, denominator: 2 };
-        assert_eq!(columns(on_line, on_line, (0, 31), ColumnRule::CellHolds), Some((2, 2)));
+        let on_line = Crossing::new(4, 2);
+        assert_eq!(columns(&on_line, &on_line, (0, 31), ColumnRule::CellHolds), Some((2, 2)));
     }
 
     #[test]

@@ -8,7 +8,7 @@ use serde::de::Error as _;
 
 use crate::depth::{DepthTest, Stored};
 use crate::error::{Error, Mapping, PolygonProblem};
-use crate::exact::{Q, fraction, parse_number};
+use crate::exact::{Exact, Q, fraction, parse_number};
 use crate::perspective::{Clip, Perspective};
 use crate::plane::Geometry;
 use crate::rules::{DepthStore, Preset, Rules};
@@ -397,8 +397,10 @@ impl SceneFile {
             (DepthStore::Quantized, Some(_)) => {
                 return Err(setting("clear_depth", words!("setting-clear-depth")));
             }
-            (DepthStore::Exact, Some(value)) => Stored::Exact(value.0),
-            (DepthStore::Exact, None) => Stored::Exact(Q::from_integer(i128::from(depth_test.clear_value(depth_max)))),
+            (DepthStore::Exact, Some(value)) => Stored::Exact(Exact::Word(value.0)),
+            (DepthStore::Exact, None) => {
+                Stored::Exact(Exact::Word(Q::from_integer(i128::from(depth_test.clear_value(depth_max)))))
+            }
         };
         let perspective = match self.effects.perspective {
             None => None,

@@ -10,7 +10,7 @@ use crate::scene::{Polygon, Scene};
 use crate::trace::Outcome;
 
 /// What the per-pixel stages make of one covered centre.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct Decision {
     /// What happened.
     pub outcome: Outcome,
@@ -58,7 +58,7 @@ impl PixelStages for Plain {
 
     #[inline]
     fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision {
-        if self.test.passes(depth, stored) {
+        if self.test.passes(&depth, &stored) {
             let stored = depth.stored(self.store, self.depth_max);
             Decision { outcome: Outcome::Written, compared: depth, stored, frame: polygon.value }
         } else {
@@ -85,30 +85,24 @@ impl PixelStages for WithEffects<'_> {
     fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision {
         let scene = self.scene;
         let compared = match scene.effects.perspective {
-            Some(perspective) if perspective.store_w => perspective.eye_depth(depth),
+            Some(perspective) if perspective.store_w => perspective.eye_depth(&depth),
             _ => depth,
         };
-        let unchanged = |outcome| Decision { outcome, compared, stored, frame };
-        if scene.depth_range.is_some_and(|(front, rear)| compared.cmp_q(front).is_lt() || compared.cmp_q(rear).is_gt())
-        {
-            return unchanged(Outcome::OutsideDepthRange);
+        if scene.depth_range.is_some_and(|range| !compared.within(range)) {
+            return Decision { outcome: Outcome::OutsideDepthRange, compared, stored, frame };
         }
-        if !scene.depth_test.passes(compared, stored) {
-            return unchanged(Outcome::Hidden);
+        if !scene.depth_test.passes(&compared, &stored) {
+            return Decision { outcome: Outcome::Hidden, compared, stored, frame };
         }
-        if scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(compared, z)) {
-            return unchanged(Outcome::BeyondSection);
+        if scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(&compared, z)) {
+            return Decision { outcome: Outcome::BeyondSection, compared, stored, frame };
         }
         let frame = match polygon.opacity {
             Some(alpha) => blend(polygon.value, frame, alpha),
             None => polygon.value,
         };
-        Decision {
-            outcome: Outcome::Written,
-            compared,
-            stored: compared.stored(scene.rules.store, scene.depth_max()),
-            frame,
-        }
+        let stored = compared.stored(scene.rules.store, scene.depth_max());
+        Decision { outcome: Outcome::Written, compared, stored, frame }
     }
 }
 

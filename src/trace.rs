@@ -6,7 +6,7 @@
 use std::collections::BTreeMap;
 
 use crate::depth::{Depth, Stored, depth_at};
-use crate::exact::Q;
+use crate::exact::{Exact, Q};
 use crate::scan::{Crossing, Span};
 use crate::scene::{Polygon, Winding};
 
@@ -98,7 +98,7 @@ pub enum Outcome {
 }
 
 /// One covered pixel centre and what the depth test made of it.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct PixelEvent {
     /// 0-based polygon index.
     pub index: usize,
@@ -126,13 +126,14 @@ pub struct PixelEvent {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct SpanRecord {
     /// Left crossing `x_a`.
-    pub left: Q,
+    pub left: Exact,
     /// Right crossing `x_b`.
-    pub right: Q,
-    /// The plane's depth at `(x_a, y)` (seed 000's `z_a`); `None` when it does not fit `i128`.
-    pub left_depth: Option<Q>,
-    /// The plane's depth at `(x_b, y)` (`z_b`); `None` when it does not fit `i128`.
-    pub right_depth: Option<Q>,
+    pub right: Exact,
+    /// The plane's depth at `(x_a, y)` (seed 000's `z_a`); `None` when the
+    /// plane has no z term (never for a polygon that is drawn).
+    pub left_depth: Option<Exact>,
+    /// The plane's depth at `(x_b, y)` (`z_b`), as `left_depth`.
+    pub right_depth: Option<Exact>,
     /// The covered columns, if any.
     pub columns: Option<(u32, u32)>,
 }
@@ -145,7 +146,7 @@ pub struct ScanlineRecord {
     /// The pixel row.
     pub row: u32,
     /// The crossings, sorted, in pixel units.
-    pub crossings: Vec<Q>,
+    pub crossings: Vec<Exact>,
     /// The spans.
     pub spans: Vec<SpanRecord>,
     /// The covered pixels, left to right.
@@ -156,9 +157,9 @@ impl ScanlineRecord {
     /// Builds the record of a scanline event (pixels are added as they come).
     pub fn from_event(event: &ScanlineEvent<'_>) -> ScanlineRecord {
         let geometry = &event.polygon.geometry;
-        let y = Q::new(2 * i128::from(event.row) + 1, 2);
-        // Scanline events are only sent for drawn polygons, whose c ≠ 0; None only when too large.
-        let depth = |x: Q| depth_at(geometry, x, y);
+        let y = Exact::Word(Q::new(2 * i128::from(event.row) + 1, 2));
+        // Scanline events are only sent for drawn polygons, whose c ≠ 0.
+        let depth = |x: &Exact| depth_at(geometry, x, &y);
         ScanlineRecord {
             index: event.index,
             row: event.row,
@@ -169,10 +170,10 @@ impl ScanlineRecord {
                 .map(|span| {
                     let (left, right) = (span.left.x(), span.right.x());
                     SpanRecord {
+                        left_depth: depth(&left),
+                        right_depth: depth(&right),
                         left,
                         right,
-                        left_depth: depth(left),
-                        right_depth: depth(right),
                         columns: span.columns,
                     }
                 })
@@ -207,7 +208,7 @@ impl Observer for Recorder {
 
     fn pixel(&mut self, event: &PixelEvent) {
         if let Some(scanline) = self.scanlines.last_mut() {
-            scanline.pixels.push(*event);
+            scanline.pixels.push(event.clone());
         }
     }
 }
@@ -264,7 +265,7 @@ impl Observer for PixelWatcher {
 
     fn pixel(&mut self, event: &PixelEvent) {
         if let Some(entry) = self.watched.get_mut(&(event.y, event.x)).and_then(|h| h.last_mut()) {
-            entry.pixel = Some(*event);
+            entry.pixel = Some(event.clone());
         }
     }
 }

@@ -94,14 +94,15 @@ pub struct SegmentStats {
 /// final contents only so it can be shown and compared) and the statistics.
 pub fn run_segmented(scene: &Scene, segments: Segments) -> (Buffers, SegmentStats) {
     let stages = stages(scene);
-    let mut screen = Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth);
+    let mut screen =
+        Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth.clone());
     let rects = segments.rects(scene.width, scene.height);
     let mut stats = SegmentStats { segments: rects.len(), depth_cells: 0, polygon_visits: 0 };
     let mut scratch = Scratch::default();
     for rect in rects {
         let (w, h) = (rect.columns.1 - rect.columns.0 + 1, rect.rows.1 - rect.rows.0 + 1);
         stats.depth_cells = stats.depth_cells.max(u64::from(w) * u64::from(h));
-        let mut segment = Buffers::new(w, h, scene.frame_bits, scene.background, scene.clear_depth);
+        let mut segment = Buffers::new(w, h, scene.frame_bits, scene.background, scene.clear_depth.clone());
         for index in visited_in(scene, rect) {
             let polygon = &scene.polygons[index];
             stats.polygon_visits += 1;
@@ -215,13 +216,14 @@ pub struct InsideDifference {
 /// (pixel, polygon) whose inside test differs from the scanline rule.
 pub fn run_pixel_order(scene: &Scene, inside: Inside) -> (Buffers, Vec<InsideDifference>) {
     let stages = stages(scene);
-    let mut buffers = Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth);
+    let mut buffers =
+        Buffers::new(scene.width, scene.height, scene.frame_bits, scene.background, scene.clear_depth.clone());
     let drawn: Vec<usize> = (0..scene.polygons.len()).filter(|&i| fate(scene, i) == Fate::Drawn).collect();
     let mut differences = Vec::new();
     for y in 0..scene.height {
         for x in 0..scene.width {
             // The one depth variable (and frame value) of this pixel.
-            let (mut stored, mut frame) = (scene.clear_depth, scene.background);
+            let (mut stored, mut frame) = (scene.clear_depth.clone(), scene.background);
             for &index in &drawn {
                 let polygon = &scene.polygons[index];
                 let by_ray = ray_inside(polygon, x, y);
@@ -240,7 +242,7 @@ pub fn run_pixel_order(scene: &Scene, inside: Inside) -> (Buffers, Vec<InsideDif
                 }
                 let depth = depth_at_centre(&polygon.geometry, x, y);
                 let Decision { outcome, stored: after, frame: frame_after, .. } =
-                    stages.decide(polygon, depth, stored, frame);
+                    stages.decide(polygon, depth, stored.clone(), frame);
                 if outcome == Outcome::Written {
                     (stored, frame) = (after, frame_after);
                 }
@@ -345,7 +347,7 @@ fn arc_inside_from<T: Num + Ord + Clone>(points: &[[T; 2]]) -> (bool, ArcDiffere
 }
 
 /// Keeps every fragment of every pixel, for the back-to-front comparison.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 struct Fragment {
     index: usize,
     depth: Depth,
@@ -392,7 +394,7 @@ pub fn local_errors(scene: &Scene, drawn: &Buffers) -> Vec<LocalError> {
         let (x, y) = ((cell % width) as u32, (cell / width) as u32);
         // Back to front: farthest first by the depth test; among equal depths the later polygon first.
         list.sort_by(|a, b| {
-            let nearer = a.depth.cmp_depth(b.depth);
+            let nearer = a.depth.cmp_depth(&b.depth);
             let farther_first = if scene.depth_test.larger_is_nearer() { nearer } else { nearer.reverse() };
             farther_first.then(b.index.cmp(&a.index))
         });
@@ -432,13 +434,12 @@ impl RasterSink for CollectSink<'_> {
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
         let scene = self.scene;
         let depth = match scene.effects.perspective {
-            Some(p) if p.store_w => p.eye_depth(depth),
+            Some(p) if p.store_w => p.eye_depth(&depth),
             _ => depth,
         };
         // Fragments the depth range or the cross-section discard never show.
-        let outside =
-            scene.depth_range.is_some_and(|(front, rear)| depth.cmp_q(front).is_lt() || depth.cmp_q(rear).is_gt());
-        if outside || scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(depth, z)) {
+        let outside = scene.depth_range.is_some_and(|range| !depth.within(range));
+        if outside || scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(&depth, z)) {
             return;
         }
         self.fragments[y as usize * self.width + x as usize].push(Fragment { index: self.index, depth });

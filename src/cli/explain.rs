@@ -199,7 +199,7 @@ fn antialias_text(scene: &Scene, settings: zsim::scene::Antialias, (x, y): (u32,
     } else {
         for note in &notes {
             let samples: Vec<String> = note.samples.iter().map(|(i, j)| format!("({i}, {j})")).collect();
-            let d = note.decision;
+            let d = &note.decision;
             let result = match d.outcome {
                 zsim::trace::Outcome::Written => {
                     zsim::words!("explain-pixel-mode-written", stored = d.stored.to_string())
@@ -221,7 +221,7 @@ fn antialias_text(scene: &Scene, settings: zsim::scene::Antialias, (x, y): (u32,
         let line = zsim::words!(
             "explain-mean",
             frame = zsim::exact::fraction(last.frame[row][x as usize]),
-            depth = zsim::exact::fraction(last.depth[row][x as usize])
+            depth = zsim::exact::fraction(&last.depth[row][x as usize])
         );
         text.push_str(&format!("{line}\n"));
     }

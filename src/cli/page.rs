@@ -42,13 +42,13 @@ pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {
                 zsim::words!(
                     "tui-span",
                     n = (i + 1).to_string(),
-                    left = exact_and_decimal(s.left),
-                    right = exact_and_decimal(s.right),
+                    left = exact_and_decimal(&s.left),
+                    right = exact_and_decimal(&s.right),
                     columns = columns
                 )
             })
             .collect();
-        let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(*x)).collect();
+        let crossings: Vec<String> = record.crossings.iter().map(exact_and_decimal).collect();
         stops.push(serde_json::json!({
             "polygon": p, "heading": report::polygon_heading(scene, p), "row": record.row,
             "scanline": zsim::words!("step-scanline", scanline = scanline_text(record.row), row = record.row.to_string()),

@@ -8,7 +8,7 @@ use clap::Args;
 use comfy_table::{Cell, Color, Table, presets};
 use zsim::buffer::Buffers;
 use zsim::error::Error;
-use zsim::exact::{Q, exact_and_decimal, fraction};
+use zsim::exact::{Exact, Q, exact_and_decimal, fraction};
 use zsim::explain::{depth_text, fate_text, pixel_reason, polygon_name, scanline_text};
 use zsim::pipeline::Simulation;
 use zsim::report::{self, MatrixStyle};
@@ -143,7 +143,7 @@ impl<'s> Tracer<'s> {
         for (j, record) in trace.scanlines[..=k].iter().enumerate() {
             let count = if j == k { pixels.min(record.pixels.len()) } else { record.pixels.len() };
             for pixel in &record.pixels[..count] {
-                buffers.store(pixel.x, pixel.y, pixel.frame_after, pixel.stored_after);
+                buffers.store(pixel.x, pixel.y, pixel.frame_after, pixel.stored_after.clone());
             }
         }
         buffers
@@ -415,7 +415,7 @@ pub(super) fn judge(pixel: &PixelEvent, typed: &str) -> Option<(bool, Meant)> {
         return Some((!written, Meant::NotWritten));
     }
     let value = zsim::exact::parse_number(typed).ok()?;
-    Some(match value == pixel.stored_after.value() {
+    Some(match zsim::exact::Exact::Word(value) == pixel.stored_after.value() {
         true if written => (true, Meant::ValueWritten),
         true => (true, Meant::ValueKept),
         false => (false, Meant::Value),
@@ -540,7 +540,7 @@ fn ask(
         let spans: Vec<String> = record
             .spans
             .iter()
-            .map(|s| zsim::words!("span", left = exact_and_decimal(s.left), right = exact_and_decimal(s.right)))
+            .map(|s| zsim::words!("span", left = exact_and_decimal(&s.left), right = exact_and_decimal(&s.right)))
             .collect();
         let why = zsim::words!("quiz-coverage-why", spans = spans.join(&zsim::words!("list-comma")));
         let verdict = state.score(columns.1 == covered, || {
@@ -635,13 +635,13 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
     let scene = tracer.scene;
     let record = tracer.trace(p).scanlines[k].clone();
     let geometry = &scene.polygons[p].geometry;
-    let [a, _, c] = geometry.normal;
+    let slope = geometry.slope().map_or_else(String::new, fraction);
     let mut text = format!("\n── {}\n", report::polygon_heading(scene, p));
     text.push_str(&antialias_note(scene));
-    text.push_str(&format!("   {}\n", zsim::words!("step-slope", slope = fraction(Q::new(-a, c)))));
+    text.push_str(&format!("   {}\n", zsim::words!("step-slope", slope = slope)));
     let heading = zsim::words!("step-scanline", scanline = scanline_text(record.row), row = record.row.to_string());
     text.push_str(&format!("{heading}\n"));
-    let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(*x)).collect();
+    let crossings: Vec<String> = record.crossings.iter().map(exact_and_decimal).collect();
     let list = if crossings.is_empty() {
         zsim::words!("step-crossings-none")
     } else {
@@ -655,14 +655,14 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
             }
             None => zsim::words!("step-no-column"),
         };
-        let depth = |z: Option<Q>| z.map_or_else(|| zsim::words!("z-beyond"), |z| depth_text(scene, z));
+        let depth = |z: &Option<Exact>| z.as_ref().map_or_else(|| zsim::words!("z-beyond"), |z| depth_text(scene, z));
         let line = zsim::words!(
             "step-span",
             n = (n + 1).to_string(),
-            xa = exact_and_decimal(span.left),
-            za = depth(span.left_depth),
-            xb = exact_and_decimal(span.right),
-            zb = depth(span.right_depth),
+            xa = exact_and_decimal(&span.left),
+            za = depth(&span.left_depth),
+            xb = exact_and_decimal(&span.right),
+            zb = depth(&span.right_depth),
             columns = columns
         );
         text.push_str(&format!("{line}\n"));
@@ -753,28 +753,25 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
     let op = depth_test.symbol();
     for (i, pixel) in pixels.iter().enumerate() {
         let z = pixel.depth.value();
-        let step = match i.checked_sub(1).map(|j| pixels[j]) {
-            Some(previous) if previous.x + 1 == pixel.x => {
-                use num_traits::CheckedSub;
-                z.checked_sub(&previous.depth.value()).map_or_else(|| zsim::words!("step-beyond"), fraction)
-            }
+        let step = match i.checked_sub(1).map(|j| &pixels[j]) {
+            Some(previous) if previous.x + 1 == pixel.x => fraction(z.minus(&previous.depth.value())),
             _ => zsim::words!("step-start"),
         };
         // `always` and `never` compare nothing: they say so instead of a symbol.
-        let uncompared = |passed| depth_test.outcome_text(&fraction(z), &pixel.stored_before.to_string(), passed);
+        let uncompared = |passed| depth_test.outcome_text(&fraction(&z), &pixel.stored_before.to_string(), passed);
         let test = match pixel.outcome {
             Outcome::Written if !depth_test.compares() => zsim::words!("step-written", test = uncompared(true)),
             Outcome::Hidden if !depth_test.compares() => zsim::words!("step-hidden", test = uncompared(false)),
             Outcome::Written => {
-                zsim::words!("step-test-written", z = fraction(z), op = op, stored = pixel.stored_before.to_string())
+                zsim::words!("step-test-written", z = fraction(&z), op = op, stored = pixel.stored_before.to_string())
             }
             Outcome::Hidden => {
-                zsim::words!("step-test-hidden", z = fraction(z), op = op, stored = pixel.stored_before.to_string())
+                zsim::words!("step-test-hidden", z = fraction(&z), op = op, stored = pixel.stored_before.to_string())
             }
             Outcome::BeyondSection => {
                 zsim::words!("step-beyond-section", op = op, stored = pixel.stored_before.to_string())
             }
-            Outcome::OutsideDepthRange => zsim::words!("step-outside-range", z = fraction(z)),
+            Outcome::OutsideDepthRange => zsim::words!("step-outside-range", z = fraction(&z)),
         };
         let mut test = Cell::new(test);
         if color {
@@ -783,12 +780,12 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
         table.add_row(vec![
             Cell::new(pixel.x),
             Cell::new(exact_and_decimal(Q::new(2 * i128::from(pixel.x) + 1, 2))),
-            Cell::new(fraction(z)),
+            Cell::new(fraction(&z)),
             Cell::new(zsim::words::localize_decimal(zsim::exact::decimal(z, 2))),
             Cell::new(step),
-            Cell::new(pixel.stored_before),
+            Cell::new(&pixel.stored_before),
             test,
-            Cell::new(pixel.stored_after),
+            Cell::new(&pixel.stored_after),
             Cell::new(pixel.frame_after),
         ]);
     }

@@ -159,7 +159,7 @@ impl<'t, 's> App<'t, 's> {
             }
             KeyCode::Enter if !quiz.typed.is_empty() => {
                 let done = self.pixel.unwrap_or(0);
-                let pixel = record.pixels[done];
+                let pixel = record.pixels[done].clone();
                 let typed = std::mem::take(&mut quiz.typed);
                 let right = super::step::judge(&pixel, &typed).is_some_and(|(right, _)| right);
                 quiz.asked += 1;
@@ -314,7 +314,7 @@ impl<'t, 's> App<'t, 's> {
             zsim::words!("tui-verdict-next", verdict = verdict)
         } else if self.quiz.is_some() && self.asking() {
             let record = record.as_ref().expect("asking implies a scanline");
-            let pixel = record.pixels[self.pixel.unwrap_or(0)];
+            let pixel = &record.pixels[self.pixel.unwrap_or(0)];
             let typed = self.quiz.as_ref().map_or("", |q| q.typed.as_str());
             zsim::words!(
                 "tui-quiz-ask",
@@ -403,17 +403,17 @@ impl<'t, 's> App<'t, 's> {
             return vec![Line::from(zsim::words!("tui-end"))];
         };
         let geometry = &scene.polygons[p].geometry;
-        let [a, _, c] = geometry.normal;
+        let slope = geometry.slope().map_or_else(String::new, fraction);
         let mut lines = vec![
             Line::styled(report::polygon_heading(scene, p), Style::new().add_modifier(Modifier::BOLD)),
-            Line::from(zsim::words!("tui-slope", slope = fraction(Q::new(-a, c)))),
+            Line::from(zsim::words!("tui-slope", slope = slope)),
             Line::from(zsim::words!(
                 "step-scanline",
                 scanline = scanline_text(record.row),
                 row = record.row.to_string()
             )),
         ];
-        let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(*x)).collect();
+        let crossings: Vec<String> = record.crossings.iter().map(exact_and_decimal).collect();
         lines.push(Line::from(zsim::words!("step-crossings", list = crossings.join(&zsim::words!("list-comma")))));
         for (i, span) in record.spans.iter().enumerate() {
             let columns = span.columns.map_or_else(
@@ -423,8 +423,8 @@ impl<'t, 's> App<'t, 's> {
             lines.push(Line::from(zsim::words!(
                 "tui-span",
                 n = (i + 1).to_string(),
-                left = exact_and_decimal(span.left),
-                right = exact_and_decimal(span.right),
+                left = exact_and_decimal(&span.left),
+                right = exact_and_decimal(&span.right),
                 columns = columns
             )));
         }
@@ -464,7 +464,7 @@ impl<'t, 's> App<'t, 's> {
         let first_z = record.pixels.first().map(|e| e.depth.value());
         for pixel in shown {
             let z = pixel.depth.value();
-            let step = match first_z {
+            let step = match &first_z {
                 Some(start) if pixel.x > record.pixels[0].x => {
                     let count = (pixel.x - record.pixels[0].x).to_string();
                     zsim::words!("tui-steps-from", count = count, start = fraction(start))

@@ -24,8 +24,8 @@ pub struct Variant {
     pub final_only: bool,
 }
 
-fn exact_json(rows: &[Vec<zsim::exact::Q>]) -> serde_json::Value {
-    rows.iter().map(|row| row.iter().map(|q| zsim::report::exact_json(*q)).collect::<Vec<_>>()).collect()
+fn exact_json<T: Into<zsim::exact::Exact> + Clone>(rows: &[Vec<T>]) -> serde_json::Value {
+    rows.iter().map(|row| row.iter().map(|v| zsim::report::exact_json(v.clone())).collect::<Vec<_>>()).collect()
 }
 
 fn buffers_json(scene: &Scene, name: &str, buffers: &Buffers) -> serde_json::Value {

@@ -69,18 +69,6 @@ fn bad_scenes_are_refused_with_one_line_each() {
             r#"{"polygons": [{"name": "bent", "value": 1, "vertices": [["13", "-8.965147458463", "19"], ["4.36427322", "97/621", "4.601918766151"], ["-7.3178342886648", "33/600", "-4"], ["8.4723050710231", "3.0701032506", "-7.2743050146027"]]}]}"#.into(),
         ),
         (
-            // 30-digit coordinates: the plane's coefficients pass 128 bits.
-            "too_large_for_exact.json",
-            r#"{"polygons": [{"name": "huge", "value": 1, "vertices": [[0,0,0],[123456789012345678901234567890,7,3],[5,987654321098765432109876543211,11]]}]}"#.into(),
-        ),
-        (
-            // Two denominators whose lcm outgrows 128 bits (it used to overflow): drawn on the big
-            // tier but for its edge from (1/288230376151711717, 0) to (1/10^29 + 1, 4), whose line
-            // has coefficients beyond 128 bits.
-            "coprime_denominators.json",
-            r#"{"polygons": [{"name": "coprime", "value": 1, "vertices": [["1/288230376151711717", 0, 0], ["1/100000000000000000000000000001", 4, 0], [0, 4, 0]]}]}"#.into(),
-        ),
-        (
             // Clipping 30-digit clip-space coordinates gives raster vertices beyond 128-bit fractions.
             "clip_space_too_fine.json",
             r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [["0.123456789012345678901234567891", "0.2", "0.3", "1"], ["5", "0.1", "0.2", "1"], ["0.1", "7", "0.1", "0.999999999999999999999999999999"]]}]}"#.into(),

@@ -188,12 +188,15 @@ fn cases_in_trace(scene: &Scene) -> Vec<&'static str> {
     let centre_on_edge = recorder
         .scanlines
         .iter()
-        .any(|s| s.pixels.iter().any(|p| s.crossings.contains(&(Q::from_integer(i128::from(p.x)) + half))));
+        .any(|s| s.pixels.iter().any(|p| s.crossings.iter().any(|c| *c == Q::from_integer(i128::from(p.x)) + half)));
     let pixels: Vec<_> = recorder.scanlines.iter().flat_map(|s| s.pixels.iter()).collect();
-    let half_depth = pixels.iter().any(|p| p.compared.value() - p.compared.value().floor() == half);
+    let half_depth = pixels.iter().any(|p| {
+        let z = p.compared.value().to_big();
+        z.clone() - z.floor() == num_rational::BigRational::new(1.into(), 2.into())
+    });
     let saturation = pixels.iter().any(|p| {
         p.outcome == Outcome::Written
-            && (p.compared.rounded() < 0 || p.compared.rounded() > i128::from(scene.depth_max()))
+            && (p.compared.rounded() < 0.into() || p.compared.rounded() > scene.depth_max().into())
     });
     let hidden = pixels.iter().any(|p| p.outcome == Outcome::Hidden);
     // Intersecting: a later polygon both overwrites and is hidden by the same earlier one.

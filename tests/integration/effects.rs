@@ -181,7 +181,8 @@ fn one_sample_per_pixel_is_the_plain_z_buffer() {
                 .map(|r| r.into_iter().map(|v| zsim::exact::Q::from_integer(i128::from(v))).collect())
                 .collect()
         };
-        let depth_q: Vec<Vec<zsim::exact::Q>> = depth.iter().map(|r| r.iter().map(|v| v.value()).collect()).collect();
+        let depth_q: Vec<Vec<zsim::exact::Exact>> =
+            depth.iter().map(|r| r.iter().map(|v| v.value()).collect()).collect();
         for depth_at_samples in [true, false] {
             let pictures = antialias::run(&scene, Antialias { samples: 1, depth_at_samples }).unwrap();
             if let Some(last) = pictures.last() {

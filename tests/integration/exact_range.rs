@@ -103,7 +103,7 @@ fn clipped_clip_space_triangles_are_drawn_exactly() {
                         panic!("case {case}: ({column}, {row}) drawn outside the triangle or the view volume: {json}")
                     };
                     let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store") };
-                    let stored = BigRational::new(BigInt::from(*stored.numer()), BigInt::from(*stored.denom()));
+                    let stored = stored.to_big();
                     assert_eq!(stored, depth, "case {case}: ({column}, {row})");
                 } else {
                     let strictly = expected.is_some_and(|(strictly, _)| strictly);
@@ -114,4 +114,132 @@ fn clipped_clip_space_triangles_are_drawn_exactly() {
     }
     assert_eq!(big, 70, "drawn on the big-integer tier");
     assert_eq!(covered, 3070, "pixels covered");
+}
+
+/// A number `whole + 0.ddd…` with `places` random decimals, as text.
+fn many_digits(random: &mut Xorshift, whole: std::ops::Range<i64>, places: usize) -> String {
+    let whole = random.decimal(whole.start * 1000, whole.end * 1000 - 1000).split('.').next().unwrap().to_string();
+    let digits: String = (0..places).map(|_| random.decimal(0, 9).chars().nth(4).unwrap()).collect();
+    format!("{whole}.{digits}")
+}
+
+/// Whether the centre of `(column, row)` lies in the triangle (edges
+/// included) and strictly inside it, and the depth of its plane there, in
+/// big rationals (barycentric weights by Cramer's rule).
+fn in_triangle(v: &[[BigRational; 3]], column: u32, row: u32) -> Option<(bool, BigRational)> {
+    let half = |i: u32| BigRational::new(BigInt::from(2 * i + 1), BigInt::from(2));
+    let (cx, cy) = (half(column), half(row));
+    let side = |i: usize| {
+        let (a, b) = (&v[i], &v[(i + 1) % 3]);
+        (&b[0] - &a[0]) * (&cy - &a[1]) - (&b[1] - &a[1]) * (&cx - &a[0])
+    };
+    let sides: Vec<BigRational> = (0..3).map(side).collect();
+    let inside = sides.iter().all(|s| !s.is_negative()) || sides.iter().all(|s| !s.is_positive());
+    if !inside {
+        return None;
+    }
+    let det = (&v[1][0] - &v[0][0]) * (&v[2][1] - &v[0][1]) - (&v[2][0] - &v[0][0]) * (&v[1][1] - &v[0][1]);
+    let w1 = ((&cx - &v[0][0]) * (&v[2][1] - &v[0][1]) - (&v[2][0] - &v[0][0]) * (&cy - &v[0][1])) / &det;
+    let w2 = ((&v[1][0] - &v[0][0]) * (&cy - &v[0][1]) - (&cx - &v[0][0]) * (&v[1][1] - &v[0][1])) / &det;
+    let z = &v[0][2] + w1 * (&v[1][2] - &v[0][2]) + w2 * (&v[2][2] - &v[0][2]);
+    Some((sides.iter().all(|s| !s.is_zero()), z))
+}
+
+/// Triangles given with 7 to 28 decimals (up to the 30 significant digits a
+/// number may have): from about 14 significant digits their planes, and so
+/// their depths, outgrow 128 bits (they were refused as too large for exact
+/// arithmetic before). Every one is drawn: each covers only centres inside
+/// the triangle, with exactly its plane's depth there (computed apart in big
+/// rationals), and every centre strictly inside.
+#[test]
+fn triangles_with_many_significant_digits_are_drawn_exactly() {
+    let mut random = Xorshift(0x9e37_79b9_7f4a_7c15);
+    let (mut covered, mut beyond) = (0, 0);
+    for (case, places) in [7, 10, 12, 14, 16, 17, 20, 24, 28].iter().cycle().take(27).enumerate() {
+        let vertices: Vec<[String; 3]> = (0..3)
+            .map(|_| {
+                [
+                    many_digits(&mut random, 0..16, *places),
+                    many_digits(&mut random, 0..16, *places),
+                    many_digits(&mut random, 1..9, *places),
+                ]
+            })
+            .collect();
+        let json = format!(
+            r#"{{"width": {SIZE}, "height": {SIZE}, "rules": {{"store": "exact"}}, "polygons": [{{"value": 1, "vertices": {}}}]}}"#,
+            serde_json::to_string(&vertices).unwrap()
+        );
+        let scene = Scene::from_json(&json, Path::new("digits.json")).unwrap_or_else(|e| panic!("case {case}: {e}"));
+        let mut simulation = Simulation::new(&scene);
+        simulation.finish(&mut Unobserved);
+        let buffers = simulation.buffers();
+        let exact = |text: &str| {
+            let (whole, digits) = text.split_once('.').unwrap();
+            BigRational::new(format!("{whole}{digits}").parse().unwrap(), BigInt::from(10).pow(digits.len() as u32))
+        };
+        let v: Vec<[BigRational; 3]> = vertices.iter().map(|p| p.each_ref().map(|c| exact(c))).collect();
+        for row in 0..SIZE {
+            for column in 0..SIZE {
+                let expected = in_triangle(&v, column, row);
+                if buffers.frame(column, row) == 1 {
+                    covered += 1;
+                    let Some((_, depth)) = expected else {
+                        panic!("case {case}: ({column}, {row}) drawn outside: {json}")
+                    };
+                    let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store") };
+                    beyond += usize::from(stored.word().is_none());
+                    assert_eq!(stored.to_big(), depth, "case {case}: ({column}, {row})");
+                } else {
+                    let strictly = expected.is_some_and(|(strictly, _)| strictly);
+                    assert!(!strictly, "case {case}: ({column}, {row}) strictly inside but not drawn: {json}");
+                }
+            }
+        }
+    }
+    assert_eq!((covered, beyond), (505, 326), "pixels covered, and of them with depths beyond 128 bits");
+}
+
+/// Two polygons that were refused as too large for exact arithmetic (the
+/// bad-input snapshot held them until the reports went beyond 128 bits):
+/// 30-digit coordinates, whose plane passes 128 bits, and two denominators
+/// whose lcm does, with an edge whose line does. Drawn, each covered centre
+/// inside with its plane's depth, every centre strictly inside covered.
+#[test]
+fn polygons_once_refused_as_too_large_are_drawn_exactly() {
+    let cases = [
+        (r#"[[0,0,0],["123456789012345678901234567890",7,3],[5,"987654321098765432109876543211",11]]"#, 256),
+        (
+            r#"[["1/288230376151711717", 0, 0], ["800000000000000000000000000009/100000000000000000000000000001", 4, 0], [0, 4, 3]]"#,
+            16,
+        ),
+    ];
+    for (vertices, expected) in cases {
+        let json = format!(
+            r#"{{"width": {SIZE}, "height": {SIZE}, "depth_test": "always", "rules": {{"store": "exact"}}, "polygons": [{{"value": 1, "vertices": {vertices}}}]}}"#
+        );
+        let scene = Scene::from_json(&json, Path::new("large.json")).unwrap_or_else(|e| panic!("{e}"));
+        let mut simulation = Simulation::new(&scene);
+        simulation.finish(&mut Unobserved);
+        let buffers = simulation.buffers();
+        let v: Vec<[BigRational; 3]> = scene.polygons[0]
+            .vertices
+            .iter()
+            .map(|p| p.map(|q| BigRational::new(BigInt::from(*q.numer()), BigInt::from(*q.denom()))))
+            .collect();
+        let mut covered = 0;
+        for row in 0..SIZE {
+            for column in 0..SIZE {
+                let inside = in_triangle(&v, column, row);
+                if buffers.frame(column, row) == 1 {
+                    covered += 1;
+                    let Some((_, depth)) = inside else { panic!("({column}, {row}) drawn outside: {json}") };
+                    let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store") };
+                    assert_eq!(stored.to_big(), depth, "({column}, {row}) of {vertices}");
+                } else {
+                    assert!(!inside.is_some_and(|(strictly, _)| strictly), "({column}, {row}) of {vertices} not drawn");
+                }
+            }
+        }
+        assert_eq!(covered, expected, "{vertices}");
+    }
 }
