@@ -82,8 +82,6 @@ pub enum PolygonProblem {
     /// Mapping its vertices onto the raster gives numbers beyond 128-bit
     /// fractions.
     MappedOutOfRange(Mapping),
-    /// The w-buffer's exact arithmetic cannot hold its projected coordinates.
-    TooFineForW,
 }
 
 /// How a polygon's vertices reach the raster.
@@ -119,7 +117,6 @@ impl fmt::Display for PolygonProblem {
                 };
                 f.write_str(&words!("polygon-mapped-out-of-range", stage = stage))
             }
-            PolygonProblem::TooFineForW => f.write_str(&words!("polygon-w-too-fine")),
         }
     }
 }

@@ -108,13 +108,21 @@ impl Perspective {
         Some([map(v[0], width)?, map(v[1], height)?, v[2].checked_mul(&scale)?])
     }
 
-    /// The eye-space depth for a projected depth: `z = d·z'/(d + z')`.
-    /// The caller guarantees the products fit (see `scene`'s check on w).
+    /// The eye-space depth for a projected depth: `z = d·z'/(d + z')`, in
+    /// 128 bits where the products fit, else in big integers. A projected
+    /// depth of a polygon in front of the eye has `d + z' > 0`.
     pub fn eye_depth(&self, projected: &Depth) -> Depth {
         let (p, q) = (*self.distance.numer(), *self.distance.denom());
-        match projected.fraction() {
-            // z = (p/q)(n/den) / (p/q + n/den) = p·n / (p·den + q·n).
-            Some((n, den)) => Depth::from_fraction(p * n, p * den + q * n),
+        // z = (p/q)(n/den) / (p/q + n/den) = p·n / (p·den + q·n).
+        let words = |(n, den): (i128, i128)| {
+            let denominator = p.checked_mul(den)?.checked_add(q.checked_mul(n)?)?;
+            let numerator = p.checked_mul(n)?;
+            // Within the bounds every 128-bit depth keeps (`Depth::from_big`).
+            (numerator.unsigned_abs() < 1 << 125 && denominator.unsigned_abs() < 1 << 124)
+                .then(|| Depth::from_fraction(numerator, denominator))
+        };
+        match projected.fraction().and_then(words) {
+            Some(depth) => depth,
             None => {
                 let z = projected.value().to_big();
                 let distance = Exact::Word(self.distance).to_big();

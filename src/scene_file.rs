@@ -410,12 +410,8 @@ impl SceneFile {
                     near: p.near.0,
                     store_w: matches!(p.store, Some(StoreFile::W)),
                 };
-                let small = |v: Q| v.numer().abs() <= 1 << 20 && *v.denom() <= 1 << 20;
                 if perspective.distance <= Q::from_integer(0) || perspective.near <= Q::from_integer(0) {
                     return Err(setting("effects", words!("setting-perspective-positive")));
-                }
-                if !small(perspective.distance) || !small(perspective.near) {
-                    return Err(setting("effects", words!("setting-perspective-small")));
                 }
                 Some(perspective)
             }
@@ -574,27 +570,8 @@ impl PolygonFile {
             }
         };
         let geometry = Geometry::new(&vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
-        if let Some(perspective) = frame.perspective
-            && perspective.store_w
-            && !w_fits(&geometry)
-        {
-            return Err(fail(&name, PolygonProblem::TooFineForW));
-        }
         Ok(Polygon { name, value: self.value as u32, vertices, geometry, opacity, eye_vertices, clip })
     }
-}
-
-/// Whether the w-buffer's `p·n / (p·den + q·n)` fits `i128` for every pixel of
-/// this geometry: the depth numerator is below `20·n·R³` (see `plane`), and
-/// `p, q ≤ 2^20`.
-fn w_fits(geometry: &Geometry) -> bool {
-    if geometry.is_big() {
-        return false;
-    }
-    let bits = |v: u128| 128 - v.leading_zeros();
-    let r = geometry.points.iter().flatten().map(|v| v.unsigned_abs()).max().unwrap_or(0).max(1);
-    let n = geometry.points.len() as u128;
-    3 * bits(r) + bits(20 * n) + 21 <= 125
 }
 
 /// A polygon given in clip space: clipped, divided and mapped by the viewport

@@ -243,3 +243,57 @@ fn polygons_once_refused_as_too_large_are_drawn_exactly() {
         assert_eq!(covered, expected, "{vertices}");
     }
 }
+
+/// A w-buffer on a polygon of many significant digits (refused before as
+/// "too fine for the w-buffer's exact arithmetic"), with a distance beyond
+/// 2^20 (refused before too): each covered centre stores the eye-space depth
+/// `d·z'/(d + z')` of the projected plane's `z'` there, computed apart in
+/// big rationals from the projection `x' = c + (x − c)·d/(d − z)`,
+/// `z' = z·d/(d − z)`.
+#[test]
+fn a_w_buffer_stores_eye_depths_beyond_128_bits_exactly() {
+    let vertices = [
+        ["3.1234567890123456789", "2.9876543210987654321", "-5.5555555555555555551"],
+        ["13.123456789012345678", "4.1111111111111111111", "-9.8765432109876543219"],
+        ["7.7777777777777777777", "13.987654321098765432", "-2.2222222222222222229"],
+    ];
+    let distance = "2000003/2";
+    let json = format!(
+        r#"{{"width": {SIZE}, "height": {SIZE}, "depth_test": "always", "rules": {{"store": "exact"}}, "effects": {{"perspective": {{"distance": "{distance}", "near": 1, "store": "w"}}}}, "polygons": [{{"value": 1, "vertices": {}}}]}}"#,
+        serde_json::to_string(&vertices).unwrap()
+    );
+    let scene = Scene::from_json(&json, Path::new("w.json")).unwrap_or_else(|e| panic!("{e}"));
+    let mut simulation = Simulation::new(&scene);
+    simulation.finish(&mut Unobserved);
+    let buffers = simulation.buffers();
+    let exact = |text: &str| {
+        let (whole, digits) = text.split_once('.').unwrap();
+        BigRational::new(format!("{whole}{digits}").parse().unwrap(), BigInt::from(10).pow(digits.len() as u32))
+    };
+    let d = BigRational::new(BigInt::from(2_000_003), BigInt::from(2));
+    let centre = BigRational::new(BigInt::from(SIZE), BigInt::from(2));
+    let projected: Vec<[BigRational; 3]> = vertices
+        .iter()
+        .map(|v| {
+            let [x, y, z] = v.each_ref().map(|c| exact(c));
+            let scale = &d / (&d - &z);
+            [&centre + (x - &centre) * &scale, &centre + (y - &centre) * &scale, z * scale]
+        })
+        .collect();
+    let (mut covered, mut beyond) = (0, 0);
+    for row in 0..SIZE {
+        for column in 0..SIZE {
+            let inside = in_triangle(&projected, column, row);
+            if buffers.frame(column, row) == 1 {
+                covered += 1;
+                let Some((_, z)) = inside else { panic!("({column}, {row}) drawn outside") };
+                let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store") };
+                beyond += usize::from(stored.word().is_none());
+                assert_eq!(stored.to_big(), &d * &z / (&d + &z), "({column}, {row})");
+            } else {
+                assert!(!inside.is_some_and(|(strictly, _)| strictly), "({column}, {row}) not drawn");
+            }
+        }
+    }
+    assert_eq!((covered, beyond), (53, 53), "pixels covered, and of them with depths beyond 128 bits");
+}
