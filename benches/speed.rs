@@ -160,7 +160,7 @@ fn euc_vertices(scene: &Scene) -> Vec<([f32; 4], u8)> {
         .iter()
         .flat_map(|p| {
             p.vertices.iter().map(move |v| {
-                let [x, y, z] = v.map(zsim::exact::to_f64);
+                let [x, y, z] = v.each_ref().map(zsim::exact::to_f64);
                 ([(2.0 * x / w - 1.0) as f32, (2.0 * y / h - 1.0) as f32, z as f32, 1.0], p.value as u8)
             })
         })

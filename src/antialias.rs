@@ -15,11 +15,9 @@
 
 use std::collections::BTreeMap;
 
-use num_traits::CheckedMul;
-
 use crate::buffer::Buffers;
 use crate::depth::{Depth, depth_at_centre};
-use crate::error::{Error, Mapping, PolygonProblem};
+use crate::error::{Error, PolygonProblem};
 use crate::exact::{Exact, Q};
 use crate::pipeline::{PixelRect, RasterSink, Scratch, Simulation, fate, rasterize};
 use crate::plane::Geometry;
@@ -44,7 +42,7 @@ pub fn supersampled(scene: &Scene, k: u32) -> Result<Scene, Error> {
     let mut big = scene.clone();
     big.width = scene.width * k;
     big.height = scene.height * k;
-    let factor = Q::from_integer(i128::from(k));
+    let factor = i128::from(k);
     for (index, polygon) in big.polygons.iter_mut().enumerate() {
         if polygon.vertices.is_empty() {
             // Clipped away in clip space: nothing on the raster to scale.
@@ -56,11 +54,9 @@ pub fn supersampled(scene: &Scene, k: u32) -> Result<Scene, Error> {
             name: polygon.name.clone(),
             problem: Box::new(problem),
         };
-        let scaled =
-            polygon.vertices.iter().map(|v| Some([v[0].checked_mul(&factor)?, v[1].checked_mul(&factor)?, v[2]]));
-        let vertices = scaled.collect::<Option<Vec<_>>>();
-        let vertices = vertices.ok_or_else(|| fail(PolygonProblem::MappedOutOfRange(Mapping::Supersampled)))?;
-        polygon.geometry = Geometry::new(&vertices).map_err(|e| fail(PolygonProblem::Geometry(e)))?;
+        let vertices: Vec<[Exact; 3]> =
+            polygon.vertices.iter().map(|v| [v[0].times(factor), v[1].times(factor), v[2].clone()]).collect();
+        polygon.geometry = Geometry::from_exact(&vertices).map_err(|e| fail(PolygonProblem::Geometry(e)))?;
         polygon.vertices = vertices;
     }
     Ok(big)

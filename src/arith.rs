@@ -19,11 +19,14 @@
 use std::fmt;
 use std::hint::select_unpredictable;
 
+use num_bigint::BigInt;
+use num_rational::BigRational;
 use num_traits::{AsPrimitive, Float, Num, Signed};
 
 use crate::buffer::{Buffers, FrameCell, LevelCells};
+use crate::depth::depth_at;
 use crate::error::{Error, PolygonProblem};
-use crate::exact::{Q, to_f64};
+use crate::exact::{Exact, to_f64};
 use crate::pipeline::{Simulation, Stats, fate};
 use crate::plane::Geometry;
 use crate::rules::{Preset, Rules};
@@ -191,18 +194,28 @@ fn prepare_edges(scene: &Scene) -> Vec<Option<EdgeShape>> {
 }
 
 /// The scene with every x and y rounded to the nearest multiple of 2^−bits
-/// (halves up), as fixed-point hardware snaps vertices; z is kept.
+/// (halves up), as fixed-point hardware snaps vertices. A triangle keeps
+/// each vertex's z, as hardware does; a polygon of more vertices (which
+/// hardware would split into triangles, and which snapping would bend out
+/// of its plane) takes at each snapped vertex the depth of its own plane
+/// there, so it stays one plane.
 pub fn snap(scene: &Scene, bits: u32) -> Result<Scene, Error> {
-    let unit = Q::from_integer(1 << bits);
-    let round = |v: Q| ((v * unit) + Q::new(1, 2)).floor() / unit;
+    // ⌊v·2^bits + 1/2⌋ / 2^bits, in big rationals (a clipped vertex may not fit 128 bits).
+    let unit = BigRational::from_integer(BigInt::from(1) << bits);
+    let half = BigRational::new(BigInt::from(1), BigInt::from(2));
+    let round = |v: &Exact| Exact::from((v.to_big() * &unit + &half).floor() / &unit);
     let mut snapped = scene.clone();
     for (index, polygon) in snapped.polygons.iter_mut().enumerate() {
         if polygon.vertices.is_empty() {
             // Clipped away in clip space: nothing on the raster to snap.
             continue;
         }
-        polygon.vertices = polygon.vertices.iter().map(|v| [round(v[0]), round(v[1]), v[2]]).collect();
-        polygon.geometry = Geometry::new(&polygon.vertices).map_err(|e| Error::Polygon {
+        let on_plane = |x: Exact, y: Exact, z: &Exact| {
+            let kept = if polygon.vertices.len() > 3 { depth_at(&polygon.geometry, &x, &y) } else { None };
+            [x, y, kept.unwrap_or_else(|| z.clone())]
+        };
+        polygon.vertices = polygon.vertices.iter().map(|v| on_plane(round(&v[0]), round(&v[1]), &v[2])).collect();
+        polygon.geometry = Geometry::from_exact(&polygon.vertices).map_err(|e| Error::Polygon {
             path: format!("(snapped to fixed:{bits})").into(),
             index,
             name: polygon.name.clone(),
@@ -220,9 +233,9 @@ pub struct FloatPolygon<F> {
     value: u32,
 }
 
-fn prepare<F: Float>(vertices: &[[Q; 3]], value: u32) -> FloatPolygon<F> {
-    let convert = |q: Q| F::from(to_f64(q)).unwrap_or_else(F::nan);
-    let points: Vec<[F; 3]> = vertices.iter().map(|v| v.map(convert)).collect();
+fn prepare<F: Float>(vertices: &[[Exact; 3]], value: u32) -> FloatPolygon<F> {
+    let convert = |v: &Exact| F::from(to_f64(v)).unwrap_or_else(F::nan);
+    let points: Vec<[F; 3]> = vertices.iter().map(|v| v.each_ref().map(convert)).collect();
     let (mut a, mut b, mut c) = (F::zero(), F::zero(), F::zero());
     for (i, p) in points.iter().enumerate() {
         let q = points[(i + 1) % points.len()];

@@ -15,9 +15,9 @@
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, ToPrimitive, Zero};
+use num_traits::{One, Zero};
 
-use crate::exact::Q;
+use crate::exact::{Exact, Q};
 
 /// The view volume's planes, in the order clipped: x, then y, then z; each
 /// as (axis, sign): inside when `w + sign·coordinate ≥ 0`.
@@ -29,8 +29,8 @@ pub enum Clipped {
     /// The part inside the view volume, mapped onto the raster, and how many
     /// of the given vertices lay inside.
     Inside {
-        /// The vertices on the raster (x', y', z').
-        vertices: Vec<[Q; 3]>,
+        /// The vertices on the raster (x', y', z'), exact however large.
+        vertices: Vec<[Exact; 3]>,
         /// How many of the given vertices were inside the view volume.
         inside: usize,
     },
@@ -40,9 +40,8 @@ pub enum Clipped {
 
 /// Clips a polygon given in clip space and maps it onto a `width × height`
 /// raster whose z-buffer holds `0 ..= depth_max`. The clipping runs in
-/// arbitrary-precision rationals, so it never overflows; `None` when a vertex
-/// on the raster does not fit the 128-bit fractions zsim speaks.
-pub fn to_raster(vertices: &[[Q; 4]], width: u32, height: u32, depth_max: u32) -> Option<Clipped> {
+/// arbitrary-precision rationals, so it never overflows.
+pub fn to_raster(vertices: &[[Q; 4]], width: u32, height: u32, depth_max: u32) -> Clipped {
     let zero = BigRational::zero();
     let vertices: Vec<[BigRational; 4]> = vertices.iter().map(|v| v.map(big)).collect();
     let inside = vertices.iter().filter(|v| PLANES.iter().all(|&(axis, sign)| distance(v, axis, sign) >= zero)).count();
@@ -66,7 +65,7 @@ pub fn to_raster(vertices: &[[Q; 4]], width: u32, height: u32, depth_max: u32) -
         }
         polygon = out;
         if polygon.len() < 3 {
-            return Some(Clipped::Outside);
+            return Clipped::Outside;
         }
     }
     let one = BigRational::one();
@@ -76,12 +75,12 @@ pub fn to_raster(vertices: &[[Q; 4]], width: u32, height: u32, depth_max: u32) -
     for [x, y, z, w] in polygon {
         if w.is_zero() {
             // Only the origin has w = 0 inside the volume: a point, not a polygon.
-            return Some(Clipped::Outside);
+            return Clipped::Outside;
         }
-        let map = |c: BigRational, half: &BigRational| small(&((c / &w + &one) * half));
-        mapped.push([map(x, &w_half)?, map(y, &h_half)?, map(z, &depth_half)?]);
+        let map = |c: BigRational, half: &BigRational| Exact::from((c / &w + &one) * half);
+        mapped.push([map(x, &w_half), map(y, &h_half), map(z, &depth_half)]);
     }
-    Some(Clipped::Inside { vertices: mapped, inside })
+    Clipped::Inside { vertices: mapped, inside }
 }
 
 /// How far inside the plane `w + sign·coordinate ≥ 0` a vertex lies.
@@ -91,11 +90,6 @@ fn distance(v: &[BigRational; 4], axis: usize, sign: i128) -> BigRational {
 
 fn big(q: Q) -> BigRational {
     BigRational::new(BigInt::from(*q.numer()), BigInt::from(*q.denom()))
-}
-
-/// The value as a 128-bit fraction, when it is one.
-fn small(value: &BigRational) -> Option<Q> {
-    Some(Q::new(value.numer().to_i128()?, value.denom().to_i128()?))
 }
 
 #[cfg(test)]
@@ -114,7 +108,7 @@ mod tests {
             [q(1, 1), q(1, 1), q(1, 1), q(2, 1)],
             [q(0, 1), q(-1, 1), q(-1, 1), q(1, 1)],
         ];
-        let Some(Clipped::Inside { vertices, inside }) = to_raster(&triangle, 8, 4, 15) else { panic!("inside") };
+        let Clipped::Inside { vertices, inside } = to_raster(&triangle, 8, 4, 15) else { panic!("inside") };
         assert_eq!(inside, 3);
         assert_eq!(vertices[0], [q(2, 1), q(2, 1), q(15, 2)]);
         assert_eq!(vertices[1], [q(6, 1), q(3, 1), q(45, 4)]);
@@ -130,16 +124,16 @@ mod tests {
             [q(1, 2), q(0, 1), q(0, 1), q(1, 1)],
             [q(0, 1), q(0, 1), q(-3, 1), q(-1, 1)],
         ];
-        let Some(Clipped::Inside { vertices, inside }) = to_raster(&triangle, 2, 2, 10) else { panic!("inside") };
+        let Clipped::Inside { vertices, inside } = to_raster(&triangle, 2, 2, 10) else { panic!("inside") };
         assert_eq!(inside, 2);
         // Every vertex left has z' ≥ 0: nothing in front of the near plane survives as negative depth.
-        assert!(vertices.iter().all(|v| v[2] >= Q::from_integer(0)), "{vertices:?}");
+        assert!(vertices.iter().all(|v| v[2] >= Exact::Word(Q::from_integer(0))), "{vertices:?}");
         assert_eq!(vertices.len(), 4);
         let all_behind = [
             [q(0, 1), q(0, 1), q(-3, 1), q(-1, 1)],
             [q(1, 1), q(0, 1), q(-3, 1), q(-1, 1)],
             [q(0, 1), q(1, 1), q(-3, 1), q(-1, 1)],
         ];
-        assert_eq!(to_raster(&all_behind, 2, 2, 10), Some(Clipped::Outside));
+        assert_eq!(to_raster(&all_behind, 2, 2, 10), Clipped::Outside);
     }
 }

@@ -79,22 +79,6 @@ pub enum PolygonProblem {
         /// The scene's `frame_bits`.
         frame_bits: u32,
     },
-    /// Mapping its vertices onto the raster gives numbers beyond 128-bit
-    /// fractions.
-    MappedOutOfRange(Mapping),
-}
-
-/// How a polygon's vertices reach the raster.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Mapping {
-    /// From the scene's window.
-    Window,
-    /// Through the perspective effect.
-    Perspective,
-    /// From clip space: clipping, division by w, the viewport.
-    ClipSpace,
-    /// Onto the k× raster of antialiasing by supersampling.
-    Supersampled,
 }
 
 impl fmt::Display for PolygonProblem {
@@ -108,15 +92,6 @@ impl fmt::Display for PolygonProblem {
                 bits = frame_bits.to_string(),
                 max = ((1u64 << frame_bits) - 1).to_string()
             )),
-            PolygonProblem::MappedOutOfRange(mapping) => {
-                let stage = match mapping {
-                    Mapping::Window => words!("mapping-window"),
-                    Mapping::Perspective => words!("mapping-perspective"),
-                    Mapping::ClipSpace => words!("mapping-clip-space"),
-                    Mapping::Supersampled => words!("mapping-supersampled"),
-                };
-                f.write_str(&words!("polygon-mapped-out-of-range", stage = stage))
-            }
         }
     }
 }

@@ -84,6 +84,20 @@ impl Exact {
         self.word().as_ref().and_then(word).unwrap_or_else(|| Exact::from(self.to_big() / BigInt::from(divisor)))
     }
 
+    /// `self × factor`, exactly.
+    pub fn times(&self, factor: i128) -> Exact {
+        let word = |q: &Q| Some(Exact::Word(num_traits::CheckedMul::checked_mul(q, &Q::from_integer(factor))?));
+        self.word().as_ref().and_then(word).unwrap_or_else(|| Exact::from(self.to_big() * BigInt::from(factor)))
+    }
+
+    /// The greatest integer not above the value.
+    pub fn floor(&self) -> BigInt {
+        match self {
+            Exact::Word(q) => BigInt::from(q.floor().to_integer()),
+            Exact::Big(b) => b.floor().to_integer(),
+        }
+    }
+
     /// `self − other`, exactly.
     pub fn minus(&self, other: &Exact) -> Exact {
         let word = |a: &Q, b: &Q| Some(Exact::Word(a.checked_sub(b)?));

@@ -143,8 +143,8 @@ impl Observer for CaseFinder {
                     "polygon {}: vertex {} ({}, {}) lies on the scanline of row {row}",
                     index + 1,
                     k + 1,
-                    short_in_files(v[0]),
-                    short_in_files(v[1])
+                    short_in_files(&v[0]),
+                    short_in_files(&v[1])
                 )
             });
         }

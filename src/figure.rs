@@ -88,6 +88,9 @@ pub fn svg_with(
     let sx = |x: Q| decimal(Q::from_integer(left) + x * CELL, 2);
     let sy = |y: Q| decimal(Q::from_integer(top) + (Q::from_integer(height) - y) * CELL, 2);
     let int = |v: i128| Q::from_integer(v);
+    // The same for a vertex, exact however large (clip space may make it so).
+    let vx = |x: &Exact| decimal(Exact::Word(int(left)).plus(&x.times(CELL)), 2);
+    let vy = |y: &Exact| decimal(Exact::Word(int(top + height * CELL)).minus(&y.times(CELL)), 2);
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -169,7 +172,7 @@ pub fn svg_with(
             // Clipped away in clip space: nothing on the raster to outline.
             continue;
         }
-        let points: Vec<String> = polygon.vertices.iter().map(|v| format!("{},{}", sx(v[0]), sy(v[1]))).collect();
+        let points: Vec<String> = polygon.vertices.iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect();
         // An unnamed polygon is labelled by its number alone, titled in the reader's language.
         let unnamed = crate::scene::is_default_name(&polygon.name, index);
         let title = if unnamed { crate::explain::polygon_name(scene, index) } else { polygon.name.clone() };
@@ -177,13 +180,12 @@ pub fn svg_with(
         let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));
         // At the polygon's middle, off the vertices and the outline, on a white halo
         // so that it reads over any fill.
-        let n = Q::from_integer(polygon.vertices.len() as i128);
-        let middle = |axis: usize| polygon.vertices.iter().map(|v| v[axis]).sum::<Q>() / n;
+        let middle = |axis: usize| middle(&polygon.vertices, axis);
         let _ = writeln!(
             out,
             r#"<text x="{}" y="{}" stroke="white" stroke-width="3" paint-order="stroke" font-weight="bold" text-anchor="middle" fill="black">{}</text>"#,
-            sx(middle(0)),
-            sy(middle(1)),
+            vx(&middle(0)),
+            vy(&middle(1)),
             label
         );
     }
@@ -192,7 +194,7 @@ pub fn svg_with(
         cell_values(&mut out, scene, buffers, shading, (&sx, &sy));
     }
     if extras.vertex_labels {
-        vertex_labels(&mut out, scene, last, (&sx, &sy));
+        vertex_labels(&mut out, scene, last, (&vx, &vy));
     }
     // Axes: column numbers below, row numbers on the left.
     let step = if width.max(height) > 64 {
@@ -328,31 +330,30 @@ fn is_dark(fill: &str) -> bool {
 /// Each vertex of polygons `0 ..= last` labelled `(x, y, z)`, set off from
 /// the vertex away from its polygon's middle, on a white halo so that the
 /// label stays readable over lines.
-fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&dyn Fn(Q) -> String, &dyn Fn(Q) -> String)) {
+fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&ToSvg, &ToSvg)) {
     let _ = writeln!(
         out,
         r#"<g id="vertices" font-size="10" fill="black" stroke="white" stroke-width="3" paint-order="stroke">"#
     );
     // Vertices already labelled, so that a point shared by two polygons gets its labels one under the other.
-    let mut labelled: Vec<[Q; 2]> = Vec::new();
+    let mut labelled: Vec<[Exact; 2]> = Vec::new();
     for polygon in scene.polygons.iter().take(last + 1).filter(|p| !p.vertices.is_empty()) {
-        let n = Q::from_integer(polygon.vertices.len() as i128);
-        let middle_x = polygon.vertices.iter().map(|v| v[0]).sum::<Q>() / n;
-        let middle_y = polygon.vertices.iter().map(|v| v[1]).sum::<Q>() / n;
+        let (middle_x, middle_y) = (middle(&polygon.vertices, 0), middle(&polygon.vertices, 1));
         for v in &polygon.vertices {
             // Left of the middle: the label ends at the vertex; right: it starts there.
             let (anchor, dx) = if v[0] < middle_x { ("end", Q::new(-1, 4)) } else { ("start", Q::new(1, 4)) };
-            let below = labelled.iter().filter(|p| **p == [v[0], v[1]]).count() as i128;
-            labelled.push([v[0], v[1]]);
+            let point = [v[0].clone(), v[1].clone()];
+            let below = labelled.iter().filter(|p| **p == point).count() as i128;
+            labelled.push(point);
             let dy = if v[1] < middle_y { Q::new(-1, 2) } else { Q::new(1, 4) } - Q::new(below, 2);
-            let label = format!("({})", [v[0], v[1], v[2]].map(short).join(coordinate_separator()));
+            let label = format!("({})", v.each_ref().map(short).join(coordinate_separator()));
             let _ = writeln!(
                 out,
                 r#"<circle cx="{}" cy="{}" r="2.5" stroke="none"/><text x="{}" y="{}" text-anchor="{anchor}">{}</text>"#,
-                sx(v[0]),
-                sy(v[1]),
-                sx(v[0] + dx),
-                sy(v[1] + dy),
+                sx(&v[0]),
+                sy(&v[1]),
+                sx(&v[0].plus(&Exact::Word(dx))),
+                sy(&v[1].plus(&Exact::Word(dy))),
                 escape(&label)
             );
         }
@@ -406,6 +407,15 @@ fn depth_grey(value: &Stored, scene: &Scene, (low, high): &(Exact, Exact)) -> St
     let shade = (offset / span * integer(170)).floor().to_integer().clamp(BigInt::from(0), BigInt::from(170));
     let level = 230 - shade.to_u8().expect("clamped");
     format!("#{level:02x}{level:02x}{level:02x}")
+}
+
+/// A vertex coordinate to the SVG's (x, or y flipped).
+type ToSvg<'a> = dyn Fn(&Exact) -> String + 'a;
+
+/// The mean of the vertices' coordinate `axis`, exactly.
+fn middle(vertices: &[[Exact; 3]], axis: usize) -> Exact {
+    let sum = vertices.iter().fold(Exact::Word(Q::from_integer(0)), |sum, v| sum.plus(&v[axis]));
+    sum.divided_by(vertices.len() as i128)
 }
 
 /// The least and greatest exact depths written (for shading).

@@ -9,6 +9,8 @@
 //! `z' = d·z/(d − z)`. That map is projective, so the image of a planar
 //! polygon is planar and the book's rules apply unchanged with z' as depth.
 
+use num_bigint::BigInt;
+use num_rational::BigRational;
 use num_traits::{CheckedAdd, CheckedDiv, CheckedMul, CheckedSub};
 
 use crate::depth::Depth;
@@ -64,48 +66,63 @@ impl Perspective {
     /// `D.t = A.t + (C.t − A.t)·(D.z − A.z)/(C.z − A.z)`. For a triangle this
     /// is the seed's case analysis: 0 vertices in front give nothing, 1 the
     /// triangle CDE, 2 the quadrilateral DABE (kept as one polygon), 3 the
-    /// whole. `None` when a value does not fit `i128`.
-    pub fn clip(&self, vertices: &[[Q; 3]]) -> Option<(Vec<[Q; 3]>, Clip)> {
-        let plane = self.near_plane();
-        let inside = |v: &[Q; 3]| v[2] <= plane;
+    /// whole. Exact however large (new vertices in big rationals where 128
+    /// bits overflow).
+    pub fn clip(&self, vertices: &[[Exact; 3]]) -> (Vec<[Exact; 3]>, Clip) {
+        let plane = Exact::Word(self.near_plane());
+        let inside = |v: &[Exact; 3]| v[2] <= plane;
         let front = vertices.iter().filter(|v| inside(v)).count();
         if front == vertices.len() {
-            return Some((vertices.to_vec(), Clip::Kept { front, of: vertices.len() }));
+            return (vertices.to_vec(), Clip::Kept { front, of: vertices.len() });
         }
         if front == 0 {
-            return Some((Vec::new(), Clip::Away));
+            return (Vec::new(), Clip::Away);
         }
-        let crossing = |a: &[Q; 3], c: &[Q; 3]| -> Option<[Q; 3]> {
-            let t = plane.checked_sub(&a[2])?.checked_div(&c[2].checked_sub(&a[2])?)?;
-            let along = |i: usize| a[i].checked_add(&c[i].checked_sub(&a[i])?.checked_mul(&t)?);
-            Some([along(0)?, along(1)?, plane])
+        let crossing = |a: &[Exact; 3], c: &[Exact; 3]| -> [Exact; 3] {
+            let [a, c] = [a, c].map(|v| v.each_ref().map(Exact::to_big));
+            let t = (plane.to_big() - &a[2]) / (&c[2] - &a[2]);
+            let along = |i: usize| Exact::from(&a[i] + (&c[i] - &a[i]) * &t);
+            [along(0), along(1), plane.clone()]
         };
         let mut out = Vec::with_capacity(vertices.len() + 2);
         for (i, end) in vertices.iter().enumerate() {
             let start = &vertices[(i + vertices.len() - 1) % vertices.len()];
             match (inside(start), inside(end)) {
-                (true, true) => out.push(*end),
-                (true, false) => out.push(crossing(start, end)?),
+                (true, true) => out.push(end.clone()),
+                (true, false) => out.push(crossing(start, end)),
                 (false, true) => {
-                    out.push(crossing(start, end)?);
-                    out.push(*end);
+                    out.push(crossing(start, end));
+                    out.push(end.clone());
                 }
                 (false, false) => {}
             }
         }
-        Some((out, Clip::Kept { front, of: vertices.len() }))
+        (out, Clip::Kept { front, of: vertices.len() })
     }
 
     /// The projective map of a vertex in front of the near plane onto the
-    /// picture plane, with its depth z'. `None` when a value does not fit `i128`.
-    pub fn project(&self, v: [Q; 3], width: u32, height: u32) -> Option<[Q; 3]> {
-        let d = self.distance;
-        let scale = d.checked_div(&d.checked_sub(&v[2])?)?;
-        let map = |value: Q, size: u32| -> Option<Q> {
-            let centre = Q::new(i128::from(size), 2);
-            centre.checked_add(&value.checked_sub(&centre)?.checked_mul(&scale)?)
+    /// picture plane, with its depth z': `x' = c + (x − c)·d/(d − z)`,
+    /// `z' = z·d/(d − z)`. Exact however large (in big rationals where 128
+    /// bits overflow).
+    pub fn project(&self, v: &[Exact; 3], width: u32, height: u32) -> [Exact; 3] {
+        let words = || {
+            let [x, y, z] = [v[0].word()?, v[1].word()?, v[2].word()?];
+            let d = self.distance;
+            let scale = d.checked_div(&d.checked_sub(&z)?)?;
+            let map = |value: Q, size: u32| -> Option<Q> {
+                let centre = Q::new(i128::from(size), 2);
+                centre.checked_add(&value.checked_sub(&centre)?.checked_mul(&scale)?)
+            };
+            Some([map(x, width)?, map(y, height)?, z.checked_mul(&scale)?].map(Exact::Word))
         };
-        Some([map(v[0], width)?, map(v[1], height)?, v[2].checked_mul(&scale)?])
+        words().unwrap_or_else(|| {
+            let [x, y, z] = v.each_ref().map(Exact::to_big);
+            let d = Exact::Word(self.distance).to_big();
+            let scale = &d / (&d - &z);
+            let centre = |size: u32| BigRational::new(BigInt::from(size), BigInt::from(2));
+            let map = |value: BigRational, size: u32| Exact::from(centre(size) + (value - centre(size)) * &scale);
+            [map(x, width), map(y, height), Exact::from(z * &scale)]
+        })
     }
 
     /// The eye-space depth for a projected depth: `z = d·z'/(d + z')`, in
@@ -155,26 +172,27 @@ mod tests {
     #[test]
     fn clipping_follows_the_seeds_four_cases() {
         let p = perspective(); // near plane z = 38
-        let triangle = |zs: [i128; 3]| vec![[q(0), q(0), q(zs[0])], [q(10), q(0), q(zs[1])], [q(0), q(10), q(zs[2])]];
-        assert_eq!(p.clip(&triangle([50, 60, 70])).unwrap().1, Clip::Away, "0 in front: not drawn");
-        let (one, clip) = p.clip(&triangle([0, 60, 70])).unwrap();
+        let e = |v: i128| Exact::Word(q(v));
+        let triangle = |zs: [i128; 3]| vec![[e(0), e(0), e(zs[0])], [e(10), e(0), e(zs[1])], [e(0), e(10), e(zs[2])]];
+        assert_eq!(p.clip(&triangle([50, 60, 70])).1, Clip::Away, "0 in front: not drawn");
+        let (one, clip) = p.clip(&triangle([0, 60, 70]));
         assert_eq!((one.len(), clip), (3, Clip::Kept { front: 1, of: 3 }), "1 in front: the triangle CDE");
-        let (two, clip) = p.clip(&triangle([0, 0, 78])).unwrap();
+        let (two, clip) = p.clip(&triangle([0, 0, 78]));
         assert_eq!((two.len(), clip), (4, Clip::Kept { front: 2, of: 3 }), "2 in front: the quadrilateral DABE");
-        let (three, _) = p.clip(&triangle([0, 1, 2])).unwrap();
+        let (three, _) = p.clip(&triangle([0, 1, 2]));
         assert_eq!(three.len(), 3, "3 in front: the whole");
         // D on AC by the seed's formula: A = (0, 10, 0), C = (0, 0, 0)… here A(10,0,0) to C(0,10,78): t = 38/78.
-        assert!(two.iter().all(|v| v[2] <= q(38)));
-        assert!(two.contains(&[Q::new(10 * 40, 78), Q::new(380, 78), q(38)]));
+        assert!(two.iter().all(|v| v[2] <= e(38)));
+        assert!(two.contains(&[Q::new(10 * 40, 78), Q::new(380, 78), q(38)].map(Exact::Word)));
     }
 
     #[test]
     fn projection_and_eye_depth_invert_each_other() {
         let p = perspective();
-        let v = p.project([q(26), q(6), q(20)], 32, 32).unwrap();
+        let v = p.project(&[q(26), q(6), q(20)].map(Exact::Word), 32, 32);
         // scale d/(d − z) = 40/20 = 2: x' = 16 + 10·2 = 36, y' = 16 − 10·2 = −4, z' = 40.
-        assert_eq!(v, [q(36), q(-4), q(40)]);
-        assert_eq!(p.eye_value(&Exact::Word(v[2])), Some(Exact::Word(q(20))));
+        assert_eq!(v, [q(36), q(-4), q(40)].map(Exact::Word));
+        assert_eq!(p.eye_value(&v[2]), Some(Exact::Word(q(20))));
         assert_eq!(p.eye_depth(&Depth::from_fraction(40, 1)).value(), q(20));
     }
 }

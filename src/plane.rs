@@ -51,7 +51,7 @@ pub enum GeometryError {
         /// 1-based vertex number.
         vertex: usize,
         /// The offending coordinate.
-        value: Q,
+        value: Exact,
         /// The polygon's least common denominator `D` (so far), which may
         /// itself have outgrown 128 bits.
         denominator: BigInt,
@@ -86,7 +86,7 @@ impl fmt::Display for GeometryError {
             GeometryError::OutOfRange { vertex, value, denominator } => f.write_str(&words!(
                 "geometry-out-of-range",
                 vertex = vertex.to_string(),
-                value = crate::exact::fraction(*value),
+                value = crate::exact::fraction(value),
                 denominator = crate::exact::big_integer(denominator)
             )),
             GeometryError::NotPlanar(off) => {
@@ -210,7 +210,10 @@ impl Geometry {
             let points = vertices.iter().map(|v| Some([scaled(&v[0])?, scaled(&v[1])?, scaled(&v[2])?]));
             Some((denominator, points.collect::<Option<Vec<_>>>()?))
         };
-        let Some((denominator, points)) = words() else { return Geometry::new_big(vertices) };
+        let Some((denominator, points)) = words() else {
+            let big = |q: &Q| BigRational::new_raw(BigInt::from(*q.numer()), BigInt::from(*q.denom()));
+            return Geometry::new_big(&vertices.iter().map(|v| v.each_ref().map(big)).collect::<Vec<_>>());
+        };
         let normal = newell(&points);
         let mut geometry = Geometry { denominator, points, normal, narrow: false, big: None };
         geometry.check_planar()?;
@@ -218,30 +221,47 @@ impl Geometry {
         Ok(geometry)
     }
 
+    /// [`Geometry::new`] for vertices of any size (a clipped clip-space
+    /// polygon's may outgrow 128-bit fractions): on the words when they fit
+    /// them, else on the big-integer tier.
+    pub fn from_exact(vertices: &[[Exact; 3]]) -> Result<Geometry, GeometryError> {
+        let words: Option<Vec<[Q; 3]>> =
+            vertices.iter().map(|v| Some([v[0].word()?, v[1].word()?, v[2].word()?])).collect();
+        match words {
+            Some(words) => Geometry::new(&words),
+            None if vertices.len() < 3 => Err(GeometryError::TooFewVertices(vertices.len())),
+            None if vertices.len() > MAX_VERTICES => Err(GeometryError::TooManyVertices(vertices.len())),
+            None => Geometry::new_big(&vertices.iter().map(|v| v.each_ref().map(Exact::to_big)).collect::<Vec<_>>()),
+        }
+    }
+
     /// A polygon beyond the words, on the big-integer tier.
-    fn new_big(vertices: &[[Q; 3]]) -> Result<Geometry, GeometryError> {
-        let big = |v: &i128| BigInt::from(*v);
+    fn new_big(vertices: &[[BigRational; 3]]) -> Result<Geometry, GeometryError> {
         let mut denominator = BigInt::from(1);
+        // Far past the bound once D has this many bits more than a value's
+        // denominator (|value| × 2D > 2D / denominator): stop before the lcm of
+        // absurd input grows for ever.
+        let largest = vertices.iter().flatten().map(|v| v.denom().bits()).max().unwrap_or(0).max(128);
         for (index, vertex) in vertices.iter().enumerate() {
             for value in vertex {
-                denominator = denominator.lcm(&big(value.denom()));
-                // Far past the bound already (a value's denominator is below 2^127, so
-                // |value| × 2D > 2D / 2^127): stop before the lcm of absurd input grows for ever.
-                if denominator.bits() > MAX_SCALED_BITS + 128 {
-                    return Err(GeometryError::OutOfRange { vertex: index + 1, value: *value, denominator });
+                denominator = denominator.lcm(value.denom());
+                if denominator.bits() > MAX_SCALED_BITS + largest {
+                    let value = Exact::from(value.clone());
+                    return Err(GeometryError::OutOfRange { vertex: index + 1, value, denominator });
                 }
             }
         }
         let scale: BigInt = &denominator * 2u32;
         let points: Vec<[BigInt; 3]> =
-            vertices.iter().map(|v| v.map(|c| big(c.numer()) * scale.div_floor(&big(c.denom())))).collect();
+            vertices.iter().map(|v| v.each_ref().map(|c| c.numer() * scale.div_floor(c.denom()))).collect();
         let limit = BigInt::from(1) << MAX_SCALED_BITS;
         let beyond = points
             .iter()
             .enumerate()
             .find_map(|(i, p)| p.iter().position(|v| v.magnitude() > limit.magnitude()).map(|axis| (i, axis)));
         if let Some((index, axis)) = beyond {
-            return Err(GeometryError::OutOfRange { vertex: index + 1, value: vertices[index][axis], denominator });
+            let value = Exact::from(vertices[index][axis].clone());
+            return Err(GeometryError::OutOfRange { vertex: index + 1, value, denominator });
         }
         Ok(Geometry::on_big(crate::big::BigPolygon::new(points, denominator)?))
     }

@@ -19,12 +19,13 @@
 use std::fmt;
 use std::path::Path;
 
+use num_bigint::BigInt;
 use num_traits::{CheckedDiv, CheckedMul, CheckedSub};
 use serde::Deserialize;
 
 use crate::depth::{DepthTest, Stored};
 use crate::error::Error;
-use crate::exact::Q;
+use crate::exact::{Exact, Q};
 use crate::perspective::{Clip, Perspective};
 use crate::plane::Geometry;
 use crate::rules::Rules;
@@ -129,12 +130,24 @@ pub struct Window {
 
 impl Window {
     /// Maps a world point to pixel units: `x_px = (x − left)·width/(right − left)`,
-    /// likewise y; z is unchanged. `None` when the result does not fit `i128`.
-    pub fn to_pixels(&self, point: [Q; 3], width: u32, height: u32) -> Option<[Q; 3]> {
-        let map = |v: Q, low: Q, high: Q, size: u32| -> Option<Q> {
-            v.checked_sub(&low)?.checked_mul(&Q::from_integer(i128::from(size)))?.checked_div(&high.checked_sub(&low)?)
+    /// likewise y; z is unchanged. Exact however large (in big rationals
+    /// where 128 bits overflow).
+    pub fn to_pixels(&self, point: &[Exact; 3], width: u32, height: u32) -> [Exact; 3] {
+        let map = |v: &Exact, low: Q, high: Q, size: u32| -> Exact {
+            let words = |v: Q| {
+                v.checked_sub(&low)?
+                    .checked_mul(&Q::from_integer(i128::from(size)))?
+                    .checked_div(&high.checked_sub(&low)?)
+            };
+            v.word().and_then(words).map_or_else(
+                || {
+                    let (low, high) = (Exact::Word(low).to_big(), Exact::Word(high).to_big());
+                    Exact::from((v.to_big() - &low) * BigInt::from(size) / (high - low))
+                },
+                Exact::Word,
+            )
         };
-        Some([map(point[0], self.left, self.right, width)?, map(point[1], self.bottom, self.top, height)?, point[2]])
+        [map(&point[0], self.left, self.right, width), map(&point[1], self.bottom, self.top, height), point[2].clone()]
     }
 }
 
@@ -148,15 +161,17 @@ pub struct Polygon {
     /// The framebuffer value it writes; fits `frame_bits`.
     pub value: u32,
     /// Its vertices, exact, in pixel units (mapped through the scene's
-    /// window when it has one).
-    pub vertices: Vec<[Q; 3]>,
+    /// window when it has one); beyond 128-bit fractions only where clip
+    /// space made them so.
+    pub vertices: Vec<[Exact; 3]>,
     /// Its scaled integer geometry and plane.
     pub geometry: Geometry,
     /// Its opacity α (0 … 1) when it is transparent; `None` is opaque.
     pub opacity: Option<Q>,
-    /// With perspective: the vertices as given (eye space), before clipping
-    /// and projection; `vertices` then holds the projected ones.
-    pub eye_vertices: Option<Vec<[Q; 3]>>,
+    /// With perspective: the vertices as given (eye space, through the
+    /// window when there is one), before clipping and projection; `vertices`
+    /// then holds the projected ones.
+    pub eye_vertices: Option<Vec<[Exact; 3]>>,
     /// How the polygon fared against the near plane.
     pub clip: Clip,
 }
@@ -208,15 +223,14 @@ impl Scene {
     /// allocator's bookkeeping per block (a few bytes) is not counted.
     pub fn memory_bytes(&self) -> u64 {
         use std::mem::size_of;
-        let vertex = size_of::<[Q; 3]>();
         let polygons: usize = self
             .polygons
             .iter()
             .map(|p| {
                 p.name.capacity()
-                    + p.vertices.capacity() * vertex
+                    + p.vertices.capacity() * size_of::<[Exact; 3]>()
                     + p.geometry.points.capacity() * size_of::<[i128; 3]>()
-                    + p.eye_vertices.as_ref().map_or(0, |v| v.capacity() * vertex)
+                    + p.eye_vertices.as_ref().map_or(0, |v| v.capacity() * size_of::<[Exact; 3]>())
             })
             .sum();
         (size_of::<Scene>() + self.polygons.capacity() * size_of::<Polygon>() + polygons) as u64

@@ -7,7 +7,7 @@ use serde::Deserialize;
 use serde::de::Error as _;
 
 use crate::depth::{DepthTest, Stored};
-use crate::error::{Error, Mapping, PolygonProblem};
+use crate::error::{Error, PolygonProblem};
 use crate::exact::{Exact, Q, fraction, parse_number};
 use crate::perspective::{Clip, Perspective};
 use crate::plane::Geometry;
@@ -507,11 +507,11 @@ impl PolygonFile {
         {
             return Err(fail(&name, PolygonProblem::Other(words!("polygon-opacity", alpha = fraction(alpha)))));
         }
-        let out_of_range = |mapping: Mapping| fail(&name, PolygonProblem::MappedOutOfRange(mapping));
         let clip_space: Vec<[Q; 4]> =
             self.vertices.iter().filter_map(|v| if let VertexFile::Clip(c) = v { Some(*c) } else { None }).collect();
-        let mut vertices: Vec<[Q; 3]> = if clip_space.is_empty() {
-            self.vertices.iter().filter_map(|v| if let VertexFile::Xyz(p) = v { Some(*p) } else { None }).collect()
+        let mut vertices: Vec<[Exact; 3]> = if clip_space.is_empty() {
+            let given = self.vertices.iter().filter_map(|v| if let VertexFile::Xyz(p) = v { Some(*p) } else { None });
+            given.map(|v| v.map(Exact::Word)).collect()
         } else if clip_space.len() < self.vertices.len() {
             return Err(fail(&name, PolygonProblem::Other(words!("clip-space-mixed"))));
         } else if frame.window.is_some() || frame.perspective.is_some() {
@@ -531,55 +531,52 @@ impl PolygonFile {
         };
         if let Some((window, width, height)) = frame.window {
             for vertex in &mut vertices {
-                *vertex = window.to_pixels(*vertex, width, height).ok_or_else(|| out_of_range(Mapping::Window))?;
+                *vertex = window.to_pixels(vertex, width, height);
             }
         }
         if vertices.len() < 3 {
             let error = crate::plane::GeometryError::TooFewVertices(vertices.len());
             return Err(fail(&name, PolygonProblem::Geometry(error)));
         }
+        let geometry = |vertices: &[[Exact; 3]]| {
+            Geometry::from_exact(vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))
+        };
         let (eye_vertices, clip) = match frame.perspective {
             None => (None, Clip::NotClipped),
             Some(perspective) => {
                 // Check planarity in eye space first, where the user wrote the polygon.
-                Geometry::new(&vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
-                let eye = vertices.clone();
-                let (kept, clip) = perspective.clip(&vertices).ok_or_else(|| out_of_range(Mapping::Perspective))?;
+                let eye_geometry = geometry(&vertices)?;
+                let (kept, clip) = perspective.clip(&vertices);
                 if clip == Clip::Away {
                     // Nothing is drawn; keep the eye-space geometry for reports.
-                    let geometry = Geometry::new(&eye).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
                     return Ok(Polygon {
                         name,
                         value: self.value as u32,
-                        vertices: eye.clone(),
-                        geometry,
+                        eye_vertices: Some(vertices.clone()),
+                        vertices,
+                        geometry: eye_geometry,
                         opacity,
-                        eye_vertices: Some(eye),
                         clip,
                     });
                 }
                 let (width, height) = frame.size;
-                let mut projected = Vec::with_capacity(kept.len());
-                for v in &kept {
-                    projected.push(
-                        perspective.project(*v, width, height).ok_or_else(|| out_of_range(Mapping::Perspective))?,
-                    );
-                }
-                vertices = projected;
-                (Some(eye), clip)
+                let projected = kept.iter().map(|v| perspective.project(v, width, height)).collect();
+                (Some(std::mem::replace(&mut vertices, projected)), clip)
             }
         };
-        let geometry = Geometry::new(&vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))?;
+        let geometry = geometry(&vertices)?;
         Ok(Polygon { name, value: self.value as u32, vertices, geometry, opacity, eye_vertices, clip })
     }
 }
 
 /// A polygon given in clip space: clipped, divided and mapped by the viewport
 /// ([`crate::clip_space`]); what is left, its geometry and how it was clipped.
-fn clip_space_polygon(clip_space: &[[Q; 4]], frame: &Frame) -> Result<(Vec<[Q; 3]>, Geometry, Clip), PolygonProblem> {
+fn clip_space_polygon(
+    clip_space: &[[Q; 4]],
+    frame: &Frame,
+) -> Result<(Vec<[Exact; 3]>, Geometry, Clip), PolygonProblem> {
     let (width, height) = frame.size;
-    let out_of_range = || PolygonProblem::MappedOutOfRange(Mapping::ClipSpace);
-    match crate::clip_space::to_raster(clip_space, width, height, frame.depth_max).ok_or_else(out_of_range)? {
+    match crate::clip_space::to_raster(clip_space, width, height, frame.depth_max) {
         crate::clip_space::Clipped::Outside => {
             // Nothing is drawn; a placeholder geometry keeps the polygon in the reports.
             let (zero, one) = (Q::from_integer(0), Q::from_integer(1));
@@ -588,7 +585,7 @@ fn clip_space_polygon(clip_space: &[[Q; 4]], frame: &Frame) -> Result<(Vec<[Q; 3
             Ok((Vec::new(), geometry, Clip::ViewAway))
         }
         crate::clip_space::Clipped::Inside { vertices, inside } => {
-            let geometry = Geometry::new(&vertices).map_err(PolygonProblem::Geometry)?;
+            let geometry = Geometry::from_exact(&vertices).map_err(PolygonProblem::Geometry)?;
             Ok((vertices, geometry, Clip::View { inside, of: clip_space.len() }))
         }
     }

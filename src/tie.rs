@@ -5,12 +5,11 @@
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 
-use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::Zero;
 
 use crate::depth::Depth;
-use crate::exact::Q;
+use crate::exact::{Exact, Q};
 use crate::pipeline::{PixelRect, RasterSink, Scratch, Simulation, rasterize};
 use crate::rules::Rules;
 use crate::scan::{Crossing, Span};
@@ -47,19 +46,19 @@ impl Boundary {
 
 /// Where pixel (x, y)'s centre lies on a polygon's boundary, if it does:
 /// the boundary's kind and the edge (its two vertices) or vertex.
-pub fn boundary_at(vertices: &[[Q; 3]], x: u32, y: u32) -> Option<(Boundary, [Q; 2], [Q; 2])> {
+pub fn boundary_at(vertices: &[[Exact; 3]], x: u32, y: u32) -> Option<(Boundary, [Exact; 2], [Exact; 2])> {
     // In big rationals: a clipped polygon's vertices are fractions whose
     // products outgrow 128 bits.
-    let big = |q: Q| BigRational::new(BigInt::from(*q.numer()), BigInt::from(*q.denom()));
     let centre = [Q::new(2 * i128::from(x) + 1, 2), Q::new(2 * i128::from(y) + 1, 2)];
     let n = vertices.len();
     for v in vertices {
         if v[0] == centre[0] && v[1] == centre[1] {
-            return Some((Boundary::Vertex, [v[0], v[1]], [v[0], v[1]]));
+            let point = [v[0].clone(), v[1].clone()];
+            return Some((Boundary::Vertex, point.clone(), point));
         }
     }
-    let points: Vec<[BigRational; 2]> = vertices.iter().map(|v| [big(v[0]), big(v[1])]).collect();
-    let centre_big = centre.map(big);
+    let points: Vec<[BigRational; 2]> = vertices.iter().map(|v| [v[0].to_big(), v[1].to_big()]).collect();
+    let centre_big = centre.map(|q| Exact::Word(q).to_big());
     // Twice the signed area: positive when the vertices run counter-clockwise.
     let area: BigRational =
         (0..n).map(|i| &points[i][0] * &points[(i + 1) % n][1] - &points[(i + 1) % n][0] * &points[i][1]).sum();
@@ -79,14 +78,14 @@ pub fn boundary_at(vertices: &[[Q; 3]], x: u32, y: u32) -> Option<(Boundary, [Q;
         let flip = if orientation == Ordering::Less { -1 } else { 1 };
         let dy = b[1].cmp(&a[1]) as i32 * flip;
         let dx = b[0].cmp(&a[0]) as i32 * flip;
-        let (a, b) = (vertices[i], vertices[(i + 1) % n]);
+        let (a, b) = (&vertices[i], &vertices[(i + 1) % n]);
         let kind = match (dy, dx) {
             (0, d) if d < 0 => Boundary::TopEdge,
             (0, _) => Boundary::BottomEdge,
             (d, _) if d < 0 => Boundary::LeftEdge,
             _ => Boundary::RightEdge,
         };
-        return Some((kind, [a[0], a[1]], [b[0], b[1]]));
+        return Some((kind, [a[0].clone(), a[1].clone()], [b[0].clone(), b[1].clone()]));
     }
     None
 }
@@ -117,7 +116,7 @@ pub struct RuleDifference {
     pub covering: (Vec<usize>, Vec<usize>),
     /// For each polygon covered under one rule set and not the other: its
     /// index, where the centre lies on it, and that edge's ends.
-    pub ties: Vec<(usize, Boundary, [Q; 2], [Q; 2])>,
+    pub ties: Vec<(usize, Boundary, [Exact; 2], [Exact; 2])>,
 }
 
 #[derive(Default)]
@@ -199,9 +198,9 @@ fn deciding_rule(rules: Rules, boundary: Boundary) -> String {
 
 /// One sentence on a centre exactly on a polygon's boundary and the rule
 /// that decides it, or `None` when pixel (x, y)'s centre is not on it.
-pub fn tie_text(rules: Rules, vertices: &[[Q; 3]], x: u32, y: u32) -> Option<String> {
+pub fn tie_text(rules: Rules, vertices: &[[Exact; 3]], x: u32, y: u32) -> Option<String> {
     let (boundary, a, b) = boundary_at(vertices, x, y)?;
-    let point = |p: [Q; 2]| format!("({}, {})", crate::exact::fraction(p[0]), crate::exact::fraction(p[1]));
+    let point = |[x, y]: [Exact; 2]| format!("({}, {})", crate::exact::fraction(x), crate::exact::fraction(y));
     let place = match boundary {
         Boundary::TopEdge => words!("boundary-top"),
         Boundary::BottomEdge => words!("boundary-bottom"),
@@ -226,9 +225,9 @@ mod tests {
     use super::*;
     use crate::rules::Preset;
 
-    fn triangle() -> Vec<[Q; 3]> {
+    fn triangle() -> Vec<[Exact; 3]> {
         // (1/2, 1/2), (13/2, 1/2), (13/2, 13/2): centres on its right and bottom edges.
-        let q = |n: i128| Q::new(n, 2);
+        let q = |n: i128| Exact::Word(Q::new(n, 2));
         vec![[q(1), q(1), q(10)], [q(13), q(1), q(10)], [q(13), q(13), q(10)]]
     }
 

@@ -15,7 +15,7 @@ use num_traits::Num;
 
 use crate::buffer::Buffers;
 use crate::depth::{Depth, depth_at_centre};
-use crate::exact::Q;
+use crate::exact::Exact;
 use crate::pipeline::{PixelRect, RasterSink, Scratch, fate, rasterize};
 use crate::scan::{Crossing, Span};
 use crate::scene::{Polygon, Scene};
@@ -158,9 +158,12 @@ impl RasterSink for SegmentSink<'_> {
 /// The pixel rectangle a polygon's vertices span (clipped to nothing when
 /// wholly outside the non-negative quadrant); `None` for an empty box.
 fn bounding_rect(polygon: &Polygon) -> Option<PixelRect> {
-    let floor = |v: Q| v.floor().to_integer().clamp(0, i128::from(u32::MAX)) as u32;
-    let xs = polygon.vertices.iter().map(|v| v[0]);
-    let ys = polygon.vertices.iter().map(|v| v[1]);
+    let floor = |v: &Exact| {
+        let floor = v.floor().clamp(BigInt::from(0), BigInt::from(u32::MAX));
+        num_traits::ToPrimitive::to_u32(&floor).expect("clamped")
+    };
+    let xs = polygon.vertices.iter().map(|v| &v[0]);
+    let ys = polygon.vertices.iter().map(|v| &v[1]);
     let (x0, x1) = (xs.clone().min()?, xs.max()?);
     let (y0, y1) = (ys.clone().min()?, ys.max()?);
     // A centre at x + 1/2 inside [x0, x1] needs x ≥ ⌊x0⌋ − 1 … x ≤ ⌊x1⌋; the cell rule takes ⌊x0⌋ … ⌊x1⌋.

@@ -392,7 +392,8 @@ fn compare_rules(scene: &Scene, path: &str, preset: zsim::rules::Preset) -> Stri
         }
         list.iter().map(|&i| format!("\"{}\"", scene.polygons[i].name)).collect::<Vec<_>>().join(" and ")
     };
-    let point = |p: [zsim::exact::Q; 2]| format!("({}, {})", zsim::exact::fraction(p[0]), zsim::exact::fraction(p[1]));
+    let point =
+        |[x, y]: &[zsim::exact::Exact; 2]| format!("({}, {})", zsim::exact::fraction(x), zsim::exact::fraction(y));
     for d in &differences {
         let _ = writeln!(
             text,
@@ -414,7 +415,7 @@ fn compare_rules(scene: &Scene, path: &str, preset: zsim::rules::Preset) -> Stri
                     "      the centre ({}.5, {}.5) is the vertex {} of \"{name}\": the edges meeting there decide, under each rule set as on its own edges",
                     d.x,
                     d.y,
-                    point(*a)
+                    point(a)
                 );
                 continue;
             }
@@ -428,8 +429,8 @@ fn compare_rules(scene: &Scene, path: &str, preset: zsim::rules::Preset) -> Stri
                 d.x,
                 d.y,
                 boundary.words(),
-                point(*a),
-                point(*b),
+                point(a),
+                point(b),
                 verdict(scene.rules),
                 preset_name(scene.rules.preset),
                 verdict(other),

@@ -157,3 +157,35 @@ fn step_and_explain_show_what_an_inexact_mode_computes() {
     assert_eq!(&row[2..4], ["5", "0"]);
     assert!(row[4].starts_with("in f32-incremental arithmetic the cell holds 0; in exact arithmetic 5:"), "{row:?}");
 }
+
+/// Snapping to fixed point moves a tilted quadrilateral's vertices off its
+/// plane (it was refused as "not planar" under `--arith fixed:8`, as was any
+/// clip-space polygon cut into one): a polygon of more than three vertices
+/// takes its plane's depth at each snapped vertex, a triangle keeps its z.
+#[test]
+fn fixed_point_snapping_keeps_a_polygon_planar() {
+    let quad = r#"{"width": 16, "height": 16, "polygons": [
+        {"name": "quad", "value": 1, "vertices": [["1.001", "1.002", "2"], ["12.003", "1.5", "4.2"], ["13.1", "12.7", "7.9"], [2, "11.3", "3312392013/613380470"]]},
+        {"name": "triangle", "value": 2, "vertices": [["3.001", "3.002", "9"], ["8.003", "3.5", "9.5"], ["5.1", "9.7", "10.003"]]}]}"#;
+    let scene = Scene::from_json(quad, Path::new("quad.json")).unwrap();
+    let snapped = arith::snap(&scene, 8).expect("drawn, not refused as not planar");
+    let plane = scene.polygons[0].geometry.plane();
+    let big = |v: &zsim::exact::Exact| v.to_big();
+    let mut moves = 0;
+    for (given, moved) in scene.polygons[0].vertices.iter().zip(&snapped.polygons[0].vertices) {
+        let [x, y, z] = moved.each_ref().map(big);
+        let on_plane =
+            x * &plane.a + y * &plane.b + z * &plane.c + num_rational::BigRational::from_integer(plane.d.clone());
+        assert!(num_traits::Zero::is_zero(&on_plane), "{moved:?} off the plane {plane}");
+        let unit = num_rational::BigRational::from_integer(256.into());
+        assert!(
+            (big(&moved[0]) * &unit).is_integer() && (big(&moved[1]) * &unit).is_integer(),
+            "{moved:?} on the grid"
+        );
+        moves += usize::from(given[0] != moved[0] || given[1] != moved[1]);
+    }
+    assert_eq!(moves, 4, "every vertex of the quadrilateral moves when snapped");
+    for (given, moved) in scene.polygons[1].vertices.iter().zip(&snapped.polygons[1].vertices) {
+        assert_eq!(given[2], moved[2], "a triangle keeps its vertices' z");
+    }
+}

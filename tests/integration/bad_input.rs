@@ -69,11 +69,6 @@ fn bad_scenes_are_refused_with_one_line_each() {
             r#"{"polygons": [{"name": "bent", "value": 1, "vertices": [["13", "-8.965147458463", "19"], ["4.36427322", "97/621", "4.601918766151"], ["-7.3178342886648", "33/600", "-4"], ["8.4723050710231", "3.0701032506", "-7.2743050146027"]]}]}"#.into(),
         ),
         (
-            // Clipping 30-digit clip-space coordinates gives raster vertices beyond 128-bit fractions.
-            "clip_space_too_fine.json",
-            r#"{"polygons": [{"name": "fine", "value": 1, "vertices": [["0.123456789012345678901234567891", "0.2", "0.3", "1"], ["5", "0.1", "0.2", "1"], ["0.1", "7", "0.1", "0.999999999999999999999999999999"]]}]}"#.into(),
-        ),
-        (
             "perspective_negative.json",
             format!(r#"{{"effects": {{"perspective": {{"distance": -4, "near": 1}}}}, "polygons": [{TRIANGLE}]}}"#),
         ),

@@ -29,6 +29,12 @@ impl Xorshift {
     }
 }
 
+/// A decimal `-12.345…` of any length, exactly.
+fn decimal(text: &str) -> BigRational {
+    let (whole, digits) = text.split_once('.').unwrap_or((text, ""));
+    BigRational::new(format!("{whole}{digits}").parse().unwrap(), BigInt::from(10).pow(digits.len() as u32))
+}
+
 fn parse(text: &str) -> BigRational {
     let (sign, digits) = text.strip_prefix('-').map_or((1, text), |rest| (-1, rest));
     let (whole, fraction) = digits.split_once('.').unwrap();
@@ -173,11 +179,7 @@ fn triangles_with_many_significant_digits_are_drawn_exactly() {
         let mut simulation = Simulation::new(&scene);
         simulation.finish(&mut Unobserved);
         let buffers = simulation.buffers();
-        let exact = |text: &str| {
-            let (whole, digits) = text.split_once('.').unwrap();
-            BigRational::new(format!("{whole}{digits}").parse().unwrap(), BigInt::from(10).pow(digits.len() as u32))
-        };
-        let v: Vec<[BigRational; 3]> = vertices.iter().map(|p| p.each_ref().map(|c| exact(c))).collect();
+        let v: Vec<[BigRational; 3]> = vertices.iter().map(|p| p.each_ref().map(|c| decimal(c))).collect();
         for row in 0..SIZE {
             for column in 0..SIZE {
                 let expected = in_triangle(&v, column, row);
@@ -221,11 +223,8 @@ fn polygons_once_refused_as_too_large_are_drawn_exactly() {
         let mut simulation = Simulation::new(&scene);
         simulation.finish(&mut Unobserved);
         let buffers = simulation.buffers();
-        let v: Vec<[BigRational; 3]> = scene.polygons[0]
-            .vertices
-            .iter()
-            .map(|p| p.map(|q| BigRational::new(BigInt::from(*q.numer()), BigInt::from(*q.denom()))))
-            .collect();
+        let v: Vec<[BigRational; 3]> =
+            scene.polygons[0].vertices.iter().map(|p| p.each_ref().map(zsim::exact::Exact::to_big)).collect();
         let mut covered = 0;
         for row in 0..SIZE {
             for column in 0..SIZE {
@@ -266,16 +265,12 @@ fn a_w_buffer_stores_eye_depths_beyond_128_bits_exactly() {
     let mut simulation = Simulation::new(&scene);
     simulation.finish(&mut Unobserved);
     let buffers = simulation.buffers();
-    let exact = |text: &str| {
-        let (whole, digits) = text.split_once('.').unwrap();
-        BigRational::new(format!("{whole}{digits}").parse().unwrap(), BigInt::from(10).pow(digits.len() as u32))
-    };
     let d = BigRational::new(BigInt::from(2_000_003), BigInt::from(2));
     let centre = BigRational::new(BigInt::from(SIZE), BigInt::from(2));
     let projected: Vec<[BigRational; 3]> = vertices
         .iter()
         .map(|v| {
-            let [x, y, z] = v.each_ref().map(|c| exact(c));
+            let [x, y, z] = v.each_ref().map(|c| decimal(c));
             let scale = &d / (&d - &z);
             [&centre + (x - &centre) * &scale, &centre + (y - &centre) * &scale, z * scale]
         })
@@ -296,4 +291,62 @@ fn a_w_buffer_stores_eye_depths_beyond_128_bits_exactly() {
         }
     }
     assert_eq!((covered, beyond), (53, 53), "pixels covered, and of them with depths beyond 128 bits");
+}
+
+/// Clip-space triangles given with 14 to 30 significant digits: clipping
+/// and the division by w give raster vertices beyond 128-bit fractions
+/// (they were refused before: "gives numbers beyond the exact range"), and
+/// they are drawn as the 3-decimal ones are, every pixel checked against the
+/// view ray in big rationals. The first is the triangle the bad-input
+/// snapshot held.
+#[test]
+fn clip_space_triangles_with_many_digits_are_drawn_exactly() {
+    let mut random = Xorshift(0x0123_4567_89ab_cdef);
+    let mut triangles: Vec<Vec<[String; 4]>> = vec![vec![
+        ["0.123456789012345678901234567891", "0.2", "0.3", "1"].map(String::from),
+        ["5", "0.1", "0.2", "1"].map(String::from),
+        ["0.1", "7", "0.1", "0.999999999999999999999999999999"].map(String::from),
+    ]];
+    for places in [14, 20, 28] {
+        for _ in 0..10 {
+            triangles.push(
+                (0..3)
+                    .map(|_| {
+                        let [x, y, z] = std::array::from_fn(|_| many_digits(&mut random, -3..4, places));
+                        [x, y, z, many_digits(&mut random, 0..3, places)]
+                    })
+                    .collect(),
+            );
+        }
+    }
+    let (mut covered, mut beyond) = (0, 0);
+    for (case, vertices) in triangles.iter().enumerate() {
+        let json = format!(
+            r#"{{"width": {SIZE}, "height": {SIZE}, "depth_bits": 16, "depth_test": "less", "rules": {{"store": "exact"}}, "polygons": [{{"value": 1, "vertices": {}}}]}}"#,
+            serde_json::to_string(vertices).unwrap()
+        );
+        let scene = Scene::from_json(&json, Path::new("clip.json")).unwrap_or_else(|e| panic!("case {case}: {e}"));
+        beyond += usize::from(scene.polygons[0].vertices.iter().flatten().any(|v| v.word().is_none()));
+        let mut simulation = Simulation::new(&scene);
+        simulation.finish(&mut Unobserved);
+        let buffers = simulation.buffers();
+        let v: Vec<[BigRational; 4]> = vertices.iter().map(|p| p.each_ref().map(|c| decimal(c))).collect();
+        for row in 0..SIZE {
+            for column in 0..SIZE {
+                let expected = independent(&v, column, row);
+                if buffers.frame(column, row) == 1 {
+                    covered += 1;
+                    let Some((_, depth)) = expected else {
+                        panic!("case {case}: ({column}, {row}) drawn outside: {json}")
+                    };
+                    let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store") };
+                    assert_eq!(stored.to_big(), depth, "case {case}: ({column}, {row})");
+                } else {
+                    let strictly = expected.is_some_and(|(strictly, _)| strictly);
+                    assert!(!strictly, "case {case}: ({column}, {row}) strictly inside but not drawn: {json}");
+                }
+            }
+        }
+    }
+    assert_eq!((covered, beyond), (713, 22), "pixels covered; triangles with raster vertices beyond 128 bits");
 }
