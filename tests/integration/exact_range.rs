@@ -72,6 +72,36 @@ fn independent(v: &[[BigRational; 4]], column: u32, row: u32) -> Option<(bool, B
     Some((strictly, depth))
 }
 
+/// Draws a one-polygon scene (an exact store, value 1) and checks every
+/// pixel against `expected(column, row)`, which says whether the centre is
+/// on the polygon, strictly inside it, and the exact depth stored there: a
+/// covered centre must be expected, with exactly that depth, and every
+/// centre strictly inside must be covered. Returns the pixels covered and how
+/// many of them hold a depth beyond 128 bits.
+fn check_pixels(json: &str, expected: impl Fn(u32, u32) -> Option<(bool, BigRational)>) -> (usize, usize) {
+    let scene = Scene::from_json(json, Path::new("scene.json")).unwrap_or_else(|e| panic!("{e}: {json}"));
+    let mut simulation = Simulation::new(&scene);
+    simulation.finish(&mut Unobserved);
+    let buffers = simulation.buffers();
+    let (mut covered, mut beyond) = (0, 0);
+    for row in 0..SIZE {
+        for column in 0..SIZE {
+            let expected = expected(column, row);
+            if buffers.frame(column, row) == 1 {
+                covered += 1;
+                let Some((_, depth)) = expected else { panic!("({column}, {row}) drawn outside: {json}") };
+                let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store: {json}") };
+                beyond += usize::from(stored.word().is_none());
+                assert_eq!(stored.to_big(), depth, "({column}, {row}) of {json}");
+            } else {
+                let strictly = expected.is_some_and(|(strictly, _)| strictly);
+                assert!(!strictly, "({column}, {row}) strictly inside but not drawn: {json}");
+            }
+        }
+    }
+    (covered, beyond)
+}
+
 /// Random triangles of 3-decimal clip-space coordinates (x, y, z in −3 … 3,
 /// w in −1 … 3), most of them cut by the view volume: every one is drawn
 /// (before the big-integer tier kept its vertices in big integers, 14 of
@@ -96,27 +126,8 @@ fn clipped_clip_space_triangles_are_drawn_exactly() {
         );
         let scene = Scene::from_json(&json, Path::new("clip.json")).unwrap_or_else(|e| panic!("case {case}: {e}"));
         big += usize::from(scene.polygons[0].geometry.is_big());
-        let mut simulation = Simulation::new(&scene);
-        simulation.finish(&mut Unobserved);
-        let buffers = simulation.buffers();
         let v: Vec<[BigRational; 4]> = vertices.iter().map(|p| p.clone().map(|c| parse(&c))).collect();
-        for row in 0..SIZE {
-            for column in 0..SIZE {
-                let expected = independent(&v, column, row);
-                if buffers.frame(column, row) == 1 {
-                    covered += 1;
-                    let Some((_, depth)) = expected else {
-                        panic!("case {case}: ({column}, {row}) drawn outside the triangle or the view volume: {json}")
-                    };
-                    let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store") };
-                    let stored = stored.to_big();
-                    assert_eq!(stored, depth, "case {case}: ({column}, {row})");
-                } else {
-                    let strictly = expected.is_some_and(|(strictly, _)| strictly);
-                    assert!(!strictly, "case {case}: ({column}, {row}) strictly inside but not drawn: {json}");
-                }
-            }
-        }
+        covered += check_pixels(&json, |column, row| independent(&v, column, row)).0;
     }
     assert_eq!(big, 70, "drawn on the big-integer tier");
     assert_eq!(covered, 3070, "pixels covered");
@@ -161,7 +172,7 @@ fn in_triangle(v: &[[BigRational; 3]], column: u32, row: u32) -> Option<(bool, B
 fn triangles_with_many_significant_digits_are_drawn_exactly() {
     let mut random = Xorshift(0x9e37_79b9_7f4a_7c15);
     let (mut covered, mut beyond) = (0, 0);
-    for (case, places) in [7, 10, 12, 14, 16, 17, 20, 24, 28].iter().cycle().take(27).enumerate() {
+    for places in [7, 10, 12, 14, 16, 17, 20, 24, 28].iter().cycle().take(27) {
         let vertices: Vec<[String; 3]> = (0..3)
             .map(|_| {
                 [
@@ -175,28 +186,9 @@ fn triangles_with_many_significant_digits_are_drawn_exactly() {
             r#"{{"width": {SIZE}, "height": {SIZE}, "rules": {{"store": "exact"}}, "polygons": [{{"value": 1, "vertices": {}}}]}}"#,
             serde_json::to_string(&vertices).unwrap()
         );
-        let scene = Scene::from_json(&json, Path::new("digits.json")).unwrap_or_else(|e| panic!("case {case}: {e}"));
-        let mut simulation = Simulation::new(&scene);
-        simulation.finish(&mut Unobserved);
-        let buffers = simulation.buffers();
         let v: Vec<[BigRational; 3]> = vertices.iter().map(|p| p.each_ref().map(|c| decimal(c))).collect();
-        for row in 0..SIZE {
-            for column in 0..SIZE {
-                let expected = in_triangle(&v, column, row);
-                if buffers.frame(column, row) == 1 {
-                    covered += 1;
-                    let Some((_, depth)) = expected else {
-                        panic!("case {case}: ({column}, {row}) drawn outside: {json}")
-                    };
-                    let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store") };
-                    beyond += usize::from(stored.word().is_none());
-                    assert_eq!(stored.to_big(), depth, "case {case}: ({column}, {row})");
-                } else {
-                    let strictly = expected.is_some_and(|(strictly, _)| strictly);
-                    assert!(!strictly, "case {case}: ({column}, {row}) strictly inside but not drawn: {json}");
-                }
-            }
-        }
+        let (pixels, big) = check_pixels(&json, |column, row| in_triangle(&v, column, row));
+        (covered, beyond) = (covered + pixels, beyond + big);
     }
     assert_eq!((covered, beyond), (505, 326), "pixels covered, and of them with depths beyond 128 bits");
 }
@@ -220,25 +212,9 @@ fn polygons_once_refused_as_too_large_are_drawn_exactly() {
             r#"{{"width": {SIZE}, "height": {SIZE}, "depth_test": "always", "rules": {{"store": "exact"}}, "polygons": [{{"value": 1, "vertices": {vertices}}}]}}"#
         );
         let scene = Scene::from_json(&json, Path::new("large.json")).unwrap_or_else(|e| panic!("{e}"));
-        let mut simulation = Simulation::new(&scene);
-        simulation.finish(&mut Unobserved);
-        let buffers = simulation.buffers();
         let v: Vec<[BigRational; 3]> =
             scene.polygons[0].vertices.iter().map(|p| p.each_ref().map(zsim::exact::Exact::to_big)).collect();
-        let mut covered = 0;
-        for row in 0..SIZE {
-            for column in 0..SIZE {
-                let inside = in_triangle(&v, column, row);
-                if buffers.frame(column, row) == 1 {
-                    covered += 1;
-                    let Some((_, depth)) = inside else { panic!("({column}, {row}) drawn outside: {json}") };
-                    let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store") };
-                    assert_eq!(stored.to_big(), depth, "({column}, {row}) of {vertices}");
-                } else {
-                    assert!(!inside.is_some_and(|(strictly, _)| strictly), "({column}, {row}) of {vertices} not drawn");
-                }
-            }
-        }
+        let (covered, _) = check_pixels(&json, |column, row| in_triangle(&v, column, row));
         assert_eq!(covered, expected, "{vertices}");
     }
 }
@@ -261,10 +237,6 @@ fn a_w_buffer_stores_eye_depths_beyond_128_bits_exactly() {
         r#"{{"width": {SIZE}, "height": {SIZE}, "depth_test": "always", "rules": {{"store": "exact"}}, "effects": {{"perspective": {{"distance": "{distance}", "near": 1, "store": "w"}}}}, "polygons": [{{"value": 1, "vertices": {}}}]}}"#,
         serde_json::to_string(&vertices).unwrap()
     );
-    let scene = Scene::from_json(&json, Path::new("w.json")).unwrap_or_else(|e| panic!("{e}"));
-    let mut simulation = Simulation::new(&scene);
-    simulation.finish(&mut Unobserved);
-    let buffers = simulation.buffers();
     let d = BigRational::new(BigInt::from(2_000_003), BigInt::from(2));
     let centre = BigRational::new(BigInt::from(SIZE), BigInt::from(2));
     let projected: Vec<[BigRational; 3]> = vertices
@@ -275,21 +247,8 @@ fn a_w_buffer_stores_eye_depths_beyond_128_bits_exactly() {
             [&centre + (x - &centre) * &scale, &centre + (y - &centre) * &scale, z * scale]
         })
         .collect();
-    let (mut covered, mut beyond) = (0, 0);
-    for row in 0..SIZE {
-        for column in 0..SIZE {
-            let inside = in_triangle(&projected, column, row);
-            if buffers.frame(column, row) == 1 {
-                covered += 1;
-                let Some((_, z)) = inside else { panic!("({column}, {row}) drawn outside") };
-                let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store") };
-                beyond += usize::from(stored.word().is_none());
-                assert_eq!(stored.to_big(), &d * &z / (&d + &z), "({column}, {row})");
-            } else {
-                assert!(!inside.is_some_and(|(strictly, _)| strictly), "({column}, {row}) not drawn");
-            }
-        }
-    }
+    let eye_depth = |(strictly, z): (bool, BigRational)| (strictly, &d * &z / (&d + &z));
+    let (covered, beyond) = check_pixels(&json, |column, row| in_triangle(&projected, column, row).map(eye_depth));
     assert_eq!((covered, beyond), (53, 53), "pixels covered, and of them with depths beyond 128 bits");
 }
 
@@ -327,26 +286,8 @@ fn clip_space_triangles_with_many_digits_are_drawn_exactly() {
         );
         let scene = Scene::from_json(&json, Path::new("clip.json")).unwrap_or_else(|e| panic!("case {case}: {e}"));
         beyond += usize::from(scene.polygons[0].vertices.iter().flatten().any(|v| v.word().is_none()));
-        let mut simulation = Simulation::new(&scene);
-        simulation.finish(&mut Unobserved);
-        let buffers = simulation.buffers();
         let v: Vec<[BigRational; 4]> = vertices.iter().map(|p| p.each_ref().map(|c| decimal(c))).collect();
-        for row in 0..SIZE {
-            for column in 0..SIZE {
-                let expected = independent(&v, column, row);
-                if buffers.frame(column, row) == 1 {
-                    covered += 1;
-                    let Some((_, depth)) = expected else {
-                        panic!("case {case}: ({column}, {row}) drawn outside: {json}")
-                    };
-                    let Stored::Exact(stored) = buffers.depth(column, row) else { panic!("an exact store") };
-                    assert_eq!(stored.to_big(), depth, "case {case}: ({column}, {row})");
-                } else {
-                    let strictly = expected.is_some_and(|(strictly, _)| strictly);
-                    assert!(!strictly, "case {case}: ({column}, {row}) strictly inside but not drawn: {json}");
-                }
-            }
-        }
+        covered += check_pixels(&json, |column, row| independent(&v, column, row)).0;
     }
     assert_eq!((covered, beyond), (713, 22), "pixels covered; triangles with raster vertices beyond 128 bits");
 }
