@@ -397,10 +397,12 @@ impl BigPolygon {
     /// The pixels `first ..= last` of `row`, the depth stepped by the seed's
     /// `z₁ = z − A/C` per column.
     fn span<S: RasterSink>(&self, row: u32, first: u32, last: u32, sink: &mut S) {
-        if let Some(Words { plane: [a, _, c, _], .. }) = self.words {
-            // The numerator over |2C| falls by 2A·sign(C) per column, below 2^125 as
-            // the depths at two columns of `BigPolygon::words`' range are.
-            let mut depth = DepthStepper::from_depth(&self.depth_at_centre(first, row), -2 * a * c.signum());
+        // The numerator over |2C| falls by 2A·sign(C) per column, below 2^125 as
+        // the depths at two columns of `BigPolygon::words`' range are.
+        let start = |Words { plane: [a, _, c, _], .. }: &Words| {
+            DepthStepper::from_depth(&self.depth_at_centre(first, row), -2 * a * c.signum())
+        };
+        if let Some(mut depth) = self.words.as_ref().and_then(start) {
             for x in first..=last {
                 sink.pixel(x, row, depth.current());
                 depth.advance();

@@ -303,7 +303,9 @@ impl Depth {
     /// the nearest integer"; 10.5 becomes 11, −0.5 becomes 0).
     pub fn rounded(&self) -> BigInt {
         match &self.0 {
-            DepthValue::Word { .. } => BigInt::from(self.rounded_word().expect("held in 128 bits")),
+            DepthValue::Word { whole, remainder, denominator } => {
+                BigInt::from(round_half_up(*whole, *remainder, *denominator))
+            }
             // ⌊z + 1/2⌋ = ⌊(2n + d) / 2d⌋.
             DepthValue::Big(big) => (big.numer() * 2u32 + big.denom()).div_floor(&(big.denom() * 2u32)),
         }
@@ -313,10 +315,7 @@ impl Depth {
     #[inline]
     fn rounded_word(&self) -> Option<i128> {
         match self.0 {
-            // remainder < denominator < 2^126 (plane::MAX_SCALED; BigPolygon::new on the big tier), so 2·remainder fits.
-            DepthValue::Word { whole, remainder, denominator } => {
-                Some(whole + i128::from(2 * remainder >= denominator))
-            }
+            DepthValue::Word { whole, remainder, denominator } => Some(round_half_up(whole, remainder, denominator)),
             DepthValue::Big(_) => None,
         }
     }
@@ -338,6 +337,12 @@ impl Depth {
             DepthStore::Exact => Stored::Exact(self.value()),
         }
     }
+}
+
+/// `whole + remainder/denominator` rounded half up.
+fn round_half_up(whole: i128, remainder: i128, denominator: i128) -> i128 {
+    // remainder < denominator < 2^124 (plane::MAX_SCALED; Depth::from_big), so 2·remainder fits.
+    whole + i128::from(2 * remainder >= denominator)
 }
 
 /// The exact depth along one scanline, stepped from pixel to pixel by the
@@ -435,11 +440,15 @@ impl<W: Word> DepthPlane<W> {
 impl DepthStepper {
     /// Starts at `depth`, stepping by `step / denominator` per pixel (the
     /// depth's own positive denominator, [`Depth::fraction`]); every value
-    /// reached must fit as the depth does.
-    pub fn from_depth(depth: &Depth, step: i128) -> DepthStepper {
-        let DepthValue::Word { whole, remainder, denominator } = depth.0 else {
-            unreachable!("a depth stepped in 128 bits is held in 128 bits: please report this bug")
-        };
+    /// reached must fit as the depth does. `None` for a depth beyond 128
+    /// bits, which is stepped in big integers (`crate::big`).
+    pub fn from_depth(depth: &Depth, step: i128) -> Option<DepthStepper> {
+        let DepthValue::Word { whole, remainder, denominator } = depth.0 else { return None };
+        Some(DepthStepper::at(whole, remainder, denominator, step))
+    }
+
+    /// At `whole + remainder/denominator`, stepping by `step / denominator`.
+    fn at(whole: i128, remainder: i128, denominator: i128, step: i128) -> DepthStepper {
         let (step_whole, step_remainder) = floor_div(step, denominator);
         DepthStepper { whole, remainder, denominator, step_whole, step_remainder }
     }
@@ -456,11 +465,12 @@ impl DepthStepper {
         let [x1, y1, z1] = geometry.points[0];
         let centre_x = (2 * column + 1) * geometry.denominator;
         let numerator = c * z1 - a * (centre_x - x1) - b * (scan_y - y1);
-        let denominator = c * geometry.scale();
-        let depth = Depth::from_fraction(numerator, denominator);
+        // Signs folded so that the denominator c·2D is positive.
+        let sign = c.signum();
+        let (whole, remainder) = floor_div(sign * numerator, sign * c * geometry.scale());
         // One column is 2D scaled units: ΔZ = −a·2D/c, Δz = −a·2D/(c·2D).
         let step = -a * 2 * geometry.denominator;
-        DepthStepper::from_depth(&depth, if denominator < 0 { -step } else { step })
+        DepthStepper::at(whole, remainder, sign * c * geometry.scale(), sign * step)
     }
 }
 
