@@ -17,7 +17,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
-use crate::exact::{Exact, Q};
+use crate::exact::Exact;
 
 /// The view volume's planes, in the order clipped: x, then y, then z; each
 /// as (axis, sign): inside when `w + sign·coordinate ≥ 0`.
@@ -41,9 +41,9 @@ pub enum Clipped {
 /// Clips a polygon given in clip space and maps it onto a `width × height`
 /// raster whose z-buffer holds `0 ..= depth_max`. The clipping runs in
 /// arbitrary-precision rationals, so it never overflows.
-pub fn to_raster(vertices: &[[Q; 4]], width: u32, height: u32, depth_max: u32) -> Clipped {
+pub fn to_raster(vertices: &[[Exact; 4]], width: u32, height: u32, depth_max: u32) -> Clipped {
     let zero = BigRational::zero();
-    let vertices: Vec<[BigRational; 4]> = vertices.iter().map(|v| v.map(big)).collect();
+    let vertices: Vec<[BigRational; 4]> = vertices.iter().map(|v| v.each_ref().map(Exact::to_big)).collect();
     let inside = vertices.iter().filter(|v| PLANES.iter().all(|&(axis, sign)| distance(v, axis, sign) >= zero)).count();
     let mut polygon = vertices;
     for (axis, sign) in PLANES {
@@ -88,16 +88,13 @@ fn distance(v: &[BigRational; 4], axis: usize, sign: i128) -> BigRational {
     if sign > 0 { &v[3] + &v[axis] } else { &v[3] - &v[axis] }
 }
 
-fn big(q: Q) -> BigRational {
-    BigRational::new(BigInt::from(*q.numer()), BigInt::from(*q.denom()))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::exact::Q;
 
-    fn q(n: i128, d: i128) -> Q {
-        Q::new(n, d)
+    fn q(n: i128, d: i128) -> Exact {
+        Exact::Word(Q::new(n, d))
     }
 
     /// A triangle inside the volume maps by the viewport exactly: x' = (x/w + 1)·W/2.
@@ -127,7 +124,7 @@ mod tests {
         let Clipped::Inside { vertices, inside } = to_raster(&triangle, 2, 2, 10) else { panic!("inside") };
         assert_eq!(inside, 2);
         // Every vertex left has z' ≥ 0: nothing in front of the near plane survives as negative depth.
-        assert!(vertices.iter().all(|v| v[2] >= Exact::Word(Q::from_integer(0))), "{vertices:?}");
+        assert!(vertices.iter().all(|v| v[2] >= q(0, 1)), "{vertices:?}");
         assert_eq!(vertices.len(), 4);
         let all_behind = [
             [q(0, 1), q(0, 1), q(-3, 1), q(-1, 1)],

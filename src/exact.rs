@@ -169,6 +169,9 @@ pub enum NumberError {
     ZeroDenominator(String),
     /// Too many digits or too large an exponent to hold exactly.
     TooLarge(String),
+    /// More digits or a larger power of ten than a vertex coordinate may
+    /// have ([`MAX_BIG_DIGITS`]).
+    TooLong(String),
 }
 
 impl fmt::Display for NumberError {
@@ -177,6 +180,9 @@ impl fmt::Display for NumberError {
             NumberError::NotANumber(text) => f.write_str(&words!("number-not-a-number", text = text)),
             NumberError::ZeroDenominator(text) => f.write_str(&words!("number-zero-denominator", text = text)),
             NumberError::TooLarge(text) => f.write_str(&words!("number-too-large", text = text)),
+            NumberError::TooLong(text) => {
+                f.write_str(&words!("number-too-long", text = text, max = MAX_BIG_DIGITS.to_string()))
+            }
         }
     }
 }
@@ -216,9 +222,17 @@ pub fn parse_number(text: &str) -> Result<Q, NumberError> {
 /// the exponent and the common denominators built later.
 const MAX_DIGITS: usize = 30;
 
-fn parse_decimal(text: &str, whole: &str) -> Result<Q, NumberError> {
+/// A decimal as written: its sign, its significant digits (no leading
+/// zeros) and the power of ten they are scaled by.
+struct Decimal {
+    negative: bool,
+    significant: String,
+    scale: i64,
+}
+
+/// Reads `-12.5e3`: sign, digits with an optional point, an optional exponent.
+fn read_decimal(text: &str, whole: &str) -> Result<Decimal, NumberError> {
     let not_a_number = || NumberError::NotANumber(whole.to_string());
-    let too_large = || NumberError::TooLarge(whole.to_string());
     let (negative, rest) = match text.as_bytes().first() {
         Some(b'-') => (true, &text[1..]),
         Some(b'+') => (false, &text[1..]),
@@ -239,16 +253,24 @@ fn parse_decimal(text: &str, whole: &str) -> Result<Q, NumberError> {
         return Err(not_a_number());
     }
     let digits = format!("{int_part}{frac_part}");
-    let significant = digits.trim_start_matches('0');
+    let significant = digits.trim_start_matches('0').to_string();
+    Ok(Decimal { negative, significant, scale: i64::from(exponent) - frac_part.len() as i64 })
+}
+
+fn parse_decimal(text: &str, whole: &str) -> Result<Q, NumberError> {
+    let too_large = || NumberError::TooLarge(whole.to_string());
+    let Decimal { negative, significant, scale } = read_decimal(text, whole)?;
     if significant.len() > MAX_DIGITS {
         return Err(too_large());
     }
     let mut numer: i128 = if significant.is_empty() { 0 } else { significant.parse().map_err(|_| too_large())? };
-    let scale = exponent - frac_part.len() as i32;
     let mut denom: i128 = 1;
     if numer != 0 {
-        let power =
-            10i128.checked_pow(scale.unsigned_abs()).filter(|_| scale.unsigned_abs() <= 36).ok_or_else(too_large)?;
+        let power = u32::try_from(scale.unsigned_abs())
+            .ok()
+            .filter(|power| *power <= 36)
+            .and_then(|power| 10i128.checked_pow(power))
+            .ok_or_else(too_large)?;
         if scale >= 0 {
             numer = numer.checked_mul(power).ok_or_else(too_large)?;
         } else {
@@ -259,6 +281,52 @@ fn parse_decimal(text: &str, whole: &str) -> Result<Q, NumberError> {
         numer = -numer;
     }
     Ok(Q::new(numer, denom))
+}
+
+/// Most significant digits, and largest power of ten, a vertex coordinate
+/// may be written with: far beyond any homework (a double printed in full
+/// has 17 digits), and far enough below what would exhaust memory or time.
+/// Coordinates past [`crate::plane::MAX_SCALED_BITS`] are refused later.
+pub const MAX_BIG_DIGITS: usize = 1000;
+
+/// Reads a number as [`parse_number`] does, of any size up to
+/// [`MAX_BIG_DIGITS`] digits and powers of ten: a 128-bit fraction where it
+/// fits, a big one where not (for vertex coordinates).
+///
+/// ```
+/// use zsim::exact::{parse_exact, Exact, Q};
+/// assert_eq!(parse_exact("2.5").unwrap(), Exact::Word(Q::new(5, 2)));
+/// assert!(parse_exact("0.1234567890123456789012345678901234567890").unwrap().word().is_none());
+/// ```
+pub fn parse_exact(text: &str) -> Result<Exact, NumberError> {
+    match parse_number(text) {
+        Err(NumberError::TooLarge(_)) => {}
+        other => return other.map(Exact::Word),
+    }
+    let trimmed = text.trim();
+    let big = |part: &str| {
+        let Decimal { negative, significant, scale } = read_decimal(part.trim(), text)?;
+        let too_long = || NumberError::TooLong(text.to_string());
+        if significant.len() > MAX_BIG_DIGITS || scale.unsigned_abs() > MAX_BIG_DIGITS as u64 {
+            return Err(too_long());
+        }
+        let digits: BigInt =
+            if significant.is_empty() { BigInt::zero() } else { significant.parse().map_err(|_| too_long())? };
+        let digits = if negative { -digits } else { digits };
+        let power = BigInt::from(10).pow(scale.unsigned_abs() as u32);
+        Ok(if scale >= 0 { BigRational::from_integer(digits * power) } else { BigRational::new(digits, power) })
+    };
+    let value = match trimmed.split_once('/') {
+        Some((num, den)) => {
+            let (num, den) = (big(num)?, big(den)?);
+            if den.is_zero() {
+                return Err(NumberError::ZeroDenominator(text.to_string()));
+            }
+            num / den
+        }
+        None => big(trimmed)?,
+    };
+    Ok(Exact::from(value))
 }
 
 /// `a / b` without overflow panics; `None` when the result does not fit.
@@ -682,6 +750,32 @@ mod tests {
         }
         assert!(matches!(parse_number("1234567890123456789012345678901"), Err(NumberError::TooLarge(_))));
         assert!(matches!(parse_number("1e40"), Err(NumberError::TooLarge(_))));
+    }
+
+    /// A vertex coordinate may have up to MAX_BIG_DIGITS significant digits
+    /// and powers of ten; past that (memory and time, not exactness) it is
+    /// refused, as settings are past 30 digits.
+    #[test]
+    fn vertex_coordinates_may_have_up_to_a_thousand_digits() {
+        let sevens = |n: usize| format!("0.{}", "7".repeat(n));
+        let long = parse_exact(&sevens(1000)).unwrap();
+        assert_eq!(
+            long.to_big(),
+            BigRational::new(BigInt::from(7) * (BigInt::from(10).pow(1000) - 1) / 9, BigInt::from(10).pow(1000))
+        );
+        assert!(matches!(parse_exact(&sevens(1001)), Err(NumberError::TooLong(_))));
+        assert!(matches!(parse_number(&sevens(31)), Err(NumberError::TooLarge(_))));
+        assert_eq!(parse_exact("1e1000").unwrap(), Exact::integer(BigInt::from(10).pow(1000)));
+        assert!(matches!(parse_exact("1e1001"), Err(NumberError::TooLong(_))));
+        assert!(matches!(parse_exact("1e-1001"), Err(NumberError::TooLong(_))));
+        let third = "1234567890123456789012345678901234567890/3";
+        assert_eq!(
+            parse_exact(third).unwrap().to_big(),
+            BigRational::new("1234567890123456789012345678901234567890".parse().unwrap(), BigInt::from(3))
+        );
+        assert_eq!(parse_exact("-2.5").unwrap(), Exact::Word(Q::new(-5, 2)));
+        assert!(matches!(parse_exact("1/0.000"), Err(NumberError::ZeroDenominator(_))));
+        assert!(matches!(parse_exact("1.2.3"), Err(NumberError::NotANumber(_))));
     }
 
     #[test]

@@ -112,13 +112,51 @@ fn describe_location(path: &str) -> String {
     path.to_string()
 }
 
-/// An exact number as written in a scene file.
+/// An exact number as written in a scene file (a setting: a 128-bit
+/// fraction, at most 30 significant digits).
 #[derive(Debug, Clone, Copy)]
 struct Number(Q);
 
+/// A vertex coordinate as written: exact, of any size up to
+/// [`crate::exact::MAX_BIG_DIGITS`] digits.
+#[derive(Debug, Clone)]
+struct Coordinate(Exact);
+
+/// How a number of each kind is read from its text or a JSON integer.
+trait ReadNumber: Sized {
+    fn parse(text: &str) -> Result<Self, crate::exact::NumberError>;
+    fn integer(value: i128) -> Self;
+}
+
+impl ReadNumber for Number {
+    fn parse(text: &str) -> Result<Number, crate::exact::NumberError> {
+        parse_number(text).map(Number)
+    }
+
+    fn integer(value: i128) -> Number {
+        Number(Q::from_integer(value))
+    }
+}
+
+impl ReadNumber for Coordinate {
+    fn parse(text: &str) -> Result<Coordinate, crate::exact::NumberError> {
+        crate::exact::parse_exact(text).map(Coordinate)
+    }
+
+    fn integer(value: i128) -> Coordinate {
+        Coordinate(Exact::Word(Q::from_integer(value)))
+    }
+}
+
 impl<'de> Deserialize<'de> for Number {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Number, D::Error> {
-        deserializer.deserialize_any(NumberVisitor)
+        deserializer.deserialize_any(NumberVisitor(std::marker::PhantomData))
+    }
+}
+
+impl<'de> Deserialize<'de> for Coordinate {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Coordinate, D::Error> {
+        deserializer.deserialize_any(NumberVisitor(std::marker::PhantomData))
     }
 }
 
@@ -128,46 +166,46 @@ const NUMBER_TOKEN: &str = "$serde_json::private::Number";
 
 /// Reads a number straight from the parser, without building a JSON value:
 /// a JSON number's digits, or a string holding a fraction or a decimal.
-struct NumberVisitor;
+struct NumberVisitor<T>(std::marker::PhantomData<T>);
 
-impl<'de> serde::de::Visitor<'de> for NumberVisitor {
-    type Value = Number;
+impl<'de, T: ReadNumber> serde::de::Visitor<'de> for NumberVisitor<T> {
+    type Value = T;
 
     fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str("a number, or a string holding a fraction or a decimal")
     }
 
-    fn visit_str<E: serde::de::Error>(self, text: &str) -> Result<Number, E> {
-        parse_number(text).map(Number).map_err(E::custom)
+    fn visit_str<E: serde::de::Error>(self, text: &str) -> Result<T, E> {
+        T::parse(text).map_err(E::custom)
     }
 
-    fn visit_i64<E: serde::de::Error>(self, value: i64) -> Result<Number, E> {
-        Ok(Number(Q::from_integer(i128::from(value))))
+    fn visit_i64<E: serde::de::Error>(self, value: i64) -> Result<T, E> {
+        Ok(T::integer(i128::from(value)))
     }
 
-    fn visit_u64<E: serde::de::Error>(self, value: u64) -> Result<Number, E> {
-        Ok(Number(Q::from_integer(i128::from(value))))
+    fn visit_u64<E: serde::de::Error>(self, value: u64) -> Result<T, E> {
+        Ok(T::integer(i128::from(value)))
     }
 
-    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Number, A::Error> {
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<T, A::Error> {
         match map.next_key::<String>()? {
             Some(key) if key == NUMBER_TOKEN => {
                 let digits: String = map.next_value()?;
-                parse_number(&digits).map(Number).map_err(A::Error::custom)
+                T::parse(&digits).map_err(A::Error::custom)
             }
             _ => Err(A::Error::custom(words!("number-found-object"))),
         }
     }
 
-    fn visit_bool<E: serde::de::Error>(self, _: bool) -> Result<Number, E> {
+    fn visit_bool<E: serde::de::Error>(self, _: bool) -> Result<T, E> {
         Err(E::custom(words!("number-found-bool")))
     }
 
-    fn visit_unit<E: serde::de::Error>(self) -> Result<Number, E> {
+    fn visit_unit<E: serde::de::Error>(self) -> Result<T, E> {
         Err(E::custom(words!("number-found-null")))
     }
 
-    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, _: A) -> Result<Number, A::Error> {
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, _: A) -> Result<T, A::Error> {
         Err(A::Error::custom(words!("number-found-list")))
     }
 }
@@ -275,10 +313,10 @@ struct PolygonFile {
 
 /// A vertex as written: `[x, y, z]` in pixel units (or the window's), or
 /// `[x, y, z, w]` in clip space ([`crate::clip_space`]).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 enum VertexFile {
-    Xyz([Q; 3]),
-    Clip([Q; 4]),
+    Xyz([Exact; 3]),
+    Clip([Exact; 4]),
 }
 
 impl<'de> Deserialize<'de> for VertexFile {
@@ -298,17 +336,17 @@ impl<'de> serde::de::Visitor<'de> for VertexVisitor {
 
     fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<VertexFile, A::Error> {
         let mut values = Vec::with_capacity(4);
-        while let Some(Number(value)) = seq.next_element::<Number>()? {
+        while let Some(Coordinate(value)) = seq.next_element::<Coordinate>()? {
             if values.len() == 4 {
                 return Err(A::Error::invalid_length(5, &self));
             }
             values.push(value);
         }
-        match values[..] {
-            [x, y, z] => Ok(VertexFile::Xyz([x, y, z])),
-            [x, y, z, w] => Ok(VertexFile::Clip([x, y, z, w])),
-            _ => Err(A::Error::invalid_length(values.len(), &self)),
+        let count = values.len();
+        if let Ok(xyz) = <[Exact; 3]>::try_from(values.clone()) {
+            return Ok(VertexFile::Xyz(xyz));
         }
+        <[Exact; 4]>::try_from(values).map(VertexFile::Clip).map_err(|_| A::Error::invalid_length(count, &self))
     }
 }
 
@@ -507,11 +545,16 @@ impl PolygonFile {
         {
             return Err(fail(&name, PolygonProblem::Other(words!("polygon-opacity", alpha = fraction(alpha)))));
         }
-        let clip_space: Vec<[Q; 4]> =
-            self.vertices.iter().filter_map(|v| if let VertexFile::Clip(c) = v { Some(*c) } else { None }).collect();
+        let clip_space: Vec<[Exact; 4]> = self
+            .vertices
+            .iter()
+            .filter_map(|v| if let VertexFile::Clip(c) = v { Some(c.clone()) } else { None })
+            .collect();
         let mut vertices: Vec<[Exact; 3]> = if clip_space.is_empty() {
-            let given = self.vertices.iter().filter_map(|v| if let VertexFile::Xyz(p) = v { Some(*p) } else { None });
-            given.map(|v| v.map(Exact::Word)).collect()
+            self.vertices
+                .iter()
+                .filter_map(|v| if let VertexFile::Xyz(p) = v { Some(p.clone()) } else { None })
+                .collect()
         } else if clip_space.len() < self.vertices.len() {
             return Err(fail(&name, PolygonProblem::Other(words!("clip-space-mixed"))));
         } else if frame.window.is_some() || frame.perspective.is_some() {
@@ -572,7 +615,7 @@ impl PolygonFile {
 /// A polygon given in clip space: clipped, divided and mapped by the viewport
 /// ([`crate::clip_space`]); what is left, its geometry and how it was clipped.
 fn clip_space_polygon(
-    clip_space: &[[Q; 4]],
+    clip_space: &[[Exact; 4]],
     frame: &Frame,
 ) -> Result<(Vec<[Exact; 3]>, Geometry, Clip), PolygonProblem> {
     let (width, height) = frame.size;

@@ -380,6 +380,7 @@ number-found-list = expected a number, found a list
 number-not-a-number = "{ $text }" is not a number (write an integer, a decimal such as 2.5, or a fraction such as "5/2")
 number-zero-denominator = "{ $text }" divides by zero
 number-too-large = "{ $text }" has too many digits to hold exactly (at most 30 significant digits)
+number-too-long = "{ $text }" has too many digits or too large a power of ten (a vertex coordinate may have at most { $max } significant digits and powers of ten up to ±{ $max })
 setting-bits = { $value } is not supported: use 1 to 32 bits
 setting-side-zero = must be at least 1 pixel
 setting-side-large = { $side } is beyond the limit of { $max } pixels

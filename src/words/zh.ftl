@@ -366,6 +366,7 @@ number-found-list = 应为数字，实际是列表
 number-not-a-number = “{ $text }”不是数字（请写整数、像 2.5 这样的小数或像 "5/2" 这样的分数）
 number-zero-denominator = “{ $text }”除以零
 number-too-large = “{ $text }”的位数太多，无法精确保存（最多 30 位有效数字）
+number-too-long = “{ $text }”的位数太多或十的幂太大（顶点坐标最多 { $max } 位有效数字，十的幂不超过 ±{ $max }）
 setting-bits = 不支持 { $value }：请使用 1 到 32 位
 setting-side-zero = 至少应为 1 像素
 setting-side-large = { $side } 超过了 { $max } 像素的上限

@@ -47,6 +47,11 @@ fn bad_scenes_are_refused_with_one_line_each() {
             r#"{"polygons": [{"name": "bent", "value": 1, "vertices": [[0,0,0],[4,0,0],[4,4,0],[0,4,1]]}]}"#.into(),
         ),
         ("not_a_number.json", r#"{"polygons": [{"value": 1, "vertices": [[0,0,"abc"],[1,0,0],[0,1,0]]}]}"#.into()),
+        (
+            // Past the digits and powers of ten a vertex coordinate may have (memory, not exactness).
+            "coordinate_too_long.json",
+            r#"{"polygons": [{"value": 1, "vertices": [[0,0,"1e1001"],[1,0,0],[0,1,0]]}]}"#.into(),
+        ),
         ("divide_by_zero.json", r#"{"polygons": [{"value": 1, "vertices": [[0,0,"1/0"],[1,0,0],[0,1,0]]}]}"#.into()),
         ("boolean_coordinate.json", r#"{"polygons": [{"value": 1, "vertices": [[0,0,true],[1,0,0],[0,1,0]]}]}"#.into()),
         ("bad_section.json", format!(r#"{{"effects": {{"section": "x"}}, "polygons": [{TRIANGLE}]}}"#)),

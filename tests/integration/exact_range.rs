@@ -193,11 +193,13 @@ fn triangles_with_many_significant_digits_are_drawn_exactly() {
     assert_eq!((covered, beyond), (505, 326), "pixels covered, and of them with depths beyond 128 bits");
 }
 
-/// Two polygons that were refused as too large for exact arithmetic (the
-/// bad-input snapshot held them until the reports went beyond 128 bits):
-/// 30-digit coordinates, whose plane passes 128 bits, and two denominators
-/// whose lcm does, with an edge whose line does. Drawn, each covered centre
-/// inside with its plane's depth, every centre strictly inside covered.
+/// Polygons that were refused as too large for exact arithmetic (the
+/// bad-input snapshot held the first two until the reports went beyond 128
+/// bits): 30-digit coordinates, whose plane passes 128 bits, two
+/// denominators whose lcm does, with an edge whose line does, and
+/// coordinates of 40 and 60 significant digits (refused when they were read,
+/// as numbers are past 30 digits). Drawn, each covered centre inside with
+/// its plane's depth, every centre strictly inside covered.
 #[test]
 fn polygons_once_refused_as_too_large_are_drawn_exactly() {
     let cases = [
@@ -205,6 +207,10 @@ fn polygons_once_refused_as_too_large_are_drawn_exactly() {
         (
             r#"[["1/288230376151711717", 0, 0], ["800000000000000000000000000009/100000000000000000000000000001", 4, 0], [0, 4, 3]]"#,
             16,
+        ),
+        (
+            r#"[["1.234567890123456789012345678901234567891", "2.5", "1"], ["15.987654321098765432109876543210987654321098765432109876543211", "3", "2"], [4, "14.000000000000000000000000000000000000000000000001", "3"]]"#,
+            81,
         ),
     ];
     for (vertices, expected) in cases {
