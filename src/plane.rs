@@ -190,6 +190,17 @@ impl Geometry {
     /// within ±[`MAX_SCALED`], and the polygon planar (trivially so when the
     /// normal is zero, i.e. the vertices are collinear).
     pub fn new(vertices: &[[Q; 3]]) -> Result<Geometry, GeometryError> {
+        Geometry::of(vertices)
+    }
+
+    /// [`Geometry::new`] for vertices of any size (a clipped clip-space
+    /// polygon's may outgrow 128-bit fractions): on the words when they fit
+    /// them, else on the big-integer tier.
+    pub fn from_exact(vertices: &[[Exact; 3]]) -> Result<Geometry, GeometryError> {
+        Geometry::of(vertices)
+    }
+
+    fn of<C: Coordinate>(vertices: &[[C; 3]]) -> Result<Geometry, GeometryError> {
         if vertices.len() < 3 {
             return Err(GeometryError::TooFewVertices(vertices.len()));
         }
@@ -200,39 +211,28 @@ impl Geometry {
         let words = || {
             let mut denominator: i128 = 1;
             for value in vertices.iter().flatten() {
+                let value = value.word()?;
                 denominator = denominator.checked_mul(value.denom() / denominator.gcd(value.denom()))?;
                 if denominator > MAX_SCALED {
                     return None;
                 }
             }
             let scale = 2 * denominator;
-            let scaled = |v: &Q| Some(v.numer().checked_mul(scale / v.denom())?).filter(|s| s.abs() <= MAX_SCALED);
+            let scaled = |v: &C| {
+                let v = v.word()?;
+                Some(v.numer().checked_mul(scale / v.denom())?).filter(|s| s.abs() <= MAX_SCALED)
+            };
             let points = vertices.iter().map(|v| Some([scaled(&v[0])?, scaled(&v[1])?, scaled(&v[2])?]));
             Some((denominator, points.collect::<Option<Vec<_>>>()?))
         };
         let Some((denominator, points)) = words() else {
-            let big = |q: &Q| BigRational::new_raw(BigInt::from(*q.numer()), BigInt::from(*q.denom()));
-            return Geometry::new_big(&vertices.iter().map(|v| v.each_ref().map(big)).collect::<Vec<_>>());
+            return Geometry::new_big(&vertices.iter().map(|v| v.each_ref().map(C::big)).collect::<Vec<_>>());
         };
         let normal = newell(&points);
         let mut geometry = Geometry { denominator, points, normal, narrow: false, big: None };
         geometry.check_planar()?;
         geometry.narrow = geometry.bounds_fit_i64();
         Ok(geometry)
-    }
-
-    /// [`Geometry::new`] for vertices of any size (a clipped clip-space
-    /// polygon's may outgrow 128-bit fractions): on the words when they fit
-    /// them, else on the big-integer tier.
-    pub fn from_exact(vertices: &[[Exact; 3]]) -> Result<Geometry, GeometryError> {
-        let words: Option<Vec<[Q; 3]>> =
-            vertices.iter().map(|v| Some([v[0].word()?, v[1].word()?, v[2].word()?])).collect();
-        match words {
-            Some(words) => Geometry::new(&words),
-            None if vertices.len() < 3 => Err(GeometryError::TooFewVertices(vertices.len())),
-            None if vertices.len() > MAX_VERTICES => Err(GeometryError::TooManyVertices(vertices.len())),
-            None => Geometry::new_big(&vertices.iter().map(|v| v.each_ref().map(Exact::to_big)).collect::<Vec<_>>()),
-        }
     }
 
     /// A polygon beyond the words, on the big-integer tier.
@@ -448,6 +448,33 @@ impl Geometry {
 pub(crate) fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> PlaneEquation {
     // Worked in big integers: the products can outgrow i128.
     crate::big::plane_through(&normal.map(BigInt::from), &point.map(BigInt::from), &BigInt::from(scale))
+}
+
+/// A vertex coordinate as [`Geometry`] reads it: a 128-bit fraction when it
+/// is one, and as a big rational.
+trait Coordinate {
+    fn word(&self) -> Option<Q>;
+    fn big(&self) -> BigRational;
+}
+
+impl Coordinate for Q {
+    fn word(&self) -> Option<Q> {
+        Some(*self)
+    }
+
+    fn big(&self) -> BigRational {
+        BigRational::new_raw(BigInt::from(*self.numer()), BigInt::from(*self.denom()))
+    }
+}
+
+impl Coordinate for Exact {
+    fn word(&self) -> Option<Q> {
+        Exact::word(self)
+    }
+
+    fn big(&self) -> BigRational {
+        self.to_big()
+    }
 }
 
 /// Newell's method (seed 002): `a = Σ(yᵢ − yᵢ₊₁)(zᵢ + zᵢ₊₁)`,

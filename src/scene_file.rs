@@ -343,10 +343,11 @@ impl<'de> serde::de::Visitor<'de> for VertexVisitor {
             values.push(value);
         }
         let count = values.len();
-        if let Ok(xyz) = <[Exact; 3]>::try_from(values.clone()) {
-            return Ok(VertexFile::Xyz(xyz));
+        let wrong = |_| A::Error::invalid_length(count, &self);
+        match count {
+            3 => <[Exact; 3]>::try_from(values).map(VertexFile::Xyz).map_err(wrong),
+            _ => <[Exact; 4]>::try_from(values).map(VertexFile::Clip).map_err(wrong),
         }
-        <[Exact; 4]>::try_from(values).map(VertexFile::Clip).map_err(|_| A::Error::invalid_length(count, &self))
     }
 }
 
@@ -545,17 +546,17 @@ impl PolygonFile {
         {
             return Err(fail(&name, PolygonProblem::Other(words!("polygon-opacity", alpha = fraction(alpha)))));
         }
-        let clip_space: Vec<[Exact; 4]> = self
-            .vertices
-            .iter()
-            .filter_map(|v| if let VertexFile::Clip(c) = v { Some(c.clone()) } else { None })
-            .collect();
+        let count = self.vertices.len();
+        let (mut given, mut clip_space) = (Vec::with_capacity(count), Vec::new());
+        for vertex in self.vertices {
+            match vertex {
+                VertexFile::Xyz(p) => given.push(p),
+                VertexFile::Clip(c) => clip_space.push(c),
+            }
+        }
         let mut vertices: Vec<[Exact; 3]> = if clip_space.is_empty() {
-            self.vertices
-                .iter()
-                .filter_map(|v| if let VertexFile::Xyz(p) = v { Some(p.clone()) } else { None })
-                .collect()
-        } else if clip_space.len() < self.vertices.len() {
+            given
+        } else if clip_space.len() < count {
             return Err(fail(&name, PolygonProblem::Other(words!("clip-space-mixed"))));
         } else if frame.window.is_some() || frame.perspective.is_some() {
             return Err(fail(&name, PolygonProblem::Other(words!("clip-space-alone"))));
