@@ -579,10 +579,16 @@ fn big_to_f64(value: &BigRational) -> f64 {
     let guard = (mantissa >> 1) & 1 == 1;
     let round_or_sticky = mantissa & 1 == 1 || sticky;
     let kept = if guard && (round_or_sticky || kept & 1 == 1) { kept + 1 } else { kept };
-    // 2^exponent may pass f64's range in two steps though the value does not.
-    let magnitude = (kept as f64)
-        * 2f64.powi((exponent + 2).clamp(-1074, 1023) as i32)
-        * 2f64.powi((exponent + 2 - (exponent + 2).clamp(-1074, 1023)) as i32);
+    // Scaled by 2^exponent in steps that stay within f64's range (`powi` of a
+    // large negative power divides by an infinity). Exact but in the
+    // subnormal range, where the 53 bits kept are rounded once more.
+    let (mut magnitude, mut power) = (kept as f64, exponent + 2);
+    while power.abs() > 1000 {
+        let step = 1000 * power.signum();
+        magnitude *= 2f64.powi(step as i32);
+        power -= step;
+    }
+    let magnitude = magnitude * 2f64.powi(power as i32);
     if value.numer().sign() == Sign::Minus { -magnitude } else { magnitude }
 }
 
@@ -799,6 +805,23 @@ mod tests {
         for (n, d) in [(1, 3), (2, 3), (-22, 7), (355, 113), (1, 1 << 100), ((1 << 100) + 1, 3)] {
             let expected = format!("{}", n as f64 / d as f64);
             assert_eq!(to_f64(Q::new(n, d)).to_string(), expected, "{n}/{d}");
+        }
+    }
+
+    /// Beyond 128 bits the nearest f64 comes from one big division; Rust's
+    /// own parse rounds correctly, so the two agree.
+    #[test]
+    fn nearest_f64_of_a_big_value_matches_the_correctly_rounded_parse() {
+        for text in [
+            "0.123456789012345678901234567890123456789012345",
+            "-98765432109876543210987654321.0987654321",
+            "3.00000000000000000000000000000000000000000000001",
+            "1e-300",
+            "7e250",
+        ] {
+            let value = parse_exact(text).unwrap();
+            assert!(value.word().is_none(), "{text} is beyond 128 bits");
+            assert_eq!(to_f64(value), text.parse::<f64>().unwrap(), "{text}");
         }
     }
 
