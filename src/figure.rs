@@ -420,9 +420,10 @@ fn middle(vertices: &[[Exact; 3]], axis: usize) -> Exact {
 
 /// The least and greatest exact depths written (for shading).
 fn exact_range(scene: &Scene, buffers: &Buffers) -> (Exact, Exact) {
-    let written = buffers.depth_rows().into_iter().flatten().filter(|v| *v != scene.clear_depth).map(|v| v.value());
-    let low = written.clone().min();
-    low.zip(written.max()).unwrap_or((Exact::Word(Q::from_integer(0)), Exact::Word(Q::from_integer(1))))
+    let written: Vec<Exact> =
+        buffers.depth_rows().into_iter().flatten().filter(|v| *v != scene.clear_depth).map(|v| v.value()).collect();
+    let range = written.iter().min().cloned().zip(written.iter().max().cloned());
+    range.unwrap_or((Exact::Word(Q::from_integer(0)), Exact::Word(Q::from_integer(1))))
 }
 
 /// The lines, each broken at spaces to at most `width` characters.
