@@ -5,7 +5,7 @@
 use std::fmt;
 use std::path::PathBuf;
 
-use crate::plane::GeometryError;
+use crate::geometry::plane::GeometryError;
 
 /// Everything that can go wrong with zsim's input.
 #[derive(Debug)]
@@ -116,7 +116,7 @@ impl fmt::Display for Error {
             Error::Polygon { path, index, name, problem } => f.write_str(&words!(
                 "error-polygon",
                 path = path.display().to_string(),
-                polygon = crate::explain::polygon_label("polygon-name", *index, name),
+                polygon = crate::observe::explain::polygon_label("polygon-name", *index, name),
                 problem = problem.to_string()
             )),
             Error::Usage(message) => f.write_str(message),

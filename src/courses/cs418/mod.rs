@@ -1,0 +1,436 @@
+//! UIUC CS 418's rasterizer assignment (fall 2023), end to end: the course's
+//! input files (`rast-*.txt`), its pipeline (clip space, division by w, the
+//! viewport, the DDA scanline algorithm, depth, sRGB, hyperbolic
+//! interpolation, alpha, multisampling, culling, frustum clipping, points),
+//! and its output (an RGBA image).
+//!
+//! The course defines its answers by a float algorithm, so this module runs
+//! that algorithm in one of two arithmetics ([`Arithmetic`]): the course's own
+//! `f64` DDA, which its reference images were made with, or exact rationals,
+//! which show where the course's floats land on the other side of a pixel
+//! sample. Colour lives here only: the book's 2-bit framebuffer path is
+//! untouched.
+//!
+//! # The course's conventions
+//!
+//! - **Viewport.** A vertex (x, y, z, w) goes to `x' = (x/w + 1)·W/2`,
+//!   `y' = (y/w + 1)·H/2`, depth `z/w`; row `y'` is the image's row `y'`
+//!   counted from the top (no flip).
+//! - **Samples.** Pixel (x, y) is sampled at the integer point (x, y), not at
+//!   x + 1/2.
+//! - **DDA.** Between points a and b along coordinate d: the first point is
+//!   where `d = ⌈a_d⌉`, then steps of `(b − a)/(b_d − a_d)` while `p_d < b_d`.
+//!   Every attribute rides along. So rows run `⌈y_top⌉ ≤ y < y_bottom` and
+//!   columns `⌈x_left⌉ ≤ x < x_right`: the top-left rule of a y-down raster.
+//! - **Depth** (`depth`): cleared to 1, a fragment is kept when `z/w` is less.
+//! - **Colour**: linear RGBA in 0 … 1, blended with "over"; `sRGB` converts
+//!   at output; `hyp` interpolates attributes divided by w (perspective
+//!   correct); `fsaa n` renders n×n samples per pixel and averages them,
+//!   colours weighted by alpha.
+//! - **Textures** (`texture FILE`, `texcoord 2 …`): the texture's bytes are
+//!   sRGB, converted to linear when read. A fragment's (s, t), interpolated
+//!   like the colour, is wrapped into 0 … 1 *after* interpolation (repeat)
+//!   and looks up the nearest texel: column `⌊s·W⌋`, row `⌊t·H⌋` counted
+//!   from the file's top row. The texel replaces the vertex colour, or with
+//!   `decals` goes over it: `rgb = tex.rgb·tex.a + colour.rgb·(1 − tex.a)`,
+//!   `a = tex.a + colour.a − tex.a·colour.a`. A point drawn while a texture
+//!   is bound is a sprite: (s, t) runs from (0, 0) at its top-left corner to
+//!   (1, 1) at its bottom-right.
+
+mod compare;
+mod image;
+pub mod import;
+mod raster;
+
+use std::fmt;
+
+pub use compare::{CellDifference, Comparison, Primitive, Reason, Shape, differences};
+pub use image::{Image, ImageDifference, compare_images};
+pub use raster::{Arithmetic, render};
+
+/// A problem in a CS 418 file, with its line (1-based).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CaseError {
+    /// The line the problem is on, when one is to blame.
+    pub line: Option<usize>,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl fmt::Display for CaseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(line) => write!(f, "line {line}: {}", self.message),
+            None => f.write_str(&self.message),
+        }
+    }
+}
+
+fn error(line: usize, message: impl Into<String>) -> CaseError {
+    CaseError { line: Some(line), message: message.into() }
+}
+
+/// A number as the file writes it: the `f64` the course reads from it, and
+/// its exact value.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Number {
+    /// The nearest `f64`, as the course's programs parse it.
+    pub value: f64,
+    /// The decimal as written, exactly.
+    pub exact: crate::numbers::Q,
+}
+
+/// One command of the file.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Command {
+    /// `position SIZE n…`: vertex positions, SIZE (2–4) numbers each; z
+    /// defaults to 0 and w to 1.
+    Position {
+        /// Numbers per vertex.
+        size: usize,
+        /// All the numbers.
+        numbers: Vec<Number>,
+    },
+    /// `color SIZE n…`: vertex colours, 3 (alpha 1) or 4 numbers each.
+    Color {
+        /// Numbers per vertex.
+        size: usize,
+        /// All the numbers.
+        numbers: Vec<Number>,
+    },
+    /// `elements i…`: indices for `drawElementsTriangles`.
+    Elements(Vec<usize>),
+    /// `pointsize 1 n…`: a size in pixels per vertex, for points.
+    PointSize(Vec<Number>),
+    /// `uniformMatrix` and 16 numbers in column-major order: every position
+    /// is multiplied by it from then on.
+    Matrix(Vec<Number>),
+    /// `texture FILE`: binds `Case::textures[i]` for the draws that follow.
+    Texture(usize),
+    /// `texcoord 2 s t …`: texture coordinates per vertex.
+    TexCoord(Vec<Number>),
+    /// `drawArraysTriangles FIRST COUNT`.
+    DrawArrays {
+        /// The first vertex.
+        first: usize,
+        /// How many vertices (three per triangle).
+        count: usize,
+    },
+    /// `drawElementsTriangles COUNT OFFSET`.
+    DrawElements {
+        /// How many elements (three per triangle).
+        count: usize,
+        /// The first element.
+        offset: usize,
+    },
+    /// `drawArraysPoints FIRST COUNT`.
+    DrawPoints {
+        /// The first vertex.
+        first: usize,
+        /// How many points.
+        count: usize,
+    },
+}
+
+/// The switches a file turns on (each a line of its own).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Features {
+    /// `depth`: the depth buffer.
+    pub depth: bool,
+    /// `sRGB`: colours are linear, converted to sRGB at output.
+    pub srgb: bool,
+    /// `hyp`: hyperbolic (perspective-correct) interpolation.
+    pub hyp: bool,
+    /// `cull`: only triangles whose vertices run clockwise on the image
+    /// (y down) are drawn.
+    pub cull: bool,
+    /// `frustum`: clip to the view volume (−w ≤ x, y, z ≤ w) before dividing.
+    pub frustum: bool,
+    /// `fsaa n`: n×n samples per pixel (1 = off).
+    pub fsaa: u32,
+    /// `decals`: a texture goes over the vertex colour instead of replacing it.
+    pub decals: bool,
+}
+
+/// A texture a case names, read from its PNG.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Texture {
+    /// The file name as the case writes it.
+    pub name: String,
+    /// Its pixels (sRGB bytes, as stored).
+    pub image: Image,
+}
+
+/// A whole CS 418 input file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// The file name the first line asks for.
+    pub output: String,
+    /// The switches.
+    pub features: Features,
+    /// The commands in order, each with its line.
+    pub commands: Vec<(usize, Command)>,
+    /// The textures the case names, in the order first named.
+    pub textures: Vec<Texture>,
+}
+
+/// Largest image side accepted: 16384 × 16384 RGBA in f64 is 8 GiB already.
+pub const MAX_SIDE: u32 = 8192;
+
+impl Case {
+    /// Reads a CS 418 file. `load_texture` reads a texture the case names
+    /// (the caller knows where the case's folder is), or says why it cannot.
+    pub fn parse(text: &str, load_texture: &dyn Fn(&str) -> Result<Image, String>) -> Result<Case, CaseError> {
+        let mut case: Option<Case> = None;
+        for (index, raw) in text.lines().enumerate() {
+            let line = index + 1;
+            let words: Vec<&str> = raw.split_whitespace().collect();
+            let Some((&keyword, args)) = words.split_first() else { continue };
+            if keyword.starts_with('#') {
+                continue;
+            }
+            if keyword == "png" {
+                if case.is_some() {
+                    return Err(error(line, "a second \"png\" line (the file names one image, on its first line)"));
+                }
+                case = Some(png_line(line, args)?);
+                continue;
+            }
+            let Some(case) = case.as_mut() else {
+                return Err(error(
+                    line,
+                    format!("\"{keyword}\" before the \"png WIDTH HEIGHT FILE\" line that must come first"),
+                ));
+            };
+            let flag = |on: &mut bool| {
+                if args.is_empty() {
+                    *on = true;
+                    Ok(())
+                } else {
+                    Err(error(line, format!("\"{keyword}\" takes no numbers, found {}", args.len())))
+                }
+            };
+            match keyword {
+                "depth" => flag(&mut case.features.depth)?,
+                "sRGB" => flag(&mut case.features.srgb)?,
+                "hyp" => flag(&mut case.features.hyp)?,
+                "cull" => flag(&mut case.features.cull)?,
+                "frustum" => flag(&mut case.features.frustum)?,
+                "decals" => flag(&mut case.features.decals)?,
+                "fsaa" => {
+                    let [level] = integers::<1>(line, keyword, args)?;
+                    if !(1..=8).contains(&level) {
+                        return Err(error(line, format!("fsaa {level}: the level must be 1 to 8")));
+                    }
+                    case.features.fsaa = level as u32;
+                }
+                "position" | "color" | "pointsize" | "texcoord" => {
+                    let (size, numbers) = sized(line, keyword, args)?;
+                    let allowed: &[usize] = match keyword {
+                        "position" => &[1, 2, 3, 4],
+                        "color" => &[3, 4],
+                        "texcoord" => &[2],
+                        _ => &[1],
+                    };
+                    if !allowed.contains(&size) {
+                        return Err(error(line, format!("{keyword} {size}: the size must be {}", list(allowed))));
+                    }
+                    case.commands.push((
+                        line,
+                        match keyword {
+                            "position" => Command::Position { size, numbers },
+                            "color" => Command::Color { size, numbers },
+                            "texcoord" => Command::TexCoord(numbers),
+                            _ => Command::PointSize(numbers),
+                        },
+                    ));
+                }
+                "elements" => {
+                    let indices = args
+                        .iter()
+                        .map(|w| {
+                            w.parse::<usize>().map_err(|_| {
+                                error(line, format!("elements: \"{w}\" is not an index (a whole number ≥ 0)"))
+                            })
+                        })
+                        .collect::<Result<Vec<_>, _>>()?;
+                    case.commands.push((line, Command::Elements(indices)));
+                }
+                "uniformMatrix" => {
+                    if args.len() != 16 {
+                        return Err(error(line, format!("uniformMatrix needs 16 numbers, found {}", args.len())));
+                    }
+                    let numbers = args.iter().map(|w| number(line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
+                    case.commands.push((line, Command::Matrix(numbers)));
+                }
+                "drawArraysTriangles" | "drawElementsTriangles" | "drawArraysPoints" => {
+                    let [a, b] = integers::<2>(line, keyword, args)?;
+                    let command = match keyword {
+                        "drawArraysTriangles" => Command::DrawArrays { first: a, count: b },
+                        "drawElementsTriangles" => Command::DrawElements { count: a, offset: b },
+                        _ => Command::DrawPoints { first: a, count: b },
+                    };
+                    if let Command::DrawArrays { count, .. } | Command::DrawElements { count, .. } = command
+                        && count % 3 != 0
+                    {
+                        return Err(error(line, format!("{keyword}: count {count} is not a multiple of 3")));
+                    }
+                    case.commands.push((line, command));
+                }
+                "texture" => {
+                    let name = args.join(" ");
+                    if name.is_empty() {
+                        return Err(error(line, "texture needs a file name"));
+                    }
+                    let index = match case.textures.iter().position(|t| t.name == name) {
+                        Some(index) => index,
+                        None => {
+                            let image =
+                                load_texture(&name).map_err(|why| error(line, format!("texture \"{name}\": {why}")))?;
+                            case.textures.push(Texture { name, image });
+                            case.textures.len() - 1
+                        }
+                    };
+                    case.commands.push((line, Command::Texture(index)));
+                }
+                _ => return Err(error(line, format!("unknown command \"{keyword}\""))),
+            }
+        }
+        case.ok_or(CaseError {
+            line: None,
+            message: "no \"png WIDTH HEIGHT FILE\" line: is this a CS 418 file?".into(),
+        })
+    }
+}
+
+fn png_line(line: usize, args: &[&str]) -> Result<Case, CaseError> {
+    let [width, height, file] = args else {
+        return Err(error(line, format!("png needs WIDTH HEIGHT FILE, found {} words", args.len())));
+    };
+    let side = |word: &str, what: &str| {
+        word.parse::<u32>()
+            .ok()
+            .filter(|v| (1..=MAX_SIDE).contains(v))
+            .ok_or_else(|| error(line, format!("png: {what} \"{word}\" must be a whole number from 1 to {MAX_SIDE}")))
+    };
+    let (width, height) = (side(width, "width")?, side(height, "height")?);
+    if file.contains(['/', '\\']) || *file == ".." || *file == "." {
+        return Err(error(line, format!("png: \"{file}\" must be a plain file name, without folders")));
+    }
+    Ok(Case {
+        width,
+        height,
+        output: (*file).to_string(),
+        features: Features { fsaa: 1, ..Features::default() },
+        commands: Vec::new(),
+        textures: Vec::new(),
+    })
+}
+
+fn list(values: &[usize]) -> String {
+    let words: Vec<String> = values.iter().map(ToString::to_string).collect();
+    match words.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        _ => words.join(""),
+    }
+}
+
+fn number(line: usize, keyword: &str, word: &str) -> Result<Number, CaseError> {
+    let finite = word.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.' | b'e' | b'E'));
+    match (word.parse::<f64>(), crate::numbers::parse_number(word)) {
+        (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(Number { value, exact }),
+        (Ok(value), Err(problem)) if finite && value.is_finite() => Err(error(line, format!("{keyword}: {problem}"))),
+        _ => Err(error(line, format!("{keyword}: \"{word}\" is not a number"))),
+    }
+}
+
+fn integers<const N: usize>(line: usize, keyword: &str, args: &[&str]) -> Result<[usize; N], CaseError> {
+    if args.len() != N {
+        return Err(error(
+            line,
+            format!("{keyword} needs {N} whole number{}, found {}", if N == 1 { "" } else { "s" }, args.len()),
+        ));
+    }
+    let mut out = [0; N];
+    for (slot, word) in out.iter_mut().zip(args) {
+        *slot = word
+            .parse::<usize>()
+            .map_err(|_| error(line, format!("{keyword}: \"{word}\" is not a whole number ≥ 0")))?;
+    }
+    Ok(out)
+}
+
+fn sized(line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<Number>), CaseError> {
+    let Some((size, rest)) = args.split_first() else {
+        return Err(error(line, format!("{keyword} needs a size and then the numbers")));
+    };
+    let size: usize =
+        size.parse().map_err(|_| error(line, format!("{keyword}: the size \"{size}\" is not a whole number")))?;
+    if size == 0 {
+        return Err(error(line, format!("{keyword}: the size must not be 0")));
+    }
+    let numbers = rest.iter().map(|w| number(line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
+    if numbers.len() % size != 0 {
+        return Err(error(
+            line,
+            format!(
+                "{keyword} {size}: {} numbers is not a whole number of vertices ({} and {} left over)",
+                numbers.len(),
+                numbers.len() / size,
+                numbers.len() % size
+            ),
+        ));
+    }
+    Ok((size, numbers))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Case, CaseError> {
+        Case::parse(text, &|_| Err("no such file beside the case".into()))
+    }
+
+    #[test]
+    fn reads_commands_with_their_lines() {
+        let case = parse("png 20 30 gray.png\n# note\ndepth\nposition 2  1 2  3 4\ndrawArraysTriangles 0 3\n").unwrap();
+        assert_eq!((case.width, case.height, case.output.as_str()), (20, 30, "gray.png"));
+        assert!(case.features.depth && !case.features.srgb);
+        assert_eq!(case.commands.len(), 2);
+        assert_eq!(case.commands[1], (5, Command::DrawArrays { first: 0, count: 3 }));
+    }
+
+    #[test]
+    fn bad_lines_name_the_line_and_the_problem() {
+        let message = |text: &str| parse(text).unwrap_err().to_string();
+        assert_eq!(message("png 2 2 a.png\nfrobnicate 3"), "line 2: unknown command \"frobnicate\"");
+        assert_eq!(
+            message("png 2 2 a.png\nposition 3 1 2 3 4"),
+            "line 2: position 3: 4 numbers is not a whole number of vertices (1 and 1 left over)"
+        );
+        assert_eq!(message("png 2 2 a.png\ncolor 3 1 x 0"), "line 2: color: \"x\" is not a number");
+        assert_eq!(message("png 2 2 a.png\ncolor 3 1 nan 0"), "line 2: color: \"nan\" is not a number");
+        assert_eq!(
+            message("depth"),
+            "line 1: \"depth\" before the \"png WIDTH HEIGHT FILE\" line that must come first"
+        );
+        assert_eq!(
+            message("png 2 2 a.png\ntexture block.png"),
+            "line 2: texture \"block.png\": no such file beside the case"
+        );
+        assert_eq!(message("png 2 2 a.png\ntexcoord 3 0 0 1"), "line 2: texcoord 3: the size must be 2");
+        assert_eq!(message("png 2 2 ../a.png"), "line 1: png: \"../a.png\" must be a plain file name, without folders");
+        assert_eq!(message("png 0 2 a.png"), "line 1: png: width \"0\" must be a whole number from 1 to 8192");
+        assert_eq!(
+            message("png 2 2 a.png\ndrawArraysTriangles 0 4"),
+            "line 2: drawArraysTriangles: count 4 is not a multiple of 3"
+        );
+        assert_eq!(message("png 2 2 a.png\nfsaa 9"), "line 2: fsaa 9: the level must be 1 to 8");
+        assert_eq!(message(""), "no \"png WIDTH HEIGHT FILE\" line: is this a CS 418 file?");
+    }
+}

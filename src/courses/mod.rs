@@ -1,0 +1,3 @@
+//! Courses.
+pub mod buet;
+pub mod cs418;

@@ -1,0 +1,5 @@
+//! Effects.
+pub mod accuracy;
+pub mod antialias;
+pub mod arith;
+pub mod variants;

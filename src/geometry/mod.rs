@@ -1,0 +1,2 @@
+//! Geometry: a polygon's plane and edges in exact integers.
+pub mod plane;

@@ -1,0 +1,576 @@
+//! A polygon's geometry in exact integers, and its plane by Newell's method.
+//!
+//! Every coordinate of one polygon is written over the polygon's least common
+//! denominator `D` and then doubled: a vertex's *scaled* coordinates are the
+//! integers `x·2D`, `y·2D`, `z·2D`. In those units the centre of pixel column
+//! `x` is `(2x + 1)·D` and scanline `row` lies at `(2row + 1)·D`, so pixel
+//! centres and half-interval scanlines are integers too, and the whole
+//! rasterizer runs on integers with no rounding anywhere: `i128` always fits
+//! (see [`MAX_SCALED`]), and `i64` does for most polygons
+//! ([`Geometry::fits_i64`]).
+
+use std::fmt;
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+
+use crate::numbers::{Exact, Q};
+
+/// Largest allowed magnitude of a scaled coordinate `|x·2D|`.
+///
+/// With `R = 2^34` and at most [`MAX_VERTICES`] vertices every intermediate
+/// value fits in `i128`: Newell's coefficients are at most `4nR² ≤ 2^86`, the
+/// depth numerator at a pixel centre at most `20nR³ < 2^123`, a crossing's
+/// numerator at most `6R² < 2^71` (see `depth` and `scan`).
+pub const MAX_SCALED: i128 = 1 << 34;
+
+/// Largest size, in bits, of a scaled coordinate `|x·2D|` in the
+/// big-integer tier ([`Geometry::is_big`]): polygons beyond [`MAX_SCALED`]
+/// are drawn by a rasterizer that keeps the scaled vertices in
+/// arbitrary-precision integers (`crate::raster::big`), and reports crossings,
+/// depths and the plane in big integers where they outgrow 128 bits. The
+/// bound only keeps absurd input
+/// (hundreds of coprime denominators) from running for ever: 2^4096 is about
+/// 10^1233.
+pub const MAX_SCALED_BITS: u64 = 4096;
+
+/// Most vertices one polygon may have.
+pub const MAX_VERTICES: usize = 1 << 16;
+
+/// Why a polygon's vertices cannot be turned into exact geometry.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum GeometryError {
+    /// Fewer than three vertices.
+    TooFewVertices(usize),
+    /// More than [`MAX_VERTICES`] vertices.
+    TooManyVertices(usize),
+    /// A coordinate beyond the range where the exact arithmetic cannot overflow.
+    OutOfRange {
+        /// 1-based vertex number.
+        vertex: usize,
+        /// The offending coordinate.
+        value: Exact,
+        /// The polygon's least common denominator `D` (so far), which may
+        /// itself have outgrown 128 bits.
+        denominator: BigInt,
+    },
+    /// A vertex that does not lie on the plane through the others.
+    NotPlanar(Box<OffPlane>),
+}
+
+/// The first vertex found off a polygon's plane.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct OffPlane {
+    /// 1-based vertex number.
+    pub vertex: usize,
+    /// The three vertices (1-based) that fix the plane.
+    pub through: [usize; 3],
+    /// The plane through them.
+    pub plane: PlaneEquation,
+    /// How far the vertex is off, along z when the plane has a z term,
+    /// otherwise the value of the reduced equation at the vertex.
+    pub off_by: Exact,
+    /// Whether `off_by` is measured along z.
+    pub along_z: bool,
+}
+
+impl fmt::Display for GeometryError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            GeometryError::TooFewVertices(n) => f.write_str(&words!("geometry-too-few", count = n.to_string())),
+            GeometryError::TooManyVertices(n) => {
+                f.write_str(&words!("geometry-too-many", count = n.to_string(), max = MAX_VERTICES.to_string()))
+            }
+            GeometryError::OutOfRange { vertex, value, denominator } => f.write_str(&words!(
+                "geometry-out-of-range",
+                vertex = vertex.to_string(),
+                value = crate::numbers::fraction(value),
+                denominator = crate::numbers::big_integer(denominator)
+            )),
+            GeometryError::NotPlanar(off) => {
+                let OffPlane { vertex, through: [i, j, k], plane, off_by, along_z } = off.as_ref();
+                let (key, off) = if *along_z {
+                    ("geometry-off-plane-z", crate::numbers::exact_and_decimal(off_by))
+                } else {
+                    ("geometry-off-plane", crate::numbers::fraction(off_by))
+                };
+                f.write_str(&words!(
+                    key,
+                    vertex = vertex.to_string(),
+                    plane = plane.to_string(),
+                    i = i.to_string(),
+                    j = j.to_string(),
+                    k = k.to_string(),
+                    off = off
+                ))
+            }
+        }
+    }
+}
+
+/// A plane `a·x + b·y + c·z + d = 0` with integer coefficients reduced by
+/// their greatest common divisor, in the polygon's own coordinates (not
+/// scaled), signed as the book prints it: `c > 0` (when `c = 0`, `b > 0`;
+/// when both are 0, `a > 0`). The winding is reported apart,
+/// from the sign of Newell's `c` ([`Geometry::c`]). The coefficients are
+/// big integers: a polygon given with many significant digits has a plane
+/// beyond 128 bits (`crate::raster::big`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PlaneEquation {
+    /// Coefficient of x.
+    pub a: BigInt,
+    /// Coefficient of y.
+    pub b: BigInt,
+    /// Coefficient of z.
+    pub c: BigInt,
+    /// Constant term.
+    pub d: BigInt,
+}
+
+impl PlaneEquation {
+    /// The plane with small coefficients (for tests and examples).
+    pub fn of(a: i128, b: i128, c: i128, d: i128) -> PlaneEquation {
+        PlaneEquation { a: a.into(), b: b.into(), c: c.into(), d: d.into() }
+    }
+}
+
+impl fmt::Display for PlaneEquation {
+    /// Prints like the book: `3x + y + 4z - 120 = 0`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let mut out = String::new();
+        for (coef, var) in [(&self.a, "x"), (&self.b, "y"), (&self.c, "z"), (&self.d, "")] {
+            if coef.is_zero() {
+                continue;
+            }
+            let magnitude = coef.magnitude();
+            let number = if magnitude.is_one() && !var.is_empty() { String::new() } else { magnitude.to_string() };
+            let negative = coef.is_negative();
+            if out.is_empty() {
+                out = format!("{}{number}{var}", if negative { "-" } else { "" });
+            } else {
+                out = format!("{out} {} {number}{var}", if negative { "-" } else { "+" });
+            }
+        }
+        if out.is_empty() {
+            out.push('0');
+        }
+        write!(f, "{out} = 0")
+    }
+}
+
+/// A polygon ready for the rasterizer: scaled integer vertices and Newell's
+/// normal in scaled units.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Geometry {
+    /// `D`, the least common denominator of the polygon's coordinates; the
+    /// scale of the scaled coordinates is `2D`. 0 on the big-integer tier.
+    pub denominator: i128,
+    /// Vertices as `[x·2D, y·2D, z·2D]`, within [`MAX_SCALED`]; empty on the
+    /// big-integer tier, which keeps them in big integers
+    /// ([`Geometry::big_scaled`]).
+    pub points: Vec<[i128; 3]>,
+    /// Newell's normal `(a, b, c)` computed on the scaled vertices (on the
+    /// big-integer tier: the reduced plane's, pointing the same way).
+    pub normal: [i128; 3],
+    /// Whether the rasterizer's integers fit 64 bits ([`Geometry::fits_i64`]).
+    narrow: bool,
+    /// For a polygon beyond [`MAX_SCALED`], which runs on the big-integer
+    /// tier ([`Geometry::is_big`]): its scaled vertices in big integers, its
+    /// edges' lines and plane, reduced.
+    big: Option<Box<crate::raster::big::BigPolygon>>,
+}
+
+impl Geometry {
+    /// Scales the vertices to integers, computes Newell's normal and checks
+    /// that every vertex lies on the plane through vertex 1.
+    ///
+    /// Guarantees: 3 ≤ vertices ≤ [`MAX_VERTICES`], every scaled coordinate
+    /// within ±[`MAX_SCALED`], and the polygon planar (trivially so when the
+    /// normal is zero, i.e. the vertices are collinear).
+    pub fn new(vertices: &[[Q; 3]]) -> Result<Geometry, GeometryError> {
+        Geometry::of(vertices)
+    }
+
+    /// [`Geometry::new`] for vertices of any size (a clipped clip-space
+    /// polygon's may outgrow 128-bit fractions): on the words when they fit
+    /// them, else on the big-integer tier.
+    pub fn from_exact(vertices: &[[Exact; 3]]) -> Result<Geometry, GeometryError> {
+        Geometry::of(vertices)
+    }
+
+    fn of<C: Coordinate>(vertices: &[[C; 3]]) -> Result<Geometry, GeometryError> {
+        if vertices.len() < 3 {
+            return Err(GeometryError::TooFewVertices(vertices.len()));
+        }
+        if vertices.len() > MAX_VERTICES {
+            return Err(GeometryError::TooManyVertices(vertices.len()));
+        }
+        // The words: D and every scaled coordinate within MAX_SCALED.
+        let words = || {
+            let mut denominator: i128 = 1;
+            for value in vertices.iter().flatten() {
+                let value = value.word()?;
+                denominator = denominator.checked_mul(value.denom() / denominator.gcd(value.denom()))?;
+                if denominator > MAX_SCALED {
+                    return None;
+                }
+            }
+            let scale = 2 * denominator;
+            let scaled = |v: &C| {
+                let v = v.word()?;
+                Some(v.numer().checked_mul(scale / v.denom())?).filter(|s| s.abs() <= MAX_SCALED)
+            };
+            let points = vertices.iter().map(|v| Some([scaled(&v[0])?, scaled(&v[1])?, scaled(&v[2])?]));
+            Some((denominator, points.collect::<Option<Vec<_>>>()?))
+        };
+        let Some((denominator, points)) = words() else {
+            return Geometry::new_big(&vertices.iter().map(|v| v.each_ref().map(C::big)).collect::<Vec<_>>());
+        };
+        let normal = newell(&points);
+        let mut geometry = Geometry { denominator, points, normal, narrow: false, big: None };
+        geometry.check_planar()?;
+        geometry.narrow = geometry.bounds_fit_i64();
+        Ok(geometry)
+    }
+
+    /// A polygon beyond the words, on the big-integer tier.
+    fn new_big(vertices: &[[BigRational; 3]]) -> Result<Geometry, GeometryError> {
+        let mut denominator = BigInt::from(1);
+        // Far past the bound once D has this many bits more than a value's
+        // denominator (|value| × 2D > 2D / denominator): stop before the lcm of
+        // absurd input grows for ever.
+        let largest = vertices.iter().flatten().map(|v| v.denom().bits()).max().unwrap_or(0).max(128);
+        for (index, vertex) in vertices.iter().enumerate() {
+            for value in vertex {
+                denominator = denominator.lcm(value.denom());
+                if denominator.bits() > MAX_SCALED_BITS + largest {
+                    let value = Exact::from(value.clone());
+                    return Err(GeometryError::OutOfRange { vertex: index + 1, value, denominator });
+                }
+            }
+        }
+        let scale: BigInt = &denominator * 2u32;
+        let points: Vec<[BigInt; 3]> =
+            vertices.iter().map(|v| v.each_ref().map(|c| c.numer() * scale.div_floor(c.denom()))).collect();
+        let limit = BigInt::from(1) << MAX_SCALED_BITS;
+        let beyond = points
+            .iter()
+            .enumerate()
+            .find_map(|(i, p)| p.iter().position(|v| v.magnitude() > limit.magnitude()).map(|axis| (i, axis)));
+        if let Some((index, axis)) = beyond {
+            let value = Exact::from(vertices[index][axis].clone());
+            return Err(GeometryError::OutOfRange { vertex: index + 1, value, denominator });
+        }
+        Ok(Geometry::on_big(crate::raster::big::BigPolygon::new(points, denominator)?))
+    }
+
+    /// The geometry of a polygon of the big-integer tier: no word-sized
+    /// scaled vertices (`points` empty, `denominator` 0), the normal
+    /// `(A, B, C)` of its reduced plane pointing as Newell's does.
+    fn on_big(polygon: crate::raster::big::BigPolygon) -> Geometry {
+        Geometry {
+            denominator: 0,
+            points: Vec::new(),
+            normal: polygon.normal(),
+            narrow: false,
+            big: Some(Box::new(polygon)),
+        }
+    }
+
+    /// The same polygon on the big-integer tier, whatever its size (for the
+    /// tests that compare the tiers).
+    #[cfg(test)]
+    pub(crate) fn on_big_tier(&self) -> Geometry {
+        let points = self.points.iter().map(|p| p.map(BigInt::from)).collect();
+        Geometry::on_big(crate::raster::big::BigPolygon::new(points, self.denominator.into()).expect("planar"))
+    }
+
+    /// The same polygon on the big-integer tier with its crossings and
+    /// depths computed in big integers, as for a plane beyond 128 bits (for
+    /// the tests that compare the tiers).
+    #[cfg(test)]
+    pub(crate) fn on_huge_tier(&self) -> Geometry {
+        let points = self.points.iter().map(|p| p.map(BigInt::from)).collect();
+        let polygon = crate::raster::big::BigPolygon::new(points, self.denominator.into()).expect("planar");
+        Geometry::on_big(polygon.without_words())
+    }
+
+    /// Whether the polygon lies beyond [`MAX_SCALED`], where the word-sized
+    /// rasterizer could overflow: it is then drawn by the big-integer tier
+    /// (`crate::raster::big`), exactly, more slowly, with the same rules and results.
+    /// Its normal is Newell's reduced by the components' common divisor.
+    pub fn is_big(&self) -> bool {
+        self.big.is_some()
+    }
+
+    /// The big-integer tier's polygon, when this is one.
+    pub(crate) fn big(&self) -> Option<&crate::raster::big::BigPolygon> {
+        self.big.as_deref()
+    }
+
+    /// The scaled vertices and `D` of a polygon on the big-integer tier, in
+    /// big integers.
+    pub fn big_scaled(&self) -> Option<(&[[BigInt; 3]], &BigInt)> {
+        self.big.as_deref().map(crate::raster::big::BigPolygon::scaled)
+    }
+
+    /// The cells `⌊x⌋`, `⌊y⌋` holding the polygon's bounding box, on any
+    /// tier: lowest and highest column, lowest and highest row.
+    pub fn cells(&self) -> [i128; 4] {
+        if let Some(polygon) = &self.big {
+            return polygon.cells();
+        }
+        let (mut x0, mut x1, mut y0, mut y1) = (i128::MAX, i128::MIN, i128::MAX, i128::MIN);
+        for p in &self.points {
+            (x0, x1, y0, y1) = (x0.min(p[0]), x1.max(p[0]), y0.min(p[1]), y1.max(p[1]));
+        }
+        let cell = |v: i128| crate::numbers::floor_div(v, self.scale()).0;
+        [cell(x0), cell(x1), cell(y0), cell(y1)]
+    }
+
+    /// The scale factor `2D` between polygon units and scaled units.
+    pub fn scale(&self) -> i128 {
+        2 * self.denominator
+    }
+
+    /// Newell's `c` in scaled units; zero for a polygon seen edge-on (or with
+    /// collinear vertices).
+    pub fn c(&self) -> i128 {
+        self.normal[2]
+    }
+
+    /// Whether Newell's normal vanishes: the vertices are collinear (or the
+    /// loops of a self-intersecting polygon cancel), so there is no plane.
+    pub fn is_degenerate(&self) -> bool {
+        self.normal.iter().all(|&v| v == 0)
+    }
+
+    /// Whether every integer the rasterizer computes for this polygon fits
+    /// 64 bits, so that it can run on `i64` ([`crate::numbers::Word`]) with the
+    /// same results. Every covered centre and scanline lies within one pixel
+    /// (`2D`) of the polygon's bounding box. With `R` the largest `|x|`, `|y|`
+    /// of a scaled vertex plus `2D`, and `Δx`, `Δy` the largest distances of a
+    /// vertex from vertex 1 plus `4D`:
+    /// - an edge's crossing numerator (also one row past its end) is at most
+    ///   `8R² + 4RD`, and sorting multiplies it by a denominator `≤ 2R`;
+    /// - the depth numerator at a centre, `c·Z₁ − a(X − X₁) − b(Y − Y₁)`, is at
+    ///   most `|c·Z₁| + |a|·Δx + |b|·Δy` plus a row's and a column's step
+    ///   `(|a| + |b|)·2D`, and its denominator is `|c|·2D`.
+    ///
+    /// Each of these must stay below `2^61`, which leaves room for the sums of two.
+    /// Decided once, when the geometry is made.
+    #[inline]
+    pub fn fits_i64(&self) -> bool {
+        self.narrow
+    }
+
+    fn bounds_fit_i64(&self) -> bool {
+        const LIMIT: i128 = 1 << 61;
+        let d = self.denominator;
+        let r = self.points.iter().map(|p| p[0].abs().max(p[1].abs())).max().unwrap_or(0) + 2 * d;
+        let [x1, y1, z1] = self.points[0];
+        let reach =
+            |axis: usize, first: i128| self.points.iter().map(|p| (p[axis] - first).abs()).max().unwrap_or(0) + 4 * d;
+        // All below 2^123 by MAX_SCALED, so none of these overflows i128.
+        let crossing = 8 * r * r + 4 * r * d;
+        let [a, b, c] = self.normal.map(i128::abs);
+        let depth = c * z1.abs() + a * reach(0, x1) + b * reach(1, y1) + (a + b) * 2 * d;
+        crossing < LIMIT && crossing * 2 * r < LIMIT && depth < LIMIT && c * 2 * d < LIMIT
+    }
+
+    /// The plane through vertex 1 with Newell's normal, in the polygon's own
+    /// units, reduced.
+    pub fn plane(&self) -> PlaneEquation {
+        if let Some(polygon) = &self.big {
+            return polygon.plane().clone();
+        }
+        reduced_plane(self.normal, self.points[0], self.scale())
+    }
+
+    /// How much z changes from one pixel centre to the next on a scanline,
+    /// `−a/c` (seed 002: `z₁ = z − a/c`); `None` for a polygon seen edge-on.
+    pub fn slope(&self) -> Option<Exact> {
+        let PlaneEquation { a, c, .. } = self.plane();
+        (!c.is_zero()).then(|| Exact::from_big(-a, c))
+    }
+
+    /// Checks every vertex against the plane through vertex 1 and the first two
+    /// vertices that are not collinear with it, so that the vertex named is the
+    /// first one off that plane (Newell's averaged normal would blame others).
+    fn check_planar(&self) -> Result<(), GeometryError> {
+        let p1 = self.points[0];
+        let sub = |p: [i128; 3]| [p[0] - p1[0], p[1] - p1[1], p[2] - p1[2]];
+        let Some(i) = self.points.iter().position(|p| *p != p1) else { return Ok(()) };
+        let u = sub(self.points[i]);
+        let found = self.points.iter().enumerate().skip(i + 1).find_map(|(k, p)| {
+            let v = sub(*p);
+            let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+            (n != [0, 0, 0]).then_some((k, n))
+        });
+        let Some((k, normal)) = found else { return Ok(()) };
+        for (index, point) in self.points.iter().enumerate() {
+            let w = sub(*point);
+            // Bounded by 3·8R²·2R < 2^108 (see MAX_SCALED).
+            let residual = normal[0] * w[0] + normal[1] * w[1] + normal[2] * w[2];
+            if residual == 0 {
+                continue;
+            }
+            let plane = reduced_plane(normal, p1, self.scale());
+            let (off_by, along_z) = if normal[2] != 0 {
+                // residual = n_z·ΔZ in scaled units, and Δz = ΔZ / 2D.
+                (Exact::Word(Q::new(residual, normal[2] * self.scale())), true)
+            } else {
+                // Without a z term, report the reduced equation's value at the vertex.
+                let [x, y, z] = point.map(|v| BigRational::new(v.into(), self.scale().into()));
+                let PlaneEquation { a, b, c, d } = &plane;
+                (Exact::from(x * a + y * b + z * c + BigRational::from_integer(d.clone())), false)
+            };
+            return Err(GeometryError::NotPlanar(Box::new(OffPlane {
+                vertex: index + 1,
+                through: [1, i + 1, k + 1],
+                plane,
+                off_by,
+                along_z,
+            })));
+        }
+        Ok(())
+    }
+}
+
+/// The plane with `normal` (scaled units) through `point` (scaled units), in
+/// polygon units, reduced and signed as the book prints it.
+///
+/// In scaled units the plane is `a·X + b·Y + c·Z + d' = 0` with
+/// `d' = −(a·X₁ + b·Y₁ + c·Z₁)`; with `X = 2D·x` that is
+/// `2D·a·x + 2D·b·y + 2D·c·z + d' = 0`, then divided by the gcd.
+pub(crate) fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> PlaneEquation {
+    // Worked in big integers: the products can outgrow i128.
+    crate::raster::big::plane_through(&normal.map(BigInt::from), &point.map(BigInt::from), &BigInt::from(scale))
+}
+
+/// A vertex coordinate as [`Geometry`] reads it: a 128-bit fraction when it
+/// is one, and as a big rational.
+trait Coordinate {
+    fn word(&self) -> Option<Q>;
+    fn big(&self) -> BigRational;
+}
+
+impl Coordinate for Q {
+    fn word(&self) -> Option<Q> {
+        Some(*self)
+    }
+
+    fn big(&self) -> BigRational {
+        BigRational::new_raw(BigInt::from(*self.numer()), BigInt::from(*self.denom()))
+    }
+}
+
+impl Coordinate for Exact {
+    fn word(&self) -> Option<Q> {
+        Exact::word(self)
+    }
+
+    fn big(&self) -> BigRational {
+        self.to_big()
+    }
+}
+
+/// Newell's method (seed 002): `a = Σ(yᵢ − yᵢ₊₁)(zᵢ + zᵢ₊₁)`,
+/// `b = Σ(zᵢ − zᵢ₊₁)(xᵢ + xᵢ₊₁)`, `c = Σ(xᵢ − xᵢ₊₁)(yᵢ + yᵢ₊₁)`, indices
+/// taken around the polygon.
+pub fn newell(points: &[[i128; 3]]) -> [i128; 3] {
+    let mut normal = [0i128; 3];
+    for (i, p) in points.iter().enumerate() {
+        let q = points[(i + 1) % points.len()];
+        normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
+        normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
+        normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    normal
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(values: &[[i128; 3]]) -> Vec<[Q; 3]> {
+        values.iter().map(|v| v.map(Q::from_integer)).collect()
+    }
+
+    #[test]
+    fn book_triangle_plane_is_3x_y_4z_minus_120() {
+        let triangle = Geometry::new(&q(&[[15, 15, 15], [25, 25, 5], [30, 10, 5]])).unwrap();
+        assert!(triangle.c() < 0, "P5, P6, P7 run clockwise; the book prints the plane with c > 0");
+        assert_eq!(triangle.plane(), PlaneEquation::of(3, 1, 4, -120));
+        assert_eq!(triangle.plane().to_string(), "3x + y + 4z - 120 = 0");
+    }
+
+    #[test]
+    fn book_rectangle_runs_clockwise() {
+        let rectangle = Geometry::new(&q(&[[10, 5, 10], [10, 25, 10], [25, 25, 10], [25, 5, 10]])).unwrap();
+        assert_eq!(rectangle.plane().to_string(), "z - 10 = 0");
+        assert!(rectangle.c() < 0, "Newell's c < 0 means clockwise seen from +z");
+    }
+
+    #[test]
+    fn fractional_vertices_scale_to_integers() {
+        let vertices = vec![
+            [Q::new(1, 2), Q::new(1, 3), Q::from_integer(0)],
+            [Q::from_integer(4), Q::new(1, 3), Q::from_integer(0)],
+            [Q::from_integer(4), Q::from_integer(5), Q::from_integer(0)],
+        ];
+        let geometry = Geometry::new(&vertices).unwrap();
+        assert_eq!(geometry.denominator, 6);
+        assert_eq!(geometry.points[0], [6, 4, 0]);
+        assert_eq!(geometry.plane().to_string(), "z = 0");
+    }
+
+    #[test]
+    fn off_plane_vertex_is_named_with_its_distance() {
+        let err = Geometry::new(&q(&[[0, 0, 0], [4, 0, 0], [4, 4, 0], [0, 4, 1]])).unwrap_err();
+        match err {
+            GeometryError::NotPlanar(off) => {
+                assert_eq!(off.vertex, 4);
+                assert_eq!(off.off_by, Exact::Word(Q::from_integer(1)));
+                assert!(off.along_z);
+            }
+            other => panic!("expected NotPlanar, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn collinear_vertices_are_degenerate_not_an_error() {
+        let geometry = Geometry::new(&q(&[[0, 0, 0], [1, 1, 1], [2, 2, 2]])).unwrap();
+        assert!(geometry.is_degenerate());
+    }
+
+    #[test]
+    fn coordinates_beyond_the_word_range_run_on_the_big_tier_and_beyond_its_range_are_refused() {
+        // At the word limit: 2^33 scaled by 2 is exactly 2^34, still on the words.
+        assert!(!Geometry::new(&q(&[[0, 0, 0], [1 << 33, 0, 0], [0, 1, 0]])).unwrap().is_big());
+        assert!(!Geometry::new(&q(&[[0, 0, 0], [-(1 << 33), 0, 0], [0, 1, 0]])).unwrap().is_big());
+        // One more: the big-integer tier draws it.
+        assert!(Geometry::new(&q(&[[0, 0, 0], [(1 << 33) + 1, 0, 0], [0, 1, 0]])).unwrap().is_big());
+        // Any common denominator: 3^60 (about 2^95) times 2^100 coordinates, on the plane z = 1/3^60.
+        let z = Q::new(1, 3i128.pow(60));
+        let far = [[Q::from_integer(1 << 100), Q::from_integer(0), z], [Q::from_integer(4), Q::from_integer(4), z]];
+        let geometry = Geometry::new(&[[Q::from_integer(0), Q::from_integer(0), z], far[0], far[1]]).unwrap();
+        assert!(geometry.is_big() && geometry.big_scaled().unwrap().1 == &BigInt::from(3i128.pow(60)));
+        // What it reports may outgrow 128 bits: a crossing 2^126 pixels out is drawn too.
+        assert!(Geometry::new(&q(&[[0, 0, 0], [1 << 126, 0, 0], [0, 1, 0]])).unwrap().is_big());
+        // Past MAX_SCALED_BITS: denominators 2 … 3001 have an lcm near e^3000 ≈ 2^4328.
+        let vertices: Vec<[Q; 3]> =
+            (1..=1500).map(|j| [Q::new(1, 2 * j), Q::new(1, 2 * j + 1), Q::from_integer(0)]).collect();
+        let err = Geometry::new(&vertices).unwrap_err();
+        assert!(matches!(err, GeometryError::OutOfRange { vertex: 1454, .. }), "{err:?}");
+        // 60,000 coprime-ish denominators: refused as soon as the lcm passes the bound (it once
+        // ran on, the lcm growing to hundreds of thousands of digits).
+        let vertices: Vec<[Q; 3]> = (0..20_000)
+            .map(|j| [Q::new(1, 2 * j + 1_000_003), Q::new(1, 2 * j + 1_000_004), Q::from_integer(0)])
+            .collect();
+        let err = Geometry::new(&vertices).unwrap_err();
+        assert!(matches!(err, GeometryError::OutOfRange { vertex: 151, .. }), "{err:?}");
+    }
+}

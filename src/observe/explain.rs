@@ -1,0 +1,290 @@
+//! Explanations in words a student can follow, built from the rasterizer's
+//! events: what the depth test made of a pixel, the history of a pixel
+//! through a scene, and why a cell holds its value.
+
+use crate::numbers::{Exact, Q, exact_and_decimal, exact_and_places};
+use crate::observe::trace::{Fate, Outcome, PixelEvent, PixelHistoryEntry, ScanlineRecord, SpanRecord};
+use crate::raster::depth::{Depth, Stored};
+use crate::rules::DepthStore;
+use crate::scene::Scene;
+
+/// Which buffer a sentence is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Buffer {
+    /// The framebuffer.
+    Frame,
+    /// The z-buffer.
+    Depth,
+}
+
+impl Buffer {
+    /// `framebuffer` or `z-buffer`, in the current language.
+    pub fn name(self) -> String {
+        match self {
+            Buffer::Frame => words!("buffer-frame"),
+            Buffer::Depth => words!("buffer-depth"),
+        }
+    }
+}
+
+/// A depth as shown for this scene: 2 decimals with a quantized z-buffer,
+/// 6 with an exact one (whose depths usually lie within −1 … 1).
+pub fn depth_text(scene: &Scene, z: impl Into<Exact>) -> String {
+    match scene.rules.store {
+        DepthStore::Quantized => exact_and_decimal(z),
+        DepthStore::Exact => exact_and_places(z, 6),
+    }
+}
+
+/// `polygon 2 "triangle"`.
+pub fn polygon_name(scene: &Scene, index: usize) -> String {
+    polygon_label("polygon-name", index, &scene.polygons[index].name)
+}
+
+/// `polygon 2 "triangle"` after "after" (a genitive in some languages).
+pub fn polygon_after(scene: &Scene, index: usize) -> String {
+    polygon_label("polygon-after", index, &scene.polygons[index].name)
+}
+
+/// Polygon `index` named `name` as `message` (`polygon-name` or
+/// `polygon-after`) words it: `polygon 2 "triangle"`, or `polygon 2` when
+/// the name is the one an unnamed polygon gets ([`crate::scene::is_default_name`]),
+/// which would only repeat the number (and in English).
+pub fn polygon_label(message: &str, index: usize, name: &str) -> String {
+    let named = if crate::scene::is_default_name(name, index) { "no" } else { "yes" };
+    words!(message, number = index + 1, name = name, named = named)
+}
+
+/// `43/4 ≈ 10.75 … 179/6 ≈ 29.83`.
+pub fn span_text(span: &SpanRecord) -> String {
+    words!("span", left = exact_and_decimal(&span.left), right = exact_and_decimal(&span.right))
+}
+
+/// `y = 15.5`: the scanline through row `row`.
+pub fn scanline_text(row: u32) -> String {
+    words!("scanline", y = crate::words::localize_decimal(format!("{row}.5")))
+}
+
+/// The direction a polygon's vertices run, in words.
+pub fn winding_text(winding: crate::scene::Winding) -> String {
+    match winding {
+        crate::scene::Winding::Cw => words!("winding-cw"),
+        crate::scene::Winding::Ccw => words!("winding-ccw"),
+    }
+}
+
+/// What is stored for an exact depth, naming the rounding when z is not
+/// whole (`10 is stored (10.25 rounds to 10)`, the book's pixel (20, 17))
+/// and the saturation when it does not fit.
+pub fn stored_text(scene: &Scene, depth: &Depth) -> String {
+    match depth.stored(scene.rules.store, scene.depth_max()) {
+        Stored::Level(stored) => {
+            let rounded = depth.rounded();
+            let value = depth.value();
+            if rounded == stored.into() && value.is_integer() {
+                words!("stored-whole", stored = stored)
+            } else if rounded == stored.into() {
+                let key = if Exact::integer(rounded) > value { "stored-rounded-up" } else { "stored-rounded" };
+                words!(key, stored = stored, value = crate::numbers::short(value))
+            } else {
+                words!(
+                    "stored-saturated",
+                    stored = stored,
+                    value = exact_and_decimal(depth.value()),
+                    rounded = rounded.to_string()
+                )
+            }
+        }
+        exact @ Stored::Exact(_) => words!("stored-exact", stored = exact.to_string()),
+    }
+}
+
+/// One sentence on what the depth test made of a covered pixel:
+/// `z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored and the framebuffer gets 2`.
+pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
+    let z = match scene.effects.perspective {
+        Some(perspective) if perspective.store_w => words!(
+            "z-w-buffer",
+            w = depth_text(scene, event.compared.value()),
+            z = depth_text(scene, event.depth.value())
+        ),
+        Some(perspective) => words!(
+            "z-projected",
+            z = depth_text(scene, event.depth.value()),
+            w = perspective
+                .eye_value(&event.depth.value())
+                .map_or_else(|| words!("z-beyond"), |w| depth_text(scene, w))
+        ),
+        None => depth_text(scene, event.compared.value()),
+    };
+    let stored_before = event.stored_before.to_string();
+    match event.outcome {
+        Outcome::Written => {
+            let polygon = &scene.polygons[event.index];
+            let frame = match polygon.opacity {
+                Some(alpha) => words!(
+                    "frame-blended",
+                    frame = event.frame_after,
+                    alpha = crate::numbers::fraction(alpha),
+                    value = polygon.value,
+                    rest = crate::numbers::fraction(Q::from_integer(1) - alpha),
+                    under = event.frame_before
+                ),
+                None => event.frame_after.to_string(),
+            };
+            words!(
+                "reason-written",
+                test = scene.depth_test.outcome_text(&z, &stored_before, true),
+                stored = stored_text(scene, &event.compared),
+                frame = frame
+            )
+        }
+        Outcome::Hidden => words!("reason-hidden", test = scene.depth_test.outcome_text(&z, &stored_before, false)),
+        Outcome::OutsideDepthRange => {
+            let (front, rear) = scene.depth_range.unwrap_or((Q::from_integer(0), Q::from_integer(0)));
+            words!("reason-outside-range", z = z, front = depth_text(scene, front), rear = depth_text(scene, rear))
+        }
+        Outcome::BeyondSection => {
+            let section = scene.effects.section.map_or(String::new(), |z| depth_text(scene, z));
+            words!(
+                "reason-beyond-section",
+                test = scene.depth_test.outcome_text(&z, &stored_before, true),
+                op = scene.depth_test.section_symbol(),
+                section = section
+            )
+        }
+    }
+}
+
+/// Why a polygon was not drawn at all, or `None` when it was.
+pub fn fate_text(fate: Fate) -> Option<String> {
+    match fate {
+        Fate::Drawn => None,
+        Fate::Culled(winding) => Some(words!("fate-culled", winding = winding_text(winding))),
+        Fate::EdgeOn => Some(words!("fate-edge-on")),
+        Fate::Degenerate => Some(words!("fate-degenerate")),
+        Fate::ClippedAway => Some(words!("fate-clipped")),
+        Fate::OutsideView => Some(words!("fate-outside-view")),
+    }
+}
+
+/// What one polygon did at pixel (x, y), in one sentence.
+pub fn entry_text(scene: &Scene, x: u32, y: u32, entry: &PixelHistoryEntry) -> String {
+    if let Some(text) = fate_text(entry.fate) {
+        return text;
+    }
+    let centre = Q::new(2 * i128::from(x) + 1, 2);
+    // A centre exactly on the boundary: say which rule decided it.
+    let tie = crate::observe::tie::tie_text(scene.rules, &scene.polygons[entry.index].vertices, x, y)
+        .map_or(String::new(), |t| words!("tie-wrap", text = t));
+    match (&entry.scanline, &entry.pixel) {
+        (None, _) => words!("entry-no-row", scanline = scanline_text(y), tie = tie),
+        (Some(scanline), Some(pixel)) => {
+            let reason = pixel_reason(scene, pixel);
+            match scanline.span_covering(x) {
+                Some(span) => words!(
+                    "entry-covered",
+                    scanline = scanline_text(y),
+                    span = span_text(span),
+                    centre = exact_and_decimal(centre),
+                    tie = tie,
+                    reason = reason
+                ),
+                None => words!(
+                    "entry-covered-no-span",
+                    scanline = scanline_text(y),
+                    centre = exact_and_decimal(centre),
+                    tie = tie,
+                    reason = reason
+                ),
+            }
+        }
+        (Some(scanline), None) => words!(
+            "entry-not-inside",
+            scanline = scanline_text(y),
+            spans = spans_of(scanline, &words!("subject-it")),
+            centre = exact_and_decimal(centre),
+            tie = tie
+        ),
+    }
+}
+
+/// `it spans 57/2 … 179/6` (or has no crossings), with `subject` for "it".
+fn spans_of(scanline: &ScanlineRecord, subject: &str) -> String {
+    if scanline.spans.is_empty() {
+        return words!("spans-none", subject = subject);
+    }
+    let spans: Vec<String> = scanline.spans.iter().map(span_text).collect();
+    words!("spans-some", subject = subject, spans = spans.join(&words!("list-and")))
+}
+
+/// Why cell (x, y) of `buffer` holds what it holds after the polygons in
+/// `history` (all of them up to the one the check is after), in one sentence.
+pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistoryEntry]) -> String {
+    let last_write = history
+        .iter()
+        .rev()
+        .find_map(|entry| entry.pixel.as_ref().filter(|p| p.outcome == Outcome::Written).map(|p| (entry.index, p)));
+    let result = |pixel: &PixelEvent| match buffer {
+        Buffer::Frame => words!("result-frame", value = pixel.frame_after),
+        Buffer::Depth => stored_text(scene, &pixel.compared),
+    };
+    let semicolon = words!("list-semicolon");
+    if let Some((index, pixel)) = last_write {
+        let z = depth_text(scene, pixel.compared.value());
+        let mut text = words!(
+            "why-covers",
+            polygon = polygon_name(scene, index),
+            x = x,
+            y = y,
+            test = scene.depth_test.outcome_text(&z, &pixel.stored_before.to_string(), true),
+            result = result(pixel)
+        );
+        let later: Vec<String> = history
+            .iter()
+            .filter(|entry| entry.index > index && entry.pixel.is_some())
+            .map(|entry| {
+                words!(
+                    "why-later-item",
+                    polygon = polygon_name(scene, entry.index),
+                    reason = entry.pixel.as_ref().map_or_else(String::new, |p| pixel_reason(scene, p))
+                )
+            })
+            .collect();
+        if !later.is_empty() {
+            text.push_str(&words!("why-later", list = later.join(&semicolon)));
+        }
+        return text;
+    }
+    let cleared = match buffer {
+        Buffer::Frame => words!("cleared-frame", value = scene.background),
+        Buffer::Depth => words!("cleared-depth", value = scene.clear_depth.to_string()),
+    };
+    let covered: Vec<String> = history
+        .iter()
+        .filter_map(|entry| {
+            entry.pixel.as_ref().map(|p| {
+                words!("why-covered-item", polygon = polygon_name(scene, entry.index), reason = pixel_reason(scene, p))
+            })
+        })
+        .collect();
+    if !covered.is_empty() {
+        return words!("why-nothing-written", x = x, y = y, list = covered.join(&semicolon), cleared = cleared);
+    }
+    let reaching: Vec<String> = history
+        .iter()
+        .filter_map(|entry| entry.scanline.as_ref().map(|s| spans_of(s, &polygon_name(scene, entry.index))))
+        .collect();
+    if reaching.is_empty() {
+        words!("why-none-reaches", x = x, y = y, scanline = scanline_text(y), cleared = cleared)
+    } else {
+        words!(
+            "why-not-covered",
+            x = x,
+            y = y,
+            scanline = scanline_text(y),
+            list = reaching.join(&words!("list-and")),
+            cleared = cleared
+        )
+    }
+}

@@ -1,0 +1,531 @@
+//! The raster as an SVG figure like the book's: the pixel grid, pixel
+//! centres, half-interval scanlines, polygon outlines and covered pixels
+//! filled by framebuffer value (or shaded by depth). Coordinates are written
+//! from exact values with [`crate::numbers::decimal`]; nothing passes through
+//! floating point.
+
+use std::fmt::Write as _;
+
+use crate::raster::depth::Stored;
+use crate::simulate::buffer::Buffers;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+
+use crate::numbers::{Exact, Q, decimal, short};
+use crate::scene::Scene;
+
+/// Largest raster side a figure draws.
+pub const MAX_FIGURE_SIDE: u32 = 1024;
+
+/// Largest raster side for which the grid, the centres and the scanlines are
+/// drawn; beyond it they would cover the picture.
+pub const MAX_DETAILED_SIDE: u32 = 64;
+
+/// Size of one pixel in the figure, in SVG user units.
+const CELL: i128 = 24;
+const MARGIN_LEFT: i128 = 40;
+const MARGIN_TOP: i128 = 36;
+const MARGIN_RIGHT: i128 = 16;
+const MARGIN_BOTTOM: i128 = 40;
+/// Height of the legend's row below the axes.
+const LEGEND: i128 = 22;
+
+/// Fill colours for framebuffer values 1, 2, …; 0 (the usual background) is
+/// white. Okabe and Ito's colour-blind-safe set, ordered so that 1, 2 and 3
+/// (a 2-bit framebuffer) are light, middle and dark in grey print too.
+const PALETTE: [&str; 7] = ["#f0e442", "#e69f00", "#0072b2", "#009e73", "#cc79a7", "#56b4e9", "#d55e00"];
+
+/// What the cells show.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shading {
+    /// Filled by framebuffer value.
+    Frame,
+    /// Shaded by z-buffer value: nearer is darker.
+    Depth,
+}
+
+/// What a figure adds for a worksheet or an answer key.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Extras {
+    /// Label each outlined polygon's vertices with their coordinates `(x, y, z)`.
+    pub vertex_labels: bool,
+    /// Lines of text below the axes (what to fill in, say).
+    pub caption: Vec<String>,
+    /// Print each cell's value (framebuffer or z-buffer, as shaded) in its pixel.
+    pub values: bool,
+}
+
+/// Draws the buffers after polygon `last` (0-based): polygons `0 ..= last`
+/// are outlined. The raster must be at most [`MAX_FIGURE_SIDE`] on a side.
+pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, title: &str) -> String {
+    svg_with(scene, buffers, last, shading, title, &Extras::default())
+}
+
+/// Like [`svg`], with vertex labels and a caption.
+pub fn svg_with(
+    scene: &Scene,
+    buffers: &Buffers,
+    last: usize,
+    shading: Shading,
+    title: &str,
+    extras: &Extras,
+) -> String {
+    let (width, height) = (i128::from(scene.width), i128::from(scene.height));
+    // Vertex labels reach out beside the raster: room for them on both sides.
+    let pad = if extras.vertex_labels { 100 } else { 0 };
+    let (left, right) = (MARGIN_LEFT + pad, MARGIN_RIGHT + pad);
+    let total_width = left + width * CELL + right;
+    // About 6 units a character at font size 11.
+    let caption = wrap(&extras.caption, ((total_width - left - 8) / 6).max(20) as usize);
+    let caption_height = 16 * caption.len() as i128;
+    // The title wraps too (font size 13: about 7.5 units a character); the raster starts below it.
+    let title_lines = wrap(&[title.to_string()], ((total_width - left - 8) * 2 / 15).max(20) as usize);
+    let top = MARGIN_TOP + 18 * (title_lines.len() as i128 - 1);
+    let legend = legend(scene, buffers, shading);
+    let total_height = top + height * CELL + MARGIN_BOTTOM + LEGEND + caption_height;
+    // Pixel-unit point to SVG coordinates: x right, y up (flipped).
+    let sx = |x: Q| decimal(Q::from_integer(left) + x * CELL, 2);
+    let sy = |y: Q| decimal(Q::from_integer(top) + (Q::from_integer(height) - y) * CELL, 2);
+    let int = |v: i128| Q::from_integer(v);
+    // The same for a vertex, exact however large (clip space may make it so).
+    let vx = |x: &Exact| decimal(Exact::Word(int(left)).plus(&x.times(CELL)), 2);
+    let vy = |y: &Exact| decimal(Exact::Word(int(top + height * CELL)).minus(&y.times(CELL)), 2);
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{total_width}" height="{total_height}" viewBox="0 0 {total_width} {total_height}" font-family="sans-serif" font-size="11">"#
+    );
+    let _ = writeln!(out, r#"<title>{}</title>"#, escape(title));
+    let _ = writeln!(out, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    for (k, line) in title_lines.iter().enumerate() {
+        let _ = writeln!(out, r#"<text x="{left}" y="{}" font-size="13">{}</text>"#, 20 + 18 * k, escape(line));
+    }
+    // Covered pixels.
+    let _ = writeln!(out, r#"<g id="pixels" stroke="none" shape-rendering="crispEdges">"#);
+    let range = exact_range(scene, buffers);
+    for y in 0..scene.height {
+        // Runs of equal cells in a row become one rectangle.
+        let mut x = 0;
+        while x < scene.width {
+            let fill = cell_fill(scene, buffers, x, y, shading, &range);
+            let mut end = x + 1;
+            while end < scene.width && cell_fill(scene, buffers, end, y, shading, &range) == fill {
+                end += 1;
+            }
+            if let Some(fill) = fill {
+                let what = if end - x == 1 {
+                    words!(
+                        "figure-cell",
+                        x = x,
+                        y = y,
+                        frame = buffers.frame(x, y),
+                        depth = buffers.depth(x, y).to_string()
+                    )
+                } else {
+                    words!("figure-cells", from = x, to = end - 1, y = y, frame = buffers.frame(x, y))
+                };
+                let _ = writeln!(
+                    out,
+                    r#"<rect x="{}" y="{}" width="{}" height="{CELL}" fill="{fill}"><title>{}</title></rect>"#,
+                    sx(int(i128::from(x))),
+                    sy(int(i128::from(y) + 1)),
+                    CELL * i128::from(end - x),
+                    escape(&what)
+                );
+            }
+            x = end;
+        }
+    }
+    let _ = writeln!(out, "</g>");
+    let detailed = scene.width.max(scene.height) <= MAX_DETAILED_SIDE;
+    // The pixel grid.
+    let _ = writeln!(out, r##"<g id="grid" stroke="#b0b0b0" stroke-width="0.5">"##);
+    for x in 0..=width {
+        let _ =
+            writeln!(out, r#"<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>"#, sx(int(x)), sy(int(0)), sy(int(height)));
+    }
+    for y in (0..=height).filter(|_| detailed) {
+        let _ = writeln!(out, r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#, sy(int(y)), sx(int(0)), sx(int(width)));
+    }
+    let _ = writeln!(out, "</g>");
+    // Half-interval scanlines through the centres.
+    let _ = writeln!(out, r##"<g id="scanlines" stroke="#3a6ea5" stroke-width="0.6" stroke-dasharray="3 3">"##);
+    for row in (0..height).filter(|_| detailed) {
+        let y = Q::new(2 * row + 1, 2);
+        let _ = writeln!(out, r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#, sy(y), sx(int(0)), sx(int(width)));
+    }
+    let _ = writeln!(out, "</g>");
+    // Pixel centres (left out where values are printed in the cells).
+    let _ = writeln!(out, r##"<g id="centres" fill="#333333">"##);
+    for row in (0..height).filter(|_| detailed && !extras.values) {
+        for column in 0..width {
+            let (cx, cy) = (Q::new(2 * column + 1, 2), Q::new(2 * row + 1, 2));
+            let _ = writeln!(out, r#"<circle cx="{}" cy="{}" r="1.3"/>"#, sx(cx), sy(cy));
+        }
+    }
+    let _ = writeln!(out, "</g>");
+    // Polygon outlines, with their names.
+    let _ = writeln!(out, r#"<g id="polygons" fill="none" stroke="black" stroke-width="1.5">"#);
+    for (index, polygon) in scene.polygons.iter().enumerate().take(last + 1) {
+        if polygon.vertices.is_empty() {
+            // Clipped away in clip space: nothing on the raster to outline.
+            continue;
+        }
+        let points: Vec<String> = polygon.vertices.iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect();
+        // An unnamed polygon is labelled by its number alone, titled in the reader's language.
+        let unnamed = crate::scene::is_default_name(&polygon.name, index);
+        let title = if unnamed { crate::observe::explain::polygon_name(scene, index) } else { polygon.name.clone() };
+        let label = if unnamed { (index + 1).to_string() } else { format!("{} {}", index + 1, escape(&polygon.name)) };
+        let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));
+        // At the polygon's middle, off the vertices and the outline, on a white halo
+        // so that it reads over any fill.
+        let middle = |axis: usize| middle(&polygon.vertices, axis);
+        let _ = writeln!(
+            out,
+            r#"<text x="{}" y="{}" stroke="white" stroke-width="3" paint-order="stroke" font-weight="bold" text-anchor="middle" fill="black">{}</text>"#,
+            vx(&middle(0)),
+            vy(&middle(1)),
+            label
+        );
+    }
+    let _ = writeln!(out, "</g>");
+    if extras.values {
+        cell_values(&mut out, scene, buffers, shading, (&sx, &sy));
+    }
+    if extras.vertex_labels {
+        vertex_labels(&mut out, scene, last, (&vx, &vy));
+    }
+    // Axes: column numbers below, row numbers on the left.
+    let step = if width.max(height) > 64 {
+        8
+    } else if width.max(height) > 32 {
+        4
+    } else {
+        1
+    };
+    let _ = writeln!(out, r#"<g id="axes" fill="black" text-anchor="middle">"#);
+    let below = decimal(Q::from_integer(top + height * CELL + 14), 2);
+    for column in (0..width).step_by(step) {
+        let _ = writeln!(out, r#"<text x="{}" y="{below}">{column}</text>"#, sx(Q::new(2 * column + 1, 2)));
+    }
+    let _ = writeln!(
+        out,
+        r#"<text x="{}" y="{}">x</text>"#,
+        sx(Q::new(width, 2)),
+        decimal(Q::from_integer(top + height * CELL + 30), 2)
+    );
+    for row in (0..height).step_by(step) {
+        let _ = writeln!(
+            out,
+            r#"<text x="{}" y="{}" text-anchor="end">{row}</text>"#,
+            left - 6,
+            sy(Q::new(2 * row + 1, 2) - Q::new(1, 3))
+        );
+    }
+    let _ = writeln!(out, r#"<text x="{}" y="{}">y</text>"#, left - 28, sy(Q::new(height, 2)));
+    let _ = writeln!(out, "</g>");
+    let legend_top = top + height * CELL + MARGIN_BOTTOM;
+    let _ = writeln!(out, r#"<g id="legend" fill="black">"#);
+    let mut x = left;
+    for (fill, label) in &legend {
+        let _ = writeln!(
+            out,
+            r##"<rect x="{x}" y="{}" width="12" height="12" fill="{fill}" stroke="#808080" stroke-width="0.5"/><text x="{}" y="{}">{}</text>"##,
+            legend_top,
+            x + 16,
+            legend_top + 10,
+            escape(label)
+        );
+        x += 16 + text_width(label) + 14;
+    }
+    let _ = writeln!(out, "</g>");
+    if !caption.is_empty() {
+        let _ = writeln!(out, r#"<g id="caption" fill="black">"#);
+        for (k, line) in caption.iter().enumerate() {
+            let y = legend_top + LEGEND + 16 * k as i128 + 4;
+            let _ = writeln!(out, r#"<text x="{left}" y="{y}">{}</text>"#, escape(line));
+        }
+        let _ = writeln!(out, "</g>");
+    }
+    let _ = writeln!(out, "</svg>");
+    out
+}
+
+/// The width of a legend label in the figure's 11 px sans-serif: about 7 px
+/// a character, 12 for the wide ones of Chinese (from U+2E80 on).
+fn text_width(label: &str) -> i128 {
+    label.chars().map(|c| if is_wide(c) { 12 } else { 7 }).sum()
+}
+
+/// The legend's entries, `(fill, label)`: each framebuffer value present
+/// (the background first), or for depth shading the far and near ends.
+fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, String)> {
+    match shading {
+        Shading::Frame => {
+            let mut values: Vec<u32> = buffers.frame_rows().into_iter().flatten().collect();
+            values.sort_unstable();
+            values.dedup();
+            if !values.contains(&scene.background) {
+                values.insert(0, scene.background);
+            }
+            values
+                .into_iter()
+                .map(|v| {
+                    if v == scene.background {
+                        ("#ffffff".to_string(), words!("figure-background", value = v))
+                    } else {
+                        (frame_fill(scene, v), words!("figure-value", value = v))
+                    }
+                })
+                .collect()
+        }
+        Shading::Depth => {
+            let larger_nearer = if scene.depth_test.larger_is_nearer() { "yes" } else { "no" };
+            vec![
+                ("#ffffff".to_string(), words!("figure-cleared", value = scene.clear_depth.to_string())),
+                ("#e6e6e6".to_string(), words!("figure-far", larger_nearer = larger_nearer)),
+                ("#3c3c3c".to_string(), words!("figure-near", larger_nearer = larger_nearer)),
+            ]
+        }
+    }
+}
+
+/// Each cell's value written in its pixel: black on light fills, white on dark.
+fn cell_values(
+    out: &mut String,
+    scene: &Scene,
+    buffers: &Buffers,
+    shading: Shading,
+    (sx, sy): (&dyn Fn(Q) -> String, &dyn Fn(Q) -> String),
+) {
+    let _ = writeln!(out, r#"<g id="values" font-size="9" text-anchor="middle">"#);
+    let range = exact_range(scene, buffers);
+    for y in 0..scene.height {
+        for x in 0..scene.width {
+            let (text, fill) = match shading {
+                Shading::Frame => (buffers.frame(x, y).to_string(), cell_fill(scene, buffers, x, y, shading, &range)),
+                Shading::Depth => {
+                    let text = match buffers.depth(x, y) {
+                        Stored::Level(level) => level.to_string(),
+                        Stored::Exact(value) => short(value),
+                    };
+                    (text, cell_fill(scene, buffers, x, y, shading, &range))
+                }
+            };
+            let colour = if fill.as_deref().is_some_and(is_dark) { "white" } else { "black" };
+            let (cx, cy) = (Q::new(2 * i128::from(x) + 1, 2), Q::new(2 * i128::from(y) + 1, 2) - Q::new(1, 6));
+            let _ = writeln!(out, r#"<text x="{}" y="{}" fill="{colour}">{}</text>"#, sx(cx), sy(cy), escape(&text));
+        }
+    }
+    let _ = writeln!(out, "</g>");
+}
+
+/// Whether a `#rrggbb` fill is dark enough for white text (luma below one half).
+fn is_dark(fill: &str) -> bool {
+    let channel = |k: usize| u32::from_str_radix(fill.get(1 + 2 * k..3 + 2 * k).unwrap_or("ff"), 16).unwrap_or(255);
+    299 * channel(0) + 587 * channel(1) + 114 * channel(2) < 500 * 255
+}
+
+/// Each vertex of polygons `0 ..= last` labelled `(x, y, z)`, set off from
+/// the vertex away from its polygon's middle, on a white halo so that the
+/// label stays readable over lines.
+fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&ToSvg, &ToSvg)) {
+    let _ = writeln!(
+        out,
+        r#"<g id="vertices" font-size="10" fill="black" stroke="white" stroke-width="3" paint-order="stroke">"#
+    );
+    // Vertices already labelled, so that a point shared by two polygons gets its labels one under the other.
+    let mut labelled: Vec<[Exact; 2]> = Vec::new();
+    for polygon in scene.polygons.iter().take(last + 1).filter(|p| !p.vertices.is_empty()) {
+        let (middle_x, middle_y) = (middle(&polygon.vertices, 0), middle(&polygon.vertices, 1));
+        for v in &polygon.vertices {
+            // Left of the middle: the label ends at the vertex; right: it starts there.
+            let (anchor, dx) = if v[0] < middle_x { ("end", Q::new(-1, 4)) } else { ("start", Q::new(1, 4)) };
+            let point = [v[0].clone(), v[1].clone()];
+            let below = labelled.iter().filter(|p| **p == point).count() as i128;
+            labelled.push(point);
+            let dy = if v[1] < middle_y { Q::new(-1, 2) } else { Q::new(1, 4) } - Q::new(below, 2);
+            let label = format!("({})", v.each_ref().map(short).join(coordinate_separator()));
+            let _ = writeln!(
+                out,
+                r#"<circle cx="{}" cy="{}" r="2.5" stroke="none"/><text x="{}" y="{}" text-anchor="{anchor}">{}</text>"#,
+                sx(&v[0]),
+                sy(&v[1]),
+                sx(&v[0].plus(&Exact::Word(dx))),
+                sy(&v[1].plus(&Exact::Word(dy))),
+                escape(&label)
+            );
+        }
+    }
+    let _ = writeln!(out, "</g>");
+}
+
+/// The fill of cell (x, y), or `None` where it shows the background.
+fn cell_fill(
+    scene: &Scene,
+    buffers: &Buffers,
+    x: u32,
+    y: u32,
+    shading: Shading,
+    range: &(Exact, Exact),
+) -> Option<String> {
+    match shading {
+        Shading::Frame => {
+            let value = buffers.frame(x, y);
+            (value != scene.background).then(|| frame_fill(scene, value))
+        }
+        Shading::Depth => {
+            let value = buffers.depth(x, y);
+            (value != scene.clear_depth).then(|| depth_grey(&value, scene, range))
+        }
+    }
+}
+
+/// A framebuffer value's fill: the palette for small values, the value
+/// itself as RGB when the framebuffer holds 24-bit colours.
+fn frame_fill(scene: &Scene, value: u32) -> String {
+    if scene.frame_bits == 24 {
+        format!("#{value:06x}")
+    } else {
+        PALETTE[(value as usize).saturating_sub(1) % PALETTE.len()].to_string()
+    }
+}
+
+/// A grey for a depth: nearer (by the depth test) is darker. Levels are
+/// scaled by the level range; exact depths by the range `[low, high]` of the
+/// values in the buffer.
+fn depth_grey(value: &Stored, scene: &Scene, (low, high): &(Exact, Exact)) -> String {
+    let integer = |v: u32| BigRational::from_integer(BigInt::from(v));
+    let (value, low, high) = match value {
+        Stored::Level(level) => (integer(*level), integer(0), integer(scene.depth_max())),
+        Stored::Exact(value) => (value.to_big(), low.to_big(), high.to_big()),
+    };
+    let span = if high > low { &high - &low } else { integer(1) };
+    let offset = if scene.depth_test.larger_is_nearer() { value - low } else { high - value };
+    // 230 (far) … 60 (near), in whole steps.
+    let shade = (offset / span * integer(170)).floor().to_integer().clamp(BigInt::from(0), BigInt::from(170));
+    let level = 230 - shade.to_u8().expect("clamped");
+    format!("#{level:02x}{level:02x}{level:02x}")
+}
+
+/// A vertex coordinate to the SVG's (x, or y flipped).
+type ToSvg<'a> = dyn Fn(&Exact) -> String + 'a;
+
+/// The mean of the vertices' coordinate `axis`, exactly.
+fn middle(vertices: &[[Exact; 3]], axis: usize) -> Exact {
+    let sum = vertices.iter().fold(Exact::Word(Q::from_integer(0)), |sum, v| sum.plus(&v[axis]));
+    sum.divided_by(vertices.len() as i128)
+}
+
+/// The least and greatest exact depths written (for shading).
+fn exact_range(scene: &Scene, buffers: &Buffers) -> (Exact, Exact) {
+    let written: Vec<Exact> =
+        buffers.depth_rows().into_iter().flatten().filter(|v| *v != scene.clear_depth).map(|v| v.value()).collect();
+    let range = written.iter().min().cloned().zip(written.iter().max().cloned());
+    range.unwrap_or((Exact::Word(Q::from_integer(0)), Exact::Word(Q::from_integer(1))))
+}
+
+/// The lines, each broken at spaces to at most `width` characters.
+fn wrap(lines: &[String], width: usize) -> Vec<String> {
+    let mut out = Vec::new();
+    for line in lines {
+        let mut current = String::new();
+        for (spaced, word) in breakable(line) {
+            let joiner = usize::from(spaced && !current.is_empty());
+            if !current.is_empty() && columns(&current) + joiner + columns(word) > width {
+                out.push(std::mem::take(&mut current));
+            } else if joiner == 1 {
+                current.push(' ');
+            }
+            current.push_str(word);
+        }
+        out.push(current);
+    }
+    out
+}
+
+/// Between a point's coordinates: `, `, or `; ` where the decimal separator
+/// is a comma (`(12,5; 3; 0,25)` in Russian), as `explain` writes centres.
+fn coordinate_separator() -> &'static str {
+    if crate::words::language().decimal_separator() == ',' { "; " } else { ", " }
+}
+
+/// Whether a character is one of Chinese's wide ones (from U+2E80 on),
+/// which take about two columns and may be broken between.
+fn is_wide(c: char) -> bool {
+    u32::from(c) >= 0x2E80
+}
+
+/// The columns a text takes: one a character, two a wide one.
+fn columns(text: &str) -> usize {
+    text.chars().map(|c| if is_wide(c) { 2 } else { 1 }).sum()
+}
+
+/// The pieces a line may be broken between, each with whether a space
+/// precedes it: its words, and within a word each wide character alone.
+fn breakable(line: &str) -> Vec<(bool, &str)> {
+    let mut pieces = Vec::new();
+    for word in line.split(' ') {
+        let mut start = 0;
+        for (i, c) in word.char_indices() {
+            let end = i + c.len_utf8();
+            // A break before and after each wide character, none elsewhere.
+            let next_wide = word[end..].chars().next().is_some_and(is_wide);
+            if is_wide(c) || next_wide || end == word.len() {
+                pieces.push((start == 0, &word[start..end]));
+                start = end;
+            }
+        }
+        if word.is_empty() {
+            pieces.push((true, word));
+        }
+    }
+    pieces
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Luma of a `#rrggbb` colour, 0 … 1000.
+    fn luma(fill: &str) -> u32 {
+        let channel = |k: usize| u32::from_str_radix(&fill[1 + 2 * k..3 + 2 * k], 16).unwrap();
+        (299 * channel(0) + 587 * channel(1) + 114 * channel(2)) / 255
+    }
+
+    /// Found by a new user: values 2 and 3 were two similar greens. A 2-bit
+    /// framebuffer's values 1, 2, 3 and the white background differ in grey print
+    /// by at least a sixth of the range.
+    #[test]
+    fn palette_levels_are_distinct_in_grey() {
+        let lumas: Vec<u32> = ["#ffffff", PALETTE[0], PALETTE[1], PALETTE[2]].iter().map(|c| luma(c)).collect();
+        for pair in lumas.windows(2) {
+            assert!(pair[0] > pair[1] + 160, "{lumas:?}");
+        }
+    }
+
+    /// The legend's labels are spaced by their width: a Chinese character
+    /// takes about twice a Latin or Cyrillic one.
+    #[test]
+    fn legend_labels_are_spaced_by_their_width() {
+        assert_eq!((text_width("value 1"), text_width("значение 1"), text_width("值 1")), (49, 70, 26));
+    }
+
+    #[test]
+    fn text_wraps_at_spaces() {
+        assert_eq!(wrap(&["a bb ccc dd".to_string()], 5), ["a bb", "ccc", "dd"]);
+    }
+
+    /// Chinese has no spaces: its text breaks between any two characters,
+    /// each counted two columns wide; Latin words within it stay whole.
+    #[test]
+    fn chinese_text_wraps_between_characters() {
+        assert_eq!(wrap(&["写出帧缓冲器和 z 缓冲器".to_string()], 8), ["写出帧缓", "冲器和 z", "缓冲器"]);
+        assert_eq!(wrap(&["值 0 … 15（四舍五入）".to_string()], 10), ["值 0 … 15", "（四舍五入", "）"]);
+    }
+}

@@ -1,0 +1,7 @@
+//! Observe.
+pub mod check;
+pub mod explain;
+pub mod figure;
+pub mod report;
+pub mod tie;
+pub mod trace;

@@ -1,0 +1,248 @@
+//! Ties: pixel centres exactly on a polygon's edge or vertex, where the
+//! rule sets differ, and the cells where two rule sets draw a scene
+//! differently, each with the tie that decided it.
+
+use std::cmp::Ordering;
+use std::collections::BTreeSet;
+
+use num_rational::BigRational;
+use num_traits::Zero;
+
+use crate::numbers::{Exact, Q};
+use crate::observe::trace::Unobserved;
+use crate::raster::depth::Depth;
+use crate::raster::scan::{Crossing, Span};
+use crate::rules::Rules;
+use crate::scene::Scene;
+use crate::simulate::pipeline::{PixelRect, RasterSink, Scratch, Simulation, rasterize};
+
+/// Which kind of boundary a centre lies on, as drawn (y up, row 0 at the bottom).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Boundary {
+    /// A horizontal edge with the polygon below it.
+    TopEdge,
+    /// A horizontal edge with the polygon above it.
+    BottomEdge,
+    /// A slanted or vertical edge with the polygon to its right.
+    LeftEdge,
+    /// A slanted or vertical edge with the polygon to its left.
+    RightEdge,
+    /// A vertex.
+    Vertex,
+}
+
+impl Boundary {
+    /// The words for it: "left edge", "vertex", ….
+    pub fn words(self) -> &'static str {
+        match self {
+            Boundary::TopEdge => "top edge",
+            Boundary::BottomEdge => "bottom edge",
+            Boundary::LeftEdge => "left edge",
+            Boundary::RightEdge => "right edge",
+            Boundary::Vertex => "vertex",
+        }
+    }
+}
+
+/// Where pixel (x, y)'s centre lies on a polygon's boundary, if it does:
+/// the boundary's kind and the edge (its two vertices) or vertex.
+pub fn boundary_at(vertices: &[[Exact; 3]], x: u32, y: u32) -> Option<(Boundary, [Exact; 2], [Exact; 2])> {
+    // In big rationals: a clipped polygon's vertices are fractions whose
+    // products outgrow 128 bits.
+    let centre = [Q::new(2 * i128::from(x) + 1, 2), Q::new(2 * i128::from(y) + 1, 2)];
+    let n = vertices.len();
+    for v in vertices {
+        if v[0] == centre[0] && v[1] == centre[1] {
+            let point = [v[0].clone(), v[1].clone()];
+            return Some((Boundary::Vertex, point.clone(), point));
+        }
+    }
+    let points: Vec<[BigRational; 2]> = vertices.iter().map(|v| [v[0].to_big(), v[1].to_big()]).collect();
+    let centre_big = centre.map(|q| Exact::Word(q).to_big());
+    // Twice the signed area: positive when the vertices run counter-clockwise.
+    let area: BigRational =
+        (0..n).map(|i| &points[i][0] * &points[(i + 1) % n][1] - &points[(i + 1) % n][0] * &points[i][1]).sum();
+    let orientation = area.cmp(&BigRational::zero());
+    for i in 0..n {
+        let (a, b) = (&points[i], &points[(i + 1) % n]);
+        let cross = (&b[0] - &a[0]) * (&centre_big[1] - &a[1]) - (&b[1] - &a[1]) * (&centre_big[0] - &a[0]);
+        let within = |k: usize| {
+            a[k].clone().min(b[k].clone()) <= centre_big[k] && centre_big[k] <= a[k].clone().max(b[k].clone())
+        };
+        if !cross.is_zero() || !within(0) || !within(1) {
+            continue;
+        }
+        // Walking counter-clockwise the interior is on the left of each edge:
+        // an edge running down has it to the east (a left edge), one running
+        // right to left along a horizontal has it below (a top edge).
+        let flip = if orientation == Ordering::Less { -1 } else { 1 };
+        let dy = b[1].cmp(&a[1]) as i32 * flip;
+        let dx = b[0].cmp(&a[0]) as i32 * flip;
+        let (a, b) = (&vertices[i], &vertices[(i + 1) % n]);
+        let kind = match (dy, dx) {
+            (0, d) if d < 0 => Boundary::TopEdge,
+            (0, _) => Boundary::BottomEdge,
+            (d, _) if d < 0 => Boundary::LeftEdge,
+            _ => Boundary::RightEdge,
+        };
+        return Some((kind, [a[0].clone(), a[1].clone()], [b[0].clone(), b[1].clone()]));
+    }
+    None
+}
+
+/// Whether a rule set covers a centre on a boundary of this kind (for a
+/// vertex, the answer depends on the edges meeting there: `None`).
+pub fn rule_covers(rules: Rules, boundary: Boundary) -> Option<bool> {
+    use crate::rules::{ColumnRule, RowRule};
+    match boundary {
+        Boundary::Vertex => None,
+        Boundary::TopEdge => Some(rules.rows != RowRule::HalfOpen),
+        Boundary::BottomEdge => Some(rules.rows != RowRule::TopLeft),
+        Boundary::LeftEdge => Some(true),
+        Boundary::RightEdge => Some(rules.columns != ColumnRule::HalfOpen),
+    }
+}
+
+/// A cell the two rule sets draw differently.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RuleDifference {
+    /// Column.
+    pub x: u32,
+    /// Row (from the bottom).
+    pub y: u32,
+    /// The framebuffer value under the scene's rules and under the other.
+    pub values: (u32, u32),
+    /// The polygons covering the centre under each, by index, in drawing order.
+    pub covering: (Vec<usize>, Vec<usize>),
+    /// For each polygon covered under one rule set and not the other: its
+    /// index, where the centre lies on it, and that edge's ends.
+    pub ties: Vec<(usize, Boundary, [Exact; 2], [Exact; 2])>,
+}
+
+#[derive(Default)]
+struct Cells(BTreeSet<(u32, u32)>);
+
+impl RasterSink for Cells {
+    const OBSERVES_SCANLINES: bool = false;
+    fn scanline(&mut self, _: u32, _: &[Crossing], _: &[Span]) {}
+    fn pixel(&mut self, x: u32, y: u32, _: Depth) {
+        self.0.insert((x, y));
+    }
+}
+
+fn coverage(scene: &Scene, rules: Rules) -> Vec<BTreeSet<(u32, u32)>> {
+    let rect = PixelRect { columns: (0, scene.width - 1), rows: (0, scene.height - 1) };
+    let mut scratch = Scratch::default();
+    scene
+        .polygons
+        .iter()
+        .map(|polygon| {
+            let mut cells = Cells::default();
+            rasterize(&polygon.geometry, rules, rect, &mut scratch, &mut cells);
+            cells.0
+        })
+        .collect()
+}
+
+/// The cells whose final framebuffer value differs between the scene's own
+/// rules and `other` (the same scene otherwise), bottom row last, each with
+/// the polygons covering it under each and the ties that made the difference.
+pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
+    let mut changed = scene.clone();
+    changed.rules = other;
+    let frames = [scene, &changed].map(|s| {
+        let mut simulation = Simulation::new(s);
+        simulation.finish(&mut Unobserved);
+        simulation.buffers().frame_rows()
+    });
+    let (ours, theirs) = (coverage(scene, scene.rules), coverage(scene, other));
+    let mut out = Vec::new();
+    for (printed_row, (a, b)) in frames[0].iter().zip(&frames[1]).enumerate() {
+        let y = scene.height - 1 - printed_row as u32;
+        for (x, (&va, &vb)) in a.iter().zip(b).enumerate() {
+            let x = x as u32;
+            let covering = |sets: &[BTreeSet<(u32, u32)>]| -> Vec<usize> {
+                sets.iter().enumerate().filter(|(_, s)| s.contains(&(x, y))).map(|(i, _)| i).collect()
+            };
+            let covering = (covering(&ours), covering(&theirs));
+            if va == vb && covering.0 == covering.1 {
+                continue;
+            }
+            let ties = (0..scene.polygons.len())
+                .filter(|&i| covering.0.contains(&i) != covering.1.contains(&i))
+                .filter_map(|i| boundary_at(&scene.polygons[i].vertices, x, y).map(|(kind, a, b)| (i, kind, a, b)))
+                .collect();
+            out.push(RuleDifference { x, y, values: (va, vb), covering, ties });
+        }
+    }
+    out
+}
+
+/// Which of a rule set's choices decides a centre on this kind of boundary,
+/// in words: "the book's column rule (centres in [x_l, x_r], ends included)", ….
+fn deciding_rule(rules: Rules, boundary: Boundary) -> String {
+    use crate::rules::{ColumnRule, RowRule};
+    match boundary {
+        Boundary::LeftEdge | Boundary::RightEdge => match rules.columns {
+            ColumnRule::CentreInside => words!("rule-columns-centre"),
+            ColumnRule::CellHolds => words!("rule-columns-cell"),
+            ColumnRule::HalfOpen => words!("rule-columns-half-open"),
+        },
+        Boundary::TopEdge | Boundary::BottomEdge | Boundary::Vertex => match rules.rows {
+            RowRule::HalfOpen => words!("rule-rows-half-open"),
+            RowRule::Closed => words!("rule-rows-closed"),
+            RowRule::TopLeft => words!("rule-rows-top-left"),
+        },
+    }
+}
+
+/// One sentence on a centre exactly on a polygon's boundary and the rule
+/// that decides it, or `None` when pixel (x, y)'s centre is not on it.
+pub fn tie_text(rules: Rules, vertices: &[[Exact; 3]], x: u32, y: u32) -> Option<String> {
+    let (boundary, a, b) = boundary_at(vertices, x, y)?;
+    let point = |[x, y]: [Exact; 2]| format!("({}, {})", crate::numbers::fraction(x), crate::numbers::fraction(y));
+    let place = match boundary {
+        Boundary::TopEdge => words!("boundary-top"),
+        Boundary::BottomEdge => words!("boundary-bottom"),
+        Boundary::LeftEdge => words!("boundary-left"),
+        Boundary::RightEdge => words!("boundary-right"),
+        Boundary::Vertex => words!("boundary-vertex"),
+    };
+    Some(match rule_covers(rules, boundary) {
+        None => words!("tie-vertex", point = point(a), rule = deciding_rule(rules, boundary)),
+        Some(covers) => words!(
+            if covers { "tie-edge-in" } else { "tie-edge-out" },
+            boundary = place,
+            a = point(a),
+            b = point(b),
+            rule = deciding_rule(rules, boundary)
+        ),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rules::Preset;
+
+    fn triangle() -> Vec<[Exact; 3]> {
+        // (1/2, 1/2), (13/2, 1/2), (13/2, 13/2): centres on its right and bottom edges.
+        let q = |n: i128| Exact::Word(Q::new(n, 2));
+        vec![[q(1), q(1), q(10)], [q(13), q(1), q(10)], [q(13), q(13), q(10)]]
+    }
+
+    #[test]
+    fn ties_are_named_with_the_rule_that_decides_them() {
+        let gpu = Rules::preset(Preset::Gpu);
+        assert_eq!(
+            tie_text(gpu, &triangle(), 6, 3).unwrap(),
+            "the centre lies exactly on the right edge from (13/2, 1/2) to (13/2, 13/2), which the top-left rule (centres in [x_l, x_r): left edges in, right edges out) leaves out"
+        );
+        assert_eq!(
+            tie_text(Rules::default(), &triangle(), 3, 0).unwrap(),
+            "the centre lies exactly on the bottom edge from (1/2, 1/2) to (13/2, 1/2), which the book's half-interval rule (an edge counts for min ≤ y < max) includes"
+        );
+        assert!(tie_text(gpu, &triangle(), 4, 2).is_none(), "an inside centre is no tie");
+        assert!(tie_text(gpu, &triangle(), 0, 0).unwrap().starts_with("the centre is exactly the vertex (1/2, 1/2)"));
+    }
+}

@@ -1,0 +1,4 @@
+//! Raster: the one scan converter.
+pub mod big;
+pub mod depth;
+pub mod scan;

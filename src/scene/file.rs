@@ -1,0 +1,636 @@
+//! The scene file's JSON (serde types, exact numbers, unknown keys refused)
+//! and its validation, once, into the domain type [`Scene`].
+
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+use serde::de::Error as _;
+
+use crate::error::{Error, PolygonProblem};
+use crate::geometry::plane::Geometry;
+use crate::numbers::{Exact, Q, fraction, parse_number};
+use crate::raster::depth::{DepthTest, Stored};
+use crate::rules::{DepthStore, Preset, Rules};
+use crate::scene::perspective::{Clip, Perspective};
+use crate::scene::text::printable;
+use crate::scene::{Antialias, Effects, MAX_CELLS, MAX_SIDE, Polygon, Scene, Winding, Window, max_for_bits};
+
+/// Reads and validates scene JSON; `path` is used in error messages only.
+pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
+    if let Some(found) = top_level_kind(text) {
+        return Err(Error::SceneFormat {
+            path: path.to_owned(),
+            location: String::new(),
+            message: words!("scene-not-object", found = words!(found)),
+        });
+    }
+    let mut deserializer = serde_json::Deserializer::from_str(text);
+    let file: SceneFile = serde_path_to_error::deserialize(&mut deserializer).map_err(|error| {
+        // A syntax error has no place in the scene's structure: its line and column say where.
+        let syntax =
+            matches!(error.inner().classify(), serde_json::error::Category::Syntax | serde_json::error::Category::Eof);
+        Error::SceneFormat {
+            path: path.to_owned(),
+            location: if syntax { String::new() } else { describe_location(&error.path().to_string()) },
+            message: format!("{}{}", json_message(error.inner()), missing_comma(text, error.inner())),
+        }
+    })?;
+    deserializer.end().map_err(|error| Error::SceneFormat {
+        path: path.to_owned(),
+        location: String::new(),
+        message: json_message(&error),
+    })?;
+    file.validate(path)
+}
+
+/// What the file's first value is when it is valid-looking JSON but not an
+/// object (`an array`, `a string`, …); `None` for an object or for text that
+/// the JSON reader should report itself.
+fn top_level_kind(text: &str) -> Option<&'static str> {
+    match text.trim_start().bytes().next()? {
+        b'[' => Some("json-array"),
+        b'"' => Some("json-string"),
+        b'-' | b'0'..=b'9' => Some("json-number"),
+        b't' | b'f' if text.trim().parse::<bool>().is_ok() => Some("json-bool"),
+        b'n' if text.trim() == "null" => Some("json-null"),
+        _ => None,
+    }
+}
+
+/// For "expected `,`", where the comma belongs: serde_json reports the
+/// token after the gap, often on the next line; the comma is missing after
+/// the last character before it.
+fn missing_comma(text: &str, error: &serde_json::Error) -> String {
+    if !error.to_string().starts_with("expected `,`") || error.line() == 0 {
+        return String::new();
+    }
+    // The offset of (line, column), both from 1; then back over white space.
+    let line_start: usize = text.split_inclusive('\n').take(error.line() - 1).map(str::len).sum();
+    let at = text[line_start..]
+        .char_indices()
+        .nth(error.column().saturating_sub(1))
+        .map_or(text.len(), |(i, _)| line_start + i);
+    let Some((before, _)) = text[..at].char_indices().rev().find(|(_, c)| !c.is_whitespace()) else {
+        return String::new();
+    };
+    let line = text[..before].matches('\n').count() + 1;
+    if line < error.line() {
+        words!("json-comma-end", line = line.to_string())
+    } else {
+        let column = text[..before].rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        words!("json-comma-after", line = line.to_string(), column = column.to_string())
+    }
+}
+
+/// serde_json's message, saying "not valid JSON" when the syntax is at fault.
+fn json_message(error: &serde_json::Error) -> String {
+    match error.classify() {
+        serde_json::error::Category::Syntax | serde_json::error::Category::Eof => {
+            words!("json-invalid", error = error.to_string())
+        }
+        _ => error.to_string(),
+    }
+}
+
+/// Turns serde's path `polygons[1].vertices[0][2]` into
+/// `polygon 2: vertices[0][2]`, so messages name polygons as the CLI does.
+fn describe_location(path: &str) -> String {
+    if path == "." {
+        return String::new();
+    }
+    if let Some(rest) = path.strip_prefix("polygons[")
+        && let Some((index, tail)) = rest.split_once(']')
+        && let Ok(index) = index.parse::<usize>()
+    {
+        let tail = tail.trim_start_matches('.');
+        return if tail.is_empty() {
+            words!("location-polygon", number = (index + 1).to_string())
+        } else {
+            format!("{}: {tail}", words!("location-polygon", number = (index + 1).to_string()))
+        };
+    }
+    path.to_string()
+}
+
+/// An exact number as written in a scene file (a setting: a 128-bit
+/// fraction, at most 30 significant digits).
+#[derive(Debug, Clone, Copy)]
+struct Number(Q);
+
+/// A vertex coordinate as written: exact, of any size up to
+/// [`crate::numbers::MAX_BIG_DIGITS`] digits.
+#[derive(Debug, Clone)]
+struct Coordinate(Exact);
+
+/// How a number of each kind is read from its text or a JSON integer.
+trait ReadNumber: Sized {
+    fn parse(text: &str) -> Result<Self, crate::numbers::NumberError>;
+    fn integer(value: i128) -> Self;
+}
+
+impl ReadNumber for Number {
+    fn parse(text: &str) -> Result<Number, crate::numbers::NumberError> {
+        parse_number(text).map(Number)
+    }
+
+    fn integer(value: i128) -> Number {
+        Number(Q::from_integer(value))
+    }
+}
+
+impl ReadNumber for Coordinate {
+    fn parse(text: &str) -> Result<Coordinate, crate::numbers::NumberError> {
+        crate::numbers::parse_exact(text).map(Coordinate)
+    }
+
+    fn integer(value: i128) -> Coordinate {
+        Coordinate(Exact::Word(Q::from_integer(value)))
+    }
+}
+
+impl<'de> Deserialize<'de> for Number {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Number, D::Error> {
+        deserializer.deserialize_any(NumberVisitor(std::marker::PhantomData))
+    }
+}
+
+impl<'de> Deserialize<'de> for Coordinate {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Coordinate, D::Error> {
+        deserializer.deserialize_any(NumberVisitor(std::marker::PhantomData))
+    }
+}
+
+/// The key under which serde_json's `arbitrary_precision` hands over a JSON
+/// number's digits (its private number token).
+const NUMBER_TOKEN: &str = "$serde_json::private::Number";
+
+/// Reads a number straight from the parser, without building a JSON value:
+/// a JSON number's digits, or a string holding a fraction or a decimal.
+struct NumberVisitor<T>(std::marker::PhantomData<T>);
+
+impl<'de, T: ReadNumber> serde::de::Visitor<'de> for NumberVisitor<T> {
+    type Value = T;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a number, or a string holding a fraction or a decimal")
+    }
+
+    fn visit_str<E: serde::de::Error>(self, text: &str) -> Result<T, E> {
+        T::parse(text).map_err(E::custom)
+    }
+
+    fn visit_i64<E: serde::de::Error>(self, value: i64) -> Result<T, E> {
+        Ok(T::integer(i128::from(value)))
+    }
+
+    fn visit_u64<E: serde::de::Error>(self, value: u64) -> Result<T, E> {
+        Ok(T::integer(i128::from(value)))
+    }
+
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<T, A::Error> {
+        match map.next_key::<String>()? {
+            Some(key) if key == NUMBER_TOKEN => {
+                let digits: String = map.next_value()?;
+                T::parse(&digits).map_err(A::Error::custom)
+            }
+            _ => Err(A::Error::custom(words!("number-found-object"))),
+        }
+    }
+
+    fn visit_bool<E: serde::de::Error>(self, _: bool) -> Result<T, E> {
+        Err(E::custom(words!("number-found-bool")))
+    }
+
+    fn visit_unit<E: serde::de::Error>(self) -> Result<T, E> {
+        Err(E::custom(words!("number-found-null")))
+    }
+
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, _: A) -> Result<T, A::Error> {
+        Err(A::Error::custom(words!("number-found-list")))
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    width: Option<u64>,
+    height: Option<u64>,
+    frame_bits: Option<u64>,
+    depth_bits: Option<u64>,
+    depth_test: Option<DepthTest>,
+    background: Option<u64>,
+    #[serde(default)]
+    effects: EffectsFile,
+    rules: Option<serde_json::Value>,
+    window: Option<WindowFile>,
+    depth_range: Option<[Number; 2]>,
+    clear_depth: Option<Number>,
+    polygons: Vec<PolygonFile>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct WindowFile {
+    left: Number,
+    right: Number,
+    bottom: Number,
+    top: Number,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RulesFile {
+    preset: Option<Preset>,
+    rows: Option<crate::rules::RowRule>,
+    columns: Option<crate::rules::ColumnRule>,
+    store: Option<DepthStore>,
+}
+
+/// Reads `"rules"`: a preset name, or an object naming a preset and overrides.
+fn rules_from(value: Option<serde_json::Value>) -> Result<Rules, String> {
+    let Some(value) = value else { return Ok(Rules::default()) };
+    if value.is_string() {
+        let preset: Preset = serde_json::from_value(value).map_err(|e| e.to_string())?;
+        return Ok(Rules::preset(preset));
+    }
+    let file: RulesFile = serde_json::from_value(value).map_err(|e| e.to_string())?;
+    let base = Rules::preset(file.preset.unwrap_or(Preset::Rogers));
+    Ok(Rules {
+        preset: base.preset,
+        rows: file.rows.unwrap_or(base.rows),
+        columns: file.columns.unwrap_or(base.columns),
+        store: file.store.unwrap_or(base.store),
+    })
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct EffectsFile {
+    section: Option<Number>,
+    cull: Option<Winding>,
+    perspective: Option<PerspectiveFile>,
+    antialias: Option<AntialiasFile>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PerspectiveFile {
+    distance: Number,
+    near: Number,
+    store: Option<StoreFile>,
+}
+
+#[derive(Deserialize)]
+enum StoreFile {
+    #[serde(rename = "z'", alias = "z")]
+    Projected,
+    #[serde(rename = "w")]
+    W,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AntialiasFile {
+    samples: u32,
+    depth: Option<AntialiasDepth>,
+}
+
+#[derive(Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+enum AntialiasDepth {
+    Pixel,
+    Sample,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PolygonFile {
+    name: Option<String>,
+    value: u64,
+    opacity: Option<Number>,
+    vertices: Vec<VertexFile>,
+}
+
+/// A vertex as written: `[x, y, z]` in pixel units (or the window's), or
+/// `[x, y, z, w]` in clip space ([`crate::scene::clip_space`]).
+#[derive(Debug, Clone)]
+enum VertexFile {
+    Xyz([Exact; 3]),
+    Clip([Exact; 4]),
+}
+
+impl<'de> Deserialize<'de> for VertexFile {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<VertexFile, D::Error> {
+        deserializer.deserialize_seq(VertexVisitor)
+    }
+}
+
+struct VertexVisitor;
+
+impl<'de> serde::de::Visitor<'de> for VertexVisitor {
+    type Value = VertexFile;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a vertex [x, y, z], or [x, y, z, w] in clip space")
+    }
+
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<VertexFile, A::Error> {
+        let mut values = Vec::with_capacity(4);
+        while let Some(Coordinate(value)) = seq.next_element::<Coordinate>()? {
+            if values.len() == 4 {
+                return Err(A::Error::invalid_length(5, &self));
+            }
+            values.push(value);
+        }
+        let count = values.len();
+        let wrong = |_| A::Error::invalid_length(count, &self);
+        match count {
+            3 => <[Exact; 3]>::try_from(values).map(VertexFile::Xyz).map_err(wrong),
+            _ => <[Exact; 4]>::try_from(values).map(VertexFile::Clip).map_err(wrong),
+        }
+    }
+}
+
+impl SceneFile {
+    fn validate(self, path: &Path) -> Result<Scene, Error> {
+        let setting = |key: &'static str, message: String| Error::Setting { path: path.to_owned(), key, message };
+        let bits = |key: &'static str, value: Option<u64>, default: u32| -> Result<u32, Error> {
+            match value.unwrap_or(u64::from(default)) {
+                bits @ 1..=32 => Ok(bits as u32),
+                other => Err(setting(key, words!("setting-bits", value = other.to_string()))),
+            }
+        };
+        let side = |key: &'static str, value: Option<u64>| -> Result<u32, Error> {
+            match value.unwrap_or(32) {
+                0 => Err(setting(key, words!("setting-side-zero"))),
+                side if side > MAX_SIDE => {
+                    Err(setting(key, words!("setting-side-large", side = side.to_string(), max = MAX_SIDE.to_string())))
+                }
+                side => Ok(side as u32),
+            }
+        };
+        let width = side("width", self.width)?;
+        let height = side("height", self.height)?;
+        if u64::from(width) * u64::from(height) > MAX_CELLS {
+            return Err(setting(
+                "width",
+                words!(
+                    "setting-cells",
+                    width = width.to_string(),
+                    height = height.to_string(),
+                    cells = (u64::from(width) * u64::from(height)).to_string(),
+                    max = MAX_CELLS.to_string()
+                ),
+            ));
+        }
+        let frame_bits = bits("frame_bits", self.frame_bits, 2)?;
+        let depth_bits = bits("depth_bits", self.depth_bits, 4)?;
+        let frame_max = u64::from(max_for_bits(frame_bits));
+        let background = self.background.unwrap_or(0);
+        if background > frame_max {
+            return Err(setting(
+                "background",
+                words!(
+                    "setting-background",
+                    value = background.to_string(),
+                    bits = frame_bits.to_string(),
+                    max = frame_max.to_string()
+                ),
+            ));
+        }
+        let rules = rules_from(self.rules).map_err(|message| setting("rules", message))?;
+        let default_test = if rules.preset == Preset::Buet { DepthTest::Less } else { DepthTest::Greater };
+        let depth_test = self.depth_test.unwrap_or(default_test);
+        let window = match self.window {
+            None => None,
+            Some(w) => {
+                let window = Window { left: w.left.0, right: w.right.0, bottom: w.bottom.0, top: w.top.0 };
+                if window.left >= window.right || window.bottom >= window.top {
+                    return Err(setting(
+                        "window",
+                        words!(
+                            "setting-window",
+                            left = fraction(window.left),
+                            right = fraction(window.right),
+                            bottom = fraction(window.bottom),
+                            top = fraction(window.top)
+                        ),
+                    ));
+                }
+                Some(window)
+            }
+        };
+        let depth_range = match self.depth_range {
+            Some([front, rear]) if front.0 > rear.0 => {
+                return Err(setting(
+                    "depth_range",
+                    words!("setting-depth-range", front = fraction(front.0), rear = fraction(rear.0)),
+                ));
+            }
+            Some([front, rear]) => Some((front.0, rear.0)),
+            None => None,
+        };
+        let depth_max = max_for_bits(depth_bits);
+        let clear_depth = match (rules.store, self.clear_depth) {
+            (DepthStore::Quantized, None) => Stored::Level(depth_test.clear_value(depth_max)),
+            (DepthStore::Quantized, Some(_)) => {
+                return Err(setting("clear_depth", words!("setting-clear-depth")));
+            }
+            (DepthStore::Exact, Some(value)) => Stored::Exact(Exact::Word(value.0)),
+            (DepthStore::Exact, None) => {
+                Stored::Exact(Exact::Word(Q::from_integer(i128::from(depth_test.clear_value(depth_max)))))
+            }
+        };
+        let perspective = match self.effects.perspective {
+            None => None,
+            Some(p) => {
+                let perspective = Perspective {
+                    distance: p.distance.0,
+                    near: p.near.0,
+                    store_w: matches!(p.store, Some(StoreFile::W)),
+                };
+                if perspective.distance <= Q::from_integer(0) || perspective.near <= Q::from_integer(0) {
+                    return Err(setting("effects", words!("setting-perspective-positive")));
+                }
+                Some(perspective)
+            }
+        };
+        let antialias = match self.effects.antialias {
+            None => None,
+            Some(a) => {
+                if !(1..=16).contains(&a.samples) {
+                    return Err(setting(
+                        "effects",
+                        words!("setting-antialias-samples", samples = a.samples.to_string()),
+                    ));
+                }
+                if u64::from(width) * u64::from(height) * u64::from(a.samples).pow(2) > MAX_CELLS {
+                    return Err(setting(
+                        "effects",
+                        words!(
+                            "setting-antialias-cells",
+                            width = width.to_string(),
+                            height = height.to_string(),
+                            samples = a.samples.to_string(),
+                            max = MAX_CELLS.to_string()
+                        ),
+                    ));
+                }
+                if rules.store == DepthStore::Exact {
+                    return Err(setting("effects", words!("setting-antialias-exact")));
+                }
+                Some(Antialias { samples: a.samples, depth_at_samples: a.depth != Some(AntialiasDepth::Pixel) })
+            }
+        };
+        let transparency = self.polygons.iter().any(|p| p.opacity.is_some());
+        let mut polygons = Vec::with_capacity(self.polygons.len());
+        for (index, polygon) in self.polygons.into_iter().enumerate() {
+            let frame = Frame {
+                bits: frame_bits,
+                depth_max,
+                window: window.map(|w| (w, width, height)),
+                perspective,
+                size: (width, height),
+            };
+            polygons.push(polygon.validate(index, &frame, path)?);
+        }
+        Ok(Scene {
+            width,
+            height,
+            frame_bits,
+            depth_bits,
+            depth_test,
+            background: background as u32,
+            effects: Effects {
+                section: self.effects.section.map(|n| n.0),
+                cull: self.effects.cull,
+                perspective,
+                antialias,
+                transparency,
+            },
+            rules,
+            window,
+            depth_range,
+            clear_depth,
+            polygons,
+        })
+    }
+}
+
+/// What a polygon's validation needs to know of the scene.
+struct Frame {
+    bits: u32,
+    depth_max: u32,
+    window: Option<(Window, u32, u32)>,
+    perspective: Option<Perspective>,
+    size: (u32, u32),
+}
+
+impl PolygonFile {
+    fn validate(self, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
+        // Names reach terminals in every report: control characters are kept escaped (`\u{1b}`).
+        let name = self.name.map_or_else(|| crate::scene::default_name(index), |name| printable(&name).into_owned());
+        let fail = |name: &str, problem: PolygonProblem| Error::Polygon {
+            path: PathBuf::from(path),
+            index,
+            name: name.to_owned(),
+            problem: Box::new(problem),
+        };
+        let frame_bits = frame.bits;
+        if self.value > u64::from(max_for_bits(frame_bits)) {
+            return Err(fail(&name, PolygonProblem::ValueTooWide { value: self.value, frame_bits }));
+        }
+        let opacity = self.opacity.map(|n| n.0);
+        if let Some(alpha) = opacity
+            && (alpha < Q::from_integer(0) || alpha > Q::from_integer(1))
+        {
+            return Err(fail(&name, PolygonProblem::Other(words!("polygon-opacity", alpha = fraction(alpha)))));
+        }
+        let count = self.vertices.len();
+        let (mut given, mut clip_space) = (Vec::with_capacity(count), Vec::new());
+        for vertex in self.vertices {
+            match vertex {
+                VertexFile::Xyz(p) => given.push(p),
+                VertexFile::Clip(c) => clip_space.push(c),
+            }
+        }
+        let mut vertices: Vec<[Exact; 3]> = if clip_space.is_empty() {
+            given
+        } else if clip_space.len() < count {
+            return Err(fail(&name, PolygonProblem::Other(words!("clip-space-mixed"))));
+        } else if frame.window.is_some() || frame.perspective.is_some() {
+            return Err(fail(&name, PolygonProblem::Other(words!("clip-space-alone"))));
+        } else {
+            return clip_space_polygon(&clip_space, frame)
+                .map(|(vertices, geometry, clip)| Polygon {
+                    name: name.clone(),
+                    value: self.value as u32,
+                    vertices,
+                    geometry,
+                    opacity,
+                    eye_vertices: None,
+                    clip,
+                })
+                .map_err(|problem| fail(&name, problem));
+        };
+        if let Some((window, width, height)) = frame.window {
+            for vertex in &mut vertices {
+                *vertex = window.to_pixels(vertex, width, height);
+            }
+        }
+        if vertices.len() < 3 {
+            let error = crate::geometry::plane::GeometryError::TooFewVertices(vertices.len());
+            return Err(fail(&name, PolygonProblem::Geometry(error)));
+        }
+        let geometry = |vertices: &[[Exact; 3]]| {
+            Geometry::from_exact(vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))
+        };
+        let (eye_vertices, clip) = match frame.perspective {
+            None => (None, Clip::NotClipped),
+            Some(perspective) => {
+                // Check planarity in eye space first, where the user wrote the polygon.
+                let eye_geometry = geometry(&vertices)?;
+                let (kept, clip) = perspective.clip(&vertices);
+                if clip == Clip::Away {
+                    // Nothing is drawn; keep the eye-space geometry for reports.
+                    return Ok(Polygon {
+                        name,
+                        value: self.value as u32,
+                        eye_vertices: Some(vertices.clone()),
+                        vertices,
+                        geometry: eye_geometry,
+                        opacity,
+                        clip,
+                    });
+                }
+                let (width, height) = frame.size;
+                let projected = kept.iter().map(|v| perspective.project(v, width, height)).collect();
+                (Some(std::mem::replace(&mut vertices, projected)), clip)
+            }
+        };
+        let geometry = geometry(&vertices)?;
+        Ok(Polygon { name, value: self.value as u32, vertices, geometry, opacity, eye_vertices, clip })
+    }
+}
+
+/// A polygon given in clip space: clipped, divided and mapped by the viewport
+/// ([`crate::scene::clip_space`]); what is left, its geometry and how it was clipped.
+fn clip_space_polygon(
+    clip_space: &[[Exact; 4]],
+    frame: &Frame,
+) -> Result<(Vec<[Exact; 3]>, Geometry, Clip), PolygonProblem> {
+    let (width, height) = frame.size;
+    match crate::scene::clip_space::to_raster(clip_space, width, height, frame.depth_max) {
+        crate::scene::clip_space::Clipped::Outside => {
+            // Nothing is drawn; a placeholder geometry keeps the polygon in the reports.
+            let (zero, one) = (Q::from_integer(0), Q::from_integer(1));
+            let geometry = Geometry::new(&[[zero, zero, zero], [one, zero, zero], [zero, one, zero]])
+                .expect("a unit triangle is a polygon");
+            Ok((Vec::new(), geometry, Clip::ViewAway))
+        }
+        crate::scene::clip_space::Clipped::Inside { vertices, inside } => {
+            let geometry = Geometry::from_exact(&vertices).map_err(PolygonProblem::Geometry)?;
+            Ok((vertices, geometry, Clip::View { inside, of: clip_space.len() }))
+        }
+    }
+}

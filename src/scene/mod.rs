@@ -1,0 +1,363 @@
+//! Scene files: the JSON format (serde types) and its validation, once, into
+//! the domain type [`Scene`].
+//!
+//! ```json
+//! {
+//!   "width": 32, "height": 32, "frame_bits": 2, "depth_bits": 4,
+//!   "depth_test": "greater", "background": 0,
+//!   "effects": {"section": 12, "cull": "cw"},
+//!   "polygons": [
+//!     {"name": "triangle", "value": 2, "vertices": [[15, 15, 15], [25, 25, 5], [30, 10, 5]]}
+//!   ]
+//! }
+//! ```
+//!
+//! Numbers are JSON integers, JSON decimals read exactly (`2.1` is `21/10`),
+//! or strings holding a fraction (`"5/2"`) or a decimal (`"2.5"`). Unknown
+//! keys anywhere are errors.
+
+pub mod clip_space;
+mod file;
+pub mod perspective;
+pub mod random;
+pub mod text;
+
+use std::fmt;
+use std::path::Path;
+
+use num_bigint::BigInt;
+use num_traits::{CheckedDiv, CheckedMul, CheckedSub};
+use serde::Deserialize;
+
+use crate::error::Error;
+use crate::geometry::plane::Geometry;
+use crate::numbers::{Exact, Q};
+use crate::raster::depth::{DepthTest, Stored};
+use crate::rules::Rules;
+use crate::scene::perspective::{Clip, Perspective};
+
+/// Largest width or height.
+pub const MAX_SIDE: u64 = 16_384;
+/// Largest number of pixels, checked before any buffer is allocated
+/// (2^26 pixels: 512 MiB for both buffers).
+pub const MAX_CELLS: u64 = 1 << 26;
+
+/// Which way a polygon's vertices run, seen from the viewer (x right, y up).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Winding {
+    /// Clockwise: Newell's `c < 0`.
+    Cw,
+    /// Counter-clockwise: Newell's `c > 0`.
+    Ccw,
+}
+
+impl Winding {
+    /// The winding of a polygon with Newell's `c`, or `None` when edge-on.
+    pub fn of(c: i128) -> Option<Winding> {
+        match c.signum() {
+            -1 => Some(Winding::Cw),
+            1 => Some(Winding::Ccw),
+            _ => None,
+        }
+    }
+
+    /// The name used in scene files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Winding::Cw => "cw",
+            Winding::Ccw => "ccw",
+        }
+    }
+}
+
+/// The optional effects a scene asks for; the plain algorithm runs when all
+/// are absent.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Effects {
+    /// Cross-section depth (seed 002): with `greater`, pixels are written only
+    /// where `z ≤ section`; with `less`, only where `z ≥ section`.
+    pub section: Option<Q>,
+    /// Back-face culling: skip polygons whose vertices run this way.
+    pub cull: Option<Winding>,
+    /// Perspective with near-plane clipping (seed 002 §2.2, seed 004).
+    pub perspective: Option<Perspective>,
+    /// Antialiasing by post-filtering (seed 002).
+    pub antialias: Option<Antialias>,
+    /// Whether some polygon has an opacity (transparency, seeds 000 and 002).
+    pub transparency: bool,
+}
+
+/// Antialiasing by post-filtering: k×k sub-pixel samples per pixel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Antialias {
+    /// k: samples per pixel along each axis.
+    pub samples: u32,
+    /// Where depth is kept: at each sample, or once per pixel at its centre.
+    pub depth_at_samples: bool,
+}
+
+impl Effects {
+    /// The names of the effects the scene asks for, in a fixed order.
+    pub fn names(&self) -> Vec<&'static str> {
+        let mut names = Vec::new();
+        if self.section.is_some() {
+            names.push("section");
+        }
+        if self.cull.is_some() {
+            names.push("cull");
+        }
+        if self.perspective.is_some() {
+            names.push("perspective");
+        }
+        if self.antialias.is_some() {
+            names.push("antialias");
+        }
+        if self.transparency {
+            names.push("transparency");
+        }
+        names
+    }
+}
+
+/// The world rectangle mapped onto the raster: `left … right` onto columns
+/// `0 … width`, `bottom … top` onto rows `0 … height`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Window {
+    /// World x of the raster's left edge.
+    pub left: Q,
+    /// World x of the raster's right edge.
+    pub right: Q,
+    /// World y of the raster's bottom edge.
+    pub bottom: Q,
+    /// World y of the raster's top edge.
+    pub top: Q,
+}
+
+impl Window {
+    /// Maps a world point to pixel units: `x_px = (x − left)·width/(right − left)`,
+    /// likewise y; z is unchanged. Exact however large (in big rationals
+    /// where 128 bits overflow).
+    pub fn to_pixels(&self, point: &[Exact; 3], width: u32, height: u32) -> [Exact; 3] {
+        let map = |v: &Exact, low: Q, high: Q, size: u32| -> Exact {
+            let words = |v: Q| {
+                v.checked_sub(&low)?
+                    .checked_mul(&Q::from_integer(i128::from(size)))?
+                    .checked_div(&high.checked_sub(&low)?)
+            };
+            v.word().and_then(words).map_or_else(
+                || {
+                    let (low, high) = (Exact::Word(low).to_big(), Exact::Word(high).to_big());
+                    Exact::from((v.to_big() - &low) * BigInt::from(size) / (high - low))
+                },
+                Exact::Word,
+            )
+        };
+        [map(&point[0], self.left, self.right, width), map(&point[1], self.bottom, self.top, height), point[2].clone()]
+    }
+}
+
+/// One validated polygon.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Polygon {
+    /// Its name (from the file, or [`default_name`]), with control characters
+    /// escaped as `\u{1b}` ([`crate::scene::text::printable`]) so that no report can
+    /// carry them to a terminal.
+    pub name: String,
+    /// The framebuffer value it writes; fits `frame_bits`.
+    pub value: u32,
+    /// Its vertices, exact, in pixel units (mapped through the scene's
+    /// window when it has one); beyond 128-bit fractions only where clip
+    /// space made them so.
+    pub vertices: Vec<[Exact; 3]>,
+    /// Its scaled integer geometry and plane.
+    pub geometry: Geometry,
+    /// Its opacity α (0 … 1) when it is transparent; `None` is opaque.
+    pub opacity: Option<Q>,
+    /// With perspective: the vertices as given (eye space, through the
+    /// window when there is one), before clipping and projection; `vertices`
+    /// then holds the projected ones.
+    pub eye_vertices: Option<Vec<[Exact; 3]>>,
+    /// How the polygon fared against the near plane.
+    pub clip: Clip,
+}
+
+/// A validated scene: every guarantee the rasterizer relies on holds.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Scene {
+    /// Raster width, 1 … [`MAX_SIDE`].
+    pub width: u32,
+    /// Raster height, 1 … [`MAX_SIDE`]; `width·height ≤` [`MAX_CELLS`].
+    pub height: u32,
+    /// Bits per framebuffer cell, 1 … 32.
+    pub frame_bits: u32,
+    /// Bits per z-buffer cell, 1 … 32.
+    pub depth_bits: u32,
+    /// Which depth is nearer.
+    pub depth_test: DepthTest,
+    /// The framebuffer's clear value; fits `frame_bits`.
+    pub background: u32,
+    /// The effects asked for.
+    pub effects: Effects,
+    /// The rasterizer's rule choices.
+    pub rules: Rules,
+    /// The world rectangle mapped onto the raster, when not pixel units.
+    pub window: Option<Window>,
+    /// Fragments with z outside `[front, rear]` are discarded (BUET).
+    pub depth_range: Option<(Q, Q)>,
+    /// What the z-buffer is cleared to: a level, or an exact value with an
+    /// exact store.
+    pub clear_depth: Stored,
+    /// The polygons in drawing order.
+    pub polygons: Vec<Polygon>,
+}
+
+impl Scene {
+    /// Whether the scene asks for a stage between the depth and the store
+    /// (depth range, w-buffer, cross-section, opacity); if not, the plain
+    /// loop runs.
+    pub fn has_pixel_effects(&self) -> bool {
+        self.depth_range.is_some()
+            || self.effects.section.is_some()
+            || self.effects.transparency
+            || self.effects.perspective.is_some_and(|p| p.store_w)
+    }
+
+    /// The bytes this scene holds in memory: its own struct, and for each
+    /// polygon its struct and the heap blocks it owns (name, vertices, scaled
+    /// points, eye-space vertices), counted by their capacities. The
+    /// allocator's bookkeeping per block (a few bytes) is not counted.
+    pub fn memory_bytes(&self) -> u64 {
+        use std::mem::size_of;
+        let polygons: usize = self
+            .polygons
+            .iter()
+            .map(|p| {
+                p.name.capacity()
+                    + p.vertices.capacity() * size_of::<[Exact; 3]>()
+                    + p.geometry.points.capacity() * size_of::<[i128; 3]>()
+                    + p.eye_vertices.as_ref().map_or(0, |v| v.capacity() * size_of::<[Exact; 3]>())
+            })
+            .sum();
+        (size_of::<Scene>() + self.polygons.capacity() * size_of::<Polygon>() + polygons) as u64
+    }
+
+    /// The largest value the z-buffer holds: `2^depth_bits − 1`.
+    pub fn depth_max(&self) -> u32 {
+        max_for_bits(self.depth_bits)
+    }
+
+    /// Reads and validates a scene file.
+    pub fn load(path: &Path) -> Result<Scene, Error> {
+        let text = crate::scene::text::read_text(path)?;
+        Scene::from_json(&text, path)
+    }
+
+    /// Validates scene JSON; `path` is used in error messages only.
+    pub fn from_json(text: &str, path: &Path) -> Result<Scene, Error> {
+        crate::scene::file::read(text, path)
+    }
+
+    /// Finds a polygon by 1-based number or by name.
+    pub fn find_polygon(&self, spec: &str) -> Result<usize, Error> {
+        if let Ok(number) = spec.parse::<usize>() {
+            if (1..=self.polygons.len()).contains(&number) {
+                return Ok(number - 1);
+            }
+            return Err(Error::Usage(format!(
+                "there is no polygon {number}: the scene has {} (number them from 1)",
+                self.polygons.len()
+            )));
+        }
+        self.polygons.iter().position(|p| p.name == spec).ok_or_else(|| {
+            let names: Vec<String> = self.polygons.iter().map(|p| format!("\"{}\"", p.name)).collect();
+            Error::Usage(format!("there is no polygon named \"{spec}\": the scene has {}", names.join(", ")))
+        })
+    }
+}
+
+/// The name of a polygon the file leaves unnamed: `polygon N`, numbered from 1.
+pub fn default_name(index: usize) -> String {
+    format!("polygon {}", index + 1)
+}
+
+/// Whether `name` is the one polygon `index` gets when the file names it
+/// not: reports then call it by its number alone.
+pub fn is_default_name(name: &str, index: usize) -> bool {
+    name == default_name(index)
+}
+
+/// `2^bits − 1` for 1 ≤ bits ≤ 32.
+pub fn max_for_bits(bits: u32) -> u32 {
+    debug_assert!((1..=32).contains(&bits));
+    (u64::MAX >> (64 - bits)) as u32
+}
+
+impl fmt::Display for Winding {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Winding::Cw => "clockwise",
+            Winding::Ccw => "counter-clockwise",
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Scene, String> {
+        Scene::from_json(text, Path::new("s.json")).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn defaults_are_the_books() {
+        let scene = parse(r#"{"polygons": []}"#).unwrap();
+        assert_eq!((scene.width, scene.height, scene.frame_bits, scene.depth_bits), (32, 32, 2, 4));
+        assert_eq!(scene.depth_test, DepthTest::Greater);
+        assert_eq!(scene.depth_max(), 15);
+    }
+
+    #[test]
+    fn json_decimals_keep_their_digits() {
+        let scene =
+            parse(r#"{"polygons": [{"value": 1, "vertices": [[0.1, 0, 2.1], [3, 0, "5/2"], [0, 3, 0]]}]}"#).unwrap();
+        assert_eq!(scene.polygons[0].vertices[0][0], Q::new(1, 10));
+        assert_eq!(scene.polygons[0].vertices[0][2], Q::new(21, 10));
+        assert_eq!(scene.polygons[0].vertices[1][2], Q::new(5, 2));
+    }
+
+    #[test]
+    fn errors_name_the_polygon() {
+        let err = parse(r#"{"polygons": [{"value": 1, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}, {"value": 1, "vertices": [[0, 0, "abc"]]}]}"#)
+            .unwrap_err();
+        assert!(err.starts_with("s.json: polygon 2: vertices[0][2]: \"abc\" is not a number"), "{err}");
+    }
+
+    /// An unnamed polygon is `polygon N` in every report, not `polygon N
+    /// "polygon N"` (nor, in Russian, `многоугольник 1 «polygon 1»`); a named
+    /// one keeps its name, and both can be found by number or name.
+    #[test]
+    fn an_unnamed_polygon_is_reported_by_its_number_alone() {
+        let text = r#"{"polygons": [{"value": 1, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]},
+            {"name": "roof", "value": 2, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]}"#;
+        let scene = parse(text).unwrap();
+        assert_eq!(scene.polygons[0].name, default_name(0));
+        let labels = |lang| {
+            crate::words::with_language(lang, || [0, 1].map(|i| crate::observe::explain::polygon_name(&scene, i)))
+        };
+        assert_eq!(labels(crate::words::Lang::En), ["polygon 1".to_string(), "polygon 2 \"roof\"".to_string()]);
+        assert_eq!(
+            labels(crate::words::Lang::Ru),
+            ["многоугольник 1".to_string(), "многоугольник 2 «roof»".to_string()]
+        );
+        assert_eq!((scene.find_polygon("polygon 1").unwrap(), scene.find_polygon("roof").unwrap()), (0, 1));
+    }
+
+    #[test]
+    fn bits_of_32_are_supported() {
+        let scene = parse(r#"{"frame_bits": 32, "depth_bits": 32, "background": 4294967295, "polygons": []}"#).unwrap();
+        assert_eq!(scene.depth_max(), u32::MAX);
+        assert_eq!(scene.background, u32::MAX);
+    }
+}

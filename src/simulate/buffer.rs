@@ -1,0 +1,299 @@
+//! The framebuffer and the z-buffer.
+//!
+//! Both are stored row by row with pixel (0, 0) at the bottom left, as the
+//! book numbers pixels; [`Buffers::frame_rows`] and [`Buffers::depth_rows`]
+//! give them top row first, as the book prints them.
+
+use crate::numbers::Exact;
+use crate::raster::depth::Stored;
+
+/// A framebuffer and a z-buffer of the same size.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Buffers {
+    width: u32,
+    height: u32,
+    frame: FrameCells,
+    depth: DepthCells,
+}
+
+/// A framebuffer cell: the smallest unsigned integer that holds the scene's
+/// `frame_bits` (1 byte up to 8 bits, 2 up to 16, 4 beyond), so that large
+/// rasters take no more memory than their values need.
+pub trait FrameCell: Copy + Eq + Default + Send + std::fmt::Debug {
+    /// The cell holding `value`, which fits (values are checked against
+    /// `frame_bits` when the scene is read).
+    fn from_value(value: u32) -> Self;
+    /// The value held.
+    fn value(self) -> u32;
+}
+
+macro_rules! frame_cell {
+    ($($cell:ty),*) => {$(
+        impl FrameCell for $cell {
+            #[inline]
+            fn from_value(value: u32) -> $cell {
+                debug_assert!(<$cell>::try_from(value).is_ok(), "value {value} wider than its cell: please report this bug");
+                value as $cell
+            }
+
+            #[inline]
+            fn value(self) -> u32 {
+                u32::from(self)
+            }
+        }
+    )*};
+}
+
+frame_cell!(u8, u16, u32);
+
+/// The framebuffer's cells, in the width its bits need.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum FrameCells {
+    Bytes(Vec<u8>),
+    Halves(Vec<u16>),
+    Words(Vec<u32>),
+}
+
+/// Code that works on the cells of a quantized z-buffer and of the
+/// framebuffer, whatever the framebuffer's cell width: see
+/// [`Buffers::with_level_cells`].
+pub trait LevelCells {
+    /// What it returns.
+    type Output;
+    /// Runs on both buffers' cells, rows bottom first.
+    fn run<F: FrameCell>(self, frame: &mut [F], depth: &mut [u32]) -> Self::Output;
+}
+
+/// The z-buffer's cells: integer levels (4 bytes each) or exact values.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum DepthCells {
+    Levels(Vec<u32>),
+    Exact(Vec<Exact>),
+}
+
+impl Buffers {
+    /// Buffers filled with the background value and the clear depth, whose
+    /// kind (level or exact) fixes the kind of every cell.
+    /// The size must already be validated (see `scene::MAX_CELLS`).
+    /// The framebuffer's cells are as wide as `frame_bits` need (see [`FrameCell`]).
+    pub fn new(width: u32, height: u32, frame_bits: u32, background: u32, clear_depth: Stored) -> Buffers {
+        let cells = width as usize * height as usize;
+        let depth = match clear_depth {
+            Stored::Level(level) => DepthCells::Levels(filled(cells, level)),
+            Stored::Exact(value) => DepthCells::Exact(filled(cells, value)),
+        };
+        let frame = match frame_bits {
+            0..=8 => FrameCells::Bytes(filled(cells, u8::from_value(background))),
+            9..=16 => FrameCells::Halves(filled(cells, u16::from_value(background))),
+            _ => FrameCells::Words(filled(cells, background)),
+        };
+        Buffers { width, height, frame, depth }
+    }
+
+    /// Runs `code` on both buffers' cells when the z-buffer holds levels
+    /// (`None` when it holds exact values): the loops that write many cells.
+    pub fn with_level_cells<C: LevelCells>(&mut self, code: C) -> Option<C::Output> {
+        let DepthCells::Levels(depth) = &mut self.depth else { return None };
+        Some(match &mut self.frame {
+            FrameCells::Bytes(frame) => code.run(frame, depth),
+            FrameCells::Halves(frame) => code.run(frame, depth),
+            FrameCells::Words(frame) => code.run(frame, depth),
+        })
+    }
+
+    /// Whether the z-buffer holds levels, so that [`Buffers::with_level_cells`] runs.
+    pub fn holds_levels(&self) -> bool {
+        matches!(self.depth, DepthCells::Levels(_))
+    }
+
+    /// The bytes both buffers' cells take in memory, as zsim stores them (a
+    /// framebuffer cell of 1, 2 or 4 bytes, 4 bytes a depth level, a whole
+    /// rational an exact depth); `zsim memory` gives the book's packed figures.
+    pub fn memory_bytes(&self) -> u64 {
+        let depth = match &self.depth {
+            DepthCells::Levels(cells) => std::mem::size_of_val(cells.as_slice()),
+            DepthCells::Exact(cells) => std::mem::size_of_val(cells.as_slice()),
+        };
+        let frame = match &self.frame {
+            FrameCells::Bytes(cells) => cells.len(),
+            FrameCells::Halves(cells) => cells.len() * 2,
+            FrameCells::Words(cells) => cells.len() * 4,
+        };
+        (frame + depth) as u64
+    }
+
+    /// Width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    fn index(&self, x: u32, y: u32) -> usize {
+        debug_assert!(x < self.width && y < self.height, "pixel ({x}, {y}) outside the raster: please report this bug");
+        y as usize * self.width as usize + x as usize
+    }
+
+    /// The framebuffer value at pixel (x, y).
+    pub fn frame(&self, x: u32, y: u32) -> u32 {
+        self.frame.get(self.index(x, y))
+    }
+
+    /// The z-buffer value at pixel (x, y).
+    pub fn depth(&self, x: u32, y: u32) -> Stored {
+        let index = self.index(x, y);
+        match &self.depth {
+            DepthCells::Levels(cells) => Stored::Level(cells[index]),
+            DepthCells::Exact(cells) => Stored::Exact(cells[index].clone()),
+        }
+    }
+
+    /// Writes both buffers at pixel (x, y); the depth is of the buffer's kind.
+    pub fn store(&mut self, x: u32, y: u32, frame: u32, depth: Stored) {
+        let index = self.index(x, y);
+        self.frame.set(index, frame);
+        match (&mut self.depth, depth) {
+            (DepthCells::Levels(cells), Stored::Level(level)) => cells[index] = level,
+            (DepthCells::Exact(cells), Stored::Exact(value)) => cells[index] = value,
+            _ => debug_assert!(false, "depth of the wrong kind stored: please report this bug"),
+        }
+    }
+
+    /// How many framebuffer cells and how many z-buffer cells differ from
+    /// `other`'s (buffers of the same size and kind).
+    pub fn differences(&self, other: &Buffers) -> (u64, u64) {
+        let frame = (0..self.frame.len()).filter(|&i| self.frame.get(i) != other.frame.get(i)).count() as u64;
+        let depth = match (&self.depth, &other.depth) {
+            (DepthCells::Levels(a), DepthCells::Levels(b)) => a.iter().zip(b).filter(|(x, y)| x != y).count(),
+            (DepthCells::Exact(a), DepthCells::Exact(b)) => a.iter().zip(b).filter(|(x, y)| x != y).count(),
+            _ => self.depth.len(),
+        } as u64;
+        (frame, depth)
+    }
+
+    /// The framebuffer as rows, top row (y = height − 1) first.
+    pub fn frame_rows(&self) -> Vec<Vec<u32>> {
+        let values: Vec<u32> = (0..self.frame.len()).map(|i| self.frame.get(i)).collect();
+        rows_top_first(&values, self.width)
+    }
+
+    /// The z-buffer as rows, top row (y = height − 1) first.
+    pub fn depth_rows(&self) -> Vec<Vec<Stored>> {
+        match &self.depth {
+            DepthCells::Levels(cells) => rows_top_first(cells, self.width)
+                .into_iter()
+                .map(|r| r.into_iter().map(Stored::Level).collect())
+                .collect(),
+            DepthCells::Exact(cells) => rows_top_first(cells, self.width)
+                .into_iter()
+                .map(|r| r.into_iter().map(Stored::Exact).collect())
+                .collect(),
+        }
+    }
+
+    /// The z-buffer as integer rows, top row first, when it holds levels.
+    pub fn depth_level_rows(&self) -> Option<Vec<Vec<u32>>> {
+        match &self.depth {
+            DepthCells::Levels(cells) => Some(rows_top_first(cells, self.width)),
+            DepthCells::Exact(_) => None,
+        }
+    }
+}
+
+/// `cells` copies of `value`, all written now (the book's first step: clear
+/// both buffers). A large buffer is first offered transparent huge pages, so
+/// that clearing it takes a few dozen page faults instead of tens of
+/// thousands (a 4096×4096 raster: 80 MB, about 40 ms of faults otherwise).
+fn filled<T: Clone>(cells: usize, value: T) -> Vec<T> {
+    let mut out = Vec::with_capacity(cells);
+    advise_huge_pages(out.spare_capacity_mut());
+    out.resize(cells, value);
+    out
+}
+
+/// Asks Linux to back the untouched `memory` with 2 MiB pages where it can.
+#[cfg(target_os = "linux")]
+fn advise_huge_pages<T>(memory: &mut [std::mem::MaybeUninit<T>]) {
+    const PAGE: usize = 4096;
+    const HUGE_PAGE: usize = 2 << 20;
+    let (start, bytes) = (memory.as_mut_ptr() as usize, std::mem::size_of_val(memory));
+    if bytes < 2 * HUGE_PAGE {
+        return;
+    }
+    // madvise wants a page-aligned start: the whole pages inside the block.
+    let aligned = start.next_multiple_of(PAGE);
+    let length = (start + bytes - aligned) / PAGE * PAGE;
+    // SAFETY: the range lies inside an allocation this vector owns and has not
+    // yet written; MADV_HUGEPAGE only advises how to back it and changes no
+    // contents. A refusal (no huge pages on this system) leaves it as it was,
+    // so the result is ignored.
+    unsafe {
+        libc::madvise(aligned as *mut libc::c_void, length, libc::MADV_HUGEPAGE);
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+fn advise_huge_pages<T>(_memory: &mut [std::mem::MaybeUninit<T>]) {}
+
+fn rows_top_first<T: Clone>(cells: &[T], width: u32) -> Vec<Vec<T>> {
+    cells.chunks_exact(width as usize).rev().map(<[T]>::to_vec).collect()
+}
+
+impl FrameCells {
+    fn len(&self) -> usize {
+        match self {
+            FrameCells::Bytes(cells) => cells.len(),
+            FrameCells::Halves(cells) => cells.len(),
+            FrameCells::Words(cells) => cells.len(),
+        }
+    }
+
+    fn get(&self, index: usize) -> u32 {
+        match self {
+            FrameCells::Bytes(cells) => cells[index].value(),
+            FrameCells::Halves(cells) => cells[index].value(),
+            FrameCells::Words(cells) => cells[index],
+        }
+    }
+
+    fn set(&mut self, index: usize, value: u32) {
+        match self {
+            FrameCells::Bytes(cells) => cells[index] = u8::from_value(value),
+            FrameCells::Halves(cells) => cells[index] = u16::from_value(value),
+            FrameCells::Words(cells) => cells[index] = value,
+        }
+    }
+}
+
+impl DepthCells {
+    fn len(&self) -> usize {
+        match self {
+            DepthCells::Levels(cells) => cells.len(),
+            DepthCells::Exact(cells) => cells.len(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pixel_origin_is_bottom_left_and_printed_last() {
+        let mut buffers = Buffers::new(3, 2, 2, 0, Stored::Level(0));
+        buffers.store(0, 0, 7, Stored::Level(9));
+        assert_eq!(buffers.frame_rows(), vec![vec![0, 0, 0], vec![7, 0, 0]]);
+        assert_eq!(buffers.depth_rows()[1][0], Stored::Level(9));
+        assert_eq!(buffers.differences(&Buffers::new(3, 2, 2, 0, Stored::Level(0))), (1, 1));
+        // 2-bit framebuffer values in bytes, depth levels in 4 bytes.
+        assert_eq!(buffers.memory_bytes(), 6 + 6 * 4);
+        assert_eq!(Buffers::new(3, 2, 9, 0, Stored::Level(0)).memory_bytes(), 6 * 2 + 6 * 4);
+        assert_eq!(Buffers::new(3, 2, 17, 0, Stored::Level(0)).memory_bytes(), 6 * 4 + 6 * 4);
+        let mut wide = Buffers::new(3, 2, 32, 0, Stored::Level(0));
+        wide.store(2, 1, u32::MAX, Stored::Level(1));
+        assert_eq!(wide.frame(2, 1), u32::MAX);
+    }
+}

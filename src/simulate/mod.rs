@@ -1,0 +1,4 @@
+//! Simulate: the driver.
+pub mod buffer;
+pub mod pipeline;
+pub mod stages;

@@ -1,0 +1,178 @@
+//! The per-pixel stages between the exact depth and the buffers: the plain
+//! depth test and store, or every effect a scene can ask for (depth range,
+//! w-buffer, cross-section, opacity), chosen once per run; and the stages in
+//! words, for reports.
+
+use crate::numbers::{Q, fraction};
+use crate::observe::trace::Outcome;
+use crate::raster::depth::{Depth, DepthTest, Stored};
+use crate::rules::{DepthStore, RowRule};
+use crate::scene::{Polygon, Scene};
+
+/// What the per-pixel stages make of one covered centre.
+#[derive(Debug, Clone)]
+pub struct Decision {
+    /// What happened.
+    pub outcome: Outcome,
+    /// The depth that was compared (and stored when written).
+    pub compared: Depth,
+    /// The z-buffer after.
+    pub stored: Stored,
+    /// The framebuffer after.
+    pub frame: u32,
+}
+
+/// The per-pixel stages between the exact depth and the buffers, chosen once
+/// per run from the scene, so a scene without effects runs a loop with no
+/// effect code in it.
+pub trait PixelStages {
+    /// Decides one covered centre of `polygon` with exact depth `depth`.
+    fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision;
+
+    /// For the plain stages on a quantized z-buffer: the test and the largest
+    /// level, so the loop can work on the buffers' cells directly.
+    fn plain_levels(&self) -> Option<(DepthTest, u32)> {
+        None
+    }
+}
+
+/// The plain algorithm: the depth test and the store, nothing else.
+#[derive(Debug, Clone, Copy)]
+pub struct Plain {
+    test: DepthTest,
+    store: DepthStore,
+    depth_max: u32,
+}
+
+impl Plain {
+    /// The plain stages of a scene.
+    pub fn new(scene: &Scene) -> Plain {
+        Plain { test: scene.depth_test, store: scene.rules.store, depth_max: scene.depth_max() }
+    }
+}
+
+impl PixelStages for Plain {
+    fn plain_levels(&self) -> Option<(DepthTest, u32)> {
+        (self.store == DepthStore::Quantized).then_some((self.test, self.depth_max))
+    }
+
+    #[inline]
+    fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision {
+        if self.test.passes(&depth, &stored) {
+            let stored = depth.stored(self.store, self.depth_max);
+            Decision { outcome: Outcome::Written, compared: depth, stored, frame: polygon.value }
+        } else {
+            Decision { outcome: Outcome::Hidden, compared: depth, stored, frame }
+        }
+    }
+}
+
+/// Every per-pixel stage: the depth range, the w-buffer's depth, the depth
+/// test, the cross-section, blending by opacity, and the store.
+#[derive(Debug, Clone, Copy)]
+pub struct WithEffects<'s> {
+    scene: &'s Scene,
+}
+
+impl<'s> WithEffects<'s> {
+    /// Every stage, as the scene sets them.
+    pub fn new(scene: &'s Scene) -> WithEffects<'s> {
+        WithEffects { scene }
+    }
+}
+
+impl PixelStages for WithEffects<'_> {
+    fn decide(&self, polygon: &Polygon, depth: Depth, stored: Stored, frame: u32) -> Decision {
+        let scene = self.scene;
+        let compared = match scene.effects.perspective {
+            Some(perspective) if perspective.store_w => perspective.eye_depth(&depth),
+            _ => depth,
+        };
+        if scene.depth_range.is_some_and(|range| !compared.within(range)) {
+            return Decision { outcome: Outcome::OutsideDepthRange, compared, stored, frame };
+        }
+        if !scene.depth_test.passes(&compared, &stored) {
+            return Decision { outcome: Outcome::Hidden, compared, stored, frame };
+        }
+        if scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(&compared, z)) {
+            return Decision { outcome: Outcome::BeyondSection, compared, stored, frame };
+        }
+        let frame = match polygon.opacity {
+            Some(alpha) => blend(polygon.value, frame, alpha),
+            None => polygon.value,
+        };
+        let stored = compared.stored(scene.rules.store, scene.depth_max());
+        Decision { outcome: Outcome::Written, compared, stored, frame }
+    }
+}
+
+/// `α·value + (1 − α)·under`, rounded half up to an integer (the framebuffer
+/// holds integers).
+pub fn blend(value: u32, under: u32, alpha: Q) -> u32 {
+    let mixed =
+        alpha * Q::from_integer(i128::from(value)) + (Q::from_integer(1) - alpha) * Q::from_integer(i128::from(under));
+    (mixed + Q::new(1, 2)).floor().to_integer() as u32
+}
+
+/// Which per-pixel stages a simulation runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum StageSet {
+    /// Only those the scene asks for (the default): a scene without
+    /// per-pixel effects runs [`Plain`].
+    #[default]
+    AsAsked,
+    /// [`WithEffects`] even when the scene asks for none (for benchmarks and
+    /// for the test that both paths agree).
+    AllCompiledIn,
+}
+
+/// The stages that run for this scene, in order, in words.
+pub fn describe(scene: &Scene) -> Vec<String> {
+    let mut stages = Vec::new();
+    if let Some(winding) = scene.effects.cull {
+        stages.push(words!("stage-cull", winding = winding.name()));
+    }
+    if let Some(perspective) = scene.effects.perspective {
+        stages.push(words!(
+            "stage-near-plane",
+            near = fraction(perspective.near_plane()),
+            eye = fraction(perspective.distance)
+        ));
+    }
+    if let Some(antialias) = scene.effects.antialias {
+        let key = if antialias.depth_at_samples { "stage-supersampling-sample" } else { "stage-supersampling-pixel" };
+        stages.push(words!(key, k = antialias.samples.to_string()));
+    }
+    if let Some(window) = scene.window {
+        stages.push(words!(
+            "stage-window",
+            left = fraction(window.left),
+            right = fraction(window.right),
+            bottom = fraction(window.bottom),
+            top = fraction(window.top)
+        ));
+    }
+    stages.push(match scene.rules.rows {
+        RowRule::HalfOpen => words!("stage-scan"),
+        RowRule::Closed => words!("stage-scan-closed"),
+        RowRule::TopLeft => words!("stage-scan-top-left"),
+    });
+    if let Some((front, rear)) = scene.depth_range {
+        stages.push(words!("stage-depth-range", front = fraction(front), rear = fraction(rear)));
+    }
+    if scene.effects.perspective.is_some_and(|p| p.store_w) {
+        stages.push(words!("stage-w-buffer"));
+    }
+    stages.push(words!("stage-depth-test", rule = scene.depth_test.rule_text()));
+    if let Some(section) = scene.effects.section {
+        stages.push(words!("stage-section", op = scene.depth_test.section_symbol(), section = fraction(section)));
+    }
+    if scene.effects.transparency {
+        stages.push(words!("stage-blend"));
+    }
+    stages.push(match scene.rules.store {
+        DepthStore::Quantized => words!("stage-store-quantized", max = scene.depth_max().to_string()),
+        DepthStore::Exact => words!("stage-store-exact"),
+    });
+    stages
+}

@@ -1,0 +1,394 @@
+//! New exercises in the book's style: a small scene of planar polygons with
+//! vertices on half pixels, repeatable from a seed, that contains the hard
+//! cases a teacher asks for. Which cases a scene contains is found from the
+//! trace of its run ([`find_cases`]), never assumed from how it was made:
+//! the generator keeps drawing candidates until the trace shows every case
+//! asked for.
+
+use std::collections::BTreeSet;
+use std::fmt;
+
+use crate::numbers::{Q, fraction, short_in_files};
+use crate::observe::trace::{Observer, Outcome, PixelEvent, ScanlineEvent};
+use crate::scene::random::SplitMix64;
+use crate::scene::{Scene, max_for_bits};
+use crate::simulate::pipeline::Simulation;
+
+/// A case that students get wrong, which an exercise can be asked to contain.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum HardCase {
+    /// A vertex lies on a scanline (y = row + 1/2) that its polygon is scanned on.
+    VertexOnScanline,
+    /// A pixel centre lies exactly on an edge (a crossing at x = column + 1/2).
+    CentreOnEdge,
+    /// A covered centre's depth is exactly k + 1/2, where rounding decides.
+    HalfDepth,
+    /// A written depth lies outside 0 … 2^depth_bits − 1 and is saturated.
+    Saturation,
+    /// A covered centre fails the depth test: hidden behind an earlier polygon.
+    Hidden,
+    /// Two polygons intersect: each is in front of the other somewhere.
+    Intersecting,
+    /// A scanline of a polygon has two spans or more (a concave polygon).
+    Concave,
+}
+
+impl HardCase {
+    /// Every case, in the order they are reported.
+    pub const ALL: [HardCase; 7] = [
+        HardCase::VertexOnScanline,
+        HardCase::CentreOnEdge,
+        HardCase::HalfDepth,
+        HardCase::Saturation,
+        HardCase::Hidden,
+        HardCase::Intersecting,
+        HardCase::Concave,
+    ];
+
+    /// The name used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            HardCase::VertexOnScanline => "vertex-on-scanline",
+            HardCase::CentreOnEdge => "centre-on-edge",
+            HardCase::HalfDepth => "half-depth",
+            HardCase::Saturation => "saturation",
+            HardCase::Hidden => "hidden",
+            HardCase::Intersecting => "intersecting",
+            HardCase::Concave => "concave",
+        }
+    }
+
+    /// Reads a comma-separated list of case names.
+    pub fn parse_list(text: &str) -> Result<Vec<HardCase>, String> {
+        let mut cases = Vec::new();
+        for name in text.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+            let case = HardCase::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| {
+                let names: Vec<&str> = HardCase::ALL.iter().map(|c| c.name()).collect();
+                format!("\"{name}\" is not a hard case: {}", names.join(", "))
+            })?;
+            if !cases.contains(&case) {
+                cases.push(case);
+            }
+        }
+        cases.sort();
+        Ok(cases)
+    }
+}
+
+impl fmt::Display for HardCase {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Where a scene contains a case: the first place its run meets it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Found {
+    /// The case.
+    pub case: HardCase,
+    /// Where, in words: `pixel (20, 15), polygon 2: z = 21/2 rounds up to 11`.
+    pub place: String,
+}
+
+/// The cases the run of `scene` meets, each at the first place it meets it,
+/// in [`HardCase::ALL`] order.
+pub fn find_cases(scene: &Scene) -> Vec<Found> {
+    let mut finder = CaseFinder::new(scene);
+    Simulation::new(scene).finish(&mut finder);
+    let mut found = finder.found;
+    found.sort_by_key(|f| f.case);
+    found
+}
+
+/// Watches a run for the hard cases.
+struct CaseFinder {
+    width: u32,
+    depth_max: u32,
+    quantized: bool,
+    /// Which polygon wrote each cell last, row-major from the bottom.
+    owner: Vec<Option<usize>>,
+    /// Pairs `(earlier, later)` where the later polygon won a cell from the earlier, and where it lost one.
+    won: BTreeSet<(usize, usize)>,
+    lost: BTreeSet<(usize, usize)>,
+    found: Vec<Found>,
+}
+
+impl CaseFinder {
+    fn new(scene: &Scene) -> CaseFinder {
+        CaseFinder {
+            width: scene.width,
+            depth_max: scene.depth_max(),
+            quantized: scene.clear_depth.level().is_some(),
+            owner: vec![None; scene.width as usize * scene.height as usize],
+            won: BTreeSet::new(),
+            lost: BTreeSet::new(),
+            found: Vec::new(),
+        }
+    }
+
+    fn note(&mut self, case: HardCase, place: impl FnOnce() -> String) {
+        if !self.found.iter().any(|f| f.case == case) {
+            self.found.push(Found { case, place: place() });
+        }
+    }
+}
+
+impl Observer for CaseFinder {
+    fn scanline(&mut self, event: &ScanlineEvent<'_>) {
+        let (index, row) = (event.index, event.row);
+        let scan_y = Q::new(2 * i128::from(row) + 1, 2);
+        if let Some((k, v)) = event.polygon.vertices.iter().enumerate().find(|(_, v)| v[1] == scan_y) {
+            self.note(HardCase::VertexOnScanline, || {
+                format!(
+                    "polygon {}: vertex {} ({}, {}) lies on the scanline of row {row}",
+                    index + 1,
+                    k + 1,
+                    short_in_files(&v[0]),
+                    short_in_files(&v[1])
+                )
+            });
+        }
+        for crossing in event.crossings {
+            // A centre x + 1/2 on the crossing: 2x an odd integer (x·2 fits: exercises are small).
+            let doubled = crossing.x().to_big() * num_bigint::BigInt::from(2);
+            let odd = doubled.is_integer() && doubled.to_integer().bit(0);
+            if let (true, Some(doubled)) = (odd, num_traits::ToPrimitive::to_i128(&doubled.to_integer())) {
+                let column = (doubled - 1) / 2;
+                if (0..i128::from(self.width)).contains(&column) {
+                    self.note(HardCase::CentreOnEdge, || {
+                        format!("pixel ({column}, {row}): its centre lies on an edge of polygon {}", index + 1)
+                    });
+                }
+            }
+        }
+        if event.spans.len() >= 2 {
+            self.note(HardCase::Concave, || {
+                format!("polygon {}: row {row} has {} spans", index + 1, event.spans.len())
+            });
+        }
+    }
+
+    fn pixel(&mut self, event: &PixelEvent) {
+        let (index, x, y) = (event.index, event.x, event.y);
+        let z = event.compared.value();
+        let half = z.to_big() * num_bigint::BigInt::from(2);
+        if self.quantized && half.is_integer() && half.to_integer().bit(0) {
+            self.note(HardCase::HalfDepth, || {
+                format!(
+                    "pixel ({x}, {y}), polygon {}: z = {} rounds up to {}",
+                    index + 1,
+                    fraction(&z),
+                    event.compared.rounded()
+                )
+            });
+        }
+        let rounded = event.compared.rounded();
+        let range = num_bigint::BigInt::from(0)..=num_bigint::BigInt::from(self.depth_max);
+        if self.quantized && event.outcome == Outcome::Written && !range.contains(&rounded) {
+            self.note(HardCase::Saturation, || {
+                format!(
+                    "pixel ({x}, {y}), polygon {}: z = {} rounds to {rounded}, stored as {}",
+                    index + 1,
+                    fraction(&z),
+                    event.stored_after
+                )
+            });
+        }
+        let cell = y as usize * self.width as usize + x as usize;
+        let owner = self.owner[cell];
+        // The pair (earlier, this) that this cell was won or lost against.
+        let mut pair = None;
+        match event.outcome {
+            Outcome::Written => {
+                if let Some(earlier) = owner.filter(|o| *o != index) {
+                    self.won.insert((earlier, index));
+                    pair = Some((earlier, index));
+                }
+                self.owner[cell] = Some(index);
+            }
+            Outcome::Hidden => {
+                self.note(HardCase::Hidden, || {
+                    format!(
+                        "pixel ({x}, {y}), polygon {}: z = {} does not pass the test against {} stored",
+                        index + 1,
+                        fraction(&z),
+                        event.stored_before
+                    )
+                });
+                if let Some(earlier) = owner.filter(|o| *o != index) {
+                    self.lost.insert((earlier, index));
+                    pair = Some((earlier, index));
+                }
+            }
+            Outcome::BeyondSection | Outcome::OutsideDepthRange => {}
+        }
+        // Only the pair this event touched can have become both won and lost.
+        if let Some((a, b)) = pair.filter(|p| self.won.contains(p) && self.lost.contains(p)) {
+            self.note(HardCase::Intersecting, || {
+                format!("polygons {} and {}: each is in front of the other somewhere", a + 1, b + 1)
+            });
+        }
+    }
+}
+
+/// What `zsim exercise` is asked for.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Spec {
+    /// Seed of the generator: the same seed gives the same exercise.
+    pub seed: u64,
+    /// Raster width.
+    pub width: u32,
+    /// Raster height.
+    pub height: u32,
+    /// How many polygons.
+    pub polygons: usize,
+    /// Framebuffer bits.
+    pub frame_bits: u32,
+    /// z-buffer bits.
+    pub depth_bits: u32,
+    /// The cases the exercise must contain.
+    pub hard: Vec<HardCase>,
+}
+
+/// How many candidates are drawn before giving up.
+pub const TRIES: usize = 20_000;
+
+/// A made exercise: its scene file, the scene, and the cases found in its trace.
+#[derive(Debug, Clone)]
+pub struct Exercise {
+    /// The scene as zsim scene JSON (pretty, one vertex a line).
+    pub json: String,
+    /// The scene read back from that JSON.
+    pub scene: Scene,
+    /// Every case its run meets (at least those asked for).
+    pub found: Vec<Found>,
+    /// Which candidate (from 1) was kept.
+    pub tries: usize,
+}
+
+/// Makes an exercise: candidates drawn from the seed's sequence, the first
+/// whose trace shows every asked case kept.
+pub fn make(spec: &Spec) -> Result<Exercise, String> {
+    if spec.width < 4 || spec.height < 4 || spec.width > 64 || spec.height > 64 {
+        return Err(format!("--size {}x{}: an exercise is 4 … 64 pixels on a side", spec.width, spec.height));
+    }
+    if !(1..=8).contains(&spec.polygons) {
+        return Err(format!("--polygons {}: an exercise has 1 … 8 polygons", spec.polygons));
+    }
+    if !(1..=8).contains(&spec.frame_bits) || !(1..=16).contains(&spec.depth_bits) {
+        return Err("--frame-bits takes 1 … 8 and --depth-bits 1 … 16 for an exercise done by hand".to_string());
+    }
+    let two = spec.hard.iter().any(|c| matches!(c, HardCase::Hidden | HardCase::Intersecting));
+    if two && spec.polygons < 2 {
+        return Err("hidden and intersecting need two polygons or more (--polygons 2)".to_string());
+    }
+    let mut rng = SplitMix64::new(spec.seed);
+    for tries in 1..=TRIES {
+        let json = candidate(spec, &mut rng);
+        let Ok(scene) = Scene::from_json(&json, std::path::Path::new("exercise.json")) else { continue };
+        let found = find_cases(&scene);
+        if spec.hard.iter().all(|case| found.iter().any(|f| f.case == *case)) {
+            return Ok(Exercise { json, scene, found, tries });
+        }
+    }
+    let names: Vec<&str> = spec.hard.iter().map(|c| c.name()).collect();
+    Err(format!(
+        "no scene of {} polygons on {}×{} with all of {} came up in {TRIES} tries; ask for fewer cases, more polygons or a larger raster",
+        spec.polygons,
+        spec.width,
+        spec.height,
+        names.join(", ")
+    ))
+}
+
+/// One candidate scene: polygons with vertices on half pixels over the
+/// middle of the raster (so that they overlap), each on a plane with
+/// quarter-level slopes (so that depths of k + 1/2 occur), some reaching
+/// past the z-buffer's range, a concave one when asked for.
+fn candidate(spec: &Spec, rng: &mut SplitMix64) -> String {
+    let (w, h) = (i64::from(spec.width), i64::from(spec.height));
+    let depth_max = i64::from(max_for_bits(spec.depth_bits));
+    let value_max = i64::from(max_for_bits(spec.frame_bits));
+    let concave_at = if spec.hard.contains(&HardCase::Concave) { rng.range(0, spec.polygons as i64 - 1) } else { -1 };
+    // Slopes in quarter levels per pixel, scaled so a polygon spans a good part of the range.
+    let unit = (depth_max / i64::from(spec.width.max(spec.height))).max(1);
+    let mut polygons = Vec::new();
+    for index in 0..spec.polygons {
+        // Half-pixel vertices in the raster's middle, with a margin of a pixel.
+        let half = |rng: &mut SplitMix64, size: i64| Q::new(i128::from(rng.range(2, 2 * size - 2)), 2);
+        let points: Vec<(Q, Q)> = if index as i64 == concave_at {
+            // An arrowhead pointing down: top left, the tip, top right, and the notch
+            // between the two top corners, so the rows above the notch have two spans.
+            let third = |rng: &mut SplitMix64, size: i64, k: i64| {
+                Q::new(i128::from(rng.range(2 * size * k / 3 + 1, 2 * size * (k + 1) / 3 - 1)), 2)
+            };
+            let (x0, x1, y0, y1) = (third(rng, w, 0), third(rng, w, 2), third(rng, h, 0), third(rng, h, 2));
+            let middle = |a: Q, b: Q| (a + b).round() / Q::from_integer(2);
+            let (xm, yn) = (middle(x0, x1), middle(y0, y1));
+            vec![(x0, y1), (xm, y0), (x1, y1), (xm, yn)]
+        } else {
+            (0..3).map(|_| (half(rng, w), half(rng, h))).collect()
+        };
+        let slope = |rng: &mut SplitMix64| Q::new(i128::from(rng.range(-4, 4) * unit), 4);
+        let (p, q) = (slope(rng), slope(rng));
+        // Through the first vertex at a level that may sit at either end of the range.
+        let z0 = Q::new(i128::from(rng.range(-unit, 2 * (depth_max + unit))), 2);
+        let vertices: Vec<String> = points
+            .iter()
+            .map(|&(x, y)| {
+                let z = z0 + p * (x - points[0].0) + q * (y - points[0].1);
+                format!("[{}, {}, {}]", number(x), number(y), number(z))
+            })
+            .collect();
+        let value = 1 + (index as i64 % value_max);
+        let name = (b'A' + index as u8) as char;
+        polygons.push(format!(
+            "    {{\"name\": \"{name}\", \"value\": {value}, \"vertices\": [\n      {}\n    ]}}",
+            vertices.join(",\n      ")
+        ));
+    }
+    format!(
+        "{{\n  \"width\": {}, \"height\": {},\n  \"frame_bits\": {}, \"depth_bits\": {},\n  \"polygons\": [\n{}\n  ]\n}}\n",
+        spec.width,
+        spec.height,
+        spec.frame_bits,
+        spec.depth_bits,
+        polygons.join(",\n")
+    )
+}
+
+/// A number for the scene file: an integer or a decimal when exact, else a fraction in a string.
+fn number(value: Q) -> String {
+    let text = short_in_files(value);
+    if text.contains('/') { format!("\"{text}\"") } else { text }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn case_lists_parse_and_refuse_unknown_names() {
+        assert_eq!(
+            HardCase::parse_list("hidden, half-depth,hidden").unwrap(),
+            vec![HardCase::HalfDepth, HardCase::Hidden]
+        );
+        assert!(
+            HardCase::parse_list("tricky")
+                .unwrap_err()
+                .starts_with("\"tricky\" is not a hard case: vertex-on-scanline")
+        );
+    }
+
+    #[test]
+    fn the_books_example_has_its_known_cases() {
+        let scene =
+            Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap();
+        let cases: Vec<HardCase> = find_cases(&scene).into_iter().map(|f| f.case).collect();
+        // The triangle pierces the rectangle: hidden and intersecting; its depths step by
+        // 3/4 and reach k + 1/2 (pixel (22, 14): z = 19/2).
+        assert!(cases.contains(&HardCase::Hidden) && cases.contains(&HardCase::Intersecting), "{cases:?}");
+        assert!(cases.contains(&HardCase::HalfDepth), "{cases:?}");
+        assert!(!cases.contains(&HardCase::Concave), "{cases:?}");
+    }
+}

@@ -1,0 +1,3 @@
+//! Teach.
+pub mod exercise;
+pub mod grade;
