@@ -10,14 +10,14 @@
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use zsim::depth::{Depth, Stored};
-use zsim::generate::RandomScene;
-use zsim::pipeline::Simulation;
-use zsim::pipeline::{PixelRect, RasterSink, Scratch, rasterize};
-use zsim::scan::{Crossing, Span};
-use zsim::scene::Scene;
-use zsim::stages::StageSet;
-use zsim::trace::Unobserved;
+use zsim::RandomScene;
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::StageSet;
+use zsim::Unobserved;
+use zsim::{Crossing, Span};
+use zsim::{Depth, Stored};
+use zsim::{PixelRect, RasterSink, Scratch, rasterize};
 
 fn plain_scene() -> Scene {
     let spec =
@@ -41,7 +41,7 @@ impl RasterSink for CoreOnly<'_> {
 
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
         let cell = y as usize * self.width + x as usize;
-        if zsim::depth::DepthTest::Greater.passes(&depth, &Stored::Level(self.depth[cell])) {
+        if zsim::DepthTest::Greater.passes(&depth, &Stored::Level(self.depth[cell])) {
             self.depth[cell] = depth.quantized(self.depth_max);
             self.frame[cell] = self.value;
         }
@@ -58,7 +58,7 @@ fn stages(c: &mut Criterion) {
             let mut scratch = Scratch::default();
             let rect = PixelRect::raster(scene.width, scene.height);
             for (index, polygon) in scene.polygons.iter().enumerate() {
-                if zsim::pipeline::fate(&scene, index) != zsim::trace::Fate::Drawn {
+                if zsim::fate(&scene, index) != zsim::Fate::Drawn {
                     continue;
                 }
                 let mut sink = CoreOnly {

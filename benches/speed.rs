@@ -16,12 +16,12 @@
 use std::path::Path;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use zsim::RandomScene;
+use zsim::Scene;
+use zsim::Simulation;
 use zsim::accuracy::{self, Settings};
 use zsim::arith::{Arith, Prepared};
-use zsim::generate::RandomScene;
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::trace::{Observer, PixelEvent, Recorder, Unobserved};
+use zsim::{Observer, PixelEvent, Recorder, Unobserved};
 
 fn random(count: usize, side: u32, max_size: u32, seed: u64) -> Scene {
     let spec = RandomScene { count, seed, width: side, height: side, max_size, frame_bits: 8, depth_bits: 24 };
@@ -160,7 +160,7 @@ fn euc_vertices(scene: &Scene) -> Vec<([f32; 4], u8)> {
         .iter()
         .flat_map(|p| {
             p.vertices.iter().map(move |v| {
-                let [x, y, z] = v.each_ref().map(zsim::exact::to_f64);
+                let [x, y, z] = v.each_ref().map(zsim::to_f64);
                 ([(2.0 * x / w - 1.0) as f32, (2.0 * y / h - 1.0) as f32, z as f32, 1.0], p.value as u8)
             })
         })

@@ -116,7 +116,7 @@ impl fmt::Display for Error {
             Error::Polygon { path, index, name, problem } => f.write_str(&words!(
                 "error-polygon",
                 path = path.display().to_string(),
-                polygon = crate::observe::explain::polygon_label("polygon-name", *index, name),
+                polygon = crate::words::polygon_label("polygon-name", *index, name),
                 problem = problem.to_string()
             )),
             Error::Usage(message) => f.write_str(message),

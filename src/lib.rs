@@ -76,26 +76,36 @@
 #![warn(missing_docs)]
 
 #[macro_use]
-pub mod words;
-pub mod courses;
-pub mod effects;
-pub mod error;
-pub mod geometry;
-pub mod numbers;
-pub mod observe;
-pub mod raster;
-pub mod rules;
-pub mod scene;
-pub mod simulate;
-pub mod teach;
+mod words;
+mod courses;
+mod effects;
+mod error;
+mod geometry;
+mod numbers;
+mod observe;
+mod raster;
+mod rules;
+mod scene;
+mod simulate;
+mod teach;
 
 pub use courses::{buet, cs418};
 pub use effects::{accuracy, antialias, arith, variants};
-pub use geometry::plane;
-pub use numbers as exact;
-pub use observe::{check, explain, figure, report, tie, trace};
-pub use raster::big;
-pub use raster::{depth, scan};
-pub use scene::{random as generate, text};
-pub use simulate::{buffer, pipeline, stages};
+pub use error::{Error, PolygonProblem};
+pub use numbers::{Exact, NumberError, Q, decimal, exact_and_decimal, fraction, parse_number, to_f64};
+pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
+pub use observe::{check, explain, figure, report, tie};
+pub use raster::convert::{Scratch, rasterize};
+pub use raster::depth::{Depth, DepthTest, Stored};
+pub use raster::scan::{Crossing, Span};
+pub use raster::sink::{PixelRect, RasterSink};
+pub use rules::{ColumnRule, DepthStore, Preset, RowRule, Rules};
+pub use scene::random::{RandomScene, memory};
+pub use scene::text::{printable, read_text};
+pub use scene::{Antialias, MAX_SIDE, Polygon, Scene, max_for_bits};
+pub use simulate::buffer::Buffers;
+pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};
+pub use simulate::pipeline::{Simulation, Stats, fate};
+pub use simulate::stages::{StageSet, describe};
 pub use teach::{exercise, grade};
+pub use words::{Arg, Lang, language, localize_decimal, polygon_label, set_language, text as message, with_language};

@@ -8,10 +8,10 @@
 
 use std::path::Path;
 
-use zsim::pipeline::Simulation;
-use zsim::stages::StageSet;
-use zsim::scene::Scene;
-use zsim::trace::{PixelWatcher, Recorder, Unobserved};
+use zsim::Simulation;
+use zsim::StageSet;
+use zsim::Scene;
+use zsim::{PixelWatcher, Recorder, Unobserved};
 
 /// Builds an extreme but well-formed scene from bytes: every polygon's
 /// coordinates come from 8-byte chunks, scaled near the limit 2^33 or made

@@ -4,8 +4,8 @@ use std::io::Write;
 
 use clap::{Args, ValueEnum};
 use comfy_table::{Table, presets};
+use zsim::Error;
 use zsim::accuracy::{self, Settings};
-use zsim::error::Error;
 
 use super::{Failure, Finish, emit};
 

@@ -5,11 +5,11 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, Subcommand, ValueEnum};
 use comfy_table::{Table, presets};
+use zsim::Error;
+use zsim::Simulation;
 use zsim::buet::{self, Case, Source};
-use zsim::error::Error;
 use zsim::explain::{Buffer, why};
-use zsim::pipeline::Simulation;
-use zsim::trace::{PixelWatcher, Unobserved};
+use zsim::{PixelWatcher, Unobserved};
 
 use super::{Failure, Finish, emit};
 
@@ -123,7 +123,7 @@ fn run_case(dir: &Path, from: Option<Source>, output: &Path, out: &mut dyn Write
 
 /// A student's z_buffer.txt: per row, the values written.
 fn parse_answer(path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
-    let text = zsim::text::read_text(path)?;
+    let text = zsim::read_text(path)?;
     let rows: Vec<Vec<String>> =
         text.lines().map(|line| line.split_whitespace().map(str::to_string).collect()).collect();
     for (i, row) in rows.iter().enumerate() {

@@ -6,12 +6,12 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use comfy_table::{Table, presets};
+use zsim::Error;
+use zsim::Scene;
+use zsim::Simulation;
 use zsim::check::{CellRange, Matrix, Mismatch, compare, misreading, parse_answer};
-use zsim::error::Error;
 use zsim::explain::{Buffer, why};
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::trace::{PixelWatcher, Unobserved};
+use zsim::{PixelWatcher, Unobserved};
 
 use super::{Failure, Finish, emit};
 
@@ -36,10 +36,10 @@ pub struct CheckArgs {
 
 /// Reads an answer file for one of `scene`'s buffers: a matrix as the book prints it.
 pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer) -> Result<Matrix, Error> {
-    let text = zsim::text::read_text(path)?;
+    let text = zsim::read_text(path)?;
     let (max, description) = match buffer {
         Buffer::Frame => (
-            zsim::scene::max_for_bits(scene.frame_bits),
+            zsim::max_for_bits(scene.frame_bits),
             zsim::words!("answer-frame-range", bits = scene.frame_bits.to_string()),
         ),
         Buffer::Depth => (scene.depth_max(), zsim::words!("answer-depth-range", bits = scene.depth_bits.to_string())),
@@ -175,7 +175,7 @@ fn table(
     buffer: Buffer,
     mismatches: &[Mismatch],
     watcher: &PixelWatcher,
-    (arith, exact): (zsim::arith::Arith, &zsim::buffer::Buffers),
+    (arith, exact): (zsim::arith::Arith, &zsim::Buffers),
 ) -> Table {
     let mut table = Table::new();
     // Wrapped to 80 columns: the "why" column breaks over lines instead of running on.

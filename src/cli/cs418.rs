@@ -4,8 +4,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use clap::{Args, Subcommand, ValueEnum};
+use zsim::Error;
 use zsim::cs418::{self, Arithmetic, Case, Comparison, Image, Reason};
-use zsim::error::Error;
 
 use super::{Failure, Finish, emit};
 
@@ -89,7 +89,7 @@ enum Textures {
 }
 
 fn load(path: &Path, textures: Textures) -> Result<Case, Error> {
-    let text = zsim::text::read_text(path)?;
+    let text = zsim::read_text(path)?;
     let folder = path.parent().unwrap_or(Path::new("."));
     let texture = |name: &str| {
         if textures == Textures::Ignored {

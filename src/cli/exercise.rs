@@ -5,12 +5,12 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use clap::Args;
-use zsim::error::Error;
+use zsim::Error;
+use zsim::Simulation;
+use zsim::Unobserved;
 use zsim::exercise::{Exercise, HardCase, Spec, make};
 use zsim::figure::{Extras, Shading, svg_with};
-use zsim::pipeline::Simulation;
 use zsim::report::matrix;
-use zsim::trace::Unobserved;
 
 use super::{Failure, Finish, emit};
 

@@ -4,12 +4,12 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use clap::Args;
-use zsim::error::Error;
-use zsim::exact::{Q, exact_and_decimal};
+use zsim::Error;
+use zsim::PixelWatcher;
+use zsim::Scene;
+use zsim::Simulation;
 use zsim::explain::{entry_text, polygon_name};
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::trace::PixelWatcher;
+use zsim::{Q, exact_and_decimal};
 
 use super::{Failure, Finish, emit};
 
@@ -92,7 +92,7 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         );
         text.push_str(&line);
         text.push('\n');
-        if args.inside && entry.fate == zsim::trace::Fate::Drawn {
+        if args.inside && entry.fate == zsim::Fate::Drawn {
             text.push_str(&format!("  {}\n", inside_text(&scene.polygons[entry.index], x, y)));
         }
     }
@@ -120,7 +120,7 @@ pub fn run(args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
 }
 
 /// The two point-in-polygon tests at the centre of (x, y).
-fn inside_text(polygon: &zsim::scene::Polygon, x: u32, y: u32) -> String {
+fn inside_text(polygon: &zsim::Polygon, x: u32, y: u32) -> String {
     use zsim::variants::{ArcDifference, arc_inside, ray_inside};
     let side =
         |inside: bool| if inside { zsim::words!("explain-inside-in") } else { zsim::words!("explain-inside-out") };
@@ -164,7 +164,7 @@ fn segment_text(scene: &Scene, segments: zsim::variants::Segments, (x, y): (u32,
 /// What antialiasing does at (x, y): each sample's history (depth at the
 /// samples) or each polygon's covered samples and centre-depth test (depth at
 /// the pixel), and the mean.
-fn antialias_text(scene: &Scene, settings: zsim::scene::Antialias, (x, y): (u32, u32)) -> Result<String, Failure> {
+fn antialias_text(scene: &Scene, settings: zsim::Antialias, (x, y): (u32, u32)) -> Result<String, Failure> {
     let k = settings.samples;
     let (pictures, notes) = zsim::antialias::run_watching(scene, settings, Some((x, y)))?;
     let mut text = zsim::words!("explain-antialias", k = k.to_string()) + "\n";
@@ -179,8 +179,8 @@ fn antialias_text(scene: &Scene, settings: zsim::scene::Antialias, (x, y): (u32,
                 "explain-sample",
                 i = (sx - x * k).to_string(),
                 j = (sy - y * k).to_string(),
-                x = zsim::exact::exact_and_decimal(Q::new(2 * i128::from(sx) + 1, 2 * i128::from(k))),
-                y = zsim::exact::exact_and_decimal(Q::new(2 * i128::from(sy) + 1, 2 * i128::from(k))),
+                x = zsim::exact_and_decimal(Q::new(2 * i128::from(sx) + 1, 2 * i128::from(k))),
+                y = zsim::exact_and_decimal(Q::new(2 * i128::from(sy) + 1, 2 * i128::from(k))),
                 frame = simulation.buffers().frame(sx, sy).to_string(),
                 depth = simulation.buffers().depth(sx, sy).to_string()
             );
@@ -201,7 +201,7 @@ fn antialias_text(scene: &Scene, settings: zsim::scene::Antialias, (x, y): (u32,
             let samples: Vec<String> = note.samples.iter().map(|(i, j)| format!("({i}, {j})")).collect();
             let d = &note.decision;
             let result = match d.outcome {
-                zsim::trace::Outcome::Written => {
+                zsim::Outcome::Written => {
                     zsim::words!("explain-pixel-mode-written", stored = d.stored.to_string())
                 }
                 _ => zsim::words!("explain-pixel-mode-not-written"),
@@ -220,8 +220,8 @@ fn antialias_text(scene: &Scene, settings: zsim::scene::Antialias, (x, y): (u32,
         let row = (scene.height - 1 - y) as usize;
         let line = zsim::words!(
             "explain-mean",
-            frame = zsim::exact::fraction(last.frame[row][x as usize]),
-            depth = zsim::exact::fraction(&last.depth[row][x as usize])
+            frame = zsim::fraction(last.frame[row][x as usize]),
+            depth = zsim::fraction(&last.depth[row][x as usize])
         );
         text.push_str(&format!("{line}\n"));
     }

@@ -4,12 +4,12 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use clap::Args;
-use zsim::error::Error;
+use zsim::Error;
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::Unobserved;
 use zsim::explain::polygon_after;
 use zsim::figure::{Extras, MAX_FIGURE_SIDE, Shading, svg_with};
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::trace::Unobserved;
 
 use super::{Failure, Finish, emit};
 

@@ -4,8 +4,8 @@ use std::io::Write;
 
 use clap::{Args, ValueEnum};
 use comfy_table::{Table, presets};
-use zsim::error::Error;
-use zsim::generate::{RandomScene, memory};
+use zsim::Error;
+use zsim::{RandomScene, memory};
 
 use super::{Failure, Finish, emit};
 
@@ -153,7 +153,7 @@ pub fn random_command(args: &RandomArgs, out: &mut dyn Write) -> Result<Finish, 
     if !(1..=32).contains(&args.frame_bits) || !(1..=32).contains(&args.depth_bits) {
         return Err(Error::Usage("--frame-bits and --depth-bits take 1 to 32".into()).into());
     }
-    let side = zsim::scene::MAX_SIDE as u32;
+    let side = zsim::MAX_SIDE as u32;
     if !(1..=side).contains(&args.width) || !(1..=side).contains(&args.height) {
         return Err(Error::Usage(format!("--width and --height take 1 to {side}")).into());
     }

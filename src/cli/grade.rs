@@ -6,14 +6,14 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
 use comfy_table::{ContentArrangement, Table, presets};
+use zsim::Error;
+use zsim::Scene;
+use zsim::Simulation;
 use zsim::arith::Arith;
-use zsim::error::Error;
 use zsim::explain::{Buffer, polygon_after, polygon_name, why};
 use zsim::grade::{CommonMistake, Grade, Handed, Status, Submission, common_mistakes, file_kind, grade};
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::text::printable;
-use zsim::trace::{PixelWatcher, Unobserved};
+use zsim::printable;
+use zsim::{PixelWatcher, Unobserved};
 
 use super::check::{read_answer, report};
 use super::{Failure, Finish, emit};
@@ -89,7 +89,7 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
     let text = match args.format {
         // CSV and JSON are the same in every language: their reasons and names in English.
-        Format::Csv | Format::Json => zsim::words::with_language(zsim::words::Lang::En, || {
+        Format::Csv | Format::Json => zsim::with_language(zsim::Lang::En, || {
             let (graded, mistakes, reasons) = assess();
             let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
             match args.format {
@@ -206,7 +206,7 @@ fn table(rows: &[&Grade]) -> Table {
             grade.student.clone(),
             count(grade.frame_wrong),
             count(grade.depth_wrong),
-            zsim::words::localize_decimal(grade.percent()),
+            zsim::localize_decimal(grade.percent()),
             status_text(&grade.status),
         ]);
     }
@@ -334,7 +334,7 @@ fn write_feedback(
             student = &grade.student,
             scene = args.scene.display().to_string(),
             polygon = polygon_after(scene, last),
-            score = zsim::words::localize_decimal(grade.percent()),
+            score = zsim::localize_decimal(grade.percent()),
             status = status_text(&grade.status)
         ) + "\n";
         // The answers that were read, explained as `zsim check` explains them.

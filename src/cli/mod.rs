@@ -20,7 +20,7 @@ use std::io::{self, IsTerminal, Write};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use zsim::error::Error;
+use zsim::Error;
 
 /// Simulates the z-buffer hidden-surface algorithm exactly as the textbook teaches it.
 #[derive(Debug, Parser)]
@@ -30,12 +30,11 @@ struct Cli {
     command: Command,
     /// The language zsim explains in: en, ru, uk or zh (default: from LC_ALL, LC_MESSAGES or LANG, else English). Reports, explanations, figures and feedback speak it; --help, JSON, CSV and the files zsim writes for programs stay the same.
     #[arg(long, global = true, value_name = "LANG", value_parser = language)]
-    lang: Option<zsim::words::Lang>,
+    lang: Option<zsim::Lang>,
 }
 
-fn language(code: &str) -> Result<zsim::words::Lang, String> {
-    zsim::words::Lang::parse(code)
-        .ok_or_else(|| format!("\"{code}\" is not a language zsim speaks: use en, ru, uk or zh"))
+fn language(code: &str) -> Result<zsim::Lang, String> {
+    zsim::Lang::parse(code).ok_or_else(|| format!("\"{code}\" is not a language zsim speaks: use en, ru, uk or zh"))
 }
 
 #[derive(Debug, Subcommand)]
@@ -99,7 +98,7 @@ impl From<io::Error> for Failure {
 /// Parses the arguments, runs the command and maps the outcome to an exit code.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
-    zsim::words::set_language(cli.lang.unwrap_or_else(zsim::words::Lang::from_env));
+    zsim::set_language(cli.lang.unwrap_or_else(zsim::Lang::from_env));
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
     let result = match cli.command {
@@ -127,7 +126,7 @@ pub fn main() -> ExitCode {
         }
         Err(Failure::Input(error)) => {
             // Messages quote the input (names, tokens): never let it steer the terminal.
-            eprintln!("zsim: {}", zsim::text::printable(&error.to_string()));
+            eprintln!("zsim: {}", zsim::printable(&error.to_string()));
             ExitCode::from(2)
         }
     }

@@ -3,10 +3,10 @@
 //! on it comes from the recorded trace, embedded as data; the page's script
 //! only shows it.
 
-use zsim::exact::exact_and_decimal;
+use zsim::Outcome;
+use zsim::exact_and_decimal;
 use zsim::explain::{pixel_reason, scanline_text};
 use zsim::report::{self, MatrixCell};
-use zsim::trace::Outcome;
 
 use super::step::Tracer;
 
@@ -89,7 +89,7 @@ pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {
         ("{{DEPTH}}", Some("page-depth")),
         ("{{QUIZ}}", Some("page-quiz")),
     ] {
-        let text = key.map_or_else(|| zsim::words::language().code().to_string(), |key| zsim::words::text(key, &[]));
+        let text = key.map_or_else(|| zsim::language().code().to_string(), |key| zsim::message(key, &[]));
         page = page.replace(marker, &escape(&text));
     }
     page

@@ -8,12 +8,12 @@ use std::time::{Duration, Instant};
 
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::Stats;
+use zsim::Unobserved;
 use zsim::arith::Arith;
-use zsim::pipeline::Simulation;
-use zsim::pipeline::Stats;
 use zsim::report::{self, MatrixStyle, RunJson, StepJson};
-use zsim::scene::Scene;
-use zsim::trace::Unobserved;
 
 use super::{Failure, Finish, emit};
 
@@ -51,7 +51,7 @@ pub struct RunArgs {
     threads: Option<u32>,
     /// List the cells where the scene's rules and this preset's (rogers, buet or gpu) draw differently, and why.
     #[arg(long, value_name = "PRESET", value_parser = preset_parser)]
-    compare_rules: Option<zsim::rules::Preset>,
+    compare_rules: Option<zsim::Preset>,
     /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
     #[arg(long, default_value = "exact", value_parser = Arith::parse)]
     arith: Arith,
@@ -90,13 +90,13 @@ enum Format {
 
 pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.inside.is_some() && args.order != Order::Pixels {
-        return Err(zsim::error::Error::Usage(
+        return Err(zsim::Error::Usage(
             "--inside chooses the point-in-polygon test of --order pixels; add --order pixels".into(),
         )
         .into());
     }
     if (args.tile.is_some() || args.threads.is_some()) && args.format != Format::None {
-        return Err(zsim::error::Error::Usage(
+        return Err(zsim::Error::Usage(
             "--tile and --threads apply to --format none (the other formats show the state after each polygon, drawn in order)".into(),
         )
         .into());
@@ -121,7 +121,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let json = args.format == Format::Json;
     if args.segments.is_some() || args.order == Order::Pixels || scene.effects.antialias.is_some() {
         if args.format == Format::None {
-            return Err(zsim::error::Error::Usage("--format none summarizes the z-buffer loop; use text or json with --segments, --order pixels or antialias".into()).into());
+            return Err(zsim::Error::Usage("--format none summarizes the z-buffer loop; use text or json with --segments, --order pixels or antialias".into()).into());
         }
         let variant = super::variants::Variant {
             segments: args.segments,
@@ -236,9 +236,9 @@ fn buffers_text(simulation: &Simulation<'_>, index: usize, name: &str, axes: boo
     let style = MatrixStyle { axes, color: super::use_color(), ..MatrixStyle::default() };
     format!(
         "\n{}\n{}\n{}\n{}",
-        zsim::words!("run-frame-after", polygon = zsim::explain::polygon_label("polygon-after", index, name)),
+        zsim::words!("run-frame-after", polygon = zsim::polygon_label("polygon-after", index, name)),
         report::matrix_styled(&simulation.buffers().frame_rows(), &style),
-        zsim::words!("run-depth-after", polygon = zsim::explain::polygon_label("polygon-after", index, name)),
+        zsim::words!("run-depth-after", polygon = zsim::polygon_label("polygon-after", index, name)),
         report::matrix_styled(&simulation.buffers().depth_rows(), &style),
     )
 }
@@ -287,7 +287,7 @@ fn summary(
         stats.tested,
         stats.written,
         if effects.is_empty() { "none".to_string() } else { effects.join(", ") },
-        zsim::stages::describe(scene).join(" → "),
+        zsim::describe(scene).join(" → "),
         read.as_secs_f64() * 1000.0,
         raster.as_secs_f64() * 1000.0,
         if threads == 1 { "" } else { "s" },
@@ -325,7 +325,7 @@ fn run_inexact(
 ) -> Result<Finish, Failure> {
     zsim::arith::check_supported(scene, args.arith)?;
     if args.segments.is_some() || args.order != Order::Polygons {
-        return Err(zsim::error::Error::Usage(
+        return Err(zsim::Error::Usage(
             "--arith other than exact runs the plain z-buffer loop; drop --segments and --order".into(),
         )
         .into());
@@ -369,16 +369,16 @@ fn run_inexact(
     Ok(Finish::Ok)
 }
 
-fn preset_parser(text: &str) -> Result<zsim::rules::Preset, String> {
+fn preset_parser(text: &str) -> Result<zsim::Preset, String> {
     serde_json::from_value(serde_json::Value::String(text.to_string()))
         .map_err(|_| format!("\"{text}\" is not a rule preset: use rogers, buet or gpu"))
 }
 
 /// `--compare-rules`: the cells two rule sets draw differently, each with the
 /// polygons covering it and the edge its centre lies on.
-fn compare_rules(scene: &Scene, path: &str, preset: zsim::rules::Preset) -> String {
+fn compare_rules(scene: &Scene, path: &str, preset: zsim::Preset) -> String {
     use std::fmt::Write as _;
-    let other = zsim::rules::Rules { store: scene.rules.store, ..zsim::rules::Rules::preset(preset) };
+    let other = zsim::Rules { store: scene.rules.store, ..zsim::Rules::preset(preset) };
     let differences = zsim::tie::compare_rules(scene, other);
     let mut text = format!("{path}\n  this scene's {}\n  compared with {}\n", scene.rules.describe(), other.describe());
     if differences.is_empty() {
@@ -392,8 +392,7 @@ fn compare_rules(scene: &Scene, path: &str, preset: zsim::rules::Preset) -> Stri
         }
         list.iter().map(|&i| format!("\"{}\"", scene.polygons[i].name)).collect::<Vec<_>>().join(" and ")
     };
-    let point =
-        |[x, y]: &[zsim::exact::Exact; 2]| format!("({}, {})", zsim::exact::fraction(x), zsim::exact::fraction(y));
+    let point = |[x, y]: &[zsim::Exact; 2]| format!("({}, {})", zsim::fraction(x), zsim::fraction(y));
     for d in &differences {
         let _ = writeln!(
             text,
@@ -419,7 +418,7 @@ fn compare_rules(scene: &Scene, path: &str, preset: zsim::rules::Preset) -> Stri
                 );
                 continue;
             }
-            let verdict = |rules: zsim::rules::Rules| match zsim::tie::rule_covers(rules, *boundary) {
+            let verdict = |rules: zsim::Rules| match zsim::tie::rule_covers(rules, *boundary) {
                 Some(true) => "covered",
                 _ => "left out",
             };
@@ -441,10 +440,10 @@ fn compare_rules(scene: &Scene, path: &str, preset: zsim::rules::Preset) -> Stri
     text
 }
 
-fn preset_name(preset: zsim::rules::Preset) -> &'static str {
+fn preset_name(preset: zsim::Preset) -> &'static str {
     match preset {
-        zsim::rules::Preset::Rogers => "the book's rules",
-        zsim::rules::Preset::Buet => "BUET's rules",
-        zsim::rules::Preset::Gpu => "the top-left rule",
+        zsim::Preset::Rogers => "the book's rules",
+        zsim::Preset::Buet => "BUET's rules",
+        zsim::Preset::Gpu => "the top-left rule",
     }
 }

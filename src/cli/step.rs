@@ -6,14 +6,14 @@ use std::path::PathBuf;
 
 use clap::Args;
 use comfy_table::{Cell, Color, Table, presets};
-use zsim::buffer::Buffers;
-use zsim::error::Error;
-use zsim::exact::{Exact, Q, exact_and_decimal, fraction};
+use zsim::Buffers;
+use zsim::Error;
+use zsim::Scene;
+use zsim::Simulation;
 use zsim::explain::{depth_text, fate_text, pixel_reason, polygon_name, scanline_text};
-use zsim::pipeline::Simulation;
 use zsim::report::{self, MatrixStyle};
-use zsim::scene::Scene;
-use zsim::trace::{Fate, Outcome, PixelEvent, Recorder, ScanlineRecord};
+use zsim::{Exact, Q, exact_and_decimal, fraction};
+use zsim::{Fate, Outcome, PixelEvent, Recorder, ScanlineRecord};
 
 use super::{Failure, Finish, emit};
 
@@ -414,8 +414,8 @@ pub(super) fn judge(pixel: &PixelEvent, typed: &str) -> Option<(bool, Meant)> {
     if typed == "-" {
         return Some((!written, Meant::NotWritten));
     }
-    let value = zsim::exact::parse_number(typed).ok()?;
-    Some(match zsim::exact::Exact::Word(value) == pixel.stored_after.value() {
+    let value = zsim::parse_number(typed).ok()?;
+    Some(match zsim::Exact::Word(value) == pixel.stored_after.value() {
         true if written => (true, Meant::ValueWritten),
         true => (true, Meant::ValueKept),
         false => (false, Meant::Value),
@@ -690,7 +690,7 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
             .map(|(x, z)| {
                 let exact = record.pixels.iter().find(|e| e.x == *x).map(|e| e.depth.value());
                 let note = match exact {
-                    Some(e) => format!(" (exact {})", zsim::exact::decimal(e, 9)),
+                    Some(e) => format!(" (exact {})", zsim::decimal(e, 9)),
                     None => " (exact arithmetic does not cover it)".to_string(),
                 };
                 format!("x = {x}: z = {z:.9}{note}")
@@ -781,7 +781,7 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
             Cell::new(pixel.x),
             Cell::new(exact_and_decimal(Q::new(2 * i128::from(pixel.x) + 1, 2))),
             Cell::new(fraction(&z)),
-            Cell::new(zsim::words::localize_decimal(zsim::exact::decimal(z, 2))),
+            Cell::new(zsim::localize_decimal(zsim::decimal(z, 2))),
             Cell::new(step),
             Cell::new(&pixel.stored_before),
             test,

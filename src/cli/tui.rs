@@ -11,11 +11,11 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
-use zsim::buffer::Buffers;
-use zsim::exact::{Q, exact_and_decimal, fraction};
+use zsim::Buffers;
 use zsim::explain::{pixel_reason, polygon_name, scanline_text};
 use zsim::report;
-use zsim::trace::{Outcome, ScanlineRecord};
+use zsim::{Outcome, ScanlineRecord};
+use zsim::{Q, exact_and_decimal, fraction};
 
 use super::step::Tracer;
 
@@ -515,7 +515,7 @@ mod tests {
     use super::*;
     use ratatui::Terminal;
     use ratatui::backend::TestBackend;
-    use zsim::scene::Scene;
+    use zsim::Scene;
 
     fn book() -> Scene {
         Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
@@ -571,7 +571,7 @@ mod tests {
         let scene = book();
         let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
         let mut app = App::new(&mut tracer, None, false);
-        let text = zsim::words::with_language(zsim::words::Lang::Zh, || {
+        let text = zsim::with_language(zsim::Lang::Zh, || {
             press(&mut app, "pg15\n");
             screen(&mut app, 100, 30)
         });

@@ -4,13 +4,13 @@
 use std::io::Write;
 
 use comfy_table::{Table, presets};
+use zsim::Buffers;
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::Unobserved;
 use zsim::antialias;
-use zsim::buffer::Buffers;
 use zsim::explain::polygon_name;
-use zsim::pipeline::Simulation;
 use zsim::report::{self, MatrixStyle};
-use zsim::scene::Scene;
-use zsim::trace::Unobserved;
 use zsim::variants::{self, ArcDifference, Inside, Segments};
 
 use super::{Failure, Finish, emit};
@@ -24,7 +24,7 @@ pub struct Variant {
     pub final_only: bool,
 }
 
-fn exact_json<T: Into<zsim::exact::Exact> + Clone>(rows: &[Vec<T>]) -> serde_json::Value {
+fn exact_json<T: Into<zsim::Exact> + Clone>(rows: &[Vec<T>]) -> serde_json::Value {
     rows.iter().map(|row| row.iter().map(|v| zsim::report::exact_json(v.clone())).collect::<Vec<_>>()).collect()
 }
 
@@ -79,7 +79,7 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
             full,
             full * depth_bits,
             stats.polygon_visits,
-            (0..scene.polygons.len()).filter(|&i| zsim::pipeline::fate(scene, i) == zsim::trace::Fate::Drawn).count()
+            (0..scene.polygons.len()).filter(|&i| zsim::fate(scene, i) == zsim::Fate::Drawn).count()
         ));
         text.push_str(&format!("result: {}\n", comparison(&buffers, plain.buffers())));
         text.push_str(&matrices(&buffers, "after all polygons", variant.axes));

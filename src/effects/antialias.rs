@@ -18,12 +18,14 @@ use std::collections::BTreeMap;
 use crate::error::{Error, PolygonProblem};
 use crate::geometry::plane::Geometry;
 use crate::numbers::{Exact, Q};
-use crate::observe::trace::{Fate, Outcome, Unobserved};
+use crate::raster::convert::{Scratch, rasterize};
 use crate::raster::depth::{Depth, depth_at_centre};
 use crate::raster::scan::{Crossing, Span};
+use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Antialias, Scene};
 use crate::simulate::buffer::Buffers;
-use crate::simulate::pipeline::{PixelRect, RasterSink, Scratch, Simulation, fate, rasterize};
+use crate::simulate::events::{Fate, Outcome, Unobserved};
+use crate::simulate::pipeline::{Simulation, fate};
 use crate::simulate::stages::{PixelStages, Plain, WithEffects, blend};
 
 /// The averaged picture after one polygon.

@@ -26,11 +26,11 @@ use num_traits::{AsPrimitive, Float, Num, Signed};
 use crate::error::{Error, PolygonProblem};
 use crate::geometry::plane::Geometry;
 use crate::numbers::{Exact, to_f64};
-use crate::observe::trace::{Fate, Unobserved};
 use crate::raster::depth::depth_at;
 use crate::rules::{Preset, Rules};
 use crate::scene::Scene;
 use crate::simulate::buffer::{Buffers, FrameCell, LevelCells};
+use crate::simulate::events::{Fate, Unobserved};
 use crate::simulate::pipeline::{Simulation, Stats, fate};
 
 /// An arithmetic mode.

@@ -14,12 +14,14 @@ use num_bigint::BigInt;
 use num_traits::Num;
 
 use crate::numbers::Exact;
-use crate::observe::trace::{Fate, Outcome};
+use crate::raster::convert::{Scratch, rasterize};
 use crate::raster::depth::{Depth, depth_at_centre};
 use crate::raster::scan::{Crossing, Span};
+use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::Buffers;
-use crate::simulate::pipeline::{PixelRect, RasterSink, Scratch, fate, rasterize};
+use crate::simulate::events::{Fate, Outcome};
+use crate::simulate::pipeline::fate;
 use crate::simulate::stages::{Decision, PixelStages, Plain, WithEffects};
 
 /// The per-pixel stages the scene asks for, as a trait object.

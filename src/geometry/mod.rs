@@ -1,2 +1,3 @@
 //! Geometry: a polygon's plane and edges in exact integers.
+pub mod big;
 pub mod plane;

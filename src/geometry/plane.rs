@@ -179,7 +179,7 @@ pub struct Geometry {
     /// For a polygon beyond [`MAX_SCALED`], which runs on the big-integer
     /// tier ([`Geometry::is_big`]): its scaled vertices in big integers, its
     /// edges' lines and plane, reduced.
-    big: Option<Box<crate::raster::big::BigPolygon>>,
+    big: Option<Box<crate::geometry::big::BigPolygon>>,
 }
 
 impl Geometry {
@@ -263,13 +263,13 @@ impl Geometry {
             let value = Exact::from(vertices[index][axis].clone());
             return Err(GeometryError::OutOfRange { vertex: index + 1, value, denominator });
         }
-        Ok(Geometry::on_big(crate::raster::big::BigPolygon::new(points, denominator)?))
+        Ok(Geometry::on_big(crate::geometry::big::BigPolygon::new(points, denominator)?))
     }
 
     /// The geometry of a polygon of the big-integer tier: no word-sized
     /// scaled vertices (`points` empty, `denominator` 0), the normal
     /// `(A, B, C)` of its reduced plane pointing as Newell's does.
-    fn on_big(polygon: crate::raster::big::BigPolygon) -> Geometry {
+    fn on_big(polygon: crate::geometry::big::BigPolygon) -> Geometry {
         Geometry {
             denominator: 0,
             points: Vec::new(),
@@ -284,7 +284,7 @@ impl Geometry {
     #[cfg(test)]
     pub(crate) fn on_big_tier(&self) -> Geometry {
         let points = self.points.iter().map(|p| p.map(BigInt::from)).collect();
-        Geometry::on_big(crate::raster::big::BigPolygon::new(points, self.denominator.into()).expect("planar"))
+        Geometry::on_big(crate::geometry::big::BigPolygon::new(points, self.denominator.into()).expect("planar"))
     }
 
     /// The same polygon on the big-integer tier with its crossings and
@@ -293,7 +293,7 @@ impl Geometry {
     #[cfg(test)]
     pub(crate) fn on_huge_tier(&self) -> Geometry {
         let points = self.points.iter().map(|p| p.map(BigInt::from)).collect();
-        let polygon = crate::raster::big::BigPolygon::new(points, self.denominator.into()).expect("planar");
+        let polygon = crate::geometry::big::BigPolygon::new(points, self.denominator.into()).expect("planar");
         Geometry::on_big(polygon.without_words())
     }
 
@@ -306,14 +306,14 @@ impl Geometry {
     }
 
     /// The big-integer tier's polygon, when this is one.
-    pub(crate) fn big(&self) -> Option<&crate::raster::big::BigPolygon> {
+    pub(crate) fn big(&self) -> Option<&crate::geometry::big::BigPolygon> {
         self.big.as_deref()
     }
 
     /// The scaled vertices and `D` of a polygon on the big-integer tier, in
     /// big integers.
     pub fn big_scaled(&self) -> Option<(&[[BigInt; 3]], &BigInt)> {
-        self.big.as_deref().map(crate::raster::big::BigPolygon::scaled)
+        self.big.as_deref().map(crate::geometry::big::BigPolygon::scaled)
     }
 
     /// The cells `⌊x⌋`, `⌊y⌋` holding the polygon's bounding box, on any
@@ -447,7 +447,7 @@ impl Geometry {
 /// `2D·a·x + 2D·b·y + 2D·c·z + d' = 0`, then divided by the gcd.
 pub(crate) fn reduced_plane(normal: [i128; 3], point: [i128; 3], scale: i128) -> PlaneEquation {
     // Worked in big integers: the products can outgrow i128.
-    crate::raster::big::plane_through(&normal.map(BigInt::from), &point.map(BigInt::from), &BigInt::from(scale))
+    crate::geometry::big::plane_through(&normal.map(BigInt::from), &point.map(BigInt::from), &BigInt::from(scale))
 }
 
 /// A vertex coordinate as [`Geometry`] reads it: a 128-bit fraction when it

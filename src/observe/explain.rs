@@ -3,10 +3,11 @@
 //! through a scene, and why a cell holds its value.
 
 use crate::numbers::{Exact, Q, exact_and_decimal, exact_and_places};
-use crate::observe::trace::{Fate, Outcome, PixelEvent, PixelHistoryEntry, ScanlineRecord, SpanRecord};
+use crate::observe::trace::{PixelHistoryEntry, ScanlineRecord, SpanRecord};
 use crate::raster::depth::{Depth, Stored};
 use crate::rules::DepthStore;
 use crate::scene::Scene;
+use crate::simulate::events::{Fate, Outcome, PixelEvent};
 
 /// Which buffer a sentence is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -38,21 +39,12 @@ pub fn depth_text(scene: &Scene, z: impl Into<Exact>) -> String {
 
 /// `polygon 2 "triangle"`.
 pub fn polygon_name(scene: &Scene, index: usize) -> String {
-    polygon_label("polygon-name", index, &scene.polygons[index].name)
+    crate::words::polygon_label("polygon-name", index, &scene.polygons[index].name)
 }
 
 /// `polygon 2 "triangle"` after "after" (a genitive in some languages).
 pub fn polygon_after(scene: &Scene, index: usize) -> String {
-    polygon_label("polygon-after", index, &scene.polygons[index].name)
-}
-
-/// Polygon `index` named `name` as `message` (`polygon-name` or
-/// `polygon-after`) words it: `polygon 2 "triangle"`, or `polygon 2` when
-/// the name is the one an unnamed polygon gets ([`crate::scene::is_default_name`]),
-/// which would only repeat the number (and in English).
-pub fn polygon_label(message: &str, index: usize, name: &str) -> String {
-    let named = if crate::scene::is_default_name(name, index) { "no" } else { "yes" };
-    words!(message, number = index + 1, name = name, named = named)
+    crate::words::polygon_label("polygon-after", index, &scene.polygons[index].name)
 }
 
 /// `43/4 ≈ 10.75 … 179/6 ≈ 29.83`.

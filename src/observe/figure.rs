@@ -174,7 +174,7 @@ pub fn svg_with(
         }
         let points: Vec<String> = polygon.vertices.iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect();
         // An unnamed polygon is labelled by its number alone, titled in the reader's language.
-        let unnamed = crate::scene::is_default_name(&polygon.name, index);
+        let unnamed = crate::words::is_default_name(&polygon.name, index);
         let title = if unnamed { crate::observe::explain::polygon_name(scene, index) } else { polygon.name.clone() };
         let label = if unnamed { (index + 1).to_string() } else { format!("{} {}", index + 1, escape(&polygon.name)) };
         let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));

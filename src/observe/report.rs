@@ -27,9 +27,9 @@ pub fn exact_json(value: impl Into<Exact>) -> serde_json::Value {
     }
 }
 
-use crate::observe::trace::Fate;
 use crate::scene::perspective::Clip;
 use crate::scene::{Scene, Winding};
+use crate::simulate::events::Fate;
 use crate::simulate::pipeline::fate;
 use crate::simulate::stages::describe as stages;
 
@@ -302,7 +302,7 @@ mod tests {
                         );
                         let scene = Scene::from_json(&json, std::path::Path::new("s.json")).expect(&json);
                         let mut simulation = Simulation::new(&scene);
-                        simulation.finish(&mut crate::observe::trace::Unobserved);
+                        simulation.finish(&mut crate::simulate::events::Unobserved);
                         // (3, 2) is far from the one small triangle: it keeps the clear value.
                         let held = simulation.buffers().depth(3, 2);
                         let heading = scene_header(&scene, "s.json");

@@ -9,12 +9,14 @@ use num_rational::BigRational;
 use num_traits::Zero;
 
 use crate::numbers::{Exact, Q};
-use crate::observe::trace::Unobserved;
+use crate::raster::convert::{Scratch, rasterize};
 use crate::raster::depth::Depth;
 use crate::raster::scan::{Crossing, Span};
+use crate::raster::sink::{PixelRect, RasterSink};
 use crate::rules::Rules;
 use crate::scene::Scene;
-use crate::simulate::pipeline::{PixelRect, RasterSink, Scratch, Simulation, rasterize};
+use crate::simulate::events::Unobserved;
+use crate::simulate::pipeline::Simulation;
 
 /// Which kind of boundary a centre lies on, as drawn (y up, row 0 at the bottom).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -529,7 +529,7 @@ struct Frame {
 impl PolygonFile {
     fn validate(self, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
         // Names reach terminals in every report: control characters are kept escaped (`\u{1b}`).
-        let name = self.name.map_or_else(|| crate::scene::default_name(index), |name| printable(&name).into_owned());
+        let name = self.name.map_or_else(|| crate::words::default_name(index), |name| printable(&name).into_owned());
         let fail = |name: &str, problem: PolygonProblem| Error::Polygon {
             path: PathBuf::from(path),
             index,

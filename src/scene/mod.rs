@@ -160,7 +160,7 @@ impl Window {
 /// One validated polygon.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Polygon {
-    /// Its name (from the file, or [`default_name`]), with control characters
+    /// Its name (from the file, or [`crate::words::default_name`]), with control characters
     /// escaped as `\u{1b}` ([`crate::scene::text::printable`]) so that no report can
     /// carry them to a terminal.
     pub name: String,
@@ -276,17 +276,6 @@ impl Scene {
     }
 }
 
-/// The name of a polygon the file leaves unnamed: `polygon N`, numbered from 1.
-pub fn default_name(index: usize) -> String {
-    format!("polygon {}", index + 1)
-}
-
-/// Whether `name` is the one polygon `index` gets when the file names it
-/// not: reports then call it by its number alone.
-pub fn is_default_name(name: &str, index: usize) -> bool {
-    name == default_name(index)
-}
-
 /// `2^bits − 1` for 1 ≤ bits ≤ 32.
 pub fn max_for_bits(bits: u32) -> u32 {
     debug_assert!((1..=32).contains(&bits));
@@ -342,7 +331,7 @@ mod tests {
         let text = r#"{"polygons": [{"value": 1, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]},
             {"name": "roof", "value": 2, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]}"#;
         let scene = parse(text).unwrap();
-        assert_eq!(scene.polygons[0].name, default_name(0));
+        assert_eq!(scene.polygons[0].name, crate::words::default_name(0));
         let labels = |lang| {
             crate::words::with_language(lang, || [0, 1].map(|i| crate::observe::explain::polygon_name(&scene, i)))
         };

@@ -4,10 +4,10 @@
 //! words, for reports.
 
 use crate::numbers::{Q, fraction};
-use crate::observe::trace::Outcome;
 use crate::raster::depth::{Depth, DepthTest, Stored};
 use crate::rules::{DepthStore, RowRule};
 use crate::scene::{Polygon, Scene};
+use crate::simulate::events::Outcome;
 
 /// What the per-pixel stages make of one covered centre.
 #[derive(Debug, Clone)]

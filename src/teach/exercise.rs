@@ -9,9 +9,9 @@ use std::collections::BTreeSet;
 use std::fmt;
 
 use crate::numbers::{Q, fraction, short_in_files};
-use crate::observe::trace::{Observer, Outcome, PixelEvent, ScanlineEvent};
 use crate::scene::random::SplitMix64;
 use crate::scene::{Scene, max_for_bits};
+use crate::simulate::events::{Observer, Outcome, PixelEvent, ScanlineEvent};
 use crate::simulate::pipeline::Simulation;
 
 /// A case that students get wrong, which an exercise can be asked to contain.

@@ -204,7 +204,7 @@ fn bundle_has(bundles: &mut HashMap<Lang, FluentBundle<FluentResource>>, lang: L
 #[macro_export]
 macro_rules! words {
     ($key:expr $(, $name:ident = $value:expr)* $(,)?) => {
-        $crate::words::text($key, &[$((stringify!($name), $crate::words::Arg::from($value))),*])
+        $crate::message($key, &[$((stringify!($name), $crate::Arg::from($value))),*])
     };
 }
 
@@ -217,7 +217,8 @@ pub fn localize_decimal(text: String) -> String {
 }
 
 /// The message keys of a catalogue, in order.
-pub fn keys(lang: Lang) -> Vec<String> {
+#[cfg(test)]
+fn keys(lang: Lang) -> Vec<String> {
     let resource = FluentResource::try_new(lang.catalogue().to_string()).unwrap_or_else(|(r, _)| r);
     resource
         .entries()
@@ -283,4 +284,24 @@ mod tests {
         assert!(differ(Lang::Ru, 3).contains("отличаются 3"), "{}", differ(Lang::Ru, 3));
         assert!(differ(Lang::Ru, 5).contains("отличаются 5"), "{}", differ(Lang::Ru, 5));
     }
+}
+
+/// The name of a polygon the file leaves unnamed: `polygon N`, numbered from 1.
+pub fn default_name(index: usize) -> String {
+    format!("polygon {}", index + 1)
+}
+
+/// Whether `name` is the one polygon `index` gets when the file names it
+/// not: reports then call it by its number alone.
+pub fn is_default_name(name: &str, index: usize) -> bool {
+    name == default_name(index)
+}
+
+/// Polygon `index` named `name` as `message` (`polygon-name` or
+/// `polygon-after`) words it: `polygon 2 "triangle"`, or `polygon 2` when
+/// the name is the one an unnamed polygon gets ([`is_default_name`]),
+/// which would only repeat the number (and in English).
+pub fn polygon_label(message: &str, index: usize, name: &str) -> String {
+    let named = if is_default_name(name, index) { "no" } else { "yes" };
+    words!(message, number = index + 1, name = name, named = named)
 }

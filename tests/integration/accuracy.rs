@@ -3,9 +3,9 @@
 
 use std::path::Path;
 
+use zsim::Scene;
 use zsim::accuracy::{self, Settings};
 use zsim::arith::{self, Arith};
-use zsim::scene::Scene;
 
 use crate::{snapshot, zsim};
 
@@ -170,7 +170,7 @@ fn fixed_point_snapping_keeps_a_polygon_planar() {
     let scene = Scene::from_json(quad, Path::new("quad.json")).unwrap();
     let snapped = arith::snap(&scene, 8).expect("drawn, not refused as not planar");
     let plane = scene.polygons[0].geometry.plane();
-    let big = |v: &zsim::exact::Exact| v.to_big();
+    let big = |v: &zsim::Exact| v.to_big();
     let mut moves = 0;
     for (given, moved) in scene.polygons[0].vertices.iter().zip(&snapped.polygons[0].vertices) {
         let [x, y, z] = moved.each_ref().map(big);

@@ -3,10 +3,10 @@
 
 use std::path::{Path, PathBuf};
 
-use zsim::exact::Q;
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::trace::{Outcome, Recorder};
+use zsim::Q;
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::{Outcome, Recorder};
 
 use crate::zsim;
 

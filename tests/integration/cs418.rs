@@ -330,7 +330,7 @@ fn imported_case_draws_as_the_course(dir: &Path, name: &str) -> bool {
     // Textures do not change what is drawn where; a stand-in will do.
     let case = case_with_stand_in(dir, name, [255, 255, 255, 255]);
     let json = zsim::cs418::import::scene_json(&case).unwrap();
-    let scene = match zsim::scene::Scene::from_json(&json, Path::new("imported.json")) {
+    let scene = match zsim::Scene::from_json(&json, Path::new("imported.json")) {
         Ok(scene) => scene,
         Err(error) => {
             assert!(error.to_string().contains("beyond the exact range"), "{name}: {error}");
@@ -338,8 +338,8 @@ fn imported_case_draws_as_the_course(dir: &Path, name: &str) -> bool {
         }
     };
     let exact = render(&case, Arithmetic::Exact).unwrap();
-    let mut simulation = zsim::pipeline::Simulation::new(&scene);
-    simulation.finish(&mut zsim::trace::Unobserved);
+    let mut simulation = zsim::Simulation::new(&scene);
+    simulation.finish(&mut zsim::Unobserved);
     for (y, row) in simulation.buffers().frame_rows().iter().enumerate() {
         for (x, &value) in row.iter().enumerate() {
             assert_eq!(value, exact.owner(x as u32, y as u32), "{name}: sample ({x}, {y})");
@@ -530,12 +530,12 @@ mod never_a_panic {
             let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
             let Ok(case) = Case::parse(&text, &|_| Ok(texture.clone())) else { return Ok(()) };
             let Ok(json) = zsim::cs418::import::scene_json(&case) else { return Ok(()) };
-            let Ok(scene) = zsim::scene::Scene::from_json(&json, std::path::Path::new("imported.json")) else {
+            let Ok(scene) = zsim::Scene::from_json(&json, std::path::Path::new("imported.json")) else {
                 return Ok(());
             };
             let exact = render(&case, Arithmetic::Exact).unwrap();
-            let mut simulation = zsim::pipeline::Simulation::new(&scene);
-            simulation.finish(&mut zsim::trace::Unobserved);
+            let mut simulation = zsim::Simulation::new(&scene);
+            simulation.finish(&mut zsim::Unobserved);
             for (y, row) in simulation.buffers().frame_rows().iter().enumerate() {
                 for (x, &value) in row.iter().enumerate() {
                     prop_assert_eq!(value, exact.owner(x as u32, y as u32), "sample ({}, {})\n{}", x, y, text);

@@ -4,10 +4,10 @@
 
 use std::path::Path;
 
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::stages::StageSet;
-use zsim::trace::Unobserved;
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::StageSet;
+use zsim::Unobserved;
 
 use crate::{snapshot, zsim};
 
@@ -19,7 +19,7 @@ fn scene(json: &str) -> Scene {
     Scene::from_json(json, Path::new("inline.json")).unwrap()
 }
 
-fn final_buffers(scene: &Scene, stages: StageSet) -> (Vec<Vec<u32>>, Vec<Vec<zsim::depth::Stored>>) {
+fn final_buffers(scene: &Scene, stages: StageSet) -> (Vec<Vec<u32>>, Vec<Vec<zsim::Stored>>) {
     let mut simulation = Simulation::with_stages(scene, stages);
     simulation.finish(&mut Unobserved);
     (simulation.buffers().frame_rows(), simulation.buffers().depth_rows())
@@ -85,7 +85,7 @@ fn a_polygon_behind_the_near_plane_is_clipped_away() {
     );
     let (frame, _) = final_buffers(&behind, StageSet::AsAsked);
     assert!(frame.iter().flatten().all(|&v| v == 0));
-    assert_eq!(zsim::pipeline::fate(&behind, 0), zsim::trace::Fate::ClippedAway);
+    assert_eq!(zsim::fate(&behind, 0), zsim::Fate::ClippedAway);
 }
 
 fn examples() -> Vec<(String, Scene)> {
@@ -96,15 +96,8 @@ fn examples() -> Vec<(String, Scene)> {
         .map(|p| (p.display().to_string(), Scene::load(&p).unwrap()))
         .collect();
     for seed in 1..=5 {
-        let spec = zsim::generate::RandomScene {
-            count: 40,
-            seed,
-            width: 24,
-            height: 20,
-            max_size: 12,
-            frame_bits: 4,
-            depth_bits: 6,
-        };
+        let spec =
+            zsim::RandomScene { count: 40, seed, width: 24, height: 20, max_size: 12, frame_bits: 4, depth_bits: 6 };
         scenes.push((format!("random seed {seed}"), scene(&spec.json())));
     }
     scenes
@@ -172,17 +165,14 @@ fn arc_length_differs_only_on_boundaries_and_multiple_windings() {
 
 #[test]
 fn one_sample_per_pixel_is_the_plain_z_buffer() {
+    use zsim::Antialias;
     use zsim::antialias;
-    use zsim::scene::Antialias;
     for (name, scene) in examples() {
         let (frame, depth) = final_buffers(&scene, StageSet::AsAsked);
-        let as_q = |rows: Vec<Vec<u32>>| -> Vec<Vec<zsim::exact::Q>> {
-            rows.into_iter()
-                .map(|r| r.into_iter().map(|v| zsim::exact::Q::from_integer(i128::from(v))).collect())
-                .collect()
+        let as_q = |rows: Vec<Vec<u32>>| -> Vec<Vec<zsim::Q>> {
+            rows.into_iter().map(|r| r.into_iter().map(|v| zsim::Q::from_integer(i128::from(v))).collect()).collect()
         };
-        let depth_q: Vec<Vec<zsim::exact::Exact>> =
-            depth.iter().map(|r| r.iter().map(|v| v.value()).collect()).collect();
+        let depth_q: Vec<Vec<zsim::Exact>> = depth.iter().map(|r| r.iter().map(|v| v.value()).collect()).collect();
         for depth_at_samples in [true, false] {
             let pictures = antialias::run(&scene, Antialias { samples: 1, depth_at_samples }).unwrap();
             if let Some(last) = pictures.last() {

@@ -7,10 +7,10 @@ use std::path::Path;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
-use zsim::depth::Stored;
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::trace::Unobserved;
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::Stored;
+use zsim::Unobserved;
 
 const SIZE: u32 = 16;
 const DEPTH_MAX: i64 = 65535;
@@ -219,7 +219,7 @@ fn polygons_once_refused_as_too_large_are_drawn_exactly() {
         );
         let scene = Scene::from_json(&json, Path::new("large.json")).unwrap_or_else(|e| panic!("{e}"));
         let v: Vec<[BigRational; 3]> =
-            scene.polygons[0].vertices.iter().map(|p| p.each_ref().map(zsim::exact::Exact::to_big)).collect();
+            scene.polygons[0].vertices.iter().map(|p| p.each_ref().map(zsim::Exact::to_big)).collect();
         let (covered, _) = check_pixels(&json, |column, row| in_triangle(&v, column, row));
         assert_eq!(covered, expected, "{vertices}");
     }

@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use zsim::scene::Scene;
+use zsim::Scene;
 
 use crate::{snapshot, zsim};
 
@@ -38,7 +38,7 @@ fn random_scenes_repeat_for_a_seed_and_respect_the_size() {
     for polygon in &scene.polygons {
         let xs: Vec<_> = polygon.vertices.iter().map(|v| v[0].word().expect("small")).collect();
         let ys: Vec<_> = polygon.vertices.iter().map(|v| v[1].word().expect("small")).collect();
-        let extent = |v: &[zsim::exact::Q]| *v.iter().max().unwrap() - *v.iter().min().unwrap();
+        let extent = |v: &[zsim::Q]| *v.iter().max().unwrap() - *v.iter().min().unwrap();
         assert!(extent(&xs) <= 10.into() && extent(&ys) <= 10.into(), "{} is larger than 10 px", polygon.name);
     }
     let other =

@@ -11,9 +11,9 @@
 
 use std::path::Path;
 
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::trace::Unobserved;
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::Unobserved;
 
 use crate::{parse_matrix, snapshot, zsim};
 

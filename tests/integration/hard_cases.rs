@@ -3,9 +3,9 @@
 
 use std::path::Path;
 
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::trace::Unobserved;
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::Unobserved;
 
 /// Runs a scene given as JSON and returns (framebuffer, z-buffer), top row first.
 fn run(json: &str) -> (Vec<Vec<u32>>, Vec<Vec<u32>>) {
@@ -231,7 +231,7 @@ fn span_end_depths_near_the_word_limit_are_exact() {
         r#"{{"width": 16, "height": 16, "depth_bits": 21, "polygons": [{{"value": 1, "vertices": {vertices:?}}}]}}"#
     );
     let scene = Scene::from_json(&json, Path::new("fuzz.json")).unwrap();
-    let mut recorder = zsim::trace::Recorder::default();
+    let mut recorder = zsim::Recorder::default();
     Simulation::new(&scene).finish(&mut recorder);
     let v: Vec<[BigRational; 3]> = vertices.iter().map(|p| p.map(|c| BigRational::from_integer(c.into()))).collect();
     // z at (x, y) on the plane through the vertices (barycentric weights by Cramer's rule).

@@ -111,15 +111,8 @@ fn axes_label_rows_and_columns() {
 fn json_streams_and_stops_quietly_on_a_closed_pipe() {
     use std::io::Read;
     use std::process::{Command, Stdio};
-    let spec = zsim::generate::RandomScene {
-        count: 400,
-        seed: 5,
-        width: 512,
-        height: 512,
-        max_size: 64,
-        frame_bits: 8,
-        depth_bits: 16,
-    };
+    let spec =
+        zsim::RandomScene { count: 400, seed: 5, width: 512, height: 512, max_size: 64, frame_bits: 8, depth_bits: 16 };
     let (dir, name) = scene_file("many_steps.json", &spec.json());
     let mut child = Command::new(env!("CARGO_BIN_EXE_zsim"))
         .args(["run", &name, "--format", "json"])

@@ -7,10 +7,10 @@
 use std::path::Path;
 
 use proptest::prelude::*;
-use zsim::exact::Q;
-use zsim::pipeline::Simulation;
-use zsim::scene::Scene;
-use zsim::trace::{Observer, PixelEvent, ScanlineEvent, Unobserved};
+use zsim::Q;
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::{Observer, PixelEvent, ScanlineEvent, Unobserved};
 
 const W: u32 = 12;
 const H: u32 = 10;

@@ -6,11 +6,11 @@
 use std::io::Write;
 use std::path::Path;
 
-use zsim::generate::RandomScene;
-use zsim::pipeline::Simulation;
+use zsim::RandomScene;
+use zsim::Scene;
+use zsim::Simulation;
+use zsim::Unobserved;
 use zsim::report::StepJson;
-use zsim::scene::Scene;
-use zsim::trace::Unobserved;
 
 /// FNV-1a over the bytes written: a stable hash, the same on every machine and Rust version.
 struct Fnv(u64);
