@@ -28,6 +28,30 @@ mod threads;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+/// A check that cannot run here because `what` is missing. On a machine of
+/// our own it says so where the person running the tests sees it (straight to
+/// the terminal: the test harness hides what a passing test prints) and lets
+/// the rest of the test pass; in CI (`CI` set) nothing may be skipped, so it
+/// fails the test instead.
+pub fn skipped(what: &str, check: &str) {
+    use std::io::Write;
+    if std::env::var_os("CI").is_some() {
+        panic!("{what} is missing in CI, so {check} would be skipped: .ci/run must install it");
+    }
+    let _ = writeln!(std::io::stderr(), "SKIPPED: {check}: {what} is missing");
+}
+
+/// The folder `../shared/peer/NAME` of course files beside the project (never
+/// copied into it), or `None` after [`skipped`] says which check did not run.
+pub fn peer(name: &str, check: &str) -> Option<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/peer").join(name);
+    if dir.is_dir() {
+        return Some(dir);
+    }
+    skipped(&dir.display().to_string(), check);
+    None
+}
+
 /// What one run of the binary produced.
 pub struct Run {
     pub code: i32,

@@ -494,9 +494,7 @@ fn step_writes_a_self_contained_page_that_a_browser_steps_through() {
         .into_iter()
         .find(|b| Command::new(b).arg("--version").output().is_ok_and(|o| o.status.success()))
     else {
-        eprintln!(
-            "NOTICE: no Chromium on this machine, so the page was NOT opened in a browser (apt-get install chromium)"
-        );
+        crate::skipped("Chromium (apt-get install chromium)", "the page opened in a browser");
         return;
     };
     let output = Command::new(browser)
