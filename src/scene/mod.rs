@@ -138,7 +138,7 @@ impl Window {
     /// Maps a world point to pixel units: `x_px = (x − left)·width/(right − left)`,
     /// likewise y; z is unchanged. Exact however large (in big rationals
     /// where 128 bits overflow).
-    pub fn to_pixels(&self, point: &[Exact; 3], width: u32, height: u32) -> [Exact; 3] {
+    pub fn to_pixels(self, point: &[Exact; 3], width: u32, height: u32) -> [Exact; 3] {
         let map = |v: &Exact, low: Q, high: Q, size: u32| -> Exact {
             let words = |v: Q| {
                 v.checked_sub(&low)?

@@ -229,6 +229,26 @@ fn keys(lang: Lang) -> Vec<String> {
         .collect()
 }
 
+/// The name of a polygon the file leaves unnamed: `polygon N`, numbered from 1.
+pub fn default_name(index: usize) -> String {
+    format!("polygon {}", index + 1)
+}
+
+/// Whether `name` is the one polygon `index` gets when the file names it
+/// not: reports then call it by its number alone.
+pub fn is_default_name(name: &str, index: usize) -> bool {
+    name == default_name(index)
+}
+
+/// Polygon `index` named `name` as `message` (`polygon-name` or
+/// `polygon-after`) words it: `polygon 2 "triangle"`, or `polygon 2` when
+/// the name is the one an unnamed polygon gets ([`is_default_name`]),
+/// which would only repeat the number (and in English).
+pub fn polygon_label(message: &str, index: usize, name: &str) -> String {
+    let named = if is_default_name(name, index) { "no" } else { "yes" };
+    words!(message, number = index + 1, name = name, named = named)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -284,24 +304,4 @@ mod tests {
         assert!(differ(Lang::Ru, 3).contains("отличаются 3"), "{}", differ(Lang::Ru, 3));
         assert!(differ(Lang::Ru, 5).contains("отличаются 5"), "{}", differ(Lang::Ru, 5));
     }
-}
-
-/// The name of a polygon the file leaves unnamed: `polygon N`, numbered from 1.
-pub fn default_name(index: usize) -> String {
-    format!("polygon {}", index + 1)
-}
-
-/// Whether `name` is the one polygon `index` gets when the file names it
-/// not: reports then call it by its number alone.
-pub fn is_default_name(name: &str, index: usize) -> bool {
-    name == default_name(index)
-}
-
-/// Polygon `index` named `name` as `message` (`polygon-name` or
-/// `polygon-after`) words it: `polygon 2 "triangle"`, or `polygon 2` when
-/// the name is the one an unnamed polygon gets ([`is_default_name`]),
-/// which would only repeat the number (and in English).
-pub fn polygon_label(message: &str, index: usize, name: &str) -> String {
-    let named = if is_default_name(name, index) { "no" } else { "yes" };
-    words!(message, number = index + 1, name = name, named = named)
 }

@@ -37,10 +37,12 @@
 //!   is bound is a sprite: (s, t) runs from (0, 0) at its top-left corner to
 //!   (1, 1) at its bottom-right.
 
+mod clip;
 mod compare;
 mod image;
 pub mod import;
 mod raster;
+mod scalar;
 
 use std::fmt;
 

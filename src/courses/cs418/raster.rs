@@ -2,15 +2,14 @@
 //! run in `f64` (the course's arithmetic) or in exact rationals.
 
 use std::collections::BTreeMap;
-use std::fmt;
 
-use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
 
+use super::clip::{Dda, clip, clockwise};
 use super::compare::{Comparison, Primitive, Shape, Span};
 use super::image::{Image, byte, linear_texels, to_srgb};
-use super::{Case, CaseError, Command, Number, error};
+use super::scalar::Scalar;
+use super::{Case, CaseError, Command, error};
 
 /// The arithmetic the course's algorithm runs in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -31,96 +30,6 @@ impl Arithmetic {
             Arithmetic::DdaF64 => "dda-f64",
             Arithmetic::Exact => "exact",
         }
-    }
-}
-
-/// A number type the pipeline runs on.
-trait Scalar: Clone + PartialOrd + fmt::Debug {
-    fn number(n: &Number) -> Self;
-    fn int(v: i64) -> Self;
-    fn add(&self, o: &Self) -> Self;
-    fn sub(&self, o: &Self) -> Self;
-    fn mul(&self, o: &Self) -> Self;
-    fn div(&self, o: &Self) -> Self;
-    fn ceil(&self) -> Self;
-    fn floor(&self) -> Self {
-        Self::int(0).sub(&Self::int(0).sub(self).ceil())
-    }
-    fn to_f64(&self) -> f64;
-    fn is_zero(&self) -> bool;
-    /// Whether adding is exact, so that k steps of a DDA land where one
-    /// step of k times the size does.
-    const EXACT: bool;
-    /// The value as a person reads it: the shortest decimal that reads back
-    /// as this `f64`, or an exact fraction.
-    fn text(&self) -> String;
-}
-
-impl Scalar for f64 {
-    const EXACT: bool = false;
-    fn number(n: &Number) -> f64 {
-        n.value
-    }
-    fn int(v: i64) -> f64 {
-        v as f64
-    }
-    fn add(&self, o: &f64) -> f64 {
-        self + o
-    }
-    fn sub(&self, o: &f64) -> f64 {
-        self - o
-    }
-    fn mul(&self, o: &f64) -> f64 {
-        self * o
-    }
-    fn div(&self, o: &f64) -> f64 {
-        self / o
-    }
-    fn ceil(&self) -> f64 {
-        f64::ceil(*self)
-    }
-    fn to_f64(&self) -> f64 {
-        *self
-    }
-    fn is_zero(&self) -> bool {
-        *self == 0.0
-    }
-    fn text(&self) -> String {
-        format!("{self}")
-    }
-}
-
-impl Scalar for BigRational {
-    const EXACT: bool = true;
-    fn number(n: &Number) -> BigRational {
-        BigRational::new(BigInt::from(*n.exact.numer()), BigInt::from(*n.exact.denom()))
-    }
-    fn int(v: i64) -> BigRational {
-        BigRational::from_integer(BigInt::from(v))
-    }
-    fn add(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn div(&self, o: &Self) -> Self {
-        self / o
-    }
-    fn ceil(&self) -> Self {
-        BigRational::ceil(self)
-    }
-    fn to_f64(&self) -> f64 {
-        ToPrimitive::to_f64(self).unwrap_or(f64::NAN)
-    }
-    fn is_zero(&self) -> bool {
-        Zero::is_zero(self)
-    }
-    fn text(&self) -> String {
-        if self.is_integer() { self.numer().to_string() } else { format!("{}/{}", self.numer(), self.denom()) }
     }
 }
 
@@ -145,7 +54,7 @@ enum Attributes<S> {
     /// divided by 0 as the course's floats do it, giving infinities and NaN.
     AtInfinity([f64; ATTRIBUTES]),
 }
-type Vertex<S> = Vec<S>;
+pub(super) type Vertex<S> = Vec<S>;
 
 /// Runs a case in an arithmetic.
 pub fn render(case: &Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
@@ -624,119 +533,10 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     }
 }
 
-/// Whether a screen triangle's vertices run clockwise as the image shows
-/// them (y down), the front faces `cull` keeps.
-fn clockwise<S: Scalar>(v: &[Vertex<S>]) -> bool {
-    let cross =
-        v[1][0].sub(&v[0][0]).mul(&v[2][1].sub(&v[0][1])).sub(&v[2][0].sub(&v[0][0]).mul(&v[1][1].sub(&v[0][1])));
-    cross < S::int(0)
-}
-
-/// The view volume's planes, in the order clipped: near and far first
-/// (−w ≤ z ≤ w), then −w ≤ x ≤ w and −w ≤ y ≤ w; each as (axis, sign).
-const PLANES: [(usize, i8); 6] = [(2, -1), (2, 1), (0, -1), (0, 1), (1, -1), (1, 1)];
-
-/// Clips a triangle in clip space to the view volume (Sutherland–Hodgman, one
-/// plane at a time), interpolating every component linearly.
-fn clip<S: Scalar>(polygon: Vec<Vertex<S>>) -> Vec<Vertex<S>> {
-    let zero = S::int(0);
-    let mut polygon = polygon;
-    for (axis, sign) in PLANES {
-        // How far inside the plane: w − x for x ≤ w, w + x for −w ≤ x.
-        let distance = |v: &Vertex<S>| if sign > 0 { v[3].sub(&v[axis]) } else { v[3].add(&v[axis]) };
-        let mut out = Vec::new();
-        for i in 0..polygon.len() {
-            let (a, b) = (&polygon[i], &polygon[(i + 1) % polygon.len()]);
-            let (da, db) = (distance(a), distance(b));
-            if da >= zero {
-                out.push(a.clone());
-            }
-            if (da >= zero) != (db >= zero) {
-                // Where the edge a → b crosses the plane, measured from b.
-                let t = db.div(&db.sub(&da));
-                out.push(b.iter().zip(a).map(|(x, y)| x.add(&t.mul(&y.sub(x)))).collect());
-            }
-        }
-        polygon = out;
-        if polygon.len() < 3 {
-            return Vec::new();
-        }
-    }
-    polygon
-}
-
-/// The course's DDA: from `a` to `b` along coordinate `d`, every point where
-/// `d` is an integer, `a_d` included when it is one, `b_d` never.
-struct Dda<S> {
-    p: Vec<S>,
-    s: Vec<S>,
-    end: S,
-    d: usize,
-}
-
-impl<S: Scalar> Dda<S> {
-    fn new(a: &[S], b: &[S], d: usize) -> Option<Dda<S>> {
-        if a[d] == b[d] {
-            return None;
-        }
-        let (a, b) = if a[d] > b[d] { (b, a) } else { (a, b) };
-        let delta = b[d].sub(&a[d]);
-        let s: Vec<S> = a.iter().zip(b).map(|(x, y)| y.sub(x).div(&delta)).collect();
-        let e = a[d].ceil().sub(&a[d]);
-        let p = a.iter().zip(&s).map(|(x, step)| x.add(&e.mul(step))).collect();
-        Some(Dda { p, s, end: b[d].clone(), d })
-    }
-
-    fn live(&self) -> bool {
-        self.p[self.d] < self.end
-    }
-
-    /// The integer the point has reached along `d`.
-    fn at(&self) -> i64 {
-        self.p[self.d].to_f64().round() as i64
-    }
-
-    /// Steps (with `follow` in step) while live and before `target` along
-    /// `d`, as the walk would. In exact arithmetic it jumps there at once,
-    /// to the same point: `⌈min(target, end) − p_d⌉` steps of `s` added as one.
-    fn skip_before(&mut self, target: i64, mut follow: Option<&mut Dda<S>>) {
-        if !S::EXACT {
-            while self.live() && self.at() < target {
-                self.step();
-                if let Some(f) = follow.as_deref_mut() {
-                    f.step();
-                }
-            }
-            return;
-        }
-        let target = S::int(target);
-        if self.p[self.d] >= target {
-            return;
-        }
-        let bound = if self.end < target { self.end.clone() } else { target };
-        let steps = bound.sub(&self.p[self.d]).ceil();
-        self.advance(&steps);
-        if let Some(f) = follow {
-            f.advance(&steps);
-        }
-    }
-
-    fn advance(&mut self, steps: &S) {
-        for (p, s) in self.p.iter_mut().zip(&self.s) {
-            *p = p.add(&s.mul(steps));
-        }
-    }
-
-    fn step(&mut self) {
-        for (p, s) in self.p.iter_mut().zip(&self.s) {
-            *p = p.add(s);
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_bigint::BigInt;
 
     #[test]
     fn numbers_keep_their_exact_value() {
