@@ -58,7 +58,7 @@
 //!
 //! ```
 //! use std::path::Path;
-//! use zsim::{pipeline::Simulation, scene::Scene, trace::Unobserved};
+//! use zsim::{Scene, Simulation, Unobserved};
 //!
 //! let scene = Scene::from_json(
 //!     r#"{"width": 4, "height": 3, "polygons": [
@@ -92,7 +92,9 @@ mod teach;
 pub use courses::{buet, cs418};
 pub use effects::{accuracy, antialias, arith, variants};
 pub use error::{Error, PolygonProblem};
-pub use numbers::{Exact, NumberError, Q, decimal, exact_and_decimal, fraction, parse_number, to_f64};
+pub use numbers::{
+    Exact, NumberError, Q, decimal, exact_and_decimal, fraction, parse_exact, parse_number, short, to_f64,
+};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
 pub use observe::{check, explain, figure, report, tie};
 pub use raster::convert::{Scratch, rasterize};

@@ -160,7 +160,7 @@ impl PartialOrd for Exact {
 /// integers: 55 significant bits by long division, then a sticky bit.
 ///
 /// ```
-/// use zsim::exact::{to_f64, Q};
+/// use zsim::{to_f64, Q};
 /// assert_eq!(to_f64(Q::new(1, 10)), 0.1);
 /// assert_eq!(to_f64(Q::new(-979798, 1000000)), -0.979798);
 /// ```

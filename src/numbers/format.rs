@@ -36,7 +36,7 @@ pub fn big_integer(value: &num_bigint::BigInt) -> String {
 /// separator is the language's (`12,5` in Russian).
 ///
 /// ```
-/// use zsim::exact::{Q, short};
+/// use zsim::{Q, short};
 /// assert_eq!((short(Q::new(13, 2)), short(Q::new(43, 8)), short(Q::new(41, 3))), ("6.5".into(), "5.375".into(), "41/3".into()));
 /// ```
 pub fn short(value: impl Into<Exact>) -> String {

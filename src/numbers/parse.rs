@@ -41,7 +41,7 @@ impl fmt::Display for NumberError {
 /// floating point: `2.1` is `21/10`.
 ///
 /// ```
-/// use zsim::exact::{parse_number, Q};
+/// use zsim::{parse_number, Q};
 /// assert_eq!(parse_number("2.1").unwrap(), Q::new(21, 10));
 /// assert_eq!(parse_number("-5/2").unwrap(), Q::new(-5, 2));
 /// assert!(parse_number("1/0").is_err());
@@ -143,7 +143,7 @@ pub const MAX_BIG_DIGITS: usize = 1000;
 /// fits, a big one where not (for vertex coordinates).
 ///
 /// ```
-/// use zsim::exact::{parse_exact, Exact, Q};
+/// use zsim::{parse_exact, Exact, Q};
 /// assert_eq!(parse_exact("2.5").unwrap(), Exact::Word(Q::new(5, 2)));
 /// assert!(parse_exact("0.1234567890123456789012345678901234567890").unwrap().word().is_none());
 /// ```

@@ -26,8 +26,8 @@ pub fn read_text(path: &Path) -> Result<String, Error> {
 /// retitle nor recolour a terminal, nor break a one-line message.
 ///
 /// ```
-/// assert_eq!(zsim::text::printable("\u{1b}[31mred"), "\\u{1b}[31mred");
-/// assert_eq!(zsim::text::printable("plain"), "plain");
+/// assert_eq!(zsim::printable("\u{1b}[31mred"), "\\u{1b}[31mred");
+/// assert_eq!(zsim::printable("plain"), "plain");
 /// ```
 pub fn printable(text: &str) -> Cow<'_, str> {
     if !text.chars().any(char::is_control) {
