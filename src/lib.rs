@@ -74,6 +74,7 @@
 //! ]);
 //! ```
 #![warn(missing_docs)]
+#![warn(clippy::print_stdout, clippy::print_stderr)]
 
 #[macro_use]
 mod words;

@@ -20,8 +20,8 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{Signed, ToPrimitive, Zero};
 
-use crate::geometry::plane::{GeometryError, OffPlane, PlaneEquation};
-use crate::numbers::Exact;
+use crate::geometry::newell::{first_off_plane, newell};
+use crate::geometry::plane::{GeometryError, PlaneEquation, not_planar};
 use crate::rules::RowRule;
 
 pub(crate) fn big(v: i128) -> BigInt {
@@ -124,18 +124,6 @@ fn words<const N: usize>(values: &[BigInt; N]) -> Option<[i128; N]> {
     values.iter().all(Option::is_some).then(|| values.map(|v| v.expect("checked")))
 }
 
-/// Newell's normal of scaled points (seed 002), in big integers.
-fn newell(points: &[[BigInt; 3]]) -> [BigInt; 3] {
-    let mut normal = [BigInt::zero(), BigInt::zero(), BigInt::zero()];
-    for (i, p) in points.iter().enumerate() {
-        let q = &points[(i + 1) % points.len()];
-        normal[0] += (&p[1] - &q[1]) * (&p[2] + &q[2]);
-        normal[1] += (&p[2] - &q[2]) * (&p[0] + &q[0]);
-        normal[2] += (&p[0] - &q[0]) * (&p[1] + &q[1]);
-    }
-    normal
-}
-
 /// The plane with `normal` through `point` (both in scaled units, scale
 /// `2D`) in pixel units, reduced and signed as the book prints it (see
 /// [`crate::geometry::plane::Geometry::plane`]). In scaled units the plane is
@@ -146,46 +134,6 @@ pub(crate) fn plane_through(normal: &[BigInt; 3], point: &[BigInt; 3], scale: &B
     let d = -(a * &point[0] + b * &point[1] + c * &point[2]);
     let [a, b, c, d] = reduced([a * scale, b * scale, c * scale, d], 3);
     PlaneEquation { a, b, c, d }
-}
-
-/// The planarity check: every vertex on the plane through vertex 1 and the
-/// first two vertices not collinear with it (as the word tiers check it).
-fn check_planar(points: &[[BigInt; 3]], scale: &BigInt) -> Result<(), GeometryError> {
-    let p1 = &points[0];
-    let sub = |p: &[BigInt; 3]| [&p[0] - &p1[0], &p[1] - &p1[1], &p[2] - &p1[2]];
-    let Some(i) = points.iter().position(|p| p != p1) else { return Ok(()) };
-    let u = sub(&points[i]);
-    let found = points.iter().enumerate().skip(i + 1).find_map(|(k, p)| {
-        let v = sub(p);
-        let n = [&u[1] * &v[2] - &u[2] * &v[1], &u[2] * &v[0] - &u[0] * &v[2], &u[0] * &v[1] - &u[1] * &v[0]];
-        (!n.iter().all(Zero::is_zero)).then_some((k, n))
-    });
-    let Some((k, normal)) = found else { return Ok(()) };
-    for (index, point) in points.iter().enumerate() {
-        let w = sub(point);
-        let residual = &normal[0] * &w[0] + &normal[1] * &w[1] + &normal[2] * &w[2];
-        if residual.is_zero() {
-            continue;
-        }
-        let plane = plane_through(&normal, p1, scale);
-        let (off_by, along_z) = if normal[2].is_zero() {
-            // Without a z term, the reduced equation's value at the vertex.
-            let PlaneEquation { a, b, c, d } = &plane;
-            let value = a * &point[0] + b * &point[1] + c * &point[2] + d * scale;
-            (Exact::from_big(value, scale.clone()), false)
-        } else {
-            // residual = n_z·ΔZ in scaled units, and Δz = ΔZ / 2D.
-            (Exact::from_big(residual, &normal[2] * scale), true)
-        };
-        return Err(GeometryError::NotPlanar(Box::new(OffPlane {
-            vertex: index + 1,
-            through: [1, i + 1, k + 1],
-            plane,
-            off_by,
-            along_z,
-        })));
-    }
-    Ok(())
 }
 
 /// The line through scaled points `p` and `q` (`p_y ≠ q_y`) in pixel units,
@@ -223,7 +171,9 @@ impl BigPolygon {
     /// are checked.
     pub(crate) fn new(points: Vec<[BigInt; 3]>, denominator: BigInt) -> Result<BigPolygon, GeometryError> {
         let scale = &denominator * 2;
-        check_planar(&points, &scale)?;
+        if let Some(off) = first_off_plane(&points) {
+            return Err(not_planar(off, &points, &scale));
+        }
         let newell = newell(&points);
         let plane = plane_through(&newell, &points[0], &scale);
         // (A, B, C) with Newell's orientation: the plane's is the last non-zero made positive.

@@ -1,3 +1,4 @@
 //! Geometry: a polygon's plane and edges in exact integers.
 pub mod big;
+pub mod newell;
 pub mod plane;

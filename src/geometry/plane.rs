@@ -16,6 +16,7 @@ use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
+use crate::geometry::newell::{OffPlaneVertex, first_off_plane, newell};
 use crate::numbers::{Exact, Q};
 
 /// Largest allowed magnitude of a scaled coordinate `|x·2D|`.
@@ -397,46 +398,46 @@ impl Geometry {
     }
 
     /// Checks every vertex against the plane through vertex 1 and the first two
-    /// vertices that are not collinear with it, so that the vertex named is the
-    /// first one off that plane (Newell's averaged normal would blame others).
+    /// vertices that are not collinear with it ([`first_off_plane`]).
     fn check_planar(&self) -> Result<(), GeometryError> {
-        let p1 = self.points[0];
-        let sub = |p: [i128; 3]| [p[0] - p1[0], p[1] - p1[1], p[2] - p1[2]];
-        let Some(i) = self.points.iter().position(|p| *p != p1) else { return Ok(()) };
-        let u = sub(self.points[i]);
-        let found = self.points.iter().enumerate().skip(i + 1).find_map(|(k, p)| {
-            let v = sub(*p);
-            let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
-            (n != [0, 0, 0]).then_some((k, n))
-        });
-        let Some((k, normal)) = found else { return Ok(()) };
-        for (index, point) in self.points.iter().enumerate() {
-            let w = sub(*point);
-            // Bounded by 3·8R²·2R < 2^108 (see MAX_SCALED).
-            let residual = normal[0] * w[0] + normal[1] * w[1] + normal[2] * w[2];
-            if residual == 0 {
-                continue;
-            }
-            let plane = reduced_plane(normal, p1, self.scale());
-            let (off_by, along_z) = if normal[2] != 0 {
-                // residual = n_z·ΔZ in scaled units, and Δz = ΔZ / 2D.
-                (Exact::Word(Q::new(residual, normal[2] * self.scale())), true)
-            } else {
-                // Without a z term, report the reduced equation's value at the vertex.
-                let [x, y, z] = point.map(|v| BigRational::new(v.into(), self.scale().into()));
-                let PlaneEquation { a, b, c, d } = &plane;
-                (Exact::from(x * a + y * b + z * c + BigRational::from_integer(d.clone())), false)
-            };
-            return Err(GeometryError::NotPlanar(Box::new(OffPlane {
-                vertex: index + 1,
-                through: [1, i + 1, k + 1],
-                plane,
-                off_by,
-                along_z,
-            })));
-        }
-        Ok(())
+        // In i128: bounded by 3·8R²·2R < 2^108 (see MAX_SCALED).
+        let Some(off) = first_off_plane(&self.points) else { return Ok(()) };
+        let big = |p: &[i128; 3]| p.map(BigInt::from);
+        let points: Vec<[BigInt; 3]> = self.points.iter().map(big).collect();
+        let off = OffPlaneVertex {
+            vertex: off.vertex,
+            through: off.through,
+            normal: big(&off.normal),
+            residual: off.residual.into(),
+        };
+        Err(not_planar(off, &points, &BigInt::from(self.scale())))
     }
+}
+
+/// The error for a polygon with a vertex off its plane, in big integers on
+/// every tier (the word tiers' values are widened on this path only): the
+/// plane through vertex 1 and the two that fix it, and how far off the vertex
+/// lies, along z where the plane has a z term, else the reduced equation's
+/// value there.
+pub(crate) fn not_planar(off: OffPlaneVertex<BigInt>, points: &[[BigInt; 3]], scale: &BigInt) -> GeometryError {
+    let OffPlaneVertex { vertex, through: [i, k], normal, residual } = off;
+    let plane = crate::geometry::big::plane_through(&normal, &points[0], scale);
+    let (off_by, along_z) = if normal[2].is_zero() {
+        let PlaneEquation { a, b, c, d } = &plane;
+        let point = &points[vertex];
+        let value = a * &point[0] + b * &point[1] + c * &point[2] + d * scale;
+        (Exact::from_big(value, scale.clone()), false)
+    } else {
+        // residual = n_z·ΔZ in scaled units, and Δz = ΔZ / 2D.
+        (Exact::from_big(residual, &normal[2] * scale), true)
+    };
+    GeometryError::NotPlanar(Box::new(OffPlane {
+        vertex: vertex + 1,
+        through: [1, i + 1, k + 1],
+        plane,
+        off_by,
+        along_z,
+    }))
 }
 
 /// The plane with `normal` (scaled units) through `point` (scaled units), in
@@ -475,20 +476,6 @@ impl Coordinate for Exact {
     fn big(&self) -> BigRational {
         self.to_big()
     }
-}
-
-/// Newell's method (seed 002): `a = Σ(yᵢ − yᵢ₊₁)(zᵢ + zᵢ₊₁)`,
-/// `b = Σ(zᵢ − zᵢ₊₁)(xᵢ + xᵢ₊₁)`, `c = Σ(xᵢ − xᵢ₊₁)(yᵢ + yᵢ₊₁)`, indices
-/// taken around the polygon.
-pub fn newell(points: &[[i128; 3]]) -> [i128; 3] {
-    let mut normal = [0i128; 3];
-    for (i, p) in points.iter().enumerate() {
-        let q = points[(i + 1) % points.len()];
-        normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
-        normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
-        normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
-    normal
 }
 
 #[cfg(test)]

@@ -10,9 +10,11 @@
 mod exact;
 mod format;
 mod parse;
+mod ring;
 mod word;
 
 pub use exact::*;
 pub use format::*;
 pub use parse::*;
+pub use ring::Ring;
 pub use word::*;

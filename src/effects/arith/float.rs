@@ -6,6 +6,8 @@ use std::hint::select_unpredictable;
 use num_traits::{AsPrimitive, Float};
 
 use super::*;
+use crate::geometry::newell::newell;
+use crate::numbers::Ring;
 
 /// A polygon in floating point: vertices and Newell's plane.
 pub struct FloatPolygon<F> {
@@ -15,16 +17,10 @@ pub struct FloatPolygon<F> {
     pub(super) value: u32,
 }
 
-pub(super) fn prepare<F: Float>(vertices: &[[Exact; 3]], value: u32) -> FloatPolygon<F> {
+pub(super) fn prepare<F: Float + Ring>(vertices: &[[Exact; 3]], value: u32) -> FloatPolygon<F> {
     let convert = |v: &Exact| F::from(to_f64(v)).unwrap_or_else(F::nan);
     let points: Vec<[F; 3]> = vertices.iter().map(|v| v.each_ref().map(convert)).collect();
-    let (mut a, mut b, mut c) = (F::zero(), F::zero(), F::zero());
-    for (i, p) in points.iter().enumerate() {
-        let q = points[(i + 1) % points.len()];
-        a = a + (p[1] - q[1]) * (p[2] + q[2]);
-        b = b + (p[2] - q[2]) * (p[0] + q[0]);
-        c = c + (p[0] - q[0]) * (p[1] + q[1]);
-    }
+    let [a, b, c] = newell(&points);
     let d = -(a * points[0][0] + b * points[0][1] + c * points[0][2]);
     FloatPolygon { points, plane: [a, b, c, d], value }
 }
@@ -208,7 +204,7 @@ pub(super) fn draw_walked<F: Float + AsPrimitive<u32>, C: FrameCell>(
     }
 }
 
-pub(super) fn scanline_in<F: Float>(scene: &Scene, index: usize, row: u32, incremental: bool) -> FloatScanline {
+pub(super) fn scanline_in<F: Float + Ring>(scene: &Scene, index: usize, row: u32, incremental: bool) -> FloatScanline {
     let polygon = &scene.polygons[index];
     let p = prepare::<F>(&polygon.vertices, polygon.value);
     let mut walker = FloatWalker::new(&p, incremental);

@@ -185,7 +185,7 @@ fn exact_raster(scene: &Scene) -> (Buffers, Stats) {
 }
 
 /// Every polygon drawn (by the exact fate) converted to `F`; `None` for the others.
-fn prepare_scene<F: Float>(scene: &Scene) -> Vec<Option<FloatPolygon<F>>> {
+fn prepare_scene<F: Float + crate::numbers::Ring>(scene: &Scene) -> Vec<Option<FloatPolygon<F>>> {
     (0..scene.polygons.len())
         .map(|i| (fate(scene, i) == Fate::Drawn).then(|| prepare(&scene.polygons[i].vertices, scene.polygons[i].value)))
         .collect()
