@@ -68,7 +68,7 @@ fn stages(c: &mut Criterion) {
                     frame: &mut frame,
                     depth: &mut depth,
                 };
-                rasterize(&polygon.geometry, scene.rules, rect, &mut scratch, &mut sink);
+                rasterize(polygon.geometry(), scene.rules, rect, &mut scratch, &mut sink);
             }
             depth[0]
         })

@@ -159,7 +159,7 @@ fn euc_vertices(scene: &Scene) -> Vec<([f32; 4], u8)> {
         .polygons
         .iter()
         .flat_map(|p| {
-            p.vertices.iter().map(move |v| {
+            p.vertices().iter().map(move |v| {
                 let [x, y, z] = v.each_ref().map(zsim::to_f64);
                 ([(2.0 * x / w - 1.0) as f32, (2.0 * y / h - 1.0) as f32, z as f32, 1.0], p.value as u8)
             })

@@ -45,8 +45,8 @@ pub enum Error {
     },
     /// One polygon is unusable.
     Polygon {
-        /// The scene file.
-        path: PathBuf,
+        /// Where the polygon came from.
+        origin: PolygonOrigin,
         /// 0-based index in the scene.
         index: usize,
         /// The polygon's name.
@@ -54,8 +54,8 @@ pub enum Error {
         /// What is wrong.
         problem: Box<PolygonProblem>,
     },
-    /// A command-line argument that does not fit the scene.
-    Usage(String),
+    /// A command-line request that does not fit the command or the scene.
+    Usage(Usage),
     /// An answer file (for `check`) that is malformed or the wrong shape.
     Answer {
         /// The answer file.
@@ -63,6 +63,323 @@ pub enum Error {
         /// What was found.
         message: String,
     },
+}
+
+/// Where a polygon with a problem came from: a file, or zsim's own
+/// transformation of one (named as such, not as an invented path).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PolygonOrigin {
+    /// The scene file that gives it.
+    File(PathBuf),
+    /// The scene supersampled `factor`× for antialiasing.
+    Supersampled {
+        /// The factor.
+        factor: u32,
+    },
+    /// The scene snapped to `bits` fractional bits (`--arith fixed:K`).
+    Snapped {
+        /// The fractional bits.
+        bits: u32,
+    },
+}
+
+/// What a command needs done differently: each with the facts its message
+/// states, worded by the catalogues in the reader's language.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Usage {
+    /// An inexact `--arith` on a scene with other rules or effects.
+    ArithNeedsPlainRules {
+        /// The mode, as written.
+        arith: String,
+    },
+    /// An inexact `--arith` on a scene with another depth test.
+    ArithNeedsGreaterOrLess {
+        /// The mode, as written.
+        arith: String,
+        /// The scene's depth test.
+        test: String,
+    },
+    /// An inexact `--arith` with `--segments` or `--order`.
+    ArithPlainLoopOnly,
+    /// `--after N` past the last polygon.
+    NoPolygonNumbered {
+        /// N.
+        number: usize,
+        /// How many polygons the scene has.
+        count: usize,
+    },
+    /// `--after NAME` that no polygon has.
+    NoPolygonNamed {
+        /// The name asked for.
+        name: String,
+        /// The scene's polygon names.
+        names: Vec<String>,
+    },
+    /// A pixel outside the raster.
+    PixelOutside {
+        /// Its column.
+        x: u32,
+        /// Its row.
+        y: u32,
+        /// The raster's width.
+        width: u32,
+        /// The raster's height.
+        height: u32,
+    },
+    /// A figure file that is neither SVG nor PNG.
+    FigureFormat {
+        /// The file asked for.
+        path: PathBuf,
+    },
+    /// A raster too large for a figure.
+    FigureTooLarge {
+        /// The scene file.
+        path: PathBuf,
+        /// The raster's width.
+        width: u32,
+        /// The raster's height.
+        height: u32,
+        /// The largest side a figure draws.
+        max: u32,
+    },
+    /// The PNG renderer failed.
+    PngFailed {
+        /// The PNG asked for.
+        path: PathBuf,
+        /// What failed.
+        reason: String,
+    },
+    /// A scene without polygons given to a command that needs one.
+    NoPolygons {
+        /// The scene file.
+        path: PathBuf,
+        /// The command.
+        task: Task,
+    },
+    /// A scene keeping exact depths, whose z-buffer has no integer matrix.
+    ExactDepthsHaveNoMatrix {
+        /// The scene file.
+        path: PathBuf,
+        /// The command.
+        task: Task,
+    },
+    /// `check` with neither `--frame` nor `--depth`.
+    CheckNeedsAnswer,
+    /// A class folder without answer files.
+    NoAnswersFound {
+        /// The folder.
+        class: PathBuf,
+    },
+    /// `accuracy --scenes` out of range.
+    ScenesOutOfRange,
+    /// `memory --frame-bits`/`--depth-bits` out of range.
+    MemoryBits {
+        /// The option.
+        option: &'static str,
+        /// The bits given.
+        bits: u32,
+    },
+    /// `memory` with a zero size.
+    MemoryZeroSize,
+    /// `memory` on a raster of more than 2^50 cells.
+    MemoryTooLarge,
+    /// `random --count` too large.
+    RandomCount {
+        /// The count given.
+        count: usize,
+        /// The largest allowed.
+        max: usize,
+    },
+    /// `random --frame-bits`/`--depth-bits` out of range.
+    RandomBits,
+    /// `random --width`/`--height` out of range.
+    RandomSide {
+        /// The largest side.
+        max: u32,
+    },
+    /// `exercise --hard` names an unknown case.
+    NotAHardCase {
+        /// The name given.
+        name: String,
+        /// The names of the hard cases.
+        names: Vec<String>,
+    },
+    /// `exercise --size` out of range.
+    ExerciseSize {
+        /// The width given.
+        width: u32,
+        /// The height given.
+        height: u32,
+    },
+    /// `exercise --polygons` out of range.
+    ExercisePolygons {
+        /// The count given.
+        count: usize,
+    },
+    /// `exercise` bits out of range for work by hand.
+    ExerciseBits,
+    /// `hidden` or `intersecting` asked of one polygon.
+    ExerciseNeedsTwoPolygons,
+    /// No candidate scene showed every case asked for.
+    ExerciseNotFound {
+        /// Polygons asked for.
+        polygons: usize,
+        /// The raster's width.
+        width: u32,
+        /// The raster's height.
+        height: u32,
+        /// The cases asked for.
+        cases: Vec<String>,
+        /// Candidates tried.
+        tries: usize,
+    },
+    /// `--inside` without `--order pixels`.
+    InsideNeedsPixelOrder,
+    /// `--tile` or `--threads` with a format other than `none`.
+    TilesNeedFormatNone,
+    /// `--format none` with a variant of the loop.
+    FormatNoneIsPlain,
+    /// `step --polygon` on a polygon that is not drawn.
+    NoScanlines {
+        /// 0-based polygon index.
+        index: usize,
+        /// Its name.
+        name: String,
+        /// Why it is not drawn, in words.
+        why: String,
+    },
+    /// `step --scanline` on a row the polygon does not reach.
+    ScanlineNotReached {
+        /// 0-based polygon index.
+        index: usize,
+        /// Its name.
+        name: String,
+        /// The row asked for.
+        row: u32,
+        /// The first and last rows it reaches, if any.
+        rows: Option<(u32, u32)>,
+    },
+}
+
+/// The command a [`Usage`] error comes from, where the wording depends on it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Task {
+    /// `figure`.
+    Draw,
+    /// `grade`.
+    Grade,
+    /// `check`.
+    Check,
+}
+
+impl From<Usage> for Error {
+    fn from(usage: Usage) -> Error {
+        Error::Usage(usage)
+    }
+}
+
+fn quoted_list(items: &[String]) -> String {
+    items.iter().map(|item| format!("\"{item}\"")).collect::<Vec<_>>().join(", ")
+}
+
+impl fmt::Display for Usage {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let path = |p: &PathBuf| p.display().to_string();
+        let text = match self {
+            Usage::ArithNeedsPlainRules { arith } => words!("usage-arith-plain-rules", arith = arith),
+            Usage::ArithNeedsGreaterOrLess { arith, test } => {
+                words!("usage-arith-greater-or-less", arith = arith, test = test)
+            }
+            Usage::ArithPlainLoopOnly => words!("usage-arith-plain-loop"),
+            Usage::NoPolygonNumbered { number, count } => {
+                words!("usage-no-polygon-numbered", number = number.to_string(), count = count.to_string())
+            }
+            Usage::NoPolygonNamed { name, names } => {
+                words!("usage-no-polygon-named", name = name, names = quoted_list(names))
+            }
+            Usage::PixelOutside { x, y, width, height } => words!(
+                "usage-pixel-outside",
+                x = x.to_string(),
+                y = y.to_string(),
+                width = width.to_string(),
+                height = height.to_string(),
+                last_x = (width - 1).to_string(),
+                last_y = (height - 1).to_string()
+            ),
+            Usage::FigureFormat { path: p } => words!("usage-figure-format", path = path(p)),
+            Usage::FigureTooLarge { path: p, width, height, max } => words!(
+                "usage-figure-too-large",
+                path = path(p),
+                width = width.to_string(),
+                height = height.to_string(),
+                max = max.to_string()
+            ),
+            Usage::PngFailed { path: p, reason } => words!("usage-png-failed", path = path(p), reason = reason),
+            Usage::NoPolygons { path: p, task } => match task {
+                Task::Draw => words!("usage-no-polygons-draw", path = path(p)),
+                Task::Grade => words!("usage-no-polygons-grade", path = path(p)),
+                Task::Check => words!("usage-no-polygons-check", path = path(p)),
+            },
+            Usage::ExactDepthsHaveNoMatrix { path: p, task } => match task {
+                Task::Grade => words!("usage-exact-depths-grade", path = path(p)),
+                Task::Draw | Task::Check => words!("usage-exact-depths-check", path = path(p)),
+            },
+            Usage::CheckNeedsAnswer => words!("usage-check-needs-answer"),
+            Usage::NoAnswersFound { class } => words!("usage-no-answers", path = path(class)),
+            Usage::ScenesOutOfRange => words!("usage-scenes-range"),
+            Usage::MemoryBits { option, bits } => {
+                words!("usage-memory-bits", option = *option, bits = bits.to_string())
+            }
+            Usage::MemoryZeroSize => words!("usage-memory-zero"),
+            Usage::MemoryTooLarge => words!("usage-memory-too-large"),
+            Usage::RandomCount { count, max } => {
+                words!("usage-random-count", count = count.to_string(), max = max.to_string())
+            }
+            Usage::RandomBits => words!("usage-random-bits"),
+            Usage::RandomSide { max } => words!("usage-random-side", max = max.to_string()),
+            Usage::NotAHardCase { name, names } => {
+                words!("usage-not-a-hard-case", name = name, names = names.join(", "))
+            }
+            Usage::ExerciseSize { width, height } => {
+                words!("usage-exercise-size", width = width.to_string(), height = height.to_string())
+            }
+            Usage::ExercisePolygons { count } => words!("usage-exercise-polygons", count = count.to_string()),
+            Usage::ExerciseBits => words!("usage-exercise-bits"),
+            Usage::ExerciseNeedsTwoPolygons => words!("usage-exercise-two-polygons"),
+            Usage::ExerciseNotFound { polygons, width, height, cases, tries } => words!(
+                "usage-exercise-not-found",
+                polygons = polygons.to_string(),
+                width = width.to_string(),
+                height = height.to_string(),
+                cases = cases.join(", "),
+                tries = tries.to_string()
+            ),
+            Usage::InsideNeedsPixelOrder => words!("usage-inside-needs-pixel-order"),
+            Usage::TilesNeedFormatNone => words!("usage-tiles-need-format-none"),
+            Usage::FormatNoneIsPlain => words!("usage-format-none-is-plain"),
+            Usage::NoScanlines { index, name, why } => {
+                words!(
+                    "usage-no-scanlines",
+                    polygon = crate::words::polygon_label("polygon-name", *index, name),
+                    why = why
+                )
+            }
+            Usage::ScanlineNotReached { index, name, row, rows } => {
+                let reach = words!(
+                    "step-not-reach",
+                    polygon = crate::words::polygon_label("polygon-name", *index, name),
+                    scanline = words!("scanline", y = crate::words::localize_decimal(format!("{row}.5")))
+                );
+                match rows {
+                    Some((first, last)) => {
+                        words!("usage-scanline-rows", reach = reach, first = first.to_string(), last = last.to_string())
+                    }
+                    None => words!("usage-scanline-no-rows", reach = reach),
+                }
+            }
+        };
+        f.write_str(&text)
+    }
 }
 
 /// What is wrong with one polygon.
@@ -113,13 +430,18 @@ impl fmt::Display for Error {
                 }
             }
             Error::Setting { path, key, message } => write!(f, "{}: {key}: {message}", path.display()),
-            Error::Polygon { path, index, name, problem } => f.write_str(&words!(
+            Error::Polygon { origin, index, name, problem } => f.write_str(&words!(
                 "error-polygon",
-                path = path.display().to_string(),
+                path = match origin {
+                    PolygonOrigin::File(path) => path.display().to_string(),
+                    PolygonOrigin::Supersampled { factor } =>
+                        words!("origin-supersampled", factor = factor.to_string()),
+                    PolygonOrigin::Snapped { bits } => words!("origin-snapped", bits = bits.to_string()),
+                },
                 polygon = crate::words::polygon_label("polygon-name", *index, name),
                 problem = problem.to_string()
             )),
-            Error::Usage(message) => f.write_str(message),
+            Error::Usage(usage) => usage.fmt(f),
             Error::Answer { path, message } => write!(f, "{}: {message}", path.display()),
         }
     }

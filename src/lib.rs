@@ -92,10 +92,11 @@ mod teach;
 
 pub use courses::{buet, cs418};
 pub use effects::{accuracy, antialias, arith, variants};
-pub use error::{Error, PolygonProblem};
+pub use error::{Error, PolygonOrigin, PolygonProblem, Task, Usage};
 pub use numbers::{
     Exact, NumberError, Q, decimal, exact_and_decimal, fraction, parse_exact, parse_number, short, to_f64,
 };
+pub use observe::step::{Meant, PolygonTrace, Skip, Tracer, judge, skip_text};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
 pub use observe::{check, explain, figure, report, tie};
 pub use raster::convert::{Scratch, rasterize};

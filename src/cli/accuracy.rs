@@ -45,7 +45,7 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
 
 pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.scenes == 0 || args.scenes > 100 {
-        return Err(Error::Usage("--scenes takes 1 to 100".into()).into());
+        return Err(Error::from(zsim::Usage::ScenesOutOfRange).into());
     }
     let settings = Settings { seed: args.seed, width: args.size.0, height: args.size.1, scenes: args.scenes };
     let scenes = accuracy::scenes(&settings)?;

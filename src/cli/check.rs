@@ -51,10 +51,10 @@ pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer) -> Result<Matrix,
 pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(&args.scene)?;
     if args.frame.is_none() && args.depth.is_none() {
-        return Err(Error::Usage("check needs an answer: --frame FILE and/or --depth FILE".into()).into());
+        return Err(Error::from(zsim::Usage::CheckNeedsAnswer).into());
     }
     if scene.polygons.is_empty() {
-        return Err(Error::Usage(format!("{}: the scene has no polygons to check", args.scene.display())).into());
+        return Err(Error::from(zsim::Usage::NoPolygons { path: args.scene.clone(), task: zsim::Task::Check }).into());
     }
     let last = match &args.after {
         Some(spec) => scene.find_polygon(spec)?,
@@ -119,10 +119,10 @@ pub fn report(
         let expected = match buffer {
             Buffer::Frame => reference.frame_rows(),
             Buffer::Depth => reference.depth_level_rows().ok_or_else(|| {
-                Error::Usage(format!(
-                    "{}: this scene keeps exact depths, so its z-buffer has no integer matrix to check; check the framebuffer, or a BUET z_buffer.txt with `zsim buet check`",
-                    scene_path.display()
-                ))
+                Error::from(zsim::Usage::ExactDepthsHaveNoMatrix {
+                    path: scene_path.to_path_buf(),
+                    task: zsim::Task::Check,
+                })
             })?,
         };
         let hint = misreading(&answer, &expected);

@@ -57,10 +57,9 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         polygons: args.polygons,
         frame_bits: args.frame_bits,
         depth_bits: args.depth_bits,
-        hard: HardCase::parse_list(args.hard.as_deref().unwrap_or(""))
-            .map_err(|e| Error::Usage(format!("--hard: {e}")))?,
+        hard: HardCase::parse_list(args.hard.as_deref().unwrap_or("")).map_err(Error::from)?,
     };
-    let exercise = make(&spec).map_err(Error::Usage)?;
+    let exercise = make(&spec).map_err(Error::from)?;
     let dir = &args.output;
     std::fs::create_dir_all(dir).map_err(|source| Error::Write { path: dir.clone(), source })?;
     let write = |name: &str, text: &str| {

@@ -42,13 +42,7 @@ pub fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
 /// Checks that a pixel lies on the scene's raster.
 pub fn check_pixel(scene: &Scene, (x, y): (u32, u32)) -> Result<(), Error> {
     if x >= scene.width || y >= scene.height {
-        return Err(Error::Usage(format!(
-            "pixel ({x}, {y}) is outside the {}×{} raster (x 0 … {}, y 0 … {})",
-            scene.width,
-            scene.height,
-            scene.width - 1,
-            scene.height - 1
-        )));
+        return Err(zsim::Usage::PixelOutside { x, y, width: scene.width, height: scene.height }.into());
     }
     Ok(())
 }

@@ -46,25 +46,21 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         Some("svg") => Kind::Svg,
         Some("png") => Kind::Png,
         _ => {
-            return Err(Error::Usage(format!(
-                "{}: a figure is written as .svg or .png (for a PDF, convert the SVG, e.g. rsvg-convert -f pdf)",
-                args.output.display()
-            ))
-            .into());
+            return Err(Error::from(zsim::Usage::FigureFormat { path: args.output.clone() }).into());
         }
     };
     let scene = Scene::load(&args.scene)?;
     if scene.width > MAX_FIGURE_SIDE || scene.height > MAX_FIGURE_SIDE {
-        return Err(Error::Usage(format!(
-            "{}: a figure draws rasters up to {MAX_FIGURE_SIDE}×{MAX_FIGURE_SIDE}; this one is {}×{}",
-            args.scene.display(),
-            scene.width,
-            scene.height
-        ))
+        return Err(Error::from(zsim::Usage::FigureTooLarge {
+            path: args.scene.clone(),
+            width: scene.width,
+            height: scene.height,
+            max: MAX_FIGURE_SIDE,
+        })
         .into());
     }
     if scene.polygons.is_empty() {
-        return Err(Error::Usage(format!("{}: the scene has no polygons to draw", args.scene.display())).into());
+        return Err(Error::from(zsim::Usage::NoPolygons { path: args.scene.clone(), task: zsim::Task::Draw }).into());
     }
     // `--after 0`: nothing drawn yet, every polygon outlined with its vertices: a worksheet.
     let worksheet = args.after.as_deref() == Some("0");
@@ -111,7 +107,7 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
 
 /// The SVG drawn as a PNG at twice its size (text in the system's sans-serif font).
 fn png(svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
-    let failed = |why: String| Error::Usage(format!("{}: cannot draw the PNG: {why}", path.display()));
+    let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
     let mut options = resvg::usvg::Options::default();
     let fonts = options.fontdb_mut();
     fonts.load_system_fonts();

@@ -47,11 +47,11 @@ fn megabytes(bytes: u64) -> String {
 pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     for (name, bits) in [("--frame-bits", args.frame_bits), ("--depth-bits", args.depth_bits)] {
         if !(1..=64).contains(&bits) {
-            return Err(Error::Usage(format!("{name} {bits}: use 1 to 64 bits")).into());
+            return Err(Error::from(zsim::Usage::MemoryBits { option: name, bits }).into());
         }
     }
     if args.width == 0 || args.height == 0 || args.supersample == 0 {
-        return Err(Error::Usage("--width, --height and --supersample must be at least 1".into()).into());
+        return Err(Error::from(zsim::Usage::MemoryZeroSize).into());
     }
     if args
         .width
@@ -59,7 +59,7 @@ pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, 
         .and_then(|c| c.checked_mul(args.supersample.pow(2)))
         .is_none_or(|c| c > 1 << 50)
     {
-        return Err(Error::Usage("the raster is too large to count (more than 2^50 cells)".into()).into());
+        return Err(Error::from(zsim::Usage::MemoryTooLarge).into());
     }
     let [frame, depth] = memory(
         args.width,
@@ -144,18 +144,14 @@ const MAX_RANDOM_COUNT: usize = 10_000_000;
 
 pub fn random_command(args: &RandomArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.count > MAX_RANDOM_COUNT {
-        return Err(Error::Usage(format!(
-            "--count {}: at most {MAX_RANDOM_COUNT} triangles (a scene that large takes about 10 GB to read back)",
-            args.count
-        ))
-        .into());
+        return Err(Error::from(zsim::Usage::RandomCount { count: args.count, max: MAX_RANDOM_COUNT }).into());
     }
     if !(1..=32).contains(&args.frame_bits) || !(1..=32).contains(&args.depth_bits) {
-        return Err(Error::Usage("--frame-bits and --depth-bits take 1 to 32".into()).into());
+        return Err(Error::from(zsim::Usage::RandomBits).into());
     }
     let side = zsim::MAX_SIDE as u32;
     if !(1..=side).contains(&args.width) || !(1..=side).contains(&args.height) {
-        return Err(Error::Usage(format!("--width and --height take 1 to {side}")).into());
+        return Err(Error::from(zsim::Usage::RandomSide { max: side }).into());
     }
     let spec = RandomScene {
         count: args.count,

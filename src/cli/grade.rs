@@ -52,7 +52,7 @@ const MISTAKES_LISTED: usize = 10;
 pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(&args.scene)?;
     if scene.polygons.is_empty() {
-        return Err(Error::Usage(format!("{}: the scene has no polygons to grade", args.scene.display())).into());
+        return Err(Error::from(zsim::Usage::NoPolygons { path: args.scene.clone(), task: zsim::Task::Grade }).into());
     }
     let last = match &args.after {
         Some(spec) => scene.find_polygon(spec)?,
@@ -69,10 +69,7 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         let matrix = match buffer {
             Buffer::Frame => simulation.buffers().frame_rows(),
             Buffer::Depth => simulation.buffers().depth_level_rows().ok_or_else(|| {
-                Error::Usage(format!(
-                    "{}: this scene keeps exact depths, so its z-buffer has no integer matrix to grade; grade the framebuffers",
-                    args.scene.display()
-                ))
+                Error::from(zsim::Usage::ExactDepthsHaveNoMatrix { path: args.scene.clone(), task: zsim::Task::Grade })
             })?,
         };
         expected.push((buffer, matrix));
@@ -139,10 +136,7 @@ fn answer_files(class: &Path) -> Result<Vec<(String, Buffer, PathBuf)>, Error> {
         }
     }
     if files.is_empty() {
-        return Err(Error::Usage(format!(
-            "{}: no answers found: name each student's files NAME.frame.txt and/or NAME.depth.txt",
-            class.display()
-        )));
+        return Err(zsim::Usage::NoAnswersFound { class: class.to_path_buf() }.into());
     }
     files.sort_by(|a, b| a.0.cmp(&b.0).then((a.1 == Buffer::Depth).cmp(&(b.1 == Buffer::Depth))));
     Ok(files)

@@ -8,7 +8,7 @@ use zsim::exact_and_decimal;
 use zsim::explain::{pixel_reason, scanline_text};
 use zsim::report::{self, MatrixCell};
 
-use super::step::Tracer;
+use zsim::Tracer;
 
 /// The page for the whole scene: every scanline that covers a pixel, in order.
 pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {

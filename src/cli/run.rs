@@ -90,16 +90,10 @@ enum Format {
 
 pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.inside.is_some() && args.order != Order::Pixels {
-        return Err(zsim::Error::Usage(
-            "--inside chooses the point-in-polygon test of --order pixels; add --order pixels".into(),
-        )
-        .into());
+        return Err(zsim::Error::from(zsim::Usage::InsideNeedsPixelOrder).into());
     }
     if (args.tile.is_some() || args.threads.is_some()) && args.format != Format::None {
-        return Err(zsim::Error::Usage(
-            "--tile and --threads apply to --format none (the other formats show the state after each polygon, drawn in order)".into(),
-        )
-        .into());
+        return Err(zsim::Error::from(zsim::Usage::TilesNeedFormatNone).into());
     }
     let reading = Instant::now();
     let mut scene = Scene::load(&args.scene)?;
@@ -121,7 +115,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let json = args.format == Format::Json;
     if args.segments.is_some() || args.order == Order::Pixels || scene.effects.antialias.is_some() {
         if args.format == Format::None {
-            return Err(zsim::Error::Usage("--format none summarizes the z-buffer loop; use text or json with --segments, --order pixels or antialias".into()).into());
+            return Err(zsim::Error::from(zsim::Usage::FormatNoneIsPlain).into());
         }
         let variant = super::variants::Variant {
             segments: args.segments,
@@ -325,10 +319,7 @@ fn run_inexact(
 ) -> Result<Finish, Failure> {
     zsim::arith::check_supported(scene, args.arith)?;
     if args.segments.is_some() || args.order != Order::Polygons {
-        return Err(zsim::Error::Usage(
-            "--arith other than exact runs the plain z-buffer loop; drop --segments and --order".into(),
-        )
-        .into());
+        return Err(zsim::Error::from(zsim::Usage::ArithPlainLoopOnly).into());
     }
     let prepared = zsim::arith::Prepared::new(scene, args.arith)?;
     let rasterizing = Instant::now();

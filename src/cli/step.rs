@@ -6,14 +6,12 @@ use std::path::PathBuf;
 
 use clap::Args;
 use comfy_table::{Cell, Color, Table, presets};
-use zsim::Buffers;
 use zsim::Error;
-use zsim::Scene;
-use zsim::Simulation;
 use zsim::explain::{depth_text, fate_text, pixel_reason, polygon_name, scanline_text};
 use zsim::report::{self, MatrixStyle};
 use zsim::{Exact, Q, exact_and_decimal, fraction};
-use zsim::{Fate, Outcome, PixelEvent, Recorder, ScanlineRecord};
+use zsim::{Meant, Scene, Skip, Tracer, judge, skip_text};
+use zsim::{Outcome, PixelEvent};
 
 use super::{Failure, Finish, emit};
 
@@ -51,105 +49,6 @@ enum QuizMode {
     Coverage,
 }
 
-/// One polygon's recorded scanlines, with the buffers before it.
-pub(super) struct PolygonTrace {
-    pub(super) fate: Fate,
-    before: Buffers,
-    pub(super) scanlines: Vec<ScanlineRecord>,
-}
-
-/// Records polygons as the user reaches them.
-pub(super) struct Tracer<'s> {
-    pub(super) scene: &'s Scene,
-    simulation: Simulation<'s>,
-    traces: Vec<PolygonTrace>,
-    arith: zsim::arith::Arith,
-}
-
-impl<'s> Tracer<'s> {
-    pub(super) fn new(scene: &'s Scene, arith: zsim::arith::Arith) -> Tracer<'s> {
-        Tracer { scene, simulation: Simulation::new(scene), traces: Vec::new(), arith }
-    }
-
-    /// The trace of polygon `index`, drawing the polygons up to it if needed.
-    pub(super) fn trace(&mut self, index: usize) -> &PolygonTrace {
-        while self.traces.len() <= index {
-            let before = self.simulation.buffers().clone();
-            let mut recorder = Recorder::default();
-            self.simulation.draw_next(&mut recorder);
-            let fate = recorder.polygons.first().map_or(Fate::Drawn, |p| p.1);
-            self.traces.push(PolygonTrace { fate, before, scanlines: recorder.scanlines });
-        }
-        &self.traces[index]
-    }
-
-    /// The positions (polygon, scanline) that have covered pixels, after `from` (exclusive) or from the start.
-    pub(super) fn next_stop(&mut self, from: Option<(usize, usize)>) -> (Option<(usize, usize)>, Vec<String>) {
-        let mut skipped = Vec::new();
-        let (mut polygon, mut scanline) = match from {
-            Some((p, s)) => (p, s + 1),
-            None => (0, 0),
-        };
-        while polygon < self.scene.polygons.len() {
-            let scene = self.scene;
-            let trace = self.trace(polygon);
-            if let Some(text) = fate_text(trace.fate) {
-                skipped.push(format!("{}: {text}", polygon_name(scene, polygon)));
-            } else if trace.scanlines.is_empty() && scanline == 0 {
-                skipped.push(format!("{}: reaches no scanline of the raster", polygon_name(scene, polygon)));
-            }
-            while scanline < trace.scanlines.len() {
-                let record = &trace.scanlines[scanline];
-                if !record.pixels.is_empty() {
-                    return (Some((polygon, scanline)), skipped);
-                }
-                skipped.push(format!(
-                    "{}, scanline {}: no pixel centre covered{}",
-                    polygon_name(scene, polygon),
-                    scanline_text(record.row),
-                    if record.crossings.is_empty() { " (no crossings)" } else { "" }
-                ));
-                scanline += 1;
-            }
-            polygon += 1;
-            scanline = 0;
-        }
-        (None, skipped)
-    }
-
-    pub(super) fn previous_stop(&mut self, from: (usize, usize)) -> Option<(usize, usize)> {
-        let mut stops = Vec::new();
-        for polygon in 0..=from.0 {
-            let trace = self.trace(polygon);
-            for (k, record) in trace.scanlines.iter().enumerate() {
-                if !record.pixels.is_empty() && (polygon, k) < from {
-                    stops.push((polygon, k));
-                }
-            }
-        }
-        stops.pop()
-    }
-
-    /// The buffers after scanline `k` of polygon `p`.
-    pub(super) fn buffers_after(&mut self, p: usize, k: usize) -> Buffers {
-        self.buffers_through(p, k, usize::MAX)
-    }
-
-    /// The buffers after the scanlines before `k` of polygon `p` and the first
-    /// `pixels` covered pixels of scanline `k`.
-    pub(super) fn buffers_through(&mut self, p: usize, k: usize, pixels: usize) -> Buffers {
-        let trace = self.trace(p);
-        let mut buffers = trace.before.clone();
-        for (j, record) in trace.scanlines[..=k].iter().enumerate() {
-            let count = if j == k { pixels.min(record.pixels.len()) } else { record.pixels.len() };
-            for pixel in &record.pixels[..count] {
-                buffers.store(pixel.x, pixel.y, pixel.frame_after, pixel.stored_after.clone());
-            }
-        }
-        buffers
-    }
-}
-
 pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(&args.scene)?;
     zsim::arith::check_supported(&scene, args.arith)?;
@@ -168,19 +67,13 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         let polygon = scene.find_polygon(spec)?;
         let trace = tracer.trace(polygon);
         if let Some(text) = fate_text(trace.fate) {
-            return Err(Error::Usage(format!("{} has no scanlines: {text}", polygon_name(&scene, polygon))).into());
+            let name = scene.polygons[polygon].name.clone();
+            return Err(Error::from(zsim::Usage::NoScanlines { index: polygon, name, why: text }).into());
         }
         let Some(k) = trace.scanlines.iter().position(|r| r.row == row) else {
-            let rows = match (trace.scanlines.first(), trace.scanlines.last()) {
-                (Some(first), Some(last)) => format!("its rows are {} … {}", first.row, last.row),
-                _ => "it reaches no row of the raster".to_string(),
-            };
-            return Err(Error::Usage(format!(
-                "{} does not reach the scanline {}: {rows}",
-                polygon_name(&scene, polygon),
-                scanline_text(row)
-            ))
-            .into());
+            let rows = trace.scanlines.first().zip(trace.scanlines.last()).map(|(first, last)| (first.row, last.row));
+            let name = scene.polygons[polygon].name.clone();
+            return Err(Error::from(zsim::Usage::ScanlineNotReached { index: polygon, name, row, rows }).into());
         };
         if args.quiz.is_none() {
             emit(out, &stop_text(&mut tracer, polygon, k, color))?;
@@ -261,7 +154,7 @@ fn interactive(
         Some(at) => Some(at),
         None => {
             let (first, skipped) = tracer.next_stop(None);
-            emit(out, &mentions(&skipped))?;
+            emit(out, &mentions(scene, &skipped))?;
             first
         }
     };
@@ -300,7 +193,7 @@ fn interactive(
                     Some(at) => tracer.next_stop(Some(at)),
                     None => (None, Vec::new()),
                 };
-                emit(out, &mentions(&skipped))?;
+                emit(out, &mentions(scene, &skipped))?;
                 position = next;
             }
             Command::NextPolygon => {
@@ -310,7 +203,7 @@ fn interactive(
                 });
                 if from.is_some() {
                     let (next, skipped) = tracer.next_stop(from);
-                    emit(out, &mentions(&skipped))?;
+                    emit(out, &mentions(scene, &skipped))?;
                     position = next;
                 }
             }
@@ -405,39 +298,10 @@ enum Asked {
     Navigate(String),
 }
 
-/// Judges a quiz answer for a pixel: whether it is right, and what the
-/// student meant; `None` when the text is neither `-` nor a number. Right is
-/// the value the z-buffer holds after the pixel; for a pixel not written,
-/// `-` or the value it keeps. The line mode and the full-screen app both ask this.
-pub(super) fn judge(pixel: &PixelEvent, typed: &str) -> Option<(bool, Meant)> {
-    let written = pixel.outcome == Outcome::Written;
-    if typed == "-" {
-        return Some((!written, Meant::NotWritten));
-    }
-    let value = zsim::parse_number(typed).ok()?;
-    Some(match zsim::Exact::Word(value) == pixel.stored_after.value() {
-        true if written => (true, Meant::ValueWritten),
-        true => (true, Meant::ValueKept),
-        false => (false, Meant::Value),
-    })
-}
-
-/// What a quiz answer meant.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum Meant {
-    /// `-`: not written.
-    NotWritten,
-    /// The value written.
-    ValueWritten,
-    /// The value a pixel not written keeps.
-    ValueKept,
-    /// Some value.
-    Value,
-}
-
-impl Meant {
-    fn words(self) -> String {
-        match self {
+/// What a quiz answer meant, in words.
+fn meant_text(meant: Meant) -> String {
+    {
+        match meant {
             Meant::NotWritten => zsim::words!("meant-not-written"),
             Meant::ValueWritten => zsim::words!("meant-value-written"),
             Meant::ValueKept => zsim::words!("meant-value-kept"),
@@ -503,8 +367,8 @@ fn parse_columns(text: &str) -> Option<Vec<u32>> {
     Some(columns)
 }
 
-fn mentions(skipped: &[String]) -> String {
-    skipped.iter().map(|line| format!("  · {line}\n")).collect()
+fn mentions(scene: &Scene, skipped: &[Skip]) -> String {
+    skipped.iter().map(|skip| format!("  · {}\n", skip_text(scene, skip))).collect()
 }
 
 /// Asks the quiz questions of a stop: with `coverage`, first which centres
@@ -600,7 +464,7 @@ fn ask(
             )
         });
         let said = if right {
-            zsim::words!("quiz-said-meant", said = &answer.0, meant = meant.words())
+            zsim::words!("quiz-said-meant", said = &answer.0, meant = meant_text(meant))
         } else {
             zsim::words!("quiz-said", said = &answer.0)
         };
@@ -634,7 +498,7 @@ fn antialias_note(scene: &Scene) -> String {
 fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String {
     let scene = tracer.scene;
     let record = tracer.trace(p).scanlines[k].clone();
-    let geometry = &scene.polygons[p].geometry;
+    let geometry = scene.polygons[p].geometry();
     let slope = geometry.slope().map_or_else(String::new, fraction);
     let mut text = format!("\n── {}\n", report::polygon_heading(scene, p));
     text.push_str(&antialias_note(scene));
@@ -672,7 +536,7 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
     }
     // Centres exactly on the polygon's boundary along this scanline, and the rule deciding each.
     for x in 0..scene.width {
-        if let Some(tie) = zsim::tie::tie_text(scene.rules, &scene.polygons[p].vertices, x, record.row) {
+        if let Some(tie) = zsim::tie::tie_text(scene.rules, scene.polygons[p].vertices(), x, record.row) {
             text.push_str(&format!("{}\n", zsim::words!("step-tie", x = x.to_string(), text = tie)));
         }
     }

@@ -17,7 +17,7 @@ use zsim::report;
 use zsim::{Outcome, ScanlineRecord};
 use zsim::{Q, exact_and_decimal, fraction};
 
-use super::step::Tracer;
+use zsim::Tracer;
 
 /// Which buffer the raster shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -161,7 +161,7 @@ impl<'t, 's> App<'t, 's> {
                 let done = self.pixel.unwrap_or(0);
                 let pixel = record.pixels[done].clone();
                 let typed = std::mem::take(&mut quiz.typed);
-                let right = super::step::judge(&pixel, &typed).is_some_and(|(right, _)| right);
+                let right = zsim::judge(&pixel, &typed).is_some_and(|(right, _)| right);
                 quiz.asked += 1;
                 quiz.right += usize::from(right);
                 quiz.verdict = Some(zsim::words!(
@@ -195,6 +195,8 @@ impl<'t, 's> App<'t, 's> {
         }
         let (next, skipped) = self.tracer.next_stop(Some(at));
         if !skipped.is_empty() {
+            let scene = self.tracer.scene;
+            let skipped: Vec<String> = skipped.iter().map(|skip| zsim::skip_text(scene, skip)).collect();
             self.message = zsim::words!("tui-passed-over", list = skipped.join(&zsim::words!("list-semicolon")));
         }
         match next {
@@ -402,7 +404,7 @@ impl<'t, 's> App<'t, 's> {
         let (Some((p, _)), Some(record)) = (self.at, record) else {
             return vec![Line::from(zsim::words!("tui-end"))];
         };
-        let geometry = &scene.polygons[p].geometry;
+        let geometry = scene.polygons[p].geometry();
         let slope = geometry.slope().map_or_else(String::new, fraction);
         let mut lines = vec![
             Line::styled(report::polygon_heading(scene, p), Style::new().add_modifier(Modifier::BOLD)),

@@ -15,8 +15,8 @@
 
 use std::collections::BTreeMap;
 
-use crate::error::{Error, PolygonProblem};
-use crate::geometry::plane::Geometry;
+use crate::error::{Error, PolygonOrigin, PolygonProblem};
+
 use crate::numbers::{Exact, Q};
 use crate::raster::convert::{Scratch, rasterize};
 use crate::raster::depth::{Depth, depth_at_centre};
@@ -46,20 +46,17 @@ pub fn supersampled(scene: &Scene, k: u32) -> Result<Scene, Error> {
     big.height = scene.height * k;
     let factor = i128::from(k);
     for (index, polygon) in big.polygons.iter_mut().enumerate() {
-        if polygon.vertices.is_empty() {
+        if polygon.vertices().is_empty() {
             // Clipped away in clip space: nothing on the raster to scale.
             continue;
         }
-        let fail = |problem: PolygonProblem| Error::Polygon {
-            path: "(supersampled)".into(),
+        let vertices = polygon.vertices().iter().map(|v| [v[0].times(factor), v[1].times(factor), v[2].clone()]);
+        *polygon = polygon.with_vertices(vertices.collect()).map_err(|e| Error::Polygon {
+            origin: PolygonOrigin::Supersampled { factor: k },
             index,
             name: polygon.name.clone(),
-            problem: Box::new(problem),
-        };
-        let vertices: Vec<[Exact; 3]> =
-            polygon.vertices.iter().map(|v| [v[0].times(factor), v[1].times(factor), v[2].clone()]).collect();
-        polygon.geometry = Geometry::from_exact(&vertices).map_err(|e| fail(PolygonProblem::Geometry(e)))?;
-        polygon.vertices = vertices;
+            problem: Box::new(PolygonProblem::Geometry(e)),
+        })?;
     }
     Ok(big)
 }
@@ -116,7 +113,7 @@ pub fn run_watching(
         if fate(scene, index) == Fate::Drawn {
             let mut sink = Covered { k, by_pixel: BTreeMap::new() };
             rasterize(
-                &big.polygons[index].geometry,
+                big.polygons[index].geometry(),
                 scene.rules,
                 PixelRect::raster(big.width, big.height),
                 &mut scratch,
@@ -124,7 +121,7 @@ pub fn run_watching(
             );
             for ((y, x), covered) in sink.by_pixel {
                 // The depth of the polygon's plane at the pixel's centre, once per pixel.
-                let centre_depth = depth_at_centre(&polygon.geometry, x, y);
+                let centre_depth = depth_at_centre(polygon.geometry(), x, y);
                 let decision = stages.decide(polygon, centre_depth, depth.depth(x, y), depth.frame(x, y));
                 if watch == Some((x, y)) {
                     let samples = covered.iter().map(|(sx, sy)| (sx - x * k, sy - y * k)).collect();

@@ -114,7 +114,7 @@ pub fn run_segmented(scene: &Scene, segments: Segments) -> (Buffers, SegmentStat
                 origin: (rect.columns.0, rect.rows.0),
                 buffers: &mut segment,
             };
-            rasterize(&polygon.geometry, scene.rules, rect, &mut scratch, &mut sink);
+            rasterize(polygon.geometry(), scene.rules, rect, &mut scratch, &mut sink);
         }
         for y in 0..h {
             for x in 0..w {
@@ -164,8 +164,8 @@ fn bounding_rect(polygon: &Polygon) -> Option<PixelRect> {
         let floor = v.floor().clamp(BigInt::from(0), BigInt::from(u32::MAX));
         num_traits::ToPrimitive::to_u32(&floor).expect("clamped")
     };
-    let xs = polygon.vertices.iter().map(|v| &v[0]);
-    let ys = polygon.vertices.iter().map(|v| &v[1]);
+    let xs = polygon.vertices().iter().map(|v| &v[0]);
+    let ys = polygon.vertices().iter().map(|v| &v[1]);
     let (x0, x1) = (xs.clone().min()?, xs.max()?);
     let (y0, y1) = (ys.clone().min()?, ys.max()?);
     // A centre at x + 1/2 inside [x0, x1] needs x ≥ ⌊x0⌋ − 1 … x ≤ ⌊x1⌋; the cell rule takes ⌊x0⌋ … ⌊x1⌋.
@@ -245,7 +245,7 @@ pub fn run_pixel_order(scene: &Scene, inside: Inside) -> (Buffers, Vec<InsideDif
                 if !is_inside {
                     continue;
                 }
-                let depth = depth_at_centre(&polygon.geometry, x, y);
+                let depth = depth_at_centre(polygon.geometry(), x, y);
                 let Decision { outcome, stored: after, frame: frame_after, .. } =
                     stages.decide(polygon, depth, stored.clone(), frame);
                 if outcome == Outcome::Written {
@@ -272,7 +272,7 @@ fn around<T: From<i128> + Num + Clone>(points: &[[T; 3]], denominator: &T, x: u3
 /// rule (an edge counts when `min(y₁, y₂) ≤ y < max(y₁, y₂)`); a crossing
 /// exactly at the centre means the centre is on the boundary: inside.
 pub fn ray_inside(polygon: &Polygon, x: u32, y: u32) -> bool {
-    let geometry = &polygon.geometry;
+    let geometry = polygon.geometry();
     match geometry.big_scaled() {
         Some((points, denominator)) => ray_inside_from::<BigInt>(&around(points, denominator, x, y)),
         None => ray_inside_from::<i128>(&around(&geometry.points, &geometry.denominator, x, y)),
@@ -307,7 +307,7 @@ fn ray_inside_from<T: Num + Ord + Clone>(points: &[[T; 2]]) -> bool {
 /// times the winding number. A centre on the boundary counts as inside.
 /// Returns the decision and, for a difference report, its kind.
 pub fn arc_inside(polygon: &Polygon, x: u32, y: u32) -> (bool, ArcDifference) {
-    let geometry = &polygon.geometry;
+    let geometry = polygon.geometry();
     match geometry.big_scaled() {
         Some((points, denominator)) => arc_inside_from::<BigInt>(&around(points, denominator, x, y)),
         None => arc_inside_from::<i128>(&around(&geometry.points, &geometry.denominator, x, y)),
@@ -387,7 +387,7 @@ pub fn local_errors(scene: &Scene, drawn: &Buffers) -> Vec<LocalError> {
         }
         let mut sink = CollectSink { index, width, fragments: &mut fragments, scene };
         rasterize(
-            &polygon.geometry,
+            polygon.geometry(),
             scene.rules,
             PixelRect::raster(scene.width, scene.height),
             &mut scratch,

@@ -168,11 +168,11 @@ pub fn svg_with(
     // Polygon outlines, with their names.
     let _ = writeln!(out, r#"<g id="polygons" fill="none" stroke="black" stroke-width="1.5">"#);
     for (index, polygon) in scene.polygons.iter().enumerate().take(last + 1) {
-        if polygon.vertices.is_empty() {
+        if polygon.vertices().is_empty() {
             // Clipped away in clip space: nothing on the raster to outline.
             continue;
         }
-        let points: Vec<String> = polygon.vertices.iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect();
+        let points: Vec<String> = polygon.vertices().iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect();
         // An unnamed polygon is labelled by its number alone, titled in the reader's language.
         let unnamed = crate::words::is_default_name(&polygon.name, index);
         let title = if unnamed { crate::observe::explain::polygon_name(scene, index) } else { polygon.name.clone() };
@@ -180,7 +180,7 @@ pub fn svg_with(
         let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));
         // At the polygon's middle, off the vertices and the outline, on a white halo
         // so that it reads over any fill.
-        let middle = |axis: usize| middle(&polygon.vertices, axis);
+        let middle = |axis: usize| middle(polygon.vertices(), axis);
         let _ = writeln!(
             out,
             r#"<text x="{}" y="{}" stroke="white" stroke-width="3" paint-order="stroke" font-weight="bold" text-anchor="middle" fill="black">{}</text>"#,
@@ -337,9 +337,9 @@ fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&ToSvg
     );
     // Vertices already labelled, so that a point shared by two polygons gets its labels one under the other.
     let mut labelled: Vec<[Exact; 2]> = Vec::new();
-    for polygon in scene.polygons.iter().take(last + 1).filter(|p| !p.vertices.is_empty()) {
-        let (middle_x, middle_y) = (middle(&polygon.vertices, 0), middle(&polygon.vertices, 1));
-        for v in &polygon.vertices {
+    for polygon in scene.polygons.iter().take(last + 1).filter(|p| !p.vertices().is_empty()) {
+        let (middle_x, middle_y) = (middle(polygon.vertices(), 0), middle(polygon.vertices(), 1));
+        for v in polygon.vertices() {
             // Left of the middle: the label ends at the vertex; right: it starts there.
             let (anchor, dx) = if v[0] < middle_x { ("end", Q::new(-1, 4)) } else { ("start", Q::new(1, 4)) };
             let point = [v[0].clone(), v[1].clone()];

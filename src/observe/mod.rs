@@ -3,5 +3,6 @@ pub mod check;
 pub mod explain;
 pub mod figure;
 pub mod report;
+pub mod step;
 pub mod tie;
 pub mod trace;

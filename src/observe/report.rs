@@ -61,7 +61,7 @@ pub fn scene_header(scene: &Scene, path: &str) -> String {
 /// `polygon 2 "triangle" (value 2): plane 3x + y + 4z - 120 = 0, counter-clockwise`.
 pub fn polygon_heading(scene: &Scene, index: usize) -> String {
     let polygon = &scene.polygons[index];
-    let geometry = &polygon.geometry;
+    let geometry = polygon.geometry();
     let start = words!(
         "heading-start",
         polygon = crate::observe::explain::polygon_name(scene, index),
@@ -89,13 +89,13 @@ pub fn polygon_heading(scene: &Scene, index: usize) -> String {
                     "heading-clipped",
                     front = front.to_string(),
                     of = of.to_string(),
-                    n = polygon.vertices.len().to_string()
+                    n = polygon.vertices().len().to_string()
                 ),
                 Clip::View { inside, of } => words!(
                     "heading-view",
                     inside = inside.to_string(),
                     of = of.to_string(),
-                    n = polygon.vertices.len().to_string()
+                    n = polygon.vertices().len().to_string()
                 ),
                 _ => String::new(),
             };

@@ -140,7 +140,7 @@ fn coverage(scene: &Scene, rules: Rules) -> Vec<BTreeSet<(u32, u32)>> {
         .iter()
         .map(|polygon| {
             let mut cells = Cells::default();
-            rasterize(&polygon.geometry, rules, rect, &mut scratch, &mut cells);
+            rasterize(polygon.geometry(), rules, rect, &mut scratch, &mut cells);
             cells.0
         })
         .collect()
@@ -172,7 +172,7 @@ pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
             }
             let ties = (0..scene.polygons.len())
                 .filter(|&i| covering.0.contains(&i) != covering.1.contains(&i))
-                .filter_map(|i| boundary_at(&scene.polygons[i].vertices, x, y).map(|(kind, a, b)| (i, kind, a, b)))
+                .filter_map(|i| boundary_at(scene.polygons[i].vertices(), x, y).map(|(kind, a, b)| (i, kind, a, b)))
                 .collect();
             out.push(RuleDifference { x, y, values: (va, vb), covering, ties });
         }

@@ -41,7 +41,7 @@ pub struct ScanlineRecord {
 impl ScanlineRecord {
     /// Builds the record of a scanline event (pixels are added as they come).
     pub fn from_event(event: &ScanlineEvent<'_>) -> ScanlineRecord {
-        let geometry = &event.polygon.geometry;
+        let geometry = &event.polygon.geometry();
         let y = Exact::Word(Q::new(2 * i128::from(event.row) + 1, 2));
         // Scanline events are only sent for drawn polygons, whose c ≠ 0.
         let depth = |x: &Exact| depth_at(geometry, x, &y);

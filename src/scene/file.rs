@@ -6,11 +6,12 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 use serde::de::Error as _;
 
-use crate::error::{Error, PolygonProblem};
+use crate::error::{Error, PolygonOrigin, PolygonProblem};
 use crate::geometry::plane::Geometry;
 use crate::numbers::{Exact, Q, fraction, parse_number};
 use crate::raster::depth::{DepthTest, Stored};
 use crate::rules::{DepthStore, Preset, Rules};
+use crate::scene::clip_space::Clipped;
 use crate::scene::perspective::{Clip, Perspective};
 use crate::scene::text::printable;
 use crate::scene::{Antialias, Effects, MAX_CELLS, MAX_SIDE, Polygon, Scene, Winding, Window, max_for_bits};
@@ -531,7 +532,7 @@ impl PolygonFile {
         // Names reach terminals in every report: control characters are kept escaped (`\u{1b}`).
         let name = self.name.map_or_else(|| crate::words::default_name(index), |name| printable(&name).into_owned());
         let fail = |name: &str, problem: PolygonProblem| Error::Polygon {
-            path: PathBuf::from(path),
+            origin: PolygonOrigin::File(PathBuf::from(path)),
             index,
             name: name.to_owned(),
             problem: Box::new(problem),
@@ -561,17 +562,15 @@ impl PolygonFile {
         } else if frame.window.is_some() || frame.perspective.is_some() {
             return Err(fail(&name, PolygonProblem::Other(words!("clip-space-alone"))));
         } else {
-            return clip_space_polygon(&clip_space, frame)
-                .map(|(vertices, geometry, clip)| Polygon {
-                    name: name.clone(),
-                    value: self.value as u32,
-                    vertices,
-                    geometry,
-                    opacity,
-                    eye_vertices: None,
-                    clip,
-                })
-                .map_err(|problem| fail(&name, problem));
+            let value = self.value as u32;
+            return match crate::scene::clip_space::to_raster(&clip_space, frame.size.0, frame.size.1, frame.depth_max) {
+                Clipped::Outside => Ok(Polygon::outside_view(name, value, opacity)),
+                Clipped::Inside { vertices, inside } => {
+                    let clip = Clip::View { inside, of: clip_space.len() };
+                    Polygon::new(name.clone(), value, vertices, opacity, None, clip)
+                        .map_err(|e| fail(&name, PolygonProblem::Geometry(e)))
+                }
+            };
         };
         if let Some((window, width, height)) = frame.window {
             for vertex in &mut vertices {
@@ -582,55 +581,24 @@ impl PolygonFile {
             let error = crate::geometry::plane::GeometryError::TooFewVertices(vertices.len());
             return Err(fail(&name, PolygonProblem::Geometry(error)));
         }
-        let geometry = |vertices: &[[Exact; 3]]| {
-            Geometry::from_exact(vertices).map_err(|e| fail(&name, PolygonProblem::Geometry(e)))
-        };
+        let geometry_error = |e| fail(&name, PolygonProblem::Geometry(e));
         let (eye_vertices, clip) = match frame.perspective {
             None => (None, Clip::NotClipped),
             Some(perspective) => {
                 // Check planarity in eye space first, where the user wrote the polygon.
-                let eye_geometry = geometry(&vertices)?;
+                Geometry::from_exact(&vertices).map_err(geometry_error)?;
                 let (kept, clip) = perspective.clip(&vertices);
                 if clip == Clip::Away {
-                    // Nothing is drawn; keep the eye-space geometry for reports.
-                    return Ok(Polygon {
-                        name,
-                        value: self.value as u32,
-                        eye_vertices: Some(vertices.clone()),
-                        vertices,
-                        geometry: eye_geometry,
-                        opacity,
-                        clip,
-                    });
+                    // Nothing is drawn; keep the eye-space polygon for reports.
+                    let eye_vertices = Some(vertices.clone());
+                    return Polygon::new(name.clone(), self.value as u32, vertices, opacity, eye_vertices, clip)
+                        .map_err(geometry_error);
                 }
                 let (width, height) = frame.size;
                 let projected = kept.iter().map(|v| perspective.project(v, width, height)).collect();
                 (Some(std::mem::replace(&mut vertices, projected)), clip)
             }
         };
-        let geometry = geometry(&vertices)?;
-        Ok(Polygon { name, value: self.value as u32, vertices, geometry, opacity, eye_vertices, clip })
-    }
-}
-
-/// A polygon given in clip space: clipped, divided and mapped by the viewport
-/// ([`crate::scene::clip_space`]); what is left, its geometry and how it was clipped.
-fn clip_space_polygon(
-    clip_space: &[[Exact; 4]],
-    frame: &Frame,
-) -> Result<(Vec<[Exact; 3]>, Geometry, Clip), PolygonProblem> {
-    let (width, height) = frame.size;
-    match crate::scene::clip_space::to_raster(clip_space, width, height, frame.depth_max) {
-        crate::scene::clip_space::Clipped::Outside => {
-            // Nothing is drawn; a placeholder geometry keeps the polygon in the reports.
-            let (zero, one) = (Q::from_integer(0), Q::from_integer(1));
-            let geometry = Geometry::new(&[[zero, zero, zero], [one, zero, zero], [zero, one, zero]])
-                .expect("a unit triangle is a polygon");
-            Ok((Vec::new(), geometry, Clip::ViewAway))
-        }
-        crate::scene::clip_space::Clipped::Inside { vertices, inside } => {
-            let geometry = Geometry::from_exact(&vertices).map_err(PolygonProblem::Geometry)?;
-            Ok((vertices, geometry, Clip::View { inside, of: clip_space.len() }))
-        }
+        Polygon::new(name.clone(), self.value as u32, vertices, opacity, eye_vertices, clip).map_err(geometry_error)
     }
 }

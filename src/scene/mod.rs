@@ -29,8 +29,8 @@ use num_bigint::BigInt;
 use num_traits::{CheckedDiv, CheckedMul, CheckedSub};
 use serde::Deserialize;
 
-use crate::error::Error;
-use crate::geometry::plane::Geometry;
+use crate::error::{Error, Usage};
+use crate::geometry::plane::{Geometry, GeometryError};
 use crate::numbers::{Exact, Q};
 use crate::raster::depth::{DepthTest, Stored};
 use crate::rules::Rules;
@@ -166,12 +166,11 @@ pub struct Polygon {
     pub name: String,
     /// The framebuffer value it writes; fits `frame_bits`.
     pub value: u32,
-    /// Its vertices, exact, in pixel units (mapped through the scene's
-    /// window when it has one); beyond 128-bit fractions only where clip
-    /// space made them so.
-    pub vertices: Vec<[Exact; 3]>,
-    /// Its scaled integer geometry and plane.
-    pub geometry: Geometry,
+    /// Its vertices ([`Polygon::vertices`]); private, so that they and the
+    /// geometry made from them never disagree ([`Polygon::with_vertices`]).
+    vertices: Vec<[Exact; 3]>,
+    /// Its scaled integer geometry and plane, made from `vertices`.
+    geometry: Geometry,
     /// Its opacity α (0 … 1) when it is transparent; `None` is opaque.
     pub opacity: Option<Q>,
     /// With perspective: the vertices as given (eye space, through the
@@ -180,6 +179,51 @@ pub struct Polygon {
     pub eye_vertices: Option<Vec<[Exact; 3]>>,
     /// How the polygon fared against the near plane.
     pub clip: Clip,
+}
+
+impl Polygon {
+    /// A polygon on its vertices: their geometry is made here, once, so the
+    /// two always agree; the error when the vertices are unusable.
+    pub(crate) fn new(
+        name: String,
+        value: u32,
+        vertices: Vec<[Exact; 3]>,
+        opacity: Option<Q>,
+        eye_vertices: Option<Vec<[Exact; 3]>>,
+        clip: Clip,
+    ) -> Result<Polygon, GeometryError> {
+        let geometry = Geometry::from_exact(&vertices)?;
+        Ok(Polygon { name, value, vertices, geometry, opacity, eye_vertices, clip })
+    }
+
+    /// A polygon given in clip space that lies wholly outside the view
+    /// volume: no vertices on the raster, and a placeholder geometry (a unit
+    /// triangle) that keeps it in the reports.
+    pub(crate) fn outside_view(name: String, value: u32, opacity: Option<Q>) -> Polygon {
+        let (zero, one) = (Q::from_integer(0), Q::from_integer(1));
+        let geometry = Geometry::new(&[[zero, zero, zero], [one, zero, zero], [zero, one, zero]])
+            .expect("a unit triangle is a polygon");
+        Polygon { name, value, vertices: Vec::new(), geometry, opacity, eye_vertices: None, clip: Clip::ViewAway }
+    }
+
+    /// Its vertices, exact, in pixel units (mapped through the scene's
+    /// window when it has one); beyond 128-bit fractions only where clip
+    /// space made them so; none when clip space clipped it away.
+    pub fn vertices(&self) -> &[[Exact; 3]] {
+        &self.vertices
+    }
+
+    /// Its scaled integer geometry and plane, made from its vertices.
+    pub fn geometry(&self) -> &Geometry {
+        &self.geometry
+    }
+
+    /// The same polygon on other vertices (supersampled, snapped), its
+    /// geometry made anew from them; the error when they are unusable.
+    pub fn with_vertices(&self, vertices: Vec<[Exact; 3]>) -> Result<Polygon, GeometryError> {
+        let geometry = Geometry::from_exact(&vertices)?;
+        Ok(Polygon { vertices, geometry, ..self.clone() })
+    }
 }
 
 /// A validated scene: every guarantee the rasterizer relies on holds.
@@ -264,14 +308,11 @@ impl Scene {
             if (1..=self.polygons.len()).contains(&number) {
                 return Ok(number - 1);
             }
-            return Err(Error::Usage(format!(
-                "there is no polygon {number}: the scene has {} (number them from 1)",
-                self.polygons.len()
-            )));
+            return Err(Usage::NoPolygonNumbered { number, count: self.polygons.len() }.into());
         }
         self.polygons.iter().position(|p| p.name == spec).ok_or_else(|| {
-            let names: Vec<String> = self.polygons.iter().map(|p| format!("\"{}\"", p.name)).collect();
-            Error::Usage(format!("there is no polygon named \"{spec}\": the scene has {}", names.join(", ")))
+            let names = self.polygons.iter().map(|p| p.name.clone()).collect();
+            Usage::NoPolygonNamed { name: spec.to_string(), names }.into()
         })
     }
 }

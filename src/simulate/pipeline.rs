@@ -197,7 +197,7 @@ impl<'s> Simulation<'s> {
         }
         let mut sink =
             DrawSink { index, polygon, stages, buffers: &mut self.buffers, stats: &mut self.stats, observer };
-        rasterize(&polygon.geometry, scene.rules, rect, &mut self.scratch, &mut sink);
+        rasterize(polygon.geometry(), scene.rules, rect, &mut self.scratch, &mut sink);
     }
 }
 
@@ -235,7 +235,7 @@ impl<'s> Levels<'_, 's> {
             stats: &mut *self.stats,
             observer,
         };
-        rasterize(&polygon.geometry, self.scene.rules, rect, self.scratch, &mut sink);
+        rasterize(polygon.geometry(), self.scene.rules, rect, self.scratch, &mut sink);
     }
 }
 
@@ -296,10 +296,10 @@ impl Tiles<'_> {
                 // The polygons of a tile lie far apart in memory: ask for the
                 // ones a few steps ahead while this one is drawn.
                 if let Some(&ahead) = bin.get(k + 4) {
-                    prefetch(&scene.polygons[ahead as usize].geometry);
+                    prefetch(&scene.polygons[ahead as usize].geometry());
                 }
                 if let Some(&ahead) = bin.get(k + 2) {
-                    prefetch(scene.polygons[ahead as usize].geometry.points.as_ptr());
+                    prefetch(scene.polygons[ahead as usize].geometry().points.as_ptr());
                 }
                 levels.draw((&mut *frame, &mut *depth), first_row, index as usize, rect, &mut Unobserved);
             }
@@ -370,7 +370,7 @@ fn bins(scene: &Scene, first: usize, tile: u32) -> Vec<Vec<u32>> {
         if fate(scene, index) != Fate::Drawn {
             continue;
         }
-        let Some(rect) = pixel_bounds(&scene.polygons[index].geometry, scene.width, scene.height) else { continue };
+        let Some(rect) = pixel_bounds(scene.polygons[index].geometry(), scene.width, scene.height) else { continue };
         for ty in rect.rows.0 / tile..=rect.rows.1 / tile {
             for tx in rect.columns.0 / tile..=rect.columns.1 / tile {
                 bins[(ty * tiles_x + tx) as usize].push(index as u32);
@@ -569,7 +569,7 @@ fn pixel_bounds(geometry: &Geometry, width: u32, height: u32) -> Option<PixelRec
 #[inline]
 fn prefetch_ahead(scene: &Scene, index: usize) {
     if let Some(ahead) = scene.polygons.get(index + 4) {
-        prefetch(ahead.geometry.points.as_ptr());
+        prefetch(ahead.geometry().points.as_ptr());
     }
 }
 
@@ -595,7 +595,7 @@ pub fn fate(scene: &Scene, index: usize) -> Fate {
         crate::scene::perspective::Clip::ViewAway => return Fate::OutsideView,
         _ => {}
     }
-    let geometry = &polygon.geometry;
+    let geometry = polygon.geometry();
     if geometry.is_degenerate() {
         return Fate::Degenerate;
     }

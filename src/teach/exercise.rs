@@ -8,6 +8,7 @@
 use std::collections::BTreeSet;
 use std::fmt;
 
+use crate::error::Usage;
 use crate::numbers::{Q, fraction, short_in_files};
 use crate::scene::random::SplitMix64;
 use crate::scene::{Scene, max_for_bits};
@@ -59,12 +60,12 @@ impl HardCase {
     }
 
     /// Reads a comma-separated list of case names.
-    pub fn parse_list(text: &str) -> Result<Vec<HardCase>, String> {
+    pub fn parse_list(text: &str) -> Result<Vec<HardCase>, Usage> {
         let mut cases = Vec::new();
         for name in text.split(',').map(str::trim).filter(|n| !n.is_empty()) {
             let case = HardCase::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| {
-                let names: Vec<&str> = HardCase::ALL.iter().map(|c| c.name()).collect();
-                format!("\"{name}\" is not a hard case: {}", names.join(", "))
+                let names = HardCase::ALL.iter().map(|c| c.name().to_string()).collect();
+                Usage::NotAHardCase { name: name.to_string(), names }
             })?;
             if !cases.contains(&case) {
                 cases.push(case);
@@ -137,7 +138,7 @@ impl Observer for CaseFinder {
     fn scanline(&mut self, event: &ScanlineEvent<'_>) {
         let (index, row) = (event.index, event.row);
         let scan_y = Q::new(2 * i128::from(row) + 1, 2);
-        if let Some((k, v)) = event.polygon.vertices.iter().enumerate().find(|(_, v)| v[1] == scan_y) {
+        if let Some((k, v)) = event.polygon.vertices().iter().enumerate().find(|(_, v)| v[1] == scan_y) {
             self.note(HardCase::VertexOnScanline, || {
                 format!(
                     "polygon {}: vertex {} ({}, {}) lies on the scanline of row {row}",
@@ -268,19 +269,19 @@ pub struct Exercise {
 
 /// Makes an exercise: candidates drawn from the seed's sequence, the first
 /// whose trace shows every asked case kept.
-pub fn make(spec: &Spec) -> Result<Exercise, String> {
+pub fn make(spec: &Spec) -> Result<Exercise, Usage> {
     if spec.width < 4 || spec.height < 4 || spec.width > 64 || spec.height > 64 {
-        return Err(format!("--size {}x{}: an exercise is 4 … 64 pixels on a side", spec.width, spec.height));
+        return Err(Usage::ExerciseSize { width: spec.width, height: spec.height });
     }
     if !(1..=8).contains(&spec.polygons) {
-        return Err(format!("--polygons {}: an exercise has 1 … 8 polygons", spec.polygons));
+        return Err(Usage::ExercisePolygons { count: spec.polygons });
     }
     if !(1..=8).contains(&spec.frame_bits) || !(1..=16).contains(&spec.depth_bits) {
-        return Err("--frame-bits takes 1 … 8 and --depth-bits 1 … 16 for an exercise done by hand".to_string());
+        return Err(Usage::ExerciseBits);
     }
     let two = spec.hard.iter().any(|c| matches!(c, HardCase::Hidden | HardCase::Intersecting));
     if two && spec.polygons < 2 {
-        return Err("hidden and intersecting need two polygons or more (--polygons 2)".to_string());
+        return Err(Usage::ExerciseNeedsTwoPolygons);
     }
     let mut rng = SplitMix64::new(spec.seed);
     for tries in 1..=TRIES {
@@ -291,14 +292,13 @@ pub fn make(spec: &Spec) -> Result<Exercise, String> {
             return Ok(Exercise { json, scene, found, tries });
         }
     }
-    let names: Vec<&str> = spec.hard.iter().map(|c| c.name()).collect();
-    Err(format!(
-        "no scene of {} polygons on {}×{} with all of {} came up in {TRIES} tries; ask for fewer cases, more polygons or a larger raster",
-        spec.polygons,
-        spec.width,
-        spec.height,
-        names.join(", ")
-    ))
+    Err(Usage::ExerciseNotFound {
+        polygons: spec.polygons,
+        width: spec.width,
+        height: spec.height,
+        cases: spec.hard.iter().map(|c| c.name().to_string()).collect(),
+        tries: TRIES,
+    })
 }
 
 /// One candidate scene: polygons with vertices on half pixels over the
@@ -376,7 +376,8 @@ mod tests {
         assert!(
             HardCase::parse_list("tricky")
                 .unwrap_err()
-                .starts_with("\"tricky\" is not a hard case: vertex-on-scanline")
+                .to_string()
+                .starts_with("--hard: \"tricky\" is not a hard case: vertex-on-scanline")
         );
     }
 

@@ -395,3 +395,50 @@ setting-antialias-cells = antialias: { $width }×{ $height } pixels × { $sample
 setting-antialias-exact = antialias averages a quantized z-buffer; it does not combine with an exact store
 polygon-opacity = opacity { $alpha } is outside 0 … 1
 polygon-value-too-wide = value { $value } does not fit a { $bits }-bit framebuffer (at most { $max })
+
+# Where a polygon with a problem came from, when not a file.
+origin-supersampled = the scene supersampled { $factor }×
+origin-snapped = the scene snapped to fixed:{ $bits }
+
+# Requests that do not fit the command or the scene.
+usage-arith-plain-rules = --arith { $arith } simulates the plain algorithm with the book's rules; this scene asks for other rules or per-pixel effects (use --arith exact)
+usage-arith-greater-or-less = --arith { $arith } simulates the depth tests greater and less; this scene asks for { $test } (use --arith exact)
+usage-arith-plain-loop = --arith other than exact runs the plain z-buffer loop; drop --segments and --order
+usage-no-polygon-numbered = there is no polygon { $number }: the scene has { $count } (number them from 1)
+usage-no-polygon-named = there is no polygon named "{ $name }": the scene has { $names }
+usage-pixel-outside = pixel ({ $x }, { $y }) is outside the { $width }×{ $height } raster (x 0 … { $last_x }, y 0 … { $last_y })
+usage-figure-format = { $path }: a figure is written as .svg or .png (for a PDF, convert the SVG, e.g. rsvg-convert -f pdf)
+usage-figure-too-large = { $path }: a figure draws rasters up to { $max }×{ $max }; this one is { $width }×{ $height }
+usage-png-failed = { $path }: cannot draw the PNG: { $reason }
+usage-no-polygons-draw = { $path }: the scene has no polygons to draw
+usage-no-polygons-grade = { $path }: the scene has no polygons to grade
+usage-no-polygons-check = { $path }: the scene has no polygons to check
+usage-exact-depths-grade = { $path }: this scene keeps exact depths, so its z-buffer has no integer matrix to grade; grade the framebuffers
+usage-exact-depths-check = { $path }: this scene keeps exact depths, so its z-buffer has no integer matrix to check; check the framebuffer, or a BUET z_buffer.txt with `zsim buet check`
+usage-check-needs-answer = check needs an answer: --frame FILE and/or --depth FILE
+usage-no-answers = { $path }: no answers found: name each student's files NAME.frame.txt and/or NAME.depth.txt
+usage-scenes-range = --scenes takes 1 to 100
+usage-memory-bits = { $option } { $bits }: use 1 to 64 bits
+usage-memory-zero = --width, --height and --supersample must be at least 1
+usage-memory-too-large = the raster is too large to count (more than 2^50 cells)
+usage-random-count = --count { $count }: at most { $max } triangles (a scene that large takes about 10 GB to read back)
+usage-random-bits = --frame-bits and --depth-bits take 1 to 32
+usage-random-side = --width and --height take 1 to { $max }
+usage-not-a-hard-case = --hard: "{ $name }" is not a hard case: { $names }
+usage-exercise-size = --size { $width }x{ $height }: an exercise is 4 … 64 pixels on a side
+usage-exercise-polygons = --polygons { $count }: an exercise has 1 … 8 polygons
+usage-exercise-bits = --frame-bits takes 1 … 8 and --depth-bits 1 … 16 for an exercise done by hand
+usage-exercise-two-polygons = hidden and intersecting need two polygons or more (--polygons 2)
+usage-exercise-not-found = no scene of { $polygons } polygons on { $width }×{ $height } with all of { $cases } came up in { $tries } tries; ask for fewer cases, more polygons or a larger raster
+usage-inside-needs-pixel-order = --inside chooses the point-in-polygon test of --order pixels; add --order pixels
+usage-tiles-need-format-none = --tile and --threads apply to --format none (the other formats show the state after each polygon, drawn in order)
+usage-format-none-is-plain = --format none summarizes the z-buffer loop; use text or json with --segments, --order pixels or antialias
+usage-no-scanlines = { $polygon } has no scanlines: { $why }
+usage-scanline-rows = { $reach }: its rows are { $first } … { $last }
+usage-scanline-no-rows = { $reach }: it reaches no row of the raster
+
+# What the stepper passes over on its way to the next covered scanline.
+step-skip-fate = { $polygon }: { $why }
+step-skip-no-scanline = { $polygon }: reaches no scanline of the raster
+step-skip-no-centre = { $polygon }, scanline { $scanline }: no pixel centre covered
+step-skip-no-centre-no-crossings = { $polygon }, scanline { $scanline }: no pixel centre covered (no crossings)

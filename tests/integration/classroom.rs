@@ -183,7 +183,7 @@ fn cases_in_trace(scene: &Scene) -> Vec<&'static str> {
     let half = Q::new(1, 2);
     let on_scanline = recorder.scanlines.iter().any(|s| {
         let y = Q::from_integer(i128::from(s.row)) + half;
-        scene.polygons[s.index].vertices.iter().any(|v| v[1] == y)
+        scene.polygons[s.index].vertices().iter().any(|v| v[1] == y)
     });
     let centre_on_edge = recorder
         .scanlines
@@ -269,7 +269,7 @@ fn an_exercise_contains_every_hard_case_asked_for_and_its_key_checks() {
             .descendants()
             .filter(|n| n.parent().is_some_and(|p| p.attribute("id") == Some("vertices")) && n.has_tag_name("text"))
             .count();
-        let vertices: usize = scene.polygons.iter().map(|p| p.vertices.len()).sum();
+        let vertices: usize = scene.polygons.iter().map(|p| p.vertices().len()).sum();
         assert_eq!(labels, vertices, "seed {seed}: every vertex labelled");
         assert!(
             !worksheet.contains(

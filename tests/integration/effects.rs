@@ -73,7 +73,7 @@ fn a_clipped_triangle_draws_as_its_projected_clipped_polygon() {
         r#"{"width": 32, "height": 32, "depth_bits": 12,
             "polygons": [{"name": "t", "value": 1, "vertices": [[-24, 16, 760], [12, 12, 0], [20, 12, 0], [56, 16, 760]]}]}"#,
     );
-    assert_eq!(clipped.polygons[0].vertices.len(), 4);
+    assert_eq!(clipped.polygons[0].vertices().len(), 4);
     assert_eq!(final_buffers(&clipped, StageSet::AsAsked), final_buffers(&by_hand, StageSet::AsAsked));
 }
 

@@ -125,7 +125,7 @@ fn clipped_clip_space_triangles_are_drawn_exactly() {
             serde_json::to_string(&vertices).unwrap()
         );
         let scene = Scene::from_json(&json, Path::new("clip.json")).unwrap_or_else(|e| panic!("case {case}: {e}"));
-        big += usize::from(scene.polygons[0].geometry.is_big());
+        big += usize::from(scene.polygons[0].geometry().is_big());
         let v: Vec<[BigRational; 4]> = vertices.iter().map(|p| p.clone().map(|c| parse(&c))).collect();
         covered += check_pixels(&json, |column, row| independent(&v, column, row)).0;
     }
@@ -219,7 +219,7 @@ fn polygons_once_refused_as_too_large_are_drawn_exactly() {
         );
         let scene = Scene::from_json(&json, Path::new("large.json")).unwrap_or_else(|e| panic!("{e}"));
         let v: Vec<[BigRational; 3]> =
-            scene.polygons[0].vertices.iter().map(|p| p.each_ref().map(zsim::Exact::to_big)).collect();
+            scene.polygons[0].vertices().iter().map(|p| p.each_ref().map(zsim::Exact::to_big)).collect();
         let (covered, _) = check_pixels(&json, |column, row| in_triangle(&v, column, row));
         assert_eq!(covered, expected, "{vertices}");
     }
@@ -291,7 +291,7 @@ fn clip_space_triangles_with_many_digits_are_drawn_exactly() {
             serde_json::to_string(vertices).unwrap()
         );
         let scene = Scene::from_json(&json, Path::new("clip.json")).unwrap_or_else(|e| panic!("case {case}: {e}"));
-        beyond += usize::from(scene.polygons[0].vertices.iter().flatten().any(|v| v.word().is_none()));
+        beyond += usize::from(scene.polygons[0].vertices().iter().flatten().any(|v| v.word().is_none()));
         let v: Vec<[BigRational; 4]> = vertices.iter().map(|p| p.each_ref().map(|c| decimal(c))).collect();
         covered += check_pixels(&json, |column, row| independent(&v, column, row)).0;
     }

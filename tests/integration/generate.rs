@@ -36,8 +36,8 @@ fn random_scenes_repeat_for_a_seed_and_respect_the_size() {
     let scene = Scene::from_json(&first.stdout, Path::new("random.json")).expect("a valid scene");
     assert_eq!((scene.width, scene.height, scene.polygons.len()), (64, 48, 50));
     for polygon in &scene.polygons {
-        let xs: Vec<_> = polygon.vertices.iter().map(|v| v[0].word().expect("small")).collect();
-        let ys: Vec<_> = polygon.vertices.iter().map(|v| v[1].word().expect("small")).collect();
+        let xs: Vec<_> = polygon.vertices().iter().map(|v| v[0].word().expect("small")).collect();
+        let ys: Vec<_> = polygon.vertices().iter().map(|v| v[1].word().expect("small")).collect();
         let extent = |v: &[zsim::Q]| *v.iter().max().unwrap() - *v.iter().min().unwrap();
         assert!(extent(&xs) <= 10.into() && extent(&ys) <= 10.into(), "{} is larger than 10 px", polygon.name);
     }

@@ -28,8 +28,8 @@ mod float;
 use edge::*;
 use float::*;
 
-use crate::error::{Error, PolygonProblem};
-use crate::geometry::plane::Geometry;
+use crate::error::{Error, PolygonOrigin, PolygonProblem, Usage};
+
 use crate::numbers::{Exact, to_f64};
 use crate::raster::depth::depth_at;
 use crate::rules::{Preset, Rules};
@@ -109,15 +109,11 @@ pub fn check_supported(scene: &Scene, arith: Arith) -> Result<(), Error> {
         return Ok(());
     }
     if scene.rules != Rules::preset(Preset::Rogers) || scene.has_pixel_effects() || scene.effects.antialias.is_some() {
-        return Err(Error::Usage(format!(
-            "--arith {arith} simulates the plain algorithm with the book's rules; this scene asks for other rules or per-pixel effects (use --arith exact)"
-        )));
+        return Err(Usage::ArithNeedsPlainRules { arith: arith.to_string() }.into());
     }
     if scene.depth_test.equal_passes() || !scene.depth_test.compares() {
-        return Err(Error::Usage(format!(
-            "--arith {arith} simulates the depth tests greater and less; this scene asks for {} (use --arith exact)",
-            scene.depth_test.name()
-        )));
+        let test = scene.depth_test.name().to_string();
+        return Err(Usage::ArithNeedsGreaterOrLess { arith: arith.to_string(), test }.into());
     }
     Ok(())
 }
@@ -187,7 +183,9 @@ fn exact_raster(scene: &Scene) -> (Buffers, Stats) {
 /// Every polygon drawn (by the exact fate) converted to `F`; `None` for the others.
 fn prepare_scene<F: Float + crate::numbers::Ring>(scene: &Scene) -> Vec<Option<FloatPolygon<F>>> {
     (0..scene.polygons.len())
-        .map(|i| (fate(scene, i) == Fate::Drawn).then(|| prepare(&scene.polygons[i].vertices, scene.polygons[i].value)))
+        .map(|i| {
+            (fate(scene, i) == Fate::Drawn).then(|| prepare(scene.polygons[i].vertices(), scene.polygons[i].value))
+        })
         .collect()
 }
 
@@ -211,17 +209,17 @@ pub fn snap(scene: &Scene, bits: u32) -> Result<Scene, Error> {
     let round = |v: &Exact| Exact::from((v.to_big() * &unit + &half).floor() / &unit);
     let mut snapped = scene.clone();
     for (index, polygon) in snapped.polygons.iter_mut().enumerate() {
-        if polygon.vertices.is_empty() {
+        if polygon.vertices().is_empty() {
             // Clipped away in clip space: nothing on the raster to snap.
             continue;
         }
         let on_plane = |x: Exact, y: Exact, z: &Exact| {
-            let kept = if polygon.vertices.len() > 3 { depth_at(&polygon.geometry, &x, &y) } else { None };
+            let kept = if polygon.vertices().len() > 3 { depth_at(polygon.geometry(), &x, &y) } else { None };
             [x, y, kept.unwrap_or_else(|| z.clone())]
         };
-        polygon.vertices = polygon.vertices.iter().map(|v| on_plane(round(&v[0]), round(&v[1]), &v[2])).collect();
-        polygon.geometry = Geometry::from_exact(&polygon.vertices).map_err(|e| Error::Polygon {
-            path: format!("(snapped to fixed:{bits})").into(),
+        let vertices = polygon.vertices().iter().map(|v| on_plane(round(&v[0]), round(&v[1]), &v[2])).collect();
+        *polygon = polygon.with_vertices(vertices).map_err(|e| Error::Polygon {
+            origin: PolygonOrigin::Snapped { bits },
             index,
             name: polygon.name.clone(),
             problem: Box::new(PolygonProblem::Geometry(e)),
