@@ -5,7 +5,7 @@
 use std::fmt;
 use std::path::PathBuf;
 
-use crate::geometry::plane::GeometryError;
+use crate::geometry::equation::GeometryError;
 
 /// Everything that can go wrong with zsim's input.
 #[derive(Debug)]

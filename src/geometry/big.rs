@@ -20,8 +20,9 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{Signed, ToPrimitive, Zero};
 
+use crate::geometry::equation::{GeometryError, PlaneEquation, not_planar};
+use crate::geometry::equation::{plane_through, reduced, words};
 use crate::geometry::newell::{first_off_plane, newell};
-use crate::geometry::plane::{GeometryError, PlaneEquation, not_planar};
 use crate::rules::RowRule;
 
 pub(crate) fn big(v: i128) -> BigInt {
@@ -94,46 +95,6 @@ pub(crate) fn sum_of_products(terms: &[(i128, i128)]) -> Option<i128> {
 /// Whether `|v| < limit`, for a value that may not have fit `i128` (`None`).
 pub(crate) fn below(v: Option<i128>, limit: i128) -> bool {
     v.is_some_and(|v| v.unsigned_abs() < limit.unsigned_abs())
-}
-
-/// The values divided by their greatest common divisor, the last non-zero
-/// of the first `lead` made positive.
-fn reduced<const N: usize>(values: [BigInt; N], lead: usize) -> [BigInt; N] {
-    // Most often the values themselves fit 128 bits: reduced there, faster.
-    if let Some(words) = words(&values) {
-        let divisor = words.iter().fold(0i128, |g, v| g.gcd(v));
-        if divisor == 0 {
-            return values;
-        }
-        let negative = words[..lead].iter().rev().find(|v| **v != 0).is_some_and(|v| *v < 0);
-        let divisor = if negative { -divisor } else { divisor };
-        return words.map(|v| BigInt::from(v / divisor));
-    }
-    let divisor = values.iter().fold(BigInt::zero(), |g, v| g.gcd(v));
-    if divisor.is_zero() {
-        return values;
-    }
-    let negative = values[..lead].iter().rev().find(|v| !v.is_zero()).is_some_and(Signed::is_negative);
-    let divisor = if negative { -divisor } else { divisor };
-    values.map(|v| v / &divisor)
-}
-
-/// The values as `i128`, when they all fit.
-fn words<const N: usize>(values: &[BigInt; N]) -> Option<[i128; N]> {
-    let values = values.each_ref().map(|v| v.to_i128().filter(|w| *w != i128::MIN));
-    values.iter().all(Option::is_some).then(|| values.map(|v| v.expect("checked")))
-}
-
-/// The plane with `normal` through `point` (both in scaled units, scale
-/// `2D`) in pixel units, reduced and signed as the book prints it (see
-/// [`crate::geometry::plane::Geometry::plane`]). In scaled units the plane is
-/// `a·X + b·Y + c·Z + d' = 0` with `d' = −(a·X₁ + b·Y₁ + c·Z₁)`, and
-/// `X = 2D·x`.
-pub(crate) fn plane_through(normal: &[BigInt; 3], point: &[BigInt; 3], scale: &BigInt) -> PlaneEquation {
-    let [a, b, c] = normal;
-    let d = -(a * &point[0] + b * &point[1] + c * &point[2]);
-    let [a, b, c, d] = reduced([a * scale, b * scale, c * scale, d], 3);
-    PlaneEquation { a, b, c, d }
 }
 
 /// The line through scaled points `p` and `q` (`p_y ≠ q_y`) in pixel units,

@@ -3,7 +3,7 @@
 //! same rules and in the same order as the word-sized scan converter.
 
 use crate::geometry::big::{BigPolygon, Words, big, rule_index, sum_of_products};
-use crate::geometry::plane::PlaneEquation;
+use crate::geometry::equation::PlaneEquation;
 use crate::raster::depth::{Depth, DepthStepper};
 use crate::raster::scan::{self, Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};

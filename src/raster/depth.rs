@@ -10,7 +10,8 @@ use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 
-use crate::geometry::plane::{Geometry, PlaneEquation};
+use crate::geometry::equation::PlaneEquation;
+use crate::geometry::plane::Geometry;
 use crate::numbers::{Exact, Q, Word, cmp_fractions, exact_and_places, floor_div};
 use crate::rules::DepthStore;
 

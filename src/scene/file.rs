@@ -578,7 +578,7 @@ impl PolygonFile {
             }
         }
         if vertices.len() < 3 {
-            let error = crate::geometry::plane::GeometryError::TooFewVertices(vertices.len());
+            let error = crate::geometry::equation::GeometryError::TooFewVertices(vertices.len());
             return Err(fail(&name, PolygonProblem::Geometry(error)));
         }
         let geometry_error = |e| fail(&name, PolygonProblem::Geometry(e));

@@ -30,7 +30,8 @@ use num_traits::{CheckedDiv, CheckedMul, CheckedSub};
 use serde::Deserialize;
 
 use crate::error::{Error, Usage};
-use crate::geometry::plane::{Geometry, GeometryError};
+use crate::geometry::equation::GeometryError;
+use crate::geometry::plane::Geometry;
 use crate::numbers::{Exact, Q};
 use crate::raster::depth::{DepthTest, Stored};
 use crate::rules::Rules;

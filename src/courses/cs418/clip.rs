@@ -1,8 +1,7 @@
 //! Clipping to the view volume, the winding test and the course's DDA, over
 //! any [`Scalar`].
 
-use super::raster::Vertex;
-use super::scalar::Scalar;
+use super::scalar::{Scalar, Vertex};
 
 /// Whether a screen triangle's vertices run clockwise as the image shows
 /// them (y down), the front faces `cull` keeps.

@@ -8,7 +8,7 @@ use num_rational::BigRational;
 use super::clip::{Dda, clip, clockwise};
 use super::compare::{Comparison, Primitive, Shape, Span};
 use super::image::{Image, byte, linear_texels, to_srgb};
-use super::scalar::Scalar;
+use super::scalar::{Scalar, Vertex};
 use super::{Case, CaseError, Command, error};
 
 /// The arithmetic the course's algorithm runs in.
@@ -54,7 +54,6 @@ enum Attributes<S> {
     /// divided by 0 as the course's floats do it, giving infinities and NaN.
     AtInfinity([f64; ATTRIBUTES]),
 }
-pub(super) type Vertex<S> = Vec<S>;
 
 /// Runs a case in an arithmetic.
 pub fn render(case: &Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {

@@ -98,3 +98,6 @@ impl Scalar for BigRational {
         if self.is_integer() { self.numer().to_string() } else { format!("{}/{}", self.numer(), self.denom()) }
     }
 }
+
+/// A vertex as the pipeline carries it: position and attributes, one number each.
+pub(super) type Vertex<S> = Vec<S>;
