@@ -109,7 +109,7 @@ pub use scene::text::{printable, read_text};
 pub use scene::{Antialias, MAX_SIDE, Polygon, Scene, max_for_bits};
 pub use simulate::buffer::Buffers;
 pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};
-pub use simulate::pipeline::{Simulation, Stats, fate};
+pub use simulate::simulation::{Simulation, Stats, fate};
 pub use simulate::stages::{StageSet, describe};
 pub use teach::{exercise, grade};
 pub use words::{Arg, Lang, language, localize_decimal, polygon_label, set_language, text as message, with_language};

@@ -25,7 +25,7 @@ use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Antialias, Scene};
 use crate::simulate::buffer::Buffers;
 use crate::simulate::events::{Fate, Outcome, Unobserved};
-use crate::simulate::pipeline::{Simulation, fate};
+use crate::simulate::simulation::{Simulation, fate};
 use crate::simulate::stages::{PixelStages, Plain, WithEffects, blend};
 
 /// The averaged picture after one polygon.

@@ -30,7 +30,7 @@ pub fn exact_json(value: impl Into<Exact>) -> serde_json::Value {
 use crate::scene::perspective::Clip;
 use crate::scene::{Scene, Winding};
 use crate::simulate::events::Fate;
-use crate::simulate::pipeline::fate;
+use crate::simulate::simulation::fate;
 use crate::simulate::stages::describe as stages;
 
 /// The lines that open a text report: the scene's size, bit depths, test,
@@ -281,7 +281,7 @@ mod tests {
     /// heading said "cleared to 15" while the buffer held 1.
     #[test]
     fn heading_tells_the_clear_value_the_buffer_holds_for_every_preset_and_override() {
-        use crate::simulate::pipeline::Simulation;
+        use crate::simulate::simulation::Simulation;
         let mut checked = 0;
         for preset in ["rogers", "buet"] {
             for store in [None, Some("quantized"), Some("exact")] {

@@ -9,7 +9,7 @@ use crate::observe::trace::{Recorder, ScanlineRecord};
 use crate::scene::Scene;
 use crate::simulate::buffer::Buffers;
 use crate::simulate::events::{Fate, Outcome, PixelEvent};
-use crate::simulate::pipeline::Simulation;
+use crate::simulate::simulation::Simulation;
 
 /// What the stepper passes over on its way to the next stop.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -16,7 +16,7 @@ use crate::raster::sink::{PixelRect, RasterSink};
 use crate::rules::Rules;
 use crate::scene::Scene;
 use crate::simulate::events::Unobserved;
-use crate::simulate::pipeline::Simulation;
+use crate::simulate::simulation::Simulation;
 
 /// Which kind of boundary a centre lies on, as drawn (y up, row 0 at the bottom).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -1,5 +1,7 @@
 //! Simulate: the driver.
 pub mod buffer;
 pub mod events;
-pub mod pipeline;
+mod levels;
+pub mod simulation;
 pub mod stages;
+mod tiles;

@@ -13,7 +13,7 @@ use crate::numbers::{Q, fraction, short_in_files};
 use crate::scene::random::SplitMix64;
 use crate::scene::{Scene, max_for_bits};
 use crate::simulate::events::{Observer, Outcome, PixelEvent, ScanlineEvent};
-use crate::simulate::pipeline::Simulation;
+use crate::simulate::simulation::Simulation;
 
 /// A case that students get wrong, which an exercise can be asked to contain.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]

@@ -1,0 +1,217 @@
+//! The plain loop on a quantized z-buffer: the depth test and the store of
+//! the book's algorithm on the cells themselves, with nothing between them,
+//! polygon by polygon in scene order.
+
+use std::hint::select_unpredictable;
+
+use crate::numbers::Word;
+use crate::raster::convert::{Scratch, rasterize};
+use crate::raster::depth::{Depth, DepthStepper, DepthTest, Stored};
+use crate::raster::scan::{Crossing, Span};
+use crate::raster::sink::{PixelRect, RasterSink};
+use crate::scene::{Polygon, Scene};
+use crate::simulate::buffer::{FrameCell, LevelCells};
+use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
+use crate::simulate::simulation::{Stats, fate, prefetch_ahead};
+
+/// What the plain loop on a quantized z-buffer needs besides the cells.
+pub(super) struct Levels<'a, 's> {
+    pub(super) scene: &'s Scene,
+    pub(super) test: DepthTest,
+    pub(super) depth_max: u32,
+    pub(super) stats: &'a mut Stats,
+    pub(super) scratch: &'a mut Scratch,
+}
+
+impl<'s> Levels<'_, 's> {
+    /// Draws polygon `index` within `rect` on the cells.
+    #[inline]
+    pub(super) fn draw<F: FrameCell, O: Observer>(
+        &mut self,
+        (frame, depth): (&mut [F], &mut [u32]),
+        first_row: u32,
+        index: usize,
+        rect: PixelRect,
+        observer: &mut O,
+    ) {
+        let polygon = &self.scene.polygons[index];
+        let mut sink = LevelSink {
+            index,
+            polygon,
+            value: F::from_value(polygon.value),
+            test: self.test,
+            depth_max: self.depth_max,
+            width: self.scene.width as usize,
+            first_row,
+            frame,
+            depth,
+            stats: &mut *self.stats,
+            observer,
+        };
+        rasterize(polygon.geometry(), self.scene.rules, rect, self.scratch, &mut sink);
+    }
+}
+
+/// One polygon on the whole raster.
+pub(super) struct OnePolygon<'a, 's, O> {
+    pub(super) levels: Levels<'a, 's>,
+    pub(super) index: usize,
+    pub(super) observer: &'a mut O,
+}
+
+impl<O: Observer> LevelCells for OnePolygon<'_, '_, O> {
+    type Output = ();
+
+    fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
+        let rect = PixelRect::raster(self.levels.scene.width, self.levels.scene.height);
+        self.levels.draw((frame, depth), 0, self.index, rect, self.observer);
+    }
+}
+
+/// Every polygon from `first` on, in scene order, on the whole raster.
+pub(super) struct InOrder<'a, 's> {
+    pub(super) levels: Levels<'a, 's>,
+    pub(super) first: usize,
+}
+
+impl LevelCells for InOrder<'_, '_> {
+    type Output = ();
+
+    fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
+        let scene = self.levels.scene;
+        let rect = PixelRect::raster(scene.width, scene.height);
+        for index in self.first..scene.polygons.len() {
+            prefetch_ahead(scene, index);
+            if fate(scene, index) == Fate::Drawn {
+                self.levels.draw((&mut *frame, &mut *depth), 0, index, rect, &mut Unobserved);
+            }
+        }
+    }
+}
+
+/// The plain stages on a quantized z-buffer, working on the cells directly:
+/// the same decisions as [`Plain::decide`], without a match per access.
+pub(super) struct LevelSink<'a, O, F> {
+    pub(super) index: usize,
+    pub(super) polygon: &'a Polygon,
+    /// The polygon's value in a framebuffer cell.
+    pub(super) value: F,
+    pub(super) test: DepthTest,
+    pub(super) depth_max: u32,
+    pub(super) width: usize,
+    /// The raster row of the cells' first row (a band's cells start there).
+    pub(super) first_row: u32,
+    pub(super) frame: &'a mut [F],
+    pub(super) depth: &'a mut [u32],
+    pub(super) stats: &'a mut Stats,
+    pub(super) observer: &'a mut O,
+}
+
+impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
+    /// The span in 64-bit integers when nobody watches the pixels and every
+    /// value of the span fits: the same decisions as [`LevelSink::pixel`].
+    /// Returns `false` (having done nothing) when it does not apply.
+    #[inline]
+    pub(super) fn span_fast<W: Word>(&mut self, row: u32, first: u32, last: u32, stepper: &DepthStepper<W>) -> bool {
+        const LIMIT: i128 = 1 << 61;
+        if O::OBSERVES_PIXELS {
+            return false;
+        }
+        let (whole, remainder, denominator, step_whole, step_remainder) = stepper.parts();
+        let (Some(mut whole), Some(mut remainder), Some(denominator), Some(step_whole), Some(step_remainder)) =
+            (whole.to_i64(), remainder.to_i64(), denominator.to_i64(), step_whole.to_i64(), step_remainder.to_i64())
+        else {
+            return false;
+        };
+        // The whole parts along the span and twice a remainder must fit too:
+        // proven for a polygon that runs on 64 bits (Geometry::fits_i64), checked otherwise.
+        let length = i128::from(last - first) + 1;
+        let reach = || i128::from(whole).abs() + length * (i128::from(step_whole).abs() + 1);
+        if !W::NARROW && (i128::from(denominator) >= LIMIT || reach() >= LIMIT) {
+            return false;
+        }
+        // z = whole + remainder/denominator with 0 ≤ remainder < denominator and an
+        // integer stored s: z > s ⇔ ⌈z⌉ > s, z ≥ s ⇔ ⌊z⌋ ≥ s, z < s ⇔ ⌊z⌋ < s,
+        // z ≤ s ⇔ ⌈z⌉ ≤ s. So each test is sign·(v − s) > threshold, with v the
+        // floor or the ceiling, sign ±1 and threshold 0 (strict) or −1 (or equal).
+        let use_ceiling = matches!(self.test, DepthTest::Greater | DepthTest::LessEqual);
+        let sign: i64 = if self.test.larger_is_nearer() { 1 } else { -1 };
+        let threshold = match self.test {
+            // sign·(v − s) lies well inside ±2^62 (the checks above), so these decide alone.
+            DepthTest::Always => i64::MIN,
+            DepthTest::Never => i64::MAX,
+            _ => -i64::from(self.test.equal_passes()),
+        };
+        let (max, value) = (i64::from(self.depth_max), self.value);
+        let start = (row - self.first_row) as usize * self.width;
+        let cells = start + first as usize..=start + last as usize;
+        let (tested, mut written) = (u64::from(last - first) + 1, 0u64);
+        // Branch-free: every cell is rewritten with its old or its new value.
+        for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
+            let stored = i64::from(*depth);
+            let v = whole + i64::from(use_ceiling & (remainder != 0));
+            let passes = sign * (v - stored) > threshold;
+            let rounded = (whole + i64::from(2 * remainder >= denominator)).clamp(0, max) as u32;
+            *depth = select_unpredictable(passes, rounded, *depth);
+            *frame = select_unpredictable(passes, value, *frame);
+            written += u64::from(passes);
+            whole += step_whole;
+            remainder += step_remainder;
+            let carry = remainder >= denominator;
+            remainder -= select_unpredictable(carry, denominator, 0);
+            whole += i64::from(carry);
+        }
+        self.stats.tested += tested;
+        self.stats.written += written;
+        true
+    }
+}
+
+impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
+    const OBSERVES_SCANLINES: bool = O::OBSERVES_SCANLINES;
+
+    #[inline]
+    fn span<W: Word>(&mut self, row: u32, first: u32, last: u32, mut stepper: DepthStepper<W>) {
+        if self.span_fast(row, first, last, &stepper) {
+            return;
+        }
+        for x in first..=last {
+            self.pixel(x, row, stepper.current());
+            stepper.advance();
+        }
+    }
+
+    fn scanline(&mut self, row: u32, crossings: &[Crossing], spans: &[Span]) {
+        let (index, polygon) = (self.index, self.polygon);
+        self.observer.scanline(&ScanlineEvent { index, polygon, row, crossings, spans });
+    }
+
+    #[inline]
+    fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
+        let cell = (y - self.first_row) as usize * self.width + x as usize;
+        let (stored_before, frame_before) = (self.depth[cell], self.frame[cell].value());
+        self.stats.tested += 1;
+        let written = self.test.passes(&depth, &Stored::Level(stored_before));
+        let (stored_after, frame_after) = if written {
+            self.stats.written += 1;
+            let level = depth.quantized(self.depth_max);
+            self.depth[cell] = level;
+            self.frame[cell] = self.value;
+            (level, self.polygon.value)
+        } else {
+            (stored_before, frame_before)
+        };
+        self.observer.pixel(&PixelEvent {
+            index: self.index,
+            x,
+            y,
+            compared: depth.clone(),
+            depth,
+            stored_before: Stored::Level(stored_before),
+            frame_before,
+            outcome: if written { Outcome::Written } else { Outcome::Hidden },
+            stored_after: Stored::Level(stored_after),
+            frame_after,
+        });
+    }
+}
