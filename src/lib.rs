@@ -34,7 +34,7 @@
 //! - **Which depth is nearer.** `greater` (the book's default): the viewer is at
 //!   +∞ on z, larger z is nearer, the z-buffer is cleared to 0 and a pixel is
 //!   written when its exact z is greater than the stored integer. `less`
-//!   (seeds 003/004): cleared to `2^depth_bits − 1`, written when less.
+//!   (the Russian text on loop order and the Ukrainian Wikipedia): cleared to `2^depth_bits − 1`, written when less.
 //!   Equal depths never overwrite (`depth::tests::equal_depth_does_not_overwrite`),
 //!   except with `greater-equal` and `less-equal`, where they do
 //!   (`depth::tests::equal_depth_overwrites_with_greater_equal_and_less_equal`);

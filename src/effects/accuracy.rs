@@ -1,6 +1,6 @@
 //! `zsim accuracy`: every arithmetic mode on one generated set of scenes,
 //! compared with the exact mode, and a sweep of depth bits on nearly
-//! coplanar polygons (seed 004's precision discussion, measured).
+//! coplanar polygons (the Ukrainian Wikipedia's precision discussion, measured).
 //!
 //! Times are measured here, in one run, as the least of three repetitions;
 //! compare them as ratios.

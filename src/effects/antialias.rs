@@ -1,4 +1,4 @@
-//! Antialiasing by post-filtering (seed 002): the scene is computed at k×k
+//! Antialiasing by post-filtering (the Russian coursework): the scene is computed at k×k
 //! samples per pixel and averaged. Two approaches, as the seed describes:
 //!
 //! - `"depth": "sample"`: both buffers at k× resolution; colours and depths

@@ -1,11 +1,11 @@
-//! Other loop orders and smaller z-buffers (seeds 000, 001, 003), all driving
+//! Other loop orders and smaller z-buffers (the Russian lecture notes, the Chinese course notes and the Russian text on loop order), all driving
 //! the same scan conversion or the same crossing rule:
 //!
 //! - segmented z-buffers: strips, tiles or one scanline, processing the image
 //!   segment by segment with a z-buffer only as large as one segment, each
 //!   segment seeing only the polygons whose bounding boxes touch it;
 //! - the "for every pixel, for every polygon" order with one depth variable
-//!   (seed 001), with a point-in-polygon test at each centre: ray casting or
+//!   (the Chinese course notes), with a point-in-polygon test at each centre: ray casting or
 //!   the arc-length (quadrant) method.
 
 use std::cmp::Ordering;
@@ -217,7 +217,7 @@ pub struct InsideDifference {
 }
 
 /// "For every pixel, for every polygon" with one depth variable per pixel
-/// (seed 001). Returns the buffers and, with [`Inside::Arc`], every
+/// (the Chinese course notes). Returns the buffers and, with [`Inside::Arc`], every
 /// (pixel, polygon) whose inside test differs from the scanline rule.
 pub fn run_pixel_order(scene: &Scene, inside: Inside) -> (Buffers, Vec<InsideDifference>) {
     let stages = stages(scene);

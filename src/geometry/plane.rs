@@ -266,7 +266,7 @@ impl Geometry {
     }
 
     /// How much z changes from one pixel centre to the next on a scanline,
-    /// `−a/c` (seed 002: `z₁ = z − a/c`); `None` for a polygon seen edge-on.
+    /// `−a/c` (the Russian coursework: `z₁ = z − a/c`); `None` for a polygon seen edge-on.
     pub fn slope(&self) -> Option<Exact> {
         let PlaneEquation { a, c, .. } = self.plane();
         (!c.is_zero()).then(|| Exact::from_big(-a, c))

@@ -14,7 +14,7 @@ pub struct SpanRecord {
     pub left: Exact,
     /// Right crossing `x_b`.
     pub right: Exact,
-    /// The plane's depth at `(x_a, y)` (seed 000's `z_a`); `None` when the
+    /// The plane's depth at `(x_a, y)` (the Russian lecture notes' `z_a`); `None` when the
     /// plane has no z term (never for a polygon that is drawn).
     pub left_depth: Option<Exact>,
     /// The plane's depth at `(x_b, y)` (`z_b`), as `left_depth`.

@@ -87,7 +87,7 @@ impl BigPolygon {
         }
     }
 
-    /// The pixels `first ..= last` of `row`, the depth stepped by the seed's
+    /// The pixels `first ..= last` of `row`, the depth stepped by the coursework's
     /// `z₁ = z − A/C` per column.
     fn span<S: RasterSink>(&self, row: u32, first: u32, last: u32, sink: &mut S) {
         // The numerator over |2C| falls by 2A·sign(C) per column, below 2^125 as

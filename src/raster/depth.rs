@@ -62,7 +62,7 @@ pub enum DepthTest {
     /// written when `z > stored`.
     #[default]
     Greater,
-    /// Seeds 003/004: smaller z is nearer, buffer cleared to `2^depth_bits − 1`,
+    /// the Russian text on loop order and the Ukrainian Wikipedia: smaller z is nearer, buffer cleared to `2^depth_bits − 1`,
     /// written when `z < stored`.
     Less,
     /// As `greater`, but an equal depth passes too (GL's `GL_GEQUAL`): of two
@@ -171,7 +171,7 @@ impl DepthTest {
     }
 
     /// Whether a depth lies on the kept side of a cross-section at `section`
-    /// (seed 002: `z ≤ Zsection` when larger z is nearer; mirrored for `Less`).
+    /// (the Russian coursework: `z ≤ Zsection` when larger z is nearer; mirrored for `Less`).
     pub fn keeps_section(self, incoming: &Depth, section: Q) -> bool {
         let ord = incoming.cmp_exact(&Exact::Word(section));
         if self.larger_is_nearer() { ord != Ordering::Greater } else { ord != Ordering::Less }
@@ -458,7 +458,7 @@ impl DepthStepper {
     /// `scan_y`, for a polygon whose Newell `c` is non-zero.
     ///
     /// In scaled units the depth at `(X, Y)` is
-    /// `Z = Z₁ − (a(X − X₁) + b(Y − Y₁))/c` (seed 002: `z = −(ax + by + d)/c`),
+    /// `Z = Z₁ − (a(X − X₁) + b(Y − Y₁))/c` (the Russian coursework: `z = −(ax + by + d)/c`),
     /// and `z = Z / 2D`. Its numerator is bounded by `20nR³ < 2^123`.
     pub fn start(geometry: &Geometry, column: i128, scan_y: i128) -> DepthStepper {
         let [a, b, c] = geometry.normal;

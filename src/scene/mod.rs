@@ -76,16 +76,16 @@ impl Winding {
 /// are absent.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct Effects {
-    /// Cross-section depth (seed 002): with `greater`, pixels are written only
+    /// Cross-section depth (the Russian coursework): with `greater`, pixels are written only
     /// where `z ≤ section`; with `less`, only where `z ≥ section`.
     pub section: Option<Q>,
     /// Back-face culling: skip polygons whose vertices run this way.
     pub cull: Option<Winding>,
-    /// Perspective with near-plane clipping (seed 002 §2.2, seed 004).
+    /// Perspective with near-plane clipping (the Russian coursework §2.2, the Ukrainian Wikipedia).
     pub perspective: Option<Perspective>,
-    /// Antialiasing by post-filtering (seed 002).
+    /// Antialiasing by post-filtering (the Russian coursework).
     pub antialias: Option<Antialias>,
-    /// Whether some polygon has an opacity (transparency, seeds 000 and 002).
+    /// Whether some polygon has an opacity (transparency, the Russian lecture notes and the Russian coursework).
     pub transparency: bool,
 }
 

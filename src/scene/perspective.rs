@@ -1,4 +1,4 @@
-//! Perspective (seed 002 §2.2, seed 004): near-plane clipping by the seed's
+//! Perspective (the Russian coursework §2.2, the Ukrainian Wikipedia): near-plane clipping by the coursework's
 //! formula, the projective map to the picture plane, and the w-buffer's
 //! eye-space depth, all exact.
 //!
@@ -21,9 +21,9 @@ use crate::raster::depth::Depth;
 pub struct Perspective {
     /// `d`: the eye's distance from the picture plane.
     pub distance: Q,
-    /// `n > 0`: the seed's small offset; polygons are clipped at `z = d − n`.
+    /// `n > 0`: the coursework's small offset; polygons are clipped at `z = d − n`.
     pub near: Q,
-    /// Keep the eye-space depth z in the z-buffer (the w-buffer of seed 004)
+    /// Keep the eye-space depth z in the z-buffer (the w-buffer of the Ukrainian Wikipedia)
     /// instead of z'.
     pub store_w: bool,
 }
@@ -64,7 +64,7 @@ impl Perspective {
     /// Sutherland–Hodgman against `z = d − n`, keeping `z ≤ d − n`, with the
     /// seed's formula for a new vertex D on edge AC:
     /// `D.t = A.t + (C.t − A.t)·(D.z − A.z)/(C.z − A.z)`. For a triangle this
-    /// is the seed's case analysis: 0 vertices in front give nothing, 1 the
+    /// is the coursework's case analysis: 0 vertices in front give nothing, 1 the
     /// triangle CDE, 2 the quadrilateral DABE (kept as one polygon), 3 the
     /// whole. Exact however large (new vertices in big rationals where 128
     /// bits overflow).
@@ -181,7 +181,7 @@ mod tests {
         assert_eq!((two.len(), clip), (4, Clip::Kept { front: 2, of: 3 }), "2 in front: the quadrilateral DABE");
         let (three, _) = p.clip(&triangle([0, 1, 2]));
         assert_eq!(three.len(), 3, "3 in front: the whole");
-        // D on AC by the seed's formula: A = (0, 10, 0), C = (0, 0, 0)… here A(10,0,0) to C(0,10,78): t = 38/78.
+        // D on AC by the coursework's formula: A = (0, 10, 0), C = (0, 0, 0)… here A(10,0,0) to C(0,10,78): t = 38/78.
         assert!(two.iter().all(|v| v[2] <= e(38)));
         assert!(two.contains(&[Q::new(10 * 40, 78), Q::new(380, 78), q(38)].map(Exact::Word)));
     }

@@ -1,5 +1,5 @@
-//! Random scenes (seed 002's program adds random triangles one by one) and
-//! the memory figures of the buffers (seed 002: "almost 1.5 MB").
+//! Random scenes (the Russian coursework's program adds random triangles one by one) and
+//! the memory figures of the buffers (the Russian coursework: "almost 1.5 MB").
 
 use std::fmt::Write as _;
 
@@ -120,7 +120,7 @@ impl BufferMemory {
 }
 
 /// The framebuffer's and z-buffer's memory for a raster, supersampled
-/// `k`×`k` (seed 002: with `depth_at_samples` both buffers are at the higher
+/// `k`×`k` (the Russian coursework: with `depth_at_samples` both buffers are at the higher
 /// resolution, the second approach; otherwise only the framebuffer, the first).
 pub fn memory(
     width: u64,

@@ -61,7 +61,7 @@ fn w_buffer_keeps_what_saturated_z_prime_loses() {
 #[test]
 fn a_clipped_triangle_draws_as_its_projected_clipped_polygon() {
     // d = 40, n = 2: the near plane is z = 38. Vertices A(12, 12, 0), B(20, 12, 0) are in
-    // front, C(16, 20, 76) behind: the seed's second case, the quadrilateral DABE.
+    // front, C(16, 20, 76) behind: the coursework's second case, the quadrilateral DABE.
     // D on CA: t = (38 − 76)/(0 − 76) = 1/2 → (14, 16, 38); E on BC: t = 38/76 → (18, 16, 38).
     // Projected (scale d/(d − z): 1 at z = 0, 20 at z = 38): A(12, 12, 0), B(20, 12, 0),
     // E(16 + 2·20, 16, 760) = (56, 16, 760), D(16 − 2·20, 16, 760) = (−24, 16, 760).

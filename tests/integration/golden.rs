@@ -1,4 +1,4 @@
-//! The book's worked example (seed 002): a rectangle pierced by a triangle on a
+//! The book's worked example (the Russian coursework): a rectangle pierced by a triangle on a
 //! 32×32 raster with a 2-bit framebuffer and a 4-bit z-buffer. The four printed
 //! blocks are kept verbatim in `tests/fixtures/rogers/`; zsim reproduces them
 //! exactly except for the book's two misprints, which are pinned here:

@@ -1,5 +1,5 @@
 //! The float modes' scanline loop: crossings evaluated or stepped down each
-//! edge (seed 000's Δx), depth evaluated or stepped by −a/c, in `f32` or `f64`.
+//! edge (the Russian lecture notes' Δx), depth evaluated or stepped by −a/c, in `f32` or `f64`.
 
 use std::hint::select_unpredictable;
 
@@ -217,7 +217,7 @@ pub(super) fn scanline_in<F: Float + Ring>(scene: &Scene, index: usize, row: u32
     }
 }
 
-/// An edge for the incremental modes: x stepped by Δx per scanline (seed 000).
+/// An edge for the incremental modes: x stepped by Δx per scanline (the Russian lecture notes).
 pub(super) struct Edge<F> {
     first_row: i64,
     last_row: i64,

@@ -5,7 +5,7 @@
 //! |---|---|---|
 //! | `exact` | the core: integers and rationals, depth stepped by exact whole part and remainder | nowhere (it is the reference) |
 //! | `f64` | crossings and the plane's depth evaluated per pixel in `f64` | ties: a centre on an edge or a depth of exactly k + 1/2 may round either way |
-//! | `f64-incremental` | x stepped by Δx per scanline along each edge (seed 000), z by −a/c per pixel (seed 002), in `f64` | errors accumulate along long edges and spans |
+//! | `f64-incremental` | x stepped by Δx per scanline along each edge (the Russian lecture notes), z by −a/c per pixel (the Russian coursework), in `f64` | errors accumulate along long edges and spans |
 //! | `f32-incremental` | the same in `f32` | as above, 2^29 times larger; depths above 2^24 lose whole levels |
 //! | `f32` | per-pixel evaluation in `f32` | rounding of every product; depths above 2^24 lose whole levels |
 //! | `f32-edge` | a GPU's loop: edge functions over the bounding box, stepped per column in `f32`, depth from the plane stepped by ∂z/∂x | rounding of the edge functions at centres on an edge; depths above 2^24 lose whole levels |
