@@ -98,7 +98,7 @@ pub use numbers::{
 };
 pub use observe::step::{Meant, PolygonTrace, Skip, Tracer, judge, skip_text};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
-pub use observe::{check, explain, figure, report, tie};
+pub use observe::{check, explain, figure, history, report, tie};
 pub use raster::convert::{Scratch, rasterize};
 pub use raster::depth::{Depth, DepthTest, Stored};
 pub use raster::scan::{Crossing, Span};
