@@ -131,24 +131,20 @@ impl Rules {
             Preset::Gpu => "gpu",
         };
         let rows = match self.rows {
-            RowRule::HalfOpen => "rows half-open (min ≤ y < max), crossings paired",
-            RowRule::Closed => "rows closed (min ≤ y ≤ max), one span from the least to the greatest crossing",
-            RowRule::TopLeft => {
-                "rows top-left (min < y ≤ max: a top edge's centres in, a bottom edge's out), crossings paired"
-            }
+            RowRule::HalfOpen => words!("rules-rows-half-open"),
+            RowRule::Closed => words!("rules-rows-closed"),
+            RowRule::TopLeft => words!("rules-rows-top-left"),
         };
         let columns = match self.columns {
-            ColumnRule::CentreInside => "columns whose centre lies in the span",
-            ColumnRule::CellHolds => "columns from the cell holding x_a to the cell holding x_b",
-            ColumnRule::HalfOpen => {
-                "columns whose centre lies in [x_l, x_r): a left edge's centres in, a right edge's out"
-            }
+            ColumnRule::CentreInside => words!("rules-columns-centre-inside"),
+            ColumnRule::CellHolds => words!("rules-columns-cell-holds"),
+            ColumnRule::HalfOpen => words!("rules-columns-half-open"),
         };
         let store = match self.store {
-            DepthStore::Quantized => "depth rounded half up and saturated",
-            DepthStore::Exact => "depth stored exactly",
+            DepthStore::Quantized => words!("rules-store-quantized"),
+            DepthStore::Exact => words!("rules-store-exact"),
         };
-        format!("rules {preset}: {rows}; {columns}; {store}")
+        words!("rules-describe", preset = preset, rows = rows, columns = columns, store = store)
     }
 }
 

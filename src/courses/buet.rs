@@ -28,7 +28,7 @@ pub struct CaseError {
 impl std::fmt::Display for CaseError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self.line {
-            Some(line) => write!(f, "line {line}: {}", self.message),
+            Some(line) => f.write_str(&words!("case-line", line = line.to_string(), problem = self.message.as_str())),
             None => f.write_str(&self.message),
         }
     }
@@ -74,14 +74,14 @@ impl Config {
         };
         let size = |line: usize, word: &str| -> Result<u32, CaseError> {
             word.parse::<u32>().ok().filter(|v| (1..=crate::scene::MAX_SIDE as u32).contains(v)).ok_or_else(|| {
-                case_error(Some(line), format!("\"{word}\" is not a raster size from 1 to {}", crate::scene::MAX_SIDE))
+                case_error(Some(line), words!("buet-size", word = word, max = crate::scene::MAX_SIDE.to_string()))
             })
         };
         let Some((first_line, first)) = lines.first() else {
-            return Err(case_error(None, "is empty; it needs the raster size \"W H\""));
+            return Err(case_error(None, words!("buet-config-empty")));
         };
         let [w, h] = first.as_slice() else {
-            return Err(case_error(Some(*first_line), "the first line must be the raster size \"W H\""));
+            return Err(case_error(Some(*first_line), words!("buet-config-first")));
         };
         let (width, height) = (size(*first_line, w)?, size(*first_line, h)?);
         let one = Q::from_integer(1);
@@ -100,33 +100,25 @@ impl Config {
                     let (line, words) = &lines[index];
                     match words.as_slice() {
                         [word] => number(*line, word),
-                        _ => Err(case_error(Some(*line), "expected one number")),
+                        _ => Err(case_error(Some(*line), words!("buet-one-number"))),
                     }
                 };
                 let left = single(1)?;
                 let bottom = single(2)?;
                 let (line, words) = &lines[3];
                 let [front, rear] = words.as_slice() else {
-                    return Err(case_error(Some(*line), "expected \"z_front z_rear\""));
+                    return Err(case_error(Some(*line), words!("buet-z-range")));
                 };
                 let (z_front, z_rear) = (number(*line, front)?, number(*line, rear)?);
                 if left >= Q::from_integer(0) || bottom >= Q::from_integer(0) {
-                    return Err(case_error(
-                        Some(lines[1].0),
-                        "left_x and bottom_y must be negative (the window is left_x … −left_x)",
-                    ));
+                    return Err(case_error(Some(lines[1].0), words!("buet-window-negative")));
                 }
                 if z_front > z_rear {
-                    return Err(case_error(Some(*line), "z_front must not exceed z_rear"));
+                    return Err(case_error(Some(*line), words!("buet-z-order")));
                 }
                 Ok(Config { width, height, left, bottom, z_front, z_rear, z_max: z_rear })
             }
-            n => Err(case_error(
-                None,
-                format!(
-                    "has {n} non-empty lines; expected 1 (\"W H\") or 4 (\"W H\", left_x, bottom_y, \"z_front z_rear\")"
-                ),
-            )),
+            n => Err(case_error(None, words!("buet-config-lines", count = n.to_string()))),
         }
     }
 }
@@ -235,15 +227,16 @@ impl<'a> Lines<'a> {
         line
     }
 
-    /// The next line as exactly `count` numbers.
+    /// The next line as exactly `count` numbers; `what` is the catalogue
+    /// key naming them.
     fn numbers(&mut self, count: usize, what: &str) -> Result<Vec<f64>, CaseError> {
         let Some((line, text)) = self.next_line() else {
-            return Err(case_error(None, format!("ends where {what} was expected")));
+            return Err(case_error(None, words!("buet-ends", what = words!(what))));
         };
         let values: Result<Vec<f64>, _> = text.split_whitespace().map(str::parse::<f64>).collect();
         match values {
             Ok(values) if values.len() == count => Ok(values),
-            _ => Err(case_error(Some(line), format!("expected {what} ({count} numbers), found \"{text}\""))),
+            _ => Err(case_error(Some(line), words!("buet-numbers", what = words!(what), count = count.to_string(), found = text))),
         }
     }
 }
@@ -272,10 +265,10 @@ impl CaseScene {
             text.lines().enumerate().map(|(i, l)| (i + 1, l.trim())).filter(|(_, l)| !l.is_empty()).collect();
         let mut reader = Lines { lines: &lines, next: 0 };
         let three = |v: Vec<f64>| [v[0], v[1], v[2]];
-        let eye = three(reader.numbers(3, "the eye position")?);
-        let look = three(reader.numbers(3, "the look-at point")?);
-        let up = three(reader.numbers(3, "the up direction")?);
-        let p = reader.numbers(4, "fovY aspect near far")?;
+        let eye = three(reader.numbers(3, "buet-what-eye")?);
+        let look = three(reader.numbers(3, "buet-what-look")?);
+        let up = three(reader.numbers(3, "buet-what-up")?);
+        let p = reader.numbers(4, "buet-what-perspective")?;
         let perspective = [p[0], p[1], p[2], p[3]];
         let mut model = identity();
         let mut stack: Vec<Matrix> = Vec::new();
@@ -285,20 +278,20 @@ impl CaseScene {
                 "triangle" => {
                     let mut triangle = [[0.0; 3]; 3];
                     for vertex in &mut triangle {
-                        *vertex = transform(&model, three(reader.numbers(3, "a triangle vertex")?));
+                        *vertex = transform(&model, three(reader.numbers(3, "buet-what-vertex")?));
                     }
                     stage1.push(triangle);
                 }
-                "translate" => model = multiply(&model, &translation(three(reader.numbers(3, "a translation")?))),
-                "scale" => model = multiply(&model, &scaling(three(reader.numbers(3, "scale factors")?))),
+                "translate" => model = multiply(&model, &translation(three(reader.numbers(3, "buet-what-translation")?))),
+                "scale" => model = multiply(&model, &scaling(three(reader.numbers(3, "buet-what-scale")?))),
                 "rotate" => {
-                    let r = reader.numbers(4, "an angle and an axis")?;
+                    let r = reader.numbers(4, "buet-what-rotation")?;
                     model = multiply(&model, &rotation(r[0], [r[1], r[2], r[3]]));
                 }
                 "push" => stack.push(model),
-                "pop" => model = stack.pop().ok_or_else(|| case_error(Some(line), "pop without a matching push"))?,
+                "pop" => model = stack.pop().ok_or_else(|| case_error(Some(line), words!("buet-pop")))?,
                 "end" => break,
-                other => return Err(case_error(Some(line), format!("unknown command \"{other}\""))),
+                other => return Err(case_error(Some(line), words!("case-unknown-command", command = other))),
             }
         }
         Ok(CaseScene { eye, look, up, perspective, stage1 })
@@ -365,7 +358,7 @@ pub fn parse_stage(text: &str) -> Result<Vec<[[String; 3]; 3]>, CaseError> {
             continue;
         }
         let [x, y, z] = words.as_slice() else {
-            return Err(case_error(Some(i + 1), format!("expected three coordinates, found \"{}\"", line.trim())));
+            return Err(case_error(Some(i + 1), words!("buet-three-coordinates", found = line.trim())));
         };
         for word in [x, y, z] {
             parse_number(word).map_err(|e| case_error(Some(i + 1), e.to_string()))?;
@@ -373,7 +366,7 @@ pub fn parse_stage(text: &str) -> Result<Vec<[[String; 3]; 3]>, CaseError> {
         points.push([x.to_string(), y.to_string(), z.to_string()]);
     }
     if points.len() % 3 != 0 {
-        return Err(case_error(None, format!("has {} points, not a whole number of triangles", points.len())));
+        return Err(case_error(None, words!("buet-triangles", count = points.len().to_string())));
     }
     Ok(points.chunks_exact(3).map(|c| [c[0].clone(), c[1].clone(), c[2].clone()]).collect())
 }

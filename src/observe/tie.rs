@@ -35,13 +35,13 @@ pub enum Boundary {
 
 impl Boundary {
     /// The words for it: "left edge", "vertex", ….
-    pub fn words(self) -> &'static str {
+    pub fn words(self) -> String {
         match self {
-            Boundary::TopEdge => "top edge",
-            Boundary::BottomEdge => "bottom edge",
-            Boundary::LeftEdge => "left edge",
-            Boundary::RightEdge => "right edge",
-            Boundary::Vertex => "vertex",
+            Boundary::TopEdge => words!("boundary-top"),
+            Boundary::BottomEdge => words!("boundary-bottom"),
+            Boundary::LeftEdge => words!("boundary-left"),
+            Boundary::RightEdge => words!("boundary-right"),
+            Boundary::Vertex => words!("boundary-vertex"),
         }
     }
 }
@@ -203,13 +203,7 @@ fn deciding_rule(rules: Rules, boundary: Boundary) -> String {
 pub fn tie_text(rules: Rules, vertices: &[[Exact; 3]], x: u32, y: u32) -> Option<String> {
     let (boundary, a, b) = boundary_at(vertices, x, y)?;
     let point = |[x, y]: [Exact; 2]| format!("({}, {})", crate::numbers::fraction(x), crate::numbers::fraction(y));
-    let place = match boundary {
-        Boundary::TopEdge => words!("boundary-top"),
-        Boundary::BottomEdge => words!("boundary-bottom"),
-        Boundary::LeftEdge => words!("boundary-left"),
-        Boundary::RightEdge => words!("boundary-right"),
-        Boundary::Vertex => words!("boundary-vertex"),
-    };
+    let place = boundary.words();
     Some(match rule_covers(rules, boundary) {
         None => words!("tie-vertex", point = point(a), rule = deciding_rule(rules, boundary)),
         Some(covers) => words!(

@@ -140,12 +140,13 @@ impl Observer for CaseFinder {
         let scan_y = Q::new(2 * i128::from(row) + 1, 2);
         if let Some((k, v)) = event.polygon.vertices().iter().enumerate().find(|(_, v)| v[1] == scan_y) {
             self.note(HardCase::VertexOnScanline, || {
-                format!(
-                    "polygon {}: vertex {} ({}, {}) lies on the scanline of row {row}",
-                    index + 1,
-                    k + 1,
-                    short_in_files(&v[0]),
-                    short_in_files(&v[1])
+                words!(
+                    "place-vertex-on-scanline",
+                    polygon = (index + 1).to_string(),
+                    vertex = (k + 1).to_string(),
+                    x = short_in_files(&v[0]),
+                    y = short_in_files(&v[1]),
+                    row = row.to_string()
                 )
             });
         }
@@ -157,14 +158,24 @@ impl Observer for CaseFinder {
                 let column = (doubled - 1) / 2;
                 if (0..i128::from(self.width)).contains(&column) {
                     self.note(HardCase::CentreOnEdge, || {
-                        format!("pixel ({column}, {row}): its centre lies on an edge of polygon {}", index + 1)
+                        words!(
+                            "place-centre-on-edge",
+                            x = column.to_string(),
+                            y = row.to_string(),
+                            polygon = (index + 1).to_string()
+                        )
                     });
                 }
             }
         }
         if event.spans.len() >= 2 {
             self.note(HardCase::Concave, || {
-                format!("polygon {}: row {row} has {} spans", index + 1, event.spans.len())
+                words!(
+                    "place-spans",
+                    polygon = (index + 1).to_string(),
+                    row = row.to_string(),
+                    spans = event.spans.len().to_string()
+                )
             });
         }
     }
@@ -175,11 +186,13 @@ impl Observer for CaseFinder {
         let half = z.to_big() * num_bigint::BigInt::from(2);
         if self.quantized && half.is_integer() && half.to_integer().bit(0) {
             self.note(HardCase::HalfDepth, || {
-                format!(
-                    "pixel ({x}, {y}), polygon {}: z = {} rounds up to {}",
-                    index + 1,
-                    fraction(&z),
-                    event.compared.rounded()
+                words!(
+                    "place-half-depth",
+                    x = x.to_string(),
+                    y = y.to_string(),
+                    polygon = (index + 1).to_string(),
+                    z = fraction(&z),
+                    stored = event.compared.rounded().to_string()
                 )
             });
         }
@@ -187,11 +200,14 @@ impl Observer for CaseFinder {
         let range = num_bigint::BigInt::from(0)..=num_bigint::BigInt::from(self.depth_max);
         if self.quantized && event.outcome == Outcome::Written && !range.contains(&rounded) {
             self.note(HardCase::Saturation, || {
-                format!(
-                    "pixel ({x}, {y}), polygon {}: z = {} rounds to {rounded}, stored as {}",
-                    index + 1,
-                    fraction(&z),
-                    event.stored_after
+                words!(
+                    "place-saturation",
+                    x = x.to_string(),
+                    y = y.to_string(),
+                    polygon = (index + 1).to_string(),
+                    z = fraction(&z),
+                    rounded = rounded.to_string(),
+                    stored = event.stored_after.to_string()
                 )
             });
         }
@@ -209,11 +225,13 @@ impl Observer for CaseFinder {
             }
             Outcome::Hidden => {
                 self.note(HardCase::Hidden, || {
-                    format!(
-                        "pixel ({x}, {y}), polygon {}: z = {} does not pass the test against {} stored",
-                        index + 1,
-                        fraction(&z),
-                        event.stored_before
+                    words!(
+                        "place-hidden",
+                        x = x.to_string(),
+                        y = y.to_string(),
+                        polygon = (index + 1).to_string(),
+                        z = fraction(&z),
+                        stored = event.stored_before.to_string()
                     )
                 });
                 if let Some(earlier) = owner.filter(|o| *o != index) {
@@ -226,7 +244,7 @@ impl Observer for CaseFinder {
         // Only the pair this event touched can have become both won and lost.
         if let Some((a, b)) = pair.filter(|p| self.won.contains(p) && self.lost.contains(p)) {
             self.note(HardCase::Intersecting, || {
-                format!("polygons {} and {}: each is in front of the other somewhere", a + 1, b + 1)
+                words!("place-intersecting", first = (a + 1).to_string(), second = (b + 1).to_string())
             });
         }
     }

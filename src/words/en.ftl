@@ -442,3 +442,90 @@ step-skip-fate = { $polygon }: { $why }
 step-skip-no-scanline = { $polygon }: reaches no scanline of the raster
 step-skip-no-centre = { $polygon }, scanline { $scanline }: no pixel centre covered
 step-skip-no-centre-no-crossings = { $polygon }, scanline { $scanline }: no pixel centre covered (no crossings)
+
+# Course files (CS 418, BUET) and images: what is wrong with them.
+case-line = line { $line }: { $problem }
+case-unknown-command = unknown command "{ $command }"
+case-keyword-problem = { $keyword }: { $problem }
+list-or = { $rest } or { $last }
+cs418-second-png = a second "png" line (the file names one image, on its first line)
+cs418-before-png = "{ $keyword }" before the "png WIDTH HEIGHT FILE" line that must come first
+cs418-flag-numbers = "{ $keyword }" takes no numbers, found { $found }
+cs418-fsaa = fsaa { $level }: the level must be 1 to 8
+cs418-size = { $keyword } { $size }: the size must be { $allowed }
+cs418-not-an-index = elements: "{ $word }" is not an index (a whole number ≥ 0)
+cs418-matrix = uniformMatrix needs 16 numbers, found { $found }
+cs418-count = { $keyword }: count { $count } is not a multiple of 3
+cs418-texture-name = texture needs a file name
+cs418-texture = texture "{ $name }": { $why }
+cs418-no-png = no "png WIDTH HEIGHT FILE" line: is this a CS 418 file?
+cs418-png-words = png needs WIDTH HEIGHT FILE, found { $found } words
+cs418-png-side = png: { $what } "{ $word }" must be a whole number from 1 to { $max }
+cs418-png-file = png: "{ $file }" must be a plain file name, without folders
+cs418-not-a-number = { $keyword }: "{ $word }" is not a number
+cs418-integers = { $keyword } needs { $count } whole { $count ->
+    [one] number
+   *[other] numbers
+}, found { $found }
+cs418-not-a-whole-number = { $keyword }: "{ $word }" is not a whole number ≥ 0
+cs418-sized = { $keyword } needs a size and then the numbers
+cs418-size-word = { $keyword }: the size "{ $size }" is not a whole number
+cs418-size-zero = { $keyword }: the size must not be 0
+cs418-vertices = { $keyword } { $size }: { $numbers } numbers is not a whole number of vertices ({ $whole } and { $left } left over)
+cs418-vertex-index = vertex { $index } is read, but "position" has { $count } vertices
+cs418-texture-missing = no such file beside the case
+cs418-texture-unreadable = cannot be read ({ $reason })
+cs418-image-size = the image is { $width } × { $height }, the case draws { $case_width } × { $case_height }
+png-not-an-image = not a PNG image ({ $reason })
+png-too-large = the PNG is too large
+png-broken = a broken PNG image ({ $reason })
+png-colour-type = an unexpected PNG colour type { $kind }
+buet-size = "{ $word }" is not a raster size from 1 to { $max }
+buet-config-empty = is empty; it needs the raster size "W H"
+buet-config-first = the first line must be the raster size "W H"
+buet-one-number = expected one number
+buet-z-range = expected "z_front z_rear"
+buet-window-negative = left_x and bottom_y must be negative (the window is left_x … −left_x)
+buet-z-order = z_front must not exceed z_rear
+buet-config-lines = has { $count } non-empty lines; expected 1 ("W H") or 4 ("W H", left_x, bottom_y, "z_front z_rear")
+buet-ends = ends where { $what } was expected
+buet-numbers = expected { $what } ({ $count } numbers), found "{ $found }"
+buet-what-eye = the eye position
+buet-what-look = the look-at point
+buet-what-up = the up direction
+buet-what-perspective = fovY aspect near far
+buet-what-vertex = a triangle vertex
+buet-what-translation = a translation
+buet-what-scale = scale factors
+buet-what-rotation = an angle and an axis
+buet-pop = pop without a matching push
+buet-three-coordinates = expected three coordinates, found "{ $found }"
+buet-triangles = has { $count } points, not a whole number of triangles
+cs418-width = width
+cs418-height = height
+
+# The rule presets, as --compare-rules and reports name them.
+rules-describe = rules { $preset }: { $rows }; { $columns }; { $store }
+rules-rows-half-open = rows half-open (min ≤ y < max), crossings paired
+rules-rows-closed = rows closed (min ≤ y ≤ max), one span from the least to the greatest crossing
+rules-rows-top-left = rows top-left (min < y ≤ max: a top edge's centres in, a bottom edge's out), crossings paired
+rules-columns-centre-inside = columns whose centre lies in the span
+rules-columns-cell-holds = columns from the cell holding x_a to the cell holding x_b
+rules-columns-half-open = columns whose centre lies in [x_l, x_r): a left edge's centres in, a right edge's out
+rules-store-quantized = depth rounded half up and saturated
+rules-store-exact = depth stored exactly
+
+# Where an exercise meets each hard case.
+place-vertex-on-scanline = polygon { $polygon }: vertex { $vertex } ({ $x }, { $y }) lies on the scanline of row { $row }
+place-centre-on-edge = pixel ({ $x }, { $y }): its centre lies on an edge of polygon { $polygon }
+place-spans = polygon { $polygon }: row { $row } has { $spans } spans
+place-half-depth = pixel ({ $x }, { $y }), polygon { $polygon }: z = { $z } rounds up to { $stored }
+place-saturation = pixel ({ $x }, { $y }), polygon { $polygon }: z = { $z } rounds to { $rounded }, stored as { $stored }
+place-hidden = pixel ({ $x }, { $y }), polygon { $polygon }: z = { $z } does not pass the test against { $stored } stored
+place-intersecting = polygons { $first } and { $second }: each is in front of the other somewhere
+
+cs418-elements-range = drawElementsTriangles { $count } { $offset } reads elements { $offset }…{ $last }, but "elements" has { $has }
+cs418-point-size-range = drawArraysPoints reads point size { $index }, but "pointsize" has { $has }
+cs418-texcoord-range = vertex { $index } is drawn with a texture, but "texcoord" has { $has } vertices
+cs418-too-far = a vertex lands at ({ $x }, { $y }) on the image, too far outside it to rasterize (more than { $reach } image sizes away): turn on "frustum" to clip it
+cs418-too-many-primitives = { $count } primitives do not fit a 32-bit framebuffer

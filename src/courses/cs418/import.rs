@@ -24,7 +24,7 @@ pub fn scene_json(case: &Case) -> Result<String, CaseError> {
     let count = primitives.len() as u64;
     let frame_bits = (64 - count.leading_zeros()).clamp(1, 32);
     if count >= 1 << 32 {
-        return Err(CaseError { line: None, message: format!("{count} primitives do not fit a 32-bit framebuffer") });
+        return Err(CaseError { line: None, message: words!("cs418-too-many-primitives", count = count.to_string()) });
     }
     let mut out = String::new();
     let _ = writeln!(out, "{{");

@@ -62,7 +62,7 @@ pub struct CaseError {
 impl fmt::Display for CaseError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.line {
-            Some(line) => write!(f, "line {line}: {}", self.message),
+            Some(line) => f.write_str(&words!("case-line", line = line.to_string(), problem = self.message.as_str())),
             None => f.write_str(&self.message),
         }
     }
@@ -197,23 +197,20 @@ impl Case {
             }
             if keyword == "png" {
                 if case.is_some() {
-                    return Err(error(line, "a second \"png\" line (the file names one image, on its first line)"));
+                    return Err(error(line, words!("cs418-second-png")));
                 }
                 case = Some(png_line(line, args)?);
                 continue;
             }
             let Some(case) = case.as_mut() else {
-                return Err(error(
-                    line,
-                    format!("\"{keyword}\" before the \"png WIDTH HEIGHT FILE\" line that must come first"),
-                ));
+                return Err(error(line, words!("cs418-before-png", keyword = keyword)));
             };
             let flag = |on: &mut bool| {
                 if args.is_empty() {
                     *on = true;
                     Ok(())
                 } else {
-                    Err(error(line, format!("\"{keyword}\" takes no numbers, found {}", args.len())))
+                    Err(error(line, words!("cs418-flag-numbers", keyword = keyword, found = args.len().to_string())))
                 }
             };
             match keyword {
@@ -226,7 +223,7 @@ impl Case {
                 "fsaa" => {
                     let [level] = integers::<1>(line, keyword, args)?;
                     if !(1..=8).contains(&level) {
-                        return Err(error(line, format!("fsaa {level}: the level must be 1 to 8")));
+                        return Err(error(line, words!("cs418-fsaa", level = level.to_string())));
                     }
                     case.features.fsaa = level as u32;
                 }
@@ -239,7 +236,7 @@ impl Case {
                         _ => &[1],
                     };
                     if !allowed.contains(&size) {
-                        return Err(error(line, format!("{keyword} {size}: the size must be {}", list(allowed))));
+                        return Err(error(line, words!("cs418-size", keyword = keyword, size = size.to_string(), allowed = list(allowed))));
                     }
                     case.commands.push((
                         line,
@@ -256,7 +253,7 @@ impl Case {
                         .iter()
                         .map(|w| {
                             w.parse::<usize>().map_err(|_| {
-                                error(line, format!("elements: \"{w}\" is not an index (a whole number ≥ 0)"))
+                                error(line, words!("cs418-not-an-index", word = *w))
                             })
                         })
                         .collect::<Result<Vec<_>, _>>()?;
@@ -264,7 +261,7 @@ impl Case {
                 }
                 "uniformMatrix" => {
                     if args.len() != 16 {
-                        return Err(error(line, format!("uniformMatrix needs 16 numbers, found {}", args.len())));
+                        return Err(error(line, words!("cs418-matrix", found = args.len().to_string())));
                     }
                     let numbers = args.iter().map(|w| number(line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
                     case.commands.push((line, Command::Matrix(numbers)));
@@ -279,49 +276,45 @@ impl Case {
                     if let Command::DrawArrays { count, .. } | Command::DrawElements { count, .. } = command
                         && count % 3 != 0
                     {
-                        return Err(error(line, format!("{keyword}: count {count} is not a multiple of 3")));
+                        return Err(error(line, words!("cs418-count", keyword = keyword, count = count.to_string())));
                     }
                     case.commands.push((line, command));
                 }
                 "texture" => {
                     let name = args.join(" ");
                     if name.is_empty() {
-                        return Err(error(line, "texture needs a file name"));
+                        return Err(error(line, words!("cs418-texture-name")));
                     }
                     let index = match case.textures.iter().position(|t| t.name == name) {
                         Some(index) => index,
                         None => {
                             let image =
-                                load_texture(&name).map_err(|why| error(line, format!("texture \"{name}\": {why}")))?;
+                                load_texture(&name).map_err(|why| error(line, words!("cs418-texture", name = name.as_str(), why = why)))?;
                             case.textures.push(Texture { name, image });
                             case.textures.len() - 1
                         }
                     };
                     case.commands.push((line, Command::Texture(index)));
                 }
-                _ => return Err(error(line, format!("unknown command \"{keyword}\""))),
+                _ => return Err(error(line, words!("case-unknown-command", command = keyword))),
             }
         }
-        case.ok_or(CaseError {
-            line: None,
-            message: "no \"png WIDTH HEIGHT FILE\" line: is this a CS 418 file?".into(),
-        })
+        case.ok_or_else(|| CaseError { line: None, message: words!("cs418-no-png") })
     }
 }
 
 fn png_line(line: usize, args: &[&str]) -> Result<Case, CaseError> {
     let [width, height, file] = args else {
-        return Err(error(line, format!("png needs WIDTH HEIGHT FILE, found {} words", args.len())));
+        return Err(error(line, words!("cs418-png-words", found = args.len().to_string())));
     };
     let side = |word: &str, what: &str| {
-        word.parse::<u32>()
-            .ok()
-            .filter(|v| (1..=MAX_SIDE).contains(v))
-            .ok_or_else(|| error(line, format!("png: {what} \"{word}\" must be a whole number from 1 to {MAX_SIDE}")))
+        word.parse::<u32>().ok().filter(|v| (1..=MAX_SIDE).contains(v)).ok_or_else(|| {
+            error(line, words!("cs418-png-side", what = what, word = word, max = MAX_SIDE.to_string()))
+        })
     };
-    let (width, height) = (side(width, "width")?, side(height, "height")?);
+    let (width, height) = (side(width, &words!("cs418-width"))?, side(height, &words!("cs418-height"))?);
     if file.contains(['/', '\\']) || *file == ".." || *file == "." {
-        return Err(error(line, format!("png: \"{file}\" must be a plain file name, without folders")));
+        return Err(error(line, words!("cs418-png-file", file = *file)));
     }
     Ok(Case {
         width,
@@ -336,7 +329,7 @@ fn png_line(line: usize, args: &[&str]) -> Result<Case, CaseError> {
 fn list(values: &[usize]) -> String {
     let words: Vec<String> = values.iter().map(ToString::to_string).collect();
     match words.split_last() {
-        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        Some((last, rest)) if !rest.is_empty() => words!("list-or", rest = rest.join(", "), last = last.as_str()),
         _ => words.join(""),
     }
 }
@@ -345,8 +338,8 @@ fn number(line: usize, keyword: &str, word: &str) -> Result<Number, CaseError> {
     let finite = word.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.' | b'e' | b'E'));
     match (word.parse::<f64>(), crate::numbers::parse_number(word)) {
         (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(Number { value, exact }),
-        (Ok(value), Err(problem)) if finite && value.is_finite() => Err(error(line, format!("{keyword}: {problem}"))),
-        _ => Err(error(line, format!("{keyword}: \"{word}\" is not a number"))),
+        (Ok(value), Err(problem)) if finite && value.is_finite() => Err(error(line, words!("case-keyword-problem", keyword = keyword, problem = problem.to_string()))),
+        _ => Err(error(line, words!("cs418-not-a-number", keyword = keyword, word = word))),
     }
 }
 
@@ -354,36 +347,38 @@ fn integers<const N: usize>(line: usize, keyword: &str, args: &[&str]) -> Result
     if args.len() != N {
         return Err(error(
             line,
-            format!("{keyword} needs {N} whole number{}, found {}", if N == 1 { "" } else { "s" }, args.len()),
+            words!("cs418-integers", keyword = keyword, count = N, found = args.len().to_string()),
         ));
     }
     let mut out = [0; N];
     for (slot, word) in out.iter_mut().zip(args) {
         *slot = word
             .parse::<usize>()
-            .map_err(|_| error(line, format!("{keyword}: \"{word}\" is not a whole number ≥ 0")))?;
+            .map_err(|_| error(line, words!("cs418-not-a-whole-number", keyword = keyword, word = *word)))?;
     }
     Ok(out)
 }
 
 fn sized(line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<Number>), CaseError> {
     let Some((size, rest)) = args.split_first() else {
-        return Err(error(line, format!("{keyword} needs a size and then the numbers")));
+        return Err(error(line, words!("cs418-sized", keyword = keyword)));
     };
     let size: usize =
-        size.parse().map_err(|_| error(line, format!("{keyword}: the size \"{size}\" is not a whole number")))?;
+        size.parse().map_err(|_| error(line, words!("cs418-size-word", keyword = keyword, size = *size)))?;
     if size == 0 {
-        return Err(error(line, format!("{keyword}: the size must not be 0")));
+        return Err(error(line, words!("cs418-size-zero", keyword = keyword)));
     }
     let numbers = rest.iter().map(|w| number(line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
     if numbers.len() % size != 0 {
         return Err(error(
             line,
-            format!(
-                "{keyword} {size}: {} numbers is not a whole number of vertices ({} and {} left over)",
-                numbers.len(),
-                numbers.len() / size,
-                numbers.len() % size
+            words!(
+                "cs418-vertices",
+                keyword = keyword,
+                size = size.to_string(),
+                numbers = numbers.len().to_string(),
+                whole = (numbers.len() / size).to_string(),
+                left = (numbers.len() % size).to_string()
             ),
         ));
     }

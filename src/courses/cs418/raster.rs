@@ -182,10 +182,12 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 let Some(indices) = self.elements.get(*offset..offset + count).map(<[usize]>::to_vec) else {
                     return Err(error(
                         line,
-                        format!(
-                            "drawElementsTriangles {count} {offset} reads elements {offset}…{}, but \"elements\" has {}",
-                            offset + count - 1,
-                            self.elements.len()
+                        words!(
+                            "cs418-elements-range",
+                            count = count.to_string(),
+                            offset = offset.to_string(),
+                            last = (offset + count - 1).to_string(),
+                            has = self.elements.len().to_string()
                         ),
                     ));
                 };
@@ -196,9 +198,10 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                     let size = self.sizes.get(index).cloned().ok_or_else(|| {
                         error(
                             line,
-                            format!(
-                                "drawArraysPoints reads point size {index}, but \"pointsize\" has {}",
-                                self.sizes.len()
+                            words!(
+                                "cs418-point-size-range",
+                                index = index.to_string(),
+                                has = self.sizes.len().to_string()
                             ),
                         )
                     })?;
@@ -216,7 +219,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     /// with a texture; (0, 0) otherwise).
     fn vertex(&self, line: usize, index: usize, textured: bool) -> Result<Vertex<S>, CaseError> {
         let position = self.positions.get(index).ok_or_else(|| {
-            error(line, format!("vertex {index} is read, but \"position\" has {} vertices", self.positions.len()))
+            error(line, words!("cs418-vertex-index", index = index.to_string(), count = self.positions.len().to_string()))
         })?;
         // A texture without decals replaces the colour, so none need be given
         // (WebGL's default attribute, opaque black, stands in).
@@ -247,9 +250,10 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             None if textured => {
                 return Err(error(
                     line,
-                    format!(
-                        "vertex {index} is drawn with a texture, but \"texcoord\" has {} vertices",
-                        self.texcoords.len()
+                    words!(
+                        "cs418-texcoord-range",
+                        index = index.to_string(),
+                        has = self.texcoords.len().to_string()
                     ),
                 ));
             }
@@ -307,9 +311,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             if !(x.abs() <= reach && y.abs() <= reach) {
                 return Err(error(
                     line,
-                    format!(
-                        "a vertex lands at ({x}, {y}) on the image, too far outside it to rasterize (more than {REACH} image sizes away): turn on \"frustum\" to clip it"
-                    ),
+                    words!("cs418-too-far", x = x.to_string(), y = y.to_string(), reach = REACH.to_string()),
                 ));
             }
         }
