@@ -68,15 +68,18 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         return Ok(Finish::Ok);
     }
     let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_header([
-        "mode",
-        "ns per pixel",
-        "pixels",
-        "frame cells ≠ exact",
-        "depth cells ≠ exact",
-        "worst depth error (levels)",
-        "time vs exact",
-    ]);
+    table.load_style(presets::ASCII_MARKDOWN).set_header(
+        [
+            "accuracy-header-mode",
+            "accuracy-header-ns",
+            "accuracy-header-pixels",
+            "accuracy-header-frame",
+            "accuracy-header-depth",
+            "accuracy-header-worst",
+            "accuracy-header-time",
+        ]
+        .map(|key| zsim::words!(key)),
+    );
     for row in &modes {
         table.add_row([
             row.mode.to_string(),
@@ -89,12 +92,10 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         ]);
     }
     let mut sweep = Table::new();
-    sweep.load_style(presets::ASCII_MARKDOWN).set_header([
-        "depth bits",
-        "z-fighting cells",
-        "z-buffer memory (bytes)",
-        "time (ms)",
-    ]);
+    sweep.load_style(presets::ASCII_MARKDOWN).set_header(
+        ["accuracy-header-bits", "accuracy-header-fighting", "accuracy-header-memory", "accuracy-header-ms"]
+            .map(|key| zsim::words!(key)),
+    );
     for row in &bits {
         sweep.add_row([
             row.bits.to_string(),
@@ -107,12 +108,15 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
     emit(
         out,
         &format!(
-            "accuracy set: {} scenes on {}×{} (random triangles of 4, 16, 64 and 256 px with vertices on a 1/256 grid, seed {}, and 4 hard cases); times are the least of 3 runs\n{table}\n\n\
-             two nearly coplanar planes crossing along x = y (world depths 0 … 1 times 2^bits levels; slopes 1/2^20 of the range per pixel), {cells} cells:\n{sweep}\n",
-            scenes.len(),
-            settings.width,
-            settings.height,
-            settings.seed
+            "{}\n{table}\n\n{}\n{sweep}\n",
+            zsim::words!(
+                "accuracy-set",
+                scenes = scenes.len().to_string(),
+                width = settings.width.to_string(),
+                height = settings.height.to_string(),
+                seed = settings.seed.to_string()
+            ),
+            zsim::words!("accuracy-sweep", cells = cells.to_string())
         ),
     )?;
     Ok(Finish::Ok)

@@ -105,17 +105,17 @@ fn run_case(dir: &Path, from: Option<Source>, output: &Path, out: &mut dyn Write
     write(&image, &buet::bmp(simulation.buffers()))?;
     written.push(image);
     let stats = simulation.stats();
-    let mut text = format!(
-        "{}: {} triangles on {}×{}, {} pixel centres tested, {} written\n",
-        dir.display(),
-        case.stage3.len(),
-        case.config.width,
-        case.config.height,
-        stats.tested,
-        stats.written
-    );
+    let mut text = zsim::words!(
+        "buet-run-summary",
+        path = dir.display().to_string(),
+        triangles = case.stage3.len().to_string(),
+        width = case.config.width.to_string(),
+        height = case.config.height.to_string(),
+        tested = stats.tested.to_string(),
+        written = stats.written.to_string()
+    ) + "\n";
     for path in written {
-        text.push_str(&format!("wrote {}\n", path.display()));
+        text.push_str(&format!("{}\n", zsim::words!("file-written", path = path.display().to_string())));
     }
     emit(out, &text)?;
     Ok(Finish::Ok)
@@ -131,7 +131,12 @@ fn parse_answer(path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
             if value.parse::<f64>().is_err() {
                 return Err(Error::Answer {
                     path: path.to_owned(),
-                    message: format!("line {}, value {}: \"{value}\" is not a number", i + 1, k + 1),
+                    message: zsim::words!(
+                        "buet-answer-not-a-number",
+                        line = (i + 1).to_string(),
+                        value = (k + 1).to_string(),
+                        text = value.as_str()
+                    ),
                 });
             }
         }
@@ -139,7 +144,7 @@ fn parse_answer(path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
     if rows.len() != height as usize {
         return Err(Error::Answer {
             path: path.to_owned(),
-            message: format!("{} rows; the raster has {height}", rows.len()),
+            message: zsim::words!("buet-answer-rows", rows = rows.len().to_string(), height = height.to_string()),
         });
     }
     Ok(rows)
@@ -156,15 +161,17 @@ fn check(dir: &Path, from: Option<Source>, answer: &Path, out: &mut dyn Write) -
     let mut differences: Vec<(usize, usize, String, String, Option<u32>)> = Vec::new();
     for (i, (given, right)) in answer_rows.iter().zip(&expected).enumerate() {
         for k in 0..given.len().max(right.len()) {
-            let a = given.get(k).cloned().unwrap_or_else(|| "(none)".into());
-            let (column, r) = right.get(k).map_or((None, "(none)".to_string()), |(x, v)| (Some(*x), v.clone()));
+            let a = given.get(k).cloned().unwrap_or_else(|| zsim::words!("buet-none"));
+            let (column, r) = right.get(k).map_or((None, zsim::words!("buet-none")), |(x, v)| (Some(*x), v.clone()));
             if a != r {
                 differences.push((i, k, a, r, column));
             }
         }
     }
     if differences.is_empty() {
-        emit(out, &format!("{}: every row matches the z-buffer of {}\n", answer.display(), dir.display()))?;
+        let text =
+            zsim::words!("buet-check-matches", answer = answer.display().to_string(), path = dir.display().to_string());
+        emit(out, &format!("{text}\n"))?;
         return Ok(Finish::Ok);
     }
     let mut watcher = PixelWatcher::new(
@@ -172,26 +179,27 @@ fn check(dir: &Path, from: Option<Source>, answer: &Path, out: &mut dyn Write) -
     );
     Simulation::new(scene).finish(&mut watcher);
     let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_header(["line", "value", "answer", "right", "why"]);
+    table.load_style(presets::ASCII_MARKDOWN).set_header(
+        ["buet-header-line", "buet-header-value", "buet-header-answer", "buet-header-right", "buet-header-why"]
+            .map(|key| zsim::words!(key)),
+    );
     for (i, k, a, r, column) in &differences {
         let reason = match column {
             Some(x) => {
                 let y = scene.height - 1 - *i as u32;
-                format!("cell ({x}, {y}): {}", why(scene, Buffer::Depth, *x, y, watcher.history(*x, y)))
+                let why = why(scene, Buffer::Depth, *x, y, watcher.history(*x, y));
+                zsim::words!("buet-cell", x = x.to_string(), y = y.to_string(), why = why)
             }
-            None => "zsim writes fewer values on this line: the answer has an extra one".to_string(),
+            None => zsim::words!("buet-extra-value"),
         };
         table.add_row([(i + 1).to_string(), (k + 1).to_string(), a.clone(), r.clone(), reason]);
     }
-    let plural = if differences.len() == 1 { "value differs" } else { "values differ" };
-    emit(
-        out,
-        &format!(
-            "{}: {} {plural} from the z-buffer of {}\n{table}\n",
-            answer.display(),
-            differences.len(),
-            dir.display()
-        ),
-    )?;
+    let heading = zsim::words!(
+        "buet-check-differs",
+        answer = answer.display().to_string(),
+        count = differences.len(),
+        path = dir.display().to_string()
+    );
+    emit(out, &format!("{heading}\n{table}\n"))?;
     Ok(Finish::Differs)
 }

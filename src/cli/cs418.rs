@@ -97,9 +97,10 @@ fn load(path: &Path, textures: Textures) -> Result<Case, Error> {
         }
         let file = folder.join(name);
         if !file.is_file() {
-            return Err("no such file beside the case".to_string());
+            return Err(zsim::words!("cs418-texture-missing"));
         }
-        let bytes = std::fs::read(&file).map_err(|e| format!("cannot be read ({e})"))?;
+        let bytes =
+            std::fs::read(&file).map_err(|e| zsim::words!("cs418-texture-unreadable", reason = e.to_string()))?;
         Image::from_png(&bytes)
     };
     let case = Case::parse(&text, &texture).map_err(|e| located(path, e))?;
@@ -131,15 +132,15 @@ fn run_case(
     std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
     let written = output.join(&case.output);
     std::fs::write(&written, result.image.to_png()).map_err(|source| Error::Write { path: written.clone(), source })?;
-    let mut text = format!(
-        "{}: {} × {}, {} arithmetic{}: wrote {}\n",
-        path.display(),
-        case.width,
-        case.height,
-        arithmetic.name(),
-        features(&case),
-        written.display()
-    );
+    let mut text = zsim::words!(
+        "cs418-run-summary",
+        path = path.display().to_string(),
+        width = case.width.to_string(),
+        height = case.height.to_string(),
+        arithmetic = arithmetic.name(),
+        features = features(&case),
+        written = written.display().to_string()
+    ) + "\n";
     if arithmetic == Arithmetic::Exact {
         let course = cs418::render(&case, Arithmetic::DdaF64).map_err(|e| located(path, e))?;
         text.push_str(&disagreements(&course, &result));
@@ -150,35 +151,48 @@ fn run_case(
             None => {
                 return Err(Error::Answer {
                     path: png.to_owned(),
-                    message: format!(
-                        "the image is {} × {}, the case draws {} × {}",
-                        image.width, image.height, case.width, case.height
+                    message: zsim::words!(
+                        "cs418-image-size",
+                        width = image.width.to_string(),
+                        height = image.height.to_string(),
+                        case_width = case.width.to_string(),
+                        case_height = case.height.to_string()
                     ),
                 }
                 .into());
             }
-            Some(difference) if difference.pixels.is_empty() => text.push_str(&format!(
-                "{}: every channel of every pixel within {tolerance} (largest difference {})\n",
-                png.display(),
-                difference.largest
-            )),
+            Some(difference) if difference.pixels.is_empty() => {
+                let line = zsim::words!(
+                    "cs418-compare-same",
+                    path = png.display().to_string(),
+                    tolerance = tolerance.to_string(),
+                    largest = difference.largest.to_string()
+                );
+                text.push_str(&format!("{line}\n"));
+            }
             Some(difference) => {
                 finish = Finish::Differs;
-                text.push_str(&format!(
-                    "{}: {} by more than {tolerance} (largest difference {}):\n",
-                    png.display(),
-                    if difference.pixels.len() == 1 {
-                        "1 pixel differs".to_string()
-                    } else {
-                        format!("{} pixels differ", difference.pixels.len())
-                    },
-                    difference.largest
-                ));
+                let line = zsim::words!(
+                    "cs418-compare-differs",
+                    path = png.display().to_string(),
+                    count = difference.pixels.len(),
+                    tolerance = tolerance.to_string(),
+                    largest = difference.largest.to_string()
+                );
+                text.push_str(&format!("{line}\n"));
                 for (x, y, ours, theirs) in difference.pixels.iter().take(20) {
-                    text.push_str(&format!("  ({x}, {y}): zsim {ours:?}, image {theirs:?}\n"));
+                    let line = zsim::words!(
+                        "cs418-compare-pixel",
+                        x = x.to_string(),
+                        y = y.to_string(),
+                        ours = format!("{ours:?}"),
+                        theirs = format!("{theirs:?}")
+                    );
+                    text.push_str(&format!("  {line}\n"));
                 }
                 if difference.pixels.len() > 20 {
-                    text.push_str(&format!("  … and {} more\n", difference.pixels.len() - 20));
+                    let more = zsim::words!("cs418-compare-more", count = (difference.pixels.len() - 20).to_string());
+                    text.push_str(&format!("  {more}\n"));
                 }
             }
         }
@@ -205,42 +219,45 @@ fn features(case: &Case) -> String {
 fn disagreements(course: &Comparison, exact: &Comparison) -> String {
     let cells = cs418::differences(course, exact);
     if cells.is_empty() {
-        return "the course's f64 arithmetic and exact arithmetic draw every sample alike\n".to_string();
+        return zsim::words!("cs418-arith-alike") + "\n";
     }
-    let mut text = format!(
-        "{} sample{} where the course's f64 arithmetic and exact arithmetic disagree:\n",
-        cells.len(),
-        if cells.len() == 1 { "" } else { "s" }
-    );
+    let mut text = zsim::words!("cs418-arith-disagree", count = cells.len()) + "\n";
     for cell in &cells {
         let place = if course.level > 1 {
-            format!("sample ({}, {}) of pixel ({}, {})", cell.x, cell.y, cell.pixel.0, cell.pixel.1)
+            zsim::words!(
+                "cs418-place-sample",
+                x = cell.x.to_string(),
+                y = cell.y.to_string(),
+                px = cell.pixel.0.to_string(),
+                py = cell.pixel.1.to_string()
+            )
         } else {
-            format!("pixel ({}, {})", cell.x, cell.y)
+            zsim::words!("cs418-place-pixel", x = cell.x.to_string(), y = cell.y.to_string())
         };
         let why = match &cell.reason {
             Reason::Span { primitive, course, exact, course_covers } => {
                 let span = |s: &Option<(String, String)>| match s {
                     Some((l, r)) => format!("[{l}, {r})"),
-                    None => "no span".to_string(),
+                    None => zsim::words!("cs418-no-span"),
                 };
-                format!(
-                    "{primitive}: on row {} its span is {} in f64 but {} exactly, so x = {} is {} in f64 and {} exactly",
-                    cell.y,
-                    span(course),
-                    span(exact),
-                    cell.x,
-                    if *course_covers { "inside" } else { "outside" },
-                    if *course_covers { "outside" } else { "inside" }
+                let (inside, outside) = (zsim::words!("cs418-inside"), zsim::words!("cs418-outside"));
+                let (course_side, exact_side) = if *course_covers { (inside, outside) } else { (outside, inside) };
+                zsim::words!(
+                    "cs418-why-span",
+                    primitive = primitive.to_string(),
+                    row = cell.y.to_string(),
+                    course = span(course),
+                    exact = span(exact),
+                    x = cell.x.to_string(),
+                    course_side = course_side,
+                    exact_side = exact_side
                 )
             }
             Reason::Depth { course, exact } => {
-                let who = |p: &Option<cs418::Primitive>| p.as_ref().map_or("nothing".to_string(), ToString::to_string);
-                format!(
-                    "both arithmetics cover it with the same primitives, but the depth test keeps {} in f64 and {} exactly (equal depths, or within rounding)",
-                    who(course),
-                    who(exact)
-                )
+                let who = |p: &Option<cs418::Primitive>| {
+                    p.as_ref().map_or_else(|| zsim::words!("cs418-nothing"), ToString::to_string)
+                };
+                zsim::words!("cs418-why-depth", course = who(course), exact = who(exact))
             }
         };
         text.push_str(&format!("  {place}: {why}\n"));

@@ -123,7 +123,8 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
     let notes = notes(&exercise, &spec, args);
     write("exercise.txt", &notes)?;
     written.push("exercise.txt".into());
-    emit(out, &format!("{notes}wrote {} in {}\n", written.join(", "), dir.display()))?;
+    let line = zsim::words!("file-written-in", files = written.join(", "), path = dir.display().to_string());
+    emit(out, &format!("{notes}{line}\n"))?;
     Ok(Finish::Ok)
 }
 
@@ -138,32 +139,27 @@ fn answers(simulation: &Simulation<'_>) -> [(&'static str, String); 2] {
 fn notes(exercise: &Exercise, spec: &Spec, args: &ExerciseArgs) -> String {
     let scene = &exercise.scene;
     let asked: Vec<&str> = spec.hard.iter().map(|c| c.name()).collect();
-    let mut text = format!(
-        "exercise: seed {}, {}×{} raster, {} polygons, framebuffer {} bits, z-buffer {} bits (0 … {}), depth test greater\n",
-        spec.seed,
-        scene.width,
-        scene.height,
-        scene.polygons.len(),
-        scene.frame_bits,
-        scene.depth_bits,
-        scene.depth_max()
-    );
-    text.push_str(&format!(
-        "asked for: {} (candidate {} of the seed's sequence)\n",
-        if asked.is_empty() { "no particular case".to_string() } else { asked.join(", ") },
-        exercise.tries
-    ));
-    text.push_str("it contains (found in the run's trace, first place each):\n");
+    let mut text = zsim::words!(
+        "exercise-notes-settings",
+        seed = spec.seed.to_string(),
+        width = scene.width.to_string(),
+        height = scene.height.to_string(),
+        polygons = scene.polygons.len().to_string(),
+        frame_bits = scene.frame_bits.to_string(),
+        depth_bits = scene.depth_bits.to_string(),
+        max = scene.depth_max().to_string()
+    ) + "\n";
+    let asked = if asked.is_empty() { zsim::words!("exercise-notes-no-case") } else { asked.join(", ") };
+    let line = zsim::words!("exercise-notes-asked", asked = asked, candidate = exercise.tries.to_string());
+    text.push_str(&format!("{line}\n{}\n", zsim::words!("exercise-notes-contains")));
     if exercise.found.is_empty() {
-        text.push_str("  none of the hard cases\n");
+        text.push_str(&format!("  {}\n", zsim::words!("exercise-notes-none")));
     }
     for found in &exercise.found {
         text.push_str(&format!("  {}: {}\n", found.case, found.place));
     }
     let scene_path = args.output.join("scene.json");
-    text.push_str(&format!(
-        "check an answer: zsim check {0} --frame FRAME.txt --depth DEPTH.txt; grade a class: zsim grade {0} CLASS_DIR\n",
-        scene_path.display()
-    ));
+    let line = zsim::words!("exercise-notes-next", path = scene_path.display().to_string());
+    text.push_str(&format!("{line}\n"));
     text
 }

@@ -119,14 +119,12 @@ fn png(svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
         .find(|wanted| families.iter().any(|f| f == wanted))
         .map(str::to_string)
         .or_else(|| families.first().cloned())
-        .ok_or_else(|| {
-            failed("this system has no fonts, so its text would be missing; write an SVG (-o FILE.svg)".into())
-        })?;
+        .ok_or_else(|| failed(zsim::words!("png-no-fonts")))?;
     fonts.set_sans_serif_family(sans);
     let tree = resvg::usvg::Tree::from_str(svg, &options).map_err(|e| failed(e.to_string()))?;
-    let size = tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed("the figure is too large".into()))?;
+    let size = tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed(zsim::words!("png-figure-too-large")))?;
     let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
-        .ok_or_else(|| failed("the figure is too large".into()))?;
+        .ok_or_else(|| failed(zsim::words!("png-figure-too-large")))?;
     resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(2.0, 2.0), &mut pixmap.as_mut());
     pixmap.encode_png().map_err(|e| failed(e.to_string()))
 }

@@ -70,10 +70,19 @@ pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, 
         args.depth_at == DepthAt::Sample,
     );
     let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_header(["buffer", "cells", "bits per cell", "bits", "bytes"]);
-    for (name, buffer) in [("framebuffer", frame), ("z-buffer", depth)] {
+    table.load_style(presets::ASCII_MARKDOWN).set_header(
+        [
+            "memory-header-buffer",
+            "memory-header-cells",
+            "memory-header-bits-per-cell",
+            "memory-header-bits",
+            "memory-header-bytes",
+        ]
+        .map(|key| zsim::words!(key)),
+    );
+    for (name, buffer) in [("buffer-frame", frame), ("buffer-depth", depth)] {
         table.add_row([
-            name.to_string(),
+            zsim::words!(name),
             buffer.cells.to_string(),
             buffer.bits_per_cell.to_string(),
             buffer.bits().to_string(),
@@ -82,7 +91,7 @@ pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, 
     }
     let total = frame.bytes() + depth.bytes();
     table.add_row([
-        "total".to_string(),
+        zsim::words!("memory-total"),
         String::new(),
         String::new(),
         (frame.bits() + depth.bits()).to_string(),
@@ -92,20 +101,22 @@ pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, 
     let sampling = if k == 1 {
         String::new()
     } else {
-        format!(
-            ", supersampled {k}×{k} with the depth at each {}",
-            if args.depth_at == DepthAt::Sample { "sample" } else { "pixel" }
-        )
+        let at = if args.depth_at == DepthAt::Sample { "memory-at-sample" } else { "memory-at-pixel" };
+        zsim::words!("memory-supersampled", k = k.to_string(), at = zsim::words!(at))
     };
     emit(
         out,
         &format!(
-            "{}×{} pixels, framebuffer {} bits, z-buffer {} bits{sampling}\n{table}\ntotal: {total} bytes = {}\n",
-            args.width,
-            args.height,
-            args.frame_bits,
-            args.depth_bits,
-            megabytes(total)
+            "{}\n{table}\n{}\n",
+            zsim::words!(
+                "memory-heading",
+                width = args.width.to_string(),
+                height = args.height.to_string(),
+                frame_bits = args.frame_bits.to_string(),
+                depth_bits = args.depth_bits.to_string(),
+                sampling = sampling
+            ),
+            zsim::words!("memory-total-line", total = total.to_string(), megabytes = megabytes(total))
         ),
     )?;
     Ok(Finish::Ok)

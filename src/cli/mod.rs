@@ -121,7 +121,7 @@ pub fn main() -> ExitCode {
         Ok(Finish::Differs) => ExitCode::from(1),
         Err(Failure::Io(error)) if error.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
         Err(Failure::Io(error)) => {
-            eprintln!("zsim: cannot write the output: {error}");
+            eprintln!("zsim: {}", zsim::words!("error-output", reason = error.to_string()));
             ExitCode::from(2)
         }
         Err(Failure::Input(error)) => {

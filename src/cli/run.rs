@@ -267,26 +267,29 @@ fn summary(
     // The ratio means something only where the buffers and the scene dominate the
     // process (from 16 MiB); below, the program itself is most of the peak.
     let peak = match peak_resident_bytes() {
-        Some(peak) if buffers + scene_bytes >= 16 << 20 => format!(
-            ", peak resident {} ({:.2}× buffers + scene)",
-            bytes(peak),
-            peak as f64 / (buffers + scene_bytes) as f64
+        Some(peak) if buffers + scene_bytes >= 16 << 20 => zsim::words!(
+            "run-summary-peak-ratio",
+            peak = bytes(peak),
+            ratio = format!("{:.2}", peak as f64 / (buffers + scene_bytes) as f64)
         ),
-        Some(peak) => format!(", peak resident {}", bytes(peak)),
+        Some(peak) => zsim::words!("run-summary-peak", peak = bytes(peak)),
         None => String::new(),
     };
-    format!(
-        "{path}: {} polygons, {} pixel centres tested, {} written; effects: {}; stages: {}; read {:.1} ms, rasterized {:.1} ms on {threads} thread{} ({rate:.1} M pixels/s); memory: buffers {}, scene {}{peak}",
-        stats.polygons,
-        stats.tested,
-        stats.written,
-        if effects.is_empty() { "none".to_string() } else { effects.join(", ") },
-        zsim::describe(scene).join(" → "),
-        read.as_secs_f64() * 1000.0,
-        raster.as_secs_f64() * 1000.0,
-        if threads == 1 { "" } else { "s" },
-        bytes(buffers),
-        bytes(scene_bytes),
+    zsim::words!(
+        "run-summary",
+        path = path,
+        polygons = stats.polygons.to_string(),
+        tested = stats.tested.to_string(),
+        written = stats.written.to_string(),
+        effects = if effects.is_empty() { zsim::words!("run-summary-no-effects") } else { effects.join(", ") },
+        stages = zsim::describe(scene).join(" → "),
+        read = format!("{:.1}", read.as_secs_f64() * 1000.0),
+        raster = format!("{:.1}", raster.as_secs_f64() * 1000.0),
+        threads = threads,
+        rate = format!("{rate:.1}"),
+        buffers = bytes(buffers),
+        scene = bytes(scene_bytes),
+        peak = peak
     )
 }
 
@@ -338,7 +341,7 @@ fn run_inexact(
         }
         Format::None => {
             let text = summary(scene, path, stats, buffers.memory_bytes(), (read_time, raster_time), 1);
-            emit(out, &format!("{text}; arithmetic {}\n", args.arith))?;
+            emit(out, &format!("{text}{}\n", zsim::words!("run-summary-arith", arith = args.arith.to_string())))?;
         }
         Format::Text => {
             // Only the text report compares with exact, so timing a mode runs that mode alone.
@@ -348,10 +351,17 @@ fn run_inexact(
             emit(
                 out,
                 &format!(
-                    "{}arithmetic: {}; compared with exact arithmetic, {frame_cells} framebuffer and {depth_cells} z-buffer cells differ\n\nframebuffer after all polygons:\n{}\nz-buffer after all polygons:\n{}",
+                    "{}{}\n\n{}\n{}\n{}\n{}",
                     report::scene_header(scene, path),
-                    args.arith,
+                    zsim::words!(
+                        "run-arith-compared",
+                        arith = args.arith.to_string(),
+                        frame = frame_cells.to_string(),
+                        depth = depth_cells.to_string()
+                    ),
+                    zsim::words!("run-frame-after-all"),
                     report::matrix_styled(&buffers.frame_rows(), &style),
+                    zsim::words!("run-depth-after-all"),
                     report::matrix_styled(&buffers.depth_rows(), &style)
                 ),
             )?;
@@ -371,70 +381,77 @@ fn compare_rules(scene: &Scene, path: &str, preset: zsim::Preset) -> String {
     use std::fmt::Write as _;
     let other = zsim::Rules { store: scene.rules.store, ..zsim::Rules::preset(preset) };
     let differences = zsim::tie::compare_rules(scene, other);
-    let mut text = format!("{path}\n  this scene's {}\n  compared with {}\n", scene.rules.describe(), other.describe());
+    let mut text = format!(
+        "{path}\n  {}\n  {}\n",
+        zsim::words!("compare-rules-this", rules = scene.rules.describe()),
+        zsim::words!("compare-rules-other", rules = other.describe())
+    );
     if differences.is_empty() {
-        text.push_str("every pixel comes out the same: no centre lies exactly on an edge where the rules differ\n");
+        text.push_str(&format!("{}\n", zsim::words!("compare-rules-same")));
         return text;
     }
-    let _ = writeln!(text, "{} pixel{} differ:", differences.len(), if differences.len() == 1 { "" } else { "s" });
+    let _ = writeln!(text, "{}", zsim::words!("compare-rules-differ", count = differences.len()));
     let names = |list: &[usize]| -> String {
         if list.is_empty() {
-            return "nothing".to_string();
+            return zsim::words!("compare-rules-nothing");
         }
-        list.iter().map(|&i| format!("\"{}\"", scene.polygons[i].name)).collect::<Vec<_>>().join(" and ")
+        let names: Vec<String> = list.iter().map(|&i| format!("\"{}\"", scene.polygons[i].name)).collect();
+        names.join(&zsim::words!("list-and"))
     };
     let point = |[x, y]: &[zsim::Exact; 2]| format!("({}, {})", zsim::fraction(x), zsim::fraction(y));
     for d in &differences {
-        let _ = writeln!(
-            text,
-            "  ({}, {}): {} → {}; covered by {} under {}, by {} under {}",
-            d.x,
-            d.y,
-            d.values.0,
-            d.values.1,
-            names(&d.covering.0),
-            preset_name(scene.rules.preset),
-            names(&d.covering.1),
-            preset_name(preset)
+        let line = zsim::words!(
+            "compare-rules-cell",
+            x = d.x.to_string(),
+            y = d.y.to_string(),
+            before = d.values.0.to_string(),
+            after = d.values.1.to_string(),
+            covering = names(&d.covering.0),
+            rules = preset_name(scene.rules.preset),
+            other_covering = names(&d.covering.1),
+            other_rules = preset_name(preset)
         );
+        let _ = writeln!(text, "  {line}");
         for (polygon, boundary, a, b) in &d.ties {
             let name = &scene.polygons[*polygon].name;
             if *boundary == zsim::tie::Boundary::Vertex {
-                let _ = writeln!(
-                    text,
-                    "      the centre ({}.5, {}.5) is the vertex {} of \"{name}\": the edges meeting there decide, under each rule set as on its own edges",
-                    d.x,
-                    d.y,
-                    point(a)
+                let line = zsim::words!(
+                    "compare-rules-vertex",
+                    x = d.x.to_string(),
+                    y = d.y.to_string(),
+                    vertex = point(a),
+                    name = name.as_str()
                 );
+                let _ = writeln!(text, "      {line}");
                 continue;
             }
             let verdict = |rules: zsim::Rules| match zsim::tie::rule_covers(rules, *boundary) {
-                Some(true) => "covered",
-                _ => "left out",
+                Some(true) => zsim::words!("compare-rules-covered"),
+                _ => zsim::words!("compare-rules-left-out"),
             };
-            let _ = writeln!(
-                text,
-                "      the centre ({}.5, {}.5) lies on the {} of \"{name}\" from {} to {}: {} under {}, {} under {}",
-                d.x,
-                d.y,
-                boundary.words(),
-                point(a),
-                point(b),
-                verdict(scene.rules),
-                preset_name(scene.rules.preset),
-                verdict(other),
-                preset_name(preset)
+            let line = zsim::words!(
+                "compare-rules-edge",
+                x = d.x.to_string(),
+                y = d.y.to_string(),
+                boundary = boundary.words(),
+                name = name.as_str(),
+                from = point(a),
+                to = point(b),
+                verdict = verdict(scene.rules),
+                rules = preset_name(scene.rules.preset),
+                other_verdict = verdict(other),
+                other_rules = preset_name(preset)
             );
+            let _ = writeln!(text, "      {line}");
         }
     }
     text
 }
 
-fn preset_name(preset: zsim::Preset) -> &'static str {
+fn preset_name(preset: zsim::Preset) -> String {
     match preset {
-        zsim::Preset::Rogers => "the book's rules",
-        zsim::Preset::Buet => "BUET's rules",
-        zsim::Preset::Gpu => "the top-left rule",
+        zsim::Preset::Rogers => zsim::words!("preset-rogers"),
+        zsim::Preset::Buet => zsim::words!("preset-buet"),
+        zsim::Preset::Gpu => zsim::words!("preset-gpu"),
     }
 }

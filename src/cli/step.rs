@@ -486,10 +486,7 @@ fn ask(
 /// For an antialiased scene, what `step` shows and what it does not.
 fn antialias_note(scene: &Scene) -> String {
     match scene.effects.antialias {
-        Some(settings) => format!(
-            "   note: this scene asks for {k}×{k} supersampling; step shows each pixel centre's plain coverage and depth, before supersampling and averaging (`zsim run` shows the averaged buffers, `zsim explain --pixel X,Y` each pixel's samples)\n",
-            k = settings.samples
-        ),
+        Some(settings) => format!("   {}\n", zsim::words!("step-antialias-note", k = settings.samples.to_string())),
         None => String::new(),
     }
 }
@@ -541,10 +538,8 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
         }
     }
     if let zsim::arith::Arith::Fixed(bits) = tracer.arith {
-        text.push_str(&format!(
-            "in fixed:{bits} arithmetic the vertices are first snapped to multiples of 1/{}, then these exact rules run on the snapped polygon (`zsim run --arith fixed:{bits}` shows the result)\n",
-            1u64 << bits
-        ));
+        let line = zsim::words!("step-fixed", bits = bits.to_string(), unit = (1u64 << bits).to_string());
+        text.push_str(&format!("{line}\n"));
     }
     if let Some(float) = zsim::arith::float_scanline(scene, p, record.row, tracer.arith) {
         let crossings: Vec<String> = float.crossings.iter().map(|x| format!("{x:.9}")).collect();
@@ -554,10 +549,10 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
             .map(|(x, z)| {
                 let exact = record.pixels.iter().find(|e| e.x == *x).map(|e| e.depth.value());
                 let note = match exact {
-                    Some(e) => format!(" (exact {})", zsim::decimal(e, 9)),
-                    None => " (exact arithmetic does not cover it)".to_string(),
+                    Some(e) => zsim::words!("step-float-exact", z = zsim::decimal(e, 9)),
+                    None => zsim::words!("step-float-not-exact"),
                 };
-                format!("x = {x}: z = {z:.9}{note}")
+                format!("x = {x}: z = {z:.9} ({note})")
             })
             .collect();
         let missed: Vec<String> = record
@@ -568,18 +563,17 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
             .collect();
         let found = match float.bounding_columns {
             Some((first, last)) => {
-                format!("edge functions at the centres of the bounding box's columns {first} … {last}")
+                zsim::words!("step-float-edges", first = first.to_string(), last = last.to_string())
             }
-            None if crossings.is_empty() => "crossings none".to_string(),
-            None => format!("crossings {}", crossings.join(", ")),
+            None if crossings.is_empty() => zsim::words!("step-float-no-crossings"),
+            None => zsim::words!("step-float-crossings", crossings = crossings.join(", ")),
         };
-        text.push_str(&format!(
-            "in {} arithmetic: {found}\n  {}\n",
-            tracer.arith,
-            if pixels.is_empty() { "no pixel covered".to_string() } else { pixels.join("\n  ") }
-        ));
+        let heading = zsim::words!("step-float-heading", arith = tracer.arith.to_string(), found = found);
+        let pixels = if pixels.is_empty() { zsim::words!("step-float-no-pixel") } else { pixels.join("\n  ") };
+        text.push_str(&format!("{heading}\n  {pixels}\n"));
         if !missed.is_empty() {
-            text.push_str(&format!("  it misses the exact centres x = {}\n", missed.join(", ")));
+            let line = zsim::words!("step-float-missed", columns = missed.join(", "));
+            text.push_str(&format!("  {line}\n"));
         }
     }
     let buffers = tracer.buffers_after(p, k);

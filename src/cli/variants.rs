@@ -35,11 +35,14 @@ fn buffers_json(scene: &Scene, name: &str, buffers: &Buffers) -> serde_json::Val
     })
 }
 
-fn matrices(buffers: &Buffers, what: &str, axes: bool) -> String {
+/// Both buffers after all polygons.
+fn matrices(buffers: &Buffers, axes: bool) -> String {
     let style = MatrixStyle { axes, color: super::use_color(), ..MatrixStyle::default() };
     format!(
-        "\nframebuffer {what}:\n{}\nz-buffer {what}:\n{}",
+        "\n{}\n{}\n{}\n{}",
+        zsim::words!("run-frame-after-all"),
         report::matrix_styled(&buffers.frame_rows(), &style),
+        zsim::words!("run-depth-after-all"),
         report::matrix_styled(&buffers.depth_rows(), &style)
     )
 }
@@ -49,9 +52,9 @@ fn comparison(ours: &Buffers, plain: &Buffers) -> String {
     let (frame, depth) = ours.differences(plain);
     let differing = frame + depth;
     if differing == 0 {
-        "identical to the plain z-buffer's (framebuffer and z-buffer)".to_string()
+        zsim::words!("variant-identical")
     } else {
-        format!("{differing} cells differ from the plain z-buffer's")
+        zsim::words!("variant-differs", count = differing.to_string())
     }
 }
 
@@ -68,21 +71,24 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
         let depth_bits = u64::from(scene.depth_bits);
         let full = u64::from(scene.width) * u64::from(scene.height);
         let mut text = report::scene_header(scene, path);
-        text.push_str(&format!(
-            "segments: {} ({}), each polygon sorted into the segments its bounding box touches\n\
-             z-buffer memory: {} cells × {depth_bits} bits = {} bits (whole raster: {} cells, {} bits)\n\
-             polygon visits: {} (whole raster: {})\n",
-            stats.segments,
-            segments,
-            stats.depth_cells,
-            stats.depth_cells * depth_bits,
-            full,
-            full * depth_bits,
-            stats.polygon_visits,
-            (0..scene.polygons.len()).filter(|&i| zsim::fate(scene, i) == zsim::Fate::Drawn).count()
-        ));
-        text.push_str(&format!("result: {}\n", comparison(&buffers, plain.buffers())));
-        text.push_str(&matrices(&buffers, "after all polygons", variant.axes));
+        let drawn = (0..scene.polygons.len()).filter(|&i| zsim::fate(scene, i) == zsim::Fate::Drawn).count();
+        let lines = [
+            zsim::words!("segments-kind", count = stats.segments.to_string(), segments = segments.to_string()),
+            zsim::words!(
+                "segments-memory",
+                cells = stats.depth_cells.to_string(),
+                bits = depth_bits.to_string(),
+                total = (stats.depth_cells * depth_bits).to_string(),
+                whole_cells = full.to_string(),
+                whole_bits = (full * depth_bits).to_string()
+            ),
+            zsim::words!("segments-visits", visits = stats.polygon_visits.to_string(), whole = drawn.to_string()),
+            zsim::words!("variant-result", result = comparison(&buffers, plain.buffers())),
+        ];
+        for line in lines {
+            text.push_str(&format!("{line}\n"));
+        }
+        text.push_str(&matrices(&buffers, variant.axes));
         emit(out, &text)?;
         return Ok(Finish::Ok);
     }
@@ -94,29 +100,31 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
         }
         let mut text = report::scene_header(scene, path);
         let test = match inside {
-            Inside::Ray => "ray casting (left-open/right-closed vertex rule; on the boundary counts)",
-            Inside::Arc => "the arc-length method (quadrant table; on the boundary counts)",
+            Inside::Ray => zsim::words!("pixel-order-ray"),
+            Inside::Arc => zsim::words!("pixel-order-arc"),
         };
-        text.push_str(&format!(
-            "order: for every pixel, for every polygon, one depth variable (the Chinese course notes); inside test: {test}\n"
-        ));
-        text.push_str(&format!("result: {}\n", comparison(&buffers, plain.buffers())));
+        text.push_str(&format!("{}\n", zsim::words!("pixel-order-heading", test = test)));
+        let result = zsim::words!("variant-result", result = comparison(&buffers, plain.buffers()));
+        text.push_str(&format!("{result}\n"));
         if !differences.is_empty() {
             let mut table = Table::new();
-            table.load_style(presets::ASCII_MARKDOWN).set_header(["x", "y", "polygon", "why the inside tests differ"]);
+            table.load_style(presets::ASCII_MARKDOWN).set_header([
+                "x".to_string(),
+                "y".to_string(),
+                zsim::words!("pixel-order-header-polygon"),
+                zsim::words!("pixel-order-header-why"),
+            ]);
             for d in &differences {
                 let why = match d.why {
-                    ArcDifference::OnBoundary => "the centre lies exactly on the boundary: arc counts it inside, while the half-interval rule leaves out top edges and vertices (an edge counts only at its lower end)".to_string(),
-                    ArcDifference::Winding(w) => format!("the polygon winds {w} times around the centre: arc counts a non-zero winding as inside, the paired crossings (even-odd) as outside"),
+                    ArcDifference::OnBoundary => zsim::words!("pixel-order-on-boundary"),
+                    ArcDifference::Winding(w) => zsim::words!("pixel-order-winding", winding = w.to_string()),
                 };
                 table.add_row([d.x.to_string(), d.y.to_string(), polygon_name(scene, d.polygon), why]);
             }
-            text.push_str(&format!(
-                "{} centre(s) where arc and the scanline rule disagree:\n{table}\n",
-                differences.len()
-            ));
+            let line = zsim::words!("pixel-order-disagree", count = differences.len().to_string());
+            text.push_str(&format!("{line}\n{table}\n"));
         }
-        text.push_str(&matrices(&buffers, "after all polygons", variant.axes));
+        text.push_str(&matrices(&buffers, variant.axes));
         emit(out, &text)?;
         return Ok(Finish::Ok);
     }
@@ -135,11 +143,10 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
     }
     let k = settings.samples;
     let mut text = report::scene_header(scene, path);
-    text.push_str(&format!(
-        "antialiasing: {k}×{k} samples per pixel, depth at each {}; values are means over the samples (fractions of {})\n",
-        if settings.depth_at_samples { "sample" } else { "pixel's centre" },
-        k * k
-    ));
+    let at = if settings.depth_at_samples { "antialias-at-sample" } else { "antialias-at-centre" };
+    let line =
+        zsim::words!("antialias-heading", k = k.to_string(), at = zsim::words!(at), samples = (k * k).to_string());
+    text.push_str(&format!("{line}\n"));
     let style = MatrixStyle { axes: variant.axes, color: super::use_color(), ..MatrixStyle::default() };
     for (index, picture) in pictures.iter().enumerate() {
         if variant.final_only && index + 1 != pictures.len() {
@@ -147,9 +154,11 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
         }
         let name = polygon_name(scene, index);
         text.push_str(&format!(
-            "\n{}\n\nframebuffer after {name}, averaged:\n{}\nz-buffer after {name}, averaged:\n{}",
+            "\n{}\n\n{}\n{}\n{}\n{}",
             report::polygon_heading(scene, index),
+            zsim::words!("antialias-frame-after", polygon = name.as_str()),
             report::matrix_styled(&picture.frame, &style),
+            zsim::words!("antialias-depth-after", polygon = name.as_str()),
             report::matrix_styled(&picture.depth, &style)
         ));
     }
@@ -161,22 +170,19 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
 pub fn local_errors_text(scene: &Scene, drawn: &Buffers) -> String {
     let errors = variants::local_errors(scene, drawn);
     if errors.is_empty() {
-        return "\ntransparency: every cell matches the correct back-to-front blend\n".to_string();
+        return format!("\n{}\n", zsim::words!("transparency-all-match"));
     }
     let mut table = Table::new();
     table.load_style(presets::ASCII_MARKDOWN).set_header([
-        "x",
-        "y",
-        "drawn",
-        "back to front",
-        "polygons there, back to front",
+        "x".to_string(),
+        "y".to_string(),
+        zsim::words!("transparency-header-drawn"),
+        zsim::words!("transparency-header-back-to-front"),
+        zsim::words!("transparency-header-polygons"),
     ]);
     for e in &errors {
         let order: Vec<String> = e.back_to_front.iter().map(|&i| polygon_name(scene, i)).collect();
         table.add_row([e.x.to_string(), e.y.to_string(), e.drawn.to_string(), e.correct.to_string(), order.join(", ")]);
     }
-    format!(
-        "\ntransparency: {} cells differ from the correct back-to-front blend (the local errors of drawing in the wrong order: a polygon behind a transparent one, drawn after it, fails the depth test):\n{table}\n",
-        errors.len()
-    )
+    format!("\n{}\n{table}\n", zsim::words!("transparency-differs", count = errors.len().to_string()))
 }

@@ -236,7 +236,10 @@ impl<'a> Lines<'a> {
         let values: Result<Vec<f64>, _> = text.split_whitespace().map(str::parse::<f64>).collect();
         match values {
             Ok(values) if values.len() == count => Ok(values),
-            _ => Err(case_error(Some(line), words!("buet-numbers", what = words!(what), count = count.to_string(), found = text))),
+            _ => Err(case_error(
+                Some(line),
+                words!("buet-numbers", what = words!(what), count = count.to_string(), found = text),
+            )),
         }
     }
 }
@@ -282,7 +285,9 @@ impl CaseScene {
                     }
                     stage1.push(triangle);
                 }
-                "translate" => model = multiply(&model, &translation(three(reader.numbers(3, "buet-what-translation")?))),
+                "translate" => {
+                    model = multiply(&model, &translation(three(reader.numbers(3, "buet-what-translation")?)))
+                }
                 "scale" => model = multiply(&model, &scaling(three(reader.numbers(3, "buet-what-scale")?))),
                 "rotate" => {
                     let r = reader.numbers(4, "buet-what-rotation")?;

@@ -529,3 +529,140 @@ cs418-point-size-range = drawArraysPoints reads point size { $index }, but "poin
 cs418-texcoord-range = vertex { $index } is drawn with a texture, but "texcoord" has { $has } vertices
 cs418-too-far = a vertex lands at ({ $x }, { $y }) on the image, too far outside it to rasterize (more than { $reach } image sizes away): turn on "frustum" to clip it
 cs418-too-many-primitives = { $count } primitives do not fit a 32-bit framebuffer
+
+# The course commands and other command-line reports.
+file-written = wrote { $path }
+buet-run-summary = { $path }: { $triangles } triangles on { $width }×{ $height }, { $tested } pixel centres tested, { $written } written
+buet-answer-not-a-number = line { $line }, value { $value }: "{ $text }" is not a number
+buet-answer-rows = { $rows } rows; the raster has { $height }
+buet-none = (none)
+buet-check-matches = { $answer }: every row matches the z-buffer of { $path }
+buet-header-line = line
+buet-header-value = value
+buet-header-answer = answer
+buet-header-right = right
+buet-header-why = why
+buet-cell = cell ({ $x }, { $y }): { $why }
+buet-extra-value = zsim writes fewer values on this line: the answer has an extra one
+buet-check-differs = { $answer }: { $count } { $count ->
+    [one] value differs
+   *[other] values differ
+} from the z-buffer of { $path }
+cs418-primitive-point = the point of vertices { $vertices } (line { $line })
+cs418-primitive-triangle = the triangle of vertices { $vertices } (line { $line })
+cs418-run-summary = { $path }: { $width } × { $height }, { $arithmetic } arithmetic{ $features }: wrote { $written }
+cs418-compare-same = { $path }: every channel of every pixel within { $tolerance } (largest difference { $largest })
+cs418-compare-differs = { $path }: { $count ->
+    [one] 1 pixel differs
+   *[other] { $count } pixels differ
+} by more than { $tolerance } (largest difference { $largest }):
+cs418-compare-pixel = ({ $x }, { $y }): zsim { $ours }, image { $theirs }
+cs418-compare-more = … and { $count } more
+cs418-arith-alike = the course's f64 arithmetic and exact arithmetic draw every sample alike
+cs418-arith-disagree = { $count } { $count ->
+    [one] sample
+   *[other] samples
+} where the course's f64 arithmetic and exact arithmetic disagree:
+cs418-place-sample = sample ({ $x }, { $y }) of pixel ({ $px }, { $py })
+cs418-place-pixel = pixel ({ $x }, { $y })
+cs418-no-span = no span
+cs418-inside = inside
+cs418-outside = outside
+cs418-why-span = { $primitive }: on row { $row } its span is { $course } in f64 but { $exact } exactly, so x = { $x } is { $course_side } in f64 and { $exact_side } exactly
+cs418-nothing = nothing
+cs418-why-depth = both arithmetics cover it with the same primitives, but the depth test keeps { $course } in f64 and { $exact } exactly (equal depths, or within rounding)
+file-written-in = wrote { $files } in { $path }
+exercise-notes-settings = exercise: seed { $seed }, { $width }×{ $height } raster, { $polygons } polygons, framebuffer { $frame_bits } bits, z-buffer { $depth_bits } bits (0 … { $max }), depth test greater
+exercise-notes-asked = asked for: { $asked } (candidate { $candidate } of the seed's sequence)
+exercise-notes-no-case = no particular case
+exercise-notes-contains = it contains (found in the run's trace, first place each):
+exercise-notes-none = none of the hard cases
+exercise-notes-next = check an answer: zsim check { $path } --frame FRAME.txt --depth DEPTH.txt; grade a class: zsim grade { $path } CLASS_DIR
+png-no-fonts = this system has no fonts, so its text would be missing; write an SVG (-o FILE.svg)
+png-figure-too-large = the figure is too large
+error-output = cannot write the output: { $reason }
+memory-header-buffer = buffer
+memory-header-cells = cells
+memory-header-bits-per-cell = bits per cell
+memory-header-bits = bits
+memory-header-bytes = bytes
+memory-total = total
+memory-at-sample = sample
+memory-at-pixel = pixel
+memory-supersampled = , supersampled { $k }×{ $k } with the depth at each { $at }
+memory-heading = { $width }×{ $height } pixels, framebuffer { $frame_bits } bits, z-buffer { $depth_bits } bits{ $sampling }
+memory-total-line = total: { $total } bytes = { $megabytes }
+step-antialias-note = note: this scene asks for { $k }×{ $k } supersampling; step shows each pixel centre's plain coverage and depth, before supersampling and averaging (`zsim run` shows the averaged buffers, `zsim explain --pixel X,Y` each pixel's samples)
+step-fixed = in fixed:{ $bits } arithmetic the vertices are first snapped to multiples of 1/{ $unit }, then these exact rules run on the snapped polygon (`zsim run --arith fixed:{ $bits }` shows the result)
+step-float-exact = exact { $z }
+step-float-not-exact = exact arithmetic does not cover it
+step-float-edges = edge functions at the centres of the bounding box's columns { $first } … { $last }
+step-float-no-crossings = crossings none
+step-float-crossings = crossings { $crossings }
+step-float-heading = in { $arith } arithmetic: { $found }
+step-float-no-pixel = no pixel covered
+step-float-missed = it misses the exact centres x = { $columns }
+run-summary = { $path }: { $polygons } polygons, { $tested } pixel centres tested, { $written } written; effects: { $effects }; stages: { $stages }; read { $read } ms, rasterized { $raster } ms on { $threads } { $threads ->
+    [one] thread
+   *[other] threads
+} ({ $rate } M pixels/s); memory: buffers { $buffers }, scene { $scene }{ $peak }
+run-summary-peak = , peak resident { $peak }
+run-summary-peak-ratio = , peak resident { $peak } ({ $ratio }× buffers + scene)
+run-summary-no-effects = none
+run-summary-arith = ; arithmetic { $arith }
+run-arith-compared = arithmetic: { $arith }; compared with exact arithmetic, { $frame } framebuffer and { $depth } z-buffer cells differ
+run-frame-after-all = framebuffer after all polygons:
+run-depth-after-all = z-buffer after all polygons:
+compare-rules-this = this scene's { $rules }
+compare-rules-other = compared with { $rules }
+compare-rules-same = every pixel comes out the same: no centre lies exactly on an edge where the rules differ
+compare-rules-differ = { $count } { $count ->
+    [one] pixel differs
+   *[other] pixels differ
+}:
+compare-rules-nothing = nothing
+compare-rules-cell = ({ $x }, { $y }): { $before } → { $after }; covered by { $covering } under { $rules }, by { $other_covering } under { $other_rules }
+compare-rules-vertex = the centre ({ $x }.5, { $y }.5) is the vertex { $vertex } of "{ $name }": the edges meeting there decide, under each rule set as on its own edges
+compare-rules-edge = the centre ({ $x }.5, { $y }.5) lies on the { $boundary } of "{ $name }" from { $from } to { $to }: { $verdict } under { $rules }, { $other_verdict } under { $other_rules }
+compare-rules-covered = covered
+compare-rules-left-out = left out
+preset-rogers = the book's rules
+preset-buet = BUET's rules
+preset-gpu = the top-left rule
+variant-identical = identical to the plain z-buffer's (framebuffer and z-buffer)
+variant-differs = { $count } cells differ from the plain z-buffer's
+variant-result = result: { $result }
+segments-kind = segments: { $count } ({ $segments }), each polygon sorted into the segments its bounding box touches
+segments-memory = z-buffer memory: { $cells } cells × { $bits } bits = { $total } bits (whole raster: { $whole_cells } cells, { $whole_bits } bits)
+segments-visits = polygon visits: { $visits } (whole raster: { $whole })
+pixel-order-ray = ray casting (left-open/right-closed vertex rule; on the boundary counts)
+pixel-order-arc = the arc-length method (quadrant table; on the boundary counts)
+pixel-order-heading = order: for every pixel, for every polygon, one depth variable (the Chinese course notes); inside test: { $test }
+pixel-order-header-polygon = polygon
+pixel-order-header-why = why the inside tests differ
+pixel-order-on-boundary = the centre lies exactly on the boundary: arc counts it inside, while the half-interval rule leaves out top edges and vertices (an edge counts only at its lower end)
+pixel-order-winding = the polygon winds { $winding } times around the centre: arc counts a non-zero winding as inside, the paired crossings (even-odd) as outside
+pixel-order-disagree = { $count } centre(s) where arc and the scanline rule disagree:
+antialias-at-sample = sample
+antialias-at-centre = pixel's centre
+antialias-heading = antialiasing: { $k }×{ $k } samples per pixel, depth at each { $at }; values are means over the samples (fractions of { $samples })
+antialias-frame-after = framebuffer after { $polygon }, averaged:
+antialias-depth-after = z-buffer after { $polygon }, averaged:
+transparency-all-match = transparency: every cell matches the correct back-to-front blend
+transparency-header-drawn = drawn
+transparency-header-back-to-front = back to front
+transparency-header-polygons = polygons there, back to front
+transparency-differs = transparency: { $count } cells differ from the correct back-to-front blend (the local errors of drawing in the wrong order: a polygon behind a transparent one, drawn after it, fails the depth test):
+accuracy-header-mode = mode
+accuracy-header-ns = ns per pixel
+accuracy-header-pixels = pixels
+accuracy-header-frame = frame cells ≠ exact
+accuracy-header-depth = depth cells ≠ exact
+accuracy-header-worst = worst depth error (levels)
+accuracy-header-time = time vs exact
+accuracy-header-bits = depth bits
+accuracy-header-fighting = z-fighting cells
+accuracy-header-memory = z-buffer memory (bytes)
+accuracy-header-ms = time (ms)
+accuracy-set = accuracy set: { $scenes } scenes on { $width }×{ $height } (random triangles of 4, 16, 64 and 256 px with vertices on a 1/256 grid, seed { $seed }, and 4 hard cases); times are the least of 3 runs
+accuracy-sweep = two nearly coplanar planes crossing along x = y (world depths 0 … 1 times 2^bits levels; slopes 1/2^20 of the range per pixel), { $cells } cells:

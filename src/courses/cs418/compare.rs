@@ -18,9 +18,13 @@ pub struct Primitive {
 
 impl fmt::Display for Primitive {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let kind = if self.vertices.len() == 1 { "point" } else { "triangle" };
         let list: Vec<String> = self.vertices.iter().map(ToString::to_string).collect();
-        write!(f, "the {kind} of vertices {} (line {})", list.join(", "), self.line)
+        let (vertices, line) = (list.join(", "), self.line.to_string());
+        f.write_str(&if self.vertices.len() == 1 {
+            words!("cs418-primitive-point", vertices = vertices, line = line)
+        } else {
+            words!("cs418-primitive-triangle", vertices = vertices, line = line)
+        })
     }
 }
 

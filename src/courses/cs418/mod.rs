@@ -236,7 +236,10 @@ impl Case {
                         _ => &[1],
                     };
                     if !allowed.contains(&size) {
-                        return Err(error(line, words!("cs418-size", keyword = keyword, size = size.to_string(), allowed = list(allowed))));
+                        return Err(error(
+                            line,
+                            words!("cs418-size", keyword = keyword, size = size.to_string(), allowed = list(allowed)),
+                        ));
                     }
                     case.commands.push((
                         line,
@@ -251,11 +254,7 @@ impl Case {
                 "elements" => {
                     let indices = args
                         .iter()
-                        .map(|w| {
-                            w.parse::<usize>().map_err(|_| {
-                                error(line, words!("cs418-not-an-index", word = *w))
-                            })
-                        })
+                        .map(|w| w.parse::<usize>().map_err(|_| error(line, words!("cs418-not-an-index", word = *w))))
                         .collect::<Result<Vec<_>, _>>()?;
                     case.commands.push((line, Command::Elements(indices)));
                 }
@@ -288,8 +287,8 @@ impl Case {
                     let index = match case.textures.iter().position(|t| t.name == name) {
                         Some(index) => index,
                         None => {
-                            let image =
-                                load_texture(&name).map_err(|why| error(line, words!("cs418-texture", name = name.as_str(), why = why)))?;
+                            let image = load_texture(&name)
+                                .map_err(|why| error(line, words!("cs418-texture", name = name.as_str(), why = why)))?;
                             case.textures.push(Texture { name, image });
                             case.textures.len() - 1
                         }
@@ -308,9 +307,10 @@ fn png_line(line: usize, args: &[&str]) -> Result<Case, CaseError> {
         return Err(error(line, words!("cs418-png-words", found = args.len().to_string())));
     };
     let side = |word: &str, what: &str| {
-        word.parse::<u32>().ok().filter(|v| (1..=MAX_SIDE).contains(v)).ok_or_else(|| {
-            error(line, words!("cs418-png-side", what = what, word = word, max = MAX_SIDE.to_string()))
-        })
+        word.parse::<u32>()
+            .ok()
+            .filter(|v| (1..=MAX_SIDE).contains(v))
+            .ok_or_else(|| error(line, words!("cs418-png-side", what = what, word = word, max = MAX_SIDE.to_string())))
     };
     let (width, height) = (side(width, &words!("cs418-width"))?, side(height, &words!("cs418-height"))?);
     if file.contains(['/', '\\']) || *file == ".." || *file == "." {
@@ -338,7 +338,9 @@ fn number(line: usize, keyword: &str, word: &str) -> Result<Number, CaseError> {
     let finite = word.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.' | b'e' | b'E'));
     match (word.parse::<f64>(), crate::numbers::parse_number(word)) {
         (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(Number { value, exact }),
-        (Ok(value), Err(problem)) if finite && value.is_finite() => Err(error(line, words!("case-keyword-problem", keyword = keyword, problem = problem.to_string()))),
+        (Ok(value), Err(problem)) if finite && value.is_finite() => {
+            Err(error(line, words!("case-keyword-problem", keyword = keyword, problem = problem.to_string())))
+        }
         _ => Err(error(line, words!("cs418-not-a-number", keyword = keyword, word = word))),
     }
 }

@@ -219,7 +219,10 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     /// with a texture; (0, 0) otherwise).
     fn vertex(&self, line: usize, index: usize, textured: bool) -> Result<Vertex<S>, CaseError> {
         let position = self.positions.get(index).ok_or_else(|| {
-            error(line, words!("cs418-vertex-index", index = index.to_string(), count = self.positions.len().to_string()))
+            error(
+                line,
+                words!("cs418-vertex-index", index = index.to_string(), count = self.positions.len().to_string()),
+            )
         })?;
         // A texture without decals replaces the colour, so none need be given
         // (WebGL's default attribute, opaque black, stands in).
@@ -250,11 +253,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             None if textured => {
                 return Err(error(
                     line,
-                    words!(
-                        "cs418-texcoord-range",
-                        index = index.to_string(),
-                        has = self.texcoords.len().to_string()
-                    ),
+                    words!("cs418-texcoord-range", index = index.to_string(), has = self.texcoords.len().to_string()),
                 ));
             }
             None => [S::int(0), S::int(0)],
