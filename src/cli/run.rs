@@ -190,13 +190,14 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 // Tiles keep the cells in cache and are drawn a band of tiles per job on
                 // `threads` threads; the result is the same as polygon by polygon.
                 let tile = args.tile.filter(|t| *t > 0).unwrap_or(DEFAULT_TILE);
-                let progress = progress_bar(long_run, scene.height.div_ceil(tile) as usize, "bands of tiles");
+                let progress =
+                    progress_bar(long_run, scene.height.div_ceil(tile) as usize, &zsim::words!("progress-bands"));
                 let band_done = || progress.inc(1);
                 let drew = simulation.finish_parallel(tile, threads, &band_done);
                 progress.finish_and_clear();
                 drew
             } else {
-                let progress = progress_bar(long_run, scene.polygons.len(), "polygons");
+                let progress = progress_bar(long_run, scene.polygons.len(), &zsim::words!("progress-polygons"));
                 // The bar moves every 1024 polygons, so that it costs nothing per polygon.
                 for first in (0..scene.polygons.len()).step_by(1024) {
                     let last = (first + 1024).min(scene.polygons.len()) - 1;
