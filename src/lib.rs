@@ -10,19 +10,19 @@
 //! - **Axes.** x to the right, y up, pixel (0, 0) at the bottom left ("the
 //!   pixel (0, 0) is in the lower left corner"). Matrices are printed top row
 //!   first (y = height − 1), columns x = 0 … width − 1, as the book prints them
-//!   (`buffer::tests::pixel_origin_is_bottom_left_and_printed_last`).
+//!   (`simulate::buffer::tests::pixel_origin_is_bottom_left_and_printed_last`).
 //! - **Pixel centres.** Pixel (x, y) is sampled at its centre (x + 1/2, y + 1/2).
 //! - **Scanlines** (Rogers' half-interval convention). Row `y` is scanned along
 //!   the line through its centres, y + 1/2. An edge from y₁ to y₂ crosses it when
 //!   `min(y₁, y₂) ≤ y + 1/2 < max(y₁, y₂)`: a vertex on a scanline counts only for
 //!   the edge whose lower end it is, and horizontal edges never cross
-//!   (`scan::tests::vertex_on_scanline_counts_for_lower_edge_only`,
-//!   `scan::tests::horizontal_edges_never_cross`).
+//!   (`raster::scan::tests::vertex_on_scanline_counts_for_lower_edge_only`,
+//!   `raster::scan::tests::horizontal_edges_never_cross`).
 //! - **Spans.** The crossings on a scanline are sorted and paired 1st–2nd,
 //!   3rd–4th, … (even-odd, so concave and self-intersecting polygons work).
 //!   A pixel is covered when its centre lies within a pair, boundary included:
 //!   "the pixel whose centre lies inside or on the boundary", `x₁ ≤ x ≤ x₂`
-//!   (`scan::tests::centre_on_right_edge_is_covered`).
+//!   (`raster::scan::tests::centre_on_right_edge_is_covered`).
 //! - **Plane.** Newell's method on the vertices:
 //!   `a = Σ(yᵢ − yᵢ₊₁)(zᵢ + zᵢ₊₁)`, `b = Σ(zᵢ − zᵢ₊₁)(xᵢ + xᵢ₊₁)`,
 //!   `c = Σ(xᵢ − xᵢ₊₁)(yᵢ + yᵢ₊₁)`, d through vertex 1, printed reduced
@@ -35,24 +35,52 @@
 //!   +∞ on z, larger z is nearer, the z-buffer is cleared to 0 and a pixel is
 //!   written when its exact z is greater than the stored integer. `less`
 //!   (the Russian text on loop order and the Ukrainian Wikipedia): cleared to `2^depth_bits − 1`, written when less.
-//!   Equal depths never overwrite (`depth::tests::equal_depth_does_not_overwrite`),
+//!   Equal depths never overwrite (`raster::depth::tests::equal_depth_does_not_overwrite`),
 //!   except with `greater-equal` and `less-equal`, where they do
-//!   (`depth::tests::equal_depth_overwrites_with_greater_equal_and_less_equal`);
+//!   (`raster::depth::tests::equal_depth_overwrites_with_greater_equal_and_less_equal`);
 //!   the comparison uses the exact z, not the rounded one (the book's pixel
 //!   (20, 17): z = 41/4 > 10 wins though it stores 10).
 //! - **Rounding and saturation.** The z-buffer stores z rounded to the nearest
-//!   integer, halves up (`depth::tests::depth_half_rounds_up`), saturated to
-//!   `0 … 2^depth_bits − 1` (`depth::tests::depth_saturates_at_both_ends`).
+//!   integer, halves up (`raster::depth::tests::depth_half_rounds_up`), saturated to
+//!   `0 … 2^depth_bits − 1` (`raster::depth::tests::depth_saturates_at_both_ends`).
 //! - **Exactness.** No floating point anywhere: coordinates are rationals, each
 //!   polygon is scaled to integers over its common denominator (see
-//!   [`plane`]). A polygon whose integers all fit 64 bits
-//!   ([`plane::Geometry::fits_i64`]: most of them) runs on `i64`, the others
-//!   within [`plane::MAX_SCALED`] on `i128`; the same code, with the same
-//!   results (`pipeline::tests::both_words_rasterize_alike`). Larger ones run
-//!   on the big-integer tier ([`big`]: the formulas in arbitrary-precision
-//!   integers, same results, the same proptest), which reports crossings and
-//!   depths beyond 128 bits as big rationals ([`exact::Exact`]); only absurd
-//!   input is refused ([`plane::MAX_SCALED_BITS`]).
+//!   `geometry::plane`). A polygon whose integers all fit 64 bits
+//!   (`Geometry::fits_i64`: most of them) runs on `i64`, the others
+//!   within `MAX_SCALED` (2^34) on `i128`; the same code, with the same
+//!   results (`raster::convert::tests::both_words_rasterize_alike`). Larger ones run
+//!   on the big-integer tier (`geometry::big`, `raster::big`: the formulas in
+//!   arbitrary-precision integers, same results, the same proptest), which
+//!   reports crossings and depths beyond 128 bits as big rationals
+//!   ([`Exact`]); only absurd input is refused (`MAX_SCALED_BITS`).
+//!
+//! # Layers
+//!
+//! The source tree follows the algorithm's pipeline. Each layer imports only
+//! the layers above it here; two are leaves any layer may use (`words`, the
+//! catalogues, and `error`, which sits just above `geometry`). No import
+//! runs back up: where one seemed needed, the shared item was in the wrong
+//! place (the sink trait sits beside the scan converter, below the driver
+//! that implements it).
+//!
+//! ```text
+//! words      every sentence a person reads, in en, ru, uk and zh
+//! numbers    Q and Exact, parsing, word arithmetic, the Ring trait, formatting
+//! rules      the rule presets as data
+//! geometry   a polygon's plane: Newell and planarity once over Ring; the big tier's polygon
+//! error      typed errors with their facts, worded by the catalogues
+//! raster     the one scan converter, its sink trait, crossings, spans, depth steppers
+//! scene      the scene file and its validation, perspective, clip space, random scenes
+//! simulate   the Simulation driver, buffers, per-pixel stages, events, tiles and threads
+//! effects    antialiasing, loop variants, inexact arithmetic modes, accuracy
+//! observe    recorders, ties, explanations, a pixel's history, reports, figures, check, the stepper's model
+//! teach      exercise and grade
+//! courses    BUET CSE 410 and UIUC CS 418
+//! ```
+//!
+//! The modules are private; this page lists the API the command line, the
+//! benchmarks, the fuzz target and the tests use. Printing happens only in
+//! the binary (`src/cli/`).
 //!
 //! # Example
 //!

@@ -1,3 +1,7 @@
-//! Courses.
+//! Courses: other courses' rules and files end to end. BUET CSE 410 reads its
+//! `config.txt` and `scene.txt`, runs the course's transformations and writes
+//! `z_buffer.txt`; UIUC CS 418 runs the course's pipeline over a number type
+//! (its f64 arithmetic, or exact). Both end in the scene the simulator draws.
+//! Imports: the layers before it.
 pub mod buet;
 pub mod cs418;

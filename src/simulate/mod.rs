@@ -1,4 +1,8 @@
-//! Simulate: the driver.
+//! Simulate: the [`simulation::Simulation`] driver draws a scene polygon by
+//! polygon into the buffers (`buffer`) through the per-pixel stages the scene
+//! asks for (`stages`), telling an observer what happens (`events`); the
+//! plain loop writes the cells directly (`levels`), in tiles on several
+//! threads when nobody watches (`tiles`). Imports: scene and the layers before it.
 pub mod buffer;
 pub mod events;
 mod levels;

@@ -20,6 +20,7 @@ mod golden;
 mod hard_cases;
 mod hardening;
 mod languages;
+mod layers;
 mod run_command;
 mod stability;
 mod teaching;
