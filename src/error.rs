@@ -17,6 +17,21 @@ pub enum Error {
         /// What the system said.
         source: std::io::Error,
     },
+    /// An input that is not a regular file (or a symbolic link where none is
+    /// followed): refused before anything is read.
+    NotRegular {
+        /// The path.
+        path: PathBuf,
+        /// What it is.
+        kind: FileKind,
+    },
+    /// An input larger than zsim reads.
+    TooLarge {
+        /// The path.
+        path: PathBuf,
+        /// The largest size read, in bytes.
+        limit: u64,
+    },
     /// A file could not be written.
     Write {
         /// The file.
@@ -63,6 +78,49 @@ pub enum Error {
         /// What was found.
         message: String,
     },
+}
+
+/// What an input that is not a regular file is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FileKind {
+    /// A folder.
+    Directory,
+    /// A named pipe.
+    Fifo,
+    /// A device (`/dev/zero`, a terminal).
+    Device,
+    /// A socket.
+    Socket,
+    /// A symbolic link, where none is followed.
+    Link,
+    /// Something else.
+    Other,
+}
+
+impl FileKind {
+    /// The kind of a file that is not a regular one.
+    pub fn of(kind: &std::fs::FileType) -> FileKind {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::FileTypeExt;
+            if kind.is_fifo() {
+                return FileKind::Fifo;
+            }
+            if kind.is_char_device() || kind.is_block_device() {
+                return FileKind::Device;
+            }
+            if kind.is_socket() {
+                return FileKind::Socket;
+            }
+        }
+        if kind.is_dir() {
+            FileKind::Directory
+        } else if kind.is_symlink() {
+            FileKind::Link
+        } else {
+            FileKind::Other
+        }
+    }
 }
 
 /// Where a polygon with a problem came from: a file, or zsim's own
@@ -233,6 +291,20 @@ pub enum Usage {
         /// Candidates tried.
         tries: usize,
     },
+    /// `-o FOLDER` is the folder the command reads.
+    OutputIsInput {
+        /// The folder.
+        folder: PathBuf,
+    },
+    /// `-o FOLDER` already holds files the command would write.
+    OutputWouldReplace {
+        /// The folder.
+        folder: PathBuf,
+        /// The files it would replace, by name.
+        files: Vec<String>,
+    },
+    /// `--tile 0`.
+    TileZero,
     /// `--inside` without `--order pixels`.
     InsideNeedsPixelOrder,
     /// `--tile` or `--threads` with a format other than `none`.
@@ -354,6 +426,17 @@ impl fmt::Display for Usage {
                 cases = cases.join(", "),
                 tries = tries.to_string()
             ),
+            Usage::OutputIsInput { folder } => words!("usage-output-is-input", path = path(folder)),
+            Usage::OutputWouldReplace { folder, files } => {
+                let shown: Vec<&str> = files.iter().take(5).map(String::as_str).collect();
+                words!(
+                    "usage-output-would-replace",
+                    path = path(folder),
+                    files = shown.join(", "),
+                    more = files.len().saturating_sub(5)
+                )
+            }
+            Usage::TileZero => words!("usage-tile-zero"),
             Usage::InsideNeedsPixelOrder => words!("usage-inside-needs-pixel-order"),
             Usage::TilesNeedFormatNone => words!("usage-tiles-need-format-none"),
             Usage::FormatNoneIsPlain => words!("usage-format-none-is-plain"),
@@ -419,6 +502,22 @@ impl fmt::Display for Error {
             Error::Read { path, source } => {
                 f.write_str(&words!("error-read", path = path.display().to_string(), reason = source.to_string()))
             }
+            Error::NotRegular { path, kind } => {
+                let kind = match kind {
+                    FileKind::Directory => words!("file-kind-directory"),
+                    FileKind::Fifo => words!("file-kind-fifo"),
+                    FileKind::Device => words!("file-kind-device"),
+                    FileKind::Socket => words!("file-kind-socket"),
+                    FileKind::Link => words!("file-kind-link"),
+                    FileKind::Other => words!("file-kind-other"),
+                };
+                f.write_str(&words!("error-not-regular", path = path.display().to_string(), kind = kind))
+            }
+            Error::TooLarge { path, limit } => f.write_str(&words!(
+                "error-too-large",
+                path = path.display().to_string(),
+                limit = (limit >> 20).to_string()
+            )),
             Error::Write { path, source } => {
                 f.write_str(&words!("error-write", path = path.display().to_string(), reason = source.to_string()))
             }

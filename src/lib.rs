@@ -120,7 +120,7 @@ mod teach;
 
 pub use courses::{buet, cs418};
 pub use effects::{accuracy, antialias, arith, variants};
-pub use error::{Error, PolygonOrigin, PolygonProblem, Task, Usage};
+pub use error::{Error, FileKind, PolygonOrigin, PolygonProblem, Task, Usage};
 pub use numbers::{
     Exact, NumberError, Q, decimal, exact_and_decimal, fraction, parse_exact, parse_number, short, to_f64,
 };
@@ -133,7 +133,7 @@ pub use raster::scan::{Crossing, Span};
 pub use raster::sink::{PixelRect, RasterSink};
 pub use rules::{ColumnRule, DepthStore, Preset, RowRule, Rules};
 pub use scene::random::{RandomScene, memory};
-pub use scene::text::{printable, read_text};
+pub use scene::text::{Links, MAX_INPUT_BYTES, printable, read_bytes, read_text, read_text_with};
 pub use scene::{Antialias, MAX_SIDE, Polygon, Scene, max_for_bits};
 pub use simulate::buffer::Buffers;
 pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};

@@ -34,9 +34,10 @@ pub struct CheckArgs {
     arith: zsim::arith::Arith,
 }
 
-/// Reads an answer file for one of `scene`'s buffers: a matrix as the book prints it.
-pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer) -> Result<Matrix, Error> {
-    let text = zsim::read_text(path)?;
+/// Reads an answer file for one of `scene`'s buffers: a matrix as the book
+/// prints it; a symbolic link is followed only where `links` says so.
+pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer, links: zsim::Links) -> Result<Matrix, Error> {
+    let text = zsim::read_text_with(path, links)?;
     let (max, description) = match buffer {
         Buffer::Frame => (
             zsim::max_for_bits(scene.frame_bits),
@@ -65,7 +66,7 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let mut malformed = None;
     for (buffer, path) in [(Buffer::Frame, &args.frame), (Buffer::Depth, &args.depth)] {
         if let Some(path) = path {
-            match read_answer(path, &scene, buffer) {
+            match read_answer(path, &scene, buffer, zsim::Links::Follow) {
                 Ok(answer) => answers.push((buffer, path.as_path(), answer)),
                 Err(error) => {
                     malformed.get_or_insert(error);

@@ -61,10 +61,11 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
     };
     let exercise = make(&spec).map_err(Error::from)?;
     let dir = &args.output;
-    std::fs::create_dir_all(dir).map_err(|source| Error::Write { path: dir.clone(), source })?;
-    let write = |name: &str, text: &str| {
-        let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|source| Error::Write { path, source })
+    // Everything is made first and written at the end, replacing nothing.
+    let mut files: Vec<(String, Vec<u8>)> = Vec::new();
+    let mut write = |name: &str, text: &str| -> Result<(), Error> {
+        files.push((name.to_string(), text.as_bytes().to_vec()));
+        Ok(())
     };
     write("scene.json", &exercise.json)?;
     let scene = &exercise.scene;
@@ -123,6 +124,7 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
     let notes = notes(&exercise, &spec, args);
     write("exercise.txt", &notes)?;
     written.push("exercise.txt".into());
+    super::write_fresh(dir, &files, &[])?;
     let line = zsim::words!("file-written-in", files = written.join(", "), path = dir.display().to_string());
     emit(out, &format!("{notes}{line}\n"))?;
     Ok(Finish::Ok)

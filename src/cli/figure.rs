@@ -97,10 +97,18 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         Kind::Svg => text.into_bytes(),
         Kind::Png => png(&text, &args.output)?,
     };
+    super::not_an_input(&args.output, &[&args.scene])?;
     std::fs::write(&args.output, bytes).map_err(|source| Error::Write { path: args.output.clone(), source })?;
     emit(
         out,
-        &format!("{}\n", zsim::words!("file-written-about", path = args.output.display().to_string(), about = title)),
+        &format!(
+            "{}\n",
+            zsim::words!(
+                "file-written-about",
+                path = args.output.display().to_string(),
+                about = zsim::printable(&title).into_owned()
+            )
+        ),
     )?;
     Ok(Finish::Ok)
 }

@@ -31,7 +31,7 @@ pub struct GradeArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
-    /// Write each student's feedback (`zsim check`'s explanation of every wrong cell) to FOLDER/NAME.txt, and the common mistakes to FOLDER/common-mistakes.txt.
+    /// Write each student's feedback (`zsim check`'s explanation of every wrong cell) to FOLDER/NAME.feedback.txt, and the common mistakes to FOLDER/common-mistakes.txt; FOLDER may not be the class folder, and no file in it is replaced.
     #[arg(short, long, value_name = "FOLDER")]
     output: Option<PathBuf>,
 }
@@ -159,7 +159,7 @@ fn submissions(
                     let file = files.iter().find(|(s, b, _)| s == student && b == buffer);
                     let handed = match file {
                         None => Handed::Missing,
-                        Some((_, _, path)) => match read_answer(path, scene, *buffer) {
+                        Some((_, _, path)) => match read_answer(path, scene, *buffer, zsim::Links::Refuse) {
                             Ok(matrix) => Handed::Matrix(matrix),
                             Err(Error::Answer { message, .. }) => Handed::Malformed(message),
                             Err(other) => Handed::Malformed(other.to_string()),
@@ -252,9 +252,13 @@ fn mistakes_text(mistakes: &[CommonMistake], reasons: &[String], students: usize
     format!("{}\n{table}\n", zsim::words!("grade-mistakes"))
 }
 
-/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
+/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC
+/// 4180). A cell a spreadsheet would run as a formula (one starting with `=`,
+/// `+`, `-`, `@`, a tab or a carriage return: a student's name is anyone's
+/// text) starts with `'` instead, as OWASP recommends, so it stays text.
 fn csv_field(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) { format!("\"{}\"", text.replace('"', "\"\"")) } else { text.to_string() }
+    let text = if text.starts_with(['=', '+', '-', '@', '\t', '\r']) { format!("'{text}") } else { text.to_string() };
+    if text.contains([',', '"', '\n', '\r']) { format!("\"{}\"", text.replace('"', "\"\"")) } else { text }
 }
 
 fn csv(rows: &[&Grade]) -> String {
@@ -320,8 +324,7 @@ fn write_feedback(
     graded: &[(Grade, Vec<zsim::grade::WrongCells>)],
     mistakes_text: &str,
 ) -> Result<(), Error> {
-    let write = |path: PathBuf, text: &str| std::fs::write(&path, text).map_err(|source| Error::Write { path, source });
-    std::fs::create_dir_all(folder).map_err(|source| Error::Write { path: folder.to_owned(), source })?;
+    let mut outputs = Vec::new();
     for (grade, _) in graded {
         let mut text = zsim::words!(
             "grade-feedback",
@@ -337,7 +340,7 @@ fn write_feedback(
             if printable(student) != grade.student {
                 continue;
             }
-            match read_answer(path, scene, *buffer) {
+            match read_answer(path, scene, *buffer, zsim::Links::Refuse) {
                 Ok(matrix) => answers.push((*buffer, path.as_path(), matrix)),
                 Err(error) => text.push_str(&format!("{}\n", printable(&error.to_string()))),
             }
@@ -345,7 +348,10 @@ fn write_feedback(
         if !answers.is_empty() {
             text.push_str(&report(scene, &args.scene, last, answers, Arith::Exact)?.text);
         }
-        write(folder.join(format!("{}.txt", grade.student)), &text)?;
+        // NAME.feedback.txt never ends as a submitted NAME.frame.txt or NAME.depth.txt
+        // does, nor is it the summary's name, whatever the student's name.
+        outputs.push((format!("{}.feedback.txt", grade.student), text.into_bytes()));
     }
-    write(folder.join("common-mistakes.txt"), mistakes_text)
+    outputs.push(("common-mistakes.txt".to_string(), mistakes_text.as_bytes().to_vec()));
+    super::write_fresh(folder, &outputs, &[&args.class])
 }

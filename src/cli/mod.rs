@@ -19,6 +19,8 @@ mod variants;
 use std::io::{self, IsTerminal, Write};
 use std::process::ExitCode;
 
+use std::path::Path;
+
 use clap::{Parser, Subcommand};
 use zsim::Error;
 
@@ -99,6 +101,11 @@ impl From<io::Error> for Failure {
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
     zsim::set_language(cli.lang.unwrap_or_else(zsim::Lang::from_env));
+    if stdout_is_closed() {
+        // Rust's standard output drops writes to a closed descriptor silently.
+        eprintln!("zsim: {}", zsim::words!("error-output", reason = zsim::words!("stdout-closed")));
+        return ExitCode::from(2);
+    }
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
     let result = match cli.command {
@@ -140,4 +147,70 @@ fn use_color() -> bool {
 /// Writes text, turning a closed pipe into a quiet stop.
 fn emit(out: &mut dyn Write, text: &str) -> Result<(), Failure> {
     out.write_all(text.as_bytes()).map_err(Failure::Io)
+}
+
+/// Refuses an output file that is one of the command's inputs (the same file
+/// by another name included): writing it would destroy what was read.
+pub(crate) fn not_an_input(output: &Path, inputs: &[&Path]) -> Result<(), Error> {
+    if inputs.iter().any(|input| same_file(output, input)) {
+        return Err(zsim::Usage::OutputIsInput { folder: output.to_owned() }.into());
+    }
+    Ok(())
+}
+
+/// Whether two paths name the same existing file or folder.
+fn same_file(a: &Path, b: &Path) -> bool {
+    matches!((std::fs::canonicalize(a), std::fs::canonicalize(b)), (Ok(a), Ok(b)) if a == b)
+}
+
+/// Writes `files` (name, contents) into `folder`, made if missing, replacing
+/// nothing: refused, before anything is written, when `folder` is one of the
+/// folders the command reads (`inputs`) or already holds one of the files.
+pub(crate) fn write_fresh(folder: &Path, files: &[(String, Vec<u8>)], inputs: &[&Path]) -> Result<(), Error> {
+    not_an_input(folder, inputs)?;
+    let existing: Vec<String> = files
+        .iter()
+        .filter(|(name, _)| std::fs::symlink_metadata(folder.join(name)).is_ok())
+        .map(|(n, _)| n.clone())
+        .collect();
+    if !existing.is_empty() {
+        return Err(zsim::Usage::OutputWouldReplace { folder: folder.to_owned(), files: existing }.into());
+    }
+    std::fs::create_dir_all(folder).map_err(|source| Error::Write { path: folder.to_owned(), source })?;
+    for (name, contents) in files {
+        let path = folder.join(name);
+        // create_new: a file that appeared since the check is not replaced either.
+        let written = std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&path)
+            .and_then(|mut file| file.write_all(contents));
+        written.map_err(|source| Error::Write { path, source })?;
+    }
+    Ok(())
+}
+
+/// Whether standard output was closed when zsim started (`zsim run SCENE
+/// >&-`): everything written would be lost without an error. Rust's runtime
+/// opens `/dev/null` read-write in place of a closed standard descriptor
+/// before `main`, so that is what a closed one looks like here; a shell's
+/// `> /dev/null` opens it write-only, and stays a silent, wanted sink.
+fn stdout_is_closed() -> bool {
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::unix::fs::{FileTypeExt, MetadataExt};
+        // SAFETY: F_GETFL only reads descriptor 1's flags; it changes nothing.
+        let flags = unsafe { libc::fcntl(1, libc::F_GETFL) };
+        if flags == -1 {
+            return true;
+        }
+        let device =
+            |path: &str| std::fs::metadata(path).ok().filter(|m| m.file_type().is_char_device()).map(|m| m.rdev());
+        let null = device("/dev/null");
+        flags & libc::O_ACCMODE == libc::O_RDWR && null.is_some() && device("/proc/self/fd/1") == null
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        false
+    }
 }

@@ -76,9 +76,24 @@ pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {
         "status": zsim::words!("page-status", at = "{at}", count = "{count}"),
     });
     let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "op": scene.depth_test.symbol(), "words": words, "stops": stops});
-    // Inside a <script> element, "</" would end it early.
-    let data = serde_json::to_string(&data).expect("serializing plain data cannot fail").replace("</", "<\\/");
-    let mut page = TEMPLATE.replace("{{TITLE}}", &escape(title)).replace("{{DATA}}", &data);
+    let data = serde_json::to_string(&data).expect("serializing plain data cannot fail");
+    let (head, tail) = TEMPLATE.split_once("{{DATA}}").expect("the template has a place for the data");
+    // The data goes in last, so that nothing in it (a polygon named "{{TITLE}}") is
+    // taken for a place in the template.
+    format!("{}{}{}", fill(head, title), embedded_json(&data), fill(tail, title))
+}
+
+/// Markup's special characters written as JSON escapes (`<` as `\u003c`, …),
+/// so that no string in the data can end the `<script>` element holding it
+/// (`</script>`), open a comment that hides its end (`<!--`) or start an
+/// entity; the JSON reads the same.
+fn embedded_json(json: &str) -> String {
+    json.replace('<', "\\u003c").replace('>', "\\u003e").replace('&', "\\u0026")
+}
+
+/// A part of the template with its title and words filled in, escaped.
+fn fill(part: &str, title: &str) -> String {
+    let mut part = part.to_string();
     for (marker, key) in [
         ("{{LANG}}", None),
         ("{{BACK}}", Some("page-back")),
@@ -90,9 +105,10 @@ pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {
         ("{{QUIZ}}", Some("page-quiz")),
     ] {
         let text = key.map_or_else(|| zsim::language().code().to_string(), |key| zsim::message(key, &[]));
-        page = page.replace(marker, &escape(&text));
+        part = part.replace(marker, &escape(&text));
     }
-    page
+    // The title last: what it holds is never taken for a place in the template.
+    part.replace("{{TITLE}}", &escape(title))
 }
 
 fn escape(text: &str) -> String {

@@ -43,7 +43,7 @@ pub struct RunArgs {
     /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (the Russian lecture notes).
     #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
     segments: Option<zsim::variants::Segments>,
-    /// With --format none: draw tile by tile, N×N pixels (default 64 when more than one thread draws).
+    /// With --format none: draw tile by tile, N×N pixels (default 64 when more than one thread draws; 1 to 7 draw as 8, whose bins cost less than the buffers).
     #[arg(long, value_name = "N")]
     tile: Option<u32>,
     /// With --format none: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon).
@@ -56,6 +56,9 @@ pub struct RunArgs {
     #[arg(long, default_value = "exact", value_parser = Arith::parse)]
     arith: Arith,
 }
+
+/// The smallest tile drawn: below it the tiles' bins would outweigh the buffers.
+const MIN_TILE: u32 = 8;
 
 /// The tile side when more than one thread draws and `--tile` is not given.
 const DEFAULT_TILE: u32 = 64;
@@ -91,6 +94,9 @@ enum Format {
 pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.inside.is_some() && args.order != Order::Pixels {
         return Err(zsim::Error::from(zsim::Usage::InsideNeedsPixelOrder).into());
+    }
+    if args.tile == Some(0) {
+        return Err(zsim::Error::from(zsim::Usage::TileZero).into());
     }
     if (args.tile.is_some() || args.threads.is_some()) && args.format != Format::None {
         return Err(zsim::Error::from(zsim::Usage::TilesNeedFormatNone).into());
@@ -189,7 +195,9 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             let drew = if threads > 1 || args.tile.is_some_and(|t| t > 0) {
                 // Tiles keep the cells in cache and are drawn a band of tiles per job on
                 // `threads` threads; the result is the same as polygon by polygon.
-                let tile = args.tile.filter(|t| *t > 0).unwrap_or(DEFAULT_TILE);
+                // A tile's bin (a vector, 24 bytes, and its polygons) costs less than its
+                // cells (8 bytes each) only from 8×8 on: smaller tiles draw as 8×8, alike.
+                let tile = args.tile.unwrap_or(DEFAULT_TILE).max(MIN_TILE);
                 let progress =
                     progress_bar(long_run, scene.height.div_ceil(tile) as usize, &zsim::words!("progress-bands"));
                 let band_done = || progress.inc(1);

@@ -58,6 +58,7 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         let name =
             args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
         let page = super::page::page(&mut tracer, &name);
+        super::not_an_input(output, &[&args.scene])?;
         std::fs::write(output, page).map_err(|source| Error::Write { path: output.clone(), source })?;
         emit(out, &format!("{}\n", zsim::words!("file-written-page", path = output.display().to_string())))?;
         return Ok(Finish::Ok);

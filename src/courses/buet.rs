@@ -227,6 +227,11 @@ impl<'a> Lines<'a> {
         line
     }
 
+    /// The number of the line read last.
+    fn last_line(&self) -> Option<usize> {
+        self.next.checked_sub(1).and_then(|i| self.lines.get(i)).map(|(line, _)| *line)
+    }
+
     /// The next line as exactly `count` numbers; `what` is the catalogue
     /// key naming them.
     fn numbers(&mut self, count: usize, what: &str) -> Result<Vec<f64>, CaseError> {
@@ -235,7 +240,8 @@ impl<'a> Lines<'a> {
         };
         let values: Result<Vec<f64>, _> = text.split_whitespace().map(str::parse::<f64>).collect();
         match values {
-            Ok(values) if values.len() == count => Ok(values),
+            // `str::parse` reads "NaN" and "inf" too: the course's numbers are finite.
+            Ok(values) if values.len() == count && values.iter().all(|v| v.is_finite()) => Ok(values),
             _ => Err(case_error(
                 Some(line),
                 words!("buet-numbers", what = words!(what), count = count.to_string(), found = text),
@@ -268,11 +274,25 @@ impl CaseScene {
             text.lines().enumerate().map(|(i, l)| (i + 1, l.trim())).filter(|(_, l)| !l.is_empty()).collect();
         let mut reader = Lines { lines: &lines, next: 0 };
         let three = |v: Vec<f64>| [v[0], v[1], v[2]];
+        // A camera or projection the formulas cannot build (they would divide by
+        // zero and fill every stage with NaN) is refused at its line.
         let eye = three(reader.numbers(3, "buet-what-eye")?);
         let look = three(reader.numbers(3, "buet-what-look")?);
+        if look == eye {
+            return Err(case_error(reader.last_line(), words!("buet-look-at-eye")));
+        }
         let up = three(reader.numbers(3, "buet-what-up")?);
+        let direction = [0, 1, 2].map(|i| look[i] - eye[i]);
+        if cross(direction, up).iter().all(|v| *v == 0.0) {
+            return Err(case_error(reader.last_line(), words!("buet-up-along-view")));
+        }
         let p = reader.numbers(4, "buet-what-perspective")?;
         let perspective = [p[0], p[1], p[2], p[3]];
+        let [fov_y, aspect, near, far] = perspective;
+        let angle = |a: f64| a > 0.0 && a < 180.0;
+        if !(angle(fov_y) && aspect > 0.0 && angle(fov_y * aspect) && near > 0.0 && far != near) {
+            return Err(case_error(reader.last_line(), words!("buet-perspective")));
+        }
         let mut model = identity();
         let mut stack: Vec<Matrix> = Vec::new();
         let mut stage1 = Vec::new();
@@ -291,6 +311,9 @@ impl CaseScene {
                 "scale" => model = multiply(&model, &scaling(three(reader.numbers(3, "buet-what-scale")?))),
                 "rotate" => {
                     let r = reader.numbers(4, "buet-what-rotation")?;
+                    if r[1..].iter().all(|v| *v == 0.0) {
+                        return Err(case_error(reader.last_line(), words!("buet-rotation-axis")));
+                    }
                     model = multiply(&model, &rotation(r[0], [r[1], r[2], r[3]]));
                 }
                 "push" => stack.push(model),

@@ -484,8 +484,19 @@ fn breakable(line: &str) -> Vec<(bool, &str)> {
     pieces
 }
 
+/// Text for SVG: markup's special characters as entities, and every
+/// character XML does not allow (control characters but tab and line ends,
+/// U+FFFE, U+FFFF) as U+FFFD, so that any name or title gives a valid file.
 fn escape(text: &str) -> String {
-    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+    let allowed =
+        |c: char| matches!(c, '\t' | '\n' | '\r' | '\u{20}'..='\u{D7FF}' | '\u{E000}'..='\u{FFFD}' | '\u{10000}'..);
+    text.chars()
+        .map(|c| if allowed(c) { c } else { char::REPLACEMENT_CHARACTER })
+        .collect::<String>()
+        .replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 #[cfg(test)]

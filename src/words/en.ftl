@@ -668,3 +668,25 @@ accuracy-set = accuracy set: { $scenes } scenes on { $width }×{ $height } (rand
 accuracy-sweep = two nearly coplanar planes crossing along x = y (world depths 0 … 1 times 2^bits levels; slopes 1/2^20 of the range per pixel), { $cells } cells:
 progress-bands = bands of tiles
 progress-polygons = polygons
+
+# Inputs zsim refuses before reading.
+error-not-regular = { $path }: is not a regular file (it is { $kind }): zsim reads only regular files
+error-too-large = { $path }: is larger than zsim reads ({ $limit } MiB)
+file-kind-directory = a folder
+file-kind-fifo = a named pipe (FIFO)
+file-kind-device = a device
+file-kind-socket = a socket
+file-kind-link = a symbolic link, which is not followed
+file-kind-other = not a regular file
+error-not-utf8 = not UTF-8 text
+usage-output-is-input = { $path } is one of the inputs zsim reads: write the output elsewhere
+usage-output-would-replace = { $path } already holds { $files }{ $more ->
+    [0] {""}
+   *[other] { " " }and { $more } more
+}: zsim replaces no file; choose a new or empty folder
+usage-tile-zero = --tile takes 1 or more pixels (0 would draw nothing)
+stdout-closed = standard output is closed
+buet-look-at-eye = the look-at point is the eye position: the view has no direction
+buet-up-along-view = the up direction is zero or lies along the view direction: the camera has no orientation
+buet-perspective = fovY and fovY·aspect must lie between 0 and 180 degrees, aspect and near be positive, and far differ from near
+buet-rotation-axis = a rotation about the axis 0 0 0 has no direction

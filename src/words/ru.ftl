@@ -650,3 +650,25 @@ accuracy-set = набор для точности: { $scenes } сцен на { $
 accuracy-sweep = две почти компланарные плоскости, пересекающиеся по x = y (мировые глубины 0 … 1, умноженные на 2^bits уровней; наклон 1/2^20 диапазона на пиксел), { $cells } ячеек:
 progress-bands = полос плиток
 progress-polygons = многоугольников
+
+# Inputs zsim refuses before reading.
+error-not-regular = { $path }: не обычный файл (это { $kind }): zsim читает только обычные файлы
+error-too-large = { $path }: больше, чем читает zsim ({ $limit } МиБ)
+file-kind-directory = папка
+file-kind-fifo = именованный канал (FIFO)
+file-kind-device = устройство
+file-kind-socket = сокет
+file-kind-link = символическая ссылка, по которой zsim не переходит
+file-kind-other = не обычный файл
+error-not-utf8 = не текст в UTF-8
+usage-output-is-input = { $path } — один из входов, которые читает zsim: запишите вывод в другое место
+usage-output-would-replace = в { $path } уже есть { $files }{ $more ->
+    [0] {""}
+   *[other] { " " }и ещё { $more }
+}: zsim не заменяет файлы; выберите новую или пустую папку
+usage-tile-zero = --tile принимает 1 пиксел и больше (с 0 ничего не рисуется)
+stdout-closed = стандартный вывод закрыт
+buet-look-at-eye = точка, куда смотрят, совпадает с положением глаза: у взгляда нет направления
+buet-up-along-view = направление вверх нулевое или лежит вдоль направления взгляда: у камеры нет ориентации
+buet-perspective = fovY и fovY·aspect должны лежать между 0 и 180 градусами, aspect и near быть положительными, а far отличаться от near
+buet-rotation-axis = поворот вокруг оси 0 0 0 не имеет направления

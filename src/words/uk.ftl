@@ -650,3 +650,25 @@ accuracy-set = набір для точності: { $scenes } сцен на { $
 accuracy-sweep = дві майже компланарні площини, що перетинаються по x = y (світові глибини 0 … 1, помножені на 2^bits рівнів; нахил 1/2^20 діапазону на піксель), { $cells } комірок:
 progress-bands = смуг плиток
 progress-polygons = багатокутників
+
+# Inputs zsim refuses before reading.
+error-not-regular = { $path }: не звичайний файл (це { $kind }): zsim читає лише звичайні файли
+error-too-large = { $path }: більший, ніж читає zsim ({ $limit } МіБ)
+file-kind-directory = тека
+file-kind-fifo = іменований канал (FIFO)
+file-kind-device = пристрій
+file-kind-socket = сокет
+file-kind-link = символічне посилання, за яким zsim не переходить
+file-kind-other = не звичайний файл
+error-not-utf8 = не текст у UTF-8
+usage-output-is-input = { $path } — один із входів, які читає zsim: запишіть вивід в інше місце
+usage-output-would-replace = у { $path } вже є { $files }{ $more ->
+    [0] {""}
+   *[other] { " " }і ще { $more }
+}: zsim не замінює файли; виберіть нову або порожню теку
+usage-tile-zero = --tile приймає 1 піксель і більше (з 0 нічого не малюється)
+stdout-closed = стандартний вивід закрито
+buet-look-at-eye = точка, куди дивляться, збігається з положенням ока: погляд не має напрямку
+buet-up-along-view = напрямок угору нульовий або лежить уздовж напрямку погляду: камера не має орієнтації
+buet-perspective = fovY і fovY·aspect мають лежати між 0 і 180 градусами, aspect і near бути додатними, а far відрізнятися від near
+buet-rotation-axis = поворот навколо осі 0 0 0 не має напрямку

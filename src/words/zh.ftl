@@ -629,3 +629,25 @@ accuracy-set = 精度测试集：{ $width }×{ $height } 上 { $scenes } 个场�
 accuracy-sweep = 两个沿 x = y 相交的近乎共面的平面（世界深度 0 … 1 乘以 2^bits 级；每像素斜率为范围的 1/2^20），{ $cells } 个单元：
 progress-bands = 条图块带
 progress-polygons = 个多边形
+
+# Inputs zsim refuses before reading.
+error-not-regular = { $path }: 不是普通文件（它是{ $kind }）：zsim 只读取普通文件
+error-too-large = { $path }: 超出 zsim 读取的上限（{ $limit } MiB）
+file-kind-directory = 文件夹
+file-kind-fifo = 命名管道（FIFO）
+file-kind-device = 设备
+file-kind-socket = 套接字
+file-kind-link = 符号链接（不跟随）
+file-kind-other = 非普通文件
+error-not-utf8 = 不是 UTF-8 文本
+usage-output-is-input = { $path } 是 zsim 读取的输入之一：请把输出写到别处
+usage-output-would-replace = { $path } 中已有 { $files }{ $more ->
+    [0] {""}
+   *[other] { " " }另有 { $more } 个
+}：zsim 不替换任何文件；请选择新的或空的文件夹
+usage-tile-zero = --tile 取 1 个像素或以上（0 什么也画不出）
+stdout-closed = 标准输出已关闭
+buet-look-at-eye = 注视点与眼睛位置相同：视线没有方向
+buet-up-along-view = 向上方向为零或与视线方向共线：相机没有朝向
+buet-perspective = fovY 和 fovY·aspect 须在 0 到 180 度之间，aspect 和 near 须为正，far 须不同于 near
+buet-rotation-axis = 绕轴 0 0 0 的旋转没有方向

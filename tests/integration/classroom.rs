@@ -99,7 +99,7 @@ fn grade_writes_each_student_checks_explanation() {
     let feedback = scratch("feedback");
     let run = zsim(&["grade", "examples/rogers.json", path(&class), "--format", "csv", "-o", path(&feedback)]);
     assert_eq!(run.code, 1);
-    let bo = std::fs::read_to_string(feedback.join("bo.txt")).unwrap();
+    let bo = std::fs::read_to_string(feedback.join("bo.feedback.txt")).unwrap();
     let check = zsim(&[
         "check",
         "examples/rogers.json",
@@ -111,7 +111,7 @@ fn grade_writes_each_student_checks_explanation() {
     let (heading, rest) = bo.split_once('\n').unwrap();
     assert_eq!(heading, "bo: examples/rogers.json after polygon 2 \"triangle\": score 99.9 %, wrong");
     assert_eq!(rest, check.stdout, "the feedback is what `zsim check` says");
-    let di = std::fs::read_to_string(feedback.join("di.txt")).unwrap();
+    let di = std::fs::read_to_string(feedback.join("di.feedback.txt")).unwrap();
     assert!(di.contains("di.frame.txt: line 1, value 3 (x = 2, y = 31): \"x\" is not a whole number"), "{di}");
     assert!(di.contains("di.depth.txt: all 1024 cells match"), "the answer that was read is still checked: {di}");
     assert!(std::fs::read_to_string(feedback.join("common-mistakes.txt")).unwrap().contains("2 of 5"));
@@ -139,7 +139,7 @@ fn grade_speaks_the_language_but_csv_and_json_do_not_change() {
         run.stdout
     );
     assert!(run.stdout.contains("| z-буфер | 20 | 17 | 2 из 5   | 10    | 11 (2×)"), "{}", run.stdout);
-    let bo = std::fs::read_to_string(feedback.join("bo.txt")).unwrap();
+    let bo = std::fs::read_to_string(feedback.join("bo.feedback.txt")).unwrap();
     assert!(
         bo.starts_with("bo: examples/rogers.json, после многоугольника 2 «triangle»: 99,9 %, с ошибками\n"),
         "{bo}"

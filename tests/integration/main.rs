@@ -25,6 +25,7 @@ mod run_command;
 mod stability;
 mod teaching;
 mod threads;
+mod untrusted;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

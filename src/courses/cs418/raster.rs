@@ -175,18 +175,27 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             Command::PointSize(numbers) => self.sizes = numbers.iter().map(S::number).collect(),
             Command::Matrix(numbers) => self.matrix = Some(numbers.iter().map(S::number).collect()),
             Command::DrawArrays { first, count } => {
+                // Every index must name a vertex: checked before any is collected, so that a
+                // huge count (or one that wraps past 2^64) is refused, not allocated.
+                let positions = self.positions.len();
+                if first.checked_add(*count).is_none_or(|end| end > positions) {
+                    let index = (*first).max(positions);
+                    let has = positions.to_string();
+                    return Err(error(line, words!("cs418-vertex-index", index = index.to_string(), count = has)));
+                }
                 let indices: Vec<usize> = (*first..first + count).collect();
                 self.triangles(line, &indices)?;
             }
             Command::DrawElements { count, offset } => {
-                let Some(indices) = self.elements.get(*offset..offset + count).map(<[usize]>::to_vec) else {
+                let range = offset.checked_add(*count).map(|end| *offset..end);
+                let Some(indices) = range.and_then(|range| self.elements.get(range)).map(<[usize]>::to_vec) else {
                     return Err(error(
                         line,
                         words!(
                             "cs418-elements-range",
                             count = count.to_string(),
                             offset = offset.to_string(),
-                            last = (offset + count - 1).to_string(),
+                            last = offset.saturating_add(*count).saturating_sub(1).to_string(),
                             has = self.elements.len().to_string()
                         ),
                     ));
@@ -194,7 +203,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 self.triangles(line, &indices)?;
             }
             Command::DrawPoints { first, count } => {
-                for index in *first..first + count {
+                for index in *first..first.saturating_add(*count) {
                     let size = self.sizes.get(index).cloned().ok_or_else(|| {
                         error(
                             line,

@@ -1,0 +1,305 @@
+//! A class folder, a student's file or a colleague's scene is untrusted
+//! input: each test is named for a hole found when zsim was tried as an
+//! attacker or a careless user would, and checks that it stays closed.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+use crate::{book_answer, zsim, zsim_in};
+
+/// An empty scratch folder of its own.
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("untrusted").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn path(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// A class folder with one right answer (ana) and whatever `add` puts in it.
+fn class(name: &str, add: impl FnOnce(&Path)) -> PathBuf {
+    let dir = scratch(name);
+    std::fs::write(dir.join("ana.frame.txt"), book_answer("frame", " ")).unwrap();
+    add(&dir);
+    dir
+}
+
+/// A secret no student was given: its first token must never reach any output.
+const SECRET: &str = "root:$6$secret-hash:19000:0:99999:7:::\n";
+
+/// A student's `eve.frame.txt` linking to a file the grader can read put
+/// that file's first token into the table, the CSV, the JSON and the feedback.
+#[test]
+fn grade_does_not_follow_a_symbolic_link_in_the_class_folder() {
+    let secret = scratch("secret").join("shadow");
+    std::fs::write(&secret, SECRET).unwrap();
+    let class = class("linked", |dir| std::os::unix::fs::symlink(&secret, dir.join("eve.frame.txt")).unwrap());
+    let feedback = scratch("linked-feedback").join("out");
+    for format in ["text", "csv", "json"] {
+        let run = zsim(&["grade", "examples/rogers.json", path(&class), "--format", format, "-o", path(&feedback)]);
+        assert_eq!(run.code, 1, "{}", run.stderr);
+        assert!(!run.stdout.contains("root") && !run.stderr.contains("root"), "{format}: {}", run.stdout);
+        assert!(run.stdout.contains("symbolic link"), "{format}: {}", run.stdout);
+        let eve = std::fs::read_to_string(feedback.join("eve.feedback.txt")).unwrap();
+        assert!(eve.contains("symbolic link") && !eve.contains("root"), "{eve}");
+        std::fs::remove_dir_all(&feedback).unwrap();
+    }
+}
+
+/// One FIFO named `x.frame.txt` in a class folder hung `grade` for the whole
+/// class; a FIFO as a scene hung `run`.
+#[test]
+fn a_fifo_is_refused_without_waiting_for_a_writer() {
+    let class = class("fifo", |dir| {
+        let made = Command::new("mkfifo").arg(dir.join("x.frame.txt")).status().unwrap();
+        assert!(made.success());
+    });
+    let start = Instant::now();
+    let run = zsim(&["grade", "examples/rogers.json", path(&class)]);
+    assert_eq!(run.code, 1, "{}", run.stderr);
+    assert!(run.stdout.contains("named pipe"), "{}", run.stdout);
+    let run = zsim(&["run", path(&class.join("x.frame.txt"))]);
+    assert_eq!(run.code, 2);
+    assert!(
+        run.stderr.ends_with(
+            "x.frame.txt: is not a regular file (it is a named pipe (FIFO)): zsim reads only regular files\n"
+        ),
+        "{}",
+        run.stderr
+    );
+    assert!(start.elapsed() < Duration::from_secs(30), "took {:?}", start.elapsed());
+}
+
+/// `/dev/zero` as a scene was read until memory ran out.
+#[test]
+fn a_device_is_refused_before_anything_is_read() {
+    let run = zsim(&["run", "/dev/zero"]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert_eq!(run.stderr, "zsim: /dev/zero: is not a regular file (it is a device): zsim reads only regular files\n");
+    let run = zsim(&["run", "examples"]);
+    assert!(
+        run.stderr.ends_with("examples: is not a regular file (it is a folder): zsim reads only regular files\n"),
+        "{}",
+        run.stderr
+    );
+}
+
+/// A 1 GiB sparse answer file aborted `check` and `grade` ("memory
+/// allocation of 2147483716 bytes failed", exit 134).
+#[test]
+fn a_huge_answer_is_refused_by_its_size_before_it_is_read() {
+    let class = class("huge", |dir| {
+        let file = std::fs::File::create(dir.join("zed.frame.txt")).unwrap();
+        file.set_len((1 << 30) + 1).unwrap();
+    });
+    let huge = class.join("zed.frame.txt");
+    let start = Instant::now();
+    let run = zsim(&["check", "examples/rogers.json", "--frame", path(&huge)]);
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.ends_with("zed.frame.txt: is larger than zsim reads (1024 MiB)\n"), "{}", run.stderr);
+    let run = zsim(&["grade", "examples/rogers.json", path(&class)]);
+    assert_eq!(run.code, 1, "{}", run.stderr);
+    assert!(run.stdout.contains("is larger than zsim reads"), "{}", run.stdout);
+    assert!(start.elapsed() < Duration::from_secs(30), "took {:?}", start.elapsed());
+}
+
+/// A student named `common-mistakes` lost their feedback to the class
+/// summary; with `-o` the class folder, `bob.frame`'s feedback overwrote
+/// bob's submitted `bob.frame.txt`; `-o` replaced files already there.
+#[test]
+fn feedback_overwrites_no_submission_no_summary_and_no_file_already_there() {
+    let answer = book_answer("frame", " ");
+    let class = class("collide", |dir| {
+        for student in ["common-mistakes", "bob", "bob.frame"] {
+            std::fs::write(dir.join(format!("{student}.frame.txt")), &answer).unwrap();
+        }
+    });
+    let submitted = std::fs::read_to_string(class.join("bob.frame.txt")).unwrap();
+    let run = zsim(&["grade", "examples/rogers.json", path(&class), "-o", path(&class)]);
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.contains("is one of the inputs zsim reads"), "{}", run.stderr);
+    assert_eq!(std::fs::read_to_string(class.join("bob.frame.txt")).unwrap(), submitted);
+    assert_eq!(std::fs::read_dir(&class).unwrap().count(), 4, "nothing was written into the class folder");
+    let out = scratch("collide-out").join("feedback");
+    let run = zsim(&["grade", "examples/rogers.json", path(&class), "-o", path(&out)]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let mut written: Vec<String> =
+        std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    written.sort();
+    assert_eq!(
+        written,
+        [
+            "ana.feedback.txt",
+            "bob.feedback.txt",
+            "bob.frame.feedback.txt",
+            "common-mistakes.feedback.txt",
+            "common-mistakes.txt"
+        ]
+    );
+    let summary = std::fs::read_to_string(out.join("common-mistakes.txt")).unwrap();
+    let again = zsim(&["grade", "examples/rogers.json", path(&class), "-o", path(&out)]);
+    assert_eq!(again.code, 2);
+    assert!(again.stderr.contains("already holds ana.feedback.txt, bob.feedback.txt"), "{}", again.stderr);
+    assert!(again.stderr.ends_with("zsim replaces no file; choose a new or empty folder\n"), "{}", again.stderr);
+    assert_eq!(std::fs::read_to_string(out.join("common-mistakes.txt")).unwrap(), summary);
+    // `exercise -o` replaces nothing either.
+    let exercise = scratch("exercise-twice");
+    let first = zsim(&["exercise", "--seed", "3", "-o", path(&exercise)]);
+    assert_eq!(first.code, 0, "{}", first.stderr);
+    let scene = std::fs::read_to_string(exercise.join("scene.json")).unwrap();
+    let second = zsim(&["exercise", "--seed", "4", "-o", path(&exercise)]);
+    assert_eq!(second.code, 2);
+    assert!(second.stderr.contains("already holds scene.json"), "{}", second.stderr);
+    assert_eq!(std::fs::read_to_string(exercise.join("scene.json")).unwrap(), scene);
+}
+
+/// Student names starting with `=`, `+`, `-` or `@` reached the CSV as cells a
+/// spreadsheet runs as formulas (quoting does not stop it).
+#[test]
+fn csv_cells_that_a_spreadsheet_would_run_stay_text() {
+    let answer = book_answer("frame", " ");
+    let class = class("formulas", |dir| {
+        for student in ["=HYPERLINK(\"x\")", "+1", "-2", "@SUM(A1)"] {
+            std::fs::write(dir.join(format!("{student}.frame.txt")), &answer).unwrap();
+        }
+    });
+    let run = zsim(&["grade", "examples/rogers.json", path(&class), "--format", "csv"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let students: Vec<&str> = run.stdout.lines().skip(1).map(|l| l.split(',').next().unwrap()).collect();
+    assert_eq!(students, ["'+1", "'-2", "\"'=HYPERLINK(\"\"x\"\")\"", "'@SUM(A1)", "ana"]);
+}
+
+/// A polygon named `<!--<script>` stopped the page's script (the stepper
+/// stayed blank): the embedded data escaped `</` but not `<!--`.
+#[test]
+fn no_name_can_change_the_page_it_is_embedded_in() {
+    let dir = scratch("page");
+    let name = "</script><!--<script>&amp;{{TITLE}}";
+    let scene = format!(
+        r#"{{"width": 8, "height": 8, "polygons": [{{"name": {}, "value": 1, "vertices": [[1, 1, 5], [7, 1, 5], [1, 7, 5]]}}]}}"#,
+        serde_json::to_string(name).unwrap()
+    );
+    std::fs::write(dir.join("scene.json"), scene).unwrap();
+    let run = zsim_in(Some(&dir), &["step", "scene.json", "--html", "-o", "page.html"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let html = std::fs::read_to_string(dir.join("page.html")).unwrap();
+    let data = html.split(r#"<script type="application/json" id="data">"#).nth(1).unwrap();
+    let data = data.split("</script>").next().unwrap();
+    assert!(!data.contains(['<', '>', '&']), "markup inside the data: {data}");
+    let parsed: serde_json::Value = serde_json::from_str(data).unwrap();
+    assert!(
+        parsed.to_string().contains(&serde_json::to_string(name).unwrap()[1..name.len()]),
+        "the name reads the same"
+    );
+    assert_eq!(html.matches("<script").count(), 3, "only the page's own scripts");
+}
+
+/// `figure` wrote invalid XML for names or titles holding characters XML
+/// forbids, and echoed a raw ESC to the terminal.
+#[test]
+fn a_figure_holds_only_what_xml_allows_and_the_terminal_gets_no_escape() {
+    let dir = scratch("figure");
+    let scene = r#"{"width": 8, "height": 8, "polygons": [{"name": "bell\u0007 \uffff", "value": 1, "vertices": [[1, 1, 5], [7, 1, 5], [1, 7, 5]]}]}"#;
+    std::fs::write(dir.join("scene.json"), scene).unwrap();
+    let run = zsim_in(Some(&dir), &["figure", "scene.json", "-o", "f.svg", "--title", "esc\u{1b}[31m \u{fffe}"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert!(!run.stdout.contains('\u{1b}'), "{:?}", run.stdout);
+    let svg = std::fs::read_to_string(dir.join("f.svg")).unwrap();
+    roxmltree::Document::parse(&svg).expect("valid XML");
+    let run = zsim_in(Some(&dir), &["figure", "scene.json", "-o", "scene.json"]);
+    assert_eq!(run.code, 2, "never written over the scene it reads");
+}
+
+/// `--tile 0` was accepted.
+#[test]
+fn a_tile_of_zero_pixels_is_refused() {
+    let run = zsim(&["run", "examples/rogers.json", "--format", "none", "--tile", "0"]);
+    assert_eq!(run.code, 2);
+    assert_eq!(run.stderr, "zsim: --tile takes 1 or more pixels (0 would draw nothing)\n");
+}
+
+/// `zsim run SCENE >&-` exited 0 and the output was silently lost.
+#[test]
+fn a_closed_standard_output_is_an_error() {
+    let command = format!("exec '{}' run examples/rogers.json >&-", env!("CARGO_BIN_EXE_zsim"));
+    let output = Command::new("sh")
+        .arg("-c")
+        .arg(command)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("LANG", "C.UTF-8")
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert_eq!(String::from_utf8_lossy(&output.stderr), "zsim: cannot write the output: standard output is closed\n");
+    let to_null = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(["run", "examples/rogers.json"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(std::process::Stdio::null())
+        .status()
+        .unwrap();
+    assert_eq!(to_null.code(), Some(0), "> /dev/null is a wanted sink");
+}
+
+/// CS 418: `drawArraysTriangles 18446744073709551613 3` was accepted and drew
+/// nothing (first + count wrapped); it is refused as `drawArraysTriangles 5 3` is.
+#[test]
+fn cs418_draw_ranges_that_wrap_are_refused_like_ranges_past_the_end() {
+    let dir = scratch("cs418-wrap");
+    let case = |draw: &str| {
+        let text = format!("png 4 4 out.png\nposition 2 0 0 1 0 0 1\ncolor 3 1 1 1 1 1 1 1 1 1\n{draw}\n");
+        std::fs::write(dir.join("case.txt"), text).unwrap();
+        zsim_in(Some(&dir), &["cs418", "import", "case.txt"])
+    };
+    let past = case("drawArraysTriangles 5 3");
+    assert_eq!(past.code, 2);
+    assert!(past.stderr.ends_with("line 4: vertex 5 is read, but \"position\" has 3 vertices\n"), "{}", past.stderr);
+    let wrapping = case("drawArraysTriangles 18446744073709551613 3");
+    assert_eq!(wrapping.code, 2);
+    assert!(
+        wrapping.stderr.ends_with("line 4: vertex 18446744073709551613 is read, but \"position\" has 3 vertices\n"),
+        "{}",
+        wrapping.stderr
+    );
+    let huge = case("drawArraysTriangles 0 300000000000");
+    assert_eq!(huge.code, 2, "refused before 3·10^11 indices are collected");
+}
+
+/// BUET: an eye equal to the look point, fovY 0 or a rotation about the axis
+/// 0 0 0 was reported as `line 1: "NaN" is not a number`.
+#[test]
+fn buet_cameras_and_rotations_that_cannot_be_built_are_named_at_their_line() {
+    let dir = scratch("buet-nan");
+    let config = "8 8\n";
+    let case = |scene: &str| {
+        std::fs::write(dir.join("config.txt"), config).unwrap();
+        std::fs::write(dir.join("scene.txt"), scene).unwrap();
+        zsim_in(Some(&dir), &["buet", "run", ".", "-o", "out"])
+    };
+    let triangle = "triangle\n0 0 -5\n1 0 -5\n0 1 -5\nend\n";
+    let cases = [
+        (
+            "0 0 5\n0 0 5\n0 1 0\n80 1 1 100\n",
+            "line 2: the look-at point is the eye position: the view has no direction",
+        ),
+        ("0 0 5\n0 0 0\n0 0 1\n80 1 1 100\n", "line 3: the up direction is zero or lies along the view direction"),
+        ("0 0 5\n0 0 0\n0 1 0\n0 1 1 100\n", "line 4: fovY and fovY·aspect must lie between 0 and 180 degrees"),
+        (
+            "0 0 5\n0 0 0\n0 1 0\n80 1 1 100\nrotate\n30 0 0 0\n",
+            "line 6: a rotation about the axis 0 0 0 has no direction",
+        ),
+        (
+            "0 0 5\n0 0 0\n0 1 0\nNaN 1 1 100\n",
+            "line 4: expected fovY aspect near far (4 numbers), found \"NaN 1 1 100\"",
+        ),
+    ];
+    for (camera, expected) in cases {
+        let run = case(&format!("{camera}{triangle}"));
+        assert_eq!(run.code, 2, "{camera}");
+        assert!(run.stderr.contains(expected), "{camera}: {}", run.stderr);
+        assert!(!run.stderr.contains("NaN\" is not a number"), "{}", run.stderr);
+    }
+}
