@@ -140,4 +140,6 @@ pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, Sc
 pub use simulate::simulation::{Simulation, Stats, fate};
 pub use simulate::stages::{StageSet, describe};
 pub use teach::{exercise, grade};
-pub use words::{Arg, Lang, language, localize_decimal, polygon_label, set_language, text as message, with_language};
+pub use words::{
+    Arg, Lang, language, localize_decimal, polygon_label, set_language, text as message, token, with_language,
+};

@@ -135,7 +135,7 @@ fn parse_answer(path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
                         "buet-answer-not-a-number",
                         line = (i + 1).to_string(),
                         value = (k + 1).to_string(),
-                        text = value.as_str()
+                        text = zsim::token(value.as_str())
                     ),
                 });
             }

@@ -74,7 +74,10 @@ impl Config {
         };
         let size = |line: usize, word: &str| -> Result<u32, CaseError> {
             word.parse::<u32>().ok().filter(|v| (1..=crate::scene::MAX_SIDE as u32).contains(v)).ok_or_else(|| {
-                case_error(Some(line), words!("buet-size", word = word, max = crate::scene::MAX_SIDE.to_string()))
+                case_error(
+                    Some(line),
+                    words!("buet-size", word = crate::words::token(word), max = crate::scene::MAX_SIDE.to_string()),
+                )
             })
         };
         let Some((first_line, first)) = lines.first() else {
@@ -244,7 +247,12 @@ impl<'a> Lines<'a> {
             Ok(values) if values.len() == count && values.iter().all(|v| v.is_finite()) => Ok(values),
             _ => Err(case_error(
                 Some(line),
-                words!("buet-numbers", what = words!(what), count = count.to_string(), found = text),
+                words!(
+                    "buet-numbers",
+                    what = words!(what),
+                    count = count.to_string(),
+                    found = crate::words::token(text)
+                ),
             )),
         }
     }
@@ -319,7 +327,12 @@ impl CaseScene {
                 "push" => stack.push(model),
                 "pop" => model = stack.pop().ok_or_else(|| case_error(Some(line), words!("buet-pop")))?,
                 "end" => break,
-                other => return Err(case_error(Some(line), words!("case-unknown-command", command = other))),
+                other => {
+                    return Err(case_error(
+                        Some(line),
+                        words!("case-unknown-command", command = crate::words::token(other)),
+                    ));
+                }
             }
         }
         Ok(CaseScene { eye, look, up, perspective, stage1 })
@@ -386,7 +399,10 @@ pub fn parse_stage(text: &str) -> Result<Vec<[[String; 3]; 3]>, CaseError> {
             continue;
         }
         let [x, y, z] = words.as_slice() else {
-            return Err(case_error(Some(i + 1), words!("buet-three-coordinates", found = line.trim())));
+            return Err(case_error(
+                Some(i + 1),
+                words!("buet-three-coordinates", found = crate::words::token(line.trim())),
+            ));
         };
         for word in [x, y, z] {
             parse_number(word).map_err(|e| case_error(Some(i + 1), e.to_string()))?;

@@ -8,6 +8,7 @@ use num_rational::BigRational;
 use num_traits::Zero;
 
 use super::*;
+use crate::words::token;
 
 /// Why a piece of text is not a number zsim accepts.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -26,11 +27,11 @@ pub enum NumberError {
 impl fmt::Display for NumberError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            NumberError::NotANumber(text) => f.write_str(&words!("number-not-a-number", text = text)),
-            NumberError::ZeroDenominator(text) => f.write_str(&words!("number-zero-denominator", text = text)),
-            NumberError::TooLarge(text) => f.write_str(&words!("number-too-large", text = text)),
+            NumberError::NotANumber(text) => f.write_str(&words!("number-not-a-number", text = token(text))),
+            NumberError::ZeroDenominator(text) => f.write_str(&words!("number-zero-denominator", text = token(text))),
+            NumberError::TooLarge(text) => f.write_str(&words!("number-too-large", text = token(text))),
             NumberError::TooLong(text) => {
-                f.write_str(&words!("number-too-long", text = text, max = MAX_BIG_DIGITS.to_string()))
+                f.write_str(&words!("number-too-long", text = token(text), max = MAX_BIG_DIGITS.to_string()))
             }
         }
     }

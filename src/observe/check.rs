@@ -32,24 +32,33 @@ pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -
         let cells: Vec<&str> = line.split([' ', '\t', ',']).filter(|cell| !cell.is_empty()).collect();
         let mut row = Vec::with_capacity(cells.len());
         for (column, cell) in cells.iter().enumerate() {
-            let (line, place) = (line_number.to_string(), (column + 1).to_string());
-            let at = match y {
-                Some(y) if column < width as usize => {
-                    words!("answer-at-cell", line = &line, column = &place, x = column.to_string(), y = y.to_string())
+            // Where the cell is, worded only when it is wrong (not once per cell).
+            let at = || {
+                let (line, place) = (line_number.to_string(), (column + 1).to_string());
+                match y {
+                    Some(y) if column < width as usize => {
+                        words!("answer-at-cell", line = line, column = place, x = column.to_string(), y = y.to_string())
+                    }
+                    _ => words!("answer-at", line = line, column = place),
                 }
-                _ => words!("answer-at", line = &line, column = &place),
             };
-            let max = range.max.to_string();
+            let max = || range.max.to_string();
             let value: u64 = cell.parse().map_err(|_| {
-                words!("answer-not-a-number", at = &at, cell = *cell, buffer = range.buffer, max = &max)
+                words!(
+                    "answer-not-a-number",
+                    at = at(),
+                    cell = crate::words::token(cell),
+                    buffer = range.buffer,
+                    max = max()
+                )
             })?;
             if value > u64::from(range.max) {
                 return Err(words!(
                     "answer-too-large",
-                    at = &at,
+                    at = at(),
                     value = value.to_string(),
                     buffer = range.buffer,
-                    max = &max
+                    max = max()
                 ));
             }
             row.push(value as u32);

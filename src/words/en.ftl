@@ -690,3 +690,4 @@ buet-look-at-eye = the look-at point is the eye position: the view has no direct
 buet-up-along-view = the up direction is zero or lies along the view direction: the camera has no orientation
 buet-perspective = fovY and fovY·aspect must lie between 0 and 180 degrees, aspect and near be positive, and far differ from near
 buet-rotation-axis = a rotation about the axis 0 0 0 has no direction
+token-cut = { $shown }… ({ $count } characters)

@@ -208,6 +208,21 @@ macro_rules! words {
     };
 }
 
+/// How many characters of a token from a file a message quotes.
+const TOKEN_SHOWN: usize = 32;
+
+/// A token from an input file as a message quotes it: whole when short, else
+/// its first characters, `…` and its length, so that no message repeats more
+/// of a file than the token that failed (a 3 MB token prints 3 MB otherwise).
+pub fn token(text: &str) -> String {
+    let count = text.chars().count();
+    if count <= TOKEN_SHOWN + 8 {
+        return text.to_string();
+    }
+    let shown: String = text.chars().take(TOKEN_SHOWN).collect();
+    words!("token-cut", shown = shown, count = count.to_string())
+}
+
 /// A decimal written with a point, in this thread's language's convention.
 pub fn localize_decimal(text: String) -> String {
     match language().decimal_separator() {

@@ -672,3 +672,4 @@ buet-look-at-eye = точка, куди дивляться, збігається
 buet-up-along-view = напрямок угору нульовий або лежить уздовж напрямку погляду: камера не має орієнтації
 buet-perspective = fovY і fovY·aspect мають лежати між 0 і 180 градусами, aspect і near бути додатними, а far відрізнятися від near
 buet-rotation-axis = поворот навколо осі 0 0 0 не має напрямку
+token-cut = { $shown }… ({ $count } символів)

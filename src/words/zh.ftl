@@ -651,3 +651,4 @@ buet-look-at-eye = 注视点与眼睛位置相同：视线没有方向
 buet-up-along-view = 向上方向为零或与视线方向共线：相机没有朝向
 buet-perspective = fovY 和 fovY·aspect 须在 0 到 180 度之间，aspect 和 near 须为正，far 须不同于 near
 buet-rotation-axis = 绕轴 0 0 0 的旋转没有方向
+token-cut = { $shown }…（{ $count } 个字符）

@@ -303,3 +303,26 @@ fn buet_cameras_and_rotations_that_cannot_be_built_are_named_at_their_line() {
         assert!(!run.stderr.contains("NaN\" is not a number"), "{}", run.stderr);
     }
 }
+
+/// An error quoting a 3 MB token printed 3 MB: a message quotes a token's
+/// first characters and its length, whatever the file (scene, answer, course).
+#[test]
+fn an_error_quotes_a_long_token_cut_short() {
+    let dir = scratch("token");
+    let long = "7".repeat(3_000_000) + "x";
+    let scene = format!(
+        r#"{{"width": 4, "height": 4, "polygons": [{{"value": 1, "vertices": [[0, 0, "{long}"], [1, 0, 0], [0, 1, 0]]}}]}}"#
+    );
+    std::fs::write(dir.join("scene.json"), scene).unwrap();
+    let run = zsim_in(Some(&dir), &["run", "scene.json"]);
+    assert_eq!(run.code, 2);
+    let cut = format!("\"{}… (3000001 characters)\" is not a number", "7".repeat(32));
+    assert!(run.stderr.contains(&cut), "{}", &run.stderr[..run.stderr.len().min(300)]);
+    assert!(run.stderr.len() < 400, "{} bytes", run.stderr.len());
+    let answer = format!("{long} 0 0 0\n");
+    std::fs::write(dir.join("answer.txt"), answer).unwrap();
+    let run = zsim(&["check", "examples/rogers.json", "--frame", path(&dir.join("answer.txt"))]);
+    assert_eq!(run.code, 2, "{}", &run.stderr[..run.stderr.len().min(300)]);
+    assert!(run.stderr.len() < 500, "{} bytes", run.stderr.len());
+    assert!(run.stderr.contains("… (3000001 characters)"), "{}", &run.stderr[..run.stderr.len().min(300)]);
+}

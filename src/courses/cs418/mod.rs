@@ -203,14 +203,21 @@ impl Case {
                 continue;
             }
             let Some(case) = case.as_mut() else {
-                return Err(error(line, words!("cs418-before-png", keyword = keyword)));
+                return Err(error(line, words!("cs418-before-png", keyword = crate::words::token(keyword))));
             };
             let flag = |on: &mut bool| {
                 if args.is_empty() {
                     *on = true;
                     Ok(())
                 } else {
-                    Err(error(line, words!("cs418-flag-numbers", keyword = keyword, found = args.len().to_string())))
+                    Err(error(
+                        line,
+                        words!(
+                            "cs418-flag-numbers",
+                            keyword = crate::words::token(keyword),
+                            found = args.len().to_string()
+                        ),
+                    ))
                 }
             };
             match keyword {
@@ -238,7 +245,12 @@ impl Case {
                     if !allowed.contains(&size) {
                         return Err(error(
                             line,
-                            words!("cs418-size", keyword = keyword, size = size.to_string(), allowed = list(allowed)),
+                            words!(
+                                "cs418-size",
+                                keyword = crate::words::token(keyword),
+                                size = size.to_string(),
+                                allowed = list(allowed)
+                            ),
                         ));
                     }
                     case.commands.push((
@@ -254,7 +266,10 @@ impl Case {
                 "elements" => {
                     let indices = args
                         .iter()
-                        .map(|w| w.parse::<usize>().map_err(|_| error(line, words!("cs418-not-an-index", word = *w))))
+                        .map(|w| {
+                            w.parse::<usize>()
+                                .map_err(|_| error(line, words!("cs418-not-an-index", word = crate::words::token(w))))
+                        })
                         .collect::<Result<Vec<_>, _>>()?;
                     case.commands.push((line, Command::Elements(indices)));
                 }
@@ -275,7 +290,10 @@ impl Case {
                     if let Command::DrawArrays { count, .. } | Command::DrawElements { count, .. } = command
                         && count % 3 != 0
                     {
-                        return Err(error(line, words!("cs418-count", keyword = keyword, count = count.to_string())));
+                        return Err(error(
+                            line,
+                            words!("cs418-count", keyword = crate::words::token(keyword), count = count.to_string()),
+                        ));
                     }
                     case.commands.push((line, command));
                 }
@@ -295,7 +313,7 @@ impl Case {
                     };
                     case.commands.push((line, Command::Texture(index)));
                 }
-                _ => return Err(error(line, words!("case-unknown-command", command = keyword))),
+                _ => return Err(error(line, words!("case-unknown-command", command = crate::words::token(keyword)))),
             }
         }
         case.ok_or_else(|| CaseError { line: None, message: words!("cs418-no-png") })
@@ -307,14 +325,16 @@ fn png_line(line: usize, args: &[&str]) -> Result<Case, CaseError> {
         return Err(error(line, words!("cs418-png-words", found = args.len().to_string())));
     };
     let side = |word: &str, what: &str| {
-        word.parse::<u32>()
-            .ok()
-            .filter(|v| (1..=MAX_SIDE).contains(v))
-            .ok_or_else(|| error(line, words!("cs418-png-side", what = what, word = word, max = MAX_SIDE.to_string())))
+        word.parse::<u32>().ok().filter(|v| (1..=MAX_SIDE).contains(v)).ok_or_else(|| {
+            error(
+                line,
+                words!("cs418-png-side", what = what, word = crate::words::token(word), max = MAX_SIDE.to_string()),
+            )
+        })
     };
     let (width, height) = (side(width, &words!("cs418-width"))?, side(height, &words!("cs418-height"))?);
     if file.contains(['/', '\\']) || *file == ".." || *file == "." {
-        return Err(error(line, words!("cs418-png-file", file = *file)));
+        return Err(error(line, words!("cs418-png-file", file = crate::words::token(file))));
     }
     Ok(Case {
         width,
@@ -338,10 +358,14 @@ fn number(line: usize, keyword: &str, word: &str) -> Result<Number, CaseError> {
     let finite = word.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.' | b'e' | b'E'));
     match (word.parse::<f64>(), crate::numbers::parse_number(word)) {
         (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(Number { value, exact }),
-        (Ok(value), Err(problem)) if finite && value.is_finite() => {
-            Err(error(line, words!("case-keyword-problem", keyword = keyword, problem = problem.to_string())))
-        }
-        _ => Err(error(line, words!("cs418-not-a-number", keyword = keyword, word = word))),
+        (Ok(value), Err(problem)) if finite && value.is_finite() => Err(error(
+            line,
+            words!("case-keyword-problem", keyword = crate::words::token(keyword), problem = problem.to_string()),
+        )),
+        _ => Err(error(
+            line,
+            words!("cs418-not-a-number", keyword = crate::words::token(keyword), word = crate::words::token(word)),
+        )),
     }
 }
 
@@ -349,26 +373,34 @@ fn integers<const N: usize>(line: usize, keyword: &str, args: &[&str]) -> Result
     if args.len() != N {
         return Err(error(
             line,
-            words!("cs418-integers", keyword = keyword, count = N, found = args.len().to_string()),
+            words!("cs418-integers", keyword = crate::words::token(keyword), count = N, found = args.len().to_string()),
         ));
     }
     let mut out = [0; N];
     for (slot, word) in out.iter_mut().zip(args) {
-        *slot = word
-            .parse::<usize>()
-            .map_err(|_| error(line, words!("cs418-not-a-whole-number", keyword = keyword, word = *word)))?;
+        *slot = word.parse::<usize>().map_err(|_| {
+            error(
+                line,
+                words!(
+                    "cs418-not-a-whole-number",
+                    keyword = crate::words::token(keyword),
+                    word = crate::words::token(word)
+                ),
+            )
+        })?;
     }
     Ok(out)
 }
 
 fn sized(line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<Number>), CaseError> {
     let Some((size, rest)) = args.split_first() else {
-        return Err(error(line, words!("cs418-sized", keyword = keyword)));
+        return Err(error(line, words!("cs418-sized", keyword = crate::words::token(keyword))));
     };
-    let size: usize =
-        size.parse().map_err(|_| error(line, words!("cs418-size-word", keyword = keyword, size = *size)))?;
+    let size: usize = size.parse().map_err(|_| {
+        error(line, words!("cs418-size-word", keyword = crate::words::token(keyword), size = crate::words::token(size)))
+    })?;
     if size == 0 {
-        return Err(error(line, words!("cs418-size-zero", keyword = keyword)));
+        return Err(error(line, words!("cs418-size-zero", keyword = crate::words::token(keyword))));
     }
     let numbers = rest.iter().map(|w| number(line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
     if numbers.len() % size != 0 {
@@ -376,7 +408,7 @@ fn sized(line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<Number
             line,
             words!(
                 "cs418-vertices",
-                keyword = keyword,
+                keyword = crate::words::token(keyword),
                 size = size.to_string(),
                 numbers = numbers.len().to_string(),
                 whole = (numbers.len() / size).to_string(),
