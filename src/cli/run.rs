@@ -162,8 +162,8 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             }
         }
         Format::Json => {
-            // The same object as `RunJson`, written one step at a time so that memory stays
-            // bounded by one step and a closed pipe stops the run early.
+            // The same object as `RunJson`, written one row at a time so that memory stays
+            // near the buffers' own and a closed pipe stops the run early.
             let empty =
                 RunJson { width: scene.width, height: scene.height, effects: scene.effects.names(), steps: Vec::new() };
             let head = serde_json::to_string(&empty).expect("serializing plain data cannot fail");
@@ -174,13 +174,10 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 if final_only && index + 1 != scene.polygons.len() {
                     continue;
                 }
-                let step = StepJson {
-                    polygon: scene.polygons[index].name.clone(),
-                    frame: simulation.buffers().frame_rows(),
-                    depth: simulation.buffers().depth_rows(),
-                };
-                let text = serde_json::to_string(&step).expect("serializing plain data cannot fail");
-                emit(out, &format!("{}{text}", if first { "" } else { "," }))?;
+                if !first {
+                    emit(out, ",")?;
+                }
+                report::write_step_json(out, &scene.polygons[index].name, simulation.buffers())?;
                 first = false;
             }
             emit(out, "]}\n")?;
