@@ -161,8 +161,10 @@ fn submissions(
                         None => Handed::Missing,
                         Some((_, _, path)) => match read_answer(path, scene, *buffer, zsim::Links::Refuse) {
                             Ok(matrix) => Handed::Matrix(matrix),
-                            Err(Error::Answer { message, .. }) => Handed::Malformed(message),
-                            Err(other) => Handed::Malformed(other.to_string()),
+                            // A message may carry the file's name, which is anyone's text:
+                            // escaped, so no control character reaches a table or terminal.
+                            Err(Error::Answer { message, .. }) => Handed::Malformed(printable(&message).into_owned()),
+                            Err(other) => Handed::Malformed(printable(&other.to_string()).into_owned()),
                         },
                     };
                     (*buffer, handed)

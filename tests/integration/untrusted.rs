@@ -326,3 +326,135 @@ fn an_error_quotes_a_long_token_cut_short() {
     assert!(run.stderr.len() < 500, "{} bytes", run.stderr.len());
     assert!(run.stderr.contains("… (3000001 characters)"), "{}", &run.stderr[..run.stderr.len().min(300)]);
 }
+
+mod any_input {
+    //! The next such hole found by the suite, not by a user: random names in
+    //! the page and the figure, random class folders for `grade`.
+
+    use proptest::prelude::*;
+    use zsim::figure::{Extras, Shading, svg_with};
+    use zsim::{Scene, Simulation, Unobserved};
+
+    use super::{SECRET, book_answer, path, scratch};
+    use crate::{zsim, zsim_in};
+
+    /// Any text at all: control characters, XML's forbidden U+FFFE, markup,
+    /// template places and quotes among ordinary letters.
+    fn any_text() -> impl Strategy<Value = String> {
+        let pieces = prop::sample::select(vec![
+            "<",
+            ">",
+            "&",
+            "\"",
+            "'",
+            "</script>",
+            "<!--",
+            "-->",
+            "{{TITLE}}",
+            "{{DATA}}",
+            "\u{1b}[31m",
+            "\u{7}",
+            "\u{0}",
+            "\u{fffe}",
+            "\u{ffff}",
+            "\u{2028}",
+            "\\",
+            "треугольник",
+            "三角形",
+            "a",
+            " ",
+        ]);
+        prop::collection::vec(prop_oneof![pieces.prop_map(str::to_string), any::<char>().prop_map(String::from)], 0..12)
+            .prop_map(|parts| parts.concat())
+    }
+
+    fn scene_named(name: &str) -> String {
+        let name = serde_json::to_string(name).unwrap();
+        format!(
+            r#"{{"width": 8, "height": 6, "polygons": [{{"name": {name}, "value": 1, "vertices": [[1, 1, 5], [7, 1, 5], [1, 5, 5]]}}]}}"#
+        )
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+        /// Whatever a polygon's name and the title, the figure is XML an XML
+        /// parser reads, with the name in it as written (bar what XML forbids).
+        #[test]
+        fn any_name_and_title_give_a_figure_an_xml_parser_reads(name in any_text(), title in any_text()) {
+            let scene = Scene::from_json(&scene_named(&name), std::path::Path::new("any.json")).unwrap();
+            let mut simulation = Simulation::new(&scene);
+            simulation.finish(&mut Unobserved);
+            let extras = Extras { vertex_labels: true, caption: vec![title.clone()], values: true };
+            let svg = svg_with(&scene, simulation.buffers(), 0, Shading::Frame, &title, &extras);
+            let parsed = roxmltree::Document::parse(&svg);
+            prop_assert!(parsed.is_ok(), "{:?}", parsed.err());
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 12, ..ProptestConfig::default() })]
+
+        /// Whatever the name, the page's data is one JSON object its own parse
+        /// reads, holding no markup, with the page's three scripts only.
+        #[test]
+        fn any_name_leaves_the_page_whole(name in any_text()) {
+            let dir = scratch("any-page");
+            std::fs::write(dir.join("scene.json"), scene_named(&name)).unwrap();
+            let run = zsim_in(Some(&dir), &["step", "scene.json", "--html", "-o", "page.html"]);
+            prop_assert_eq!(run.code, 0, "{}", run.stderr);
+            let html = std::fs::read_to_string(dir.join("page.html")).unwrap();
+            let data = html.split(r#"<script type="application/json" id="data">"#).nth(1).unwrap();
+            let data = data.split("</script>").next().unwrap();
+            prop_assert!(!data.contains(['<', '>', '&']));
+            prop_assert!(serde_json::from_str::<serde_json::Value>(data).is_ok());
+            prop_assert_eq!(html.matches("<script").count(), 3);
+        }
+
+        /// A class folder of random names and kinds (answers, links to a
+        /// secret, FIFOs, oversized files, folders, garbage) is graded in
+        /// seconds: every student gets a row, nothing of the secret leaks, the
+        /// CSV stays text, and `-o` writes only fresh files beside the class.
+        #[test]
+        fn any_class_folder_is_graded_without_leaking_or_losing_anything(
+            students in prop::collection::vec((any_text(), 0u8..6), 1..6)
+        ) {
+            let dir = scratch("any-class");
+            let class = dir.join("class");
+            std::fs::create_dir_all(&class).unwrap();
+            let secret = dir.join("secret");
+            std::fs::write(&secret, SECRET).unwrap();
+            let answer = book_answer("frame", " ");
+            for (index, (name, kind)) in students.iter().enumerate() {
+                // A file name cannot hold '/' or NUL; a leading '.' is passed over by grade.
+                let name: String = name.chars().filter(|c| *c != '/' && *c != '\0').take(40).collect();
+                let file = class.join(format!("s{index}{name}.frame.txt"));
+                match kind {
+                    0 => std::fs::write(&file, &answer).unwrap(),
+                    1 => std::os::unix::fs::symlink(&secret, &file).unwrap(),
+                    2 => assert!(std::process::Command::new("mkfifo").arg(&file).status().unwrap().success()),
+                    3 => std::fs::File::create(&file).unwrap().set_len((1 << 30) + 7).unwrap(),
+                    4 => std::fs::create_dir(&file).unwrap(),
+                    _ => std::fs::write(&file, "=1+1 garbage\u{1b}[31m ∞\n").unwrap(),
+                }
+            }
+            let before: Vec<_> = std::fs::read_dir(&class).unwrap().map(|e| e.unwrap().file_name()).collect();
+            let start = std::time::Instant::now();
+            let out = dir.join("feedback");
+            let csv = zsim(&["grade", "examples/rogers.json", path(&class), "--format", "csv", "-o", path(&out)]);
+            prop_assert!(csv.code == 0 || csv.code == 1, "{}", csv.stderr);
+            prop_assert!(start.elapsed() < std::time::Duration::from_secs(30));
+            prop_assert_eq!(csv.stdout.lines().count(), students.len() + 1, "{}", csv.stdout);
+            prop_assert!(!csv.stdout.contains("$6$secret"), "{}", csv.stdout);
+            for line in csv.stdout.lines().skip(1) {
+                prop_assert!(!line.starts_with(['=', '+', '-', '@', '\t', '\r']), "{}", line);
+            }
+            for entry in std::fs::read_dir(&out).unwrap() {
+                let text = std::fs::read_to_string(entry.unwrap().path()).unwrap();
+                prop_assert!(!text.contains("$6$secret"));
+            }
+            let after: Vec<_> = std::fs::read_dir(&class).unwrap().map(|e| e.unwrap().file_name()).collect();
+            prop_assert_eq!(before, after, "the class folder is left as it was");
+        }
+    }
+}
