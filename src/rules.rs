@@ -10,18 +10,22 @@
 //! | depth | quantized to depth_bits, rounded half up, saturated | stored exactly |
 //! | test | `greater` (or `less`) | `less`, buffer cleared to z_max, fragments outside [z_front, z_rear] discarded |
 //!
-//! The `gpu` preset is the book's with the top-left rule of Direct3D and
-//! OpenGL for coverage: rows `top-left` (`y_min < y ≤ y_max`) and columns
-//! `half-open` (`x_l ≤ x < x_r`). zsim's raster is y-up and drawn with row 0
-//! at the bottom, so its *top* edge is the one with the largest y: a centre
-//! exactly on a horizontal edge is covered when that edge is the polygon's
-//! top as drawn, and a centre on a slanted edge when the polygon lies to its
-//! right. This is the Direct3D 11 functional specification's rule (3.4.2.1:
-//! a top edge is exactly horizontal and above the other edges, a left edge is
-//! not horizontal and on the left side of the triangle; a centre on an edge
-//! is drawn only when the edge is top or left), with "above" meaning above
-//! on the screen. Shared edges are drawn once: a centre on the edge two
-//! polygons share belongs to exactly one of them (tests in `pipeline`).
+//! Two presets are the rules of GPU APIs, each named for the API whose
+//! picture it reproduces, each checked against a real implementation of it
+//! (Mesa's llvmpipe for OpenGL, `tests/integration/gpu.rs`). Both keep the
+//! book's depth; they differ in which edge a centre exactly on it belongs to.
+//!
+//! | preset | zsim's raster (y up, row 0 at the bottom) | the API's framebuffer |
+//! |---|---|---|
+//! | `gl` | rows `half-open` (`y_min ≤ y < y_max`), columns `half-open` (`x_l ≤ x < x_r`): a centre on a bottom or left edge is in, on a top or right edge out | OpenGL's lower-left origin is zsim's: the same words |
+//! | `vulkan` (also `d3d`, `webgpu`, and `gpu` as it was called) | rows `top-left` (`y_min < y ≤ y_max`), columns `half-open`: a centre on a top edge (largest y as drawn) or left edge is in | Vulkan, WebGPU and Direct3D count y down from the top: their top-left rule (Direct3D 11 functional specification 3.4.2.1) |
+//!
+//! OpenGL's rule is the mirror image in y of Direct3D's as the picture shows
+//! it: llvmpipe draws a centre on the picture's bottom edge and leaves out
+//! one on its top edge, and `glClipControl(GL_UPPER_LEFT)` flips the image
+//! but not the rule. Shared edges are drawn once under either: a centre on
+//! the edge two polygons share belongs to exactly one of them (tests in
+//! `raster::convert`).
 //!
 //! Pixel centres are at the middle of each cell in both.
 
@@ -85,10 +89,16 @@ pub enum Preset {
     Rogers,
     /// BUET CSE 410's "Offline 2: Rasterization".
     Buet,
-    /// The top-left rule of Direct3D and OpenGL, as displayed: centre
-    /// samples, rows [`RowRule::TopLeft`], columns [`ColumnRule::HalfOpen`];
-    /// depth as the book stores it.
-    Gpu,
+    /// OpenGL's picture (measured on Mesa's llvmpipe): rows
+    /// [`RowRule::HalfOpen`], columns [`ColumnRule::HalfOpen`] in zsim's y-up
+    /// raster, which is OpenGL's lower-left origin; depth as the book stores it.
+    Gl,
+    /// Vulkan's, WebGPU's and Direct3D's picture: their top-left rule in a
+    /// y-down framebuffer, which in zsim's y-up raster is rows
+    /// [`RowRule::TopLeft`], columns [`ColumnRule::HalfOpen`]; depth as the
+    /// book stores it. Also read as `d3d`, `webgpu` and `gpu` (its old name).
+    #[serde(alias = "d3d", alias = "webgpu", alias = "gpu")]
+    Vulkan,
 }
 
 /// The rasterizer's choices.
@@ -117,7 +127,10 @@ impl Rules {
             Preset::Buet => {
                 Rules { preset, rows: RowRule::Closed, columns: ColumnRule::CellHolds, store: DepthStore::Exact }
             }
-            Preset::Gpu => {
+            Preset::Gl => {
+                Rules { preset, rows: RowRule::HalfOpen, columns: ColumnRule::HalfOpen, store: DepthStore::Quantized }
+            }
+            Preset::Vulkan => {
                 Rules { preset, rows: RowRule::TopLeft, columns: ColumnRule::HalfOpen, store: DepthStore::Quantized }
             }
         }
@@ -128,7 +141,8 @@ impl Rules {
         let preset = match self.preset {
             Preset::Rogers => "rogers",
             Preset::Buet => "buet",
-            Preset::Gpu => "gpu",
+            Preset::Gl => "gl",
+            Preset::Vulkan => "vulkan",
         };
         let rows = match self.rows {
             RowRule::HalfOpen => words!("rules-rows-half-open"),

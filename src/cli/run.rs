@@ -378,7 +378,7 @@ fn run_inexact(
 
 fn preset_parser(text: &str) -> Result<zsim::Preset, String> {
     serde_json::from_value(serde_json::Value::String(text.to_string()))
-        .map_err(|_| format!("\"{text}\" is not a rule preset: use rogers, buet or gpu"))
+        .map_err(|_| format!("\"{text}\" is not a rule preset: use rogers, buet, gl or vulkan (d3d, webgpu)"))
 }
 
 /// `--compare-rules`: the cells two rule sets draw differently, each with the
@@ -458,6 +458,7 @@ fn preset_name(preset: zsim::Preset) -> String {
     match preset {
         zsim::Preset::Rogers => zsim::words!("preset-rogers"),
         zsim::Preset::Buet => zsim::words!("preset-buet"),
-        zsim::Preset::Gpu => zsim::words!("preset-gpu"),
+        zsim::Preset::Gl => zsim::words!("preset-gl"),
+        zsim::Preset::Vulkan => zsim::words!("preset-vulkan"),
     }
 }

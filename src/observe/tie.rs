@@ -229,7 +229,7 @@ mod tests {
 
     #[test]
     fn ties_are_named_with_the_rule_that_decides_them() {
-        let gpu = Rules::preset(Preset::Gpu);
+        let gpu = Rules::preset(Preset::Vulkan);
         assert_eq!(
             tie_text(gpu, &triangle(), 6, 3).unwrap(),
             "the centre lies exactly on the right edge from (13/2, 1/2) to (13/2, 13/2), which the top-left rule (centres in [x_l, x_r): left edges in, right edges out) leaves out"

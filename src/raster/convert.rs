@@ -297,7 +297,7 @@ mod tests {
     }
 
     fn gpu() -> Rules {
-        Rules::preset(crate::rules::Preset::Gpu)
+        Rules::preset(crate::rules::Preset::Vulkan)
     }
 
     /// Each case of the top-left rule, with a centre exactly on the edge or
