@@ -124,6 +124,8 @@ pub use error::{Error, FileKind, PolygonOrigin, PolygonProblem, Task, Usage};
 pub use numbers::{
     Exact, NumberError, Q, decimal, exact_and_decimal, fraction, parse_exact, parse_number, short, to_f64,
 };
+#[cfg(feature = "gpu")]
+pub use observe::gpu;
 pub use observe::step::{Meant, PolygonTrace, Skip, Tracer, judge, skip_text};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
 pub use observe::{check, explain, figure, history, report, tie};

@@ -6,6 +6,8 @@
 pub mod check;
 pub mod explain;
 pub mod figure;
+#[cfg(feature = "gpu")]
+pub mod gpu;
 pub mod history;
 pub mod report;
 pub mod step;

@@ -692,3 +692,7 @@ buet-up-along-view = the up direction is zero or lies along the view direction: 
 buet-perspective = fovY and fovY·aspect must lie between 0 and 180 degrees, aspect and near be positive, and far differ from near
 buet-rotation-axis = a rotation about the axis 0 0 0 has no direction
 token-cut = { $shown }… ({ $count } characters)
+
+# The machine's OpenGL.
+gpu-no-library = no OpenGL found: { $reason } (install libegl1 libegl-mesa0 libgl1-mesa-dri)
+gpu-refused = OpenGL refused { $step }: { $reason }

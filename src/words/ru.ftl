@@ -674,3 +674,7 @@ buet-up-along-view = направление вверх нулевое или л�
 buet-perspective = fovY и fovY·aspect должны лежать между 0 и 180 градусами, aspect и near быть положительными, а far отличаться от near
 buet-rotation-axis = поворот вокруг оси 0 0 0 не имеет направления
 token-cut = { $shown }… ({ $count } символов)
+
+# The machine's OpenGL.
+gpu-no-library = OpenGL не найден: { $reason } (установите libegl1 libegl-mesa0 libgl1-mesa-dri)
+gpu-refused = OpenGL отказал в { $step }: { $reason }

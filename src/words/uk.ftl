@@ -674,3 +674,7 @@ buet-up-along-view = напрямок угору нульовий або леж�
 buet-perspective = fovY і fovY·aspect мають лежати між 0 і 180 градусами, aspect і near бути додатними, а far відрізнятися від near
 buet-rotation-axis = поворот навколо осі 0 0 0 не має напрямку
 token-cut = { $shown }… ({ $count } символів)
+
+# The machine's OpenGL.
+gpu-no-library = OpenGL не знайдено: { $reason } (установіть libegl1 libegl-mesa0 libgl1-mesa-dri)
+gpu-refused = OpenGL відмовив у { $step }: { $reason }

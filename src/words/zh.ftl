@@ -653,3 +653,7 @@ buet-up-along-view = 向上方向为零或与视线方向共线：相机没有�
 buet-perspective = fovY 和 fovY·aspect 须在 0 到 180 度之间，aspect 和 near 须为正，far 须不同于 near
 buet-rotation-axis = 绕轴 0 0 0 的旋转没有方向
 token-cut = { $shown }…（{ $count } 个字符）
+
+# The machine's OpenGL.
+gpu-no-library = 未找到 OpenGL：{ $reason }（请安装 libegl1 libegl-mesa0 libgl1-mesa-dri）
+gpu-refused = OpenGL 拒绝了 { $step }：{ $reason }

@@ -1,0 +1,239 @@
+//! zsim's `gl` preset against a real OpenGL: Mesa's llvmpipe, headless
+//! through EGL (Debian's `libegl1 libegl-mesa0 libgl1-mesa-dri`, installed by
+//! `.ci/run`). Random and adversarial triangles drawn alone must cover exactly
+//! the pixels zsim covers under `gl`; overlapping ones with a depth test must
+//! leave the same triangle showing at every pixel. Where no OpenGL is found
+//! the tests say SKIPPED (and fail in CI).
+
+use zsim::gpu::{Gl, GpuTriangle};
+use zsim::{Crossing, Depth, DepthTest, PixelRect, Preset, RasterSink, Rules, Scene, Scratch, Simulation, Span};
+
+/// The raster: a power of two, so that a vertex on the 1/256 grid is exact in
+/// the `f32` normalized coordinates OpenGL is given.
+const SIDE: u32 = 64;
+
+/// OpenGL draws on a larger framebuffer with zsim's raster in its middle
+/// (`MARGIN` pixels each way), so that no vertex of a test triangle lies
+/// outside OpenGL's view volume: a clipped triangle gets new vertices, off the
+/// 1/256 grid, and is another triangle.
+const MARGIN: u32 = 96;
+const GL_SIDE: u32 = SIDE + 2 * MARGIN;
+
+/// A vertex in the larger framebuffer.
+fn shifted([x, y]: [f64; 2], z: f64) -> [f64; 3] {
+    [x + f64::from(MARGIN), y + f64::from(MARGIN), z]
+}
+
+fn open() -> Option<Gl> {
+    match Gl::open() {
+        Ok(gl) => Some(gl),
+        Err(error) => {
+            crate::skipped(&format!("OpenGL ({error})"), "the GPU conformance tests");
+            None
+        }
+    }
+}
+
+/// A small deterministic generator (SplitMix64), so a failure can be replayed.
+struct Random(u64);
+
+impl Random {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// A coordinate on a grid of 1/`steps` pixel within `low … high`.
+    fn on_grid(&mut self, low: f64, high: f64, steps: u32) -> f64 {
+        let cells = ((high - low) * f64::from(steps)) as u64;
+        low + (self.next() % (cells + 1)) as f64 / f64::from(steps)
+    }
+}
+
+/// Triangles of every kind the rules decide differently: random on grids
+/// from 1/256 to whole pixels, squares split on pixel centres, edges and
+/// vertices on centres, 1/256-pixel slivers, both windings.
+fn triangles() -> Vec<[[f64; 2]; 3]> {
+    let mut random = Random(2026);
+    let mut out = Vec::new();
+    for steps in [256, 16, 2, 1] {
+        for _ in 0..300 {
+            let size = [4.0, 16.0, 64.0][(random.next() % 3) as usize];
+            let (x, y) = (random.on_grid(-2.0, 60.0, steps), random.on_grid(-2.0, 60.0, steps));
+            let mut corner = || [random.on_grid(x, x + size, steps), random.on_grid(y, y + size, steps)];
+            out.push([corner(), corner(), corner()]);
+        }
+    }
+    for _ in 0..200 {
+        // Corners on pixel centres: every edge runs through centres.
+        let mut centre = |low: u64, span: u64| (low + random.next() % span) as f64 + 0.5;
+        let (x0, y0) = (centre(0, 40), centre(0, 40));
+        let (x1, y1) = (x0 + centre(1, 20) - 0.5, y0 + centre(1, 20) - 0.5);
+        let square = [[x0, y0], [x1, y0], [x1, y1], [x0, y1]];
+        out.push([square[0], square[1], square[2]]);
+        out.push([square[0], square[2], square[3]]);
+        out.push([square[0], square[3], square[2]]);
+        let apex = [centre(0, 60), centre(0, 60)];
+        out.push([[x0, y0], [x1, y1], apex]);
+    }
+    for _ in 0..200 {
+        // Slivers: 1/256 pixel across, along every direction.
+        let (x, y) = (random.on_grid(0.0, 60.0, 256), random.on_grid(0.0, 60.0, 256));
+        let (dx, dy) = (random.on_grid(-30.0, 30.0, 2), random.on_grid(-30.0, 30.0, 2));
+        out.push([[x, y], [x + dx, y + dy], [x + dx + 1.0 / 256.0, y + dy]]);
+        out.push([[x, y], [x + dx, y + dy], [x + dx, y + dy + 1.0 / 256.0]]);
+    }
+    out
+}
+
+/// The pixels zsim covers for one triangle under `rules`.
+fn zsim_covers(triangle: &[[f64; 2]; 3], rules: Rules) -> Vec<(u32, u32)> {
+    struct Covered(Vec<(u32, u32)>);
+    impl RasterSink for Covered {
+        const OBSERVES_SCANLINES: bool = false;
+        fn scanline(&mut self, _: u32, _: &[Crossing], _: &[Span]) {}
+        fn pixel(&mut self, x: u32, y: u32, _: Depth) {
+            self.0.push((x, y));
+        }
+    }
+    let json = scene_json(&[(*triangle, 1, 5.0)], rules.preset);
+    let scene = Scene::from_json(&json, std::path::Path::new("gpu.json")).unwrap();
+    let polygon = &scene.polygons[0];
+    let mut covered = Covered(Vec::new());
+    if zsim::fate(&scene, 0) == zsim::Fate::Drawn {
+        zsim::rasterize(
+            polygon.geometry(),
+            rules,
+            PixelRect::raster(SIDE, SIDE),
+            &mut Scratch::default(),
+            &mut covered,
+        );
+    }
+    covered.0.sort_unstable();
+    covered.0
+}
+
+/// A scene of triangles (corners, value, flat z) under a preset.
+fn scene_json(triangles: &[([[f64; 2]; 3], u32, f64)], preset: Preset) -> String {
+    let preset = match preset {
+        Preset::Gl => "gl",
+        Preset::Vulkan => "vulkan",
+        _ => "rogers",
+    };
+    let polygons: Vec<String> = triangles
+        .iter()
+        .map(|(corners, value, z)| {
+            let vertices: Vec<String> = corners.iter().map(|[x, y]| format!("[\"{x}\", \"{y}\", {z}]")).collect();
+            format!(r#"{{"value": {value}, "vertices": [{}]}}"#, vertices.join(", "))
+        })
+        .collect();
+    format!(
+        r#"{{"width": {SIDE}, "height": {SIDE}, "frame_bits": 32, "depth_bits": 24, "rules": {{"preset": "{preset}"}}, "polygons": [{}]}}"#,
+        polygons.join(", ")
+    )
+}
+
+/// What OpenGL covers for one triangle drawn alone.
+fn gl_covers(gl: &Gl, triangle: &[[f64; 2]; 3]) -> Vec<(u32, u32)> {
+    let vertices = triangle.map(|corner| shifted(corner, 0.5));
+    let picture = gl.draw((GL_SIDE, GL_SIDE), &[GpuTriangle { vertices, id: 1 }], None).unwrap();
+    let mut covered = Vec::new();
+    for x in 0..SIDE {
+        for y in 0..SIDE {
+            if picture.at(x + MARGIN, y + MARGIN) != 0 {
+                covered.push((x, y));
+            }
+        }
+    }
+    covered
+}
+
+/// Every triangle, drawn alone, covers exactly the pixels zsim's `gl` preset
+/// covers; the `vulkan` preset (Direct3D's top-left rule as the picture shows
+/// it) disagrees on triangles with a centre on a horizontal edge or vertex.
+#[test]
+fn llvmpipe_covers_exactly_what_the_gl_preset_covers() {
+    let Some(gl) = open() else { return };
+    assert!(gl.renderer().contains("llvmpipe"), "the reference is Mesa's llvmpipe, found {}", gl.renderer());
+    let triangles = triangles();
+    let mut differ_gl = Vec::new();
+    let mut differ_vulkan = 0;
+    for triangle in &triangles {
+        let drawn = gl_covers(&gl, triangle);
+        if drawn != zsim_covers(triangle, Rules::preset(Preset::Gl)) {
+            differ_gl.push(*triangle);
+        }
+        if drawn != zsim_covers(triangle, Rules::preset(Preset::Vulkan)) {
+            differ_vulkan += 1;
+        }
+    }
+    eprintln!("{} triangles: gl differs on {}, vulkan on {differ_vulkan}", triangles.len(), differ_gl.len());
+    assert!(triangles.len() >= 2_000, "{} triangles", triangles.len());
+    assert_eq!(
+        differ_gl.len(),
+        0,
+        "of {} triangles, gl differs on {:?}",
+        triangles.len(),
+        &differ_gl[..differ_gl.len().min(5)]
+    );
+    // The two API rules are mirror images in y: they must disagree somewhere here.
+    assert!(differ_vulkan > 100, "vulkan differs from OpenGL on {differ_vulkan} triangles only");
+}
+
+/// A square of two triangles with corners on pixel centres (1.5, 1.5)–(5.5,
+/// 5.5) on 8×8 in one picture: OpenGL draws the row y = 1.5 and not y = 5.5.
+#[test]
+fn opengl_draws_the_bottom_edge_and_leaves_out_the_top_one() {
+    let Some(gl) = open() else { return };
+    let corner = |x: f64, y: f64| [x, y, 0.5];
+    let square = [
+        GpuTriangle { vertices: [corner(1.5, 1.5), corner(5.5, 1.5), corner(5.5, 5.5)], id: 1 },
+        GpuTriangle { vertices: [corner(1.5, 1.5), corner(5.5, 5.5), corner(1.5, 5.5)], id: 2 },
+    ];
+    let picture = gl.draw((8, 8), &square, None).unwrap();
+    let row = |y: u32| (0..8).filter(|&x| picture.at(x, y) != 0).collect::<Vec<u32>>();
+    assert_eq!(row(1), [1, 2, 3, 4], "the bottom row, y = 1.5, is drawn (left edge in, right edge out)");
+    assert_eq!(row(5), Vec::<u32>::new(), "the top row, y = 5.5, is not");
+}
+
+/// Overlapping triangles with the book's depth test (`greater`, 24-bit
+/// z-buffer): the same triangle shows at every pixel. Each triangle lies at
+/// its own depth, whole levels apart, so no two tie at a pixel.
+#[test]
+fn llvmpipe_shows_the_same_triangle_as_zsim_with_a_depth_test() {
+    let Some(gl) = open() else { return };
+    let mut random = Random(418);
+    let (mut scenes, mut pixels) = (0, 0);
+    for _ in 0..40 {
+        let count = 2 + random.next() % 12;
+        let mut layers: Vec<([[f64; 2]; 3], u32, f64)> = Vec::new();
+        for id in 1..=count as u32 {
+            let mut corner = || [random.on_grid(-4.0, 68.0, 256), random.on_grid(-4.0, 68.0, 256)];
+            let triangle = [corner(), corner(), corner()];
+            let z = (1 + random.next() % 1000) as f64 * 1000.0;
+            layers.push((triangle, id, z));
+        }
+        let json = scene_json(&layers, Preset::Gl);
+        let scene = Scene::from_json(&json, std::path::Path::new("gpu.json")).unwrap();
+        let mut simulation = Simulation::new(&scene);
+        simulation.finish(&mut zsim::Unobserved);
+        let triangles: Vec<GpuTriangle> = layers
+            .iter()
+            .map(|(corners, id, z)| GpuTriangle { vertices: corners.map(|corner| shifted(corner, *z)), id: *id })
+            .collect();
+        let depth = Some((DepthTest::Greater, scene.depth_max()));
+        let picture = gl.draw((GL_SIDE, GL_SIDE), &triangles, depth).unwrap();
+        for y in 0..SIDE {
+            for x in 0..SIDE {
+                let shown = picture.at(x + MARGIN, y + MARGIN);
+                assert_eq!(shown, simulation.buffers().frame(x, y), "pixel ({x}, {y}) of scene {json}");
+                pixels += 1;
+            }
+        }
+        scenes += 1;
+    }
+    assert_eq!((scenes, pixels), (40, 40 * 64 * 64));
+}
