@@ -305,6 +305,13 @@ pub enum Usage {
     },
     /// `--tile 0`.
     TileZero,
+    /// `--compare-gpu` on a scene with per-pixel effects or antialiasing.
+    CompareGpuPlainOnly,
+    /// `--compare-gpu` without a usable GPU.
+    NoGpu {
+        /// What went wrong.
+        reason: String,
+    },
     /// `--inside` without `--order pixels`.
     InsideNeedsPixelOrder,
     /// `--tile` or `--threads` with a format other than `none`.
@@ -437,6 +444,8 @@ impl fmt::Display for Usage {
                 )
             }
             Usage::TileZero => words!("usage-tile-zero"),
+            Usage::CompareGpuPlainOnly => words!("usage-compare-gpu-plain"),
+            Usage::NoGpu { reason } => words!("usage-no-gpu", reason = reason.as_str()),
             Usage::InsideNeedsPixelOrder => words!("usage-inside-needs-pixel-order"),
             Usage::TilesNeedFormatNone => words!("usage-tiles-need-format-none"),
             Usage::FormatNoneIsPlain => words!("usage-format-none-is-plain"),

@@ -49,7 +49,11 @@ pub struct RunArgs {
     /// With --format none: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
-    /// List the cells where the scene's rules and this preset's (rogers, buet or gpu) draw differently, and why.
+    /// Draw the scene with the machine's GPU through this API (gl: OpenGL, e.g. Mesa's llvmpipe) and list every cell where it shows another polygon than zsim under the scene's rules or the API's preset, and why.
+    #[cfg(feature = "gpu")]
+    #[arg(long, value_enum, value_name = "API")]
+    compare_gpu: Option<GpuApi>,
+    /// List the cells where the scene's rules and this preset's (rogers, buet, gl or vulkan) draw differently, and why.
     #[arg(long, value_name = "PRESET", value_parser = preset_parser)]
     compare_rules: Option<zsim::Preset>,
     /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
@@ -111,6 +115,12 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         scene.polygons.truncate(last + 1);
     }
     let path = args.scene.display().to_string();
+    #[cfg(feature = "gpu")]
+    if let Some(GpuApi::Gl) = args.compare_gpu {
+        let comparison = zsim::gpu::compare_with_gl(&scene)?;
+        emit(out, &comparison.text(&scene, &path))?;
+        return Ok(Finish::Ok);
+    }
     if let Some(preset) = args.compare_rules {
         emit(out, &compare_rules(&scene, &path, preset))?;
         return Ok(Finish::Ok);
@@ -374,6 +384,14 @@ fn run_inexact(
         }
     }
     Ok(Finish::Ok)
+}
+
+/// A GPU API `--compare-gpu` draws with.
+#[cfg(feature = "gpu")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum GpuApi {
+    /// OpenGL through EGL (Mesa's llvmpipe where no GPU is present).
+    Gl,
 }
 
 fn preset_parser(text: &str) -> Result<zsim::Preset, String> {

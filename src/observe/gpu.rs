@@ -296,3 +296,174 @@ impl Drop for Gl {
         let _ = self.egl.terminate(self.display);
     }
 }
+
+/// One cell where the GPU shows another polygon than zsim.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GpuDifference {
+    /// The pixel.
+    pub x: u32,
+    /// The pixel's row.
+    pub y: u32,
+    /// The polygon (0-based) the GPU shows, if any.
+    pub gpu: Option<usize>,
+    /// The polygon zsim shows under the scene's own rules.
+    pub book: Option<usize>,
+    /// The polygon zsim shows under the API's preset.
+    pub preset: Option<usize>,
+    /// Why, in words: the edge a centre lies on and the rule that decides
+    /// it, or the depths that decided it.
+    pub why: String,
+}
+
+/// The scene drawn by the GPU beside zsim: every cell that differs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GpuComparison {
+    /// The implementation, as it names itself.
+    pub renderer: String,
+    /// The preset of the API drawn with.
+    pub preset: crate::rules::Preset,
+    /// The cells that differ, bottom row first.
+    pub differences: Vec<GpuDifference>,
+    /// Polygons drawn as a fan of triangles though not convex (their
+    /// picture on the GPU is not the polygon's).
+    pub not_convex: Vec<usize>,
+}
+
+/// Draws `scene` with the machine's OpenGL and compares what shows at every
+/// pixel with zsim under the scene's own rules and under the `gl` preset.
+/// Only the plain algorithm is compared (no per-pixel effects, no
+/// antialiasing), on scenes whose depth test OpenGL has.
+pub fn compare_with_gl(scene: &crate::scene::Scene) -> Result<GpuComparison, crate::error::Error> {
+    use crate::numbers::to_f64;
+    use crate::rules::{Preset, Rules};
+    if scene.has_pixel_effects() || scene.effects.antialias.is_some() {
+        return Err(crate::error::Usage::CompareGpuPlainOnly.into());
+    }
+    let gl = Gl::open().map_err(|error| crate::error::Usage::NoGpu { reason: error.to_string() })?;
+    let shows = |rules: Rules| {
+        // Each polygon writes its number, so the framebuffer says which polygon shows.
+        let mut numbered = scene.clone();
+        numbered.frame_bits = 32;
+        numbered.background = 0;
+        numbered.rules = rules;
+        for (index, polygon) in numbered.polygons.iter_mut().enumerate() {
+            polygon.value = index as u32 + 1;
+        }
+        let mut simulation = crate::simulate::simulation::Simulation::new(&numbered);
+        simulation.finish(&mut crate::simulate::events::Unobserved);
+        simulation.into_buffers()
+    };
+    let book = shows(scene.rules);
+    let preset = shows(Rules { store: scene.rules.store, ..Rules::preset(Preset::Gl) });
+    let (width, height) = (scene.width, scene.height);
+    // A margin keeps vertices near the raster inside OpenGL's view volume, unclipped.
+    let inside = |v: f64, side: u32| (-256.0..=f64::from(side) + 256.0).contains(&v);
+    let near = scene
+        .polygons
+        .iter()
+        .flat_map(|p| p.vertices())
+        .all(|v| inside(to_f64(&v[0]), width) && inside(to_f64(&v[1]), height));
+    let margin = if near { 256 } else { 0 };
+    let mut triangles = Vec::new();
+    let mut not_convex = Vec::new();
+    for (index, polygon) in scene.polygons.iter().enumerate() {
+        if crate::simulate::simulation::fate(scene, index) != crate::simulate::events::Fate::Drawn {
+            continue;
+        }
+        let points: Vec<[f64; 3]> = polygon
+            .vertices()
+            .iter()
+            .map(|v| [to_f64(&v[0]) + f64::from(margin), to_f64(&v[1]) + f64::from(margin), to_f64(&v[2])])
+            .collect();
+        if !convex(&points) {
+            not_convex.push(index);
+        }
+        for i in 1..points.len() - 1 {
+            triangles.push(GpuTriangle { vertices: [points[0], points[i], points[i + 1]], id: index as u32 + 1 });
+        }
+    }
+    let depth = Some((scene.depth_test, scene.depth_max()));
+    let picture = gl
+        .draw((width + 2 * margin, height + 2 * margin), &triangles, depth)
+        .map_err(|error| crate::error::Usage::NoGpu { reason: error.to_string() })?;
+    let polygon = |id: u32| (id > 0).then(|| id as usize - 1);
+    let mut differences = Vec::new();
+    for y in 0..height {
+        for x in 0..width {
+            let gpu = polygon(picture.at(x + margin, y + margin));
+            let (in_book, in_preset) = (polygon(book.frame(x, y)), polygon(preset.frame(x, y)));
+            if gpu == in_book && gpu == in_preset {
+                continue;
+            }
+            let gl_rules = Rules { store: scene.rules.store, ..Rules::preset(Preset::Gl) };
+            let involved = [gpu, in_book, in_preset];
+            let tie = involved
+                .iter()
+                .flatten()
+                .find_map(|&i| crate::observe::tie::tie_text(gl_rules, scene.polygons[i].vertices(), x, y));
+            let why = tie.unwrap_or_else(|| {
+                let exact = |i: Option<usize>| {
+                    i.map_or_else(
+                        || words!("gpu-background"),
+                        |i| {
+                            let depth = crate::raster::depth::depth_at_centre(scene.polygons[i].geometry(), x, y);
+                            words!(
+                                "gpu-exact-depth",
+                                polygon = crate::observe::explain::polygon_name(scene, i),
+                                depth = crate::numbers::exact_and_decimal(depth.value())
+                            )
+                        },
+                    )
+                };
+                let stored = picture.depth[((y + margin) * picture.width + x + margin) as usize];
+                words!("gpu-why-depth", gpu = format!("{stored:.3}"), shown = exact(gpu), book = exact(in_book))
+            });
+            differences.push(GpuDifference { x, y, gpu, book: in_book, preset: in_preset, why });
+        }
+    }
+    Ok(GpuComparison { renderer: gl.renderer().to_string(), preset: Preset::Gl, differences, not_convex })
+}
+
+/// Whether a polygon's vertices (x, y) turn one way only.
+fn convex(points: &[[f64; 3]]) -> bool {
+    let n = points.len();
+    let turns: Vec<f64> = (0..n)
+        .map(|i| {
+            let (a, b, c) = (points[i], points[(i + 1) % n], points[(i + 2) % n]);
+            (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0])
+        })
+        .filter(|t| *t != 0.0)
+        .collect();
+    turns.iter().all(|t| *t > 0.0) || turns.iter().all(|t| *t < 0.0)
+}
+
+impl GpuComparison {
+    /// The comparison in the reader's language, as `zsim run --compare-gpu`
+    /// prints it.
+    pub fn text(&self, scene: &crate::scene::Scene, path: &str) -> String {
+        let name = |i: Option<usize>| {
+            i.map_or_else(|| words!("gpu-background"), |i| crate::observe::explain::polygon_name(scene, i))
+        };
+        let mut text = words!("gpu-heading", path = path, renderer = self.renderer.as_str()) + "\n";
+        for &index in &self.not_convex {
+            text.push_str(&format!("  {}\n", words!("gpu-not-convex", polygon = name(Some(index)))));
+        }
+        if self.differences.is_empty() {
+            text.push_str(&format!("{}\n", words!("gpu-same")));
+            return text;
+        }
+        text.push_str(&format!("{}\n", words!("gpu-differ", count = self.differences.len())));
+        for d in &self.differences {
+            let line = words!(
+                "gpu-cell",
+                x = d.x.to_string(),
+                y = d.y.to_string(),
+                gpu = name(d.gpu),
+                book = name(d.book),
+                preset = name(d.preset)
+            );
+            text.push_str(&format!("  {line}\n      {}\n", d.why));
+        }
+        text
+    }
+}

@@ -678,3 +678,13 @@ token-cut = { $shown }… ({ $count } символов)
 # The machine's OpenGL.
 gpu-no-library = OpenGL не найден: { $reason } (установите libegl1 libegl-mesa0 libgl1-mesa-dri)
 gpu-refused = OpenGL отказал в { $step }: { $reason }
+gpu-heading = { $path }, нарисованный { $renderer } (OpenGL), рядом с zsim по правилам сцены и по правилам OpenGL (gl)
+gpu-same = каждый пиксел показывает один и тот же многоугольник на GPU и в zsim
+gpu-differ = пикселов с другим многоугольником: { $count }:
+gpu-cell = ({ $x }, { $y }): GPU показывает { $gpu }; zsim показывает { $book } по правилам сцены, { $preset } по gl
+gpu-background = ничего
+gpu-exact-depth = { $polygon } на точной глубине { $depth }
+gpu-why-depth = GPU записал глубину { $gpu } (интерполяция в f32, хранение в 24 битах) для { $shown }; по правилам сцены остаётся { $book }
+gpu-not-convex = замечание: { $polygon } не выпуклый: GPU рисует его веером треугольников из первой вершины, а это не тот многоугольник
+usage-compare-gpu-plain = --compare-gpu сравнивает простой алгоритм: эта сцена требует попиксельных эффектов или сглаживания
+usage-no-gpu = --compare-gpu: { $reason }

@@ -678,3 +678,13 @@ token-cut = { $shown }… ({ $count } символів)
 # The machine's OpenGL.
 gpu-no-library = OpenGL не знайдено: { $reason } (установіть libegl1 libegl-mesa0 libgl1-mesa-dri)
 gpu-refused = OpenGL відмовив у { $step }: { $reason }
+gpu-heading = { $path }, намальований { $renderer } (OpenGL), поруч із zsim за правилами сцени й за правилами OpenGL (gl)
+gpu-same = кожен піксель показує той самий багатокутник на GPU і в zsim
+gpu-differ = пікселів з іншим багатокутником: { $count }:
+gpu-cell = ({ $x }, { $y }): GPU показує { $gpu }; zsim показує { $book } за правилами сцени, { $preset } за gl
+gpu-background = нічого
+gpu-exact-depth = { $polygon } на точній глибині { $depth }
+gpu-why-depth = GPU записав глибину { $gpu } (інтерполяція в f32, зберігання в 24 бітах) для { $shown }; за правилами сцени лишається { $book }
+gpu-not-convex = примітка: { $polygon } не опуклий: GPU малює його віялом трикутників із першої вершини, а це не той багатокутник
+usage-compare-gpu-plain = --compare-gpu порівнює простий алгоритм: ця сцена потребує попіксельних ефектів або згладжування
+usage-no-gpu = --compare-gpu: { $reason }

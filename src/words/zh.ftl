@@ -657,3 +657,13 @@ token-cut = { $shown }…（{ $count } 个字符）
 # The machine's OpenGL.
 gpu-no-library = 未找到 OpenGL：{ $reason }（请安装 libegl1 libegl-mesa0 libgl1-mesa-dri）
 gpu-refused = OpenGL 拒绝了 { $step }：{ $reason }
+gpu-heading = { $path } 由 { $renderer }（OpenGL）绘制，与 zsim 按场景规则和 OpenGL 规则（gl）并列
+gpu-same = GPU 与 zsim 在每个像素显示同一个多边形
+gpu-differ = 有 { $count } 个像素显示了另一个多边形：
+gpu-cell = ({ $x }, { $y })：GPU 显示 { $gpu }；zsim 按场景规则显示 { $book }，按 gl 显示 { $preset }
+gpu-background = 无
+gpu-exact-depth = { $polygon }，精确深度 { $depth }
+gpu-why-depth = GPU 为 { $shown } 存储的深度为 { $gpu }（f32 插值，24 位保存）；按场景规则保留的是 { $book }
+gpu-not-convex = 注意：{ $polygon } 不是凸的：GPU 从其第一个顶点以三角形扇绘制，这并不是该多边形
+usage-compare-gpu-plain = --compare-gpu 比较的是基本算法：此场景要求逐像素效果或抗锯齿
+usage-no-gpu = --compare-gpu：{ $reason }

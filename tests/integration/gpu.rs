@@ -237,3 +237,26 @@ fn llvmpipe_shows_the_same_triangle_as_zsim_with_a_depth_test() {
     }
     assert_eq!((scenes, pixels), (40, 40 * 64 * 64));
 }
+
+/// `--compare-gpu gl` on the book's scene and on two squares sharing an edge:
+/// every differing cell with its reason, an edge's rule or a depth tie the
+/// GPU's f32 interpolation broke.
+#[test]
+fn compare_gpu_explains_each_cell_where_opengl_differs() {
+    if open().is_none() {
+        return;
+    }
+    let book = crate::zsim(&["run", "examples/rogers.json", "--compare-gpu", "gl"]);
+    assert_eq!(book.code, 0, "{}", book.stderr);
+    assert!(book.stdout.contains("8 pixels show another polygon:"), "{}", book.stdout);
+    assert!(book.stdout.contains(
+        "  (21, 15): the GPU shows polygon 2 \"triangle\"; zsim shows polygon 1 \"rectangle\" under the scene's rules, polygon 1 \"rectangle\" under gl\n      the GPU stored depth 10.000 (interpolated in f32, kept in 24 bits) for polygon 2 \"triangle\" at exact depth 10; the scene's rules keep polygon 1 \"rectangle\" at exact depth 10\n"
+    ), "{}", book.stdout);
+    assert_eq!(book.stdout.matches("leaves out").count(), 5, "five centres on the triangle's right edge");
+    let shared = crate::zsim(&["run", "examples/shared_edge.json", "--compare-gpu", "gl"]);
+    assert_eq!(shared.code, 0, "{}", shared.stderr);
+    assert!(shared.stdout.contains("6 pixels show another polygon:"), "{}", shared.stdout);
+    let refused = crate::zsim(&["run", "examples/antialias.json", "--compare-gpu", "gl"]);
+    assert_eq!(refused.code, 2);
+    assert!(refused.stderr.contains("--compare-gpu compares the plain algorithm"), "{}", refused.stderr);
+}

@@ -17,6 +17,7 @@ mod effects;
 mod exact_range;
 mod generate;
 mod golden;
+#[cfg(feature = "gpu")]
 mod gpu;
 mod hard_cases;
 mod hardening;
