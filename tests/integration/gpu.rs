@@ -525,3 +525,56 @@ fn lavapipe_shows_the_same_triangle_as_zsim_with_a_depth_test() {
         }
     }
 }
+
+/// How far the GPU's 24-bit depths are from the exact ones: sloped
+/// triangles drawn alone on a 24-bit z-buffer, llvmpipe's stored depth
+/// (interpolated in f32) against zsim's (the exact depth rounded half up),
+/// in levels, at every pixel both cover. Measured with Mesa 22.3.6 on 21,167
+/// pixels of 60 triangles: 24.7 % equal, 63.3 % within one level, 95.7 %
+/// within four, the largest 282 levels (of 2^24 − 1); the bounds below hold
+/// those figures with a margin for other Mesa versions.
+#[test]
+fn llvmpipe_depths_are_within_a_few_levels_of_the_exact_ones() {
+    let Some(gl) = open() else { return };
+    let mut random = Random(24);
+    let mut differences: Vec<u64> = Vec::new();
+    for _ in 0..60 {
+        let mut corner = || {
+            let (x, y) = (random.on_grid(0.0, 64.0, 256), random.on_grid(0.0, 64.0, 256));
+            [x, y, (random.next() % (1 << 24)) as f64]
+        };
+        let vertices = [corner(), corner(), corner()];
+        let corners = vertices.map(|[x, y, _]| [x, y]);
+        let json = {
+            let v: Vec<String> = vertices.iter().map(|[x, y, z]| format!("[\"{x}\", \"{y}\", {z}]")).collect();
+            format!(
+                r#"{{"width": {SIDE}, "height": {SIDE}, "depth_bits": 24, "rules": {{"preset": "gl"}}, "polygons": [{{"value": 1, "vertices": [{}]}}]}}"#,
+                v.join(", ")
+            )
+        };
+        let Ok(scene) = Scene::from_json(&json, std::path::Path::new("gpu.json")) else { continue };
+        let mut simulation = Simulation::new(&scene);
+        simulation.finish(&mut zsim::Unobserved);
+        let triangle = GpuTriangle { vertices: vertices.map(|[x, y, z]| shifted([x, y], z)), id: 1 };
+        let picture = gl.draw((GL_SIDE, GL_SIDE), &[triangle], Some((DepthTest::Greater, scene.depth_max()))).unwrap();
+        for (x, y) in zsim_covers(&corners, Rules::preset(Preset::Gl)) {
+            let at = ((y + MARGIN) * GL_SIDE + x + MARGIN) as usize;
+            let gpu = picture.depth[at].round() as i64;
+            let zsim::Stored::Level(exact) = simulation.buffers().depth(x, y) else { panic!("a level") };
+            differences.push(gpu.abs_diff(i64::from(exact)));
+        }
+    }
+    differences.sort_unstable();
+    let share = |bound: u64| differences.iter().filter(|d| **d <= bound).count() as f64 / differences.len() as f64;
+    let largest = *differences.last().unwrap();
+    eprintln!(
+        "{} pixels: {:.1} % equal, {:.1} % within 1, {:.1} % within 4, largest {largest}",
+        differences.len(),
+        100.0 * share(0),
+        100.0 * share(1),
+        100.0 * share(4)
+    );
+    assert!(differences.len() > 10_000, "{} pixels", differences.len());
+    assert!(share(0) > 0.2 && share(1) > 0.55 && share(4) > 0.9, "the GPU's depths drifted further");
+    assert!(largest <= 400, "largest difference {largest} levels");
+}
