@@ -139,7 +139,8 @@ pub use scene::text::{Links, MAX_INPUT_BYTES, printable, read_bytes, read_text, 
 pub use scene::{Antialias, MAX_SIDE, Polygon, Scene, max_for_bits};
 pub use simulate::buffer::Buffers;
 pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};
-pub use simulate::simulation::{Simulation, Stats, fate};
+pub use simulate::setup::{Stats, fate};
+pub use simulate::simulation::Simulation;
 pub use simulate::stages::{StageSet, describe};
 pub use teach::{exercise, grade};
 pub use words::{

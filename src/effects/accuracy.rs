@@ -14,7 +14,7 @@ use crate::error::Error;
 use crate::scene::Scene;
 use crate::scene::random::SplitMix64;
 use crate::simulate::buffer::Buffers;
-use crate::simulate::simulation::Stats;
+use crate::simulate::setup::Stats;
 
 /// What `zsim accuracy` is asked for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

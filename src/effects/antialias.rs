@@ -25,7 +25,8 @@ use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Antialias, Scene};
 use crate::simulate::buffer::Buffers;
 use crate::simulate::events::{Fate, Outcome, Unobserved};
-use crate::simulate::simulation::{Simulation, fate};
+use crate::simulate::setup::fate;
+use crate::simulate::simulation::Simulation;
 use crate::simulate::stages::{PixelStages, Plain, WithEffects, blend};
 
 /// The averaged picture after one polygon.

@@ -21,7 +21,7 @@ use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::Buffers;
 use crate::simulate::events::{Fate, Outcome};
-use crate::simulate::simulation::fate;
+use crate::simulate::setup::fate;
 use crate::simulate::stages::{Decision, PixelStages, Plain, WithEffects};
 
 /// The per-pixel stages the scene asks for, as a trait object.

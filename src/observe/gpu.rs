@@ -367,7 +367,7 @@ pub fn compare_with_gl(scene: &crate::scene::Scene) -> Result<GpuComparison, cra
     let mut triangles = Vec::new();
     let mut not_convex = Vec::new();
     for (index, polygon) in scene.polygons.iter().enumerate() {
-        if crate::simulate::simulation::fate(scene, index) != crate::simulate::events::Fate::Drawn {
+        if crate::simulate::setup::fate(scene, index) != crate::simulate::events::Fate::Drawn {
             continue;
         }
         let points: Vec<[f64; 3]> = polygon

@@ -30,7 +30,7 @@ pub fn exact_json(value: impl Into<Exact>) -> serde_json::Value {
 use crate::scene::perspective::Clip;
 use crate::scene::{Scene, Winding};
 use crate::simulate::events::Fate;
-use crate::simulate::simulation::fate;
+use crate::simulate::setup::fate;
 use crate::simulate::stages::describe as stages;
 
 /// The lines that open a text report: the scene's size, bit depths, test,
@@ -272,37 +272,36 @@ pub fn write_step_json(
 ) -> std::io::Result<()> {
     let name = serde_json::to_string(polygon).expect("a string serializes");
     write!(out, "{{\"polygon\":{name},\"frame\":[")?;
-    let (width, height) = (buffers.width(), buffers.height());
-    let mut line = String::new();
-    for (i, y) in (0..height).rev().enumerate() {
-        line.clear();
-        line.push_str(if i == 0 { "[" } else { ",[" });
-        for x in 0..width {
-            if x > 0 {
-                line.push(',');
-            }
-            line.push_str(itoa_u32(buffers.frame(x, y), &mut [0; 10]));
-        }
-        line.push(']');
-        out.write_all(line.as_bytes())?;
-    }
+    write_rows(out, buffers, |line, x, y| line.push_str(itoa_u32(buffers.frame(x, y), &mut [0; 10])))?;
     out.write_all(b"],\"depth\":[")?;
-    for (i, y) in (0..height).rev().enumerate() {
+    write_rows(out, buffers, |line, x, y| match buffers.depth(x, y) {
+        Stored::Level(level) => line.push_str(itoa_u32(level, &mut [0; 10])),
+        Stored::Exact(value) => line.push_str(&exact_json(value).to_string()),
+    })?;
+    out.write_all(b"]}")
+}
+
+/// The raster's rows as JSON arrays, top row first, separated by commas, one
+/// row in memory at a time; `cell` writes the cell at (x, y).
+fn write_rows(
+    out: &mut dyn std::io::Write,
+    buffers: &crate::simulate::buffer::Buffers,
+    mut cell: impl FnMut(&mut String, u32, u32),
+) -> std::io::Result<()> {
+    let mut line = String::new();
+    for (i, y) in (0..buffers.height()).rev().enumerate() {
         line.clear();
         line.push_str(if i == 0 { "[" } else { ",[" });
-        for x in 0..width {
+        for x in 0..buffers.width() {
             if x > 0 {
                 line.push(',');
             }
-            match buffers.depth(x, y) {
-                Stored::Level(level) => line.push_str(itoa_u32(level, &mut [0; 10])),
-                Stored::Exact(value) => line.push_str(&exact_json(value).to_string()),
-            }
+            cell(&mut line, x, y);
         }
         line.push(']');
         out.write_all(line.as_bytes())?;
     }
-    out.write_all(b"]}")
+    Ok(())
 }
 
 /// `value` in decimal digits, written into `buffer`.

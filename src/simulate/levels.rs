@@ -12,7 +12,7 @@ use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
-use crate::simulate::simulation::{Stats, fate, prefetch_ahead};
+use crate::simulate::setup::{Stats, fate, prefetch_ahead};
 
 /// What the plain loop on a quantized z-buffer needs besides the cells.
 pub(super) struct Levels<'a, 's> {

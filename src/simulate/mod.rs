@@ -6,6 +6,7 @@
 pub mod buffer;
 pub mod events;
 mod levels;
+pub mod setup;
 pub mod simulation;
 pub mod stages;
 mod tiles;

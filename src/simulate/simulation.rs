@@ -2,28 +2,17 @@
 //! half-interval scanlines, its covered centres depth-tested and stored,
 //! with only the stages the scene asks for.
 
-use crate::geometry::plane::Geometry;
 use crate::raster::convert::{Scratch, rasterize};
 use crate::raster::depth::{Depth, DepthTest};
 use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
-use crate::scene::{Polygon, Scene, Winding};
+use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::Buffers;
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};
 use crate::simulate::levels::{InOrder, Levels, OnePolygon};
+use crate::simulate::setup::{Stats, fate, prefetch_ahead};
 use crate::simulate::stages::{PixelStages, Plain, StageSet, WithEffects};
 use crate::simulate::tiles::{Tiles, Tiling, bins};
-
-/// Counts of a run so far.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Stats {
-    /// Polygons processed (drawn or skipped).
-    pub polygons: usize,
-    /// Covered pixel centres whose depth was tested.
-    pub tested: u64,
-    /// Pixels written.
-    pub written: u64,
-}
 
 /// A scene being drawn, one polygon at a time.
 #[derive(Debug, Clone)]
@@ -240,64 +229,5 @@ impl<S: PixelStages, O: Observer> RasterSink for DrawSink<'_, S, O> {
             stored_after: decision.stored,
             frame_after: decision.frame,
         });
-    }
-}
-
-/// The pixels a polygon's bounding box can cover (centres or cells), clipped
-/// to the raster; `None` when it lies outside.
-pub(super) fn pixel_bounds(geometry: &Geometry, width: u32, height: u32) -> Option<PixelRect> {
-    let [x0, x1, y0, y1] = geometry.cells();
-    // Widen by one cell each way for safety.
-    let clamp = |v: i128, max: u32| v.clamp(0, i128::from(max) - 1) as u32;
-    let (c0, c1, r0, r1) = (x0 - 1, x1 + 1, y0 - 1, y1 + 1);
-    if c1 < 0 || r1 < 0 || c0 >= i128::from(width) || r0 >= i128::from(height) {
-        return None;
-    }
-    Some(PixelRect { columns: (clamp(c0, width), clamp(c1, width)), rows: (clamp(r0, height), clamp(r1, height)) })
-}
-
-/// Each polygon's vertices live in their own allocation: asks for those of
-/// the polygon a few steps after `index` in scene order, so that they are in
-/// cache when it is drawn.
-#[inline]
-pub(super) fn prefetch_ahead(scene: &Scene, index: usize) {
-    if let Some(ahead) = scene.polygons.get(index + 4) {
-        prefetch(ahead.geometry().points.as_ptr());
-    }
-}
-
-/// Asks the processor to bring the memory at `data` into its cache (a hint;
-/// nothing on processors without one).
-#[inline]
-pub(super) fn prefetch<T>(data: *const T) {
-    // SAFETY: a prefetch is only a hint: it reads nothing the program sees and
-    // cannot fault, whatever the address; SSE is part of every x86-64 processor.
-    #[cfg(target_arch = "x86_64")]
-    unsafe {
-        std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(data.cast());
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = data;
-}
-
-/// Whether polygon `index` is drawn, and if not, why.
-pub fn fate(scene: &Scene, index: usize) -> Fate {
-    let polygon = &scene.polygons[index];
-    match polygon.clip {
-        crate::scene::perspective::Clip::Away => return Fate::ClippedAway,
-        crate::scene::perspective::Clip::ViewAway => return Fate::OutsideView,
-        _ => {}
-    }
-    let geometry = polygon.geometry();
-    if geometry.is_degenerate() {
-        return Fate::Degenerate;
-    }
-    if geometry.c() == 0 {
-        return Fate::EdgeOn;
-    }
-    // The winding matters only when culling is on (and its sign comes as it comes).
-    match scene.effects.cull {
-        Some(cull) if Winding::of(geometry.c()) == Some(cull) => Fate::Culled(cull),
-        _ => Fate::Drawn,
     }
 }

@@ -9,7 +9,7 @@ use crate::scene::Scene;
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Unobserved};
 use crate::simulate::levels::Levels;
-use crate::simulate::simulation::{Stats, fate, pixel_bounds, prefetch};
+use crate::simulate::setup::{Stats, fate, pixel_bounds, prefetch};
 
 /// How a tiled run is spread.
 #[derive(Clone, Copy)]

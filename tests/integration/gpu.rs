@@ -140,10 +140,16 @@ fn scene_json(triangles: &[([[f64; 2]; 3], u32, f64)], preset: Preset) -> String
 fn gl_covers(gl: &Gl, triangle: &[[f64; 2]; 3]) -> Vec<(u32, u32)> {
     let vertices = triangle.map(|corner| shifted(corner, 0.5));
     let picture = gl.draw((GL_SIDE, GL_SIDE), &[GpuTriangle { vertices, id: 1 }], None).unwrap();
+    covered_in_raster(|x, y| picture.at(x, y))
+}
+
+/// The pixels of zsim's raster, in the middle of the GPU's framebuffer, that
+/// `shown` says a triangle covers, sorted as zsim's are.
+fn covered_in_raster(shown: impl Fn(u32, u32) -> u32) -> Vec<(u32, u32)> {
     let mut covered = Vec::new();
     for x in 0..SIDE {
         for y in 0..SIDE {
-            if picture.at(x + MARGIN, y + MARGIN) != 0 {
+            if shown(x + MARGIN, y + MARGIN) != 0 {
                 covered.push((x, y));
             }
         }
@@ -447,15 +453,7 @@ impl Vulkan {
 fn vulkan_covers(vulkan: &Vulkan, triangle: &[[f64; 2]; 3]) -> Vec<(u32, u32)> {
     let vertices = triangle.map(|corner| shifted(corner, 0.5));
     let shown = vulkan.draw(GL_SIDE, &[(vertices, 1)], false);
-    let mut covered = Vec::new();
-    for x in 0..SIDE {
-        for y in 0..SIDE {
-            if shown[((y + MARGIN) * GL_SIDE + x + MARGIN) as usize] != 0 {
-                covered.push((x, y));
-            }
-        }
-    }
-    covered
+    covered_in_raster(|x, y| shown[(y * GL_SIDE + x) as usize])
 }
 
 /// Every triangle, drawn alone, covers exactly the pixels zsim's `vulkan`

@@ -36,7 +36,8 @@ use crate::rules::{Preset, Rules};
 use crate::scene::Scene;
 use crate::simulate::buffer::{Buffers, FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Unobserved};
-use crate::simulate::simulation::{Simulation, Stats, fate};
+use crate::simulate::setup::{Stats, fate};
+use crate::simulate::simulation::Simulation;
 
 /// An arithmetic mode.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
