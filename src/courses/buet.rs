@@ -5,7 +5,7 @@
 //! Stages 1–3 involve sin, cos, tan and sqrt, so they are computed in `f64`
 //! as the course computes them and written with 7 decimals. Stage 4 reads the
 //! triangles back from `stage3.txt` as exact decimals and runs the `buet`
-//! rules ([`crate::rules`]) exactly on the one rasterizer.
+//! rules (`crate::rules`) exactly on the one rasterizer.
 
 use std::fmt::Write as _;
 

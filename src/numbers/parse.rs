@@ -20,7 +20,7 @@ pub enum NumberError {
     /// Too many digits or too large an exponent to hold exactly.
     TooLarge(String),
     /// More digits or a larger power of ten than a vertex coordinate may
-    /// have ([`MAX_BIG_DIGITS`]).
+    /// have (`MAX_BIG_DIGITS`).
     TooLong(String),
 }
 
@@ -140,7 +140,7 @@ fn parse_decimal(text: &str, whole: &str) -> Result<Q, NumberError> {
 pub const MAX_BIG_DIGITS: usize = 1000;
 
 /// Reads a number as [`parse_number`] does, of any size up to
-/// [`MAX_BIG_DIGITS`] digits and powers of ten: a 128-bit fraction where it
+/// `MAX_BIG_DIGITS` digits and powers of ten: a 128-bit fraction where it
 /// fits, a big one where not (for vertex coordinates).
 ///
 /// ```

@@ -36,8 +36,8 @@ struct Walk<W> {
 /// effects, stepping, explaining, supersampling) observes it.
 ///
 /// It runs on 64-bit integers when the polygon's values fit them
-/// ([`Geometry::fits_i64`]) and on 128-bit integers otherwise; the same code
-/// either way ([`Word`]), with the same results.
+/// (`Geometry::fits_i64`) and on 128-bit integers otherwise; the same code
+/// either way (`Word`), with the same results.
 pub fn rasterize<S: RasterSink>(
     geometry: &Geometry,
     rules: Rules,

@@ -7,7 +7,7 @@ use crate::numbers::Word;
 use crate::raster::depth::{Depth, DepthStepper};
 use crate::raster::scan::{Crossing, Span};
 
-/// Receives what [`rasterize`] finds.
+/// Receives what the scan converter (`rasterize`) finds.
 pub trait RasterSink {
     /// Whether [`RasterSink::scanline`] does anything; when not, the rasterizer
     /// does not build the crossings and spans it would be given.

@@ -161,7 +161,7 @@ impl Window {
 /// One validated polygon.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Polygon {
-    /// Its name (from the file, or [`crate::words::default_name`]), with control characters
+    /// Its name (from the file, or `crate::words::default_name`), with control characters
     /// escaped as `\u{1b}` ([`crate::scene::text::printable`]) so that no report can
     /// carry them to a terminal.
     pub name: String,
@@ -232,7 +232,7 @@ impl Polygon {
 pub struct Scene {
     /// Raster width, 1 … [`MAX_SIDE`].
     pub width: u32,
-    /// Raster height, 1 … [`MAX_SIDE`]; `width·height ≤` [`MAX_CELLS`].
+    /// Raster height, 1 … [`MAX_SIDE`]; `width·height ≤` `MAX_CELLS`.
     pub height: u32,
     /// Bits per framebuffer cell, 1 … 32.
     pub frame_bits: u32,

@@ -75,7 +75,7 @@ impl Buffers {
     /// Buffers filled with the background value and the clear depth, whose
     /// kind (level or exact) fixes the kind of every cell.
     /// The size must already be validated (see `scene::MAX_CELLS`).
-    /// The framebuffer's cells are as wide as `frame_bits` need (see [`FrameCell`]).
+    /// The framebuffer's cells are as wide as `frame_bits` need (see `FrameCell`).
     pub fn new(width: u32, height: u32, frame_bits: u32, background: u32, clear_depth: Stored) -> Buffers {
         let cells = width as usize * height as usize;
         let depth = match clear_depth {

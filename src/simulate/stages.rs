@@ -118,10 +118,10 @@ pub fn blend(value: u32, under: u32, alpha: Q) -> u32 {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum StageSet {
     /// Only those the scene asks for (the default): a scene without
-    /// per-pixel effects runs [`Plain`].
+    /// per-pixel effects runs `Plain`.
     #[default]
     AsAsked,
-    /// [`WithEffects`] even when the scene asks for none (for benchmarks and
+    /// `WithEffects` even when the scene asks for none (for benchmarks and
     /// for the test that both paths agree).
     AllCompiledIn,
 }

@@ -257,7 +257,7 @@ pub fn is_default_name(name: &str, index: usize) -> bool {
 
 /// Polygon `index` named `name` as `message` (`polygon-name` or
 /// `polygon-after`) words it: `polygon 2 "triangle"`, or `polygon 2` when
-/// the name is the one an unnamed polygon gets ([`is_default_name`]),
+/// the name is the one an unnamed polygon gets (`is_default_name`),
 /// which would only repeat the number (and in English).
 pub fn polygon_label(message: &str, index: usize, name: &str) -> String {
     let named = if is_default_name(name, index) { "no" } else { "yes" };
