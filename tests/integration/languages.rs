@@ -136,3 +136,93 @@ fn figures_are_titled_in_each_language() {
         );
     }
 }
+
+/// The variables a catalogue message uses (`{ $name }`), by key.
+fn catalogue_variables(language: &str) -> std::collections::BTreeMap<String, std::collections::BTreeSet<String>> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("src/words/{language}.ftl"));
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut messages = std::collections::BTreeMap::new();
+    let mut current: Option<String> = None;
+    for line in text.lines() {
+        let is_key = line.split_once(" = ").or_else(|| line.strip_suffix(" =").map(|k| (k, "")));
+        match is_key {
+            Some((key, _)) if !key.starts_with([' ', '#', '}', '[', '*']) && !key.is_empty() => {
+                current = Some(key.to_string());
+            }
+            _ if line.starts_with([' ', '}']) => {}
+            _ => current = None,
+        }
+        if let Some(key) = &current {
+            let entry: &mut std::collections::BTreeSet<String> = messages.entry(key.clone()).or_default();
+            for part in line.split("$").skip(1) {
+                let name: String = part.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect();
+                entry.insert(name);
+            }
+        }
+    }
+    messages
+}
+
+/// Every `words!("key", name = …)` in the source passes each variable its
+/// message uses in every language, so no reader meets a `{$name}` unfilled
+/// (a debug build stops there; a release build prints it).
+#[test]
+fn every_message_gets_every_variable_it_uses_in_every_language() {
+    let languages: Vec<_> = ["en", "ru", "uk", "zh"].map(|l| (l, catalogue_variables(l))).into();
+    let mut files = Vec::new();
+    let mut folders = vec![std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src")];
+    while let Some(folder) = folders.pop() {
+        for entry in std::fs::read_dir(folder).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                folders.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                files.push(path);
+            }
+        }
+    }
+    let mut problems = Vec::new();
+    let mut calls = 0;
+    for file in files {
+        let text = std::fs::read_to_string(&file).unwrap();
+        for (start, _) in text.match_indices("words!(\"") {
+            // The call's text up to its closing parenthesis.
+            let body = &text[start + "words!(".len()..];
+            let mut depth = 1;
+            let end = body
+                .char_indices()
+                .find(|(_, c)| {
+                    depth += match c {
+                        '(' => 1,
+                        ')' => -1,
+                        _ => 0,
+                    };
+                    depth == 0
+                })
+                .map_or(body.len(), |(i, _)| i);
+            let call = &body[..end];
+            let key = call[1..].split('"').next().unwrap();
+            if key == "key" {
+                continue; // the macro's own documentation
+            }
+            calls += 1;
+            let given: Vec<&str> = call
+                .split([',', '(', '\n'])
+                .filter_map(|part| part.split_once('=').map(|(name, _)| name.trim()))
+                .filter(|name| !name.is_empty() && name.chars().all(|c| c.is_ascii_lowercase() || c == '_'))
+                .collect();
+            for (language, messages) in &languages {
+                match messages.get(key) {
+                    None => problems.push(format!("{}: {key}: no message in {language}", file.display())),
+                    Some(used) => {
+                        for name in used.iter().filter(|name| !given.contains(&name.as_str())) {
+                            problems.push(format!("{}: {key}: {language} uses ${name}, not given", file.display()));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(calls > 300, "{calls} calls found");
+    assert!(problems.is_empty(), "{problems:#?}");
+}
