@@ -49,7 +49,7 @@ pub struct RunArgs {
     /// With --format none: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
-    /// Draw the scene with the machine's GPU through this API (gl: OpenGL, e.g. Mesa's llvmpipe) and list every cell where it shows another polygon than zsim under the scene's rules or the API's preset, and why.
+    /// Draw the scene with the machine's GPU through this API (gl: OpenGL, e.g. Mesa's llvmpipe; vulkan, with the `vulkan` feature) and list every cell where it shows another polygon than zsim under the scene's rules or the API's preset, and why.
     #[cfg(feature = "gpu")]
     #[arg(long, value_enum, value_name = "API")]
     compare_gpu: Option<GpuApi>,
@@ -116,8 +116,12 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     }
     let path = args.scene.display().to_string();
     #[cfg(feature = "gpu")]
-    if let Some(GpuApi::Gl) = args.compare_gpu {
-        let comparison = zsim::gpu::compare_with_gl(&scene)?;
+    if let Some(api) = args.compare_gpu {
+        let api = match api {
+            GpuApi::Gl => zsim::gpu::GpuApi::Gl,
+            GpuApi::Vulkan => zsim::gpu::GpuApi::Vulkan,
+        };
+        let comparison = zsim::gpu::compare(&scene, api)?;
         emit(out, &comparison.text(&scene, &path))?;
         return Ok(Finish::Ok);
     }
@@ -392,6 +396,8 @@ fn run_inexact(
 enum GpuApi {
     /// OpenGL through EGL (Mesa's llvmpipe where no GPU is present).
     Gl,
+    /// Vulkan (Mesa's lavapipe where no GPU is present), in a zsim built with the `vulkan` feature.
+    Vulkan,
 }
 
 fn preset_parser(text: &str) -> Result<zsim::Preset, String> {

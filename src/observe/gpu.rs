@@ -21,7 +21,11 @@ use crate::raster::depth::DepthTest;
 pub enum GpuError {
     /// No `libEGL.so.1`, or one without EGL 1.5.
     NoLibrary(String),
-    /// EGL or OpenGL refused a step.
+    /// No Vulkan device (no `libvulkan.so.1`, or no driver such as lavapipe).
+    NoVulkan(String),
+    /// This zsim was built without the cargo feature that API needs.
+    NotBuilt(&'static str),
+    /// EGL, OpenGL or Vulkan refused a step.
     Refused {
         /// The step.
         step: &'static str,
@@ -34,6 +38,8 @@ impl std::fmt::Display for GpuError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(&match self {
             GpuError::NoLibrary(reason) => words!("gpu-no-library", reason = reason.as_str()),
+            GpuError::NoVulkan(reason) => words!("gpu-no-vulkan", reason = reason.as_str()),
+            GpuError::NotBuilt(feature) => words!("gpu-not-built", feature = *feature),
             GpuError::Refused { step, reason } => words!("gpu-refused", step = *step, reason = reason.as_str()),
         })
     }
@@ -297,6 +303,201 @@ impl Drop for Gl {
     }
 }
 
+/// Vulkan (Mesa's lavapipe where no GPU is present), driven by wgpu: triangles drawn into an
+/// RGBA8 texture (and a 32-bit float depth texture), read back. Vulkan's
+/// framebuffer counts rows from the top: zsim's pixel (x, y) is the
+/// texture's column x, row `side − 1 − y`.
+#[cfg(feature = "vulkan")]
+pub struct Vulkan {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    plain: wgpu::RenderPipeline,
+    depth: wgpu::RenderPipeline,
+    renderer: String,
+}
+
+#[cfg(feature = "vulkan")]
+impl std::fmt::Debug for Vulkan {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Vulkan").field("renderer", &self.renderer).finish_non_exhaustive()
+    }
+}
+
+#[cfg(feature = "vulkan")]
+impl Vulkan {
+    /// The machine's first Vulkan adapter (lavapipe where no GPU is present).
+    pub fn open() -> Result<Vulkan, GpuError> {
+        let mut descriptor = wgpu::InstanceDescriptor::new_without_display_handle();
+        descriptor.backends = wgpu::Backends::VULKAN;
+        let instance = wgpu::Instance::new(descriptor);
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
+            .map_err(|error| GpuError::NoVulkan(error.to_string()))?;
+        let info = adapter.get_info();
+        let renderer = format!("{} ({})", info.name, info.driver_info);
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))
+            .map_err(|error| GpuError::Refused { step: "requestDevice", reason: error.to_string() })?;
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: None,
+            source: wgpu::ShaderSource::Wgsl(
+                "struct Out { @builtin(position) position: vec4<f32>, @location(0) @interpolate(flat) colour: vec4<f32> };
+                 @vertex fn vs(@location(0) position: vec3<f32>, @location(1) colour: vec4<f32>) -> Out {
+                     return Out(vec4<f32>(position, 1.0), colour);
+                 }
+                 @fragment fn fs(input: Out) -> @location(0) vec4<f32> { return input.colour; }"
+                    .into(),
+            ),
+        });
+        let pipeline = |depth: Option<wgpu::DepthStencilState>| {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: None,
+                layout: None,
+                vertex: wgpu::VertexState {
+                    module: &shader,
+                    entry_point: Some("vs"),
+                    compilation_options: Default::default(),
+                    buffers: &[Some(wgpu::VertexBufferLayout {
+                        array_stride: 28,
+                        step_mode: wgpu::VertexStepMode::Vertex,
+                        attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4],
+                    })],
+                },
+                primitive: wgpu::PrimitiveState::default(),
+                depth_stencil: depth,
+                multisample: wgpu::MultisampleState::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &shader,
+                    entry_point: Some("fs"),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::TextureFormat::Rgba8Unorm.into())],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        let plain = pipeline(None);
+        let depth = pipeline(Some(wgpu::DepthStencilState {
+            format: wgpu::TextureFormat::Depth32Float,
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::Greater),
+            stencil: wgpu::StencilState::default(),
+            bias: wgpu::DepthBiasState::default(),
+        }));
+        Ok(Vulkan { device, queue, plain, depth, renderer })
+    }
+
+    /// The implementation's name, e.g. `llvmpipe (LLVM 15.0.6, 256 bits) (Mesa 22.3.6)`.
+    pub fn renderer(&self) -> &str {
+        &self.renderer
+    }
+
+    /// Draws `triangles` (pixel units, z in 0 … 1, numbered) on `side`×`side`,
+    /// with the depth test `greater` or none; which triangle shows at each
+    /// pixel, row 0 at the bottom as zsim counts.
+    pub fn draw(&self, side: u32, triangles: &[([[f64; 3]; 3], u32)], depth_test: bool) -> Vec<u32> {
+        use wgpu::util::DeviceExt;
+        let extent = wgpu::Extent3d { width: side, height: side, depth_or_array_layers: 1 };
+        let texture = |format, usage| {
+            self.device.create_texture(&wgpu::TextureDescriptor {
+                label: None,
+                size: extent,
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage,
+                view_formats: &[],
+            })
+        };
+        let colour = texture(
+            wgpu::TextureFormat::Rgba8Unorm,
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        );
+        let depth = texture(wgpu::TextureFormat::Depth32Float, wgpu::TextureUsages::RENDER_ATTACHMENT);
+        let (colour_view, depth_view) =
+            (colour.create_view(&Default::default()), depth.create_view(&Default::default()));
+        let mut data: Vec<u8> = Vec::new();
+        for (vertices, id) in triangles {
+            let rgba = [id & 0xff, (id >> 8) & 0xff, (id >> 16) & 0xff, 255].map(|c| c as f32 / 255.0);
+            for [x, y, z] in vertices {
+                let position =
+                    [(2.0 * x / f64::from(side) - 1.0) as f32, (2.0 * y / f64::from(side) - 1.0) as f32, *z as f32];
+                for v in position.into_iter().chain(rgba) {
+                    data.extend(v.to_ne_bytes());
+                }
+            }
+        }
+        let vertices = self.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: None,
+            contents: &data,
+            usage: wgpu::BufferUsages::VERTEX,
+        });
+        let row_bytes = (side * 4).next_multiple_of(256);
+        let readback = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size: u64::from(row_bytes * side),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let mut encoder = self.device.create_command_encoder(&Default::default());
+        {
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: None,
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: &colour_view,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                depth_stencil_attachment: depth_test.then_some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &depth_view,
+                    depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(0.0), store: wgpu::StoreOp::Store }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_pipeline(if depth_test { &self.depth } else { &self.plain });
+            pass.set_vertex_buffer(0, vertices.slice(..));
+            pass.draw(0..(triangles.len() * 3) as u32, 0..1);
+        }
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture: &colour,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &readback,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(row_bytes),
+                    rows_per_image: Some(side),
+                },
+            },
+            extent,
+        );
+        self.queue.submit([encoder.finish()]);
+        readback.slice(..).map_async(wgpu::MapMode::Read, |result| result.expect("mapped"));
+        self.device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+        let bytes = readback.slice(..).get_mapped_range().unwrap().to_vec();
+        let mut shown = vec![0; (side * side) as usize];
+        for y in 0..side {
+            let top_row = side - 1 - y;
+            for x in 0..side {
+                let at = (top_row * row_bytes + x * 4) as usize;
+                shown[(y * side + x) as usize] =
+                    u32::from(bytes[at]) | u32::from(bytes[at + 1]) << 8 | u32::from(bytes[at + 2]) << 16;
+            }
+        }
+        shown
+    }
+}
+
 /// One cell where the GPU shows another polygon than zsim.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GpuDifference {
@@ -329,17 +530,31 @@ pub struct GpuComparison {
     pub not_convex: Vec<usize>,
 }
 
-/// Draws `scene` with the machine's OpenGL and compares what shows at every
-/// pixel with zsim under the scene's own rules and under the `gl` preset.
-/// Only the plain algorithm is compared (no per-pixel effects, no
-/// antialiasing), on scenes whose depth test OpenGL has.
-pub fn compare_with_gl(scene: &crate::scene::Scene) -> Result<GpuComparison, crate::error::Error> {
+/// A GPU API `compare` draws with.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GpuApi {
+    /// OpenGL through EGL; compared with the `gl` preset.
+    Gl,
+    /// Vulkan (needs zsim built with its `vulkan` feature); compared with
+    /// the `vulkan` preset.
+    Vulkan,
+}
+
+/// Draws `scene` with the machine's GPU through `api` and compares what
+/// shows at every pixel with zsim under the scene's own rules and under the
+/// API's preset. Only the plain algorithm is compared (no per-pixel effects,
+/// no antialiasing).
+pub fn compare(scene: &crate::scene::Scene, api: GpuApi) -> Result<GpuComparison, crate::error::Error> {
+    use crate::error::Usage;
     use crate::numbers::to_f64;
     use crate::rules::{Preset, Rules};
     if scene.has_pixel_effects() || scene.effects.antialias.is_some() {
-        return Err(crate::error::Usage::CompareGpuPlainOnly.into());
+        return Err(Usage::CompareGpuPlainOnly.into());
     }
-    let gl = Gl::open().map_err(|error| crate::error::Usage::NoGpu { reason: error.to_string() })?;
+    let preset = match api {
+        GpuApi::Gl => Preset::Gl,
+        GpuApi::Vulkan => Preset::Vulkan,
+    };
     let shows = |rules: Rules| {
         // Each polygon writes its number, so the framebuffer says which polygon shows.
         let mut numbered = scene.clone();
@@ -353,10 +568,10 @@ pub fn compare_with_gl(scene: &crate::scene::Scene) -> Result<GpuComparison, cra
         simulation.finish(&mut crate::simulate::events::Unobserved);
         simulation.into_buffers()
     };
-    let book = shows(scene.rules);
-    let preset = shows(Rules { store: scene.rules.store, ..Rules::preset(Preset::Gl) });
+    let api_rules = Rules { store: scene.rules.store, ..Rules::preset(preset) };
+    let (book, in_api) = (shows(scene.rules), shows(api_rules));
     let (width, height) = (scene.width, scene.height);
-    // A margin keeps vertices near the raster inside OpenGL's view volume, unclipped.
+    // A margin keeps vertices near the raster inside the GPU's view volume, unclipped.
     let inside = |v: f64, side: u32| (-256.0..=f64::from(side) + 256.0).contains(&v);
     let near = scene
         .polygons
@@ -382,25 +597,30 @@ pub fn compare_with_gl(scene: &crate::scene::Scene) -> Result<GpuComparison, cra
             triangles.push(GpuTriangle { vertices: [points[0], points[i], points[i + 1]], id: index as u32 + 1 });
         }
     }
-    let depth = Some((scene.depth_test, scene.depth_max()));
-    let picture = gl
-        .draw((width + 2 * margin, height + 2 * margin), &triangles, depth)
-        .map_err(|error| crate::error::Usage::NoGpu { reason: error.to_string() })?;
+    let no_gpu = |error: GpuError| Usage::NoGpu { reason: error.to_string() };
+    let (renderer, picture) = match api {
+        GpuApi::Gl => {
+            let gl = Gl::open().map_err(no_gpu)?;
+            let depth = Some((scene.depth_test, scene.depth_max()));
+            let picture = gl.draw((width + 2 * margin, height + 2 * margin), &triangles, depth).map_err(no_gpu)?;
+            (gl.renderer().to_string(), picture)
+        }
+        GpuApi::Vulkan => vulkan_picture(scene, &triangles, margin).map_err(no_gpu)?,
+    };
     let polygon = |id: u32| (id > 0).then(|| id as usize - 1);
     let mut differences = Vec::new();
     for y in 0..height {
         for x in 0..width {
             let gpu = polygon(picture.at(x + margin, y + margin));
-            let (in_book, in_preset) = (polygon(book.frame(x, y)), polygon(preset.frame(x, y)));
+            let (in_book, in_preset) = (polygon(book.frame(x, y)), polygon(in_api.frame(x, y)));
             if gpu == in_book && gpu == in_preset {
                 continue;
             }
-            let gl_rules = Rules { store: scene.rules.store, ..Rules::preset(Preset::Gl) };
             let involved = [gpu, in_book, in_preset];
             let tie = involved
                 .iter()
                 .flatten()
-                .find_map(|&i| crate::observe::tie::tie_text(gl_rules, scene.polygons[i].vertices(), x, y));
+                .find_map(|&i| crate::observe::tie::tie_text(api_rules, scene.polygons[i].vertices(), x, y));
             let why = tie.unwrap_or_else(|| {
                 let exact = |i: Option<usize>| {
                     i.map_or_else(
@@ -415,13 +635,50 @@ pub fn compare_with_gl(scene: &crate::scene::Scene) -> Result<GpuComparison, cra
                         },
                     )
                 };
-                let stored = picture.depth[((y + margin) * picture.width + x + margin) as usize];
-                words!("gpu-why-depth", gpu = format!("{stored:.3}"), shown = exact(gpu), book = exact(in_book))
+                match picture.depth.get(((y + margin) * picture.width + x + margin) as usize) {
+                    Some(stored) => {
+                        words!("gpu-why-depth", gpu = format!("{stored:.3}"), shown = exact(gpu), book = exact(in_book))
+                    }
+                    None => words!("gpu-why-depth-unread", shown = exact(gpu), book = exact(in_book)),
+                }
             });
             differences.push(GpuDifference { x, y, gpu, book: in_book, preset: in_preset, why });
         }
     }
-    Ok(GpuComparison { renderer: gl.renderer().to_string(), preset: Preset::Gl, differences, not_convex })
+    Ok(GpuComparison { renderer, preset, differences, not_convex })
+}
+
+/// The scene's triangles drawn by Vulkan, as a picture of `width + 2·margin`
+/// on each side (its depths are not read back).
+#[cfg(feature = "vulkan")]
+fn vulkan_picture(
+    scene: &crate::scene::Scene,
+    triangles: &[GpuTriangle],
+    margin: u32,
+) -> Result<(String, GpuPicture), GpuError> {
+    let vulkan = Vulkan::open()?;
+    let side = scene.width.max(scene.height) + 2 * margin;
+    let max = f64::from(scene.depth_max().max(1));
+    // Vulkan's pipeline here tests `greater`; `less` is the same order on 1 − z.
+    let depth = |z: f64| match scene.depth_test {
+        DepthTest::Greater => Ok(z / max),
+        DepthTest::Less => Ok(1.0 - z / max),
+        other => Err(GpuError::Refused { step: "depth test", reason: other.name().to_string() }),
+    };
+    let mut drawn = Vec::with_capacity(triangles.len());
+    for triangle in triangles {
+        let [a, b, c] = triangle.vertices;
+        let vertex = |[x, y, z]: [f64; 3]| depth(z).map(|z| [x, y, z]);
+        drawn.push(([vertex(a)?, vertex(b)?, vertex(c)?], triangle.id));
+    }
+    let shown = vulkan.draw(side, &drawn, true);
+    Ok((vulkan.renderer().to_string(), GpuPicture { width: side, height: side, shown, depth: Vec::new() }))
+}
+
+/// Without the `vulkan` feature there is no Vulkan to draw with.
+#[cfg(not(feature = "vulkan"))]
+fn vulkan_picture(_: &crate::scene::Scene, _: &[GpuTriangle], _: u32) -> Result<(String, GpuPicture), GpuError> {
+    Err(GpuError::NotBuilt("vulkan"))
 }
 
 /// Whether a polygon's vertices (x, y) turn one way only.
@@ -444,7 +701,11 @@ impl GpuComparison {
         let name = |i: Option<usize>| {
             i.map_or_else(|| words!("gpu-background"), |i| crate::observe::explain::polygon_name(scene, i))
         };
-        let mut text = words!("gpu-heading", path = path, renderer = self.renderer.as_str()) + "\n";
+        let preset = match self.preset {
+            crate::rules::Preset::Vulkan => "vulkan",
+            _ => "gl",
+        };
+        let mut text = words!("gpu-heading", path = path, renderer = self.renderer.as_str(), preset = preset) + "\n";
         for &index in &self.not_convex {
             text.push_str(&format!("  {}\n", words!("gpu-not-convex", polygon = name(Some(index)))));
         }
@@ -460,7 +721,8 @@ impl GpuComparison {
                 y = d.y.to_string(),
                 gpu = name(d.gpu),
                 book = name(d.book),
-                preset = name(d.preset)
+                covered = name(d.preset),
+                preset = preset
             );
             text.push_str(&format!("  {line}\n      {}\n", d.why));
         }

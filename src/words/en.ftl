@@ -696,16 +696,19 @@ token-cut = { $shown }… ({ $count } characters)
 # The machine's OpenGL.
 gpu-no-library = no OpenGL found: { $reason } (install libegl1 libegl-mesa0 libgl1-mesa-dri)
 gpu-refused = OpenGL refused { $step }: { $reason }
-gpu-heading = { $path } drawn by { $renderer } (OpenGL) beside zsim under the scene's rules and under OpenGL's (gl)
+gpu-heading = { $path } drawn by { $renderer } beside zsim under the scene's rules and under the { $preset } preset
 gpu-same = every pixel shows the same polygon on the GPU and in zsim
 gpu-differ = { $count } { $count ->
     [one] pixel shows
    *[other] pixels show
 } another polygon:
-gpu-cell = ({ $x }, { $y }): the GPU shows { $gpu }; zsim shows { $book } under the scene's rules, { $preset } under gl
+gpu-cell = ({ $x }, { $y }): the GPU shows { $gpu }; zsim shows { $book } under the scene's rules, { $covered } under { $preset }
 gpu-background = nothing
 gpu-exact-depth = { $polygon } at exact depth { $depth }
 gpu-why-depth = the GPU stored depth { $gpu } (interpolated in f32, kept in 24 bits) for { $shown }; the scene's rules keep { $book }
 gpu-not-convex = note: { $polygon } is not convex: the GPU draws it as a fan of triangles from its first vertex, which is not the polygon
 usage-compare-gpu-plain = --compare-gpu compares the plain algorithm: this scene asks for per-pixel effects or antialiasing
 usage-no-gpu = --compare-gpu: { $reason }
+gpu-why-depth-unread = the GPU shows { $shown }; the scene's rules keep { $book } (the depths decided: the GPU interpolates them in f32)
+gpu-no-vulkan = no Vulkan device found: { $reason } (install mesa-vulkan-drivers)
+gpu-not-built = this zsim was built without its { $feature } feature: build it with `cargo install --path . --features { $feature }`
