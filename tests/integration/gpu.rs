@@ -175,6 +175,29 @@ fn covered_in_raster(shown: impl Fn(u32, u32) -> u32) -> Vec<(u32, u32)> {
     covered
 }
 
+/// Each triangle drawn alone by a GPU against zsim under the API's preset and
+/// under the other API's: the triangles where the preset differs, and how
+/// many the other preset differs on.
+fn conformance(
+    triangles: &[[[f64; 2]; 3]],
+    drawn: impl Fn(&[[f64; 2]; 3]) -> Vec<(u32, u32)>,
+    preset: Preset,
+    other: Preset,
+) -> (Vec<[[f64; 2]; 3]>, usize) {
+    let (mut differ, mut differ_other) = (Vec::new(), 0);
+    for triangle in triangles {
+        let covered = drawn(triangle);
+        if covered != zsim_covers(triangle, Rules::preset(preset)) {
+            differ.push(*triangle);
+        }
+        if covered != zsim_covers(triangle, Rules::preset(other)) {
+            differ_other += 1;
+        }
+    }
+    eprintln!("{} triangles: {preset:?} differs on {}, {other:?} on {differ_other}", triangles.len(), differ.len());
+    (differ, differ_other)
+}
+
 /// Every triangle, drawn alone, covers exactly the pixels zsim's `gl` preset
 /// covers; the `vulkan` preset (Direct3D's top-left rule as the picture shows
 /// it) disagrees on triangles with a centre on a horizontal edge or vertex.
@@ -183,18 +206,7 @@ fn llvmpipe_covers_exactly_what_the_gl_preset_covers() {
     let Some(gl) = open() else { return };
     assert!(gl.renderer().contains("llvmpipe"), "the reference is Mesa's llvmpipe, found {}", gl.renderer());
     let triangles = triangles();
-    let mut differ_gl = Vec::new();
-    let mut differ_vulkan = 0;
-    for triangle in &triangles {
-        let drawn = gl_covers(&gl, triangle);
-        if drawn != zsim_covers(triangle, Rules::preset(Preset::Gl)) {
-            differ_gl.push(*triangle);
-        }
-        if drawn != zsim_covers(triangle, Rules::preset(Preset::Vulkan)) {
-            differ_vulkan += 1;
-        }
-    }
-    eprintln!("{} triangles: gl differs on {}, vulkan on {differ_vulkan}", triangles.len(), differ_gl.len());
+    let (differ_gl, differ_vulkan) = conformance(&triangles, |t| gl_covers(&gl, t), Preset::Gl, Preset::Vulkan);
     assert!(triangles.len() >= 2_000, "{} triangles", triangles.len());
     assert_eq!(
         differ_gl.len(),
@@ -299,18 +311,7 @@ fn vulkan_covers(vulkan: &Vulkan, triangle: &[[f64; 2]; 3]) -> Vec<(u32, u32)> {
 fn lavapipe_covers_exactly_what_the_vulkan_preset_covers() {
     let Some(vulkan) = vulkan() else { return };
     let triangles = triangles();
-    let mut differ = Vec::new();
-    let mut differ_gl = 0;
-    for triangle in &triangles {
-        let drawn = vulkan_covers(&vulkan, triangle);
-        if drawn != zsim_covers(triangle, Rules::preset(Preset::Vulkan)) {
-            differ.push(*triangle);
-        }
-        if drawn != zsim_covers(triangle, Rules::preset(Preset::Gl)) {
-            differ_gl += 1;
-        }
-    }
-    eprintln!("{} triangles: vulkan differs on {}, gl on {differ_gl}", triangles.len(), differ.len());
+    let (differ, differ_gl) = conformance(&triangles, |t| vulkan_covers(&vulkan, t), Preset::Vulkan, Preset::Gl);
     assert_eq!(
         differ.len(),
         0,
