@@ -393,7 +393,7 @@ impl Vulkan {
     /// Draws `triangles` (pixel units, z in 0 … 1, numbered) on `side`×`side`,
     /// with the depth test `greater` or none; which triangle shows at each
     /// pixel, row 0 at the bottom as zsim counts.
-    pub fn draw(&self, side: u32, triangles: &[([[f64; 3]; 3], u32)], depth_test: bool) -> Vec<u32> {
+    pub fn draw(&self, side: u32, triangles: &[([[f64; 3]; 3], u32)], depth_test: bool) -> Result<Vec<u32>, GpuError> {
         use wgpu::util::DeviceExt;
         let extent = wgpu::Extent3d { width: side, height: side, depth_or_array_layers: 1 };
         let texture = |format, usage| {
@@ -482,9 +482,18 @@ impl Vulkan {
             extent,
         );
         self.queue.submit([encoder.finish()]);
-        readback.slice(..).map_async(wgpu::MapMode::Read, |result| result.expect("mapped"));
-        self.device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
-        let bytes = readback.slice(..).get_mapped_range().unwrap().to_vec();
+        let refused = |step: &'static str| move |reason: String| GpuError::Refused { step, reason };
+        let (sender, mapped) = std::sync::mpsc::channel();
+        readback.slice(..).map_async(wgpu::MapMode::Read, move |result| {
+            let _ = sender.send(result);
+        });
+        self.device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| refused("poll")(e.to_string()))?;
+        mapped
+            .recv()
+            .map_err(|e| refused("mapAsync")(e.to_string()))?
+            .map_err(|e| refused("mapAsync")(e.to_string()))?;
+        let bytes =
+            readback.slice(..).get_mapped_range().map_err(|e| refused("getMappedRange")(e.to_string()))?.to_vec();
         let mut shown = vec![0; (side * side) as usize];
         for y in 0..side {
             let top_row = side - 1 - y;
@@ -494,7 +503,7 @@ impl Vulkan {
                     u32::from(bytes[at]) | u32::from(bytes[at + 1]) << 8 | u32::from(bytes[at + 2]) << 16;
             }
         }
-        shown
+        Ok(shown)
     }
 }
 
@@ -671,7 +680,7 @@ fn vulkan_picture(
         let vertex = |[x, y, z]: [f64; 3]| depth(z).map(|z| [x, y, z]);
         drawn.push(([vertex(a)?, vertex(b)?, vertex(c)?], triangle.id));
     }
-    let shown = vulkan.draw(side, &drawn, true);
+    let shown = vulkan.draw(side, &drawn, true)?;
     Ok((vulkan.renderer().to_string(), GpuPicture { width: side, height: side, shown, depth: Vec::new() }))
 }
 

@@ -300,7 +300,7 @@ fn compare_gpu_explains_each_cell_where_opengl_differs() {
 /// What Vulkan covers for one triangle drawn alone, in zsim's raster.
 fn vulkan_covers(vulkan: &Vulkan, triangle: &[[f64; 2]; 3]) -> Vec<(u32, u32)> {
     let vertices = triangle.map(|corner| shifted(corner, 0.5));
-    let shown = vulkan.draw(GL_SIDE, &[(vertices, 1)], false);
+    let shown = vulkan.draw(GL_SIDE, &[(vertices, 1)], false).unwrap();
     covered_in_raster(|x, y| shown[(y * GL_SIDE + x) as usize])
 }
 
@@ -325,7 +325,7 @@ fn lavapipe_covers_exactly_what_the_vulkan_preset_covers() {
         ([corner(1.5, 1.5), corner(5.5, 1.5), corner(5.5, 5.5)], 1),
         ([corner(1.5, 1.5), corner(5.5, 5.5), corner(1.5, 5.5)], 2),
     ];
-    let shown = vulkan.draw(8, &square, false);
+    let shown = vulkan.draw(8, &square, false).unwrap();
     let row = |y: u32| (0..8).filter(|&x| shown[(y * 8 + x) as usize] != 0).collect::<Vec<u32>>();
     assert_eq!((row(1), row(5)), (vec![], vec![1, 2, 3, 4]), "Vulkan draws the top row, y = 5.5, and not y = 1.5");
 }
@@ -351,7 +351,7 @@ fn lavapipe_shows_the_same_triangle_as_zsim_with_a_depth_test() {
         let max = f64::from(scene.depth_max());
         let triangles: Vec<([[f64; 3]; 3], u32)> =
             layers.iter().map(|(corners, id, z)| (corners.map(|c| shifted(c, z / max)), *id)).collect();
-        let shown = vulkan.draw(GL_SIDE, &triangles, true);
+        let shown = vulkan.draw(GL_SIDE, &triangles, true).unwrap();
         for y in 0..SIDE {
             for x in 0..SIDE {
                 let gpu = shown[((y + MARGIN) * GL_SIDE + x + MARGIN) as usize];
