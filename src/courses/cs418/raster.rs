@@ -504,8 +504,9 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     fn texel<T: Scalar>(&self, texture: usize, s: &T, t: &T) -> [f64; 4] {
         let image = &self.case.textures[texture].image;
         let at = |v: &T, size: u32| {
-            let wrapped = v.sub(&v.floor());
-            (wrapped.mul(&T::int(i64::from(size))).floor().to_f64() as i64).clamp(0, i64::from(size) - 1) as usize
+            // The texel whose centre is nearest: s·W rounded half up, wrapped (repeat).
+            let nearest = v.sub(&v.floor()).mul(&T::int(i64::from(size))).add(&T::int(1).div(&T::int(2))).floor();
+            (nearest.to_f64() as i64).rem_euclid(i64::from(size)) as usize
         };
         let (column, row) = (at(s, image.width), at(t, image.height));
         self.textures[texture][row * image.width as usize + column]
