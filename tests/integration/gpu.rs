@@ -175,15 +175,15 @@ fn covered_in_raster(shown: impl Fn(u32, u32) -> u32) -> Vec<(u32, u32)> {
     covered
 }
 
-/// Each triangle drawn alone by a GPU against zsim under the API's preset and
-/// under the other API's: the triangles where the preset differs, and how
-/// many the other preset differs on.
+/// Each triangle drawn alone by a GPU against zsim: under the API's preset
+/// every one covers the same pixels; under the other API's (the mirror
+/// image in y) more than 100 differ.
 fn conformance(
     triangles: &[[[f64; 2]; 3]],
     drawn: impl Fn(&[[f64; 2]; 3]) -> Vec<(u32, u32)>,
     preset: Preset,
     other: Preset,
-) -> (Vec<[[f64; 2]; 3]>, usize) {
+) {
     let (mut differ, mut differ_other) = (Vec::new(), 0);
     for triangle in triangles {
         let covered = drawn(triangle);
@@ -195,7 +195,28 @@ fn conformance(
         }
     }
     eprintln!("{} triangles: {preset:?} differs on {}, {other:?} on {differ_other}", triangles.len(), differ.len());
-    (differ, differ_other)
+    assert!(triangles.len() >= 2_000, "{} triangles", triangles.len());
+    assert_eq!(
+        differ.len(),
+        0,
+        "of {} triangles, {preset:?} differs on {:?}",
+        triangles.len(),
+        &differ[..differ.len().min(5)]
+    );
+    assert!(differ_other > 100, "{other:?} differs on {differ_other} triangles only");
+}
+
+/// 2 to 13 triangles over the raster and a little beyond, numbered from 1,
+/// each flat at its own depth, whole thousands of levels apart or equal.
+fn random_layers(random: &mut Random) -> Vec<([[f64; 2]; 3], u32, f64)> {
+    let count = 2 + random.next() % 12;
+    (1..=count as u32)
+        .map(|id| {
+            let mut corner = || [random.on_grid(-4.0, 68.0, 256), random.on_grid(-4.0, 68.0, 256)];
+            let triangle = [corner(), corner(), corner()];
+            (triangle, id, (1 + random.next() % 1000) as f64 * 1000.0)
+        })
+        .collect()
 }
 
 /// Every triangle, drawn alone, covers exactly the pixels zsim's `gl` preset
@@ -206,17 +227,7 @@ fn llvmpipe_covers_exactly_what_the_gl_preset_covers() {
     let Some(gl) = open() else { return };
     assert!(gl.renderer().contains("llvmpipe"), "the reference is Mesa's llvmpipe, found {}", gl.renderer());
     let triangles = triangles();
-    let (differ_gl, differ_vulkan) = conformance(&triangles, |t| gl_covers(&gl, t), Preset::Gl, Preset::Vulkan);
-    assert!(triangles.len() >= 2_000, "{} triangles", triangles.len());
-    assert_eq!(
-        differ_gl.len(),
-        0,
-        "of {} triangles, gl differs on {:?}",
-        triangles.len(),
-        &differ_gl[..differ_gl.len().min(5)]
-    );
-    // The two API rules are mirror images in y: they must disagree somewhere here.
-    assert!(differ_vulkan > 100, "vulkan differs from OpenGL on {differ_vulkan} triangles only");
+    conformance(&triangles, |t| gl_covers(&gl, t), Preset::Gl, Preset::Vulkan);
 }
 
 /// A square of two triangles with corners on pixel centres (1.5, 1.5)–(5.5,
@@ -244,14 +255,7 @@ fn llvmpipe_shows_the_same_triangle_as_zsim_with_a_depth_test() {
     let mut random = Random(418);
     let (mut scenes, mut pixels) = (0, 0);
     for _ in 0..40 {
-        let count = 2 + random.next() % 12;
-        let mut layers: Vec<([[f64; 2]; 3], u32, f64)> = Vec::new();
-        for id in 1..=count as u32 {
-            let mut corner = || [random.on_grid(-4.0, 68.0, 256), random.on_grid(-4.0, 68.0, 256)];
-            let triangle = [corner(), corner(), corner()];
-            let z = (1 + random.next() % 1000) as f64 * 1000.0;
-            layers.push((triangle, id, z));
-        }
+        let layers = random_layers(&mut random);
         let json = scene_json(&layers, Preset::Gl);
         let scene = Scene::from_json(&json, std::path::Path::new("gpu.json")).unwrap();
         let mut simulation = Simulation::new(&scene);
@@ -311,15 +315,7 @@ fn vulkan_covers(vulkan: &Vulkan, triangle: &[[f64; 2]; 3]) -> Vec<(u32, u32)> {
 fn lavapipe_covers_exactly_what_the_vulkan_preset_covers() {
     let Some(vulkan) = vulkan() else { return };
     let triangles = triangles();
-    let (differ, differ_gl) = conformance(&triangles, |t| vulkan_covers(&vulkan, t), Preset::Vulkan, Preset::Gl);
-    assert_eq!(
-        differ.len(),
-        0,
-        "of {} triangles, vulkan differs on {:?}",
-        triangles.len(),
-        &differ[..differ.len().min(5)]
-    );
-    assert!(differ_gl > 100, "gl differs from Vulkan on {differ_gl} triangles only");
+    conformance(&triangles, |t| vulkan_covers(&vulkan, t), Preset::Vulkan, Preset::Gl);
     let corner = |x: f64, y: f64| [x, y, 0.5];
     let square = [
         ([corner(1.5, 1.5), corner(5.5, 1.5), corner(5.5, 5.5)], 1),
@@ -337,13 +333,7 @@ fn lavapipe_shows_the_same_triangle_as_zsim_with_a_depth_test() {
     let Some(vulkan) = vulkan() else { return };
     let mut random = Random(4180);
     for _ in 0..40 {
-        let count = 2 + random.next() % 12;
-        let mut layers: Vec<([[f64; 2]; 3], u32, f64)> = Vec::new();
-        for id in 1..=count as u32 {
-            let mut corner = || [random.on_grid(-4.0, 68.0, 256), random.on_grid(-4.0, 68.0, 256)];
-            let triangle = [corner(), corner(), corner()];
-            layers.push((triangle, id, (1 + random.next() % 1000) as f64 * 1000.0));
-        }
+        let layers = random_layers(&mut random);
         let json = scene_json(&layers, Preset::Vulkan);
         let scene = Scene::from_json(&json, std::path::Path::new("gpu.json")).unwrap();
         let mut simulation = Simulation::new(&scene);
