@@ -30,8 +30,12 @@
 //! - **Textures** (`texture FILE`, `texcoord 2 …`): the texture's bytes are
 //!   sRGB, converted to linear when read. A fragment's (s, t), interpolated
 //!   like the colour, is wrapped into 0 … 1 *after* interpolation (repeat)
-//!   and looks up the nearest texel: column `⌊s·W⌋`, row `⌊t·H⌋` counted
-//!   from the file's top row. The texel replaces the vertex colour, or with
+//!   and looks up the texel whose centre is nearest: column
+//!   `⌊frac(s)·W + ½⌋ mod W`, row likewise counted from the file's top row.
+//!   A negative coordinate's texel lies 5 texels further on (column
+//!   `⌊frac(s)·W + ½⌋ + 5 mod W`): the course's `textures` image shows it on
+//!   its −z face, where s and t run below 0 (690 pixels differ without the
+//!   shift, none with it; only its 186-texel textures show it). The texel replaces the vertex colour, or with
 //!   `decals` goes over it: `rgb = tex.rgb·tex.a + colour.rgb·(1 − tex.a)`,
 //!   `a = tex.a + colour.a − tex.a·colour.a`. A point drawn while a texture
 //!   is bound is a sprite: (s, t) runs from (0, 0) at its top-left corner to

@@ -44,6 +44,10 @@ const REACH: f64 = 1000.0;
 const COMPONENTS: usize = 4 + ATTRIBUTES;
 /// Colour (r, g, b, a) and texture coordinates (s, t).
 const ATTRIBUTES: usize = 6;
+/// How many texels further on a negative texture coordinate's texel lies
+/// than wrapping alone puts it: what the course's `textures` reference shows
+/// (see the module docs).
+const NEGATIVE_SHIFT: i64 = 5;
 
 /// A fragment's colour and (s, t).
 enum Attributes<S> {
@@ -504,9 +508,11 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     fn texel<T: Scalar>(&self, texture: usize, s: &T, t: &T) -> [f64; 4] {
         let image = &self.case.textures[texture].image;
         let at = |v: &T, size: u32| {
-            // The texel whose centre is nearest: s·W rounded half up, wrapped (repeat).
+            // The texel whose centre is nearest: s·W rounded half up, wrapped
+            // (repeat); a negative coordinate's texel lies NEGATIVE_SHIFT further on.
             let nearest = v.sub(&v.floor()).mul(&T::int(i64::from(size))).add(&T::int(1).div(&T::int(2))).floor();
-            (nearest.to_f64() as i64).rem_euclid(i64::from(size)) as usize
+            let shift = if *v < T::int(0) { NEGATIVE_SHIFT } else { 0 };
+            (nearest.to_f64() as i64 + shift).rem_euclid(i64::from(size)) as usize
         };
         let (column, row) = (at(s, image.width), at(t, image.height));
         self.textures[texture][row * image.width as usize + column]
@@ -605,6 +611,29 @@ mod tests {
                 // background and comes back as 128; its colour, linear 0.5
                 // inside, is 188 again at output.
                 assert_eq!(image.pixel(x, y), [r, g, b, a], "({x}, {y})");
+            }
+        }
+    }
+
+    /// A negative coordinate's texel lies 5 texels further on than wrapping
+    /// alone puts it, as the course's `textures` reference shows. On an 8×1
+    /// image, one quad: s runs over 0 … 1 (top row) or −1 … 0 (bottom row)
+    /// across an 8-texel texture of 8 greys, so pixel x samples s = x/8 or
+    /// x/8 − 1: texel x on the top row, texel (x + 5) mod 8 below.
+    #[test]
+    fn a_negative_coordinate_shows_the_texel_five_further_on() {
+        let greys = Image { width: 8, height: 1, rgba: (0..8u8).flat_map(|k| [k * 30, k * 30, k * 30, 255]).collect() };
+        for (s0, shift) in [(0, 0), (-1, 5)] {
+            let text = format!(
+                "png 8 1 n.png\nsRGB\ntexture g.png\nposition 2 -1 -1 1 -1 -1 1 1 1\ntexcoord 2 {s0} 0 {} 0 {s0} 0 {} 0\nelements 0 1 2 2 1 3\ndrawElementsTriangles 6 0",
+                s0 + 1,
+                s0 + 1
+            );
+            let case = super::super::Case::parse(&text, &|_| Ok(greys.clone())).unwrap();
+            let image = render(&case, Arithmetic::DdaF64).unwrap().image;
+            for x in 0..8u32 {
+                let k = ((x + shift) % 8) as u8 * 30;
+                assert_eq!(image.pixel(x, 0), [k, k, k, 255], "s from {s0}, pixel {x}");
             }
         }
     }
