@@ -6,14 +6,15 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
 use comfy_table::{ContentArrangement, Table, presets};
+use rayon::prelude::*;
 use zsim::Error;
+use zsim::PixelWatcher;
 use zsim::Scene;
 use zsim::Simulation;
 use zsim::arith::Arith;
 use zsim::explain::{Buffer, polygon_after, polygon_name, why};
 use zsim::grade::{CommonMistake, Grade, Handed, Status, Submission, common_mistakes, file_kind, grade};
 use zsim::printable;
-use zsim::{PixelWatcher, Unobserved};
 
 use super::check::{read_answer, report};
 use super::{Failure, Finish, emit};
@@ -49,6 +50,9 @@ enum Format {
 /// How many common mistakes are listed.
 const MISTAKES_LISTED: usize = 10;
 
+/// The tile side the scene is drawn in, on every core (the same cells as in order).
+const TILE: u32 = 64;
+
 pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(&args.scene)?;
     if scene.polygons.is_empty() {
@@ -60,7 +64,8 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     };
     let files = answer_files(&args.class)?;
     let mut simulation = Simulation::new(&scene);
-    simulation.draw_through(last, &mut Unobserved);
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    simulation.draw_parallel_through(last, TILE, threads, &|| {});
     let mut expected = Vec::new();
     for buffer in [Buffer::Frame, Buffer::Depth] {
         if !files.iter().any(|(_, b, _)| *b == buffer) {
@@ -150,27 +155,33 @@ fn submissions(
 ) -> Vec<Submission> {
     let mut students: Vec<&str> = files.iter().map(|(s, _, _)| s.as_str()).collect();
     students.dedup();
+    // Read on every core, in the student's order; messages in this thread's language.
+    let lang = zsim::language();
     students
-        .into_iter()
+        .into_par_iter()
         .map(|student| {
-            let answers = expected
-                .iter()
-                .map(|(buffer, _)| {
-                    let file = files.iter().find(|(s, b, _)| s == student && b == buffer);
-                    let handed = match file {
-                        None => Handed::Missing,
-                        Some((_, _, path)) => match read_answer(path, scene, *buffer, zsim::Links::Refuse) {
-                            Ok(matrix) => Handed::Matrix(matrix),
-                            // A message may carry the file's name, which is anyone's text:
-                            // escaped, so no control character reaches a table or terminal.
-                            Err(Error::Answer { message, .. }) => Handed::Malformed(printable(&message).into_owned()),
-                            Err(other) => Handed::Malformed(printable(&other.to_string()).into_owned()),
-                        },
-                    };
-                    (*buffer, handed)
-                })
-                .collect();
-            Submission { student: printable(student).into_owned(), answers }
+            zsim::with_language(lang, || {
+                let answers = expected
+                    .iter()
+                    .map(|(buffer, _)| {
+                        let file = files.iter().find(|(s, b, _)| s == student && b == buffer);
+                        let handed = match file {
+                            None => Handed::Missing,
+                            Some((_, _, path)) => match read_answer(path, scene, *buffer, zsim::Links::Refuse) {
+                                Ok(matrix) => Handed::Matrix(matrix),
+                                // A message may carry the file's name, which is anyone's text:
+                                // escaped, so no control character reaches a table or terminal.
+                                Err(Error::Answer { message, .. }) => {
+                                    Handed::Malformed(printable(&message).into_owned())
+                                }
+                                Err(other) => Handed::Malformed(printable(&other.to_string()).into_owned()),
+                            },
+                        };
+                        (*buffer, handed)
+                    })
+                    .collect();
+                Submission { student: printable(student).into_owned(), answers }
+            })
         })
         .collect()
 }

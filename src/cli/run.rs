@@ -43,10 +43,10 @@ pub struct RunArgs {
     /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (the Russian lecture notes).
     #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
     segments: Option<zsim::variants::Segments>,
-    /// With --format none: draw tile by tile, N×N pixels (default 64 when more than one thread draws; 1 to 7 draw as 8, whose bins cost less than the buffers).
+    /// With --format none, --final or --after: draw tile by tile, N×N pixels (default 64 when more than one thread draws; 1 to 7 draw as 8, whose bins cost less than the buffers).
     #[arg(long, value_name = "N")]
     tile: Option<u32>,
-    /// With --format none: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon).
+    /// With --format none, --final or --after: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon). The result is the same for every count.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
     /// Draw the scene with the machine's GPU through this API (gl: OpenGL, e.g. Mesa's llvmpipe; vulkan, with the `vulkan` feature) and list every cell where it shows another polygon than zsim under the scene's rules or the API's preset, and why.
@@ -102,14 +102,14 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.tile == Some(0) {
         return Err(zsim::Error::from(zsim::Usage::TileZero).into());
     }
-    if (args.tile.is_some() || args.threads.is_some()) && args.format != Format::None {
+    let final_only = args.final_only || args.after.is_some();
+    if (args.tile.is_some() || args.threads.is_some()) && args.format != Format::None && !final_only {
         return Err(zsim::Error::from(zsim::Usage::TilesNeedFormatNone).into());
     }
     let reading = Instant::now();
     let mut scene = Scene::load(&args.scene)?;
     let read_time = reading.elapsed();
     // `--after N`: the scene up to polygon N, shown as `--final` shows the last.
-    let final_only = args.final_only || args.after.is_some();
     if let Some(spec) = &args.after {
         let last = scene.find_polygon(spec)?;
         scene.polygons.truncate(last + 1);
@@ -156,6 +156,9 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         Format::Text => {
             emit(out, &report::scene_header(&scene, &args.scene.display().to_string()))?;
             let last = scene.polygons.len().checked_sub(1);
+            if final_only {
+                draw_all_but_the_last(&mut simulation, &scene, args);
+            }
             let mut before = simulation.stats();
             while let Some(index) = simulation.draw_next(&mut Unobserved) {
                 let after = simulation.stats();
@@ -183,6 +186,9 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             let head = serde_json::to_string(&empty).expect("serializing plain data cannot fail");
             let head = head.strip_suffix("]}").expect("RunJson ends with its steps list");
             emit(out, head)?;
+            if final_only {
+                draw_all_but_the_last(&mut simulation, &scene, args);
+            }
             let mut first = true;
             while let Some(index) = simulation.draw_next(&mut Unobserved) {
                 if final_only && index + 1 != scene.polygons.len() {
@@ -197,18 +203,10 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             emit(out, "]}\n")?;
         }
         Format::None => {
-            let threads = args.threads.map_or_else(
-                || std::thread::available_parallelism().map_or(1, usize::from),
-                |threads| threads as usize,
-            );
+            let threads = threads(args);
             // A bar only where a person waits: scenes of 10,000 polygons or more.
             let long_run = scene.polygons.len() >= 10_000;
-            let drew = if threads > 1 || args.tile.is_some_and(|t| t > 0) {
-                // Tiles keep the cells in cache and are drawn a band of tiles per job on
-                // `threads` threads; the result is the same as polygon by polygon.
-                // A tile's bin (a vector, 24 bytes, and its polygons) costs less than its
-                // cells (8 bytes each) only from 8×8 on: smaller tiles draw as 8×8, alike.
-                let tile = args.tile.unwrap_or(DEFAULT_TILE).max(MIN_TILE);
+            let drew = if let Some(tile) = tiles(args, threads) {
                 let progress =
                     progress_bar(long_run, scene.height.div_ceil(tile) as usize, &zsim::words!("progress-bands"));
                 let band_done = || progress.inc(1);
@@ -244,6 +242,35 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         }
     }
     Ok(Finish::Ok)
+}
+
+/// How many threads draw: `--threads`, else every core.
+fn threads(args: &RunArgs) -> usize {
+    args.threads.map_or_else(|| std::thread::available_parallelism().map_or(1, usize::from), |threads| threads as usize)
+}
+
+/// The side of the tiles to draw in, or `None` to draw polygon by polygon
+/// (one thread and no `--tile`). Tiles keep the cells in cache and are drawn
+/// a band of tiles per job on `threads` threads; the result is the same as
+/// polygon by polygon. A tile's bin (a vector, 24 bytes, and its polygons)
+/// costs less than its cells (8 bytes each) only from 8×8 on: smaller tiles
+/// draw as 8×8, alike.
+fn tiles(args: &RunArgs, threads: usize) -> Option<u32> {
+    (threads > 1 || args.tile.is_some_and(|t| t > 0)).then(|| args.tile.unwrap_or(DEFAULT_TILE).max(MIN_TILE))
+}
+
+/// For `--final` and `--after`: every polygon but the last, on every core
+/// (in tiles, identical to drawing them in order), so that the last one is
+/// drawn alone and its counts can be told.
+fn draw_all_but_the_last(simulation: &mut Simulation<'_>, scene: &Scene, args: &RunArgs) {
+    let Some(last) = scene.polygons.len().checked_sub(2) else { return };
+    let threads = threads(args);
+    match tiles(args, threads) {
+        Some(tile) => {
+            simulation.draw_parallel_through(last, tile, threads, &|| {});
+        }
+        None => simulation.draw_through(last, &mut Unobserved),
+    }
 }
 
 fn buffers_text(simulation: &Simulation<'_>, index: usize, name: &str, axes: bool) -> String {

@@ -9,6 +9,8 @@ use std::fmt::Write as _;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
+use rayon::prelude::*;
+
 use crate::effects::arith::{self, Arith};
 use crate::error::Error;
 use crate::scene::Scene;
@@ -157,18 +159,20 @@ fn compare(ours: &Buffers, exact: &Buffers) -> (u64, u64, u64) {
 
 /// Runs every mode over the set.
 pub fn modes(scenes: &[Scene]) -> Result<Vec<ModeRow>, Error> {
+    // The references, the conversions and the comparisons on every core; the
+    // timed runs one after the other, on one.
     let exact: Vec<Buffers> =
-        scenes.iter().map(|s| arith::run(s, Arith::Exact).map(|r| r.0)).collect::<Result<_, _>>()?;
+        scenes.par_iter().map(|s| arith::run(s, Arith::Exact).map(|r| r.0)).collect::<Result<_, _>>()?;
     let mut rows = Vec::new();
     for mode in Arith::ALL {
         // Each mode's input is converted first (vertices snapped, or turned into floats with
         // their planes), as the exact mode's is when the scene is read; only the raster is timed.
-        let inputs = scenes.iter().map(|s| arith::Prepared::new(s, mode)).collect::<Result<Vec<_>, _>>()?;
+        let inputs = scenes.par_iter().map(|s| arith::Prepared::new(s, mode)).collect::<Result<Vec<_>, _>>()?;
         let (results, time) =
             timed(|| Ok(inputs.iter().map(arith::Prepared::raster).collect::<Vec<(Buffers, Stats)>>()))?;
         let mut row = ModeRow { mode, time, pixels: 0, frame_mismatches: 0, depth_mismatches: 0, worst_depth_error: 0 };
-        for ((buffers, stats), reference) in results.iter().zip(&exact) {
-            let (frame, depth, worst) = compare(buffers, reference);
+        let compared: Vec<_> = results.par_iter().zip(&exact).map(|((b, _), r)| compare(b, r)).collect();
+        for ((_, stats), (frame, depth, worst)) in results.iter().zip(compared) {
             row.pixels += stats.tested;
             row.frame_mismatches += frame;
             row.depth_mismatches += depth;

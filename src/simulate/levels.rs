@@ -68,10 +68,10 @@ impl<O: Observer> LevelCells for OnePolygon<'_, '_, O> {
     }
 }
 
-/// Every polygon from `first` on, in scene order, on the whole raster.
+/// The polygons of a range, in scene order, on the whole raster.
 pub(super) struct InOrder<'a, 's> {
     pub(super) levels: Levels<'a, 's>,
-    pub(super) first: usize,
+    pub(super) polygons: std::ops::Range<usize>,
 }
 
 impl LevelCells for InOrder<'_, '_> {
@@ -80,7 +80,7 @@ impl LevelCells for InOrder<'_, '_> {
     fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
         let scene = self.levels.scene;
         let rect = PixelRect::raster(scene.width, scene.height);
-        for index in self.first..scene.polygons.len() {
+        for index in self.polygons.clone() {
             prefetch_ahead(scene, index);
             if fate(scene, index) == Fate::Drawn {
                 self.levels.draw((&mut *frame, &mut *depth), 0, index, rect, &mut Unobserved);

@@ -95,7 +95,7 @@ impl<'s> Simulation<'s> {
             && let Some(levels) = self.plain_levels()
         {
             // Nobody watches and the plain loop runs: one loop over the polygons.
-            self.draw_plain(levels, None);
+            self.draw_plain(levels, None, self.scene.polygons.len());
             return;
         }
         while self.draw_next(observer).is_some() {}
@@ -111,23 +111,24 @@ impl<'s> Simulation<'s> {
         Plain::new(scene).plain_levels()
     }
 
-    /// Draws every remaining polygon with the plain loop, unobserved: in
-    /// scene order, or binned into tiles as `tiling` says.
+    /// Draws the remaining polygons before `end` with the plain loop,
+    /// unobserved: in scene order, or binned into tiles as `tiling` says.
     /// Returns how many threads drew.
-    fn draw_plain(&mut self, (test, depth_max): (DepthTest, u32), tiling: Option<Tiling<'_>>) -> usize {
+    fn draw_plain(&mut self, (test, depth_max): (DepthTest, u32), tiling: Option<Tiling<'_>>, end: usize) -> usize {
         let scene = self.scene;
         let first = self.next;
-        self.next = scene.polygons.len();
-        self.stats.polygons += scene.polygons.len() - first;
+        let end = end.clamp(first, scene.polygons.len());
+        self.next = end;
+        self.stats.polygons += end - first;
         match tiling {
             None => {
                 let (stats, scratch) = (&mut self.stats, &mut self.scratch);
                 let levels = Levels { scene, test, depth_max, stats, scratch };
-                self.buffers.with_level_cells(InOrder { levels, first });
+                self.buffers.with_level_cells(InOrder { levels, polygons: first..end });
                 1
             }
             Some(tiling) => {
-                let bins = bins(scene, first, tiling.tile);
+                let bins = bins(scene, first..end, tiling.tile);
                 let tiles = Tiles { scene, test, depth_max, bins, tiling };
                 let (stats, threads) =
                     self.buffers.with_level_cells(tiles).expect("plain levels imply a level z-buffer");
@@ -160,12 +161,32 @@ impl<'s> Simulation<'s> {
     /// Returns how many threads drew: `threads` (at least 1) when the plain
     /// loop ran, 1 when the scene needed the general loop ([`Simulation::finish`]).
     pub fn finish_parallel(&mut self, tile: u32, threads: usize, band_done: &(dyn Fn() + Sync)) -> usize {
+        self.draw_parallel_before(self.scene.polygons.len(), tile, threads, band_done)
+    }
+
+    /// Like [`Simulation::finish_parallel`], for the remaining polygons up
+    /// to and including polygon `last` only (the state `--after` and
+    /// `--final` print is drawn this way, the last polygon then alone for
+    /// its counts). The result is identical to [`Simulation::draw_through`].
+    pub fn draw_parallel_through(
+        &mut self,
+        last: usize,
+        tile: u32,
+        threads: usize,
+        band_done: &(dyn Fn() + Sync),
+    ) -> usize {
+        self.draw_parallel_before(last.saturating_add(1), tile, threads, band_done)
+    }
+
+    fn draw_parallel_before(&mut self, end: usize, tile: u32, threads: usize, band_done: &(dyn Fn() + Sync)) -> usize {
         match self.plain_levels() {
             Some(levels) if tile > 0 => {
-                self.draw_plain(levels, Some(Tiling { tile, threads: threads.max(1), band_done }))
+                self.draw_plain(levels, Some(Tiling { tile, threads: threads.max(1), band_done }), end)
             }
             _ => {
-                self.finish(&mut Unobserved);
+                if end > 0 {
+                    self.draw_through(end - 1, &mut Unobserved);
+                }
                 1
             }
         }

@@ -98,10 +98,10 @@ impl LevelCells for Tiles<'_> {
 
 /// The drawn polygons from `first` on, binned by the `tile`×`tile` tiles
 /// their bounding boxes touch, each bin in scene order.
-pub(super) fn bins(scene: &Scene, first: usize, tile: u32) -> Vec<Vec<u32>> {
+pub(super) fn bins(scene: &Scene, polygons: std::ops::Range<usize>, tile: u32) -> Vec<Vec<u32>> {
     let tiles_x = scene.width.div_ceil(tile);
     let mut bins: Vec<Vec<u32>> = vec![Vec::new(); tiles_x as usize * scene.height.div_ceil(tile) as usize];
-    for index in first..scene.polygons.len() {
+    for index in polygons {
         if fate(scene, index) != Fate::Drawn {
             continue;
         }

@@ -5,6 +5,8 @@
 
 use std::collections::BTreeMap;
 
+use rayon::prelude::*;
+
 use crate::numbers::{Q, decimal};
 use crate::observe::check::{Matrix, compare};
 use crate::observe::explain::Buffer;
@@ -102,8 +104,9 @@ pub struct CommonMistake {
 /// mistakes.
 pub fn grade(submissions: &[Submission], expected: &[(Buffer, Matrix)]) -> Vec<(Grade, Vec<WrongCells>)> {
     let total: usize = expected.iter().map(|(_, m)| m.iter().map(Vec::len).sum::<usize>()).sum();
+    // Students in parallel, rows in their order.
     submissions
-        .iter()
+        .par_iter()
         .map(|submission| {
             let (mut frame_wrong, mut depth_wrong, mut right) = (None, None, 0usize);
             let (mut malformed, mut missing, mut wrong) = (None, None, false);

@@ -140,7 +140,7 @@ fn usage_errors_exit_with_2() {
     assert_eq!(run.code, 2);
     assert_eq!(
         run.stderr,
-        "zsim: --tile and --threads apply to --format none (the other formats show the state after each polygon, drawn in order)\n"
+        "zsim: --tile and --threads apply to --format none, --final and --after (otherwise the state after each polygon is shown, drawn in order)\n"
     );
     let run = zsim_in(None, &["run", "examples/rogers.json", "--threads", "2", "--format", "json"]);
     assert_eq!((run.code, run.stdout.as_str()), (2, ""));

@@ -73,6 +73,37 @@ fn format_none_prints_one_summary_line() {
     snapshot!("run_rogers_none", format!("{counts}\n"));
 }
 
+/// `--final` and `--after` draw on every core (tiles on threads, then the
+/// last polygon alone for its counts) and print the same bytes as one thread
+/// drawing polygon by polygon, in text and JSON.
+#[test]
+fn final_and_after_print_the_same_bytes_on_any_number_of_threads() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("final-threads");
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("scene.json");
+    let random =
+        zsim(&["random", "--count", "3000", "--width", "96", "--height", "80", "--max-size", "20", "--seed", "5"]);
+    std::fs::write(&scene, random.stdout).unwrap();
+    let scene = scene.to_str().unwrap();
+    for shown in [
+        &["--final"][..],
+        &["--after", "1717"],
+        &["--final", "--format", "json"],
+        &["--after", "2", "--format", "json"],
+    ] {
+        let one = zsim(&[&["run", scene, "--threads", "1"], shown].concat());
+        assert_eq!((one.code, one.stderr.as_str()), (0, ""), "{shown:?}");
+        assert!(one.stdout.len() > 96 * 80, "{shown:?}: the buffers are printed");
+        for threads in
+            [&["--threads", "2"][..], &["--threads", "3", "--tile", "8"], &["--threads", "1", "--tile", "16"], &[]]
+        {
+            let run = zsim(&[&["run", scene], shown, threads].concat());
+            assert_eq!((run.code, run.stderr.as_str()), (0, ""), "{shown:?} {threads:?}");
+            assert!(run.stdout == one.stdout, "{shown:?} {threads:?}: the output differs from one thread's");
+        }
+    }
+}
+
 #[test]
 fn format_none_says_how_many_threads_drew() {
     let drew = |args: &[&str]| {

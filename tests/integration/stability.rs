@@ -180,6 +180,7 @@ proptest! {
         tile in 1u32..6,
         threads in 1usize..5,
         test in prop::sample::select(vec!["greater", "less", "greater-equal", "less-equal", "always", "never"]),
+        stop in 0usize..5,
     ) {
         // Every depth test: the unobserved loop's branch-free comparison against `DepthTest::passes`.
         let json = scene_json_with_test(&polygons, test);
@@ -196,6 +197,17 @@ proptest! {
         prop_assert_eq!(quiet.stats(), watched.stats());
         prop_assert_eq!(watching.pixels, quiet.stats().tested);
         prop_assert_eq!(quiet.stats().written, tiled.stats().written);
+        // Part of the scene on threads (as `--final` and `--after` draw it), the rest in order.
+        let stop = stop.min(scene.polygons.len() - 1);
+        let (mut in_order, mut partly) = (Simulation::new(&scene), Simulation::new(&scene));
+        in_order.draw_through(stop, &mut Unobserved);
+        partly.draw_parallel_through(stop, tile, threads, &|| {});
+        prop_assert_eq!(in_order.buffers(), partly.buffers(), "through {}, tile {}, {} threads: {}", stop, tile, threads, json);
+        prop_assert_eq!(in_order.stats(), partly.stats());
+        while in_order.draw_next(&mut Unobserved).is_some() {}
+        while partly.draw_next(&mut Unobserved).is_some() {}
+        prop_assert_eq!(quiet.buffers(), partly.buffers());
+        prop_assert_eq!(in_order.stats(), partly.stats());
     }
 
     /// The everyday guard against panics in the reader: any text is a scene or an error,
