@@ -126,6 +126,8 @@ pub use numbers::{
 };
 #[cfg(feature = "gpu")]
 pub use observe::gpu;
+#[cfg(feature = "gpu")]
+pub use observe::race;
 pub use observe::step::{Meant, PolygonTrace, Skip, Tracer, judge, skip_text};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
 pub use observe::{check, explain, figure, history, report, tie};

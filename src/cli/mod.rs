@@ -12,6 +12,8 @@ mod generate;
 mod grade;
 mod page;
 mod run;
+#[cfg(feature = "gpu")]
+mod speed;
 mod step;
 mod tui;
 mod variants;
@@ -65,6 +67,9 @@ enum Command {
     Cs418(cs418::Cs418Args),
     /// Draw the raster as an SVG figure: grid, centres, scanlines, outlines, covered pixels.
     Figure(figure::FigureArgs),
+    /// Time zsim beside the machine's OpenGL (Mesa's llvmpipe) on the same scene, in alternating pairs: medians and their ratio.
+    #[cfg(feature = "gpu")]
+    Speed(speed::SpeedArgs),
 }
 
 /// How a command ended, when it did not fail.
@@ -121,6 +126,8 @@ pub fn main() -> ExitCode {
         Command::Accuracy(args) => accuracy::run(&args, &mut out),
         Command::Memory(args) => generate::memory_command(&args, &mut out),
         Command::Random(args) => generate::random_command(&args, &mut out),
+        #[cfg(feature = "gpu")]
+        Command::Speed(args) => speed::run(&args, &mut out),
     };
     let result = result.and_then(|finish| out.flush().map(|()| finish).map_err(Failure::Io));
     match result {

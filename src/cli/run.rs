@@ -218,7 +218,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 // The bar moves every 1024 polygons, so that it costs nothing per polygon.
                 for first in (0..scene.polygons.len()).step_by(1024) {
                     let last = (first + 1024).min(scene.polygons.len()) - 1;
-                    simulation.draw_through(last, &mut Unobserved);
+                    simulation.draw_parallel_through(last, 0, 1, &|| {});
                     progress.set_position(last as u64 + 1);
                 }
                 progress.finish_and_clear();
@@ -269,7 +269,9 @@ fn draw_all_but_the_last(simulation: &mut Simulation<'_>, scene: &Scene, args: &
         Some(tile) => {
             simulation.draw_parallel_through(last, tile, threads, &|| {});
         }
-        None => simulation.draw_through(last, &mut Unobserved),
+        None => {
+            simulation.draw_parallel_through(last, 0, 1, &|| {});
+        }
     }
 }
 

@@ -9,6 +9,8 @@ pub mod figure;
 #[cfg(feature = "gpu")]
 pub mod gpu;
 pub mod history;
+#[cfg(feature = "gpu")]
+pub mod race;
 pub mod report;
 pub mod step;
 pub mod tie;

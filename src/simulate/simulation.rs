@@ -167,7 +167,8 @@ impl<'s> Simulation<'s> {
     /// Like [`Simulation::finish_parallel`], for the remaining polygons up
     /// to and including polygon `last` only (the state `--after` and
     /// `--final` print is drawn this way, the last polygon then alone for
-    /// its counts). The result is identical to [`Simulation::draw_through`].
+    /// its counts); `tile` 0 draws polygon by polygon on this thread with the
+    /// plain loop. The result is identical to [`Simulation::draw_through`].
     pub fn draw_parallel_through(
         &mut self,
         last: usize,
@@ -183,7 +184,8 @@ impl<'s> Simulation<'s> {
             Some(levels) if tile > 0 => {
                 self.draw_plain(levels, Some(Tiling { tile, threads: threads.max(1), band_done }), end)
             }
-            _ => {
+            Some(levels) => self.draw_plain(levels, None, end),
+            None => {
                 if end > 0 {
                     self.draw_through(end - 1, &mut Unobserved);
                 }

@@ -707,6 +707,11 @@ gpu-background = nothing
 gpu-exact-depth = { $polygon } at exact depth { $depth }
 gpu-why-depth = the GPU stored depth { $gpu } (interpolated in f32, kept in 24 bits) for { $shown }; the scene's rules keep { $book }
 gpu-not-convex = note: { $polygon } is not convex: the GPU draws it as a fan of triangles from its first vertex, which is not the polygon
+speed-header = { $scene }: { $triangles } triangles, { $pixels } pixel centres tested; zsim on { $threads } { $threads ->
+    [one] thread
+   *[other] threads
+} against { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } alternating pairs after one untimed round each
+speed-result = zsim { $zsim } ms, GPU { $gpu } ms (medians): zsim takes { $ratio }× the GPU's time (pairs from { $low }× to { $high }×)
 usage-compare-gpu-plain = --compare-gpu compares the plain algorithm: this scene asks for per-pixel effects or antialiasing
 usage-no-gpu = --compare-gpu: { $reason }
 gpu-why-depth-unread = the GPU shows { $shown }; the scene's rules keep { $book } (the depths decided: the GPU interpolates them in f32)

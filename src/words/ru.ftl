@@ -686,6 +686,11 @@ gpu-background = ничего
 gpu-exact-depth = { $polygon } на точной глубине { $depth }
 gpu-why-depth = GPU записал глубину { $gpu } (интерполяция в f32, хранение в 24 битах) для { $shown }; по правилам сцены остаётся { $book }
 gpu-not-convex = замечание: { $polygon } не выпуклый: GPU рисует его веером треугольников из первой вершины, а это не тот многоугольник
+speed-header = { $scene }: треугольников { $triangles }, проверено центров пикселей { $pixels }; zsim на { $threads } { $threads ->
+    [one] потоке
+   *[other] потоках
+} против { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } чередующихся пар после одного неучтённого прогона каждого
+speed-result = zsim { $zsim } мс, GPU { $gpu } мс (медианы): zsim тратит { $ratio }× времени GPU (в парах от { $low }× до { $high }×)
 usage-compare-gpu-plain = --compare-gpu сравнивает простой алгоритм: эта сцена требует попиксельных эффектов или сглаживания
 usage-no-gpu = --compare-gpu: { $reason }
 gpu-why-depth-unread = GPU показывает { $shown }; по правилам сцены остаётся { $book } (решили глубины: GPU интерполирует их в f32)

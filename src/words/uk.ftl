@@ -686,6 +686,11 @@ gpu-background = нічого
 gpu-exact-depth = { $polygon } на точній глибині { $depth }
 gpu-why-depth = GPU записав глибину { $gpu } (інтерполяція в f32, зберігання в 24 бітах) для { $shown }; за правилами сцени лишається { $book }
 gpu-not-convex = примітка: { $polygon } не опуклий: GPU малює його віялом трикутників із першої вершини, а це не той багатокутник
+speed-header = { $scene }: трикутників { $triangles }, перевірено центрів пікселів { $pixels }; zsim на { $threads } { $threads ->
+    [one] потоці
+   *[other] потоках
+} проти { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } пар по черзі після одного неврахованого прогону кожного
+speed-result = zsim { $zsim } мс, GPU { $gpu } мс (медіани): zsim витрачає { $ratio }× часу GPU (у парах від { $low }× до { $high }×)
 usage-compare-gpu-plain = --compare-gpu порівнює простий алгоритм: ця сцена потребує попіксельних ефектів або згладжування
 usage-no-gpu = --compare-gpu: { $reason }
 gpu-why-depth-unread = GPU показує { $shown }; за правилами сцени лишається { $book } (вирішили глибини: GPU інтерполює їх у f32)

@@ -301,6 +301,48 @@ fn compare_gpu_explains_each_cell_where_opengl_differs() {
     assert!(refused.stderr.contains("--compare-gpu compares the plain algorithm"), "{}", refused.stderr);
 }
 
+/// `zsim speed`: zsim and llvmpipe draw the same scene in alternating pairs;
+/// the report names both, the counts and the threads, and its ratio is the
+/// quotient of the medians it prints.
+#[test]
+fn speed_times_zsim_beside_opengl_in_alternating_pairs() {
+    if open().is_none() {
+        return;
+    }
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("speed");
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("scene.json");
+    let random = crate::zsim(&["random", "--count", "400", "--width", "128", "--height", "128", "--seed", "2"]);
+    std::fs::write(&scene, random.stdout).unwrap();
+    let scene = scene.to_str().unwrap();
+    for (threads, lp) in [("1", "0"), ("2", "2")] {
+        let run = crate::zsim(&["speed", scene, "--pairs", "3", "--threads", threads]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let (header, result) = run.stdout.split_once('\n').unwrap();
+        let drawn = Scene::load(std::path::Path::new(scene)).unwrap();
+        let mut simulation = Simulation::new(&drawn);
+        simulation.finish(&mut zsim::Unobserved);
+        let tested = simulation.stats().tested;
+        assert!(header.starts_with(&format!("{scene}: ")), "{header}");
+        assert!(
+            header.contains(&format!(" triangles, {tested} pixel centres tested; zsim on {threads} thread")),
+            "{header}"
+        );
+        assert!(
+            header.contains("against llvmpipe")
+                && header.contains(&format!("(LP_NUM_THREADS={lp}), 3 alternating pairs")),
+            "{header}"
+        );
+        let numbers: Vec<f64> =
+            result.split(|c: char| !(c.is_ascii_digit() || c == '.')).filter_map(|t| t.parse().ok()).collect();
+        let [zsim, gpu, ratio, low, high] = numbers[..] else { panic!("{result}") };
+        assert!(result.starts_with("zsim ") && result.contains(" ms (medians): zsim takes "), "{result}");
+        assert!(low <= ratio && ratio <= high, "{result}");
+        // The ratio is of the unrounded medians; the printed ones are rounded to 0.01 ms.
+        assert!((zsim / gpu - ratio).abs() <= 0.005 + 0.01 * (zsim + gpu) / (gpu * gpu), "{result}");
+    }
+}
+
 /// What Vulkan covers for one triangle drawn alone, in zsim's raster.
 fn vulkan_covers(vulkan: &Vulkan, triangle: &[[f64; 2]; 3]) -> Vec<(u32, u32)> {
     let vertices = triangle.map(|corner| shifted(corner, 0.5));

@@ -1,0 +1,129 @@
+//! zsim beside the machine's OpenGL (Mesa's llvmpipe where no GPU is
+//! present), on the same triangles: each side drawn in turn, pair after pair
+//! in one run, so that a busy machine slows both alike; medians and their
+//! ratio. zsim's time is what `zsim run --format none` prints as rasterized
+//! (clearing the buffers, then every polygon); the GPU's is a clear, the draw
+//! of a vertex buffer uploaded beforehand, and `glFinish`.
+
+use std::time::{Duration, Instant};
+
+use crate::error::{Error, Usage};
+use crate::observe::gpu::{Gl, GpuError, Triangles, triangles};
+use crate::scene::Scene;
+use crate::simulate::simulation::Simulation;
+
+/// The times of a race, pair by pair.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Race {
+    /// The GPU implementation, as it names itself.
+    pub renderer: String,
+    /// Triangles the GPU drew (polygons as fans).
+    pub triangles: usize,
+    /// Pixel centres zsim tested in one drawing.
+    pub pixels: u64,
+    /// Threads zsim drew on.
+    pub threads: usize,
+    /// zsim's time in each pair.
+    pub zsim: Vec<Duration>,
+    /// The GPU's time in each pair.
+    pub gpu: Vec<Duration>,
+}
+
+impl Race {
+    /// zsim's median time.
+    pub fn zsim_median(&self) -> Duration {
+        median(&self.zsim)
+    }
+
+    /// The GPU's median time.
+    pub fn gpu_median(&self) -> Duration {
+        median(&self.gpu)
+    }
+
+    /// zsim's median over the GPU's: below 1, zsim is faster.
+    pub fn ratio(&self) -> f64 {
+        self.zsim_median().as_secs_f64() / self.gpu_median().as_secs_f64().max(1e-12)
+    }
+
+    /// The lowest and highest ratio of one pair.
+    pub fn pair_ratios(&self) -> (f64, f64) {
+        let ratios = self.zsim.iter().zip(&self.gpu).map(|(z, g)| z.as_secs_f64() / g.as_secs_f64().max(1e-12));
+        ratios.fold((f64::INFINITY, 0.0f64), |(low, high), r| (low.min(r), high.max(r)))
+    }
+}
+
+/// The median of some durations (the lower middle one of an even count).
+fn median(times: &[Duration]) -> Duration {
+    let mut sorted = times.to_vec();
+    sorted.sort_unstable();
+    sorted.get(sorted.len().saturating_sub(1) / 2).copied().unwrap_or_default()
+}
+
+/// Races zsim against the machine's OpenGL on `scene`, `pairs` times after
+/// one untimed round each: zsim polygon by polygon on this thread (`tiling`
+/// `None`), or in tiles of `tile` on `threads` threads. The GPU draws with
+/// the scene's depth test into a framebuffer of the raster's size (plus the
+/// margin that keeps vertices unclipped, see [`Triangles`]).
+pub fn race(scene: &Scene, pairs: usize, tiling: Option<(u32, usize)>) -> Result<Race, Error> {
+    if scene.has_pixel_effects() || scene.effects.antialias.is_some() {
+        return Err(Usage::CompareGpuPlainOnly.into());
+    }
+    let no_gpu = |error: GpuError| Error::from(Usage::NoGpu { reason: error.to_string() });
+    let Triangles { triangles, margin, .. } = triangles(scene);
+    let gl = Gl::open().map_err(no_gpu)?;
+    let size = (scene.width + 2 * margin, scene.height + 2 * margin);
+    let drawing = gl.upload(size, &triangles, Some((scene.depth_test, scene.depth_max()))).map_err(no_gpu)?;
+    let zsim = || {
+        let start = Instant::now();
+        let mut simulation = Simulation::new(scene);
+        let threads = match tiling {
+            Some((tile, threads)) => simulation.finish_parallel(tile, threads, &|| {}),
+            None => simulation.draw_parallel_through(scene.polygons.len().saturating_sub(1), 0, 1, &|| {}),
+        };
+        (start.elapsed(), simulation.stats().tested, threads)
+    };
+    let gpu = || {
+        let start = Instant::now();
+        drawing.draw();
+        start.elapsed()
+    };
+    // One round each before timing: caches, page faults, the JIT's first compile.
+    let (_, pixels, threads) = zsim();
+    gpu();
+    let mut race = Race {
+        renderer: gl.renderer().to_string(),
+        triangles: triangles.len(),
+        pixels,
+        threads,
+        zsim: Vec::with_capacity(pairs),
+        gpu: Vec::with_capacity(pairs),
+    };
+    for _ in 0..pairs {
+        race.zsim.push(zsim().0);
+        race.gpu.push(gpu());
+    }
+    drawing.picture().map_err(no_gpu)?;
+    Ok(race)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn medians_and_ratios_are_of_the_pairs() {
+        let ms = Duration::from_millis;
+        let race = Race {
+            renderer: "test".into(),
+            triangles: 1,
+            pixels: 1,
+            threads: 1,
+            zsim: vec![ms(30), ms(10), ms(20), ms(40)],
+            gpu: vec![ms(10), ms(20), ms(20), ms(80)],
+        };
+        assert_eq!((race.zsim_median(), race.gpu_median()), (ms(20), ms(20)));
+        assert_eq!(race.ratio(), 1.0);
+        assert_eq!(race.pair_ratios(), (0.5, 3.0));
+        assert_eq!(median(&[]), Duration::ZERO);
+    }
+}
