@@ -12,7 +12,10 @@ use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
-use crate::simulate::setup::{Stats, fate, prefetch_ahead};
+use crate::simulate::setup::{LARGE_BUFFER, Stats, fate, prefetch_ahead, prefetch_cells};
+
+/// How many polygons ahead the plain loop asks for the cells of.
+const AHEAD: usize = 2;
 
 /// What the plain loop on a quantized z-buffer needs besides the cells.
 pub(super) struct Levels<'a, 's> {
@@ -80,8 +83,13 @@ impl LevelCells for InOrder<'_, '_> {
     fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
         let scene = self.levels.scene;
         let rect = PixelRect::raster(scene.width, scene.height);
+        // Cells worth asking for ahead only when the buffers outgrow the cache.
+        let far = std::mem::size_of_val(depth) > LARGE_BUFFER;
         for index in self.polygons.clone() {
             prefetch_ahead(scene, index);
+            if far && index + AHEAD < self.polygons.end {
+                prefetch_cells(scene, index + AHEAD, (&*frame, &*depth), 0);
+            }
             if fate(scene, index) == Fate::Drawn {
                 self.levels.draw((&mut *frame, &mut *depth), 0, index, rect, &mut Unobserved);
             }

@@ -55,6 +55,45 @@ pub(super) fn prefetch<T>(data: *const T) {
     let _ = data;
 }
 
+/// Buffers larger than this (a z-buffer's bytes) outgrow a core's cache:
+/// asking for their cells ahead ([`prefetch_cells`]) pays only then.
+pub(super) const LARGE_BUFFER: usize = 1 << 20;
+
+/// Asks for the cells of polygon `index`'s bounding box, row by row, in
+/// both buffers (whose first row is raster row `first_row`), so that they
+/// are in cache when it is drawn a couple of polygons later: a large raster's
+/// rows lie a page apart, and waiting for each in turn is most of the time a
+/// small triangle takes. Only for boxes of at most 64 rows of 256 cells
+/// (larger polygons spend long enough on their pixels).
+#[inline]
+pub(super) fn prefetch_cells<F>(scene: &Scene, index: usize, (frame, depth): (&[F], &[u32]), first_row: u32) {
+    const ROWS: u32 = 64;
+    const CELLS: u32 = 256;
+    let Some(polygon) = scene.polygons.get(index) else { return };
+    let Some(rect) = pixel_bounds(polygon.geometry(), scene.width, scene.height) else { return };
+    let (rows, columns) = (rect.rows, rect.columns);
+    if rows.1 - rows.0 >= ROWS || columns.1 - columns.0 >= CELLS || rows.0 < first_row {
+        return;
+    }
+    let width = scene.width as usize;
+    let line = |bytes: usize| (64 / bytes.max(1)).max(1);
+    for row in rows.0..=rows.1 {
+        let start = (row - first_row) as usize * width;
+        let (first, last) = (start + columns.0 as usize, start + columns.1 as usize);
+        if last >= depth.len().min(frame.len()) {
+            return;
+        }
+        for cell in (first..=last).step_by(line(4)) {
+            prefetch(&depth[cell]);
+        }
+        prefetch(&depth[last]);
+        for cell in (first..=last).step_by(line(std::mem::size_of::<F>())) {
+            prefetch(&frame[cell]);
+        }
+        prefetch(&frame[last]);
+    }
+}
+
 /// Whether polygon `index` is drawn, and if not, why.
 pub fn fate(scene: &Scene, index: usize) -> Fate {
     let polygon = &scene.polygons[index];

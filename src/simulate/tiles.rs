@@ -9,7 +9,7 @@ use crate::scene::Scene;
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Unobserved};
 use crate::simulate::levels::Levels;
-use crate::simulate::setup::{Stats, fate, pixel_bounds, prefetch};
+use crate::simulate::setup::{LARGE_BUFFER, Stats, fate, pixel_bounds, prefetch, prefetch_cells};
 
 /// How a tiled run is spread.
 #[derive(Clone, Copy)]
@@ -42,6 +42,8 @@ impl Tiles<'_> {
         let mut levels =
             Levels { scene, test: self.test, depth_max: self.depth_max, stats: &mut stats, scratch: &mut scratch };
         let first_row = ty * tile;
+        // A band's cells are worth asking for ahead when its rows outgrow the cache.
+        let far = std::mem::size_of_val(depth) > LARGE_BUFFER;
         for tx in 0..tiles_x {
             let rect = PixelRect {
                 columns: (tx * tile, ((tx + 1) * tile).min(scene.width) - 1),
@@ -56,6 +58,9 @@ impl Tiles<'_> {
                 }
                 if let Some(&ahead) = bin.get(k + 2) {
                     prefetch(scene.polygons[ahead as usize].geometry().points.as_ptr());
+                    if far {
+                        prefetch_cells(scene, ahead as usize, (&*frame, &*depth), first_row);
+                    }
                 }
                 levels.draw((&mut *frame, &mut *depth), first_row, index as usize, rect, &mut Unobserved);
             }
