@@ -25,6 +25,14 @@ pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
             message: words!("scene-not-object", found = words!(found)),
         });
     }
+    // Read at full speed first; only a file that fails is read again, tracking
+    // where in its structure the failure is (that costs a third of the time).
+    let mut deserializer = serde_json::Deserializer::from_str(text);
+    if let Ok(file) = SceneFile::deserialize(&mut deserializer)
+        && deserializer.end().is_ok()
+    {
+        return file.validate(path);
+    }
     let mut deserializer = serde_json::Deserializer::from_str(text);
     let file: SceneFile = serde_path_to_error::deserialize(&mut deserializer).map_err(|error| {
         // A syntax error has no place in the scene's structure: its line and column say where.
