@@ -51,7 +51,9 @@ impl<'s> Levels<'_, 's> {
             stats: &mut *self.stats,
             observer,
         };
-        rasterize(polygon.geometry(), self.scene.rules, rect, self.scratch, &mut sink);
+        if !sink.small_triangle(polygon.geometry(), self.scene.rules, rect) {
+            rasterize(polygon.geometry(), self.scene.rules, rect, self.scratch, &mut sink);
+        }
     }
 }
 
@@ -142,14 +144,7 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         // integer stored s: z > s ⇔ ⌈z⌉ > s, z ≥ s ⇔ ⌊z⌋ ≥ s, z < s ⇔ ⌊z⌋ < s,
         // z ≤ s ⇔ ⌈z⌉ ≤ s. So each test is sign·(v − s) > threshold, with v the
         // floor or the ceiling, sign ±1 and threshold 0 (strict) or −1 (or equal).
-        let use_ceiling = matches!(self.test, DepthTest::Greater | DepthTest::LessEqual);
-        let sign: i64 = if self.test.larger_is_nearer() { 1 } else { -1 };
-        let threshold = match self.test {
-            // sign·(v − s) lies well inside ±2^62 (the checks above), so these decide alone.
-            DepthTest::Always => i64::MIN,
-            DepthTest::Never => i64::MAX,
-            _ => -i64::from(self.test.equal_passes()),
-        };
+        let (use_ceiling, sign, threshold) = self.test_constants();
         let (max, value) = (i64::from(self.depth_max), self.value);
         let start = (row - self.first_row) as usize * self.width;
         let cells = start + first as usize..=start + last as usize;

@@ -2,7 +2,8 @@
 //! polygon into the buffers (`buffer`) through the per-pixel stages the scene
 //! asks for (`stages`), telling an observer what happens (`events`); the
 //! plain loop writes the cells directly (`levels`), in tiles on several
-//! threads when nobody watches (`tiles`). Imports: scene and the layers before it.
+//! threads when nobody watches (`tiles`), small triangles by edge functions
+//! (`triangle`). Imports: scene and the layers before it.
 pub mod buffer;
 pub mod events;
 mod levels;
@@ -10,3 +11,4 @@ pub mod setup;
 pub mod simulation;
 pub mod stages;
 mod tiles;
+mod triangle;

@@ -143,6 +143,54 @@ fn scene_text() -> impl Strategy<Value = String> {
     )
 }
 
+/// Small triangles (within 3 pixels, vertices on a 1/2 grid so that edges
+/// often pass through centres, depths over
+/// sixths on any plane) as the unobserved loop draws them by edge functions,
+/// against the scan converter one pixel at a time: the same buffers and counts
+/// under every depth test, on several depth sizes.
+fn small_triangles_scene(triangles: &[[(i64, i64); 3]], planes: &[(i64, i64, i64)], test: &str, bits: u32) -> String {
+    let list: Vec<String> = triangles
+        .iter()
+        .zip(planes.iter().cycle())
+        .enumerate()
+        .map(|(i, (t, (z0, sx, sy)))| {
+            let vertices: Vec<String> =
+                t.iter().map(|(x, y)| format!("[\"{x}/2\", \"{y}/2\", \"{}/6\"]", z0 + sx * x + sy * y)).collect();
+            format!("{{\"value\": {}, \"vertices\": [{}]}}", i % 3 + 1, vertices.join(", "))
+        })
+        .collect();
+    format!(
+        "{{\"width\": 12, \"height\": 10, \"depth_bits\": {bits}, \"depth_test\": \"{test}\", \"polygons\": [{}]}}",
+        list.join(", ")
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    #[test]
+    fn small_triangles_draw_as_the_scan_converter_draws_them(
+        triangles in prop::collection::vec(
+            (-2i64..25, -2i64..21).prop_flat_map(|(x, y)| prop::array::uniform3((x..x + 7, y..y + 7))),
+            1..30,
+        ),
+        planes in prop::collection::vec((0i64..200, -9i64..10, -9i64..10), 1..4),
+        test in prop::sample::select(vec!["greater", "less", "greater-equal", "less-equal", "always", "never"]),
+        bits in prop::sample::select(vec![2u32, 4, 8]),
+    ) {
+        let json = small_triangles_scene(&triangles, &planes, test, bits);
+        let scene = Scene::from_json(&json, Path::new("small.json")).expect("a valid scene");
+        let mut quiet = Simulation::new(&scene);
+        quiet.finish(&mut Unobserved);
+        let mut watched = Simulation::new(&scene);
+        let mut watching = Watching::default();
+        watched.finish(&mut watching);
+        prop_assert_eq!(quiet.buffers(), watched.buffers(), "scene: {}", json);
+        prop_assert_eq!(quiet.stats(), watched.stats(), "scene: {}", json);
+        prop_assert_eq!(watching.pixels, quiet.stats().tested);
+    }
+}
+
 /// A planar polygon of 3 to 6 vertices (convex, concave or self-crossing):
 /// z = z0 + sx·x + sy·y in the scene's units of quarters and sixths.
 fn planar_polygon() -> impl Strategy<Value = Vec<(i64, i64, i64)>> {

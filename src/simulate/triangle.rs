@@ -1,0 +1,147 @@
+//! Small triangles of the plain loop, nobody watching, on buffers that fit
+//! the cache: the book's rules decided by edge functions over the bounding
+//! box, in 64-bit integers, without a division per row. A triangle is most of a small triangle's cost
+//! in the scan converter's setup (its edges, its rows, a division per span);
+//! here the setup is three edge functions and one depth stepper.
+//!
+//! Why it is the same: with the book's rules (rows half-open, columns
+//! `CentreInside`), a triangle's scanline at `y_min ≤ y < y_max` meets
+//! exactly two of its edges (each holds `y_low ≤ y < y_high`; a horizontal one
+//! none), and the span between their crossings, ends included, is the closed
+//! triangle's section at `y`. So a centre is covered exactly when every edge
+//! function (signed so that the inside is positive) is at least 0 and the
+//! centre lies below `y_max`. The depth is the same stepper as the span's,
+//! stepped down the rows by whole part and remainder. The proptest
+//! `every_path_draws_alike` and `small_triangles_draw_as_the_scan_converter_draws_them`
+//! hold it to the scan converter.
+
+use std::hint::select_unpredictable;
+
+use crate::geometry::plane::Geometry;
+use crate::numbers::Word;
+use crate::raster::depth::{DepthPlane, DepthTest};
+use crate::raster::sink::PixelRect;
+use crate::rules::{ColumnRule, RowRule, Rules};
+use crate::simulate::buffer::FrameCell;
+use crate::simulate::events::Observer;
+use crate::simulate::levels::LevelSink;
+use crate::simulate::setup::LARGE_BUFFER;
+
+/// The largest bounding box (in pixel centres) drawn this way: above it the
+/// scan converter, which visits only covered centres, is faster.
+const MAX_BOX: i64 = 24 * 24;
+
+/// Coordinates (scaled) below this keep every edge function in 62 bits.
+const MAX_COORDINATE: i64 = 1 << 29;
+
+impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
+    /// Draws a small triangle within `rect` by edge functions, with the same
+    /// cells and counts as the scan converter; `false` (having done nothing)
+    /// when the triangle, the rules or an observer need the scan converter.
+    pub(super) fn small_triangle(&mut self, geometry: &Geometry, rules: Rules, rect: PixelRect) -> bool {
+        if O::OBSERVES_PIXELS
+            || O::OBSERVES_SCANLINES
+            || rules.rows != RowRule::HalfOpen
+            || rules.columns != ColumnRule::CentreInside
+            || geometry.big().is_some()
+            || !geometry.fits_i64()
+            // Every cell of the box is rewritten: on buffers larger than the cache, the
+            // cells around the triangle would go back to memory for nothing.
+            || std::mem::size_of_val(self.depth) > LARGE_BUFFER
+        {
+            return false;
+        }
+        let [p, q, r] = match geometry.points[..] {
+            [p, q, r] => [p, q, r].map(|v| [v[0], v[1]]),
+            _ => return false,
+        };
+        let d = geometry.denominator;
+        let small = |v: i128| v.unsigned_abs() < MAX_COORDINATE as u128;
+        if ![p, q, r].iter().flatten().all(|&v| small(v)) || !small(d * (2 * i128::from(u16::MAX) + 2)) {
+            return false;
+        }
+        let ([px, py], [qx, qy], [rx, ry]) = (p.map(|v| v as i64), q.map(|v| v as i64), r.map(|v| v as i64));
+        let d = d as i64;
+        let two_d = 2 * d;
+        // Rows with y_min ≤ (2row + 1)·D < y_max; columns whose centres lie within x_min … x_max.
+        let (y_min, y_max) = (py.min(qy).min(ry), py.max(qy).max(ry));
+        let (x_min, x_max) = (px.min(qx).min(rx), px.max(qx).max(rx));
+        let first_row = (y_min - d).ceil_div(two_d).max(i64::from(rect.rows.0));
+        let last_row = ((y_max - d).ceil_div(two_d) - 1).min(i64::from(rect.rows.1));
+        let first_column = (x_min - d).ceil_div(two_d).max(i64::from(rect.columns.0));
+        let last_column = (x_max - d).floor_div(two_d).0.min(i64::from(rect.columns.1));
+        if first_row > last_row || first_column > last_column {
+            return true;
+        }
+        if (last_row - first_row + 1) * (last_column - first_column + 1) > MAX_BOX {
+            return false;
+        }
+        // Edge functions, inside positive: e(X, Y) = (bx − ax)(Y − ay) − (by − ay)(X − ax),
+        // times the winding's sign (Newell's c).
+        let sign: i64 = if geometry.c() > 0 { 1 } else { -1 };
+        let (centre_x, centre_y) = ((2 * first_column + 1) * d, (2 * first_row + 1) * d);
+        let edge = |[ax, ay]: [i64; 2], [bx, by]: [i64; 2]| {
+            let (dx, dy) = (sign * (bx - ax), sign * (by - ay));
+            // At the first centre; per column −dy·2D, per row +dx·2D.
+            (dx * (centre_y - ay) - dy * (centre_x - ax), -dy * two_d, dx * two_d)
+        };
+        let edges = [edge([px, py], [qx, qy]), edge([qx, qy], [rx, ry]), edge([rx, ry], [px, py])];
+        let plane = DepthPlane::<i64>::new(geometry);
+        let stepper = plane.start_at(plane.row_numerator(centre_y), first_column as u32);
+        let (mut row_whole, mut row_remainder, denominator, step_whole, step_remainder) = stepper.parts();
+        let (down_whole, down_remainder) = plane.row_step().floor_div(denominator);
+        let (use_ceiling, sign, threshold) = self.test_constants();
+        let (max, value) = (i64::from(self.depth_max), self.value);
+        let width = self.width;
+        let (mut tested, mut written) = (0u64, 0u64);
+        let mut row_edges = edges.map(|e| e.0);
+        for row in first_row..=last_row {
+            let start = (row as u32 - self.first_row) as usize * width;
+            let cells = start + first_column as usize..=start + last_column as usize;
+            let [mut e0, mut e1, mut e2] = row_edges;
+            let (mut whole, mut remainder) = (row_whole, row_remainder);
+            // Branch-free, as the span's loop: every cell is rewritten with its old or its new value.
+            for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
+                let covered = (e0 | e1 | e2) >= 0;
+                let stored = i64::from(*depth);
+                let v = whole + i64::from(use_ceiling & (remainder != 0));
+                let passes = covered & (sign * (v - stored) > threshold);
+                let rounded = (whole + i64::from(2 * remainder >= denominator)).clamp(0, max) as u32;
+                *depth = select_unpredictable(passes, rounded, *depth);
+                *frame = select_unpredictable(passes, value, *frame);
+                tested += u64::from(covered);
+                written += u64::from(passes);
+                (e0, e1, e2) = (e0 + edges[0].1, e1 + edges[1].1, e2 + edges[2].1);
+                whole += step_whole;
+                remainder += step_remainder;
+                let carry = remainder >= denominator;
+                remainder -= select_unpredictable(carry, denominator, 0);
+                whole += i64::from(carry);
+            }
+            row_edges = [0, 1, 2].map(|k| row_edges[k] + edges[k].2);
+            row_whole += down_whole;
+            row_remainder += down_remainder;
+            let carry = row_remainder >= denominator;
+            row_remainder -= select_unpredictable(carry, denominator, 0);
+            row_whole += i64::from(carry);
+        }
+        self.stats.tested += tested;
+        self.stats.written += written;
+        true
+    }
+
+    /// The depth test as the branch-free loops compare: whether to compare the
+    /// depth's ceiling (else its floor), the sign that makes nearer larger,
+    /// and the threshold `sign·(v − stored)` must exceed (see `span_fast`).
+    pub(super) fn test_constants(&self) -> (bool, i64, i64) {
+        let use_ceiling = matches!(self.test, DepthTest::Greater | DepthTest::LessEqual);
+        let sign: i64 = if self.test.larger_is_nearer() { 1 } else { -1 };
+        let threshold = match self.test {
+            // sign·(v − s) lies well inside ±2^62, so these decide alone.
+            DepthTest::Always => i64::MIN,
+            DepthTest::Never => i64::MAX,
+            _ => -i64::from(self.test.equal_passes()),
+        };
+        (use_ceiling, sign, threshold)
+    }
+}
