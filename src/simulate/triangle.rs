@@ -66,10 +66,14 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         // Rows with y_min ≤ (2row + 1)·D < y_max; columns whose centres lie within x_min … x_max.
         let (y_min, y_max) = (py.min(qy).min(ry), py.max(qy).max(ry));
         let (x_min, x_max) = (px.min(qx).min(rx), px.max(qx).max(rx));
-        let first_row = (y_min - d).ceil_div(two_d).max(i64::from(rect.rows.0));
-        let last_row = ((y_max - d).ceil_div(two_d) - 1).min(i64::from(rect.rows.1));
-        let first_column = (x_min - d).ceil_div(two_d).max(i64::from(rect.columns.0));
-        let last_column = (x_max - d).floor_div(two_d).0.min(i64::from(rect.columns.1));
+        // ⌊v / 2D⌋, a shift when 2D is a power of two (integer and binary-fraction vertices).
+        let shift = two_d.trailing_zeros();
+        let floor = |v: i64| if two_d == 1 << shift { v >> shift } else { v.floor_div(two_d).0 };
+        let ceil = |v: i64| -floor(-v);
+        let first_row = ceil(y_min - d).max(i64::from(rect.rows.0));
+        let last_row = (ceil(y_max - d) - 1).min(i64::from(rect.rows.1));
+        let first_column = ceil(x_min - d).max(i64::from(rect.columns.0));
+        let last_column = floor(x_max - d).min(i64::from(rect.columns.1));
         if first_row > last_row || first_column > last_column {
             return true;
         }
