@@ -12,7 +12,7 @@ use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
-use crate::simulate::setup::{LARGE_BUFFER, Stats, fate, prefetch_ahead, prefetch_cells};
+use crate::simulate::setup::{CORE_CACHE, Stats, fate, prefetch_ahead, prefetch_cells};
 
 /// How many polygons ahead the plain loop asks for the cells of.
 const AHEAD: usize = 2;
@@ -86,7 +86,7 @@ impl LevelCells for InOrder<'_, '_> {
         let scene = self.levels.scene;
         let rect = PixelRect::raster(scene.width, scene.height);
         // Cells worth asking for ahead only when the buffers outgrow the cache.
-        let far = std::mem::size_of_val(depth) > LARGE_BUFFER;
+        let far = std::mem::size_of_val(depth) > CORE_CACHE;
         for index in self.polygons.clone() {
             prefetch_ahead(scene, index);
             if far && index + AHEAD < self.polygons.end {

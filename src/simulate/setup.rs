@@ -55,9 +55,11 @@ pub(super) fn prefetch<T>(data: *const T) {
     let _ = data;
 }
 
-/// Buffers larger than this (a z-buffer's bytes) outgrow a core's cache:
-/// asking for their cells ahead ([`prefetch_cells`]) pays only then.
-pub(super) const LARGE_BUFFER: usize = 1 << 20;
+/// A z-buffer (or, in tiles, a band's cells) larger than this many bytes
+/// outgrows a core's cache (256 KiB, 256×256 cells): asking for its cells
+/// ahead ([`prefetch_cells`]) pays only then, and drawing small triangles by
+/// edge functions, which rewrite every cell of their box, pays only below.
+pub(super) const CORE_CACHE: usize = 256 << 10;
 
 /// Asks for the cells of polygon `index`'s bounding box, row by row, in
 /// both buffers (whose first row is raster row `first_row`), so that they

@@ -9,7 +9,7 @@ use crate::scene::Scene;
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Unobserved};
 use crate::simulate::levels::Levels;
-use crate::simulate::setup::{LARGE_BUFFER, Stats, fate, pixel_bounds, prefetch, prefetch_cells};
+use crate::simulate::setup::{CORE_CACHE, Stats, fate, pixel_bounds, prefetch, prefetch_cells};
 
 /// How a tiled run is spread.
 #[derive(Clone, Copy)]
@@ -43,7 +43,7 @@ impl Tiles<'_> {
             Levels { scene, test: self.test, depth_max: self.depth_max, stats: &mut stats, scratch: &mut scratch };
         let first_row = ty * tile;
         // A band's cells are worth asking for ahead when its rows outgrow the cache.
-        let far = std::mem::size_of_val(depth) > LARGE_BUFFER;
+        let far = std::mem::size_of_val(depth) > CORE_CACHE;
         for tx in 0..tiles_x {
             let rect = PixelRect {
                 columns: (tx * tile, ((tx + 1) * tile).min(scene.width) - 1),

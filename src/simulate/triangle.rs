@@ -25,7 +25,7 @@ use crate::rules::{ColumnRule, RowRule, Rules};
 use crate::simulate::buffer::FrameCell;
 use crate::simulate::events::Observer;
 use crate::simulate::levels::LevelSink;
-use crate::simulate::setup::LARGE_BUFFER;
+use crate::simulate::setup::CORE_CACHE;
 
 /// The largest bounding box (in pixel centres) drawn this way: above it the
 /// scan converter, which visits only covered centres, is faster.
@@ -46,8 +46,9 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
             || geometry.big().is_some()
             || !geometry.fits_i64()
             // Every cell of the box is rewritten: on buffers larger than the cache, the
-            // cells around the triangle would go back to memory for nothing.
-            || std::mem::size_of_val(self.depth) > LARGE_BUFFER
+            // cells around the triangle would go back to memory for nothing (a band of
+            // 64 rows of a 2048-wide raster, 512 KiB, drew 1.4× slower this way).
+            || std::mem::size_of_val(self.depth) > CORE_CACHE
         {
             return false;
         }
