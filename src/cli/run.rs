@@ -174,6 +174,21 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 text.push_str(&buffers_text(&simulation, index, &polygon.name, args.axes));
                 emit(out, &text)?;
             }
+            if scene.polygons.is_empty() {
+                let style = MatrixStyle { axes: args.axes, color: super::use_color(), ..MatrixStyle::default() };
+                let buffers = simulation.buffers();
+                emit(
+                    out,
+                    &format!(
+                        "\n{}\n\n{}\n{}\n{}\n{}",
+                        zsim::words!("run-no-polygons"),
+                        zsim::words!("run-frame-cleared"),
+                        report::matrix_styled(&buffers.frame_rows(), &style),
+                        zsim::words!("run-depth-cleared"),
+                        report::matrix_styled(&buffers.depth_rows(), &style),
+                    ),
+                )?;
+            }
             if scene.effects.transparency {
                 emit(out, &super::variants::local_errors_text(&scene, simulation.buffers()))?;
             }

@@ -210,7 +210,7 @@ impl PixelHistory {
             file = file.display().to_string(),
             cx = centre(x),
             cy = centre(y),
-            test = scene.depth_test.name(),
+            test = scene.depth_test.local_name(),
             rule = scene.depth_test.rule_text()
         ) + "\n";
         if let Some(section) = scene.effects.section {

@@ -45,7 +45,7 @@ pub fn scene_header(scene: &Scene, path: &str) -> String {
         frame_bits = scene.frame_bits.to_string(),
         depth_bits = scene.depth_bits.to_string(),
         depth_max = scene.depth_max().to_string(),
-        test = scene.depth_test.name(),
+        test = scene.depth_test.local_name(),
         rule = scene.depth_test.rule_text(),
         clear = scene.clear_depth.to_string()
     );

@@ -170,6 +170,12 @@ impl DepthTest {
         }
     }
 
+    /// The test's name in the reader's language (the scene file's keyword
+    /// is [`DepthTest::name`]).
+    pub fn local_name(self) -> String {
+        crate::words::text(&format!("depth-test-{}", self.name()), &[])
+    }
+
     /// Whether a depth lies on the kept side of a cross-section at `section`
     /// (the Russian coursework: `z ≤ Zsection` when larger z is nearer; mirrored for `Less`).
     pub fn keeps_section(self, incoming: &Depth, section: Q) -> bool {

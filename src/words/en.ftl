@@ -133,6 +133,12 @@ misreading-transposed = with rows and columns swapped
 
 ## run and step: the scene's heading, the stages, a polygon's heading
 
+depth-test-greater = greater
+depth-test-less = less
+depth-test-greater-equal = greater-equal
+depth-test-less-equal = less-equal
+depth-test-always = always
+depth-test-never = never
 scene-header = scene { $path }: { $width }×{ $height } pixels, framebuffer { $frame_bits } bits, z-buffer { $depth_bits } bits (0…{ $depth_max }), depth test { $test } ({ $rule }), cleared to { $clear }
 scene-stages = stages: { $stages }
 scene-effects = effects: { $effects }
@@ -165,6 +171,9 @@ heading-clipped = { "; " }{ $front } of { $of } vertices in front of the near pl
 run-counts = { $covered } pixel centres covered, { $written } written
 run-frame-after = framebuffer after { $polygon }:
 run-depth-after = z-buffer after { $polygon }:
+run-no-polygons = the scene has no polygons: the buffers stay as cleared
+run-frame-cleared = framebuffer, cleared:
+run-depth-cleared = z-buffer, cleared:
 figure-title-worksheet = { $file }: the polygons to draw, on an empty raster
 figure-title-after = { $file }: { $buffer } after { $polygon }
 figure-title-samples = { ", " }its { $k }×{ $k } samples per pixel before averaging (`zsim run` gives the means)

@@ -135,6 +135,12 @@ misreading-transposed = по столбцам (строки и столбцы п
 
 ## run и step: заголовок сцены, этапы, заголовок многоугольника
 
+depth-test-greater = больше
+depth-test-less = меньше
+depth-test-greater-equal = больше или равно
+depth-test-less-equal = меньше или равно
+depth-test-always = всегда
+depth-test-never = никогда
 scene-header = сцена { $path }: { $width }×{ $height } пикселов, буфер кадра { $frame_bits } бит, z-буфер { $depth_bits } бит (0…{ $depth_max }), тест глубины { $test } ({ $rule }), после очистки { $clear }
 scene-stages = этапы: { $stages }
 scene-effects = эффекты: { $effects }
@@ -167,6 +173,9 @@ heading-clipped = { "; " }перед ближней плоскостью { $fron
 run-counts = покрыто центров пикселов: { $covered }, записано: { $written }
 run-frame-after = буфер кадра после { $polygon }:
 run-depth-after = z-буфер после { $polygon }:
+run-no-polygons = в сцене нет многоугольников: буферы остаются такими, как после очистки
+run-frame-cleared = буфер кадра после очистки:
+run-depth-cleared = z-буфер после очистки:
 figure-title-worksheet = { $file }: многоугольники, которые надо нарисовать, на пустом растре
 figure-title-after = { $file }: { $buffer } после { $polygon }
 figure-title-samples = { ", " }по { $k }×{ $k } выборок на пиксел до усреднения (средние даёт `zsim run`)

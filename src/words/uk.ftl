@@ -135,6 +135,12 @@ misreading-transposed = по стовпцях (рядки й стовпці пе
 
 ## run і step: заголовок сцени, етапи, заголовок багатокутника
 
+depth-test-greater = більше
+depth-test-less = менше
+depth-test-greater-equal = більше або дорівнює
+depth-test-less-equal = менше або дорівнює
+depth-test-always = завжди
+depth-test-never = ніколи
 scene-header = сцена { $path }: { $width }×{ $height } пікселів, буфер кадру { $frame_bits } біт, z-буфер { $depth_bits } біт (0…{ $depth_max }), тест глибини { $test } ({ $rule }), після очищення { $clear }
 scene-stages = етапи: { $stages }
 scene-effects = ефекти: { $effects }
@@ -167,6 +173,9 @@ heading-clipped = { "; " }перед ближньою площиною { $front 
 run-counts = покрито центрів пікселів: { $covered }, записано: { $written }
 run-frame-after = буфер кадру після { $polygon }:
 run-depth-after = z-буфер після { $polygon }:
+run-no-polygons = у сцені немає багатокутників: буфери лишаються такими, як після очищення
+run-frame-cleared = буфер кадру після очищення:
+run-depth-cleared = z-буфер після очищення:
 figure-title-worksheet = { $file }: багатокутники, які треба намалювати, на порожньому растрі
 figure-title-after = { $file }: { $buffer } після { $polygon }
 figure-title-samples = { ", " }по { $k }×{ $k } вибірок на піксель до усереднення (середні дає `zsim run`)

@@ -122,6 +122,12 @@ misreading-transposed = 行列互换的方式
 
 ## run 与 step：场景标题、各阶段、多边形标题
 
+depth-test-greater = 大于
+depth-test-less = 小于
+depth-test-greater-equal = 大于等于
+depth-test-less-equal = 小于等于
+depth-test-always = 总是
+depth-test-never = 从不
 scene-header = 场景 { $path }：{ $width }×{ $height } 像素，帧缓冲器 { $frame_bits } 位，z缓冲器 { $depth_bits } 位（0…{ $depth_max }），深度测试 { $test }（{ $rule }），初值 { $clear }
 scene-stages = 阶段：{ $stages }
 scene-effects = 效果：{ $effects }
@@ -154,6 +160,9 @@ heading-clipped = { "；" }{ $of } 个顶点中有 { $front } 个在近平面之
 run-counts = 覆盖像素中心 { $covered } 个，写入 { $written } 个
 run-frame-after = { $polygon }之后的帧缓冲器：
 run-depth-after = { $polygon }之后的z缓冲器：
+run-no-polygons = 场景中没有多边形：缓冲器保持清除后的状态
+run-frame-cleared = 清除后的帧缓冲器：
+run-depth-cleared = 清除后的 z 缓冲器：
 figure-title-worksheet = { $file }：待绘制的多边形，栅格为空
 figure-title-after = { $file }：{ $polygon }之后的{ $buffer }
 figure-title-samples = { "，" }每个像素 { $k }×{ $k } 个采样，平均之前（平均值由 `zsim run` 给出）
@@ -224,7 +233,7 @@ tui-verdict-next = { $verdict }   （n：下一步）
 tui-quiz-ask = 测验：({ $x }, { $y }) 之后 z缓冲器中是多少？原值 { $stored }（输入数值，不写入则输入 -；Enter）{ $typed }▏
 tui-status = n/→ 下一步 · b/← 后退 · p/P 多边形 · g 转到 · f/z 缓冲器 · m 逐像素 · q 退出
 tui-no-scanline = 没有扫描线
-tui-columns-shown = x { $first } … { $last }，共 0 … { $max }
+tui-columns-shown = 显示 x { $first } … { $last }（全部 0 … { $max }）
 tui-end = 场景结束
 tui-slope = 沿扫描线 z 每步变化 −a/c = { $slope }
 tui-span = 区段 { $n }：{ $left } … { $right }；{ $columns }

@@ -22,6 +22,29 @@ fn explain_tells_the_books_pixel_in_each_language() {
     );
 }
 
+/// The depth test is named in the reader's language wherever the scene is
+/// described (`run`'s header, `explain`'s heading); the scene file's keyword
+/// stays English only in English.
+#[test]
+fn the_depth_test_is_named_in_each_language() {
+    for (lang, named) in [
+        ("en", "depth test greater ("),
+        ("ru", "тест глубины больше ("),
+        ("uk", "тест глибини більше ("),
+        ("zh", "深度测试 大于（"),
+    ] {
+        let run = zsim(&["run", "examples/rogers.json", "--final", "--lang", lang]);
+        let header = run.stdout.lines().next().unwrap_or_default();
+        assert!(header.contains(named), "{lang}: {header}");
+        let explain = zsim(&["explain", "examples/rogers.json", "--pixel", "20,15", "--lang", lang]);
+        let heading = explain.stdout.lines().next().unwrap_or_default();
+        assert!(heading.contains(&named.replace(" (", "").replace('（', "")), "{lang}: {heading}");
+        if lang != "en" {
+            assert!(!header.contains("greater") && !heading.contains("greater"), "{lang}: {header}\n{heading}");
+        }
+    }
+}
+
 /// `check` of the z-buffer as the book prints it (three cells differ: the
 /// printed errata) in each language.
 #[test]

@@ -73,6 +73,24 @@ fn format_none_prints_one_summary_line() {
     snapshot!("run_rogers_none", format!("{counts}\n"));
 }
 
+/// A scene without polygons is drawn (nothing happens) and says so, showing
+/// the buffers as cleared, rather than printing its header alone.
+#[test]
+fn an_empty_scene_says_so_and_shows_the_cleared_buffers() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("empty-scene");
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("empty.json");
+    std::fs::write(&scene, r#"{"width": 4, "height": 3, "depth_bits": 4, "depth_test": "less", "polygons": []}"#)
+        .unwrap();
+    let run = zsim(&["run", scene.to_str().unwrap()]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    let (_, shown) = run.stdout.split_once("effects: none\n").expect("the header");
+    assert_eq!(
+        shown,
+        "\nthe scene has no polygons: the buffers stay as cleared\n\nframebuffer, cleared:\n0 0 0 0\n0 0 0 0\n0 0 0 0\n\nz-buffer, cleared:\n15 15 15 15\n15 15 15 15\n15 15 15 15\n"
+    );
+}
+
 /// `--final` and `--after` draw on every core (tiles on threads, then the
 /// last polygon alone for its counts) and print the same bytes as one thread
 /// drawing polygon by polygon, in text and JSON.
