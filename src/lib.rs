@@ -128,7 +128,7 @@ pub use numbers::{
 pub use observe::gpu;
 #[cfg(feature = "gpu")]
 pub use observe::race;
-pub use observe::step::{Meant, PolygonTrace, Skip, Tracer, judge, skip_text};
+pub use observe::step::{Meant, PolygonTrace, Skip, Tracer, does_not_fit, judge, skip_text};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
 pub use observe::{check, explain, figure, history, report, tie};
 pub use raster::convert::{Scratch, rasterize};

@@ -10,7 +10,7 @@ use zsim::Error;
 use zsim::explain::{depth_text, fate_text, pixel_reason, polygon_name, scanline_text};
 use zsim::report::{self, MatrixStyle};
 use zsim::{Exact, Q, exact_and_decimal, fraction};
-use zsim::{Meant, Scene, Skip, Tracer, judge, skip_text};
+use zsim::{Meant, Scene, Skip, Tracer, does_not_fit, judge, skip_text};
 use zsim::{Outcome, PixelEvent};
 
 use super::{Failure, Finish, emit};
@@ -86,6 +86,10 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
         let mut app = super::tui::App::new(&mut tracer, start, args.quiz.is_some());
         super::tui::run(&mut app)?;
+        // The screen is gone: the score and each mistake stay on the terminal, as in the line mode.
+        if let Some(summary) = app.quiz_summary() {
+            emit(out, &summary)?;
+        }
         return Ok(Finish::Ok);
     }
     interactive(&scene, &args.scene.display().to_string(), &mut tracer, (args.quiz, start), color, out)
@@ -256,15 +260,15 @@ fn interactive(
 
 /// The quiz's score and the mistakes made, for the summary.
 #[derive(Debug, Default)]
-struct QuizState {
-    right: usize,
-    asked: usize,
+pub(super) struct QuizState {
+    pub(super) right: usize,
+    pub(super) asked: usize,
     mistakes: Vec<String>,
 }
 
 impl QuizState {
     /// Scores one answer and says so: `right` or `wrong` with the reason.
-    fn score(&mut self, right: bool, mistake: impl FnOnce() -> String) -> String {
+    pub(super) fn score(&mut self, right: bool, mistake: impl FnOnce() -> String) -> String {
         self.asked += 1;
         if right {
             self.right += 1;
@@ -276,7 +280,7 @@ impl QuizState {
     }
 
     /// The score, and each mistake with what was right and why.
-    fn summary(&self) -> String {
+    pub(super) fn summary(&self) -> String {
         let score = zsim::words!("quiz-score", right = self.right.to_string(), asked = self.asked.to_string());
         let mut text = format!("{score}\n");
         if !self.mistakes.is_empty() {
@@ -440,6 +444,10 @@ fn ask(
                 Ok(text) => text,
                 Err(asked) => return Ok(asked),
             };
+            if let Some(problem) = does_not_fit(scene, &text) {
+                emit(out, &format!("{problem}\n"))?;
+                continue;
+            }
             match judge(pixel, &text) {
                 Some(judged) => break (text, judged),
                 None => emit(out, &format!("{}\n", zsim::words!("quiz-not-an-answer", text = &text, hint = &hint)))?,

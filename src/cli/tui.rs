@@ -28,14 +28,14 @@ pub enum View {
     Depth,
 }
 
-/// The quiz inside the app: the answer being typed, and the score.
+/// The quiz inside the app: the answer being typed, and the score with
+/// each mistake (the summary printed when the app closes).
 #[derive(Debug, Default)]
 struct Quiz {
     typed: String,
     /// The verdict on the last answer, shown until the next key.
     verdict: Option<String>,
-    right: usize,
-    asked: usize,
+    state: super::step::QuizState,
 }
 
 /// The stepper's state. Keys change it ([`App::key`]); [`App::draw`] shows it.
@@ -109,6 +109,13 @@ impl<'t, 's> App<'t, 's> {
             }
             return;
         }
+        // A digit or `-` while a verdict shows starts the next answer (it is not lost).
+        if let Some(quiz) = &mut self.quiz
+            && quiz.verdict.is_some()
+            && matches!(key.code, KeyCode::Char(c) if c.is_ascii_digit() || c == '-')
+        {
+            quiz.verdict = None;
+        }
         if self.quiz.is_some() && self.asking() && self.quiz_key(key) {
             return;
         }
@@ -146,14 +153,20 @@ impl<'t, 's> App<'t, 's> {
         done < record.pixels.len() && self.quiz.as_ref().is_some_and(|q| q.verdict.is_none())
     }
 
-    /// A key while the quiz asks: digits, `-`, Backspace and Enter answer;
-    /// others navigate as usual (`false`).
+    /// A key while the quiz asks. Typing: any character but the keys that
+    /// act alone (`q`, `?`, and `n`, `b`, `p`, `P`, `g`, `f`, `z` before
+    /// anything is typed) goes into the answer, Backspace takes one back,
+    /// Enter answers: a number or `-` is scored, anything else is said to be
+    /// no answer (or a number the z-buffer cannot hold, out of range) and
+    /// asked again. Returns `false` for a key that acts as usual.
     fn quiz_key(&mut self, key: KeyEvent) -> bool {
         let Some(record) = self.record() else { return false };
-        let scene = self.tracer.scene;
+        let (scene, p) = (self.tracer.scene, self.at.map_or(0, |at| at.0));
         let Some(quiz) = &mut self.quiz else { return false };
         match key.code {
-            KeyCode::Char(c) if c.is_ascii_digit() || c == '-' || c == '/' => quiz.typed.push(c),
+            KeyCode::Char('q' | '?') => return false,
+            KeyCode::Char('n' | 'b' | 'p' | 'P' | 'g' | 'f' | 'z' | ' ') if quiz.typed.is_empty() => return false,
+            KeyCode::Char(c) if !c.is_control() => quiz.typed.push(c),
             KeyCode::Backspace => {
                 quiz.typed.pop();
             }
@@ -161,22 +174,51 @@ impl<'t, 's> App<'t, 's> {
                 let done = self.pixel.unwrap_or(0);
                 let pixel = record.pixels[done].clone();
                 let typed = std::mem::take(&mut quiz.typed);
-                let right = zsim::judge(&pixel, &typed).is_some_and(|(right, _)| right);
-                quiz.asked += 1;
-                quiz.right += usize::from(right);
+                if let Some(problem) = zsim::does_not_fit(scene, &typed) {
+                    self.message = problem;
+                    return true;
+                }
+                let Some((right, _)) = zsim::judge(&pixel, &typed) else {
+                    let hint = zsim::words!("quiz-depth-hint");
+                    self.message = zsim::words!("quiz-not-an-answer", text = zsim::token(&typed), hint = hint);
+                    return true;
+                };
+                let reason = pixel_reason(scene, &pixel);
+                let verdict = quiz.state.score(right, || {
+                    let expected = if pixel.outcome == zsim::Outcome::Written {
+                        pixel.stored_after.to_string()
+                    } else {
+                        zsim::words!("quiz-keeps", value = pixel.stored_after.to_string())
+                    };
+                    zsim::words!(
+                        "quiz-depth-mistake",
+                        x = pixel.x,
+                        y = pixel.y,
+                        polygon = zsim::explain::polygon_after(scene, p),
+                        said = &typed,
+                        right = expected,
+                        reason = &reason
+                    )
+                });
                 quiz.verdict = Some(zsim::words!(
                     "tui-quiz-verdict",
                     x = pixel.x,
                     y = pixel.y,
                     typed = &typed,
-                    verdict = if right { zsim::words!("tui-right") } else { zsim::words!("tui-wrong") },
-                    reason = pixel_reason(scene, &pixel)
+                    verdict = verdict,
+                    reason = reason
                 ));
                 self.pixel = Some(done + 1);
             }
             _ => return false,
         }
         true
+    }
+
+    /// The quiz's score and each mistake, to print when the app has closed
+    /// (as the line mode ends); `None` without a quiz.
+    pub fn quiz_summary(&self) -> Option<String> {
+        self.quiz.as_ref().map(|quiz| quiz.state.summary())
     }
 
     fn next(&mut self) {
@@ -285,7 +327,7 @@ impl<'t, 's> App<'t, 's> {
             View::Depth => zsim::words!("buffer-depth"),
         };
         let score = self.quiz.as_ref().map_or(String::new(), |q| {
-            zsim::words!("tui-score", right = q.right.to_string(), asked = q.asked.to_string())
+            zsim::words!("tui-score", right = q.state.right.to_string(), asked = q.state.asked.to_string())
         });
         frame.render_widget(
             Paragraph::new(zsim::words!("tui-title", heading = heading, view = view, score = score))
@@ -318,13 +360,15 @@ impl<'t, 's> App<'t, 's> {
             let record = record.as_ref().expect("asking implies a scanline");
             let pixel = &record.pixels[self.pixel.unwrap_or(0)];
             let typed = self.quiz.as_ref().map_or("", |q| q.typed.as_str());
-            zsim::words!(
+            let ask = zsim::words!(
                 "tui-quiz-ask",
                 x = pixel.x,
                 y = pixel.y,
                 stored = pixel.stored_before.to_string(),
                 typed = typed
-            )
+            );
+            // Why the last answer was asked again, before the question.
+            if self.message.is_empty() { ask } else { format!("{} {ask}", self.message) }
         } else if !self.message.is_empty() {
             self.message.clone()
         } else {
@@ -690,5 +734,43 @@ mod tests {
         assert!(text.contains("quiz 1/1"), "{text}");
         press(&mut app, "n9\n");
         assert!(screen(&mut app, 100, 30).contains("(16, 15): you said 9: wrong"));
+    }
+
+    /// Found by a new student: in the full-screen quiz `abc` Enter went back a
+    /// scanline (on `b`), `xy` vanished, a digit typed while the verdict showed
+    /// was lost, and 99 on a 4-bit z-buffer was scored wrong. Now junk is typed
+    /// and asked again, a number the z-buffer cannot hold is asked again, and a
+    /// digit after a verdict starts the next answer.
+    #[test]
+    fn the_quiz_asks_again_on_junk_and_keeps_digits_typed_after_a_verdict() {
+        let scene = book();
+        let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+        let mut app = App::new(&mut tracer, Some((1, 5)), true);
+        press(&mut app, "abc\n");
+        let text = screen(&mut app, 100, 30);
+        assert!(text.contains("\"abc\" is not an answer"), "{text}");
+        assert!(text.contains("quiz: the z-buffer after (15, 15), stored 10?"), "still the same question: {text}");
+        assert!(text.contains("quiz 0/0"), "nothing scored: {text}");
+        press(&mut app, "xy");
+        let text = screen(&mut app, 100, 30);
+        assert!(text.contains("Enter) xy"), "what is typed shows: {text}");
+        press(&mut app, "\n99\n");
+        let text = screen(&mut app, 100, 30);
+        assert!(text.contains("99 does not fit this z-buffer: its cells hold whole levels 0 … 15"), "{text}");
+        assert!(text.contains("quiz 0/0"), "{text}");
+        // Answered, then the next answer typed straight away while the verdict shows.
+        press(&mut app, "15\n14\n");
+        let text = screen(&mut app, 100, 30);
+        assert!(text.contains("(16, 15): you said 14: right"), "{text}");
+        assert!(text.contains("quiz 2/2"), "{text}");
+        press(&mut app, "1\nq");
+        assert!(app.quit);
+        let summary = app.quiz_summary().expect("a quiz");
+        assert!(
+            summary.starts_with(
+                "quiz score: 2 of 3 right\nyour mistakes:\n  (17, 15) of polygon 2 \"triangle\": you said 1, right 13: "
+            ),
+            "{summary}"
+        );
     }
 }

@@ -171,6 +171,19 @@ pub fn judge(pixel: &PixelEvent, typed: &str) -> Option<(bool, Meant)> {
     })
 }
 
+/// Why `typed` is a number no cell of `scene`'s z-buffer can hold (a
+/// quantized z-buffer holds whole levels 0 … max), so that the quiz asks
+/// again instead of scoring it; `None` for any other text (`judge` decides).
+pub fn does_not_fit(scene: &Scene, typed: &str) -> Option<String> {
+    if scene.rules.store != crate::rules::DepthStore::Quantized {
+        return None;
+    }
+    let value = parse_number(typed).ok()?;
+    let max = scene.depth_max();
+    let fits = value.is_integer() && *value.numer() >= 0 && *value.numer() <= i128::from(max);
+    (!fits).then(|| words!("quiz-does-not-fit", text = typed, max = max.to_string()))
+}
+
 /// What a quiz answer meant.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Meant {

@@ -290,6 +290,7 @@ quiz-depth-ask = quiz: { $polygon }, scanline { $scanline }; for each pixel type
 quiz-depth-hint = type the value the z-buffer will hold, or - for not written (q stops the quiz)
 quiz-depth-prompt = pixel ({ $x }, { $y }), stored { $stored }: z-buffer after?{ " " }
 quiz-not-an-answer = "{ $text }" is not an answer: { $hint }
+quiz-does-not-fit = { $text } does not fit this z-buffer: its cells hold whole levels 0 … { $max }; type again
 quiz-keeps = - (it keeps { $value })
 quiz-depth-mistake = ({ $x }, { $y }) of { $polygon }: you said { $said }, right { $right }: { $reason }
 quiz-said-meant = you said { $said } ({ $meant })

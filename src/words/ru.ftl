@@ -292,6 +292,7 @@ quiz-depth-ask = опрос: { $polygon }, сканирующая строка {
 quiz-depth-hint = введите значение, которое будет в z-буфере, или - если не записывается (q завершает опрос)
 quiz-depth-prompt = пиксел ({ $x }, { $y }), сейчас { $stored }: что в z-буфере после?{ " " }
 quiz-not-an-answer = «{ $text }» — не ответ: { $hint }
+quiz-does-not-fit = { $text } не помещается в этот z-буфер: его ячейки хранят целые уровни 0 … { $max }; введите снова
 quiz-keeps = - (остаётся { $value })
 quiz-depth-mistake = ({ $x }, { $y }) { $polygon }: ваш ответ { $said }, верно { $right }: { $reason }
 quiz-said-meant = ваш ответ { $said } ({ $meant })

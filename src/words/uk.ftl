@@ -292,6 +292,7 @@ quiz-depth-ask = опитування: { $polygon }, рядок скануван
 quiz-depth-hint = введіть значення, яке буде в z-буфері, або - якщо не записується (q завершує опитування)
 quiz-depth-prompt = піксель ({ $x }, { $y }), зараз { $stored }: що в z-буфері після?{ " " }
 quiz-not-an-answer = «{ $text }» — не відповідь: { $hint }
+quiz-does-not-fit = { $text } не вміщується в цей z-буфер: його комірки зберігають цілі рівні 0 … { $max }; введіть знову
 quiz-keeps = - (залишається { $value })
 quiz-depth-mistake = ({ $x }, { $y }) { $polygon }: ваша відповідь { $said }, правильно { $right }: { $reason }
 quiz-said-meant = ваша відповідь { $said } ({ $meant })

@@ -279,6 +279,7 @@ quiz-depth-ask = 测验：{ $polygon }，扫描线 { $scanline }；对每个像�
 quiz-depth-hint = 请输入 z缓冲器将保存的值，不写入则输入 -（q 结束测验）
 quiz-depth-prompt = 像素 ({ $x }, { $y })，原值 { $stored }：之后 z缓冲器中是多少？{ " " }
 quiz-not-an-answer = “{ $text }”不是答案：{ $hint }
+quiz-does-not-fit = { $text } 放不进这个 z 缓冲器：它的单元只存 0 … { $max } 的整数级；请重新输入
 quiz-keeps = -（保持 { $value }）
 quiz-depth-mistake = { $polygon } 的 ({ $x }, { $y })：你的答案 { $said }，正确为 { $right }：{ $reason }
 quiz-said-meant = 你的答案 { $said }（{ $meant }）

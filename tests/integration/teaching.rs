@@ -514,3 +514,68 @@ fn step_writes_a_self_contained_page_that_a_browser_steps_through() {
     );
     assert!(report.ends_with("errors: none"), "{report}");
 }
+
+/// The full-screen quiz in a real terminal (tmux): answered right, then
+/// wrong, then `q`. When the screen closes the score and each mistake stay on
+/// the terminal, as the line mode prints them, and the terminal is given back.
+#[test]
+fn the_full_screen_quiz_prints_its_score_when_it_closes_in_a_real_terminal() {
+    use std::process::Command;
+    if Command::new("tmux").arg("-V").output().is_err() {
+        crate::skipped("tmux", "the full-screen quiz in a real terminal");
+        return;
+    }
+    let session = format!("zsim-quiz-{}", std::process::id());
+    let tmux = |args: &[&str]| Command::new("tmux").args(args).output().expect("tmux runs");
+    let zsim = env!("CARGO_BIN_EXE_zsim");
+    let command = format!("{zsim} step examples/rogers.json --quiz --polygon 2 --scanline 15; echo EXIT=$?; sleep 60");
+    let started = tmux(&[
+        "new-session",
+        "-d",
+        "-s",
+        &session,
+        "-x",
+        "100",
+        "-y",
+        "30",
+        "-c",
+        env!("CARGO_MANIFEST_DIR"),
+        &command,
+    ]);
+    assert!(started.status.success(), "{}", String::from_utf8_lossy(&started.stderr));
+    let screen = || String::from_utf8_lossy(&tmux(&["capture-pane", "-p", "-t", &session]).stdout).into_owned();
+    let wait_for = |text: &str| {
+        for _ in 0..100 {
+            if screen().contains(text) {
+                return;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(100));
+        }
+        panic!("never showed {text:?}:\n{}", screen());
+    };
+    wait_for("stored 10?");
+    for keys in [&["1", "5", "Enter"][..], &["1", "Enter"], &["q"]] {
+        tmux(&[&["send-keys", "-t", &session][..], keys].concat());
+        std::thread::sleep(std::time::Duration::from_millis(300));
+    }
+    wait_for("EXIT=");
+    let shown = screen();
+    tmux(&["kill-session", "-t", &session]);
+    assert!(shown.contains("quiz score: 1 of 2 right"), "{shown}");
+    assert!(shown.contains("your mistakes:"), "{shown}");
+    assert!(shown.contains("(16, 15) of polygon 2 \"triangle\": you said 1, right 14: "), "{shown}");
+    assert!(shown.contains("EXIT=0"), "{shown}");
+}
+
+/// Found by a new student: 99 on a 4-bit z-buffer was scored wrong; it is no
+/// level at all, so the line-mode quiz says so and asks again.
+#[test]
+fn quiz_asks_again_for_a_number_the_z_buffer_cannot_hold() {
+    let args = ["step", "examples/rogers.json", "--quiz", "--polygon", "2", "--scanline", "15"];
+    let run = zsim_with_input(&args, "99\n7/2\n15\nq\n");
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert!(run.stdout.contains("99 does not fit this z-buffer: its cells hold whole levels 0 … 15; type again\n"));
+    assert!(run.stdout.contains("7/2 does not fit this z-buffer"), "{}", run.stdout);
+    assert!(run.stdout.contains("(15, 15): you said 15 (the value written), right"), "{}", run.stdout);
+    assert!(run.stdout.ends_with("quiz score: 1 of 1 right\n"), "{}", run.stdout);
+}
