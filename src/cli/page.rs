@@ -26,6 +26,7 @@ pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {
                     "x": e.x, "z": exact_and_decimal(e.depth.value()), "stored": e.stored_before.to_string(),
                     "written": e.outcome == Outcome::Written, "after": e.stored_after.to_string(),
                     "afterValue": zsim::report::exact_json(e.stored_after.value()), "frame": e.frame_after,
+                    "frameBefore": e.frame_before,
                     "reason": pixel_reason(scene, e),
                 })
             })
@@ -64,6 +65,10 @@ pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {
         "noPixel": zsim::words!("page-no-pixel"),
         "frameAfter": zsim::words!("page-frame-after"),
         "depthAfter": zsim::words!("page-depth-after"),
+        "frameBefore": zsim::words!("page-frame-before"),
+        "depthBefore": zsim::words!("page-depth-before"),
+        "notNumber": zsim::words!("page-not-a-number", text = "{text}"),
+        "unanswered": zsim::words!("page-unanswered"),
         "stored": zsim::words!("page-column-stored"),
         "yours": zsim::words!("page-column-yours"),
         "after": zsim::words!("page-column-after"),
@@ -129,7 +134,7 @@ td.earlier { color: #0072b2; font-weight: bold; }
 #panel { max-width: 40em; }
 #pixels { border-collapse: collapse; font-size: 13px; }
 #pixels td, #pixels th { border-bottom: 1px solid #eee; padding: 2px 6px; text-align: left; }
-.written { color: #1a7f37; } .hidden { color: #b42318; }
+.written, .right { color: #1a7f37; } .hidden, .wrong { color: #b42318; } .unanswered { color: #9a6700; }
 button { margin: 0 .3em .5em 0; }
 #status { color: #555; }
 </style></head>
@@ -152,10 +157,11 @@ const data = JSON.parse(document.getElementById("data").textContent);
 const words = data.words;
 let at = 0, view = "frame";
 const el = (tag, text, cls) => { const e = document.createElement(tag); if (text !== undefined) e.textContent = text; if (cls) e.className = cls; return e; };
-function render() {
-  const stop = data.stops[at];
-  if (!stop) { document.getElementById("panel").textContent = words.noPixel; return; }
-  const covered = new Set(stop.pixels.map(p => p.x));
+// The raster: after the scanline, or in the quiz until its answers are checked, before it
+// (the covered cells of the current row as they were), so that the grid gives nothing away.
+function renderGrid(stop, quiz) {
+  const before = quiz && !stop.checked;
+  const covered = new Map(stop.pixels.map(p => [p.x, p]));
   const earlier = new Set();
   for (let i = 0; i < at; i++) {
     const s = data.stops[i];
@@ -169,21 +175,29 @@ function render() {
     tr.appendChild(el("th", (y === stop.row ? "▶ " : "") + y));
     row.forEach((v, x) => {
       const cls = y === stop.row && covered.has(x) ? "span" : earlier.has(y + "," + x) ? "earlier" : "";
-      tr.appendChild(el("td", String(v), cls));
+      const p = y === stop.row && before ? covered.get(x) : undefined;
+      const shown = p === undefined ? v : view === "frame" ? p.frameBefore : p.stored;
+      tr.appendChild(el("td", String(shown), cls));
     });
     table.appendChild(tr);
   });
-  const raster = document.getElementById("raster");
-  raster.replaceChildren(el("div", view === "frame" ? words.frameAfter : words.depthAfter), table);
+  const caption = before ? (view === "frame" ? words.frameBefore : words.depthBefore) : (view === "frame" ? words.frameAfter : words.depthAfter);
+  document.getElementById("raster").replaceChildren(el("div", caption), table);
+}
+function render() {
+  const stop = data.stops[at];
+  if (!stop) { document.getElementById("panel").textContent = words.noPixel; return; }
+  const quiz = document.getElementById("quiz").checked;
+  renderGrid(stop, quiz);
   const panel = document.getElementById("panel");
   panel.replaceChildren(el("h2", stop.heading), el("p", stop.scanline), el("p", stop.crossings));
   stop.spans.forEach(s => panel.appendChild(el("p", s)));
-  const quiz = document.getElementById("quiz").checked;
   const pixels = el("table"); pixels.id = "pixels";
   const head = el("tr"); ["x", "z", words.stored, quiz ? words.yours : words.after, words.why].forEach(h => head.appendChild(el("th", h)));
   pixels.appendChild(head);
   stop.pixels.forEach(p => {
-    const tr = el("tr", undefined, p.written ? "written" : "hidden");
+    // In the quiz the row's colour would tell written from hidden: none until checked.
+    const tr = el("tr", undefined, quiz ? "" : p.written ? "written" : "hidden");
     tr.appendChild(el("td", String(p.x))); tr.appendChild(el("td", p.z)); tr.appendChild(el("td", p.stored));
     if (quiz) {
       const td = el("td"); const input = el("input"); input.size = 4; input.dataset.x = p.x; td.appendChild(input); tr.appendChild(td);
@@ -199,12 +213,23 @@ function render() {
     const check = el("button", words.check); check.id = "check";
     check.onclick = () => {
       let right = 0;
+      // A number (integer, fraction or decimal) or "-" is an answer, judged right or wrong
+      // (coloured so); anything else is said not to be a number, an empty box unanswered.
+      const number = /^-?(\d+(\/\d+)?|\d*\.\d+)$/;
       pixels.querySelectorAll("input").forEach((input, i) => {
-        const p = stop.pixels[i], typed = input.value.trim();
-        const ok = typed === "-" ? !p.written : typed !== "" && typed === String(p.afterValue);
+        const p = stop.pixels[i], typed = input.value.trim(), why = input.parentElement.nextSibling;
+        if (typed === "" || (typed !== "-" && !number.test(typed))) {
+          why.className = "why unanswered";
+          why.textContent = typed === "" ? words.unanswered : words.notNumber.replace("{text}", typed);
+          return;
+        }
+        const ok = typed === "-" ? !p.written : typed === String(p.afterValue);
         right += ok ? 1 : 0;
-        input.parentElement.nextSibling.textContent = (ok ? words.right : words.wrong) + p.reason;
+        why.className = ok ? "why right" : "why wrong";
+        why.textContent = (ok ? words.right : words.wrong) + p.reason;
       });
+      stop.checked = true;
+      renderGrid(stop, true);
       document.getElementById("status").textContent = words.quizScore.replace("{right}", right).replace("{total}", stop.pixels.length);
     };
     panel.appendChild(check);
@@ -247,6 +272,20 @@ if (location.hash === "#selftest") {
   while (data.stops[at].row !== 15 && at < data.stops.length - 1) document.getElementById("next").click();
   seen.push("at: " + heading());
   seen.push("panel: " + document.getElementById("panel").textContent);
+  // The quiz on the same scanline, in the z-buffer: the grid before, then answers right, wrong,
+  // not a number, and "-" for the hidden pixel (21, 15), checked.
+  document.getElementById("quiz").click();
+  document.getElementById("depth").click();
+  const row = () => Array.from(document.querySelectorAll("#raster tr.current td")).slice(15, 28).map(td => td.textContent).join(" ");
+  seen.push("quiz grid: " + document.querySelector("#raster div").textContent + ": " + row());
+  const inputs = document.querySelectorAll("#pixels input");
+  inputs[0].value = "15"; inputs[1].value = "10"; inputs[2].value = "zz";
+  inputs.forEach(input => { if (input.dataset.x === "21") input.value = "-"; });
+  document.getElementById("check").click();
+  const verdicts = Array.from(document.querySelectorAll("#pixels td.why")).map((td, i) => inputs[i].dataset.x + " " + td.className.replace("why ", "") + " " + td.textContent.split(":")[0]);
+  seen.push("verdicts: " + verdicts.join(" | "));
+  seen.push("checked grid: " + document.querySelector("#raster div").textContent + ": " + row());
+  seen.push("score: " + document.getElementById("status").textContent);
   seen.push("errors: " + (pageErrors.length ? pageErrors.join("; ") : "none"));
   const out = document.getElementById("selftest"); out.hidden = false; out.textContent = seen.join("\n");
 }

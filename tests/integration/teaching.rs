@@ -479,7 +479,9 @@ fn check_reads_handed_in_answers_as_students_write_them() {
 
 /// The stepper as a page: one self-contained file that a real browser loads
 /// without errors, whose Next moves to the next scanline, and that shows the
-/// book's depth 43/4 at pixel (20, 15) on the triangle's scanline 15.
+/// book's depth 43/4 at pixel (20, 15) on the triangle's scanline 15; its quiz
+/// shows the grid before the scanline until the answers are checked, and
+/// colours each verdict by right or wrong.
 #[test]
 fn step_writes_a_self_contained_page_that_a_browser_steps_through() {
     let (dir, _) = scene_file("unused7.json", "{}");
@@ -512,6 +514,22 @@ fn step_writes_a_self_contained_page_that_a_browser_steps_through() {
         report.contains("2043/4 ≈ 10.751011z = 43/4 ≈ 10.75 &gt; 10 stored, so 11 is stored"),
         "pixel (20, 15): {report}"
     );
+    // The quiz (found by a new student: the grid showed the row's values after the scanline
+    // while the boxes were empty, a right "-" for a hidden pixel was red, "zz" was "wrong").
+    assert!(
+        report.contains("quiz grid: z-buffer before this scanline (the quiz: check your answers to see after): 10 10 10 10 10 10 10 10 10 10 0 0 0\n"),
+        "the grid gives no answer away: {report}"
+    );
+    assert!(
+        report.contains("verdicts: 15 right right | 16 wrong wrong | 17 unanswered \"zz\" is not a number or - | 18 unanswered no answer"),
+        "{report}"
+    );
+    assert!(report.contains(" | 21 right right | "), "a right - for the hidden pixel is right, coloured so: {report}");
+    assert!(
+        report.contains("checked grid: z-buffer after this scanline: 15 14 13 12 12 11 10 10 10 10 7 6 6\n"),
+        "{report}"
+    );
+    assert!(report.contains("score: quiz: 2 of 13 right on this scanline\n"), "{report}");
     assert!(report.ends_with("errors: none"), "{report}");
 }
 
