@@ -574,3 +574,36 @@ mod never_a_panic {
         }
     }
 }
+
+/// The course examples of zsim's own run from a fresh clone (no peer files):
+/// the BUET case folder and the CS 418 case with its texture beside it.
+#[test]
+fn the_course_examples_in_the_repository_run_from_a_clone() {
+    let out = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("course-examples");
+    let _ = std::fs::remove_dir_all(&out);
+    let buet = zsim(&["buet", "run", "examples/buet/case", "-o", out.join("buet").to_str().unwrap()]);
+    assert_eq!((buet.code, buet.stderr.as_str()), (0, ""));
+    assert!(
+        buet.stdout.starts_with("examples/buet/case: 2 triangles on 32×32, 175 pixel centres tested, 134 written\n"),
+        "{}",
+        buet.stdout
+    );
+    let z_buffer = std::fs::read_to_string(out.join("buet/z_buffer.txt")).unwrap();
+    assert_eq!(z_buffer.lines().count(), 32, "one line per row");
+    for stage in ["stage1.txt", "stage2.txt", "stage3.txt", "out.bmp"] {
+        assert!(out.join("buet").join(stage).is_file(), "{stage}");
+    }
+    let cs418 = zsim(&["cs418", "run", "examples/cs418/rast-checker.txt", "-o", out.join("cs418").to_str().unwrap()]);
+    assert_eq!((cs418.code, cs418.stderr.as_str()), (0, ""));
+    let image = Image::from_png(&std::fs::read(out.join("cs418/checker.png")).unwrap()).unwrap();
+    assert_eq!((image.width, image.height), (32, 32));
+    // Every pixel is one of the texture's two colours (nearest texel, sRGB in and out), opaque.
+    let texture = Image::from_png(&std::fs::read("examples/cs418/checker-texture.png").unwrap()).unwrap();
+    let colours: HashSet<[u8; 4]> = texture.rgba.chunks(4).map(|c| [c[0], c[1], c[2], c[3]]).collect();
+    assert_eq!(colours.len(), 2);
+    let shown: Vec<[u8; 4]> = image.rgba.chunks(4).map(|c| [c[0], c[1], c[2], c[3]]).collect();
+    assert!(shown.iter().all(|c| colours.contains(c)), "only the texture's colours");
+    for colour in &colours {
+        assert!(shown.iter().filter(|c| *c == colour).count() > 300, "both colours fill much of the image");
+    }
+}
