@@ -168,6 +168,10 @@ function renderGrid(stop, quiz) {
     if (s.polygon === stop.polygon) s.pixels.filter(p => p.written).forEach(p => earlier.add(s.row + "," + p.x));
   }
   const table = el("table", undefined, "raster");
+  // Column numbers above the grid, as the rows carry theirs.
+  const numbers = el("tr"); numbers.appendChild(el("th", ""));
+  for (let x = 0; x < data.width; x++) numbers.appendChild(el("th", String(x)));
+  table.appendChild(numbers);
   const rows = view === "frame" ? stop.frame : stop.depth;
   rows.forEach((row, i) => {
     const y = data.height - 1 - i;

@@ -31,9 +31,12 @@ pub struct RunArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
-    /// Label rows with y and columns with x.
-    #[arg(long)]
+    /// Label rows with y and columns with x (the default on a terminal; piped or redirected, the book's bare matrices).
+    #[arg(long, overrides_with = "no_axes")]
     axes: bool,
+    /// Print the bare matrices, without labels, also on a terminal.
+    #[arg(long)]
+    no_axes: bool,
     /// Loop order: polygons then their pixels (the z-buffer), or every pixel then every polygon (the Chinese course notes).
     #[arg(long, value_enum, default_value_t = Order::Polygons)]
     order: Order,
@@ -143,7 +146,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 InsideTest::Ray => zsim::variants::Inside::Ray,
                 InsideTest::Arc => zsim::variants::Inside::Arc,
             }),
-            axes: args.axes,
+            axes: axes(args),
             json,
             final_only,
         };
@@ -171,11 +174,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 let mut text = format!("\n{}\n", report::polygon_heading(&scene, index));
                 let counts = zsim::words!("run-counts", covered = counts.0.to_string(), written = counts.1.to_string());
                 text.push_str(&format!("  {counts}\n"));
-                text.push_str(&buffers_text(&simulation, index, &polygon.name, args.axes));
+                text.push_str(&buffers_text(&simulation, index, &polygon.name, axes(args)));
                 emit(out, &text)?;
             }
             if scene.polygons.is_empty() {
-                let style = MatrixStyle { axes: args.axes, color: super::use_color(), ..MatrixStyle::default() };
+                let style = MatrixStyle { axes: axes(args), color: super::use_color(), ..MatrixStyle::default() };
                 let buffers = simulation.buffers();
                 emit(
                     out,
@@ -257,6 +260,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         }
     }
     Ok(Finish::Ok)
+}
+
+/// Whether the matrices are labelled: `--axes`, or on a terminal unless `--no-axes`.
+fn axes(args: &RunArgs) -> bool {
+    args.axes || (!args.no_axes && std::io::stdout().is_terminal())
 }
 
 /// How many threads draw: `--threads`, else every core.
@@ -411,7 +419,7 @@ fn run_inexact(
             // Only the text report compares with exact, so timing a mode runs that mode alone.
             let (exact, _) = zsim::arith::run(scene, Arith::Exact)?;
             let (frame_cells, depth_cells) = buffers.differences(&exact);
-            let style = MatrixStyle { axes: args.axes, color: super::use_color(), ..MatrixStyle::default() };
+            let style = MatrixStyle { axes: axes(args), color: super::use_color(), ..MatrixStyle::default() };
             emit(
                 out,
                 &format!(

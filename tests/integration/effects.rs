@@ -25,10 +25,22 @@ fn final_buffers(scene: &Scene, stages: StageSet) -> (Vec<Vec<u32>>, Vec<Vec<zsi
     (simulation.buffers().frame_rows(), simulation.buffers().depth_rows())
 }
 
+/// The scenes in `examples/` (its folders hold course cases in their own formats).
+fn example_scenes() -> Vec<std::path::PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
+    let mut paths: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    paths.sort();
+    assert!(paths.len() >= 10, "the example scenes are found");
+    paths
+}
+
 #[test]
 fn plain_loop_and_all_stages_agree_on_every_example() {
-    for entry in std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("examples")).unwrap() {
-        let path = entry.unwrap().path();
+    for path in example_scenes() {
         let scene = Scene::load(&path).unwrap();
         assert_eq!(
             final_buffers(&scene, StageSet::AsAsked),
@@ -89,9 +101,8 @@ fn a_polygon_behind_the_near_plane_is_clipped_away() {
 }
 
 fn examples() -> Vec<(String, Scene)> {
-    let mut scenes: Vec<(String, Scene)> = std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("examples"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
+    let mut scenes: Vec<(String, Scene)> = example_scenes()
+        .into_iter()
         .filter(|p| !p.to_string_lossy().contains("antialias"))
         .map(|p| (p.display().to_string(), Scene::load(&p).unwrap()))
         .collect();

@@ -597,3 +597,50 @@ fn quiz_asks_again_for_a_number_the_z_buffer_cannot_hold() {
     assert!(run.stdout.contains("(15, 15): you said 15 (the value written), right"), "{}", run.stdout);
     assert!(run.stdout.ends_with("quiz score: 1 of 1 right\n"), "{}", run.stdout);
 }
+
+/// On a terminal `run` labels its matrices (a student wants the axes); piped
+/// or with `--no-axes` it prints the book's bare matrices.
+#[test]
+fn run_labels_the_matrices_on_a_terminal_and_not_when_piped() {
+    use std::process::Command;
+    if Command::new("tmux").arg("-V").output().is_err() {
+        crate::skipped("tmux", "run's matrices on a real terminal");
+        return;
+    }
+    let session = format!("zsim-axes-{}", std::process::id());
+    let tmux = |args: &[&str]| Command::new("tmux").args(args).output().expect("tmux runs");
+    let zsim_path = env!("CARGO_BIN_EXE_zsim");
+    let command = format!(
+        "{zsim_path} run examples/rogers.json --after 1 | tail -3; {zsim_path} run examples/rogers.json --after 1 --no-axes > /dev/tty; {zsim_path} run examples/rogers.json --after 1; echo DONE; sleep 60"
+    );
+    let started = tmux(&[
+        "new-session",
+        "-d",
+        "-s",
+        &session,
+        "-x",
+        "120",
+        "-y",
+        "200",
+        "-c",
+        env!("CARGO_MANIFEST_DIR"),
+        &command,
+    ]);
+    assert!(started.status.success(), "{}", String::from_utf8_lossy(&started.stderr));
+    let screen =
+        || String::from_utf8_lossy(&tmux(&["capture-pane", "-p", "-S", "-", "-t", &session]).stdout).into_owned();
+    let mut shown = String::new();
+    for _ in 0..100 {
+        shown = screen();
+        if shown.contains("DONE") {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    }
+    tmux(&["kill-session", "-t", &session]);
+    let labelled = "     0 1 2 3 4 5 6 7 8 9 10 11";
+    assert_eq!(shown.matches(labelled).count(), 2, "twice labelled (frame and depth), once only: {shown}");
+    assert!(shown.contains("31 | 0 0 0"), "{shown}");
+    // Piped (the first command through tail) and --no-axes: bare.
+    assert!(!zsim(&["run", "examples/rogers.json", "--after", "1"]).stdout.contains(" | "));
+}
