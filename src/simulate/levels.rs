@@ -149,20 +149,11 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         let start = (row - self.first_row) as usize * self.width;
         let cells = start + first as usize..=start + last as usize;
         let (tested, mut written) = (u64::from(last - first) + 1, 0u64);
-        // Branch-free: every cell is rewritten with its old or its new value.
+        let test = (use_ceiling, sign, threshold);
         for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
-            let stored = i64::from(*depth);
-            let v = whole + i64::from(use_ceiling & (remainder != 0));
-            let passes = sign * (v - stored) > threshold;
-            let rounded = (whole + i64::from(2 * remainder >= denominator)).clamp(0, max) as u32;
-            *depth = select_unpredictable(passes, rounded, *depth);
-            *frame = select_unpredictable(passes, value, *frame);
+            let passes = test_and_store((depth, frame), (whole, remainder, denominator), test, (max, value), true);
             written += u64::from(passes);
-            whole += step_whole;
-            remainder += step_remainder;
-            let carry = remainder >= denominator;
-            remainder -= select_unpredictable(carry, denominator, 0);
-            whole += i64::from(carry);
+            (whole, remainder) = carry_step((whole, remainder), (step_whole, step_remainder), denominator);
         }
         self.stats.tested += tested;
         self.stats.written += written;
@@ -217,4 +208,39 @@ impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
             frame_after,
         });
     }
+}
+
+/// One cell of a branch-free loop: the depth `whole + remainder/denominator`
+/// (`0 ≤ remainder < denominator`) against the stored level with the test's
+/// constants (`LevelSink::test_constants`); both cells are rewritten with
+/// their old or their new value, so nothing is guessed. `covered` false
+/// leaves them as they are. Returns whether the cell was written.
+#[inline(always)]
+pub(super) fn test_and_store<F: FrameCell>(
+    (depth, frame): (&mut u32, &mut F),
+    (whole, remainder, denominator): (i64, i64, i64),
+    (use_ceiling, sign, threshold): (bool, i64, i64),
+    (max, value): (i64, F),
+    covered: bool,
+) -> bool {
+    // z > s ⇔ ⌈z⌉ > s, z ≥ s ⇔ ⌊z⌋ ≥ s, z < s ⇔ ⌊z⌋ < s, z ≤ s ⇔ ⌈z⌉ ≤ s.
+    let v = whole + i64::from(use_ceiling & (remainder != 0));
+    let passes = covered & (sign * (v - i64::from(*depth)) > threshold);
+    let rounded = (whole + i64::from(2 * remainder >= denominator)).clamp(0, max) as u32;
+    *depth = select_unpredictable(passes, rounded, *depth);
+    *frame = select_unpredictable(passes, value, *frame);
+    passes
+}
+
+/// `whole + remainder/denominator` plus `step`, as whole part and remainder
+/// again (the carry chosen without a branch).
+#[inline(always)]
+pub(super) fn carry_step(
+    (whole, remainder): (i64, i64),
+    (step_whole, step_remainder): (i64, i64),
+    denominator: i64,
+) -> (i64, i64) {
+    let remainder = remainder + step_remainder;
+    let carry = remainder >= denominator;
+    (whole + step_whole + i64::from(carry), remainder - select_unpredictable(carry, denominator, 0))
 }

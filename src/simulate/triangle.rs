@@ -15,8 +15,6 @@
 //! `every_path_draws_alike` and `small_triangles_draw_as_the_scan_converter_draws_them`
 //! hold it to the scan converter.
 
-use std::hint::select_unpredictable;
-
 use crate::geometry::plane::Geometry;
 use crate::numbers::Word;
 use crate::raster::depth::{DepthPlane, DepthTest};
@@ -24,7 +22,7 @@ use crate::raster::sink::PixelRect;
 use crate::rules::{ColumnRule, RowRule, Rules};
 use crate::simulate::buffer::FrameCell;
 use crate::simulate::events::Observer;
-use crate::simulate::levels::LevelSink;
+use crate::simulate::levels::{LevelSink, carry_step, test_and_store};
 use crate::simulate::setup::CORE_CACHE;
 
 /// The largest bounding box (in pixel centres) drawn this way: above it the
@@ -95,7 +93,7 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         let stepper = plane.start_at(plane.row_numerator(centre_y), first_column as u32);
         let (mut row_whole, mut row_remainder, denominator, step_whole, step_remainder) = stepper.parts();
         let (down_whole, down_remainder) = plane.row_step().floor_div(denominator);
-        let (use_ceiling, sign, threshold) = self.test_constants();
+        let test = self.test_constants();
         let (max, value) = (i64::from(self.depth_max), self.value);
         let width = self.width;
         let (mut tested, mut written) = (0u64, 0u64);
@@ -108,27 +106,16 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
             // Branch-free, as the span's loop: every cell is rewritten with its old or its new value.
             for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
                 let covered = (e0 | e1 | e2) >= 0;
-                let stored = i64::from(*depth);
-                let v = whole + i64::from(use_ceiling & (remainder != 0));
-                let passes = covered & (sign * (v - stored) > threshold);
-                let rounded = (whole + i64::from(2 * remainder >= denominator)).clamp(0, max) as u32;
-                *depth = select_unpredictable(passes, rounded, *depth);
-                *frame = select_unpredictable(passes, value, *frame);
+                let passes =
+                    test_and_store((depth, frame), (whole, remainder, denominator), test, (max, value), covered);
                 tested += u64::from(covered);
                 written += u64::from(passes);
                 (e0, e1, e2) = (e0 + edges[0].1, e1 + edges[1].1, e2 + edges[2].1);
-                whole += step_whole;
-                remainder += step_remainder;
-                let carry = remainder >= denominator;
-                remainder -= select_unpredictable(carry, denominator, 0);
-                whole += i64::from(carry);
+                (whole, remainder) = carry_step((whole, remainder), (step_whole, step_remainder), denominator);
             }
             row_edges = [0, 1, 2].map(|k| row_edges[k] + edges[k].2);
-            row_whole += down_whole;
-            row_remainder += down_remainder;
-            let carry = row_remainder >= denominator;
-            row_remainder -= select_unpredictable(carry, denominator, 0);
-            row_whole += i64::from(carry);
+            (row_whole, row_remainder) =
+                carry_step((row_whole, row_remainder), (down_whole, down_remainder), denominator);
         }
         self.stats.tested += tested;
         self.stats.written += written;

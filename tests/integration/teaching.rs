@@ -533,52 +533,53 @@ fn step_writes_a_self_contained_page_that_a_browser_steps_through() {
     assert!(report.ends_with("errors: none"), "{report}");
 }
 
-/// The full-screen quiz in a real terminal (tmux): answered right, then
-/// wrong, then `q`. When the screen closes the score and each mistake stay on
-/// the terminal, as the line mode prints them, and the terminal is given back.
-#[test]
-fn the_full_screen_quiz_prints_its_score_when_it_closes_in_a_real_terminal() {
+/// A terminal of `width`×`height` in tmux running `command` (in the
+/// project's folder, `zsim` the binary under test), given `keys` one group at
+/// a time once `ready` shows; returns the whole screen (with what scrolled
+/// off) once `done` shows. `None` after saying tmux is missing.
+fn in_tmux(size: (u16, u16), command: &str, ready: &str, keys: &[&[&str]], done: &str) -> Option<String> {
     use std::process::Command;
     if Command::new("tmux").arg("-V").output().is_err() {
-        crate::skipped("tmux", "the full-screen quiz in a real terminal");
-        return;
+        crate::skipped("tmux", "the stepper and run in a real terminal");
+        return None;
     }
-    let session = format!("zsim-quiz-{}", std::process::id());
+    let session = format!("zsim-{}-{}", std::process::id(), done.len() + command.len());
     let tmux = |args: &[&str]| Command::new("tmux").args(args).output().expect("tmux runs");
-    let zsim = env!("CARGO_BIN_EXE_zsim");
-    let command = format!("{zsim} step examples/rogers.json --quiz --polygon 2 --scanline 15; echo EXIT=$?; sleep 60");
-    let started = tmux(&[
-        "new-session",
-        "-d",
-        "-s",
-        &session,
-        "-x",
-        "100",
-        "-y",
-        "30",
-        "-c",
-        env!("CARGO_MANIFEST_DIR"),
-        &command,
-    ]);
+    let command = command.replace("zsim ", &format!("{} ", env!("CARGO_BIN_EXE_zsim"))) + "; sleep 60";
+    let (width, height) = (size.0.to_string(), size.1.to_string());
+    let dir = env!("CARGO_MANIFEST_DIR");
+    let started = tmux(&["new-session", "-d", "-s", &session, "-x", &width, "-y", &height, "-c", dir, &command]);
     assert!(started.status.success(), "{}", String::from_utf8_lossy(&started.stderr));
-    let screen = || String::from_utf8_lossy(&tmux(&["capture-pane", "-p", "-t", &session]).stdout).into_owned();
+    let screen =
+        || String::from_utf8_lossy(&tmux(&["capture-pane", "-p", "-S", "-", "-t", &session]).stdout).into_owned();
     let wait_for = |text: &str| {
         for _ in 0..100 {
-            if screen().contains(text) {
-                return;
+            let shown = screen();
+            if shown.contains(text) {
+                return shown;
             }
             std::thread::sleep(std::time::Duration::from_millis(100));
         }
         panic!("never showed {text:?}:\n{}", screen());
     };
-    wait_for("stored 10?");
-    for keys in [&["1", "5", "Enter"][..], &["1", "Enter"], &["q"]] {
-        tmux(&[&["send-keys", "-t", &session][..], keys].concat());
+    wait_for(ready);
+    for group in keys {
+        tmux(&[&["send-keys", "-t", &session][..], group].concat());
         std::thread::sleep(std::time::Duration::from_millis(300));
     }
-    wait_for("EXIT=");
-    let shown = screen();
+    let shown = wait_for(done);
     tmux(&["kill-session", "-t", &session]);
+    Some(shown)
+}
+
+/// The full-screen quiz in a real terminal (tmux): answered right, then
+/// wrong, then `q`. When the screen closes the score and each mistake stay on
+/// the terminal, as the line mode prints them, and the terminal is given back.
+#[test]
+fn the_full_screen_quiz_prints_its_score_when_it_closes_in_a_real_terminal() {
+    let command = "zsim step examples/rogers.json --quiz --polygon 2 --scanline 15; echo EXIT=$?";
+    let keys: [&[&str]; 3] = [&["1", "5", "Enter"], &["1", "Enter"], &["q"]];
+    let Some(shown) = in_tmux((100, 30), command, "stored 10?", &keys, "EXIT=") else { return };
     assert!(shown.contains("quiz score: 1 of 2 right"), "{shown}");
     assert!(shown.contains("your mistakes:"), "{shown}");
     assert!(shown.contains("(16, 15) of polygon 2 \"triangle\": you said 1, right 14: "), "{shown}");
@@ -602,42 +603,8 @@ fn quiz_asks_again_for_a_number_the_z_buffer_cannot_hold() {
 /// or with `--no-axes` it prints the book's bare matrices.
 #[test]
 fn run_labels_the_matrices_on_a_terminal_and_not_when_piped() {
-    use std::process::Command;
-    if Command::new("tmux").arg("-V").output().is_err() {
-        crate::skipped("tmux", "run's matrices on a real terminal");
-        return;
-    }
-    let session = format!("zsim-axes-{}", std::process::id());
-    let tmux = |args: &[&str]| Command::new("tmux").args(args).output().expect("tmux runs");
-    let zsim_path = env!("CARGO_BIN_EXE_zsim");
-    let command = format!(
-        "{zsim_path} run examples/rogers.json --after 1 | tail -3; {zsim_path} run examples/rogers.json --after 1 --no-axes > /dev/tty; {zsim_path} run examples/rogers.json --after 1; echo DONE; sleep 60"
-    );
-    let started = tmux(&[
-        "new-session",
-        "-d",
-        "-s",
-        &session,
-        "-x",
-        "120",
-        "-y",
-        "200",
-        "-c",
-        env!("CARGO_MANIFEST_DIR"),
-        &command,
-    ]);
-    assert!(started.status.success(), "{}", String::from_utf8_lossy(&started.stderr));
-    let screen =
-        || String::from_utf8_lossy(&tmux(&["capture-pane", "-p", "-S", "-", "-t", &session]).stdout).into_owned();
-    let mut shown = String::new();
-    for _ in 0..100 {
-        shown = screen();
-        if shown.contains("DONE") {
-            break;
-        }
-        std::thread::sleep(std::time::Duration::from_millis(100));
-    }
-    tmux(&["kill-session", "-t", &session]);
+    let command = "echo START; zsim run examples/rogers.json --after 1 | tail -3; zsim run examples/rogers.json --after 1 --no-axes > /dev/tty; zsim run examples/rogers.json --after 1; echo DONE";
+    let Some(shown) = in_tmux((120, 200), command, "START", &[], "DONE") else { return };
     let labelled = "     0 1 2 3 4 5 6 7 8 9 10 11";
     assert_eq!(shown.matches(labelled).count(), 2, "twice labelled (frame and depth), once only: {shown}");
     assert!(shown.contains("31 | 0 0 0"), "{shown}");
