@@ -209,11 +209,13 @@ pub fn svg_with(
     for column in (0..width).step_by(step) {
         let _ = writeln!(out, r#"<text x="{}" y="{below}">{column}</text>"#, sx(Q::new(2 * column + 1, 2)));
     }
+    // The x axis's label says where the numbers stand: at pixel centres (x + 1/2).
     let _ = writeln!(
         out,
-        r#"<text x="{}" y="{}">x</text>"#,
+        r#"<text x="{}" y="{}">{}</text>"#,
         sx(Q::new(width, 2)),
-        decimal(Q::from_integer(top + height * CELL + 30), 2)
+        decimal(Q::from_integer(top + height * CELL + 30), 2),
+        escape(&words!("figure-axis-x"))
     );
     for row in (0..height).step_by(step) {
         let _ = writeln!(
@@ -275,7 +277,7 @@ fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, St
                     if v == scene.background {
                         ("#ffffff".to_string(), words!("figure-background", value = v))
                     } else {
-                        (frame_fill(scene, v), words!("figure-value", value = v))
+                        (frame_fill(scene, v), value_label(scene, v))
                     }
                 })
                 .collect()
@@ -289,6 +291,19 @@ fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, St
             ]
         }
     }
+}
+
+/// A framebuffer value's legend label, naming the polygons that write it
+/// (up to two; more are counted).
+fn value_label(scene: &Scene, value: u32) -> String {
+    let names: Vec<String> =
+        scene.polygons.iter().filter(|p| p.value == value).map(|p| format!("\"{}\"", p.name)).collect();
+    let names = match names.len() {
+        0 => return words!("figure-value", value = value),
+        1 | 2 => names.join(&words!("list-comma")),
+        count => words!("figure-polygons", count = count),
+    };
+    words!("figure-value-named", value = value, names = names)
 }
 
 /// Each cell's value written in its pixel: black on light fills, white on dark.

@@ -181,6 +181,9 @@ figure-cell = ({ $x }, { $y }): frame { $frame }, depth { $depth }
 figure-cells = ({ $from } … { $to }, { $y }): frame { $frame }
 figure-background = { $value }: background
 figure-value = value { $value }
+figure-value-named = value { $value }: { $names }
+figure-polygons = { $count } polygons
+figure-axis-x = x (numbers at pixel centres, x + ½)
 figure-cleared = cleared ({ $value })
 figure-far = { $larger_nearer ->
     [yes] lower z: farther

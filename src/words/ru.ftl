@@ -183,6 +183,9 @@ figure-cell = ({ $x }, { $y }): буфер кадра { $frame }, z-буфер {
 figure-cells = ({ $from } … { $to }, { $y }): буфер кадра { $frame }
 figure-background = { $value }: фон
 figure-value = значение { $value }
+figure-value-named = значение { $value }: { $names }
+figure-polygons = многоугольников: { $count }
+figure-axis-x = x (числа стоят у центров пикселов, x + ½)
 figure-cleared = после очистки ({ $value })
 figure-far = { $larger_nearer ->
     [yes] меньше z: дальше

@@ -183,6 +183,9 @@ figure-cell = ({ $x }, { $y }): буфер кадру { $frame }, z-буфер {
 figure-cells = ({ $from } … { $to }, { $y }): буфер кадру { $frame }
 figure-background = { $value }: тло
 figure-value = значення { $value }
+figure-value-named = значення { $value }: { $names }
+figure-polygons = багатокутників: { $count }
+figure-axis-x = x (числа стоять біля центрів пікселів, x + ½)
 figure-cleared = після очищення ({ $value })
 figure-far = { $larger_nearer ->
     [yes] менше z: далі

@@ -170,6 +170,9 @@ figure-cell = ({ $x }, { $y })：帧缓冲器 { $frame }，z缓冲器 { $depth }
 figure-cells = ({ $from } … { $to }, { $y })：帧缓冲器 { $frame }
 figure-background = { $value }：背景
 figure-value = 值 { $value }
+figure-value-named = 值 { $value }：{ $names }
+figure-polygons = { $count } 个多边形
+figure-axis-x = x（数字标在像素中心，x + ½）
 figure-cleared = 清除值（{ $value }）
 figure-far = { $larger_nearer ->
     [yes] z 较小：较远

@@ -366,7 +366,12 @@ fn figure_has_a_legend_values_a_worksheet_and_png() {
     assert_eq!(values.iter().filter(|v| **v == "2").count(), 64, "the triangle's 64 written pixels");
     let legend: Vec<&str> =
         group("legend").children().filter(|n| n.has_tag_name("text")).filter_map(|n| n.text()).collect();
-    assert_eq!(legend, ["0: background", "value 1", "value 2"]);
+    // The legend names the polygons each value comes from (found by a new student: "value 1/2" alone),
+    // and the x axis says its numbers stand at pixel centres (a vertex at x = 3.5 sits under "3").
+    assert_eq!(legend, ["0: background", "value 1: \"rectangle\"", "value 2: \"triangle\""]);
+    let axes: Vec<&str> =
+        group("axes").children().filter(|n| n.has_tag_name("text")).filter_map(|n| n.text()).collect();
+    assert!(axes.contains(&"x (numbers at pixel centres, x + ½)"), "{axes:?}");
     // The worksheet: an empty raster, every outline, every vertex labelled.
     let worksheet = dir.join("worksheet.svg");
     let run = zsim(&["figure", "examples/rogers.json", "--after", "0", "-o", worksheet.to_str().unwrap()]);
