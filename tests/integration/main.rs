@@ -45,6 +45,14 @@ pub fn skipped(what: &str, check: &str) {
     let _ = writeln!(std::io::stderr(), "SKIPPED: {check}: {what} is missing");
 }
 
+/// Says on the terminal (past the test harness's capture, as [`skipped`]
+/// does) that a check needing an outside tool ran, and with what, so that
+/// `cargo test` tells whether the browser and the terminal checks ran.
+pub fn ran(check: &str, with: &str) {
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr(), "RAN: {check}, with {with}");
+}
+
 /// The folder `../shared/peer/NAME` of course files beside the project (never
 /// copied into it), or `None` after [`skipped`] says which check did not run.
 pub fn peer(name: &str, check: &str) -> Option<PathBuf> {

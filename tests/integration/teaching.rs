@@ -504,6 +504,8 @@ fn step_writes_a_self_contained_page_that_a_browser_steps_through() {
         crate::skipped("Chromium (apt-get install chromium)", "the page opened in a browser");
         return;
     };
+    let version = Command::new(browser).arg("--version").output().map(|o| o.stdout).unwrap_or_default();
+    crate::ran("the page opened in a browser", String::from_utf8_lossy(&version).trim());
     let output = Command::new(browser)
         .args(["--headless", "--no-sandbox", "--disable-gpu", "--virtual-time-budget=3000", "--dump-dom"])
         .arg(format!("file://{}#selftest", page.display()))
@@ -553,6 +555,8 @@ fn in_tmux(size: (u16, u16), command: &str, ready: &str, keys: &[&[&str]], done:
     let command = command.replace("zsim ", &format!("{} ", env!("CARGO_BIN_EXE_zsim"))) + "; sleep 60";
     let (width, height) = (size.0.to_string(), size.1.to_string());
     let dir = env!("CARGO_MANIFEST_DIR");
+    let version = tmux(&["-V"]).stdout;
+    crate::ran("the stepper and run in a real terminal", String::from_utf8_lossy(&version).trim());
     let started = tmux(&["new-session", "-d", "-s", &session, "-x", &width, "-y", &height, "-c", dir, &command]);
     assert!(started.status.success(), "{}", String::from_utf8_lossy(&started.stderr));
     let screen =
