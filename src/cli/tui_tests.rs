@@ -1,0 +1,235 @@
+//! The stepper app's tests: on ratatui's test backend, as a person presses keys.
+use super::*;
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use zsim::Scene;
+
+fn book() -> Scene {
+    Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
+}
+
+/// The screen as text, one line a row.
+fn screen(app: &mut App<'_, '_>, width: u16, height: u16) -> String {
+    let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
+    terminal.draw(|frame| app.draw(frame)).unwrap();
+    let buffer = terminal.backend().buffer();
+    // A wide character (CJK) fills two cells; the second holds a blank to skip.
+    let wide = |s: &str| {
+        s.chars().next().is_some_and(|c| {
+            matches!(c as u32, 0x1100..=0x115F | 0x2E80..=0xA4CF | 0xAC00..=0xD7A3 | 0xF900..=0xFAFF | 0xFE30..=0xFE4F | 0xFF00..=0xFF60 | 0xFFE0..=0xFFE6)
+        })
+    };
+    (0..height)
+        .map(|y| {
+            let mut line = String::new();
+            let mut x = 0;
+            while x < width {
+                let symbol = buffer[(x, y)].symbol();
+                line.push_str(symbol);
+                x += if wide(symbol) { 2 } else { 1 };
+            }
+            line.trim_end().to_string() + "\n"
+        })
+        .collect()
+}
+
+fn press(app: &mut App<'_, '_>, keys: &str) {
+    for c in keys.chars() {
+        let code = match c {
+            '\n' => KeyCode::Enter,
+            '→' => KeyCode::Right,
+            '←' => KeyCode::Left,
+            c => KeyCode::Char(c),
+        };
+        app.key(KeyEvent::new(code, KeyModifiers::NONE));
+    }
+}
+
+fn snapshot(name: &str, text: String) {
+    insta::with_settings!({snapshot_path => "../../snapshots", prepend_module_to_snapshot => false, omit_expression => true}, {
+        insta::assert_snapshot!(name, text);
+    });
+}
+
+/// The app speaks the student's language: the book's triangle on the
+/// scanline through (20, 15), in Chinese, at 100 × 30.
+#[test]
+fn the_app_speaks_the_chosen_language() {
+    let scene = book();
+    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+    let mut app = App::new(&mut tracer, None, false);
+    let text = zsim::with_language(zsim::Lang::Zh, || {
+        press(&mut app, "pg15\n");
+        screen(&mut app, 100, 30)
+    });
+    assert!(text.starts_with("zsim step · 多边形 2“triangle”，扫描线 y = 15.5 · 帧缓冲器 · ? 按键"), "{text}");
+    snapshot("tui_rogers_triangle_15_zh", text);
+}
+
+#[test]
+fn the_first_screen_fits_80_by_24() {
+    let scene = book();
+    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+    let mut app = App::new(&mut tracer, None, false);
+    let text = screen(&mut app, 80, 24);
+    assert!(text.lines().all(|l| l.chars().count() <= 80));
+    assert!(text.starts_with("zsim step · polygon 1 \"rectangle\", scanline y = 5.5 · framebuffer · ? keys"), "{text}");
+    snapshot("tui_rogers_first_80x24", text);
+}
+
+#[test]
+fn keys_move_without_enter_and_the_book_pixel_shows() {
+    let scene = book();
+    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+    let mut app = App::new(&mut tracer, None, false);
+    // p: the triangle's first scanline (row 10); g15⏎: its scanline 15; z: the z-buffer.
+    press(&mut app, "pg15\nz");
+    let text = screen(&mut app, 100, 30);
+    assert!(text.contains("polygon 2 \"triangle\", scanline y = 15.5 · z-buffer"), "{text}");
+    assert!(text.contains(" 20 43/4 ≈ 10.75 >10 → 11 (2)"), "{text}");
+    assert!(text.contains(" 21 10           not >10 → hidden"), "{text}");
+    snapshot("tui_rogers_triangle_15_depth", text);
+    // → then ←: the next scanline and back.
+    press(&mut app, "→");
+    assert!(screen(&mut app, 100, 30).contains("scanline y = 16.5"));
+    press(&mut app, "←");
+    assert!(screen(&mut app, 100, 30).contains("scanline y = 15.5"));
+    // m: pixel steps; the first pixel's reason in full.
+    press(&mut app, "m");
+    let text = screen(&mut app, 100, 30);
+    assert!(text.contains("(15, 15): centre x = 31/2 ≈ 15.50, z ="), "{text}");
+    assert!(text.contains("z = 29/2 ≈ 14.50 > 10 stored, so 15 is"), "{text}");
+    press(&mut app, "m");
+    press(&mut app, "g99\n");
+    assert!(screen(&mut app, 100, 30).contains("row 99 is outside the raster (rows 0 … 31)"));
+    press(&mut app, "q");
+    assert!(app.quit);
+}
+
+mod random_keys {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn key() -> impl Strategy<Value = KeyCode> {
+        prop_oneof![
+            prop::sample::select(vec![
+                'n', ' ', 'b', 'p', 'P', 'g', 'f', 'z', 'm', '?', 'q', '<', '>', '[', ']', '-', '/', '0', '1', '5',
+                '9', 'x',
+            ])
+            .prop_map(KeyCode::Char),
+            prop::sample::select(vec![
+                KeyCode::Enter,
+                KeyCode::Esc,
+                KeyCode::Backspace,
+                KeyCode::Left,
+                KeyCode::Right,
+                KeyCode::Up,
+                KeyCode::Down,
+                KeyCode::PageUp,
+                KeyCode::PageDown,
+            ]),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+        /// Any keys, on any example scene, in any terminal size, with or
+        /// without the quiz: every screen draws, and nothing panics.
+        #[test]
+        fn any_keys_draw_every_screen(
+            example in prop::sample::select(vec![
+                "rogers", "antialias", "clip_space", "perspective", "concave", "cull", "section", "transparency",
+            ]),
+            quiz in any::<bool>(),
+            size in (1u16..120, 1u16..40),
+            keys in prop::collection::vec(key(), 0..60),
+        ) {
+            let path = format!("{}/examples/{example}.json", env!("CARGO_MANIFEST_DIR"));
+            let scene = Scene::load(std::path::Path::new(&path)).unwrap();
+            let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+            let mut app = App::new(&mut tracer, None, quiz);
+            screen(&mut app, size.0, size.1);
+            for code in keys {
+                app.key(KeyEvent::new(code, KeyModifiers::NONE));
+                screen(&mut app, size.0, size.1);
+            }
+        }
+    }
+}
+
+#[test]
+fn the_quiz_asks_before_each_pixel_is_shown() {
+    let scene = book();
+    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+    // The triangle's scanline 15 (its recorded scanline 5: rows 10 … 15).
+    let mut app = App::new(&mut tracer, Some((1, 5)), true);
+    let text = screen(&mut app, 100, 30);
+    assert!(text.contains("quiz: the z-buffer after (15, 15), stored 10?"), "{text}");
+    press(&mut app, "15\n");
+    let text = screen(&mut app, 100, 30);
+    assert!(text.contains("(15, 15): you said 15: right: z = 29/2 ≈ 14.50 > 10 stored"), "{text}");
+    assert!(text.contains("quiz 1/1"), "{text}");
+    press(&mut app, "n9\n");
+    assert!(screen(&mut app, 100, 30).contains("(16, 15): you said 9: wrong"));
+}
+
+/// Found by a new student: at 80×24 the `?` box wrapped each key's action
+/// onto the next line. It now lies over the raster too, each key and its
+/// action on one line, in every language.
+#[test]
+fn the_keys_box_keeps_each_key_and_its_action_on_one_line_at_80_by_24() {
+    let scene = book();
+    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+    let mut app = App::new(&mut tracer, None, false);
+    press(&mut app, "?");
+    let text = screen(&mut app, 80, 24);
+    for line in ["n Space Enter → ↓  next scanline (or pixel)", "f / z              show the framebuffer / z-buffer"]
+    {
+        assert!(text.contains(line), "{line:?} on one line:\n{text}");
+    }
+    for lang in [zsim::Lang::Ru, zsim::Lang::Uk, zsim::Lang::Zh] {
+        let help = zsim::with_language(lang, || zsim::message("tui-help", &[]));
+        let text = zsim::with_language(lang, || screen(&mut app, 80, 24));
+        let first = help.lines().next().unwrap();
+        assert!(text.contains(first), "{lang:?}: {first:?} on one line:\n{text}");
+    }
+}
+
+/// Found by a new student: in the full-screen quiz `abc` Enter went back a
+/// scanline (on `b`), `xy` vanished, a digit typed while the verdict showed
+/// was lost, and 99 on a 4-bit z-buffer was scored wrong. Now junk is typed
+/// and asked again, a number the z-buffer cannot hold is asked again, and a
+/// digit after a verdict starts the next answer.
+#[test]
+fn the_quiz_asks_again_on_junk_and_keeps_digits_typed_after_a_verdict() {
+    let scene = book();
+    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
+    let mut app = App::new(&mut tracer, Some((1, 5)), true);
+    press(&mut app, "abc\n");
+    let text = screen(&mut app, 100, 30);
+    assert!(text.contains("\"abc\" is not an answer"), "{text}");
+    assert!(text.contains("quiz: the z-buffer after (15, 15), stored 10?"), "still the same question: {text}");
+    assert!(text.contains("quiz 0/0"), "nothing scored: {text}");
+    press(&mut app, "xy");
+    let text = screen(&mut app, 100, 30);
+    assert!(text.contains("Enter) xy"), "what is typed shows: {text}");
+    press(&mut app, "\n99\n");
+    let text = screen(&mut app, 100, 30);
+    assert!(text.contains("99 does not fit this z-buffer: its cells hold whole levels 0 … 15"), "{text}");
+    assert!(text.contains("quiz 0/0"), "{text}");
+    // Answered, then the next answer typed straight away while the verdict shows.
+    press(&mut app, "15\n14\n");
+    let text = screen(&mut app, 100, 30);
+    assert!(text.contains("(16, 15): you said 14: right"), "{text}");
+    assert!(text.contains("quiz 2/2"), "{text}");
+    press(&mut app, "1\nq");
+    assert!(app.quit);
+    let summary = app.quiz_summary().expect("a quiz");
+    assert!(
+        summary.starts_with(
+            "quiz score: 2 of 3 right\nyour mistakes:\n  (17, 15) of polygon 2 \"triangle\": you said 1, right 13: "
+        ),
+        "{summary}"
+    );
+}
