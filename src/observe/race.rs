@@ -102,6 +102,7 @@ pub fn race(scene: &Scene, pairs: usize, tiling: Option<(u32, usize)>) -> Result
         race.zsim.push(zsim().0);
         race.gpu.push(gpu());
     }
+    // Read back once so that an error the GPU recorded while drawing (glGetError) is reported.
     drawing.picture().map_err(no_gpu)?;
     Ok(race)
 }

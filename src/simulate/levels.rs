@@ -140,16 +140,11 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         if !W::NARROW && (i128::from(denominator) >= LIMIT || reach() >= LIMIT) {
             return false;
         }
-        // z = whole + remainder/denominator with 0 ≤ remainder < denominator and an
-        // integer stored s: z > s ⇔ ⌈z⌉ > s, z ≥ s ⇔ ⌊z⌋ ≥ s, z < s ⇔ ⌊z⌋ < s,
-        // z ≤ s ⇔ ⌈z⌉ ≤ s. So each test is sign·(v − s) > threshold, with v the
-        // floor or the ceiling, sign ±1 and threshold 0 (strict) or −1 (or equal).
-        let (use_ceiling, sign, threshold) = self.test_constants();
+        let test = self.test_constants();
         let (max, value) = (i64::from(self.depth_max), self.value);
         let start = (row - self.first_row) as usize * self.width;
         let cells = start + first as usize..=start + last as usize;
         let (tested, mut written) = (u64::from(last - first) + 1, 0u64);
-        let test = (use_ceiling, sign, threshold);
         for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
             let passes = test_and_store((depth, frame), (whole, remainder, denominator), test, (max, value), true);
             written += u64::from(passes);
@@ -223,7 +218,7 @@ pub(super) fn test_and_store<F: FrameCell>(
     (max, value): (i64, F),
     covered: bool,
 ) -> bool {
-    // z > s ⇔ ⌈z⌉ > s, z ≥ s ⇔ ⌊z⌋ ≥ s, z < s ⇔ ⌊z⌋ < s, z ≤ s ⇔ ⌈z⌉ ≤ s.
+    // The ceiling or the floor, as `LevelSink::test_constants` explains.
     let v = whole + i64::from(use_ceiling & (remainder != 0));
     let passes = covered & (sign * (v - i64::from(*depth)) > threshold);
     let rounded = (whole + i64::from(2 * remainder >= denominator)).clamp(0, max) as u32;

@@ -122,9 +122,12 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         true
     }
 
-    /// The depth test as the branch-free loops compare: whether to compare the
-    /// depth's ceiling (else its floor), the sign that makes nearer larger,
-    /// and the threshold `sign·(v − stored)` must exceed (see `span_fast`).
+    /// The depth test as the branch-free loops compare. For
+    /// `z = whole + remainder/denominator` (`0 ≤ remainder < denominator`) and
+    /// an integer stored `s`: `z > s ⇔ ⌈z⌉ > s`, `z ≥ s ⇔ ⌊z⌋ ≥ s`,
+    /// `z < s ⇔ ⌊z⌋ < s`, `z ≤ s ⇔ ⌈z⌉ ≤ s`; so each test is
+    /// `sign·(v − s) > threshold` with `v` the ceiling (first value `true`) or
+    /// the floor, `sign` ±1 and `threshold` 0 (strict) or −1 (or equal).
     pub(super) fn test_constants(&self) -> (bool, i64, i64) {
         let use_ceiling = matches!(self.test, DepthTest::Greater | DepthTest::LessEqual);
         let sign: i64 = if self.test.larger_is_nearer() { 1 } else { -1 };
