@@ -40,6 +40,9 @@ enum BuetCommand {
         /// Where the triangles come from (default: stage3 when the case has it).
         #[arg(long, value_enum)]
         from: Option<From>,
+        /// Write the scene to this file instead of standard output.
+        #[arg(short, long, value_name = "FILE")]
+        output: Option<PathBuf>,
     },
     /// Compare a student's z_buffer.txt with the case's and explain each difference.
     Check {
@@ -72,9 +75,9 @@ fn source(from: Option<From>) -> Option<Source> {
 pub fn run(args: &BuetArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     match &args.command {
         BuetCommand::Run { case, from, output } => run_case(case, source(*from), output, out),
-        BuetCommand::Import { case, from } => {
-            let case = Case::load(case, source(*from))?;
-            emit(out, &case.scene_json)?;
+        BuetCommand::Import { case, from, output } => {
+            let loaded = Case::load(case, source(*from))?;
+            super::emit_or_write(out, output.as_deref(), &loaded.scene_json, &[case])?;
             Ok(Finish::Ok)
         }
         BuetCommand::Check { case, answer, from } => check(case, source(*from), answer, out),

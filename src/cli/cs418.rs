@@ -44,6 +44,9 @@ enum Cs418Command {
     Import {
         /// The case file.
         case: PathBuf,
+        /// Write the scene to this file instead of standard output.
+        #[arg(short, long, value_name = "FILE")]
+        output: Option<PathBuf>,
     },
 }
 
@@ -61,10 +64,10 @@ pub fn run(args: &Cs418Args, out: &mut dyn Write) -> Result<Finish, Failure> {
         Cs418Command::Run { case, output, arith, compare, tolerance } => {
             run_case(case, output, *arith, compare.as_deref(), *tolerance, out)
         }
-        Cs418Command::Import { case } => {
+        Cs418Command::Import { case, output } => {
             let scene =
                 zsim::cs418::import::scene_json(&load(case, Textures::Ignored)?).map_err(|e| located(case, e))?;
-            emit(out, &scene)?;
+            super::emit_or_write(out, output.as_deref(), &scene, &[case])?;
             Ok(Finish::Ok)
         }
     }

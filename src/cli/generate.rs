@@ -146,6 +146,9 @@ pub struct RandomArgs {
     /// Bits per z-buffer cell (depths are drawn from 0 … 2^min(bits, 24) − 1).
     #[arg(long, default_value_t = 4)]
     depth_bits: u32,
+    /// Write the scene to this file instead of standard output.
+    #[arg(short, long, value_name = "FILE")]
+    output: Option<std::path::PathBuf>,
 }
 
 /// Most triangles `zsim random` writes: 10 million is about 1 GB of JSON,
@@ -173,6 +176,6 @@ pub fn random_command(args: &RandomArgs, out: &mut dyn Write) -> Result<Finish, 
         frame_bits: args.frame_bits,
         depth_bits: args.depth_bits,
     };
-    emit(out, &spec.json())?;
+    super::emit_or_write(out, args.output.as_deref(), &spec.json(), &[])?;
     Ok(Finish::Ok)
 }

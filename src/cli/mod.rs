@@ -10,6 +10,7 @@ mod explain;
 mod figure;
 mod generate;
 mod grade;
+mod install;
 mod page;
 mod run;
 #[cfg(feature = "gpu")]
@@ -70,6 +71,10 @@ enum Command {
     /// Time zsim beside the machine's OpenGL (Mesa's llvmpipe) on the same scene, in alternating pairs: medians and their ratio.
     #[cfg(feature = "gpu")]
     Speed(speed::SpeedArgs),
+    /// Print the shell completion script for bash, zsh, fish, elvish or PowerShell.
+    Completions(install::CompletionsArgs),
+    /// Print zsim's man page (troff), or write one page per command into a folder.
+    Manual(install::ManualArgs),
 }
 
 /// How a command ended, when it did not fail.
@@ -128,6 +133,8 @@ pub fn main() -> ExitCode {
         Command::Random(args) => generate::random_command(&args, &mut out),
         #[cfg(feature = "gpu")]
         Command::Speed(args) => speed::run(&args, &mut out),
+        Command::Completions(args) => install::completions(&args, &mut out),
+        Command::Manual(args) => install::manual(&args, &mut out),
     };
     let result = result.and_then(|finish| out.flush().map(|()| finish).map_err(Failure::Io));
     match result {
@@ -154,6 +161,20 @@ fn use_color() -> bool {
 /// Writes text, turning a closed pipe into a quiet stop.
 fn emit(out: &mut dyn Write, text: &str) -> Result<(), Failure> {
     out.write_all(text.as_bytes()).map_err(Failure::Io)
+}
+
+/// Prints `text`, or writes it to `output` (never one of `inputs`) and says
+/// so: the `-o FILE` of the commands that print a scene.
+pub(crate) fn emit_or_write(
+    out: &mut dyn Write,
+    output: Option<&Path>,
+    text: &str,
+    inputs: &[&Path],
+) -> Result<(), Failure> {
+    let Some(path) = output else { return emit(out, text) };
+    not_an_input(path, inputs)?;
+    std::fs::write(path, text).map_err(|source| Error::Write { path: path.to_owned(), source })?;
+    emit(out, &format!("{}\n", zsim::words!("file-written", path = path.display().to_string())))
 }
 
 /// Refuses an output file that is one of the command's inputs (the same file

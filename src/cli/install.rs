@@ -1,0 +1,64 @@
+//! What a package installs beside the binary, generated from the same clap
+//! definition the binary parses with, so neither can drift from the options:
+//! shell completions (`clap_complete`) and the man pages (`clap_mangen`).
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use clap::{Args, CommandFactory};
+
+use super::{Cli, Failure, Finish};
+
+#[derive(Debug, Args)]
+pub struct CompletionsArgs {
+    /// The shell to complete zsim's commands and options in.
+    #[arg(value_enum)]
+    shell: clap_complete::Shell,
+}
+
+#[derive(Debug, Args)]
+pub struct ManualArgs {
+    /// A folder to write zsim.1 and one page per command (zsim-run.1, …) into; without it, zsim.1 goes to standard output.
+    #[arg(long, value_name = "DIR")]
+    dir: Option<PathBuf>,
+}
+
+/// Prints the completion script for one shell.
+pub fn completions(args: &CompletionsArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let mut command = Cli::command();
+    clap_complete::generate(args.shell, &mut command, "zsim", out);
+    Ok(Finish::Ok)
+}
+
+/// Prints the man page, or writes every command's page into a folder.
+pub fn manual(args: &ManualArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let command = Cli::command();
+    match &args.dir {
+        None => clap_mangen::Man::new(command).render(out)?,
+        Some(dir) => {
+            let mut command = command.disable_help_subcommand(true);
+            command.build();
+            let mut pages = Vec::new();
+            page_and_subpages(&command, &mut pages)?;
+            super::write_fresh(dir, &pages, &[])?;
+            let names: Vec<&str> = pages.iter().map(|(name, _)| name.as_str()).collect();
+            let line = zsim::words!("file-written-in", files = names.join(", "), path = dir.display().to_string());
+            super::emit(out, &format!("{line}\n"))?;
+        }
+    }
+    Ok(Finish::Ok)
+}
+
+/// The man page of `command`, then those of its subcommands, named as man
+/// names them (zsim.1, zsim-run.1, zsim-buet-run.1, …; clap sets these
+/// display names when it builds the command).
+fn page_and_subpages(command: &clap::Command, pages: &mut Vec<(String, Vec<u8>)>) -> Result<(), Failure> {
+    let man = clap_mangen::Man::new(command.clone());
+    let mut page = Vec::new();
+    man.render(&mut page)?;
+    pages.push((man.get_filename(), page));
+    for sub in command.get_subcommands().filter(|s| !s.is_hide_set()) {
+        page_and_subpages(sub, pages)?;
+    }
+    Ok(())
+}
