@@ -508,9 +508,11 @@ impl fmt::Display for PolygonProblem {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Error::Read { path, source } => {
-                f.write_str(&words!("error-read", path = path.display().to_string(), reason = source.to_string()))
-            }
+            Error::Read { path, source } => f.write_str(&words!(
+                "error-read",
+                path = path.display().to_string(),
+                reason = crate::words::io_reason(source)
+            )),
             Error::NotRegular { path, kind } => {
                 let kind = match kind {
                     FileKind::Directory => words!("file-kind-directory"),
@@ -527,9 +529,11 @@ impl fmt::Display for Error {
                 path = path.display().to_string(),
                 limit = (limit >> 20).to_string()
             )),
-            Error::Write { path, source } => {
-                f.write_str(&words!("error-write", path = path.display().to_string(), reason = source.to_string()))
-            }
+            Error::Write { path, source } => f.write_str(&words!(
+                "error-write",
+                path = path.display().to_string(),
+                reason = crate::words::io_reason(source)
+            )),
             Error::SceneFormat { path, location, message } => {
                 if location.is_empty() {
                     write!(f, "{}: {message}", path.display())

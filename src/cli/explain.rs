@@ -30,8 +30,10 @@ pub struct ExplainArgs {
 
 /// Parses `X,Y`.
 pub fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
-    let (x, y) = text.split_once(',').ok_or_else(|| format!("\"{text}\" is not X,Y (for example 20,15)"))?;
-    let coordinate = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("\"{v}\" is not a pixel coordinate"));
+    let shown = |v: &str| zsim::printable(&zsim::token(v)).into_owned();
+    let (x, y) = text.split_once(',').ok_or_else(|| zsim::words!("usage-pixel-not-xy", text = shown(text)))?;
+    let coordinate =
+        |v: &str| v.trim().parse::<u32>().map_err(|_| zsim::words!("usage-pixel-coordinate", text = shown(v)));
     Ok((coordinate(x)?, coordinate(y)?))
 }
 

@@ -109,7 +109,12 @@ impl From<io::Error> for Failure {
 
 /// Parses the arguments, runs the command and maps the outcome to an exit code.
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
+    // The language first, so that a usage error is already in it.
+    zsim::set_language(language_asked().unwrap_or_else(zsim::Lang::from_env));
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(error) => return usage_error(&error),
+    };
     zsim::set_language(cli.lang.unwrap_or_else(zsim::Lang::from_env));
     if stdout_is_closed() {
         // Rust's standard output drops writes to a closed descriptor silently.
@@ -149,6 +154,66 @@ pub fn main() -> ExitCode {
             // Messages quote the input (names, tokens): never let it steer the terminal.
             eprintln!("zsim: {}", zsim::printable(&error.to_string()));
             ExitCode::from(2)
+        }
+    }
+}
+
+/// The `--lang` of the command line, read before clap parses it.
+fn language_asked() -> Option<zsim::Lang> {
+    let args: Vec<String> = std::env::args().collect();
+    args.iter().enumerate().find_map(|(i, arg)| match arg.strip_prefix("--lang") {
+        Some("") => args.get(i + 1).and_then(|code| zsim::Lang::parse(code)),
+        Some(rest) => rest.strip_prefix('=').and_then(zsim::Lang::parse),
+        None => None,
+    })
+}
+
+/// Reports a usage error: clap's own message (with the usage line) in
+/// English; in another language one line in it, naming the argument and the
+/// value, and where to read on. Help and the version print as clap prints them.
+fn usage_error(error: &clap::Error) -> ExitCode {
+    use clap::error::{ContextKind, ContextValue, ErrorKind};
+    let english = zsim::language() == zsim::Lang::En;
+    let context = |kind| match error.get(kind) {
+        Some(ContextValue::String(text)) => zsim::printable(text).into_owned(),
+        Some(ContextValue::Strings(texts)) => zsim::printable(&texts.join(", ")).into_owned(),
+        _ => String::new(),
+    };
+    let message = match error.kind() {
+        _ if english || !error.use_stderr() => None,
+        ErrorKind::MissingRequiredArgument => {
+            Some(zsim::words!("usage-missing", args = context(ContextKind::InvalidArg)))
+        }
+        ErrorKind::InvalidValue | ErrorKind::ValueValidation => {
+            let reason = std::error::Error::source(error).map(|source| source.to_string());
+            Some(zsim::words!(
+                "usage-invalid-value",
+                value = zsim::token(&context(ContextKind::InvalidValue)),
+                arg = context(ContextKind::InvalidArg),
+                reason = reason.unwrap_or_else(|| context(ContextKind::ValidValue))
+            ))
+        }
+        ErrorKind::UnknownArgument => {
+            Some(zsim::words!("usage-unknown-argument", arg = context(ContextKind::InvalidArg)))
+        }
+        ErrorKind::InvalidSubcommand => {
+            Some(zsim::words!("usage-unknown-command", name = context(ContextKind::InvalidSubcommand)))
+        }
+        ErrorKind::ArgumentConflict => Some(zsim::words!(
+            "usage-conflict",
+            arg = context(ContextKind::InvalidArg),
+            other = context(ContextKind::PriorArg)
+        )),
+        _ => None,
+    };
+    match message {
+        Some(message) => {
+            eprintln!("zsim: {message} ({})", zsim::words!("usage-see-help"));
+            ExitCode::from(2)
+        }
+        None => {
+            let _ = error.print();
+            ExitCode::from(error.exit_code().clamp(0, 255) as u8)
         }
     }
 }

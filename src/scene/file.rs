@@ -95,9 +95,9 @@ fn missing_comma(text: &str, error: &serde_json::Error) -> String {
 fn json_message(error: &serde_json::Error) -> String {
     match error.classify() {
         serde_json::error::Category::Syntax | serde_json::error::Category::Eof => {
-            words!("json-invalid", error = error.to_string())
+            words!("json-invalid", error = crate::words::json_reason(&error.to_string()))
         }
-        _ => error.to_string(),
+        _ => crate::words::json_reason(&error.to_string()),
     }
 }
 

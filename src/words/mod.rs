@@ -208,6 +208,11 @@ macro_rules! words {
     };
 }
 
+// After the macro: `words!` is in scope from here on.
+mod system;
+
+pub use system::{io_reason, json_reason};
+
 /// How many characters of a token from a file a message quotes.
 const TOKEN_SHOWN: usize = 32;
 

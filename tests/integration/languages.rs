@@ -249,3 +249,84 @@ fn every_message_gets_every_variable_it_uses_in_every_language() {
     assert!(calls > 300, "{calls} calls found");
     assert!(problems.is_empty(), "{problems:#?}");
 }
+
+/// With `LANG=ru_RU.UTF-8`, what `explain`, `step` and `check` print and
+/// every error they give is Russian: no English word is left once the
+/// tokens quoted from the input (the scene's polygon names, file names,
+/// option names, a value in quotes or backticks) are set aside.
+#[test]
+fn a_russian_locale_leaves_no_english_word_in_explain_step_check_or_their_errors() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("russian-words");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = |name: &str, text: &str| {
+        std::fs::write(dir.join(name), text).unwrap();
+        dir.join(name).display().to_string()
+    };
+    let unknown_key =
+        scene("unknown.json", r#"{"polygons": [{"value": 1, "vertices": [[0,0,0],[1,0,0],[0,1,0]], "colour": 2}]}"#);
+    let wrong_type = scene("type.json", r#"{"polygons": 3}"#);
+    let cut_short = scene("cut.json", r#"{"polygons": ["#);
+    let runs: Vec<Vec<&str>> = vec![
+        vec!["explain", "examples/rogers.json", "--pixel", "20,15"],
+        vec!["explain", "examples/rogers.json", "--pixel", "99,9"],
+        vec!["explain", "examples/rogers.json", "--pixel", "abc"],
+        vec!["explain", "examples/rogers.json", "--pixel", "1,1", "--arith", "f16"],
+        vec!["explain", "missing.json", "--pixel", "1,1"],
+        vec!["explain", &unknown_key, "--pixel", "1,1"],
+        vec!["explain", &wrong_type, "--pixel", "1,1"],
+        vec!["explain", &cut_short, "--pixel", "1,1"],
+        vec!["step", "examples/rogers.json", "--polygon", "2", "--scanline", "15"],
+        vec!["step", "examples/rogers.json", "--polygon", "2", "--scanline", "99"],
+        vec!["step", "examples/rogers.json", "--polygon", "7", "--scanline", "1"],
+        vec!["step", "examples/rogers.json", "--polygon", "2"],
+        vec!["step", "examples/rogers.json", "--polygon", "2", "--scanline", "15", "--wrong"],
+        vec!["check", "examples/rogers.json", "--depth", "examples/class/bo.depth.txt"],
+        vec!["check", "examples/rogers.json", "--frame", "examples/class/di.frame.txt"],
+        vec!["check", "examples/rogers.json", "--frame", "missing.txt"],
+        vec!["check", "examples/rogers.json", "--depth", "tests/fixtures/rogers/frame_after_triangle.txt"],
+    ];
+    let mut english = Vec::new();
+    for args in &runs {
+        let run = crate::zsim_with(None, args, &[("LANG", "ru_RU.UTF-8")]);
+        assert!(run.code <= 2, "{args:?}");
+        for line in run.stdout.lines().chain(run.stderr.lines()) {
+            let words = latin_words(line);
+            if !words.is_empty() {
+                english.push(format!("{args:?}: {words:?} in {line}"));
+            }
+        }
+    }
+    assert!(english.is_empty(), "English left in Russian output:\n{}", english.join("\n"));
+}
+
+/// The words of three or more Latin letters in a line, once quoted tokens
+/// (in «», "", ``), paths, options and the program's name are set aside.
+fn latin_words(line: &str) -> Vec<String> {
+    let mut kept = String::new();
+    let mut quote: Option<char> = None;
+    for c in line.chars() {
+        match (quote, c) {
+            (None, '«') => quote = Some('»'),
+            (None, '"') => quote = Some('"'),
+            (None, '`') => quote = Some('`'),
+            (Some(end), c) if c == end => quote = None,
+            (Some(_), _) => {}
+            (None, c) => kept.push(c),
+        }
+    }
+    // The program, the scene's polygon names, a format's name and the keys of
+    // the scene file a message locates a problem at (`polygons`, `colour`).
+    let allowed = ["zsim", "help", "rectangle", "triangle", "JSON", "polygons", "colour"];
+    kept.split_whitespace()
+        .filter(|w| {
+            !w.starts_with("--")
+                && !w.starts_with('<')
+                && !w.contains('/')
+                && !w.contains(".json")
+                && !w.contains(".txt")
+        })
+        .flat_map(|w| w.split(|c: char| !c.is_ascii_alphabetic()).map(str::to_string).collect::<Vec<_>>())
+        .filter(|w| w.len() >= 3 && !allowed.contains(&w.as_str()))
+        .collect()
+}

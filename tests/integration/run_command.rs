@@ -208,7 +208,7 @@ fn a_missing_comma_is_placed_where_it_belongs() {
     assert_eq!(run.code, 2);
     assert_eq!(
         run.stderr,
-        "zsim: missing_comma.json: not valid JSON: expected `,` or `}` at line 3 column 3 (a comma is missing at the end of line 2)\n"
+        "zsim: missing_comma.json: not valid JSON: `,` or `}` was expected (line 3, column 3) (a comma is missing at the end of line 2)\n"
     );
 }
 

@@ -81,8 +81,9 @@ impl Arith {
             "f32-edge" => Ok(Arith::F32Edge),
             _ => match text.strip_prefix("fixed:").map(str::parse::<u32>) {
                 Some(Ok(bits @ 0..=24)) => Ok(Arith::Fixed(bits)),
-                _ => Err(format!(
-                    "\"{text}\" is not an arithmetic mode: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K (K from 0 to 24)"
+                _ => Err(words!(
+                    "usage-arith",
+                    text = crate::scene::text::printable(&crate::words::token(text)).into_owned()
                 )),
             },
         }

@@ -1,0 +1,165 @@
+//! What the system and the JSON reader say, in the reader's language: an
+//! operating-system error's reason by its kind, and serde_json's messages by
+//! their fixed shapes (`invalid type: integer `3`, expected a sequence at
+//! line 1 column 14`). The tokens a message quotes (a field's name, a value)
+//! stay as they are; a shape not known here is passed on unchanged.
+
+use std::io::ErrorKind;
+
+/// Why reading or writing a file failed, from the error's kind; the system's
+/// own sentence (English) only for kinds without a message here.
+pub fn io_reason(error: &std::io::Error) -> String {
+    let key = match error.kind() {
+        ErrorKind::NotFound => "io-not-found",
+        ErrorKind::PermissionDenied => "io-permission-denied",
+        ErrorKind::AlreadyExists => "io-already-exists",
+        ErrorKind::IsADirectory => "io-is-a-directory",
+        ErrorKind::NotADirectory => "io-not-a-directory",
+        ErrorKind::StorageFull => "io-storage-full",
+        ErrorKind::ReadOnlyFilesystem => "io-read-only",
+        ErrorKind::InvalidData => "io-not-utf8",
+        _ => return error.to_string(),
+    };
+    words!(key)
+}
+
+/// A serde_json message in the reader's language.
+pub fn json_reason(message: &str) -> String {
+    let (body, place) = match message.rsplit_once(" at line ") {
+        Some((body, place)) => match place.split_once(" column ") {
+            Some((line, column)) if line.parse::<u64>().is_ok() && column.parse::<u64>().is_ok() => {
+                (body, Some((line, column)))
+            }
+            _ => (message, None),
+        },
+        None => (message, None),
+    };
+    let body = json_body(body);
+    match place {
+        Some((line, column)) => words!("json-at", message = body, line = line, column = column),
+        None => body,
+    }
+}
+
+fn json_body(body: &str) -> String {
+    if let Some(rest) = body.strip_prefix("invalid type: ")
+        && let Some((found, expected)) = rest.split_once(", expected ")
+    {
+        return words!("json-invalid-type", found = found_kind(found), expected = wanted(expected));
+    }
+    if let Some(rest) = body.strip_prefix("invalid value: ")
+        && let Some((found, expected)) = rest.split_once(", expected ")
+    {
+        return words!("json-invalid-value", found = found_kind(found), expected = wanted(expected));
+    }
+    if let Some(rest) = body.strip_prefix("invalid length ")
+        && let Some((length, expected)) = rest.split_once(", expected ")
+    {
+        return words!("json-invalid-length", length = length, expected = wanted(expected));
+    }
+    if let Some(field) = body.strip_prefix("missing field ") {
+        return words!("json-missing-field", field = field);
+    }
+    if let Some(rest) = body.strip_prefix("unknown field ") {
+        return match rest.split_once(", expected one of ") {
+            Some((field, known)) => words!("json-unknown-field", field = field, known = known),
+            None => words!("json-unknown-field-none", field = rest.split(',').next().unwrap_or(rest)),
+        };
+    }
+    if let Some(rest) = body.strip_prefix("unknown variant ")
+        && let Some((variant, known)) = rest.split_once(", expected one of ").or_else(|| rest.split_once(", expected "))
+    {
+        return words!("json-unknown-variant", variant = variant, known = known);
+    }
+    if let Some(field) = body.strip_prefix("duplicate field ") {
+        return words!("json-duplicate-field", field = field);
+    }
+    if body.starts_with("EOF while parsing") {
+        return words!("json-eof");
+    }
+    if let Some(token) = body.strip_prefix("expected ")
+        && token.starts_with('`')
+    {
+        return words!("json-expected-token", token = token);
+    }
+    let key = match body {
+        "expected value" => "json-expected-value",
+        "expected ident" => "json-expected-value",
+        "trailing characters" => "json-trailing",
+        "trailing comma" => "json-trailing-comma",
+        "key must be a string" => "json-key-string",
+        "invalid number" => "json-invalid-number",
+        "number out of range" => "json-number-range",
+        "invalid escape" => "json-invalid-escape",
+        "recursion limit exceeded" => "json-too-deep",
+        _ if body.starts_with("control character") => "json-control",
+        _ => return body.to_string(),
+    };
+    words!(key)
+}
+
+/// serde's name for what was found: `integer `3``, `string "x"`, `sequence`.
+fn found_kind(found: &str) -> String {
+    let (kind, value) = match found.split_once(' ') {
+        Some((kind, value)) if matches!(kind, "integer" | "string" | "boolean" | "floating") => (kind, value),
+        _ => (found, ""),
+    };
+    let value = value.trim_start_matches("point ").to_string();
+    match kind {
+        "integer" => words!("json-found-integer", value = value),
+        "floating" => words!("json-found-decimal", value = value),
+        "string" => words!("json-found-string", value = value),
+        "boolean" => words!("json-found-bool", value = value),
+        "null" | "unit value" => words!("json-found-null"),
+        "sequence" => words!("json-found-list"),
+        "map" => words!("json-found-object"),
+        _ => found.to_string(),
+    }
+}
+
+/// What was expected, as serde or zsim's readers name it.
+fn wanted(expected: &str) -> String {
+    match expected {
+        "a sequence" => words!("json-want-list"),
+        "a string" => words!("json-want-string"),
+        "a boolean" => words!("json-want-bool"),
+        "a number, or a string holding a fraction or a decimal" => words!("json-want-number"),
+        "a vertex [x, y, z], or [x, y, z, w] in clip space" => words!("json-want-vertex"),
+        _ if expected.starts_with("struct ") || expected == "a map" => words!("json-want-object"),
+        _ if ["u8", "u16", "u32", "u64", "usize", "i32", "i64"].iter().any(|t| expected == *t) => {
+            words!("json-want-whole")
+        }
+        _ => expected.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::words::{Lang, with_language};
+
+    #[test]
+    fn json_messages_are_rendered_in_each_language_with_their_tokens_kept() {
+        let message = "invalid type: integer `3`, expected a sequence at line 1 column 14";
+        assert_eq!(
+            with_language(Lang::En, || json_reason(message)),
+            "invalid type: found the integer `3` where a list was expected (line 1, column 14)"
+        );
+        assert_eq!(
+            with_language(Lang::Ru, || json_reason(message)),
+            "неверный тип: найдено целое число `3`, а ожидался список (строка 1, позиция 14)"
+        );
+        let unknown =
+            with_language(Lang::Uk, || json_reason("unknown field `colour`, expected one of `name`, `value`"));
+        assert_eq!(unknown, "невідоме поле `colour`; можливі поля: `name`, `value`");
+        // A shape not known here passes unchanged rather than being guessed at.
+        assert_eq!(with_language(Lang::Zh, || json_reason("something new")), "something new");
+    }
+
+    #[test]
+    fn io_reasons_are_named_by_kind() {
+        let missing = std::io::Error::from(ErrorKind::NotFound);
+        assert_eq!(with_language(Lang::Ru, || io_reason(&missing)), "нет такого файла или папки");
+        assert_eq!(with_language(Lang::En, || io_reason(&missing)), "no such file or folder");
+    }
+}
