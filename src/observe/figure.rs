@@ -74,7 +74,11 @@ pub fn svg_with(
     let (width, height) = (i128::from(scene.width), i128::from(scene.height));
     // Vertex labels reach out beside the raster: room for them on both sides.
     let pad = if extras.vertex_labels { 100 } else { 0 };
-    let (left, right) = (MARGIN_LEFT + pad, MARGIN_RIGHT + pad);
+    // The polygons' names stand in a column right of the raster, each led to
+    // its polygon by a line, so that no name covers a cell, a value or another polygon.
+    let names = name_labels(scene, buffers, last);
+    let column = names.iter().map(|n| bold_width(&n.text)).max().map_or(0, |w| w + 28);
+    let (left, right) = (MARGIN_LEFT + pad, MARGIN_RIGHT + pad + column);
     let total_width = left + width * CELL + right;
     // About 6 units a character at font size 11.
     let caption = wrap(&extras.caption, ((total_width - left - 8) / 6).max(20) as usize);
@@ -176,17 +180,31 @@ pub fn svg_with(
         // An unnamed polygon is labelled by its number alone, titled in the reader's language.
         let unnamed = crate::words::is_default_name(&polygon.name, index);
         let title = if unnamed { crate::observe::explain::polygon_name(scene, index) } else { polygon.name.clone() };
-        let label = if unnamed { (index + 1).to_string() } else { format!("{} {}", index + 1, escape(&polygon.name)) };
         let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));
-        // At the polygon's middle, off the vertices and the outline, on a white halo
-        // so that it reads over any fill.
-        let middle = |axis: usize| middle(polygon.vertices(), axis);
+    }
+    let _ = writeln!(out, "</g>");
+    // The names: top to bottom in the order of their anchors, each as near its
+    // anchor's height as the names above it allow, a leader line to the anchor.
+    let _ = writeln!(out, r##"<g id="names" font-weight="bold" stroke-width="0.8">"##);
+    let column_x = left + width * CELL + pad + 14;
+    let mut order: Vec<&NameLabel> = names.iter().collect();
+    order.sort_by(|a, b| b.anchor.1.total_cmp(&a.anchor.1));
+    let mut next_free = (top + 4) as f64;
+    for name in order {
+        // The leader starts on the top edge of the anchor's cell (so it covers
+        // no value printed in a cell), runs right along that grid line out of
+        // the raster, then to the name.
+        let ax = left as f64 + name.anchor.0 * CELL as f64;
+        let ay = (top + height * CELL) as f64 - (name.anchor.1 + 0.5) * CELL as f64;
+        let edge = (left + width * CELL + pad / 2 + 6) as f64;
+        let y = (ay + 4.0).max(next_free);
+        next_free = y + 16.0;
         let _ = writeln!(
             out,
-            r#"<text x="{}" y="{}" stroke="white" stroke-width="3" paint-order="stroke" font-weight="bold" text-anchor="middle" fill="black">{}</text>"#,
-            vx(&middle(0)),
-            vy(&middle(1)),
-            label
+            r##"<polyline points="{ax:.2},{ay:.2} {edge:.2},{ay:.2} {},{:.2}" fill="none" stroke="#333333"/><circle cx="{ax:.2}" cy="{ay:.2}" r="2.6" fill="black" stroke="white"/><text x="{column_x}" y="{y:.2}" fill="black">{}</text>"##,
+            column_x - 3,
+            y - 4.0,
+            escape(&name.text)
         );
     }
     let _ = writeln!(out, "</g>");
@@ -427,6 +445,84 @@ fn depth_grey(value: &Stored, scene: &Scene, (low, high): &(Exact, Exact)) -> St
 /// A vertex coordinate to the SVG's (x, or y flipped).
 type ToSvg<'a> = dyn Fn(&Exact) -> String + 'a;
 
+/// A point in pixel units, for placing names.
+type Point = (f64, f64);
+
+/// A polygon's name in the figure and the point, in pixel units, it is led to.
+struct NameLabel {
+    text: String,
+    anchor: (f64, f64),
+}
+
+/// Each drawn polygon's name (its number and name; the number alone when it
+/// has none), anchored at the pixel centre inside it, nearest its middle,
+/// where the framebuffer shows its value; failing that at the centre inside
+/// it nearest its middle, or its middle (a polygon too thin to hold a centre).
+/// Placement only: f64 is exact enough to choose a point to draw a line to.
+fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> {
+    let mut labels = Vec::new();
+    for (index, polygon) in scene.polygons.iter().enumerate().take(last + 1) {
+        let outline: Vec<(f64, f64)> = polygon
+            .vertices()
+            .iter()
+            .map(|v| (crate::numbers::to_f64(v[0].clone()), crate::numbers::to_f64(v[1].clone())))
+            .collect();
+        if outline.is_empty() {
+            continue;
+        }
+        let n = outline.len() as f64;
+        let middle = (outline.iter().map(|p| p.0).sum::<f64>() / n, outline.iter().map(|p| p.1).sum::<f64>() / n);
+        let distance = |p: (f64, f64)| (p.0 - middle.0).powi(2) + (p.1 - middle.1).powi(2);
+        // Best first: a centre whose row, to its right, shows no other polygon
+        // (the leader runs along that row's top edge), then any centre showing
+        // this polygon, then any inside it.
+        let (mut clear, mut visible, mut inside): (Option<Point>, Option<Point>, Option<Point>) = (None, None, None);
+        let nearer = |best: Option<(f64, f64)>, p: (f64, f64)| match best {
+            Some(b) if distance(b) <= distance(p) => Some(b),
+            _ => Some(p),
+        };
+        for y in 0..scene.height {
+            for x in 0..scene.width {
+                let centre = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+                if !contains(&outline, centre) {
+                    continue;
+                }
+                inside = nearer(inside, centre);
+                if buffers.frame(x, y) == polygon.value {
+                    visible = nearer(visible, centre);
+                    let others = (x + 1..scene.width)
+                        .map(|right| buffers.frame(right, y))
+                        .any(|v| v != polygon.value && v != scene.background);
+                    if !others {
+                        clear = nearer(clear, centre);
+                    }
+                }
+            }
+        }
+        let unnamed = crate::words::is_default_name(&polygon.name, index);
+        let text = if unnamed { (index + 1).to_string() } else { format!("{} {}", index + 1, polygon.name) };
+        labels.push(NameLabel { text, anchor: clear.or(visible).or(inside).unwrap_or(middle) });
+    }
+    labels
+}
+
+/// Whether a point lies inside a polygon (crossings counted, even-odd).
+fn contains(outline: &[(f64, f64)], (px, py): (f64, f64)) -> bool {
+    let mut inside = false;
+    for (i, &(x1, y1)) in outline.iter().enumerate() {
+        let (x2, y2) = outline[(i + 1) % outline.len()];
+        if (y1 > py) != (y2 > py) && px < x1 + (py - y1) * (x2 - x1) / (y2 - y1) {
+            inside = !inside;
+        }
+    }
+    inside
+}
+
+/// The width of a bold label at font size 11.
+fn bold_width(label: &str) -> i128 {
+    label.chars().map(|c| if is_wide(c) { 12 } else { 8 }).sum()
+}
+
 /// The mean of the vertices' coordinate `axis`, exactly.
 fn middle(vertices: &[[Exact; 3]], axis: usize) -> Exact {
     let sum = vertices.iter().fold(Exact::Word(Q::from_integer(0)), |sum, v| sum.plus(&v[axis]));
@@ -533,6 +629,39 @@ mod tests {
         for pair in lumas.windows(2) {
             assert!(pair[0] > pair[1] + 160, "{lumas:?}");
         }
+    }
+
+    /// Found by a new student: "1 rectangle" stood at the rectangle's middle,
+    /// inside the triangle, and names covered cell values. Each name now
+    /// stands right of the raster, led to a cell that shows its polygon and
+    /// whose row, to its right, shows no other polygon.
+    #[test]
+    fn names_stand_beside_the_raster_led_to_a_cell_of_their_own() {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")).unwrap();
+        let scene = Scene::from_json(&text, std::path::Path::new("rogers.json")).unwrap();
+        let mut simulation = crate::Simulation::new(&scene);
+        simulation.finish(&mut crate::Unobserved);
+        let buffers = simulation.buffers();
+        let names = name_labels(&scene, buffers, 1);
+        let texts: Vec<&str> = names.iter().map(|n| n.text.as_str()).collect();
+        assert_eq!(texts, ["1 rectangle", "2 triangle"]);
+        // The centres nearest each middle that qualify: (17, 9) below the
+        // triangle for the rectangle, (25, 16) right of the rectangle for the triangle.
+        assert_eq!(names.iter().map(|n| n.anchor).collect::<Vec<_>>(), [(17.5, 9.5), (25.5, 16.5)]);
+        for (name, polygon) in names.iter().zip(&scene.polygons) {
+            let (x, y) = (name.anchor.0 as u32, name.anchor.1 as u32);
+            assert_eq!(buffers.frame(x, y), polygon.value);
+            assert!((x + 1..scene.width).all(|r| [polygon.value, scene.background].contains(&buffers.frame(r, y))));
+        }
+        let svg = svg(&scene, buffers, 1, Shading::Frame, "t");
+        let raster_right = MARGIN_LEFT + 32 * CELL;
+        let name_x: Vec<i128> = svg
+            .lines()
+            .filter(|l| l.contains("</text>") && (l.contains(">1 rectangle<") || l.contains(">2 triangle<")))
+            .map(|l| l.split("<text x=\"").nth(1).unwrap().split('"').next().unwrap().parse().unwrap())
+            .collect();
+        assert_eq!(name_x.len(), 2);
+        assert!(name_x.iter().all(|x| *x > raster_right), "{name_x:?}");
     }
 
     /// The legend's labels are spaced by their width: a Chinese character

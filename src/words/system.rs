@@ -126,7 +126,7 @@ fn wanted(expected: &str) -> String {
         "a number, or a string holding a fraction or a decimal" => words!("json-want-number"),
         "a vertex [x, y, z], or [x, y, z, w] in clip space" => words!("json-want-vertex"),
         _ if expected.starts_with("struct ") || expected == "a map" => words!("json-want-object"),
-        _ if ["u8", "u16", "u32", "u64", "usize", "i32", "i64"].iter().any(|t| expected == *t) => {
+        _ if ["u8", "u16", "u32", "u64", "usize", "i32", "i64"].contains(&expected) => {
             words!("json-want-whole")
         }
         _ => expected.to_string(),
