@@ -401,7 +401,8 @@ impl<'t, 's> App<'t, 's> {
         };
         let cell = values.iter().flatten().map(String::len).max().unwrap_or(1) + 1;
         let (width, height) = (scene.width as i32, scene.height as i32);
-        let rows_shown = (area.height as i32 - 1).max(1);
+        // Below the rows: the column numbers, then which columns are shown.
+        let rows_shown = (area.height as i32 - 2).max(1);
         let columns_shown = ((area.width as i32 - 5) / cell as i32).max(1);
         let row = record.map_or(0, |r| r.row as i32);
         let (span_first, span_last) = record
@@ -439,6 +440,7 @@ impl<'t, 's> App<'t, 's> {
             lines.push(Line::from(spans));
         }
         let last_shown = (first + columns_shown).min(width) - 1;
+        lines.push(Line::from(format!("     {}", column_numbers(first..=last_shown, cell))));
         let shown = zsim::words!(
             "tui-columns-shown",
             first = first.to_string(),
@@ -546,6 +548,24 @@ impl<'t, 's> App<'t, 's> {
 /// Runs the app on the terminal until the user quits; the terminal is given
 /// back as it was (raw mode off, alternate screen left) on quitting and on a
 /// panic (ratatui's hook).
+/// The numbers of `columns`, each right-aligned under its cell of `cell`
+/// characters, left out where it would touch the number before it (on
+/// narrow cells every other one, or fewer, is shown).
+fn column_numbers(columns: std::ops::RangeInclusive<i32>, cell: usize) -> String {
+    let mut line = String::new();
+    for (k, x) in columns.enumerate() {
+        let number = x.to_string();
+        let end = (k + 1) * cell;
+        let start = end - number.len().min(end);
+        // One space at least between two numbers.
+        if start > line.len() || (line.is_empty() && start == 0) {
+            line.push_str(&" ".repeat(start - line.len()));
+            line.push_str(&number);
+        }
+    }
+    line
+}
+
 pub fn run(app: &mut App<'_, '_>) -> std::io::Result<()> {
     let mut terminal = ratatui::init();
     let result = (|| {

@@ -233,3 +233,11 @@ fn the_quiz_asks_again_on_junk_and_keeps_digits_typed_after_a_verdict() {
         "{summary}"
     );
 }
+
+/// Found by a new student: the raster pane had row numbers but no column
+/// numbers. They stand under their cells, every one that fits.
+#[test]
+fn the_raster_pane_numbers_its_columns() {
+    assert_eq!(super::column_numbers(8..=12, 2), " 8 9  11");
+    assert_eq!(super::column_numbers(0..=3, 3), "  0  1  2  3");
+}
