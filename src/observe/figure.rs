@@ -347,7 +347,9 @@ fn cell_values(
                 }
             };
             let colour = if fill.as_deref().is_some_and(is_dark) { "white" } else { "black" };
-            let (cx, cy) = (Q::new(2 * i128::from(x) + 1, 2), Q::new(2 * i128::from(y) + 1, 2) - Q::new(1, 6));
+            // The baseline 2 px above the centre: the dashed scanline through the
+            // centre runs just under the digits, not through them.
+            let (cx, cy) = (Q::new(2 * i128::from(x) + 1, 2), Q::new(2 * i128::from(y) + 1, 2) + Q::new(1, 12));
             let _ = writeln!(out, r#"<text x="{}" y="{}" fill="{colour}">{}</text>"#, sx(cx), sy(cy), escape(&text));
         }
     }
