@@ -666,6 +666,28 @@ mod tests {
         assert!(name_x.iter().all(|x| *x > raster_right), "{name_x:?}");
     }
 
+    /// Found by a new student: with `--values` the dashed scanlines ran
+    /// through the digits. Every value's baseline lies 2 px above the scanline
+    /// of its row.
+    #[test]
+    fn values_sit_above_the_dashed_scanlines() {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")).unwrap();
+        let scene = Scene::from_json(&text, std::path::Path::new("rogers.json")).unwrap();
+        let mut simulation = crate::Simulation::new(&scene);
+        simulation.finish(&mut crate::Unobserved);
+        let extras = Extras { values: true, ..Extras::default() };
+        let svg = svg_with(&scene, simulation.buffers(), 1, Shading::Frame, "t", &extras);
+        let group = |id: &str| -> Vec<f64> {
+            let start = svg.find(&format!("<g id=\"{id}\"")).unwrap();
+            let body = &svg[start..start + svg[start..].find("</g>").unwrap()];
+            let attribute = if id == "values" { " y=\"" } else { " y1=\"" };
+            body.split(attribute).skip(1).map(|rest| rest.split('"').next().unwrap().parse().unwrap()).collect()
+        };
+        let (values, scanlines) = (group("values"), group("scanlines"));
+        assert_eq!(values.len(), 32 * 32);
+        assert!(values.iter().all(|y| scanlines.iter().any(|line| (line - y - 2.0).abs() < 1e-9)), "{values:?}");
+    }
+
     /// The legend's labels are spaced by their width: a Chinese character
     /// takes about twice a Latin or Cyrillic one.
     #[test]
