@@ -144,7 +144,7 @@ pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, Sc
 pub use simulate::setup::{Stats, fate};
 pub use simulate::simulation::Simulation;
 pub use simulate::stages::{StageSet, describe};
-pub use teach::{exercise, grade};
+pub use teach::{diagnose, exercise, grade};
 pub use words::{
     Arg, Lang, language, localize_decimal, polygon_label, set_language, text as message, token, with_language,
 };

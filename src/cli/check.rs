@@ -115,6 +115,13 @@ pub fn report(
     };
     let reference = mode_buffers.as_ref().unwrap_or(simulation.buffers());
     let cells = scene.width as usize * scene.height as usize;
+    // The misconception that explains the wrong cells, for answers checked exactly.
+    let diagnosis = if arith == zsim::arith::Arith::Exact {
+        let answer = |wanted: Buffer| answers.iter().find(|(b, _, _)| *b == wanted).map(|(_, _, m)| m);
+        zsim::diagnose::diagnose(scene, last, answer(Buffer::Frame), answer(Buffer::Depth))
+    } else {
+        None
+    };
     let mut results = Vec::new();
     for (buffer, path, answer) in answers {
         let expected = match buffer {
@@ -167,6 +174,9 @@ pub fn report(
             text.push('\n');
         }
         text.push_str(&format!("{}\n", table(scene, *buffer, mismatches, &watcher, (arith, simulation.buffers()))));
+    }
+    if let Some(diagnosis) = diagnosis {
+        text.push_str(&format!("{}\n", diagnosis.words()));
     }
     Ok(Report { text, differs })
 }

@@ -81,8 +81,10 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     }
     // Each answer graded, the common mistakes and zsim's reason for each, in
     // this thread's language.
+    // The usual wrong rules, drawn once for the whole class.
+    let diagnoser = zsim::diagnose::Diagnoser::new(&scene, last);
     let assess = || {
-        let graded = grade(&submissions(&files, &expected, &scene), &expected);
+        let graded = grade(&submissions(&files, &expected, &scene), &expected, diagnoser.as_ref());
         let mistakes = common_mistakes(&graded, MISTAKES_LISTED);
         let reasons = reasons(&scene, last, &mistakes);
         (graded, mistakes, reasons)
@@ -112,7 +114,12 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 malformed = counts(|g| matches!(g.status, Status::Malformed(_))),
                 missing = counts(|g| matches!(g.status, Status::Missing(_)))
             );
-            format!("{summary}\n{}\n\n{}", table(&rows), mistakes_text(&mistakes, &reasons, graded.len()))
+            format!(
+                "{summary}\n{}\n\n{}{}",
+                table(&rows),
+                causes_text(&rows),
+                mistakes_text(&mistakes, &reasons, graded.len())
+            )
         }
     };
     if let Some(folder) = &args.output {
@@ -197,27 +204,58 @@ fn reasons(scene: &Scene, last: usize, mistakes: &[CommonMistake]) -> Vec<String
 
 fn table(rows: &[&Grade]) -> Table {
     let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_header(
-        [
-            "grade-column-student",
-            "grade-column-frame",
-            "grade-column-depth",
-            "grade-column-score",
-            "grade-column-status",
-        ]
-        .map(|key| zsim::words!(key)),
-    );
+    // A likely-cause column only when a cause was found for someone.
+    let causes = rows.iter().any(|g| g.misconception.is_some());
+    let columns = ["student", "frame", "depth", "score", "status", "cause"];
+    let header = columns[..if causes { 6 } else { 5 }].iter().map(|c| zsim::words!(&format!("grade-column-{c}")));
+    // Long statuses and causes wrap inside their column: the table stays 100 columns wide at most.
+    table
+        .load_style(presets::ASCII_MARKDOWN)
+        .set_content_arrangement(comfy_table::ContentArrangement::Dynamic)
+        .set_width(100)
+        .set_header(header);
     for grade in rows {
         let count = |c: Option<usize>| c.map_or_else(|| "-".to_string(), |c| c.to_string());
-        table.add_row([
+        let mut row = vec![
             grade.student.clone(),
             count(grade.frame_wrong),
             count(grade.depth_wrong),
             zsim::localize_decimal(grade.percent()),
             status_text(&grade.status),
-        ]);
+        ];
+        if causes {
+            row.push(grade.misconception.map_or_else(String::new, |d| {
+                let what = d.misconception.words();
+                zsim::words!("grade-cause", what = what, explained = d.explained, wrong = d.wrong)
+            }));
+        }
+        table.add_row(row);
     }
     table
+}
+
+/// The class's likely causes: each misconception named for a student, with
+/// how many students it was named for, most first.
+fn causes_text(rows: &[&Grade]) -> String {
+    let mut counts: Vec<(zsim::diagnose::Misconception, usize)> = Vec::new();
+    for misconception in rows.iter().filter_map(|g| g.misconception.map(|d| d.misconception)) {
+        match counts.iter_mut().find(|(m, _)| *m == misconception) {
+            Some((_, count)) => *count += 1,
+            None => counts.push((misconception, 1)),
+        }
+    }
+    if counts.is_empty() {
+        return String::new();
+    }
+    counts.sort_by_key(|(m, count)| (std::cmp::Reverse(*count), *m));
+    let mut text = format!("{}\n", zsim::words!("grade-causes"));
+    for (misconception, count) in counts {
+        let line =
+            zsim::words!("grade-cause-count", what = misconception.words(), count = count, students = rows.len());
+        text.push_str(&format!("  {line}\n"));
+    }
+    text.push('\n');
+    text
 }
 
 /// A student's status in the reader's language (CSV and JSON keep
@@ -275,16 +313,17 @@ fn csv_field(text: &str) -> String {
 }
 
 fn csv(rows: &[&Grade]) -> String {
-    let mut text = String::from("student,frame_wrong,depth_wrong,score,status\n");
+    let mut text = String::from("student,frame_wrong,depth_wrong,score,status,misconception\n");
     for grade in rows {
         let count = |c: Option<usize>| c.map_or_else(String::new, |c| c.to_string());
         text.push_str(&format!(
-            "{},{},{},{},{}\n",
+            "{},{},{},{},{},{}\n",
             csv_field(&grade.student),
             count(grade.frame_wrong),
             count(grade.depth_wrong),
             grade.percent(),
-            csv_field(&grade.status.to_string())
+            csv_field(&grade.status.to_string()),
+            grade.misconception.map_or("", |d| d.misconception.name())
         ));
     }
     text
@@ -300,6 +339,8 @@ fn json(scene: &Path, after: &str, rows: &[&Grade], mistakes: &[CommonMistake], 
                 "depth_wrong": g.depth_wrong,
                 "score": g.percent(),
                 "status": g.status.to_string(),
+                "misconception": g.misconception.map(|d| d.misconception.name()),
+                "explained": g.misconception.map(|d| d.explained),
             })
         })
         .collect();

@@ -10,6 +10,7 @@ use rayon::prelude::*;
 use crate::numbers::{Q, decimal};
 use crate::observe::check::{Matrix, compare};
 use crate::observe::explain::Buffer;
+use crate::teach::diagnose::{Diagnoser, Diagnosis};
 
 /// One student's answer for one buffer, as found in the class folder.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -72,6 +73,8 @@ pub struct Grade {
     pub score: Q,
     /// The verdict.
     pub status: Status,
+    /// The wrong rule that explains the wrong cells, when one does.
+    pub misconception: Option<Diagnosis>,
 }
 
 impl Grade {
@@ -101,8 +104,12 @@ pub struct CommonMistake {
 /// Grades every submission against the expected matrices (one per buffer
 /// the class hands in, top row first); rows in the order of `submissions`.
 /// Also returns each student's wrong cells per buffer, for the common
-/// mistakes.
-pub fn grade(submissions: &[Submission], expected: &[(Buffer, Matrix)]) -> Vec<(Grade, Vec<WrongCells>)> {
+/// mistakes. With a `diagnoser`, each wrong answer's likely misconception is named.
+pub fn grade(
+    submissions: &[Submission],
+    expected: &[(Buffer, Matrix)],
+    diagnoser: Option<&Diagnoser>,
+) -> Vec<(Grade, Vec<WrongCells>)> {
     let total: usize = expected.iter().map(|(_, m)| m.iter().map(Vec::len).sum::<usize>()).sum();
     // Students in parallel, rows in their order.
     submissions
@@ -111,6 +118,7 @@ pub fn grade(submissions: &[Submission], expected: &[(Buffer, Matrix)]) -> Vec<(
             let (mut frame_wrong, mut depth_wrong, mut right) = (None, None, 0usize);
             let (mut malformed, mut missing, mut wrong) = (None, None, false);
             let mut cells = Vec::new();
+            let mut read: [Option<&Matrix>; 2] = [None, None];
             for (buffer, matrix) in expected {
                 let handed = submission.answers.iter().find(|(b, _)| b == buffer).map(|(_, h)| h);
                 let name = format!("{}.{}.txt", submission.student, file_kind(*buffer));
@@ -122,6 +130,7 @@ pub fn grade(submissions: &[Submission], expected: &[(Buffer, Matrix)]) -> Vec<(
                         malformed.get_or_insert(format!("{name}: {why}"));
                     }
                     Handed::Matrix(answer) => {
+                        read[usize::from(*buffer == Buffer::Depth)] = Some(answer);
                         let mismatches = compare(answer, matrix);
                         let size: usize = matrix.iter().map(Vec::len).sum();
                         right += size - mismatches.len();
@@ -141,7 +150,9 @@ pub fn grade(submissions: &[Submission], expected: &[(Buffer, Matrix)]) -> Vec<(
                 (None, None, false) => Status::Ok,
             };
             let score = if total == 0 { Q::from_integer(0) } else { Q::new(right as i128, total as i128) };
-            (Grade { student: submission.student.clone(), frame_wrong, depth_wrong, score, status }, cells)
+            let misconception = diagnoser.filter(|_| wrong).and_then(|d| d.diagnose(read[0], read[1]));
+            let student = submission.student.clone();
+            (Grade { student, frame_wrong, depth_wrong, score, status, misconception }, cells)
         })
         .collect()
 }
@@ -218,7 +229,7 @@ mod tests {
             submission("cy", Handed::Malformed("2 rows; the raster has 3".into())),
             submission("di", Handed::Missing),
         ];
-        let rows: Vec<Grade> = grade(&class, &expected).into_iter().map(|(g, _)| g).collect();
+        let rows: Vec<Grade> = grade(&class, &expected, None).into_iter().map(|(g, _)| g).collect();
         let summary: Vec<(String, Option<usize>, String, String)> =
             rows.iter().map(|g| (g.student.clone(), g.frame_wrong, g.percent(), g.status.to_string())).collect();
         assert_eq!(
@@ -240,7 +251,7 @@ mod tests {
             submission("b", Handed::Matrix(vec![vec![1, 2, 0], vec![1, 1, 0]])),
             submission("c", Handed::Matrix(vec![vec![1, 1, 0], vec![1, 1, 1]])),
         ];
-        let mistakes = common_mistakes(&grade(&class, &expected), 10);
+        let mistakes = common_mistakes(&grade(&class, &expected, None), 10);
         let cells: Vec<(u32, u32, usize)> = mistakes.iter().map(|m| (m.x, m.y, m.students.len())).collect();
         // (1, 1): all three wrong, two said 1 and one 2; (2, 0): two wrong.
         assert_eq!(cells, vec![(1, 1, 3), (2, 0, 2)]);

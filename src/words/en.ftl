@@ -787,3 +787,27 @@ usage-unknown-argument = unknown option { $arg }
 usage-unknown-command = unknown command { $name }
 usage-conflict = { $arg } cannot be given with { $other }
 usage-see-help = see zsim --help
+
+## The misconception behind a wrong answer (teach/diagnose.rs)
+diagnosis = likely cause: { $what } (explains { $explained } of the { $wrong } wrong { $wrong ->
+    [one] cell
+   *[other] cells
+})
+misconception-truncated = depths truncated (rounded down) instead of rounded to the nearest integer
+misconception-half-down = halves rounded down instead of up (10.5 stored as 10)
+misconception-rounded-compared = the rounded depth compared with the stored one instead of the exact z
+misconception-no-saturation = depths beyond the z-buffer's range wrapped around instead of saturating
+misconception-not-strict = an equal depth let through (≥ instead of >)
+misconception-reversed = the depth test reversed (smaller z taken as nearer)
+misconception-last-only = only the last polygon drawn
+misconception-one-early = the answer for one polygon earlier
+misconception-bottom-first = the rows written bottom row first
+misconception-corners = pixels sampled at their corners instead of their centres
+misconception-cell-rule = columns taken from the cells the span's ends fall in instead of the centres inside the span
+grade-column-cause = likely cause
+grade-cause = { $what } ({ $explained } of { $wrong })
+grade-causes = likely causes in the class:
+grade-cause-count = { $what }: { $count } of { $students } { $students ->
+    [one] student
+   *[other] students
+}

@@ -766,3 +766,27 @@ usage-unknown-argument = неизвестный параметр { $arg }
 usage-unknown-command = неизвестная команда { $name }
 usage-conflict = { $arg } нельзя задавать вместе с { $other }
 usage-see-help = справка: zsim --help
+
+## The misconception behind a wrong answer (teach/diagnose.rs)
+diagnosis = вероятная причина: { $what } (объясняет { $explained } из { $wrong } { $wrong ->
+    [one] неверной ячейки
+   *[other] неверных ячеек
+})
+misconception-truncated = глубины отброшены до целого (округлены вниз), а не округлены до ближайшего целого
+misconception-half-down = половины округлены вниз, а не вверх (10,5 записано как 10)
+misconception-rounded-compared = с z-буфером сравнивалась округлённая глубина, а не точное z
+misconception-no-saturation = глубины за пределами диапазона z-буфера переполнились по кругу, а не насытились
+misconception-not-strict = равная глубина пропущена (≥ вместо >)
+misconception-reversed = тест глубины перевёрнут (ближе считалось меньшее z)
+misconception-last-only = нарисован только последний многоугольник
+misconception-one-early = ответ на один многоугольник раньше
+misconception-bottom-first = строки записаны начиная с нижней
+misconception-corners = пикселы взяты в углах, а не в центрах
+misconception-cell-rule = столбцы взяты по клеткам, в которые попадают концы отрезка, а не по центрам внутри отрезка
+grade-column-cause = вероятная причина
+grade-cause = { $what } ({ $explained } из { $wrong })
+grade-causes = вероятные причины в группе:
+grade-cause-count = { $what }: { $count } из { $students } { $students ->
+    [one] студента
+   *[other] студентов
+}

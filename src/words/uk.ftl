@@ -766,3 +766,27 @@ usage-unknown-argument = невідомий параметр { $arg }
 usage-unknown-command = невідома команда { $name }
 usage-conflict = { $arg } не можна задавати разом із { $other }
 usage-see-help = довідка: zsim --help
+
+## The misconception behind a wrong answer (teach/diagnose.rs)
+diagnosis = імовірна причина: { $what } (пояснює { $explained } з { $wrong } { $wrong ->
+    [one] неправильної клітинки
+   *[other] неправильних клітинок
+})
+misconception-truncated = глибини відкинуто до цілого (округлено вниз), а не округлено до найближчого цілого
+misconception-half-down = половини округлено вниз, а не вгору (10,5 записано як 10)
+misconception-rounded-compared = із z-буфером порівнювали округлену глибину, а не точне z
+misconception-no-saturation = глибини поза діапазоном z-буфера переповнилися по колу, а не наситилися
+misconception-not-strict = рівну глибину пропущено (≥ замість >)
+misconception-reversed = тест глибини перевернуто (ближчим вважали менше z)
+misconception-last-only = намальовано лише останній багатокутник
+misconception-one-early = відповідь на один багатокутник раніше
+misconception-bottom-first = рядки записано починаючи з нижнього
+misconception-corners = пікселі взято в кутах, а не в центрах
+misconception-cell-rule = стовпці взято за клітинками, у які потрапляють кінці відрізка, а не за центрами всередині відрізка
+grade-column-cause = імовірна причина
+grade-cause = { $what } ({ $explained } з { $wrong })
+grade-causes = імовірні причини в групі:
+grade-cause-count = { $what }: { $count } з { $students } { $students ->
+    [one] студента
+   *[other] студентів
+}

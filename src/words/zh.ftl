@@ -742,3 +742,21 @@ usage-unknown-argument = 未知选项 { $arg }
 usage-unknown-command = 未知命令 { $name }
 usage-conflict = { $arg } 不能与 { $other } 同时使用
 usage-see-help = 帮助：zsim --help
+
+## The misconception behind a wrong answer (teach/diagnose.rs)
+diagnosis = 可能的原因：{ $what }（解释了 { $wrong } 个错误单元中的 { $explained } 个）
+misconception-truncated = 深度被截断（向下取整），而不是四舍五入到最接近的整数
+misconception-half-down = 0.5 向下舍入而不是向上（10.5 存为 10）
+misconception-rounded-compared = 与 z 缓冲器比较的是舍入后的深度，而不是精确的 z
+misconception-no-saturation = 超出 z 缓冲器范围的深度回绕了，而不是饱和
+misconception-not-strict = 相等的深度也通过了（≥ 而不是 >）
+misconception-reversed = 深度测试反了（把较小的 z 当作更近）
+misconception-last-only = 只画了最后一个多边形
+misconception-one-early = 答的是前一个多边形之后的状态
+misconception-bottom-first = 行从最下面一行开始写
+misconception-corners = 在像素角点而不是中心采样
+misconception-cell-rule = 列按区段端点所在的单元格取，而不是按区段内的中心
+grade-column-cause = 可能的原因
+grade-cause = { $what }（{ $wrong } 个中的 { $explained } 个）
+grade-causes = 全班可能的原因：
+grade-cause-count = { $what }：{ $students } 名学生中有 { $count } 名

@@ -59,12 +59,12 @@ fn grade_gives_a_row_per_student_sorted_with_the_status_of_each() {
     assert_eq!((run.code, run.stderr.as_str()), (1, ""), "some answers are wrong: exit 1");
     assert_eq!(
         run.stdout,
-        "student,frame_wrong,depth_wrong,score,status\n\
-         ana,0,0,100.0,ok\n\
-         bo,0,2,99.9,wrong\n\
-         cy,1,2,99.9,wrong\n\
-         di,,0,50.0,\"malformed: di.frame.txt: line 1, value 3 (x = 2, y = 31): \"\"x\"\" is not a whole number (a 2-bit framebuffer holds 0 … 3)\"\n\
-         ed,0,,50.0,missing: ed.depth.txt\n"
+        "student,frame_wrong,depth_wrong,score,status,misconception\n\
+         ana,0,0,100.0,ok,\n\
+         bo,0,2,99.9,wrong,\n\
+         cy,1,2,99.9,wrong,\n\
+         di,,0,50.0,\"malformed: di.frame.txt: line 1, value 3 (x = 2, y = 31): \"\"x\"\" is not a whole number (a 2-bit framebuffer holds 0 … 3)\",\n\
+         ed,0,,50.0,missing: ed.depth.txt,\n"
     );
 }
 
@@ -162,7 +162,7 @@ fn grade_exits_0_for_a_right_class_and_2_for_bad_usage() {
     let run = zsim(&["grade", "examples/rogers.json", path(&right), "--format", "csv"]);
     assert_eq!(
         (run.code, run.stdout.as_str()),
-        (0, "student,frame_wrong,depth_wrong,score,status\nana,0,0,100.0,ok\n")
+        (0, "student,frame_wrong,depth_wrong,score,status,misconception\nana,0,0,100.0,ok,\n")
     );
     let run = zsim(&["grade", "examples/rogers.json", "no/such/folder"]);
     assert_eq!((run.code, run.stdout.as_str()), (2, ""));

@@ -13,6 +13,7 @@ mod bad_input;
 mod buet;
 mod classroom;
 mod cs418;
+mod diagnosis;
 mod docs;
 mod effects;
 mod exact_range;

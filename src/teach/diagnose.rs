@@ -1,0 +1,333 @@
+//! Naming the misconception behind a wrong answer: the scene is drawn again
+//! under each of the usual wrong rules, and the rule whose buffers agree with
+//! the student's wrong cells best (and contradict their right ones least) is
+//! named, with how many of the wrong cells it explains.
+//!
+//! The rules that change coverage or the test (pixel corners, the cell rule,
+//! the test reversed or not strict) draw a changed copy of the scene with the
+//! one rasterizer. The rules that change only what is stored or compared
+//! (truncating, rounding halves down, comparing the rounded depth, wrapping
+//! instead of saturating) replay the pixels the rasterizer covered, with the
+//! exact depth it computed at each, under the wrong store or test. The rest
+//! need no drawing: the answer one polygon early, the last polygon alone,
+//! rows written bottom first.
+
+use crate::numbers::{Exact, Q, floor_div};
+use crate::observe::check::Matrix;
+use crate::raster::depth::{Depth, DepthTest, Stored};
+use crate::rules::{ColumnRule, DepthStore};
+use crate::scene::Scene;
+use crate::simulate::events::{Observer, Outcome, PixelEvent};
+use crate::simulate::simulation::Simulation;
+
+/// A wrong rule students are known to follow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Misconception {
+    /// z truncated (rounded down) instead of rounded to the nearest integer.
+    Truncated,
+    /// Halves rounded down (10.5 stored as 10).
+    HalfDown,
+    /// The rounded depth compared with the stored level instead of the exact z.
+    RoundedCompared,
+    /// Depths beyond the z-buffer's range wrap around instead of saturating.
+    NoSaturation,
+    /// An equal depth passes the test (≥ instead of >).
+    NotStrict,
+    /// The test reversed: smaller z nearer, the buffer cleared to its largest level.
+    Reversed,
+    /// Only the last polygon drawn, on cleared buffers.
+    LastOnly,
+    /// The whole answer one polygon early.
+    OneEarly,
+    /// The rows written bottom row first.
+    BottomFirst,
+    /// Sampled at pixel corners (integer points) instead of centres.
+    Corners,
+    /// Columns by the cell that holds the crossing instead of the centres inside the span.
+    CellRule,
+}
+
+impl Misconception {
+    /// Every misconception, in the order ties are decided.
+    pub const ALL: [Misconception; 11] = [
+        Misconception::Truncated,
+        Misconception::HalfDown,
+        Misconception::RoundedCompared,
+        Misconception::NoSaturation,
+        Misconception::NotStrict,
+        Misconception::Reversed,
+        Misconception::OneEarly,
+        Misconception::LastOnly,
+        Misconception::BottomFirst,
+        Misconception::Corners,
+        Misconception::CellRule,
+    ];
+
+    /// Its name in CSV and JSON (the same in every language).
+    pub fn name(self) -> &'static str {
+        match self {
+            Misconception::Truncated => "truncated",
+            Misconception::HalfDown => "half-down",
+            Misconception::RoundedCompared => "rounded-compared",
+            Misconception::NoSaturation => "no-saturation",
+            Misconception::NotStrict => "not-strict",
+            Misconception::Reversed => "reversed",
+            Misconception::LastOnly => "last-only",
+            Misconception::OneEarly => "one-early",
+            Misconception::BottomFirst => "bottom-first",
+            Misconception::Corners => "corners",
+            Misconception::CellRule => "cell-rule",
+        }
+    }
+
+    /// What the student did, in the reader's language.
+    pub fn words(self) -> String {
+        words!(&format!("misconception-{}", self.name()))
+    }
+}
+
+/// The misconception that explains an answer best.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Diagnosis {
+    /// The wrong rule.
+    pub misconception: Misconception,
+    /// How many wrong cells it gives exactly as the student wrote them.
+    pub explained: usize,
+    /// How many cells are wrong.
+    pub wrong: usize,
+}
+
+impl Diagnosis {
+    /// One sentence: the rule and how many wrong cells it explains.
+    pub fn words(&self) -> String {
+        words!("diagnosis", what = self.misconception.words(), explained = self.explained, wrong = self.wrong)
+    }
+}
+
+/// The buffers (framebuffer, z-buffer; rows top first) after polygon `last`.
+type State = (Matrix, Matrix);
+
+/// The misconception that best explains a student's answer to `scene` after
+/// polygon `last` (either buffer may be missing); see [`Diagnoser::diagnose`].
+pub fn diagnose(scene: &Scene, last: usize, frame: Option<&Matrix>, depth: Option<&Matrix>) -> Option<Diagnosis> {
+    Diagnoser::new(scene, last)?.diagnose(frame, depth)
+}
+
+/// The right buffers and those of every wrong rule, for one scene and
+/// polygon, drawn once and then held against any number of answers.
+#[derive(Debug, Clone)]
+pub struct Diagnoser {
+    right: State,
+    candidates: Vec<(Misconception, State)>,
+}
+
+impl Diagnoser {
+    /// Draws the scene under every wrong rule; `None` when the scene is
+    /// outside what they are defined for (an exact z-buffer, per-pixel
+    /// effects, a test other than `greater` or `less`).
+    pub fn new(scene: &Scene, last: usize) -> Option<Diagnoser> {
+        if !applies(scene) || last >= scene.polygons.len() {
+            return None;
+        }
+        let right = state(scene, last);
+        let covered = covered_pixels(scene, last);
+        let candidates = Misconception::ALL
+            .into_iter()
+            .filter_map(|m| buffers_under(m, scene, last, &right, &covered).map(|state| (m, state)))
+            .filter(|(_, state)| *state != right)
+            .collect();
+        Some(Diagnoser { right, candidates })
+    }
+
+    /// The misconception whose buffers explain the most wrong cells net of
+    /// the right cells they contradict, or `None`: for a right answer, or when
+    /// no rule explains at least half the wrong cells and more of them than
+    /// it contradicts right ones. Ties go to the earlier in [`Misconception::ALL`].
+    pub fn diagnose(&self, frame: Option<&Matrix>, depth: Option<&Matrix>) -> Option<Diagnosis> {
+        let wrong = wrong_cells(&self.right, frame, depth);
+        if wrong == 0 {
+            return None;
+        }
+        let mut best: Option<(i64, Diagnosis)> = None;
+        for (misconception, under_rule) in &self.candidates {
+            let (explained, contradicted) = explained_cells(&self.right, under_rule, frame, depth);
+            let score = explained as i64 - contradicted as i64;
+            if explained * 2 >= wrong && explained > contradicted && best.is_none_or(|(s, _)| score > s) {
+                best = Some((score, Diagnosis { misconception: *misconception, explained, wrong }));
+            }
+        }
+        best.map(|(_, diagnosis)| diagnosis)
+    }
+}
+
+/// Whether the wrong rules are defined for the scene: the book's quantized
+/// z-buffer, no per-pixel effects, a strict `greater` or `less` test.
+fn applies(scene: &Scene) -> bool {
+    scene.rules.store == DepthStore::Quantized
+        && !scene.has_pixel_effects()
+        && matches!(scene.depth_test, DepthTest::Greater | DepthTest::Less)
+        && scene.clear_depth.level().is_some()
+}
+
+/// (explained, contradicted): the student's wrong cells that `rule` gives as
+/// written, and the right cells where `rule` gives something else.
+fn explained_cells(right: &State, rule: &State, frame: Option<&Matrix>, depth: Option<&Matrix>) -> (usize, usize) {
+    let mut counts = (0, 0);
+    for (answer, correct, under_rule) in [(frame, &right.0, &rule.0), (depth, &right.1, &rule.1)] {
+        let Some(answer) = answer else { continue };
+        for ((a, c), r) in answer.iter().flatten().zip(correct.iter().flatten()).zip(under_rule.iter().flatten()) {
+            if a != c && a == r {
+                counts.0 += 1;
+            } else if a == c && r != c {
+                counts.1 += 1;
+            }
+        }
+    }
+    counts
+}
+
+/// How many cells of the answers differ from `right`.
+fn wrong_cells(right: &State, frame: Option<&Matrix>, depth: Option<&Matrix>) -> usize {
+    [(frame, &right.0), (depth, &right.1)]
+        .into_iter()
+        .filter_map(|(answer, correct)| answer.map(|a| (a, correct)))
+        .map(|(a, c)| a.iter().flatten().zip(c.iter().flatten()).filter(|(a, c)| a != c).count())
+        .sum()
+}
+
+/// The right buffers after polygon `last` (before any when `last` is `None`).
+fn state_through(scene: &Scene, last: Option<usize>) -> State {
+    let mut simulation = Simulation::new(scene);
+    if let Some(last) = last {
+        simulation.draw_through(last, &mut crate::simulate::events::Unobserved);
+    }
+    let buffers = simulation.buffers();
+    (buffers.frame_rows(), buffers.depth_level_rows().expect("a quantized z-buffer"))
+}
+
+fn state(scene: &Scene, last: usize) -> State {
+    state_through(scene, Some(last))
+}
+
+/// Every covered pixel centre the rasterizer tested, in order: polygon,
+/// column, row and the exact depth compared there.
+struct Covered(Vec<(usize, u32, u32, Depth)>);
+
+impl Observer for Covered {
+    const OBSERVES_SCANLINES: bool = false;
+    const OBSERVES_POLYGONS: bool = false;
+
+    fn pixel(&mut self, event: &PixelEvent) {
+        if event.outcome != Outcome::OutsideDepthRange {
+            self.0.push((event.index, event.x, event.y, event.compared.clone()));
+        }
+    }
+}
+
+fn covered_pixels(scene: &Scene, last: usize) -> Covered {
+    let mut covered = Covered(Vec::new());
+    Simulation::new(scene).draw_through(last, &mut covered);
+    covered
+}
+
+/// The buffers `misconception` gives, or `None` where it does not apply (or
+/// gives the right answer's twin, as reversing a test the scene already reverses).
+fn buffers_under(
+    misconception: Misconception,
+    scene: &Scene,
+    last: usize,
+    right: &State,
+    covered: &Covered,
+) -> Option<State> {
+    let max = scene.depth_max();
+    let stored = match misconception {
+        Misconception::Truncated => Some(replay(scene, covered, None, |n, d| floor_div(n, d).0, false)),
+        // Rounded half down: ⌈z − 1/2⌉ = −⌊(d − 2n) / 2d⌋.
+        Misconception::HalfDown => Some(replay(scene, covered, None, |n, d| -floor_div(d - 2 * n, 2 * d).0, false)),
+        Misconception::RoundedCompared => Some(replay(scene, covered, None, half_up, true)),
+        Misconception::NoSaturation => {
+            let levels = i128::from(max) + 1;
+            Some(replay(scene, covered, None, move |n, d| half_up(n, d).rem_euclid(levels), false))
+        }
+        Misconception::LastOnly => Some(replay(scene, covered, Some(last), half_up, false)),
+        _ => None,
+    };
+    if let Some(stored) = stored {
+        return stored;
+    }
+    match misconception {
+        Misconception::OneEarly => Some(state_through(scene, last.checked_sub(1))),
+        Misconception::BottomFirst => {
+            Some((right.0.iter().rev().cloned().collect(), right.1.iter().rev().cloned().collect()))
+        }
+        Misconception::NotStrict => {
+            let mut changed = scene.clone();
+            changed.depth_test = match scene.depth_test {
+                DepthTest::Greater => DepthTest::GreaterEqual,
+                _ => DepthTest::LessEqual,
+            };
+            Some(state(&changed, last))
+        }
+        Misconception::Reversed => {
+            let mut changed = scene.clone();
+            let (test, clear) = match scene.depth_test {
+                DepthTest::Greater => (DepthTest::Less, max),
+                _ => (DepthTest::Greater, 0),
+            };
+            changed.depth_test = test;
+            changed.clear_depth = Stored::Level(clear);
+            Some(state(&changed, last))
+        }
+        Misconception::Corners => {
+            let mut changed = scene.clone();
+            let half = Exact::Word(Q::new(1, 2));
+            for polygon in &mut changed.polygons {
+                let moved: Vec<[Exact; 3]> =
+                    polygon.vertices().iter().map(|[x, y, z]| [x.plus(&half), y.plus(&half), z.clone()]).collect();
+                *polygon = polygon.with_vertices(moved).ok()?;
+            }
+            Some(state(&changed, last))
+        }
+        Misconception::CellRule => {
+            let mut changed = scene.clone();
+            changed.rules.columns = ColumnRule::CellHolds;
+            Some(state(&changed, last))
+        }
+        _ => None,
+    }
+}
+
+/// z = n/d rounded half up, as the book rounds.
+fn half_up(n: i128, d: i128) -> i128 {
+    floor_div(2 * n + d, 2 * d).0
+}
+
+/// The buffers when the covered pixels (of polygon `only`, or all) are
+/// stored as `level(n, d)` saturated to the z-buffer's range and tested on the exact depth, or with
+/// `rounded` on the level it would store; `None` when a depth needs more
+/// than 128 bits (no student writes those).
+fn replay(
+    scene: &Scene,
+    covered: &Covered,
+    only: Option<usize>,
+    level: impl Fn(i128, i128) -> i128,
+    rounded: bool,
+) -> Option<State> {
+    let (width, height) = (scene.width as usize, scene.height as usize);
+    let max = scene.depth_max();
+    let clear = scene.clear_depth.level()?;
+    let mut frame = vec![vec![scene.background; width]; height];
+    let mut depth = vec![vec![clear; width]; height];
+    for (index, x, y, z) in covered.0.iter().filter(|(i, ..)| only.is_none_or(|o| o == *i)) {
+        let (n, d) = z.fraction()?;
+        let row = height - 1 - *y as usize;
+        let cell = &mut depth[row][*x as usize];
+        let new = level(n, d).clamp(0, i128::from(max)) as u32;
+        let tested = if rounded { Depth::from_fraction(i128::from(new), 1) } else { z.clone() };
+        if scene.depth_test.passes(&tested, &Stored::Level(*cell)) {
+            *cell = new;
+            frame[row][*x as usize] = scene.polygons[*index].value;
+        }
+    }
+    Some((frame, depth))
+}
