@@ -17,8 +17,10 @@ pub struct CellRange<'a> {
 /// handed in is fine), top row first, one row a line; blank lines and lines
 /// starting with `#` are ignored. Checks each value against `range` and the
 /// shape against the raster; the error names the line, the column and the
-/// raster cell, and says what was found.
+/// raster cell, and says what was found: the first [`PROBLEMS_NAMED`]
+/// problems, separated by ` · `, then how many more there are.
 pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Matrix, String> {
+    let mut problems = Vec::new();
     let lines: Vec<(usize, &str)> = text
         .lines()
         .enumerate()
@@ -43,17 +45,19 @@ pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -
                 }
             };
             let max = || range.max.to_string();
-            let value: u64 = cell.parse().map_err(|_| {
-                words!(
+            let Ok(value) = cell.parse::<u64>() else {
+                problems.push(words!(
                     "answer-not-a-number",
                     at = at(),
                     cell = crate::words::token(cell),
                     buffer = range.buffer,
                     max = max()
-                )
-            })?;
+                ));
+                row.push(0);
+                continue;
+            };
             if value > u64::from(range.max) {
-                return Err(words!(
+                problems.push(words!(
                     "answer-too-large",
                     at = at(),
                     value = value.to_string(),
@@ -61,10 +65,10 @@ pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -
                     max = max()
                 ));
             }
-            row.push(value as u32);
+            row.push(value.min(u64::from(range.max)) as u32);
         }
         if row.len() != width as usize {
-            return Err(words!(
+            problems.push(words!(
                 "answer-row-length",
                 line = line_number.to_string(),
                 count = row.len(),
@@ -74,10 +78,20 @@ pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -
         rows.push(row);
     }
     if rows.len() != height as usize {
-        return Err(words!("answer-row-count", count = rows.len().to_string(), height = height.to_string()));
+        problems.push(words!("answer-row-count", count = rows.len(), height = height.to_string()));
     }
-    Ok(rows)
+    if problems.is_empty() {
+        return Ok(rows);
+    }
+    let mut text = problems[..problems.len().min(PROBLEMS_NAMED)].join(" · ");
+    if problems.len() > PROBLEMS_NAMED {
+        text.push_str(&words!("answer-more-problems", count = problems.len() - PROBLEMS_NAMED));
+    }
+    Err(text)
 }
+
+/// How many of an answer file's problems a message names.
+pub const PROBLEMS_NAMED: usize = 3;
 
 /// Another way an answer may have been written.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

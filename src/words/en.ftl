@@ -346,7 +346,10 @@ answer-row-length = line { $line }: { $count } { $count ->
     [one] value
    *[other] values
   }; the raster is { $width } wide
-answer-row-count = { $count } rows; the raster has { $height }
+answer-row-count = { $count } { $count ->
+    [one] row
+   *[other] rows
+}; the raster has { $height }
 answer-frame-range = a { $bits }-bit framebuffer
 answer-depth-range = a { $bits }-bit z-buffer
 
@@ -810,4 +813,8 @@ grade-causes = likely causes in the class:
 grade-cause-count = { $what }: { $count } of { $students } { $students ->
     [one] student
    *[other] students
+}
+answer-more-problems = { "" } · and { $count } more { $count ->
+    [one] problem
+   *[other] problems
 }

@@ -790,3 +790,8 @@ grade-cause-count = { $what }: { $count } из { $students } { $students ->
     [one] студента
    *[other] студентов
 }
+answer-more-problems = { "" } · и ещё { $count } { $count ->
+    [one] ошибка
+    [few] ошибки
+   *[many] ошибок
+}

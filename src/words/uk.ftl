@@ -790,3 +790,8 @@ grade-cause-count = { $what }: { $count } з { $students } { $students ->
     [one] студента
    *[other] студентів
 }
+answer-more-problems = { "" } · і ще { $count } { $count ->
+    [one] помилка
+    [few] помилки
+   *[many] помилок
+}

@@ -760,3 +760,4 @@ grade-column-cause = 可能的原因
 grade-cause = { $what }（{ $wrong } 个中的 { $explained } 个）
 grade-causes = 全班可能的原因：
 grade-cause-count = { $what }：{ $students } 名学生中有 { $count } 名
+answer-more-problems = { "" } · 另有 { $count } 处问题

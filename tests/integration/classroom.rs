@@ -63,7 +63,8 @@ fn grade_gives_a_row_per_student_sorted_with_the_status_of_each() {
          ana,0,0,100.0,ok,\n\
          bo,0,2,99.9,wrong,\n\
          cy,1,2,99.9,wrong,\n\
-         di,,0,50.0,\"malformed: di.frame.txt: line 1, value 3 (x = 2, y = 31): \"\"x\"\" is not a whole number (a 2-bit framebuffer holds 0 … 3)\",\n\
+         di,,0,50.0,\"malformed: di.frame.txt: line 1, value 3 (x = 2, y = 31): \"\"x\"\" is not a whole number (a 2-bit framebuffer holds 0 … 3) \
+         · line 1: 3 values; the raster is 32 wide · 1 row; the raster has 32\",\n\
          ed,0,,50.0,missing: ed.depth.txt,\n"
     );
 }

@@ -272,6 +272,8 @@ fn check_explains_a_students_mistakes() {
     );
 }
 
+/// Every problem of a file is named, up to three, then how many more (the
+/// teacher's side: only the first was reported).
 #[test]
 fn check_refuses_malformed_answers() {
     let (dir, _) = scene_file("unused2.json", "{}");
@@ -281,7 +283,8 @@ fn check_refuses_malformed_answers() {
     assert_eq!((run.code, run.stdout.as_str()), (2, ""));
     assert!(
         run.stderr.ends_with(
-            "bad_answer.txt: line 1, value 3 (x = 2, y = 31): \"x\" is not a whole number (a 2-bit framebuffer holds 0 … 3)\n"
+            "bad_answer.txt: line 1, value 3 (x = 2, y = 31): \"x\" is not a whole number (a 2-bit framebuffer holds 0 … 3) \
+             · line 1: 3 values; the raster is 32 wide · 1 row; the raster has 32\n"
         ),
         "{}",
         run.stderr
