@@ -223,6 +223,18 @@ pub enum Usage {
     },
     /// `check` with neither `--frame` nor `--depth`.
     CheckNeedsAnswer,
+    /// `grade --identity`: a column the chosen platform does not import by.
+    IdentityColumn {
+        /// The column's header.
+        column: &'static str,
+    },
+    /// `grade --points 0`.
+    NoPoints,
+    /// `check --submission`: the folder holds no answer file.
+    NoSubmission {
+        /// The folder.
+        folder: PathBuf,
+    },
     /// A class folder without answer files.
     NoAnswersFound {
         /// The folder.
@@ -404,6 +416,14 @@ impl fmt::Display for Usage {
                 Task::Draw | Task::Check => words!("usage-exact-depths-check", path = path(p)),
             },
             Usage::CheckNeedsAnswer => words!("usage-check-needs-answer"),
+            Usage::IdentityColumn { column } => words!("usage-identity-column", column = *column),
+            Usage::NoPoints => words!("usage-no-points"),
+            Usage::NoSubmission { folder } => {
+                words!(
+                    "usage-no-submission",
+                    folder = crate::scene::text::printable(&folder.display().to_string()).into_owned()
+                )
+            }
             Usage::NoAnswersFound { class } => words!("usage-no-answers", path = path(class)),
             Usage::ScenesOutOfRange => words!("usage-scenes-range"),
             Usage::MemoryBits { option, bits } => {

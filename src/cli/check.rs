@@ -13,6 +13,7 @@ use zsim::check::{CellRange, Matrix, Mismatch, compare, misreading, parse_answer
 use zsim::explain::{Buffer, why};
 use zsim::{PixelWatcher, Unobserved};
 
+use super::gradescope;
 use super::{Failure, Finish, emit};
 
 /// Arguments of `zsim check`.
@@ -32,6 +33,26 @@ pub struct CheckArgs {
     /// The arithmetic the answer was computed in: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
     #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
     arith: zsim::arith::Arith,
+    /// A folder of answers as an autograder receives them: frame.txt and/or depth.txt (after the last polygon), after-N.frame.txt and after-N.depth.txt (after polygon N).
+    #[arg(long, value_name = "DIR", conflicts_with_all = ["frame", "depth", "after"])]
+    submission: Option<PathBuf>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+    /// With --format gradescope: who sees the results.
+    #[arg(long, value_enum, default_value_t = gradescope::Visibility::Visible)]
+    visibility: gradescope::Visibility,
+    /// With --format gradescope: the points the whole submission is worth, shared equally by its tests.
+    #[arg(long, default_value_t = 100)]
+    points: u32,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Format {
+    /// The wrong cells, each explained.
+    Text,
+    /// An autograder's results.json for Gradescope: one test per buffer and polygon step, the explanation in its output; exit 0 whatever the answer.
+    Gradescope,
 }
 
 /// Reads an answer file for one of `scene`'s buffers: a matrix as the book
@@ -51,7 +72,7 @@ pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer, links: zsim::Link
 
 pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(&args.scene)?;
-    if args.frame.is_none() && args.depth.is_none() {
+    if args.frame.is_none() && args.depth.is_none() && args.submission.is_none() {
         return Err(Error::from(zsim::Usage::CheckNeedsAnswer).into());
     }
     if scene.polygons.is_empty() {
@@ -61,6 +82,45 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         Some(spec) => scene.find_polygon(spec)?,
         None => scene.polygons.len() - 1,
     };
+    let states = match &args.submission {
+        // An autograder writes results.json whatever it is given: an empty submission scores 0.
+        Some(folder) if args.format == Format::Gradescope => match submission_files(folder, &scene) {
+            Ok(states) => states,
+            Err(error) => {
+                emit(out, &gradescope::nothing_to_grade(&error.to_string(), args.visibility))?;
+                return Ok(Finish::Ok);
+            }
+        },
+        Some(folder) => submission_files(folder, &scene)?,
+        None => vec![(
+            last,
+            [(Buffer::Frame, &args.frame), (Buffer::Depth, &args.depth)]
+                .into_iter()
+                .filter_map(|(b, p)| Some((b, p.clone()?)))
+                .collect(),
+        )],
+    };
+    if args.format == Format::Gradescope {
+        let results = gradescope::results(&scene, &args.scene, &states, args.arith, args.visibility, args.points)?;
+        emit(out, &results)?;
+        return Ok(Finish::Ok);
+    }
+    if args.submission.is_some() {
+        let mut finish = Finish::Ok;
+        for (last, files) in &states {
+            let answers: Vec<(Buffer, PathBuf)> = files.clone();
+            let mut read = Vec::new();
+            for (buffer, path) in &answers {
+                read.push((*buffer, path.as_path(), read_answer(path, &scene, *buffer, zsim::Links::Refuse)?));
+            }
+            let report = report(&scene, &args.scene, *last, read, args.arith)?;
+            emit(out, &report.text)?;
+            if report.differs {
+                finish = Finish::Differs;
+            }
+        }
+        return Ok(finish);
+    }
     // A malformed file is reported (exit 2), but the other answer is still checked.
     let mut answers = Vec::new();
     let mut malformed = None;
@@ -90,6 +150,51 @@ pub struct Report {
     pub text: String,
     /// Whether any cell differs.
     pub differs: bool,
+    /// How many cells differ, over all the answers.
+    pub wrong: usize,
+}
+
+/// Answer files for the state after one polygon (0-based): each buffer's file.
+pub type State = (usize, Vec<(Buffer, PathBuf)>);
+
+/// The answer files of a submission folder, grouped by the polygon they are
+/// the state after: `frame.txt` and `depth.txt` after the last,
+/// `after-N.frame.txt` and `after-N.depth.txt` after polygon N; other files
+/// are passed over. Symbolic links are not followed.
+pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Error> {
+    let last = scene.polygons.len() - 1;
+    let read_error = |source| Error::Read { path: folder.to_owned(), source };
+    let mut states: Vec<State> = Vec::new();
+    let mut names: Vec<String> =
+        std::fs::read_dir(folder).map_err(read_error)?.filter_map(|e| e.ok()?.file_name().into_string().ok()).collect();
+    names.sort();
+    for name in names {
+        let (after, kind) = match name.strip_prefix("after-").and_then(|rest| rest.split_once('.')) {
+            Some((number, kind)) => match number.parse::<usize>() {
+                Ok(n) if (1..=last).contains(&n) => (n - 1, kind),
+                _ => continue,
+            },
+            None => (last, name.as_str()),
+        };
+        let buffer = match kind {
+            "frame.txt" => Buffer::Frame,
+            "depth.txt" => Buffer::Depth,
+            _ => continue,
+        };
+        let path = folder.join(&name);
+        match states.iter_mut().find(|(a, _)| *a == after) {
+            Some((_, files)) => files.push((buffer, path)),
+            None => states.push((after, vec![(buffer, path)])),
+        }
+    }
+    if states.is_empty() {
+        return Err(zsim::Usage::NoSubmission { folder: folder.to_owned() }.into());
+    }
+    states.sort_by_key(|(after, _)| *after);
+    for (_, files) in &mut states {
+        files.sort_by_key(|(buffer, _)| *buffer != Buffer::Frame);
+    }
+    Ok(states)
 }
 
 /// Checks `answers` (already read) against the buffers after polygon `last`,
@@ -143,6 +248,7 @@ pub fn report(
     }
     let mut text = String::new();
     let mut differs = false;
+    let wrong = results.iter().map(|(_, _, m, _)| m.len()).sum();
     for (buffer, path, mismatches, hint) in &results {
         let (after, file) = (zsim::explain::polygon_after(scene, last), path.display().to_string());
         if mismatches.is_empty() {
@@ -178,7 +284,7 @@ pub fn report(
     if let Some(diagnosis) = diagnosis {
         text.push_str(&format!("{}\n", diagnosis.words()));
     }
-    Ok(Report { text, differs })
+    Ok(Report { text, differs, wrong })
 }
 
 fn table(

@@ -41,6 +41,15 @@ pub struct ExerciseArgs {
     /// The folder to write into (made if need be).
     #[arg(short, long, value_name = "DIR")]
     output: PathBuf,
+    /// Also write a Gradescope autograder into this folder (setup.sh, run_autograder, scene.json; zip its files with zsim's .deb beside them).
+    #[arg(long, value_name = "DIR")]
+    gradescope: Option<PathBuf>,
+    /// With --gradescope: who sees the results.
+    #[arg(long, value_enum, default_value_t = super::gradescope::Visibility::Visible, requires = "gradescope")]
+    visibility: super::gradescope::Visibility,
+    /// With --gradescope: the points the exercise is worth.
+    #[arg(long, default_value_t = 100, requires = "gradescope")]
+    points: u32,
 }
 
 fn parse_size(text: &str) -> Result<(u32, u32), String> {
@@ -127,7 +136,28 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
     super::write_fresh(dir, &files, &[])?;
     let line = zsim::words!("file-written-in", files = written.join(", "), path = dir.display().to_string());
     emit(out, &format!("{notes}{line}\n"))?;
+    if let Some(folder) = &args.gradescope {
+        let files = super::gradescope::autograder(&exercise.json, args.visibility, args.points, zsim::language());
+        super::write_fresh(folder, &files, &[dir.as_path()])?;
+        for script in ["setup.sh", "run_autograder"] {
+            executable(&folder.join(script))?;
+        }
+        let names: Vec<&str> = files.iter().map(|(name, _)| name.as_str()).collect();
+        let line = zsim::words!("file-written-in", files = names.join(", "), path = folder.display().to_string());
+        emit(out, &format!("{line}\n"))?;
+    }
     Ok(Finish::Ok)
+}
+
+/// Marks a script zsim wrote as executable (Gradescope runs `run_autograder` as is).
+fn executable(path: &std::path::Path) -> Result<(), Error> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(path, std::fs::Permissions::from_mode(0o755))
+            .map_err(|source| Error::Write { path: path.to_owned(), source })?;
+    }
+    Ok(())
 }
 
 /// The framebuffer and the z-buffer as `zsim check` reads them.

@@ -17,6 +17,7 @@ use zsim::grade::{CommonMistake, Grade, Handed, Status, Submission, common_mista
 use zsim::printable;
 
 use super::check::{read_answer, report};
+use super::gradebooks;
 use super::{Failure, Finish, emit};
 
 /// Arguments of `zsim grade`.
@@ -35,6 +36,15 @@ pub struct GradeArgs {
     /// Write each student's feedback (`zsim check`'s explanation of every wrong cell) to FOLDER/NAME.feedback.txt, and the common mistakes to FOLDER/common-mistakes.txt; FOLDER may not be the class folder, and no file in it is replaced.
     #[arg(short, long, value_name = "FOLDER")]
     output: Option<PathBuf>,
+    /// With --format moodle or canvas: the column that names the student (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id); the student's file name is its value.
+    #[arg(long, value_enum)]
+    identity: Option<gradebooks::Identity>,
+    /// With --format moodle or canvas: the grade column's header (Moodle: "Assignment: NAME (Real)" as its exports write it; Canvas: "NAME (ID)" to fill an existing assignment).
+    #[arg(long, value_name = "NAME")]
+    item: Option<String>,
+    /// With --format moodle or canvas: the points the exercise is worth (the item's maximum grade).
+    #[arg(long, default_value_t = 100)]
+    points: u32,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -45,6 +55,10 @@ enum Format {
     Csv,
     /// One object: students and common mistakes.
     Json,
+    /// Moodle's gradebook import: the identity column, then the grade (0 … points).
+    Moodle,
+    /// Canvas's gradebook import: Student, ID, SIS User ID, SIS Login ID, Section, the assignment; a Points Possible row.
+    Canvas,
 }
 
 /// How many common mistakes are listed.
@@ -93,6 +107,7 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
     let text = match args.format {
         // CSV and JSON are the same in every language: their reasons and names in English.
+        Format::Moodle | Format::Canvas => gradebook(args, &rows)?,
         Format::Csv | Format::Json => zsim::with_language(zsim::Lang::En, || {
             let (graded, mistakes, reasons) = assess();
             let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
@@ -202,6 +217,25 @@ fn reasons(scene: &Scene, last: usize, mistakes: &[CommonMistake]) -> Vec<String
     mistakes.iter().map(|m| why(scene, m.buffer, m.x, m.y, watcher.history(m.x, m.y))).collect()
 }
 
+/// A gradebook import for Moodle or Canvas, with the identity column checked
+/// against the platform.
+fn gradebook(args: &GradeArgs, rows: &[&Grade]) -> Result<String, Error> {
+    let moodle = args.format == Format::Moodle;
+    let identity =
+        args.identity.unwrap_or(if moodle { gradebooks::Identity::Email } else { gradebooks::Identity::SisLoginId });
+    if identity.is_moodle() != moodle {
+        return Err(zsim::Usage::IdentityColumn { column: identity.header() }.into());
+    }
+    if args.points == 0 {
+        return Err(zsim::Usage::NoPoints.into());
+    }
+    Ok(if moodle {
+        gradebooks::moodle(rows, identity, args.item.as_deref().unwrap_or("Assignment: z-buffer (Real)"), args.points)
+    } else {
+        gradebooks::canvas(rows, identity, args.item.as_deref().unwrap_or("z-buffer"), args.points)
+    })
+}
+
 fn table(rows: &[&Grade]) -> Table {
     let mut table = Table::new();
     // A likely-cause column only when a cause was found for someone.
@@ -307,7 +341,7 @@ fn mistakes_text(mistakes: &[CommonMistake], reasons: &[String], students: usize
 /// 4180). A cell a spreadsheet would run as a formula (one starting with `=`,
 /// `+`, `-`, `@`, a tab or a carriage return: a student's name is anyone's
 /// text) starts with `'` instead, as OWASP recommends, so it stays text.
-fn csv_field(text: &str) -> String {
+pub(super) fn csv_field(text: &str) -> String {
     let text = if text.starts_with(['=', '+', '-', '@', '\t', '\r']) { format!("'{text}") } else { text.to_string() };
     if text.contains([',', '"', '\n', '\r']) { format!("\"{}\"", text.replace('"', "\"\"")) } else { text }
 }

@@ -10,6 +10,8 @@ mod explain;
 mod figure;
 mod generate;
 mod grade;
+mod gradebooks;
+mod gradescope;
 mod install;
 mod page;
 mod run;

@@ -818,3 +818,7 @@ answer-more-problems = { "" } · and { $count } more { $count ->
     [one] problem
    *[other] problems
 }
+usage-no-submission = { $folder }: no answer here: frame.txt, depth.txt, after-N.frame.txt or after-N.depth.txt
+gradescope-test = { $buffer } after { $after }
+usage-identity-column = --identity: this platform does not import by "{ $column }" (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id)
+usage-no-points = --points must be at least 1

@@ -795,3 +795,7 @@ answer-more-problems = { "" } · и ещё { $count } { $count ->
     [few] ошибки
    *[many] ошибок
 }
+usage-no-submission = { $folder }: здесь нет ответа: frame.txt, depth.txt, after-N.frame.txt или after-N.depth.txt
+gradescope-test = { $buffer } после { $after }
+usage-identity-column = --identity: эта платформа не импортирует по столбцу «{ $column }» (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id)
+usage-no-points = --points должно быть не меньше 1

@@ -795,3 +795,7 @@ answer-more-problems = { "" } · і ще { $count } { $count ->
     [few] помилки
    *[many] помилок
 }
+usage-no-submission = { $folder }: тут немає відповіді: frame.txt, depth.txt, after-N.frame.txt або after-N.depth.txt
+gradescope-test = { $buffer } після { $after }
+usage-identity-column = --identity: ця платформа не імпортує за стовпцем «{ $column }» (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id)
+usage-no-points = --points має бути не менше 1

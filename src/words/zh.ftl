@@ -761,3 +761,7 @@ grade-cause = { $what }（{ $wrong } 个中的 { $explained } 个）
 grade-causes = 全班可能的原因：
 grade-cause-count = { $what }：{ $students } 名学生中有 { $count } 名
 answer-more-problems = { "" } · 另有 { $count } 处问题
+usage-no-submission = { $folder }：这里没有答案：frame.txt、depth.txt、after-N.frame.txt 或 after-N.depth.txt
+gradescope-test = { $after } 之后的{ $buffer }
+usage-identity-column = --identity：该平台不按“{ $column }”列导入（Moodle：email、idnumber、username；Canvas：id、sis-user-id、sis-login-id）
+usage-no-points = --points 至少为 1

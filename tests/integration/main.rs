@@ -25,6 +25,7 @@ mod hard_cases;
 mod hardening;
 mod languages;
 mod layers;
+mod platforms;
 mod run_command;
 mod stability;
 mod teaching;

@@ -1,0 +1,144 @@
+//! Gradescope: `check --format gradescope` writes an autograder's
+//! `results.json` (Gradescope's autograder specification: `score`,
+//! `visibility`, `tests[]` with `name`, `score`, `max_score`, `status`,
+//! `output`, `visibility`), and `exercise --gradescope DIR` writes the
+//! autograder itself (`setup.sh`, `run_autograder`, the scene), which calls
+//! zsim.
+
+use std::path::Path;
+
+use zsim::Error;
+use zsim::Scene;
+
+/// Who sees a result, as Gradescope names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Visibility {
+    /// Students see it at once.
+    Visible,
+    /// Students never see it.
+    Hidden,
+    /// After the due date.
+    #[value(name = "after_due_date")]
+    AfterDueDate,
+    /// Once the grades are published.
+    #[value(name = "after_published")]
+    AfterPublished,
+}
+
+impl Visibility {
+    fn name(self) -> &'static str {
+        match self {
+            Visibility::Visible => "visible",
+            Visibility::Hidden => "hidden",
+            Visibility::AfterDueDate => "after_due_date",
+            Visibility::AfterPublished => "after_published",
+        }
+    }
+}
+
+/// The submission's `results.json`: one test per answer file (a buffer after
+/// a polygon), worth an equal share of `points`, scored by its share of right
+/// cells; a missing or malformed file is a failed test worth nothing, its
+/// reason in the output. Text in the reader's language.
+pub fn results(
+    scene: &Scene,
+    scene_path: &Path,
+    states: &[super::check::State],
+    arith: zsim::arith::Arith,
+    visibility: Visibility,
+    points: u32,
+) -> Result<String, Error> {
+    let count: u64 = states.iter().map(|(_, files)| files.len() as u64).sum();
+    // Shares in hundredths of a point that add up to `points` exactly.
+    let hundredths = u64::from(points) * 100;
+    let share = |k: u64| hundredths / count.max(1) + u64::from(k < hundredths % count.max(1));
+    let cells = u64::from(scene.width) * u64::from(scene.height);
+    let mut tests = Vec::new();
+    let mut total = 0;
+    for (k, (last, buffer, path)) in
+        states.iter().flat_map(|(last, files)| files.iter().map(move |(b, p)| (last, b, p))).enumerate()
+    {
+        let name =
+            zsim::words!("gradescope-test", buffer = buffer.name(), after = zsim::explain::polygon_after(scene, *last));
+        let max_score = share(k as u64);
+        let (score, output) = match super::check::read_answer(path, scene, *buffer, zsim::Links::Refuse) {
+            Ok(answer) => {
+                // The student sees the file's name, not where the autograder keeps it.
+                let shown = Path::new(path.file_name().unwrap_or(path.as_os_str()));
+                let report = super::check::report(scene, scene_path, *last, vec![(*buffer, shown, answer)], arith)?;
+                // The share of right cells, rounded down to a hundredth: only a right answer scores in full.
+                (max_score * (cells - (report.wrong as u64).min(cells)) / cells, report.text)
+            }
+            Err(error) => {
+                let file = path.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned());
+                let message = error.to_string().replace(&path.display().to_string(), &file);
+                (0, format!("{}\n", zsim::printable(&message)))
+            }
+        };
+        total += score;
+        tests.push(serde_json::json!({
+            "name": name,
+            "score": score as f64 / 100.0,
+            "max_score": max_score as f64 / 100.0,
+            "status": if score == max_score { "passed" } else { "failed" },
+            "output": output,
+            "visibility": visibility.name(),
+        }));
+    }
+    let results = serde_json::json!({
+        "score": total as f64 / 100.0,
+        "visibility": visibility.name(),
+        "tests": tests,
+    });
+    Ok(format!("{}\n", serde_json::to_string_pretty(&results).expect("plain data")))
+}
+
+/// The `results.json` of a submission with nothing to grade: score 0, why in
+/// its output.
+pub fn nothing_to_grade(why: &str, visibility: Visibility) -> String {
+    let results = serde_json::json!({
+        "score": 0.0,
+        "output": zsim::printable(why),
+        "visibility": visibility.name(),
+        "tests": [],
+    });
+    format!("{}\n", serde_json::to_string_pretty(&results).expect("plain data"))
+}
+
+/// The autograder's files for an exercise: `setup.sh` installs zsim from
+/// the Debian package put beside it; `run_autograder` checks the submission
+/// folder (`frame.txt`, `depth.txt`, `after-N.*.txt`) against the scene and
+/// writes `results/results.json`. `AUTOGRADER_ROOT` stands for `/autograder`
+/// (for trying it elsewhere).
+pub fn autograder(scene_json: &str, visibility: Visibility, points: u32, lang: zsim::Lang) -> Vec<(String, Vec<u8>)> {
+    let setup = "#!/usr/bin/env bash\n\
+        # Gradescope runs this once, as root, when it builds the autograder's image.\n\
+        # Put zsim's Debian package (zsim_*.deb: `cargo deb`, or a release) beside\n\
+        # this script before zipping the folder's files.\n\
+        set -euo pipefail\n\
+        cd \"$(dirname \"$0\")\"\n\
+        if ! ls zsim_*.deb >/dev/null 2>&1; then\n\
+        \x20 echo \"setup.sh: no zsim_*.deb beside this script: build it with cargo deb and copy it here\" >&2\n\
+        \x20 exit 1\n\
+        fi\n\
+        apt-get install -y ./zsim_*.deb\n"
+        .to_string();
+    let run = format!(
+        "#!/usr/bin/env bash\n\
+        # Gradescope runs this for each submission: the student's frame.txt and/or\n\
+        # depth.txt (and after-N.frame.txt, after-N.depth.txt for earlier polygons)\n\
+        # are checked against the exercise's scene; zsim writes results.json.\n\
+        set -uo pipefail\n\
+        root=\"${{AUTOGRADER_ROOT:-/autograder}}\"\n\
+        mkdir -p \"$root/results\"\n\
+        zsim check \"$root/source/scene.json\" --submission \"$root/submission\" --format gradescope \\\n\
+        \x20 --visibility {} --points {points} --lang {} >\"$root/results/results.json\"\n",
+        visibility.name(),
+        lang.code()
+    );
+    vec![
+        ("setup.sh".to_string(), setup.into_bytes()),
+        ("run_autograder".to_string(), run.into_bytes()),
+        ("scene.json".to_string(), scene_json.as_bytes().to_vec()),
+    ]
+}
