@@ -418,12 +418,7 @@ impl fmt::Display for Usage {
             Usage::CheckNeedsAnswer => words!("usage-check-needs-answer"),
             Usage::IdentityColumn { column } => words!("usage-identity-column", column = *column),
             Usage::NoPoints => words!("usage-no-points"),
-            Usage::NoSubmission { folder } => {
-                words!(
-                    "usage-no-submission",
-                    folder = crate::scene::text::printable(&folder.display().to_string()).into_owned()
-                )
-            }
+            Usage::NoSubmission { folder } => words!("usage-no-submission", folder = folder.display().to_string()),
             Usage::NoAnswersFound { class } => words!("usage-no-answers", path = path(class)),
             Usage::ScenesOutOfRange => words!("usage-scenes-range"),
             Usage::MemoryBits { option, bits } => {
