@@ -35,6 +35,12 @@ pub struct ExerciseArgs {
     /// Cases the exercise must contain, comma-separated: vertex-on-scanline, centre-on-edge, half-depth, saturation, hidden, intersecting, concave.
     #[arg(long, value_name = "LIST")]
     hard: Option<String>,
+    /// How the polygons may look: book (each covers at least --min-pixels centres, every depth within the z-buffer's range unless saturation is asked for) or free (slivers and negative depths allowed).
+    #[arg(long, value_enum, default_value_t = StyleArg::Book)]
+    style: StyleArg,
+    /// With --style book: the fewest pixel centres each polygon covers.
+    #[arg(long, default_value_t = 12)]
+    min_pixels: u32,
     /// Also write the answer after each polygon (answer.after-N.frame.txt, …).
     #[arg(long)]
     each_polygon: bool,
@@ -52,6 +58,14 @@ pub struct ExerciseArgs {
     points: u32,
 }
 
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum StyleArg {
+    /// Like the book's example.
+    Book,
+    /// Any polygons that contain the asked cases.
+    Free,
+}
+
 fn parse_size(text: &str) -> Result<(u32, u32), String> {
     text.split_once(['x', '×'])
         .and_then(|(w, h)| Some((w.trim().parse().ok()?, h.trim().parse().ok()?)))
@@ -67,6 +81,11 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         frame_bits: args.frame_bits,
         depth_bits: args.depth_bits,
         hard: HardCase::parse_list(args.hard.as_deref().unwrap_or("")).map_err(Error::from)?,
+        style: match args.style {
+            StyleArg::Book => zsim::exercise::Style::Book,
+            StyleArg::Free => zsim::exercise::Style::Free,
+        },
+        min_pixels: args.min_pixels,
     };
     let exercise = make(&spec).map_err(Error::from)?;
     let dir = &args.output;

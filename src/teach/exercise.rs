@@ -267,6 +267,22 @@ pub struct Spec {
     pub depth_bits: u32,
     /// The cases the exercise must contain.
     pub hard: Vec<HardCase>,
+    /// How the polygons may look.
+    pub style: Style,
+    /// With [`Style::Book`]: the fewest pixel centres each polygon covers.
+    pub min_pixels: u32,
+}
+
+/// How an exercise's polygons may look.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Style {
+    /// Like the book's example: every polygon covers at least the asked
+    /// number of centres, and every depth lies within the z-buffer's range
+    /// (unless saturation is asked for, which needs depths beyond it).
+    Book,
+    /// Any candidate that contains the asked cases: slivers and depths below
+    /// zero included.
+    Free,
 }
 
 /// How many candidates are drawn before giving up.
@@ -305,6 +321,9 @@ pub fn make(spec: &Spec) -> Result<Exercise, Usage> {
     for tries in 1..=TRIES {
         let json = candidate(spec, &mut rng);
         let Ok(scene) = Scene::from_json(&json, std::path::Path::new("exercise.json")) else { continue };
+        if spec.style == Style::Book && !book_like(&scene, spec) {
+            continue;
+        }
         let found = find_cases(&scene);
         if spec.hard.iter().all(|case| found.iter().any(|f| f.case == *case)) {
             return Ok(Exercise { json, scene, found, tries });
@@ -317,6 +336,34 @@ pub fn make(spec: &Spec) -> Result<Exercise, Usage> {
         cases: spec.hard.iter().map(|c| c.name().to_string()).collect(),
         tries: TRIES,
     })
+}
+
+/// Whether a candidate looks like the book's: each polygon covers at least
+/// `min_pixels` centres, and (unless saturation is asked for) every vertex's
+/// depth, so every depth on the polygon, lies within the z-buffer's range.
+fn book_like(scene: &Scene, spec: &Spec) -> bool {
+    if !spec.hard.contains(&HardCase::Saturation) {
+        let (low, high) = (Q::from_integer(0), Q::from_integer(i128::from(scene.depth_max())));
+        let inside = |z: &crate::numbers::Exact| z.word().is_some_and(|z| (low..=high).contains(&z));
+        if !scene.polygons.iter().all(|p| p.vertices().iter().all(|v| inside(&v[2]))) {
+            return false;
+        }
+    }
+    let mut covered = Coverage(vec![0; scene.polygons.len()]);
+    Simulation::new(scene).finish(&mut covered);
+    covered.0.iter().all(|&count| count >= spec.min_pixels)
+}
+
+/// How many centres each polygon covers.
+struct Coverage(Vec<u32>);
+
+impl Observer for Coverage {
+    const OBSERVES_SCANLINES: bool = false;
+    const OBSERVES_POLYGONS: bool = false;
+
+    fn pixel(&mut self, event: &PixelEvent) {
+        self.0[event.index] += 1;
+    }
 }
 
 /// One candidate scene: polygons with vertices on half pixels over the

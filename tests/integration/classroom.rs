@@ -374,3 +374,50 @@ fn exercise_refuses_what_it_cannot_make() {
     let run = zsim(&["exercise", "--size", "100x100", "-o", path(&dir)]);
     assert_eq!(run.code, 2);
 }
+
+/// Found by a teacher: some exercises had slivers covering 7 scattered
+/// pixels or depths below zero, unlike a textbook exercise. With the default
+/// style every polygon covers at least --min-pixels centres (counted here by
+/// drawing each polygon alone with every fragment passing) and every vertex
+/// depth lies within the z-buffer's range; --style free still allows both.
+#[test]
+fn a_book_style_exercise_has_no_sliver_and_no_depth_outside_the_range() {
+    let coverage = |scene: &serde_json::Value, index: usize| -> usize {
+        let mut alone = scene.clone();
+        alone["polygons"] = serde_json::json!([scene["polygons"][index].clone()]);
+        alone["depth_test"] = "always".into();
+        let json = serde_json::to_string(&alone).unwrap();
+        let scene = zsim::Scene::from_json(&json, Path::new("alone.json")).unwrap();
+        let mut simulation = zsim::Simulation::new(&scene);
+        simulation.finish(&mut zsim::Unobserved);
+        simulation.buffers().frame_rows().iter().flatten().filter(|v| **v != 0).count()
+    };
+    let mut free_sliver_or_outside = false;
+    for seed in 1..=12 {
+        for (style, min) in [("book", "12"), ("book", "30"), ("free", "12")] {
+            let dir = scratch(&format!("style-{style}-{min}-{seed}"));
+            let seed_text = seed.to_string();
+            let args = ["exercise", "--seed", &seed_text, "--polygons", "3", "--style", style, "--min-pixels", min];
+            let run = zsim(&[&args[..], &["-o", path(&dir)]].concat());
+            assert_eq!((run.code, run.stderr.as_str()), (0, ""), "seed {seed}");
+            let text = std::fs::read_to_string(dir.join("scene.json")).unwrap();
+            let scene: serde_json::Value = serde_json::from_str(&text).unwrap();
+            let polygons = scene["polygons"].as_array().unwrap().len();
+            let smallest = (0..polygons).map(|i| coverage(&scene, i)).min().unwrap();
+            let depths: Vec<f64> = scene["polygons"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .flat_map(|p| p["vertices"].as_array().unwrap().iter().map(|v| v[2].as_f64().unwrap()))
+                .collect();
+            let inside = depths.iter().all(|z| (0.0..=15.0).contains(z));
+            if style == "book" {
+                assert!(smallest >= min.parse().unwrap(), "seed {seed}: a polygon covers {smallest} centres");
+                assert!(inside, "seed {seed}: depths {depths:?}");
+            } else {
+                free_sliver_or_outside |= smallest < 12 || !inside;
+            }
+        }
+    }
+    assert!(free_sliver_or_outside, "the free style is what the book style excludes");
+}
