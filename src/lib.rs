@@ -130,7 +130,7 @@ pub use observe::gpu;
 pub use observe::race;
 pub use observe::step::{Meant, PolygonTrace, Skip, Tracer, does_not_fit, judge, skip_text};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
-pub use observe::{check, explain, figure, history, report, tie};
+pub use observe::{check, explain, figure, history, report, tie, tikz};
 pub use raster::convert::{Scratch, rasterize};
 pub use raster::depth::{Depth, DepthTest, Stored};
 pub use raster::scan::{Crossing, Span};

@@ -41,6 +41,9 @@ pub struct ExerciseArgs {
     /// With --style book: the fewest pixel centres each polygon covers.
     #[arg(long, default_value_t = 12)]
     min_pixels: u32,
+    /// The formats of the worksheet and the solution, comma-separated: svg, png, pdf, tex (TikZ in a LaTeX document).
+    #[arg(long, value_name = "LIST", default_value = "svg", value_delimiter = ',')]
+    formats: Vec<FigureFormat>,
     /// Also write the answer after each polygon (answer.after-N.frame.txt, …).
     #[arg(long)]
     each_polygon: bool,
@@ -56,6 +59,50 @@ pub struct ExerciseArgs {
     /// With --gradescope: the points the exercise is worth.
     #[arg(long, default_value_t = 100, requires = "gradescope")]
     points: u32,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum FigureFormat {
+    Svg,
+    Png,
+    Pdf,
+    Tex,
+}
+
+impl FigureFormat {
+    fn extension(self) -> &'static str {
+        match self {
+            FigureFormat::Svg => "svg",
+            FigureFormat::Png => "png",
+            FigureFormat::Pdf => "pdf",
+            FigureFormat::Tex => "tex",
+        }
+    }
+}
+
+/// A figure's SVG in each format asked for: `(NAME.ext, bytes)`.
+fn figure_files(
+    name: &str,
+    svg: &str,
+    formats: &[FigureFormat],
+    dir: &std::path::Path,
+) -> Result<Vec<(String, Vec<u8>)>, Error> {
+    let mut files = Vec::new();
+    for format in formats {
+        let file = format!("{name}.{}", format.extension());
+        let bytes = match format {
+            FigureFormat::Svg => svg.as_bytes().to_vec(),
+            FigureFormat::Png => super::figure::png(svg, &dir.join(&file))?,
+            FigureFormat::Pdf => super::figure::pdf(svg, &dir.join(&file))?,
+            FigureFormat::Tex => zsim::tikz::tikz(svg, true)
+                .map_err(|reason| Error::from(zsim::Usage::PngFailed { path: dir.join(&file), reason }))?
+                .into_bytes(),
+        };
+        if !files.iter().any(|(f, _): &(String, Vec<u8>)| *f == file) {
+            files.push((file, bytes));
+        }
+    }
+    Ok(files)
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -137,8 +184,7 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
             values: false,
         },
     );
-    write("worksheet.svg", &worksheet)?;
-    written.push("worksheet.svg".into());
+    let mut figures = figure_files("worksheet", &worksheet, &args.formats, dir)?;
     let solution = svg_with(
         scene,
         simulation.buffers(),
@@ -147,11 +193,12 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         &zsim::words!("exercise-solution-title", seed = &seed),
         &Extras { vertex_labels: true, caption: Vec::new(), values: true },
     );
-    write("solution.svg", &solution)?;
-    written.push("solution.svg".into());
+    figures.extend(figure_files("solution", &solution, &args.formats, dir)?);
+    written.extend(figures.iter().map(|(name, _)| name.clone()));
     let notes = notes(&exercise, &spec, args);
     write("exercise.txt", &notes)?;
     written.push("exercise.txt".into());
+    files.extend(figures);
     super::write_fresh(dir, &files, &[])?;
     let line = zsim::words!("file-written-in", files = written.join(", "), path = dir.display().to_string());
     emit(out, &format!("{notes}{line}\n"))?;

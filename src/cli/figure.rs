@@ -29,21 +29,28 @@ pub struct FigureArgs {
     /// The title (default: the scene's file name and what is drawn).
     #[arg(long)]
     title: Option<String>,
-    /// The file to write: FILE.svg, or FILE.png for a picture.
-    #[arg(short, long, value_name = "FILE.svg|FILE.png")]
+    /// The file to write, by its extension: .svg, .png (a picture), .pdf (a page), .tex (a TikZ picture in a LaTeX document).
+    #[arg(short, long, value_name = "FILE.svg|png|pdf|tex")]
     output: PathBuf,
+    /// With -o FILE.tex: the tikzpicture alone, for \input in your own document (which loads tikz).
+    #[arg(long)]
+    tikz_only: bool,
 }
 
 /// What the output file's extension asks for.
 enum Kind {
     Svg,
     Png,
+    Pdf,
+    Tex,
 }
 
 pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let kind = match args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
         Some("svg") => Kind::Svg,
         Some("png") => Kind::Png,
+        Some("pdf") => Kind::Pdf,
+        Some("tex") => Kind::Tex,
         _ => {
             return Err(Error::from(zsim::Usage::FigureFormat { path: args.output.clone() }).into());
         }
@@ -97,6 +104,10 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let bytes = match kind {
         Kind::Svg => text.into_bytes(),
         Kind::Png => png(&text, &args.output)?,
+        Kind::Pdf => pdf(&text, &args.output)?,
+        Kind::Tex => zsim::tikz::tikz(&text, !args.tikz_only)
+            .map_err(|reason| Error::from(zsim::Usage::PngFailed { path: args.output.clone(), reason }))?
+            .into_bytes(),
     };
     super::not_an_input(&args.output, &[&args.scene])?;
     std::fs::write(&args.output, bytes).map_err(|source| Error::Write { path: args.output.clone(), source })?;
@@ -115,7 +126,34 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
 }
 
 /// The SVG drawn as a PNG at twice its size (text in the system's sans-serif font).
-fn png(svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+pub(super) fn png(svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+    let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
+    let tree = tree(svg, path)?;
+    let size = tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed(zsim::words!("png-figure-too-large")))?;
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
+        .ok_or_else(|| failed(zsim::words!("png-figure-too-large")))?;
+    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(2.0, 2.0), &mut pixmap.as_mut());
+    pixmap.encode_png().map_err(|e| failed(e.to_string()))
+}
+
+/// The SVG as a one-page PDF of its size, text embedded as the system's
+/// sans-serif font (svg2pdf, from the same tree as the PNG).
+#[cfg(feature = "pdf")]
+pub(super) fn pdf(svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+    let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
+    let tree = tree(svg, path)?;
+    svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), svg2pdf::PageOptions::default())
+        .map_err(|e| failed(e.to_string()))
+}
+
+#[cfg(not(feature = "pdf"))]
+pub(super) fn pdf(_svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+    Err(zsim::Usage::PngFailed { path: path.to_path_buf(), reason: zsim::words!("pdf-not-built") }.into())
+}
+
+/// The SVG parsed with the system's fonts, "sans-serif" being the first of
+/// the usual sans fonts the system has.
+fn tree(svg: &str, path: &Path) -> Result<resvg::usvg::Tree, Error> {
     let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
     let mut options = resvg::usvg::Options::default();
     let fonts = options.fontdb_mut();
@@ -130,10 +168,5 @@ fn png(svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
         .or_else(|| families.first().cloned())
         .ok_or_else(|| failed(zsim::words!("png-no-fonts")))?;
     fonts.set_sans_serif_family(sans);
-    let tree = resvg::usvg::Tree::from_str(svg, &options).map_err(|e| failed(e.to_string()))?;
-    let size = tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed(zsim::words!("png-figure-too-large")))?;
-    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
-        .ok_or_else(|| failed(zsim::words!("png-figure-too-large")))?;
-    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(2.0, 2.0), &mut pixmap.as_mut());
-    pixmap.encode_png().map_err(|e| failed(e.to_string()))
+    resvg::usvg::Tree::from_str(svg, &options).map_err(|e| failed(e.to_string()))
 }

@@ -68,7 +68,7 @@ enum Command {
     Buet(buet::BuetArgs),
     /// UIUC CS 418 rasterizer cases (rast-*.txt): run in the course's floats or exactly, compare, import.
     Cs418(cs418::Cs418Args),
-    /// Draw the raster as a figure, SVG or PNG by the output's extension: grid, centres, scanlines, outlines, covered pixels.
+    /// Draw the raster as a figure, SVG, PNG, PDF or TikZ by the output's extension: grid, centres, scanlines, outlines, covered pixels.
     Figure(figure::FigureArgs),
     /// Time zsim beside the machine's OpenGL (Mesa's llvmpipe) on the same scene, in alternating pairs: medians and their ratio.
     #[cfg(feature = "gpu")]

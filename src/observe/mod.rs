@@ -14,4 +14,5 @@ pub mod race;
 pub mod report;
 pub mod step;
 pub mod tie;
+pub mod tikz;
 pub mod trace;

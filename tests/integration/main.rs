@@ -21,6 +21,7 @@ mod generate;
 mod golden;
 #[cfg(feature = "gpu")]
 mod gpu;
+mod handouts;
 mod hard_cases;
 mod hardening;
 mod languages;

@@ -390,14 +390,14 @@ fn figure_has_a_legend_values_a_worksheet_and_png() {
         labels,
         ["(10, 5, 10)", "(10, 25, 10)", "(25, 25, 10)", "(25, 5, 10)", "(15, 15, 15)", "(25, 25, 5)", "(30, 10, 5)"]
     );
-    // A PNG for .png; a PDF is refused with what to do instead.
+    // A PNG for .png; a Word file is refused with the formats there are.
     let png = dir.join("rogers.png");
     let run = zsim(&["figure", "examples/rogers.json", "-o", png.to_str().unwrap()]);
     assert_eq!((run.code, run.stderr.as_str()), (0, ""));
     assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG\r\n\x1a\n"), "a PNG file");
-    let run = zsim(&["figure", "examples/rogers.json", "-o", dir.join("rogers.pdf").to_str().unwrap()]);
+    let run = zsim(&["figure", "examples/rogers.json", "-o", dir.join("rogers.docx").to_str().unwrap()]);
     assert_eq!((run.code, run.stdout.as_str()), (2, ""));
-    assert!(run.stderr.contains("a figure is written as .svg or .png"), "{}", run.stderr);
+    assert!(run.stderr.contains("a figure is written as .svg, .png, .pdf or .tex (TikZ)"), "{}", run.stderr);
 }
 
 /// Found by a new user: the title held the path as typed and was cut off on small rasters.

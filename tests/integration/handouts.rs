@@ -1,0 +1,129 @@
+//! Handouts: `figure -o F.tex` writes TikZ that pdflatex compiles, `-o
+//! F.pdf` a PDF that renders, and `exercise --formats` writes its worksheet
+//! and solution in each; both pictures are rendered here (pdftoppm, from
+//! Debian's poppler-utils) and must show the figure's fill colours.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use crate::{ran, skipped, zsim};
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("handouts").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn tool(name: &str) -> Option<String> {
+    let output = Command::new(name).arg("-v").output().ok()?;
+    let text = String::from_utf8_lossy(&output.stderr).to_string() + &String::from_utf8_lossy(&output.stdout);
+    Some(text.lines().next().unwrap_or(name).to_string())
+}
+
+/// The page of a PDF as RGB pixels, rendered by pdftoppm at 40 dpi.
+fn rendered(pdf: &Path) -> Vec<[u8; 3]> {
+    let prefix = pdf.with_extension("page");
+    let status =
+        Command::new("pdftoppm").args(["-r", "40", "-png", "-singlefile"]).arg(pdf).arg(&prefix).status().unwrap();
+    assert!(status.success(), "pdftoppm renders {}", pdf.display());
+    let decoder =
+        png::Decoder::new(std::io::BufReader::new(std::fs::File::open(format!("{}.png", prefix.display())).unwrap()));
+    let mut reader = decoder.read_info().unwrap();
+    let mut buffer = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut buffer).unwrap();
+    let channels = info.color_type.samples();
+    buffer[..info.buffer_size()].chunks(channels).map(|p| [p[0], p[1], p[2]]).collect()
+}
+
+/// Whether a rendered page shows a colour (within a few levels: anti-aliasing).
+fn shows(pixels: &[[u8; 3]], colour: [u8; 3]) -> bool {
+    pixels.iter().filter(|p| p.iter().zip(colour).all(|(a, b)| a.abs_diff(b) <= 6)).count() > 20
+}
+
+/// The fill colours of the figure's covered pixels, from its SVG.
+fn fills(svg: &str) -> Vec<[u8; 3]> {
+    let start = svg.find(r#"<g id="pixels""#).unwrap();
+    let group = &svg[start..start + svg[start..].find("</g>").unwrap()];
+    let mut colours: Vec<[u8; 3]> = group
+        .split("fill=\"#")
+        .skip(1)
+        .map(|rest| {
+            let hex = &rest[..6];
+            [0, 1, 2].map(|k| u8::from_str_radix(&hex[2 * k..2 * k + 2], 16).unwrap())
+        })
+        .collect();
+    colours.sort();
+    colours.dedup();
+    colours
+}
+
+#[test]
+fn figure_writes_tikz_that_compiles_and_a_pdf_that_renders() {
+    let dir = scratch("figure");
+    let out = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    for name in ["rogers.svg", "rogers.pdf", "rogers.tex", "rogers-only.tex"] {
+        let mut args = vec!["figure", "examples/rogers.json", "--values", "-o"];
+        let path = out(name);
+        args.push(&path);
+        if name == "rogers-only.tex" {
+            args.push("--tikz-only");
+        }
+        let run = zsim(&args);
+        assert_eq!((run.code, run.stderr.as_str()), (0, ""), "{name}");
+    }
+    let svg = std::fs::read_to_string(dir.join("rogers.svg")).unwrap();
+    let colours = fills(&svg);
+    assert_eq!(colours.len(), 2, "the rectangle's and the triangle's fill: {colours:?}");
+    let pdf = std::fs::read(dir.join("rogers.pdf")).unwrap();
+    assert!(pdf.starts_with(b"%PDF-"));
+    let tex = std::fs::read_to_string(dir.join("rogers.tex")).unwrap();
+    assert!(tex.starts_with("\\documentclass{article}") && tex.ends_with("\\end{document}\n"));
+    let only = std::fs::read_to_string(dir.join("rogers-only.tex")).unwrap();
+    assert!(only.starts_with("\\begin{tikzpicture}") && only.ends_with("\\end{tikzpicture}\n"));
+    // The same cells: one filled rectangle in TikZ per run of cells in the SVG.
+    let svg_cells = svg.matches("<rect x=").count() - 3;
+    let tex_cells = only.matches(") rectangle (").count() - 3;
+    assert_eq!(tex_cells, svg_cells);
+    // The cell values, each a node.
+    assert_eq!(only.matches("] at (").count(), svg.matches("<text ").count());
+    let Some(poppler) = tool("pdftoppm") else {
+        skipped("pdftoppm (poppler-utils)", "rendering the figure's PDF and TikZ");
+        return;
+    };
+    let page = rendered(&dir.join("rogers.pdf"));
+    assert!(colours.iter().all(|c| shows(&page, *c)), "the PDF shows the fills {colours:?}");
+    ran("the figure's PDF rendered", &poppler);
+    let Some(latex) = tool("pdflatex") else {
+        skipped("pdflatex (texlive-latex-base, texlive-pictures)", "compiling the figure's TikZ");
+        return;
+    };
+    let compiled = Command::new("pdflatex")
+        .args(["-interaction=nonstopmode", "-halt-on-error", "rogers.tex"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let log = String::from_utf8_lossy(&compiled.stdout);
+    assert!(compiled.status.success(), "pdflatex: {log}");
+    assert!(log.contains("Output written on rogers.pdf (1 page"), "{log}");
+    let page = rendered(&dir.join("rogers.pdf"));
+    assert!(colours.iter().all(|c| shows(&page, *c)), "the TikZ page shows the fills {colours:?}");
+    ran("the figure's TikZ compiled and rendered", &latex);
+}
+
+#[test]
+fn an_exercise_writes_its_worksheet_and_solution_in_each_format_asked() {
+    let dir = scratch("exercise");
+    let folder = dir.join("ex");
+    let run = zsim(&["exercise", "--seed", "3", "--formats", "svg,pdf,tex", "-o", folder.to_str().unwrap()]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    for name in ["worksheet", "solution"] {
+        for extension in ["svg", "pdf", "tex"] {
+            let file = folder.join(format!("{name}.{extension}"));
+            assert!(file.is_file(), "{}", file.display());
+        }
+    }
+    let run = zsim(&["exercise", "--seed", "3", "--formats", "svg,doc", "-o", dir.join("bad").to_str().unwrap()]);
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.contains("doc"), "{}", run.stderr);
+}
