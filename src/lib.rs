@@ -118,7 +118,7 @@ mod scene;
 mod simulate;
 mod teach;
 
-pub use courses::{buet, cs418};
+pub use courses::{buet, cs418, tinyrenderer};
 pub use effects::{accuracy, antialias, arith, variants};
 pub use error::{Error, FileKind, PolygonOrigin, PolygonProblem, Task, Usage};
 pub use numbers::{
@@ -135,7 +135,7 @@ pub use raster::convert::{Scratch, rasterize};
 pub use raster::depth::{Depth, DepthTest, Stored};
 pub use raster::scan::{Crossing, Span};
 pub use raster::sink::{PixelRect, RasterSink};
-pub use rules::{ColumnRule, DepthStore, Preset, RowRule, Rules};
+pub use rules::{ColumnRule, Compare, DepthStore, Preset, RowRule, Rules, Sample};
 pub use scene::random::{RandomScene, memory};
 pub use scene::text::{Links, MAX_INPUT_BYTES, printable, read_bytes, read_text, read_text_with};
 pub use scene::{Antialias, MAX_SIDE, Polygon, Scene, max_for_bits};

@@ -76,9 +76,45 @@ pub enum DepthStore {
     /// `0 … 2^depth_bits − 1`.
     #[serde(rename = "quantized")]
     Quantized,
+    /// tinyrenderer's lesson: z truncated (rounded down) to an integer and
+    /// saturated to `0 … 2^depth_bits − 1`.
+    #[serde(rename = "truncated")]
+    Truncated,
     /// BUET: z kept exactly (a rational); `depth_bits` does not apply.
     #[serde(rename = "exact")]
     Exact,
+}
+
+impl DepthStore {
+    /// Whether the z-buffer holds integer levels (rounded or truncated).
+    pub fn holds_levels(self) -> bool {
+        self != DepthStore::Exact
+    }
+}
+
+/// Where a pixel is sampled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum Sample {
+    /// The book: at the pixel's centre (x + 1/2, y + 1/2).
+    #[serde(rename = "centre")]
+    Centre,
+    /// tinyrenderer's lesson: at the integer point (x, y), the pixel's
+    /// lower-left corner. zsim draws such a scene shifted by 1/2 in x and y,
+    /// so that each pixel's centre is the lesson's sample.
+    #[serde(rename = "corner")]
+    Corner,
+}
+
+/// What the depth test compares with the stored level.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum Compare {
+    /// The book: the exact depth (10.25 > 10 passes).
+    #[serde(rename = "exact")]
+    Exact,
+    /// tinyrenderer's lesson: the level the depth would be stored as (10.25
+    /// truncated to 10 does not pass 10 > 10).
+    #[serde(rename = "level")]
+    Level,
 }
 
 /// A named rule set.
@@ -93,6 +129,10 @@ pub enum Preset {
     /// [`RowRule::HalfOpen`], columns [`ColumnRule::HalfOpen`] in zsim's y-up
     /// raster, which is OpenGL's lower-left origin; depth as the book stores it.
     Gl,
+    /// tinyrenderer's z-buffer lesson: samples at integer corners, rows and
+    /// columns closed (a sample on any edge is in), z truncated and compared
+    /// as the level it is stored as, triangles of area below 1 skipped.
+    Tinyrenderer,
     /// Vulkan's, WebGPU's and Direct3D's picture: their top-left rule in a
     /// y-down framebuffer, which in zsim's y-up raster is rows
     /// [`RowRule::TopLeft`], columns [`ColumnRule::HalfOpen`]; depth as the
@@ -112,27 +152,42 @@ pub struct Rules {
     pub columns: ColumnRule,
     /// What the z-buffer keeps.
     pub store: DepthStore,
+    /// Where pixels are sampled.
+    pub sample: Sample,
+    /// What the depth test compares.
+    pub compare: Compare,
+    /// Polygons whose signed area (counter-clockwise positive, in pixels) is
+    /// below this are skipped: back faces and slivers.
+    pub min_area: Option<crate::numbers::Q>,
 }
 
 impl Rules {
     /// The choices of a preset.
     pub fn preset(preset: Preset) -> Rules {
+        let book = Rules {
+            preset,
+            rows: RowRule::HalfOpen,
+            columns: ColumnRule::CentreInside,
+            store: DepthStore::Quantized,
+            sample: Sample::Centre,
+            compare: Compare::Exact,
+            min_area: None,
+        };
         match preset {
-            Preset::Rogers => Rules {
-                preset,
-                rows: RowRule::HalfOpen,
-                columns: ColumnRule::CentreInside,
-                store: DepthStore::Quantized,
-            },
+            Preset::Rogers => book,
             Preset::Buet => {
-                Rules { preset, rows: RowRule::Closed, columns: ColumnRule::CellHolds, store: DepthStore::Exact }
+                Rules { rows: RowRule::Closed, columns: ColumnRule::CellHolds, store: DepthStore::Exact, ..book }
             }
-            Preset::Gl => {
-                Rules { preset, rows: RowRule::HalfOpen, columns: ColumnRule::HalfOpen, store: DepthStore::Quantized }
-            }
-            Preset::Vulkan => {
-                Rules { preset, rows: RowRule::TopLeft, columns: ColumnRule::HalfOpen, store: DepthStore::Quantized }
-            }
+            Preset::Gl => Rules { columns: ColumnRule::HalfOpen, ..book },
+            Preset::Vulkan => Rules { rows: RowRule::TopLeft, columns: ColumnRule::HalfOpen, ..book },
+            Preset::Tinyrenderer => Rules {
+                rows: RowRule::Closed,
+                store: DepthStore::Truncated,
+                sample: Sample::Corner,
+                compare: Compare::Level,
+                min_area: Some(crate::numbers::Q::from_integer(1)),
+                ..book
+            },
         }
     }
 
@@ -143,6 +198,7 @@ impl Rules {
             Preset::Buet => "buet",
             Preset::Gl => "gl",
             Preset::Vulkan => "vulkan",
+            Preset::Tinyrenderer => "tinyrenderer",
         };
         let rows = match self.rows {
             RowRule::HalfOpen => words!("rules-rows-half-open"),
@@ -156,9 +212,20 @@ impl Rules {
         };
         let store = match self.store {
             DepthStore::Quantized => words!("rules-store-quantized"),
+            DepthStore::Truncated => words!("rules-store-truncated"),
             DepthStore::Exact => words!("rules-store-exact"),
         };
-        words!("rules-describe", preset = preset, rows = rows, columns = columns, store = store)
+        let mut text = words!("rules-describe", preset = preset, rows = rows, columns = columns, store = store);
+        if self.sample == Sample::Corner {
+            text.push_str(&words!("rules-sample-corner"));
+        }
+        if self.compare == Compare::Level {
+            text.push_str(&words!("rules-compare-level"));
+        }
+        if let Some(area) = self.min_area {
+            text.push_str(&words!("rules-min-area", area = crate::numbers::fraction(area)));
+        }
+        text
     }
 }
 

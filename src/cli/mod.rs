@@ -18,6 +18,7 @@ mod run;
 #[cfg(feature = "gpu")]
 mod speed;
 mod step;
+mod tinyrenderer;
 mod tui;
 mod variants;
 
@@ -68,6 +69,8 @@ enum Command {
     Buet(buet::BuetArgs),
     /// UIUC CS 418 rasterizer cases (rast-*.txt): run in the course's floats or exactly, compare, import.
     Cs418(cs418::Cs418Args),
+    /// tinyrenderer's z-buffer lesson: run a model (OBJ) to the lesson's two TGA images, or import it as a scene.
+    Tinyrenderer(tinyrenderer::TinyrendererArgs),
     /// Draw the raster as a figure, SVG, PNG, PDF or TikZ by the output's extension: grid, centres, scanlines, outlines, covered pixels.
     Figure(figure::FigureArgs),
     /// Time zsim beside the machine's OpenGL (Mesa's llvmpipe) on the same scene, in alternating pairs: medians and their ratio.
@@ -135,6 +138,7 @@ pub fn main() -> ExitCode {
         Command::Figure(args) => figure::run(&args, &mut out),
         Command::Buet(args) => buet::run(&args, &mut out),
         Command::Cs418(args) => cs418::run(&args, &mut out),
+        Command::Tinyrenderer(args) => tinyrenderer::run(&args, &mut out),
         Command::Accuracy(args) => accuracy::run(&args, &mut out),
         Command::Memory(args) => generate::memory_command(&args, &mut out),
         Command::Random(args) => generate::random_command(&args, &mut out),

@@ -453,15 +453,20 @@ enum GpuApi {
 }
 
 fn preset_parser(text: &str) -> Result<zsim::Preset, String> {
-    serde_json::from_value(serde_json::Value::String(text.to_string()))
-        .map_err(|_| format!("\"{text}\" is not a rule preset: use rogers, buet, gl or vulkan (d3d, webgpu)"))
+    serde_json::from_value(serde_json::Value::String(text.to_string())).map_err(|_| {
+        format!("\"{text}\" is not a rule preset: use rogers, buet, gl, vulkan (d3d, webgpu) or tinyrenderer")
+    })
 }
 
 /// `--compare-rules`: the cells two rule sets draw differently, each with the
 /// polygons covering it and the edge its centre lies on.
 fn compare_rules(scene: &Scene, path: &str, preset: zsim::Preset) -> String {
     use std::fmt::Write as _;
-    let other = zsim::Rules { store: scene.rules.store, ..zsim::Rules::preset(preset) };
+    // An exact z-buffer stays exact (BUET's); otherwise the preset's whole rules, depth included.
+    let other = match scene.rules.store {
+        zsim::DepthStore::Exact => zsim::Rules { store: zsim::DepthStore::Exact, ..zsim::Rules::preset(preset) },
+        _ => zsim::Rules::preset(preset),
+    };
     let differences = zsim::tie::compare_rules(scene, other);
     let mut text = format!(
         "{path}\n  {}\n  {}\n",
@@ -536,5 +541,6 @@ fn preset_name(preset: zsim::Preset) -> String {
         zsim::Preset::Buet => zsim::words!("preset-buet"),
         zsim::Preset::Gl => zsim::words!("preset-gl"),
         zsim::Preset::Vulkan => zsim::words!("preset-vulkan"),
+        zsim::Preset::Tinyrenderer => zsim::words!("preset-tinyrenderer"),
     }
 }

@@ -2,6 +2,9 @@
 //! `config.txt` and `scene.txt`, runs the course's transformations and writes
 //! `z_buffer.txt`; UIUC CS 418 runs the course's pipeline over a number type
 //! (its f64 arithmetic, or exact). Both end in the scene the simulator draws.
+//! tinyrenderer's z-buffer lesson reads an OBJ model and writes the lesson's
+//! two TGA images, in its f64 arithmetic or exactly.
 //! Imports: the layers before it.
 pub mod buet;
 pub mod cs418;
+pub mod tinyrenderer;

@@ -94,6 +94,16 @@ impl Exact {
         }
     }
 
+    /// `self × other`, exactly.
+    pub fn times_exact(&self, other: &Exact) -> Exact {
+        let word = |a: &Q, b: &Q| Some(Exact::Word(num_traits::CheckedMul::checked_mul(a, b)?));
+        match (self, other) {
+            (Exact::Word(a), Exact::Word(b)) => word(a, b),
+            _ => None,
+        }
+        .unwrap_or_else(|| Exact::from(self.to_big() * other.to_big()))
+    }
+
     /// `self − other`, exactly.
     pub fn minus(&self, other: &Exact) -> Exact {
         let word = |a: &Q, b: &Q| Some(Exact::Word(a.checked_sub(b)?));

@@ -32,7 +32,7 @@ impl Buffer {
 /// 6 with an exact one (whose depths usually lie within −1 … 1).
 pub fn depth_text(scene: &Scene, z: impl Into<Exact>) -> String {
     match scene.rules.store {
-        DepthStore::Quantized => exact_and_decimal(z),
+        DepthStore::Quantized | DepthStore::Truncated => exact_and_decimal(z),
         DepthStore::Exact => exact_and_places(z, 6),
     }
 }
@@ -70,6 +70,16 @@ pub fn winding_text(winding: crate::scene::Winding) -> String {
 /// and the saturation when it does not fit.
 pub fn stored_text(scene: &Scene, depth: &Depth) -> String {
     match depth.stored(scene.rules.store, scene.depth_max()) {
+        Stored::Level(stored) if scene.rules.store == crate::rules::DepthStore::Truncated => {
+            let value = depth.value();
+            if value.is_integer() && value.floor() == stored.into() {
+                words!("stored-whole", stored = stored)
+            } else if value.floor() == stored.into() {
+                words!("stored-truncated", stored = stored, value = crate::numbers::short(value))
+            } else {
+                words!("stored-truncated-saturated", stored = stored, value = exact_and_decimal(value))
+            }
+        }
         Stored::Level(stored) => {
             let rounded = depth.rounded();
             let value = depth.value();
@@ -155,6 +165,7 @@ pub fn fate_text(fate: Fate) -> Option<String> {
         Fate::Culled(winding) => Some(words!("fate-culled", winding = winding_text(winding))),
         Fate::EdgeOn => Some(words!("fate-edge-on")),
         Fate::Degenerate => Some(words!("fate-degenerate")),
+        Fate::SmallArea => Some(words!("fate-small-area")),
         Fate::ClippedAway => Some(words!("fate-clipped")),
         Fate::OutsideView => Some(words!("fate-outside-view")),
     }

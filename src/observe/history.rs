@@ -197,6 +197,10 @@ fn antialias_facts(scene: &Scene, settings: Antialias, (x, y): (u32, u32)) -> Re
     Ok(AntialiasFacts { samples: k, detail, mean })
 }
 
+/// Up to how many polygons `explain` tells every one; in a larger scene only
+/// those that reach the pixel's scanline.
+pub const LISTED_ALL: usize = 50;
+
 impl PixelHistory {
     /// The history in the reader's language, one fact a line, as `zsim
     /// explain` prints it; `file` names the scene in the heading.
@@ -218,13 +222,29 @@ impl PixelHistory {
                 words!("explain-section", op = scene.depth_test.section_symbol(), section = depth_text(scene, section));
             text.push_str(&format!("{line}\n"));
         }
+        if scene.rules.sample == crate::rules::Sample::Corner {
+            text.push_str(&words!("explain-corner-sample", x = x, y = y));
+            text.push('\n');
+        }
         text.push_str(&words!("explain-start", frame = scene.background, depth = scene.clear_depth.to_string()));
         text.push('\n');
         if let Some(segment) = &self.segment {
             text.push_str(&segment_text(scene, segment));
         }
+        // A large scene (a model of thousands of faces): only the polygons that
+        // reach the pixel's scanline are told, the others counted.
+        let large = scene.polygons.len() > LISTED_ALL;
+        let (mut not_drawn, mut off_row) = (0usize, 0usize);
         for step in &self.steps {
             let entry = &step.entry;
+            if large && entry.scanline.is_none() {
+                if entry.fate == crate::simulate::events::Fate::Drawn {
+                    off_row += 1;
+                } else {
+                    not_drawn += 1;
+                }
+                continue;
+            }
             let line = words!(
                 "polygon-line",
                 polygon = polygon_name(scene, entry.index),
@@ -235,6 +255,10 @@ impl PixelHistory {
             if let Some(inside) = &step.inside {
                 text.push_str(&format!("  {}\n", inside_text(inside)));
             }
+        }
+        if not_drawn + off_row > 0 {
+            text.push_str(&words!("explain-others", count = not_drawn + off_row, skipped = not_drawn, off = off_row));
+            text.push('\n');
         }
         let (frame, depth) = &self.last;
         text.push_str(&words!("explain-final", frame = *frame, depth = depth.to_string()));

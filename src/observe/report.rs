@@ -73,6 +73,7 @@ pub fn polygon_heading(scene: &Scene, index: usize) -> String {
         Fate::ClippedAway => words!("heading-clipped-away", start = start),
         Fate::OutsideView => words!("heading-outside-view", start = start),
         Fate::EdgeOn => words!("heading-edge-on", start = start, plane = plane),
+        Fate::SmallArea => words!("heading-small-area", start = start, plane = plane),
         Fate::Culled(winding) => words!(
             "heading-culled",
             start = start,

@@ -13,7 +13,7 @@ use crate::raster::convert::{Scratch, rasterize};
 use crate::raster::depth::Depth;
 use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
-use crate::rules::Rules;
+use crate::rules::{Rules, Sample};
 use crate::scene::Scene;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
@@ -132,18 +132,24 @@ impl RasterSink for Cells {
     }
 }
 
-fn coverage(scene: &Scene, rules: Rules) -> Vec<BTreeSet<(u32, u32)>> {
+/// For each pixel (row by row from the bottom), the polygons of `scene` that
+/// cover its centre under its rules, in scene order (none for a polygon
+/// those rules do not draw: edge-on, culled, below the area bound).
+fn coverage(scene: &Scene) -> Vec<Vec<usize>> {
     let rect = PixelRect { columns: (0, scene.width - 1), rows: (0, scene.height - 1) };
     let mut scratch = Scratch::default();
-    scene
-        .polygons
-        .iter()
-        .map(|polygon| {
-            let mut cells = Cells::default();
-            rasterize(polygon.geometry(), rules, rect, &mut scratch, &mut cells);
-            cells.0
-        })
-        .collect()
+    let mut covering = vec![Vec::new(); scene.width as usize * scene.height as usize];
+    for index in 0..scene.polygons.len() {
+        if crate::simulate::setup::fate(scene, index) != crate::simulate::events::Fate::Drawn {
+            continue;
+        }
+        let mut cells = Cells::default();
+        rasterize(scene.polygons[index].geometry(), scene.rules, rect, &mut scratch, &mut cells);
+        for (x, y) in cells.0 {
+            covering[y as usize * scene.width as usize + x as usize].push(index);
+        }
+    }
+    covering
 }
 
 /// The cells whose final framebuffer value differs between the scene's own
@@ -152,21 +158,35 @@ fn coverage(scene: &Scene, rules: Rules) -> Vec<BTreeSet<(u32, u32)>> {
 pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
     let mut changed = scene.clone();
     changed.rules = other;
+    // Samples at corners are drawn shifted by 1/2: the other rules see the polygons where they sample.
+    let shift = match (scene.rules.sample, other.sample) {
+        (Sample::Corner, Sample::Centre) => Some(Q::new(-1, 2)),
+        (Sample::Centre, Sample::Corner) => Some(Q::new(1, 2)),
+        _ => None,
+    };
+    if let Some(shift) = shift {
+        let shift = Exact::Word(shift);
+        for polygon in &mut changed.polygons {
+            let moved =
+                polygon.vertices().iter().map(|[x, y, z]| [x.plus(&shift), y.plus(&shift), z.clone()]).collect();
+            if let Ok(shifted) = polygon.with_vertices(moved) {
+                *polygon = shifted;
+            }
+        }
+    }
     let frames = [scene, &changed].map(|s| {
         let mut simulation = Simulation::new(s);
         simulation.finish(&mut Unobserved);
         simulation.buffers().frame_rows()
     });
-    let (ours, theirs) = (coverage(scene, scene.rules), coverage(scene, other));
+    let (ours, theirs) = (coverage(scene), coverage(&changed));
     let mut out = Vec::new();
     for (printed_row, (a, b)) in frames[0].iter().zip(&frames[1]).enumerate() {
         let y = scene.height - 1 - printed_row as u32;
         for (x, (&va, &vb)) in a.iter().zip(b).enumerate() {
             let x = x as u32;
-            let covering = |sets: &[BTreeSet<(u32, u32)>]| -> Vec<usize> {
-                sets.iter().enumerate().filter(|(_, s)| s.contains(&(x, y))).map(|(i, _)| i).collect()
-            };
-            let covering = (covering(&ours), covering(&theirs));
+            let cell = y as usize * scene.width as usize + x as usize;
+            let covering = (ours[cell].clone(), theirs[cell].clone());
             if va == vb && covering.0 == covering.1 {
                 continue;
             }

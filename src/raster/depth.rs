@@ -337,10 +337,22 @@ impl Depth {
         }
     }
 
+    /// Truncated (rounded down) to an integer, then saturated to
+    /// `0 ..= depth_max` (tinyrenderer's `unsigned char` of a depth that is
+    /// never negative).
+    pub fn truncated(&self, depth_max: u32) -> u32 {
+        let floor = match &self.0 {
+            DepthValue::Word { whole, .. } => BigInt::from(*whole),
+            DepthValue::Big(big) => big.floor().to_integer(),
+        };
+        floor.clamp(BigInt::zero(), BigInt::from(depth_max)).to_u32().expect("clamped")
+    }
+
     /// What the z-buffer stores under `store`.
     pub fn stored(&self, store: DepthStore, depth_max: u32) -> Stored {
         match store {
             DepthStore::Quantized => Stored::Level(self.quantized(depth_max)),
+            DepthStore::Truncated => Stored::Level(self.truncated(depth_max)),
             DepthStore::Exact => Stored::Exact(self.value()),
         }
     }

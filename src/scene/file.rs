@@ -253,22 +253,28 @@ struct RulesFile {
     rows: Option<crate::rules::RowRule>,
     columns: Option<crate::rules::ColumnRule>,
     store: Option<DepthStore>,
+    sample: Option<crate::rules::Sample>,
+    compare: Option<crate::rules::Compare>,
+    min_area: Option<Number>,
 }
 
 /// Reads `"rules"`: a preset name, or an object naming a preset and overrides.
 fn rules_from(value: Option<serde_json::Value>) -> Result<Rules, String> {
     let Some(value) = value else { return Ok(Rules::default()) };
     if value.is_string() {
-        let preset: Preset = serde_json::from_value(value).map_err(|e| e.to_string())?;
+        let preset: Preset = serde_json::from_value(value).map_err(|e| crate::words::json_reason(&e.to_string()))?;
         return Ok(Rules::preset(preset));
     }
-    let file: RulesFile = serde_json::from_value(value).map_err(|e| e.to_string())?;
+    let file: RulesFile = serde_json::from_value(value).map_err(|e| crate::words::json_reason(&e.to_string()))?;
     let base = Rules::preset(file.preset.unwrap_or(Preset::Rogers));
     Ok(Rules {
         preset: base.preset,
         rows: file.rows.unwrap_or(base.rows),
         columns: file.columns.unwrap_or(base.columns),
         store: file.store.unwrap_or(base.store),
+        sample: file.sample.unwrap_or(base.sample),
+        compare: file.compare.unwrap_or(base.compare),
+        min_area: file.min_area.map(|n| n.0).or(base.min_area),
     })
 }
 
@@ -441,8 +447,8 @@ impl SceneFile {
         };
         let depth_max = max_for_bits(depth_bits);
         let clear_depth = match (rules.store, self.clear_depth) {
-            (DepthStore::Quantized, None) => Stored::Level(depth_test.clear_value(depth_max)),
-            (DepthStore::Quantized, Some(_)) => {
+            (DepthStore::Quantized | DepthStore::Truncated, None) => Stored::Level(depth_test.clear_value(depth_max)),
+            (DepthStore::Quantized | DepthStore::Truncated, Some(_)) => {
                 return Err(setting("clear_depth", words!("setting-clear-depth")));
             }
             (DepthStore::Exact, Some(value)) => Stored::Exact(Exact::Word(value.0)),
@@ -500,6 +506,7 @@ impl SceneFile {
                 window: window.map(|w| (w, width, height)),
                 perspective,
                 size: (width, height),
+                corner_samples: rules.sample == crate::rules::Sample::Corner,
             };
             polygons.push(polygon.validate(index, &frame, path)?);
         }
@@ -533,6 +540,8 @@ struct Frame {
     window: Option<(Window, u32, u32)>,
     perspective: Option<Perspective>,
     size: (u32, u32),
+    /// The rules sample at integer points: the polygon is shifted by 1/2.
+    corner_samples: bool,
 }
 
 impl PolygonFile {
@@ -583,6 +592,14 @@ impl PolygonFile {
         if let Some((window, width, height)) = frame.window {
             for vertex in &mut vertices {
                 *vertex = window.to_pixels(vertex, width, height);
+            }
+        }
+        if frame.corner_samples {
+            // Sampled at integer points: drawn shifted by 1/2, so that each centre is that point.
+            let half = Exact::Word(Q::new(1, 2));
+            for vertex in &mut vertices {
+                vertex[0] = vertex[0].plus(&half);
+                vertex[1] = vertex[1].plus(&half);
             }
         }
         if vertices.len() < 3 {

@@ -262,7 +262,9 @@ impl Scene {
     /// (depth range, w-buffer, cross-section, opacity); if not, the plain
     /// loop runs.
     pub fn has_pixel_effects(&self) -> bool {
-        self.depth_range.is_some()
+        self.rules.store == crate::rules::DepthStore::Truncated
+            || self.rules.compare == crate::rules::Compare::Level
+            || self.depth_range.is_some()
             || self.effects.section.is_some()
             || self.effects.transparency
             || self.effects.perspective.is_some_and(|p| p.store_w)

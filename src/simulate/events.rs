@@ -45,6 +45,9 @@ pub enum Fate {
     Drawn,
     /// Back-face culling skips it: its vertices run this way.
     Culled(Winding),
+    /// Its signed area is below the rules' bound (tinyrenderer skips back
+    /// faces and slivers so).
+    SmallArea,
     /// Newell's `c = 0` with a non-zero normal: seen edge-on, it covers no pixel.
     EdgeOn,
     /// Newell's normal is zero (collinear vertices, or loops that cancel): no plane, no pixel.

@@ -3,6 +3,7 @@
 //! asked into the cache ahead of time; and the counts of a run.
 
 use crate::geometry::plane::Geometry;
+use crate::numbers::{Exact, Q};
 use crate::raster::sink::PixelRect;
 use crate::scene::{Scene, Winding};
 use crate::simulate::events::Fate;
@@ -96,6 +97,17 @@ pub(super) fn prefetch_cells<F>(scene: &Scene, index: usize, (frame, depth): (&[
     }
 }
 
+/// A polygon's signed area in the xy plane, counter-clockwise positive (the
+/// shoelace formula; tinyrenderer's `signed_triangle_area`).
+fn signed_area(vertices: &[[Exact; 3]]) -> Exact {
+    let mut twice = Exact::Word(Q::from_integer(0));
+    for (i, a) in vertices.iter().enumerate() {
+        let b = &vertices[(i + 1) % vertices.len()];
+        twice = twice.plus(&a[0].times_exact(&b[1]).minus(&b[0].times_exact(&a[1])));
+    }
+    twice.divided_by(2)
+}
+
 /// Whether polygon `index` is drawn, and if not, why.
 pub fn fate(scene: &Scene, index: usize) -> Fate {
     let polygon = &scene.polygons[index];
@@ -107,6 +119,11 @@ pub fn fate(scene: &Scene, index: usize) -> Fate {
     let geometry = polygon.geometry();
     if geometry.is_degenerate() {
         return Fate::Degenerate;
+    }
+    if let Some(bound) = scene.rules.min_area
+        && signed_area(polygon.vertices()) < Exact::Word(bound)
+    {
+        return Fate::SmallArea;
     }
     if geometry.c() == 0 {
         return Fate::EdgeOn;

@@ -5,7 +5,7 @@
 
 use crate::numbers::{Q, fraction};
 use crate::raster::depth::{Depth, DepthTest, Stored};
-use crate::rules::{DepthStore, RowRule};
+use crate::rules::{Compare, DepthStore, RowRule};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::events::Outcome;
 
@@ -91,7 +91,15 @@ impl PixelStages for WithEffects<'_> {
         if scene.depth_range.is_some_and(|range| !compared.within(range)) {
             return Decision { outcome: Outcome::OutsideDepthRange, compared, stored, frame };
         }
-        if !scene.depth_test.passes(&compared, &stored) {
+        // Compared as the level it would be stored as, when the rules say so.
+        let tested = match scene.rules.compare {
+            Compare::Exact => compared.clone(),
+            Compare::Level => match compared.stored(scene.rules.store, scene.depth_max()) {
+                Stored::Level(level) => Depth::from_fraction(i128::from(level), 1),
+                Stored::Exact(_) => compared.clone(),
+            },
+        };
+        if !scene.depth_test.passes(&tested, &stored) {
             return Decision { outcome: Outcome::Hidden, compared, stored, frame };
         }
         if scene.effects.section.is_some_and(|z| !scene.depth_test.keeps_section(&compared, z)) {
@@ -172,6 +180,7 @@ pub fn describe(scene: &Scene) -> Vec<String> {
     }
     stages.push(match scene.rules.store {
         DepthStore::Quantized => words!("stage-store-quantized", max = scene.depth_max().to_string()),
+        DepthStore::Truncated => words!("stage-store-truncated", max = scene.depth_max().to_string()),
         DepthStore::Exact => words!("stage-store-exact"),
     });
     stages

@@ -823,3 +823,30 @@ gradescope-test = { $buffer } after { $after }
 usage-identity-column = --identity: this platform does not import by "{ $column }" (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id)
 usage-no-points = --points must be at least 1
 pdf-not-built = this zsim was built without its pdf feature: build it with `cargo install --path .` (the feature is on by default)
+
+## tinyrenderer's OBJ files (courses/tinyrenderer.rs)
+obj-vertex-count = a vertex needs x, y and z; this line has { $count }
+obj-not-a-number = "{ $token }" is not a number
+obj-face-corners = a face of the lesson has 3 corners; this one has { $count }
+obj-bad-index = "{ $token }" is not a vertex number (from 1)
+obj-too-many-faces = more than { $max } faces
+obj-no-vertex = vertex { $index } does not exist: the file has { $count }
+rules-store-truncated = depth truncated (rounded down) and saturated
+rules-sample-corner = ; samples at integer corners (x, y)
+rules-compare-level = ; the depth compared as the level it is stored as
+rules-min-area = ; polygons of signed area below { $area } skipped
+stage-store-truncated = store (truncated, saturated to 0…{ $max })
+preset-tinyrenderer = tinyrenderer's z-buffer lesson
+fate-small-area = its signed area is below the rules' bound (a back face or a sliver): it is skipped
+heading-small-area = { $start }: plane { $plane }, skipped (signed area below the rules' bound: a back face or a sliver)
+tinyrenderer-run = { $model }: { $faces } faces, { $skipped } skipped (area below 1), { $drawn } drawn; wrote zbuffer.tga and framebuffer.tga in { $folder }
+tinyrenderer-differ = exact arithmetic gives another z-buffer level than the lesson's f64 at { $count } { $count ->
+    [one] pixel
+   *[other] pixels
+}
+tinyrenderer-differ-pixel = ({ $x }, { $y }), face { $face }: f64 { $float }, exact { $exact } (the interpolated z is an integer; f64 falls just below it and truncation drops a level)
+tinyrenderer-line = line { $line }
+explain-others = { $count } other polygons do not reach this pixel's scanline: { $skipped } not drawn at all (skipped, culled or edge-on), { $off } whose rows lie elsewhere
+explain-corner-sample = the rules sample the integer point ({ $x }, { $y }): zsim draws the scene shifted by ½, so that this centre is that point, and the coordinates below are the shifted ones
+stored-truncated = { $stored } is stored ({ $value } truncated to { $stored })
+stored-truncated-saturated = { $stored } is stored ({ $value } truncated, saturated to { $stored })

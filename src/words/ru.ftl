@@ -800,3 +800,30 @@ gradescope-test = { $buffer } после { $after }
 usage-identity-column = --identity: эта платформа не импортирует по столбцу «{ $column }» (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id)
 usage-no-points = --points должно быть не меньше 1
 pdf-not-built = этот zsim собран без возможности pdf: соберите его командой `cargo install --path .` (она включена по умолчанию)
+
+## tinyrenderer's OBJ files (courses/tinyrenderer.rs)
+obj-vertex-count = у вершины должны быть x, y и z; в этой строке чисел: { $count }
+obj-not-a-number = «{ $token }» — не число
+obj-face-corners = у грани урока 3 вершины; у этой: { $count }
+obj-bad-index = «{ $token }» — не номер вершины (с 1)
+obj-too-many-faces = больше { $max } граней
+obj-no-vertex = вершины { $index } нет: в файле их { $count }
+rules-store-truncated = глубина отбрасывается до целого (округляется вниз) с насыщением
+rules-sample-corner = ; выборка в целых точках (x, y), углах пикселов
+rules-compare-level = ; сравнивается глубина, округлённая так же, как записывается
+rules-min-area = ; многоугольники с ориентированной площадью меньше { $area } пропускаются
+stage-store-truncated = запись (отбрасывание дробной части, насыщение до 0…{ $max })
+preset-tinyrenderer = урок tinyrenderer про z-буфер
+fate-small-area = его ориентированная площадь меньше границы правил (обратная грань или щепка): он пропущен
+heading-small-area = { $start }: плоскость { $plane }, пропущен (ориентированная площадь меньше границы правил: обратная грань или щепка)
+tinyrenderer-run = { $model }: граней { $faces }, пропущено { $skipped } (площадь меньше 1), нарисовано { $drawn }; записаны zbuffer.tga и framebuffer.tga в { $folder }
+tinyrenderer-differ = точная арифметика даёт другой уровень z-буфера, чем f64 урока, в { $count } { $count ->
+    [one] пикселе
+   *[other] пикселах
+}
+tinyrenderer-differ-pixel = ({ $x }, { $y }), грань { $face }: f64 { $float }, точно { $exact } (интерполированное z целое; f64 чуть меньше, и отбрасывание дробной части теряет уровень)
+tinyrenderer-line = строка { $line }
+explain-others = ещё { $count } многоугольников не доходят до сканирующей строки этого пиксела: { $skipped } не рисуются вовсе (пропущены, отсечены или видны с ребра), у { $off } строки лежат в другом месте
+explain-corner-sample = по правилам выборка берётся в целой точке ({ $x }, { $y }): zsim рисует сцену, сдвинутую на ½, чтобы этот центр был этой точкой, и координаты ниже — сдвинутые
+stored-truncated = в z-буфер записывается { $stored } ({ $value } без дробной части — { $stored })
+stored-truncated-saturated = в z-буфер записывается { $stored } ({ $value } без дробной части, с насыщением до { $stored })

@@ -800,3 +800,30 @@ gradescope-test = { $buffer } після { $after }
 usage-identity-column = --identity: ця платформа не імпортує за стовпцем «{ $column }» (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id)
 usage-no-points = --points має бути не менше 1
 pdf-not-built = цей zsim зібрано без можливості pdf: зберіть його командою `cargo install --path .` (вона ввімкнена типово)
+
+## tinyrenderer's OBJ files (courses/tinyrenderer.rs)
+obj-vertex-count = у вершини мають бути x, y і z; у цьому рядку чисел: { $count }
+obj-not-a-number = «{ $token }» — не число
+obj-face-corners = у грані уроку 3 вершини; у цієї: { $count }
+obj-bad-index = «{ $token }» — не номер вершини (з 1)
+obj-too-many-faces = понад { $max } граней
+obj-no-vertex = вершини { $index } немає: у файлі їх { $count }
+rules-store-truncated = глибина відкидається до цілого (округлюється вниз) з насиченням
+rules-sample-corner = ; вибірка в цілих точках (x, y), кутах пікселів
+rules-compare-level = ; порівнюється глибина, округлена так само, як записується
+rules-min-area = ; багатокутники з орієнтованою площею меншою за { $area } пропускаються
+stage-store-truncated = запис (відкидання дробової частини, насичення до 0…{ $max })
+preset-tinyrenderer = урок tinyrenderer про z-буфер
+fate-small-area = його орієнтована площа менша за межу правил (зворотна грань або скалка): його пропущено
+heading-small-area = { $start }: площина { $plane }, пропущено (орієнтована площа менша за межу правил: зворотна грань або скалка)
+tinyrenderer-run = { $model }: граней { $faces }, пропущено { $skipped } (площа менша за 1), намальовано { $drawn }; записано zbuffer.tga і framebuffer.tga в { $folder }
+tinyrenderer-differ = точна арифметика дає інший рівень z-буфера, ніж f64 уроку, у { $count } { $count ->
+    [one] пікселі
+   *[other] пікселях
+}
+tinyrenderer-differ-pixel = ({ $x }, { $y }), грань { $face }: f64 { $float }, точно { $exact } (інтерпольоване z ціле; f64 трохи менше, і відкидання дробової частини втрачає рівень)
+tinyrenderer-line = рядок { $line }
+explain-others = ще { $count } багатокутників не доходять до рядка сканування цього пікселя: { $skipped } не малюються взагалі (пропущені, відсічені або видимі з ребра), у { $off } рядки лежать деінде
+explain-corner-sample = за правилами вибірку беруть у цілій точці ({ $x }, { $y }): zsim малює сцену, зсунуту на ½, щоб цей центр був цією точкою, і координати нижче — зсунуті
+stored-truncated = в z-буфер записується { $stored } ({ $value } без дробової частини — { $stored })
+stored-truncated-saturated = в z-буфер записується { $stored } ({ $value } без дробової частини, з насиченням до { $stored })

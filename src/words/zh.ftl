@@ -766,3 +766,27 @@ gradescope-test = { $after } 之后的{ $buffer }
 usage-identity-column = --identity：该平台不按“{ $column }”列导入（Moodle：email、idnumber、username；Canvas：id、sis-user-id、sis-login-id）
 usage-no-points = --points 至少为 1
 pdf-not-built = 这个 zsim 构建时没有 pdf 功能：请用 `cargo install --path .` 构建（默认开启）
+
+## tinyrenderer's OBJ files (courses/tinyrenderer.rs)
+obj-vertex-count = 顶点需要 x、y 和 z；这一行有 { $count } 个数
+obj-not-a-number = “{ $token }”不是数字
+obj-face-corners = 课程中的面有 3 个顶点；这个面有 { $count } 个
+obj-bad-index = “{ $token }”不是顶点编号（从 1 开始）
+obj-too-many-faces = 面多于 { $max } 个
+obj-no-vertex = 顶点 { $index } 不存在：文件中只有 { $count } 个
+rules-store-truncated = 深度截断（向下取整）并饱和
+rules-sample-corner = ；在整数点 (x, y)（像素角点）采样
+rules-compare-level = ；比较的是按存储方式取整后的深度
+rules-min-area = ；有向面积小于 { $area } 的多边形被跳过
+stage-store-truncated = 存储（截断，饱和到 0…{ $max }）
+preset-tinyrenderer = tinyrenderer 的 z 缓冲课程
+fate-small-area = 它的有向面积小于规则的界限（背面或细条）：被跳过
+heading-small-area = { $start }：平面 { $plane }，被跳过（有向面积小于规则的界限：背面或细条）
+tinyrenderer-run = { $model }：{ $faces } 个面，跳过 { $skipped } 个（面积小于 1），绘制 { $drawn } 个；已在 { $folder } 写入 zbuffer.tga 和 framebuffer.tga
+tinyrenderer-differ = 精确算术在 { $count } 个像素上得到与课程 f64 不同的 z 缓冲级别
+tinyrenderer-differ-pixel = ({ $x }, { $y })，面 { $face }：f64 { $float }，精确 { $exact }（插值的 z 是整数；f64 略小于它，截断后少了一级）
+tinyrenderer-line = 第 { $line } 行
+explain-others = 另有 { $count } 个多边形到不了这个像素的扫描线：{ $skipped } 个根本不画（被跳过、剔除或侧对），{ $off } 个的行在别处
+explain-corner-sample = 规则在整数点 ({ $x }, { $y }) 采样：zsim 把场景平移 ½ 来画，使这个中心就是那个点，下面的坐标是平移后的
+stored-truncated = 存入 { $stored }（{ $value } 截断为 { $stored }）
+stored-truncated-saturated = 存入 { $stored }（{ $value } 截断并饱和到 { $stored }）

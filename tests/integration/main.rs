@@ -31,6 +31,7 @@ mod run_command;
 mod stability;
 mod teaching;
 mod threads;
+mod tinyrenderer;
 mod untrusted;
 
 use std::path::{Path, PathBuf};

@@ -1,0 +1,136 @@
+//! `zsim tinyrenderer`: tinyrenderer's z-buffer lesson: run a model as the
+//! lesson does (its two TGA images), or import it as a zsim scene.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use clap::{Args, Subcommand, ValueEnum};
+use zsim::Error;
+use zsim::tinyrenderer::{self, Model, SIZE};
+
+use super::{Failure, Finish, emit};
+
+/// Arguments of `zsim tinyrenderer`.
+#[derive(Debug, Args)]
+pub struct TinyrendererArgs {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Draw a model as the lesson's program does: zbuffer.tga and framebuffer.tga into OUT_DIR.
+    Run {
+        /// The model (an OBJ file: v and f lines are read, others passed over).
+        model: PathBuf,
+        /// The folder to write into; no file in it is replaced.
+        #[arg(short, long, value_name = "OUT_DIR")]
+        output: PathBuf,
+        /// The lesson's f64 arithmetic, or exact, which also lists the pixels where the two differ.
+        #[arg(long, value_enum, default_value_t = Arith::F64)]
+        arith: Arith,
+        /// Write the TGA files without run-length encoding (types 2 and 3 instead of 10 and 11).
+        #[arg(long)]
+        uncompressed: bool,
+    },
+    /// Print the model as a zsim scene under the lesson's rules, for run, explain, step, check and figure.
+    Import {
+        /// The model (an OBJ file).
+        model: PathBuf,
+        /// Project the vertices in the lesson's f64 or exactly.
+        #[arg(long, value_enum, default_value_t = Arith::F64)]
+        arith: Arith,
+        /// Write the scene to this file instead of standard output.
+        #[arg(short, long, value_name = "FILE")]
+        output: Option<PathBuf>,
+    },
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Arith {
+    /// The lesson's arithmetic: f64, as its C++ computes.
+    F64,
+    /// Exact fractions.
+    Exact,
+}
+
+impl Arith {
+    fn lesson(self) -> tinyrenderer::Arith {
+        match self {
+            Arith::F64 => tinyrenderer::Arith::F64,
+            Arith::Exact => tinyrenderer::Arith::Exact,
+        }
+    }
+}
+
+/// How many pixels `run --arith exact` lists where exact and f64 differ.
+const LISTED: usize = 10;
+
+pub fn run(args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    match &args.command {
+        Command::Run { model, output, arith, uncompressed } => {
+            let loaded = load(model)?;
+            let drawn = tinyrenderer::render(&loaded, arith.lesson());
+            let side = SIZE as u16;
+            let frame: Vec<u8> = drawn.framebuffer.iter().flatten().copied().collect();
+            let files = [
+                ("zbuffer.tga".to_string(), tinyrenderer::tga(side, side, 1, &drawn.zbuffer, !uncompressed)),
+                ("framebuffer.tga".to_string(), tinyrenderer::tga(side, side, 3, &frame, !uncompressed)),
+            ];
+            super::write_fresh(output, &files, &[model.as_path()])?;
+            let drawn_faces = loaded.faces.len() - drawn.skipped;
+            let mut text = format!(
+                "{}\n",
+                zsim::words!(
+                    "tinyrenderer-run",
+                    model = model.display().to_string(),
+                    faces = loaded.faces.len(),
+                    skipped = drawn.skipped,
+                    drawn = drawn_faces,
+                    folder = output.display().to_string()
+                )
+            );
+            if *arith == Arith::Exact {
+                text.push_str(&differences(&loaded, &drawn));
+            }
+            emit(out, &text)?;
+            Ok(Finish::Ok)
+        }
+        Command::Import { model, arith, output } => {
+            let scene = tinyrenderer::scene_json(&load(model)?, arith.lesson());
+            super::emit_or_write(out, output.as_deref(), &scene, &[model])?;
+            Ok(Finish::Ok)
+        }
+    }
+}
+
+/// The pixels where the lesson's f64 gives another z-buffer level than
+/// exact arithmetic, counted, the first few listed.
+fn differences(model: &Model, exact: &tinyrenderer::Render) -> String {
+    let float = tinyrenderer::render(model, tinyrenderer::Arith::F64);
+    let differing: Vec<usize> = (0..exact.zbuffer.len()).filter(|&i| exact.zbuffer[i] != float.zbuffer[i]).collect();
+    let mut text = format!("{}\n", zsim::words!("tinyrenderer-differ", count = differing.len()));
+    for &cell in differing.iter().take(LISTED) {
+        let (x, y) = (cell % SIZE as usize, cell / SIZE as usize);
+        let face = exact.face[cell].map_or(0, |f| f + 1);
+        let line = zsim::words!(
+            "tinyrenderer-differ-pixel",
+            x = x,
+            y = y,
+            face = face,
+            float = u32::from(float.zbuffer[cell]),
+            exact = u32::from(exact.zbuffer[cell])
+        );
+        text.push_str(&format!("  {line}\n"));
+    }
+    text
+}
+
+fn load(path: &Path) -> Result<Model, Error> {
+    let text = zsim::read_text(path)?;
+    Model::parse(&text).map_err(|e| Error::SceneFormat {
+        path: path.to_owned(),
+        location: zsim::words!("tinyrenderer-line", line = e.line),
+        message: e.message,
+    })
+}
