@@ -633,17 +633,24 @@ mod tests {
         }
     }
 
+    /// The book's example, drawn.
+    fn rogers_drawn() -> (Scene, Buffers) {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")).unwrap();
+        let scene = Scene::from_json(&text, std::path::Path::new("rogers.json")).unwrap();
+        let mut simulation = crate::Simulation::new(&scene);
+        simulation.finish(&mut crate::Unobserved);
+        let buffers = simulation.into_buffers();
+        (scene, buffers)
+    }
+
     /// Found by a new student: "1 rectangle" stood at the rectangle's middle,
     /// inside the triangle, and names covered cell values. Each name now
     /// stands right of the raster, led to a cell that shows its polygon and
     /// whose row, to its right, shows no other polygon.
     #[test]
     fn names_stand_beside_the_raster_led_to_a_cell_of_their_own() {
-        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")).unwrap();
-        let scene = Scene::from_json(&text, std::path::Path::new("rogers.json")).unwrap();
-        let mut simulation = crate::Simulation::new(&scene);
-        simulation.finish(&mut crate::Unobserved);
-        let buffers = simulation.buffers();
+        let (scene, buffers) = rogers_drawn();
+        let buffers = &buffers;
         let names = name_labels(&scene, buffers, 1);
         let texts: Vec<&str> = names.iter().map(|n| n.text.as_str()).collect();
         assert_eq!(texts, ["1 rectangle", "2 triangle"]);
@@ -671,12 +678,9 @@ mod tests {
     /// of its row.
     #[test]
     fn values_sit_above_the_dashed_scanlines() {
-        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")).unwrap();
-        let scene = Scene::from_json(&text, std::path::Path::new("rogers.json")).unwrap();
-        let mut simulation = crate::Simulation::new(&scene);
-        simulation.finish(&mut crate::Unobserved);
+        let (scene, buffers) = rogers_drawn();
         let extras = Extras { values: true, ..Extras::default() };
-        let svg = svg_with(&scene, simulation.buffers(), 1, Shading::Frame, "t", &extras);
+        let svg = svg_with(&scene, &buffers, 1, Shading::Frame, "t", &extras);
         let group = |id: &str| -> Vec<f64> {
             let start = svg.find(&format!("<g id=\"{id}\"")).unwrap();
             let body = &svg[start..start + svg[start..].find("</g>").unwrap()];
