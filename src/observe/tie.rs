@@ -190,8 +190,13 @@ pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
             if va == vb && covering.0 == covering.1 {
                 continue;
             }
-            let ties = (0..scene.polygons.len())
-                .filter(|&i| covering.0.contains(&i) != covering.1.contains(&i))
+            // Only the polygons covering it under one rule set and not the other (both lists are in scene order).
+            let mut changed: Vec<usize> = covering.0.iter().chain(&covering.1).copied().collect();
+            changed.sort_unstable();
+            changed.dedup();
+            let ties = changed
+                .into_iter()
+                .filter(|i| covering.0.contains(i) != covering.1.contains(i))
                 .filter_map(|i| boundary_at(scene.polygons[i].vertices(), x, y).map(|(kind, a, b)| (i, kind, a, b)))
                 .collect();
             out.push(RuleDifference { x, y, values: (va, vb), covering, ties });
