@@ -108,9 +108,8 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.submission.is_some() {
         let mut finish = Finish::Ok;
         for (last, files) in &states {
-            let answers: Vec<(Buffer, PathBuf)> = files.clone();
             let mut read = Vec::new();
-            for (buffer, path) in &answers {
+            for (buffer, path) in files {
                 read.push((*buffer, path.as_path(), read_answer(path, &scene, *buffer, zsim::Links::Refuse)?));
             }
             let report = report(&scene, &args.scene, *last, read, args.arith)?;

@@ -105,6 +105,14 @@ fn an_exercise_writes_a_gradescope_autograder_that_grades_by_buffer_and_polygon(
     ];
     let results = autograde(&root, &right);
     assert_gradescope_layout(&results);
+    // The same folder checked as text: each state after its polygon, every cell right, exit 0.
+    let text = zsim(&[
+        "check",
+        root.join("source/scene.json").to_str().unwrap(),
+        "--submission",
+        root.join("submission").to_str().unwrap(),
+    ]);
+    assert_eq!((text.code, text.stdout.matches("all 256 cells match").count()), (0, 4), "{}", text.stdout);
     let names: Vec<&str> = results["tests"].as_array().unwrap().iter().map(|t| t["name"].as_str().unwrap()).collect();
     assert_eq!(
         names,
