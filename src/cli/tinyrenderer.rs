@@ -32,6 +32,9 @@ enum Command {
         /// Write the TGA files without run-length encoding (types 2 and 3 instead of 10 and 11).
         #[arg(long)]
         uncompressed: bool,
+        /// The image's side in pixels (the lesson's is 800).
+        #[arg(long, default_value_t = SIZE, value_parser = side)]
+        size: i64,
     },
     /// Print the model as a zsim scene under the lesson's rules, for run, explain, step, check and figure.
     Import {
@@ -43,7 +46,22 @@ enum Command {
         /// Write the scene to this file instead of standard output.
         #[arg(short, long, value_name = "FILE")]
         output: Option<PathBuf>,
+        /// The raster's side in pixels: the lesson's 800, or a small one (32, 48) to step through by hand.
+        #[arg(long, default_value_t = SIZE, value_parser = side)]
+        size: i64,
     },
+}
+
+fn side(text: &str) -> Result<i64, String> {
+    match text.parse::<i64>() {
+        Ok(n) if tinyrenderer::SIDES.contains(&n) => Ok(n),
+        _ => Err(zsim::words!(
+            "usage-tinyrenderer-size",
+            text = zsim::printable(&zsim::token(text)).into_owned(),
+            min = *tinyrenderer::SIDES.start(),
+            max = *tinyrenderer::SIDES.end()
+        )),
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -68,10 +86,10 @@ const LISTED: usize = 10;
 
 pub fn run(args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     match &args.command {
-        Command::Run { model, output, arith, uncompressed } => {
+        Command::Run { model, output, arith, uncompressed, size } => {
             let loaded = load(model)?;
-            let drawn = tinyrenderer::render(&loaded, arith.lesson());
-            let side = SIZE as u16;
+            let drawn = tinyrenderer::render(&loaded, arith.lesson(), *size);
+            let side = *size as u16;
             let frame: Vec<u8> = drawn.framebuffer.iter().flatten().copied().collect();
             let files = [
                 ("zbuffer.tga".to_string(), tinyrenderer::tga(side, side, 1, &drawn.zbuffer, !uncompressed)),
@@ -91,13 +109,13 @@ pub fn run(args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failu
                 )
             );
             if *arith == Arith::Exact {
-                text.push_str(&differences(&loaded, &drawn));
+                text.push_str(&differences(&loaded, &drawn, *size));
             }
             emit(out, &text)?;
             Ok(Finish::Ok)
         }
-        Command::Import { model, arith, output } => {
-            let scene = tinyrenderer::scene_json(&load(model)?, arith.lesson());
+        Command::Import { model, arith, output, size } => {
+            let scene = tinyrenderer::scene_json(&load(model)?, arith.lesson(), *size);
             super::emit_or_write(out, output.as_deref(), &scene, &[model])?;
             Ok(Finish::Ok)
         }
@@ -106,12 +124,12 @@ pub fn run(args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failu
 
 /// The pixels where the lesson's f64 gives another z-buffer level than
 /// exact arithmetic, counted, the first few listed.
-fn differences(model: &Model, exact: &tinyrenderer::Render) -> String {
-    let float = tinyrenderer::render(model, tinyrenderer::Arith::F64);
+fn differences(model: &Model, exact: &tinyrenderer::Render, size: i64) -> String {
+    let float = tinyrenderer::render(model, tinyrenderer::Arith::F64, size);
     let differing: Vec<usize> = (0..exact.zbuffer.len()).filter(|&i| exact.zbuffer[i] != float.zbuffer[i]).collect();
     let mut text = format!("{}\n", zsim::words!("tinyrenderer-differ", count = differing.len()));
     for &cell in differing.iter().take(LISTED) {
-        let (x, y) = (cell % SIZE as usize, cell / SIZE as usize);
+        let (x, y) = (cell % size as usize, cell / size as usize);
         let face = exact.face[cell].map_or(0, |f| f + 1);
         let line = zsim::words!(
             "tinyrenderer-differ-pixel",

@@ -16,8 +16,11 @@
 
 use crate::numbers::{Exact, Q, parse_exact};
 
-/// The lesson's image size.
+/// The lesson's image size (its `width` and `height`).
 pub const SIZE: i64 = 800;
+
+/// The smallest and largest image side `--size` allows.
+pub const SIDES: std::ops::RangeInclusive<i64> = 4..=4096;
 
 /// Where a line of an OBJ file is wrong.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -113,14 +116,15 @@ pub enum Arith {
 /// truncates them.
 pub type Screen = [i64; 3];
 
-/// The lesson's `project`, truncated to integers as its `std::tuple<int,int,int>` does.
-pub fn project(model: &Model, vertex: usize, arith: Arith) -> Screen {
+/// The lesson's `project` for an image `size` pixels square (the lesson's is
+/// [`SIZE`]), truncated to integers as its `std::tuple<int,int,int>` does.
+pub fn project(model: &Model, vertex: usize, arith: Arith, size: i64) -> Screen {
     match arith {
         Arith::F64 => {
             let [x, y, z] = model.vertices_f64[vertex];
             // ((v.x + 1.) * width) / 2, then the conversion to int (toward zero).
             let screen = |v: f64, scale: f64| ((v + 1.0) * scale / 2.0) as i64;
-            [screen(x, SIZE as f64), screen(y, SIZE as f64), screen(z, 255.0)]
+            [screen(x, size as f64), screen(y, size as f64), screen(z, 255.0)]
         }
         Arith::Exact => {
             let [x, y, z] = &model.vertices[vertex];
@@ -129,7 +133,7 @@ pub fn project(model: &Model, vertex: usize, arith: Arith) -> Screen {
                 // Toward zero, as a conversion to int; a value beyond 64 bits lies far off the image.
                 value.word().map_or(i64::MAX / 4, |q| q.trunc().to_integer().clamp(-(1 << 40), 1 << 40) as i64)
             };
-            [screen(x, i128::from(SIZE)), screen(y, i128::from(SIZE)), screen(z, 255)]
+            [screen(x, i128::from(size)), screen(y, i128::from(size)), screen(z, 255)]
         }
     }
 }
@@ -198,14 +202,15 @@ pub struct Render {
     pub skipped: usize,
 }
 
-/// Draws the model as the lesson does, in `arith`.
-pub fn render(model: &Model, arith: Arith) -> Render {
-    let pixels = (SIZE * SIZE) as usize;
+/// Draws the model as the lesson does, in `arith`, on an image `size`
+/// pixels square (the lesson's is [`SIZE`]).
+pub fn render(model: &Model, arith: Arith, size: i64) -> Render {
+    let pixels = (size * size) as usize;
     let mut out =
         Render { zbuffer: vec![0; pixels], framebuffer: vec![[0; 3]; pixels], face: vec![None; pixels], skipped: 0 };
     let mut rand = GlibcRand::new(1);
     for (index, face) in model.faces.iter().enumerate() {
-        let [a, b, c] = face.map(|v| project(model, v, arith));
+        let [a, b, c] = face.map(|v| project(model, v, arith, size));
         // TGAColor is blue, green, red: rnd[0], rnd[1], rnd[2].
         let colour = [0, 1, 2].map(|_| (rand.rand() % 255) as u8);
         let total = twice_area([a[0], a[1]], [b[0], b[1]], [c[0], c[1]]);
@@ -242,10 +247,10 @@ pub fn render(model: &Model, arith: Arith) -> Render {
                         (n / i128::from(total)).clamp(0, 255) as u8
                     }
                 };
-                if !(0..SIZE).contains(&x) || !(0..SIZE).contains(&y) {
+                if !(0..size).contains(&x) || !(0..size).contains(&y) {
                     continue;
                 }
-                let cell = (y * SIZE + x) as usize;
+                let cell = (y * size + x) as usize;
                 if z <= out.zbuffer[cell] {
                     continue;
                 }
@@ -259,18 +264,18 @@ pub fn render(model: &Model, arith: Arith) -> Render {
 }
 
 /// The model as a zsim scene under the lesson's rules (`"rules":
-/// "tinyrenderer"`): 800×800, a 24-bit framebuffer, an 8-bit z-buffer; each
+/// "tinyrenderer"`): `size`×`size` (the lesson's 800, or smaller to step by hand), a 24-bit framebuffer, an 8-bit z-buffer; each
 /// face a triangle at the lesson's integer screen coordinates (projected in
 /// `arith`), its value the face's colour as 0xRRGGBB and its name `face N`
 /// (from 1, as the OBJ's `f` lines count). Faces the lesson skips are kept:
 /// zsim's rules skip them too, and say why.
-pub fn scene_json(model: &Model, arith: Arith) -> String {
+pub fn scene_json(model: &Model, arith: Arith, size: i64) -> String {
     let mut rand = GlibcRand::new(1);
     let mut polygons = Vec::with_capacity(model.faces.len());
     for (index, face) in model.faces.iter().enumerate() {
         let [b, g, r] = [0, 1, 2].map(|_| (rand.rand() % 255) as u32);
         let vertices: Vec<String> =
-            face.iter().map(|&v| project(model, v, arith)).map(|[x, y, z]| format!("[{x}, {y}, {z}]")).collect();
+            face.iter().map(|&v| project(model, v, arith, size)).map(|[x, y, z]| format!("[{x}, {y}, {z}]")).collect();
         polygons.push(format!(
             "    {{\"name\": \"face {}\", \"value\": {}, \"vertices\": [{}]}}",
             index + 1,
@@ -279,7 +284,7 @@ pub fn scene_json(model: &Model, arith: Arith) -> String {
         ));
     }
     format!(
-        "{{\n  \"width\": {SIZE}, \"height\": {SIZE}, \"frame_bits\": 24, \"depth_bits\": 8, \"depth_test\": \"greater\",\n  \"rules\": \"tinyrenderer\",\n  \"polygons\": [\n{}\n  ]\n}}\n",
+        "{{\n  \"width\": {size}, \"height\": {size}, \"frame_bits\": 24, \"depth_bits\": 8, \"depth_test\": \"greater\",\n  \"rules\": \"tinyrenderer\",\n  \"polygons\": [\n{}\n  ]\n}}\n",
         polygons.join(",\n")
     )
 }

@@ -850,3 +850,4 @@ explain-others = { $count } other polygons do not reach this pixel's scanline: {
 explain-corner-sample = the rules sample the integer point ({ $x }, { $y }): zsim draws the scene shifted by ½, so that this centre is that point, and the coordinates below are the shifted ones
 stored-truncated = { $stored } is stored ({ $value } truncated to { $stored })
 stored-truncated-saturated = { $stored } is stored ({ $value } truncated, saturated to { $stored })
+usage-tinyrenderer-size = "{ $text }" is not an image side: { $min } … { $max } pixels

@@ -827,3 +827,4 @@ explain-others = ещё { $count } многоугольников не дохо�
 explain-corner-sample = по правилам выборка берётся в целой точке ({ $x }, { $y }): zsim рисует сцену, сдвинутую на ½, чтобы этот центр был этой точкой, и координаты ниже — сдвинутые
 stored-truncated = в z-буфер записывается { $stored } ({ $value } без дробной части — { $stored })
 stored-truncated-saturated = в z-буфер записывается { $stored } ({ $value } без дробной части, с насыщением до { $stored })
+usage-tinyrenderer-size = «{ $text }» — не сторона изображения: { $min } … { $max } пикселов

@@ -827,3 +827,4 @@ explain-others = ще { $count } багатокутників не доходя�
 explain-corner-sample = за правилами вибірку беруть у цілій точці ({ $x }, { $y }): zsim малює сцену, зсунуту на ½, щоб цей центр був цією точкою, і координати нижче — зсунуті
 stored-truncated = в z-буфер записується { $stored } ({ $value } без дробової частини — { $stored })
 stored-truncated-saturated = в z-буфер записується { $stored } ({ $value } без дробової частини, з насиченням до { $stored })
+usage-tinyrenderer-size = «{ $text }» — не сторона зображення: { $min } … { $max } пікселів

@@ -790,3 +790,4 @@ explain-others = 另有 { $count } 个多边形到不了这个像素的扫描线
 explain-corner-sample = 规则在整数点 ({ $x }, { $y }) 采样：zsim 把场景平移 ½ 来画，使这个中心就是那个点，下面的坐标是平移后的
 stored-truncated = 存入 { $stored }（{ $value } 截断为 { $stored }）
 stored-truncated-saturated = 存入 { $stored }（{ $value } 截断并饱和到 { $stored }）
+usage-tinyrenderer-size = “{ $text }”不是图像边长：{ $min } … { $max } 像素

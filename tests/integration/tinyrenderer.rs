@@ -13,7 +13,7 @@ fn the_lessons_images_are_reproduced_byte_for_byte() {
     let Some(dir) = peer("tinyrenderer", "the tinyrenderer lesson's images") else { return };
     for name in MODELS {
         let model = Model::parse(&std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
-        let drawn = render(&model, Arith::F64);
+        let drawn = render(&model, Arith::F64, SIZE);
         let side = SIZE as u16;
         let zbuffer = tga(side, side, 1, &drawn.zbuffer, true);
         let framebuffer: Vec<u8> = drawn.framebuffer.iter().flatten().copied().collect();
@@ -40,7 +40,7 @@ fn exact_arithmetic_differs_from_the_lessons_f64_only_where_truncation_meets_an_
     let mut counts = Vec::new();
     for name in MODELS {
         let model = Model::parse(&std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
-        let (float, exact) = (render(&model, Arith::F64), render(&model, Arith::Exact));
+        let (float, exact) = (render(&model, Arith::F64, SIZE), render(&model, Arith::Exact, SIZE));
         let differing: Vec<(u8, u8)> =
             float.zbuffer.iter().zip(&exact.zbuffer).filter(|(a, b)| a != b).map(|(a, b)| (*a, *b)).collect();
         // Where they differ, the lesson's f64 is one level below: z was an integer, f64 fell short of it.
@@ -60,7 +60,7 @@ fn the_imported_model_draws_the_lessons_images_through_zsims_rasterizer() {
     let Some(dir) = peer("tinyrenderer", "the tinyrenderer lesson's images") else { return };
     for (name, f64_drops) in MODELS.into_iter().zip([310, 36, 39]) {
         let model = Model::parse(&std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
-        let json = zsim::tinyrenderer::scene_json(&model, Arith::F64);
+        let json = zsim::tinyrenderer::scene_json(&model, Arith::F64, SIZE);
         let scene = zsim::Scene::from_json(&json, std::path::Path::new("import.json")).unwrap();
         let mut simulation = zsim::Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
@@ -77,7 +77,7 @@ fn the_imported_model_draws_the_lessons_images_through_zsims_rasterizer() {
             .map(|v| [(v & 0xff) as u8, (v >> 8 & 0xff) as u8, (v >> 16) as u8])
             .collect();
         assert_eq!(depth.len(), side * side);
-        let exact = render(&model, Arith::Exact);
+        let exact = render(&model, Arith::Exact, SIZE);
         let differing = depth.iter().zip(&exact.zbuffer).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "{name}: zsim against the lesson's rules, exactly");
         let differing = frame.iter().zip(&exact.framebuffer).filter(|(a, b)| a != b).count();
@@ -191,4 +191,27 @@ fn the_command_writes_the_lessons_files_and_refuses_a_bad_line() {
     let run = crate::zsim(&["tinyrenderer", "import", bad.to_str().unwrap()]);
     assert_eq!(run.code, 2);
     assert!(run.stderr.ends_with("bad.obj: line 4: vertex 7 does not exist: the file has 3\n"), "{}", run.stderr);
+}
+
+/// `--size 48`: the lesson's program with a 48×48 image, small enough to
+/// step through by hand; zsim's rasterizer draws the imported scene as the
+/// lesson's rules do, exactly, at every pixel (zsim's own pyramid model).
+#[test]
+fn a_small_import_draws_as_the_lessons_rules_do() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/tinyrenderer/pyramid.obj");
+    let model = Model::parse(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let run = crate::zsim(&["tinyrenderer", "import", path.to_str().unwrap(), "--size", "48"]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    let scene = zsim::Scene::from_json(&run.stdout, std::path::Path::new("pyramid.json")).unwrap();
+    assert_eq!((scene.width, scene.height), (48, 48));
+    let mut simulation = zsim::Simulation::new(&scene);
+    simulation.finish(&mut zsim::Unobserved);
+    let depth: Vec<u8> =
+        simulation.buffers().depth_level_rows().unwrap().iter().rev().flatten().map(|v| *v as u8).collect();
+    let lesson = render(&model, Arith::Exact, 48);
+    assert_eq!(depth, lesson.zbuffer);
+    assert!(lesson.zbuffer.iter().filter(|z| **z > 0).count() > 500, "the pyramid covers the image's middle");
+    let run = crate::zsim(&["tinyrenderer", "import", path.to_str().unwrap(), "--size", "3"]);
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.contains("\"3\" is not an image side: 4 … 4096 pixels"), "{}", run.stderr);
 }
