@@ -165,11 +165,8 @@ pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
         _ => None,
     };
     if let Some(shift) = shift {
-        let shift = Exact::Word(shift);
         for polygon in &mut changed.polygons {
-            let moved =
-                polygon.vertices().iter().map(|[x, y, z]| [x.plus(&shift), y.plus(&shift), z.clone()]).collect();
-            if let Ok(shifted) = polygon.with_vertices(moved) {
+            if let Ok(shifted) = polygon.shifted(shift) {
                 *polygon = shifted;
             }
         }

@@ -225,6 +225,13 @@ impl Polygon {
         let geometry = Geometry::from_exact(&vertices)?;
         Ok(Polygon { vertices, geometry, ..self.clone() })
     }
+
+    /// The same polygon moved by `by` in x and in y (z unchanged): where
+    /// rules that sample at pixel corners see it against centres, and back.
+    pub fn shifted(&self, by: Q) -> Result<Polygon, GeometryError> {
+        let by = Exact::Word(by);
+        self.with_vertices(self.vertices.iter().map(|[x, y, z]| [x.plus(&by), y.plus(&by), z.clone()]).collect())
+    }
 }
 
 /// A validated scene: every guarantee the rasterizer relies on holds.

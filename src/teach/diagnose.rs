@@ -3,19 +3,19 @@
 //! the student's wrong cells best (and contradict their right ones least) is
 //! named, with how many of the wrong cells it explains.
 //!
-//! The rules that change coverage or the test (pixel corners, the cell rule,
-//! the test reversed or not strict) draw a changed copy of the scene with the
-//! one rasterizer. The rules that change only what is stored or compared
-//! (truncating, rounding halves down, comparing the rounded depth, wrapping
-//! instead of saturating) replay the pixels the rasterizer covered, with the
-//! exact depth it computed at each, under the wrong store or test. The rest
-//! need no drawing: the answer one polygon early, the last polygon alone,
-//! rows written bottom first.
+//! Most wrong rules are rules the rasterizer takes as data, so a changed copy
+//! of the scene is drawn by the one rasterizer: pixel corners, the cell rule,
+//! the test reversed or not strict, depths truncated (`store: truncated`),
+//! the rounded depth compared (`compare: level`), the last polygon alone. Two
+//! are no rule of any course: rounding halves down and wrapping instead of
+//! saturating replay the pixels the rasterizer covered, with the exact depth
+//! it computed at each, under that store. The rest need no drawing: the
+//! answer one polygon early, rows written bottom first.
 
-use crate::numbers::{Exact, Q, floor_div};
+use crate::numbers::{Q, floor_div};
 use crate::observe::check::Matrix;
 use crate::raster::depth::{Depth, DepthTest, Stored};
-use crate::rules::{ColumnRule, DepthStore};
+use crate::rules::{ColumnRule, Compare, DepthStore};
 use crate::scene::Scene;
 use crate::simulate::events::{Observer, Outcome, PixelEvent};
 use crate::simulate::simulation::Simulation;
@@ -240,60 +240,53 @@ fn buffers_under(
     covered: &Covered,
 ) -> Option<State> {
     let max = scene.depth_max();
-    let stored = match misconception {
-        Misconception::Truncated => Some(replay(scene, covered, None, |n, d| floor_div(n, d).0, false)),
+    // A copy of the scene under other rules, drawn by the one rasterizer.
+    let drawn_as = |change: &dyn Fn(&mut Scene)| {
+        let mut changed = scene.clone();
+        change(&mut changed);
+        state(&changed, last)
+    };
+    match misconception {
+        Misconception::Truncated => Some(drawn_as(&|s| s.rules.store = DepthStore::Truncated)),
+        Misconception::RoundedCompared => Some(drawn_as(&|s| s.rules.compare = Compare::Level)),
+        // No rule rounds halves down or wraps: the covered pixels replayed under those stores.
         // Rounded half down: ⌈z − 1/2⌉ = −⌊(d − 2n) / 2d⌋.
-        Misconception::HalfDown => Some(replay(scene, covered, None, |n, d| -floor_div(d - 2 * n, 2 * d).0, false)),
-        Misconception::RoundedCompared => Some(replay(scene, covered, None, half_up, true)),
+        Misconception::HalfDown => replay(scene, covered, |n, d| -floor_div(d - 2 * n, 2 * d).0),
         Misconception::NoSaturation => {
             let levels = i128::from(max) + 1;
-            Some(replay(scene, covered, None, move |n, d| half_up(n, d).rem_euclid(levels), false))
+            replay(scene, covered, move |n, d| half_up(n, d).rem_euclid(levels))
         }
-        Misconception::LastOnly => Some(replay(scene, covered, Some(last), half_up, false)),
-        _ => None,
-    };
-    if let Some(stored) = stored {
-        return stored;
-    }
-    match misconception {
+        Misconception::LastOnly => {
+            let mut alone = scene.clone();
+            alone.polygons = vec![scene.polygons[last].clone()];
+            Some(state(&alone, 0))
+        }
         Misconception::OneEarly => Some(state_through(scene, last.checked_sub(1))),
         Misconception::BottomFirst => {
             Some((right.0.iter().rev().cloned().collect(), right.1.iter().rev().cloned().collect()))
         }
-        Misconception::NotStrict => {
-            let mut changed = scene.clone();
-            changed.depth_test = match scene.depth_test {
+        Misconception::NotStrict => Some(drawn_as(&|s| {
+            s.depth_test = match s.depth_test {
                 DepthTest::Greater => DepthTest::GreaterEqual,
                 _ => DepthTest::LessEqual,
-            };
-            Some(state(&changed, last))
-        }
-        Misconception::Reversed => {
-            let mut changed = scene.clone();
-            let (test, clear) = match scene.depth_test {
+            }
+        })),
+        Misconception::Reversed => Some(drawn_as(&|s| {
+            let (test, clear) = match s.depth_test {
                 DepthTest::Greater => (DepthTest::Less, max),
                 _ => (DepthTest::Greater, 0),
             };
-            changed.depth_test = test;
-            changed.clear_depth = Stored::Level(clear);
-            Some(state(&changed, last))
-        }
+            s.depth_test = test;
+            s.clear_depth = Stored::Level(clear);
+        })),
         Misconception::Corners => {
             let mut changed = scene.clone();
-            let half = Exact::Word(Q::new(1, 2));
             for polygon in &mut changed.polygons {
-                let moved: Vec<[Exact; 3]> =
-                    polygon.vertices().iter().map(|[x, y, z]| [x.plus(&half), y.plus(&half), z.clone()]).collect();
-                *polygon = polygon.with_vertices(moved).ok()?;
+                *polygon = polygon.shifted(Q::new(1, 2)).ok()?;
             }
             Some(state(&changed, last))
         }
-        Misconception::CellRule => {
-            let mut changed = scene.clone();
-            changed.rules.columns = ColumnRule::CellHolds;
-            Some(state(&changed, last))
-        }
-        _ => None,
+        Misconception::CellRule => Some(drawn_as(&|s| s.rules.columns = ColumnRule::CellHolds)),
     }
 }
 
@@ -302,30 +295,22 @@ fn half_up(n: i128, d: i128) -> i128 {
     floor_div(2 * n + d, 2 * d).0
 }
 
-/// The buffers when the covered pixels (of polygon `only`, or all) are
-/// stored as `level(n, d)` saturated to the z-buffer's range and tested on the exact depth, or with
-/// `rounded` on the level it would store; `None` when a depth needs more
-/// than 128 bits (no student writes those).
-fn replay(
-    scene: &Scene,
-    covered: &Covered,
-    only: Option<usize>,
-    level: impl Fn(i128, i128) -> i128,
-    rounded: bool,
-) -> Option<State> {
+/// The buffers when every covered pixel is stored as `level(n, d)` of its
+/// exact depth n/d, saturated to the z-buffer's range, and tested on the
+/// exact depth as the book tests it; `None` when a depth needs more than 128
+/// bits (no student writes those).
+fn replay(scene: &Scene, covered: &Covered, level: impl Fn(i128, i128) -> i128) -> Option<State> {
     let (width, height) = (scene.width as usize, scene.height as usize);
     let max = scene.depth_max();
     let clear = scene.clear_depth.level()?;
     let mut frame = vec![vec![scene.background; width]; height];
     let mut depth = vec![vec![clear; width]; height];
-    for (index, x, y, z) in covered.0.iter().filter(|(i, ..)| only.is_none_or(|o| o == *i)) {
+    for (index, x, y, z) in &covered.0 {
         let (n, d) = z.fraction()?;
         let row = height - 1 - *y as usize;
         let cell = &mut depth[row][*x as usize];
-        let new = level(n, d).clamp(0, i128::from(max)) as u32;
-        let tested = if rounded { Depth::from_fraction(i128::from(new), 1) } else { z.clone() };
-        if scene.depth_test.passes(&tested, &Stored::Level(*cell)) {
-            *cell = new;
+        if scene.depth_test.passes(z, &Stored::Level(*cell)) {
+            *cell = level(n, d).clamp(0, i128::from(max)) as u32;
             frame[row][*x as usize] = scene.polygons[*index].value;
         }
     }
