@@ -483,8 +483,16 @@ fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> 
             Some(b) if distance(b) <= distance(p) => Some(b),
             _ => Some(p),
         };
-        for y in 0..scene.height {
-            for x in 0..scene.width {
+        // Only the pixels whose centres lie within the outline's bounding box can be inside it.
+        let span = |axis: fn(&(f64, f64)) -> f64, size: u32| {
+            let (low, high) = outline.iter().map(axis).fold((f64::MAX, f64::MIN), |(l, h), v| (l.min(v), h.max(v)));
+            let first = (low - 0.5).ceil().clamp(0.0, f64::from(size)) as u32;
+            let last = (high - 0.5).floor().clamp(-1.0, f64::from(size) - 1.0);
+            first..(last + 1.0).max(0.0) as u32
+        };
+        let (columns, rows) = (span(|p| p.0, scene.width), span(|p| p.1, scene.height));
+        for y in rows {
+            for x in columns.clone() {
                 let centre = (f64::from(x) + 0.5, f64::from(y) + 0.5);
                 if !contains(&outline, centre) {
                     continue;
