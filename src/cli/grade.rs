@@ -196,7 +196,14 @@ fn submissions(
                                 Err(Error::Answer { message, .. }) => {
                                     Handed::Malformed(printable(&message).into_owned())
                                 }
-                                Err(other) => Handed::Malformed(printable(&other.to_string()).into_owned()),
+                                // The status names the file already: the message without the
+                                // path in front of it, which would only stretch the table.
+                                Err(other) => {
+                                    let message = other.to_string();
+                                    let prefix = format!("{}: ", path.display());
+                                    let why = message.strip_prefix(&prefix).unwrap_or(&message);
+                                    Handed::Malformed(printable(why).into_owned())
+                                }
                             },
                         };
                         (*buffer, handed)
