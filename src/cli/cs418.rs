@@ -131,7 +131,17 @@ fn run_case(
         }
         None => None,
     };
-    let result = cs418::render(&case, arithmetic).map_err(|e| located(path, e))?;
+    // In exact arithmetic the course's own floats are drawn too, to say where
+    // they disagree: both at once, on two cores, messages in this thread's language.
+    let lang = zsim::language();
+    let (result, course) = rayon::join(
+        || cs418::render(&case, arithmetic),
+        || {
+            (arithmetic == Arithmetic::Exact)
+                .then(|| zsim::with_language(lang, || cs418::render(&case, Arithmetic::DdaF64)))
+        },
+    );
+    let result = result.map_err(|e| located(path, e))?;
     std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
     let written = output.join(&case.output);
     std::fs::write(&written, result.image.to_png()).map_err(|source| Error::Write { path: written.clone(), source })?;
@@ -144,9 +154,8 @@ fn run_case(
         features = features(&case),
         written = written.display().to_string()
     ) + "\n";
-    if arithmetic == Arithmetic::Exact {
-        let course = cs418::render(&case, Arithmetic::DdaF64).map_err(|e| located(path, e))?;
-        text.push_str(&disagreements(&course, &result));
+    if let Some(course) = course {
+        text.push_str(&disagreements(&course.map_err(|e| located(path, e))?, &result));
     }
     let mut finish = Finish::Ok;
     if let Some((png, image)) = reference {

@@ -202,7 +202,12 @@ impl Geometry {
         for p in &self.points {
             (x0, x1, y0, y1) = (x0.min(p[0]), x1.max(p[0]), y0.min(p[1]), y1.max(p[1]));
         }
-        let cell = |v: i128| crate::numbers::floor_div(v, self.scale()).0;
+        // ⌊v / 2D⌋: a shift when 2D is a power of two (integer and binary-fraction
+        // vertices, nearly every scene), as a 128-bit division is slow and this runs
+        // twice a polygon per draw.
+        let scale = self.scale();
+        let shift = scale.trailing_zeros();
+        let cell = |v: i128| if scale == 1 << shift { v >> shift } else { crate::numbers::floor_div(v, scale).0 };
         [cell(x0), cell(x1), cell(y0), cell(y1)]
     }
 

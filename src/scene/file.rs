@@ -3,6 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
+use rayon::prelude::*;
 use serde::Deserialize;
 use serde::de::Error as _;
 
@@ -197,11 +198,10 @@ impl<'de, T: ReadNumber> serde::de::Visitor<'de> for NumberVisitor<T> {
     }
 
     fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<T, A::Error> {
-        match map.next_key::<String>()? {
-            Some(key) if key == NUMBER_TOKEN => {
-                let digits: String = map.next_value()?;
-                T::parse(&digits).map_err(A::Error::custom)
-            }
+        // The key and the digits are looked at where the parser holds them: a
+        // large scene is nearly all numbers, and no string is built for either.
+        match map.next_key_seed(IsNumberToken)? {
+            Some(true) => map.next_value_seed(DigitsSeed(std::marker::PhantomData)),
             _ => Err(A::Error::custom(words!("number-found-object"))),
         }
     }
@@ -216,6 +216,52 @@ impl<'de, T: ReadNumber> serde::de::Visitor<'de> for NumberVisitor<T> {
 
     fn visit_seq<A: serde::de::SeqAccess<'de>>(self, _: A) -> Result<T, A::Error> {
         Err(A::Error::custom(words!("number-found-list")))
+    }
+}
+
+/// Whether a map's key is serde_json's number token, without copying it.
+struct IsNumberToken;
+
+impl<'de> serde::de::DeserializeSeed<'de> for IsNumberToken {
+    type Value = bool;
+
+    fn deserialize<D: serde::Deserializer<'de>>(self, deserializer: D) -> Result<bool, D::Error> {
+        deserializer.deserialize_str(self)
+    }
+}
+
+impl serde::de::Visitor<'_> for IsNumberToken {
+    type Value = bool;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a key")
+    }
+
+    fn visit_str<E: serde::de::Error>(self, key: &str) -> Result<bool, E> {
+        Ok(key == NUMBER_TOKEN)
+    }
+}
+
+/// A number token's digits, parsed where the parser holds them.
+struct DigitsSeed<T>(std::marker::PhantomData<T>);
+
+impl<'de, T: ReadNumber> serde::de::DeserializeSeed<'de> for DigitsSeed<T> {
+    type Value = T;
+
+    fn deserialize<D: serde::Deserializer<'de>>(self, deserializer: D) -> Result<T, D::Error> {
+        deserializer.deserialize_str(self)
+    }
+}
+
+impl<T: ReadNumber> serde::de::Visitor<'_> for DigitsSeed<T> {
+    type Value = T;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a number's digits")
+    }
+
+    fn visit_str<E: serde::de::Error>(self, digits: &str) -> Result<T, E> {
+        T::parse(digits).map_err(E::custom)
     }
 }
 
@@ -323,7 +369,51 @@ struct PolygonFile {
     name: Option<String>,
     value: u64,
     opacity: Option<Number>,
-    vertices: Vec<VertexFile>,
+    vertices: VerticesFile,
+}
+
+/// A polygon's vertices as read: those given in pixel units (kept as the
+/// polygon's own, with no copy) and those in clip space; both at once is an
+/// error found in validation.
+#[derive(Debug, Default)]
+struct VerticesFile {
+    xyz: Vec<[Exact; 3]>,
+    clip: Vec<[Exact; 4]>,
+}
+
+impl<'de> Deserialize<'de> for VerticesFile {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<VerticesFile, D::Error> {
+        deserializer.deserialize_seq(VerticesVisitor)
+    }
+}
+
+struct VerticesVisitor;
+
+impl<'de> serde::de::Visitor<'de> for VerticesVisitor {
+    type Value = VerticesFile;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a sequence")
+    }
+
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<VerticesFile, A::Error> {
+        let mut vertices = VerticesFile::default();
+        while let Some(vertex) = seq.next_element::<VertexFile>()? {
+            match vertex {
+                VertexFile::Xyz(p) => {
+                    // A triangle's three, not the four a first push would make room for.
+                    if vertices.xyz.capacity() == 0 {
+                        vertices.xyz.reserve_exact(3);
+                    }
+                    vertices.xyz.push(p);
+                }
+                VertexFile::Clip(c) => vertices.clip.push(c),
+            }
+        }
+        // The list becomes the polygon's own: no room left over past a triangle.
+        vertices.xyz.shrink_to_fit();
+        Ok(vertices)
+    }
 }
 
 /// A vertex as written: `[x, y, z]` in pixel units (or the window's), or
@@ -350,18 +440,20 @@ impl<'de> serde::de::Visitor<'de> for VertexVisitor {
     }
 
     fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<VertexFile, A::Error> {
-        let mut values = Vec::with_capacity(4);
+        // In place, not in a list: no allocation for a vertex of its own.
+        let mut values: [Option<Exact>; 4] = [None, None, None, None];
+        let mut count = 0;
         while let Some(Coordinate(value)) = seq.next_element::<Coordinate>()? {
-            if values.len() == 4 {
+            if count == 4 {
                 return Err(A::Error::invalid_length(5, &self));
             }
-            values.push(value);
+            values[count] = Some(value);
+            count += 1;
         }
-        let count = values.len();
-        let wrong = |_| A::Error::invalid_length(count, &self);
-        match count {
-            3 => <[Exact; 3]>::try_from(values).map(VertexFile::Xyz).map_err(wrong),
-            _ => <[Exact; 4]>::try_from(values).map(VertexFile::Clip).map_err(wrong),
+        match values {
+            [Some(x), Some(y), Some(z), None] => Ok(VertexFile::Xyz([x, y, z])),
+            [Some(x), Some(y), Some(z), Some(w)] => Ok(VertexFile::Clip([x, y, z, w])),
+            _ => Err(A::Error::invalid_length(count, &self)),
         }
     }
 }
@@ -498,17 +590,29 @@ impl SceneFile {
             }
         };
         let transparency = self.polygons.iter().any(|p| p.opacity.is_some());
-        let mut polygons = Vec::with_capacity(self.polygons.len());
-        for (index, polygon) in self.polygons.into_iter().enumerate() {
-            let frame = Frame {
-                bits: frame_bits,
-                depth_max,
-                window: window.map(|w| (w, width, height)),
-                perspective,
-                size: (width, height),
-                corner_samples: rules.sample == crate::rules::Sample::Corner,
-            };
-            polygons.push(polygon.validate(index, &frame, path)?);
+        let frame = Frame {
+            bits: frame_bits,
+            depth_max,
+            window: window.map(|w| (w, width, height)),
+            perspective,
+            size: (width, height),
+            corner_samples: rules.sample == crate::rules::Sample::Corner,
+        };
+        // Each polygon's geometry is made on every core (a third of reading a
+        // large scene), each thread in this thread's language; the error
+        // named is the first polygon's in the file that fails.
+        let lang = crate::words::language();
+        let validated: Vec<Result<Polygon, Box<Error>>> = self
+            .polygons
+            .into_par_iter()
+            .enumerate()
+            .map(|(index, polygon)| {
+                crate::words::with_language(lang, || polygon.validate(index, &frame, path)).map_err(Box::new)
+            })
+            .collect();
+        let mut polygons = Vec::with_capacity(validated.len());
+        for polygon in validated {
+            polygons.push(polygon.map_err(|e| *e)?);
         }
         Ok(Scene {
             width,
@@ -564,14 +668,8 @@ impl PolygonFile {
         {
             return Err(fail(&name, PolygonProblem::Other(words!("polygon-opacity", alpha = fraction(alpha)))));
         }
-        let count = self.vertices.len();
-        let (mut given, mut clip_space) = (Vec::with_capacity(count), Vec::new());
-        for vertex in self.vertices {
-            match vertex {
-                VertexFile::Xyz(p) => given.push(p),
-                VertexFile::Clip(c) => clip_space.push(c),
-            }
-        }
+        let VerticesFile { xyz: given, clip: clip_space } = self.vertices;
+        let count = given.len() + clip_space.len();
         let mut vertices: Vec<[Exact; 3]> = if clip_space.is_empty() {
             given
         } else if clip_space.len() < count {

@@ -49,6 +49,16 @@ impl<'s> Simulation<'s> {
         }
     }
 
+    /// Back to the start: cleared buffers (in the memory they already hold,
+    /// as a GPU clears its framebuffer before drawing a frame again) and no
+    /// polygon drawn.
+    pub fn restart(&mut self) {
+        let scene = self.scene;
+        self.buffers.clear(scene.frame_bits, scene.background, &scene.clear_depth);
+        self.next = 0;
+        self.stats = Stats::default();
+    }
+
     /// The buffers as they are now.
     pub fn buffers(&self) -> &Buffers {
         &self.buffers

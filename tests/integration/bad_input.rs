@@ -155,3 +155,23 @@ fn usage_errors_exit_with_2() {
         "zsim: --count 99999999999: at most 10000000 triangles (a scene that large takes about 10 GB to read back)\n"
     );
 }
+
+/// Polygons are validated on every core: when several are wrong, the first
+/// in the file is named, whichever thread found which, and its message is in
+/// the reader's language, as on one thread.
+#[test]
+fn the_first_bad_polygon_of_a_large_scene_is_named_in_the_readers_language() {
+    let polygon = |i: usize| {
+        let opacity = if i == 1234 || i == 3456 { r#""opacity": 2, "# } else { "" };
+        format!(r#"{{"name": "p{i}", "value": 1, {opacity}"vertices": [[0, 0, 0], [4, 0, 0], [0, 4, 0]]}}"#)
+    };
+    let polygons: Vec<String> = (0..5000).map(polygon).collect();
+    let (dir, name) = scene_file("two_bad.json", &format!(r#"{{"polygons": [{}]}}"#, polygons.join(",")));
+    let run = crate::zsim_with(Some(&dir), &["run", &name], &[("LANG", "C.UTF-8")]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert_eq!(run.stderr, "zsim: two_bad.json: polygon 1235 \"p1234\": opacity 2 is outside 0 … 1\n");
+    let run = crate::zsim_with(Some(&dir), &["run", &name], &[("LANG", "ru_RU.UTF-8")]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert!(run.stderr.contains("непрозрачность 2 вне диапазона 0 … 1"), "{}", run.stderr);
+    assert!(run.stderr.contains("p1234") && !run.stderr.contains("p3456"), "{}", run.stderr);
+}

@@ -63,3 +63,30 @@ fn the_large_scene_draws_identically_on_any_number_of_threads_and_tiles() {
 /// printed (release build, one thread, before threads existed), hashed by a
 /// separate C program over the bytes between `"steps":[` and the closing `]`.
 const PINNED: u64 = 0xddb9_435e_c19c_fac6;
+
+/// `zsim speed` draws every round into the buffers of the first, cleared
+/// in place (as the GPU it races clears its framebuffer): each round gives
+/// what a fresh simulation gives, after a round left the buffers full or
+/// half drawn, polygon by polygon and in tiles.
+#[test]
+fn a_restarted_simulation_draws_what_a_fresh_one_draws() {
+    let spec =
+        RandomScene { count: 3000, seed: 7, width: 300, height: 200, max_size: 40, frame_bits: 8, depth_bits: 16 };
+    let scene = Scene::from_json(&spec.json(), Path::new("restart.json")).expect("a valid random scene");
+    let mut fresh = Simulation::new(&scene);
+    fresh.finish(&mut Unobserved);
+    let mut reused = Simulation::new(&scene);
+    reused.draw_through(1500, &mut Unobserved);
+    for round in 0..3 {
+        reused.restart();
+        assert_eq!(reused.stats(), Simulation::new(&scene).stats(), "round {round}: counts start at zero");
+        assert_eq!(reused.buffers(), Simulation::new(&scene).buffers(), "round {round}: cleared");
+        if round == 1 {
+            reused.finish_parallel(16, 2, &|| {});
+        } else {
+            reused.finish(&mut Unobserved);
+        }
+        assert_eq!(reused.buffers(), fresh.buffers(), "round {round}");
+        assert_eq!(reused.stats(), fresh.stats(), "round {round}");
+    }
+}
