@@ -86,9 +86,13 @@ impl Geometry {
         // The words: D and every scaled coordinate within MAX_SCALED.
         let words = || {
             let mut denominator: i128 = 1;
+            // Integers (most coordinates) skip the gcd and the division: 128-bit
+            // ones, which were most of the time a large scene took to read.
             for value in vertices.iter().flatten() {
                 let value = value.word()?;
-                denominator = denominator.checked_mul(value.denom() / denominator.gcd(value.denom()))?;
+                if *value.denom() != 1 {
+                    denominator = denominator.checked_mul(value.denom() / denominator.gcd(value.denom()))?;
+                }
                 if denominator > MAX_SCALED {
                     return None;
                 }
@@ -96,7 +100,8 @@ impl Geometry {
             let scale = 2 * denominator;
             let scaled = |v: &C| {
                 let v = v.word()?;
-                Some(v.numer().checked_mul(scale / v.denom())?).filter(|s| s.abs() <= MAX_SCALED)
+                let factor = if *v.denom() == 1 { scale } else { scale / v.denom() };
+                Some(v.numer().checked_mul(factor)?).filter(|s| s.abs() <= MAX_SCALED)
             };
             let points = vertices.iter().map(|v| Some([scaled(&v[0])?, scaled(&v[1])?, scaled(&v[2])?]));
             Some((denominator, points.collect::<Option<Vec<_>>>()?))

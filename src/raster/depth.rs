@@ -289,11 +289,11 @@ impl Depth {
     pub fn cmp_exact(&self, other: &Exact) -> Ordering {
         match (&self.0, other) {
             (DepthValue::Word { whole, remainder, denominator }, Exact::Word(other)) => {
-                match whole.cmp(&other.floor().to_integer()) {
-                    Ordering::Equal => {
-                        let other_rem = (other - other.floor()).numer().to_owned();
-                        cmp_fractions(*remainder, *denominator, other_rem, *other.denom())
-                    }
+                // Whole part and remainder by Euclid's division: `Ratio::floor`
+                // overflows on a value near −2^127 (a CS 418 scene with w = 1e30 found it).
+                let (numer, denom) = (*other.numer(), *other.denom());
+                match whole.cmp(&numer.div_euclid(denom)) {
+                    Ordering::Equal => cmp_fractions(*remainder, *denominator, numer.rem_euclid(denom), denom),
                     ord => ord,
                 }
             }
@@ -558,6 +558,20 @@ mod tests {
         assert_eq!(Depth::from_fraction(-3, 2).rounded(), BigInt::from(-1));
         assert_eq!(Depth::from_fraction(41, 4).rounded(), BigInt::from(10));
         assert_eq!(Depth::from_fraction(43, 4).rounded(), BigInt::from(11));
+    }
+
+    /// A stored exact value near −2^127 made `Ratio::floor` overflow (a
+    /// panic with overflow checks, a wrong comparison without).
+    #[test]
+    fn exact_values_at_the_limit_compare_without_overflow() {
+        let low = Exact::Word(Q::new(i128::MIN + 1, 3));
+        assert_eq!(Depth::from_fraction(-1, 2).cmp_exact(&low), Ordering::Greater);
+        assert_eq!(Depth::from_fraction(i128::MIN + 1, 3).cmp_exact(&low), Ordering::Equal);
+        assert_eq!(Depth::from_fraction(i128::MIN + 2, 3).cmp_exact(&low), Ordering::Greater);
+        let high = Exact::Word(Q::new(i128::MAX, 7));
+        assert_eq!(Depth::from_fraction(i128::MAX - 1, 7).cmp_exact(&high), Ordering::Less);
+        assert_eq!(Depth::from_fraction(-5, 2).cmp_exact(&Exact::Word(Q::new(-5, 2))), Ordering::Equal);
+        assert_eq!(Depth::from_fraction(-5, 2).cmp_exact(&Exact::Word(Q::new(-7, 3))), Ordering::Less);
     }
 
     #[test]
