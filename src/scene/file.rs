@@ -34,9 +34,9 @@ pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
     if let Ok(file) = SceneFile::<&serde_json::value::RawValue>::deserialize(&mut deserializer)
         && deserializer.end().is_ok()
     {
-        let polygons: Option<Vec<PolygonFile>> =
+        let read: Vec<Option<PolygonFile>> =
             file.polygons.par_iter().map(|polygon| serde_json::from_str(polygon.get()).ok()).collect();
-        if let Some(polygons) = polygons {
+        if let Some(polygons) = read.into_iter().collect::<Option<Vec<PolygonFile>>>() {
             return file.with_polygons(polygons).validate(path);
         }
     }
