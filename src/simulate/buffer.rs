@@ -79,13 +79,13 @@ impl Buffers {
     pub fn new(width: u32, height: u32, frame_bits: u32, background: u32, clear_depth: Stored) -> Buffers {
         let cells = width as usize * height as usize;
         let depth = match clear_depth {
-            Stored::Level(level) => DepthCells::Levels(cleared(cells, level)),
+            Stored::Level(level) => DepthCells::Levels(filled(cells, level)),
             Stored::Exact(value) => DepthCells::Exact(filled(cells, value)),
         };
         let frame = match frame_bits {
-            0..=8 => FrameCells::Bytes(cleared(cells, u8::from_value(background))),
-            9..=16 => FrameCells::Halves(cleared(cells, u16::from_value(background))),
-            _ => FrameCells::Words(cleared(cells, background)),
+            0..=8 => FrameCells::Bytes(filled(cells, u8::from_value(background))),
+            9..=16 => FrameCells::Halves(filled(cells, u16::from_value(background))),
+            _ => FrameCells::Words(filled(cells, background)),
         };
         Buffers { width, height, frame, depth }
     }
@@ -223,74 +223,40 @@ impl Buffers {
     }
 }
 
-/// `cells` copies of `value` (the book's first step: clear both buffers). A
-/// large buffer is first offered transparent huge pages, so that clearing it
-/// takes a few dozen page faults instead of tens of thousands (a 4096×4096
-/// raster: 80 MB, about 40 ms of faults otherwise). Levels and values cleared
-/// to zero (the usual background, and the farthest level under `>`) are asked
-/// of the system already zeroed and written by nobody here: each page is
-/// zeroed when first touched, by the thread that draws there, so clearing is
-/// shared by the threads that draw instead of done by one before they start.
-fn cleared<T: Clone + PartialEq + Zero>(cells: usize, value: T) -> Vec<T> {
-    if value != T::ZERO {
-        return filled(cells, value);
-    }
-    // `vec!` of a zero integer asks the allocator for zeroed memory (calloc):
-    // fresh pages that nobody has touched yet.
-    let mut out = vec![value; cells];
-    advise_huge_pages(out.as_mut_ptr(), cells);
-    out
-}
-
-/// `cells` copies of `value`, all written now, on huge pages where offered.
+/// `cells` copies of `value`, all written now (the book's first step: clear
+/// both buffers). A large buffer is first offered transparent huge pages, so
+/// that clearing it takes a few dozen page faults instead of tens of
+/// thousands (a 4096×4096 raster: 80 MB, about 40 ms of faults otherwise).
 fn filled<T: Clone>(cells: usize, value: T) -> Vec<T> {
     let mut out = Vec::with_capacity(cells);
-    advise_huge_pages(out.as_mut_ptr(), cells);
+    advise_huge_pages(out.spare_capacity_mut());
     out.resize(cells, value);
     out
 }
 
-/// A cell type whose zero `vec!` takes from zeroed memory; `Exact` has none.
-trait Zero {
-    const ZERO: Self;
-}
-
-impl Zero for u8 {
-    const ZERO: u8 = 0;
-}
-
-impl Zero for u16 {
-    const ZERO: u16 = 0;
-}
-
-impl Zero for u32 {
-    const ZERO: u32 = 0;
-}
-
-/// Asks Linux to back the `cells` cells at `memory`, which the process has
-/// not written yet, with 2 MiB pages where it can.
+/// Asks Linux to back the untouched `memory` with 2 MiB pages where it can.
 #[cfg(target_os = "linux")]
-fn advise_huge_pages<T>(memory: *mut T, cells: usize) {
+fn advise_huge_pages<T>(memory: &mut [std::mem::MaybeUninit<T>]) {
     const PAGE: usize = 4096;
     const HUGE_PAGE: usize = 2 << 20;
-    let (start, bytes) = (memory as usize, cells * std::mem::size_of::<T>());
+    let (start, bytes) = (memory.as_mut_ptr() as usize, std::mem::size_of_val(memory));
     if bytes < 2 * HUGE_PAGE {
         return;
     }
     // madvise wants a page-aligned start: the whole pages inside the block.
     let aligned = start.next_multiple_of(PAGE);
     let length = (start + bytes - aligned) / PAGE * PAGE;
-    // SAFETY: the range lies inside an allocation a vector owns; MADV_HUGEPAGE
-    // only advises how to back it and changes no contents (untouched pages
-    // still read as zero). A refusal (no huge pages on this system) leaves it
-    // as it was, so the result is ignored.
+    // SAFETY: the range lies inside an allocation this vector owns and has not
+    // yet written; MADV_HUGEPAGE only advises how to back it and changes no
+    // contents. A refusal (no huge pages on this system) leaves it as it was,
+    // so the result is ignored.
     unsafe {
         libc::madvise(aligned as *mut libc::c_void, length, libc::MADV_HUGEPAGE);
     }
 }
 
 #[cfg(not(target_os = "linux"))]
-fn advise_huge_pages<T>(_memory: *mut T, _cells: usize) {}
+fn advise_huge_pages<T>(_memory: &mut [std::mem::MaybeUninit<T>]) {}
 
 fn rows_top_first<T: Clone>(cells: &[T], width: u32) -> Vec<Vec<T>> {
     cells.chunks_exact(width as usize).rev().map(<[T]>::to_vec).collect()
