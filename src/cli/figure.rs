@@ -97,7 +97,7 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if !worksheet {
         // On every core, in tiles: the same cells as drawing in order.
         let threads = std::thread::available_parallelism().map_or(1, usize::from);
-        simulation.draw_parallel_through(last, 64, threads, &|| {});
+        simulation.draw_parallel_through(last, simulation.default_tile(threads), threads, &|| {});
     }
     let extras = Extras { vertex_labels: worksheet, caption: Vec::new(), values: args.values };
     let text = svg_with(&scene, simulation.buffers(), last, shading, &title, &extras);

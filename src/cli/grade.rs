@@ -64,9 +64,6 @@ enum Format {
 /// How many common mistakes are listed.
 const MISTAKES_LISTED: usize = 10;
 
-/// The tile side the scene is drawn in, on every core (the same cells as in order).
-const TILE: u32 = 64;
-
 pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(&args.scene)?;
     if scene.polygons.is_empty() {
@@ -79,7 +76,7 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let files = answer_files(&args.class)?;
     let mut simulation = Simulation::new(&scene);
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
-    simulation.draw_parallel_through(last, TILE, threads, &|| {});
+    simulation.draw_parallel_through(last, simulation.default_tile(threads), threads, &|| {});
     let mut expected = Vec::new();
     for buffer in [Buffer::Frame, Buffer::Depth] {
         if !files.iter().any(|(_, b, _)| *b == buffer) {

@@ -46,10 +46,10 @@ pub struct RunArgs {
     /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (the Russian lecture notes).
     #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
     segments: Option<zsim::variants::Segments>,
-    /// With --format none, --final or --after: draw tile by tile, N×N pixels (default 64 when more than one thread draws; 1 to 7 draw as 8, whose bins cost less than the buffers).
+    /// With --format none, --final or --after: draw tile by tile, N×N pixels (default 256 when more than one thread draws or the buffers outgrow 32 MiB; 1 to 7 draw as 8, whose bins cost less than the buffers).
     #[arg(long, value_name = "N")]
     tile: Option<u32>,
-    /// With --format none, --final or --after: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon). The result is the same for every count.
+    /// With --format none, --final or --after: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon while the buffers fit 32 MiB). The result is the same for every count.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
     /// Draw the scene with the machine's GPU through this API (gl: OpenGL, e.g. Mesa's llvmpipe; vulkan, with the `vulkan` feature) and list every cell where it shows another polygon than zsim under the scene's rules or the API's preset, and why.
@@ -66,9 +66,6 @@ pub struct RunArgs {
 
 /// The smallest tile drawn: below it the tiles' bins would outweigh the buffers.
 const MIN_TILE: u32 = 8;
-
-/// The tile side when more than one thread draws and `--tile` is not given.
-const DEFAULT_TILE: u32 = 64;
 
 /// The loop order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -224,7 +221,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             let threads = threads(args);
             // A bar only where a person waits: scenes of 10,000 polygons or more.
             let long_run = scene.polygons.len() >= 10_000;
-            let drew = if let Some(tile) = tiles(args, threads) {
+            let drew = if let Some(tile) = tiles(args, &simulation, threads) {
                 let progress =
                     progress_bar(long_run, scene.height.div_ceil(tile) as usize, &zsim::words!("progress-bands"));
                 let band_done = || progress.inc(1);
@@ -272,14 +269,18 @@ fn threads(args: &RunArgs) -> usize {
     args.threads.map_or_else(|| std::thread::available_parallelism().map_or(1, usize::from), |threads| threads as usize)
 }
 
-/// The side of the tiles to draw in, or `None` to draw polygon by polygon
-/// (one thread and no `--tile`). Tiles keep the cells in cache and are drawn
+/// The side of the tiles to draw in, or `None` to draw polygon by polygon:
+/// `--tile`, else as the simulation chooses for this many threads
+/// ([`Simulation::default_tile`]). Tiles keep the cells in cache and are drawn
 /// a band of tiles per job on `threads` threads; the result is the same as
 /// polygon by polygon. A tile's bin (a vector, 24 bytes, and its polygons)
 /// costs less than its cells (8 bytes each) only from 8×8 on: smaller tiles
 /// draw as 8×8, alike.
-fn tiles(args: &RunArgs, threads: usize) -> Option<u32> {
-    (threads > 1 || args.tile.is_some_and(|t| t > 0)).then(|| args.tile.unwrap_or(DEFAULT_TILE).max(MIN_TILE))
+fn tiles(args: &RunArgs, simulation: &Simulation<'_>, threads: usize) -> Option<u32> {
+    match args.tile {
+        Some(tile) => Some(tile.max(MIN_TILE)),
+        None => Some(simulation.default_tile(threads)).filter(|&tile| tile > 0),
+    }
 }
 
 /// For `--final` and `--after`: every polygon but the last, on every core
@@ -288,7 +289,7 @@ fn tiles(args: &RunArgs, threads: usize) -> Option<u32> {
 fn draw_all_but_the_last(simulation: &mut Simulation<'_>, scene: &Scene, args: &RunArgs) {
     let Some(last) = scene.polygons.len().checked_sub(2) else { return };
     let threads = threads(args);
-    match tiles(args, threads) {
+    match tiles(args, simulation, threads) {
         Some(tile) => {
             simulation.draw_parallel_through(last, tile, threads, &|| {});
         }

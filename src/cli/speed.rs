@@ -18,7 +18,7 @@ pub struct SpeedArgs {
     /// How many threads zsim draws on (1: polygon by polygon, the loop `zsim run --threads 1` runs). llvmpipe is given as many through LP_NUM_THREADS (0 for one: it then rasterizes on the calling thread) unless the environment sets it.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: u32,
-    /// Draw in tiles of N×N pixels (default with more than one thread: 64).
+    /// Draw in tiles of N×N pixels (default as `zsim run` draws: tiles of 256 with more than one thread or buffers larger than 32 MiB, else polygon by polygon).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(8..=65536))]
     tile: Option<u32>,
 }
@@ -35,8 +35,7 @@ pub fn run(args: &SpeedArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     };
     let scene = Scene::load(&args.scene)?;
     let threads = args.threads as usize;
-    let tiling = (threads > 1 || args.tile.is_some()).then(|| (args.tile.unwrap_or(64), threads));
-    let race = zsim::race::race(&scene, args.pairs as usize, tiling)?;
+    let race = zsim::race::race(&scene, args.pairs as usize, args.tile, threads)?;
     let ms = |d: std::time::Duration| zsim::localize_decimal(format!("{:.2}", d.as_secs_f64() * 1e3));
     let ratio = |r: f64| zsim::localize_decimal(format!("{r:.2}"));
     let (low, high) = race.pair_ratios();
@@ -48,6 +47,7 @@ pub fn run(args: &SpeedArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             triangles = race.triangles,
             pixels = race.pixels,
             threads = race.threads,
+            tile = race.tile,
             renderer = race.renderer.as_str(),
             lp = lp_threads.as_str(),
             pairs = args.pairs

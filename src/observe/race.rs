@@ -24,6 +24,8 @@ pub struct Race {
     pub pixels: u64,
     /// Threads zsim drew on.
     pub threads: usize,
+    /// The side of the tiles zsim drew in; 0 polygon by polygon.
+    pub tile: u32,
     /// zsim's time in each pair.
     pub zsim: Vec<Duration>,
     /// The GPU's time in each pair.
@@ -61,11 +63,12 @@ fn median(times: &[Duration]) -> Duration {
 }
 
 /// Races zsim against the machine's OpenGL on `scene`, `pairs` times after
-/// one untimed round each: zsim polygon by polygon on this thread (`tiling`
-/// `None`), or in tiles of `tile` on `threads` threads. The GPU draws with
-/// the scene's depth test into a framebuffer of the raster's size (plus the
-/// margin that keeps vertices unclipped, see [`Triangles`]).
-pub fn race(scene: &Scene, pairs: usize, tiling: Option<(u32, usize)>) -> Result<Race, Error> {
+/// one untimed round each: zsim on `threads` threads in tiles of `tile`
+/// (`None`: as [`Simulation::default_tile`] chooses; 0 polygon by polygon on
+/// this thread). The GPU draws with the scene's depth test into a
+/// framebuffer of the raster's size (plus the margin that keeps vertices
+/// unclipped, see [`Triangles`]).
+pub fn race(scene: &Scene, pairs: usize, tile: Option<u32>, threads: usize) -> Result<Race, Error> {
     if scene.has_pixel_effects() || scene.effects.antialias.is_some() {
         return Err(Usage::CompareGpuPlainOnly.into());
     }
@@ -78,12 +81,13 @@ pub fn race(scene: &Scene, pairs: usize, tiling: Option<(u32, usize)>) -> Result
     // clears them and draws (a fresh 4096² pair of buffers was mostly the
     // kernel handing over zeroed pages, a cost llvmpipe does not pay per frame).
     let mut simulation = Simulation::new(scene);
+    let tile = tile.unwrap_or_else(|| simulation.default_tile(threads));
     let mut zsim = || {
         let start = Instant::now();
         simulation.restart();
-        let threads = match tiling {
-            Some((tile, threads)) => simulation.finish_parallel(tile, threads, &|| {}),
-            None => simulation.draw_parallel_through(scene.polygons.len().saturating_sub(1), 0, 1, &|| {}),
+        let threads = match tile {
+            0 => simulation.draw_parallel_through(scene.polygons.len().saturating_sub(1), 0, 1, &|| {}),
+            tile => simulation.finish_parallel(tile, threads, &|| {}),
         };
         (start.elapsed(), simulation.stats().tested, threads)
     };
@@ -100,6 +104,7 @@ pub fn race(scene: &Scene, pairs: usize, tiling: Option<(u32, usize)>) -> Result
         triangles: triangles.len(),
         pixels,
         threads,
+        tile,
         zsim: Vec::with_capacity(pairs),
         gpu: Vec::with_capacity(pairs),
     };
@@ -124,6 +129,7 @@ mod tests {
             triangles: 1,
             pixels: 1,
             threads: 1,
+            tile: 0,
             zsim: vec![ms(30), ms(10), ms(20), ms(40)],
             gpu: vec![ms(10), ms(20), ms(20), ms(80)],
         };

@@ -62,6 +62,12 @@ pub(super) fn prefetch<T>(data: *const T) {
 /// edge functions, which rewrite every cell of their box, pays only below.
 pub(super) const CORE_CACHE: usize = 256 << 10;
 
+/// A processor's last-level cache (this machine's, an AMD EPYC: 32 MiB of
+/// L3, a common size): buffers larger than this, drawn polygon by polygon,
+/// send each triangle's rows to memory and back, so one thread draws them in
+/// tiles too ([`crate::simulate::simulation::Simulation::default_tile`]).
+pub(super) const LAST_LEVEL_CACHE: usize = 32 << 20;
+
 /// Asks for the cells of polygon `index`'s bounding box, row by row, in
 /// both buffers (whose first row is raster row `first_row`), so that they
 /// are in cache when it is drawn a couple of polygons later: a large raster's

@@ -730,7 +730,10 @@ gpu-not-convex = note: { $polygon } is not convex: the GPU draws it as a fan of 
 speed-header = { $scene }: { $triangles } triangles, { $pixels } pixel centres tested; zsim on { $threads } { $threads ->
     [one] thread
    *[other] threads
-} against { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } alternating pairs after one untimed round each
+}, { $tile ->
+    [0] polygon by polygon
+   *[other] in tiles of { $tile }
+}, against { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } alternating pairs after one untimed round each
 speed-result = zsim { $zsim } ms, GPU { $gpu } ms (medians): zsim takes { $ratio }× the GPU's time (pairs from { $low }× to { $high }×)
 usage-compare-gpu-plain = --compare-gpu compares the plain algorithm: this scene asks for per-pixel effects or antialiasing
 usage-no-gpu = --compare-gpu: { $reason }

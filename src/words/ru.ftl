@@ -706,7 +706,10 @@ gpu-not-convex = замечание: { $polygon } не выпуклый: GPU р�
 speed-header = { $scene }: треугольников { $triangles }, проверено центров пикселей { $pixels }; zsim на { $threads } { $threads ->
     [one] потоке
    *[other] потоках
-} против { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } чередующихся пар после одного неучтённого прогона каждого
+}, { $tile ->
+    [0] полигон за полигоном
+   *[other] плитками по { $tile }
+}, против { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } чередующихся пар после одного неучтённого прогона каждого
 speed-result = zsim { $zsim } мс, GPU { $gpu } мс (медианы): zsim тратит { $ratio }× времени GPU (в парах от { $low }× до { $high }×)
 usage-compare-gpu-plain = --compare-gpu сравнивает простой алгоритм: эта сцена требует попиксельных эффектов или сглаживания
 usage-no-gpu = --compare-gpu: { $reason }

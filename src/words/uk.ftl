@@ -706,7 +706,10 @@ gpu-not-convex = примітка: { $polygon } не опуклий: GPU мал�
 speed-header = { $scene }: трикутників { $triangles }, перевірено центрів пікселів { $pixels }; zsim на { $threads } { $threads ->
     [one] потоці
    *[other] потоках
-} проти { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } пар по черзі після одного неврахованого прогону кожного
+}, { $tile ->
+    [0] полігон за полігоном
+   *[other] плитками по { $tile }
+}, проти { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } пар по черзі після одного неврахованого прогону кожного
 speed-result = zsim { $zsim } мс, GPU { $gpu } мс (медіани): zsim витрачає { $ratio }× часу GPU (у парах від { $low }× до { $high }×)
 usage-compare-gpu-plain = --compare-gpu порівнює простий алгоритм: ця сцена потребує попіксельних ефектів або згладжування
 usage-no-gpu = --compare-gpu: { $reason }

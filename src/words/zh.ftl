@@ -682,7 +682,10 @@ gpu-background = 无
 gpu-exact-depth = { $polygon }，精确深度 { $depth }
 gpu-why-depth = GPU 为 { $shown } 存储的深度为 { $gpu }（f32 插值，24 位保存）；按场景规则保留的是 { $book }
 gpu-not-convex = 注意：{ $polygon } 不是凸的：GPU 从其第一个顶点以三角形扇绘制，这并不是该多边形
-speed-header = { $scene }：{ $triangles } 个三角形，测试了 { $pixels } 个像素中心；zsim 用 { $threads } 个线程，对比 { $renderer }（LP_NUM_THREADS={ $lp }），交替计时 { $pairs } 对（各先不计时运行一次）
+speed-header = { $scene }：{ $triangles } 个三角形，测试了 { $pixels } 个像素中心；zsim 用 { $threads } 个线程，{ $tile ->
+    [0] 逐个多边形
+   *[other] 以 { $tile } 像素见方的图块
+}，对比 { $renderer }（LP_NUM_THREADS={ $lp }），交替计时 { $pairs } 对（各先不计时运行一次）
 speed-result = zsim { $zsim } 毫秒，GPU { $gpu } 毫秒（中位数）：zsim 用时是 GPU 的 { $ratio } 倍（各对从 { $low } 倍到 { $high } 倍）
 usage-compare-gpu-plain = --compare-gpu 比较的是基本算法：此场景要求逐像素效果或抗锯齿
 usage-no-gpu = --compare-gpu：{ $reason }

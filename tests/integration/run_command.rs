@@ -133,7 +133,7 @@ fn format_none_says_how_many_threads_drew() {
     assert_eq!(drew(&["--threads", "1"]), "1 thread", "one thread, polygon by polygon");
     assert_eq!(drew(&["--threads", "1", "--tile", "8"]), "1 thread");
     assert_eq!(drew(&["--threads", "3", "--tile", "8"]), "3 threads");
-    assert_eq!(drew(&["--threads", "2"]), "2 threads", "tiles of 64 by default");
+    assert_eq!(drew(&["--threads", "2"]), "2 threads", "tiles of 256 by default");
     let cores = std::thread::available_parallelism().map_or(1, usize::from);
     let all = drew(&[]);
     assert_eq!(

@@ -90,3 +90,23 @@ fn a_restarted_simulation_draws_what_a_fresh_one_draws() {
         assert_eq!(reused.stats(), fresh.stats(), "round {round}");
     }
 }
+
+/// What draws when no tile is asked for: one thread polygon by polygon while
+/// both buffers fit a last-level cache (32 MiB), in tiles of 256 beyond it
+/// (there one triangle's rows lie far apart and go to memory and back), and
+/// more threads always in tiles of 256.
+#[test]
+fn one_thread_draws_buffers_beyond_the_cache_in_tiles() {
+    let tile = |side: u32, frame_bits: u32, threads: usize| {
+        let spec =
+            RandomScene { count: 1, seed: 1, width: side, height: side, max_size: 4, frame_bits, depth_bits: 24 };
+        let scene = Scene::from_json(&spec.json(), Path::new("side.json")).expect("a valid random scene");
+        Simulation::new(&scene).default_tile(threads)
+    };
+    // 2048² with 1-byte frame cells: 20 MiB; with 4-byte ones 32 MiB, still within.
+    assert_eq!(tile(2048, 8, 1), 0);
+    assert_eq!(tile(2048, 24, 1), 0);
+    assert_eq!(tile(2049, 24, 1), 256, "32 MiB and a row more");
+    assert_eq!(tile(4096, 8, 1), 256);
+    assert_eq!(tile(32, 2, 2), 256);
+}
