@@ -70,6 +70,15 @@ pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer, links: zsim::Link
         .map_err(|message| Error::Answer { path: path.to_owned(), message })
 }
 
+/// An error about a student's answer file as the student and the class
+/// table show it: the file's name where the message has its path (where the
+/// class folder or the autograder keeps it stretches tables and is nobody's
+/// business), in any language's wording, control characters escaped.
+pub fn as_the_student_sees(error: &Error, path: &Path) -> String {
+    let file = path.file_name().map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
+    zsim::printable(&error.to_string().replace(&path.display().to_string(), &file)).into_owned()
+}
+
 pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(&args.scene)?;
     if args.frame.is_none() && args.depth.is_none() && args.submission.is_none() {
@@ -114,7 +123,7 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             }
             let report = report(&scene, &args.scene, *last, read, args.arith)?;
             emit(out, &report.text)?;
-            if report.differs {
+            if report.differs() {
                 finish = Finish::Differs;
             }
         }
@@ -137,7 +146,7 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         let report = report(&scene, &args.scene, last, answers, args.arith)?;
         emit(out, &report.text)?;
         if malformed.is_none() {
-            return Ok(if report.differs { Finish::Differs } else { Finish::Ok });
+            return Ok(if report.differs() { Finish::Differs } else { Finish::Ok });
         }
     }
     Err(malformed.expect("an answer was given, read or malformed").into())
@@ -147,10 +156,15 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
 pub struct Report {
     /// What `zsim check` prints: per answer, "all cells match" or the table of wrong cells.
     pub text: String,
-    /// Whether any cell differs.
-    pub differs: bool,
     /// How many cells differ, over all the answers.
     pub wrong: usize,
+}
+
+impl Report {
+    /// Whether any cell differs.
+    pub fn differs(&self) -> bool {
+        self.wrong > 0
+    }
 }
 
 /// Answer files for the state after one polygon (0-based): each buffer's file.
@@ -246,7 +260,6 @@ pub fn report(
         Simulation::new(scene).draw_through(last, &mut watcher);
     }
     let mut text = String::new();
-    let mut differs = false;
     let wrong = results.iter().map(|(_, _, m, _)| m.len()).sum();
     for (buffer, path, mismatches, hint) in &results {
         let (after, file) = (zsim::explain::polygon_after(scene, last), path.display().to_string());
@@ -257,7 +270,6 @@ pub fn report(
             text.push('\n');
             continue;
         }
-        differs = true;
         let line = zsim::words!(
             "check-differ",
             buffer = buffer.name(),
@@ -283,7 +295,7 @@ pub fn report(
     if let Some(diagnosis) = diagnosis {
         text.push_str(&format!("{}\n", diagnosis.words()));
     }
-    Ok(Report { text, differs, wrong })
+    Ok(Report { text, wrong })
 }
 
 fn table(

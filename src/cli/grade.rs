@@ -16,7 +16,7 @@ use zsim::explain::{Buffer, polygon_after, polygon_name, why};
 use zsim::grade::{CommonMistake, Grade, Handed, Status, Submission, common_mistakes, file_kind, grade};
 use zsim::printable;
 
-use super::check::{read_answer, report};
+use super::check::{as_the_student_sees, read_answer, report};
 use super::gradebooks;
 use super::{Failure, Finish, emit};
 
@@ -188,19 +188,7 @@ fn submissions(
                             None => Handed::Missing,
                             Some((_, _, path)) => match read_answer(path, scene, *buffer, zsim::Links::Refuse) {
                                 Ok(matrix) => Handed::Matrix(matrix),
-                                // A message may carry the file's name, which is anyone's text:
-                                // escaped, so no control character reaches a table or terminal.
-                                Err(Error::Answer { message, .. }) => {
-                                    Handed::Malformed(printable(&message).into_owned())
-                                }
-                                // The status names the file already: the message without the
-                                // path in front of it, which would only stretch the table.
-                                Err(other) => {
-                                    let message = other.to_string();
-                                    let prefix = format!("{}: ", path.display());
-                                    let why = message.strip_prefix(&prefix).unwrap_or(&message);
-                                    Handed::Malformed(printable(why).into_owned())
-                                }
+                                Err(error) => Handed::Malformed(as_the_student_sees(&error, path)),
                             },
                         };
                         (*buffer, handed)
@@ -434,7 +422,7 @@ fn write_feedback(
             }
             match read_answer(path, scene, *buffer, zsim::Links::Refuse) {
                 Ok(matrix) => answers.push((*buffer, path.as_path(), matrix)),
-                Err(error) => text.push_str(&format!("{}\n", printable(&error.to_string()))),
+                Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(&error, path))),
             }
         }
         if !answers.is_empty() {

@@ -69,11 +69,7 @@ pub fn results(
                 // The share of right cells, rounded down to a hundredth: only a right answer scores in full.
                 (max_score * (cells - (report.wrong as u64).min(cells)) / cells, report.text)
             }
-            Err(error) => {
-                let file = path.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned());
-                let message = error.to_string().replace(&path.display().to_string(), &file);
-                (0, format!("{}\n", zsim::printable(&message)))
-            }
+            Err(error) => (0, format!("{}\n", super::check::as_the_student_sees(&error, path))),
         };
         total += score;
         tests.push(serde_json::json!({

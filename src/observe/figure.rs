@@ -6,7 +6,11 @@
 
 use std::fmt::Write as _;
 
-use crate::raster::depth::Stored;
+use crate::numbers::Word;
+use crate::raster::convert::{Scratch, rasterize};
+use crate::raster::depth::{Depth, DepthStepper, Stored};
+use crate::raster::scan::{Crossing, Span};
+use crate::raster::sink::{PixelRect, RasterSink};
 use crate::simulate::buffer::Buffers;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -457,12 +461,13 @@ struct NameLabel {
 }
 
 /// Each drawn polygon's name (its number and name; the number alone when it
-/// has none), anchored at the pixel centre inside it, nearest its middle,
-/// where the framebuffer shows its value; failing that at the centre inside
-/// it nearest its middle, or its middle (a polygon too thin to hold a centre).
+/// has none), anchored at the pixel centre it covers, nearest its middle,
+/// where the framebuffer shows its value; failing that at the centre it
+/// covers nearest its middle, or its middle (a polygon that covers none).
 /// Placement only: f64 is exact enough to choose a point to draw a line to.
 fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> {
     let mut labels = Vec::new();
+    let mut scratch = Scratch::default();
     for (index, polygon) in scene.polygons.iter().enumerate().take(last + 1) {
         let outline: Vec<(f64, f64)> = polygon
             .vertices()
@@ -477,35 +482,29 @@ fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> 
         let distance = |p: (f64, f64)| (p.0 - middle.0).powi(2) + (p.1 - middle.1).powi(2);
         // Best first: a centre whose row, to its right, shows no other polygon
         // (the leader runs along that row's top edge), then any centre showing
-        // this polygon, then any inside it.
+        // this polygon, then any it covers.
         let (mut clear, mut visible, mut inside): (Option<Point>, Option<Point>, Option<Point>) = (None, None, None);
         let nearer = |best: Option<(f64, f64)>, p: (f64, f64)| match best {
             Some(b) if distance(b) <= distance(p) => Some(b),
             _ => Some(p),
         };
-        // Only the pixels whose centres lie within the outline's bounding box can be inside it.
-        let span = |axis: fn(&(f64, f64)) -> f64, size: u32| {
-            let (low, high) = outline.iter().map(axis).fold((f64::MAX, f64::MIN), |(l, h), v| (l.min(v), h.max(v)));
-            let first = (low - 0.5).ceil().clamp(0.0, f64::from(size)) as u32;
-            let last = (high - 0.5).floor().clamp(-1.0, f64::from(size) - 1.0);
-            first..(last + 1.0).max(0.0) as u32
-        };
-        let (columns, rows) = (span(|p| p.0, scene.width), span(|p| p.1, scene.height));
-        for y in rows {
-            for x in columns.clone() {
-                let centre = (f64::from(x) + 0.5, f64::from(y) + 0.5);
-                if !contains(&outline, centre) {
-                    continue;
-                }
-                inside = nearer(inside, centre);
-                if buffers.frame(x, y) == polygon.value {
-                    visible = nearer(visible, centre);
-                    let others = (x + 1..scene.width)
-                        .map(|right| buffers.frame(right, y))
-                        .any(|v| v != polygon.value && v != scene.background);
-                    if !others {
-                        clear = nearer(clear, centre);
-                    }
+        // The centres it covers, as the one rasterizer finds them under the scene's rules.
+        let geometry = polygon.geometry();
+        let mut centres = Centres(Vec::new());
+        if !geometry.is_degenerate() && geometry.c() != 0 {
+            let raster = PixelRect::raster(scene.width, scene.height);
+            rasterize(geometry, scene.rules, raster, &mut scratch, &mut centres);
+        }
+        for (x, y) in centres.0 {
+            let centre = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+            inside = nearer(inside, centre);
+            if buffers.frame(x, y) == polygon.value {
+                visible = nearer(visible, centre);
+                let others = (x + 1..scene.width)
+                    .map(|right| buffers.frame(right, y))
+                    .any(|v| v != polygon.value && v != scene.background);
+                if !others {
+                    clear = nearer(clear, centre);
                 }
             }
         }
@@ -516,16 +515,21 @@ fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> 
     labels
 }
 
-/// Whether a point lies inside a polygon (crossings counted, even-odd).
-fn contains(outline: &[(f64, f64)], (px, py): (f64, f64)) -> bool {
-    let mut inside = false;
-    for (i, &(x1, y1)) in outline.iter().enumerate() {
-        let (x2, y2) = outline[(i + 1) % outline.len()];
-        if (y1 > py) != (y2 > py) && px < x1 + (py - y1) * (x2 - x1) / (y2 - y1) {
-            inside = !inside;
-        }
+/// The pixel centres a polygon covers, as the rasterizer hands them on.
+struct Centres(Vec<(u32, u32)>);
+
+impl RasterSink for Centres {
+    const OBSERVES_SCANLINES: bool = false;
+
+    fn scanline(&mut self, _: u32, _: &[Crossing], _: &[Span]) {}
+
+    fn pixel(&mut self, x: u32, y: u32, _: Depth) {
+        self.0.push((x, y));
     }
-    inside
+
+    fn span<W: Word>(&mut self, row: u32, first: u32, last: u32, _: DepthStepper<W>) {
+        self.0.extend((first..=last).map(|x| (x, row)));
+    }
 }
 
 /// The width of a bold label at font size 11.

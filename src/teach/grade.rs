@@ -17,7 +17,7 @@ use crate::teach::diagnose::{Diagnoser, Diagnosis};
 pub enum Handed {
     /// No file for this buffer.
     Missing,
-    /// A file that is not a matrix of the raster's shape: why.
+    /// A file that is not a matrix of the raster's shape: why, naming the file.
     Malformed(String),
     /// The matrix read.
     Matrix(Matrix),
@@ -127,7 +127,7 @@ pub fn grade(
                         missing.get_or_insert(name);
                     }
                     Handed::Malformed(why) => {
-                        malformed.get_or_insert(format!("{name}: {why}"));
+                        malformed.get_or_insert(why.clone());
                     }
                     Handed::Matrix(answer) => {
                         read[usize::from(*buffer == Buffer::Depth)] = Some(answer);
@@ -226,7 +226,7 @@ mod tests {
         let class = [
             submission("ana", Handed::Matrix(vec![vec![1, 0], vec![1, 1]])),
             submission("bo", Handed::Matrix(vec![vec![1, 1], vec![1, 1]])),
-            submission("cy", Handed::Malformed("2 rows; the raster has 3".into())),
+            submission("cy", Handed::Malformed("cy.frame.txt: 2 rows; the raster has 3".into())),
             submission("di", Handed::Missing),
         ];
         let rows: Vec<Grade> = grade(&class, &expected, None).into_iter().map(|(g, _)| g).collect();

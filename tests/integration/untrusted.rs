@@ -111,6 +111,20 @@ fn a_huge_answer_is_refused_by_its_size_before_it_is_read() {
     assert!(start.elapsed() < Duration::from_secs(30), "took {:?}", start.elapsed());
 }
 
+/// An answer that is not text: grade's status names the file without the
+/// folder's path in every language (the Chinese message's full-width colon
+/// once kept the whole path in the table).
+#[test]
+fn an_unreadable_answer_is_named_by_its_file_alone_in_every_language() {
+    let class = class("not-text", |dir| std::fs::write(dir.join("zed.frame.txt"), [0xff, 0xfe, 0x31]).unwrap());
+    for lang in ["C.UTF-8", "ru_RU.UTF-8", "uk_UA.UTF-8", "zh_CN.UTF-8"] {
+        let run = crate::zsim_with(None, &["grade", "examples/rogers.json", path(&class)], &[("LANG", lang)]);
+        assert_eq!(run.code, 1, "{lang}: {}", run.stderr);
+        assert!(run.stdout.contains("zed.frame.txt"), "{lang}: {}", run.stdout);
+        assert!(!run.stdout.contains("not-text/"), "{lang}: {}", run.stdout);
+    }
+}
+
 /// A student named `common-mistakes` lost their feedback to the class
 /// summary; with `-o` the class folder, `bob.frame`'s feedback overwrote
 /// bob's submitted `bob.frame.txt`; `-o` replaced files already there.
