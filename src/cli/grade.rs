@@ -90,10 +90,10 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         };
         expected.push((buffer, matrix));
     }
-    // Each answer graded, the common mistakes and zsim's reason for each, in
-    // this thread's language.
     // The usual wrong rules, drawn once for the whole class.
     let diagnoser = zsim::diagnose::Diagnoser::new(&scene, last);
+    // Each answer graded, the common mistakes and zsim's reason for each, in
+    // this thread's language.
     let assess = || {
         let graded = grade(&submissions(&files, &expected, &scene), &expected, diagnoser.as_ref());
         let mistakes = common_mistakes(&graded, MISTAKES_LISTED);
