@@ -159,8 +159,8 @@ fn euc_vertices(scene: &Scene) -> Vec<([f32; 4], u8)> {
         .polygons
         .iter()
         .flat_map(|p| {
-            p.vertices().iter().map(move |v| {
-                let [x, y, z] = v.each_ref().map(zsim::to_f64);
+            let vertices: Vec<_> = p.vertices().iter().map(|v| v.each_ref().map(zsim::to_f64)).collect();
+            vertices.into_iter().map(move |[x, y, z]| {
                 ([(2.0 * x / w - 1.0) as f32, (2.0 * y / h - 1.0) as f32, z as f32, 1.0], p.value as u8)
             })
         })

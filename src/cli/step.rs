@@ -542,7 +542,7 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
     }
     // Centres exactly on the polygon's boundary along this scanline, and the rule deciding each.
     for x in 0..scene.width {
-        if let Some(tie) = zsim::tie::tie_text(scene.rules, scene.polygons[p].vertices(), x, record.row) {
+        if let Some(tie) = zsim::tie::tie_text(scene.rules, &scene.polygons[p].vertices(), x, record.row) {
             text.push_str(&format!("{}\n", zsim::words!("step-tie", x = x.to_string(), text = tie)));
         }
     }

@@ -51,8 +51,9 @@ pub fn supersampled(scene: &Scene, k: u32) -> Result<Scene, Error> {
             // Clipped away in clip space: nothing on the raster to scale.
             continue;
         }
-        let vertices = polygon.vertices().iter().map(|v| [v[0].times(factor), v[1].times(factor), v[2].clone()]);
-        *polygon = polygon.with_vertices(vertices.collect()).map_err(|e| Error::Polygon {
+        let vertices =
+            polygon.vertices().iter().map(|v| [v[0].times(factor), v[1].times(factor), v[2].clone()]).collect();
+        *polygon = polygon.with_vertices(vertices).map_err(|e| Error::Polygon {
             origin: PolygonOrigin::Supersampled { factor: k },
             index,
             name: polygon.name.clone(),

@@ -164,8 +164,9 @@ fn bounding_rect(polygon: &Polygon) -> Option<PixelRect> {
         let floor = v.floor().clamp(BigInt::from(0), BigInt::from(u32::MAX));
         num_traits::ToPrimitive::to_u32(&floor).expect("clamped")
     };
-    let xs = polygon.vertices().iter().map(|v| &v[0]);
-    let ys = polygon.vertices().iter().map(|v| &v[1]);
+    let vertices = polygon.vertices();
+    let xs = vertices.iter().map(|v| &v[0]);
+    let ys = vertices.iter().map(|v| &v[1]);
     let (x0, x1) = (xs.clone().min()?, xs.max()?);
     let (y0, y1) = (ys.clone().min()?, ys.max()?);
     // A centre at x + 1/2 inside [x0, x1] needs x ≥ ⌊x0⌋ − 1 … x ≤ ⌊x1⌋; the cell rule takes ⌊x0⌋ … ⌊x1⌋.

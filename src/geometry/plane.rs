@@ -36,6 +36,10 @@ pub const MAX_SCALED: i128 = 1 << 34;
 /// 10^1233.
 pub const MAX_SCALED_BITS: u64 = 4096;
 
+/// Scaled vertices: a triangle's or a quadrilateral's in place, with no
+/// allocation of their own (reading a large scene was mostly allocation).
+pub type Points = smallvec::SmallVec<[[i128; 3]; 4]>;
+
 /// A polygon ready for the rasterizer: scaled integer vertices and Newell's
 /// normal in scaled units.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -46,7 +50,7 @@ pub struct Geometry {
     /// Vertices as `[x·2D, y·2D, z·2D]`, within [`MAX_SCALED`]; empty on the
     /// big-integer tier, which keeps them in big integers
     /// ([`Geometry::big_scaled`]).
-    pub points: Vec<[i128; 3]>,
+    pub points: Points,
     /// Newell's normal `(a, b, c)` computed on the scaled vertices (on the
     /// big-integer tier: the reduced plane's, pointing the same way).
     pub normal: [i128; 3],
@@ -104,7 +108,7 @@ impl Geometry {
                 Some(v.numer().checked_mul(factor)?).filter(|s| s.abs() <= MAX_SCALED)
             };
             let points = vertices.iter().map(|v| Some([scaled(&v[0])?, scaled(&v[1])?, scaled(&v[2])?]));
-            Some((denominator, points.collect::<Option<Vec<_>>>()?))
+            Some((denominator, points.collect::<Option<Points>>()?))
         };
         let Some((denominator, points)) = words() else {
             return Geometry::new_big(&vertices.iter().map(|v| v.each_ref().map(C::big)).collect::<Vec<_>>());
@@ -153,7 +157,7 @@ impl Geometry {
     fn on_big(polygon: crate::geometry::big::BigPolygon) -> Geometry {
         Geometry {
             denominator: 0,
-            points: Vec::new(),
+            points: Points::new(),
             normal: polygon.normal(),
             narrow: false,
             big: Some(Box::new(polygon)),

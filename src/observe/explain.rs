@@ -178,7 +178,7 @@ pub fn entry_text(scene: &Scene, x: u32, y: u32, entry: &PixelHistoryEntry) -> S
     }
     let centre = Q::new(2 * i128::from(x) + 1, 2);
     // A centre exactly on the boundary: say which rule decided it.
-    let tie = crate::observe::tie::tie_text(scene.rules, scene.polygons[entry.index].vertices(), x, y)
+    let tie = crate::observe::tie::tie_text(scene.rules, &scene.polygons[entry.index].vertices(), x, y)
         .map_or(String::new(), |t| words!("tie-wrap", text = t));
     match (&entry.scanline, &entry.pixel) {
         (None, _) => words!("entry-no-row", scanline = scanline_text(y), tie = tie),

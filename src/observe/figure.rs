@@ -377,8 +377,9 @@ fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&ToSvg
     // Vertices already labelled, so that a point shared by two polygons gets its labels one under the other.
     let mut labelled: Vec<[Exact; 2]> = Vec::new();
     for polygon in scene.polygons.iter().take(last + 1).filter(|p| !p.vertices().is_empty()) {
-        let (middle_x, middle_y) = (middle(polygon.vertices(), 0), middle(polygon.vertices(), 1));
-        for v in polygon.vertices() {
+        let vertices = polygon.vertices();
+        let (middle_x, middle_y) = (middle(&vertices, 0), middle(&vertices, 1));
+        for v in vertices.iter() {
             // Left of the middle: the label ends at the vertex; right: it starts there.
             let (anchor, dx) = if v[0] < middle_x { ("end", Q::new(-1, 4)) } else { ("start", Q::new(1, 4)) };
             let point = [v[0].clone(), v[1].clone()];

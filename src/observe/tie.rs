@@ -194,7 +194,7 @@ pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
             let ties = changed
                 .into_iter()
                 .filter(|i| covering.0.contains(i) != covering.1.contains(i))
-                .filter_map(|i| boundary_at(scene.polygons[i].vertices(), x, y).map(|(kind, a, b)| (i, kind, a, b)))
+                .filter_map(|i| boundary_at(&scene.polygons[i].vertices(), x, y).map(|(kind, a, b)| (i, kind, a, b)))
                 .collect();
             out.push(RuleDifference { x, y, values: (va, vb), covering, ties });
         }

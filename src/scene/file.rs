@@ -27,17 +27,22 @@ pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
         });
     }
     // Read at full speed first: the settings, with each polygon's text only
-    // found; then the polygons, each from its own text, on every core. Only a
-    // file that fails is read again, in one piece, tracking where in its
-    // structure the failure is (that costs a third of the time).
+    // found; then each polygon read from its text and made at once, on every
+    // core. Only a file with a polygon that does not read is read again, in
+    // one piece, tracking where in its structure the failure is (that costs a
+    // third of the time).
     let mut deserializer = serde_json::Deserializer::from_str(text);
     if let Ok(file) = SceneFile::<&serde_json::value::RawValue>::deserialize(&mut deserializer)
         && deserializer.end().is_ok()
     {
-        let read: Vec<Option<PolygonFile>> =
-            file.polygons.par_iter().map(|polygon| serde_json::from_str(polygon.get()).ok()).collect();
-        if let Some(polygons) = read.into_iter().collect::<Option<Vec<PolygonFile>>>() {
-            return file.with_polygons(polygons).validate(path);
+        let made = file.validate(path, |text, index, frame| match serde_json::from_str::<PolygonFile>(text.get()) {
+            Ok(polygon) => polygon.validate(index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e))),
+            Err(_) => Err(Unmade::Unread),
+        });
+        match made {
+            Ok(scene) => return Ok(scene),
+            Err(Unmade::Invalid(error)) => return Err(*error),
+            Err(Unmade::Unread) => {}
         }
     }
     let mut deserializer = serde_json::Deserializer::from_str(text);
@@ -56,7 +61,21 @@ pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
         location: String::new(),
         message: json_message(&error),
     })?;
-    file.validate(path)
+    file.validate(path, |polygon, index, frame| {
+        polygon.validate(index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
+    })
+    .map_err(|unmade| match unmade {
+        Unmade::Invalid(error) => *error,
+        Unmade::Unread => unreachable!("every polygon of this file was read"),
+    })
+}
+
+/// Why a polygon of the file did not become a [`Polygon`].
+enum Unmade {
+    /// Its text does not read as a polygon: the file is read again to say where.
+    Unread,
+    /// It reads, and is not a valid polygon (or a setting is not valid).
+    Invalid(Box<Error>),
 }
 
 /// What the file's first value is when it is valid-looking JSON but not an
@@ -291,40 +310,6 @@ struct SceneFile<P> {
     polygons: Vec<P>,
 }
 
-impl<P> SceneFile<P> {
-    /// The same settings with other polygons.
-    fn with_polygons<R>(self, polygons: Vec<R>) -> SceneFile<R> {
-        let SceneFile {
-            width,
-            height,
-            frame_bits,
-            depth_bits,
-            depth_test,
-            background,
-            effects,
-            rules,
-            window,
-            depth_range,
-            clear_depth,
-            polygons: _,
-        } = self;
-        SceneFile {
-            width,
-            height,
-            frame_bits,
-            depth_bits,
-            depth_test,
-            background,
-            effects,
-            rules,
-            window,
-            depth_range,
-            clear_depth,
-            polygons,
-        }
-    }
-}
-
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct WindowFile {
@@ -500,16 +485,25 @@ impl<'de> serde::de::Visitor<'de> for VertexVisitor {
     }
 }
 
-impl SceneFile<PolygonFile> {
-    fn validate(self, path: &Path) -> Result<Scene, Error> {
-        let setting = |key: &'static str, message: String| Error::Setting { path: path.to_owned(), key, message };
-        let bits = |key: &'static str, value: Option<u64>, default: u32| -> Result<u32, Error> {
+impl<P: Send> SceneFile<P> {
+    /// The scene: its settings validated, then each polygon made by `make`
+    /// on every core, each thread in this thread's language; the error named
+    /// is the first setting's, else the first polygon's in the file.
+    fn validate(
+        self,
+        path: &Path,
+        make: impl Fn(P, usize, &Frame) -> Result<Polygon, Unmade> + Sync,
+    ) -> Result<Scene, Unmade> {
+        let setting = |key: &'static str, message: String| {
+            Unmade::Invalid(Box::new(Error::Setting { path: path.to_owned(), key, message }))
+        };
+        let bits = |key: &'static str, value: Option<u64>, default: u32| -> Result<u32, Unmade> {
             match value.unwrap_or(u64::from(default)) {
                 bits @ 1..=32 => Ok(bits as u32),
                 other => Err(setting(key, words!("setting-bits", value = other.to_string()))),
             }
         };
-        let side = |key: &'static str, value: Option<u64>| -> Result<u32, Error> {
+        let side = |key: &'static str, value: Option<u64>| -> Result<u32, Unmade> {
             match value.unwrap_or(32) {
                 0 => Err(setting(key, words!("setting-side-zero"))),
                 side if side > MAX_SIDE => {
@@ -631,7 +625,6 @@ impl SceneFile<PolygonFile> {
                 Some(Antialias { samples: a.samples, depth_at_samples: a.depth != Some(AntialiasDepth::Pixel) })
             }
         };
-        let transparency = self.polygons.iter().any(|p| p.opacity.is_some());
         let frame = Frame {
             bits: frame_bits,
             depth_max,
@@ -640,22 +633,23 @@ impl SceneFile<PolygonFile> {
             size: (width, height),
             corner_samples: rules.sample == crate::rules::Sample::Corner,
         };
-        // Each polygon's geometry is made on every core (a third of reading a
-        // large scene), each thread in this thread's language; the error
-        // named is the first polygon's in the file that fails.
         let lang = crate::words::language();
-        let validated: Vec<Result<Polygon, Box<Error>>> = self
+        let made: Vec<Result<Polygon, Unmade>> = self
             .polygons
             .into_par_iter()
             .enumerate()
-            .map(|(index, polygon)| {
-                crate::words::with_language(lang, || polygon.validate(index, &frame, path)).map_err(Box::new)
-            })
+            .map(|(index, polygon)| crate::words::with_language(lang, || make(polygon, index, &frame)))
             .collect();
-        let mut polygons = Vec::with_capacity(validated.len());
-        for polygon in validated {
-            polygons.push(polygon.map_err(|e| *e)?);
+        if made.iter().any(|polygon| matches!(polygon, Err(Unmade::Unread))) {
+            return Err(Unmade::Unread);
         }
+        if let Some(position) = made.iter().position(Result::is_err) {
+            return Err(made.into_iter().nth(position).and_then(Result::err).expect("an error at this position"));
+        }
+        // In place (a polygon and a made one take the same room): no second list.
+        let polygons: Vec<Polygon> =
+            made.into_iter().map(|polygon| polygon.unwrap_or_else(|_| unreachable!("no polygon failed"))).collect();
+        let transparency = polygons.iter().any(|p| p.opacity.is_some());
         Ok(Scene {
             width,
             height,
@@ -693,7 +687,14 @@ struct Frame {
 impl PolygonFile {
     fn validate(self, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
         // Names reach terminals in every report: control characters are kept escaped (`\u{1b}`).
-        let name = self.name.map_or_else(|| crate::words::default_name(index), |name| printable(&name).into_owned());
+        let name = match self.name {
+            None => crate::words::default_name(index),
+            // The name as read, unless it has control characters to escape: no copy of it.
+            Some(name) => match printable(&name) {
+                std::borrow::Cow::Borrowed(_) => name,
+                std::borrow::Cow::Owned(escaped) => escaped,
+            },
+        };
         let fail = |name: &str, problem: PolygonProblem| Error::Polygon {
             origin: PolygonOrigin::File(PathBuf::from(path)),
             index,

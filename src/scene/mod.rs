@@ -22,6 +22,7 @@ pub mod perspective;
 pub mod random;
 pub mod text;
 
+use std::borrow::Cow;
 use std::fmt;
 use std::path::Path;
 
@@ -167,10 +168,11 @@ pub struct Polygon {
     pub name: String,
     /// The framebuffer value it writes; fits `frame_bits`.
     pub value: u32,
-    /// Its vertices ([`Polygon::vertices`]); private, so that they and the
-    /// geometry made from them never disagree ([`Polygon::with_vertices`]).
-    vertices: Vec<[Exact; 3]>,
-    /// Its scaled integer geometry and plane, made from `vertices`.
+    /// Where its vertices are kept ([`Polygon::vertices`]); private, so that
+    /// they and the geometry made from them never disagree
+    /// ([`Polygon::with_vertices`]).
+    vertices: Vertices,
+    /// Its scaled integer geometry and plane, made from its vertices.
     geometry: Geometry,
     /// Its opacity α (0 … 1) when it is transparent; `None` is opaque.
     pub opacity: Option<Q>,
@@ -194,6 +196,7 @@ impl Polygon {
         clip: Clip,
     ) -> Result<Polygon, GeometryError> {
         let geometry = Geometry::from_exact(&vertices)?;
+        let vertices = Vertices::beside(&geometry, vertices);
         Ok(Polygon { name, value, vertices, geometry, opacity, eye_vertices, clip })
     }
 
@@ -204,14 +207,24 @@ impl Polygon {
         let (zero, one) = (Q::from_integer(0), Q::from_integer(1));
         let geometry = Geometry::new(&[[zero, zero, zero], [one, zero, zero], [zero, one, zero]])
             .expect("a unit triangle is a polygon");
-        Polygon { name, value, vertices: Vec::new(), geometry, opacity, eye_vertices: None, clip: Clip::ViewAway }
+        let vertices = Vertices::Kept(Vec::new());
+        Polygon { name, value, vertices, geometry, opacity, eye_vertices: None, clip: Clip::ViewAway }
     }
 
     /// Its vertices, exact, in pixel units (mapped through the scene's
     /// window when it has one); beyond 128-bit fractions only where clip
-    /// space made them so; none when clip space clipped it away.
-    pub fn vertices(&self) -> &[[Exact; 3]] {
-        &self.vertices
+    /// space made them so; none when clip space clipped it away. Made here
+    /// from the scaled points when they fit 128 bits (almost always), which
+    /// are then the polygon's only copy.
+    pub fn vertices(&self) -> Cow<'_, [[Exact; 3]]> {
+        match &self.vertices {
+            Vertices::Kept(vertices) => Cow::Borrowed(vertices),
+            Vertices::Scaled => {
+                let scale = self.geometry.scale();
+                let unscaled = |p: &[i128; 3]| p.map(|c| Exact::Word(Q::new(c, scale)));
+                Cow::Owned(self.geometry.points.iter().map(unscaled).collect())
+            }
+        }
     }
 
     /// Its scaled integer geometry and plane, made from its vertices.
@@ -223,6 +236,7 @@ impl Polygon {
     /// geometry made anew from them; the error when they are unusable.
     pub fn with_vertices(&self, vertices: Vec<[Exact; 3]>) -> Result<Polygon, GeometryError> {
         let geometry = Geometry::from_exact(&vertices)?;
+        let vertices = Vertices::beside(&geometry, vertices);
         Ok(Polygon { vertices, geometry, ..self.clone() })
     }
 
@@ -230,7 +244,25 @@ impl Polygon {
     /// rules that sample at pixel corners see it against centres, and back.
     pub fn shifted(&self, by: Q) -> Result<Polygon, GeometryError> {
         let by = Exact::Word(by);
-        self.with_vertices(self.vertices.iter().map(|[x, y, z]| [x.plus(&by), y.plus(&by), z.clone()]).collect())
+        self.with_vertices(self.vertices().iter().map(|[x, y, z]| [x.plus(&by), y.plus(&by), z.clone()]).collect())
+    }
+}
+
+/// Where a polygon's vertices are kept.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Vertices {
+    /// Only as its geometry's scaled points, `vertex = point / 2D` (every
+    /// polygon whose scaled points fit 128 bits): no second copy.
+    Scaled,
+    /// Here: on the big-integer tier, and none for a polygon clip space
+    /// clipped away.
+    Kept(Vec<[Exact; 3]>),
+}
+
+impl Vertices {
+    /// Where to keep `vertices`, of which `geometry` was made.
+    fn beside(geometry: &Geometry, vertices: Vec<[Exact; 3]>) -> Vertices {
+        if geometry.is_big() { Vertices::Kept(vertices) } else { Vertices::Scaled }
     }
 }
 
@@ -288,8 +320,15 @@ impl Scene {
             .iter()
             .map(|p| {
                 p.name.capacity()
-                    + p.vertices.capacity() * size_of::<[Exact; 3]>()
-                    + p.geometry.points.capacity() * size_of::<[i128; 3]>()
+                    + match &p.vertices {
+                        Vertices::Kept(vertices) => vertices.capacity() * size_of::<[Exact; 3]>(),
+                        Vertices::Scaled => 0,
+                    }
+                    + if p.geometry.points.spilled() {
+                        p.geometry.points.capacity() * size_of::<[i128; 3]>()
+                    } else {
+                        0
+                    }
                     + p.eye_vertices.as_ref().map_or(0, |v| v.capacity() * size_of::<[Exact; 3]>())
             })
             .sum();
@@ -362,9 +401,35 @@ mod tests {
     fn json_decimals_keep_their_digits() {
         let scene =
             parse(r#"{"polygons": [{"value": 1, "vertices": [[0.1, 0, 2.1], [3, 0, "5/2"], [0, 3, 0]]}]}"#).unwrap();
-        assert_eq!(scene.polygons[0].vertices[0][0], Q::new(1, 10));
-        assert_eq!(scene.polygons[0].vertices[0][2], Q::new(21, 10));
-        assert_eq!(scene.polygons[0].vertices[1][2], Q::new(5, 2));
+        assert_eq!(scene.polygons[0].vertices()[0][0], Q::new(1, 10));
+        assert_eq!(scene.polygons[0].vertices()[0][2], Q::new(21, 10));
+        assert_eq!(scene.polygons[0].vertices()[1][2], Q::new(5, 2));
+    }
+
+    proptest::proptest! {
+        /// A polygon keeps its vertices only as scaled points when they fit
+        /// 128 bits: the vertices made back from them are the ones given,
+        /// whatever their denominators, and so is the geometry made again.
+        #[test]
+        fn vertices_kept_as_scaled_points_are_the_ones_given(
+            given in proptest::collection::vec(
+                proptest::array::uniform3((-10_000i128..10_000, 1i128..=12)), 3..6)
+        ) {
+            let vertices: Vec<[Exact; 3]> = given.iter().map(|v| v.map(|(n, d)| Exact::Word(Q::new(n, d)))).collect();
+            // Planar by construction: z is made from x and y on one plane.
+            let vertices: Vec<[Exact; 3]> = vertices
+                .into_iter()
+                .map(|[x, y, _]| {
+                    let z = x.times(3).plus(&y.times(-2)).plus(&Exact::Word(Q::new(7, 5)));
+                    [x, y, z]
+                })
+                .collect();
+            let polygon = Polygon::new("p".into(), 1, vertices.clone(), None, None, Clip::NotClipped).unwrap();
+            proptest::prop_assert!(matches!(polygon.vertices, Vertices::Scaled));
+            proptest::prop_assert_eq!(&*polygon.vertices(), &vertices[..]);
+            let again = polygon.with_vertices(polygon.vertices().into_owned()).unwrap();
+            proptest::prop_assert_eq!(again, polygon);
+        }
     }
 
     #[test]

@@ -65,6 +65,8 @@ pub fn read_bytes(path: &Path, links: Links) -> Result<Vec<u8>, Error> {
         if metadata.len() > MAX_INPUT_BYTES {
             return Err(Error::TooLarge { path: path.to_owned(), limit: MAX_INPUT_BYTES });
         }
+        // Room for the length it claims (and one byte more, to see it grow), in one allocation.
+        bytes.reserve_exact(metadata.len() as usize + 1);
         file.take(MAX_INPUT_BYTES + 1).read_to_end(&mut bytes).map_err(failed)?;
     }
     if bytes.len() as u64 > MAX_INPUT_BYTES {

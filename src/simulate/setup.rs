@@ -127,7 +127,7 @@ pub fn fate(scene: &Scene, index: usize) -> Fate {
         return Fate::Degenerate;
     }
     if let Some(bound) = scene.rules.min_area
-        && signed_area(polygon.vertices()) < Exact::Word(bound)
+        && signed_area(&polygon.vertices()) < Exact::Word(bound)
     {
         return Fate::SmallArea;
     }

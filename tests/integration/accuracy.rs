@@ -172,7 +172,7 @@ fn fixed_point_snapping_keeps_a_polygon_planar() {
     let plane = scene.polygons[0].geometry().plane();
     let big = |v: &zsim::Exact| v.to_big();
     let mut moves = 0;
-    for (given, moved) in scene.polygons[0].vertices().iter().zip(snapped.polygons[0].vertices()) {
+    for (given, moved) in scene.polygons[0].vertices().iter().zip(snapped.polygons[0].vertices().iter()) {
         let [x, y, z] = moved.each_ref().map(big);
         let on_plane =
             x * &plane.a + y * &plane.b + z * &plane.c + num_rational::BigRational::from_integer(plane.d.clone());
@@ -185,7 +185,7 @@ fn fixed_point_snapping_keeps_a_polygon_planar() {
         moves += usize::from(given[0] != moved[0] || given[1] != moved[1]);
     }
     assert_eq!(moves, 4, "every vertex of the quadrilateral moves when snapped");
-    for (given, moved) in scene.polygons[1].vertices().iter().zip(snapped.polygons[1].vertices()) {
+    for (given, moved) in scene.polygons[1].vertices().iter().zip(snapped.polygons[1].vertices().iter()) {
         assert_eq!(given[2], moved[2], "a triangle keeps its vertices' z");
     }
 }

@@ -115,7 +115,7 @@ impl EdgeShape {
     /// Sets a drawn polygon up: edge functions when it is a convex triangle
     /// or quadrilateral (decided exactly, on its scaled integer vertices).
     pub(super) fn new(polygon: &crate::scene::Polygon, width: u32, height: u32) -> EdgeShape {
-        let float = prepare::<f32>(polygon.vertices(), polygon.value);
+        let float = prepare::<f32>(&polygon.vertices(), polygon.value);
         let points = &polygon.geometry().points;
         let (convex, count) = match polygon.geometry().big_scaled() {
             Some((points, _)) => (is_convex(points), points.len()),

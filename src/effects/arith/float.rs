@@ -206,7 +206,7 @@ pub(super) fn draw_walked<F: Float + AsPrimitive<u32>, C: FrameCell>(
 
 pub(super) fn scanline_in<F: Float + Ring>(scene: &Scene, index: usize, row: u32, incremental: bool) -> FloatScanline {
     let polygon = &scene.polygons[index];
-    let p = prepare::<F>(polygon.vertices(), polygon.value);
+    let p = prepare::<F>(&polygon.vertices(), polygon.value);
     let mut walker = FloatWalker::new(&p, incremental);
     let mut pixels = Vec::new();
     walker.row(i64::from(row), scene.width, |x, z| pixels.push((x as u32, z.to_f64().unwrap_or(f64::NAN))));

@@ -186,7 +186,7 @@ fn exact_raster(scene: &Scene) -> (Buffers, Stats) {
 fn prepare_scene<F: Float + crate::numbers::Ring>(scene: &Scene) -> Vec<Option<FloatPolygon<F>>> {
     (0..scene.polygons.len())
         .map(|i| {
-            (fate(scene, i) == Fate::Drawn).then(|| prepare(scene.polygons[i].vertices(), scene.polygons[i].value))
+            (fate(scene, i) == Fate::Drawn).then(|| prepare(&scene.polygons[i].vertices(), scene.polygons[i].value))
         })
         .collect()
 }

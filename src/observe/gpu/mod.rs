@@ -146,8 +146,7 @@ pub fn triangles(scene: &crate::scene::Scene) -> Triangles {
     let near = scene
         .polygons
         .iter()
-        .flat_map(|p| p.vertices())
-        .all(|v| inside(to_f64(&v[0]), width) && inside(to_f64(&v[1]), height));
+        .all(|p| p.vertices().iter().all(|v| inside(to_f64(&v[0]), width) && inside(to_f64(&v[1]), height)));
     let margin = if near { 256 } else { 0 };
     let mut triangles = Vec::new();
     let mut not_convex = Vec::new();
@@ -224,7 +223,7 @@ pub fn compare(scene: &crate::scene::Scene, api: GpuApi) -> Result<GpuComparison
             let tie = involved
                 .iter()
                 .flatten()
-                .find_map(|&i| crate::observe::tie::tie_text(api_rules, scene.polygons[i].vertices(), x, y));
+                .find_map(|&i| crate::observe::tie::tie_text(api_rules, &scene.polygons[i].vertices(), x, y));
             let why = tie.unwrap_or_else(|| {
                 let exact = |i: Option<usize>| {
                     i.map_or_else(
