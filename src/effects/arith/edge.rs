@@ -26,14 +26,28 @@ impl LevelCells for EdgeRaster<'_> {
         let scene = self.scene;
         let mut stats = Stats::default();
         let limits = (nearer_sign(scene), scene.depth_max() as f32);
-        let width = scene.width as usize;
+        let (width, height) = (scene.width, scene.height);
+        let row_width = width as usize;
         let mut space: Option<FloatWalker<'_, f32>> = None;
         for shape in self.shapes {
             stats.polygons += 1;
             match shape {
                 None => {}
-                Some(EdgeShape::Triangle(p)) => draw_edges(p, (frame, depth), width, limits, &mut stats),
-                Some(EdgeShape::Quad(p)) => draw_edges(p, (frame, depth), width, limits, &mut stats),
+                // Each triangle set up as it is drawn, as the exact loop sets up its own.
+                Some(EdgeShape::Triangle(p, c)) => draw_edges(
+                    &EdgePolygon::<3>::new(p, *c, width, height),
+                    (frame, depth),
+                    row_width,
+                    limits,
+                    &mut stats,
+                ),
+                Some(EdgeShape::Quad(p, c)) => draw_edges(
+                    &EdgePolygon::<4>::new(p, *c, width, height),
+                    (frame, depth),
+                    row_width,
+                    limits,
+                    &mut stats,
+                ),
                 Some(EdgeShape::Other(p)) => {
                     let mut walker = match space.take() {
                         Some(walker) => walker.next(p),
@@ -100,12 +114,15 @@ pub struct EdgePolygon<const N: usize> {
     value: u32,
 }
 
-/// What `f32-edge` draws a polygon with.
+/// What `f32-edge` draws a polygon with: its vertices and plane in `f32`
+/// (as the exact loop has its scaled vertices and Newell's normal from the
+/// scene), and which loop draws it; the edge functions are set up as it is
+/// drawn ([`EdgePolygon::new`]), with Newell's exact `c` for their sign.
 pub enum EdgeShape {
-    /// A triangle's three edge functions.
-    Triangle(EdgePolygon<3>),
-    /// A convex quadrilateral's four.
-    Quad(EdgePolygon<4>),
+    /// A triangle: three edge functions.
+    Triangle(FloatPolygon<f32>, i128),
+    /// A convex quadrilateral: four.
+    Quad(FloatPolygon<f32>, i128),
     /// Anything else (concave, self-intersecting, five or more vertices), which
     /// a GPU would first cut into triangles: drawn by the `f32` scanline walker.
     Other(FloatPolygon<f32>),
@@ -114,7 +131,7 @@ pub enum EdgeShape {
 impl EdgeShape {
     /// Sets a drawn polygon up: edge functions when it is a convex triangle
     /// or quadrilateral (decided exactly, on its scaled integer vertices).
-    pub(super) fn new(polygon: &crate::scene::Polygon, width: u32, height: u32) -> EdgeShape {
+    pub(super) fn new(polygon: &crate::scene::Polygon) -> EdgeShape {
         let float = prepare::<f32>(&polygon.vertices(), polygon.value);
         let points = &polygon.geometry().points;
         let (convex, count) = match polygon.geometry().big_scaled() {
@@ -122,8 +139,8 @@ impl EdgeShape {
             None => (is_convex(points), points.len()),
         };
         match (count, convex) {
-            (3, true) => EdgeShape::Triangle(EdgePolygon::new(&float, polygon.geometry().c(), width, height)),
-            (4, true) => EdgeShape::Quad(EdgePolygon::new(&float, polygon.geometry().c(), width, height)),
+            (3, true) => EdgeShape::Triangle(float, polygon.geometry().c()),
+            (4, true) => EdgeShape::Quad(float, polygon.geometry().c()),
             _ => EdgeShape::Other(float),
         }
     }
@@ -157,7 +174,7 @@ pub(super) fn is_convex<T: Num + Ord + Clone + Signed>(points: &[[T; 3]]) -> boo
 }
 
 impl<const N: usize> EdgePolygon<N> {
-    fn new(polygon: &FloatPolygon<f32>, newell_c: i128, width: u32, height: u32) -> EdgePolygon<N> {
+    pub(super) fn new(polygon: &FloatPolygon<f32>, newell_c: i128, width: u32, height: u32) -> EdgePolygon<N> {
         let points = &polygon.points;
         // Newell's c > 0: counter-clockwise seen from the viewer, the inside on each edge's left.
         let sign = if newell_c > 0 { 1.0 } else { -1.0 };

@@ -194,7 +194,7 @@ fn prepare_scene<F: Float + crate::numbers::Ring>(scene: &Scene) -> Vec<Option<F
 /// Every polygon drawn (by the exact fate) set up for `f32-edge`; `None` for the others.
 fn prepare_edges(scene: &Scene) -> Vec<Option<EdgeShape>> {
     (0..scene.polygons.len())
-        .map(|i| (fate(scene, i) == Fate::Drawn).then(|| EdgeShape::new(&scene.polygons[i], scene.width, scene.height)))
+        .map(|i| (fate(scene, i) == Fate::Drawn).then(|| EdgeShape::new(&scene.polygons[i])))
         .collect()
 }
 
@@ -255,9 +255,10 @@ pub fn float_scanline(scene: &Scene, index: usize, row: u32, mode: Arith) -> Opt
         Arith::F32Incremental => Some(scanline_in::<f32>(scene, index, row, true)),
         Arith::F32Edge => {
             let polygon = &scene.polygons[index];
-            Some(match EdgeShape::new(polygon, scene.width, scene.height) {
-                EdgeShape::Triangle(p) => edge_scanline(&p, row),
-                EdgeShape::Quad(p) => edge_scanline(&p, row),
+            let (width, height) = (scene.width, scene.height);
+            Some(match EdgeShape::new(polygon) {
+                EdgeShape::Triangle(p, c) => edge_scanline(&EdgePolygon::<3>::new(&p, c, width, height), row),
+                EdgeShape::Quad(p, c) => edge_scanline(&EdgePolygon::<4>::new(&p, c, width, height), row),
                 EdgeShape::Other(_) => scanline_in::<f32>(scene, index, row, false),
             })
         }
