@@ -184,6 +184,16 @@ pub fn to_f64(value: impl Into<Exact>) -> f64 {
     if numer == 0 {
         return 0.0;
     }
+    // Both exact in f64: IEEE division rounds their quotient once, to the nearest (ties to even).
+    if numer <= 1 << f64::MANTISSA_DIGITS && denom <= 1 << f64::MANTISSA_DIGITS {
+        let magnitude = numer as f64 / denom as f64;
+        return if negative { -magnitude } else { magnitude };
+    }
+    nearest_f64(negative, numer, denom)
+}
+
+/// The nearest `f64` to `±numer/denom`, rounded half to even, bit by bit.
+fn nearest_f64(negative: bool, numer: u128, denom: u128) -> f64 {
     // mantissa holds the leading significant bits; exponent e: value ≈ mantissa·2^e.
     let whole = numer / denom;
     let mut remainder = numer % denom;
@@ -269,6 +279,21 @@ mod tests {
         for (n, d) in [(1, 3), (2, 3), (-22, 7), (355, 113), (1, 1 << 100), ((1 << 100) + 1, 3)] {
             let expected = format!("{}", n as f64 / d as f64);
             assert_eq!(to_f64(Q::new(n, d)).to_string(), expected, "{n}/{d}");
+        }
+    }
+
+    proptest::proptest! {
+        /// Numerator and denominator both exact in f64 take one IEEE
+        /// division; it rounds as the bit-by-bit path does.
+        #[test]
+        fn one_division_rounds_as_the_bit_by_bit_path(
+            numer in 1u128..=1 << 53,
+            denom in 1u128..=1 << 53,
+            negative: bool,
+        ) {
+            let q = Q::new(if negative { -(numer as i128) } else { numer as i128 }, denom as i128);
+            let (n, d) = (q.numer().unsigned_abs(), q.denom().unsigned_abs());
+            proptest::prop_assert_eq!(to_f64(q).to_bits(), nearest_f64(negative, n, d).to_bits());
         }
     }
 
