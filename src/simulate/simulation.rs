@@ -12,7 +12,7 @@ use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent,
 use crate::simulate::levels::{InOrder, Levels, OnePolygon};
 use crate::simulate::setup::{Stats, fate, prefetch_ahead};
 use crate::simulate::stages::{PixelStages, Plain, StageSet, WithEffects};
-use crate::simulate::tiles::{Tiles, Tiling, bins};
+use crate::simulate::tiles::{Tiles, Tiling, bins, pool};
 
 /// A scene being drawn, one polygon at a time.
 #[derive(Debug, Clone)]
@@ -151,8 +151,9 @@ impl<'s> Simulation<'s> {
                 1
             }
             Some(tiling) => {
-                let bins = bins(scene, first..end, tiling.tile);
-                let tiles = Tiles { scene, test, depth_max, bins, tiling };
+                let pool = pool(tiling.threads);
+                let bins = bins(scene, first..end, tiling.tile, pool.as_ref());
+                let tiles = Tiles { scene, test, depth_max, bins, tiling, pool: pool.as_ref() };
                 let (stats, threads) =
                     self.buffers.with_level_cells(tiles).expect("plain levels imply a level z-buffer");
                 self.stats.tested += stats.tested;

@@ -29,6 +29,8 @@ pub(super) struct Tiles<'a> {
     pub(super) depth_max: u32,
     pub(super) bins: Vec<Vec<u32>>,
     pub(super) tiling: Tiling<'a>,
+    /// The threads that draw the bands, when more than one does.
+    pub(super) pool: Option<&'a rayon::ThreadPool>,
 }
 
 impl Tiles<'_> {
@@ -79,17 +81,13 @@ impl LevelCells for Tiles<'_> {
         let bands = frame.chunks_mut(band_cells).zip(depth.chunks_mut(band_cells)).enumerate();
         let add =
             |a: Stats, b: Stats| Stats { polygons: 0, tested: a.tested + b.tested, written: a.written + b.written };
-        let one_thread = |bands: std::iter::Enumerate<_>| {
-            (bands.map(|(ty, (frame, depth))| self.band(ty as u32, frame, depth)).fold(Stats::default(), add), 1)
+        let Some(pool) = self.pool else {
+            return (
+                bands.map(|(ty, (frame, depth))| self.band(ty as u32, frame, depth)).fold(Stats::default(), add),
+                1,
+            );
         };
-        if self.tiling.threads == 1 {
-            return one_thread(bands);
-        }
         use rayon::prelude::*;
-        let Ok(pool) = rayon::ThreadPoolBuilder::new().num_threads(self.tiling.threads).build() else {
-            // The system would not start the threads: one thread draws the same cells.
-            return one_thread(bands);
-        };
         let bands: Vec<_> = bands.collect();
         let stats = pool.install(|| {
             bands
@@ -97,13 +95,39 @@ impl LevelCells for Tiles<'_> {
                 .map(|(ty, (frame, depth))| self.band(ty as u32, frame, depth))
                 .reduce(Stats::default, add)
         });
-        (stats, self.tiling.threads)
+        (stats, pool.current_num_threads())
     }
 }
 
-/// The drawn polygons from `first` on, binned by the `tile`×`tile` tiles
-/// their bounding boxes touch, each bin in scene order.
-pub(super) fn bins(scene: &Scene, polygons: std::ops::Range<usize>, tile: u32) -> Vec<Vec<u32>> {
+/// The threads that draw in tiles when `threads` asks for more than one;
+/// `None` for one, or when the system would not start them (then one thread
+/// bins and draws the same cells).
+pub(super) fn pool(threads: usize) -> Option<rayon::ThreadPool> {
+    (threads > 1).then(|| rayon::ThreadPoolBuilder::new().num_threads(threads).build().ok()).flatten()
+}
+
+/// The drawn polygons of a range, binned by the `tile`×`tile` tiles their
+/// bounding boxes touch, each bin in scene order; with a pool, a part of the
+/// range on each of its threads, the parts' bins then joined in order.
+pub(super) fn bins(
+    scene: &Scene,
+    polygons: std::ops::Range<usize>,
+    tile: u32,
+    pool: Option<&rayon::ThreadPool>,
+) -> Vec<Vec<u32>> {
+    let Some(pool) = pool else { return bins_in_order(scene, polygons, tile) };
+    use rayon::prelude::*;
+    let part = polygons.len().div_ceil(pool.current_num_threads()).max(1);
+    let parts: Vec<std::ops::Range<usize>> =
+        polygons.clone().step_by(part).map(|start| start..(start + part).min(polygons.end)).collect();
+    pool.install(|| {
+        let binned: Vec<Vec<Vec<u32>>> = parts.into_par_iter().map(|part| bins_in_order(scene, part, tile)).collect();
+        let tiles = scene.width.div_ceil(tile) as usize * scene.height.div_ceil(tile) as usize;
+        (0..tiles).into_par_iter().map(|t| binned.iter().flat_map(|bins| bins[t].iter().copied()).collect()).collect()
+    })
+}
+
+fn bins_in_order(scene: &Scene, polygons: std::ops::Range<usize>, tile: u32) -> Vec<Vec<u32>> {
     let tiles_x = scene.width.div_ceil(tile);
     let mut bins: Vec<Vec<u32>> = vec![Vec::new(); tiles_x as usize * scene.height.div_ceil(tile) as usize];
     for index in polygons {
