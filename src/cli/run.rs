@@ -151,7 +151,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     }
     // Clearing the buffers is the algorithm's first step: `--format none` times it with the raster.
     let rasterizing = Instant::now();
-    let mut simulation = Simulation::new(&scene);
+    let mut simulation = Simulation::new_on(&scene, threads(args));
     match args.format {
         Format::Text => {
             emit(out, &report::scene_header(&scene, &args.scene.display().to_string()))?;

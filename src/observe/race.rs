@@ -80,7 +80,7 @@ pub fn race(scene: &Scene, pairs: usize, tile: Option<u32>, threads: usize) -> R
     // The buffers are made once, as the GPU's framebuffer is: each round
     // clears them and draws (a fresh 4096² pair of buffers was mostly the
     // kernel handing over zeroed pages, a cost llvmpipe does not pay per frame).
-    let mut simulation = Simulation::new(scene);
+    let mut simulation = Simulation::new_on(scene, threads);
     let tile = tile.unwrap_or_else(|| simulation.default_tile(threads));
     let mut zsim = || {
         let start = Instant::now();

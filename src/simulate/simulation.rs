@@ -23,6 +23,8 @@ pub struct Simulation<'s> {
     stats: Stats,
     scratch: Scratch,
     stage_set: StageSet,
+    /// How many threads clear large buffers ([`Simulation::new_on`]).
+    clearing_threads: usize,
 }
 
 impl<'s> Simulation<'s> {
@@ -31,21 +33,34 @@ impl<'s> Simulation<'s> {
         Simulation::with_stages(scene, StageSet::AsAsked)
     }
 
+    /// Like [`Simulation::new`], large buffers cleared on `threads` threads
+    /// (here and by [`Simulation::restart`]): the same cells.
+    pub fn new_on(scene: &'s Scene, threads: usize) -> Simulation<'s> {
+        Simulation::made(scene, StageSet::AsAsked, threads)
+    }
+
     /// Like [`Simulation::new`], choosing the per-pixel stages.
     pub fn with_stages(scene: &'s Scene, stage_set: StageSet) -> Simulation<'s> {
+        Simulation::made(scene, stage_set, 1)
+    }
+
+    fn made(scene: &'s Scene, stage_set: StageSet, threads: usize) -> Simulation<'s> {
+        let clear_depth = scene.clear_depth.clone();
         Simulation {
             scene,
-            buffers: Buffers::new(
+            buffers: Buffers::new_on(
                 scene.width,
                 scene.height,
                 scene.frame_bits,
                 scene.background,
-                scene.clear_depth.clone(),
+                clear_depth,
+                threads,
             ),
             next: 0,
             stats: Stats::default(),
             scratch: Scratch::default(),
             stage_set,
+            clearing_threads: threads,
         }
     }
 
@@ -67,7 +82,7 @@ impl<'s> Simulation<'s> {
     /// polygon drawn.
     pub fn restart(&mut self) {
         let scene = self.scene;
-        self.buffers.clear(scene.frame_bits, scene.background, &scene.clear_depth);
+        self.buffers.clear(scene.frame_bits, scene.background, &scene.clear_depth, self.clearing_threads);
         self.next = 0;
         self.stats = Stats::default();
     }

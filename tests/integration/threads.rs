@@ -91,6 +91,32 @@ fn a_restarted_simulation_draws_what_a_fresh_one_draws() {
     }
 }
 
+/// Large buffers cleared on several threads (made, and made again by
+/// `restart`) hold what one thread clears, for every width of framebuffer
+/// cell and for exact depths; the drawing on them is the same.
+#[test]
+fn buffers_cleared_on_several_threads_are_the_ones_one_thread_clears() {
+    for (frame_bits, depth) in [
+        (8, r#""depth_bits": 16"#),
+        (12, r#""depth_bits": 24"#),
+        (32, r#""rules": {"store": "exact"}, "clear_depth": "-7/3""#),
+    ] {
+        let text = format!(
+            r#"{{"width": 1200, "height": 900, "frame_bits": {frame_bits}, "background": 5, {depth},
+                "polygons": [{{"value": 3, "vertices": [[10, 10, 4], [1100, 40, 9], [300, 880, 2]]}}]}}"#
+        );
+        let scene = Scene::from_json(&text, Path::new("clear.json")).expect("a valid scene");
+        let one = Simulation::new(&scene);
+        for threads in [2, 3] {
+            let mut several = Simulation::new_on(&scene, threads);
+            assert_eq!(several.buffers(), one.buffers(), "{frame_bits} bits, {threads} threads: made");
+            several.finish(&mut Unobserved);
+            several.restart();
+            assert_eq!(several.buffers(), one.buffers(), "{frame_bits} bits, {threads} threads: cleared again");
+        }
+    }
+}
+
 /// What draws when no tile is asked for: one thread polygon by polygon while
 /// both buffers fit a last-level cache (32 MiB), in tiles of 256 beyond it
 /// (there one triangle's rows lie far apart and go to memory and back), and
