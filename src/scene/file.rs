@@ -425,63 +425,55 @@ impl<'de> serde::de::Visitor<'de> for VerticesVisitor {
 
     fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<VerticesFile, A::Error> {
         let mut vertices = VerticesFile::default();
-        while let Some(vertex) = seq.next_element::<VertexFile>()? {
-            match vertex {
-                VertexFile::Xyz(p) => {
-                    // A triangle's three, not the four a first push would make room for.
-                    if vertices.xyz.capacity() == 0 {
-                        vertices.xyz.reserve_exact(3);
-                    }
-                    vertices.xyz.push(p);
-                }
-                VertexFile::Clip(c) => vertices.clip.push(c),
-            }
-        }
+        // Each vertex read straight into its list: a large scene is nearly all vertices.
+        while seq.next_element_seed(VertexInto(&mut vertices))?.is_some() {}
         // The list becomes the polygon's own: no room left over past a triangle.
         vertices.xyz.shrink_to_fit();
         Ok(vertices)
     }
 }
 
-/// A vertex as written: `[x, y, z]` in pixel units (or the window's), or
-/// `[x, y, z, w]` in clip space ([`crate::scene::clip_space`]).
-#[derive(Debug, Clone)]
-enum VertexFile {
-    Xyz([Exact; 3]),
-    Clip([Exact; 4]),
-}
+/// A vertex as written, `[x, y, z]` in pixel units (or the window's) or
+/// `[x, y, z, w]` in clip space ([`crate::scene::clip_space`]), read into
+/// its polygon's list of that kind.
+struct VertexInto<'a>(&'a mut VerticesFile);
 
-impl<'de> Deserialize<'de> for VertexFile {
-    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<VertexFile, D::Error> {
-        deserializer.deserialize_seq(VertexVisitor)
+impl<'de> serde::de::DeserializeSeed<'de> for VertexInto<'_> {
+    type Value = ();
+
+    fn deserialize<D: serde::Deserializer<'de>>(self, deserializer: D) -> Result<(), D::Error> {
+        deserializer.deserialize_seq(self)
     }
 }
 
-struct VertexVisitor;
-
-impl<'de> serde::de::Visitor<'de> for VertexVisitor {
-    type Value = VertexFile;
+impl<'de> serde::de::Visitor<'de> for VertexInto<'_> {
+    type Value = ();
 
     fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str("a vertex [x, y, z], or [x, y, z, w] in clip space")
     }
 
-    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<VertexFile, A::Error> {
-        // In place, not in a list: no allocation for a vertex of its own.
-        let mut values: [Option<Exact>; 4] = [None, None, None, None];
-        let mut count = 0;
-        while let Some(Coordinate(value)) = seq.next_element::<Coordinate>()? {
-            if count == 4 {
-                return Err(A::Error::invalid_length(5, &self));
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
+        let mut next = || seq.next_element::<Coordinate>().map(|c| c.map(|Coordinate(value)| value));
+        let Some(x) = next()? else { return Err(A::Error::invalid_length(0, &self)) };
+        let Some(y) = next()? else { return Err(A::Error::invalid_length(1, &self)) };
+        let Some(z) = next()? else { return Err(A::Error::invalid_length(2, &self)) };
+        match next()? {
+            None => {
+                // A triangle's three, not the four a first push would make room for.
+                if self.0.xyz.capacity() == 0 {
+                    self.0.xyz.reserve_exact(3);
+                }
+                self.0.xyz.push([x, y, z]);
             }
-            values[count] = Some(value);
-            count += 1;
+            Some(w) => {
+                if next()?.is_some() {
+                    return Err(A::Error::invalid_length(5, &self));
+                }
+                self.0.clip.push([x, y, z, w]);
+            }
         }
-        match values {
-            [Some(x), Some(y), Some(z), None] => Ok(VertexFile::Xyz([x, y, z])),
-            [Some(x), Some(y), Some(z), Some(w)] => Ok(VertexFile::Clip([x, y, z, w])),
-            _ => Err(A::Error::invalid_length(count, &self)),
-        }
+        Ok(())
     }
 }
 

@@ -432,6 +432,24 @@ mod tests {
         }
     }
 
+    /// A vertex of the wrong length, or with a coordinate that is not a
+    /// number, is named with its place and what was found there.
+    #[test]
+    fn a_vertex_of_the_wrong_shape_is_named() {
+        let want = "where a vertex [x, y, z] (or [x, y, z, w] in clip space) was expected";
+        for (vertex, error) in [
+            ("[]", format!("vertices[0]: 0 entries {want}")),
+            ("[0, 0]", format!("vertices[0]: 2 entries {want}")),
+            ("[0, 0, 0, 1, 2]", format!("vertices[0]: 5 entries {want}")),
+            ("[0, 0, 0, 1, true]", "vertices[0][4]: expected a number, found a boolean".to_string()),
+            ("[0, 0, null]", "vertices[0][2]: expected a number, found null".to_string()),
+        ] {
+            let text = format!(r#"{{"polygons": [{{"value": 1, "vertices": [{vertex}, [1, 0, 0], [0, 1, 0]]}}]}}"#);
+            let err = parse(&text).unwrap_err();
+            assert!(err.starts_with(&format!("s.json: polygon 1: {error} (line 1, column")), "{vertex}: {err}");
+        }
+    }
+
     #[test]
     fn errors_name_the_polygon() {
         let err = parse(r#"{"polygons": [{"value": 1, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}, {"value": 1, "vertices": [[0, 0, "abc"]]}]}"#)
