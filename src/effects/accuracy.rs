@@ -2,8 +2,10 @@
 //! compared with the exact mode, and a sweep of depth bits on nearly
 //! coplanar polygons (the Ukrainian Wikipedia's precision discussion, measured).
 //!
-//! Times are measured here, in one run, as the least of three repetitions;
-//! compare them as ratios.
+//! Times are measured here, in one run: the modes take turns in each of
+//! five rounds (`ROUNDS`) and each keeps its least, so that a busy machine slows
+//! them alike; the sweep's depths, the least of three runs each. Compare
+//! them as ratios.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -128,10 +130,11 @@ pub fn scenes(settings: &Settings) -> Result<Vec<Scene>, Error> {
     texts.iter().map(|t| Scene::from_json(t, Path::new("(accuracy set)"))).collect()
 }
 
+/// The least time of three runs of `f`, after one untimed run.
 fn timed<T>(mut f: impl FnMut() -> Result<T, Error>) -> Result<(T, Duration), Error> {
     let mut best = Duration::MAX;
     let mut result = None;
-    // One untimed run first, so no mode pays for cold caches.
+    // One untimed run first, so that the sweep's first depth pays no more for cold caches.
     f()?;
     for _ in 0..3 {
         let start = Instant::now();
@@ -157,19 +160,36 @@ fn compare(ours: &Buffers, exact: &Buffers) -> (u64, u64, u64) {
     (frame, depth, worst)
 }
 
+/// Rounds in which every mode draws the set once, in turn; a mode's time is
+/// its least (a busy machine only ever adds time, and whatever slows one
+/// round slows every mode in it alike).
+const ROUNDS: usize = 5;
+
 /// Runs every mode over the set.
 pub fn modes(scenes: &[Scene]) -> Result<Vec<ModeRow>, Error> {
     // The references, the conversions and the comparisons on every core; the
     // timed runs one after the other, on one.
     let exact: Vec<Buffers> =
         scenes.par_iter().map(|s| arith::run(s, Arith::Exact).map(|r| r.0)).collect::<Result<_, _>>()?;
+    // Each mode's input is converted first (vertices snapped, or turned into floats with
+    // their planes), as the exact mode's is when the scene is read; only the raster is timed.
+    let inputs = Arith::ALL
+        .iter()
+        .map(|&mode| scenes.par_iter().map(|s| arith::Prepared::new(s, mode)).collect::<Result<Vec<_>, _>>())
+        .collect::<Result<Vec<_>, _>>()?;
+    let raster = |inputs: &[arith::Prepared<'_>]| inputs.iter().map(arith::Prepared::raster).collect::<Vec<_>>();
+    // One untimed round first, so that no mode pays for cold caches.
+    let mut results: Vec<Vec<(Buffers, Stats)>> = inputs.iter().map(|inputs| raster(inputs)).collect();
+    let mut times = vec![Duration::MAX; inputs.len()];
+    for _ in 0..ROUNDS {
+        for (k, inputs) in inputs.iter().enumerate() {
+            let start = Instant::now();
+            results[k] = raster(inputs);
+            times[k] = times[k].min(start.elapsed());
+        }
+    }
     let mut rows = Vec::new();
-    for mode in Arith::ALL {
-        // Each mode's input is converted first (vertices snapped, or turned into floats with
-        // their planes), as the exact mode's is when the scene is read; only the raster is timed.
-        let inputs = scenes.par_iter().map(|s| arith::Prepared::new(s, mode)).collect::<Result<Vec<_>, _>>()?;
-        let (results, time) =
-            timed(|| Ok(inputs.iter().map(arith::Prepared::raster).collect::<Vec<(Buffers, Stats)>>()))?;
+    for ((&mode, results), time) in Arith::ALL.iter().zip(&results).zip(times) {
         let mut row = ModeRow { mode, time, pixels: 0, frame_mismatches: 0, depth_mismatches: 0, worst_depth_error: 0 };
         let compared: Vec<_> = results.par_iter().zip(&exact).map(|((b, _), r)| compare(b, r)).collect();
         for ((_, stats), (frame, depth, worst)) in results.iter().zip(compared) {

@@ -685,7 +685,7 @@ accuracy-header-bits = depth bits
 accuracy-header-fighting = z-fighting cells
 accuracy-header-memory = z-buffer memory (bytes)
 accuracy-header-ms = time (ms)
-accuracy-set = accuracy set: { $scenes } scenes on { $width }×{ $height } (random triangles of 4, 16, 64 and 256 px with vertices on a 1/256 grid, seed { $seed }, and 4 hard cases); times are the least of 3 runs
+accuracy-set = accuracy set: { $scenes } scenes on { $width }×{ $height } (random triangles of 4, 16, 64 and 256 px with vertices on a 1/256 grid, seed { $seed }, and 4 hard cases); each mode's time is its least of 5 rounds in which the modes take turns
 accuracy-sweep = two nearly coplanar planes crossing along x = y (world depths 0 … 1 times 2^bits levels; slopes 1/2^20 of the range per pixel), { $cells } cells:
 progress-bands = bands of tiles
 progress-polygons = polygons

@@ -643,7 +643,7 @@ accuracy-header-bits = 深度位数
 accuracy-header-fighting = z 冲突单元
 accuracy-header-memory = z 缓冲内存（字节）
 accuracy-header-ms = 时间（ms）
-accuracy-set = 精度测试集：{ $width }×{ $height } 上 { $scenes } 个场景（顶点在 1/256 网格上的 4、16、64、256 像素随机三角形，种子 { $seed }，外加 4 个难点情形）；时间取 3 次运行中的最小值
+accuracy-set = 精度测试集：{ $width }×{ $height } 上 { $scenes } 个场景（顶点在 1/256 网格上的 4、16、64、256 像素随机三角形，种子 { $seed }，外加 4 个难点情形）；各模式轮流运行 5 轮，时间取各模式的最小值
 accuracy-sweep = 两个沿 x = y 相交的近乎共面的平面（世界深度 0 … 1 乘以 2^bits 级；每像素斜率为范围的 1/2^20），{ $cells } 个单元：
 progress-bands = 条图块带
 progress-polygons = 个多边形
