@@ -26,28 +26,16 @@ impl LevelCells for EdgeRaster<'_> {
         let scene = self.scene;
         let mut stats = Stats::default();
         let limits = (nearer_sign(scene), scene.depth_max() as f32);
-        let (width, height) = (scene.width, scene.height);
-        let row_width = width as usize;
+        let size = (scene.width, scene.height);
         let mut space: Option<FloatWalker<'_, f32>> = None;
         for shape in self.shapes {
             stats.polygons += 1;
             match shape {
                 None => {}
-                // Each triangle set up as it is drawn, as the exact loop sets up its own.
-                Some(EdgeShape::Triangle(p, c)) => draw_edges(
-                    &EdgePolygon::<3>::new(p, *c, width, height),
-                    (frame, depth),
-                    row_width,
-                    limits,
-                    &mut stats,
-                ),
-                Some(EdgeShape::Quad(p, c)) => draw_edges(
-                    &EdgePolygon::<4>::new(p, *c, width, height),
-                    (frame, depth),
-                    row_width,
-                    limits,
-                    &mut stats,
-                ),
+                Some(EdgeShape::Triangle(p, c)) => {
+                    draw_edges::<3, C>((p, *c), (frame, depth), size, limits, &mut stats)
+                }
+                Some(EdgeShape::Quad(p, c)) => draw_edges::<4, C>((p, *c), (frame, depth), size, limits, &mut stats),
                 Some(EdgeShape::Other(p)) => {
                     let mut walker = match space.take() {
                         Some(walker) => walker.next(p),
@@ -62,15 +50,19 @@ impl LevelCells for EdgeRaster<'_> {
     }
 }
 
-/// One convex polygon's bounding box, row by row.
+/// One convex polygon of `N` vertices (its vertices and plane in `f32`, and
+/// Newell's exact `c`), set up as it is drawn, as the exact loop sets up its
+/// own; then its bounding box, row by row.
 #[inline(always)]
-pub(super) fn draw_edges<const N: usize, C: FrameCell>(
-    polygon: &EdgePolygon<N>,
+fn draw_edges<const N: usize, C: FrameCell>(
+    (polygon, newell_c): (&FloatPolygon<f32>, i128),
     (frame, depth): (&mut [C], &mut [u32]),
-    width: usize,
+    (width, height): (u32, u32),
     limits: (f32, f32),
     stats: &mut Stats,
 ) {
+    let polygon = EdgePolygon::<N>::new(polygon, newell_c, width, height);
+    let width = width as usize;
     let value = C::from_value(polygon.value);
     for row in polygon.rows.0..=polygon.rows.1 {
         let row_start = row as usize * width;
