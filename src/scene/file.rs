@@ -399,9 +399,9 @@ struct PolygonFile {
     vertices: VerticesFile,
 }
 
-/// A polygon's vertices as read: those given in pixel units (kept as the
-/// polygon's own, with no copy) and those in clip space; both at once is an
-/// error found in validation.
+/// A polygon's vertices as read: those given in pixel units (whose scaled
+/// points the polygon then keeps) and those in clip space; both at once is
+/// an error found in validation.
 #[derive(Debug, Default)]
 struct VerticesFile {
     xyz: Vec<[Exact; 3]>,
@@ -427,8 +427,6 @@ impl<'de> serde::de::Visitor<'de> for VerticesVisitor {
         let mut vertices = VerticesFile::default();
         // Each vertex read straight into its list: a large scene is nearly all vertices.
         while seq.next_element_seed(VertexInto(&mut vertices))?.is_some() {}
-        // The list becomes the polygon's own: no room left over past a triangle.
-        vertices.xyz.shrink_to_fit();
         Ok(vertices)
     }
 }
