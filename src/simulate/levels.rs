@@ -13,6 +13,7 @@ use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
 use crate::simulate::setup::{CORE_CACHE, Stats, fate, prefetch_ahead, prefetch_cells};
+use crate::simulate::triangle::GREATER_CONSTANTS;
 
 /// How many polygons ahead the plain loop asks for the cells of.
 const AHEAD: usize = 2;
@@ -128,7 +129,7 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
             return false;
         }
         let (whole, remainder, denominator, step_whole, step_remainder) = stepper.parts();
-        let (Some(mut whole), Some(mut remainder), Some(denominator), Some(step_whole), Some(step_remainder)) =
+        let (Some(whole), Some(remainder), Some(denominator), Some(step_whole), Some(step_remainder)) =
             (whole.to_i64(), remainder.to_i64(), denominator.to_i64(), step_whole.to_i64(), step_remainder.to_i64())
         else {
             return false;
@@ -140,19 +141,39 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         if !W::NARROW && (i128::from(denominator) >= LIMIT || reach() >= LIMIT) {
             return false;
         }
-        let test = self.test_constants();
-        let (max, value) = (i64::from(self.depth_max), self.value);
         let start = (row - self.first_row) as usize * self.width;
         let cells = start + first as usize..=start + last as usize;
-        let (tested, mut written) = (u64::from(last - first) + 1, 0u64);
+        let depth = (whole, remainder, denominator, (step_whole, step_remainder));
+        // The book's test compiled with its constants, as a small triangle's.
+        let written = if self.test == DepthTest::Greater {
+            self.span_cells::<true>(cells, depth)
+        } else {
+            self.span_cells::<false>(cells, depth)
+        };
+        self.stats.tested += u64::from(last - first) + 1;
+        self.stats.written += written;
+        true
+    }
+
+    /// A span's cells, each rewritten with its old or its new value, from the
+    /// depth at the first as whole part and remainder with its denominator and
+    /// step; `GREATER` as `LevelSink::box_rows` takes it. Returns how many
+    /// were written.
+    #[inline(always)]
+    fn span_cells<const GREATER: bool>(
+        &mut self,
+        cells: std::ops::RangeInclusive<usize>,
+        (mut whole, mut remainder, denominator, step): (i64, i64, i64, (i64, i64)),
+    ) -> u64 {
+        let test = if GREATER { GREATER_CONSTANTS } else { self.test_constants() };
+        let (max, value) = (i64::from(self.depth_max), self.value);
+        let mut written = 0u64;
         for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
             let passes = test_and_store((depth, frame), (whole, remainder, denominator), test, (max, value), true);
             written += u64::from(passes);
-            (whole, remainder) = carry_step((whole, remainder), (step_whole, step_remainder), denominator);
+            (whole, remainder) = carry_step((whole, remainder), step, denominator);
         }
-        self.stats.tested += tested;
-        self.stats.written += written;
-        true
+        written
     }
 }
 
