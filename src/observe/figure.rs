@@ -6,11 +6,9 @@
 
 use std::fmt::Write as _;
 
-use crate::numbers::Word;
 use crate::raster::convert::{Scratch, rasterize};
-use crate::raster::depth::{Depth, DepthStepper, Stored};
-use crate::raster::scan::{Crossing, Span};
-use crate::raster::sink::{PixelRect, RasterSink};
+use crate::raster::depth::Stored;
+use crate::raster::sink::{CoveredCentres, PixelRect};
 use crate::simulate::buffer::Buffers;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -491,7 +489,7 @@ fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> 
         };
         // The centres it covers, as the one rasterizer finds them under the scene's rules.
         let geometry = polygon.geometry();
-        let mut centres = Centres(Vec::new());
+        let mut centres = CoveredCentres::default();
         if !geometry.is_degenerate() && geometry.c() != 0 {
             let raster = PixelRect::raster(scene.width, scene.height);
             rasterize(geometry, scene.rules, raster, &mut scratch, &mut centres);
@@ -514,23 +512,6 @@ fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> 
         labels.push(NameLabel { text, anchor: clear.or(visible).or(inside).unwrap_or(middle) });
     }
     labels
-}
-
-/// The pixel centres a polygon covers, as the rasterizer hands them on.
-struct Centres(Vec<(u32, u32)>);
-
-impl RasterSink for Centres {
-    const OBSERVES_SCANLINES: bool = false;
-
-    fn scanline(&mut self, _: u32, _: &[Crossing], _: &[Span]) {}
-
-    fn pixel(&mut self, x: u32, y: u32, _: Depth) {
-        self.0.push((x, y));
-    }
-
-    fn span<W: Word>(&mut self, row: u32, first: u32, last: u32, _: DepthStepper<W>) {
-        self.0.extend((first..=last).map(|x| (x, row)));
-    }
 }
 
 /// The width of a bold label at font size 11.

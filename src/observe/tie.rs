@@ -3,16 +3,13 @@
 //! differently, each with the tie that decided it.
 
 use std::cmp::Ordering;
-use std::collections::BTreeSet;
 
 use num_rational::BigRational;
 use num_traits::Zero;
 
 use crate::numbers::{Exact, Q};
 use crate::raster::convert::{Scratch, rasterize};
-use crate::raster::depth::Depth;
-use crate::raster::scan::{Crossing, Span};
-use crate::raster::sink::{PixelRect, RasterSink};
+use crate::raster::sink::{CoveredCentres, PixelRect};
 use crate::rules::{Rules, Sample};
 use crate::scene::Scene;
 use crate::simulate::events::Unobserved;
@@ -121,17 +118,6 @@ pub struct RuleDifference {
     pub ties: Vec<(usize, Boundary, [Exact; 2], [Exact; 2])>,
 }
 
-#[derive(Default)]
-struct Cells(BTreeSet<(u32, u32)>);
-
-impl RasterSink for Cells {
-    const OBSERVES_SCANLINES: bool = false;
-    fn scanline(&mut self, _: u32, _: &[Crossing], _: &[Span]) {}
-    fn pixel(&mut self, x: u32, y: u32, _: Depth) {
-        self.0.insert((x, y));
-    }
-}
-
 /// For each pixel (row by row from the bottom), the polygons of `scene` that
 /// cover its centre under its rules, in scene order (none for a polygon
 /// those rules do not draw: edge-on, culled, below the area bound).
@@ -143,7 +129,7 @@ fn coverage(scene: &Scene) -> Vec<Vec<usize>> {
         if crate::simulate::setup::fate(scene, index) != crate::simulate::events::Fate::Drawn {
             continue;
         }
-        let mut cells = Cells::default();
+        let mut cells = CoveredCentres::default();
         rasterize(scene.polygons[index].geometry(), scene.rules, rect, &mut scratch, &mut cells);
         for (x, y) in cells.0 {
             covering[y as usize * scene.width as usize + x as usize].push(index);

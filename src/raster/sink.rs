@@ -29,6 +29,27 @@ pub trait RasterSink {
     }
 }
 
+/// The pixel centres a polygon covers, `(x, y)` in the order the scan
+/// converter hands them on (row by row, left to right): for the observers
+/// that ask only which centres one rasterizer covers.
+#[derive(Debug, Default)]
+pub struct CoveredCentres(pub Vec<(u32, u32)>);
+
+impl RasterSink for CoveredCentres {
+    const OBSERVES_SCANLINES: bool = false;
+
+    fn scanline(&mut self, _: u32, _: &[Crossing], _: &[Span]) {}
+
+    fn pixel(&mut self, x: u32, y: u32, _: Depth) {
+        self.0.push((x, y));
+    }
+
+    /// The span's centres, without stepping a depth nobody reads.
+    fn span<W: Word>(&mut self, row: u32, first: u32, last: u32, _: DepthStepper<W>) {
+        self.0.extend((first..=last).map(|x| (x, row)));
+    }
+}
+
 /// A rectangle of pixels, inclusive: the raster, or one segment of it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct PixelRect {
