@@ -109,8 +109,13 @@ impl Geometry {
                 let factor = if *v.denom() == 1 { scale } else { scale / v.denom() };
                 Some(v.numer().checked_mul(factor)?).filter(|s| s.abs() <= MAX_SCALED)
             };
-            let points = vertices.iter().map(|v| Some([scaled(&v[0])?, scaled(&v[1])?, scaled(&v[2])?]));
-            Some((denominator, points.collect::<Option<Points>>()?))
+            // A loop, not a collect through `Option`: that took a third of a
+            // large scene's geometry (callgrind, 930 instructions a triangle).
+            let mut points = Points::new();
+            for v in vertices {
+                points.push([scaled(&v[0])?, scaled(&v[1])?, scaled(&v[2])?]);
+            }
+            Some((denominator, points))
         };
         let Some((denominator, points)) = words() else {
             return Geometry::new_big(&vertices.iter().map(|v| v.each_ref().map(C::big)).collect::<Vec<_>>());

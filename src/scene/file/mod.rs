@@ -1,6 +1,12 @@
 //! The scene file's JSON (serde types, exact numbers, unknown keys refused)
 //! and its validation, once, into the domain type [`Scene`].
 
+mod numbers;
+mod pieces;
+mod strict;
+#[cfg(test)]
+mod tests;
+
 use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
@@ -8,14 +14,16 @@ use serde::Deserialize;
 use serde::de::Error as _;
 
 use crate::error::{Error, PolygonOrigin, PolygonProblem};
+use crate::geometry::equation::GeometryError;
 use crate::geometry::plane::Geometry;
-use crate::numbers::{Exact, Q, fraction, parse_number};
+use crate::numbers::{Exact, Q, fraction};
 use crate::raster::depth::{DepthTest, Stored};
 use crate::rules::{DepthStore, Preset, Rules};
 use crate::scene::clip_space::Clipped;
 use crate::scene::perspective::{Clip, Perspective};
 use crate::scene::text::printable;
 use crate::scene::{Antialias, Effects, MAX_CELLS, MAX_SIDE, Polygon, Scene, Winding, Window, max_for_bits};
+use numbers::{Coordinate, Number, ReadNumber};
 
 /// Reads and validates scene JSON; `path` is used in error messages only.
 pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
@@ -26,6 +34,16 @@ pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
             message: words!("scene-not-object", found = words!(found)),
         });
     }
+    // A scene of the common shape is read in pieces on every core; any
+    // other, or one with an error, the plain way, which names the error.
+    match pieces::read(text, path) {
+        Some(scene) => Ok(scene),
+        None => plain(text, path),
+    }
+}
+
+/// Reads and validates scene JSON of any shape, naming the first error.
+fn plain(text: &str, path: &Path) -> Result<Scene, Error> {
     // Read at full speed first: the settings, with each polygon's text only
     // found; then each polygon read from its text and made at once, on every
     // core. Only a file with a polygon that does not read is read again, in
@@ -35,10 +53,7 @@ pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
     if let Ok(file) = SceneFile::<&serde_json::value::RawValue>::deserialize(&mut deserializer)
         && deserializer.end().is_ok()
     {
-        let made = file.validate(path, |text, index, frame| match serde_json::from_str::<PolygonFile>(text.get()) {
-            Ok(polygon) => polygon.validate(index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e))),
-            Err(_) => Err(Unmade::Unread),
-        });
+        let made = file.validate(path, |text, index, frame| from_text(text.get(), index, frame, path));
         match made {
             Ok(scene) => return Ok(scene),
             Err(Unmade::Invalid(error)) => return Err(*error),
@@ -145,149 +160,6 @@ fn describe_location(path: &str) -> String {
         };
     }
     path.to_string()
-}
-
-/// An exact number as written in a scene file (a setting: a 128-bit
-/// fraction, at most 30 significant digits).
-#[derive(Debug, Clone, Copy)]
-struct Number(Q);
-
-/// A vertex coordinate as written: exact, of any size up to
-/// [`crate::numbers::MAX_BIG_DIGITS`] digits.
-#[derive(Debug, Clone)]
-struct Coordinate(Exact);
-
-/// How a number of each kind is read from its text or a JSON integer.
-trait ReadNumber: Sized {
-    fn parse(text: &str) -> Result<Self, crate::numbers::NumberError>;
-    fn integer(value: i128) -> Self;
-}
-
-impl ReadNumber for Number {
-    fn parse(text: &str) -> Result<Number, crate::numbers::NumberError> {
-        parse_number(text).map(Number)
-    }
-
-    fn integer(value: i128) -> Number {
-        Number(Q::from_integer(value))
-    }
-}
-
-impl ReadNumber for Coordinate {
-    fn parse(text: &str) -> Result<Coordinate, crate::numbers::NumberError> {
-        crate::numbers::parse_exact(text).map(Coordinate)
-    }
-
-    fn integer(value: i128) -> Coordinate {
-        Coordinate(Exact::Word(Q::from_integer(value)))
-    }
-}
-
-impl<'de> Deserialize<'de> for Number {
-    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Number, D::Error> {
-        deserializer.deserialize_any(NumberVisitor(std::marker::PhantomData))
-    }
-}
-
-impl<'de> Deserialize<'de> for Coordinate {
-    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Coordinate, D::Error> {
-        deserializer.deserialize_any(NumberVisitor(std::marker::PhantomData))
-    }
-}
-
-/// The key under which serde_json's `arbitrary_precision` hands over a JSON
-/// number's digits (its private number token).
-const NUMBER_TOKEN: &str = "$serde_json::private::Number";
-
-/// Reads a number straight from the parser, without building a JSON value:
-/// a JSON number's digits, or a string holding a fraction or a decimal.
-struct NumberVisitor<T>(std::marker::PhantomData<T>);
-
-impl<'de, T: ReadNumber> serde::de::Visitor<'de> for NumberVisitor<T> {
-    type Value = T;
-
-    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("a number, or a string holding a fraction or a decimal")
-    }
-
-    fn visit_str<E: serde::de::Error>(self, text: &str) -> Result<T, E> {
-        T::parse(text).map_err(E::custom)
-    }
-
-    fn visit_i64<E: serde::de::Error>(self, value: i64) -> Result<T, E> {
-        Ok(T::integer(i128::from(value)))
-    }
-
-    fn visit_u64<E: serde::de::Error>(self, value: u64) -> Result<T, E> {
-        Ok(T::integer(i128::from(value)))
-    }
-
-    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<T, A::Error> {
-        // The key and the digits are looked at where the parser holds them: a
-        // large scene is nearly all numbers, and no string is built for either.
-        match map.next_key_seed(IsNumberToken)? {
-            Some(true) => map.next_value_seed(DigitsSeed(std::marker::PhantomData)),
-            _ => Err(A::Error::custom(words!("number-found-object"))),
-        }
-    }
-
-    fn visit_bool<E: serde::de::Error>(self, _: bool) -> Result<T, E> {
-        Err(E::custom(words!("number-found-bool")))
-    }
-
-    fn visit_unit<E: serde::de::Error>(self) -> Result<T, E> {
-        Err(E::custom(words!("number-found-null")))
-    }
-
-    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, _: A) -> Result<T, A::Error> {
-        Err(A::Error::custom(words!("number-found-list")))
-    }
-}
-
-/// Whether a map's key is serde_json's number token, without copying it.
-struct IsNumberToken;
-
-impl<'de> serde::de::DeserializeSeed<'de> for IsNumberToken {
-    type Value = bool;
-
-    fn deserialize<D: serde::Deserializer<'de>>(self, deserializer: D) -> Result<bool, D::Error> {
-        deserializer.deserialize_str(self)
-    }
-}
-
-impl serde::de::Visitor<'_> for IsNumberToken {
-    type Value = bool;
-
-    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("a key")
-    }
-
-    fn visit_str<E: serde::de::Error>(self, key: &str) -> Result<bool, E> {
-        Ok(key == NUMBER_TOKEN)
-    }
-}
-
-/// A number token's digits, parsed where the parser holds them.
-struct DigitsSeed<T>(std::marker::PhantomData<T>);
-
-impl<'de, T: ReadNumber> serde::de::DeserializeSeed<'de> for DigitsSeed<T> {
-    type Value = T;
-
-    fn deserialize<D: serde::Deserializer<'de>>(self, deserializer: D) -> Result<T, D::Error> {
-        deserializer.deserialize_str(self)
-    }
-}
-
-impl<T: ReadNumber> serde::de::Visitor<'_> for DigitsSeed<T> {
-    type Value = T;
-
-    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("a number's digits")
-    }
-
-    fn visit_str<E: serde::de::Error>(self, digits: &str) -> Result<T, E> {
-        T::parse(digits).map_err(E::custom)
-    }
 }
 
 /// The scene file as read: its settings, and its polygons as `P` (each
@@ -484,6 +356,14 @@ impl<P: Send> SceneFile<P> {
         path: &Path,
         make: impl Fn(P, usize, &Frame) -> Result<Polygon, Unmade> + Sync,
     ) -> Result<Scene, Unmade> {
+        let (scene, frame, polygons) = self.settings(path)?;
+        with_made(scene, &frame, polygons, make)
+    }
+
+    /// Its settings validated: the scene they make, with no polygons yet
+    /// ([`Scene::with_polygons`]), what its polygons are made in, and its
+    /// polygons as read.
+    fn settings(self, path: &Path) -> Result<(Scene, Frame, Vec<P>), Unmade> {
         let setting = |key: &'static str, message: String| {
             Unmade::Invalid(Box::new(Error::Setting { path: path.to_owned(), key, message }))
         };
@@ -623,24 +503,7 @@ impl<P: Send> SceneFile<P> {
             size: (width, height),
             corner_samples: rules.sample == crate::rules::Sample::Corner,
         };
-        let lang = crate::words::language();
-        let made: Vec<Result<Polygon, Unmade>> = self
-            .polygons
-            .into_par_iter()
-            .enumerate()
-            .map(|(index, polygon)| crate::words::with_language(lang, || make(polygon, index, &frame)))
-            .collect();
-        if made.iter().any(|polygon| matches!(polygon, Err(Unmade::Unread))) {
-            return Err(Unmade::Unread);
-        }
-        if let Some(position) = made.iter().position(Result::is_err) {
-            return Err(made.into_iter().nth(position).and_then(Result::err).expect("an error at this position"));
-        }
-        // In place (a polygon and a made one take the same room): no second list.
-        let polygons: Vec<Polygon> =
-            made.into_iter().map(|polygon| polygon.unwrap_or_else(|_| unreachable!("no polygon failed"))).collect();
-        let transparency = polygons.iter().any(|p| p.opacity.is_some());
-        Ok(Scene {
+        let scene = Scene {
             width,
             height,
             frame_bits,
@@ -652,15 +515,56 @@ impl<P: Send> SceneFile<P> {
                 cull: self.effects.cull,
                 perspective,
                 antialias,
-                transparency,
+                transparency: false,
             },
             rules,
             window,
             depth_range,
             clear_depth,
-            polygons,
-        })
+            polygons: Vec::new(),
+        };
+        Ok((scene, frame, self.polygons))
     }
+}
+
+/// The scene of [`SceneFile::settings`] with `polygons` made by `make` on
+/// every core, each thread in this thread's language (transparency is an
+/// effect when one of them has an opacity); the error named is that of the
+/// first polygon in the file that failed.
+fn with_made<P: Send>(
+    mut scene: Scene,
+    frame: &Frame,
+    polygons: Vec<P>,
+    make: impl Fn(P, usize, &Frame) -> Result<Polygon, Unmade> + Sync,
+) -> Result<Scene, Unmade> {
+    let lang = crate::words::language();
+    let made: Vec<Result<Polygon, Unmade>> = polygons
+        .into_par_iter()
+        .enumerate()
+        .map(|(index, polygon)| crate::words::with_language(lang, || make(polygon, index, frame)))
+        .collect();
+    if made.iter().any(|polygon| matches!(polygon, Err(Unmade::Unread))) {
+        return Err(Unmade::Unread);
+    }
+    if let Some(position) = made.iter().position(Result::is_err) {
+        return Err(made.into_iter().nth(position).and_then(Result::err).expect("an error at this position"));
+    }
+    // In place (a polygon and a made one take the same room): no second list.
+    let polygons: Vec<Polygon> =
+        made.into_iter().map(|polygon| polygon.unwrap_or_else(|_| unreachable!("no polygon failed"))).collect();
+    scene.effects.transparency = polygons.iter().any(|p| p.opacity.is_some());
+    scene.polygons = polygons;
+    Ok(scene)
+}
+
+/// The polygon whose text is `text`, made; [`Unmade::Unread`] when the text
+/// does not read as a polygon.
+fn from_text(text: &str, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Unmade> {
+    let polygon = match strict::polygon(text) {
+        Some(polygon) => polygon,
+        None => serde_json::from_str::<PolygonFile>(text).map_err(|_| Unmade::Unread)?,
+    };
+    polygon.validate(index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
 }
 
 /// What a polygon's validation needs to know of the scene.
@@ -691,6 +595,14 @@ impl PolygonFile {
             name: name.to_owned(),
             problem: Box::new(problem),
         };
+        // The name is given to the polygon once made: no copy kept for an error that did not happen.
+        let named = |made: Result<Polygon, GeometryError>, name: String| match made {
+            Ok(mut polygon) => {
+                polygon.name = name;
+                Ok(polygon)
+            }
+            Err(e) => Err(fail(&name, PolygonProblem::Geometry(e))),
+        };
         let frame_bits = frame.bits;
         if self.value > u64::from(max_for_bits(frame_bits)) {
             return Err(fail(&name, PolygonProblem::ValueTooWide { value: self.value, frame_bits }));
@@ -715,8 +627,7 @@ impl PolygonFile {
                 Clipped::Outside => Ok(Polygon::outside_view(name, value, opacity)),
                 Clipped::Inside { vertices, inside } => {
                     let clip = Clip::View { inside, of: clip_space.len() };
-                    Polygon::new(name.clone(), value, vertices, opacity, None, clip)
-                        .map_err(|e| fail(&name, PolygonProblem::Geometry(e)))
+                    named(Polygon::new(String::new(), value, vertices, opacity, None, clip), name)
                 }
             };
         };
@@ -734,7 +645,7 @@ impl PolygonFile {
             }
         }
         if vertices.len() < 3 {
-            let error = crate::geometry::equation::GeometryError::TooFewVertices(vertices.len());
+            let error = GeometryError::TooFewVertices(vertices.len());
             return Err(fail(&name, PolygonProblem::Geometry(error)));
         }
         let geometry_error = |e| fail(&name, PolygonProblem::Geometry(e));
@@ -747,14 +658,14 @@ impl PolygonFile {
                 if clip == Clip::Away {
                     // Nothing is drawn; keep the eye-space polygon for reports.
                     let eye_vertices = Some(vertices.clone());
-                    return Polygon::new(name.clone(), self.value as u32, vertices, opacity, eye_vertices, clip)
-                        .map_err(geometry_error);
+                    let made = Polygon::new(String::new(), self.value as u32, vertices, opacity, eye_vertices, clip);
+                    return named(made, name);
                 }
                 let (width, height) = frame.size;
                 let projected = kept.iter().map(|v| perspective.project(v, width, height)).collect();
                 (Some(std::mem::replace(&mut vertices, projected)), clip)
             }
         };
-        Polygon::new(name.clone(), self.value as u32, vertices, opacity, eye_vertices, clip).map_err(geometry_error)
+        named(Polygon::new(String::new(), self.value as u32, vertices, opacity, eye_vertices, clip), name)
     }
 }
