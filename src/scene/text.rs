@@ -65,14 +65,50 @@ pub fn read_bytes(path: &Path, links: Links) -> Result<Vec<u8>, Error> {
         if metadata.len() > MAX_INPUT_BYTES {
             return Err(Error::TooLarge { path: path.to_owned(), limit: MAX_INPUT_BYTES });
         }
-        // Room for the length it claims (and one byte more, to see it grow), in one allocation.
-        bytes.reserve_exact(metadata.len() as usize + 1);
-        file.take(MAX_INPUT_BYTES + 1).read_to_end(&mut bytes).map_err(failed)?;
+        match read_in_halves(&file, metadata.len()) {
+            Some(read) => bytes = read,
+            None => {
+                // Room for the length it claims (and one byte more, to see it grow), in one allocation.
+                bytes.reserve_exact(metadata.len() as usize + 1);
+                let mut file = file;
+                std::io::Seek::rewind(&mut file).map_err(failed)?;
+                file.take(MAX_INPUT_BYTES + 1).read_to_end(&mut bytes).map_err(failed)?;
+            }
+        }
     }
     if bytes.len() as u64 > MAX_INPUT_BYTES {
         return Err(Error::TooLarge { path: path.to_owned(), limit: MAX_INPUT_BYTES });
     }
     Ok(bytes)
+}
+
+/// Files at least this long are read in two halves at once, where the
+/// system allows it: copying a file out of the page cache into fresh memory
+/// takes a core's time (the 12 MB scene of 100,000 triangles: about 14 ms on
+/// one thread).
+const READ_IN_HALVES: u64 = 1 << 22;
+
+/// A file of `length` bytes read in two halves on two threads, when it is
+/// that long and still exactly that long once read; `None` otherwise (a file
+/// that grew or shrank meanwhile, or a read that failed), and the caller
+/// reads it from the start as it reads any file.
+#[cfg(unix)]
+fn read_in_halves(file: &std::fs::File, length: u64) -> Option<Vec<u8>> {
+    use std::os::unix::fs::FileExt;
+    if length < READ_IN_HALVES {
+        return None;
+    }
+    let mut bytes = vec![0; usize::try_from(length).ok()?];
+    let half = bytes.len() / 2;
+    let (first, second) = bytes.split_at_mut(half);
+    let (first, second) = rayon::join(|| file.read_exact_at(first, 0), || file.read_exact_at(second, half as u64));
+    let mut past_the_end = [0];
+    (first.is_ok() && second.is_ok() && file.read_at(&mut past_the_end, length).ok()? == 0).then_some(bytes)
+}
+
+#[cfg(not(unix))]
+fn read_in_halves(_file: &std::fs::File, _length: u64) -> Option<Vec<u8>> {
+    None
 }
 
 /// Opens a file for reading without waiting for a writer: opening a FIFO
@@ -110,6 +146,22 @@ pub fn printable(text: &str) -> Cow<'_, str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A long file is read in halves, and whole; one that is not the length
+    /// it was (grown, or shrunk) is left to the reading from the start.
+    #[test]
+    fn a_long_file_is_read_in_halves_only_at_its_length() {
+        let path = std::env::temp_dir().join(format!("zsim-halves-{}.txt", std::process::id()));
+        let content: Vec<u8> = (0..READ_IN_HALVES + 12_345).map(|i| (i % 251) as u8).collect();
+        std::fs::write(&path, &content).unwrap();
+        let file = std::fs::File::open(&path).unwrap();
+        let length = content.len() as u64;
+        assert!(read_in_halves(&file, length) == Some(content.clone()));
+        assert!(read_in_halves(&file, length - 1).is_none(), "grown since its length was taken");
+        assert!(read_in_halves(&file, length + 1).is_none(), "shrunk since its length was taken");
+        assert_eq!(read_bytes(&path, Links::Follow).unwrap(), content);
+        std::fs::remove_file(&path).unwrap();
+    }
 
     #[test]
     fn control_characters_are_escaped_and_others_kept() {
