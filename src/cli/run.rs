@@ -46,10 +46,10 @@ pub struct RunArgs {
     /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (the Russian lecture notes).
     #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
     segments: Option<zsim::variants::Segments>,
-    /// With --format none, --final or --after: draw tile by tile, N×N pixels (default 256 when more than one thread draws or the buffers outgrow 32 MiB; 1 to 7 draw as 8, whose bins cost less than the buffers).
+    /// With --format none, --final or --after: draw tile by tile, N×N pixels (default 256 when more than one thread draws or the buffers outgrow 8 MiB; 1 to 7 draw as 8, whose bins cost less than the buffers).
     #[arg(long, value_name = "N")]
     tile: Option<u32>,
-    /// With --format none, --final or --after: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon while the buffers fit 32 MiB). The result is the same for every count.
+    /// With --format none, --final or --after: how many threads draw the tiles (default: all cores; 1 without --tile draws polygon by polygon while the buffers fit 8 MiB). The result is the same for every count.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
     /// Draw the scene with the machine's GPU through this API (gl: OpenGL, e.g. Mesa's llvmpipe; vulkan, with the `vulkan` feature) and list every cell where it shows another polygon than zsim under the scene's rules or the API's preset, and why.

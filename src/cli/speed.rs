@@ -18,7 +18,7 @@ pub struct SpeedArgs {
     /// How many threads zsim draws on (1: polygon by polygon, the loop `zsim run --threads 1` runs). llvmpipe is given as many through LP_NUM_THREADS (0 for one: it then rasterizes on the calling thread) unless the environment sets it.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: u32,
-    /// Draw in tiles of N×N pixels (default as `zsim run` draws: tiles of 256 with more than one thread or buffers larger than 32 MiB, else polygon by polygon).
+    /// Draw in tiles of N×N pixels (default as `zsim run` draws: tiles of 256 with more than one thread or buffers larger than 8 MiB, else polygon by polygon).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(8..=65536))]
     tile: Option<u32>,
 }

@@ -63,9 +63,11 @@ pub(super) fn prefetch<T>(data: *const T) {
 pub(super) const CORE_CACHE: usize = 256 << 10;
 
 /// A processor's last-level cache (this machine's, an AMD EPYC: 32 MiB of
-/// L3, a common size): buffers larger than this, drawn polygon by polygon,
-/// send each triangle's rows to memory and back, so one thread draws them in
-/// tiles too ([`crate::simulate::simulation::Simulation::default_tile`]).
+/// L3, a common size), shared with every other program the machine runs:
+/// buffers larger than a quarter of it, drawn polygon by polygon, send each
+/// triangle's rows to memory and back as soon as other work fills the rest,
+/// so one thread draws them in tiles too
+/// ([`crate::simulate::simulation::Simulation::default_tile`]).
 pub(super) const LAST_LEVEL_CACHE: usize = 32 << 20;
 
 /// Asks for the cells of polygon `index`'s bounding box, row by row, in

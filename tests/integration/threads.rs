@@ -118,7 +118,8 @@ fn buffers_cleared_on_several_threads_are_the_ones_one_thread_clears() {
 }
 
 /// What draws when no tile is asked for: one thread polygon by polygon while
-/// both buffers fit a last-level cache (32 MiB), in tiles of 256 beyond it
+/// both buffers take at most a quarter of a last-level cache (8 MiB, the
+/// rest left to other work), in tiles of 256 beyond it
 /// (there one triangle's rows lie far apart and go to memory and back), and
 /// more threads always in tiles of 256.
 #[test]
@@ -129,10 +130,12 @@ fn one_thread_draws_buffers_beyond_the_cache_in_tiles() {
         let scene = Scene::from_json(&spec.json(), Path::new("side.json")).expect("a valid random scene");
         Simulation::new(&scene).default_tile(threads)
     };
-    // 2048² with 1-byte frame cells: 20 MiB; with 4-byte ones 32 MiB, still within.
-    assert_eq!(tile(2048, 8, 1), 0);
-    assert_eq!(tile(2048, 24, 1), 0);
-    assert_eq!(tile(2049, 24, 1), 256, "32 MiB and a row more");
+    // A quarter of the last-level cache: 8 MiB. 1024² with 4-byte frame cells
+    // (and 4-byte depth cells) is 8 MiB, still within; with 1-byte ones 5 MiB.
+    assert_eq!(tile(1024, 8, 1), 0);
+    assert_eq!(tile(1024, 24, 1), 0);
+    assert_eq!(tile(1025, 24, 1), 256, "8 MiB and a row more");
+    assert_eq!(tile(2048, 8, 1), 256);
     assert_eq!(tile(4096, 8, 1), 256);
     assert_eq!(tile(32, 2, 2), 256);
 }
