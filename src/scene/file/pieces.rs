@@ -31,6 +31,12 @@ use crate::scene::Scene;
 /// scene keep every core busy to the end.
 const PIECE_BYTES: usize = 1 << 18;
 
+/// The longest polygon text a piece reads past its end (about 8,000
+/// vertices); a longer polygon there is read the plain way. So each piece
+/// looks at no more than its own text and this much, even from a false start
+/// in a string that never ends.
+const LONGEST_POLYGON: usize = 1 << 18;
+
 /// The scene, its polygons found in pieces on every core; `None` when the
 /// file is not of the common shape or has an error (see the module's doc).
 pub(super) fn read(text: &str, path: &Path) -> Option<Scene> {
@@ -44,16 +50,18 @@ pub(super) fn read_in(text: &str, path: &Path, piece_bytes: usize) -> Option<Sce
     let (scene, frame, _) = file.settings(path).ok()?;
     let bytes = text.as_bytes();
     let starts = piece_starts(bytes, first, piece_bytes);
+    // A piece reads up to the next piece's start; its last polygon may run on past it.
     let stop = |i: usize| starts.get(i + 1).copied().unwrap_or(usize::MAX);
+    let limit = |i: usize| stop(i).saturating_add(LONGEST_POLYGON);
     let mut pieces: Vec<Option<Piece>> =
-        starts.par_iter().enumerate().map(|(i, &start)| Some(piece(bytes, start, stop(i)))).collect();
+        starts.par_iter().enumerate().map(|(i, &start)| Some(piece(bytes, start, stop(i), limit(i)))).collect();
     let mut polygons: Vec<&str> = Vec::new();
     let mut at = first;
     for i in 0.. {
         let piece = match pieces.get_mut(i).and_then(Option::take) {
             Some(piece) if piece.start == at => piece,
             // Its start was not a polygon's: go on from where the last piece ended.
-            _ => self::piece(bytes, at, stop(i)),
+            _ => self::piece(bytes, at, stop(i), limit(i)),
         };
         polygons.extend(piece.polygons.iter().map(|&(start, end)| &text[start..end]));
         match piece.end {
@@ -165,8 +173,11 @@ enum End {
 }
 
 /// Finds polygon after polygon from `start`, until one starts at or past
-/// `stop` or the list ends.
-fn piece(bytes: &[u8], start: usize, stop: usize) -> Piece {
+/// `stop` or the list ends; nothing at or past `limit` is looked at, so that
+/// a false start (in a string that does not end, say) cannot send every
+/// piece to the end of the file.
+fn piece(bytes: &[u8], start: usize, stop: usize, limit: usize) -> Piece {
+    let bytes = &bytes[..limit.min(bytes.len())];
     let mut piece = Piece { start, polygons: Vec::new(), end: End::Failed };
     let mut at = start;
     piece.end = loop {
@@ -214,5 +225,20 @@ fn object_end(bytes: &[u8], start: usize) -> Option<usize> {
             }
             at += 2;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A polygon is looked for up to a piece's limit and no further: a text
+    /// that ends only past it is left to the plain way.
+    #[test]
+    fn a_piece_looks_no_further_than_its_limit() {
+        let text = format!(r#"{{"name": "{}", "value": 1, "vertices": []}}]"#, "x".repeat(100));
+        let bytes = text.as_bytes();
+        assert!(matches!(piece(bytes, 0, 10, bytes.len()).end, End::Closed(end) if end == bytes.len()));
+        assert!(matches!(piece(bytes, 0, 10, 50).end, End::Failed));
     }
 }
