@@ -156,6 +156,22 @@ fn usage_errors_exit_with_2() {
     );
 }
 
+/// A polygon that does not read is named before an earlier one that reads
+/// and is not valid: the file is read again in one piece to say where, as a
+/// reader that stops at the first JSON it cannot take would.
+#[test]
+fn a_polygon_that_does_not_read_is_named_before_an_earlier_invalid_one() {
+    let invalid = r#"{"name": "a", "value": 9, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}"#;
+    let unread = r#"{"name": "b", "value": 1, "vertices": "x"}"#;
+    let (dir, name) = scene_file("both.json", &format!(r#"{{"polygons": [{invalid}, {unread}]}}"#));
+    let run = crate::zsim_with(Some(&dir), &["run", &name], &[("LANG", "C.UTF-8")]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert_eq!(
+        run.stderr,
+        "zsim: both.json: polygon 2: vertices: invalid type: found the string \"x\" where a list was expected (line 1, column 129)\n"
+    );
+}
+
 /// Polygons are validated on every core: when several are wrong, the first
 /// in the file is named, whichever thread found which, and its message is in
 /// the reader's language, as on one thread.

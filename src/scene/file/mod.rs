@@ -530,7 +530,8 @@ impl<P: Send> SceneFile<P> {
 /// The scene of [`SceneFile::settings`] with `polygons` made by `make` on
 /// every core, each thread in this thread's language (transparency is an
 /// effect when one of them has an opacity); the error named is that of the
-/// first polygon in the file that failed.
+/// first polygon in the file that failed, and any polygon that did not read
+/// comes first ([`Unmade::Unread`]: the file is then read again to say where).
 fn with_made<P: Send>(
     mut scene: Scene,
     frame: &Frame,
@@ -538,21 +539,36 @@ fn with_made<P: Send>(
     make: impl Fn(P, usize, &Frame) -> Result<Polygon, Unmade> + Sync,
 ) -> Result<Scene, Unmade> {
     let lang = crate::words::language();
-    let made: Vec<Result<Polygon, Unmade>> = polygons
+    // Each polygon made straight into its place in the list, no second pass
+    // over it: a polygon that failed leaves a stand-in there and its error
+    // aside, and the list is then dropped.
+    let failed = std::sync::Mutex::new(Vec::new());
+    let transparency = std::sync::atomic::AtomicBool::new(false);
+    let polygons: Vec<Polygon> = polygons
         .into_par_iter()
         .enumerate()
-        .map(|(index, polygon)| crate::words::with_language(lang, || make(polygon, index, frame)))
+        .map(|(index, polygon)| match crate::words::with_language(lang, || make(polygon, index, frame)) {
+            Ok(polygon) => {
+                if polygon.opacity.is_some() {
+                    transparency.store(true, std::sync::atomic::Ordering::Relaxed);
+                }
+                polygon
+            }
+            Err(unmade) => {
+                failed.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push((index, unmade));
+                Polygon::outside_view(String::new(), 0, None)
+            }
+        })
         .collect();
-    if made.iter().any(|polygon| matches!(polygon, Err(Unmade::Unread))) {
+    let mut failed = failed.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if failed.iter().any(|(_, unmade)| matches!(unmade, Unmade::Unread)) {
         return Err(Unmade::Unread);
     }
-    if let Some(position) = made.iter().position(Result::is_err) {
-        return Err(made.into_iter().nth(position).and_then(Result::err).expect("an error at this position"));
+    failed.sort_unstable_by_key(|(index, _)| *index);
+    if let Some((_, unmade)) = failed.into_iter().next() {
+        return Err(unmade);
     }
-    // In place (a polygon and a made one take the same room): no second list.
-    let polygons: Vec<Polygon> =
-        made.into_iter().map(|polygon| polygon.unwrap_or_else(|_| unreachable!("no polygon failed"))).collect();
-    scene.effects.transparency = polygons.iter().any(|p| p.opacity.is_some());
+    scene.effects.transparency = transparency.into_inner();
     scene.polygons = polygons;
     Ok(scene)
 }
