@@ -13,7 +13,7 @@ use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
 use crate::simulate::setup::{CORE_CACHE, Stats, fate, prefetch_ahead, prefetch_cells};
-use crate::simulate::triangle::GREATER_CONSTANTS;
+use crate::simulate::triangle::{GREATER_CONSTANTS, test_constants};
 
 /// How many polygons ahead the plain loop asks for the cells of.
 const AHEAD: usize = 2;
@@ -165,7 +165,7 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         cells: std::ops::RangeInclusive<usize>,
         (mut whole, mut remainder, denominator, step): (i64, i64, i64, (i64, i64)),
     ) -> u64 {
-        let test = if GREATER { GREATER_CONSTANTS } else { self.test_constants() };
+        let test = if GREATER { GREATER_CONSTANTS } else { test_constants(self.test) };
         let (max, value) = (i64::from(self.depth_max), self.value);
         let mut written = 0u64;
         for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
@@ -228,7 +228,7 @@ impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
 
 /// One cell of a branch-free loop: the depth `whole + remainder/denominator`
 /// (`0 ≤ remainder < denominator`) against the stored level with the test's
-/// constants (`LevelSink::test_constants`); both cells are rewritten with
+/// constants (`triangle::test_constants`); both cells are rewritten with
 /// their old or their new value, so nothing is guessed. `covered` false
 /// leaves them as they are. Returns whether the cell was written.
 #[inline(always)]
@@ -239,7 +239,7 @@ pub(super) fn test_and_store<F: FrameCell>(
     (max, value): (i64, F),
     covered: bool,
 ) -> bool {
-    // The ceiling or the floor, as `LevelSink::test_constants` explains.
+    // The ceiling or the floor, as `triangle::test_constants` explains.
     let v = whole + i64::from(use_ceiling & (remainder != 0));
     let passes = covered & (sign * (v - i64::from(*depth)) > threshold);
     let rounded = (whole + i64::from(2 * remainder >= denominator)).clamp(0, max) as u32;

@@ -147,11 +147,6 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         }
         (tested, written)
     }
-
-    /// The depth test's constants ([`test_constants`]).
-    pub(super) fn test_constants(&self) -> (bool, i64, i64) {
-        test_constants(self.test)
-    }
 }
 
 /// [`test_constants`] of `z > stored`, the book's test.
@@ -163,7 +158,7 @@ pub(super) const GREATER_CONSTANTS: (bool, i64, i64) = (true, 1, 0);
 /// `z < s ⇔ ⌊z⌋ < s`, `z ≤ s ⇔ ⌈z⌉ ≤ s`; so each test is
 /// `sign·(v − s) > threshold` with `v` the ceiling (first value `true`) or
 /// the floor, `sign` ±1 and `threshold` 0 (strict) or −1 (or equal).
-fn test_constants(test: DepthTest) -> (bool, i64, i64) {
+pub(super) fn test_constants(test: DepthTest) -> (bool, i64, i64) {
     let use_ceiling = matches!(test, DepthTest::Greater | DepthTest::LessEqual);
     let sign: i64 = if test.larger_is_nearer() { 1 } else { -1 };
     let threshold = match test {

@@ -573,6 +573,14 @@ fn with_made<P: Send>(
     Ok(scene)
 }
 
+/// JSON's white space.
+const JSON_SPACE: &[u8] = b" \t\n\r";
+
+/// Past JSON's white space from `at`.
+fn after_space(bytes: &[u8], at: usize) -> usize {
+    at + bytes.get(at..).unwrap_or_default().iter().take_while(|b| JSON_SPACE.contains(b)).count()
+}
+
 /// The polygon whose text is `text`, made; [`Unmade::Unread`] when the text
 /// does not read as a polygon.
 fn from_text(text: &str, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Unmade> {

@@ -24,7 +24,7 @@ use std::path::Path;
 
 use rayon::prelude::*;
 
-use super::{SceneFile, from_text, with_made};
+use super::{JSON_SPACE, SceneFile, after_space, from_text, with_made};
 use crate::scene::Scene;
 
 /// The text a piece goes through, at least: a few dozen pieces on a large
@@ -119,11 +119,6 @@ fn value_at<'a, T: serde::Deserialize<'a>>(text: &'a str, at: usize) -> Option<(
     Some((value, at + json.byte_offset()))
 }
 
-/// Past JSON's white space from `at`.
-fn after_space(bytes: &[u8], at: usize) -> usize {
-    at + bytes.get(at..).unwrap_or_default().iter().take_while(|b| JSON_SPACE.contains(b)).count()
-}
-
 /// Where each piece starts: the first polygon, then for each cut
 /// `piece_bytes` (at least 1) after the last start, the first `{` after it
 /// that follows a `,` (white space between).
@@ -196,9 +191,6 @@ fn piece(bytes: &[u8], start: usize, stop: usize, limit: usize) -> Piece {
     };
     piece
 }
-
-/// JSON's white space.
-const JSON_SPACE: &[u8] = b" \t\n\r";
 
 /// Just past the end of the object whose `{` is at `start`, found as the
 /// first `}` outside a string: right for a polygon, which holds no object.

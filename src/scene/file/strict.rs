@@ -21,7 +21,7 @@
 //! wrong: this reader never accepts a text serde refuses, nor reads one
 //! otherwise (a proptest holds it to serde's reading).
 
-use super::{Coordinate, PolygonFile, ReadNumber, VerticesFile};
+use super::{Coordinate, PolygonFile, ReadNumber, VerticesFile, after_space};
 use crate::numbers::Exact;
 
 /// The polygon of the common shape that `text` holds; `None` for any other
@@ -58,9 +58,7 @@ struct Cursor<'a> {
 impl<'a> Cursor<'a> {
     /// Past JSON's white space.
     fn space(&mut self) {
-        while matches!(self.bytes.get(self.at), Some(b' ' | b'\t' | b'\n' | b'\r')) {
-            self.at += 1;
-        }
+        self.at = after_space(self.bytes, self.at);
     }
 
     /// Past white space and `byte`, when `byte` is next.
