@@ -152,8 +152,7 @@ pub struct RandomArgs {
 }
 
 /// Most triangles `zsim random` writes: 10 million is about 1 GB of JSON,
-/// and reading it back takes about 10 GB (measured at a million: 99 MB
-/// written, 1.0 GiB resident to read).
+/// and reading it back takes about ten times that in memory.
 const MAX_RANDOM_COUNT: usize = 10_000_000;
 
 pub fn random_command(args: &RandomArgs, out: &mut dyn Write) -> Result<Finish, Failure> {

@@ -37,9 +37,8 @@ pub const MAX_SCALED: i128 = 1 << 34;
 pub const MAX_SCALED_BITS: u64 = 4096;
 
 /// Scaled vertices: a triangle's in place, with no allocation of their own
-/// (reading a large scene was mostly allocation and moving; in place for
-/// four, every polygon took 48 bytes more to move, and reading 100,000
-/// triangles took 1.09× the time).
+/// (reading a large scene was mostly allocation and moving; room for four
+/// made every polygon larger to move, and reading slower).
 pub type Points = smallvec::SmallVec<[[i128; 3]; 3]>;
 
 /// A polygon ready for the rasterizer: scaled integer vertices and Newell's

@@ -84,8 +84,7 @@ pub fn read_bytes(path: &Path, links: Links) -> Result<Vec<u8>, Error> {
 
 /// Files at least this long are read in two halves at once, where the
 /// system allows it: copying a file out of the page cache into fresh memory
-/// takes a core's time (the 12 MB scene of 100,000 triangles: about 14 ms on
-/// one thread, timed around `read_text` in `zsim run` on 2026-11-24).
+/// takes a core's time.
 const READ_IN_HALVES: u64 = 1 << 22;
 
 /// A file of `length` bytes read in two halves on two threads, when it is

@@ -244,7 +244,7 @@ impl Buffers {
 /// `cells` copies of `value`, all written now (the book's first step: clear
 /// both buffers). A large buffer is first offered transparent huge pages, so
 /// that clearing it takes a few dozen page faults instead of tens of
-/// thousands (a 4096×4096 raster: 80 MB, about 40 ms of faults otherwise).
+/// thousands.
 /// With a pool, each of its threads writes a part.
 fn filled<T: Clone + Send + Sync>(cells: usize, value: T, pool: Option<&rayon::ThreadPool>) -> Vec<T> {
     let mut out = Vec::with_capacity(cells);
@@ -271,11 +271,8 @@ fn fill<T: Clone + Send + Sync>(cells: &mut [T], value: T, pool: Option<&rayon::
 }
 
 /// Buffers of at least this many cells are cleared on several threads when
-/// asked to (a 1024² raster, 8 MiB of 24-bit depth and 8-bit frame). An empty
-/// scene, `zsim run --format none --tile 256`, median of nine: 1024² took
-/// 3.1 ms rasterized on one thread and on two, 2048² 5.6 and 5.2 ms, and
-/// 512² (cleared on one thread either way) 1.6 ms: below this size there is
-/// nothing for a second thread to win.
+/// asked to (a 1024² raster, 8 MiB of 24-bit depth and 8-bit frame): below
+/// it a second thread wins nothing.
 const PARALLEL_CLEAR: usize = 1 << 20;
 
 /// The threads that clear `cells` cells, when more than one is asked for and

@@ -62,8 +62,8 @@ pub(super) fn prefetch<T>(data: *const T) {
 /// edge functions, which rewrite every cell of their box, pays only below.
 pub(super) const CORE_CACHE: usize = 256 << 10;
 
-/// A processor's last-level cache (this machine's, an AMD EPYC: 32 MiB of
-/// L3, a common size), shared with every other program the machine runs:
+/// A processor's last-level cache (32 MiB of L3, a common size), shared
+/// with every other program the machine runs:
 /// buffers larger than a quarter of it, drawn polygon by polygon, send each
 /// triangle's rows to memory and back as soon as other work fills the rest,
 /// so one thread draws them in tiles too

@@ -66,17 +66,10 @@ impl<'s> Simulation<'s> {
 
     /// The tile side `threads` threads draw the scene in when none is asked
     /// for; 0 draws polygon by polygon on one thread (what one thread does
-    /// while the buffers take at most a quarter of a last-level cache, 8 MiB
-    /// here). Tiles of 256 (a band of them one job): on 100,000 triangles on
-    /// 4096² one thread took 0.96× the time of llvmpipe in tiles of 256
-    /// against 1.04× in tiles of 64 and 1.15× polygon by polygon, and two
-    /// threads 0.98× against 1.11× (`zsim speed`, 2026-11-24, commit
-    /// bce0d53). With other work on the machine, on one thread, in tiles of
-    /// 256 against polygon by polygon (`zsim speed` twice each, the same
-    /// day, commit 284b0e9): 2048² (20 MiB) 0.83–0.84× against 1.11–1.18×;
-    /// 1800² (16 MiB) 0.82–0.83× against 0.86–0.96×; 1448² (10 MiB)
-    /// 0.80× against 0.79–0.87×; 1024² (5 MiB) 0.64–0.66× against
-    /// 0.53–0.59×.
+    /// while the buffers take at most a quarter of a last-level cache).
+    /// Tiles of 256, a band of them one job, keep a large raster's rows in
+    /// cache while paying a tile's setup rarely (the measurements behind the
+    /// choice are in the design notes under `docs/design/`).
     pub fn default_tile(&self, threads: usize) -> u32 {
         const TILE: u32 = 256;
         let large = self.buffers.memory_bytes() > crate::simulate::setup::LAST_LEVEL_CACHE as u64 / 4;

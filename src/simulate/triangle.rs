@@ -44,8 +44,7 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
             || geometry.big().is_some()
             || !geometry.fits_i64()
             // Every cell of the box is rewritten: on buffers larger than the cache, the
-            // cells around the triangle would go back to memory for nothing (a band of
-            // 64 rows of a 2048-wide raster, 512 KiB, drew 1.4× slower this way).
+            // cells around the triangle would go back to memory for nothing.
             || std::mem::size_of_val(self.depth) > CORE_CACHE
         {
             return false;
