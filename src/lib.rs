@@ -128,7 +128,7 @@ pub use numbers::{
 pub use observe::gpu;
 #[cfg(feature = "gpu")]
 pub use observe::race;
-pub use observe::step::{Meant, PolygonTrace, Skip, Tracer, does_not_fit, judge, skip_text};
+pub use observe::step::{PolygonTrace, Skip, Stop, Tracer};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
 pub use observe::{check, explain, figure, history, report, tie, tikz};
 pub use raster::convert::{Scratch, rasterize};
@@ -144,7 +144,7 @@ pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, Sc
 pub use simulate::setup::{Stats, fate};
 pub use simulate::simulation::Simulation;
 pub use simulate::stages::{StageSet, describe};
-pub use teach::{diagnose, exercise, grade};
+pub use teach::{diagnose, exercise, grade, page, step};
 pub use words::{
     Arg, Lang, language, localize_decimal, polygon_label, set_language, text as message, token, with_language,
 };

@@ -13,7 +13,6 @@ mod grade;
 mod gradebooks;
 mod gradescope;
 mod install;
-mod page;
 mod run;
 #[cfg(feature = "gpu")]
 mod speed;

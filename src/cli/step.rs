@@ -7,11 +7,11 @@ use std::path::PathBuf;
 use clap::Args;
 use comfy_table::{Cell, Color, Table, presets};
 use zsim::Error;
-use zsim::explain::{depth_text, fate_text, pixel_reason, polygon_name, scanline_text};
+use zsim::explain::{depth_text, fate_text, polygon_name, scanline_text};
 use zsim::report::{self, MatrixStyle};
+use zsim::step::{Moved, Question, Quiz, Reply, Stepper, skip_text};
 use zsim::{Exact, Q, exact_and_decimal, fraction};
-use zsim::{Meant, Scene, Skip, Tracer, does_not_fit, judge, skip_text};
-use zsim::{Outcome, PixelEvent};
+use zsim::{Outcome, PixelEvent, Scene, Stop};
 
 use super::{Failure, Finish, emit};
 
@@ -26,8 +26,8 @@ pub struct StepArgs {
     /// The row of the scanline to show (the scanline is at y = row + 1/2); needs --polygon.
     #[arg(long, value_name = "Y", requires = "polygon")]
     scanline: Option<u32>,
-    /// A quiz: before each pixel's result, ask what the z-buffer will hold; `--quiz coverage` first asks which centres the scanline covers. With --polygon and --scanline it starts there.
-    #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "depth", value_name = "depth|coverage")]
+    /// A quiz: before each pixel's result, ask what the z-buffer will hold; `--quiz frame` asks what the framebuffer will hold; `--quiz coverage` first asks which centres the scanline covers. With --polygon and --scanline it starts there.
+    #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "depth", value_name = "depth|frame|coverage")]
     quiz: Option<QuizMode>,
     /// Write the stepper as one self-contained HTML page (-o FILE.html) instead of running it.
     #[arg(long, requires = "output", conflicts_with_all = ["polygon", "quiz"])]
@@ -45,6 +45,8 @@ pub struct StepArgs {
 enum QuizMode {
     /// The z-buffer value after each covered pixel.
     Depth,
+    /// The framebuffer value after each covered pixel.
+    Frame,
     /// First which centres the scanline covers, then the z-buffer values.
     Coverage,
 }
@@ -53,11 +55,11 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(&args.scene)?;
     zsim::arith::check_supported(&scene, args.arith)?;
     let color = super::use_color();
-    let mut tracer = Tracer::new(&scene, args.arith);
+    let mut stepper = Stepper::new(&scene, args.arith);
     if let (true, Some(output)) = (args.html, &args.output) {
         let name =
             args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
-        let page = super::page::page(&mut tracer, &name);
+        let page = zsim::page::page(&mut stepper, &name);
         super::not_an_input(output, &[&args.scene])?;
         std::fs::write(output, page).map_err(|source| Error::Write { path: output.clone(), source })?;
         emit(out, &format!("{}\n", zsim::words!("file-written-page", path = output.display().to_string())))?;
@@ -66,33 +68,45 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let mut start = None;
     if let (Some(spec), Some(row)) = (&args.polygon, args.scanline) {
         let polygon = scene.find_polygon(spec)?;
-        let trace = tracer.trace(polygon);
+        let trace = stepper.tracer().trace(polygon);
         if let Some(text) = fate_text(trace.fate) {
             let name = scene.polygons[polygon].name.clone();
             return Err(Error::from(zsim::Usage::NoScanlines { index: polygon, name, why: text }).into());
         }
-        let Some(k) = trace.scanlines.iter().position(|r| r.row == row) else {
+        let Some(scanline) = trace.scanlines.iter().position(|r| r.row == row) else {
             let rows = trace.scanlines.first().zip(trace.scanlines.last()).map(|(first, last)| (first.row, last.row));
             let name = scene.polygons[polygon].name.clone();
             return Err(Error::from(zsim::Usage::ScanlineNotReached { index: polygon, name, row, rows }).into());
         };
+        let stop = Stop { polygon, scanline };
         if args.quiz.is_none() {
-            emit(out, &stop_text(&mut tracer, polygon, k, color))?;
+            emit(out, &stop_text(&mut stepper, stop, color))?;
             return Ok(Finish::Ok);
         }
-        start = Some((polygon, k));
+        start = Some(stop);
     }
+    let mut quiz = args.quiz.map(|mode| Quiz::new(mode.into()));
     // On a terminal, the full-screen app; piped or redirected, the line mode scripts rely on.
     if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
-        let mut app = super::tui::App::new(&mut tracer, start, args.quiz.is_some());
-        super::tui::run(&mut app)?;
+        stepper.start(start);
+        super::tui::run(&mut super::tui::App::new(&mut stepper, quiz.as_mut()))?;
         // The screen is gone: the score and each mistake stay on the terminal, as in the line mode.
-        if let Some(summary) = app.quiz_summary() {
-            emit(out, &summary)?;
+        if let Some(quiz) = &quiz {
+            emit(out, &quiz.summary())?;
         }
         return Ok(Finish::Ok);
     }
-    interactive(&scene, &args.scene.display().to_string(), &mut tracer, (args.quiz, start), color, out)
+    interactive(&args.scene.display().to_string(), &mut stepper, start, quiz.as_mut(), color, out)
+}
+
+impl From<QuizMode> for zsim::step::QuizMode {
+    fn from(mode: QuizMode) -> zsim::step::QuizMode {
+        match mode {
+            QuizMode::Depth => zsim::step::QuizMode::Depth,
+            QuizMode::Frame => zsim::step::QuizMode::Frame,
+            QuizMode::Coverage => zsim::step::QuizMode::Coverage,
+        }
+    }
 }
 
 /// Lines typed by the user (or piped in by a script).
@@ -144,32 +158,34 @@ fn help() -> String {
     zsim::words!("step-help")
 }
 
+/// What a move passed over, or why it stayed, as lines of the line mode.
+fn moved_text(scene: &Scene, moved: &Moved) -> String {
+    match moved {
+        Moved::To { skipped, .. } => skipped.iter().map(|skip| format!("  · {}\n", skip_text(scene, skip))).collect(),
+        Moved::Refused(refusal) => format!("{}\n", refusal.text(scene)),
+    }
+}
+
 fn interactive(
-    scene: &Scene,
     path: &str,
-    tracer: &mut Tracer<'_>,
-    (quiz, start): (Option<QuizMode>, Option<(usize, usize)>),
+    stepper: &mut Stepper<'_>,
+    start: Option<Stop>,
+    mut quiz: Option<&mut Quiz>,
     color: bool,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
+    let scene = stepper.scene();
     let mut input = Input::stdin();
-    let mut quiz_state = QuizState::default();
     emit(out, &format!("{}{}{}\n", report::scene_header(scene, path), antialias_note(scene), help()))?;
-    let mut position = match start {
-        Some(at) => Some(at),
-        None => {
-            let (first, skipped) = tracer.next_stop(None);
-            emit(out, &mentions(scene, &skipped))?;
-            first
-        }
-    };
+    let moved = stepper.start(start);
+    emit(out, &moved_text(scene, &moved))?;
     let mut show = true;
     loop {
         let mut typed = None;
-        match position {
-            Some((p, k)) if show => {
-                if let Some(mode) = quiz {
-                    match ask(scene, tracer, (p, k), mode, &mut quiz_state, &mut input, out)? {
+        match stepper.at() {
+            Some(stop) if show => {
+                if let Some(quiz) = quiz.as_deref_mut() {
+                    match ask(stepper, quiz, &mut input, out)? {
                         Asked::Answered => {}
                         Asked::Quit => break,
                         // A navigation key during the questions: leave them and go.
@@ -177,7 +193,7 @@ fn interactive(
                     }
                 }
                 if typed.is_none() {
-                    emit(out, &stop_text(tracer, p, k, color))?;
+                    emit(out, &stop_text(stepper, stop, color))?;
                 }
             }
             None if show => emit(out, &format!("{}\n", zsim::words!("step-end")))?,
@@ -190,107 +206,27 @@ fn interactive(
                 None => break,
             },
         };
-        show = true;
-        match parse_command(&line) {
+        let moved = match parse_command(&line) {
             Command::Quit => break,
-            Command::Next => {
-                let (next, skipped) = match position {
-                    Some(at) => tracer.next_stop(Some(at)),
-                    None => (None, Vec::new()),
-                };
-                emit(out, &mentions(scene, &skipped))?;
-                position = next;
-            }
-            Command::NextPolygon => {
-                let from = position.map(|(p, _)| {
-                    let count = tracer.trace(p).scanlines.len();
-                    (p, count.saturating_sub(1))
-                });
-                if from.is_some() {
-                    let (next, skipped) = tracer.next_stop(from);
-                    emit(out, &mentions(scene, &skipped))?;
-                    position = next;
-                }
-            }
-            Command::Back => {
-                let previous = match position {
-                    Some(at) => tracer.previous_stop(at),
-                    None => tracer.previous_stop((scene.polygons.len(), 0)),
-                };
-                match previous {
-                    Some(at) => position = Some(at),
-                    None => {
-                        emit(out, &format!("{}\n", zsim::words!("step-first")))?;
-                        show = false;
-                    }
-                }
-            }
-            Command::Go(row) if row >= scene.height => {
-                let last = (scene.height - 1).to_string();
-                emit(out, &format!("{}\n", zsim::words!("step-outside-raster", row = row.to_string(), last = last)))?;
-                show = false;
-            }
-            Command::Go(row) => {
-                let p = position.map_or(0, |(p, _)| p).min(scene.polygons.len().saturating_sub(1));
-                let found = tracer.trace(p).scanlines.iter().position(|r| r.row == row);
-                match found {
-                    Some(k) => position = Some((p, k)),
-                    None => {
-                        let message = zsim::words!(
-                            "step-not-reach",
-                            polygon = polygon_name(scene, p),
-                            scanline = scanline_text(row)
-                        ) + "\n";
-                        emit(out, &message)?;
-                        show = false;
-                    }
-                }
-            }
+            Command::Next => stepper.next(),
+            // At the end there is no later polygon to go to: nothing happens.
+            Command::NextPolygon if stepper.at().is_none() => Moved::To { at: None, skipped: Vec::new() },
+            Command::NextPolygon => stepper.next_polygon(),
+            Command::Back => stepper.back(),
+            Command::Go(row) => stepper.go(row),
             Command::Unknown(text) => {
-                emit(out, &format!("{}\n", zsim::words!("step-unknown", text = text, help = help())))?;
+                emit(out, &format!("{}\n", zsim::words!("step-unknown", text = zsim::token(&text), help = help())))?;
                 show = false;
+                continue;
             }
-        }
+        };
+        emit(out, &moved_text(scene, &moved))?;
+        show = !matches!(moved, Moved::Refused(_));
     }
-    if quiz.is_some() {
-        emit(out, &quiz_state.summary())?;
+    if let Some(quiz) = quiz {
+        emit(out, &quiz.summary())?;
     }
     Ok(Finish::Ok)
-}
-
-/// The quiz's score and the mistakes made, for the summary.
-#[derive(Debug, Default)]
-pub(super) struct QuizState {
-    pub(super) right: usize,
-    pub(super) asked: usize,
-    mistakes: Vec<String>,
-}
-
-impl QuizState {
-    /// Scores one answer and says so: `right` or `wrong` with the reason.
-    pub(super) fn score(&mut self, right: bool, mistake: impl FnOnce() -> String) -> String {
-        self.asked += 1;
-        if right {
-            self.right += 1;
-            zsim::words!("tui-right")
-        } else {
-            self.mistakes.push(mistake());
-            zsim::words!("tui-wrong")
-        }
-    }
-
-    /// The score, and each mistake with what was right and why.
-    pub(super) fn summary(&self) -> String {
-        let score = zsim::words!("quiz-score", right = self.right.to_string(), asked = self.asked.to_string());
-        let mut text = format!("{score}\n");
-        if !self.mistakes.is_empty() {
-            text.push_str(&format!("{}\n", zsim::words!("quiz-mistakes")));
-            for mistake in &self.mistakes {
-                text.push_str(&format!("  {mistake}\n"));
-            }
-        }
-        text
-    }
 }
 
 /// How one scanline's questions ended.
@@ -303,19 +239,7 @@ enum Asked {
     Navigate(String),
 }
 
-/// What a quiz answer meant, in words.
-fn meant_text(meant: Meant) -> String {
-    {
-        match meant {
-            Meant::NotWritten => zsim::words!("meant-not-written"),
-            Meant::ValueWritten => zsim::words!("meant-value-written"),
-            Meant::ValueKept => zsim::words!("meant-value-kept"),
-            Meant::Value => zsim::words!("meant-value"),
-        }
-    }
-}
-
-/// Reads lines until one is an answer (`-` or a number), `q`, or a navigation command.
+/// Reads lines until one is an answer, `q`, or a navigation command.
 fn read_answer(
     input: &mut Input,
     out: &mut dyn Write,
@@ -338,155 +262,92 @@ fn read_answer(
     }
 }
 
-/// The covered columns as a student writes them: `16-27`, `3-5 9-12`, or `-` for none.
-fn columns_text(columns: &[u32]) -> String {
-    let mut runs: Vec<(u32, u32)> = Vec::new();
-    for &x in columns {
-        match runs.last_mut() {
-            Some((_, last)) if *last + 1 == x => *last = x,
-            _ => runs.push((x, x)),
-        }
-    }
-    if runs.is_empty() {
-        return "-".to_string();
-    }
-    runs.iter().map(|(a, b)| if a == b { a.to_string() } else { format!("{a}-{b}") }).collect::<Vec<_>>().join(" ")
-}
-
-/// Reads `16-27`, `3-5 9-12`, `4` or `-` as columns; `None` when it is not that.
-fn parse_columns(text: &str) -> Option<Vec<u32>> {
-    if text == "-" {
-        return Some(Vec::new());
-    }
-    let mut columns = Vec::new();
-    for run in text.split([' ', ',']).filter(|r| !r.is_empty()) {
-        let (a, b) = run.split_once(['-', '…']).unwrap_or((run, run));
-        let (a, b): (u32, u32) = (a.trim().parse().ok()?, b.trim().parse().ok()?);
-        if a > b || b - a > 100_000 {
-            return None;
-        }
-        columns.extend(a..=b);
-    }
-    columns.sort_unstable();
-    columns.dedup();
-    Some(columns)
-}
-
-fn mentions(scene: &Scene, skipped: &[Skip]) -> String {
-    skipped.iter().map(|skip| format!("  · {}\n", skip_text(scene, skip))).collect()
-}
-
-/// Asks the quiz questions of a stop: with `coverage`, first which centres
-/// the scanline covers; then, for each covered pixel, what the z-buffer holds after it.
-fn ask(
-    scene: &Scene,
-    tracer: &mut Tracer<'_>,
-    (p, k): (usize, usize),
-    mode: QuizMode,
-    state: &mut QuizState,
-    input: &mut Input,
-    out: &mut dyn Write,
-) -> Result<Asked, Failure> {
-    let record = tracer.trace(p).scanlines[k].clone();
-    let (name, row) = (polygon_name(scene, p), record.row);
-    let of_name = zsim::explain::polygon_after(scene, p);
-    if mode == QuizMode::Coverage {
-        let ask = zsim::words!("quiz-coverage-ask", polygon = &name, scanline = scanline_text(row));
-        emit(out, &format!("{ask}\n"))?;
-        let covered: Vec<u32> = record.pixels.iter().map(|e| e.x).collect();
-        let hint = zsim::words!("quiz-coverage-hint");
-        let columns = loop {
-            let answer = match read_answer(input, out, &zsim::words!("quiz-coverage-prompt"), &hint)? {
-                Ok(answer) => answer,
+/// Asks the quiz's questions of the current stop, as the model orders them
+/// (with `coverage`, first which centres the scanline covers; then, for each
+/// covered pixel, what the z-buffer holds after it).
+fn ask(stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut Input, out: &mut dyn Write) -> Result<Asked, Failure> {
+    let scene = stepper.scene();
+    while let Some(question) = quiz.question(stepper) {
+        let (prompt, hint) = match &question {
+            Question::Coverage { stop, row } => {
+                let ask = zsim::words!(
+                    "quiz-coverage-ask",
+                    polygon = polygon_name(scene, stop.polygon),
+                    scanline = scanline_text(*row)
+                );
+                emit(out, &format!("{ask}\n"))?;
+                (zsim::words!("quiz-coverage-prompt"), zsim::words!("quiz-coverage-hint"))
+            }
+            Question::Depth { stop, index, pixel } => {
+                if *index == 0 {
+                    let row = pixel.y;
+                    let ask = zsim::words!(
+                        "quiz-depth-ask",
+                        polygon = polygon_name(scene, stop.polygon),
+                        scanline = scanline_text(row)
+                    );
+                    emit(out, &format!("{ask}\n"))?;
+                }
+                let prompt = zsim::words!(
+                    "quiz-depth-prompt",
+                    x = pixel.x,
+                    y = pixel.y,
+                    stored = pixel.stored_before.to_string()
+                );
+                (prompt, zsim::words!("quiz-depth-hint"))
+            }
+            Question::Frame { stop, index, pixel } => {
+                if *index == 0 {
+                    let ask = zsim::words!(
+                        "quiz-frame-ask",
+                        polygon = polygon_name(scene, stop.polygon),
+                        scanline = scanline_text(pixel.y)
+                    );
+                    emit(out, &format!("{ask}\n"))?;
+                }
+                let prompt = zsim::words!("quiz-frame-prompt", x = pixel.x, y = pixel.y, before = pixel.frame_before);
+                (prompt, zsim::words!("quiz-frame-hint"))
+            }
+        };
+        let verdict = loop {
+            let typed = match read_answer(input, out, &prompt, &hint)? {
+                Ok(typed) => typed,
                 Err(asked) => return Ok(asked),
             };
-            match parse_columns(&answer) {
-                Some(columns) => break (answer, columns),
-                None => emit(out, &format!("{hint}\n"))?,
+            match quiz.answer(stepper, &typed).expect("a question is asked") {
+                Reply::Judged(verdict) => break verdict,
+                Reply::AskAgain(why) => emit(out, &format!("{why}\n"))?,
             }
         };
-        let right_text = columns_text(&covered);
-        let spans: Vec<String> = record
-            .spans
-            .iter()
-            .map(|s| zsim::words!("span", left = exact_and_decimal(&s.left), right = exact_and_decimal(&s.right)))
-            .collect();
-        let why = zsim::words!("quiz-coverage-why", spans = spans.join(&zsim::words!("list-comma")));
-        let verdict = state.score(columns.1 == covered, || {
-            zsim::words!(
-                "quiz-coverage-mistake",
-                row = row.to_string(),
-                polygon = &of_name,
-                said = &columns.0,
-                right = &right_text,
-                why = &why
-            )
-        });
-        let line = zsim::words!(
-            "quiz-coverage-verdict",
-            right = &right_text,
-            said = &columns.0,
-            verdict = verdict,
-            why = &why,
-            score = state.right.to_string(),
-            asked = state.asked.to_string()
-        );
-        emit(out, &format!("  {line}\n"))?;
-    }
-    let ask = zsim::words!("quiz-depth-ask", polygon = &name, scanline = scanline_text(row));
-    emit(out, &format!("{ask}\n"))?;
-    let hint = zsim::words!("quiz-depth-hint");
-    for pixel in &record.pixels {
-        let prompt =
-            zsim::words!("quiz-depth-prompt", x = pixel.x, y = pixel.y, stored = pixel.stored_before.to_string());
-        let answer = loop {
-            let text = match read_answer(input, out, &prompt, &hint)? {
-                Ok(text) => text,
-                Err(asked) => return Ok(asked),
-            };
-            if let Some(problem) = does_not_fit(scene, &text) {
-                emit(out, &format!("{problem}\n"))?;
-                continue;
-            }
-            match judge(pixel, &text) {
-                Some(judged) => break (text, judged),
-                None => emit(out, &format!("{}\n", zsim::words!("quiz-not-an-answer", text = &text, hint = &hint)))?,
+        let right_or_wrong = if verdict.right { zsim::words!("tui-right") } else { zsim::words!("tui-wrong") };
+        let (score, asked) = (quiz.right.to_string(), quiz.asked.to_string());
+        let line = match &verdict.question {
+            Question::Coverage { .. } => zsim::words!(
+                "quiz-coverage-verdict",
+                right = &verdict.expected,
+                said = &verdict.said,
+                verdict = right_or_wrong,
+                why = &verdict.why,
+                score = score,
+                asked = asked
+            ),
+            Question::Depth { pixel, .. } | Question::Frame { pixel, .. } => {
+                let said = match (verdict.right, verdict.meant) {
+                    (true, Some(meant)) => zsim::words!("quiz-said-meant", said = &verdict.said, meant = meant.text()),
+                    _ => zsim::words!("quiz-said", said = &verdict.said),
+                };
+                zsim::words!(
+                    "quiz-depth-verdict",
+                    x = pixel.x,
+                    y = pixel.y,
+                    said = said,
+                    verdict = right_or_wrong,
+                    reason = &verdict.why,
+                    score = score,
+                    asked = asked
+                )
             }
         };
-        let (right, meant) = answer.1;
-        let written = pixel.outcome == Outcome::Written;
-        let expected = if written {
-            pixel.stored_after.to_string()
-        } else {
-            zsim::words!("quiz-keeps", value = pixel.stored_after.to_string())
-        };
-        let reason = pixel_reason(scene, pixel);
-        let verdict = state.score(right, || {
-            zsim::words!(
-                "quiz-depth-mistake",
-                x = pixel.x,
-                y = pixel.y,
-                polygon = &of_name,
-                said = &answer.0,
-                right = &expected,
-                reason = &reason
-            )
-        });
-        let said = if right {
-            zsim::words!("quiz-said-meant", said = &answer.0, meant = meant_text(meant))
-        } else {
-            zsim::words!("quiz-said", said = &answer.0)
-        };
-        let line = zsim::words!(
-            "quiz-depth-verdict",
-            x = pixel.x,
-            y = pixel.y,
-            said = said,
-            verdict = verdict,
-            reason = &reason,
-            score = state.right.to_string(),
-            asked = state.asked.to_string()
-        );
         emit(out, &format!("  {line}\n"))?;
     }
     Ok(Asked::Answered)
@@ -501,9 +362,10 @@ fn antialias_note(scene: &Scene) -> String {
 }
 
 /// Everything shown for one scanline of one polygon.
-fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String {
-    let scene = tracer.scene;
-    let record = tracer.trace(p).scanlines[k].clone();
+fn stop_text(stepper: &mut Stepper<'_>, stop: Stop, color: bool) -> String {
+    let scene = stepper.scene();
+    let p = stop.polygon;
+    let record = stepper.tracer().record(stop).clone();
     let geometry = scene.polygons[p].geometry();
     let slope = geometry.slope().map_or_else(String::new, fraction);
     let mut text = format!("\n── {}\n", report::polygon_heading(scene, p));
@@ -546,11 +408,11 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
             text.push_str(&format!("{}\n", zsim::words!("step-tie", x = x.to_string(), text = tie)));
         }
     }
-    if let zsim::arith::Arith::Fixed(bits) = tracer.arith {
+    if let zsim::arith::Arith::Fixed(bits) = stepper.arith() {
         let line = zsim::words!("step-fixed", bits = bits.to_string(), unit = (1u64 << bits).to_string());
         text.push_str(&format!("{line}\n"));
     }
-    if let Some(float) = zsim::arith::float_scanline(scene, p, record.row, tracer.arith) {
+    if let Some(float) = zsim::arith::float_scanline(scene, p, record.row, stepper.arith()) {
         let crossings: Vec<String> = float.crossings.iter().map(|x| format!("{x:.9}")).collect();
         let pixels: Vec<String> = float
             .pixels
@@ -577,7 +439,7 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
             None if crossings.is_empty() => zsim::words!("step-float-no-crossings"),
             None => zsim::words!("step-float-crossings", crossings = crossings.join(", ")),
         };
-        let heading = zsim::words!("step-float-heading", arith = tracer.arith.to_string(), found = found);
+        let heading = zsim::words!("step-float-heading", arith = stepper.arith().to_string(), found = found);
         let pixels = if pixels.is_empty() { zsim::words!("step-float-no-pixel") } else { pixels.join("\n  ") };
         text.push_str(&format!("{heading}\n  {pixels}\n"));
         if !missed.is_empty() {
@@ -585,7 +447,7 @@ fn stop_text(tracer: &mut Tracer<'_>, p: usize, k: usize, color: bool) -> String
             text.push_str(&format!("  {line}\n"));
         }
     }
-    let buffers = tracer.buffers_after(p, k);
+    let buffers = stepper.tracer().buffers_after(stop);
     let low = record.row.saturating_sub(2);
     let high = (record.row + 2).min(scene.height - 1);
     let style = MatrixStyle { axes: true, color, rows: Some(low..=high), mark: Some(record.row) };

@@ -14,10 +14,9 @@ use ratatui::widgets::{Block, Borders, Clear, Paragraph, Wrap};
 use zsim::Buffers;
 use zsim::explain::{pixel_reason, polygon_name, scanline_text};
 use zsim::report;
+use zsim::step::{Moved, Question, Quiz, Reply, Stepper, Verdict, skip_text};
 use zsim::{Outcome, ScanlineRecord};
 use zsim::{Q, exact_and_decimal, fraction};
-
-use zsim::Tracer;
 
 /// Which buffer the raster shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -28,23 +27,13 @@ pub enum View {
     Depth,
 }
 
-/// The quiz inside the app: the answer being typed, and the score with
-/// each mistake (the summary printed when the app closes).
-#[derive(Debug, Default)]
-struct Quiz {
-    typed: String,
-    /// The verdict on the last answer, shown until the next key.
-    verdict: Option<String>,
-    state: super::step::QuizState,
-}
-
-/// The stepper's state. Keys change it ([`App::key`]); [`App::draw`] shows it.
-pub struct App<'t, 's> {
-    tracer: &'t mut Tracer<'s>,
-    /// The current stop: polygon and recorded scanline; `None` at the end.
-    at: Option<(usize, usize)>,
-    /// In pixel steps, how many of the scanline's pixels are done (shown);
-    /// in scanline steps, `None` (all of them).
+/// The stepper's screen state. Keys change it ([`App::key`]); [`App::draw`]
+/// shows it. Where the student is and what the quiz asks are the library's
+/// ([`Stepper`], [`Quiz`]); the app keeps only what is on the screen.
+pub struct App<'t, 's, 'q> {
+    stepper: &'t mut Stepper<'s>,
+    /// Outside the quiz, in pixel steps, how many of the scanline's pixels
+    /// are shown; in scanline steps, `None` (all of them).
     pixel: Option<usize>,
     view: View,
     help: bool,
@@ -55,33 +44,52 @@ pub struct App<'t, 's> {
     scroll: (i32, i32),
     /// Lines the right panel is scrolled by.
     table_scroll: u16,
-    quiz: Option<Quiz>,
+    quiz: Option<&'q mut Quiz>,
+    /// The quiz answer being typed.
+    typed: String,
+    /// The verdict on the last answer, shown until the next key.
+    verdict: Option<String>,
     /// Set by `q`, Esc or Ctrl-C.
     pub quit: bool,
 }
 
-impl<'t, 's> App<'t, 's> {
-    /// The app at `start`, or at the first scanline that covers a pixel.
-    pub fn new(tracer: &'t mut Tracer<'s>, start: Option<(usize, usize)>, quiz: bool) -> App<'t, 's> {
-        let at = start.or_else(|| tracer.next_stop(None).0);
+impl<'t, 's, 'q> App<'t, 's, 'q> {
+    /// The app at the stepper's stop, with `quiz` asking.
+    pub fn new(stepper: &'t mut Stepper<'s>, quiz: Option<&'q mut Quiz>) -> App<'t, 's, 'q> {
         App {
-            tracer,
-            at,
-            pixel: quiz.then_some(0),
+            stepper,
+            pixel: None,
             view: View::Frame,
             help: false,
             go: None,
             message: String::new(),
             scroll: (0, 0),
             table_scroll: 0,
-            quiz: quiz.then(Quiz::default),
+            quiz,
+            typed: String::new(),
+            verdict: None,
             quit: false,
         }
     }
 
     fn record(&mut self) -> Option<ScanlineRecord> {
-        let (p, k) = self.at?;
-        Some(self.tracer.trace(p).scanlines[k].clone())
+        self.stepper.record().cloned()
+    }
+
+    /// The question the quiz asks now, if any (none while a verdict shows).
+    fn question(&mut self) -> Option<Question> {
+        if self.verdict.is_some() {
+            return None;
+        }
+        self.quiz.as_deref().and_then(|quiz| quiz.question(self.stepper))
+    }
+
+    /// How many of the current scanline's pixels are shown.
+    fn shown_pixels(&mut self) -> usize {
+        match (&self.quiz, self.stepper.at()) {
+            (Some(quiz), Some(stop)) => quiz.pixels_answered(stop),
+            _ => self.pixel.unwrap_or(usize::MAX),
+        }
     }
 
     /// Handles one key press.
@@ -101,7 +109,8 @@ impl<'t, 's> App<'t, 's> {
                     let row = text.parse::<u32>().ok();
                     self.go = None;
                     if let Some(row) = row {
-                        self.go_to(row);
+                        let moved = self.stepper.go(row);
+                        self.moved(moved);
                     }
                 }
                 KeyCode::Esc => self.go = None,
@@ -110,13 +119,10 @@ impl<'t, 's> App<'t, 's> {
             return;
         }
         // A digit or `-` while a verdict shows starts the next answer (it is not lost).
-        if let Some(quiz) = &mut self.quiz
-            && quiz.verdict.is_some()
-            && matches!(key.code, KeyCode::Char(c) if c.is_ascii_digit() || c == '-')
-        {
-            quiz.verdict = None;
+        if self.verdict.is_some() && matches!(key.code, KeyCode::Char(c) if c.is_ascii_digit() || c == '-') {
+            self.verdict = None;
         }
-        if self.quiz.is_some() && self.asking() && self.quiz_key(key) {
+        if self.question().is_some() && self.quiz_key(key) {
             return;
         }
         if self.help && !matches!(key.code, KeyCode::Char('q') | KeyCode::Esc) {
@@ -127,8 +133,20 @@ impl<'t, 's> App<'t, 's> {
             KeyCode::Char('q') | KeyCode::Esc => self.quit = true,
             KeyCode::Char('n' | ' ') | KeyCode::Enter | KeyCode::Right | KeyCode::Down => self.next(),
             KeyCode::Char('b') | KeyCode::Left | KeyCode::Up => self.back(),
-            KeyCode::Char('p') => self.next_polygon(),
-            KeyCode::Char('P') => self.previous_polygon(),
+            KeyCode::Char('p') => {
+                let moved = match self.stepper.at() {
+                    Some(_) => self.stepper.next_polygon(),
+                    None => return,
+                };
+                match moved {
+                    Moved::To { at: None, .. } => self.message = zsim::words!("tui-no-later"),
+                    moved => self.moved(moved),
+                }
+            }
+            KeyCode::Char('P') => {
+                let moved = self.stepper.previous_polygon();
+                self.moved(moved);
+            }
             KeyCode::Char('g') => self.go = Some(String::new()),
             KeyCode::Char('f') => self.view = View::Frame,
             KeyCode::Char('z') => self.view = View::Depth,
@@ -146,165 +164,85 @@ impl<'t, 's> App<'t, 's> {
         }
     }
 
-    /// Whether the quiz waits for the value of the next pixel.
-    fn asking(&mut self) -> bool {
-        let Some(record) = self.record() else { return false };
-        let done = self.pixel.unwrap_or(0);
-        done < record.pixels.len() && self.quiz.as_ref().is_some_and(|q| q.verdict.is_none())
-    }
-
     /// A key while the quiz asks. Typing: any character but the keys that
     /// act alone (`q`, `?`, and `n`, `b`, `p`, `P`, `g`, `f`, `z` before
     /// anything is typed) goes into the answer, Backspace takes one back,
-    /// Enter answers: a number or `-` is scored, anything else is said to be
-    /// no answer (or a number the z-buffer cannot hold, out of range) and
-    /// asked again. Returns `false` for a key that acts as usual.
+    /// Enter answers: the library judges it, or says why it is no answer and
+    /// asks again. Returns `false` for a key that acts as usual.
     fn quiz_key(&mut self, key: KeyEvent) -> bool {
-        let Some(record) = self.record() else { return false };
-        let (scene, p) = (self.tracer.scene, self.at.map_or(0, |at| at.0));
-        let Some(quiz) = &mut self.quiz else { return false };
         match key.code {
             KeyCode::Char('q' | '?') => return false,
-            KeyCode::Char('n' | 'b' | 'p' | 'P' | 'g' | 'f' | 'z' | ' ') if quiz.typed.is_empty() => return false,
-            KeyCode::Char(c) if !c.is_control() => quiz.typed.push(c),
+            KeyCode::Char('n' | 'b' | 'p' | 'P' | 'g' | 'f' | 'z' | ' ') if self.typed.is_empty() => return false,
+            KeyCode::Char(c) if !c.is_control() => self.typed.push(c),
             KeyCode::Backspace => {
-                quiz.typed.pop();
+                self.typed.pop();
             }
-            KeyCode::Enter if !quiz.typed.is_empty() => {
-                let done = self.pixel.unwrap_or(0);
-                let pixel = record.pixels[done].clone();
-                let typed = std::mem::take(&mut quiz.typed);
-                if let Some(problem) = zsim::does_not_fit(scene, &typed) {
-                    self.message = problem;
-                    return true;
+            KeyCode::Enter if !self.typed.is_empty() => {
+                let typed = std::mem::take(&mut self.typed);
+                let Some(quiz) = self.quiz.as_deref_mut() else { return false };
+                match quiz.answer(self.stepper, &typed) {
+                    Some(Reply::Judged(verdict)) => self.verdict = Some(verdict_text(&verdict)),
+                    Some(Reply::AskAgain(why)) => self.message = why,
+                    None => return false,
                 }
-                let Some((right, _)) = zsim::judge(&pixel, &typed) else {
-                    let hint = zsim::words!("quiz-depth-hint");
-                    self.message = zsim::words!("quiz-not-an-answer", text = zsim::token(&typed), hint = hint);
-                    return true;
-                };
-                let reason = pixel_reason(scene, &pixel);
-                let verdict = quiz.state.score(right, || {
-                    let expected = if pixel.outcome == zsim::Outcome::Written {
-                        pixel.stored_after.to_string()
-                    } else {
-                        zsim::words!("quiz-keeps", value = pixel.stored_after.to_string())
-                    };
-                    zsim::words!(
-                        "quiz-depth-mistake",
-                        x = pixel.x,
-                        y = pixel.y,
-                        polygon = zsim::explain::polygon_after(scene, p),
-                        said = &typed,
-                        right = expected,
-                        reason = &reason
-                    )
-                });
-                quiz.verdict = Some(zsim::words!(
-                    "tui-quiz-verdict",
-                    x = pixel.x,
-                    y = pixel.y,
-                    typed = &typed,
-                    verdict = verdict,
-                    reason = reason
-                ));
-                self.pixel = Some(done + 1);
             }
             _ => return false,
         }
         true
     }
 
-    /// The quiz's score and each mistake, to print when the app has closed
-    /// (as the line mode ends); `None` without a quiz.
-    pub fn quiz_summary(&self) -> Option<String> {
-        self.quiz.as_ref().map(|quiz| quiz.state.summary())
+    /// What a move passed over, or why it stayed, on the status line.
+    fn moved(&mut self, moved: Moved) {
+        let scene = self.stepper.scene();
+        match moved {
+            Moved::To { at, skipped } => {
+                if !skipped.is_empty() {
+                    let skipped: Vec<String> = skipped.iter().map(|skip| skip_text(scene, skip)).collect();
+                    self.message =
+                        zsim::words!("tui-passed-over", list = skipped.join(&zsim::words!("list-semicolon")));
+                }
+                if at.is_none() {
+                    self.message = zsim::words!("step-end");
+                }
+                self.scroll = (0, 0);
+                self.table_scroll = 0;
+                self.typed.clear();
+                if self.pixel.is_some() {
+                    self.pixel = Some(1);
+                }
+            }
+            Moved::Refused(refusal) => self.message = refusal.text(scene),
+        }
     }
 
     fn next(&mut self) {
-        if let Some(quiz) = &mut self.quiz {
-            quiz.verdict = None;
+        self.verdict = None;
+        let Some(stop) = self.stepper.at() else { return };
+        // The quiz waits for its answers: `n` only clears the verdict.
+        if self.question().is_some() {
+            return;
         }
-        let Some(at) = self.at else { return };
-        if let Some(done) = self.pixel {
-            let count = self.tracer.trace(at.0).scanlines[at.1].pixels.len();
-            if done < count {
-                if self.quiz.is_none() {
-                    self.pixel = Some(done + 1);
-                }
-                return;
-            }
+        let count = self.stepper.tracer().record(stop).pixels.len();
+        if self.quiz.is_none()
+            && let Some(done) = self.pixel
+            && done < count
+        {
+            self.pixel = Some(done + 1);
+            return;
         }
-        let (next, skipped) = self.tracer.next_stop(Some(at));
-        if !skipped.is_empty() {
-            let scene = self.tracer.scene;
-            let skipped: Vec<String> = skipped.iter().map(|skip| zsim::skip_text(scene, skip)).collect();
-            self.message = zsim::words!("tui-passed-over", list = skipped.join(&zsim::words!("list-semicolon")));
-        }
-        match next {
-            Some(stop) => self.arrive(stop),
-            None => self.message = zsim::words!("step-end"),
-        }
+        let moved = self.stepper.next();
+        self.moved(moved);
     }
 
     fn back(&mut self) {
-        let Some(at) = self.at else { return };
-        match self.pixel {
-            Some(done) if done > 1 && self.quiz.is_none() => self.pixel = Some(done - 1),
-            _ => match self.tracer.previous_stop(at) {
-                Some(stop) => self.arrive(stop),
-                None => self.message = zsim::words!("step-first"),
-            },
-        }
-    }
-
-    fn arrive(&mut self, stop: (usize, usize)) {
-        self.at = Some(stop);
-        self.scroll = (0, 0);
-        self.table_scroll = 0;
-        if self.pixel.is_some() {
-            self.pixel = Some(if self.quiz.is_some() { 0 } else { 1 });
-        }
-    }
-
-    fn next_polygon(&mut self) {
-        let Some((p, _)) = self.at else { return };
-        let last = self.tracer.trace(p).scanlines.len().saturating_sub(1);
-        match self.tracer.next_stop(Some((p, last))).0 {
-            Some(stop) => self.arrive(stop),
-            None => self.message = zsim::words!("tui-no-later"),
-        }
-    }
-
-    fn previous_polygon(&mut self) {
-        let Some((p, _)) = self.at else { return };
-        let mut stop = self.tracer.previous_stop((p, 0));
-        // To the first covering scanline of that polygon.
-        while let Some(s) = stop {
-            match self.tracer.previous_stop(s) {
-                Some(earlier) if earlier.0 == s.0 => stop = Some(earlier),
-                _ => break,
-            }
-        }
-        match stop {
-            Some(s) => self.arrive(s),
-            None => self.message = zsim::words!("tui-no-earlier"),
-        }
-    }
-
-    fn go_to(&mut self, row: u32) {
-        let scene = self.tracer.scene;
-        if row >= scene.height {
-            let last = (scene.height - 1).to_string();
-            self.message = zsim::words!("step-outside-raster", row = row.to_string(), last = last);
+        if self.stepper.at().is_none() {
             return;
         }
-        let p = self.at.map_or(0, |(p, _)| p);
-        match self.tracer.trace(p).scanlines.iter().position(|r| r.row == row) {
-            Some(k) => self.arrive((p, k)),
-            None => {
-                self.message =
-                    zsim::words!("step-not-reach", polygon = polygon_name(scene, p), scanline = scanline_text(row))
+        match self.pixel {
+            Some(done) if done > 1 && self.quiz.is_none() => self.pixel = Some(done - 1),
+            _ => {
+                let moved = self.stepper.back();
+                self.moved(moved);
             }
         }
     }
@@ -312,14 +250,18 @@ impl<'t, 's> App<'t, 's> {
     /// Draws the whole screen.
     pub fn draw(&mut self, frame: &mut Frame<'_>) {
         let area = frame.area();
+        // A quiz's reason to ask again gets lines of its own above the question.
+        let status_lines = if self.quiz.is_some() && !self.message.is_empty() { 4 } else { 2 };
         let [title, body, status] =
-            Layout::vertical([Constraint::Length(1), Constraint::Min(3), Constraint::Length(2)]).areas(area);
-        let scene = self.tracer.scene;
+            Layout::vertical([Constraint::Length(1), Constraint::Min(3), Constraint::Length(status_lines)]).areas(area);
+        let scene = self.stepper.scene();
         let record = self.record();
-        let heading = match (self.at, &record) {
-            (Some((p, _)), Some(r)) => {
-                zsim::words!("tui-heading", polygon = polygon_name(scene, p), scanline = scanline_text(r.row))
-            }
+        let heading = match (self.stepper.at(), &record) {
+            (Some(stop), Some(r)) => zsim::words!(
+                "tui-heading",
+                polygon = polygon_name(scene, stop.polygon),
+                scanline = scanline_text(r.row)
+            ),
             _ => zsim::words!("tui-heading-end"),
         };
         let view = match self.view {
@@ -327,7 +269,7 @@ impl<'t, 's> App<'t, 's> {
             View::Depth => zsim::words!("buffer-depth"),
         };
         let score = self.quiz.as_ref().map_or(String::new(), |q| {
-            zsim::words!("tui-score", right = q.state.right.to_string(), asked = q.state.asked.to_string())
+            zsim::words!("tui-score", right = q.right.to_string(), asked = q.asked.to_string())
         });
         frame.render_widget(
             Paragraph::new(zsim::words!("tui-title", heading = heading, view = view, score = score))
@@ -361,21 +303,31 @@ impl<'t, 's> App<'t, 's> {
         }
         let status_text = if let Some(text) = &self.go {
             zsim::words!("tui-go", text = text)
-        } else if let Some(verdict) = self.quiz.as_ref().and_then(|q| q.verdict.clone()) {
+        } else if let Some(verdict) = &self.verdict {
             zsim::words!("tui-verdict-next", verdict = verdict)
-        } else if self.quiz.is_some() && self.asking() {
-            let record = record.as_ref().expect("asking implies a scanline");
-            let pixel = &record.pixels[self.pixel.unwrap_or(0)];
-            let typed = self.quiz.as_ref().map_or("", |q| q.typed.as_str());
-            let ask = zsim::words!(
-                "tui-quiz-ask",
-                x = pixel.x,
-                y = pixel.y,
-                stored = pixel.stored_before.to_string(),
-                typed = typed
-            );
-            // Why the last answer was asked again, before the question.
-            if self.message.is_empty() { ask } else { format!("{} {ask}", self.message) }
+        } else if let Some(question) = self.question() {
+            let typed = zsim::printable(&self.typed).into_owned();
+            let ask = match question {
+                Question::Coverage { row, .. } => {
+                    zsim::words!("tui-quiz-coverage-ask", scanline = scanline_text(row), typed = typed)
+                }
+                Question::Frame { pixel, .. } => zsim::words!(
+                    "tui-quiz-frame-ask",
+                    x = pixel.x,
+                    y = pixel.y,
+                    before = pixel.frame_before,
+                    typed = typed
+                ),
+                Question::Depth { pixel, .. } => zsim::words!(
+                    "tui-quiz-ask",
+                    x = pixel.x,
+                    y = pixel.y,
+                    stored = pixel.stored_before.to_string(),
+                    typed = typed
+                ),
+            };
+            // Why the last answer was asked again, on its own line above the question.
+            if self.message.is_empty() { ask } else { format!("{}\n{ask}", self.message) }
         } else if !self.message.is_empty() {
             self.message.clone()
         } else {
@@ -386,13 +338,15 @@ impl<'t, 's> App<'t, 's> {
 
     /// The raster's rows that fit, top row first, centred on the scanline.
     fn draw_raster(&mut self, frame: &mut Frame<'_>, area: Rect, record: Option<&ScanlineRecord>) {
-        let scene = self.tracer.scene;
-        let Some((p, k)) = self.at else {
+        let scene = self.stepper.scene();
+        let Some(stop) = self.stepper.at() else {
             frame.render_widget(Paragraph::new(zsim::words!("tui-no-scanline")), area);
             return;
         };
-        let done = self.pixel.unwrap_or(usize::MAX);
-        let buffers: Buffers = self.tracer.buffers_through(p, k, done);
+        let done = self.shown_pixels();
+        // Until the coverage question is answered, the covered cells are not marked.
+        let coverage_pending = self.quiz.as_deref().is_some_and(|quiz| quiz.coverage_pending(self.stepper));
+        let buffers: Buffers = self.stepper.tracer().buffers_through(stop, done);
         let values: Vec<Vec<String>> = match self.view {
             View::Frame => buffers.frame_rows().iter().map(|r| r.iter().map(u32::to_string).collect()).collect(),
             View::Depth => {
@@ -412,11 +366,15 @@ impl<'t, 's> App<'t, 's> {
         let top = (row + rows_shown / 2 - self.scroll.0).clamp((rows_shown - 1).min(height - 1), height - 1);
         let first =
             ((span_first + span_last) / 2 - columns_shown / 2 + self.scroll.1).clamp(0, (width - columns_shown).max(0));
-        let trace_pixels: std::collections::HashSet<(u32, u32)> = self.tracer.trace(p).scanlines[..k]
+        let trace_pixels: std::collections::HashSet<(u32, u32)> = self.stepper.tracer().trace(stop.polygon).scanlines
+            [..stop.scanline]
             .iter()
             .flat_map(|r| r.pixels.iter().filter(|e| e.outcome == Outcome::Written).map(|e| (e.x, e.y)))
             .collect();
-        let current: Vec<u32> = record.map_or(Vec::new(), |r| r.pixels.iter().map(|e| e.x).collect());
+        let current: Vec<u32> = match record {
+            Some(r) if !coverage_pending => r.pixels.iter().map(|e| e.x).collect(),
+            _ => Vec::new(),
+        };
         let focus = record.and_then(|r| done.checked_sub(1).and_then(|i| r.pixels.get(i))).map(|e| e.x);
         let mut lines = Vec::new();
         for y in (0..=top).rev().take(rows_shown as usize) {
@@ -453,38 +411,26 @@ impl<'t, 's> App<'t, 's> {
 
     /// The right panel: the polygon, the scanline, crossings, spans, and the pixel's row.
     fn details(&mut self, record: Option<&ScanlineRecord>) -> Vec<Line<'static>> {
-        let scene = self.tracer.scene;
-        let (Some((p, _)), Some(record)) = (self.at, record) else {
+        let scene = self.stepper.scene();
+        let (Some(stop), Some(record)) = (self.stepper.at(), record) else {
             return vec![Line::from(zsim::words!("tui-end"))];
         };
-        let geometry = scene.polygons[p].geometry();
+        let geometry = scene.polygons[stop.polygon].geometry();
         let slope = geometry.slope().map_or_else(String::new, fraction);
+        let stop_words = self.stepper.stop_words(stop);
         let mut lines = vec![
-            Line::styled(report::polygon_heading(scene, p), Style::new().add_modifier(Modifier::BOLD)),
+            Line::styled(stop_words.heading, Style::new().add_modifier(Modifier::BOLD)),
             Line::from(zsim::words!("tui-slope", slope = slope)),
-            Line::from(zsim::words!(
-                "step-scanline",
-                scanline = scanline_text(record.row),
-                row = record.row.to_string()
-            )),
+            Line::from(stop_words.scanline),
         ];
-        let crossings: Vec<String> = record.crossings.iter().map(exact_and_decimal).collect();
-        lines.push(Line::from(zsim::words!("step-crossings", list = crossings.join(&zsim::words!("list-comma")))));
-        for (i, span) in record.spans.iter().enumerate() {
-            let columns = span.columns.map_or_else(
-                || zsim::words!("tui-no-centre"),
-                |(f, l)| zsim::words!("step-columns", first = f.to_string(), last = l.to_string()),
-            );
-            lines.push(Line::from(zsim::words!(
-                "tui-span",
-                n = (i + 1).to_string(),
-                left = exact_and_decimal(&span.left),
-                right = exact_and_decimal(&span.right),
-                columns = columns
-            )));
+        // The crossings and spans would answer the coverage question: shown once it is answered.
+        if !self.quiz.as_deref().is_some_and(|quiz| quiz.coverage_pending(self.stepper)) {
+            lines.push(Line::from(stop_words.crossings));
+            lines.extend(stop_words.spans.into_iter().map(Line::from));
         }
         lines.push(Line::from(""));
-        let Some(done) = self.pixel else {
+        let pixel_steps = if self.quiz.is_some() { Some(self.shown_pixels()) } else { self.pixel };
+        let Some(done) = pixel_steps else {
             // Scanline steps: the table, one line a pixel: x, z, the test, what is stored.
             // `always` and `never` compare nothing: say so instead of a symbol.
             let (op, compares) = match scene.depth_test.compares() {
@@ -545,9 +491,28 @@ impl<'t, 's> App<'t, 's> {
     }
 }
 
-/// Runs the app on the terminal until the user quits; the terminal is given
-/// back as it was (raw mode off, alternate screen left) on quitting and on a
-/// panic (ratatui's hook).
+/// A verdict as the status line shows it.
+fn verdict_text(verdict: &Verdict) -> String {
+    let right_or_wrong = if verdict.right { zsim::words!("tui-right") } else { zsim::words!("tui-wrong") };
+    match &verdict.question {
+        Question::Coverage { .. } => zsim::words!(
+            "tui-quiz-coverage-verdict",
+            right = &verdict.expected,
+            typed = &verdict.said,
+            verdict = right_or_wrong,
+            why = &verdict.why
+        ),
+        Question::Depth { pixel, .. } | Question::Frame { pixel, .. } => zsim::words!(
+            "tui-quiz-verdict",
+            x = pixel.x,
+            y = pixel.y,
+            typed = &verdict.said,
+            verdict = right_or_wrong,
+            reason = &verdict.why
+        ),
+    }
+}
+
 /// The numbers of `columns`, each right-aligned under its cell of `cell`
 /// characters, left out where it would touch the number before it (on
 /// narrow cells every other one, or fewer, is shown).
@@ -566,7 +531,10 @@ fn column_numbers(columns: std::ops::RangeInclusive<i32>, cell: usize) -> String
     line
 }
 
-pub fn run(app: &mut App<'_, '_>) -> std::io::Result<()> {
+/// Runs the app on the terminal until the user quits; the terminal is given
+/// back as it was (raw mode off, alternate screen left) on quitting and on a
+/// panic (ratatui's hook).
+pub fn run(app: &mut App<'_, '_, '_>) -> std::io::Result<()> {
     let mut terminal = ratatui::init();
     let result = (|| {
         while !app.quit {

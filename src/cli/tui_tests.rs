@@ -2,14 +2,22 @@
 use super::*;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
-use zsim::Scene;
+use zsim::step::QuizMode;
+use zsim::{Scene, Stop};
+
+/// A stepper at `start`, or at the first stop.
+fn stepper(scene: &Scene, start: Option<Stop>) -> Stepper<'_> {
+    let mut stepper = Stepper::new(scene, zsim::arith::Arith::Exact);
+    stepper.start(start);
+    stepper
+}
 
 fn book() -> Scene {
     Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
 }
 
 /// The screen as text, one line a row.
-fn screen(app: &mut App<'_, '_>, width: u16, height: u16) -> String {
+fn screen(app: &mut App<'_, '_, '_>, width: u16, height: u16) -> String {
     let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
     terminal.draw(|frame| app.draw(frame)).unwrap();
     let buffer = terminal.backend().buffer();
@@ -33,7 +41,7 @@ fn screen(app: &mut App<'_, '_>, width: u16, height: u16) -> String {
         .collect()
 }
 
-fn press(app: &mut App<'_, '_>, keys: &str) {
+fn press(app: &mut App<'_, '_, '_>, keys: &str) {
     for c in keys.chars() {
         let code = match c {
             '\n' => KeyCode::Enter,
@@ -56,8 +64,8 @@ fn snapshot(name: &str, text: String) {
 #[test]
 fn the_app_speaks_the_chosen_language() {
     let scene = book();
-    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
-    let mut app = App::new(&mut tracer, None, false);
+    let mut stepper = stepper(&scene, None);
+    let mut app = App::new(&mut stepper, None);
     let text = zsim::with_language(zsim::Lang::Zh, || {
         press(&mut app, "pg15\n");
         screen(&mut app, 100, 30)
@@ -69,8 +77,8 @@ fn the_app_speaks_the_chosen_language() {
 #[test]
 fn the_first_screen_fits_80_by_24() {
     let scene = book();
-    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
-    let mut app = App::new(&mut tracer, None, false);
+    let mut stepper = stepper(&scene, None);
+    let mut app = App::new(&mut stepper, None);
     let text = screen(&mut app, 80, 24);
     assert!(text.lines().all(|l| l.chars().count() <= 80));
     assert!(text.starts_with("zsim step · polygon 1 \"rectangle\", scanline y = 5.5 · framebuffer · ? keys"), "{text}");
@@ -80,8 +88,8 @@ fn the_first_screen_fits_80_by_24() {
 #[test]
 fn keys_move_without_enter_and_the_book_pixel_shows() {
     let scene = book();
-    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
-    let mut app = App::new(&mut tracer, None, false);
+    let mut stepper = stepper(&scene, None);
+    let mut app = App::new(&mut stepper, None);
     // p: the triangle's first scanline (row 10); g15⏎: its scanline 15; z: the z-buffer.
     press(&mut app, "pg15\nz");
     let text = screen(&mut app, 100, 30);
@@ -141,14 +149,15 @@ mod random_keys {
             example in prop::sample::select(vec![
                 "rogers", "antialias", "clip_space", "perspective", "concave", "cull", "section", "transparency",
             ]),
-            quiz in any::<bool>(),
+            quiz in prop::option::of(prop::sample::select(vec![QuizMode::Depth, QuizMode::Frame, QuizMode::Coverage])),
             size in (1u16..120, 1u16..40),
             keys in prop::collection::vec(key(), 0..60),
         ) {
             let path = format!("{}/examples/{example}.json", env!("CARGO_MANIFEST_DIR"));
             let scene = Scene::load(std::path::Path::new(&path)).unwrap();
-            let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
-            let mut app = App::new(&mut tracer, None, quiz);
+            let mut stepper = stepper(&scene, None);
+            let mut quiz = quiz.map(Quiz::new);
+            let mut app = App::new(&mut stepper, quiz.as_mut());
             screen(&mut app, size.0, size.1);
             for code in keys {
                 app.key(KeyEvent::new(code, KeyModifiers::NONE));
@@ -161,9 +170,10 @@ mod random_keys {
 #[test]
 fn the_quiz_asks_before_each_pixel_is_shown() {
     let scene = book();
-    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
     // The triangle's scanline 15 (its recorded scanline 5: rows 10 … 15).
-    let mut app = App::new(&mut tracer, Some((1, 5)), true);
+    let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
+    let mut quiz = Quiz::new(QuizMode::Depth);
+    let mut app = App::new(&mut stepper, Some(&mut quiz));
     let text = screen(&mut app, 100, 30);
     assert!(text.contains("quiz: the z-buffer after (15, 15), stored 10?"), "{text}");
     press(&mut app, "15\n");
@@ -180,8 +190,8 @@ fn the_quiz_asks_before_each_pixel_is_shown() {
 #[test]
 fn the_keys_box_keeps_each_key_and_its_action_on_one_line_at_80_by_24() {
     let scene = book();
-    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
-    let mut app = App::new(&mut tracer, None, false);
+    let mut stepper = stepper(&scene, None);
+    let mut app = App::new(&mut stepper, None);
     press(&mut app, "?");
     let text = screen(&mut app, 80, 24);
     for line in ["n Space Enter → ↓  next scanline (or pixel)", "f / z              show the framebuffer / z-buffer"]
@@ -204,8 +214,9 @@ fn the_keys_box_keeps_each_key_and_its_action_on_one_line_at_80_by_24() {
 #[test]
 fn the_quiz_asks_again_on_junk_and_keeps_digits_typed_after_a_verdict() {
     let scene = book();
-    let mut tracer = Tracer::new(&scene, zsim::arith::Arith::Exact);
-    let mut app = App::new(&mut tracer, Some((1, 5)), true);
+    let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
+    let mut quiz = Quiz::new(QuizMode::Depth);
+    let mut app = App::new(&mut stepper, Some(&mut quiz));
     press(&mut app, "abc\n");
     let text = screen(&mut app, 100, 30);
     assert!(text.contains("\"abc\" is not an answer"), "{text}");
@@ -225,13 +236,50 @@ fn the_quiz_asks_again_on_junk_and_keeps_digits_typed_after_a_verdict() {
     assert!(text.contains("quiz 2/2"), "{text}");
     press(&mut app, "1\nq");
     assert!(app.quit);
-    let summary = app.quiz_summary().expect("a quiz");
+    let summary = quiz.summary();
     assert!(
         summary.starts_with(
             "quiz score: 2 of 3 right\nyour mistakes:\n  (17, 15) of polygon 2 \"triangle\": you said 1, right 13: "
         ),
         "{summary}"
     );
+}
+
+/// Found by a new student: `--quiz coverage` in the full-screen app skipped
+/// the coverage question, asked for the z-buffer and marked the covered
+/// columns, and `16-27` was "not an answer". Now the question comes first,
+/// nothing on the screen gives it away, and a range answers it.
+#[test]
+fn the_full_screen_quiz_asks_the_coverage_question_first() {
+    let scene = book();
+    let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
+    let mut quiz = Quiz::new(QuizMode::Coverage);
+    let mut app = App::new(&mut stepper, Some(&mut quiz));
+    let text = screen(&mut app, 120, 30);
+    assert!(text.contains("quiz: which centres does scanline y = 15.5 cover?"), "{text}");
+    assert!(!text.contains("crossings"), "the crossings would give the answer away: {text}");
+    press(&mut app, "16-27\n");
+    let text = screen(&mut app, 120, 30);
+    assert!(text.contains("columns 15-27: you said 16-27: wrong"), "{text}");
+    assert!(text.contains("quiz 0/1"), "{text}");
+    press(&mut app, "n");
+    let text = screen(&mut app, 120, 30);
+    assert!(text.contains("quiz: the z-buffer after (15, 15), stored 10?"), "then the z-buffer: {text}");
+}
+
+/// The framebuffer question, asked and judged in the full-screen app.
+#[test]
+fn the_full_screen_quiz_asks_the_framebuffer_question() {
+    let scene = book();
+    let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
+    let mut quiz = Quiz::new(QuizMode::Frame);
+    let mut app = App::new(&mut stepper, Some(&mut quiz));
+    let text = screen(&mut app, 120, 30);
+    assert!(text.contains("quiz: the framebuffer after (15, 15), now 1?"), "{text}");
+    press(&mut app, "2\n");
+    let text = screen(&mut app, 120, 30);
+    assert!(text.contains("(15, 15): you said 2: right"), "{text}");
+    assert!(text.contains("quiz 1/1"), "{text}");
 }
 
 /// Found by a new student: the raster pane had row numbers but no column

@@ -1,14 +1,13 @@
-//! The stepper's model: the polygons of a scene recorded one at a time as a
-//! student reaches them, the stops (scanlines with covered centres) between
-//! them, the buffers at any point, and how a quiz answer is judged. The
-//! terminal stepper, the full-screen app and the page all read it.
+//! The stepper's recording: the polygons of a scene recorded one at a time
+//! as a student reaches them, the stops (scanlines with covered centres)
+//! between them, and the buffers at any point. The teaching model
+//! (`teach::step`: moving between stops, the quiz and its judge) reads it.
 
-use crate::numbers::{Exact, parse_number};
 use crate::observe::explain::{fate_text, scanline_text};
 use crate::observe::trace::{Recorder, ScanlineRecord};
 use crate::scene::Scene;
 use crate::simulate::buffer::Buffers;
-use crate::simulate::events::{Fate, Outcome, PixelEvent};
+use crate::simulate::events::Fate;
 use crate::simulate::simulation::Simulation;
 
 /// What the stepper passes over on its way to the next stop.
@@ -63,6 +62,16 @@ pub struct PolygonTrace {
     pub scanlines: Vec<ScanlineRecord>,
 }
 
+/// A stop of the stepper: a recorded scanline of a polygon that covers at
+/// least one pixel centre. Stops are ordered as the algorithm reaches them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Stop {
+    /// 0-based polygon index.
+    pub polygon: usize,
+    /// Index into the polygon's recorded scanlines (bottom to top), not a row.
+    pub scanline: usize,
+}
+
 /// Records polygons as the user reaches them.
 pub struct Tracer<'s> {
     /// The scene stepped through.
@@ -91,12 +100,12 @@ impl<'s> Tracer<'s> {
         &self.traces[index]
     }
 
-    /// The positions (polygon, scanline) that have covered pixels, after `from` (exclusive) or from the start.
-    /// And what was passed over on the way there.
-    pub fn next_stop(&mut self, from: Option<(usize, usize)>) -> (Option<(usize, usize)>, Vec<Skip>) {
+    /// The first stop after `from` (exclusive), or from the start, and what
+    /// was passed over on the way there.
+    pub fn next_stop(&mut self, from: Option<Stop>) -> (Option<Stop>, Vec<Skip>) {
         let mut skipped = Vec::new();
         let (mut polygon, mut scanline) = match from {
-            Some((p, s)) => (p, s + 1),
+            Some(stop) => (stop.polygon, stop.scanline + 1),
             None => (0, 0),
         };
         while polygon < self.scene.polygons.len() {
@@ -109,7 +118,7 @@ impl<'s> Tracer<'s> {
             while scanline < trace.scanlines.len() {
                 let record = &trace.scanlines[scanline];
                 if !record.pixels.is_empty() {
-                    return (Some((polygon, scanline)), skipped);
+                    return (Some(Stop { polygon, scanline }), skipped);
                 }
                 skipped.push(Skip::NoCentre { polygon, row: record.row, crossings: !record.crossings.is_empty() });
                 scanline += 1;
@@ -120,79 +129,43 @@ impl<'s> Tracer<'s> {
         (None, skipped)
     }
 
-    /// The stop before `from`, if any.
-    pub fn previous_stop(&mut self, from: (usize, usize)) -> Option<(usize, usize)> {
-        let mut stops = Vec::new();
-        for polygon in 0..=from.0 {
+    /// The stop before `from`, if any (`from` need not be a stop: polygon
+    /// `polygons.len()` asks for the last stop of all).
+    pub fn previous_stop(&mut self, from: Stop) -> Option<Stop> {
+        let mut previous = None;
+        for polygon in 0..=from.polygon.min(self.scene.polygons.len().saturating_sub(1)) {
             let trace = self.trace(polygon);
-            for (k, record) in trace.scanlines.iter().enumerate() {
-                if !record.pixels.is_empty() && (polygon, k) < from {
-                    stops.push((polygon, k));
+            for (scanline, record) in trace.scanlines.iter().enumerate() {
+                let stop = Stop { polygon, scanline };
+                if !record.pixels.is_empty() && stop < from {
+                    previous = Some(stop);
                 }
             }
         }
-        stops.pop()
+        previous
     }
 
-    /// The buffers after scanline `k` of polygon `p`.
-    pub fn buffers_after(&mut self, p: usize, k: usize) -> Buffers {
-        self.buffers_through(p, k, usize::MAX)
+    /// The record of a stop's scanline.
+    pub fn record(&mut self, stop: Stop) -> &ScanlineRecord {
+        &self.trace(stop.polygon).scanlines[stop.scanline]
     }
 
-    /// The buffers after the scanlines before `k` of polygon `p` and the first
-    /// `pixels` covered pixels of scanline `k`.
-    pub fn buffers_through(&mut self, p: usize, k: usize, pixels: usize) -> Buffers {
-        let trace = self.trace(p);
+    /// The buffers after a stop's scanline.
+    pub fn buffers_after(&mut self, stop: Stop) -> Buffers {
+        self.buffers_through(stop, usize::MAX)
+    }
+
+    /// The buffers after the scanlines of the stop's polygon before it and
+    /// the first `pixels` covered pixels of its own.
+    pub fn buffers_through(&mut self, stop: Stop, pixels: usize) -> Buffers {
+        let trace = self.trace(stop.polygon);
         let mut buffers = trace.before.clone();
-        for (j, record) in trace.scanlines[..=k].iter().enumerate() {
-            let count = if j == k { pixels.min(record.pixels.len()) } else { record.pixels.len() };
+        for (j, record) in trace.scanlines[..=stop.scanline].iter().enumerate() {
+            let count = if j == stop.scanline { pixels.min(record.pixels.len()) } else { record.pixels.len() };
             for pixel in &record.pixels[..count] {
                 buffers.store(pixel.x, pixel.y, pixel.frame_after, pixel.stored_after.clone());
             }
         }
         buffers
     }
-}
-
-/// Judges a quiz answer for a pixel: whether it is right, and what the
-/// student meant; `None` when the text is neither `-` nor a number. Right is
-/// the value the z-buffer holds after the pixel; for a pixel not written,
-/// `-` or the value it keeps. The line mode and the full-screen app both ask this.
-pub fn judge(pixel: &PixelEvent, typed: &str) -> Option<(bool, Meant)> {
-    let written = pixel.outcome == Outcome::Written;
-    if typed == "-" {
-        return Some((!written, Meant::NotWritten));
-    }
-    let value = parse_number(typed).ok()?;
-    Some(match Exact::Word(value) == pixel.stored_after.value() {
-        true if written => (true, Meant::ValueWritten),
-        true => (true, Meant::ValueKept),
-        false => (false, Meant::Value),
-    })
-}
-
-/// Why `typed` is a number no cell of `scene`'s z-buffer can hold (a
-/// quantized z-buffer holds whole levels 0 … max), so that the quiz asks
-/// again instead of scoring it; `None` for any other text (`judge` decides).
-pub fn does_not_fit(scene: &Scene, typed: &str) -> Option<String> {
-    if scene.rules.store != crate::rules::DepthStore::Quantized {
-        return None;
-    }
-    let value = parse_number(typed).ok()?;
-    let max = scene.depth_max();
-    let fits = value.is_integer() && *value.numer() >= 0 && *value.numer() <= i128::from(max);
-    (!fits).then(|| words!("quiz-does-not-fit", text = typed, max = max.to_string()))
-}
-
-/// What a quiz answer meant.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Meant {
-    /// `-`: not written.
-    NotWritten,
-    /// The value written.
-    ValueWritten,
-    /// The value a pixel not written keeps.
-    ValueKept,
-    /// Some value.
-    Value,
 }

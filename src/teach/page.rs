@@ -1,23 +1,26 @@
 //! `zsim step --html`: the stepper as one self-contained page (no network,
-//! no external script or style) for a course site or a lecture. Every number
-//! on it comes from the recorded trace, embedded as data; the page's script
-//! only shows it.
+//! no external script or style) for a course site or a lecture. Every stop,
+//! every number and every word on it comes from the teaching model
+//! ([`crate::teach::step`]), embedded as data; the page's script only shows
+//! it. The quiz's answers are judged by the model's rule for depth answers
+//! (`-`, or a number read exactly: an integer, a decimal or a fraction, that
+//! a cell can hold), which the script applies to the embedded right answer;
+//! the tests hold the two to the same verdicts through a real browser.
 
-use zsim::Outcome;
-use zsim::exact_and_decimal;
-use zsim::explain::{pixel_reason, scanline_text};
-use zsim::report::{self, MatrixCell};
-
-use zsim::Tracer;
+use crate::numbers::exact_and_decimal;
+use crate::observe::explain::pixel_reason;
+use crate::observe::report::MatrixCell;
+use crate::simulate::events::Outcome;
+use crate::teach::step::{Moved, Stepper};
 
 /// The page for the whole scene: every scanline that covers a pixel, in order.
-pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {
-    let scene = tracer.scene;
+pub fn page(stepper: &mut Stepper<'_>, title: &str) -> String {
+    let scene = stepper.scene();
     let mut stops = Vec::new();
-    let mut at = tracer.next_stop(None).0;
-    while let Some((p, k)) = at {
-        let record = tracer.trace(p).scanlines[k].clone();
-        let buffers = tracer.buffers_after(p, k);
+    let mut moved = stepper.start(None);
+    while let Moved::To { at: Some(stop), .. } = moved {
+        let record = stepper.tracer().record(stop).clone();
+        let buffers = stepper.tracer().buffers_after(stop);
         let pixels: Vec<serde_json::Value> = record
             .pixels
             .iter()
@@ -25,62 +28,46 @@ pub fn page(tracer: &mut Tracer<'_>, title: &str) -> String {
                 serde_json::json!({
                     "x": e.x, "z": exact_and_decimal(e.depth.value()), "stored": e.stored_before.to_string(),
                     "written": e.outcome == Outcome::Written, "after": e.stored_after.to_string(),
-                    "afterValue": zsim::report::exact_json(e.stored_after.value()), "frame": e.frame_after,
+                    "afterExact": crate::numbers::fraction(e.stored_after.value()), "frame": e.frame_after,
                     "frameBefore": e.frame_before,
                     "reason": pixel_reason(scene, e),
                 })
             })
             .collect();
-        let spans: Vec<String> = record
-            .spans
-            .iter()
-            .enumerate()
-            .map(|(i, s)| {
-                let columns = s.columns.map_or_else(
-                    || zsim::words!("tui-no-centre"),
-                    |(f, l)| zsim::words!("step-columns", first = f.to_string(), last = l.to_string()),
-                );
-                zsim::words!(
-                    "tui-span",
-                    n = (i + 1).to_string(),
-                    left = exact_and_decimal(&s.left),
-                    right = exact_and_decimal(&s.right),
-                    columns = columns
-                )
-            })
-            .collect();
-        let crossings: Vec<String> = record.crossings.iter().map(exact_and_decimal).collect();
+        let stop_words = stepper.stop_words(stop);
         stops.push(serde_json::json!({
-            "polygon": p, "heading": report::polygon_heading(scene, p), "row": record.row,
-            "scanline": zsim::words!("step-scanline", scanline = scanline_text(record.row), row = record.row.to_string()),
-            "crossings": zsim::words!("step-crossings", list = crossings.join(&zsim::words!("list-comma"))),
-            "spans": spans, "pixels": pixels,
+            "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
+            "scanline": stop_words.scanline, "crossings": stop_words.crossings, "spans": stop_words.spans,
+            "pixels": pixels,
             "frame": buffers.frame_rows(),
             "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
         }));
-        at = tracer.next_stop(Some((p, k))).0;
+        moved = stepper.next();
     }
     // The page's words, in the student's language; {…} marks what the script fills in.
     let words = serde_json::json!({
-        "noPixel": zsim::words!("page-no-pixel"),
-        "frameAfter": zsim::words!("page-frame-after"),
-        "depthAfter": zsim::words!("page-depth-after"),
-        "frameBefore": zsim::words!("page-frame-before"),
-        "depthBefore": zsim::words!("page-depth-before"),
-        "notNumber": zsim::words!("page-not-a-number", text = "{text}"),
-        "unanswered": zsim::words!("page-unanswered"),
-        "stored": zsim::words!("page-column-stored"),
-        "yours": zsim::words!("page-column-yours"),
-        "after": zsim::words!("page-column-after"),
-        "why": zsim::words!("page-column-why"),
-        "check": zsim::words!("page-check"),
-        "keeps": zsim::words!("page-keeps", value = "{after}"),
-        "right": zsim::words!("page-right"),
-        "wrong": zsim::words!("page-wrong"),
-        "quizScore": zsim::words!("page-quiz-score", right = "{right}", total = "{total}"),
-        "status": zsim::words!("page-status", at = "{at}", count = "{count}"),
+        "noPixel": words!("page-no-pixel"),
+        "frameAfter": words!("page-frame-after"),
+        "depthAfter": words!("page-depth-after"),
+        "frameBefore": words!("page-frame-before"),
+        "depthBefore": words!("page-depth-before"),
+        "notNumber": words!("page-not-a-number", text = "{text}"),
+        "doesNotFit": words!("quiz-does-not-fit", text = "{text}", max = scene.depth_max().to_string()),
+        "unanswered": words!("page-unanswered"),
+        "stored": words!("page-column-stored"),
+        "yours": words!("page-column-yours"),
+        "after": words!("page-column-after"),
+        "why": words!("page-column-why"),
+        "check": words!("page-check"),
+        "keeps": words!("page-keeps", value = "{after}"),
+        "right": words!("page-right"),
+        "wrong": words!("page-wrong"),
+        "quizScore": words!("page-quiz-score", right = "{right}", total = "{total}"),
+        "status": words!("page-status", at = "{at}", count = "{count}"),
     });
-    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "op": scene.depth_test.symbol(), "words": words, "stops": stops});
+    // The most a cell can hold, for the quiz's "no cell can hold it" (`None`: exact depths).
+    let max = (scene.rules.store == crate::rules::DepthStore::Quantized).then(|| scene.depth_max());
+    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "op": scene.depth_test.symbol(), "max": max, "words": words, "stops": stops});
     let data = serde_json::to_string(&data).expect("serializing plain data cannot fail");
     let (head, tail) = TEMPLATE.split_once("{{DATA}}").expect("the template has a place for the data");
     // The data goes in last, so that nothing in it (a polygon named "{{TITLE}}") is
@@ -109,7 +96,7 @@ fn fill(part: &str, title: &str) -> String {
         ("{{DEPTH}}", Some("page-depth")),
         ("{{QUIZ}}", Some("page-quiz")),
     ] {
-        let text = key.map_or_else(|| zsim::language().code().to_string(), |key| zsim::message(key, &[]));
+        let text = key.map_or_else(|| crate::words::language().code().to_string(), |key| crate::words::text(key, &[]));
         part = part.replace(marker, &escape(&text));
     }
     // The title last: what it holds is never taken for a place in the template.
@@ -148,8 +135,6 @@ button { margin: 0 .3em .5em 0; }
 <span id="status"></span>
 </div>
 <div id="main"><div id="raster"></div><div id="panel"></div></div>
-<pre id="selftest" hidden></pre>
-<script>const pageErrors = []; window.addEventListener("error", e => pageErrors.push(e.message));</script>
 <script type="application/json" id="data">{{DATA}}</script>
 <script>
 "use strict";
@@ -217,20 +202,13 @@ function render() {
     const check = el("button", words.check); check.id = "check";
     check.onclick = () => {
       let right = 0;
-      // A number (integer, fraction or decimal) or "-" is an answer, judged right or wrong
-      // (coloured so); anything else is said not to be a number, an empty box unanswered.
-      const number = /^-?(\d+(\/\d+)?|\d*\.\d+)$/;
       pixels.querySelectorAll("input").forEach((input, i) => {
         const p = stop.pixels[i], typed = input.value.trim(), why = input.parentElement.nextSibling;
-        if (typed === "" || (typed !== "-" && !number.test(typed))) {
-          why.className = "why unanswered";
-          why.textContent = typed === "" ? words.unanswered : words.notNumber.replace("{text}", typed);
-          return;
-        }
-        const ok = typed === "-" ? !p.written : typed === String(p.afterValue);
-        right += ok ? 1 : 0;
-        why.className = ok ? "why right" : "why wrong";
-        why.textContent = (ok ? words.right : words.wrong) + p.reason;
+        const verdict = typed === "" ? { again: words.unanswered } : judge(p, typed);
+        if (verdict.again !== undefined) { why.className = "why unanswered"; why.textContent = verdict.again; return; }
+        right += verdict.right ? 1 : 0;
+        why.className = verdict.right ? "why right" : "why wrong";
+        why.textContent = (verdict.right ? words.right : words.wrong) + p.reason;
       });
       stop.checked = true;
       renderGrid(stop, true);
@@ -239,6 +217,38 @@ function render() {
     panel.appendChild(check);
   }
   document.getElementById("status").textContent = words.status.replace("{at}", at + 1).replace("{count}", data.stops.length);
+}
+// A number read exactly, as the model reads one (an integer, a decimal with an optional
+// exponent, or a fraction of two): [numerator, denominator] as BigInts; null if it is not one.
+function decimal(text) {
+  const m = /^([+-]?)(\d*)(?:\.(\d*))?(?:[eE]([+-]?\d{1,4}))?$/.exec(text.trim());
+  if (!m || (m[2] + (m[3] || "")) === "") return null;
+  let num = BigInt((m[2] || "") + (m[3] || "")), den = 10n ** BigInt((m[3] || "").length);
+  const e = m[4] ? Number(m[4]) : 0;
+  if (e > 0) num *= 10n ** BigInt(e); else if (e < 0) den *= 10n ** BigInt(-e);
+  return [m[1] === "-" ? -num : num, den];
+}
+function exact(text) {
+  const parts = text.split("/");
+  if (parts.length > 2) return null;
+  const a = decimal(parts[0]);
+  if (!a || parts.length === 1) return a;
+  const b = decimal(parts[1]);
+  if (!b || b[0] === 0n) return null;
+  const n = a[0] * b[1], d = a[1] * b[0];
+  return d < 0n ? [-n, -d] : [n, d];
+}
+// The model's judge of a depth answer (teach::step::judge_depth): "-" means not written;
+// a number is right when it is the value the z-buffer holds after the pixel; anything else,
+// or a number no cell can hold, is asked again.
+function judge(p, typed) {
+  if (typed === "-") return { right: !p.written };
+  const q = exact(typed);
+  if (!q) return { again: words.notNumber.replace("{text}", typed) };
+  if (data.max !== null && (q[0] % q[1] !== 0n || q[0] / q[1] < 0n || q[0] / q[1] > BigInt(data.max)))
+    return { again: words.doesNotFit.replace("{text}", typed) };
+  const r = exact(p.afterExact);
+  return { right: q[0] * r[1] === r[0] * q[1] };
 }
 function go(i) { at = Math.max(0, Math.min(data.stops.length - 1, i)); render(); }
 function polygon(direction) {
@@ -266,33 +276,6 @@ document.addEventListener("keydown", e => {
   e.preventDefault();
 });
 render();
-// #selftest: clicks through as a person would and writes what the page showed (for the tests).
-if (location.hash === "#selftest") {
-  const seen = [];
-  const heading = () => document.querySelector("#panel p").textContent;
-  seen.push("start: " + heading());
-  document.getElementById("next").click(); seen.push("after Next: " + heading());
-  document.getElementById("nextPolygon").click();
-  while (data.stops[at].row !== 15 && at < data.stops.length - 1) document.getElementById("next").click();
-  seen.push("at: " + heading());
-  seen.push("panel: " + document.getElementById("panel").textContent);
-  // The quiz on the same scanline, in the z-buffer: the grid before, then answers right, wrong,
-  // not a number, and "-" for the hidden pixel (21, 15), checked.
-  document.getElementById("quiz").click();
-  document.getElementById("depth").click();
-  const row = () => Array.from(document.querySelectorAll("#raster tr.current td")).slice(15, 28).map(td => td.textContent).join(" ");
-  seen.push("quiz grid: " + document.querySelector("#raster div").textContent + ": " + row());
-  const inputs = document.querySelectorAll("#pixels input");
-  inputs[0].value = "15"; inputs[1].value = "10"; inputs[2].value = "zz";
-  inputs.forEach(input => { if (input.dataset.x === "21") input.value = "-"; });
-  document.getElementById("check").click();
-  const verdicts = Array.from(document.querySelectorAll("#pixels td.why")).map((td, i) => inputs[i].dataset.x + " " + td.className.replace("why ", "") + " " + td.textContent.split(":")[0]);
-  seen.push("verdicts: " + verdicts.join(" | "));
-  seen.push("checked grid: " + document.querySelector("#raster div").textContent + ": " + row());
-  seen.push("score: " + document.getElementById("status").textContent);
-  seen.push("errors: " + (pageErrors.length ? pageErrors.join("; ") : "none"));
-  const out = document.getElementById("selftest"); out.hidden = false; out.textContent = seen.join("\n");
-}
 </script>
 </body></html>
 "##;

@@ -1,0 +1,688 @@
+//! The stepper as a teaching model: where the student is (a [`Stop`]), how
+//! each key moves (next, back, next or previous polygon, a row), what a stop
+//! shows, and the quiz: which question comes next, how an answer is judged
+//! (one function per kind of question), the score and each mistake. The
+//! line mode, the full-screen app and the page render these facts and hold
+//! no rule of their own.
+
+use crate::effects::arith::Arith;
+use crate::numbers::{Exact, exact_and_decimal, parse_number};
+use crate::observe::explain::{pixel_reason, polygon_after, polygon_name, scanline_text};
+use crate::observe::step::{Skip, Stop, Tracer};
+use crate::observe::trace::ScanlineRecord;
+use crate::scene::Scene;
+use crate::scene::text::printable;
+use crate::words::token;
+use crate::simulate::events::{Outcome, PixelEvent};
+
+/// Why a move did not go anywhere.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Refusal {
+    /// Back from the first stop.
+    First,
+    /// Previous polygon from the first polygon with a stop.
+    NoEarlierPolygon,
+    /// A row beyond the raster.
+    OutsideRaster {
+        /// The row asked for.
+        row: u32,
+    },
+    /// A row the current polygon does not reach.
+    NotReached {
+        /// 0-based polygon index.
+        polygon: usize,
+        /// The row asked for.
+        row: u32,
+    },
+}
+
+impl Refusal {
+    /// The refusal in one line of the reader's language.
+    pub fn text(&self, scene: &Scene) -> String {
+        match *self {
+            Refusal::First => words!("step-first"),
+            Refusal::NoEarlierPolygon => words!("tui-no-earlier"),
+            Refusal::OutsideRaster { row } => {
+                words!("step-outside-raster", row = row.to_string(), last = (scene.height - 1).to_string())
+            }
+            Refusal::NotReached { polygon, row } => {
+                words!("step-not-reach", polygon = polygon_name(scene, polygon), scanline = scanline_text(row))
+            }
+        }
+    }
+}
+
+/// What a move did.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Moved {
+    /// Arrived at a stop, or at the end (no stop after the last); what was
+    /// passed over on the way.
+    To {
+        /// Where: `None` is the end.
+        at: Option<Stop>,
+        /// What was passed over.
+        skipped: Vec<Skip>,
+    },
+    /// Stayed where it was.
+    Refused(Refusal),
+}
+
+/// The stepper: a recording of the scene and the stop the student is at.
+pub struct Stepper<'s> {
+    tracer: Tracer<'s>,
+    at: Option<Stop>,
+}
+
+impl<'s> Stepper<'s> {
+    /// The stepper before the first stop of `scene`, showing `arith` beside
+    /// the exact values; [`Stepper::start`] moves to the first stop.
+    pub fn new(scene: &'s Scene, arith: Arith) -> Stepper<'s> {
+        Stepper { tracer: Tracer::new(scene, arith), at: None }
+    }
+
+    /// The scene stepped through.
+    pub fn scene(&self) -> &'s Scene {
+        self.tracer.scene
+    }
+
+    /// The arithmetic shown beside the exact values.
+    pub fn arith(&self) -> Arith {
+        self.tracer.arith
+    }
+
+    /// The recording (the buffers at any point, each polygon's trace).
+    pub fn tracer(&mut self) -> &mut Tracer<'s> {
+        &mut self.tracer
+    }
+
+    /// Moves to `at`, or to the first stop when `None`.
+    pub fn start(&mut self, at: Option<Stop>) -> Moved {
+        match at {
+            Some(stop) => self.arrive(Some(stop), Vec::new()),
+            None => {
+                let (first, skipped) = self.tracer.next_stop(None);
+                self.arrive(first, skipped)
+            }
+        }
+    }
+
+    /// Where the student is: `None` at the end.
+    pub fn at(&self) -> Option<Stop> {
+        self.at
+    }
+
+    /// The current stop's scanline, `None` at the end.
+    pub fn record(&mut self) -> Option<&ScanlineRecord> {
+        let stop = self.at?;
+        Some(self.tracer.record(stop))
+    }
+
+    fn arrive(&mut self, at: Option<Stop>, skipped: Vec<Skip>) -> Moved {
+        self.at = at;
+        Moved::To { at, skipped }
+    }
+
+    /// The next stop (or the end).
+    pub fn next(&mut self) -> Moved {
+        match self.at {
+            Some(stop) => {
+                let (next, skipped) = self.tracer.next_stop(Some(stop));
+                self.arrive(next, skipped)
+            }
+            None => self.arrive(None, Vec::new()),
+        }
+    }
+
+    /// The stop before (from the end, the last stop).
+    pub fn back(&mut self) -> Moved {
+        let from = self.at.unwrap_or(Stop { polygon: self.scene().polygons.len(), scanline: 0 });
+        match self.tracer.previous_stop(from) {
+            Some(stop) => self.arrive(Some(stop), Vec::new()),
+            None => Moved::Refused(Refusal::First),
+        }
+    }
+
+    /// The first stop of a later polygon (or the end).
+    pub fn next_polygon(&mut self) -> Moved {
+        let Some(stop) = self.at else { return self.arrive(None, Vec::new()) };
+        let last = self.tracer.trace(stop.polygon).scanlines.len().saturating_sub(1);
+        let (next, skipped) = self.tracer.next_stop(Some(Stop { polygon: stop.polygon, scanline: last }));
+        self.arrive(next, skipped)
+    }
+
+    /// The first stop of the polygon before the current one.
+    pub fn previous_polygon(&mut self) -> Moved {
+        let polygon = self.at.map_or(self.scene().polygons.len(), |stop| stop.polygon);
+        let mut found = self.tracer.previous_stop(Stop { polygon, scanline: 0 });
+        // To the first covering scanline of that polygon.
+        while let Some(stop) = found {
+            match self.tracer.previous_stop(stop) {
+                Some(earlier) if earlier.polygon == stop.polygon => found = Some(earlier),
+                _ => break,
+            }
+        }
+        match found {
+            Some(stop) => self.arrive(Some(stop), Vec::new()),
+            None => Moved::Refused(Refusal::NoEarlierPolygon),
+        }
+    }
+
+    /// Scanline `row` of the current polygon (the last polygon at the end).
+    pub fn go(&mut self, row: u32) -> Moved {
+        let scene = self.scene();
+        if row >= scene.height {
+            return Moved::Refused(Refusal::OutsideRaster { row });
+        }
+        let polygon = self.at.map_or(0, |stop| stop.polygon).min(scene.polygons.len().saturating_sub(1));
+        match self.tracer.trace(polygon).scanlines.iter().position(|r| r.row == row) {
+            Some(scanline) => self.arrive(Some(Stop { polygon, scanline }), Vec::new()),
+            None => Moved::Refused(Refusal::NotReached { polygon, row }),
+        }
+    }
+
+    /// What a stop shows beside the buffers, worded: the polygon, the
+    /// scanline, its crossings and spans.
+    pub fn stop_words(&mut self, stop: Stop) -> StopWords {
+        let scene = self.scene();
+        let record = self.tracer.record(stop);
+        let crossings: Vec<String> = record.crossings.iter().map(exact_and_decimal).collect();
+        let crossings = if crossings.is_empty() {
+            words!("step-crossings", list = words!("step-crossings-none"))
+        } else {
+            words!("step-crossings", list = crossings.join(&words!("list-comma")))
+        };
+        let spans = record
+            .spans
+            .iter()
+            .enumerate()
+            .map(|(i, span)| {
+                let columns = span.columns.map_or_else(
+                    || words!("tui-no-centre"),
+                    |(first, last)| words!("step-columns", first = first.to_string(), last = last.to_string()),
+                );
+                words!(
+                    "tui-span",
+                    n = (i + 1).to_string(),
+                    left = exact_and_decimal(&span.left),
+                    right = exact_and_decimal(&span.right),
+                    columns = columns
+                )
+            })
+            .collect();
+        StopWords {
+            heading: crate::observe::report::polygon_heading(scene, stop.polygon),
+            scanline: words!("step-scanline", scanline = scanline_text(record.row), row = record.row.to_string()),
+            crossings,
+            spans,
+        }
+    }
+}
+
+/// What a stop shows beside the buffers, in the reader's language.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct StopWords {
+    /// The polygon: its name, plane and what it is.
+    pub heading: String,
+    /// The scanline and its row.
+    pub scanline: String,
+    /// The crossings, sorted.
+    pub crossings: String,
+    /// Each span with its columns.
+    pub spans: Vec<String>,
+}
+
+/// A [`Skip`] in one line of the reader's language.
+pub fn skip_text(scene: &Scene, skip: &Skip) -> String {
+    crate::observe::step::skip_text(scene, skip)
+}
+
+/// What the quiz asks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum QuizMode {
+    /// The z-buffer value after each covered pixel.
+    Depth,
+    /// The framebuffer value after each covered pixel.
+    Frame,
+    /// First which centres the scanline covers, then the z-buffer values.
+    Coverage,
+}
+
+/// A question of the quiz.
+#[derive(Debug, Clone)]
+pub enum Question {
+    /// Which columns' centres does the scanline cover?
+    Coverage {
+        /// The stop.
+        stop: Stop,
+        /// The pixel row.
+        row: u32,
+    },
+    /// What does the z-buffer hold after this pixel?
+    Depth {
+        /// The stop.
+        stop: Stop,
+        /// Which covered pixel of the stop, from 0.
+        index: usize,
+        /// The pixel (the value before is shown; the rest is the answer).
+        pixel: PixelEvent,
+    },
+    /// What does the framebuffer hold after this pixel?
+    Frame {
+        /// The stop.
+        stop: Stop,
+        /// Which covered pixel of the stop, from 0.
+        index: usize,
+        /// The pixel (the value before is shown; the rest is the answer).
+        pixel: PixelEvent,
+    },
+}
+
+/// What a depth answer meant.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Meant {
+    /// `-`: not written.
+    NotWritten,
+    /// The value written.
+    ValueWritten,
+    /// The value a pixel not written keeps.
+    ValueKept,
+    /// Some value.
+    Value,
+}
+
+impl Meant {
+    /// What the answer meant, in words.
+    pub fn text(self) -> String {
+        match self {
+            Meant::NotWritten => words!("meant-not-written"),
+            Meant::ValueWritten => words!("meant-value-written"),
+            Meant::ValueKept => words!("meant-value-kept"),
+            Meant::Value => words!("meant-value"),
+        }
+    }
+}
+
+/// The judgement of one answer.
+#[derive(Debug, Clone)]
+pub struct Verdict {
+    /// The question answered.
+    pub question: Question,
+    /// Whether the answer is right.
+    pub right: bool,
+    /// What the student typed, trimmed.
+    pub said: String,
+    /// What a depth answer meant (`None` for coverage).
+    pub meant: Option<Meant>,
+    /// The right answer as a student writes it (`16-27`; `15`; `keeps 0`).
+    pub expected: String,
+    /// Why that is the answer: the spans, or the pixel's test.
+    pub why: String,
+}
+
+/// What became of a typed answer.
+#[derive(Debug, Clone)]
+pub enum Reply {
+    /// Judged and scored.
+    Judged(Verdict),
+    /// Not an answer to this question: why, and the question stays.
+    AskAgain(String),
+}
+
+/// The quiz: which question comes next at the stepper's stop, the score,
+/// and each mistake with what was right and why.
+#[derive(Debug, Clone)]
+pub struct Quiz {
+    /// What it asks.
+    pub mode: QuizMode,
+    /// Answers judged right.
+    pub right: usize,
+    /// Answers judged.
+    pub asked: usize,
+    mistakes: Vec<String>,
+    progress: Progress,
+}
+
+/// How far the questions of one stop have got.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+struct Progress {
+    stop: Option<Stop>,
+    coverage_answered: bool,
+    pixels_answered: usize,
+}
+
+impl Quiz {
+    /// A quiz with nothing asked yet.
+    pub fn new(mode: QuizMode) -> Quiz {
+        Quiz { mode, right: 0, asked: 0, mistakes: Vec::new(), progress: Progress::default() }
+    }
+
+    /// How far the questions of `stop` have got: a stop left and come back
+    /// to is asked again from its first question.
+    fn progress(&self, stop: Stop) -> Progress {
+        if self.progress.stop == Some(stop) { self.progress } else { Progress { stop: Some(stop), ..Progress::default() } }
+    }
+
+    /// The question the stepper's stop asks next; `None` at the end or when
+    /// every question of the stop has been answered.
+    pub fn question(&self, stepper: &mut Stepper<'_>) -> Option<Question> {
+        let stop = stepper.at()?;
+        let progress = self.progress(stop);
+        let record = stepper.tracer.record(stop);
+        if self.mode == QuizMode::Coverage && !progress.coverage_answered {
+            return Some(Question::Coverage { stop, row: record.row });
+        }
+        let pixel = record.pixels.get(progress.pixels_answered)?.clone();
+        let index = progress.pixels_answered;
+        Some(match self.mode {
+            QuizMode::Frame => Question::Frame { stop, index, pixel },
+            QuizMode::Depth | QuizMode::Coverage => Question::Depth { stop, index, pixel },
+        })
+    }
+
+    /// Whether the student must still say which centres the stop covers
+    /// (until then a front end shows neither the spans nor the covered cells).
+    pub fn coverage_pending(&self, stepper: &mut Stepper<'_>) -> bool {
+        matches!(self.question(stepper), Some(Question::Coverage { .. }))
+    }
+
+    /// How many of the stop's covered pixels have been answered (and so may
+    /// be shown).
+    pub fn pixels_answered(&self, stop: Stop) -> usize {
+        self.progress(stop).pixels_answered
+    }
+
+    /// Judges `typed` as the answer to the current question, scores it and
+    /// moves to the next question; `None` when nothing is asked.
+    pub fn answer(&mut self, stepper: &mut Stepper<'_>, typed: &str) -> Option<Reply> {
+        let question = self.question(stepper)?;
+        let scene = stepper.scene();
+        let typed = typed.trim();
+        let judged = match &question {
+            Question::Coverage { stop, .. } => judge_coverage(stepper.tracer.record(*stop), typed),
+            Question::Depth { pixel, .. } => judge_depth(scene, pixel, typed),
+            Question::Frame { pixel, .. } => judge_frame(scene, pixel, typed),
+        };
+        let verdict = match judged {
+            Ok((right, meant, expected, why)) => {
+                let said = printable(typed).into_owned();
+                Verdict { question: question.clone(), right, said, meant, expected, why }
+            }
+            Err(again) => return Some(Reply::AskAgain(again)),
+        };
+        let mut progress = self.progress(stepper.at()?);
+        match question {
+            Question::Coverage { .. } => progress.coverage_answered = true,
+            Question::Depth { .. } | Question::Frame { .. } => progress.pixels_answered += 1,
+        }
+        self.progress = progress;
+        self.asked += 1;
+        if verdict.right {
+            self.right += 1;
+        } else {
+            self.mistakes.push(mistake_text(scene, &verdict));
+        }
+        Some(Reply::Judged(verdict))
+    }
+
+    /// Each mistake, with what was right and why.
+    pub fn mistakes(&self) -> &[String] {
+        &self.mistakes
+    }
+
+    /// The score, and each mistake with what was right and why.
+    pub fn summary(&self) -> String {
+        let score = words!("quiz-score", right = self.right.to_string(), asked = self.asked.to_string());
+        let mut text = format!("{score}\n");
+        if !self.mistakes.is_empty() {
+            text.push_str(&format!("{}\n", words!("quiz-mistakes")));
+            for mistake in &self.mistakes {
+                text.push_str(&format!("  {mistake}\n"));
+            }
+        }
+        text
+    }
+}
+
+/// A wrong answer as the summary lists it.
+fn mistake_text(scene: &Scene, verdict: &Verdict) -> String {
+    match &verdict.question {
+        Question::Coverage { stop, row } => words!(
+            "quiz-coverage-mistake",
+            row = row.to_string(),
+            polygon = polygon_after(scene, stop.polygon),
+            said = &verdict.said,
+            right = &verdict.expected,
+            why = &verdict.why
+        ),
+        Question::Depth { stop, pixel, .. } | Question::Frame { stop, pixel, .. } => words!(
+            "quiz-depth-mistake",
+            x = pixel.x,
+            y = pixel.y,
+            polygon = polygon_after(scene, stop.polygon),
+            said = &verdict.said,
+            right = &verdict.expected,
+            reason = &verdict.why
+        ),
+    }
+}
+
+/// A judged answer: right, what it meant, the right answer and why.
+type Judged = (bool, Option<Meant>, String, String);
+
+/// Judges a coverage answer (`16-27`, `3-5 9-12`, `4` or `-`); `Err` with
+/// the reason to ask again when it is not columns.
+pub fn judge_coverage(record: &ScanlineRecord, typed: &str) -> Result<Judged, String> {
+    let Some(columns) = parse_columns(typed) else { return Err(words!("quiz-coverage-hint")) };
+    let covered: Vec<u32> = record.pixels.iter().map(|e| e.x).collect();
+    let spans: Vec<String> = record
+        .spans
+        .iter()
+        .map(|s| words!("span", left = exact_and_decimal(&s.left), right = exact_and_decimal(&s.right)))
+        .collect();
+    let why = words!("quiz-coverage-why", spans = spans.join(&words!("list-comma")));
+    Ok((columns == covered, None, columns_text(&covered), why))
+}
+
+/// Judges a depth answer for a pixel: `-` (not written) or a number, right
+/// when it is the value the z-buffer holds after the pixel (for a pixel not
+/// written, `-` or the value it keeps); `Err` with the reason to ask again
+/// for text that is neither, or a number no cell can hold.
+pub fn judge_depth(scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Judged, String> {
+    let written = pixel.outcome == Outcome::Written;
+    let expected = if written {
+        pixel.stored_after.to_string()
+    } else {
+        words!("quiz-keeps", value = pixel.stored_after.to_string())
+    };
+    let why = pixel_reason(scene, pixel);
+    if typed == "-" {
+        return Ok((!written, Some(Meant::NotWritten), expected, why));
+    }
+    if let Some(problem) = does_not_fit(scene, typed) {
+        return Err(problem);
+    }
+    let Ok(value) = parse_number(typed) else {
+        let shown = printable(&token(typed)).into_owned();
+        return Err(words!("quiz-not-an-answer", text = shown, hint = words!("quiz-depth-hint")));
+    };
+    let (right, meant) = match Exact::Word(value) == pixel.stored_after.value() {
+        true if written => (true, Meant::ValueWritten),
+        true => (true, Meant::ValueKept),
+        false => (false, Meant::Value),
+    };
+    Ok((right, Some(meant), expected, why))
+}
+
+/// Judges a framebuffer answer for a pixel: `-` (not written) or a whole
+/// value, right when it is the value the framebuffer holds after the pixel;
+/// `Err` with the reason to ask again for text that is neither, or a value
+/// no cell can hold.
+pub fn judge_frame(scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Judged, String> {
+    let written = pixel.outcome == Outcome::Written;
+    let expected = if written {
+        pixel.frame_after.to_string()
+    } else {
+        words!("quiz-keeps", value = pixel.frame_after.to_string())
+    };
+    let why = pixel_reason(scene, pixel);
+    if typed == "-" {
+        return Ok((!written, Some(Meant::NotWritten), expected, why));
+    }
+    let Ok(value) = parse_number(typed) else {
+        let shown = printable(&token(typed)).into_owned();
+        return Err(words!("quiz-not-an-answer", text = shown, hint = words!("quiz-frame-hint")));
+    };
+    let max = crate::scene::max_for_bits(scene.frame_bits);
+    if !value.is_integer() || *value.numer() < 0 || *value.numer() > i128::from(max) {
+        let shown = printable(&token(typed)).into_owned();
+        return Err(words!("quiz-frame-does-not-fit", text = shown, max = max.to_string()));
+    }
+    let (right, meant) = match *value.numer() == i128::from(pixel.frame_after) {
+        true if written => (true, Meant::ValueWritten),
+        true => (true, Meant::ValueKept),
+        false => (false, Meant::Value),
+    };
+    Ok((right, Some(meant), expected, why))
+}
+
+/// Why `typed` is a number no cell of `scene`'s z-buffer can hold (a
+/// quantized z-buffer holds whole levels 0 … max); `None` for any other text.
+fn does_not_fit(scene: &Scene, typed: &str) -> Option<String> {
+    if scene.rules.store != crate::rules::DepthStore::Quantized {
+        return None;
+    }
+    let value = parse_number(typed).ok()?;
+    let max = scene.depth_max();
+    let fits = value.is_integer() && *value.numer() >= 0 && *value.numer() <= i128::from(max);
+    (!fits).then(|| words!("quiz-does-not-fit", text = printable(&token(typed)).into_owned(), max = max.to_string()))
+}
+
+/// The covered columns as a student writes them: `16-27`, `3-5 9-12`, or `-` for none.
+pub fn columns_text(columns: &[u32]) -> String {
+    let mut runs: Vec<(u32, u32)> = Vec::new();
+    for &x in columns {
+        match runs.last_mut() {
+            Some((_, last)) if *last + 1 == x => *last = x,
+            _ => runs.push((x, x)),
+        }
+    }
+    if runs.is_empty() {
+        return "-".to_string();
+    }
+    runs.iter().map(|(a, b)| if a == b { a.to_string() } else { format!("{a}-{b}") }).collect::<Vec<_>>().join(" ")
+}
+
+/// Reads `16-27`, `3-5 9-12`, `4` or `-` as columns; `None` when it is not that.
+pub fn parse_columns(text: &str) -> Option<Vec<u32>> {
+    if text.trim() == "-" {
+        return Some(Vec::new());
+    }
+    let mut columns = Vec::new();
+    for run in text.split([' ', ',']).filter(|r| !r.is_empty()) {
+        let (a, b) = run.split_once(['-', '…']).unwrap_or((run, run));
+        let (a, b): (u32, u32) = (a.trim().parse().ok()?, b.trim().parse().ok()?);
+        if a > b || b - a > 100_000 {
+            return None;
+        }
+        columns.extend(a..=b);
+    }
+    if columns.is_empty() {
+        return None;
+    }
+    columns.sort_unstable();
+    columns.dedup();
+    Some(columns)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn book() -> Scene {
+        Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
+    }
+
+    /// The coverage question comes first in a coverage quiz, then one depth
+    /// question per covered pixel; a range answers it (the full-screen app
+    /// once skipped it and called `16-27` no answer).
+    #[test]
+    fn the_coverage_quiz_asks_coverage_first_and_takes_a_range() {
+        let scene = book();
+        let mut stepper = Stepper::new(&scene, Arith::Exact);
+        stepper.start(None);
+        assert_eq!(stepper.go(15), Moved::To { at: stepper.at(), skipped: Vec::new() });
+        let mut quiz = Quiz::new(QuizMode::Coverage);
+        assert!(matches!(quiz.question(&mut stepper), Some(Question::Coverage { row: 15, .. })));
+        let covered = columns_text(&stepper.record().unwrap().pixels.iter().map(|p| p.x).collect::<Vec<_>>());
+        let Some(Reply::Judged(verdict)) = quiz.answer(&mut stepper, &covered) else { panic!("not judged") };
+        assert!(verdict.right, "{verdict:?}");
+        assert_eq!((quiz.right, quiz.asked), (1, 1));
+        assert!(matches!(quiz.question(&mut stepper), Some(Question::Depth { index: 0, .. })));
+    }
+
+    #[test]
+    fn an_answer_that_is_not_one_is_asked_again_and_not_scored() {
+        let scene = book();
+        let mut stepper = Stepper::new(&scene, Arith::Exact);
+        stepper.start(None);
+        let mut quiz = Quiz::new(QuizMode::Depth);
+        assert!(matches!(quiz.answer(&mut stepper, "zz"), Some(Reply::AskAgain(_))));
+        assert!(matches!(quiz.answer(&mut stepper, "16"), Some(Reply::AskAgain(_))), "a 4-bit z-buffer holds 0 … 15");
+        assert_eq!(quiz.asked, 0);
+    }
+
+    /// One judge: `15`, `15.0` and `30/2` mean the same number.
+    #[test]
+    fn a_number_is_judged_by_its_value_not_its_spelling() {
+        let scene = book();
+        let mut stepper = Stepper::new(&scene, Arith::Exact);
+        stepper.start(None);
+        let quiz = Quiz::new(QuizMode::Depth);
+        let Some(Question::Depth { pixel, .. }) = quiz.question(&mut stepper) else { panic!("no depth question") };
+        let value = pixel.stored_after.to_string();
+        let twice = format!("{}/2", 2 * value.parse::<i64>().unwrap());
+        for typed in [value.clone(), format!("{value}.0"), twice] {
+            let (right, ..) = judge_depth(&scene, &pixel, &typed).unwrap();
+            assert!(right, "{typed}");
+        }
+    }
+
+    /// The framebuffer question: the value after the pixel, judged by value.
+    #[test]
+    fn the_framebuffer_quiz_asks_the_framebuffer_value() {
+        let scene = book();
+        let mut stepper = Stepper::new(&scene, Arith::Exact);
+        stepper.start(None);
+        let mut quiz = Quiz::new(QuizMode::Frame);
+        let Some(Question::Frame { pixel, .. }) = quiz.question(&mut stepper) else { panic!("no framebuffer question") };
+        assert!(matches!(quiz.answer(&mut stepper, "4"), Some(Reply::AskAgain(_))), "a 2-bit framebuffer holds 0 … 3");
+        let Some(Reply::Judged(verdict)) = quiz.answer(&mut stepper, &pixel.frame_after.to_string()) else {
+            panic!("not judged")
+        };
+        assert!(verdict.right);
+        assert!(matches!(quiz.question(&mut stepper), Some(Question::Frame { index: 1, .. })));
+    }
+
+    #[test]
+    fn columns_are_read_as_students_write_them() {
+        assert_eq!(parse_columns("16-27"), Some((16..=27).collect()));
+        assert_eq!(parse_columns("3-5 9"), Some(vec![3, 4, 5, 9]));
+        assert_eq!(parse_columns("-"), Some(vec![]));
+        assert_eq!(parse_columns("x"), None);
+        assert_eq!(parse_columns(""), None);
+        assert_eq!(columns_text(&[3, 4, 5, 9]), "3-5 9");
+    }
+
+    #[test]
+    fn back_from_the_end_is_the_last_stop_and_from_the_first_is_refused() {
+        let scene = book();
+        let mut stepper = Stepper::new(&scene, Arith::Exact);
+        stepper.start(None);
+        assert_eq!(stepper.back(), Moved::Refused(Refusal::First));
+        while stepper.at().is_some() {
+            stepper.next();
+        }
+        let Moved::To { at: Some(last), .. } = stepper.back() else { panic!("no last stop") };
+        assert_eq!(last.polygon, scene.polygons.len() - 1);
+    }
+}
