@@ -359,9 +359,60 @@ impl Depth {
 }
 
 /// `whole + remainder/denominator` rounded half up.
-fn round_half_up(whole: i128, remainder: i128, denominator: i128) -> i128 {
+/// `whole + remainder/denominator` (`0 ≤ remainder < denominator`) rounded
+/// to the nearest integer, halves up: the one rounding rule of every path
+/// (`depth_half_rounds_up`).
+#[inline(always)]
+pub(crate) fn round_half_up<T: Copy + std::ops::Add<Output = T> + PartialOrd + From<bool>>(
+    whole: T,
+    remainder: T,
+    denominator: T,
+) -> T {
     // remainder < denominator < 2^124 (plane::MAX_SCALED; Depth::from_big), so 2·remainder fits.
-    whole + i128::from(2 * remainder >= denominator)
+    whole + T::from(remainder + remainder >= denominator)
+}
+
+/// The depth test as the branch-free loops compare it, beside
+/// [`DepthTest::passes`], which it equals (`branch_free_tests_are_the_tests`).
+/// For `z = whole + remainder/denominator` (`0 ≤ remainder < denominator`)
+/// and an integer stored `s`: `z > s ⇔ ⌈z⌉ > s`, `z ≥ s ⇔ ⌊z⌋ ≥ s`,
+/// `z < s ⇔ ⌊z⌋ < s`, `z ≤ s ⇔ ⌈z⌉ ≤ s`; so each test is
+/// `sign·(v − s) > threshold` with `v` the ceiling or the floor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct BranchFreeTest {
+    /// Whether `v` is the ceiling (else the floor).
+    pub use_ceiling: bool,
+    /// +1 when larger is nearer, −1 otherwise.
+    pub sign: i64,
+    /// 0 for a strict test, −1 for one that passes on equal depths.
+    pub threshold: i64,
+}
+
+impl BranchFreeTest {
+    /// `z > stored`, the book's test, as constants a loop is compiled with.
+    pub const GREATER: BranchFreeTest = BranchFreeTest { use_ceiling: true, sign: 1, threshold: 0 };
+
+    /// The constants of `test`.
+    pub fn of(test: DepthTest) -> BranchFreeTest {
+        let threshold = match test {
+            // sign·(v − s) lies well inside ±2^62, so these decide alone.
+            DepthTest::Always => i64::MIN,
+            DepthTest::Never => i64::MAX,
+            _ => -i64::from(test.equal_passes()),
+        };
+        BranchFreeTest {
+            use_ceiling: matches!(test, DepthTest::Greater | DepthTest::LessEqual),
+            sign: if test.larger_is_nearer() { 1 } else { -1 },
+            threshold,
+        }
+    }
+
+    /// Whether `whole + remainder/denominator` passes against `stored`.
+    #[inline(always)]
+    pub fn passes(self, whole: i64, remainder: i64, stored: u32) -> bool {
+        let v = whole + i64::from(self.use_ceiling & (remainder != 0));
+        self.sign * (v - i64::from(stored)) > self.threshold
+    }
 }
 
 /// The exact depth along one scanline, stepped from pixel to pixel by the
@@ -550,6 +601,30 @@ pub fn depth_at(geometry: &Geometry, x: &Exact, y: &Exact) -> Option<Exact> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The constants the book's test is compiled with are its own.
+    #[test]
+    fn the_compiled_greater_test_is_the_greater_test() {
+        assert_eq!(BranchFreeTest::GREATER, BranchFreeTest::of(DepthTest::Greater));
+    }
+
+    /// The branch-free form of every test decides as the test does, for
+    /// depths around a stored level (whole parts and remainders over 4).
+    #[test]
+    fn branch_free_tests_are_the_tests() {
+        use num_rational::Ratio;
+        let tests = [DepthTest::Greater, DepthTest::Less, DepthTest::GreaterEqual, DepthTest::LessEqual];
+        for test in tests.into_iter().chain([DepthTest::Always, DepthTest::Never]) {
+            for whole in 3..8i64 {
+                for remainder in 0..4i64 {
+                    let z = Ratio::new(i128::from(4 * whole + remainder), 4);
+                    let incoming = Depth::from_fraction(*z.numer(), *z.denom());
+                    let passes = test.passes(&incoming, &Stored::Level(5));
+                    assert_eq!(BranchFreeTest::of(test).passes(whole, remainder, 5), passes, "{test:?} {z}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn depth_half_rounds_up() {

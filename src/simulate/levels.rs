@@ -2,18 +2,16 @@
 //! the book's algorithm on the cells themselves, with nothing between them,
 //! polygon by polygon in scene order.
 
-use std::hint::select_unpredictable;
-
 use crate::numbers::Word;
 use crate::raster::convert::{Scratch, rasterize};
-use crate::raster::depth::{Depth, DepthStepper, DepthTest, Stored};
+use crate::raster::depth::{BranchFreeTest, Depth, DepthStepper, DepthTest, Stored};
 use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
+use crate::simulate::branch_free::{carry_step, test_and_store};
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
 use crate::simulate::setup::{CORE_CACHE, Stats, fate, prefetch_ahead, prefetch_cells};
-use crate::simulate::triangle::{GREATER_CONSTANTS, test_constants};
 
 /// How many polygons ahead the plain loop asks for the cells of.
 const AHEAD: usize = 2;
@@ -165,7 +163,7 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         cells: std::ops::RangeInclusive<usize>,
         (mut whole, mut remainder, denominator, step): (i64, i64, i64, (i64, i64)),
     ) -> u64 {
-        let test = if GREATER { GREATER_CONSTANTS } else { test_constants(self.test) };
+        let test = if GREATER { BranchFreeTest::GREATER } else { BranchFreeTest::of(self.test) };
         let (max, value) = (i64::from(self.depth_max), self.value);
         let mut written = 0u64;
         for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
@@ -224,39 +222,4 @@ impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
             frame_after,
         });
     }
-}
-
-/// One cell of a branch-free loop: the depth `whole + remainder/denominator`
-/// (`0 ≤ remainder < denominator`) against the stored level with the test's
-/// constants (`triangle::test_constants`); both cells are rewritten with
-/// their old or their new value, so nothing is guessed. `covered` false
-/// leaves them as they are. Returns whether the cell was written.
-#[inline(always)]
-pub(super) fn test_and_store<F: FrameCell>(
-    (depth, frame): (&mut u32, &mut F),
-    (whole, remainder, denominator): (i64, i64, i64),
-    (use_ceiling, sign, threshold): (bool, i64, i64),
-    (max, value): (i64, F),
-    covered: bool,
-) -> bool {
-    // The ceiling or the floor, as `triangle::test_constants` explains.
-    let v = whole + i64::from(use_ceiling & (remainder != 0));
-    let passes = covered & (sign * (v - i64::from(*depth)) > threshold);
-    let rounded = (whole + i64::from(2 * remainder >= denominator)).clamp(0, max) as u32;
-    *depth = select_unpredictable(passes, rounded, *depth);
-    *frame = select_unpredictable(passes, value, *frame);
-    passes
-}
-
-/// `whole + remainder/denominator` plus `step`, as whole part and remainder
-/// again (the carry chosen without a branch).
-#[inline(always)]
-pub(super) fn carry_step(
-    (whole, remainder): (i64, i64),
-    (step_whole, step_remainder): (i64, i64),
-    denominator: i64,
-) -> (i64, i64) {
-    let remainder = remainder + step_remainder;
-    let carry = remainder >= denominator;
-    (whole + step_whole + i64::from(carry), remainder - select_unpredictable(carry, denominator, 0))
 }

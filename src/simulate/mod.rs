@@ -3,7 +3,9 @@
 //! asks for (`stages`), telling an observer what happens (`events`); the
 //! plain loop writes the cells directly (`levels`), in tiles on several
 //! threads when nobody watches (`tiles`), small triangles by edge functions
-//! (`triangle`). Imports: scene and the layers before it.
+//! (`triangle`), both over one branch-free cell (`branch_free`). Imports:
+//! scene and the layers before it.
+mod branch_free;
 pub mod buffer;
 pub mod events;
 mod levels;

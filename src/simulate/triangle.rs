@@ -17,12 +17,13 @@
 
 use crate::geometry::plane::Geometry;
 use crate::numbers::Word;
-use crate::raster::depth::{DepthPlane, DepthTest};
+use crate::raster::depth::{BranchFreeTest, DepthPlane, DepthTest};
 use crate::raster::sink::PixelRect;
 use crate::rules::{ColumnRule, RowRule, Rules};
+use crate::simulate::branch_free::{carry_step, test_and_store};
 use crate::simulate::buffer::FrameCell;
 use crate::simulate::events::Observer;
-use crate::simulate::levels::{LevelSink, carry_step, test_and_store};
+use crate::simulate::levels::LevelSink;
 use crate::simulate::setup::CORE_CACHE;
 
 /// The largest bounding box (in pixel centres) drawn this way: above it the
@@ -123,7 +124,7 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         (mut row_whole, mut row_remainder): (i64, i64),
         (denominator, step, down): (i64, (i64, i64), (i64, i64)),
     ) -> (u64, u64) {
-        let test = if GREATER { GREATER_CONSTANTS } else { test_constants(self.test) };
+        let test = if GREATER { BranchFreeTest::GREATER } else { BranchFreeTest::of(self.test) };
         let (max, value, width) = (i64::from(self.depth_max), self.value, self.width);
         let (mut tested, mut written) = (0u64, 0u64);
         let mut row_edges = edges.map(|e| e.0);
@@ -145,37 +146,5 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
             (row_whole, row_remainder) = carry_step((row_whole, row_remainder), down, denominator);
         }
         (tested, written)
-    }
-}
-
-/// [`test_constants`] of `z > stored`, the book's test.
-pub(super) const GREATER_CONSTANTS: (bool, i64, i64) = (true, 1, 0);
-
-/// The depth test as the branch-free loops compare. For
-/// `z = whole + remainder/denominator` (`0 ≤ remainder < denominator`) and
-/// an integer stored `s`: `z > s ⇔ ⌈z⌉ > s`, `z ≥ s ⇔ ⌊z⌋ ≥ s`,
-/// `z < s ⇔ ⌊z⌋ < s`, `z ≤ s ⇔ ⌈z⌉ ≤ s`; so each test is
-/// `sign·(v − s) > threshold` with `v` the ceiling (first value `true`) or
-/// the floor, `sign` ±1 and `threshold` 0 (strict) or −1 (or equal).
-pub(super) fn test_constants(test: DepthTest) -> (bool, i64, i64) {
-    let use_ceiling = matches!(test, DepthTest::Greater | DepthTest::LessEqual);
-    let sign: i64 = if test.larger_is_nearer() { 1 } else { -1 };
-    let threshold = match test {
-        // sign·(v − s) lies well inside ±2^62, so these decide alone.
-        DepthTest::Always => i64::MIN,
-        DepthTest::Never => i64::MAX,
-        _ => -i64::from(test.equal_passes()),
-    };
-    (use_ceiling, sign, threshold)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The constants the book's test is compiled with are its own.
-    #[test]
-    fn the_compiled_greater_test_is_the_greater_test() {
-        assert_eq!(GREATER_CONSTANTS, test_constants(DepthTest::Greater));
     }
 }

@@ -114,7 +114,7 @@ body { font-family: sans-serif; margin: 1em; color: #222; }
 #main { display: flex; gap: 1.5em; align-items: flex-start; }
 table.raster { border-collapse: collapse; font-family: monospace; font-size: 12px; }
 table.raster td { border: 1px solid #ddd; padding: 1px 3px; text-align: right; min-width: 1.4em; }
-table.raster th { font-weight: normal; color: #888; padding: 0 4px; }
+table.raster th { font-weight: normal; color: #888; padding: 0 4px; white-space: nowrap; }
 tr.current td { border-top: 2px solid #3a6ea5; border-bottom: 2px solid #3a6ea5; }
 td.span { background: #f0e442; }
 td.earlier { color: #0072b2; font-weight: bold; }

@@ -12,8 +12,8 @@ use crate::observe::step::{Skip, Stop, Tracer};
 use crate::observe::trace::ScanlineRecord;
 use crate::scene::Scene;
 use crate::scene::text::printable;
-use crate::words::token;
 use crate::simulate::events::{Outcome, PixelEvent};
+use crate::words::token;
 
 /// Why a move did not go anywhere.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -359,7 +359,11 @@ impl Quiz {
     /// How far the questions of `stop` have got: a stop left and come back
     /// to is asked again from its first question.
     fn progress(&self, stop: Stop) -> Progress {
-        if self.progress.stop == Some(stop) { self.progress } else { Progress { stop: Some(stop), ..Progress::default() } }
+        if self.progress.stop == Some(stop) {
+            self.progress
+        } else {
+            Progress { stop: Some(stop), ..Progress::default() }
+        }
     }
 
     /// The question the stepper's stop asks next; `None` at the end or when
@@ -654,7 +658,9 @@ mod tests {
         let mut stepper = Stepper::new(&scene, Arith::Exact);
         stepper.start(None);
         let mut quiz = Quiz::new(QuizMode::Frame);
-        let Some(Question::Frame { pixel, .. }) = quiz.question(&mut stepper) else { panic!("no framebuffer question") };
+        let Some(Question::Frame { pixel, .. }) = quiz.question(&mut stepper) else {
+            panic!("no framebuffer question")
+        };
         assert!(matches!(quiz.answer(&mut stepper, "4"), Some(Reply::AskAgain(_))), "a 2-bit framebuffer holds 0 … 3");
         let Some(Reply::Judged(verdict)) = quiz.answer(&mut stepper, &pixel.frame_after.to_string()) else {
             panic!("not judged")

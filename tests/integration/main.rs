@@ -10,6 +10,7 @@
 
 mod accuracy;
 mod bad_input;
+mod browser;
 mod buet;
 mod classroom;
 mod cs418;

@@ -1,0 +1,190 @@
+//! The step page in a real browser, driven from outside as a person would:
+//! headless Chromium through WebDriver (Debian's `chromium-driver`), clicking
+//! the page's buttons and typing into its boxes. Nothing in the page knows it
+//! is being tested.
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use fantoccini::{Client, ClientBuilder, Locator};
+use zsim::step::{Moved, Stepper, judge_depth};
+use zsim::{Outcome, Scene};
+
+/// chromedriver on a free loopback port, ended when dropped.
+struct Driver {
+    child: Child,
+    port: u16,
+}
+
+impl Drop for Driver {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// chromedriver and Chromium, or `None` after saying which is missing.
+fn driver() -> Option<(Driver, PathBuf)> {
+    let browser =
+        ["/usr/bin/chromium", "/usr/bin/chromium-browser"].into_iter().map(PathBuf::from).find(|p| p.exists());
+    let found = |name: &str| Command::new(name).arg("--version").output().is_ok_and(|o| o.status.success());
+    let (Some(browser), true) = (browser, found("chromedriver")) else {
+        crate::skipped(
+            "Chromium and its WebDriver (apt-get install chromium chromium-driver)",
+            "the step page in a browser",
+        );
+        return None;
+    };
+    let port = std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
+    let child = Command::new("chromedriver")
+        .arg(format!("--port={port}"))
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("chromedriver starts");
+    let driver = Driver { child, port };
+    let start = Instant::now();
+    while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
+        assert!(start.elapsed() < Duration::from_secs(20), "chromedriver did not listen within 20 s");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    Some((driver, browser))
+}
+
+/// A headless Chromium session that reaches nothing outside this machine.
+async fn session(driver: &Driver, browser: &Path, profile: &Path) -> Client {
+    let options = serde_json::json!({
+        "binary": browser,
+        "args": ["--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--no-first-run",
+                 "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                 "--lang=en-US", "--window-size=1280,900", format!("--user-data-dir={}", profile.display())],
+    });
+    let mut capabilities = serde_json::Map::new();
+    capabilities.insert("goog:chromeOptions".to_string(), options);
+    ClientBuilder::new(hyper_util::client::legacy::connect::HttpConnector::new())
+        .capabilities(capabilities)
+        .connect(&format!("http://127.0.0.1:{}", driver.port))
+        .await
+        .expect("a WebDriver session")
+}
+
+async fn text(client: &Client, css: &str) -> String {
+    client.find(Locator::Css(css)).await.unwrap().text().await.unwrap()
+}
+
+async fn click(client: &Client, css: &str) {
+    client.find(Locator::Css(css)).await.unwrap().click().await.unwrap();
+}
+
+/// The grid's current row, columns 15 … 27 (the triangle's span on row 15).
+async fn current_row(client: &Client) -> String {
+    let cells = client.find_all(Locator::Css("#raster tr.current td")).await.unwrap();
+    let mut values = Vec::new();
+    for cell in &cells[15..28] {
+        values.push(cell.text().await.unwrap());
+    }
+    values.join(" ")
+}
+
+/// The book's scene stepped in the page: Next moves on, the triangle's
+/// scanline 15 shows the book's depth 43/4 at (20, 15); in the quiz the grid
+/// shows the row before the scanline until the answers are checked, and each
+/// typed answer gets the verdict the library's own judge gives it (`15`,
+/// `24/2`, `12.0` and `1.1e1` by value; `zz` is no number; `16` and `10.5` no
+/// cell of a 4-bit z-buffer can hold; `-` is right for the hidden pixel).
+#[test]
+fn the_step_page_is_clicked_and_typed_through_as_the_library_judges() {
+    let Some((driver, browser)) = driver() else { return };
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("browser-step");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let page = dir.join("step.html");
+    let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(["step", "examples/rogers.json", "--html", "-o"])
+        .arg(&page)
+        .env("LC_ALL", "C")
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+
+    // What the library says of each answer, pixel by pixel, on the triangle's scanline 15.
+    let scene = Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/rogers.json")).unwrap();
+    let mut stepper = Stepper::new(&scene, zsim::arith::Arith::Exact);
+    stepper.start(None);
+    while stepper.record().is_some_and(|r| r.index != 1 || r.row != 15) {
+        assert!(matches!(stepper.next(), Moved::To { at: Some(_), .. }));
+    }
+    let pixels = stepper.record().unwrap().pixels.clone();
+    let typed = ["15", "10", "zz", "24/2", "12.0", "1.1e1", "-", "16", "10.5", "", "", "", ""];
+    let expected: Vec<&str> = pixels
+        .iter()
+        .zip(typed)
+        .map(|(pixel, typed)| match judge_depth(&scene, pixel, typed) {
+            _ if typed.is_empty() => "unanswered",
+            Ok((true, ..)) => "right",
+            Ok((false, ..)) => "wrong",
+            Err(_) => "unanswered",
+        })
+        .collect();
+    assert_eq!(pixels.iter().find(|p| p.x == 21).map(|p| p.outcome), Some(Outcome::Hidden));
+    assert_eq!(
+        expected,
+        ["right", "wrong", "unanswered", "right", "right", "right", "right", "unanswered", "unanswered"]
+            .into_iter()
+            .chain(["unanswered"; 4])
+            .collect::<Vec<_>>(),
+        "the library's verdicts this test holds the page to"
+    );
+
+    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    runtime.block_on(async {
+        let client = session(&driver, &browser, &dir.join("profile")).await;
+        client.goto(&format!("file://{}", page.display())).await.unwrap();
+        assert_eq!(text(&client, "#panel p").await, "scanline y = 5.5 (row 5)");
+        click(&client, "#next").await;
+        assert_eq!(text(&client, "#panel p").await, "scanline y = 6.5 (row 6)", "a click on Next moves on");
+        click(&client, "#nextPolygon").await;
+        for _ in 0..40 {
+            if text(&client, "#panel p").await == "scanline y = 15.5 (row 15)" {
+                break;
+            }
+            click(&client, "#next").await;
+        }
+        assert_eq!(text(&client, "#panel p").await, "scanline y = 15.5 (row 15)");
+        let panel = text(&client, "#panel").await;
+        assert!(panel.contains("43/4 ≈ 10.75"), "pixel (20, 15): {panel}");
+        assert!(panel.contains("z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored"), "{panel}");
+
+        click(&client, "#quiz").await;
+        click(&client, "#depth").await;
+        assert_eq!(
+            text(&client, "#raster div").await,
+            "z-buffer before this scanline (the quiz: check your answers to see after)"
+        );
+        assert_eq!(current_row(&client).await, "10 10 10 10 10 10 10 10 10 10 0 0 0", "the grid gives nothing away");
+        let inputs = client.find_all(Locator::Css("#pixels input")).await.unwrap();
+        assert_eq!(inputs.len(), pixels.len());
+        for (input, typed) in inputs.iter().zip(typed) {
+            if !typed.is_empty() {
+                input.send_keys(typed).await.unwrap();
+            }
+        }
+        click(&client, "#check").await;
+        let mut verdicts = Vec::new();
+        for cell in client.find_all(Locator::Css("#pixels td.why")).await.unwrap() {
+            let class = cell.attr("class").await.unwrap().unwrap_or_default();
+            verdicts.push(class.trim_start_matches("why ").to_string());
+        }
+        assert_eq!(verdicts, expected, "the page's verdicts are the library's");
+        assert_eq!(text(&client, "#raster div").await, "z-buffer after this scanline");
+        assert_eq!(current_row(&client).await, "15 14 13 12 12 11 10 10 10 10 7 6 6");
+        assert_eq!(text(&client, "#status").await, "quiz: 5 of 13 right on this scanline");
+        let shot = client.screenshot().await.unwrap();
+        std::fs::write(dir.join("quiz-1280.png"), shot).unwrap();
+        client.close().await.unwrap();
+    });
+    let version = Command::new(&browser).arg("--version").output().map(|o| o.stdout).unwrap_or_default();
+    crate::ran("the step page through WebDriver", String::from_utf8_lossy(&version).trim());
+}
