@@ -2,7 +2,6 @@
 //! line that starts lowercase and names the file and, where there is one, the
 //! polygon. Broken invariants of zsim itself are `debug_assert!`s instead.
 
-use std::fmt;
 use std::path::PathBuf;
 
 use crate::geometry::equation::GeometryError;
@@ -373,22 +372,29 @@ fn quoted_list(items: &[String]) -> String {
     items.iter().map(|item| format!("\"{item}\"")).collect::<Vec<_>>().join(", ")
 }
 
-impl fmt::Display for Usage {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl Usage {
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: crate::words::Lang) -> String {
+        let mut text = String::new();
+        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
+        text
+    }
+
+    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         let path = |p: &PathBuf| p.display().to_string();
         let text = match self {
-            Usage::ArithNeedsPlainRules { arith } => words!("usage-arith-plain-rules", arith = arith),
+            Usage::ArithNeedsPlainRules { arith } => words!(lang, "usage-arith-plain-rules", arith = arith),
             Usage::ArithNeedsGreaterOrLess { arith, test } => {
-                words!("usage-arith-greater-or-less", arith = arith, test = test)
+                words!(lang, "usage-arith-greater-or-less", arith = arith, test = test)
             }
-            Usage::ArithPlainLoopOnly => words!("usage-arith-plain-loop"),
+            Usage::ArithPlainLoopOnly => words!(lang, "usage-arith-plain-loop"),
             Usage::NoPolygonNumbered { number, count } => {
-                words!("usage-no-polygon-numbered", number = number.to_string(), count = count.to_string())
+                words!(lang, "usage-no-polygon-numbered", number = number.to_string(), count = count.to_string())
             }
             Usage::NoPolygonNamed { name, names } => {
-                words!("usage-no-polygon-named", name = name, names = quoted_list(names))
+                words!(lang, "usage-no-polygon-named", name = name, names = quoted_list(names))
             }
-            Usage::PixelOutside { x, y, width, height } => words!(
+            Usage::PixelOutside { x, y, width, height } => words!(lang, 
                 "usage-pixel-outside",
                 x = x.to_string(),
                 y = y.to_string(),
@@ -397,50 +403,50 @@ impl fmt::Display for Usage {
                 last_x = (width - 1).to_string(),
                 last_y = (height - 1).to_string()
             ),
-            Usage::FigureFormat { path: p } => words!("usage-figure-format", path = path(p)),
-            Usage::FigureTooLarge { path: p, width, height, max } => words!(
+            Usage::FigureFormat { path: p } => words!(lang, "usage-figure-format", path = path(p)),
+            Usage::FigureTooLarge { path: p, width, height, max } => words!(lang, 
                 "usage-figure-too-large",
                 path = path(p),
                 width = width.to_string(),
                 height = height.to_string(),
                 max = max.to_string()
             ),
-            Usage::PngFailed { path: p, reason } => words!("usage-png-failed", path = path(p), reason = reason),
+            Usage::PngFailed { path: p, reason } => words!(lang, "usage-png-failed", path = path(p), reason = reason),
             Usage::NoPolygons { path: p, task } => match task {
-                Task::Draw => words!("usage-no-polygons-draw", path = path(p)),
-                Task::Grade => words!("usage-no-polygons-grade", path = path(p)),
-                Task::Check => words!("usage-no-polygons-check", path = path(p)),
+                Task::Draw => words!(lang, "usage-no-polygons-draw", path = path(p)),
+                Task::Grade => words!(lang, "usage-no-polygons-grade", path = path(p)),
+                Task::Check => words!(lang, "usage-no-polygons-check", path = path(p)),
             },
             Usage::ExactDepthsHaveNoMatrix { path: p, task } => match task {
-                Task::Grade => words!("usage-exact-depths-grade", path = path(p)),
-                Task::Draw | Task::Check => words!("usage-exact-depths-check", path = path(p)),
+                Task::Grade => words!(lang, "usage-exact-depths-grade", path = path(p)),
+                Task::Draw | Task::Check => words!(lang, "usage-exact-depths-check", path = path(p)),
             },
-            Usage::CheckNeedsAnswer => words!("usage-check-needs-answer"),
-            Usage::IdentityColumn { column } => words!("usage-identity-column", column = *column),
-            Usage::NoPoints => words!("usage-no-points"),
-            Usage::NoSubmission { folder } => words!("usage-no-submission", folder = folder.display().to_string()),
-            Usage::NoAnswersFound { class } => words!("usage-no-answers", path = path(class)),
-            Usage::ScenesOutOfRange => words!("usage-scenes-range"),
+            Usage::CheckNeedsAnswer => words!(lang, "usage-check-needs-answer"),
+            Usage::IdentityColumn { column } => words!(lang, "usage-identity-column", column = *column),
+            Usage::NoPoints => words!(lang, "usage-no-points"),
+            Usage::NoSubmission { folder } => words!(lang, "usage-no-submission", folder = folder.display().to_string()),
+            Usage::NoAnswersFound { class } => words!(lang, "usage-no-answers", path = path(class)),
+            Usage::ScenesOutOfRange => words!(lang, "usage-scenes-range"),
             Usage::MemoryBits { option, bits } => {
-                words!("usage-memory-bits", option = *option, bits = bits.to_string())
+                words!(lang, "usage-memory-bits", option = *option, bits = bits.to_string())
             }
-            Usage::MemoryZeroSize => words!("usage-memory-zero"),
-            Usage::MemoryTooLarge => words!("usage-memory-too-large"),
+            Usage::MemoryZeroSize => words!(lang, "usage-memory-zero"),
+            Usage::MemoryTooLarge => words!(lang, "usage-memory-too-large"),
             Usage::RandomCount { count, max } => {
-                words!("usage-random-count", count = count.to_string(), max = max.to_string())
+                words!(lang, "usage-random-count", count = count.to_string(), max = max.to_string())
             }
-            Usage::RandomBits => words!("usage-random-bits"),
-            Usage::RandomSide { max } => words!("usage-random-side", max = max.to_string()),
+            Usage::RandomBits => words!(lang, "usage-random-bits"),
+            Usage::RandomSide { max } => words!(lang, "usage-random-side", max = max.to_string()),
             Usage::NotAHardCase { name, names } => {
-                words!("usage-not-a-hard-case", name = name, names = names.join(", "))
+                words!(lang, "usage-not-a-hard-case", name = name, names = names.join(", "))
             }
             Usage::ExerciseSize { width, height } => {
-                words!("usage-exercise-size", width = width.to_string(), height = height.to_string())
+                words!(lang, "usage-exercise-size", width = width.to_string(), height = height.to_string())
             }
-            Usage::ExercisePolygons { count } => words!("usage-exercise-polygons", count = count.to_string()),
-            Usage::ExerciseBits => words!("usage-exercise-bits"),
-            Usage::ExerciseNeedsTwoPolygons => words!("usage-exercise-two-polygons"),
-            Usage::ExerciseNotFound { polygons, width, height, cases, tries } => words!(
+            Usage::ExercisePolygons { count } => words!(lang, "usage-exercise-polygons", count = count.to_string()),
+            Usage::ExerciseBits => words!(lang, "usage-exercise-bits"),
+            Usage::ExerciseNeedsTwoPolygons => words!(lang, "usage-exercise-two-polygons"),
+            Usage::ExerciseNotFound { polygons, width, height, cases, tries } => words!(lang, 
                 "usage-exercise-not-found",
                 polygons = polygons.to_string(),
                 width = width.to_string(),
@@ -448,40 +454,40 @@ impl fmt::Display for Usage {
                 cases = cases.join(", "),
                 tries = tries.to_string()
             ),
-            Usage::OutputIsInput { folder } => words!("usage-output-is-input", path = path(folder)),
+            Usage::OutputIsInput { folder } => words!(lang, "usage-output-is-input", path = path(folder)),
             Usage::OutputWouldReplace { folder, files } => {
                 let shown: Vec<&str> = files.iter().take(5).map(String::as_str).collect();
-                words!(
+                words!(lang, 
                     "usage-output-would-replace",
                     path = path(folder),
                     files = shown.join(", "),
                     more = files.len().saturating_sub(5)
                 )
             }
-            Usage::TileZero => words!("usage-tile-zero"),
-            Usage::CompareGpuPlainOnly => words!("usage-compare-gpu-plain"),
-            Usage::NoGpu { reason } => words!("usage-no-gpu", reason = reason.as_str()),
-            Usage::InsideNeedsPixelOrder => words!("usage-inside-needs-pixel-order"),
-            Usage::TilesNeedFormatNone => words!("usage-tiles-need-format-none"),
-            Usage::FormatNoneIsPlain => words!("usage-format-none-is-plain"),
+            Usage::TileZero => words!(lang, "usage-tile-zero"),
+            Usage::CompareGpuPlainOnly => words!(lang, "usage-compare-gpu-plain"),
+            Usage::NoGpu { reason } => words!(lang, "usage-no-gpu", reason = reason.as_str()),
+            Usage::InsideNeedsPixelOrder => words!(lang, "usage-inside-needs-pixel-order"),
+            Usage::TilesNeedFormatNone => words!(lang, "usage-tiles-need-format-none"),
+            Usage::FormatNoneIsPlain => words!(lang, "usage-format-none-is-plain"),
             Usage::NoScanlines { index, name, why } => {
-                words!(
+                words!(lang, 
                     "usage-no-scanlines",
-                    polygon = crate::words::polygon_label("polygon-name", *index, name),
+                    polygon = crate::words::polygon_label(lang, "polygon-name", *index, name),
                     why = why
                 )
             }
             Usage::ScanlineNotReached { index, name, row, rows } => {
-                let reach = words!(
+                let reach = words!(lang, 
                     "step-not-reach",
-                    polygon = crate::words::polygon_label("polygon-name", *index, name),
-                    scanline = words!("scanline", y = crate::words::localize_decimal(format!("{row}.5")))
+                    polygon = crate::words::polygon_label(lang, "polygon-name", *index, name),
+                    scanline = words!(lang, "scanline", y = crate::words::localize_decimal(lang, format!("{row}.5")))
                 );
                 match rows {
                     Some((first, last)) => {
-                        words!("usage-scanline-rows", reach = reach, first = first.to_string(), last = last.to_string())
+                        words!(lang, "usage-scanline-rows", reach = reach, first = first.to_string(), last = last.to_string())
                     }
-                    None => words!("usage-scanline-no-rows", reach = reach),
+                    None => words!(lang, "usage-scanline-no-rows", reach = reach),
                 }
             }
         };
@@ -505,12 +511,19 @@ pub enum PolygonProblem {
     },
 }
 
-impl fmt::Display for PolygonProblem {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl PolygonProblem {
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: crate::words::Lang) -> String {
+        let mut text = String::new();
+        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
+        text
+    }
+
+    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self {
-            PolygonProblem::Geometry(error) => error.fmt(f),
+            PolygonProblem::Geometry(error) => f.write_str(&error.message(lang)),
             PolygonProblem::Other(message) => f.write_str(message),
-            PolygonProblem::ValueTooWide { value, frame_bits } => f.write_str(&words!(
+            PolygonProblem::ValueTooWide { value, frame_bits } => f.write_str(&words!(lang, 
                 "polygon-value-too-wide",
                 value = value.to_string(),
                 bits = frame_bits.to_string(),
@@ -520,34 +533,41 @@ impl fmt::Display for PolygonProblem {
     }
 }
 
-impl fmt::Display for Error {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl Error {
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: crate::words::Lang) -> String {
+        let mut text = String::new();
+        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
+        text
+    }
+
+    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self {
-            Error::Read { path, source } => f.write_str(&words!(
+            Error::Read { path, source } => f.write_str(&words!(lang, 
                 "error-read",
                 path = path.display().to_string(),
-                reason = crate::words::io_reason(source)
+                reason = crate::words::io_reason(lang, source)
             )),
             Error::NotRegular { path, kind } => {
                 let kind = match kind {
-                    FileKind::Directory => words!("file-kind-directory"),
-                    FileKind::Fifo => words!("file-kind-fifo"),
-                    FileKind::Device => words!("file-kind-device"),
-                    FileKind::Socket => words!("file-kind-socket"),
-                    FileKind::Link => words!("file-kind-link"),
-                    FileKind::Other => words!("file-kind-other"),
+                    FileKind::Directory => words!(lang, "file-kind-directory"),
+                    FileKind::Fifo => words!(lang, "file-kind-fifo"),
+                    FileKind::Device => words!(lang, "file-kind-device"),
+                    FileKind::Socket => words!(lang, "file-kind-socket"),
+                    FileKind::Link => words!(lang, "file-kind-link"),
+                    FileKind::Other => words!(lang, "file-kind-other"),
                 };
-                f.write_str(&words!("error-not-regular", path = path.display().to_string(), kind = kind))
+                f.write_str(&words!(lang, "error-not-regular", path = path.display().to_string(), kind = kind))
             }
-            Error::TooLarge { path, limit } => f.write_str(&words!(
+            Error::TooLarge { path, limit } => f.write_str(&words!(lang, 
                 "error-too-large",
                 path = path.display().to_string(),
                 limit = (limit >> 20).to_string()
             )),
-            Error::Write { path, source } => f.write_str(&words!(
+            Error::Write { path, source } => f.write_str(&words!(lang, 
                 "error-write",
                 path = path.display().to_string(),
-                reason = crate::words::io_reason(source)
+                reason = crate::words::io_reason(lang, source)
             )),
             Error::SceneFormat { path, location, message } => {
                 if location.is_empty() {
@@ -557,21 +577,20 @@ impl fmt::Display for Error {
                 }
             }
             Error::Setting { path, key, message } => write!(f, "{}: {key}: {message}", path.display()),
-            Error::Polygon { origin, index, name, problem } => f.write_str(&words!(
+            Error::Polygon { origin, index, name, problem } => f.write_str(&words!(lang, 
                 "error-polygon",
                 path = match origin {
                     PolygonOrigin::File(path) => path.display().to_string(),
                     PolygonOrigin::Supersampled { factor } =>
-                        words!("origin-supersampled", factor = factor.to_string()),
-                    PolygonOrigin::Snapped { bits } => words!("origin-snapped", bits = bits.to_string()),
+                        words!(lang, "origin-supersampled", factor = factor.to_string()),
+                    PolygonOrigin::Snapped { bits } => words!(lang, "origin-snapped", bits = bits.to_string()),
                 },
-                polygon = crate::words::polygon_label("polygon-name", *index, name),
-                problem = problem.to_string()
+                polygon = crate::words::polygon_label(lang, "polygon-name", *index, name),
+                problem = problem.message(lang)
             )),
-            Error::Usage(usage) => usage.fmt(f),
+            Error::Usage(usage) => usage.write_in(lang, f),
             Error::Answer { path, message } => write!(f, "{}: {message}", path.display()),
         }
     }
 }
 
-impl std::error::Error for Error {}

@@ -146,5 +146,5 @@ pub use simulate::simulation::Simulation;
 pub use simulate::stages::{StageSet, describe};
 pub use teach::{diagnose, exercise, grade, page, step};
 pub use words::{
-    Arg, Lang, language, localize_decimal, polygon_label, set_language, text as message, token, with_language,
+    Arg, Lang, localize_decimal, polygon_label, text as message, token,
 };

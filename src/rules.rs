@@ -192,7 +192,7 @@ impl Rules {
     }
 
     /// One line naming each choice, for reports.
-    pub fn describe(&self) -> String {
+    pub fn describe(&self, lang: crate::words::Lang) -> String {
         let preset = match self.preset {
             Preset::Rogers => "rogers",
             Preset::Buet => "buet",
@@ -201,29 +201,29 @@ impl Rules {
             Preset::Tinyrenderer => "tinyrenderer",
         };
         let rows = match self.rows {
-            RowRule::HalfOpen => words!("rules-rows-half-open"),
-            RowRule::Closed => words!("rules-rows-closed"),
-            RowRule::TopLeft => words!("rules-rows-top-left"),
+            RowRule::HalfOpen => words!(lang, "rules-rows-half-open"),
+            RowRule::Closed => words!(lang, "rules-rows-closed"),
+            RowRule::TopLeft => words!(lang, "rules-rows-top-left"),
         };
         let columns = match self.columns {
-            ColumnRule::CentreInside => words!("rules-columns-centre-inside"),
-            ColumnRule::CellHolds => words!("rules-columns-cell-holds"),
-            ColumnRule::HalfOpen => words!("rules-columns-half-open"),
+            ColumnRule::CentreInside => words!(lang, "rules-columns-centre-inside"),
+            ColumnRule::CellHolds => words!(lang, "rules-columns-cell-holds"),
+            ColumnRule::HalfOpen => words!(lang, "rules-columns-half-open"),
         };
         let store = match self.store {
-            DepthStore::Quantized => words!("rules-store-quantized"),
-            DepthStore::Truncated => words!("rules-store-truncated"),
-            DepthStore::Exact => words!("rules-store-exact"),
+            DepthStore::Quantized => words!(lang, "rules-store-quantized"),
+            DepthStore::Truncated => words!(lang, "rules-store-truncated"),
+            DepthStore::Exact => words!(lang, "rules-store-exact"),
         };
-        let mut text = words!("rules-describe", preset = preset, rows = rows, columns = columns, store = store);
+        let mut text = words!(lang, "rules-describe", preset = preset, rows = rows, columns = columns, store = store);
         if self.sample == Sample::Corner {
-            text.push_str(&words!("rules-sample-corner"));
+            text.push_str(&words!(lang, "rules-sample-corner"));
         }
         if self.compare == Compare::Level {
-            text.push_str(&words!("rules-compare-level"));
+            text.push_str(&words!(lang, "rules-compare-level"));
         }
         if let Some(area) = self.min_area {
-            text.push_str(&words!("rules-min-area", area = crate::numbers::fraction(area)));
+            text.push_str(&words!(lang, "rules-min-area", area = crate::numbers::fraction(area)));
         }
         text
     }

@@ -43,14 +43,14 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
     Ok((side(w)?, side(h)?))
 }
 
-pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn run(lang: zsim::Lang, args: &AccuracyArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.scenes == 0 || args.scenes > 100 {
         return Err(Error::from(zsim::Usage::ScenesOutOfRange).into());
     }
     let settings = Settings { seed: args.seed, width: args.size.0, height: args.size.1, scenes: args.scenes };
-    let scenes = accuracy::scenes(&settings)?;
+    let scenes = accuracy::scenes(lang, &settings)?;
     let modes = accuracy::modes(&scenes)?;
-    let bits = accuracy::bits_sweep(&settings)?;
+    let bits = accuracy::bits_sweep(lang, &settings)?;
     let exact = modes[0].clone();
     let ns = |row: &accuracy::ModeRow| row.time.as_nanos() as f64 / exact.pixels.max(1) as f64;
     if args.format == Format::Json {
@@ -78,7 +78,7 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
             "accuracy-header-worst",
             "accuracy-header-time",
         ]
-        .map(|key| zsim::words!(key)),
+        .map(|key| zsim::words!(lang, key)),
     );
     for row in &modes {
         table.add_row([
@@ -94,7 +94,7 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
     let mut sweep = Table::new();
     sweep.load_style(presets::ASCII_MARKDOWN).set_header(
         ["accuracy-header-bits", "accuracy-header-fighting", "accuracy-header-memory", "accuracy-header-ms"]
-            .map(|key| zsim::words!(key)),
+            .map(|key| zsim::words!(lang, key)),
     );
     for row in &bits {
         sweep.add_row([
@@ -109,14 +109,14 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         out,
         &format!(
             "{}\n{table}\n\n{}\n{sweep}\n",
-            zsim::words!(
+            zsim::words!(lang, 
                 "accuracy-set",
                 scenes = scenes.len().to_string(),
                 width = settings.width.to_string(),
                 height = settings.height.to_string(),
                 seed = settings.seed.to_string()
             ),
-            zsim::words!("accuracy-sweep", cells = cells.to_string())
+            zsim::words!(lang, "accuracy-sweep", cells = cells.to_string())
         ),
     )?;
     Ok(Finish::Ok)

@@ -72,15 +72,15 @@ fn source(from: Option<From>) -> Option<Source> {
     })
 }
 
-pub fn run(args: &BuetArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn run(lang: zsim::Lang, args: &BuetArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     match &args.command {
-        BuetCommand::Run { case, from, output } => run_case(case, source(*from), output, out),
+        BuetCommand::Run { case, from, output } => run_case(lang, case, source(*from), output, out),
         BuetCommand::Import { case, from, output } => {
-            let loaded = Case::load(case, source(*from))?;
-            super::emit_or_write(out, output.as_deref(), &loaded.scene_json, &[case])?;
+            let loaded = Case::load(lang, case, source(*from))?;
+            super::emit_or_write(lang, out, output.as_deref(), &loaded.scene_json, &[case])?;
             Ok(Finish::Ok)
         }
-        BuetCommand::Check { case, answer, from } => check(case, source(*from), answer, out),
+        BuetCommand::Check { case, answer, from } => check(lang, case, source(*from), answer, out),
     }
 }
 
@@ -88,8 +88,8 @@ fn write(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     std::fs::write(path, bytes).map_err(|source| Error::Write { path: path.to_owned(), source })
 }
 
-fn run_case(dir: &Path, from: Option<Source>, output: &Path, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let case = Case::load(dir, from)?;
+fn run_case(lang: zsim::Lang, dir: &Path, from: Option<Source>, output: &Path, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let case = Case::load(lang, dir, from)?;
     std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
     let mut written = Vec::new();
     if let Some(stages) = &case.stages {
@@ -108,7 +108,7 @@ fn run_case(dir: &Path, from: Option<Source>, output: &Path, out: &mut dyn Write
     write(&image, &buet::bmp(simulation.buffers()))?;
     written.push(image);
     let stats = simulation.stats();
-    let mut text = zsim::words!(
+    let mut text = zsim::words!(lang, 
         "buet-run-summary",
         path = dir.display().to_string(),
         triangles = case.stage3.len().to_string(),
@@ -118,15 +118,15 @@ fn run_case(dir: &Path, from: Option<Source>, output: &Path, out: &mut dyn Write
         written = stats.written.to_string()
     ) + "\n";
     for path in written {
-        text.push_str(&format!("{}\n", zsim::words!("file-written", path = path.display().to_string())));
+        text.push_str(&format!("{}\n", zsim::words!(lang, "file-written", path = path.display().to_string())));
     }
     emit(out, &text)?;
     Ok(Finish::Ok)
 }
 
 /// A student's z_buffer.txt: per row, the values written.
-fn parse_answer(path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
-    let text = zsim::read_text(path)?;
+fn parse_answer(lang: zsim::Lang, path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
+    let text = zsim::read_text(lang, path)?;
     let rows: Vec<Vec<String>> =
         text.lines().map(|line| line.split_whitespace().map(str::to_string).collect()).collect();
     for (i, row) in rows.iter().enumerate() {
@@ -134,11 +134,11 @@ fn parse_answer(path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
             if value.parse::<f64>().is_err() {
                 return Err(Error::Answer {
                     path: path.to_owned(),
-                    message: zsim::words!(
+                    message: zsim::words!(lang, 
                         "buet-answer-not-a-number",
                         line = (i + 1).to_string(),
                         value = (k + 1).to_string(),
-                        text = zsim::token(value.as_str())
+                        text = zsim::token(lang, value.as_str())
                     ),
                 });
             }
@@ -147,16 +147,16 @@ fn parse_answer(path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
     if rows.len() != height as usize {
         return Err(Error::Answer {
             path: path.to_owned(),
-            message: zsim::words!("buet-answer-rows", rows = rows.len().to_string(), height = height.to_string()),
+            message: zsim::words!(lang, "buet-answer-rows", rows = rows.len().to_string(), height = height.to_string()),
         });
     }
     Ok(rows)
 }
 
-fn check(dir: &Path, from: Option<Source>, answer: &Path, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let case = Case::load(dir, from)?;
+fn check(lang: zsim::Lang, dir: &Path, from: Option<Source>, answer: &Path, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let case = Case::load(lang, dir, from)?;
     let scene = &case.scene;
-    let answer_rows = parse_answer(answer, scene.height)?;
+    let answer_rows = parse_answer(lang, answer, scene.height)?;
     let mut simulation = Simulation::new(scene);
     simulation.finish(&mut Unobserved);
     let expected = buet::z_buffer_cells(simulation.buffers(), case.config.z_max);
@@ -164,8 +164,8 @@ fn check(dir: &Path, from: Option<Source>, answer: &Path, out: &mut dyn Write) -
     let mut differences: Vec<(usize, usize, String, String, Option<u32>)> = Vec::new();
     for (i, (given, right)) in answer_rows.iter().zip(&expected).enumerate() {
         for k in 0..given.len().max(right.len()) {
-            let a = given.get(k).cloned().unwrap_or_else(|| zsim::words!("buet-none"));
-            let (column, r) = right.get(k).map_or((None, zsim::words!("buet-none")), |(x, v)| (Some(*x), v.clone()));
+            let a = given.get(k).cloned().unwrap_or_else(|| zsim::words!(lang, "buet-none"));
+            let (column, r) = right.get(k).map_or((None, zsim::words!(lang, "buet-none")), |(x, v)| (Some(*x), v.clone()));
             if a != r {
                 differences.push((i, k, a, r, column));
             }
@@ -173,7 +173,7 @@ fn check(dir: &Path, from: Option<Source>, answer: &Path, out: &mut dyn Write) -
     }
     if differences.is_empty() {
         let text =
-            zsim::words!("buet-check-matches", answer = answer.display().to_string(), path = dir.display().to_string());
+            zsim::words!(lang, "buet-check-matches", answer = answer.display().to_string(), path = dir.display().to_string());
         emit(out, &format!("{text}\n"))?;
         return Ok(Finish::Ok);
     }
@@ -184,20 +184,20 @@ fn check(dir: &Path, from: Option<Source>, answer: &Path, out: &mut dyn Write) -
     let mut table = Table::new();
     table.load_style(presets::ASCII_MARKDOWN).set_header(
         ["buet-header-line", "buet-header-value", "buet-header-answer", "buet-header-right", "buet-header-why"]
-            .map(|key| zsim::words!(key)),
+            .map(|key| zsim::words!(lang, key)),
     );
     for (i, k, a, r, column) in &differences {
         let reason = match column {
             Some(x) => {
                 let y = scene.height - 1 - *i as u32;
-                let why = why(scene, Buffer::Depth, *x, y, watcher.history(*x, y));
-                zsim::words!("buet-cell", x = x.to_string(), y = y.to_string(), why = why)
+                let why = why(lang, scene, Buffer::Depth, *x, y, watcher.history(*x, y));
+                zsim::words!(lang, "buet-cell", x = x.to_string(), y = y.to_string(), why = why)
             }
-            None => zsim::words!("buet-extra-value"),
+            None => zsim::words!(lang, "buet-extra-value"),
         };
         table.add_row([(i + 1).to_string(), (k + 1).to_string(), a.clone(), r.clone(), reason]);
     }
-    let heading = zsim::words!(
+    let heading = zsim::words!(lang, 
         "buet-check-differs",
         answer = answer.display().to_string(),
         count = differences.len(),

@@ -31,7 +31,7 @@ pub struct CheckArgs {
     #[arg(long, value_name = "N|NAME")]
     after: Option<String>,
     /// The arithmetic the answer was computed in: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
-    #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
+    #[arg(long, default_value = "exact", value_parser = |text: &str| zsim::arith::Arith::parse(super::language_of_the_run(), text))]
     arith: zsim::arith::Arith,
     /// A folder of answers as an autograder receives them: frame.txt and/or depth.txt (after the last polygon), after-N.frame.txt and after-N.depth.txt (after polygon N).
     #[arg(long, value_name = "DIR", conflicts_with_all = ["frame", "depth", "after"])]
@@ -57,16 +57,16 @@ enum Format {
 
 /// Reads an answer file for one of `scene`'s buffers: a matrix as the book
 /// prints it; a symbolic link is followed only where `links` says so.
-pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer, links: zsim::Links) -> Result<Matrix, Error> {
-    let text = zsim::read_text_with(path, links)?;
+pub fn read_answer(lang: zsim::Lang, path: &Path, scene: &Scene, buffer: Buffer, links: zsim::Links) -> Result<Matrix, Error> {
+    let text = zsim::read_text_with(lang, path, links)?;
     let (max, description) = match buffer {
         Buffer::Frame => (
             zsim::max_for_bits(scene.frame_bits),
-            zsim::words!("answer-frame-range", bits = scene.frame_bits.to_string()),
+            zsim::words!(lang, "answer-frame-range", bits = scene.frame_bits.to_string()),
         ),
-        Buffer::Depth => (scene.depth_max(), zsim::words!("answer-depth-range", bits = scene.depth_bits.to_string())),
+        Buffer::Depth => (scene.depth_max(), zsim::words!(lang, "answer-depth-range", bits = scene.depth_bits.to_string())),
     };
-    parse_answer(&text, scene.width, scene.height, CellRange { max, buffer: &description })
+    parse_answer(lang, &text, scene.width, scene.height, CellRange { max, buffer: &description })
         .map_err(|message| Error::Answer { path: path.to_owned(), message })
 }
 
@@ -74,13 +74,13 @@ pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer, links: zsim::Link
 /// table show it: the file's name where the message has its path (where the
 /// class folder or the autograder keeps it stretches tables and is nobody's
 /// business), in any language's wording, control characters escaped.
-pub fn as_the_student_sees(error: &Error, path: &Path) -> String {
+pub fn as_the_student_sees(lang: zsim::Lang, error: &Error, path: &Path) -> String {
     let file = path.file_name().map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
-    zsim::printable(&error.to_string().replace(&path.display().to_string(), &file)).into_owned()
+    zsim::printable(&error.message(lang).replace(&path.display().to_string(), &file)).into_owned()
 }
 
-pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let scene = Scene::load(&args.scene)?;
+pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let scene = Scene::load(lang, &args.scene)?;
     if args.frame.is_none() && args.depth.is_none() && args.submission.is_none() {
         return Err(Error::from(zsim::Usage::CheckNeedsAnswer).into());
     }
@@ -96,7 +96,7 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         Some(folder) if args.format == Format::Gradescope => match submission_files(folder, &scene) {
             Ok(states) => states,
             Err(error) => {
-                emit(out, &gradescope::nothing_to_grade(&error.to_string(), args.visibility))?;
+                emit(out, &gradescope::nothing_to_grade(&error.message(lang), args.visibility))?;
                 return Ok(Finish::Ok);
             }
         },
@@ -110,7 +110,7 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         )],
     };
     if args.format == Format::Gradescope {
-        let results = gradescope::results(&scene, &args.scene, &states, args.arith, args.visibility, args.points)?;
+        let results = gradescope::results(lang, &scene, &args.scene, &states, args.arith, args.visibility, args.points)?;
         emit(out, &results)?;
         return Ok(Finish::Ok);
     }
@@ -119,9 +119,9 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         for (last, files) in &states {
             let mut read = Vec::new();
             for (buffer, path) in files {
-                read.push((*buffer, path.as_path(), read_answer(path, &scene, *buffer, zsim::Links::Refuse)?));
+                read.push((*buffer, path.as_path(), read_answer(lang, path, &scene, *buffer, zsim::Links::Refuse)?));
             }
-            let report = report(&scene, &args.scene, *last, read, args.arith)?;
+            let report = report(lang, &scene, &args.scene, *last, read, args.arith)?;
             emit(out, &report.text)?;
             if report.differs() {
                 finish = Finish::Differs;
@@ -134,7 +134,7 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let mut malformed = None;
     for (buffer, path) in [(Buffer::Frame, &args.frame), (Buffer::Depth, &args.depth)] {
         if let Some(path) = path {
-            match read_answer(path, &scene, buffer, zsim::Links::Follow) {
+            match read_answer(lang, path, &scene, buffer, zsim::Links::Follow) {
                 Ok(answer) => answers.push((buffer, path.as_path(), answer)),
                 Err(error) => {
                     malformed.get_or_insert(error);
@@ -143,7 +143,7 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         }
     }
     if !answers.is_empty() {
-        let report = report(&scene, &args.scene, last, answers, args.arith)?;
+        let report = report(lang, &scene, &args.scene, last, answers, args.arith)?;
         emit(out, &report.text)?;
         if malformed.is_none() {
             return Ok(if report.differs() { Finish::Differs } else { Finish::Ok });
@@ -213,7 +213,7 @@ pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Erro
 /// Checks `answers` (already read) against the buffers after polygon `last`,
 /// computed in `arith`, and explains every wrong cell: `zsim check`'s output,
 /// also the feedback `zsim grade` writes for each student.
-pub fn report(
+pub fn report(lang: zsim::Lang,
     scene: &Scene,
     scene_path: &Path,
     last: usize,
@@ -262,17 +262,17 @@ pub fn report(
     let mut text = String::new();
     let wrong = results.iter().map(|(_, _, m, _)| m.len()).sum();
     for (buffer, path, mismatches, hint) in &results {
-        let (after, file) = (zsim::explain::polygon_after(scene, last), path.display().to_string());
+        let (after, file) = (zsim::explain::polygon_after(lang, scene, last), path.display().to_string());
         if mismatches.is_empty() {
             let line =
-                zsim::words!("check-all-match", buffer = buffer.name(), file = file, cells = cells, after = after);
+                zsim::words!(lang, "check-all-match", buffer = buffer.name(lang), file = file, cells = cells, after = after);
             text.push_str(&line);
             text.push('\n');
             continue;
         }
-        let line = zsim::words!(
+        let line = zsim::words!(lang, 
             "check-differ",
-            buffer = buffer.name(),
+            buffer = buffer.name(lang),
             file = file,
             count = mismatches.len(),
             cells = cells,
@@ -281,24 +281,24 @@ pub fn report(
         text.push_str(&line);
         text.push('\n');
         if let Some((how, left)) = hint {
-            let (how, top) = (how.words(), scene.height - 1);
+            let (how, top) = (how.words(lang), scene.height - 1);
             let line = if *left == 0 {
-                zsim::words!("check-hint-matches", how = how, top = top)
+                zsim::words!(lang, "check-hint-matches", how = how, top = top)
             } else {
-                zsim::words!("check-hint-fewer", how = how, left = *left, top = top)
+                zsim::words!(lang, "check-hint-fewer", how = how, left = *left, top = top)
             };
             text.push_str(&line);
             text.push('\n');
         }
-        text.push_str(&format!("{}\n", table(scene, *buffer, mismatches, &watcher, (arith, simulation.buffers()))));
+        text.push_str(&format!("{}\n", table(lang, scene, *buffer, mismatches, &watcher, (arith, simulation.buffers()))));
     }
     if let Some(diagnosis) = diagnosis {
-        text.push_str(&format!("{}\n", diagnosis.words()));
+        text.push_str(&format!("{}\n", diagnosis.words(lang)));
     }
     Ok(Report { text, wrong })
 }
 
-fn table(
+fn table(lang: zsim::Lang,
     scene: &Scene,
     buffer: Buffer,
     mismatches: &[Mismatch],
@@ -314,19 +314,19 @@ fn table(
         .set_header([
             "x".to_string(),
             "y".to_string(),
-            zsim::words!("check-column-answer"),
-            zsim::words!("check-column-right"),
-            zsim::words!("check-column-why"),
+            zsim::words!(lang, "check-column-answer"),
+            zsim::words!(lang, "check-column-right"),
+            zsim::words!(lang, "check-column-why"),
         ]);
     for cell in mismatches {
         let history = watcher.history(cell.x, cell.y);
-        let mut reason = why(scene, buffer, cell.x, cell.y, history);
+        let mut reason = why(lang, scene, buffer, cell.x, cell.y, history);
         let exact_value = match buffer {
             Buffer::Frame => exact.frame(cell.x, cell.y),
             Buffer::Depth => exact.depth(cell.x, cell.y).level().unwrap_or(0),
         };
         if exact_value != cell.expected {
-            reason = zsim::words!(
+            reason = zsim::words!(lang, 
                 "check-in-arith",
                 arith = arith.to_string(),
                 mode = cell.expected,

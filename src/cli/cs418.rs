@@ -59,15 +59,15 @@ enum Arith {
     Exact,
 }
 
-pub fn run(args: &Cs418Args, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn run(lang: zsim::Lang, args: &Cs418Args, out: &mut dyn Write) -> Result<Finish, Failure> {
     match &args.command {
         Cs418Command::Run { case, output, arith, compare, tolerance } => {
-            run_case(case, output, *arith, compare.as_deref(), *tolerance, out)
+            run_case(lang, case, output, *arith, compare.as_deref(), *tolerance, out)
         }
         Cs418Command::Import { case, output } => {
             let scene =
-                zsim::cs418::import::scene_json(&load(case, Textures::Ignored)?).map_err(|e| located(case, e))?;
-            super::emit_or_write(out, output.as_deref(), &scene, &[case])?;
+                zsim::cs418::import::scene_json(lang, &load(lang, case, Textures::Ignored)?).map_err(|e| located(case, e))?;
+            super::emit_or_write(lang, out, output.as_deref(), &scene, &[case])?;
             Ok(Finish::Ok)
         }
     }
@@ -91,8 +91,8 @@ enum Textures {
     Ignored,
 }
 
-fn load(path: &Path, textures: Textures) -> Result<Case, Error> {
-    let text = zsim::read_text(path)?;
+fn load(lang: zsim::Lang, path: &Path, textures: Textures) -> Result<Case, Error> {
+    let text = zsim::read_text(lang, path)?;
     let folder = path.parent().unwrap_or(Path::new("."));
     let texture = |name: &str| {
         if textures == Textures::Ignored {
@@ -100,17 +100,17 @@ fn load(path: &Path, textures: Textures) -> Result<Case, Error> {
         }
         let file = folder.join(name);
         if !file.is_file() {
-            return Err(zsim::words!("cs418-texture-missing"));
+            return Err(zsim::words!(lang, "cs418-texture-missing"));
         }
         let bytes =
-            std::fs::read(&file).map_err(|e| zsim::words!("cs418-texture-unreadable", reason = e.to_string()))?;
-        Image::from_png(&bytes)
+            std::fs::read(&file).map_err(|e| zsim::words!(lang, "cs418-texture-unreadable", reason = e.to_string()))?;
+        Image::from_png(lang, &bytes)
     };
-    let case = Case::parse(&text, &texture).map_err(|e| located(path, e))?;
+    let case = Case::parse(lang, &text, &texture).map_err(|e| located(path, e))?;
     Ok(case)
 }
 
-fn run_case(
+fn run_case(lang: zsim::Lang,
     path: &Path,
     output: &Path,
     arith: Arith,
@@ -118,7 +118,7 @@ fn run_case(
     tolerance: u8,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
-    let case = load(path, Textures::Read)?;
+    let case = load(lang, path, Textures::Read)?;
     let arithmetic = match arith {
         Arith::DdaF64 => Arithmetic::DdaF64,
         Arith::Exact => Arithmetic::Exact,
@@ -126,26 +126,22 @@ fn run_case(
     let reference = match compare {
         Some(png) => {
             let bytes = std::fs::read(png).map_err(|source| Error::Read { path: png.to_owned(), source })?;
-            let image = Image::from_png(&bytes).map_err(|message| Error::Answer { path: png.to_owned(), message })?;
+            let image = Image::from_png(lang, &bytes).map_err(|message| Error::Answer { path: png.to_owned(), message })?;
             Some((png, image))
         }
         None => None,
     };
     // In exact arithmetic the course's own floats are drawn too, to say where
-    // they disagree: both at once, on two cores, messages in this thread's language.
-    let lang = zsim::language();
+    // they disagree: both at once, on two cores, messages in `lang`.
     let (result, course) = rayon::join(
-        || cs418::render(&case, arithmetic),
-        || {
-            (arithmetic == Arithmetic::Exact)
-                .then(|| zsim::with_language(lang, || cs418::render(&case, Arithmetic::DdaF64)))
-        },
+        || cs418::render(lang, &case, arithmetic),
+        || (arithmetic == Arithmetic::Exact).then(|| cs418::render(lang, &case, Arithmetic::DdaF64)),
     );
     let result = result.map_err(|e| located(path, e))?;
     std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
     let written = output.join(&case.output);
     std::fs::write(&written, result.image.to_png()).map_err(|source| Error::Write { path: written.clone(), source })?;
-    let mut text = zsim::words!(
+    let mut text = zsim::words!(lang, 
         "cs418-run-summary",
         path = path.display().to_string(),
         width = case.width.to_string(),
@@ -155,7 +151,7 @@ fn run_case(
         written = written.display().to_string()
     ) + "\n";
     if let Some(course) = course {
-        text.push_str(&disagreements(&course.map_err(|e| located(path, e))?, &result));
+        text.push_str(&disagreements(lang, &course.map_err(|e| located(path, e))?, &result));
     }
     let mut finish = Finish::Ok;
     if let Some((png, image)) = reference {
@@ -163,7 +159,7 @@ fn run_case(
             None => {
                 return Err(Error::Answer {
                     path: png.to_owned(),
-                    message: zsim::words!(
+                    message: zsim::words!(lang, 
                         "cs418-image-size",
                         width = image.width.to_string(),
                         height = image.height.to_string(),
@@ -174,7 +170,7 @@ fn run_case(
                 .into());
             }
             Some(difference) if difference.pixels.is_empty() => {
-                let line = zsim::words!(
+                let line = zsim::words!(lang, 
                     "cs418-compare-same",
                     path = png.display().to_string(),
                     tolerance = tolerance.to_string(),
@@ -184,7 +180,7 @@ fn run_case(
             }
             Some(difference) => {
                 finish = Finish::Differs;
-                let line = zsim::words!(
+                let line = zsim::words!(lang, 
                     "cs418-compare-differs",
                     path = png.display().to_string(),
                     count = difference.pixels.len(),
@@ -193,7 +189,7 @@ fn run_case(
                 );
                 text.push_str(&format!("{line}\n"));
                 for (x, y, ours, theirs) in difference.pixels.iter().take(20) {
-                    let line = zsim::words!(
+                    let line = zsim::words!(lang, 
                         "cs418-compare-pixel",
                         x = x.to_string(),
                         y = y.to_string(),
@@ -203,7 +199,7 @@ fn run_case(
                     text.push_str(&format!("  {line}\n"));
                 }
                 if difference.pixels.len() > 20 {
-                    let more = zsim::words!("cs418-compare-more", count = (difference.pixels.len() - 20).to_string());
+                    let more = zsim::words!(lang, "cs418-compare-more", count = (difference.pixels.len() - 20).to_string());
                     text.push_str(&format!("  {more}\n"));
                 }
             }
@@ -228,15 +224,15 @@ fn features(case: &Case) -> String {
 }
 
 /// The samples where the course's floats and exact arithmetic disagree, each with why.
-fn disagreements(course: &Comparison, exact: &Comparison) -> String {
+fn disagreements(lang: zsim::Lang, course: &Comparison, exact: &Comparison) -> String {
     let cells = cs418::differences(course, exact);
     if cells.is_empty() {
-        return zsim::words!("cs418-arith-alike") + "\n";
+        return zsim::words!(lang, "cs418-arith-alike") + "\n";
     }
-    let mut text = zsim::words!("cs418-arith-disagree", count = cells.len()) + "\n";
+    let mut text = zsim::words!(lang, "cs418-arith-disagree", count = cells.len()) + "\n";
     for cell in &cells {
         let place = if course.level > 1 {
-            zsim::words!(
+            zsim::words!(lang, 
                 "cs418-place-sample",
                 x = cell.x.to_string(),
                 y = cell.y.to_string(),
@@ -244,19 +240,19 @@ fn disagreements(course: &Comparison, exact: &Comparison) -> String {
                 py = cell.pixel.1.to_string()
             )
         } else {
-            zsim::words!("cs418-place-pixel", x = cell.x.to_string(), y = cell.y.to_string())
+            zsim::words!(lang, "cs418-place-pixel", x = cell.x.to_string(), y = cell.y.to_string())
         };
         let why = match &cell.reason {
             Reason::Span { primitive, course, exact, course_covers } => {
                 let span = |s: &Option<(String, String)>| match s {
                     Some((l, r)) => format!("[{l}, {r})"),
-                    None => zsim::words!("cs418-no-span"),
+                    None => zsim::words!(lang, "cs418-no-span"),
                 };
-                let (inside, outside) = (zsim::words!("cs418-inside"), zsim::words!("cs418-outside"));
+                let (inside, outside) = (zsim::words!(lang, "cs418-inside"), zsim::words!(lang, "cs418-outside"));
                 let (course_side, exact_side) = if *course_covers { (inside, outside) } else { (outside, inside) };
-                zsim::words!(
+                zsim::words!(lang, 
                     "cs418-why-span",
-                    primitive = primitive.to_string(),
+                    primitive = primitive.message(lang),
                     row = cell.y.to_string(),
                     course = span(course),
                     exact = span(exact),
@@ -267,9 +263,9 @@ fn disagreements(course: &Comparison, exact: &Comparison) -> String {
             }
             Reason::Depth { course, exact } => {
                 let who = |p: &Option<cs418::Primitive>| {
-                    p.as_ref().map_or_else(|| zsim::words!("cs418-nothing"), ToString::to_string)
+                    p.as_ref().map_or_else(|| zsim::words!(lang, "cs418-nothing"), |p| p.message(lang))
                 };
-                zsim::words!("cs418-why-depth", course = who(course), exact = who(exact))
+                zsim::words!(lang, "cs418-why-depth", course = who(course), exact = who(exact))
             }
         };
         text.push_str(&format!("  {place}: {why}\n"));

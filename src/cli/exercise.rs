@@ -81,7 +81,7 @@ impl FigureFormat {
 }
 
 /// A figure's SVG in each format asked for: `(NAME.ext, bytes)`.
-fn figure_files(
+fn figure_files(lang: zsim::Lang,
     name: &str,
     svg: &str,
     formats: &[FigureFormat],
@@ -92,8 +92,8 @@ fn figure_files(
         let file = format!("{name}.{}", format.extension());
         let bytes = match format {
             FigureFormat::Svg => svg.as_bytes().to_vec(),
-            FigureFormat::Png => super::figure::png(svg, &dir.join(&file))?,
-            FigureFormat::Pdf => super::figure::pdf(svg, &dir.join(&file))?,
+            FigureFormat::Png => super::figure::png(lang, svg, &dir.join(&file))?,
+            FigureFormat::Pdf => super::figure::pdf(lang, svg, &dir.join(&file))?,
             FigureFormat::Tex => zsim::tikz::tikz(svg, true)
                 .map_err(|reason| Error::from(zsim::Usage::PngFailed { path: dir.join(&file), reason }))?
                 .into_bytes(),
@@ -119,7 +119,7 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
         .ok_or_else(|| format!("\"{text}\" is not a size: write WxH, e.g. 16x16"))
 }
 
-pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn run(lang: zsim::Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let spec = Spec {
         seed: args.seed,
         width: args.size.0,
@@ -134,7 +134,7 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         },
         min_pixels: args.min_pixels,
     };
-    let exercise = make(&spec).map_err(Error::from)?;
+    let exercise = make(lang, &spec).map_err(Error::from)?;
     let dir = &args.output;
     // Everything is made first and written at the end, replacing nothing.
     let mut files: Vec<(String, Vec<u8>)> = Vec::new();
@@ -163,12 +163,12 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
     }
     // The worksheet and the solution are handed to students: in their language.
     let seed = args.seed.to_string();
-    let worksheet = svg_with(
+    let worksheet = svg_with(lang,
         scene,
         Simulation::new(scene).buffers(),
         last,
         Shading::Frame,
-        &zsim::words!(
+        &zsim::words!(lang, 
             "exercise-title",
             seed = &seed,
             width = scene.width,
@@ -178,38 +178,38 @@ pub fn run(args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> 
         &Extras {
             vertex_labels: true,
             caption: vec![
-                zsim::words!("exercise-task-draw", max = scene.depth_max()),
-                zsim::words!("exercise-task-write"),
+                zsim::words!(lang, "exercise-task-draw", max = scene.depth_max()),
+                zsim::words!(lang, "exercise-task-write"),
             ],
             values: false,
         },
     );
-    let mut figures = figure_files("worksheet", &worksheet, &args.formats, dir)?;
-    let solution = svg_with(
+    let mut figures = figure_files(lang, "worksheet", &worksheet, &args.formats, dir)?;
+    let solution = svg_with(lang,
         scene,
         simulation.buffers(),
         last,
         Shading::Frame,
-        &zsim::words!("exercise-solution-title", seed = &seed),
+        &zsim::words!(lang, "exercise-solution-title", seed = &seed),
         &Extras { vertex_labels: true, caption: Vec::new(), values: true },
     );
-    figures.extend(figure_files("solution", &solution, &args.formats, dir)?);
+    figures.extend(figure_files(lang, "solution", &solution, &args.formats, dir)?);
     written.extend(figures.iter().map(|(name, _)| name.clone()));
-    let notes = notes(&exercise, &spec, args);
+    let notes = notes(lang, &exercise, &spec, args);
     write("exercise.txt", &notes)?;
     written.push("exercise.txt".into());
     files.extend(figures);
     super::write_fresh(dir, &files, &[])?;
-    let line = zsim::words!("file-written-in", files = written.join(", "), path = dir.display().to_string());
+    let line = zsim::words!(lang, "file-written-in", files = written.join(", "), path = dir.display().to_string());
     emit(out, &format!("{notes}{line}\n"))?;
     if let Some(folder) = &args.gradescope {
-        let files = super::gradescope::autograder(&exercise.json, args.visibility, args.points, zsim::language());
+        let files = super::gradescope::autograder(&exercise.json, args.visibility, args.points, lang);
         super::write_fresh(folder, &files, &[dir.as_path()])?;
         for script in ["setup.sh", "run_autograder"] {
             executable(&folder.join(script))?;
         }
         let names: Vec<&str> = files.iter().map(|(name, _)| name.as_str()).collect();
-        let line = zsim::words!("file-written-in", files = names.join(", "), path = folder.display().to_string());
+        let line = zsim::words!(lang, "file-written-in", files = names.join(", "), path = folder.display().to_string());
         emit(out, &format!("{line}\n"))?;
     }
     Ok(Finish::Ok)
@@ -234,10 +234,10 @@ fn answers(simulation: &Simulation<'_>) -> [(&'static str, String); 2] {
 }
 
 /// What the teacher reads: the settings, the cases asked for and found, and where.
-fn notes(exercise: &Exercise, spec: &Spec, args: &ExerciseArgs) -> String {
+fn notes(lang: zsim::Lang, exercise: &Exercise, spec: &Spec, args: &ExerciseArgs) -> String {
     let scene = &exercise.scene;
     let asked: Vec<&str> = spec.hard.iter().map(|c| c.name()).collect();
-    let mut text = zsim::words!(
+    let mut text = zsim::words!(lang, 
         "exercise-notes-settings",
         seed = spec.seed.to_string(),
         width = scene.width.to_string(),
@@ -247,17 +247,17 @@ fn notes(exercise: &Exercise, spec: &Spec, args: &ExerciseArgs) -> String {
         depth_bits = scene.depth_bits.to_string(),
         max = scene.depth_max().to_string()
     ) + "\n";
-    let asked = if asked.is_empty() { zsim::words!("exercise-notes-no-case") } else { asked.join(", ") };
-    let line = zsim::words!("exercise-notes-asked", asked = asked, candidate = exercise.tries.to_string());
-    text.push_str(&format!("{line}\n{}\n", zsim::words!("exercise-notes-contains")));
+    let asked = if asked.is_empty() { zsim::words!(lang, "exercise-notes-no-case") } else { asked.join(", ") };
+    let line = zsim::words!(lang, "exercise-notes-asked", asked = asked, candidate = exercise.tries.to_string());
+    text.push_str(&format!("{line}\n{}\n", zsim::words!(lang, "exercise-notes-contains")));
     if exercise.found.is_empty() {
-        text.push_str(&format!("  {}\n", zsim::words!("exercise-notes-none")));
+        text.push_str(&format!("  {}\n", zsim::words!(lang, "exercise-notes-none")));
     }
     for found in &exercise.found {
         text.push_str(&format!("  {}: {}\n", found.case, found.place));
     }
     let scene_path = args.output.join("scene.json");
-    let line = zsim::words!("exercise-notes-next", path = scene_path.display().to_string());
+    let line = zsim::words!(lang, "exercise-notes-next", path = scene_path.display().to_string());
     text.push_str(&format!("{line}\n"));
     text
 }

@@ -45,7 +45,7 @@ enum Kind {
     Tex,
 }
 
-pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let kind = match args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
         Some("svg") => Kind::Svg,
         Some("png") => Kind::Png,
@@ -55,7 +55,7 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             return Err(Error::from(zsim::Usage::FigureFormat { path: args.output.clone() }).into());
         }
     };
-    let scene = Scene::load(&args.scene)?;
+    let scene = Scene::load(lang, &args.scene)?;
     if scene.width > MAX_FIGURE_SIDE || scene.height > MAX_FIGURE_SIDE {
         return Err(Error::from(zsim::Usage::FigureTooLarge {
             path: args.scene.clone(),
@@ -76,18 +76,18 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         None => scene.polygons.len() - 1,
     };
     let shading = if args.depth { Shading::Depth } else { Shading::Frame };
-    let buffer = zsim::words!(if args.depth { "buffer-depth" } else { "buffer-frame" });
+    let buffer = zsim::words!(lang, if args.depth { "buffer-depth" } else { "buffer-frame" });
     let file = args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
     let mut title = if worksheet {
-        zsim::words!("figure-title-worksheet", file = file)
+        zsim::words!(lang, "figure-title-worksheet", file = file)
     } else {
-        zsim::words!("figure-title-after", file = file, buffer = buffer, polygon = polygon_after(&scene, last))
+        zsim::words!(lang, "figure-title-after", file = file, buffer = buffer, polygon = polygon_after(lang, &scene, last))
     };
     // Antialiasing: the figure shows the samples, before they are averaged, and says so.
     let scene = match scene.effects.antialias {
         Some(settings) if !worksheet => {
             let k = settings.samples;
-            title.push_str(&zsim::words!("figure-title-samples", k = k));
+            title.push_str(&zsim::words!(lang, "figure-title-samples", k = k));
             zsim::antialias::supersampled(&scene, k)?
         }
         _ => scene,
@@ -100,11 +100,11 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         simulation.draw_parallel_through(last, simulation.default_tile(threads), threads, &|| {});
     }
     let extras = Extras { vertex_labels: worksheet, caption: Vec::new(), values: args.values };
-    let text = svg_with(&scene, simulation.buffers(), last, shading, &title, &extras);
+    let text = svg_with(lang, &scene, simulation.buffers(), last, shading, &title, &extras);
     let bytes = match kind {
         Kind::Svg => text.into_bytes(),
-        Kind::Png => png(&text, &args.output)?,
-        Kind::Pdf => pdf(&text, &args.output)?,
+        Kind::Png => png(lang, &text, &args.output)?,
+        Kind::Pdf => pdf(lang, &text, &args.output)?,
         Kind::Tex => zsim::tikz::tikz(&text, !args.tikz_only)
             .map_err(|reason| Error::from(zsim::Usage::PngFailed { path: args.output.clone(), reason }))?
             .into_bytes(),
@@ -115,7 +115,7 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         out,
         &format!(
             "{}\n",
-            zsim::words!(
+            zsim::words!(lang, 
                 "file-written-about",
                 path = args.output.display().to_string(),
                 about = zsim::printable(&title).into_owned()
@@ -126,12 +126,12 @@ pub fn run(args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
 }
 
 /// The SVG drawn as a PNG at twice its size (text in the system's sans-serif font).
-pub(super) fn png(svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+pub(super) fn png(lang: zsim::Lang, svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
     let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
-    let tree = tree(svg, path)?;
-    let size = tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed(zsim::words!("png-figure-too-large")))?;
+    let tree = tree(lang, svg, path)?;
+    let size = tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed(zsim::words!(lang, "png-figure-too-large")))?;
     let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
-        .ok_or_else(|| failed(zsim::words!("png-figure-too-large")))?;
+        .ok_or_else(|| failed(zsim::words!(lang, "png-figure-too-large")))?;
     resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(2.0, 2.0), &mut pixmap.as_mut());
     pixmap.encode_png().map_err(|e| failed(e.to_string()))
 }
@@ -139,21 +139,21 @@ pub(super) fn png(svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
 /// The SVG as a one-page PDF of its size, text embedded as the system's
 /// sans-serif font (svg2pdf, from the same tree as the PNG).
 #[cfg(feature = "pdf")]
-pub(super) fn pdf(svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+pub(super) fn pdf(lang: zsim::Lang, svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
     let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
-    let tree = tree(svg, path)?;
+    let tree = tree(lang, svg, path)?;
     svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), svg2pdf::PageOptions::default())
         .map_err(|e| failed(e.to_string()))
 }
 
 #[cfg(not(feature = "pdf"))]
 pub(super) fn pdf(_svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
-    Err(zsim::Usage::PngFailed { path: path.to_path_buf(), reason: zsim::words!("pdf-not-built") }.into())
+    Err(zsim::Usage::PngFailed { path: path.to_path_buf(), reason: zsim::words!(lang, "pdf-not-built") }.into())
 }
 
 /// The SVG parsed with the system's fonts, "sans-serif" being the first of
 /// the usual sans fonts the system has.
-fn tree(svg: &str, path: &Path) -> Result<resvg::usvg::Tree, Error> {
+fn tree(lang: zsim::Lang, svg: &str, path: &Path) -> Result<resvg::usvg::Tree, Error> {
     let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
     let mut options = resvg::usvg::Options::default();
     let fonts = options.fontdb_mut();
@@ -166,7 +166,7 @@ fn tree(svg: &str, path: &Path) -> Result<resvg::usvg::Tree, Error> {
         .find(|wanted| families.iter().any(|f| f == wanted))
         .map(str::to_string)
         .or_else(|| families.first().cloned())
-        .ok_or_else(|| failed(zsim::words!("png-no-fonts")))?;
+        .ok_or_else(|| failed(zsim::words!(lang, "png-no-fonts")))?;
     fonts.set_sans_serif_family(sans);
     resvg::usvg::Tree::from_str(svg, &options).map_err(|e| failed(e.to_string()))
 }

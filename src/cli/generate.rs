@@ -44,7 +44,7 @@ fn megabytes(bytes: u64) -> String {
     format!("{}.{:03} MB ({:.3} MiB)", bytes / 1_000_000, (bytes % 1_000_000) / 1000, bytes as f64 / 1_048_576.0)
 }
 
-pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn memory_command(lang: zsim::Lang, args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     for (name, bits) in [("--frame-bits", args.frame_bits), ("--depth-bits", args.depth_bits)] {
         if !(1..=64).contains(&bits) {
             return Err(Error::from(zsim::Usage::MemoryBits { option: name, bits }).into());
@@ -78,11 +78,11 @@ pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, 
             "memory-header-bits",
             "memory-header-bytes",
         ]
-        .map(|key| zsim::words!(key)),
+        .map(|key| zsim::words!(lang, key)),
     );
     for (name, buffer) in [("buffer-frame", frame), ("buffer-depth", depth)] {
         table.add_row([
-            zsim::words!(name),
+            zsim::words!(lang, name),
             buffer.cells.to_string(),
             buffer.bits_per_cell.to_string(),
             buffer.bits().to_string(),
@@ -91,7 +91,7 @@ pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, 
     }
     let total = frame.bytes() + depth.bytes();
     table.add_row([
-        zsim::words!("memory-total"),
+        zsim::words!(lang, "memory-total"),
         String::new(),
         String::new(),
         (frame.bits() + depth.bits()).to_string(),
@@ -102,13 +102,13 @@ pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, 
         String::new()
     } else {
         let at = if args.depth_at == DepthAt::Sample { "memory-at-sample" } else { "memory-at-pixel" };
-        zsim::words!("memory-supersampled", k = k.to_string(), at = zsim::words!(at))
+        zsim::words!(lang, "memory-supersampled", k = k.to_string(), at = zsim::words!(lang, at))
     };
     emit(
         out,
         &format!(
             "{}\n{table}\n{}\n",
-            zsim::words!(
+            zsim::words!(lang, 
                 "memory-heading",
                 width = args.width.to_string(),
                 height = args.height.to_string(),
@@ -116,7 +116,7 @@ pub fn memory_command(args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, 
                 depth_bits = args.depth_bits.to_string(),
                 sampling = sampling
             ),
-            zsim::words!("memory-total-line", total = total.to_string(), megabytes = megabytes(total))
+            zsim::words!(lang, "memory-total-line", total = total.to_string(), megabytes = megabytes(total))
         ),
     )?;
     Ok(Finish::Ok)
@@ -155,7 +155,7 @@ pub struct RandomArgs {
 /// and reading it back takes about ten times that in memory.
 const MAX_RANDOM_COUNT: usize = 10_000_000;
 
-pub fn random_command(args: &RandomArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn random_command(lang: zsim::Lang, args: &RandomArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.count > MAX_RANDOM_COUNT {
         return Err(Error::from(zsim::Usage::RandomCount { count: args.count, max: MAX_RANDOM_COUNT }).into());
     }
@@ -175,6 +175,6 @@ pub fn random_command(args: &RandomArgs, out: &mut dyn Write) -> Result<Finish, 
         frame_bits: args.frame_bits,
         depth_bits: args.depth_bits,
     };
-    super::emit_or_write(out, args.output.as_deref(), &spec.json(), &[])?;
+    super::emit_or_write(lang, out, args.output.as_deref(), &spec.json(), &[])?;
     Ok(Finish::Ok)
 }

@@ -64,8 +64,8 @@ enum Format {
 /// How many common mistakes are listed.
 const MISTAKES_LISTED: usize = 10;
 
-pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let scene = Scene::load(&args.scene)?;
+pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let scene = Scene::load(lang, &args.scene)?;
     if scene.polygons.is_empty() {
         return Err(Error::from(zsim::Usage::NoPolygons { path: args.scene.clone(), task: zsim::Task::Grade }).into());
     }
@@ -93,33 +93,34 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     // The usual wrong rules, drawn once for the whole class.
     let diagnoser = zsim::diagnose::Diagnoser::new(&scene, last);
     // Each answer graded, the common mistakes and zsim's reason for each, in
-    // this thread's language.
-    let assess = || {
-        let graded = grade(&submissions(&files, &expected, &scene), &expected, diagnoser.as_ref());
+    // `lang`.
+    let assess = |lang: zsim::Lang| {
+        let graded = grade(&submissions(lang, &files, &expected, &scene), &expected, diagnoser.as_ref());
         let mistakes = common_mistakes(&graded, MISTAKES_LISTED);
-        let reasons = reasons(&scene, last, &mistakes);
+        let reasons = reasons(lang, &scene, last, &mistakes);
         (graded, mistakes, reasons)
     };
-    let (graded, mistakes, reasons) = assess();
+    let (graded, mistakes, reasons) = assess(lang);
     let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
     let text = match args.format {
         // CSV and JSON are the same in every language: their reasons and names in English.
         Format::Moodle | Format::Canvas => gradebook(args, &rows)?,
-        Format::Csv | Format::Json => zsim::with_language(zsim::Lang::En, || {
-            let (graded, mistakes, reasons) = assess();
+        Format::Csv | Format::Json => {
+            let lang = zsim::Lang::En;
+            let (graded, mistakes, reasons) = assess(lang);
             let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
             match args.format {
                 Format::Csv => csv(&rows),
-                _ => json(&args.scene, &polygon_name(&scene, last), &rows, &mistakes, &reasons),
+                _ => json(lang, &args.scene, &polygon_name(lang, &scene, last), &rows, &mistakes, &reasons),
             }
-        }),
+        }
         Format::Text => {
             let counts = |f: fn(&Grade) -> bool| rows.iter().filter(|g| f(g)).count();
-            let summary = zsim::words!(
+            let summary = zsim::words!(lang, 
                 "grade-summary",
                 class = args.class.display().to_string(),
                 scene = args.scene.display().to_string(),
-                polygon = polygon_after(&scene, last),
+                polygon = polygon_after(lang, &scene, last),
                 students = rows.len(),
                 ok = counts(|g| g.status == Status::Ok),
                 wrong = counts(|g| g.status == Status::Wrong),
@@ -128,15 +129,15 @@ pub fn run(args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             );
             format!(
                 "{summary}\n{}\n\n{}{}",
-                table(&rows),
-                causes_text(&rows),
-                mistakes_text(&mistakes, &reasons, graded.len())
+                table(lang, &rows),
+                causes_text(lang, &rows),
+                mistakes_text(lang, &mistakes, &reasons, graded.len())
             )
         }
     };
     if let Some(folder) = &args.output {
-        let mistakes_text = mistakes_text(&mistakes, &reasons, graded.len());
-        write_feedback(folder, &scene, args, last, &files, &graded, &mistakes_text)?;
+        let mistakes_text = mistakes_text(lang, &mistakes, &reasons, graded.len());
+        write_feedback(lang, folder, &scene, args, last, &files, &graded, &mistakes_text)?;
     }
     emit(out, &text)?;
     Ok(if rows.iter().all(|g| g.status == zsim::grade::Status::Ok) { Finish::Ok } else { Finish::Differs })
@@ -168,45 +169,45 @@ fn answer_files(class: &Path) -> Result<Vec<(String, Buffer, PathBuf)>, Error> {
 
 /// Each student's answers for the buffers the class hands in, read and checked for shape.
 fn submissions(
+    lang: zsim::Lang,
     files: &[(String, Buffer, PathBuf)],
     expected: &[(Buffer, Vec<Vec<u32>>)],
     scene: &Scene,
 ) -> Vec<Submission> {
     let mut students: Vec<&str> = files.iter().map(|(s, _, _)| s.as_str()).collect();
     students.dedup();
-    // Read on every core, in the student's order; messages in this thread's language.
-    let lang = zsim::language();
+    // Read on every core, in the student's order; messages in `lang`.
     students
         .into_par_iter()
         .map(|student| {
-            zsim::with_language(lang, || {
+            {
                 let answers = expected
                     .iter()
                     .map(|(buffer, _)| {
                         let file = files.iter().find(|(s, b, _)| s == student && b == buffer);
                         let handed = match file {
                             None => Handed::Missing,
-                            Some((_, _, path)) => match read_answer(path, scene, *buffer, zsim::Links::Refuse) {
+                            Some((_, _, path)) => match read_answer(lang, path, scene, *buffer, zsim::Links::Refuse) {
                                 Ok(matrix) => Handed::Matrix(matrix),
-                                Err(error) => Handed::Malformed(as_the_student_sees(&error, path)),
+                                Err(error) => Handed::Malformed(as_the_student_sees(lang, &error, path)),
                             },
                         };
                         (*buffer, handed)
                     })
                     .collect();
                 Submission { student: printable(student).into_owned(), answers }
-            })
+            }
         })
         .collect()
 }
 
 /// zsim's reason for each common mistake, from one watched run.
-fn reasons(scene: &Scene, last: usize, mistakes: &[CommonMistake]) -> Vec<String> {
+fn reasons(lang: zsim::Lang, scene: &Scene, last: usize, mistakes: &[CommonMistake]) -> Vec<String> {
     let mut watcher = PixelWatcher::new(mistakes.iter().map(|m| (m.x, m.y)));
     if !mistakes.is_empty() {
         Simulation::new(scene).draw_through(last, &mut watcher);
     }
-    mistakes.iter().map(|m| why(scene, m.buffer, m.x, m.y, watcher.history(m.x, m.y))).collect()
+    mistakes.iter().map(|m| why(lang, scene, m.buffer, m.x, m.y, watcher.history(m.x, m.y))).collect()
 }
 
 /// A gradebook import for Moodle or Canvas, with the identity column checked
@@ -228,12 +229,12 @@ fn gradebook(args: &GradeArgs, rows: &[&Grade]) -> Result<String, Error> {
     })
 }
 
-fn table(rows: &[&Grade]) -> Table {
+fn table(lang: zsim::Lang, rows: &[&Grade]) -> Table {
     let mut table = Table::new();
     // A likely-cause column only when a cause was found for someone.
     let causes = rows.iter().any(|g| g.misconception.is_some());
     let columns = ["student", "frame", "depth", "score", "status", "cause"];
-    let header = columns[..if causes { 6 } else { 5 }].iter().map(|c| zsim::words!(&format!("grade-column-{c}")));
+    let header = columns[..if causes { 6 } else { 5 }].iter().map(|c| zsim::words!(lang, &format!("grade-column-{c}")));
     // Long statuses and causes wrap inside their column: the table stays 100 columns wide at most.
     table
         .load_style(presets::ASCII_MARKDOWN)
@@ -246,13 +247,13 @@ fn table(rows: &[&Grade]) -> Table {
             grade.student.clone(),
             count(grade.frame_wrong),
             count(grade.depth_wrong),
-            zsim::localize_decimal(grade.percent()),
-            status_text(&grade.status),
+            zsim::localize_decimal(lang, grade.percent()),
+            status_text(lang, &grade.status),
         ];
         if causes {
             row.push(grade.misconception.map_or_else(String::new, |d| {
-                let what = d.misconception.words();
-                zsim::words!("grade-cause", what = what, explained = d.explained, wrong = d.wrong)
+                let what = d.misconception.words(lang);
+                zsim::words!(lang, "grade-cause", what = what, explained = d.explained, wrong = d.wrong)
             }));
         }
         table.add_row(row);
@@ -262,7 +263,7 @@ fn table(rows: &[&Grade]) -> Table {
 
 /// The class's likely causes: each misconception named for a student, with
 /// how many students it was named for, most first.
-fn causes_text(rows: &[&Grade]) -> String {
+fn causes_text(lang: zsim::Lang, rows: &[&Grade]) -> String {
     let mut counts: Vec<(zsim::diagnose::Misconception, usize)> = Vec::new();
     for misconception in rows.iter().filter_map(|g| g.misconception.map(|d| d.misconception)) {
         match counts.iter_mut().find(|(m, _)| *m == misconception) {
@@ -274,10 +275,10 @@ fn causes_text(rows: &[&Grade]) -> String {
         return String::new();
     }
     counts.sort_by_key(|(m, count)| (std::cmp::Reverse(*count), *m));
-    let mut text = format!("{}\n", zsim::words!("grade-causes"));
+    let mut text = format!("{}\n", zsim::words!(lang, "grade-causes"));
     for (misconception, count) in counts {
         let line =
-            zsim::words!("grade-cause-count", what = misconception.words(), count = count, students = rows.len());
+            zsim::words!(lang, "grade-cause-count", what = misconception.words(lang), count = count, students = rows.len());
         text.push_str(&format!("  {line}\n"));
     }
     text.push('\n');
@@ -286,18 +287,18 @@ fn causes_text(rows: &[&Grade]) -> String {
 
 /// A student's status in the reader's language (CSV and JSON keep
 /// [`Status`]'s English words).
-fn status_text(status: &Status) -> String {
+fn status_text(lang: zsim::Lang, status: &Status) -> String {
     match status {
-        Status::Ok => zsim::words!("grade-status-ok"),
-        Status::Wrong => zsim::words!("grade-status-wrong"),
-        Status::Malformed(why) => zsim::words!("grade-status-malformed", why = why),
-        Status::Missing(what) => zsim::words!("grade-status-missing", what = what),
+        Status::Ok => zsim::words!(lang, "grade-status-ok"),
+        Status::Wrong => zsim::words!(lang, "grade-status-wrong"),
+        Status::Malformed(why) => zsim::words!(lang, "grade-status-malformed", why = why),
+        Status::Missing(what) => zsim::words!(lang, "grade-status-missing", what = what),
     }
 }
 
-fn mistakes_text(mistakes: &[CommonMistake], reasons: &[String], students: usize) -> String {
+fn mistakes_text(lang: zsim::Lang, mistakes: &[CommonMistake], reasons: &[String], students: usize) -> String {
     if mistakes.is_empty() {
-        return format!("{}\n", zsim::words!("grade-mistakes-none"));
+        return format!("{}\n", zsim::words!(lang, "grade-mistakes-none"));
     }
     let mut table = Table::new();
     table
@@ -305,28 +306,28 @@ fn mistakes_text(mistakes: &[CommonMistake], reasons: &[String], students: usize
         .set_content_arrangement(ContentArrangement::Dynamic)
         .set_width(100)
         .set_header([
-            zsim::words!("grade-column-buffer"),
+            zsim::words!(lang, "grade-column-buffer"),
             "x".to_string(),
             "y".to_string(),
-            zsim::words!("grade-column-wrong"),
-            zsim::words!("check-column-right"),
-            zsim::words!("grade-column-answered"),
-            zsim::words!("check-column-why"),
+            zsim::words!(lang, "grade-column-wrong"),
+            zsim::words!(lang, "check-column-right"),
+            zsim::words!(lang, "grade-column-answered"),
+            zsim::words!(lang, "check-column-why"),
         ]);
     for (mistake, reason) in mistakes.iter().zip(reasons) {
         let answered: Vec<String> =
             mistake.answers.iter().map(|(value, count)| format!("{value} ({count}×)")).collect();
         table.add_row([
-            mistake.buffer.name().to_string(),
+            mistake.buffer.name(lang).to_string(),
             mistake.x.to_string(),
             mistake.y.to_string(),
-            zsim::words!("grade-students-of", count = mistake.students.len(), total = students),
+            zsim::words!(lang, "grade-students-of", count = mistake.students.len(), total = students),
             mistake.right.to_string(),
             answered.join(", "),
             reason.clone(),
         ]);
     }
-    format!("{}\n{table}\n", zsim::words!("grade-mistakes"))
+    format!("{}\n{table}\n", zsim::words!(lang, "grade-mistakes"))
 }
 
 /// A CSV field, quoted when it holds a comma, a quote or a line break (RFC
@@ -355,7 +356,7 @@ fn csv(rows: &[&Grade]) -> String {
     text
 }
 
-fn json(scene: &Path, after: &str, rows: &[&Grade], mistakes: &[CommonMistake], reasons: &[String]) -> String {
+fn json(lang: zsim::Lang, scene: &Path, after: &str, rows: &[&Grade], mistakes: &[CommonMistake], reasons: &[String]) -> String {
     let students: Vec<serde_json::Value> = rows
         .iter()
         .map(|g| {
@@ -375,7 +376,7 @@ fn json(scene: &Path, after: &str, rows: &[&Grade], mistakes: &[CommonMistake], 
         .zip(reasons)
         .map(|(m, why)| {
             serde_json::json!({
-                "buffer": m.buffer.name(),
+                "buffer": m.buffer.name(lang),
                 "x": m.x,
                 "y": m.y,
                 "right": m.right,
@@ -395,7 +396,7 @@ fn json(scene: &Path, after: &str, rows: &[&Grade], mistakes: &[CommonMistake], 
 }
 
 /// FOLDER/NAME.txt for each student and FOLDER/common-mistakes.txt.
-fn write_feedback(
+fn write_feedback(lang: zsim::Lang,
     folder: &Path,
     scene: &Scene,
     args: &GradeArgs,
@@ -406,13 +407,13 @@ fn write_feedback(
 ) -> Result<(), Error> {
     let mut outputs = Vec::new();
     for (grade, _) in graded {
-        let mut text = zsim::words!(
+        let mut text = zsim::words!(lang, 
             "grade-feedback",
             student = &grade.student,
             scene = args.scene.display().to_string(),
-            polygon = polygon_after(scene, last),
-            score = zsim::localize_decimal(grade.percent()),
-            status = status_text(&grade.status)
+            polygon = polygon_after(lang, scene, last),
+            score = zsim::localize_decimal(lang, grade.percent()),
+            status = status_text(lang, &grade.status)
         ) + "\n";
         // The answers that were read, explained as `zsim check` explains them.
         let mut answers = Vec::new();
@@ -420,13 +421,13 @@ fn write_feedback(
             if printable(student) != grade.student {
                 continue;
             }
-            match read_answer(path, scene, *buffer, zsim::Links::Refuse) {
+            match read_answer(lang, path, scene, *buffer, zsim::Links::Refuse) {
                 Ok(matrix) => answers.push((*buffer, path.as_path(), matrix)),
-                Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(&error, path))),
+                Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(lang, &error, path))),
             }
         }
         if !answers.is_empty() {
-            text.push_str(&report(scene, &args.scene, last, answers, Arith::Exact)?.text);
+            text.push_str(&report(lang, scene, &args.scene, last, answers, Arith::Exact)?.text);
         }
         // NAME.feedback.txt never ends as a submitted NAME.frame.txt or NAME.depth.txt
         // does, nor is it the summary's name, whatever the student's name.

@@ -31,7 +31,7 @@ pub fn completions(args: &CompletionsArgs, out: &mut dyn Write) -> Result<Finish
 }
 
 /// Prints the man page, or writes every command's page into a folder.
-pub fn manual(args: &ManualArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn manual(lang: zsim::Lang, args: &ManualArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let command = Cli::command();
     match &args.dir {
         None => clap_mangen::Man::new(command).render(out)?,
@@ -42,7 +42,7 @@ pub fn manual(args: &ManualArgs, out: &mut dyn Write) -> Result<Finish, Failure>
             page_and_subpages(&command, &mut pages)?;
             super::write_fresh(dir, &pages, &[])?;
             let names: Vec<&str> = pages.iter().map(|(name, _)| name.as_str()).collect();
-            let line = zsim::words!("file-written-in", files = names.join(", "), path = dir.display().to_string());
+            let line = zsim::words!(lang, "file-written-in", files = names.join(", "), path = dir.display().to_string());
             super::emit(out, &format!("{line}\n"))?;
         }
     }

@@ -114,37 +114,37 @@ impl From<io::Error> for Failure {
 /// Parses the arguments, runs the command and maps the outcome to an exit code.
 pub fn main() -> ExitCode {
     // The language first, so that a usage error is already in it.
-    zsim::set_language(language_asked().unwrap_or_else(zsim::Lang::from_env));
+    let lang = language_of_the_run();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
-        Err(error) => return usage_error(&error),
+        Err(error) => return usage_error(lang, &error),
     };
-    zsim::set_language(cli.lang.unwrap_or_else(zsim::Lang::from_env));
+    let lang = cli.lang.unwrap_or(lang);
     if stdout_is_closed() {
         // Rust's standard output drops writes to a closed descriptor silently.
-        eprintln!("zsim: {}", zsim::words!("error-output", reason = zsim::words!("stdout-closed")));
+        eprintln!("zsim: {}", zsim::words!(lang, "error-output", reason = zsim::words!(lang, "stdout-closed")));
         return ExitCode::from(2);
     }
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
     let result = match cli.command {
-        Command::Run(args) => run::run(&args, &mut out),
-        Command::Step(args) => step::run(&args, &mut out),
-        Command::Explain(args) => explain::run(&args, &mut out),
-        Command::Check(args) => check::run(&args, &mut out),
-        Command::Grade(args) => grade::run(&args, &mut out),
-        Command::Exercise(args) => exercise::run(&args, &mut out),
-        Command::Figure(args) => figure::run(&args, &mut out),
-        Command::Buet(args) => buet::run(&args, &mut out),
-        Command::Cs418(args) => cs418::run(&args, &mut out),
-        Command::Tinyrenderer(args) => tinyrenderer::run(&args, &mut out),
-        Command::Accuracy(args) => accuracy::run(&args, &mut out),
-        Command::Memory(args) => generate::memory_command(&args, &mut out),
-        Command::Random(args) => generate::random_command(&args, &mut out),
+        Command::Run(args) => run::run(lang, &args, &mut out),
+        Command::Step(args) => step::run(lang, &args, &mut out),
+        Command::Explain(args) => explain::run(lang, &args, &mut out),
+        Command::Check(args) => check::run(lang, &args, &mut out),
+        Command::Grade(args) => grade::run(lang, &args, &mut out),
+        Command::Exercise(args) => exercise::run(lang, &args, &mut out),
+        Command::Figure(args) => figure::run(lang, &args, &mut out),
+        Command::Buet(args) => buet::run(lang, &args, &mut out),
+        Command::Cs418(args) => cs418::run(lang, &args, &mut out),
+        Command::Tinyrenderer(args) => tinyrenderer::run(lang, &args, &mut out),
+        Command::Accuracy(args) => accuracy::run(lang, &args, &mut out),
+        Command::Memory(args) => generate::memory_command(lang, &args, &mut out),
+        Command::Random(args) => generate::random_command(lang, &args, &mut out),
         #[cfg(feature = "gpu")]
-        Command::Speed(args) => speed::run(&args, &mut out),
+        Command::Speed(args) => speed::run(lang, &args, &mut out),
         Command::Completions(args) => install::completions(&args, &mut out),
-        Command::Manual(args) => install::manual(&args, &mut out),
+        Command::Manual(args) => install::manual(lang, &args, &mut out),
     };
     let result = result.and_then(|finish| out.flush().map(|()| finish).map_err(Failure::Io));
     match result {
@@ -152,15 +152,22 @@ pub fn main() -> ExitCode {
         Ok(Finish::Differs) => ExitCode::from(1),
         Err(Failure::Io(error)) if error.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
         Err(Failure::Io(error)) => {
-            eprintln!("zsim: {}", zsim::words!("error-output", reason = error.to_string()));
+            eprintln!("zsim: {}", zsim::words!(lang, "error-output", reason = error.to_string()));
             ExitCode::from(2)
         }
         Err(Failure::Input(error)) => {
             // Messages quote the input (names, tokens): never let it steer the terminal.
-            eprintln!("zsim: {}", zsim::printable(&error.to_string()));
+            eprintln!("zsim: {}", zsim::printable(&error.message(lang)));
             ExitCode::from(2)
         }
     }
+}
+
+/// The language of this run as the command line and the environment ask
+/// for it: what a value parser words its refusal in, since clap calls it
+/// before the parsed `--lang` is there to pass.
+fn language_of_the_run() -> zsim::Lang {
+    language_asked().unwrap_or_else(zsim::Lang::from_env)
 }
 
 /// The `--lang` of the command line, read before clap parses it.
@@ -176,9 +183,9 @@ fn language_asked() -> Option<zsim::Lang> {
 /// Reports a usage error: clap's own message (with the usage line) in
 /// English; in another language one line in it, naming the argument and the
 /// value, and where to read on. Help and the version print as clap prints them.
-fn usage_error(error: &clap::Error) -> ExitCode {
+fn usage_error(lang: zsim::Lang, error: &clap::Error) -> ExitCode {
     use clap::error::{ContextKind, ContextValue, ErrorKind};
-    let english = zsim::language() == zsim::Lang::En;
+    let english = lang == zsim::Lang::En;
     let context = |kind| match error.get(kind) {
         Some(ContextValue::String(text)) => zsim::printable(text).into_owned(),
         Some(ContextValue::Strings(texts)) => zsim::printable(&texts.join(", ")).into_owned(),
@@ -187,24 +194,24 @@ fn usage_error(error: &clap::Error) -> ExitCode {
     let message = match error.kind() {
         _ if english || !error.use_stderr() => None,
         ErrorKind::MissingRequiredArgument => {
-            Some(zsim::words!("usage-missing", args = context(ContextKind::InvalidArg)))
+            Some(zsim::words!(lang, "usage-missing", args = context(ContextKind::InvalidArg)))
         }
         ErrorKind::InvalidValue | ErrorKind::ValueValidation => {
             let reason = std::error::Error::source(error).map(|source| source.to_string());
-            Some(zsim::words!(
+            Some(zsim::words!(lang, 
                 "usage-invalid-value",
-                value = zsim::token(&context(ContextKind::InvalidValue)),
+                value = zsim::token(lang, &context(ContextKind::InvalidValue)),
                 arg = context(ContextKind::InvalidArg),
                 reason = reason.unwrap_or_else(|| context(ContextKind::ValidValue))
             ))
         }
         ErrorKind::UnknownArgument => {
-            Some(zsim::words!("usage-unknown-argument", arg = context(ContextKind::InvalidArg)))
+            Some(zsim::words!(lang, "usage-unknown-argument", arg = context(ContextKind::InvalidArg)))
         }
         ErrorKind::InvalidSubcommand => {
-            Some(zsim::words!("usage-unknown-command", name = context(ContextKind::InvalidSubcommand)))
+            Some(zsim::words!(lang, "usage-unknown-command", name = context(ContextKind::InvalidSubcommand)))
         }
-        ErrorKind::ArgumentConflict => Some(zsim::words!(
+        ErrorKind::ArgumentConflict => Some(zsim::words!(lang, 
             "usage-conflict",
             arg = context(ContextKind::InvalidArg),
             other = context(ContextKind::PriorArg)
@@ -213,7 +220,7 @@ fn usage_error(error: &clap::Error) -> ExitCode {
     };
     match message {
         Some(message) => {
-            eprintln!("zsim: {message} ({})", zsim::words!("usage-see-help"));
+            eprintln!("zsim: {message} ({})", zsim::words!(lang, "usage-see-help"));
             ExitCode::from(2)
         }
         None => {
@@ -235,7 +242,7 @@ fn emit(out: &mut dyn Write, text: &str) -> Result<(), Failure> {
 
 /// Prints `text`, or writes it to `output` (never one of `inputs`) and says
 /// so: the `-o FILE` of the commands that print a scene.
-pub(crate) fn emit_or_write(
+pub(crate) fn emit_or_write(lang: zsim::Lang,
     out: &mut dyn Write,
     output: Option<&Path>,
     text: &str,
@@ -244,7 +251,7 @@ pub(crate) fn emit_or_write(
     let Some(path) = output else { return emit(out, text) };
     not_an_input(path, inputs)?;
     std::fs::write(path, text).map_err(|source| Error::Write { path: path.to_owned(), source })?;
-    emit(out, &format!("{}\n", zsim::words!("file-written", path = path.display().to_string())))
+    emit(out, &format!("{}\n", zsim::words!(lang, "file-written", path = path.display().to_string())))
 }
 
 /// Refuses an output file that is one of the command's inputs (the same file

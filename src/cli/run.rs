@@ -60,7 +60,7 @@ pub struct RunArgs {
     #[arg(long, value_name = "PRESET", value_parser = preset_parser)]
     compare_rules: Option<zsim::Preset>,
     /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
-    #[arg(long, default_value = "exact", value_parser = Arith::parse)]
+    #[arg(long, default_value = "exact", value_parser = |text: &str| Arith::parse(super::language_of_the_run(), text))]
     arith: Arith,
 }
 
@@ -95,7 +95,7 @@ enum Format {
     None,
 }
 
-pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.inside.is_some() && args.order != Order::Pixels {
         return Err(zsim::Error::from(zsim::Usage::InsideNeedsPixelOrder).into());
     }
@@ -107,7 +107,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         return Err(zsim::Error::from(zsim::Usage::TilesNeedFormatNone).into());
     }
     let reading = Instant::now();
-    let mut scene = Scene::load(&args.scene)?;
+    let mut scene = Scene::load(lang, &args.scene)?;
     let read_time = reading.elapsed();
     // `--after N`: the scene up to polygon N, shown as `--final` shows the last.
     if let Some(spec) = &args.after {
@@ -121,16 +121,16 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             GpuApi::Gl => zsim::gpu::GpuApi::Gl,
             GpuApi::Vulkan => zsim::gpu::GpuApi::Vulkan,
         };
-        let comparison = zsim::gpu::compare(&scene, api)?;
-        emit(out, &comparison.text(&scene, &path))?;
+        let comparison = zsim::gpu::compare(lang, &scene, api)?;
+        emit(out, &comparison.text(lang, &scene, &path))?;
         return Ok(Finish::Ok);
     }
     if let Some(preset) = args.compare_rules {
-        emit(out, &compare_rules(&scene, &path, preset))?;
+        emit(out, &compare_rules(lang, &scene, &path, preset))?;
         return Ok(Finish::Ok);
     }
     if args.arith != Arith::Exact {
-        return run_inexact(args, &scene, &path, read_time, out);
+        return run_inexact(lang, args, &scene, &path, read_time, out);
     }
     let json = args.format == Format::Json;
     if args.segments.is_some() || args.order == Order::Pixels || scene.effects.antialias.is_some() {
@@ -147,14 +147,14 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             json,
             final_only,
         };
-        return super::variants::run(&scene, &path, &variant, out);
+        return super::variants::run(lang, &scene, &path, &variant, out);
     }
     // Clearing the buffers is the algorithm's first step: `--format none` times it with the raster.
     let rasterizing = Instant::now();
     let mut simulation = Simulation::new_on(&scene, threads(args));
     match args.format {
         Format::Text => {
-            emit(out, &report::scene_header(&scene, &args.scene.display().to_string()))?;
+            emit(out, &report::scene_header(lang, &scene, &args.scene.display().to_string()))?;
             let last = scene.polygons.len().checked_sub(1);
             if final_only {
                 draw_all_but_the_last(&mut simulation, &scene, args);
@@ -168,10 +168,10 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 if final_only && Some(index) != last {
                     continue;
                 }
-                let mut text = format!("\n{}\n", report::polygon_heading(&scene, index));
-                let counts = zsim::words!("run-counts", covered = counts.0.to_string(), written = counts.1.to_string());
+                let mut text = format!("\n{}\n", report::polygon_heading(lang, &scene, index));
+                let counts = zsim::words!(lang, "run-counts", covered = counts.0.to_string(), written = counts.1.to_string());
                 text.push_str(&format!("  {counts}\n"));
-                text.push_str(&buffers_text(&simulation, index, &polygon.name, axes(args)));
+                text.push_str(&buffers_text(lang, &simulation, index, &polygon.name, axes(args)));
                 emit(out, &text)?;
             }
             if scene.polygons.is_empty() {
@@ -181,16 +181,16 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                     out,
                     &format!(
                         "\n{}\n\n{}\n{}\n{}\n{}",
-                        zsim::words!("run-no-polygons"),
-                        zsim::words!("run-frame-cleared"),
+                        zsim::words!(lang, "run-no-polygons"),
+                        zsim::words!(lang, "run-frame-cleared"),
                         report::matrix_styled(&buffers.frame_rows(), &style),
-                        zsim::words!("run-depth-cleared"),
+                        zsim::words!(lang, "run-depth-cleared"),
                         report::matrix_styled(&buffers.depth_rows(), &style),
                     ),
                 )?;
             }
             if scene.effects.transparency {
-                emit(out, &super::variants::local_errors_text(&scene, simulation.buffers()))?;
+                emit(out, &super::variants::local_errors_text(lang, &scene, simulation.buffers()))?;
             }
         }
         Format::Json => {
@@ -223,13 +223,13 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             let long_run = scene.polygons.len() >= 10_000;
             let drew = if let Some(tile) = tiles(args, &simulation, threads) {
                 let progress =
-                    progress_bar(long_run, scene.height.div_ceil(tile) as usize, &zsim::words!("progress-bands"));
+                    progress_bar(long_run, scene.height.div_ceil(tile) as usize, &zsim::words!(lang, "progress-bands"));
                 let band_done = || progress.inc(1);
                 let drew = simulation.finish_parallel(tile, threads, &band_done);
                 progress.finish_and_clear();
                 drew
             } else {
-                let progress = progress_bar(long_run, scene.polygons.len(), &zsim::words!("progress-polygons"));
+                let progress = progress_bar(long_run, scene.polygons.len(), &zsim::words!(lang, "progress-polygons"));
                 // The bar moves every 1024 polygons, so that it costs nothing per polygon.
                 for first in (0..scene.polygons.len()).step_by(1024) {
                     let last = (first + 1024).min(scene.polygons.len()) - 1;
@@ -244,7 +244,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
                 out,
                 &format!(
                     "{}\n",
-                    summary(
+                    summary(lang,
                         &scene,
                         &path,
                         simulation.stats(),
@@ -299,13 +299,13 @@ fn draw_all_but_the_last(simulation: &mut Simulation<'_>, scene: &Scene, args: &
     }
 }
 
-fn buffers_text(simulation: &Simulation<'_>, index: usize, name: &str, axes: bool) -> String {
+fn buffers_text(lang: zsim::Lang, simulation: &Simulation<'_>, index: usize, name: &str, axes: bool) -> String {
     let style = MatrixStyle { axes, color: super::use_color(), ..MatrixStyle::default() };
     format!(
         "\n{}\n{}\n{}\n{}",
-        zsim::words!("run-frame-after", polygon = zsim::polygon_label("polygon-after", index, name)),
+        zsim::words!(lang, "run-frame-after", polygon = zsim::polygon_label(lang, "polygon-after", index, name)),
         report::matrix_styled(&simulation.buffers().frame_rows(), &style),
-        zsim::words!("run-depth-after", polygon = zsim::polygon_label("polygon-after", index, name)),
+        zsim::words!(lang, "run-depth-after", polygon = zsim::polygon_label(lang, "polygon-after", index, name)),
         report::matrix_styled(&simulation.buffers().depth_rows(), &style),
     )
 }
@@ -326,7 +326,7 @@ fn progress_bar(long: bool, length: usize, unit: &str) -> ProgressBar {
 /// The one-line summary: counts, effects, stages, the time spent reading and
 /// rasterizing (from clearing the buffers to the last polygon), and the memory held: the buffers' cells, the scene, and the
 /// process's peak resident size (where the system tells it).
-fn summary(
+fn summary(lang: zsim::Lang,
     scene: &Scene,
     path: &str,
     stats: Stats,
@@ -340,22 +340,22 @@ fn summary(
     // The ratio means something only where the buffers and the scene dominate the
     // process (from 16 MiB); below, the program itself is most of the peak.
     let peak = match peak_resident_bytes() {
-        Some(peak) if buffers + scene_bytes >= 16 << 20 => zsim::words!(
+        Some(peak) if buffers + scene_bytes >= 16 << 20 => zsim::words!(lang, 
             "run-summary-peak-ratio",
             peak = bytes(peak),
             ratio = format!("{:.2}", peak as f64 / (buffers + scene_bytes) as f64)
         ),
-        Some(peak) => zsim::words!("run-summary-peak", peak = bytes(peak)),
+        Some(peak) => zsim::words!(lang, "run-summary-peak", peak = bytes(peak)),
         None => String::new(),
     };
-    zsim::words!(
+    zsim::words!(lang, 
         "run-summary",
         path = path,
         polygons = stats.polygons.to_string(),
         tested = stats.tested.to_string(),
         written = stats.written.to_string(),
-        effects = if effects.is_empty() { zsim::words!("run-summary-no-effects") } else { effects.join(", ") },
-        stages = zsim::describe(scene).join(" → "),
+        effects = if effects.is_empty() { zsim::words!(lang, "run-summary-no-effects") } else { effects.join(", ") },
+        stages = zsim::describe(lang, scene).join(" → "),
         read = format!("{:.1}", read.as_secs_f64() * 1000.0),
         raster = format!("{:.1}", raster.as_secs_f64() * 1000.0),
         threads = threads,
@@ -386,7 +386,7 @@ fn peak_resident_bytes() -> Option<u64> {
 }
 
 /// `run --arith MODE` for an inexact mode: the final buffers, and how they differ from exact.
-fn run_inexact(
+fn run_inexact(lang: zsim::Lang,
     args: &RunArgs,
     scene: &Scene,
     path: &str,
@@ -413,8 +413,8 @@ fn run_inexact(
             emit(out, &format!("{}\n", serde_json::to_string(&json).expect("serializing plain data cannot fail")))?;
         }
         Format::None => {
-            let text = summary(scene, path, stats, buffers.memory_bytes(), (read_time, raster_time), 1);
-            emit(out, &format!("{text}{}\n", zsim::words!("run-summary-arith", arith = args.arith.to_string())))?;
+            let text = summary(lang, scene, path, stats, buffers.memory_bytes(), (read_time, raster_time), 1);
+            emit(out, &format!("{text}{}\n", zsim::words!(lang, "run-summary-arith", arith = args.arith.to_string())))?;
         }
         Format::Text => {
             // Only the text report compares with exact, so timing a mode runs that mode alone.
@@ -425,16 +425,16 @@ fn run_inexact(
                 out,
                 &format!(
                     "{}{}\n\n{}\n{}\n{}\n{}",
-                    report::scene_header(scene, path),
-                    zsim::words!(
+                    report::scene_header(lang, scene, path),
+                    zsim::words!(lang, 
                         "run-arith-compared",
                         arith = args.arith.to_string(),
                         frame = frame_cells.to_string(),
                         depth = depth_cells.to_string()
                     ),
-                    zsim::words!("run-frame-after-all"),
+                    zsim::words!(lang, "run-frame-after-all"),
                     report::matrix_styled(&buffers.frame_rows(), &style),
-                    zsim::words!("run-depth-after-all"),
+                    zsim::words!(lang, "run-depth-after-all"),
                     report::matrix_styled(&buffers.depth_rows(), &style)
                 ),
             )?;
@@ -461,7 +461,7 @@ fn preset_parser(text: &str) -> Result<zsim::Preset, String> {
 
 /// `--compare-rules`: the cells two rule sets draw differently, each with the
 /// polygons covering it and the edge its centre lies on.
-fn compare_rules(scene: &Scene, path: &str, preset: zsim::Preset) -> String {
+fn compare_rules(lang: zsim::Lang, scene: &Scene, path: &str, preset: zsim::Preset) -> String {
     use std::fmt::Write as _;
     // An exact z-buffer stays exact (BUET's); otherwise the preset's whole rules, depth included.
     let other = match scene.rules.store {
@@ -471,39 +471,39 @@ fn compare_rules(scene: &Scene, path: &str, preset: zsim::Preset) -> String {
     let differences = zsim::tie::compare_rules(scene, other);
     let mut text = format!(
         "{path}\n  {}\n  {}\n",
-        zsim::words!("compare-rules-this", rules = scene.rules.describe()),
-        zsim::words!("compare-rules-other", rules = other.describe())
+        zsim::words!(lang, "compare-rules-this", rules = scene.rules.describe(lang)),
+        zsim::words!(lang, "compare-rules-other", rules = other.describe(lang))
     );
     if differences.is_empty() {
-        text.push_str(&format!("{}\n", zsim::words!("compare-rules-same")));
+        text.push_str(&format!("{}\n", zsim::words!(lang, "compare-rules-same")));
         return text;
     }
-    let _ = writeln!(text, "{}", zsim::words!("compare-rules-differ", count = differences.len()));
+    let _ = writeln!(text, "{}", zsim::words!(lang, "compare-rules-differ", count = differences.len()));
     let names = |list: &[usize]| -> String {
         if list.is_empty() {
-            return zsim::words!("compare-rules-nothing");
+            return zsim::words!(lang, "compare-rules-nothing");
         }
         let names: Vec<String> = list.iter().map(|&i| format!("\"{}\"", scene.polygons[i].name)).collect();
-        names.join(&zsim::words!("list-and"))
+        names.join(&zsim::words!(lang, "list-and"))
     };
     let point = |[x, y]: &[zsim::Exact; 2]| format!("({}, {})", zsim::fraction(x), zsim::fraction(y));
     for d in &differences {
-        let line = zsim::words!(
+        let line = zsim::words!(lang, 
             "compare-rules-cell",
             x = d.x.to_string(),
             y = d.y.to_string(),
             before = d.values.0.to_string(),
             after = d.values.1.to_string(),
             covering = names(&d.covering.0),
-            rules = preset_name(scene.rules.preset),
+            rules = preset_name(lang, scene.rules.preset),
             other_covering = names(&d.covering.1),
-            other_rules = preset_name(preset)
+            other_rules = preset_name(lang, preset)
         );
         let _ = writeln!(text, "  {line}");
         for (polygon, boundary, a, b) in &d.ties {
             let name = &scene.polygons[*polygon].name;
             if *boundary == zsim::tie::Boundary::Vertex {
-                let line = zsim::words!(
+                let line = zsim::words!(lang, 
                     "compare-rules-vertex",
                     x = d.x.to_string(),
                     y = d.y.to_string(),
@@ -514,21 +514,21 @@ fn compare_rules(scene: &Scene, path: &str, preset: zsim::Preset) -> String {
                 continue;
             }
             let verdict = |rules: zsim::Rules| match zsim::tie::rule_covers(rules, *boundary) {
-                Some(true) => zsim::words!("compare-rules-covered"),
-                _ => zsim::words!("compare-rules-left-out"),
+                Some(true) => zsim::words!(lang, "compare-rules-covered"),
+                _ => zsim::words!(lang, "compare-rules-left-out"),
             };
-            let line = zsim::words!(
+            let line = zsim::words!(lang, 
                 "compare-rules-edge",
                 x = d.x.to_string(),
                 y = d.y.to_string(),
-                boundary = boundary.words(),
+                boundary = boundary.words(lang),
                 name = name.as_str(),
                 from = point(a),
                 to = point(b),
                 verdict = verdict(scene.rules),
-                rules = preset_name(scene.rules.preset),
+                rules = preset_name(lang, scene.rules.preset),
                 other_verdict = verdict(other),
-                other_rules = preset_name(preset)
+                other_rules = preset_name(lang, preset)
             );
             let _ = writeln!(text, "      {line}");
         }
@@ -536,12 +536,12 @@ fn compare_rules(scene: &Scene, path: &str, preset: zsim::Preset) -> String {
     text
 }
 
-fn preset_name(preset: zsim::Preset) -> String {
+fn preset_name(lang: zsim::Lang, preset: zsim::Preset) -> String {
     match preset {
-        zsim::Preset::Rogers => zsim::words!("preset-rogers"),
-        zsim::Preset::Buet => zsim::words!("preset-buet"),
-        zsim::Preset::Gl => zsim::words!("preset-gl"),
-        zsim::Preset::Vulkan => zsim::words!("preset-vulkan"),
-        zsim::Preset::Tinyrenderer => zsim::words!("preset-tinyrenderer"),
+        zsim::Preset::Rogers => zsim::words!(lang, "preset-rogers"),
+        zsim::Preset::Buet => zsim::words!(lang, "preset-buet"),
+        zsim::Preset::Gl => zsim::words!(lang, "preset-gl"),
+        zsim::Preset::Vulkan => zsim::words!(lang, "preset-vulkan"),
+        zsim::Preset::Tinyrenderer => zsim::words!(lang, "preset-tinyrenderer"),
     }
 }

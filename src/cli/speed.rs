@@ -23,7 +23,7 @@ pub struct SpeedArgs {
     tile: Option<u32>,
 }
 
-pub fn run(args: &SpeedArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn run(lang: zsim::Lang, args: &SpeedArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let lp_threads = match std::env::var("LP_NUM_THREADS") {
         Ok(set) => set,
         Err(_) => {
@@ -33,15 +33,15 @@ pub fn run(args: &SpeedArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             value
         }
     };
-    let scene = Scene::load(&args.scene)?;
+    let scene = Scene::load(lang, &args.scene)?;
     let threads = args.threads as usize;
-    let race = zsim::race::race(&scene, args.pairs as usize, args.tile, threads)?;
-    let ms = |d: std::time::Duration| zsim::localize_decimal(format!("{:.2}", d.as_secs_f64() * 1e3));
-    let ratio = |r: f64| zsim::localize_decimal(format!("{r:.2}"));
+    let race = zsim::race::race(lang, &scene, args.pairs as usize, args.tile, threads)?;
+    let ms = |d: std::time::Duration| zsim::localize_decimal(lang, format!("{:.2}", d.as_secs_f64() * 1e3));
+    let ratio = |r: f64| zsim::localize_decimal(lang, format!("{r:.2}"));
     let (low, high) = race.pair_ratios();
     let text = format!(
         "{}\n{}\n",
-        zsim::words!(
+        zsim::words!(lang, 
             "speed-header",
             scene = args.scene.display().to_string(),
             triangles = race.triangles,
@@ -52,7 +52,7 @@ pub fn run(args: &SpeedArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
             lp = lp_threads.as_str(),
             pairs = args.pairs
         ),
-        zsim::words!(
+        zsim::words!(lang, 
             "speed-result",
             zsim = ms(race.zsim_median()),
             gpu = ms(race.gpu_median()),

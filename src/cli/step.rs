@@ -36,7 +36,7 @@ pub struct StepArgs {
     #[arg(short, long, value_name = "FILE.html", requires = "html")]
     output: Option<PathBuf>,
     /// Also show what an inexact arithmetic computes on each scanline: f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
-    #[arg(long, default_value = "exact", value_parser = zsim::arith::Arith::parse)]
+    #[arg(long, default_value = "exact", value_parser = |text: &str| zsim::arith::Arith::parse(super::language_of_the_run(), text))]
     arith: zsim::arith::Arith,
 }
 
@@ -51,25 +51,25 @@ enum QuizMode {
     Coverage,
 }
 
-pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let scene = Scene::load(&args.scene)?;
+pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let scene = Scene::load(lang, &args.scene)?;
     zsim::arith::check_supported(&scene, args.arith)?;
     let color = super::use_color();
     let mut stepper = Stepper::new(&scene, args.arith);
     if let (true, Some(output)) = (args.html, &args.output) {
         let name =
             args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
-        let page = zsim::page::page(&mut stepper, &name);
+        let page = zsim::page::page(lang, &mut stepper, &name);
         super::not_an_input(output, &[&args.scene])?;
         std::fs::write(output, page).map_err(|source| Error::Write { path: output.clone(), source })?;
-        emit(out, &format!("{}\n", zsim::words!("file-written-page", path = output.display().to_string())))?;
+        emit(out, &format!("{}\n", zsim::words!(lang, "file-written-page", path = output.display().to_string())))?;
         return Ok(Finish::Ok);
     }
     let mut start = None;
     if let (Some(spec), Some(row)) = (&args.polygon, args.scanline) {
         let polygon = scene.find_polygon(spec)?;
         let trace = stepper.tracer().trace(polygon);
-        if let Some(text) = fate_text(trace.fate) {
+        if let Some(text) = fate_text(lang, trace.fate) {
             let name = scene.polygons[polygon].name.clone();
             return Err(Error::from(zsim::Usage::NoScanlines { index: polygon, name, why: text }).into());
         }
@@ -80,7 +80,7 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
         };
         let stop = Stop { polygon, scanline };
         if args.quiz.is_none() {
-            emit(out, &stop_text(&mut stepper, stop, color))?;
+            emit(out, &stop_text(lang, &mut stepper, stop, color))?;
             return Ok(Finish::Ok);
         }
         start = Some(stop);
@@ -89,14 +89,14 @@ pub fn run(args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     // On a terminal, the full-screen app; piped or redirected, the line mode scripts rely on.
     if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
         stepper.start(start);
-        super::tui::run(&mut super::tui::App::new(&mut stepper, quiz.as_mut()))?;
+        super::tui::run(&mut super::tui::App::new(&mut stepper, quiz.as_mut(), lang))?;
         // The screen is gone: the score and each mistake stay on the terminal, as in the line mode.
         if let Some(quiz) = &quiz {
-            emit(out, &quiz.summary())?;
+            emit(out, &quiz.summary(lang))?;
         }
         return Ok(Finish::Ok);
     }
-    interactive(&args.scene.display().to_string(), &mut stepper, start, quiz.as_mut(), color, out)
+    interactive(lang, &args.scene.display().to_string(), &mut stepper, start, quiz.as_mut(), color, out)
 }
 
 impl From<QuizMode> for zsim::step::QuizMode {
@@ -154,19 +154,19 @@ fn parse_command(line: &str) -> Command {
 }
 
 /// The keys of the line mode, in words.
-fn help() -> String {
-    zsim::words!("step-help")
+fn help(lang: zsim::Lang) -> String {
+    zsim::words!(lang, "step-help")
 }
 
 /// What a move passed over, or why it stayed, as lines of the line mode.
-fn moved_text(scene: &Scene, moved: &Moved) -> String {
+fn moved_text(lang: zsim::Lang, scene: &Scene, moved: &Moved) -> String {
     match moved {
-        Moved::To { skipped, .. } => skipped.iter().map(|skip| format!("  · {}\n", skip_text(scene, skip))).collect(),
-        Moved::Refused(refusal) => format!("{}\n", refusal.text(scene)),
+        Moved::To { skipped, .. } => skipped.iter().map(|skip| format!("  · {}\n", skip_text(lang, scene, skip))).collect(),
+        Moved::Refused(refusal) => format!("{}\n", refusal.text(lang, scene)),
     }
 }
 
-fn interactive(
+fn interactive(lang: zsim::Lang,
     path: &str,
     stepper: &mut Stepper<'_>,
     start: Option<Stop>,
@@ -176,16 +176,16 @@ fn interactive(
 ) -> Result<Finish, Failure> {
     let scene = stepper.scene();
     let mut input = Input::stdin();
-    emit(out, &format!("{}{}{}\n", report::scene_header(scene, path), antialias_note(scene), help()))?;
+    emit(out, &format!("{}{}{}\n", report::scene_header(lang, scene, path), antialias_note(lang, scene), help(lang)))?;
     let moved = stepper.start(start);
-    emit(out, &moved_text(scene, &moved))?;
+    emit(out, &moved_text(lang, scene, &moved))?;
     let mut show = true;
     loop {
         let mut typed = None;
         match stepper.at() {
             Some(stop) if show => {
                 if let Some(quiz) = quiz.as_deref_mut() {
-                    match ask(stepper, quiz, &mut input, out)? {
+                    match ask(lang, stepper, quiz, &mut input, out)? {
                         Asked::Answered => {}
                         Asked::Quit => break,
                         // A navigation key during the questions: leave them and go.
@@ -193,15 +193,15 @@ fn interactive(
                     }
                 }
                 if typed.is_none() {
-                    emit(out, &stop_text(stepper, stop, color))?;
+                    emit(out, &stop_text(lang, stepper, stop, color))?;
                 }
             }
-            None if show => emit(out, &format!("{}\n", zsim::words!("step-end")))?,
+            None if show => emit(out, &format!("{}\n", zsim::words!(lang, "step-end")))?,
             _ => {}
         }
         let line = match typed {
             Some(line) => line,
-            None => match input.read(out, &zsim::words!("step-prompt"))? {
+            None => match input.read(out, &zsim::words!(lang, "step-prompt"))? {
                 Some(line) => line,
                 None => break,
             },
@@ -215,16 +215,16 @@ fn interactive(
             Command::Back => stepper.back(),
             Command::Go(row) => stepper.go(row),
             Command::Unknown(text) => {
-                emit(out, &format!("{}\n", zsim::words!("step-unknown", text = zsim::token(&text), help = help())))?;
+                emit(out, &format!("{}\n", zsim::words!(lang, "step-unknown", text = zsim::token(lang, &text), help = help(lang))))?;
                 show = false;
                 continue;
             }
         };
-        emit(out, &moved_text(scene, &moved))?;
+        emit(out, &moved_text(lang, scene, &moved))?;
         show = !matches!(moved, Moved::Refused(_));
     }
     if let Some(quiz) = quiz {
-        emit(out, &quiz.summary())?;
+        emit(out, &quiz.summary(lang))?;
     }
     Ok(Finish::Ok)
 }
@@ -265,48 +265,48 @@ fn read_answer(
 /// Asks the quiz's questions of the current stop, as the model orders them
 /// (with `coverage`, first which centres the scanline covers; then, for each
 /// covered pixel, what the z-buffer holds after it).
-fn ask(stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut Input, out: &mut dyn Write) -> Result<Asked, Failure> {
+fn ask(lang: zsim::Lang, stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut Input, out: &mut dyn Write) -> Result<Asked, Failure> {
     let scene = stepper.scene();
     while let Some(question) = quiz.question(stepper) {
         let (prompt, hint) = match &question {
             Question::Coverage { stop, row } => {
-                let ask = zsim::words!(
+                let ask = zsim::words!(lang, 
                     "quiz-coverage-ask",
-                    polygon = polygon_name(scene, stop.polygon),
-                    scanline = scanline_text(*row)
+                    polygon = polygon_name(lang, scene, stop.polygon),
+                    scanline = scanline_text(lang, *row)
                 );
                 emit(out, &format!("{ask}\n"))?;
-                (zsim::words!("quiz-coverage-prompt"), zsim::words!("quiz-coverage-hint"))
+                (zsim::words!(lang, "quiz-coverage-prompt"), zsim::words!(lang, "quiz-coverage-hint"))
             }
             Question::Depth { stop, index, pixel } => {
                 if *index == 0 {
                     let row = pixel.y;
-                    let ask = zsim::words!(
+                    let ask = zsim::words!(lang, 
                         "quiz-depth-ask",
-                        polygon = polygon_name(scene, stop.polygon),
-                        scanline = scanline_text(row)
+                        polygon = polygon_name(lang, scene, stop.polygon),
+                        scanline = scanline_text(lang, row)
                     );
                     emit(out, &format!("{ask}\n"))?;
                 }
-                let prompt = zsim::words!(
+                let prompt = zsim::words!(lang, 
                     "quiz-depth-prompt",
                     x = pixel.x,
                     y = pixel.y,
-                    stored = pixel.stored_before.to_string()
+                    stored = pixel.stored_before.text(lang)
                 );
-                (prompt, zsim::words!("quiz-depth-hint"))
+                (prompt, zsim::words!(lang, "quiz-depth-hint"))
             }
             Question::Frame { stop, index, pixel } => {
                 if *index == 0 {
-                    let ask = zsim::words!(
+                    let ask = zsim::words!(lang, 
                         "quiz-frame-ask",
-                        polygon = polygon_name(scene, stop.polygon),
-                        scanline = scanline_text(pixel.y)
+                        polygon = polygon_name(lang, scene, stop.polygon),
+                        scanline = scanline_text(lang, pixel.y)
                     );
                     emit(out, &format!("{ask}\n"))?;
                 }
-                let prompt = zsim::words!("quiz-frame-prompt", x = pixel.x, y = pixel.y, before = pixel.frame_before);
-                (prompt, zsim::words!("quiz-frame-hint"))
+                let prompt = zsim::words!(lang, "quiz-frame-prompt", x = pixel.x, y = pixel.y, before = pixel.frame_before);
+                (prompt, zsim::words!(lang, "quiz-frame-hint"))
             }
         };
         let verdict = loop {
@@ -314,15 +314,15 @@ fn ask(stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut Input, out: &mut 
                 Ok(typed) => typed,
                 Err(asked) => return Ok(asked),
             };
-            match quiz.answer(stepper, &typed).expect("a question is asked") {
+            match quiz.answer(lang, stepper, &typed).expect("a question is asked") {
                 Reply::Judged(verdict) => break verdict,
                 Reply::AskAgain(why) => emit(out, &format!("{why}\n"))?,
             }
         };
-        let right_or_wrong = if verdict.right { zsim::words!("tui-right") } else { zsim::words!("tui-wrong") };
+        let right_or_wrong = if verdict.right { zsim::words!(lang, "tui-right") } else { zsim::words!(lang, "tui-wrong") };
         let (score, asked) = (quiz.right.to_string(), quiz.asked.to_string());
         let line = match &verdict.question {
-            Question::Coverage { .. } => zsim::words!(
+            Question::Coverage { .. } => zsim::words!(lang, 
                 "quiz-coverage-verdict",
                 right = &verdict.expected,
                 said = &verdict.said,
@@ -333,10 +333,10 @@ fn ask(stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut Input, out: &mut 
             ),
             Question::Depth { pixel, .. } | Question::Frame { pixel, .. } => {
                 let said = match (verdict.right, verdict.meant) {
-                    (true, Some(meant)) => zsim::words!("quiz-said-meant", said = &verdict.said, meant = meant.text()),
-                    _ => zsim::words!("quiz-said", said = &verdict.said),
+                    (true, Some(meant)) => zsim::words!(lang, "quiz-said-meant", said = &verdict.said, meant = meant.text(lang)),
+                    _ => zsim::words!(lang, "quiz-said", said = &verdict.said),
                 };
-                zsim::words!(
+                zsim::words!(lang, 
                     "quiz-depth-verdict",
                     x = pixel.x,
                     y = pixel.y,
@@ -354,62 +354,62 @@ fn ask(stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut Input, out: &mut 
 }
 
 /// For an antialiased scene, what `step` shows and what it does not.
-fn antialias_note(scene: &Scene) -> String {
+fn antialias_note(lang: zsim::Lang, scene: &Scene) -> String {
     match scene.effects.antialias {
-        Some(settings) => format!("   {}\n", zsim::words!("step-antialias-note", k = settings.samples.to_string())),
+        Some(settings) => format!("   {}\n", zsim::words!(lang, "step-antialias-note", k = settings.samples.to_string())),
         None => String::new(),
     }
 }
 
 /// Everything shown for one scanline of one polygon.
-fn stop_text(stepper: &mut Stepper<'_>, stop: Stop, color: bool) -> String {
+fn stop_text(lang: zsim::Lang, stepper: &mut Stepper<'_>, stop: Stop, color: bool) -> String {
     let scene = stepper.scene();
     let p = stop.polygon;
     let record = stepper.tracer().record(stop).clone();
     let geometry = scene.polygons[p].geometry();
     let slope = geometry.slope().map_or_else(String::new, fraction);
-    let mut text = format!("\n── {}\n", report::polygon_heading(scene, p));
-    text.push_str(&antialias_note(scene));
-    text.push_str(&format!("   {}\n", zsim::words!("step-slope", slope = slope)));
-    let heading = zsim::words!("step-scanline", scanline = scanline_text(record.row), row = record.row.to_string());
+    let mut text = format!("\n── {}\n", report::polygon_heading(lang, scene, p));
+    text.push_str(&antialias_note(lang, scene));
+    text.push_str(&format!("   {}\n", zsim::words!(lang, "step-slope", slope = slope)));
+    let heading = zsim::words!(lang, "step-scanline", scanline = scanline_text(lang, record.row), row = record.row.to_string());
     text.push_str(&format!("{heading}\n"));
-    let crossings: Vec<String> = record.crossings.iter().map(exact_and_decimal).collect();
+    let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(lang, x)).collect();
     let list = if crossings.is_empty() {
-        zsim::words!("step-crossings-none")
+        zsim::words!(lang, "step-crossings-none")
     } else {
-        crossings.join(&zsim::words!("list-comma"))
+        crossings.join(&zsim::words!(lang, "list-comma"))
     };
-    text.push_str(&format!("{}\n", zsim::words!("step-crossings", list = list)));
+    text.push_str(&format!("{}\n", zsim::words!(lang, "step-crossings", list = list)));
     for (n, span) in record.spans.iter().enumerate() {
         let columns = match span.columns {
             Some((first, last)) => {
-                zsim::words!("step-columns", first = first.to_string(), last = last.to_string())
+                zsim::words!(lang, "step-columns", first = first.to_string(), last = last.to_string())
             }
-            None => zsim::words!("step-no-column"),
+            None => zsim::words!(lang, "step-no-column"),
         };
-        let depth = |z: &Option<Exact>| z.as_ref().map_or_else(|| zsim::words!("z-beyond"), |z| depth_text(scene, z));
-        let line = zsim::words!(
+        let depth = |z: &Option<Exact>| z.as_ref().map_or_else(|| zsim::words!(lang, "z-beyond"), |z| depth_text(lang, scene, z));
+        let line = zsim::words!(lang, 
             "step-span",
             n = (n + 1).to_string(),
-            xa = exact_and_decimal(&span.left),
+            xa = exact_and_decimal(lang, &span.left),
             za = depth(&span.left_depth),
-            xb = exact_and_decimal(&span.right),
+            xb = exact_and_decimal(lang, &span.right),
             zb = depth(&span.right_depth),
             columns = columns
         );
         text.push_str(&format!("{line}\n"));
     }
     if !record.pixels.is_empty() {
-        text.push_str(&format!("{}\n", pixel_table(scene, &record.pixels, color)));
+        text.push_str(&format!("{}\n", pixel_table(lang, scene, &record.pixels, color)));
     }
     // Centres exactly on the polygon's boundary along this scanline, and the rule deciding each.
     for x in 0..scene.width {
-        if let Some(tie) = zsim::tie::tie_text(scene.rules, &scene.polygons[p].vertices(), x, record.row) {
-            text.push_str(&format!("{}\n", zsim::words!("step-tie", x = x.to_string(), text = tie)));
+        if let Some(tie) = zsim::tie::tie_text(lang, scene.rules, &scene.polygons[p].vertices(), x, record.row) {
+            text.push_str(&format!("{}\n", zsim::words!(lang, "step-tie", x = x.to_string(), text = tie)));
         }
     }
     if let zsim::arith::Arith::Fixed(bits) = stepper.arith() {
-        let line = zsim::words!("step-fixed", bits = bits.to_string(), unit = (1u64 << bits).to_string());
+        let line = zsim::words!(lang, "step-fixed", bits = bits.to_string(), unit = (1u64 << bits).to_string());
         text.push_str(&format!("{line}\n"));
     }
     if let Some(float) = zsim::arith::float_scanline(scene, p, record.row, stepper.arith()) {
@@ -420,8 +420,8 @@ fn stop_text(stepper: &mut Stepper<'_>, stop: Stop, color: bool) -> String {
             .map(|(x, z)| {
                 let exact = record.pixels.iter().find(|e| e.x == *x).map(|e| e.depth.value());
                 let note = match exact {
-                    Some(e) => zsim::words!("step-float-exact", z = zsim::decimal(e, 9)),
-                    None => zsim::words!("step-float-not-exact"),
+                    Some(e) => zsim::words!(lang, "step-float-exact", z = zsim::decimal(e, 9)),
+                    None => zsim::words!(lang, "step-float-not-exact"),
                 };
                 format!("x = {x}: z = {z:.9} ({note})")
             })
@@ -434,16 +434,16 @@ fn stop_text(stepper: &mut Stepper<'_>, stop: Stop, color: bool) -> String {
             .collect();
         let found = match float.bounding_columns {
             Some((first, last)) => {
-                zsim::words!("step-float-edges", first = first.to_string(), last = last.to_string())
+                zsim::words!(lang, "step-float-edges", first = first.to_string(), last = last.to_string())
             }
-            None if crossings.is_empty() => zsim::words!("step-float-no-crossings"),
-            None => zsim::words!("step-float-crossings", crossings = crossings.join(", ")),
+            None if crossings.is_empty() => zsim::words!(lang, "step-float-no-crossings"),
+            None => zsim::words!(lang, "step-float-crossings", crossings = crossings.join(", ")),
         };
-        let heading = zsim::words!("step-float-heading", arith = stepper.arith().to_string(), found = found);
-        let pixels = if pixels.is_empty() { zsim::words!("step-float-no-pixel") } else { pixels.join("\n  ") };
+        let heading = zsim::words!(lang, "step-float-heading", arith = stepper.arith().to_string(), found = found);
+        let pixels = if pixels.is_empty() { zsim::words!(lang, "step-float-no-pixel") } else { pixels.join("\n  ") };
         text.push_str(&format!("{heading}\n  {pixels}\n"));
         if !missed.is_empty() {
-            let line = zsim::words!("step-float-missed", columns = missed.join(", "));
+            let line = zsim::words!(lang, "step-float-missed", columns = missed.join(", "));
             text.push_str(&format!("  {line}\n"));
         }
     }
@@ -454,29 +454,29 @@ fn stop_text(stepper: &mut Stepper<'_>, stop: Stop, color: bool) -> String {
     let (low, high) = (low.to_string(), high.to_string());
     text.push_str(&format!(
         "{}\n{}",
-        zsim::words!("step-frame-after", low = &low, high = &high),
+        zsim::words!(lang, "step-frame-after", low = &low, high = &high),
         report::matrix_styled(&buffers.frame_rows(), &style)
     ));
     text.push_str(&format!(
         "{}\n{}",
-        zsim::words!("step-depth-after", low = &low, high = &high),
+        zsim::words!(lang, "step-depth-after", low = &low, high = &high),
         report::matrix_styled(&buffers.depth_rows(), &style)
     ));
     text
 }
 
-fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
+fn pixel_table(lang: zsim::Lang, scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
     let mut table = Table::new();
     table.load_style(presets::ASCII_MARKDOWN).set_header([
         "x".to_string(),
-        zsim::words!("step-col-centre"),
+        zsim::words!(lang, "step-col-centre"),
         "z".to_string(),
         "≈ z".to_string(),
-        zsim::words!("step-col-step"),
-        zsim::words!("step-col-stored"),
-        zsim::words!("step-col-test"),
-        zsim::words!("step-col-after"),
-        zsim::words!("step-col-frame"),
+        zsim::words!(lang, "step-col-step"),
+        zsim::words!(lang, "step-col-stored"),
+        zsim::words!(lang, "step-col-test"),
+        zsim::words!(lang, "step-col-after"),
+        zsim::words!(lang, "step-col-frame"),
     ]);
     let depth_test = scene.depth_test;
     let op = depth_test.symbol();
@@ -484,23 +484,23 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
         let z = pixel.depth.value();
         let step = match i.checked_sub(1).map(|j| &pixels[j]) {
             Some(previous) if previous.x + 1 == pixel.x => fraction(z.minus(&previous.depth.value())),
-            _ => zsim::words!("step-start"),
+            _ => zsim::words!(lang, "step-start"),
         };
         // `always` and `never` compare nothing: they say so instead of a symbol.
-        let uncompared = |passed| depth_test.outcome_text(&fraction(&z), &pixel.stored_before.to_string(), passed);
+        let uncompared = |passed| depth_test.outcome_text(lang, &fraction(&z), &pixel.stored_before.text(lang), passed);
         let test = match pixel.outcome {
-            Outcome::Written if !depth_test.compares() => zsim::words!("step-written", test = uncompared(true)),
-            Outcome::Hidden if !depth_test.compares() => zsim::words!("step-hidden", test = uncompared(false)),
+            Outcome::Written if !depth_test.compares() => zsim::words!(lang, "step-written", test = uncompared(true)),
+            Outcome::Hidden if !depth_test.compares() => zsim::words!(lang, "step-hidden", test = uncompared(false)),
             Outcome::Written => {
-                zsim::words!("step-test-written", z = fraction(&z), op = op, stored = pixel.stored_before.to_string())
+                zsim::words!(lang, "step-test-written", z = fraction(&z), op = op, stored = pixel.stored_before.text(lang))
             }
             Outcome::Hidden => {
-                zsim::words!("step-test-hidden", z = fraction(&z), op = op, stored = pixel.stored_before.to_string())
+                zsim::words!(lang, "step-test-hidden", z = fraction(&z), op = op, stored = pixel.stored_before.text(lang))
             }
             Outcome::BeyondSection => {
-                zsim::words!("step-beyond-section", op = op, stored = pixel.stored_before.to_string())
+                zsim::words!(lang, "step-beyond-section", op = op, stored = pixel.stored_before.text(lang))
             }
-            Outcome::OutsideDepthRange => zsim::words!("step-outside-range", z = fraction(&z)),
+            Outcome::OutsideDepthRange => zsim::words!(lang, "step-outside-range", z = fraction(&z)),
         };
         let mut test = Cell::new(test);
         if color {
@@ -508,13 +508,13 @@ fn pixel_table(scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
         }
         table.add_row(vec![
             Cell::new(pixel.x),
-            Cell::new(exact_and_decimal(Q::new(2 * i128::from(pixel.x) + 1, 2))),
+            Cell::new(exact_and_decimal(lang, Q::new(2 * i128::from(pixel.x) + 1, 2))),
             Cell::new(fraction(&z)),
-            Cell::new(zsim::localize_decimal(zsim::decimal(z, 2))),
+            Cell::new(zsim::localize_decimal(lang, zsim::decimal(z, 2))),
             Cell::new(step),
-            Cell::new(&pixel.stored_before),
+            Cell::new(pixel.stored_before.text(lang)),
             test,
-            Cell::new(&pixel.stored_after),
+            Cell::new(pixel.stored_after.text(lang)),
             Cell::new(pixel.frame_after),
         ]);
     }

@@ -33,7 +33,7 @@ enum Command {
         #[arg(long)]
         uncompressed: bool,
         /// The image's side in pixels (the lesson's is 800).
-        #[arg(long, default_value_t = SIZE, value_parser = side)]
+        #[arg(long, default_value_t = SIZE, value_parser = |text: &str| side(super::language_of_the_run(), text))]
         size: i64,
     },
     /// Print the model as a zsim scene under the lesson's rules, for run, explain, step, check and figure.
@@ -47,17 +47,17 @@ enum Command {
         #[arg(short, long, value_name = "FILE")]
         output: Option<PathBuf>,
         /// The raster's side in pixels: the lesson's 800, or a small one (32, 48) to step through by hand.
-        #[arg(long, default_value_t = SIZE, value_parser = side)]
+        #[arg(long, default_value_t = SIZE, value_parser = |text: &str| side(super::language_of_the_run(), text))]
         size: i64,
     },
 }
 
-fn side(text: &str) -> Result<i64, String> {
+fn side(lang: zsim::Lang, text: &str) -> Result<i64, String> {
     match text.parse::<i64>() {
         Ok(n) if tinyrenderer::SIDES.contains(&n) => Ok(n),
-        _ => Err(zsim::words!(
+        _ => Err(zsim::words!(lang, 
             "usage-tinyrenderer-size",
-            text = zsim::printable(&zsim::token(text)).into_owned(),
+            text = zsim::printable(&zsim::token(lang, text)).into_owned(),
             min = *tinyrenderer::SIDES.start(),
             max = *tinyrenderer::SIDES.end()
         )),
@@ -84,10 +84,10 @@ impl Arith {
 /// How many pixels `run --arith exact` lists where exact and f64 differ.
 const LISTED: usize = 10;
 
-pub fn run(args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn run(lang: zsim::Lang, args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     match &args.command {
         Command::Run { model, output, arith, uncompressed, size } => {
-            let loaded = load(model)?;
+            let loaded = load(lang, model)?;
             let drawn = tinyrenderer::render(&loaded, arith.lesson(), *size);
             let side = *size as u16;
             let frame: Vec<u8> = drawn.framebuffer.iter().flatten().copied().collect();
@@ -99,7 +99,7 @@ pub fn run(args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failu
             let drawn_faces = loaded.faces.len() - drawn.skipped;
             let mut text = format!(
                 "{}\n",
-                zsim::words!(
+                zsim::words!(lang, 
                     "tinyrenderer-run",
                     model = model.display().to_string(),
                     faces = loaded.faces.len(),
@@ -109,14 +109,14 @@ pub fn run(args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failu
                 )
             );
             if *arith == Arith::Exact {
-                text.push_str(&differences(&loaded, &drawn, *size));
+                text.push_str(&differences(lang, &loaded, &drawn, *size));
             }
             emit(out, &text)?;
             Ok(Finish::Ok)
         }
         Command::Import { model, arith, output, size } => {
-            let scene = tinyrenderer::scene_json(&load(model)?, arith.lesson(), *size);
-            super::emit_or_write(out, output.as_deref(), &scene, &[model])?;
+            let scene = tinyrenderer::scene_json(&load(lang, model)?, arith.lesson(), *size);
+            super::emit_or_write(lang, out, output.as_deref(), &scene, &[model])?;
             Ok(Finish::Ok)
         }
     }
@@ -124,14 +124,14 @@ pub fn run(args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failu
 
 /// The pixels where the lesson's f64 gives another z-buffer level than
 /// exact arithmetic, counted, the first few listed.
-fn differences(model: &Model, exact: &tinyrenderer::Render, size: i64) -> String {
+fn differences(lang: zsim::Lang, model: &Model, exact: &tinyrenderer::Render, size: i64) -> String {
     let float = tinyrenderer::render(model, tinyrenderer::Arith::F64, size);
     let differing: Vec<usize> = (0..exact.zbuffer.len()).filter(|&i| exact.zbuffer[i] != float.zbuffer[i]).collect();
-    let mut text = format!("{}\n", zsim::words!("tinyrenderer-differ", count = differing.len()));
+    let mut text = format!("{}\n", zsim::words!(lang, "tinyrenderer-differ", count = differing.len()));
     for &cell in differing.iter().take(LISTED) {
         let (x, y) = (cell % size as usize, cell / size as usize);
         let face = exact.face[cell].map_or(0, |f| f + 1);
-        let line = zsim::words!(
+        let line = zsim::words!(lang, 
             "tinyrenderer-differ-pixel",
             x = x,
             y = y,
@@ -144,11 +144,11 @@ fn differences(model: &Model, exact: &tinyrenderer::Render, size: i64) -> String
     text
 }
 
-fn load(path: &Path) -> Result<Model, Error> {
-    let text = zsim::read_text(path)?;
-    Model::parse(&text).map_err(|e| Error::SceneFormat {
+fn load(lang: zsim::Lang, path: &Path) -> Result<Model, Error> {
+    let text = zsim::read_text(lang, path)?;
+    Model::parse(lang, &text).map_err(|e| Error::SceneFormat {
         path: path.to_owned(),
-        location: zsim::words!("tinyrenderer-line", line = e.line),
+        location: zsim::words!(lang, "tinyrenderer-line", line = e.line),
         message: e.message,
     })
 }

@@ -51,11 +51,13 @@ pub struct App<'t, 's, 'q> {
     verdict: Option<String>,
     /// Set by `q`, Esc or Ctrl-C.
     pub quit: bool,
+    /// The language the screen speaks.
+    lang: zsim::Lang,
 }
 
 impl<'t, 's, 'q> App<'t, 's, 'q> {
     /// The app at the stepper's stop, with `quiz` asking.
-    pub fn new(stepper: &'t mut Stepper<'s>, quiz: Option<&'q mut Quiz>) -> App<'t, 's, 'q> {
+    pub fn new(stepper: &'t mut Stepper<'s>, quiz: Option<&'q mut Quiz>, lang: zsim::Lang) -> App<'t, 's, 'q> {
         App {
             stepper,
             pixel: None,
@@ -69,6 +71,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             typed: String::new(),
             verdict: None,
             quit: false,
+            lang,
         }
     }
 
@@ -94,6 +97,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
 
     /// Handles one key press.
     pub fn key(&mut self, key: KeyEvent) {
+        let lang = self.lang;
         self.message.clear();
         if key.modifiers.contains(KeyModifiers::CONTROL) && key.code == KeyCode::Char('c') {
             self.quit = true;
@@ -139,7 +143,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
                     None => return,
                 };
                 match moved {
-                    Moved::To { at: None, .. } => self.message = zsim::words!("tui-no-later"),
+                    Moved::To { at: None, .. } => self.message = zsim::words!(lang, "tui-no-later"),
                     moved => self.moved(moved),
                 }
             }
@@ -160,7 +164,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             KeyCode::Char('>') => self.scroll.1 += 4,
             KeyCode::Char('[') => self.table_scroll = self.table_scroll.saturating_sub(4),
             KeyCode::Char(']') => self.table_scroll += 4,
-            _ => self.message = zsim::words!("tui-key-nothing"),
+            _ => self.message = zsim::words!(lang, "tui-key-nothing"),
         }
     }
 
@@ -170,6 +174,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
     /// Enter answers: the library judges it, or says why it is no answer and
     /// asks again. Returns `false` for a key that acts as usual.
     fn quiz_key(&mut self, key: KeyEvent) -> bool {
+        let lang = self.lang;
         match key.code {
             KeyCode::Char('q' | '?') => return false,
             KeyCode::Char('n' | 'b' | 'p' | 'P' | 'g' | 'f' | 'z' | ' ') if self.typed.is_empty() => return false,
@@ -180,8 +185,8 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             KeyCode::Enter if !self.typed.is_empty() => {
                 let typed = std::mem::take(&mut self.typed);
                 let Some(quiz) = self.quiz.as_deref_mut() else { return false };
-                match quiz.answer(self.stepper, &typed) {
-                    Some(Reply::Judged(verdict)) => self.verdict = Some(verdict_text(&verdict)),
+                match quiz.answer(lang, self.stepper, &typed) {
+                    Some(Reply::Judged(verdict)) => self.verdict = Some(verdict_text(lang, &verdict)),
                     Some(Reply::AskAgain(why)) => self.message = why,
                     None => return false,
                 }
@@ -193,16 +198,17 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
 
     /// What a move passed over, or why it stayed, on the status line.
     fn moved(&mut self, moved: Moved) {
+        let lang = self.lang;
         let scene = self.stepper.scene();
         match moved {
             Moved::To { at, skipped } => {
                 if !skipped.is_empty() {
-                    let skipped: Vec<String> = skipped.iter().map(|skip| skip_text(scene, skip)).collect();
+                    let skipped: Vec<String> = skipped.iter().map(|skip| skip_text(lang, scene, skip)).collect();
                     self.message =
-                        zsim::words!("tui-passed-over", list = skipped.join(&zsim::words!("list-semicolon")));
+                        zsim::words!(lang, "tui-passed-over", list = skipped.join(&zsim::words!(lang, "list-semicolon")));
                 }
                 if at.is_none() {
-                    self.message = zsim::words!("step-end");
+                    self.message = zsim::words!(lang, "step-end");
                 }
                 self.scroll = (0, 0);
                 self.table_scroll = 0;
@@ -211,7 +217,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
                     self.pixel = Some(1);
                 }
             }
-            Moved::Refused(refusal) => self.message = refusal.text(scene),
+            Moved::Refused(refusal) => self.message = refusal.text(lang, scene),
         }
     }
 
@@ -249,6 +255,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
 
     /// Draws the whole screen.
     pub fn draw(&mut self, frame: &mut Frame<'_>) {
+        let lang = self.lang;
         let area = frame.area();
         // A quiz's reason to ask again gets lines of its own above the question.
         let status_lines = if self.quiz.is_some() && !self.message.is_empty() { 4 } else { 2 };
@@ -257,22 +264,22 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
         let scene = self.stepper.scene();
         let record = self.record();
         let heading = match (self.stepper.at(), &record) {
-            (Some(stop), Some(r)) => zsim::words!(
+            (Some(stop), Some(r)) => zsim::words!(lang, 
                 "tui-heading",
-                polygon = polygon_name(scene, stop.polygon),
-                scanline = scanline_text(r.row)
+                polygon = polygon_name(lang, scene, stop.polygon),
+                scanline = scanline_text(lang, r.row)
             ),
-            _ => zsim::words!("tui-heading-end"),
+            _ => zsim::words!(lang, "tui-heading-end"),
         };
         let view = match self.view {
-            View::Frame => zsim::words!("buffer-frame"),
-            View::Depth => zsim::words!("buffer-depth"),
+            View::Frame => zsim::words!(lang, "buffer-frame"),
+            View::Depth => zsim::words!(lang, "buffer-depth"),
         };
         let score = self.quiz.as_ref().map_or(String::new(), |q| {
-            zsim::words!("tui-score", right = q.right.to_string(), asked = q.asked.to_string())
+            zsim::words!(lang, "tui-score", right = q.right.to_string(), asked = q.asked.to_string())
         });
         frame.render_widget(
-            Paragraph::new(zsim::words!("tui-title", heading = heading, view = view, score = score))
+            Paragraph::new(zsim::words!(lang, "tui-title", heading = heading, view = view, score = score))
                 .style(Style::new().add_modifier(Modifier::REVERSED)),
             title,
         );
@@ -282,13 +289,13 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
         if self.help {
             // Over the raster too, as wide as its longest line allows, so that a key and what it
             // does stay on one line (in the right pane alone they wrapped apart on 80×24).
-            let text = ratatui::text::Text::from(zsim::words!("tui-help"));
+            let text = ratatui::text::Text::from(zsim::words!(lang, "tui-help"));
             let width = (text.width() as u16 + 2).min(body.width);
             let height = (text.height() as u16 + 2).min(body.height);
             let area = Rect { x: body.x + (body.width - width) / 2, y: body.y, width, height };
             let help = Paragraph::new(text)
                 .wrap(Wrap { trim: false })
-                .block(Block::bordered().title(zsim::words!("tui-keys")));
+                .block(Block::bordered().title(zsim::words!(lang, "tui-keys")));
             frame.render_widget(Clear, area);
             frame.render_widget(help, area);
         } else {
@@ -302,27 +309,27 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             );
         }
         let status_text = if let Some(text) = &self.go {
-            zsim::words!("tui-go", text = text)
+            zsim::words!(lang, "tui-go", text = text)
         } else if let Some(verdict) = &self.verdict {
-            zsim::words!("tui-verdict-next", verdict = verdict)
+            zsim::words!(lang, "tui-verdict-next", verdict = verdict)
         } else if let Some(question) = self.question() {
             let typed = zsim::printable(&self.typed).into_owned();
             let ask = match question {
                 Question::Coverage { row, .. } => {
-                    zsim::words!("tui-quiz-coverage-ask", scanline = scanline_text(row), typed = typed)
+                    zsim::words!(lang, "tui-quiz-coverage-ask", scanline = scanline_text(lang, row), typed = typed)
                 }
-                Question::Frame { pixel, .. } => zsim::words!(
+                Question::Frame { pixel, .. } => zsim::words!(lang, 
                     "tui-quiz-frame-ask",
                     x = pixel.x,
                     y = pixel.y,
                     before = pixel.frame_before,
                     typed = typed
                 ),
-                Question::Depth { pixel, .. } => zsim::words!(
+                Question::Depth { pixel, .. } => zsim::words!(lang, 
                     "tui-quiz-ask",
                     x = pixel.x,
                     y = pixel.y,
-                    stored = pixel.stored_before.to_string(),
+                    stored = pixel.stored_before.text(lang),
                     typed = typed
                 ),
             };
@@ -331,16 +338,17 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
         } else if !self.message.is_empty() {
             self.message.clone()
         } else {
-            zsim::words!("tui-status")
+            zsim::words!(lang, "tui-status")
         };
         frame.render_widget(Paragraph::new(status_text).wrap(Wrap { trim: true }), status);
     }
 
     /// The raster's rows that fit, top row first, centred on the scanline.
     fn draw_raster(&mut self, frame: &mut Frame<'_>, area: Rect, record: Option<&ScanlineRecord>) {
+        let lang = self.lang;
         let scene = self.stepper.scene();
         let Some(stop) = self.stepper.at() else {
-            frame.render_widget(Paragraph::new(zsim::words!("tui-no-scanline")), area);
+            frame.render_widget(Paragraph::new(zsim::words!(lang, "tui-no-scanline")), area);
             return;
         };
         let done = self.shown_pixels();
@@ -399,7 +407,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
         }
         let last_shown = (first + columns_shown).min(width) - 1;
         lines.push(Line::from(format!("     {}", column_numbers(first..=last_shown, cell))));
-        let shown = zsim::words!(
+        let shown = zsim::words!(lang, 
             "tui-columns-shown",
             first = first.to_string(),
             last = last_shown.to_string(),
@@ -411,16 +419,17 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
 
     /// The right panel: the polygon, the scanline, crossings, spans, and the pixel's row.
     fn details(&mut self, record: Option<&ScanlineRecord>) -> Vec<Line<'static>> {
+        let lang = self.lang;
         let scene = self.stepper.scene();
         let (Some(stop), Some(record)) = (self.stepper.at(), record) else {
-            return vec![Line::from(zsim::words!("tui-end"))];
+            return vec![Line::from(zsim::words!(lang, "tui-end"))];
         };
         let geometry = scene.polygons[stop.polygon].geometry();
         let slope = geometry.slope().map_or_else(String::new, fraction);
-        let stop_words = self.stepper.stop_words(stop);
+        let stop_words = self.stepper.stop_words(lang, stop);
         let mut lines = vec![
             Line::styled(stop_words.heading, Style::new().add_modifier(Modifier::BOLD)),
-            Line::from(zsim::words!("tui-slope", slope = slope)),
+            Line::from(zsim::words!(lang, "tui-slope", slope = slope)),
             Line::from(stop_words.scanline),
         ];
         // The crossings and spans would answer the coverage question: shown once it is answered.
@@ -435,29 +444,29 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             // `always` and `never` compare nothing: say so instead of a symbol.
             let (op, compares) = match scene.depth_test.compares() {
                 true => (scene.depth_test.symbol().to_string(), true),
-                false => (zsim::words!("tui-uncompared", test = scene.depth_test.symbol()), false),
+                false => (zsim::words!(lang, "tui-uncompared", test = scene.depth_test.symbol()), false),
             };
-            let zs: Vec<String> = record.pixels.iter().map(|e| exact_and_decimal(e.depth.value())).collect();
+            let zs: Vec<String> = record.pixels.iter().map(|e| exact_and_decimal(lang, e.depth.value())).collect();
             let width = zs.iter().map(|z| z.chars().count()).max().unwrap_or(1);
             lines.push(Line::styled(
-                format!("  {}", zsim::words!("tui-table-heading", z = format!("{:<width$}", "z"))),
+                format!("  {}", zsim::words!(lang, "tui-table-heading", z = format!("{:<width$}", "z"))),
                 Style::new().add_modifier(Modifier::BOLD),
             ));
             for (pixel, z) in record.pixels.iter().zip(&zs) {
                 let (test, verdict, style) = match pixel.outcome {
                     Outcome::Written => {
-                        (String::new(), format!("{} ({})", pixel.stored_after, pixel.frame_after), Color::Green)
+                        (String::new(), format!("{} ({})", pixel.stored_after.text(lang), pixel.frame_after), Color::Green)
                     }
                     _ => (
-                        if compares { zsim::words!("tui-not") } else { String::new() },
-                        zsim::words!("tui-hidden"),
+                        if compares { zsim::words!(lang, "tui-not") } else { String::new() },
+                        zsim::words!(lang, "tui-hidden"),
                         Color::Red,
                     ),
                 };
-                let line = format!("{:>3} {z:<width$} {test}{op}{} → {verdict}", pixel.x, pixel.stored_before);
+                let line = format!("{:>3} {z:<width$} {test}{op}{} → {verdict}", pixel.x, pixel.stored_before.text(lang));
                 lines.push(Line::styled(line, Style::new().fg(style)));
             }
-            lines.push(Line::from(zsim::words!("tui-pixel-by-pixel")));
+            lines.push(Line::from(zsim::words!(lang, "tui-pixel-by-pixel")));
             return lines;
         };
         // Pixel steps: the pixel just done (none yet at the start).
@@ -468,16 +477,16 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             let step = match &first_z {
                 Some(start) if pixel.x > record.pixels[0].x => {
                     let count = (pixel.x - record.pixels[0].x).to_string();
-                    zsim::words!("tui-steps-from", count = count, start = fraction(start))
+                    zsim::words!(lang, "tui-steps-from", count = count, start = fraction(start))
                 }
                 _ => String::new(),
             };
-            lines.push(Line::from(zsim::words!(
+            lines.push(Line::from(zsim::words!(lang, 
                 "tui-pixel",
                 x = pixel.x,
                 y = pixel.y,
-                centre = exact_and_decimal(Q::new(2 * i128::from(pixel.x) + 1, 2)),
-                z = exact_and_decimal(z),
+                centre = exact_and_decimal(lang, Q::new(2 * i128::from(pixel.x) + 1, 2)),
+                z = exact_and_decimal(lang, z),
                 steps = step
             )));
             let style = if pixel.outcome == Outcome::Written {
@@ -485,24 +494,24 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             } else {
                 Style::new().fg(Color::Red)
             };
-            lines.push(Line::styled(format!("  {}", pixel_reason(scene, pixel)), style));
+            lines.push(Line::styled(format!("  {}", pixel_reason(lang, scene, pixel)), style));
         }
         lines
     }
 }
 
 /// A verdict as the status line shows it.
-fn verdict_text(verdict: &Verdict) -> String {
-    let right_or_wrong = if verdict.right { zsim::words!("tui-right") } else { zsim::words!("tui-wrong") };
+fn verdict_text(lang: zsim::Lang, verdict: &Verdict) -> String {
+    let right_or_wrong = if verdict.right { zsim::words!(lang, "tui-right") } else { zsim::words!(lang, "tui-wrong") };
     match &verdict.question {
-        Question::Coverage { .. } => zsim::words!(
+        Question::Coverage { .. } => zsim::words!(lang, 
             "tui-quiz-coverage-verdict",
             right = &verdict.expected,
             typed = &verdict.said,
             verdict = right_or_wrong,
             why = &verdict.why
         ),
-        Question::Depth { pixel, .. } | Question::Frame { pixel, .. } => zsim::words!(
+        Question::Depth { pixel, .. } | Question::Frame { pixel, .. } => zsim::words!(lang, 
             "tui-quiz-verdict",
             x = pixel.x,
             y = pixel.y,

@@ -36,29 +36,29 @@ fn buffers_json(scene: &Scene, name: &str, buffers: &Buffers) -> serde_json::Val
 }
 
 /// Both buffers after all polygons.
-fn matrices(buffers: &Buffers, axes: bool) -> String {
+fn matrices(lang: zsim::Lang, buffers: &Buffers, axes: bool) -> String {
     let style = MatrixStyle { axes, color: super::use_color(), ..MatrixStyle::default() };
     format!(
         "\n{}\n{}\n{}\n{}",
-        zsim::words!("run-frame-after-all"),
+        zsim::words!(lang, "run-frame-after-all"),
         report::matrix_styled(&buffers.frame_rows(), &style),
-        zsim::words!("run-depth-after-all"),
+        zsim::words!(lang, "run-depth-after-all"),
         report::matrix_styled(&buffers.depth_rows(), &style)
     )
 }
 
 /// Whether two runs left the same buffers, in words.
-fn comparison(ours: &Buffers, plain: &Buffers) -> String {
+fn comparison(lang: zsim::Lang, ours: &Buffers, plain: &Buffers) -> String {
     let (frame, depth) = ours.differences(plain);
     let differing = frame + depth;
     if differing == 0 {
-        zsim::words!("variant-identical")
+        zsim::words!(lang, "variant-identical")
     } else {
-        zsim::words!("variant-differs", count = differing.to_string())
+        zsim::words!(lang, "variant-differs", count = differing.to_string())
     }
 }
 
-pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn run(lang: zsim::Lang, scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) -> Result<Finish, Failure> {
     let last_name = scene.polygons.last().map_or(String::new(), |p| p.name.clone());
     let mut plain = Simulation::new(scene);
     plain.finish(&mut Unobserved);
@@ -70,11 +70,11 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
         }
         let depth_bits = u64::from(scene.depth_bits);
         let full = u64::from(scene.width) * u64::from(scene.height);
-        let mut text = report::scene_header(scene, path);
+        let mut text = report::scene_header(lang, scene, path);
         let drawn = (0..scene.polygons.len()).filter(|&i| zsim::fate(scene, i) == zsim::Fate::Drawn).count();
         let lines = [
-            zsim::words!("segments-kind", count = stats.segments.to_string(), segments = segments.to_string()),
-            zsim::words!(
+            zsim::words!(lang, "segments-kind", count = stats.segments.to_string(), segments = segments.to_string()),
+            zsim::words!(lang, 
                 "segments-memory",
                 cells = stats.depth_cells.to_string(),
                 bits = depth_bits.to_string(),
@@ -82,13 +82,13 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
                 whole_cells = full.to_string(),
                 whole_bits = (full * depth_bits).to_string()
             ),
-            zsim::words!("segments-visits", visits = stats.polygon_visits.to_string(), whole = drawn.to_string()),
-            zsim::words!("variant-result", result = comparison(&buffers, plain.buffers())),
+            zsim::words!(lang, "segments-visits", visits = stats.polygon_visits.to_string(), whole = drawn.to_string()),
+            zsim::words!(lang, "variant-result", result = comparison(lang, &buffers, plain.buffers())),
         ];
         for line in lines {
             text.push_str(&format!("{line}\n"));
         }
-        text.push_str(&matrices(&buffers, variant.axes));
+        text.push_str(&matrices(lang, &buffers, variant.axes));
         emit(out, &text)?;
         return Ok(Finish::Ok);
     }
@@ -98,33 +98,33 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
             emit(out, &format!("{}\n", buffers_json(scene, &last_name, &buffers)))?;
             return Ok(Finish::Ok);
         }
-        let mut text = report::scene_header(scene, path);
+        let mut text = report::scene_header(lang, scene, path);
         let test = match inside {
-            Inside::Ray => zsim::words!("pixel-order-ray"),
-            Inside::Arc => zsim::words!("pixel-order-arc"),
+            Inside::Ray => zsim::words!(lang, "pixel-order-ray"),
+            Inside::Arc => zsim::words!(lang, "pixel-order-arc"),
         };
-        text.push_str(&format!("{}\n", zsim::words!("pixel-order-heading", test = test)));
-        let result = zsim::words!("variant-result", result = comparison(&buffers, plain.buffers()));
+        text.push_str(&format!("{}\n", zsim::words!(lang, "pixel-order-heading", test = test)));
+        let result = zsim::words!(lang, "variant-result", result = comparison(lang, &buffers, plain.buffers()));
         text.push_str(&format!("{result}\n"));
         if !differences.is_empty() {
             let mut table = Table::new();
             table.load_style(presets::ASCII_MARKDOWN).set_header([
                 "x".to_string(),
                 "y".to_string(),
-                zsim::words!("pixel-order-header-polygon"),
-                zsim::words!("pixel-order-header-why"),
+                zsim::words!(lang, "pixel-order-header-polygon"),
+                zsim::words!(lang, "pixel-order-header-why"),
             ]);
             for d in &differences {
                 let why = match d.why {
-                    ArcDifference::OnBoundary => zsim::words!("pixel-order-on-boundary"),
-                    ArcDifference::Winding(w) => zsim::words!("pixel-order-winding", winding = w.to_string()),
+                    ArcDifference::OnBoundary => zsim::words!(lang, "pixel-order-on-boundary"),
+                    ArcDifference::Winding(w) => zsim::words!(lang, "pixel-order-winding", winding = w.to_string()),
                 };
-                table.add_row([d.x.to_string(), d.y.to_string(), polygon_name(scene, d.polygon), why]);
+                table.add_row([d.x.to_string(), d.y.to_string(), polygon_name(lang, scene, d.polygon), why]);
             }
-            let line = zsim::words!("pixel-order-disagree", count = differences.len().to_string());
+            let line = zsim::words!(lang, "pixel-order-disagree", count = differences.len().to_string());
             text.push_str(&format!("{line}\n{table}\n"));
         }
-        text.push_str(&matrices(&buffers, variant.axes));
+        text.push_str(&matrices(lang, &buffers, variant.axes));
         emit(out, &text)?;
         return Ok(Finish::Ok);
     }
@@ -142,23 +142,23 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
         return Ok(Finish::Ok);
     }
     let k = settings.samples;
-    let mut text = report::scene_header(scene, path);
+    let mut text = report::scene_header(lang, scene, path);
     let at = if settings.depth_at_samples { "antialias-at-sample" } else { "antialias-at-centre" };
     let line =
-        zsim::words!("antialias-heading", k = k.to_string(), at = zsim::words!(at), samples = (k * k).to_string());
+        zsim::words!(lang, "antialias-heading", k = k.to_string(), at = zsim::words!(lang, at), samples = (k * k).to_string());
     text.push_str(&format!("{line}\n"));
     let style = MatrixStyle { axes: variant.axes, color: super::use_color(), ..MatrixStyle::default() };
     for (index, picture) in pictures.iter().enumerate() {
         if variant.final_only && index + 1 != pictures.len() {
             continue;
         }
-        let name = polygon_name(scene, index);
+        let name = polygon_name(lang, scene, index);
         text.push_str(&format!(
             "\n{}\n\n{}\n{}\n{}\n{}",
-            report::polygon_heading(scene, index),
-            zsim::words!("antialias-frame-after", polygon = name.as_str()),
+            report::polygon_heading(lang, scene, index),
+            zsim::words!(lang, "antialias-frame-after", polygon = name.as_str()),
             report::matrix_styled(&picture.frame, &style),
-            zsim::words!("antialias-depth-after", polygon = name.as_str()),
+            zsim::words!(lang, "antialias-depth-after", polygon = name.as_str()),
             report::matrix_styled(&picture.depth, &style)
         ));
     }
@@ -167,22 +167,22 @@ pub fn run(scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) ->
 }
 
 /// The cells where drawing order with opacity differs from the back-to-front blend.
-pub fn local_errors_text(scene: &Scene, drawn: &Buffers) -> String {
+pub fn local_errors_text(lang: zsim::Lang, scene: &Scene, drawn: &Buffers) -> String {
     let errors = variants::local_errors(scene, drawn);
     if errors.is_empty() {
-        return format!("\n{}\n", zsim::words!("transparency-all-match"));
+        return format!("\n{}\n", zsim::words!(lang, "transparency-all-match"));
     }
     let mut table = Table::new();
     table.load_style(presets::ASCII_MARKDOWN).set_header([
         "x".to_string(),
         "y".to_string(),
-        zsim::words!("transparency-header-drawn"),
-        zsim::words!("transparency-header-back-to-front"),
-        zsim::words!("transparency-header-polygons"),
+        zsim::words!(lang, "transparency-header-drawn"),
+        zsim::words!(lang, "transparency-header-back-to-front"),
+        zsim::words!(lang, "transparency-header-polygons"),
     ]);
     for e in &errors {
-        let order: Vec<String> = e.back_to_front.iter().map(|&i| polygon_name(scene, i)).collect();
+        let order: Vec<String> = e.back_to_front.iter().map(|&i| polygon_name(lang, scene, i)).collect();
         table.add_row([e.x.to_string(), e.y.to_string(), e.drawn.to_string(), e.correct.to_string(), order.join(", ")]);
     }
-    format!("\n{}\n{table}\n", zsim::words!("transparency-differs", count = errors.len().to_string()))
+    format!("\n{}\n{table}\n", zsim::words!(lang, "transparency-differs", count = errors.len().to_string()))
 }

@@ -25,10 +25,17 @@ pub struct CaseError {
     pub message: String,
 }
 
-impl std::fmt::Display for CaseError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+impl CaseError {
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: crate::words::Lang) -> String {
+        let mut text = String::new();
+        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
+        text
+    }
+
+    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self.line {
-            Some(line) => f.write_str(&words!("case-line", line = line.to_string(), problem = self.message.as_str())),
+            Some(line) => f.write_str(&words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str())),
             None => f.write_str(&self.message),
         }
     }
@@ -62,7 +69,7 @@ impl Config {
     /// −1 … 1, buffer cleared to 2), or `W H`, `left_x`, `bottom_y`,
     /// `z_front z_rear` on the following lines (window `left_x … −left_x` ×
     /// `bottom_y … −bottom_y`, buffer cleared to `z_rear`).
-    pub fn parse(text: &str) -> Result<Config, CaseError> {
+    pub fn parse(lang: crate::words::Lang, text: &str) -> Result<Config, CaseError> {
         let lines: Vec<(usize, Vec<&str>)> = text
             .lines()
             .enumerate()
@@ -70,21 +77,21 @@ impl Config {
             .filter(|(_, words)| !words.is_empty())
             .collect();
         let number = |line: usize, word: &str| -> Result<Q, CaseError> {
-            parse_number(word).map_err(|e| case_error(Some(line), e.to_string()))
+            parse_number(word).map_err(|e| case_error(Some(line), e.message(lang)))
         };
         let size = |line: usize, word: &str| -> Result<u32, CaseError> {
             word.parse::<u32>().ok().filter(|v| (1..=crate::scene::MAX_SIDE as u32).contains(v)).ok_or_else(|| {
                 case_error(
                     Some(line),
-                    words!("buet-size", word = crate::words::token(word), max = crate::scene::MAX_SIDE.to_string()),
+                    words!(lang, "buet-size", word = crate::words::token(lang, word), max = crate::scene::MAX_SIDE.to_string()),
                 )
             })
         };
         let Some((first_line, first)) = lines.first() else {
-            return Err(case_error(None, words!("buet-config-empty")));
+            return Err(case_error(None, words!(lang, "buet-config-empty")));
         };
         let [w, h] = first.as_slice() else {
-            return Err(case_error(Some(*first_line), words!("buet-config-first")));
+            return Err(case_error(Some(*first_line), words!(lang, "buet-config-first")));
         };
         let (width, height) = (size(*first_line, w)?, size(*first_line, h)?);
         let one = Q::from_integer(1);
@@ -103,25 +110,25 @@ impl Config {
                     let (line, words) = &lines[index];
                     match words.as_slice() {
                         [word] => number(*line, word),
-                        _ => Err(case_error(Some(*line), words!("buet-one-number"))),
+                        _ => Err(case_error(Some(*line), words!(lang, "buet-one-number"))),
                     }
                 };
                 let left = single(1)?;
                 let bottom = single(2)?;
                 let (line, words) = &lines[3];
                 let [front, rear] = words.as_slice() else {
-                    return Err(case_error(Some(*line), words!("buet-z-range")));
+                    return Err(case_error(Some(*line), words!(lang, "buet-z-range")));
                 };
                 let (z_front, z_rear) = (number(*line, front)?, number(*line, rear)?);
                 if left >= Q::from_integer(0) || bottom >= Q::from_integer(0) {
-                    return Err(case_error(Some(lines[1].0), words!("buet-window-negative")));
+                    return Err(case_error(Some(lines[1].0), words!(lang, "buet-window-negative")));
                 }
                 if z_front > z_rear {
-                    return Err(case_error(Some(*line), words!("buet-z-order")));
+                    return Err(case_error(Some(*line), words!(lang, "buet-z-order")));
                 }
                 Ok(Config { width, height, left, bottom, z_front, z_rear, z_max: z_rear })
             }
-            n => Err(case_error(None, words!("buet-config-lines", count = n.to_string()))),
+            n => Err(case_error(None, words!(lang, "buet-config-lines", count = n.to_string()))),
         }
     }
 }
@@ -237,9 +244,9 @@ impl<'a> Lines<'a> {
 
     /// The next line as exactly `count` numbers; `what` is the catalogue
     /// key naming them.
-    fn numbers(&mut self, count: usize, what: &str) -> Result<Vec<f64>, CaseError> {
+    fn numbers(&mut self, lang: crate::words::Lang, count: usize, what: &str) -> Result<Vec<f64>, CaseError> {
         let Some((line, text)) = self.next_line() else {
-            return Err(case_error(None, words!("buet-ends", what = words!(what))));
+            return Err(case_error(None, words!(lang, "buet-ends", what = words!(lang, what))));
         };
         let values: Result<Vec<f64>, _> = text.split_whitespace().map(str::parse::<f64>).collect();
         match values {
@@ -247,11 +254,11 @@ impl<'a> Lines<'a> {
             Ok(values) if values.len() == count && values.iter().all(|v| v.is_finite()) => Ok(values),
             _ => Err(case_error(
                 Some(line),
-                words!(
+                words!(lang, 
                     "buet-numbers",
-                    what = words!(what),
+                    what = words!(lang, what),
                     count = count.to_string(),
-                    found = crate::words::token(text)
+                    found = crate::words::token(lang, text)
                 ),
             )),
         }
@@ -277,29 +284,29 @@ impl CaseScene {
     /// Reads `scene.txt` and applies the model transformations (stage 1):
     /// `triangle`, `translate`, `scale`, `rotate` (angle in degrees and an
     /// axis), `push`, `pop`, `end`; each transformation is `M = M·T`.
-    pub fn parse(text: &str) -> Result<CaseScene, CaseError> {
+    pub fn parse(lang: crate::words::Lang, text: &str) -> Result<CaseScene, CaseError> {
         let lines: Vec<(usize, &str)> =
             text.lines().enumerate().map(|(i, l)| (i + 1, l.trim())).filter(|(_, l)| !l.is_empty()).collect();
         let mut reader = Lines { lines: &lines, next: 0 };
         let three = |v: Vec<f64>| [v[0], v[1], v[2]];
         // A camera or projection the formulas cannot build (they would divide by
         // zero and fill every stage with NaN) is refused at its line.
-        let eye = three(reader.numbers(3, "buet-what-eye")?);
-        let look = three(reader.numbers(3, "buet-what-look")?);
+        let eye = three(reader.numbers(lang, 3, "buet-what-eye")?);
+        let look = three(reader.numbers(lang, 3, "buet-what-look")?);
         if look == eye {
-            return Err(case_error(reader.last_line(), words!("buet-look-at-eye")));
+            return Err(case_error(reader.last_line(), words!(lang, "buet-look-at-eye")));
         }
-        let up = three(reader.numbers(3, "buet-what-up")?);
+        let up = three(reader.numbers(lang, 3, "buet-what-up")?);
         let direction = [0, 1, 2].map(|i| look[i] - eye[i]);
         if cross(direction, up).iter().all(|v| *v == 0.0) {
-            return Err(case_error(reader.last_line(), words!("buet-up-along-view")));
+            return Err(case_error(reader.last_line(), words!(lang, "buet-up-along-view")));
         }
-        let p = reader.numbers(4, "buet-what-perspective")?;
+        let p = reader.numbers(lang, 4, "buet-what-perspective")?;
         let perspective = [p[0], p[1], p[2], p[3]];
         let [fov_y, aspect, near, far] = perspective;
         let angle = |a: f64| a > 0.0 && a < 180.0;
         if !(angle(fov_y) && aspect > 0.0 && angle(fov_y * aspect) && near > 0.0 && far != near) {
-            return Err(case_error(reader.last_line(), words!("buet-perspective")));
+            return Err(case_error(reader.last_line(), words!(lang, "buet-perspective")));
         }
         let mut model = identity();
         let mut stack: Vec<Matrix> = Vec::new();
@@ -309,28 +316,28 @@ impl CaseScene {
                 "triangle" => {
                     let mut triangle = [[0.0; 3]; 3];
                     for vertex in &mut triangle {
-                        *vertex = transform(&model, three(reader.numbers(3, "buet-what-vertex")?));
+                        *vertex = transform(&model, three(reader.numbers(lang, 3, "buet-what-vertex")?));
                     }
                     stage1.push(triangle);
                 }
                 "translate" => {
-                    model = multiply(&model, &translation(three(reader.numbers(3, "buet-what-translation")?)))
+                    model = multiply(&model, &translation(three(reader.numbers(lang, 3, "buet-what-translation")?)))
                 }
-                "scale" => model = multiply(&model, &scaling(three(reader.numbers(3, "buet-what-scale")?))),
+                "scale" => model = multiply(&model, &scaling(three(reader.numbers(lang, 3, "buet-what-scale")?))),
                 "rotate" => {
-                    let r = reader.numbers(4, "buet-what-rotation")?;
+                    let r = reader.numbers(lang, 4, "buet-what-rotation")?;
                     if r[1..].iter().all(|v| *v == 0.0) {
-                        return Err(case_error(reader.last_line(), words!("buet-rotation-axis")));
+                        return Err(case_error(reader.last_line(), words!(lang, "buet-rotation-axis")));
                     }
                     model = multiply(&model, &rotation(r[0], [r[1], r[2], r[3]]));
                 }
                 "push" => stack.push(model),
-                "pop" => model = stack.pop().ok_or_else(|| case_error(Some(line), words!("buet-pop")))?,
+                "pop" => model = stack.pop().ok_or_else(|| case_error(Some(line), words!(lang, "buet-pop")))?,
                 "end" => break,
                 other => {
                     return Err(case_error(
                         Some(line),
-                        words!("case-unknown-command", command = crate::words::token(other)),
+                        words!(lang, "case-unknown-command", command = crate::words::token(lang, other)),
                     ));
                 }
             }
@@ -391,7 +398,7 @@ pub fn stage_text(triangles: &[[[f64; 3]; 3]]) -> String {
 
 /// Reads a stage file's triangles as the decimal texts written there, each
 /// checked to be a number (stage 4 reads them exactly, not as `f64`s).
-pub fn parse_stage(text: &str) -> Result<Vec<[[String; 3]; 3]>, CaseError> {
+pub fn parse_stage(lang: crate::words::Lang, text: &str) -> Result<Vec<[[String; 3]; 3]>, CaseError> {
     let mut points = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let words: Vec<&str> = line.split_whitespace().collect();
@@ -401,16 +408,16 @@ pub fn parse_stage(text: &str) -> Result<Vec<[[String; 3]; 3]>, CaseError> {
         let [x, y, z] = words.as_slice() else {
             return Err(case_error(
                 Some(i + 1),
-                words!("buet-three-coordinates", found = crate::words::token(line.trim())),
+                words!(lang, "buet-three-coordinates", found = crate::words::token(lang, line.trim())),
             ));
         };
         for word in [x, y, z] {
-            parse_number(word).map_err(|e| case_error(Some(i + 1), e.to_string()))?;
+            parse_number(word).map_err(|e| case_error(Some(i + 1), e.message(lang)))?;
         }
         points.push([x.to_string(), y.to_string(), z.to_string()]);
     }
     if points.len() % 3 != 0 {
-        return Err(case_error(None, words!("buet-triangles", count = points.len().to_string())));
+        return Err(case_error(None, words!(lang, "buet-triangles", count = points.len().to_string())));
     }
     Ok(points.chunks_exact(3).map(|c| [c[0].clone(), c[1].clone(), c[2].clone()]).collect())
 }
@@ -487,8 +494,8 @@ pub struct Case {
     pub scene_json: String,
 }
 
-fn read(path: &Path) -> Result<String, Error> {
-    crate::scene::text::read_text(path)
+fn read(lang: crate::words::Lang, path: &Path) -> Result<String, Error> {
+    crate::scene::text::read_text(lang, path)
 }
 
 fn located(path: &Path, error: CaseError) -> Error {
@@ -503,26 +510,26 @@ impl Case {
     /// Reads a case folder. With no `source`, stage 3 is read from
     /// `stage3.txt` when the folder has one, and computed from `scene.txt`
     /// otherwise.
-    pub fn load(dir: &Path, source: Option<Source>) -> Result<Case, Error> {
+    pub fn load(lang: crate::words::Lang, dir: &Path, source: Option<Source>) -> Result<Case, Error> {
         let config_path = dir.join("config.txt");
-        let config = Config::parse(&read(&config_path)?).map_err(|e| located(&config_path, e))?;
+        let config = Config::parse(lang, &read(lang, &config_path)?).map_err(|e| located(&config_path, e))?;
         let source = source.unwrap_or(if dir.join("stage3.txt").is_file() { Source::Stage3 } else { Source::Scene });
         let (stages, stage3_text, stage3_path) = match source {
             Source::Stage3 => {
                 let path = dir.join("stage3.txt");
-                (None, read(&path)?, path)
+                (None, read(lang, &path)?, path)
             }
             Source::Scene => {
                 let path = dir.join("scene.txt");
-                let scene = CaseScene::parse(&read(&path)?).map_err(|e| located(&path, e))?;
+                let scene = CaseScene::parse(lang, &read(lang, &path)?).map_err(|e| located(&path, e))?;
                 let stages = scene.stages();
                 let text = stage_text(&stages[2]);
                 (Some(stages), text, path)
             }
         };
-        let stage3 = parse_stage(&stage3_text).map_err(|e| located(&stage3_path, e))?;
+        let stage3 = parse_stage(lang, &stage3_text).map_err(|e| located(&stage3_path, e))?;
         let scene_json = scene_json(&config, &stage3);
-        let scene = crate::scene::Scene::from_json(&scene_json, &stage3_path)?;
+        let scene = crate::scene::Scene::from_json(lang, &scene_json, &stage3_path)?;
         Ok(Case { config, stages, stage3, scene, scene_json })
     }
 }

@@ -50,7 +50,7 @@ impl Model {
     /// Reads `v` and `f` lines (`f a/b/c d/e/f g/h/i`, `f a b c` or `f a//c …`);
     /// every other line is passed over, as the lesson does. A face must have
     /// three corners whose vertices exist.
-    pub fn parse(text: &str) -> Result<Model, ObjError> {
+    pub fn parse(lang: crate::words::Lang, text: &str) -> Result<Model, ObjError> {
         let mut model = Model { vertices: Vec::new(), vertices_f64: Vec::new(), faces: Vec::new() };
         let mut faces = Vec::new();
         for (index, line) in text.lines().enumerate() {
@@ -59,12 +59,12 @@ impl Model {
             if let Some(rest) = line.strip_prefix("v ") {
                 let words: Vec<&str> = rest.split_whitespace().collect();
                 if words.len() < 3 {
-                    return Err(fail(words!("obj-vertex-count", count = words.len())));
+                    return Err(fail(words!(lang, "obj-vertex-count", count = words.len())));
                 }
                 let mut exact = Vec::with_capacity(3);
                 let mut float = [0.0; 3];
                 for (k, word) in words.iter().take(3).enumerate() {
-                    let bad = || fail(words!("obj-not-a-number", token = crate::words::token(word)));
+                    let bad = || fail(words!(lang, "obj-not-a-number", token = crate::words::token(lang, word)));
                     float[k] = word.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(bad)?;
                     exact.push(parse_exact(word).map_err(|_| bad())?);
                 }
@@ -74,19 +74,19 @@ impl Model {
             } else if let Some(rest) = line.strip_prefix("f ") {
                 let corners: Vec<&str> = rest.split_whitespace().collect();
                 if corners.len() != 3 {
-                    return Err(fail(words!("obj-face-corners", count = corners.len())));
+                    return Err(fail(words!(lang, "obj-face-corners", count = corners.len())));
                 }
                 let mut face = [0usize; 3];
                 for (k, corner) in corners.iter().enumerate() {
                     let first = corner.split('/').next().unwrap_or("");
                     face[k] = match first.parse::<usize>() {
                         Ok(v) if v >= 1 => v - 1,
-                        _ => return Err(fail(words!("obj-bad-index", token = crate::words::token(corner)))),
+                        _ => return Err(fail(words!(lang, "obj-bad-index", token = crate::words::token(lang, corner)))),
                     };
                 }
                 faces.push((number, face));
                 if faces.len() > MAX_FACES {
-                    return Err(fail(words!("obj-too-many-faces", max = MAX_FACES)));
+                    return Err(fail(words!(lang, "obj-too-many-faces", max = MAX_FACES)));
                 }
             }
         }
@@ -94,7 +94,7 @@ impl Model {
             if let Some(&missing) = face.iter().find(|&&v| v >= model.vertices.len()) {
                 return Err(ObjError {
                     line,
-                    message: words!("obj-no-vertex", index = missing + 1, count = model.vertices.len()),
+                    message: words!(lang, "obj-no-vertex", index = missing + 1, count = model.vertices.len()),
                 });
             }
             model.faces.push(face);

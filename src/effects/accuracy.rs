@@ -115,7 +115,7 @@ fn hard_scenes(settings: &Settings) -> Vec<String> {
 }
 
 /// The accuracy set: random scenes of several triangle sizes, then the hard cases.
-pub fn scenes(settings: &Settings) -> Result<Vec<Scene>, Error> {
+pub fn scenes(lang: crate::words::Lang, settings: &Settings) -> Result<Vec<Scene>, Error> {
     let mut rng = SplitMix64::new(settings.seed);
     let mut texts = Vec::new();
     let area = u64::from(settings.width) * u64::from(settings.height);
@@ -127,7 +127,7 @@ pub fn scenes(settings: &Settings) -> Result<Vec<Scene>, Error> {
         }
     }
     texts.extend(hard_scenes(settings));
-    texts.iter().map(|t| Scene::from_json(t, Path::new("(accuracy set)"))).collect()
+    texts.iter().map(|t| Scene::from_json(lang, t, Path::new("(accuracy set)"))).collect()
 }
 
 /// The least time of three runs of `f`, after one untimed run.
@@ -235,10 +235,10 @@ fn coplanar_scene(width: u32, height: u32, bits: u32) -> String {
 }
 
 /// The depth-bits sweep: 4, 8, 16, 24 and 32 bits.
-pub fn bits_sweep(settings: &Settings) -> Result<Vec<BitsRow>, Error> {
+pub fn bits_sweep(lang: crate::words::Lang, settings: &Settings) -> Result<Vec<BitsRow>, Error> {
     let mut rows = Vec::new();
     for bits in [4u32, 8, 16, 24, 32] {
-        let scene = Scene::from_json(&coplanar_scene(settings.width, settings.height, bits), Path::new("(coplanar)"))?;
+        let scene = Scene::from_json(lang, &coplanar_scene(settings.width, settings.height, bits), Path::new("(coplanar)"))?;
         let ((buffers, _), time) = timed(|| arith::run(&scene, Arith::Exact))?;
         // The nearer polygon by world depth: A where x ≥ y at the centre (ties keep A, drawn first), B elsewhere.
         let mut z_fighting = 0;

@@ -51,27 +51,34 @@ pub struct OffPlane {
     pub along_z: bool,
 }
 
-impl fmt::Display for GeometryError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl GeometryError {
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: crate::words::Lang) -> String {
+        let mut text = String::new();
+        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
+        text
+    }
+
+    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self {
-            GeometryError::TooFewVertices(n) => f.write_str(&words!("geometry-too-few", count = n.to_string())),
+            GeometryError::TooFewVertices(n) => f.write_str(&words!(lang, "geometry-too-few", count = n.to_string())),
             GeometryError::TooManyVertices(n) => {
-                f.write_str(&words!("geometry-too-many", count = n.to_string(), max = MAX_VERTICES.to_string()))
+                f.write_str(&words!(lang, "geometry-too-many", count = n.to_string(), max = MAX_VERTICES.to_string()))
             }
-            GeometryError::OutOfRange { vertex, value, denominator } => f.write_str(&words!(
+            GeometryError::OutOfRange { vertex, value, denominator } => f.write_str(&words!(lang, 
                 "geometry-out-of-range",
                 vertex = vertex.to_string(),
                 value = crate::numbers::fraction(value),
-                denominator = crate::numbers::big_integer(denominator)
+                denominator = crate::numbers::big_integer(lang, denominator)
             )),
             GeometryError::NotPlanar(off) => {
                 let OffPlane { vertex, through: [i, j, k], plane, off_by, along_z } = off.as_ref();
                 let (key, off) = if *along_z {
-                    ("geometry-off-plane-z", crate::numbers::exact_and_decimal(off_by))
+                    ("geometry-off-plane-z", crate::numbers::exact_and_decimal(lang, off_by))
                 } else {
                     ("geometry-off-plane", crate::numbers::fraction(off_by))
                 };
-                f.write_str(&words!(
+                f.write_str(&words!(lang, 
                     key,
                     vertex = vertex.to_string(),
                     plane = plane.to_string(),

@@ -21,13 +21,13 @@ pub fn fraction(value: impl Into<Exact>) -> String {
 /// A big integer as a message prints it: whole up to 60 digits, beyond
 /// that its first and last 12 digits and how many there are
 /// (`123456789012…345678901234 (1304 digits)`), so a line stays readable.
-pub fn big_integer(value: &num_bigint::BigInt) -> String {
+pub fn big_integer(lang: crate::words::Lang, value: &num_bigint::BigInt) -> String {
     let text = value.to_string();
     let (sign, digits) = text.strip_prefix('-').map_or(("", text.as_str()), |rest| ("-", rest));
     if digits.len() <= 60 {
         return text;
     }
-    let count = words!("digits", count = digits.len().to_string());
+    let count = words!(lang, "digits", count = digits.len().to_string());
     format!("{sign}{}…{} ({count})", &digits[..12], &digits[digits.len() - 12..])
 }
 
@@ -39,8 +39,8 @@ pub fn big_integer(value: &num_bigint::BigInt) -> String {
 /// use zsim::{Q, short};
 /// assert_eq!((short(Q::new(13, 2)), short(Q::new(43, 8)), short(Q::new(41, 3))), ("6.5".into(), "5.375".into(), "41/3".into()));
 /// ```
-pub fn short(value: impl Into<Exact>) -> String {
-    crate::words::localize_decimal(short_in_files(value))
+pub fn short(lang: crate::words::Lang, value: impl Into<Exact>) -> String {
+    crate::words::localize_decimal(lang, short_in_files(value))
 }
 
 /// [`short`] with a point in every language: for files (scene files, JSON)
@@ -110,19 +110,19 @@ fn big_decimal(value: &BigRational, places: u32) -> String {
 
 /// `43/4 ≈ 10.75`: the exact value and its decimal with 2 places, as zsim
 /// shows depths and crossings. Whole numbers print once: `10`.
-pub fn exact_and_decimal(value: impl Into<Exact>) -> String {
-    exact_and_places(value, 2)
+pub fn exact_and_decimal(lang: crate::words::Lang, value: impl Into<Exact>) -> String {
+    exact_and_places(lang, value, 2)
 }
 
 /// The exact value and its decimal with `places` places (`4876543/5000000 ≈
 /// 0.975309`); whole numbers print once.
-pub fn exact_and_places(value: impl Into<Exact>, places: u32) -> String {
+pub fn exact_and_places(lang: crate::words::Lang, value: impl Into<Exact>, places: u32) -> String {
     let value = value.into();
     if value.is_integer() {
         fraction(value)
     } else {
         // The decimal in the reader's convention (10,75 in Russian); the fraction stays as it is.
-        format!("{} ≈ {}", fraction(&value), crate::words::localize_decimal(decimal(value, places)))
+        format!("{} ≈ {}", fraction(&value), crate::words::localize_decimal(lang, decimal(value, places)))
     }
 }
 

@@ -1,14 +1,11 @@
 //! Reading numbers from scene files: decimals, fractions and powers of ten,
 //! exactly, with bounds against absurd input.
 
-use std::fmt;
-
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::Zero;
 
 use super::*;
-use crate::words::token;
 
 /// Why a piece of text is not a number zsim accepts.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -24,16 +21,22 @@ pub enum NumberError {
     TooLong(String),
 }
 
-impl fmt::Display for NumberError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            NumberError::NotANumber(text) => f.write_str(&words!("number-not-a-number", text = token(text))),
-            NumberError::ZeroDenominator(text) => f.write_str(&words!("number-zero-denominator", text = token(text))),
-            NumberError::TooLarge(text) => f.write_str(&words!("number-too-large", text = token(text))),
-            NumberError::TooLong(text) => {
-                f.write_str(&words!("number-too-long", text = token(text), max = MAX_BIG_DIGITS.to_string()))
-            }
-        }
+impl NumberError {
+    /// What is wrong and the text that failed, as a fact a serde visitor
+    /// carries to where it is worded ([`crate::words::fact`]).
+    pub fn fact(&self) -> String {
+        let (key, text) = match self {
+            NumberError::NotANumber(text) => ("number-not-a-number", text),
+            NumberError::ZeroDenominator(text) => ("number-zero-denominator", text),
+            NumberError::TooLarge(text) => ("number-too-large", text),
+            NumberError::TooLong(text) => ("number-too-long", text),
+        };
+        crate::words::fact(key, text)
+    }
+
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: crate::words::Lang) -> String {
+        crate::words::json_reason(lang, &self.fact())
     }
 }
 

@@ -19,7 +19,7 @@ pub struct CellRange<'a> {
 /// shape against the raster; the error names the line, the column and the
 /// raster cell, and says what was found: the first [`PROBLEMS_NAMED`]
 /// problems, separated by ` · `, then how many more there are.
-pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Matrix, String> {
+pub fn parse_answer(lang: crate::words::Lang, text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Matrix, String> {
     let mut problems = Vec::new();
     let lines: Vec<(usize, &str)> = text
         .lines()
@@ -39,17 +39,17 @@ pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -
                 let (line, place) = (line_number.to_string(), (column + 1).to_string());
                 match y {
                     Some(y) if column < width as usize => {
-                        words!("answer-at-cell", line = line, column = place, x = column.to_string(), y = y.to_string())
+                        words!(lang, "answer-at-cell", line = line, column = place, x = column.to_string(), y = y.to_string())
                     }
-                    _ => words!("answer-at", line = line, column = place),
+                    _ => words!(lang, "answer-at", line = line, column = place),
                 }
             };
             let max = || range.max.to_string();
             let Ok(value) = cell.parse::<u64>() else {
-                problems.push(words!(
+                problems.push(words!(lang, 
                     "answer-not-a-number",
                     at = at(),
-                    cell = crate::words::token(cell),
+                    cell = crate::words::token(lang, cell),
                     buffer = range.buffer,
                     max = max()
                 ));
@@ -57,7 +57,7 @@ pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -
                 continue;
             };
             if value > u64::from(range.max) {
-                problems.push(words!(
+                problems.push(words!(lang, 
                     "answer-too-large",
                     at = at(),
                     value = value.to_string(),
@@ -68,7 +68,7 @@ pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -
             row.push(value.min(u64::from(range.max)) as u32);
         }
         if row.len() != width as usize {
-            problems.push(words!(
+            problems.push(words!(lang, 
                 "answer-row-length",
                 line = line_number.to_string(),
                 count = row.len(),
@@ -78,14 +78,14 @@ pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange<'_>) -
         rows.push(row);
     }
     if rows.len() != height as usize {
-        problems.push(words!("answer-row-count", count = rows.len(), height = height.to_string()));
+        problems.push(words!(lang, "answer-row-count", count = rows.len(), height = height.to_string()));
     }
     if problems.is_empty() {
         return Ok(rows);
     }
     let mut text = problems[..problems.len().min(PROBLEMS_NAMED)].join(" · ");
     if problems.len() > PROBLEMS_NAMED {
-        text.push_str(&words!("answer-more-problems", count = problems.len() - PROBLEMS_NAMED));
+        text.push_str(&words!(lang, "answer-more-problems", count = problems.len() - PROBLEMS_NAMED));
     }
     Err(text)
 }
@@ -104,10 +104,10 @@ pub enum Misreading {
 
 impl Misreading {
     /// How it was written, in words: `bottom row first`.
-    pub fn words(self) -> String {
+    pub fn words(self, lang: crate::words::Lang) -> String {
         match self {
-            Misreading::BottomRowFirst => words!("misreading-upside-down"),
-            Misreading::Transposed => words!("misreading-transposed"),
+            Misreading::BottomRowFirst => words!(lang, "misreading-upside-down"),
+            Misreading::Transposed => words!(lang, "misreading-transposed"),
         }
     }
 }

@@ -20,111 +20,111 @@ pub enum Buffer {
 
 impl Buffer {
     /// `framebuffer` or `z-buffer`, in the current language.
-    pub fn name(self) -> String {
+    pub fn name(self, lang: crate::words::Lang) -> String {
         match self {
-            Buffer::Frame => words!("buffer-frame"),
-            Buffer::Depth => words!("buffer-depth"),
+            Buffer::Frame => words!(lang, "buffer-frame"),
+            Buffer::Depth => words!(lang, "buffer-depth"),
         }
     }
 }
 
 /// A depth as shown for this scene: 2 decimals with a quantized z-buffer,
 /// 6 with an exact one (whose depths usually lie within −1 … 1).
-pub fn depth_text(scene: &Scene, z: impl Into<Exact>) -> String {
+pub fn depth_text(lang: crate::words::Lang, scene: &Scene, z: impl Into<Exact>) -> String {
     match scene.rules.store {
-        DepthStore::Quantized | DepthStore::Truncated => exact_and_decimal(z),
-        DepthStore::Exact => exact_and_places(z, 6),
+        DepthStore::Quantized | DepthStore::Truncated => exact_and_decimal(lang, z),
+        DepthStore::Exact => exact_and_places(lang, z, 6),
     }
 }
 
 /// `polygon 2 "triangle"`.
-pub fn polygon_name(scene: &Scene, index: usize) -> String {
-    crate::words::polygon_label("polygon-name", index, &scene.polygons[index].name)
+pub fn polygon_name(lang: crate::words::Lang, scene: &Scene, index: usize) -> String {
+    crate::words::polygon_label(lang, "polygon-name", index, &scene.polygons[index].name)
 }
 
 /// `polygon 2 "triangle"` after "after" (a genitive in some languages).
-pub fn polygon_after(scene: &Scene, index: usize) -> String {
-    crate::words::polygon_label("polygon-after", index, &scene.polygons[index].name)
+pub fn polygon_after(lang: crate::words::Lang, scene: &Scene, index: usize) -> String {
+    crate::words::polygon_label(lang, "polygon-after", index, &scene.polygons[index].name)
 }
 
 /// `43/4 ≈ 10.75 … 179/6 ≈ 29.83`.
-pub fn span_text(span: &SpanRecord) -> String {
-    words!("span", left = exact_and_decimal(&span.left), right = exact_and_decimal(&span.right))
+pub fn span_text(lang: crate::words::Lang, span: &SpanRecord) -> String {
+    words!(lang, "span", left = exact_and_decimal(lang, &span.left), right = exact_and_decimal(lang, &span.right))
 }
 
 /// `y = 15.5`: the scanline through row `row`.
-pub fn scanline_text(row: u32) -> String {
-    words!("scanline", y = crate::words::localize_decimal(format!("{row}.5")))
+pub fn scanline_text(lang: crate::words::Lang, row: u32) -> String {
+    words!(lang, "scanline", y = crate::words::localize_decimal(lang, format!("{row}.5")))
 }
 
 /// The direction a polygon's vertices run, in words.
-pub fn winding_text(winding: crate::scene::Winding) -> String {
+pub fn winding_text(lang: crate::words::Lang, winding: crate::scene::Winding) -> String {
     match winding {
-        crate::scene::Winding::Cw => words!("winding-cw"),
-        crate::scene::Winding::Ccw => words!("winding-ccw"),
+        crate::scene::Winding::Cw => words!(lang, "winding-cw"),
+        crate::scene::Winding::Ccw => words!(lang, "winding-ccw"),
     }
 }
 
 /// What is stored for an exact depth, naming the rounding when z is not
 /// whole (`10 is stored (10.25 rounds to 10)`, the book's pixel (20, 17))
 /// and the saturation when it does not fit.
-pub fn stored_text(scene: &Scene, depth: &Depth) -> String {
+pub fn stored_text(lang: crate::words::Lang, scene: &Scene, depth: &Depth) -> String {
     match depth.stored(scene.rules.store, scene.depth_max()) {
         Stored::Level(stored) if scene.rules.store == crate::rules::DepthStore::Truncated => {
             let value = depth.value();
             if value.is_integer() && value.floor() == stored.into() {
-                words!("stored-whole", stored = stored)
+                words!(lang, "stored-whole", stored = stored)
             } else if value.floor() == stored.into() {
-                words!("stored-truncated", stored = stored, value = crate::numbers::short(value))
+                words!(lang, "stored-truncated", stored = stored, value = crate::numbers::short(lang, value))
             } else {
-                words!("stored-truncated-saturated", stored = stored, value = exact_and_decimal(value))
+                words!(lang, "stored-truncated-saturated", stored = stored, value = exact_and_decimal(lang, value))
             }
         }
         Stored::Level(stored) => {
             let rounded = depth.rounded();
             let value = depth.value();
             if rounded == stored.into() && value.is_integer() {
-                words!("stored-whole", stored = stored)
+                words!(lang, "stored-whole", stored = stored)
             } else if rounded == stored.into() {
                 let key = if Exact::integer(rounded) > value { "stored-rounded-up" } else { "stored-rounded" };
-                words!(key, stored = stored, value = crate::numbers::short(value))
+                words!(lang, key, stored = stored, value = crate::numbers::short(lang, value))
             } else {
-                words!(
+                words!(lang, 
                     "stored-saturated",
                     stored = stored,
-                    value = exact_and_decimal(depth.value()),
+                    value = exact_and_decimal(lang, depth.value()),
                     rounded = rounded.to_string()
                 )
             }
         }
-        exact @ Stored::Exact(_) => words!("stored-exact", stored = exact.to_string()),
+        exact @ Stored::Exact(_) => words!(lang, "stored-exact", stored = exact.text(lang)),
     }
 }
 
 /// One sentence on what the depth test made of a covered pixel:
 /// `z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored and the framebuffer gets 2`.
-pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
+pub fn pixel_reason(lang: crate::words::Lang, scene: &Scene, event: &PixelEvent) -> String {
     let z = match scene.effects.perspective {
-        Some(perspective) if perspective.store_w => words!(
+        Some(perspective) if perspective.store_w => words!(lang, 
             "z-w-buffer",
-            w = depth_text(scene, event.compared.value()),
-            z = depth_text(scene, event.depth.value())
+            w = depth_text(lang, scene, event.compared.value()),
+            z = depth_text(lang, scene, event.depth.value())
         ),
-        Some(perspective) => words!(
+        Some(perspective) => words!(lang, 
             "z-projected",
-            z = depth_text(scene, event.depth.value()),
+            z = depth_text(lang, scene, event.depth.value()),
             w = perspective
                 .eye_value(&event.depth.value())
-                .map_or_else(|| words!("z-beyond"), |w| depth_text(scene, w))
+                .map_or_else(|| words!(lang, "z-beyond"), |w| depth_text(lang, scene, w))
         ),
-        None => depth_text(scene, event.compared.value()),
+        None => depth_text(lang, scene, event.compared.value()),
     };
-    let stored_before = event.stored_before.to_string();
+    let stored_before = event.stored_before.text(lang);
     match event.outcome {
         Outcome::Written => {
             let polygon = &scene.polygons[event.index];
             let frame = match polygon.opacity {
-                Some(alpha) => words!(
+                Some(alpha) => words!(lang, 
                     "frame-blended",
                     frame = event.frame_after,
                     alpha = crate::numbers::fraction(alpha),
@@ -134,23 +134,23 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
                 ),
                 None => event.frame_after.to_string(),
             };
-            words!(
+            words!(lang, 
                 "reason-written",
-                test = scene.depth_test.outcome_text(&z, &stored_before, true),
-                stored = stored_text(scene, &event.compared),
+                test = scene.depth_test.outcome_text(lang, &z, &stored_before, true),
+                stored = stored_text(lang, scene, &event.compared),
                 frame = frame
             )
         }
-        Outcome::Hidden => words!("reason-hidden", test = scene.depth_test.outcome_text(&z, &stored_before, false)),
+        Outcome::Hidden => words!(lang, "reason-hidden", test = scene.depth_test.outcome_text(lang, &z, &stored_before, false)),
         Outcome::OutsideDepthRange => {
             let (front, rear) = scene.depth_range.unwrap_or((Q::from_integer(0), Q::from_integer(0)));
-            words!("reason-outside-range", z = z, front = depth_text(scene, front), rear = depth_text(scene, rear))
+            words!(lang, "reason-outside-range", z = z, front = depth_text(lang, scene, front), rear = depth_text(lang, scene, rear))
         }
         Outcome::BeyondSection => {
-            let section = scene.effects.section.map_or(String::new(), |z| depth_text(scene, z));
-            words!(
+            let section = scene.effects.section.map_or(String::new(), |z| depth_text(lang, scene, z));
+            words!(lang, 
                 "reason-beyond-section",
-                test = scene.depth_test.outcome_text(&z, &stored_before, true),
+                test = scene.depth_test.outcome_text(lang, &z, &stored_before, true),
                 op = scene.depth_test.section_symbol(),
                 section = section
             )
@@ -159,134 +159,134 @@ pub fn pixel_reason(scene: &Scene, event: &PixelEvent) -> String {
 }
 
 /// Why a polygon was not drawn at all, or `None` when it was.
-pub fn fate_text(fate: Fate) -> Option<String> {
+pub fn fate_text(lang: crate::words::Lang, fate: Fate) -> Option<String> {
     match fate {
         Fate::Drawn => None,
-        Fate::Culled(winding) => Some(words!("fate-culled", winding = winding_text(winding))),
-        Fate::EdgeOn => Some(words!("fate-edge-on")),
-        Fate::Degenerate => Some(words!("fate-degenerate")),
-        Fate::SmallArea => Some(words!("fate-small-area")),
-        Fate::ClippedAway => Some(words!("fate-clipped")),
-        Fate::OutsideView => Some(words!("fate-outside-view")),
+        Fate::Culled(winding) => Some(words!(lang, "fate-culled", winding = winding_text(lang, winding))),
+        Fate::EdgeOn => Some(words!(lang, "fate-edge-on")),
+        Fate::Degenerate => Some(words!(lang, "fate-degenerate")),
+        Fate::SmallArea => Some(words!(lang, "fate-small-area")),
+        Fate::ClippedAway => Some(words!(lang, "fate-clipped")),
+        Fate::OutsideView => Some(words!(lang, "fate-outside-view")),
     }
 }
 
 /// What one polygon did at pixel (x, y), in one sentence.
-pub fn entry_text(scene: &Scene, x: u32, y: u32, entry: &PixelHistoryEntry) -> String {
-    if let Some(text) = fate_text(entry.fate) {
+pub fn entry_text(lang: crate::words::Lang, scene: &Scene, x: u32, y: u32, entry: &PixelHistoryEntry) -> String {
+    if let Some(text) = fate_text(lang, entry.fate) {
         return text;
     }
     let centre = Q::new(2 * i128::from(x) + 1, 2);
     // A centre exactly on the boundary: say which rule decided it.
-    let tie = crate::observe::tie::tie_text(scene.rules, &scene.polygons[entry.index].vertices(), x, y)
-        .map_or(String::new(), |t| words!("tie-wrap", text = t));
+    let tie = crate::observe::tie::tie_text(lang, scene.rules, &scene.polygons[entry.index].vertices(), x, y)
+        .map_or(String::new(), |t| words!(lang, "tie-wrap", text = t));
     match (&entry.scanline, &entry.pixel) {
-        (None, _) => words!("entry-no-row", scanline = scanline_text(y), tie = tie),
+        (None, _) => words!(lang, "entry-no-row", scanline = scanline_text(lang, y), tie = tie),
         (Some(scanline), Some(pixel)) => {
-            let reason = pixel_reason(scene, pixel);
+            let reason = pixel_reason(lang, scene, pixel);
             match scanline.span_covering(x) {
-                Some(span) => words!(
+                Some(span) => words!(lang, 
                     "entry-covered",
-                    scanline = scanline_text(y),
-                    span = span_text(span),
-                    centre = exact_and_decimal(centre),
+                    scanline = scanline_text(lang, y),
+                    span = span_text(lang, span),
+                    centre = exact_and_decimal(lang, centre),
                     tie = tie,
                     reason = reason
                 ),
-                None => words!(
+                None => words!(lang, 
                     "entry-covered-no-span",
-                    scanline = scanline_text(y),
-                    centre = exact_and_decimal(centre),
+                    scanline = scanline_text(lang, y),
+                    centre = exact_and_decimal(lang, centre),
                     tie = tie,
                     reason = reason
                 ),
             }
         }
-        (Some(scanline), None) => words!(
+        (Some(scanline), None) => words!(lang, 
             "entry-not-inside",
-            scanline = scanline_text(y),
-            spans = spans_of(scanline, &words!("subject-it")),
-            centre = exact_and_decimal(centre),
+            scanline = scanline_text(lang, y),
+            spans = spans_of(lang, scanline, &words!(lang, "subject-it")),
+            centre = exact_and_decimal(lang, centre),
             tie = tie
         ),
     }
 }
 
 /// `it spans 57/2 … 179/6` (or has no crossings), with `subject` for "it".
-fn spans_of(scanline: &ScanlineRecord, subject: &str) -> String {
+fn spans_of(lang: crate::words::Lang, scanline: &ScanlineRecord, subject: &str) -> String {
     if scanline.spans.is_empty() {
-        return words!("spans-none", subject = subject);
+        return words!(lang, "spans-none", subject = subject);
     }
-    let spans: Vec<String> = scanline.spans.iter().map(span_text).collect();
-    words!("spans-some", subject = subject, spans = spans.join(&words!("list-and")))
+    let spans: Vec<String> = scanline.spans.iter().map(|span| span_text(lang, span)).collect();
+    words!(lang, "spans-some", subject = subject, spans = spans.join(&words!(lang, "list-and")))
 }
 
 /// Why cell (x, y) of `buffer` holds what it holds after the polygons in
 /// `history` (all of them up to the one the check is after), in one sentence.
-pub fn why(scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistoryEntry]) -> String {
+pub fn why(lang: crate::words::Lang, scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistoryEntry]) -> String {
     let last_write = history
         .iter()
         .rev()
         .find_map(|entry| entry.pixel.as_ref().filter(|p| p.outcome == Outcome::Written).map(|p| (entry.index, p)));
     let result = |pixel: &PixelEvent| match buffer {
-        Buffer::Frame => words!("result-frame", value = pixel.frame_after),
-        Buffer::Depth => stored_text(scene, &pixel.compared),
+        Buffer::Frame => words!(lang, "result-frame", value = pixel.frame_after),
+        Buffer::Depth => stored_text(lang, scene, &pixel.compared),
     };
-    let semicolon = words!("list-semicolon");
+    let semicolon = words!(lang, "list-semicolon");
     if let Some((index, pixel)) = last_write {
-        let z = depth_text(scene, pixel.compared.value());
-        let mut text = words!(
+        let z = depth_text(lang, scene, pixel.compared.value());
+        let mut text = words!(lang, 
             "why-covers",
-            polygon = polygon_name(scene, index),
+            polygon = polygon_name(lang, scene, index),
             x = x,
             y = y,
-            test = scene.depth_test.outcome_text(&z, &pixel.stored_before.to_string(), true),
+            test = scene.depth_test.outcome_text(lang, &z, &pixel.stored_before.text(lang), true),
             result = result(pixel)
         );
         let later: Vec<String> = history
             .iter()
             .filter(|entry| entry.index > index && entry.pixel.is_some())
             .map(|entry| {
-                words!(
+                words!(lang, 
                     "why-later-item",
-                    polygon = polygon_name(scene, entry.index),
-                    reason = entry.pixel.as_ref().map_or_else(String::new, |p| pixel_reason(scene, p))
+                    polygon = polygon_name(lang, scene, entry.index),
+                    reason = entry.pixel.as_ref().map_or_else(String::new, |p| pixel_reason(lang, scene, p))
                 )
             })
             .collect();
         if !later.is_empty() {
-            text.push_str(&words!("why-later", list = later.join(&semicolon)));
+            text.push_str(&words!(lang, "why-later", list = later.join(&semicolon)));
         }
         return text;
     }
     let cleared = match buffer {
-        Buffer::Frame => words!("cleared-frame", value = scene.background),
-        Buffer::Depth => words!("cleared-depth", value = scene.clear_depth.to_string()),
+        Buffer::Frame => words!(lang, "cleared-frame", value = scene.background),
+        Buffer::Depth => words!(lang, "cleared-depth", value = scene.clear_depth.text(lang)),
     };
     let covered: Vec<String> = history
         .iter()
         .filter_map(|entry| {
             entry.pixel.as_ref().map(|p| {
-                words!("why-covered-item", polygon = polygon_name(scene, entry.index), reason = pixel_reason(scene, p))
+                words!(lang, "why-covered-item", polygon = polygon_name(lang, scene, entry.index), reason = pixel_reason(lang, scene, p))
             })
         })
         .collect();
     if !covered.is_empty() {
-        return words!("why-nothing-written", x = x, y = y, list = covered.join(&semicolon), cleared = cleared);
+        return words!(lang, "why-nothing-written", x = x, y = y, list = covered.join(&semicolon), cleared = cleared);
     }
     let reaching: Vec<String> = history
         .iter()
-        .filter_map(|entry| entry.scanline.as_ref().map(|s| spans_of(s, &polygon_name(scene, entry.index))))
+        .filter_map(|entry| entry.scanline.as_ref().map(|s| spans_of(lang, s, &polygon_name(lang, scene, entry.index))))
         .collect();
     if reaching.is_empty() {
-        words!("why-none-reaches", x = x, y = y, scanline = scanline_text(y), cleared = cleared)
+        words!(lang, "why-none-reaches", x = x, y = y, scanline = scanline_text(lang, y), cleared = cleared)
     } else {
-        words!(
+        words!(lang, 
             "why-not-covered",
             x = x,
             y = y,
-            scanline = scanline_text(y),
-            list = reaching.join(&words!("list-and")),
+            scanline = scanline_text(lang, y),
+            list = reaching.join(&words!(lang, "list-and")),
             cleared = cleared
         )
     }

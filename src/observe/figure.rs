@@ -60,12 +60,12 @@ pub struct Extras {
 
 /// Draws the buffers after polygon `last` (0-based): polygons `0 ..= last`
 /// are outlined. The raster must be at most [`MAX_FIGURE_SIDE`] on a side.
-pub fn svg(scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, title: &str) -> String {
-    svg_with(scene, buffers, last, shading, title, &Extras::default())
+pub fn svg(lang: crate::words::Lang, scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, title: &str) -> String {
+    svg_with(lang, scene, buffers, last, shading, title, &Extras::default())
 }
 
 /// Like [`svg`], with vertex labels and a caption.
-pub fn svg_with(
+pub fn svg_with(lang: crate::words::Lang,
     scene: &Scene,
     buffers: &Buffers,
     last: usize,
@@ -88,7 +88,7 @@ pub fn svg_with(
     // The title wraps too (font size 13: about 7.5 units a character); the raster starts below it.
     let title_lines = wrap(&[title.to_string()], ((total_width - left - 8) * 2 / 15).max(20) as usize);
     let top = MARGIN_TOP + 18 * (title_lines.len() as i128 - 1);
-    let legend = legend(scene, buffers, shading);
+    let legend = legend(lang, scene, buffers, shading);
     let total_height = top + height * CELL + MARGIN_BOTTOM + LEGEND + caption_height;
     // Pixel-unit point to SVG coordinates: x right, y up (flipped).
     let sx = |x: Q| decimal(Q::from_integer(left) + x * CELL, 2);
@@ -121,15 +121,15 @@ pub fn svg_with(
             }
             if let Some(fill) = fill {
                 let what = if end - x == 1 {
-                    words!(
+                    words!(lang, 
                         "figure-cell",
                         x = x,
                         y = y,
                         frame = buffers.frame(x, y),
-                        depth = buffers.depth(x, y).to_string()
+                        depth = buffers.depth(x, y).text(lang)
                     )
                 } else {
-                    words!("figure-cells", from = x, to = end - 1, y = y, frame = buffers.frame(x, y))
+                    words!(lang, "figure-cells", from = x, to = end - 1, y = y, frame = buffers.frame(x, y))
                 };
                 let _ = writeln!(
                     out,
@@ -181,7 +181,7 @@ pub fn svg_with(
         let points: Vec<String> = polygon.vertices().iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect();
         // An unnamed polygon is labelled by its number alone, titled in the reader's language.
         let unnamed = crate::words::is_default_name(&polygon.name, index);
-        let title = if unnamed { crate::observe::explain::polygon_name(scene, index) } else { polygon.name.clone() };
+        let title = if unnamed { crate::observe::explain::polygon_name(lang, scene, index) } else { polygon.name.clone() };
         let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));
     }
     let _ = writeln!(out, "</g>");
@@ -211,10 +211,10 @@ pub fn svg_with(
     }
     let _ = writeln!(out, "</g>");
     if extras.values {
-        cell_values(&mut out, scene, buffers, shading, (&sx, &sy));
+        cell_values(lang, &mut out, scene, buffers, shading, (&sx, &sy));
     }
     if extras.vertex_labels {
-        vertex_labels(&mut out, scene, last, (&vx, &vy));
+        vertex_labels(lang, &mut out, scene, last, (&vx, &vy));
     }
     // Axes: column numbers below, row numbers on the left.
     let step = if width.max(height) > 64 {
@@ -235,7 +235,7 @@ pub fn svg_with(
         r#"<text x="{}" y="{}">{}</text>"#,
         sx(Q::new(width, 2)),
         decimal(Q::from_integer(top + height * CELL + 30), 2),
-        escape(&words!("figure-axis-x"))
+        escape(&words!(lang, "figure-axis-x"))
     );
     for row in (0..height).step_by(step) {
         let _ = writeln!(
@@ -282,7 +282,7 @@ fn text_width(label: &str) -> i128 {
 
 /// The legend's entries, `(fill, label)`: each framebuffer value present
 /// (the background first), or for depth shading the far and near ends.
-fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, String)> {
+fn legend(lang: crate::words::Lang, scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, String)> {
     match shading {
         Shading::Frame => {
             let mut values: Vec<u32> = buffers.frame_rows().into_iter().flatten().collect();
@@ -295,9 +295,9 @@ fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, St
                 .into_iter()
                 .map(|v| {
                     if v == scene.background {
-                        ("#ffffff".to_string(), words!("figure-background", value = v))
+                        ("#ffffff".to_string(), words!(lang, "figure-background", value = v))
                     } else {
-                        (frame_fill(scene, v), value_label(scene, v))
+                        (frame_fill(scene, v), value_label(lang, scene, v))
                     }
                 })
                 .collect()
@@ -305,9 +305,9 @@ fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, St
         Shading::Depth => {
             let larger_nearer = if scene.depth_test.larger_is_nearer() { "yes" } else { "no" };
             vec![
-                ("#ffffff".to_string(), words!("figure-cleared", value = scene.clear_depth.to_string())),
-                ("#e6e6e6".to_string(), words!("figure-far", larger_nearer = larger_nearer)),
-                ("#3c3c3c".to_string(), words!("figure-near", larger_nearer = larger_nearer)),
+                ("#ffffff".to_string(), words!(lang, "figure-cleared", value = scene.clear_depth.text(lang))),
+                ("#e6e6e6".to_string(), words!(lang, "figure-far", larger_nearer = larger_nearer)),
+                ("#3c3c3c".to_string(), words!(lang, "figure-near", larger_nearer = larger_nearer)),
             ]
         }
     }
@@ -315,19 +315,19 @@ fn legend(scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, St
 
 /// A framebuffer value's legend label, naming the polygons that write it
 /// (up to two; more are counted).
-fn value_label(scene: &Scene, value: u32) -> String {
+fn value_label(lang: crate::words::Lang, scene: &Scene, value: u32) -> String {
     let names: Vec<String> =
         scene.polygons.iter().filter(|p| p.value == value).map(|p| format!("\"{}\"", p.name)).collect();
     let names = match names.len() {
-        0 => return words!("figure-value", value = value),
-        1 | 2 => names.join(&words!("list-comma")),
-        count => words!("figure-polygons", count = count),
+        0 => return words!(lang, "figure-value", value = value),
+        1 | 2 => names.join(&words!(lang, "list-comma")),
+        count => words!(lang, "figure-polygons", count = count),
     };
-    words!("figure-value-named", value = value, names = names)
+    words!(lang, "figure-value-named", value = value, names = names)
 }
 
 /// Each cell's value written in its pixel: black on light fills, white on dark.
-fn cell_values(
+fn cell_values(lang: crate::words::Lang,
     out: &mut String,
     scene: &Scene,
     buffers: &Buffers,
@@ -343,7 +343,7 @@ fn cell_values(
                 Shading::Depth => {
                     let text = match buffers.depth(x, y) {
                         Stored::Level(level) => level.to_string(),
-                        Stored::Exact(value) => short(value),
+                        Stored::Exact(value) => short(lang, value),
                     };
                     (text, cell_fill(scene, buffers, x, y, shading, &range))
                 }
@@ -367,7 +367,7 @@ fn is_dark(fill: &str) -> bool {
 /// Each vertex of polygons `0 ..= last` labelled `(x, y, z)`, set off from
 /// the vertex away from its polygon's middle, on a white halo so that the
 /// label stays readable over lines.
-fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&ToSvg, &ToSvg)) {
+fn vertex_labels(lang: crate::words::Lang, out: &mut String, scene: &Scene, last: usize, (sx, sy): (&ToSvg, &ToSvg)) {
     let _ = writeln!(
         out,
         r#"<g id="vertices" font-size="10" fill="black" stroke="white" stroke-width="3" paint-order="stroke">"#
@@ -384,7 +384,7 @@ fn vertex_labels(out: &mut String, scene: &Scene, last: usize, (sx, sy): (&ToSvg
             let below = labelled.iter().filter(|p| **p == point).count() as i128;
             labelled.push(point);
             let dy = if v[1] < middle_y { Q::new(-1, 2) } else { Q::new(1, 4) } - Q::new(below, 2);
-            let label = format!("({})", v.each_ref().map(short).join(coordinate_separator()));
+            let label = format!("({})", v.each_ref().map(|c| short(lang, c)).join(coordinate_separator(lang)));
             let _ = writeln!(
                 out,
                 r#"<circle cx="{}" cy="{}" r="2.5" stroke="none"/><text x="{}" y="{}" text-anchor="{anchor}">{}</text>"#,
@@ -554,8 +554,8 @@ fn wrap(lines: &[String], width: usize) -> Vec<String> {
 
 /// Between a point's coordinates: `, `, or `; ` where the decimal separator
 /// is a comma (`(12,5; 3; 0,25)` in Russian), as `explain` writes centres.
-fn coordinate_separator() -> &'static str {
-    if crate::words::language().decimal_separator() == ',' { "; " } else { ", " }
+fn coordinate_separator(lang: crate::words::Lang) -> &'static str {
+    if lang.decimal_separator() == ',' { "; " } else { ", " }
 }
 
 /// Whether a character is one of Chinese's wide ones (from U+2E80 on),

@@ -204,32 +204,32 @@ pub const LISTED_ALL: usize = 50;
 impl PixelHistory {
     /// The history in the reader's language, one fact a line, as `zsim
     /// explain` prints it; `file` names the scene in the heading.
-    pub fn text(&self, scene: &Scene, file: &Path) -> String {
+    pub fn text(&self, lang: crate::words::Lang, scene: &Scene, file: &Path) -> String {
         let (x, y) = self.pixel;
-        let centre = |v: u32| exact_and_decimal(Q::new(2 * i128::from(v) + 1, 2));
-        let mut text = words!(
+        let centre = |v: u32| exact_and_decimal(lang, Q::new(2 * i128::from(v) + 1, 2));
+        let mut text = words!(lang, 
             "explain-heading",
             x = x,
             y = y,
             file = file.display().to_string(),
             cx = centre(x),
             cy = centre(y),
-            test = scene.depth_test.local_name(),
-            rule = scene.depth_test.rule_text()
+            test = scene.depth_test.local_name(lang),
+            rule = scene.depth_test.rule_text(lang)
         ) + "\n";
         if let Some(section) = scene.effects.section {
             let line =
-                words!("explain-section", op = scene.depth_test.section_symbol(), section = depth_text(scene, section));
+                words!(lang, "explain-section", op = scene.depth_test.section_symbol(), section = depth_text(lang, scene, section));
             text.push_str(&format!("{line}\n"));
         }
         if scene.rules.sample == crate::rules::Sample::Corner {
-            text.push_str(&words!("explain-corner-sample", x = x, y = y));
+            text.push_str(&words!(lang, "explain-corner-sample", x = x, y = y));
             text.push('\n');
         }
-        text.push_str(&words!("explain-start", frame = scene.background, depth = scene.clear_depth.to_string()));
+        text.push_str(&words!(lang, "explain-start", frame = scene.background, depth = scene.clear_depth.text(lang)));
         text.push('\n');
         if let Some(segment) = &self.segment {
-            text.push_str(&segment_text(scene, segment));
+            text.push_str(&segment_text(lang, scene, segment));
         }
         // A large scene (a model of thousands of faces): only the polygons that
         // reach the pixel's scanline are told, the others counted.
@@ -245,35 +245,35 @@ impl PixelHistory {
                 }
                 continue;
             }
-            let line = words!(
+            let line = words!(lang, 
                 "polygon-line",
-                polygon = polygon_name(scene, entry.index),
-                text = entry_text(scene, x, y, entry)
+                polygon = polygon_name(lang, scene, entry.index),
+                text = entry_text(lang, scene, x, y, entry)
             );
             text.push_str(&line);
             text.push('\n');
             if let Some(inside) = &step.inside {
-                text.push_str(&format!("  {}\n", inside_text(inside)));
+                text.push_str(&format!("  {}\n", inside_text(lang, inside)));
             }
         }
         if not_drawn + off_row > 0 {
-            text.push_str(&words!("explain-others", count = not_drawn + off_row, skipped = not_drawn, off = off_row));
+            text.push_str(&words!(lang, "explain-others", count = not_drawn + off_row, skipped = not_drawn, off = off_row));
             text.push('\n');
         }
         let (frame, depth) = &self.last;
-        text.push_str(&words!("explain-final", frame = *frame, depth = depth.to_string()));
+        text.push_str(&words!(lang, "explain-final", frame = *frame, depth = depth.text(lang)));
         text.push('\n');
         if let Some(antialias) = &self.antialias {
-            text.push_str(&antialias_text(scene, antialias));
+            text.push_str(&antialias_text(lang, scene, antialias));
         }
         if let Some((mode, frame, depth)) = &self.arith {
             let same = (*frame, depth) == (self.last.0, &self.last.1);
-            let line = words!(
+            let line = words!(lang, 
                 "explain-arith",
                 arith = mode.to_string(),
                 frame = frame.to_string(),
-                depth = depth.to_string(),
-                verdict = if same { words!("explain-arith-same") } else { words!("explain-arith-differs") }
+                depth = depth.text(lang),
+                verdict = if same { words!(lang, "explain-arith-same") } else { words!(lang, "explain-arith-differs") }
             );
             text.push_str(&format!("{line}\n"));
         }
@@ -282,24 +282,24 @@ impl PixelHistory {
 }
 
 /// The two point-in-polygon tests at the centre, in words.
-fn inside_text(tests: &InsideTests) -> String {
-    let side = |inside: bool| if inside { words!("explain-inside-in") } else { words!("explain-inside-out") };
+fn inside_text(lang: crate::words::Lang, tests: &InsideTests) -> String {
+    let side = |inside: bool| if inside { words!(lang, "explain-inside-in") } else { words!(lang, "explain-inside-out") };
     let arc = match tests.arc {
-        (_, ArcDifference::OnBoundary) => words!("explain-arc-boundary"),
+        (_, ArcDifference::OnBoundary) => words!(lang, "explain-arc-boundary"),
         (inside, ArcDifference::Winding(w)) => {
-            words!("explain-arc-winding", winding = w.to_string(), inside = side(inside))
+            words!(lang, "explain-arc-winding", winding = w.to_string(), inside = side(inside))
         }
     };
-    words!("explain-inside", ray = side(tests.ray), arc = arc)
+    words!(lang, "explain-inside", ray = side(tests.ray), arc = arc)
 }
 
 /// The segment holding the pixel and the polygons it visits, in words.
-fn segment_text(scene: &Scene, segment: &SegmentFacts) -> String {
+fn segment_text(lang: crate::words::Lang, scene: &Scene, segment: &SegmentFacts) -> String {
     let SegmentFacts { segments, number, count, rect, visited } = segment;
-    let visited: Vec<String> = visited.iter().map(|&i| polygon_name(scene, i)).collect();
-    let visited = if visited.is_empty() { words!("explain-segment-none") } else { visited.join(", ") };
+    let visited: Vec<String> = visited.iter().map(|&i| polygon_name(lang, scene, i)).collect();
+    let visited = if visited.is_empty() { words!(lang, "explain-segment-none") } else { visited.join(", ") };
     let cells = u64::from(rect.columns.1 - rect.columns.0 + 1) * u64::from(rect.rows.1 - rect.rows.0 + 1);
-    words!(
+    words!(lang, 
         "explain-segment",
         number = (number + 1).to_string(),
         count = count.to_string(),
@@ -314,28 +314,28 @@ fn segment_text(scene: &Scene, segment: &SegmentFacts) -> String {
 }
 
 /// What antialiasing did at the pixel, in words.
-fn antialias_text(scene: &Scene, facts: &AntialiasFacts) -> String {
+fn antialias_text(lang: crate::words::Lang, scene: &Scene, facts: &AntialiasFacts) -> String {
     let k = facts.samples;
-    let mut text = words!("explain-antialias", k = k.to_string()) + "\n";
+    let mut text = words!(lang, "explain-antialias", k = k.to_string()) + "\n";
     match &facts.detail {
         AntialiasDetail::Samples(big, samples) => {
             for sample in samples {
-                let line = words!(
+                let line = words!(lang, 
                     "explain-sample",
                     i = sample.within.0.to_string(),
                     j = sample.within.1.to_string(),
-                    x = exact_and_decimal(sample.at.0),
-                    y = exact_and_decimal(sample.at.1),
+                    x = exact_and_decimal(lang, sample.at.0),
+                    y = exact_and_decimal(lang, sample.at.1),
                     frame = sample.frame.to_string(),
-                    depth = sample.depth.to_string()
+                    depth = sample.depth.text(lang)
                 );
                 text.push_str(&format!("{line}\n"));
                 let (sx, sy) = sample.sample;
                 for entry in &sample.entries {
-                    let line = words!(
+                    let line = words!(lang, 
                         "polygon-line",
-                        polygon = polygon_name(scene, entry.index),
-                        text = entry_text(big, sx, sy, entry)
+                        polygon = polygon_name(lang, scene, entry.index),
+                        text = entry_text(lang, big, sx, sy, entry)
                     );
                     text.push_str(&format!("  {line}\n"));
                 }
@@ -346,14 +346,14 @@ fn antialias_text(scene: &Scene, facts: &AntialiasFacts) -> String {
                 let samples: Vec<String> = note.samples.iter().map(|(i, j)| format!("({i}, {j})")).collect();
                 let d = &note.decision;
                 let result = match d.outcome {
-                    Outcome::Written => words!("explain-pixel-mode-written", stored = d.stored.to_string()),
-                    _ => words!("explain-pixel-mode-not-written"),
+                    Outcome::Written => words!(lang, "explain-pixel-mode-written", stored = d.stored.text(lang)),
+                    _ => words!(lang, "explain-pixel-mode-not-written"),
                 };
-                let line = words!(
+                let line = words!(lang, 
                     "explain-pixel-mode",
-                    polygon = polygon_name(scene, note.index),
+                    polygon = polygon_name(lang, scene, note.index),
                     samples = samples.join(" "),
-                    depth = depth_text(scene, d.compared.value()),
+                    depth = depth_text(lang, scene, d.compared.value()),
                     result = result
                 );
                 text.push_str(&format!("{line}\n"));
@@ -361,7 +361,7 @@ fn antialias_text(scene: &Scene, facts: &AntialiasFacts) -> String {
         }
     }
     if let Some((frame, depth)) = &facts.mean {
-        let line = words!("explain-mean", frame = fraction(*frame), depth = fraction(depth));
+        let line = words!(lang, "explain-mean", frame = fraction(*frame), depth = fraction(depth));
         text.push_str(&format!("{line}\n"));
     }
     text

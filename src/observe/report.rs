@@ -35,9 +35,9 @@ use crate::simulate::stages::describe as stages;
 
 /// The lines that open a text report: the scene's size, bit depths, test,
 /// the stages that run and the effects asked for.
-pub fn scene_header(scene: &Scene, path: &str) -> String {
+pub fn scene_header(lang: crate::words::Lang, scene: &Scene, path: &str) -> String {
     let effects = scene.effects.names();
-    let header = words!(
+    let header = words!(lang, 
         "scene-header",
         path = path,
         width = scene.width.to_string(),
@@ -45,54 +45,54 @@ pub fn scene_header(scene: &Scene, path: &str) -> String {
         frame_bits = scene.frame_bits.to_string(),
         depth_bits = scene.depth_bits.to_string(),
         depth_max = scene.depth_max().to_string(),
-        test = scene.depth_test.local_name(),
-        rule = scene.depth_test.rule_text(),
-        clear = scene.clear_depth.to_string()
+        test = scene.depth_test.local_name(lang),
+        rule = scene.depth_test.rule_text(lang),
+        clear = scene.clear_depth.text(lang)
     );
-    let effects = if effects.is_empty() { words!("effects-none") } else { effects.join(", ") };
+    let effects = if effects.is_empty() { words!(lang, "effects-none") } else { effects.join(", ") };
     format!(
         "{header}\n{}\n{}\n",
-        words!("scene-stages", stages = stages(scene).join(" → ")),
-        words!("scene-effects", effects = effects)
+        words!(lang, "scene-stages", stages = stages(lang, scene).join(" → ")),
+        words!(lang, "scene-effects", effects = effects)
     )
 }
 
 /// One line naming a polygon, its value, its plane and what happens to it:
 /// `polygon 2 "triangle" (value 2): plane 3x + y + 4z - 120 = 0, counter-clockwise`.
-pub fn polygon_heading(scene: &Scene, index: usize) -> String {
+pub fn polygon_heading(lang: crate::words::Lang, scene: &Scene, index: usize) -> String {
     let polygon = &scene.polygons[index];
     let geometry = polygon.geometry();
-    let start = words!(
+    let start = words!(lang, 
         "heading-start",
-        polygon = crate::observe::explain::polygon_name(scene, index),
+        polygon = crate::observe::explain::polygon_name(lang, scene, index),
         value = polygon.value.to_string()
     );
     let plane = geometry.plane().to_string();
     match fate(scene, index) {
-        Fate::Degenerate => words!("heading-degenerate", start = start),
-        Fate::ClippedAway => words!("heading-clipped-away", start = start),
-        Fate::OutsideView => words!("heading-outside-view", start = start),
-        Fate::EdgeOn => words!("heading-edge-on", start = start, plane = plane),
-        Fate::SmallArea => words!("heading-small-area", start = start, plane = plane),
-        Fate::Culled(winding) => words!(
+        Fate::Degenerate => words!(lang, "heading-degenerate", start = start),
+        Fate::ClippedAway => words!(lang, "heading-clipped-away", start = start),
+        Fate::OutsideView => words!(lang, "heading-outside-view", start = start),
+        Fate::EdgeOn => words!(lang, "heading-edge-on", start = start, plane = plane),
+        Fate::SmallArea => words!(lang, "heading-small-area", start = start, plane = plane),
+        Fate::Culled(winding) => words!(lang, 
             "heading-culled",
             start = start,
             plane = plane,
-            winding = crate::observe::explain::winding_text(winding),
+            winding = crate::observe::explain::winding_text(lang, winding),
             cull = winding.name()
         ),
         Fate::Drawn => {
             let winding = Winding::of(geometry.c()).map_or(String::new(), |w| {
-                words!("heading-winding", winding = crate::observe::explain::winding_text(w))
+                words!(lang, "heading-winding", winding = crate::observe::explain::winding_text(lang, w))
             });
             let clipped = match polygon.clip {
-                Clip::Kept { front, of } if front < of => words!(
+                Clip::Kept { front, of } if front < of => words!(lang, 
                     "heading-clipped",
                     front = front.to_string(),
                     of = of.to_string(),
                     n = polygon.vertices().len().to_string()
                 ),
-                Clip::View { inside, of } => words!(
+                Clip::View { inside, of } => words!(lang, 
                     "heading-view",
                     inside = inside.to_string(),
                     of = of.to_string(),
@@ -102,9 +102,9 @@ pub fn polygon_heading(scene: &Scene, index: usize) -> String {
             };
             let opacity = polygon
                 .opacity
-                .map_or(String::new(), |a| words!("heading-opacity", alpha = crate::numbers::fraction(a)));
+                .map_or(String::new(), |a| words!(lang, "heading-opacity", alpha = crate::numbers::fraction(a)));
             let key = if polygon.eye_vertices.is_some() { "heading-drawn-projected" } else { "heading-drawn" };
-            words!(key, start = start, plane = plane, winding = winding, opacity = opacity, clipped = clipped)
+            words!(lang, key, start = start, plane = plane, winding = winding, opacity = opacity, clipped = clipped)
         }
     }
 }

@@ -37,18 +37,18 @@ pub enum Skip {
 }
 
 /// A [`Skip`] in one line of the reader's language.
-pub fn skip_text(scene: &Scene, skip: &Skip) -> String {
-    let name = |polygon: usize| crate::observe::explain::polygon_name(scene, polygon);
+pub fn skip_text(lang: crate::words::Lang, scene: &Scene, skip: &Skip) -> String {
+    let name = |polygon: usize| crate::observe::explain::polygon_name(lang, scene, polygon);
     match *skip {
         Skip::NotDrawn { polygon, fate } => {
-            words!("step-skip-fate", polygon = name(polygon), why = fate_text(fate).unwrap_or_default())
+            words!(lang, "step-skip-fate", polygon = name(polygon), why = fate_text(lang, fate).unwrap_or_default())
         }
-        Skip::NoScanline { polygon } => words!("step-skip-no-scanline", polygon = name(polygon)),
+        Skip::NoScanline { polygon } => words!(lang, "step-skip-no-scanline", polygon = name(polygon)),
         Skip::NoCentre { polygon, row, crossings: true } => {
-            words!("step-skip-no-centre", polygon = name(polygon), scanline = scanline_text(row))
+            words!(lang, "step-skip-no-centre", polygon = name(polygon), scanline = scanline_text(lang, row))
         }
         Skip::NoCentre { polygon, row, crossings: false } => {
-            words!("step-skip-no-centre-no-crossings", polygon = name(polygon), scanline = scanline_text(row))
+            words!(lang, "step-skip-no-centre-no-crossings", polygon = name(polygon), scanline = scanline_text(lang, row))
         }
     }
 }

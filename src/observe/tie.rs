@@ -32,13 +32,13 @@ pub enum Boundary {
 
 impl Boundary {
     /// The words for it: "left edge", "vertex", ….
-    pub fn words(self) -> String {
+    pub fn words(self, lang: crate::words::Lang) -> String {
         match self {
-            Boundary::TopEdge => words!("boundary-top"),
-            Boundary::BottomEdge => words!("boundary-bottom"),
-            Boundary::LeftEdge => words!("boundary-left"),
-            Boundary::RightEdge => words!("boundary-right"),
-            Boundary::Vertex => words!("boundary-vertex"),
+            Boundary::TopEdge => words!(lang, "boundary-top"),
+            Boundary::BottomEdge => words!(lang, "boundary-bottom"),
+            Boundary::LeftEdge => words!(lang, "boundary-left"),
+            Boundary::RightEdge => words!(lang, "boundary-right"),
+            Boundary::Vertex => words!(lang, "boundary-vertex"),
         }
     }
 }
@@ -190,36 +190,37 @@ pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
 
 /// Which of a rule set's choices decides a centre on this kind of boundary,
 /// in words: "the book's column rule (centres in [x_l, x_r], ends included)", ….
-fn deciding_rule(rules: Rules, boundary: Boundary) -> String {
+fn deciding_rule(lang: crate::words::Lang, rules: Rules, boundary: Boundary) -> String {
     use crate::rules::{ColumnRule, RowRule};
     match boundary {
         Boundary::LeftEdge | Boundary::RightEdge => match rules.columns {
-            ColumnRule::CentreInside => words!("rule-columns-centre"),
-            ColumnRule::CellHolds => words!("rule-columns-cell"),
-            ColumnRule::HalfOpen => words!("rule-columns-half-open"),
+            ColumnRule::CentreInside => words!(lang, "rule-columns-centre"),
+            ColumnRule::CellHolds => words!(lang, "rule-columns-cell"),
+            ColumnRule::HalfOpen => words!(lang, "rule-columns-half-open"),
         },
         Boundary::TopEdge | Boundary::BottomEdge | Boundary::Vertex => match rules.rows {
-            RowRule::HalfOpen => words!("rule-rows-half-open"),
-            RowRule::Closed => words!("rule-rows-closed"),
-            RowRule::TopLeft => words!("rule-rows-top-left"),
+            RowRule::HalfOpen => words!(lang, "rule-rows-half-open"),
+            RowRule::Closed => words!(lang, "rule-rows-closed"),
+            RowRule::TopLeft => words!(lang, "rule-rows-top-left"),
         },
     }
 }
 
 /// One sentence on a centre exactly on a polygon's boundary and the rule
 /// that decides it, or `None` when pixel (x, y)'s centre is not on it.
-pub fn tie_text(rules: Rules, vertices: &[[Exact; 3]], x: u32, y: u32) -> Option<String> {
+pub fn tie_text(lang: crate::words::Lang, rules: Rules, vertices: &[[Exact; 3]], x: u32, y: u32) -> Option<String> {
     let (boundary, a, b) = boundary_at(vertices, x, y)?;
     let point = |[x, y]: [Exact; 2]| format!("({}, {})", crate::numbers::fraction(x), crate::numbers::fraction(y));
-    let place = boundary.words();
+    let place = boundary.words(lang);
     Some(match rule_covers(rules, boundary) {
-        None => words!("tie-vertex", point = point(a), rule = deciding_rule(rules, boundary)),
+        None => words!(lang, "tie-vertex", point = point(a), rule = deciding_rule(lang, rules, boundary)),
         Some(covers) => words!(
+            lang,
             if covers { "tie-edge-in" } else { "tie-edge-out" },
             boundary = place,
             a = point(a),
             b = point(b),
-            rule = deciding_rule(rules, boundary)
+            rule = deciding_rule(lang, rules, boundary)
         ),
     })
 }

@@ -42,14 +42,14 @@ impl Stored {
     }
 }
 
-impl std::fmt::Display for Stored {
+impl Stored {
     /// A level as an integer (`11`); an exact value with 6 decimals
-    /// (`4876543/5000000 ≈ 0.975309`), as the exact store is used for depths
-    /// in small ranges.
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+    /// (`4876543/5000000 ≈ 0.975309`, the separator `lang`'s), as the exact
+    /// store is used for depths in small ranges.
+    pub fn text(&self, lang: crate::words::Lang) -> String {
         match self {
-            Stored::Level(level) => write!(f, "{level}"),
-            Stored::Exact(value) => f.write_str(&exact_and_places(value, 6)),
+            Stored::Level(level) => level.to_string(),
+            Stored::Exact(value) => exact_and_places(lang, value, 6),
         }
     }
 }
@@ -137,24 +137,24 @@ impl DepthTest {
 
     /// The rule in a heading's words: `z > stored`, or `every fragment
     /// passes`, `no fragment passes`.
-    pub fn rule_text(self) -> String {
+    pub fn rule_text(self, lang: crate::words::Lang) -> String {
         match self {
-            DepthTest::Always => words!("rule-always"),
-            DepthTest::Never => words!("rule-never"),
-            other => words!("rule-compared", op = other.symbol()),
+            DepthTest::Always => words!(lang, "rule-always"),
+            DepthTest::Never => words!(lang, "rule-never"),
+            other => words!(lang, "rule-compared", op = other.symbol()),
         }
     }
 
     /// A test's outcome in words, for `z` against `stored`: `43/4 > 10
     /// stored`, `43/4 is not > 10 stored`, or for the tests that compare
     /// nothing `43/4 (always passes; 10 stored)`.
-    pub fn outcome_text(self, z: &str, stored: &str, passed: bool) -> String {
+    pub fn outcome_text(self, lang: crate::words::Lang, z: &str, stored: &str, passed: bool) -> String {
         match (self, passed) {
             (DepthTest::Always | DepthTest::Never, _) => {
-                words!("test-uncompared", z = z, test = self.symbol(), stored = stored)
+                words!(lang, "test-uncompared", z = z, test = self.symbol(), stored = stored)
             }
-            (_, true) => words!("test-passed", z = z, op = self.symbol(), stored = stored),
-            (_, false) => words!("test-failed", z = z, op = self.symbol(), stored = stored),
+            (_, true) => words!(lang, "test-passed", z = z, op = self.symbol(), stored = stored),
+            (_, false) => words!(lang, "test-failed", z = z, op = self.symbol(), stored = stored),
         }
     }
 
@@ -172,8 +172,8 @@ impl DepthTest {
 
     /// The test's name in the reader's language (the scene file's keyword
     /// is [`DepthTest::name`]).
-    pub fn local_name(self) -> String {
-        crate::words::text(&format!("depth-test-{}", self.name()), &[])
+    pub fn local_name(self, lang: crate::words::Lang) -> String {
+        crate::words::text(lang, &format!("depth-test-{}", self.name()), &[])
     }
 
     /// Whether a depth lies on the kept side of a cross-section at `section`

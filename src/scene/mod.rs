@@ -341,14 +341,14 @@ impl Scene {
     }
 
     /// Reads and validates a scene file.
-    pub fn load(path: &Path) -> Result<Scene, Error> {
-        let text = crate::scene::text::read_text(path)?;
-        Scene::from_json(&text, path)
+    pub fn load(lang: crate::words::Lang, path: &Path) -> Result<Scene, Error> {
+        let text = crate::scene::text::read_text(lang, path)?;
+        Scene::from_json(lang, &text, path)
     }
 
     /// Validates scene JSON; `path` is used in error messages only.
-    pub fn from_json(text: &str, path: &Path) -> Result<Scene, Error> {
-        crate::scene::file::read(text, path)
+    pub fn from_json(lang: crate::words::Lang, text: &str, path: &Path) -> Result<Scene, Error> {
+        crate::scene::file::read(lang, text, path)
     }
 
     /// Finds a polygon by 1-based number or by name.

@@ -135,13 +135,13 @@ pub enum StageSet {
 }
 
 /// The stages that run for this scene, in order, in words.
-pub fn describe(scene: &Scene) -> Vec<String> {
+pub fn describe(lang: crate::words::Lang, scene: &Scene) -> Vec<String> {
     let mut stages = Vec::new();
     if let Some(winding) = scene.effects.cull {
-        stages.push(words!("stage-cull", winding = winding.name()));
+        stages.push(words!(lang, "stage-cull", winding = winding.name()));
     }
     if let Some(perspective) = scene.effects.perspective {
-        stages.push(words!(
+        stages.push(words!(lang, 
             "stage-near-plane",
             near = fraction(perspective.near_plane()),
             eye = fraction(perspective.distance)
@@ -149,10 +149,10 @@ pub fn describe(scene: &Scene) -> Vec<String> {
     }
     if let Some(antialias) = scene.effects.antialias {
         let key = if antialias.depth_at_samples { "stage-supersampling-sample" } else { "stage-supersampling-pixel" };
-        stages.push(words!(key, k = antialias.samples.to_string()));
+        stages.push(words!(lang, key, k = antialias.samples.to_string()));
     }
     if let Some(window) = scene.window {
-        stages.push(words!(
+        stages.push(words!(lang, 
             "stage-window",
             left = fraction(window.left),
             right = fraction(window.right),
@@ -161,27 +161,27 @@ pub fn describe(scene: &Scene) -> Vec<String> {
         ));
     }
     stages.push(match scene.rules.rows {
-        RowRule::HalfOpen => words!("stage-scan"),
-        RowRule::Closed => words!("stage-scan-closed"),
-        RowRule::TopLeft => words!("stage-scan-top-left"),
+        RowRule::HalfOpen => words!(lang, "stage-scan"),
+        RowRule::Closed => words!(lang, "stage-scan-closed"),
+        RowRule::TopLeft => words!(lang, "stage-scan-top-left"),
     });
     if let Some((front, rear)) = scene.depth_range {
-        stages.push(words!("stage-depth-range", front = fraction(front), rear = fraction(rear)));
+        stages.push(words!(lang, "stage-depth-range", front = fraction(front), rear = fraction(rear)));
     }
     if scene.effects.perspective.is_some_and(|p| p.store_w) {
-        stages.push(words!("stage-w-buffer"));
+        stages.push(words!(lang, "stage-w-buffer"));
     }
-    stages.push(words!("stage-depth-test", rule = scene.depth_test.rule_text()));
+    stages.push(words!(lang, "stage-depth-test", rule = scene.depth_test.rule_text(lang)));
     if let Some(section) = scene.effects.section {
-        stages.push(words!("stage-section", op = scene.depth_test.section_symbol(), section = fraction(section)));
+        stages.push(words!(lang, "stage-section", op = scene.depth_test.section_symbol(), section = fraction(section)));
     }
     if scene.effects.transparency {
-        stages.push(words!("stage-blend"));
+        stages.push(words!(lang, "stage-blend"));
     }
     stages.push(match scene.rules.store {
-        DepthStore::Quantized => words!("stage-store-quantized", max = scene.depth_max().to_string()),
-        DepthStore::Truncated => words!("stage-store-truncated", max = scene.depth_max().to_string()),
-        DepthStore::Exact => words!("stage-store-exact"),
+        DepthStore::Quantized => words!(lang, "stage-store-quantized", max = scene.depth_max().to_string()),
+        DepthStore::Truncated => words!(lang, "stage-store-truncated", max = scene.depth_max().to_string()),
+        DepthStore::Exact => words!(lang, "stage-store-exact"),
     });
     stages
 }

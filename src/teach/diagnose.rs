@@ -81,8 +81,8 @@ impl Misconception {
     }
 
     /// What the student did, in the reader's language.
-    pub fn words(self) -> String {
-        words!(&format!("misconception-{}", self.name()))
+    pub fn words(self, lang: crate::words::Lang) -> String {
+        words!(lang, &format!("misconception-{}", self.name()))
     }
 }
 
@@ -99,8 +99,8 @@ pub struct Diagnosis {
 
 impl Diagnosis {
     /// One sentence: the rule and how many wrong cells it explains.
-    pub fn words(&self) -> String {
-        words!("diagnosis", what = self.misconception.words(), explained = self.explained, wrong = self.wrong)
+    pub fn words(&self, lang: crate::words::Lang) -> String {
+        words!(lang, "diagnosis", what = self.misconception.words(lang), explained = self.explained, wrong = self.wrong)
     }
 }
 

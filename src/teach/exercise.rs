@@ -93,8 +93,8 @@ pub struct Found {
 
 /// The cases the run of `scene` meets, each at the first place it meets it,
 /// in [`HardCase::ALL`] order.
-pub fn find_cases(scene: &Scene) -> Vec<Found> {
-    let mut finder = CaseFinder::new(scene);
+pub fn find_cases(lang: crate::words::Lang, scene: &Scene) -> Vec<Found> {
+    let mut finder = CaseFinder::new(lang, scene);
     Simulation::new(scene).finish(&mut finder);
     let mut found = finder.found;
     found.sort_by_key(|f| f.case);
@@ -103,6 +103,7 @@ pub fn find_cases(scene: &Scene) -> Vec<Found> {
 
 /// Watches a run for the hard cases.
 struct CaseFinder {
+    lang: crate::words::Lang,
     width: u32,
     depth_max: u32,
     quantized: bool,
@@ -115,8 +116,9 @@ struct CaseFinder {
 }
 
 impl CaseFinder {
-    fn new(scene: &Scene) -> CaseFinder {
+    fn new(lang: crate::words::Lang, scene: &Scene) -> CaseFinder {
         CaseFinder {
+            lang,
             width: scene.width,
             depth_max: scene.depth_max(),
             quantized: scene.clear_depth.level().is_some(),
@@ -136,11 +138,12 @@ impl CaseFinder {
 
 impl Observer for CaseFinder {
     fn scanline(&mut self, event: &ScanlineEvent<'_>) {
+        let lang = self.lang;
         let (index, row) = (event.index, event.row);
         let scan_y = Q::new(2 * i128::from(row) + 1, 2);
         if let Some((k, v)) = event.polygon.vertices().iter().enumerate().find(|(_, v)| v[1] == scan_y) {
             self.note(HardCase::VertexOnScanline, || {
-                words!(
+                words!(lang, 
                     "place-vertex-on-scanline",
                     polygon = (index + 1).to_string(),
                     vertex = (k + 1).to_string(),
@@ -158,7 +161,7 @@ impl Observer for CaseFinder {
                 let column = (doubled - 1) / 2;
                 if (0..i128::from(self.width)).contains(&column) {
                     self.note(HardCase::CentreOnEdge, || {
-                        words!(
+                        words!(lang, 
                             "place-centre-on-edge",
                             x = column.to_string(),
                             y = row.to_string(),
@@ -170,7 +173,7 @@ impl Observer for CaseFinder {
         }
         if event.spans.len() >= 2 {
             self.note(HardCase::Concave, || {
-                words!(
+                words!(lang, 
                     "place-spans",
                     polygon = (index + 1).to_string(),
                     row = row.to_string(),
@@ -181,12 +184,13 @@ impl Observer for CaseFinder {
     }
 
     fn pixel(&mut self, event: &PixelEvent) {
+        let lang = self.lang;
         let (index, x, y) = (event.index, event.x, event.y);
         let z = event.compared.value();
         let half = z.to_big() * num_bigint::BigInt::from(2);
         if self.quantized && half.is_integer() && half.to_integer().bit(0) {
             self.note(HardCase::HalfDepth, || {
-                words!(
+                words!(lang, 
                     "place-half-depth",
                     x = x.to_string(),
                     y = y.to_string(),
@@ -200,14 +204,14 @@ impl Observer for CaseFinder {
         let range = num_bigint::BigInt::from(0)..=num_bigint::BigInt::from(self.depth_max);
         if self.quantized && event.outcome == Outcome::Written && !range.contains(&rounded) {
             self.note(HardCase::Saturation, || {
-                words!(
+                words!(lang, 
                     "place-saturation",
                     x = x.to_string(),
                     y = y.to_string(),
                     polygon = (index + 1).to_string(),
                     z = fraction(&z),
                     rounded = rounded.to_string(),
-                    stored = event.stored_after.to_string()
+                    stored = event.stored_after.text(lang)
                 )
             });
         }
@@ -225,13 +229,13 @@ impl Observer for CaseFinder {
             }
             Outcome::Hidden => {
                 self.note(HardCase::Hidden, || {
-                    words!(
+                    words!(lang, 
                         "place-hidden",
                         x = x.to_string(),
                         y = y.to_string(),
                         polygon = (index + 1).to_string(),
                         z = fraction(&z),
-                        stored = event.stored_before.to_string()
+                        stored = event.stored_before.text(lang)
                     )
                 });
                 if let Some(earlier) = owner.filter(|o| *o != index) {
@@ -244,7 +248,7 @@ impl Observer for CaseFinder {
         // Only the pair this event touched can have become both won and lost.
         if let Some((a, b)) = pair.filter(|p| self.won.contains(p) && self.lost.contains(p)) {
             self.note(HardCase::Intersecting, || {
-                words!("place-intersecting", first = (a + 1).to_string(), second = (b + 1).to_string())
+                words!(lang, "place-intersecting", first = (a + 1).to_string(), second = (b + 1).to_string())
             });
         }
     }
@@ -303,7 +307,7 @@ pub struct Exercise {
 
 /// Makes an exercise: candidates drawn from the seed's sequence, the first
 /// whose trace shows every asked case kept.
-pub fn make(spec: &Spec) -> Result<Exercise, Usage> {
+pub fn make(lang: crate::words::Lang, spec: &Spec) -> Result<Exercise, Usage> {
     if spec.width < 4 || spec.height < 4 || spec.width > 64 || spec.height > 64 {
         return Err(Usage::ExerciseSize { width: spec.width, height: spec.height });
     }
@@ -320,11 +324,11 @@ pub fn make(spec: &Spec) -> Result<Exercise, Usage> {
     let mut rng = SplitMix64::new(spec.seed);
     for tries in 1..=TRIES {
         let json = candidate(spec, &mut rng);
-        let Ok(scene) = Scene::from_json(&json, std::path::Path::new("exercise.json")) else { continue };
+        let Ok(scene) = Scene::from_json(lang, &json, std::path::Path::new("exercise.json")) else { continue };
         if spec.style == Style::Book && !book_like(&scene, spec) {
             continue;
         }
-        let found = find_cases(&scene);
+        let found = find_cases(lang, &scene);
         if spec.hard.iter().all(|case| found.iter().any(|f| f.case == *case)) {
             return Ok(Exercise { json, scene, found, tries });
         }

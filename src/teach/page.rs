@@ -14,7 +14,7 @@ use crate::simulate::events::Outcome;
 use crate::teach::step::{Moved, Stepper};
 
 /// The page for the whole scene: every scanline that covers a pixel, in order.
-pub fn page(stepper: &mut Stepper<'_>, title: &str) -> String {
+pub fn page(lang: crate::words::Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
     let scene = stepper.scene();
     let mut stops = Vec::new();
     let mut moved = stepper.start(None);
@@ -26,15 +26,15 @@ pub fn page(stepper: &mut Stepper<'_>, title: &str) -> String {
             .iter()
             .map(|e| {
                 serde_json::json!({
-                    "x": e.x, "z": exact_and_decimal(e.depth.value()), "stored": e.stored_before.to_string(),
-                    "written": e.outcome == Outcome::Written, "after": e.stored_after.to_string(),
+                    "x": e.x, "z": exact_and_decimal(lang, e.depth.value()), "stored": e.stored_before.text(lang),
+                    "written": e.outcome == Outcome::Written, "after": e.stored_after.text(lang),
                     "afterExact": crate::numbers::fraction(e.stored_after.value()), "frame": e.frame_after,
                     "frameBefore": e.frame_before,
-                    "reason": pixel_reason(scene, e),
+                    "reason": pixel_reason(lang, scene, e),
                 })
             })
             .collect();
-        let stop_words = stepper.stop_words(stop);
+        let stop_words = stepper.stop_words(lang, stop);
         stops.push(serde_json::json!({
             "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
             "scanline": stop_words.scanline, "crossings": stop_words.crossings, "spans": stop_words.spans,
@@ -46,24 +46,24 @@ pub fn page(stepper: &mut Stepper<'_>, title: &str) -> String {
     }
     // The page's words, in the student's language; {…} marks what the script fills in.
     let words = serde_json::json!({
-        "noPixel": words!("page-no-pixel"),
-        "frameAfter": words!("page-frame-after"),
-        "depthAfter": words!("page-depth-after"),
-        "frameBefore": words!("page-frame-before"),
-        "depthBefore": words!("page-depth-before"),
-        "notNumber": words!("page-not-a-number", text = "{text}"),
-        "doesNotFit": words!("quiz-does-not-fit", text = "{text}", max = scene.depth_max().to_string()),
-        "unanswered": words!("page-unanswered"),
-        "stored": words!("page-column-stored"),
-        "yours": words!("page-column-yours"),
-        "after": words!("page-column-after"),
-        "why": words!("page-column-why"),
-        "check": words!("page-check"),
-        "keeps": words!("page-keeps", value = "{after}"),
-        "right": words!("page-right"),
-        "wrong": words!("page-wrong"),
-        "quizScore": words!("page-quiz-score", right = "{right}", total = "{total}"),
-        "status": words!("page-status", at = "{at}", count = "{count}"),
+        "noPixel": words!(lang, "page-no-pixel"),
+        "frameAfter": words!(lang, "page-frame-after"),
+        "depthAfter": words!(lang, "page-depth-after"),
+        "frameBefore": words!(lang, "page-frame-before"),
+        "depthBefore": words!(lang, "page-depth-before"),
+        "notNumber": words!(lang, "page-not-a-number", text = "{text}"),
+        "doesNotFit": words!(lang, "quiz-does-not-fit", text = "{text}", max = scene.depth_max().to_string()),
+        "unanswered": words!(lang, "page-unanswered"),
+        "stored": words!(lang, "page-column-stored"),
+        "yours": words!(lang, "page-column-yours"),
+        "after": words!(lang, "page-column-after"),
+        "why": words!(lang, "page-column-why"),
+        "check": words!(lang, "page-check"),
+        "keeps": words!(lang, "page-keeps", value = "{after}"),
+        "right": words!(lang, "page-right"),
+        "wrong": words!(lang, "page-wrong"),
+        "quizScore": words!(lang, "page-quiz-score", right = "{right}", total = "{total}"),
+        "status": words!(lang, "page-status", at = "{at}", count = "{count}"),
     });
     // The most a cell can hold, for the quiz's "no cell can hold it" (`None`: exact depths).
     let max = (scene.rules.store == crate::rules::DepthStore::Quantized).then(|| scene.depth_max());
@@ -72,7 +72,7 @@ pub fn page(stepper: &mut Stepper<'_>, title: &str) -> String {
     let (head, tail) = TEMPLATE.split_once("{{DATA}}").expect("the template has a place for the data");
     // The data goes in last, so that nothing in it (a polygon named "{{TITLE}}") is
     // taken for a place in the template.
-    format!("{}{}{}", fill(head, title), embedded_json(&data), fill(tail, title))
+    format!("{}{}{}", fill(lang, head, title), embedded_json(&data), fill(lang, tail, title))
 }
 
 /// Markup's special characters written as JSON escapes (`<` as `\u003c`, …),
@@ -84,7 +84,7 @@ fn embedded_json(json: &str) -> String {
 }
 
 /// A part of the template with its title and words filled in, escaped.
-fn fill(part: &str, title: &str) -> String {
+fn fill(lang: crate::words::Lang, part: &str, title: &str) -> String {
     let mut part = part.to_string();
     for (marker, key) in [
         ("{{LANG}}", None),
@@ -96,7 +96,7 @@ fn fill(part: &str, title: &str) -> String {
         ("{{DEPTH}}", Some("page-depth")),
         ("{{QUIZ}}", Some("page-quiz")),
     ] {
-        let text = key.map_or_else(|| crate::words::language().code().to_string(), |key| crate::words::text(key, &[]));
+        let text = key.map_or_else(|| lang.code().to_string(), |key| crate::words::text(lang, key, &[]));
         part = part.replace(marker, &escape(&text));
     }
     // The title last: what it holds is never taken for a place in the template.

@@ -38,15 +38,15 @@ pub enum Refusal {
 
 impl Refusal {
     /// The refusal in one line of the reader's language.
-    pub fn text(&self, scene: &Scene) -> String {
+    pub fn text(&self, lang: crate::words::Lang, scene: &Scene) -> String {
         match *self {
-            Refusal::First => words!("step-first"),
-            Refusal::NoEarlierPolygon => words!("tui-no-earlier"),
+            Refusal::First => words!(lang, "step-first"),
+            Refusal::NoEarlierPolygon => words!(lang, "tui-no-earlier"),
             Refusal::OutsideRaster { row } => {
-                words!("step-outside-raster", row = row.to_string(), last = (scene.height - 1).to_string())
+                words!(lang, "step-outside-raster", row = row.to_string(), last = (scene.height - 1).to_string())
             }
             Refusal::NotReached { polygon, row } => {
-                words!("step-not-reach", polygon = polygon_name(scene, polygon), scanline = scanline_text(row))
+                words!(lang, "step-not-reach", polygon = polygon_name(lang, scene, polygon), scanline = scanline_text(lang, row))
             }
         }
     }
@@ -182,14 +182,14 @@ impl<'s> Stepper<'s> {
 
     /// What a stop shows beside the buffers, worded: the polygon, the
     /// scanline, its crossings and spans.
-    pub fn stop_words(&mut self, stop: Stop) -> StopWords {
+    pub fn stop_words(&mut self, lang: crate::words::Lang, stop: Stop) -> StopWords {
         let scene = self.scene();
         let record = self.tracer.record(stop);
-        let crossings: Vec<String> = record.crossings.iter().map(exact_and_decimal).collect();
+        let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(lang, x)).collect();
         let crossings = if crossings.is_empty() {
-            words!("step-crossings", list = words!("step-crossings-none"))
+            words!(lang, "step-crossings", list = words!(lang, "step-crossings-none"))
         } else {
-            words!("step-crossings", list = crossings.join(&words!("list-comma")))
+            words!(lang, "step-crossings", list = crossings.join(&words!(lang, "list-comma")))
         };
         let spans = record
             .spans
@@ -197,21 +197,21 @@ impl<'s> Stepper<'s> {
             .enumerate()
             .map(|(i, span)| {
                 let columns = span.columns.map_or_else(
-                    || words!("tui-no-centre"),
-                    |(first, last)| words!("step-columns", first = first.to_string(), last = last.to_string()),
+                    || words!(lang, "tui-no-centre"),
+                    |(first, last)| words!(lang, "step-columns", first = first.to_string(), last = last.to_string()),
                 );
-                words!(
+                words!(lang, 
                     "tui-span",
                     n = (i + 1).to_string(),
-                    left = exact_and_decimal(&span.left),
-                    right = exact_and_decimal(&span.right),
+                    left = exact_and_decimal(lang, &span.left),
+                    right = exact_and_decimal(lang, &span.right),
                     columns = columns
                 )
             })
             .collect();
         StopWords {
-            heading: crate::observe::report::polygon_heading(scene, stop.polygon),
-            scanline: words!("step-scanline", scanline = scanline_text(record.row), row = record.row.to_string()),
+            heading: crate::observe::report::polygon_heading(lang, scene, stop.polygon),
+            scanline: words!(lang, "step-scanline", scanline = scanline_text(lang, record.row), row = record.row.to_string()),
             crossings,
             spans,
         }
@@ -232,8 +232,8 @@ pub struct StopWords {
 }
 
 /// A [`Skip`] in one line of the reader's language.
-pub fn skip_text(scene: &Scene, skip: &Skip) -> String {
-    crate::observe::step::skip_text(scene, skip)
+pub fn skip_text(lang: crate::words::Lang, scene: &Scene, skip: &Skip) -> String {
+    crate::observe::step::skip_text(lang, scene, skip)
 }
 
 /// What the quiz asks.
@@ -292,12 +292,12 @@ pub enum Meant {
 
 impl Meant {
     /// What the answer meant, in words.
-    pub fn text(self) -> String {
+    pub fn text(self, lang: crate::words::Lang) -> String {
         match self {
-            Meant::NotWritten => words!("meant-not-written"),
-            Meant::ValueWritten => words!("meant-value-written"),
-            Meant::ValueKept => words!("meant-value-kept"),
-            Meant::Value => words!("meant-value"),
+            Meant::NotWritten => words!(lang, "meant-not-written"),
+            Meant::ValueWritten => words!(lang, "meant-value-written"),
+            Meant::ValueKept => words!(lang, "meant-value-kept"),
+            Meant::Value => words!(lang, "meant-value"),
         }
     }
 }
@@ -397,14 +397,14 @@ impl Quiz {
 
     /// Judges `typed` as the answer to the current question, scores it and
     /// moves to the next question; `None` when nothing is asked.
-    pub fn answer(&mut self, stepper: &mut Stepper<'_>, typed: &str) -> Option<Reply> {
+    pub fn answer(&mut self, lang: crate::words::Lang, stepper: &mut Stepper<'_>, typed: &str) -> Option<Reply> {
         let question = self.question(stepper)?;
         let scene = stepper.scene();
         let typed = typed.trim();
         let judged = match &question {
-            Question::Coverage { stop, .. } => judge_coverage(stepper.tracer.record(*stop), typed),
-            Question::Depth { pixel, .. } => judge_depth(scene, pixel, typed),
-            Question::Frame { pixel, .. } => judge_frame(scene, pixel, typed),
+            Question::Coverage { stop, .. } => judge_coverage(lang, stepper.tracer.record(*stop), typed),
+            Question::Depth { pixel, .. } => judge_depth(lang, scene, pixel, typed),
+            Question::Frame { pixel, .. } => judge_frame(lang, scene, pixel, typed),
         };
         let verdict = match judged {
             Ok((right, meant, expected, why)) => {
@@ -423,7 +423,7 @@ impl Quiz {
         if verdict.right {
             self.right += 1;
         } else {
-            self.mistakes.push(mistake_text(scene, &verdict));
+            self.mistakes.push(mistake_text(lang, scene, &verdict));
         }
         Some(Reply::Judged(verdict))
     }
@@ -434,11 +434,11 @@ impl Quiz {
     }
 
     /// The score, and each mistake with what was right and why.
-    pub fn summary(&self) -> String {
-        let score = words!("quiz-score", right = self.right.to_string(), asked = self.asked.to_string());
+    pub fn summary(&self, lang: crate::words::Lang) -> String {
+        let score = words!(lang, "quiz-score", right = self.right.to_string(), asked = self.asked.to_string());
         let mut text = format!("{score}\n");
         if !self.mistakes.is_empty() {
-            text.push_str(&format!("{}\n", words!("quiz-mistakes")));
+            text.push_str(&format!("{}\n", words!(lang, "quiz-mistakes")));
             for mistake in &self.mistakes {
                 text.push_str(&format!("  {mistake}\n"));
             }
@@ -448,21 +448,21 @@ impl Quiz {
 }
 
 /// A wrong answer as the summary lists it.
-fn mistake_text(scene: &Scene, verdict: &Verdict) -> String {
+fn mistake_text(lang: crate::words::Lang, scene: &Scene, verdict: &Verdict) -> String {
     match &verdict.question {
-        Question::Coverage { stop, row } => words!(
+        Question::Coverage { stop, row } => words!(lang, 
             "quiz-coverage-mistake",
             row = row.to_string(),
-            polygon = polygon_after(scene, stop.polygon),
+            polygon = polygon_after(lang, scene, stop.polygon),
             said = &verdict.said,
             right = &verdict.expected,
             why = &verdict.why
         ),
-        Question::Depth { stop, pixel, .. } | Question::Frame { stop, pixel, .. } => words!(
+        Question::Depth { stop, pixel, .. } | Question::Frame { stop, pixel, .. } => words!(lang, 
             "quiz-depth-mistake",
             x = pixel.x,
             y = pixel.y,
-            polygon = polygon_after(scene, stop.polygon),
+            polygon = polygon_after(lang, scene, stop.polygon),
             said = &verdict.said,
             right = &verdict.expected,
             reason = &verdict.why
@@ -475,15 +475,15 @@ type Judged = (bool, Option<Meant>, String, String);
 
 /// Judges a coverage answer (`16-27`, `3-5 9-12`, `4` or `-`); `Err` with
 /// the reason to ask again when it is not columns.
-pub fn judge_coverage(record: &ScanlineRecord, typed: &str) -> Result<Judged, String> {
-    let Some(columns) = parse_columns(typed) else { return Err(words!("quiz-coverage-hint")) };
+pub fn judge_coverage(lang: crate::words::Lang, record: &ScanlineRecord, typed: &str) -> Result<Judged, String> {
+    let Some(columns) = parse_columns(typed) else { return Err(words!(lang, "quiz-coverage-hint")) };
     let covered: Vec<u32> = record.pixels.iter().map(|e| e.x).collect();
     let spans: Vec<String> = record
         .spans
         .iter()
-        .map(|s| words!("span", left = exact_and_decimal(&s.left), right = exact_and_decimal(&s.right)))
+        .map(|s| words!(lang, "span", left = exact_and_decimal(lang, &s.left), right = exact_and_decimal(lang, &s.right)))
         .collect();
-    let why = words!("quiz-coverage-why", spans = spans.join(&words!("list-comma")));
+    let why = words!(lang, "quiz-coverage-why", spans = spans.join(&words!(lang, "list-comma")));
     Ok((columns == covered, None, columns_text(&covered), why))
 }
 
@@ -491,23 +491,23 @@ pub fn judge_coverage(record: &ScanlineRecord, typed: &str) -> Result<Judged, St
 /// when it is the value the z-buffer holds after the pixel (for a pixel not
 /// written, `-` or the value it keeps); `Err` with the reason to ask again
 /// for text that is neither, or a number no cell can hold.
-pub fn judge_depth(scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Judged, String> {
+pub fn judge_depth(lang: crate::words::Lang, scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Judged, String> {
     let written = pixel.outcome == Outcome::Written;
     let expected = if written {
-        pixel.stored_after.to_string()
+        pixel.stored_after.text(lang)
     } else {
-        words!("quiz-keeps", value = pixel.stored_after.to_string())
+        words!(lang, "quiz-keeps", value = pixel.stored_after.text(lang))
     };
-    let why = pixel_reason(scene, pixel);
+    let why = pixel_reason(lang, scene, pixel);
     if typed == "-" {
         return Ok((!written, Some(Meant::NotWritten), expected, why));
     }
-    if let Some(problem) = does_not_fit(scene, typed) {
+    if let Some(problem) = does_not_fit(lang, scene, typed) {
         return Err(problem);
     }
     let Ok(value) = parse_number(typed) else {
-        let shown = printable(&token(typed)).into_owned();
-        return Err(words!("quiz-not-an-answer", text = shown, hint = words!("quiz-depth-hint")));
+        let shown = printable(&token(lang, typed)).into_owned();
+        return Err(words!(lang, "quiz-not-an-answer", text = shown, hint = words!(lang, "quiz-depth-hint")));
     };
     let (right, meant) = match Exact::Word(value) == pixel.stored_after.value() {
         true if written => (true, Meant::ValueWritten),
@@ -521,25 +521,25 @@ pub fn judge_depth(scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Jud
 /// value, right when it is the value the framebuffer holds after the pixel;
 /// `Err` with the reason to ask again for text that is neither, or a value
 /// no cell can hold.
-pub fn judge_frame(scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Judged, String> {
+pub fn judge_frame(lang: crate::words::Lang, scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Judged, String> {
     let written = pixel.outcome == Outcome::Written;
     let expected = if written {
         pixel.frame_after.to_string()
     } else {
-        words!("quiz-keeps", value = pixel.frame_after.to_string())
+        words!(lang, "quiz-keeps", value = pixel.frame_after.to_string())
     };
-    let why = pixel_reason(scene, pixel);
+    let why = pixel_reason(lang, scene, pixel);
     if typed == "-" {
         return Ok((!written, Some(Meant::NotWritten), expected, why));
     }
     let Ok(value) = parse_number(typed) else {
-        let shown = printable(&token(typed)).into_owned();
-        return Err(words!("quiz-not-an-answer", text = shown, hint = words!("quiz-frame-hint")));
+        let shown = printable(&token(lang, typed)).into_owned();
+        return Err(words!(lang, "quiz-not-an-answer", text = shown, hint = words!(lang, "quiz-frame-hint")));
     };
     let max = crate::scene::max_for_bits(scene.frame_bits);
     if !value.is_integer() || *value.numer() < 0 || *value.numer() > i128::from(max) {
-        let shown = printable(&token(typed)).into_owned();
-        return Err(words!("quiz-frame-does-not-fit", text = shown, max = max.to_string()));
+        let shown = printable(&token(lang, typed)).into_owned();
+        return Err(words!(lang, "quiz-frame-does-not-fit", text = shown, max = max.to_string()));
     }
     let (right, meant) = match *value.numer() == i128::from(pixel.frame_after) {
         true if written => (true, Meant::ValueWritten),
@@ -551,14 +551,14 @@ pub fn judge_frame(scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Jud
 
 /// Why `typed` is a number no cell of `scene`'s z-buffer can hold (a
 /// quantized z-buffer holds whole levels 0 … max); `None` for any other text.
-fn does_not_fit(scene: &Scene, typed: &str) -> Option<String> {
+fn does_not_fit(lang: crate::words::Lang, scene: &Scene, typed: &str) -> Option<String> {
     if scene.rules.store != crate::rules::DepthStore::Quantized {
         return None;
     }
     let value = parse_number(typed).ok()?;
     let max = scene.depth_max();
     let fits = value.is_integer() && *value.numer() >= 0 && *value.numer() <= i128::from(max);
-    (!fits).then(|| words!("quiz-does-not-fit", text = printable(&token(typed)).into_owned(), max = max.to_string()))
+    (!fits).then(|| words!(lang, "quiz-does-not-fit", text = printable(&token(lang, typed)).into_owned(), max = max.to_string()))
 }
 
 /// The covered columns as a student writes them: `16-27`, `3-5 9-12`, or `-` for none.

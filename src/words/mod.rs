@@ -8,14 +8,13 @@
 //! (`43/4`), and the decimal beside them uses the language's separator
 //! ([`Lang::decimal_separator`]: `10,75` in Russian and Ukrainian).
 //!
-//! The language is chosen once per thread ([`set_language`]; the command line
-//! does it from `--lang` or the environment, [`Lang::from_env`]); English is
-//! the default. JSON output never passes through here.
+//! The language is passed to every call that makes words ([`text`], the
+//! `words!` macro); nothing holds it behind the caller's back. The command
+//! line chooses it from `--lang` or the environment ([`Lang::from_env`]);
+//! English is the default. JSON output never passes through here.
 
-use std::cell::{Cell, RefCell};
-use std::collections::HashMap;
-
-use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
+use fluent_bundle::concurrent::FluentBundle;
+use fluent_bundle::{FluentArgs, FluentResource, FluentValue};
 
 /// A language zsim speaks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -92,30 +91,12 @@ impl Lang {
     }
 }
 
-thread_local! {
-    static CURRENT: Cell<Lang> = const { Cell::new(Lang::En) };
-    static BUNDLES: RefCell<HashMap<Lang, FluentBundle<FluentResource>>> = RefCell::new(HashMap::new());
-}
-
-/// Chooses the language of this thread's sentences.
-pub fn set_language(lang: Lang) {
-    CURRENT.with(|c| c.set(lang));
-}
-
-/// The language of this thread's sentences.
-pub fn language() -> Lang {
-    CURRENT.with(Cell::get)
-}
-
-/// `f`'s result with this thread's sentences in `lang`, the language before
-/// restored afterwards: for output that never changes with the language
-/// (JSON, CSV) built from the same words as the text.
-pub fn with_language<T>(lang: Lang, f: impl FnOnce() -> T) -> T {
-    let before = language();
-    set_language(lang);
-    let result = f();
-    set_language(before);
-    result
+/// The four catalogues, each parsed once for the whole process and shared
+/// by every thread (the concurrent bundle's memoizer is `Sync`); which one a
+/// sentence is made in is always passed by the caller.
+fn bundles() -> &'static [FluentBundle<FluentResource>; 4] {
+    static BUNDLES: std::sync::OnceLock<[FluentBundle<FluentResource>; 4]> = std::sync::OnceLock::new();
+    BUNDLES.get_or_init(|| Lang::ALL.map(bundle))
 }
 
 fn bundle(lang: Lang) -> FluentBundle<FluentResource> {
@@ -123,7 +104,7 @@ fn bundle(lang: Lang) -> FluentBundle<FluentResource> {
         panic!("the {} catalogue does not parse: {errors:?}: please report this bug", lang.code())
     });
     let id: unic_langid::LanguageIdentifier = lang.code().parse().expect("a language code");
-    let mut bundle = FluentBundle::new(vec![id]);
+    let mut bundle = FluentBundle::new_concurrent(vec![id]);
     // No Unicode isolation marks around arguments: terminals show them as gaps.
     bundle.set_use_isolating(false);
     bundle.add_resource(resource).expect("one resource per bundle");
@@ -168,50 +149,44 @@ macro_rules! number_arg {
 }
 number_arg!(u32, usize, u64, i32, i64);
 
-/// The message `key` in this thread's language with `args`; a key missing
-/// from a catalogue falls back to English (the key-coverage test keeps that
-/// from happening).
-pub fn text(key: &str, args: &[(&str, Arg)]) -> String {
-    let lang = language();
-    BUNDLES.with(|bundles| {
-        let mut bundles = bundles.borrow_mut();
-        let lang = if bundle_has(&mut bundles, lang, key) { lang } else { Lang::En };
-        let bundle = bundles.entry(lang).or_insert_with(|| bundle(lang));
-        let message = bundle.get_message(key).and_then(|m| m.value());
-        let Some(pattern) = message else {
-            debug_assert!(false, "message {key} is missing: please report this bug");
-            return key.to_string();
-        };
-        let mut fluent_args = FluentArgs::new();
-        for (name, value) in args {
-            match value {
-                Arg::Text(t) => fluent_args.set(*name, FluentValue::from(t.as_str())),
-                Arg::Number(n) => fluent_args.set(*name, FluentValue::from(*n)),
-            }
+/// The message `key` in `lang` with `args`; a key missing from a catalogue
+/// falls back to English (the key-coverage test keeps that from happening).
+pub fn text(lang: Lang, key: &str, args: &[(&str, Arg)]) -> String {
+    let bundles = bundles();
+    let index = |lang: Lang| Lang::ALL.iter().position(|l| *l == lang).expect("every language has a catalogue");
+    let bundle = match bundles[index(lang)].has_message(key) {
+        true => &bundles[index(lang)],
+        false => &bundles[index(Lang::En)],
+    };
+    let Some(pattern) = bundle.get_message(key).and_then(|m| m.value()) else {
+        debug_assert!(false, "message {key} is missing: please report this bug");
+        return key.to_string();
+    };
+    let mut fluent_args = FluentArgs::new();
+    for (name, value) in args {
+        match value {
+            Arg::Text(t) => fluent_args.set(*name, FluentValue::from(t.as_str())),
+            Arg::Number(n) => fluent_args.set(*name, FluentValue::from(*n)),
         }
-        let mut errors = Vec::new();
-        let out = bundle.format_pattern(pattern, Some(&fluent_args), &mut errors).into_owned();
-        debug_assert!(errors.is_empty(), "message {key}: {errors:?}: please report this bug");
-        out
-    })
+    }
+    let mut errors = Vec::new();
+    let out = bundle.format_pattern(pattern, Some(&fluent_args), &mut errors).into_owned();
+    debug_assert!(errors.is_empty(), "message {key}: {errors:?}: please report this bug");
+    out
 }
 
-fn bundle_has(bundles: &mut HashMap<Lang, FluentBundle<FluentResource>>, lang: Lang, key: &str) -> bool {
-    bundles.entry(lang).or_insert_with(|| bundle(lang)).has_message(key)
-}
-
-/// `words!("key", name = value, …)`: the message in this thread's language.
+/// `words!(lang, "key", name = value, …)`: the message in `lang`.
 #[macro_export]
 macro_rules! words {
-    ($key:expr $(, $name:ident = $value:expr)* $(,)?) => {
-        $crate::message($key, &[$((stringify!($name), $crate::Arg::from($value))),*])
+    ($lang:expr, $key:expr $(, $name:ident = $value:expr)* $(,)?) => {
+        $crate::message($lang, $key, &[$((stringify!($name), $crate::Arg::from($value))),*])
     };
 }
 
 // After the macro: `words!` is in scope from here on.
 mod system;
 
-pub use system::{io_reason, json_reason};
+pub use system::{fact, io_reason, json_reason};
 
 /// How many characters of a token from a file a message quotes.
 const TOKEN_SHOWN: usize = 32;
@@ -219,18 +194,18 @@ const TOKEN_SHOWN: usize = 32;
 /// A token from an input file as a message quotes it: whole when short, else
 /// its first characters, `…` and its length, so that no message repeats more
 /// of a file than the token that failed (a 3 MB token prints 3 MB otherwise).
-pub fn token(text: &str) -> String {
+pub fn token(lang: Lang, text: &str) -> String {
     let count = text.chars().count();
     if count <= TOKEN_SHOWN + 8 {
         return text.to_string();
     }
     let shown: String = text.chars().take(TOKEN_SHOWN).collect();
-    words!("token-cut", shown = shown, count = count.to_string())
+    words!(lang, "token-cut", shown = shown, count = count.to_string())
 }
 
-/// A decimal written with a point, in this thread's language's convention.
-pub fn localize_decimal(text: String) -> String {
-    match language().decimal_separator() {
+/// A decimal written with a point, in `lang`'s convention.
+pub fn localize_decimal(lang: Lang, text: String) -> String {
+    match lang.decimal_separator() {
         '.' => text,
         separator => text.replace('.', &separator.to_string()),
     }
@@ -264,9 +239,9 @@ pub fn is_default_name(name: &str, index: usize) -> bool {
 /// `polygon-after`) words it: `polygon 2 "triangle"`, or `polygon 2` when
 /// the name is the one an unnamed polygon gets (`is_default_name`),
 /// which would only repeat the number (and in English).
-pub fn polygon_label(message: &str, index: usize, name: &str) -> String {
+pub fn polygon_label(lang: Lang, message: &str, index: usize, name: &str) -> String {
     let named = if is_default_name(name, index) { "no" } else { "yes" };
-    words!(message, number = index + 1, name = name, named = named)
+    words!(lang, message, number = index + 1, name = name, named = named)
 }
 
 #[cfg(test)]
@@ -304,8 +279,8 @@ mod tests {
     #[test]
     fn plurals_follow_each_language() {
         let differ = |lang: Lang, count: i64| {
-            set_language(lang);
-            let out = text(
+            text(
+                lang,
                 "check-differ",
                 &[
                     ("buffer", "b".into()),
@@ -314,9 +289,7 @@ mod tests {
                     ("cells", Arg::Number(1024)),
                     ("after", "p".into()),
                 ],
-            );
-            set_language(Lang::En);
-            out
+            )
         };
         assert_eq!(differ(Lang::En, 1), "b f: 1 of 1024 cell differs from the b after p");
         assert_eq!(differ(Lang::En, 3), "b f: 3 of 1024 cells differ from the b after p");

@@ -8,7 +8,7 @@ use std::io::ErrorKind;
 
 /// Why reading or writing a file failed, from the error's kind; the system's
 /// own sentence (English) only for kinds without a message here.
-pub fn io_reason(error: &std::io::Error) -> String {
+pub fn io_reason(lang: crate::words::Lang, error: &std::io::Error) -> String {
     let key = match error.kind() {
         ErrorKind::NotFound => "io-not-found",
         ErrorKind::PermissionDenied => "io-permission-denied",
@@ -20,11 +20,11 @@ pub fn io_reason(error: &std::io::Error) -> String {
         ErrorKind::InvalidData => "io-not-utf8",
         _ => return error.to_string(),
     };
-    words!(key)
+    words!(lang, key)
 }
 
 /// A serde_json message in the reader's language.
-pub fn json_reason(message: &str) -> String {
+pub fn json_reason(lang: crate::words::Lang, message: &str) -> String {
     let (body, place) = match message.rsplit_once(" at line ") {
         Some((body, place)) => match place.split_once(" column ") {
             Some((line, column)) if line.parse::<u64>().is_ok() && column.parse::<u64>().is_ok() => {
@@ -34,53 +34,77 @@ pub fn json_reason(message: &str) -> String {
         },
         None => (message, None),
     };
-    let body = json_body(body);
+    let body = json_body(lang, body);
     match place {
-        Some((line, column)) => words!("json-at", message = body, line = line, column = column),
+        Some((line, column)) => words!(lang, "json-at", message = body, line = line, column = column),
         None => body,
     }
 }
 
-fn json_body(body: &str) -> String {
+/// A fact a serde visitor reports (`number-found-object`, or a number that
+/// does not read with the text it quotes), in a form no JSON message takes:
+/// [`json_reason`] words it in the reader's language where the error is
+/// turned into zsim's, as serde's own messages are.
+pub fn fact(key: &str, text: &str) -> String {
+    format!("{FACT}{key}{FACT}{text}")
+}
+
+const FACT: char = '\u{1f}';
+
+/// The message of a [`fact`]: keys that quote a text get it cut short.
+fn fact_body(lang: crate::words::Lang, key: &str, text: &str) -> String {
+    let text = crate::words::token(lang, text);
+    match key {
+        "number-too-long" => words!(lang, key, text = text, max = crate::numbers::MAX_BIG_DIGITS.to_string()),
+        _ => words!(lang, key, text = text),
+    }
+}
+
+fn json_body(lang: crate::words::Lang, body: &str) -> String {
+    if let Some(fact) = body.strip_prefix(FACT)
+        && let Some((key, text)) = fact.split_once(FACT)
+    {
+        return fact_body(lang, key, text);
+    }
     if let Some(rest) = body.strip_prefix("invalid type: ")
         && let Some((found, expected)) = rest.split_once(", expected ")
     {
-        return words!("json-invalid-type", found = found_kind(found), expected = wanted(expected));
+        return words!(lang, "json-invalid-type", found = found_kind(lang, found), expected = wanted(lang, expected));
     }
     if let Some(rest) = body.strip_prefix("invalid value: ")
         && let Some((found, expected)) = rest.split_once(", expected ")
     {
-        return words!("json-invalid-value", found = found_kind(found), expected = wanted(expected));
+        return words!(lang, "json-invalid-value", found = found_kind(lang, found), expected = wanted(lang, expected));
     }
     if let Some(rest) = body.strip_prefix("invalid length ")
         && let Some((length, expected)) = rest.split_once(", expected ")
     {
-        return words!("json-invalid-length", length = length, expected = wanted(expected));
+        return words!(lang, "json-invalid-length", length = length, expected = wanted(lang, expected));
     }
     if let Some(field) = body.strip_prefix("missing field ") {
-        return words!("json-missing-field", field = field);
+        return words!(lang, "json-missing-field", field = field);
     }
     if let Some(rest) = body.strip_prefix("unknown field ") {
         return match rest.split_once(", expected one of ") {
-            Some((field, known)) => words!("json-unknown-field", field = field, known = known),
-            None => words!("json-unknown-field-none", field = rest.split(',').next().unwrap_or(rest)),
+            Some((field, known)) => words!(lang, "json-unknown-field", field = field, known = known),
+            None => words!(lang, "json-unknown-field-none", field = rest.split(',').next().unwrap_or(rest)),
         };
     }
     if let Some(rest) = body.strip_prefix("unknown variant ")
         && let Some((variant, known)) = rest.split_once(", expected one of ").or_else(|| rest.split_once(", expected "))
     {
-        return words!("json-unknown-variant", variant = variant, known = known);
+        return words!(lang, "json-unknown-variant", variant = variant, known = known);
     }
     if let Some(field) = body.strip_prefix("duplicate field ") {
-        return words!("json-duplicate-field", field = field);
+        return words!(lang, "json-duplicate-field", field = field);
     }
     if body.starts_with("EOF while parsing") {
-        return words!("json-eof");
+        return words!(lang, "json-eof");
     }
     if let Some(token) = body.strip_prefix("expected ")
         && token.starts_with('`')
     {
-        return words!("json-expected-token", token = token);
+        return words!(lang, "json-expected-token", token = token);
     }
     let key = match body {
         "expected value" => "json-expected-value",
@@ -95,39 +119,39 @@ fn json_body(body: &str) -> String {
         _ if body.starts_with("control character") => "json-control",
         _ => return body.to_string(),
     };
-    words!(key)
+    words!(lang, key)
 }
 
 /// serde's name for what was found: `integer `3``, `string "x"`, `sequence`.
-fn found_kind(found: &str) -> String {
+fn found_kind(lang: crate::words::Lang, found: &str) -> String {
     let (kind, value) = match found.split_once(' ') {
         Some((kind, value)) if matches!(kind, "integer" | "string" | "boolean" | "floating") => (kind, value),
         _ => (found, ""),
     };
     let value = value.trim_start_matches("point ").to_string();
     match kind {
-        "integer" => words!("json-found-integer", value = value),
-        "floating" => words!("json-found-decimal", value = value),
-        "string" => words!("json-found-string", value = value),
-        "boolean" => words!("json-found-bool", value = value),
-        "null" | "unit value" => words!("json-found-null"),
-        "sequence" => words!("json-found-list"),
-        "map" => words!("json-found-object"),
+        "integer" => words!(lang, "json-found-integer", value = value),
+        "floating" => words!(lang, "json-found-decimal", value = value),
+        "string" => words!(lang, "json-found-string", value = value),
+        "boolean" => words!(lang, "json-found-bool", value = value),
+        "null" | "unit value" => words!(lang, "json-found-null"),
+        "sequence" => words!(lang, "json-found-list"),
+        "map" => words!(lang, "json-found-object"),
         _ => found.to_string(),
     }
 }
 
 /// What was expected, as serde or zsim's readers name it.
-fn wanted(expected: &str) -> String {
+fn wanted(lang: crate::words::Lang, expected: &str) -> String {
     match expected {
-        "a sequence" => words!("json-want-list"),
-        "a string" => words!("json-want-string"),
-        "a boolean" => words!("json-want-bool"),
-        "a number, or a string holding a fraction or a decimal" => words!("json-want-number"),
-        "a vertex [x, y, z], or [x, y, z, w] in clip space" => words!("json-want-vertex"),
-        _ if expected.starts_with("struct ") || expected == "a map" => words!("json-want-object"),
+        "a sequence" => words!(lang, "json-want-list"),
+        "a string" => words!(lang, "json-want-string"),
+        "a boolean" => words!(lang, "json-want-bool"),
+        "a number, or a string holding a fraction or a decimal" => words!(lang, "json-want-number"),
+        "a vertex [x, y, z], or [x, y, z, w] in clip space" => words!(lang, "json-want-vertex"),
+        _ if expected.starts_with("struct ") || expected == "a map" => words!(lang, "json-want-object"),
         _ if ["u8", "u16", "u32", "u64", "usize", "i32", "i64"].contains(&expected) => {
-            words!("json-want-whole")
+            words!(lang, "json-want-whole")
         }
         _ => expected.to_string(),
     }

@@ -186,7 +186,7 @@ fn catalogue_variables(language: &str) -> std::collections::BTreeMap<String, std
     messages
 }
 
-/// Every `words!("key", name = …)` in the source passes each variable its
+/// Every `words!(lang, "key", name = …)` in the source passes each variable its
 /// message uses in every language, so no reader meets a `{$name}` unfilled
 /// (a debug build stops there; a release build prints it).
 #[test]
@@ -210,7 +210,7 @@ fn every_message_gets_every_variable_it_uses_in_every_language() {
         let text = std::fs::read_to_string(&file).unwrap();
         for (start, _) in text.match_indices("words!(\"") {
             // The call's text up to its closing parenthesis.
-            let body = &text[start + "words!(".len()..];
+            let body = &text[start + "words!(lang, ".len()..];
             let mut depth = 1;
             let end = body
                 .char_indices()

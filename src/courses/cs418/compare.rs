@@ -3,7 +3,6 @@
 //! shapes as drawn; and the samples where two arithmetics disagree, with why.
 
 use std::collections::BTreeMap;
-use std::fmt;
 
 use super::{Arithmetic, Image};
 
@@ -16,14 +15,21 @@ pub struct Primitive {
     pub vertices: Vec<usize>,
 }
 
-impl fmt::Display for Primitive {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl Primitive {
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: crate::words::Lang) -> String {
+        let mut text = String::new();
+        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
+        text
+    }
+
+    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         let list: Vec<String> = self.vertices.iter().map(ToString::to_string).collect();
         let (vertices, line) = (list.join(", "), self.line.to_string());
         f.write_str(&if self.vertices.len() == 1 {
-            words!("cs418-primitive-point", vertices = vertices, line = line)
+            words!(lang, "cs418-primitive-point", vertices = vertices, line = line)
         } else {
-            words!("cs418-primitive-triangle", vertices = vertices, line = line)
+            words!(lang, "cs418-primitive-triangle", vertices = vertices, line = line)
         })
     }
 }

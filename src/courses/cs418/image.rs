@@ -40,18 +40,18 @@ impl Image {
 
     /// Reads a PNG (any colour type and depth png expands to 8-bit RGB or
     /// RGBA, grey included); `Err` says why not.
-    pub fn from_png(bytes: &[u8]) -> Result<Image, String> {
+    pub fn from_png(lang: crate::words::Lang, bytes: &[u8]) -> Result<Image, String> {
         let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
         decoder.set_transformations(png::Transformations::normalize_to_color8() | png::Transformations::ALPHA);
-        let mut reader = decoder.read_info().map_err(|e| words!("png-not-an-image", reason = e.to_string()))?;
-        let size = reader.output_buffer_size().ok_or_else(|| words!("png-too-large"))?;
+        let mut reader = decoder.read_info().map_err(|e| words!(lang, "png-not-an-image", reason = e.to_string()))?;
+        let size = reader.output_buffer_size().ok_or_else(|| words!(lang, "png-too-large"))?;
         let mut buffer = vec![0; size];
-        let frame = reader.next_frame(&mut buffer).map_err(|e| words!("png-broken", reason = e.to_string()))?;
+        let frame = reader.next_frame(&mut buffer).map_err(|e| words!(lang, "png-broken", reason = e.to_string()))?;
         buffer.truncate(frame.buffer_size());
         let rgba = match frame.color_type {
             png::ColorType::Rgba => buffer,
             png::ColorType::GrayscaleAlpha => buffer.chunks(2).flat_map(|c| [c[0], c[0], c[0], c[1]]).collect(),
-            other => return Err(words!("png-colour-type", kind = format!("{other:?}"))),
+            other => return Err(words!(lang, "png-colour-type", kind = format!("{other:?}"))),
         };
         Ok(Image { width: frame.width, height: frame.height, rgba })
     }

@@ -18,13 +18,13 @@ use std::fmt::Write as _;
 use super::{Case, CaseError, raster};
 
 /// The scene JSON for a case.
-pub fn scene_json(case: &Case) -> Result<String, CaseError> {
-    let (primitives, shapes) = raster::shapes(case)?;
+pub fn scene_json(lang: crate::words::Lang, case: &Case) -> Result<String, CaseError> {
+    let (primitives, shapes) = raster::shapes(lang, case)?;
     let level = case.features.fsaa.max(1);
     let count = primitives.len() as u64;
     let frame_bits = (64 - count.leading_zeros()).clamp(1, 32);
     if count >= 1 << 32 {
-        return Err(CaseError { line: None, message: words!("cs418-too-many-primitives", count = count.to_string()) });
+        return Err(CaseError { line: None, message: words!(lang, "cs418-too-many-primitives", count = count.to_string()) });
     }
     let mut out = String::new();
     let _ = writeln!(out, "{{");

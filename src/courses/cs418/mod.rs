@@ -48,7 +48,6 @@ pub mod import;
 mod raster;
 mod scalar;
 
-use std::fmt;
 
 pub use compare::{CellDifference, Comparison, Primitive, Reason, Shape, differences};
 pub use image::{Image, ImageDifference, compare_images};
@@ -63,10 +62,17 @@ pub struct CaseError {
     pub message: String,
 }
 
-impl fmt::Display for CaseError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl CaseError {
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: crate::words::Lang) -> String {
+        let mut text = String::new();
+        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
+        text
+    }
+
+    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self.line {
-            Some(line) => f.write_str(&words!("case-line", line = line.to_string(), problem = self.message.as_str())),
+            Some(line) => f.write_str(&words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str())),
             None => f.write_str(&self.message),
         }
     }
@@ -190,7 +196,7 @@ pub const MAX_SIDE: u32 = 8192;
 impl Case {
     /// Reads a CS 418 file. `load_texture` reads a texture the case names
     /// (the caller knows where the case's folder is), or says why it cannot.
-    pub fn parse(text: &str, load_texture: &dyn Fn(&str) -> Result<Image, String>) -> Result<Case, CaseError> {
+    pub fn parse(lang: crate::words::Lang, text: &str, load_texture: &dyn Fn(&str) -> Result<Image, String>) -> Result<Case, CaseError> {
         let mut case: Option<Case> = None;
         for (index, raw) in text.lines().enumerate() {
             let line = index + 1;
@@ -201,13 +207,13 @@ impl Case {
             }
             if keyword == "png" {
                 if case.is_some() {
-                    return Err(error(line, words!("cs418-second-png")));
+                    return Err(error(line, words!(lang, "cs418-second-png")));
                 }
-                case = Some(png_line(line, args)?);
+                case = Some(png_line(lang, line, args)?);
                 continue;
             }
             let Some(case) = case.as_mut() else {
-                return Err(error(line, words!("cs418-before-png", keyword = crate::words::token(keyword))));
+                return Err(error(line, words!(lang, "cs418-before-png", keyword = crate::words::token(lang, keyword))));
             };
             let flag = |on: &mut bool| {
                 if args.is_empty() {
@@ -216,9 +222,9 @@ impl Case {
                 } else {
                     Err(error(
                         line,
-                        words!(
+                        words!(lang, 
                             "cs418-flag-numbers",
-                            keyword = crate::words::token(keyword),
+                            keyword = crate::words::token(lang, keyword),
                             found = args.len().to_string()
                         ),
                     ))
@@ -232,14 +238,14 @@ impl Case {
                 "frustum" => flag(&mut case.features.frustum)?,
                 "decals" => flag(&mut case.features.decals)?,
                 "fsaa" => {
-                    let [level] = integers::<1>(line, keyword, args)?;
+                    let [level] = integers::<1>(lang, line, keyword, args)?;
                     if !(1..=8).contains(&level) {
-                        return Err(error(line, words!("cs418-fsaa", level = level.to_string())));
+                        return Err(error(line, words!(lang, "cs418-fsaa", level = level.to_string())));
                     }
                     case.features.fsaa = level as u32;
                 }
                 "position" | "color" | "pointsize" | "texcoord" => {
-                    let (size, numbers) = sized(line, keyword, args)?;
+                    let (size, numbers) = sized(lang, line, keyword, args)?;
                     let allowed: &[usize] = match keyword {
                         "position" => &[1, 2, 3, 4],
                         "color" => &[3, 4],
@@ -249,11 +255,11 @@ impl Case {
                     if !allowed.contains(&size) {
                         return Err(error(
                             line,
-                            words!(
+                            words!(lang, 
                                 "cs418-size",
-                                keyword = crate::words::token(keyword),
+                                keyword = crate::words::token(lang, keyword),
                                 size = size.to_string(),
-                                allowed = list(allowed)
+                                allowed = list(lang, allowed)
                             ),
                         ));
                     }
@@ -272,20 +278,20 @@ impl Case {
                         .iter()
                         .map(|w| {
                             w.parse::<usize>()
-                                .map_err(|_| error(line, words!("cs418-not-an-index", word = crate::words::token(w))))
+                                .map_err(|_| error(line, words!(lang, "cs418-not-an-index", word = crate::words::token(lang, w))))
                         })
                         .collect::<Result<Vec<_>, _>>()?;
                     case.commands.push((line, Command::Elements(indices)));
                 }
                 "uniformMatrix" => {
                     if args.len() != 16 {
-                        return Err(error(line, words!("cs418-matrix", found = args.len().to_string())));
+                        return Err(error(line, words!(lang, "cs418-matrix", found = args.len().to_string())));
                     }
-                    let numbers = args.iter().map(|w| number(line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
+                    let numbers = args.iter().map(|w| number(lang, line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
                     case.commands.push((line, Command::Matrix(numbers)));
                 }
                 "drawArraysTriangles" | "drawElementsTriangles" | "drawArraysPoints" => {
-                    let [a, b] = integers::<2>(line, keyword, args)?;
+                    let [a, b] = integers::<2>(lang, line, keyword, args)?;
                     let command = match keyword {
                         "drawArraysTriangles" => Command::DrawArrays { first: a, count: b },
                         "drawElementsTriangles" => Command::DrawElements { count: a, offset: b },
@@ -296,7 +302,7 @@ impl Case {
                     {
                         return Err(error(
                             line,
-                            words!("cs418-count", keyword = crate::words::token(keyword), count = count.to_string()),
+                            words!(lang, "cs418-count", keyword = crate::words::token(lang, keyword), count = count.to_string()),
                         ));
                     }
                     case.commands.push((line, command));
@@ -304,41 +310,41 @@ impl Case {
                 "texture" => {
                     let name = args.join(" ");
                     if name.is_empty() {
-                        return Err(error(line, words!("cs418-texture-name")));
+                        return Err(error(line, words!(lang, "cs418-texture-name")));
                     }
                     let index = match case.textures.iter().position(|t| t.name == name) {
                         Some(index) => index,
                         None => {
                             let image = load_texture(&name)
-                                .map_err(|why| error(line, words!("cs418-texture", name = name.as_str(), why = why)))?;
+                                .map_err(|why| error(line, words!(lang, "cs418-texture", name = name.as_str(), why = why)))?;
                             case.textures.push(Texture { name, image });
                             case.textures.len() - 1
                         }
                     };
                     case.commands.push((line, Command::Texture(index)));
                 }
-                _ => return Err(error(line, words!("case-unknown-command", command = crate::words::token(keyword)))),
+                _ => return Err(error(line, words!(lang, "case-unknown-command", command = crate::words::token(lang, keyword)))),
             }
         }
-        case.ok_or_else(|| CaseError { line: None, message: words!("cs418-no-png") })
+        case.ok_or_else(|| CaseError { line: None, message: words!(lang, "cs418-no-png") })
     }
 }
 
-fn png_line(line: usize, args: &[&str]) -> Result<Case, CaseError> {
+fn png_line(lang: crate::words::Lang, line: usize, args: &[&str]) -> Result<Case, CaseError> {
     let [width, height, file] = args else {
-        return Err(error(line, words!("cs418-png-words", found = args.len().to_string())));
+        return Err(error(line, words!(lang, "cs418-png-words", found = args.len().to_string())));
     };
     let side = |word: &str, what: &str| {
         word.parse::<u32>().ok().filter(|v| (1..=MAX_SIDE).contains(v)).ok_or_else(|| {
             error(
                 line,
-                words!("cs418-png-side", what = what, word = crate::words::token(word), max = MAX_SIDE.to_string()),
+                words!(lang, "cs418-png-side", what = what, word = crate::words::token(lang, word), max = MAX_SIDE.to_string()),
             )
         })
     };
-    let (width, height) = (side(width, &words!("cs418-width"))?, side(height, &words!("cs418-height"))?);
+    let (width, height) = (side(width, &words!(lang, "cs418-width"))?, side(height, &words!(lang, "cs418-height"))?);
     if file.contains(['/', '\\']) || *file == ".." || *file == "." {
-        return Err(error(line, words!("cs418-png-file", file = crate::words::token(file))));
+        return Err(error(line, words!(lang, "cs418-png-file", file = crate::words::token(lang, file))));
     }
     Ok(Case {
         width,
@@ -350,34 +356,34 @@ fn png_line(line: usize, args: &[&str]) -> Result<Case, CaseError> {
     })
 }
 
-fn list(values: &[usize]) -> String {
+fn list(lang: crate::words::Lang, values: &[usize]) -> String {
     let words: Vec<String> = values.iter().map(ToString::to_string).collect();
     match words.split_last() {
-        Some((last, rest)) if !rest.is_empty() => words!("list-or", rest = rest.join(", "), last = last.as_str()),
+        Some((last, rest)) if !rest.is_empty() => words!(lang, "list-or", rest = rest.join(", "), last = last.as_str()),
         _ => words.join(""),
     }
 }
 
-fn number(line: usize, keyword: &str, word: &str) -> Result<Number, CaseError> {
+fn number(lang: crate::words::Lang, line: usize, keyword: &str, word: &str) -> Result<Number, CaseError> {
     let finite = word.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.' | b'e' | b'E'));
     match (word.parse::<f64>(), crate::numbers::parse_number(word)) {
         (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(Number { value, exact }),
         (Ok(value), Err(problem)) if finite && value.is_finite() => Err(error(
             line,
-            words!("case-keyword-problem", keyword = crate::words::token(keyword), problem = problem.to_string()),
+            words!(lang, "case-keyword-problem", keyword = crate::words::token(lang, keyword), problem = problem.message(lang)),
         )),
         _ => Err(error(
             line,
-            words!("cs418-not-a-number", keyword = crate::words::token(keyword), word = crate::words::token(word)),
+            words!(lang, "cs418-not-a-number", keyword = crate::words::token(lang, keyword), word = crate::words::token(lang, word)),
         )),
     }
 }
 
-fn integers<const N: usize>(line: usize, keyword: &str, args: &[&str]) -> Result<[usize; N], CaseError> {
+fn integers<const N: usize>(lang: crate::words::Lang, line: usize, keyword: &str, args: &[&str]) -> Result<[usize; N], CaseError> {
     if args.len() != N {
         return Err(error(
             line,
-            words!("cs418-integers", keyword = crate::words::token(keyword), count = N, found = args.len().to_string()),
+            words!(lang, "cs418-integers", keyword = crate::words::token(lang, keyword), count = N, found = args.len().to_string()),
         ));
     }
     let mut out = [0; N];
@@ -385,10 +391,10 @@ fn integers<const N: usize>(line: usize, keyword: &str, args: &[&str]) -> Result
         *slot = word.parse::<usize>().map_err(|_| {
             error(
                 line,
-                words!(
+                words!(lang, 
                     "cs418-not-a-whole-number",
-                    keyword = crate::words::token(keyword),
-                    word = crate::words::token(word)
+                    keyword = crate::words::token(lang, keyword),
+                    word = crate::words::token(lang, word)
                 ),
             )
         })?;
@@ -396,23 +402,23 @@ fn integers<const N: usize>(line: usize, keyword: &str, args: &[&str]) -> Result
     Ok(out)
 }
 
-fn sized(line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<Number>), CaseError> {
+fn sized(lang: crate::words::Lang, line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<Number>), CaseError> {
     let Some((size, rest)) = args.split_first() else {
-        return Err(error(line, words!("cs418-sized", keyword = crate::words::token(keyword))));
+        return Err(error(line, words!(lang, "cs418-sized", keyword = crate::words::token(lang, keyword))));
     };
     let size: usize = size.parse().map_err(|_| {
-        error(line, words!("cs418-size-word", keyword = crate::words::token(keyword), size = crate::words::token(size)))
+        error(line, words!(lang, "cs418-size-word", keyword = crate::words::token(lang, keyword), size = crate::words::token(lang, size)))
     })?;
     if size == 0 {
-        return Err(error(line, words!("cs418-size-zero", keyword = crate::words::token(keyword))));
+        return Err(error(line, words!(lang, "cs418-size-zero", keyword = crate::words::token(lang, keyword))));
     }
-    let numbers = rest.iter().map(|w| number(line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
+    let numbers = rest.iter().map(|w| number(lang, line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
     if numbers.len() % size != 0 {
         return Err(error(
             line,
-            words!(
+            words!(lang, 
                 "cs418-vertices",
-                keyword = crate::words::token(keyword),
+                keyword = crate::words::token(lang, keyword),
                 size = size.to_string(),
                 numbers = numbers.len().to_string(),
                 whole = (numbers.len() / size).to_string(),

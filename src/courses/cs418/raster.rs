@@ -60,18 +60,18 @@ enum Attributes<S> {
 }
 
 /// Runs a case in an arithmetic.
-pub fn render(case: &Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
+pub fn render(lang: crate::words::Lang, case: &Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
     match arithmetic {
-        Arithmetic::DdaF64 => Pipeline::<f64>::run(case, arithmetic),
-        Arithmetic::Exact => Pipeline::<BigRational>::run(case, arithmetic),
+        Arithmetic::DdaF64 => Pipeline::<f64>::run(lang, case, arithmetic),
+        Arithmetic::Exact => Pipeline::<BigRational>::run(lang, case, arithmetic),
     }
 }
 
 /// What a case draws, after clipping and culling, in exact arithmetic,
 /// without sampling it: its primitives and their shapes (for `zsim cs418
 /// import`, which leaves the sampling to zsim's rasterizer).
-pub fn shapes(case: &Case) -> Result<(Vec<Primitive>, Vec<Shape>), CaseError> {
-    let pipeline = Pipeline::<BigRational>::new(case, false).draw()?;
+pub fn shapes(lang: crate::words::Lang, case: &Case) -> Result<(Vec<Primitive>, Vec<Shape>), CaseError> {
+    let pipeline = Pipeline::<BigRational>::new(case, false).draw(lang)?;
     Ok((pipeline.primitives, pipeline.shapes))
 }
 
@@ -102,8 +102,8 @@ struct Pipeline<'a, S> {
 }
 
 impl<'a, S: Scalar> Pipeline<'a, S> {
-    fn run(case: &'a Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
-        let pipeline = Pipeline::<S>::new(case, true).draw()?;
+    fn run(lang: crate::words::Lang, case: &'a Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
+        let pipeline = Pipeline::<S>::new(case, true).draw(lang)?;
         Ok(Comparison {
             image: pipeline.resolve(),
             arithmetic,
@@ -144,14 +144,14 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     }
 
     /// Runs the case's commands.
-    fn draw(mut self) -> Result<Self, CaseError> {
+    fn draw(mut self, lang: crate::words::Lang) -> Result<Self, CaseError> {
         for (line, command) in &self.case.commands {
-            self.command(*line, command)?;
+            self.command(lang, *line, command)?;
         }
         Ok(self)
     }
 
-    fn command(&mut self, line: usize, command: &Command) -> Result<(), CaseError> {
+    fn command(&mut self, lang: crate::words::Lang, line: usize, command: &Command) -> Result<(), CaseError> {
         match command {
             Command::Position { size, numbers } => {
                 self.positions = numbers
@@ -185,17 +185,17 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 if first.checked_add(*count).is_none_or(|end| end > positions) {
                     let index = (*first).max(positions);
                     let has = positions.to_string();
-                    return Err(error(line, words!("cs418-vertex-index", index = index.to_string(), count = has)));
+                    return Err(error(line, words!(lang, "cs418-vertex-index", index = index.to_string(), count = has)));
                 }
                 let indices: Vec<usize> = (*first..first + count).collect();
-                self.triangles(line, &indices)?;
+                self.triangles(lang, line, &indices)?;
             }
             Command::DrawElements { count, offset } => {
                 let range = offset.checked_add(*count).map(|end| *offset..end);
                 let Some(indices) = range.and_then(|range| self.elements.get(range)).map(<[usize]>::to_vec) else {
                     return Err(error(
                         line,
-                        words!(
+                        words!(lang, 
                             "cs418-elements-range",
                             count = count.to_string(),
                             offset = offset.to_string(),
@@ -204,21 +204,21 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                         ),
                     ));
                 };
-                self.triangles(line, &indices)?;
+                self.triangles(lang, line, &indices)?;
             }
             Command::DrawPoints { first, count } => {
                 for index in *first..first.saturating_add(*count) {
                     let size = self.sizes.get(index).cloned().ok_or_else(|| {
                         error(
                             line,
-                            words!(
+                            words!(lang, 
                                 "cs418-point-size-range",
                                 index = index.to_string(),
                                 has = self.sizes.len().to_string()
                             ),
                         )
                     })?;
-                    let vertex = self.vertex(line, index, false)?;
+                    let vertex = self.vertex(lang, line, index, false)?;
                     self.primitives.push(Primitive { line, vertices: vec![index] });
                     self.point(vertex, size);
                 }
@@ -230,11 +230,11 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     /// Vertex `index` in clip space: its position times the matrix, its
     /// colour and its texture coordinates (needed only by a triangle drawn
     /// with a texture; (0, 0) otherwise).
-    fn vertex(&self, line: usize, index: usize, textured: bool) -> Result<Vertex<S>, CaseError> {
+    fn vertex(&self, lang: crate::words::Lang, line: usize, index: usize, textured: bool) -> Result<Vertex<S>, CaseError> {
         let position = self.positions.get(index).ok_or_else(|| {
             error(
                 line,
-                words!("cs418-vertex-index", index = index.to_string(), count = self.positions.len().to_string()),
+                words!(lang, "cs418-vertex-index", index = index.to_string(), count = self.positions.len().to_string()),
             )
         })?;
         // A texture without decals replaces the colour, so none need be given
@@ -266,7 +266,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             None if textured => {
                 return Err(error(
                     line,
-                    words!("cs418-texcoord-range", index = index.to_string(), has = self.texcoords.len().to_string()),
+                    words!(lang, "cs418-texcoord-range", index = index.to_string(), has = self.texcoords.len().to_string()),
                 ));
             }
             None => [S::int(0), S::int(0)],
@@ -274,13 +274,13 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         Ok(position.into_iter().chain(colour).chain(texcoord).collect())
     }
 
-    fn triangles(&mut self, line: usize, indices: &[usize]) -> Result<(), CaseError> {
+    fn triangles(&mut self, lang: crate::words::Lang, line: usize, indices: &[usize]) -> Result<(), CaseError> {
         let textured = self.texture.is_some();
         for corners in indices.chunks_exact(3) {
             let vertices = [
-                self.vertex(line, corners[0], textured)?,
-                self.vertex(line, corners[1], textured)?,
-                self.vertex(line, corners[2], textured)?,
+                self.vertex(lang, line, corners[0], textured)?,
+                self.vertex(lang, line, corners[1], textured)?,
+                self.vertex(lang, line, corners[2], textured)?,
             ];
             self.primitives.push(Primitive { line, vertices: corners.to_vec() });
             let primitive = self.primitives.len() as u32;
@@ -297,7 +297,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 let Some(screen) = piece.iter().map(|v| self.to_screen(v)).collect::<Option<Vec<_>>>() else {
                     continue;
                 };
-                self.within_reach(line, &screen)?;
+                self.within_reach(lang, line, &screen)?;
                 if self.case.features.cull && !clockwise(&screen) {
                     continue;
                 }
@@ -316,14 +316,14 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     /// Refuses a triangle whose vertices land so far outside the image (or
     /// at no number at all) that walking its rows and columns would take
     /// ages: the DDA visits every integer between a vertex and the image.
-    fn within_reach(&self, line: usize, screen: &[Vertex<S>]) -> Result<(), CaseError> {
+    fn within_reach(&self, lang: crate::words::Lang, line: usize, screen: &[Vertex<S>]) -> Result<(), CaseError> {
         let reach = REACH * (self.width.max(self.height) as f64);
         for v in screen {
             let (x, y) = (v[0].to_f64(), v[1].to_f64());
             if !(x.abs() <= reach && y.abs() <= reach) {
                 return Err(error(
                     line,
-                    words!("cs418-too-far", x = x.to_string(), y = y.to_string(), reach = REACH.to_string()),
+                    words!(lang, "cs418-too-far", x = x.to_string(), y = y.to_string(), reach = REACH.to_string()),
                 ));
             }
         }

@@ -71,7 +71,7 @@ impl Arith {
     ];
 
     /// Reads `exact`, `f64`, `f64-incremental`, `f32-incremental`, `f32`, `f32-edge` or `fixed:K` (0 ≤ K ≤ 24).
-    pub fn parse(text: &str) -> Result<Arith, String> {
+    pub fn parse(lang: crate::words::Lang, text: &str) -> Result<Arith, String> {
         match text {
             "exact" => Ok(Arith::Exact),
             "f64" => Ok(Arith::F64),
@@ -81,9 +81,9 @@ impl Arith {
             "f32-edge" => Ok(Arith::F32Edge),
             _ => match text.strip_prefix("fixed:").map(str::parse::<u32>) {
                 Some(Ok(bits @ 0..=24)) => Ok(Arith::Fixed(bits)),
-                _ => Err(words!(
+                _ => Err(words!(lang, 
                     "usage-arith",
-                    text = crate::scene::text::printable(&crate::words::token(text)).into_owned()
+                    text = crate::scene::text::printable(&crate::words::token(lang, text)).into_owned()
                 )),
             },
         }

@@ -37,18 +37,24 @@ pub enum GpuError {
     },
 }
 
-impl std::fmt::Display for GpuError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+impl GpuError {
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: crate::words::Lang) -> String {
+        let mut text = String::new();
+        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
+        text
+    }
+
+    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         f.write_str(&match self {
-            GpuError::NoLibrary(reason) => words!("gpu-no-library", reason = reason.as_str()),
-            GpuError::NoVulkan(reason) => words!("gpu-no-vulkan", reason = reason.as_str()),
-            GpuError::NotBuilt(feature) => words!("gpu-not-built", feature = *feature),
-            GpuError::Refused { step, reason } => words!("gpu-refused", step = *step, reason = reason.as_str()),
+            GpuError::NoLibrary(reason) => words!(lang, "gpu-no-library", reason = reason.as_str()),
+            GpuError::NoVulkan(reason) => words!(lang, "gpu-no-vulkan", reason = reason.as_str()),
+            GpuError::NotBuilt(feature) => words!(lang, "gpu-not-built", feature = *feature),
+            GpuError::Refused { step, reason } => words!(lang, "gpu-refused", step = *step, reason = reason.as_str()),
         })
     }
 }
 
-impl std::error::Error for GpuError {}
 
 /// One triangle to draw: three vertices in pixel units `(x, y, z)` and the
 /// number it is drawn with (1 … 2^24 − 1; 0 is the background).
@@ -173,7 +179,7 @@ pub fn triangles(scene: &crate::scene::Scene) -> Triangles {
 /// shows at every pixel with zsim under the scene's own rules and under the
 /// API's preset. Only the plain algorithm is compared (no per-pixel effects,
 /// no antialiasing).
-pub fn compare(scene: &crate::scene::Scene, api: GpuApi) -> Result<GpuComparison, crate::error::Error> {
+pub fn compare(lang: crate::words::Lang, scene: &crate::scene::Scene, api: GpuApi) -> Result<GpuComparison, crate::error::Error> {
     use crate::error::Usage;
     use crate::rules::{Preset, Rules};
     if scene.has_pixel_effects() || scene.effects.antialias.is_some() {
@@ -200,7 +206,7 @@ pub fn compare(scene: &crate::scene::Scene, api: GpuApi) -> Result<GpuComparison
     let (book, in_api) = (shows(scene.rules), shows(api_rules));
     let (width, height) = (scene.width, scene.height);
     let Triangles { triangles, margin, not_convex } = triangles(scene);
-    let no_gpu = |error: GpuError| Usage::NoGpu { reason: error.to_string() };
+    let no_gpu = |error: GpuError| Usage::NoGpu { reason: error.message(lang) };
     let (renderer, picture) = match api {
         GpuApi::Gl => {
             let gl = Gl::open().map_err(no_gpu)?;
@@ -223,26 +229,26 @@ pub fn compare(scene: &crate::scene::Scene, api: GpuApi) -> Result<GpuComparison
             let tie = involved
                 .iter()
                 .flatten()
-                .find_map(|&i| crate::observe::tie::tie_text(api_rules, &scene.polygons[i].vertices(), x, y));
+                .find_map(|&i| crate::observe::tie::tie_text(lang, api_rules, &scene.polygons[i].vertices(), x, y));
             let why = tie.unwrap_or_else(|| {
                 let exact = |i: Option<usize>| {
                     i.map_or_else(
-                        || words!("gpu-background"),
+                        || words!(lang, "gpu-background"),
                         |i| {
                             let depth = crate::raster::depth::depth_at_centre(scene.polygons[i].geometry(), x, y);
-                            words!(
+                            words!(lang, 
                                 "gpu-exact-depth",
-                                polygon = crate::observe::explain::polygon_name(scene, i),
-                                depth = crate::numbers::exact_and_decimal(depth.value())
+                                polygon = crate::observe::explain::polygon_name(lang, scene, i),
+                                depth = crate::numbers::exact_and_decimal(lang, depth.value())
                             )
                         },
                     )
                 };
                 match picture.depth.get(((y + margin) * picture.width + x + margin) as usize) {
                     Some(stored) => {
-                        words!("gpu-why-depth", gpu = format!("{stored:.3}"), shown = exact(gpu), book = exact(in_book))
+                        words!(lang, "gpu-why-depth", gpu = format!("{stored:.3}"), shown = exact(gpu), book = exact(in_book))
                     }
-                    None => words!("gpu-why-depth-unread", shown = exact(gpu), book = exact(in_book)),
+                    None => words!(lang, "gpu-why-depth-unread", shown = exact(gpu), book = exact(in_book)),
                 }
             });
             differences.push(GpuDifference { x, y, gpu, book: in_book, preset: in_preset, why });
@@ -301,25 +307,25 @@ fn convex(points: &[[f64; 3]]) -> bool {
 impl GpuComparison {
     /// The comparison in the reader's language, as `zsim run --compare-gpu`
     /// prints it.
-    pub fn text(&self, scene: &crate::scene::Scene, path: &str) -> String {
+    pub fn text(&self, lang: crate::words::Lang, scene: &crate::scene::Scene, path: &str) -> String {
         let name = |i: Option<usize>| {
-            i.map_or_else(|| words!("gpu-background"), |i| crate::observe::explain::polygon_name(scene, i))
+            i.map_or_else(|| words!(lang, "gpu-background"), |i| crate::observe::explain::polygon_name(lang, scene, i))
         };
         let preset = match self.preset {
             crate::rules::Preset::Vulkan => "vulkan",
             _ => "gl",
         };
-        let mut text = words!("gpu-heading", path = path, renderer = self.renderer.as_str(), preset = preset) + "\n";
+        let mut text = words!(lang, "gpu-heading", path = path, renderer = self.renderer.as_str(), preset = preset) + "\n";
         for &index in &self.not_convex {
-            text.push_str(&format!("  {}\n", words!("gpu-not-convex", polygon = name(Some(index)))));
+            text.push_str(&format!("  {}\n", words!(lang, "gpu-not-convex", polygon = name(Some(index)))));
         }
         if self.differences.is_empty() {
-            text.push_str(&format!("{}\n", words!("gpu-same")));
+            text.push_str(&format!("{}\n", words!(lang, "gpu-same")));
             return text;
         }
-        text.push_str(&format!("{}\n", words!("gpu-differ", count = self.differences.len())));
+        text.push_str(&format!("{}\n", words!(lang, "gpu-differ", count = self.differences.len())));
         for d in &self.differences {
-            let line = words!(
+            let line = words!(lang, 
                 "gpu-cell",
                 x = d.x.to_string(),
                 y = d.y.to_string(),

@@ -26,24 +26,24 @@ use crate::scene::{Antialias, Effects, MAX_CELLS, MAX_SIDE, Polygon, Scene, Wind
 use numbers::{Coordinate, Number, ReadNumber};
 
 /// Reads and validates scene JSON; `path` is used in error messages only.
-pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
+pub(crate) fn read(lang: crate::words::Lang, text: &str, path: &Path) -> Result<Scene, Error> {
     if let Some(found) = top_level_kind(text) {
         return Err(Error::SceneFormat {
             path: path.to_owned(),
             location: String::new(),
-            message: words!("scene-not-object", found = words!(found)),
+            message: words!(lang, "scene-not-object", found = words!(lang, found)),
         });
     }
     // A scene of the common shape is read in pieces on every core; any
     // other, or one with an error, the plain way, which names the error.
-    match pieces::read(text, path) {
+    match pieces::read(lang, text, path) {
         Some(scene) => Ok(scene),
-        None => plain(text, path),
+        None => plain(lang, text, path),
     }
 }
 
 /// Reads and validates scene JSON of any shape, naming the first error.
-fn plain(text: &str, path: &Path) -> Result<Scene, Error> {
+fn plain(lang: crate::words::Lang, text: &str, path: &Path) -> Result<Scene, Error> {
     // Read at full speed first: the settings, with each polygon's text only
     // found; then each polygon read from its text and made at once, on every
     // core. Only a file with a polygon that does not read is read again, in
@@ -53,7 +53,7 @@ fn plain(text: &str, path: &Path) -> Result<Scene, Error> {
     if let Ok(file) = SceneFile::<&serde_json::value::RawValue>::deserialize(&mut deserializer)
         && deserializer.end().is_ok()
     {
-        let made = file.validate(path, |text, index, frame| from_text(text.get(), index, frame, path));
+        let made = file.validate(lang, path, |text, index, frame| from_text(lang, text.get(), index, frame, path));
         match made {
             Ok(scene) => return Ok(scene),
             Err(Unmade::Invalid(error)) => return Err(*error),
@@ -67,17 +67,17 @@ fn plain(text: &str, path: &Path) -> Result<Scene, Error> {
             matches!(error.inner().classify(), serde_json::error::Category::Syntax | serde_json::error::Category::Eof);
         Error::SceneFormat {
             path: path.to_owned(),
-            location: if syntax { String::new() } else { describe_location(&error.path().to_string()) },
-            message: format!("{}{}", json_message(error.inner()), missing_comma(text, error.inner())),
+            location: if syntax { String::new() } else { describe_location(lang, &error.path().to_string()) },
+            message: format!("{}{}", json_message(lang, error.inner()), missing_comma(lang, text, error.inner())),
         }
     })?;
     deserializer.end().map_err(|error| Error::SceneFormat {
         path: path.to_owned(),
         location: String::new(),
-        message: json_message(&error),
+        message: json_message(lang, &error),
     })?;
-    file.validate(path, |polygon, index, frame| {
-        polygon.validate(index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
+    file.validate(lang, path, |polygon, index, frame| {
+        polygon.validate(lang, index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
     })
     .map_err(|unmade| match unmade {
         Unmade::Invalid(error) => *error,
@@ -110,7 +110,7 @@ fn top_level_kind(text: &str) -> Option<&'static str> {
 /// For "expected `,`", where the comma belongs: serde_json reports the
 /// token after the gap, often on the next line; the comma is missing after
 /// the last character before it.
-fn missing_comma(text: &str, error: &serde_json::Error) -> String {
+fn missing_comma(lang: crate::words::Lang, text: &str, error: &serde_json::Error) -> String {
     if !error.to_string().starts_with("expected `,`") || error.line() == 0 {
         return String::new();
     }
@@ -125,26 +125,26 @@ fn missing_comma(text: &str, error: &serde_json::Error) -> String {
     };
     let line = text[..before].matches('\n').count() + 1;
     if line < error.line() {
-        words!("json-comma-end", line = line.to_string())
+        words!(lang, "json-comma-end", line = line.to_string())
     } else {
         let column = text[..before].rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-        words!("json-comma-after", line = line.to_string(), column = column.to_string())
+        words!(lang, "json-comma-after", line = line.to_string(), column = column.to_string())
     }
 }
 
 /// serde_json's message, saying "not valid JSON" when the syntax is at fault.
-fn json_message(error: &serde_json::Error) -> String {
+fn json_message(lang: crate::words::Lang, error: &serde_json::Error) -> String {
     match error.classify() {
         serde_json::error::Category::Syntax | serde_json::error::Category::Eof => {
-            words!("json-invalid", error = crate::words::json_reason(&error.to_string()))
+            words!(lang, "json-invalid", error = crate::words::json_reason(lang, &error.to_string()))
         }
-        _ => crate::words::json_reason(&error.to_string()),
+        _ => crate::words::json_reason(lang, &error.to_string()),
     }
 }
 
 /// Turns serde's path `polygons[1].vertices[0][2]` into
 /// `polygon 2: vertices[0][2]`, so messages name polygons as the CLI does.
-fn describe_location(path: &str) -> String {
+fn describe_location(lang: crate::words::Lang, path: &str) -> String {
     if path == "." {
         return String::new();
     }
@@ -154,9 +154,9 @@ fn describe_location(path: &str) -> String {
     {
         let tail = tail.trim_start_matches('.');
         return if tail.is_empty() {
-            words!("location-polygon", number = (index + 1).to_string())
+            words!(lang, "location-polygon", number = (index + 1).to_string())
         } else {
-            format!("{}: {tail}", words!("location-polygon", number = (index + 1).to_string()))
+            format!("{}: {tail}", words!(lang, "location-polygon", number = (index + 1).to_string()))
         };
     }
     path.to_string()
@@ -204,13 +204,13 @@ struct RulesFile {
 }
 
 /// Reads `"rules"`: a preset name, or an object naming a preset and overrides.
-fn rules_from(value: Option<serde_json::Value>) -> Result<Rules, String> {
+fn rules_from(lang: crate::words::Lang, value: Option<serde_json::Value>) -> Result<Rules, String> {
     let Some(value) = value else { return Ok(Rules::default()) };
     if value.is_string() {
-        let preset: Preset = serde_json::from_value(value).map_err(|e| crate::words::json_reason(&e.to_string()))?;
+        let preset: Preset = serde_json::from_value(value).map_err(|e| crate::words::json_reason(lang, &e.to_string()))?;
         return Ok(Rules::preset(preset));
     }
-    let file: RulesFile = serde_json::from_value(value).map_err(|e| crate::words::json_reason(&e.to_string()))?;
+    let file: RulesFile = serde_json::from_value(value).map_err(|e| crate::words::json_reason(lang, &e.to_string()))?;
     let base = Rules::preset(file.preset.unwrap_or(Preset::Rogers));
     Ok(Rules {
         preset: base.preset,
@@ -353,31 +353,32 @@ impl<P: Send> SceneFile<P> {
     /// is the first setting's, else the first polygon's in the file.
     fn validate(
         self,
+        lang: crate::words::Lang,
         path: &Path,
         make: impl Fn(P, usize, &Frame) -> Result<Polygon, Unmade> + Sync,
     ) -> Result<Scene, Unmade> {
-        let (scene, frame, polygons) = self.settings(path)?;
+        let (scene, frame, polygons) = self.settings(lang, path)?;
         with_made(scene, &frame, polygons, make)
     }
 
     /// Its settings validated: the scene they make, with no polygons yet
     /// ([`Scene::with_polygons`]), what its polygons are made in, and its
     /// polygons as read.
-    fn settings(self, path: &Path) -> Result<(Scene, Frame, Vec<P>), Unmade> {
+    fn settings(self, lang: crate::words::Lang, path: &Path) -> Result<(Scene, Frame, Vec<P>), Unmade> {
         let setting = |key: &'static str, message: String| {
             Unmade::Invalid(Box::new(Error::Setting { path: path.to_owned(), key, message }))
         };
         let bits = |key: &'static str, value: Option<u64>, default: u32| -> Result<u32, Unmade> {
             match value.unwrap_or(u64::from(default)) {
                 bits @ 1..=32 => Ok(bits as u32),
-                other => Err(setting(key, words!("setting-bits", value = other.to_string()))),
+                other => Err(setting(key, words!(lang, "setting-bits", value = other.to_string()))),
             }
         };
         let side = |key: &'static str, value: Option<u64>| -> Result<u32, Unmade> {
             match value.unwrap_or(32) {
-                0 => Err(setting(key, words!("setting-side-zero"))),
+                0 => Err(setting(key, words!(lang, "setting-side-zero"))),
                 side if side > MAX_SIDE => {
-                    Err(setting(key, words!("setting-side-large", side = side.to_string(), max = MAX_SIDE.to_string())))
+                    Err(setting(key, words!(lang, "setting-side-large", side = side.to_string(), max = MAX_SIDE.to_string())))
                 }
                 side => Ok(side as u32),
             }
@@ -387,7 +388,7 @@ impl<P: Send> SceneFile<P> {
         if u64::from(width) * u64::from(height) > MAX_CELLS {
             return Err(setting(
                 "width",
-                words!(
+                words!(lang, 
                     "setting-cells",
                     width = width.to_string(),
                     height = height.to_string(),
@@ -403,7 +404,7 @@ impl<P: Send> SceneFile<P> {
         if background > frame_max {
             return Err(setting(
                 "background",
-                words!(
+                words!(lang, 
                     "setting-background",
                     value = background.to_string(),
                     bits = frame_bits.to_string(),
@@ -411,7 +412,7 @@ impl<P: Send> SceneFile<P> {
                 ),
             ));
         }
-        let rules = rules_from(self.rules).map_err(|message| setting("rules", message))?;
+        let rules = rules_from(lang, self.rules).map_err(|message| setting("rules", message))?;
         let default_test = if rules.preset == Preset::Buet { DepthTest::Less } else { DepthTest::Greater };
         let depth_test = self.depth_test.unwrap_or(default_test);
         let window = match self.window {
@@ -421,7 +422,7 @@ impl<P: Send> SceneFile<P> {
                 if window.left >= window.right || window.bottom >= window.top {
                     return Err(setting(
                         "window",
-                        words!(
+                        words!(lang, 
                             "setting-window",
                             left = fraction(window.left),
                             right = fraction(window.right),
@@ -437,7 +438,7 @@ impl<P: Send> SceneFile<P> {
             Some([front, rear]) if front.0 > rear.0 => {
                 return Err(setting(
                     "depth_range",
-                    words!("setting-depth-range", front = fraction(front.0), rear = fraction(rear.0)),
+                    words!(lang, "setting-depth-range", front = fraction(front.0), rear = fraction(rear.0)),
                 ));
             }
             Some([front, rear]) => Some((front.0, rear.0)),
@@ -447,7 +448,7 @@ impl<P: Send> SceneFile<P> {
         let clear_depth = match (rules.store, self.clear_depth) {
             (DepthStore::Quantized | DepthStore::Truncated, None) => Stored::Level(depth_test.clear_value(depth_max)),
             (DepthStore::Quantized | DepthStore::Truncated, Some(_)) => {
-                return Err(setting("clear_depth", words!("setting-clear-depth")));
+                return Err(setting("clear_depth", words!(lang, "setting-clear-depth")));
             }
             (DepthStore::Exact, Some(value)) => Stored::Exact(Exact::Word(value.0)),
             (DepthStore::Exact, None) => {
@@ -463,7 +464,7 @@ impl<P: Send> SceneFile<P> {
                     store_w: matches!(p.store, Some(StoreFile::W)),
                 };
                 if perspective.distance <= Q::from_integer(0) || perspective.near <= Q::from_integer(0) {
-                    return Err(setting("effects", words!("setting-perspective-positive")));
+                    return Err(setting("effects", words!(lang, "setting-perspective-positive")));
                 }
                 Some(perspective)
             }
@@ -474,13 +475,13 @@ impl<P: Send> SceneFile<P> {
                 if !(1..=16).contains(&a.samples) {
                     return Err(setting(
                         "effects",
-                        words!("setting-antialias-samples", samples = a.samples.to_string()),
+                        words!(lang, "setting-antialias-samples", samples = a.samples.to_string()),
                     ));
                 }
                 if u64::from(width) * u64::from(height) * u64::from(a.samples).pow(2) > MAX_CELLS {
                     return Err(setting(
                         "effects",
-                        words!(
+                        words!(lang, 
                             "setting-antialias-cells",
                             width = width.to_string(),
                             height = height.to_string(),
@@ -490,7 +491,7 @@ impl<P: Send> SceneFile<P> {
                     ));
                 }
                 if rules.store == DepthStore::Exact {
-                    return Err(setting("effects", words!("setting-antialias-exact")));
+                    return Err(setting("effects", words!(lang, "setting-antialias-exact")));
                 }
                 Some(Antialias { samples: a.samples, depth_at_samples: a.depth != Some(AntialiasDepth::Pixel) })
             }
@@ -538,7 +539,6 @@ fn with_made<P: Send>(
     polygons: Vec<P>,
     make: impl Fn(P, usize, &Frame) -> Result<Polygon, Unmade> + Sync,
 ) -> Result<Scene, Unmade> {
-    let lang = crate::words::language();
     // Each polygon made straight into its place in the list, no second pass
     // over it: a polygon that failed leaves a stand-in there and its error
     // aside, and the list is then dropped.
@@ -547,7 +547,7 @@ fn with_made<P: Send>(
     let polygons: Vec<Polygon> = polygons
         .into_par_iter()
         .enumerate()
-        .map(|(index, polygon)| match crate::words::with_language(lang, || make(polygon, index, frame)) {
+        .map(|(index, polygon)| match make(polygon, index, frame) {
             Ok(polygon) => {
                 if polygon.opacity.is_some() {
                     transparency.store(true, std::sync::atomic::Ordering::Relaxed);
@@ -583,12 +583,12 @@ fn after_space(bytes: &[u8], at: usize) -> usize {
 
 /// The polygon whose text is `text`, made; [`Unmade::Unread`] when the text
 /// does not read as a polygon.
-fn from_text(text: &str, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Unmade> {
+fn from_text(lang: crate::words::Lang, text: &str, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Unmade> {
     let polygon = match strict::polygon(text) {
         Some(polygon) => polygon,
         None => serde_json::from_str::<PolygonFile>(text).map_err(|_| Unmade::Unread)?,
     };
-    polygon.validate(index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
+    polygon.validate(lang, index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
 }
 
 /// What a polygon's validation needs to know of the scene.
@@ -603,7 +603,7 @@ struct Frame {
 }
 
 impl PolygonFile {
-    fn validate(self, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
+    fn validate(self, lang: crate::words::Lang, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
         // Names reach terminals in every report: control characters are kept escaped (`\u{1b}`).
         let name = match self.name {
             None => crate::words::default_name(index),
@@ -635,16 +635,16 @@ impl PolygonFile {
         if let Some(alpha) = opacity
             && (alpha < Q::from_integer(0) || alpha > Q::from_integer(1))
         {
-            return Err(fail(&name, PolygonProblem::Other(words!("polygon-opacity", alpha = fraction(alpha)))));
+            return Err(fail(&name, PolygonProblem::Other(words!(lang, "polygon-opacity", alpha = fraction(alpha)))));
         }
         let VerticesFile { xyz: given, clip: clip_space } = self.vertices;
         let count = given.len() + clip_space.len();
         let mut vertices: Vec<[Exact; 3]> = if clip_space.is_empty() {
             given
         } else if clip_space.len() < count {
-            return Err(fail(&name, PolygonProblem::Other(words!("clip-space-mixed"))));
+            return Err(fail(&name, PolygonProblem::Other(words!(lang, "clip-space-mixed"))));
         } else if frame.window.is_some() || frame.perspective.is_some() {
-            return Err(fail(&name, PolygonProblem::Other(words!("clip-space-alone"))));
+            return Err(fail(&name, PolygonProblem::Other(words!(lang, "clip-space-alone"))));
         } else {
             let value = self.value as u32;
             return match crate::scene::clip_space::to_raster(&clip_space, frame.size.0, frame.size.1, frame.depth_max) {

@@ -39,15 +39,15 @@ const LONGEST_POLYGON: usize = 1 << 18;
 
 /// The scene, its polygons found in pieces on every core; `None` when the
 /// file is not of the common shape or has an error (see the module's doc).
-pub(super) fn read(text: &str, path: &Path) -> Option<Scene> {
-    read_in(text, path, PIECE_BYTES)
+pub(super) fn read(lang: crate::words::Lang, text: &str, path: &Path) -> Option<Scene> {
+    read_in(lang, text, path, PIECE_BYTES)
 }
 
 /// [`read`] in pieces of `piece_bytes` or more.
-pub(super) fn read_in(text: &str, path: &Path, piece_bytes: usize) -> Option<Scene> {
+pub(super) fn read_in(lang: crate::words::Lang, text: &str, path: &Path, piece_bytes: usize) -> Option<Scene> {
     let (settings, first) = settings_before_polygons(text)?;
     let file: SceneFile<&serde_json::value::RawValue> = serde_json::from_str(&settings).ok()?;
-    let (scene, frame, _) = file.settings(path).ok()?;
+    let (scene, frame, _) = file.settings(lang, path).ok()?;
     let bytes = text.as_bytes();
     let starts = piece_starts(bytes, first, piece_bytes);
     // A piece reads up to the next piece's start; its last polygon may run on past it.
@@ -75,7 +75,7 @@ pub(super) fn read_in(text: &str, path: &Path, piece_bytes: usize) -> Option<Sce
             End::Failed => return None,
         }
     }
-    with_made(scene, &frame, polygons, |text, index, frame| from_text(text, index, frame, path)).ok()
+    with_made(scene, &frame, polygons, |text, index, frame| from_text(lang, text, index, frame, path)).ok()
 }
 
 /// The settings written before the `"polygons"` key, as an object of their
