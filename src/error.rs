@@ -394,7 +394,8 @@ impl Usage {
             Usage::NoPolygonNamed { name, names } => {
                 words!(lang, "usage-no-polygon-named", name = name, names = quoted_list(names))
             }
-            Usage::PixelOutside { x, y, width, height } => words!(lang, 
+            Usage::PixelOutside { x, y, width, height } => words!(
+                lang,
                 "usage-pixel-outside",
                 x = x.to_string(),
                 y = y.to_string(),
@@ -404,7 +405,8 @@ impl Usage {
                 last_y = (height - 1).to_string()
             ),
             Usage::FigureFormat { path: p } => words!(lang, "usage-figure-format", path = path(p)),
-            Usage::FigureTooLarge { path: p, width, height, max } => words!(lang, 
+            Usage::FigureTooLarge { path: p, width, height, max } => words!(
+                lang,
                 "usage-figure-too-large",
                 path = path(p),
                 width = width.to_string(),
@@ -424,7 +426,9 @@ impl Usage {
             Usage::CheckNeedsAnswer => words!(lang, "usage-check-needs-answer"),
             Usage::IdentityColumn { column } => words!(lang, "usage-identity-column", column = *column),
             Usage::NoPoints => words!(lang, "usage-no-points"),
-            Usage::NoSubmission { folder } => words!(lang, "usage-no-submission", folder = folder.display().to_string()),
+            Usage::NoSubmission { folder } => {
+                words!(lang, "usage-no-submission", folder = folder.display().to_string())
+            }
             Usage::NoAnswersFound { class } => words!(lang, "usage-no-answers", path = path(class)),
             Usage::ScenesOutOfRange => words!(lang, "usage-scenes-range"),
             Usage::MemoryBits { option, bits } => {
@@ -446,7 +450,8 @@ impl Usage {
             Usage::ExercisePolygons { count } => words!(lang, "usage-exercise-polygons", count = count.to_string()),
             Usage::ExerciseBits => words!(lang, "usage-exercise-bits"),
             Usage::ExerciseNeedsTwoPolygons => words!(lang, "usage-exercise-two-polygons"),
-            Usage::ExerciseNotFound { polygons, width, height, cases, tries } => words!(lang, 
+            Usage::ExerciseNotFound { polygons, width, height, cases, tries } => words!(
+                lang,
                 "usage-exercise-not-found",
                 polygons = polygons.to_string(),
                 width = width.to_string(),
@@ -457,7 +462,8 @@ impl Usage {
             Usage::OutputIsInput { folder } => words!(lang, "usage-output-is-input", path = path(folder)),
             Usage::OutputWouldReplace { folder, files } => {
                 let shown: Vec<&str> = files.iter().take(5).map(String::as_str).collect();
-                words!(lang, 
+                words!(
+                    lang,
                     "usage-output-would-replace",
                     path = path(folder),
                     files = shown.join(", "),
@@ -471,21 +477,29 @@ impl Usage {
             Usage::TilesNeedFormatNone => words!(lang, "usage-tiles-need-format-none"),
             Usage::FormatNoneIsPlain => words!(lang, "usage-format-none-is-plain"),
             Usage::NoScanlines { index, name, why } => {
-                words!(lang, 
+                words!(
+                    lang,
                     "usage-no-scanlines",
                     polygon = crate::words::polygon_label(lang, "polygon-name", *index, name),
                     why = why
                 )
             }
             Usage::ScanlineNotReached { index, name, row, rows } => {
-                let reach = words!(lang, 
+                let reach = words!(
+                    lang,
                     "step-not-reach",
                     polygon = crate::words::polygon_label(lang, "polygon-name", *index, name),
                     scanline = words!(lang, "scanline", y = crate::words::localize_decimal(lang, format!("{row}.5")))
                 );
                 match rows {
                     Some((first, last)) => {
-                        words!(lang, "usage-scanline-rows", reach = reach, first = first.to_string(), last = last.to_string())
+                        words!(
+                            lang,
+                            "usage-scanline-rows",
+                            reach = reach,
+                            first = first.to_string(),
+                            last = last.to_string()
+                        )
                     }
                     None => words!(lang, "usage-scanline-no-rows", reach = reach),
                 }
@@ -523,7 +537,8 @@ impl PolygonProblem {
         match self {
             PolygonProblem::Geometry(error) => f.write_str(&error.message(lang)),
             PolygonProblem::Other(message) => f.write_str(message),
-            PolygonProblem::ValueTooWide { value, frame_bits } => f.write_str(&words!(lang, 
+            PolygonProblem::ValueTooWide { value, frame_bits } => f.write_str(&words!(
+                lang,
                 "polygon-value-too-wide",
                 value = value.to_string(),
                 bits = frame_bits.to_string(),
@@ -543,7 +558,8 @@ impl Error {
 
     fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self {
-            Error::Read { path, source } => f.write_str(&words!(lang, 
+            Error::Read { path, source } => f.write_str(&words!(
+                lang,
                 "error-read",
                 path = path.display().to_string(),
                 reason = crate::words::io_reason(lang, source)
@@ -559,12 +575,14 @@ impl Error {
                 };
                 f.write_str(&words!(lang, "error-not-regular", path = path.display().to_string(), kind = kind))
             }
-            Error::TooLarge { path, limit } => f.write_str(&words!(lang, 
+            Error::TooLarge { path, limit } => f.write_str(&words!(
+                lang,
                 "error-too-large",
                 path = path.display().to_string(),
                 limit = (limit >> 20).to_string()
             )),
-            Error::Write { path, source } => f.write_str(&words!(lang, 
+            Error::Write { path, source } => f.write_str(&words!(
+                lang,
                 "error-write",
                 path = path.display().to_string(),
                 reason = crate::words::io_reason(lang, source)
@@ -577,7 +595,8 @@ impl Error {
                 }
             }
             Error::Setting { path, key, message } => write!(f, "{}: {key}: {message}", path.display()),
-            Error::Polygon { origin, index, name, problem } => f.write_str(&words!(lang, 
+            Error::Polygon { origin, index, name, problem } => f.write_str(&words!(
+                lang,
                 "error-polygon",
                 path = match origin {
                     PolygonOrigin::File(path) => path.display().to_string(),
@@ -593,4 +612,3 @@ impl Error {
         }
     }
 }
-

@@ -145,6 +145,4 @@ pub use simulate::setup::{Stats, fate};
 pub use simulate::simulation::Simulation;
 pub use simulate::stages::{StageSet, describe};
 pub use teach::{diagnose, exercise, grade, page, step};
-pub use words::{
-    Arg, Lang, localize_decimal, polygon_label, text as message, token,
-};
+pub use words::{Arg, Lang, localize_decimal, polygon_label, text as message, token};

@@ -109,7 +109,8 @@ pub fn run(lang: zsim::Lang, args: &AccuracyArgs, out: &mut dyn Write) -> Result
         out,
         &format!(
             "{}\n{table}\n\n{}\n{sweep}\n",
-            zsim::words!(lang, 
+            zsim::words!(
+                lang,
                 "accuracy-set",
                 scenes = scenes.len().to_string(),
                 width = settings.width.to_string(),

@@ -88,7 +88,13 @@ fn write(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     std::fs::write(path, bytes).map_err(|source| Error::Write { path: path.to_owned(), source })
 }
 
-fn run_case(lang: zsim::Lang, dir: &Path, from: Option<Source>, output: &Path, out: &mut dyn Write) -> Result<Finish, Failure> {
+fn run_case(
+    lang: zsim::Lang,
+    dir: &Path,
+    from: Option<Source>,
+    output: &Path,
+    out: &mut dyn Write,
+) -> Result<Finish, Failure> {
     let case = Case::load(lang, dir, from)?;
     std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
     let mut written = Vec::new();
@@ -108,7 +114,8 @@ fn run_case(lang: zsim::Lang, dir: &Path, from: Option<Source>, output: &Path, o
     write(&image, &buet::bmp(simulation.buffers()))?;
     written.push(image);
     let stats = simulation.stats();
-    let mut text = zsim::words!(lang, 
+    let mut text = zsim::words!(
+        lang,
         "buet-run-summary",
         path = dir.display().to_string(),
         triangles = case.stage3.len().to_string(),
@@ -134,7 +141,8 @@ fn parse_answer(lang: zsim::Lang, path: &Path, height: u32) -> Result<Vec<Vec<St
             if value.parse::<f64>().is_err() {
                 return Err(Error::Answer {
                     path: path.to_owned(),
-                    message: zsim::words!(lang, 
+                    message: zsim::words!(
+                        lang,
                         "buet-answer-not-a-number",
                         line = (i + 1).to_string(),
                         value = (k + 1).to_string(),
@@ -153,7 +161,13 @@ fn parse_answer(lang: zsim::Lang, path: &Path, height: u32) -> Result<Vec<Vec<St
     Ok(rows)
 }
 
-fn check(lang: zsim::Lang, dir: &Path, from: Option<Source>, answer: &Path, out: &mut dyn Write) -> Result<Finish, Failure> {
+fn check(
+    lang: zsim::Lang,
+    dir: &Path,
+    from: Option<Source>,
+    answer: &Path,
+    out: &mut dyn Write,
+) -> Result<Finish, Failure> {
     let case = Case::load(lang, dir, from)?;
     let scene = &case.scene;
     let answer_rows = parse_answer(lang, answer, scene.height)?;
@@ -165,15 +179,20 @@ fn check(lang: zsim::Lang, dir: &Path, from: Option<Source>, answer: &Path, out:
     for (i, (given, right)) in answer_rows.iter().zip(&expected).enumerate() {
         for k in 0..given.len().max(right.len()) {
             let a = given.get(k).cloned().unwrap_or_else(|| zsim::words!(lang, "buet-none"));
-            let (column, r) = right.get(k).map_or((None, zsim::words!(lang, "buet-none")), |(x, v)| (Some(*x), v.clone()));
+            let (column, r) =
+                right.get(k).map_or((None, zsim::words!(lang, "buet-none")), |(x, v)| (Some(*x), v.clone()));
             if a != r {
                 differences.push((i, k, a, r, column));
             }
         }
     }
     if differences.is_empty() {
-        let text =
-            zsim::words!(lang, "buet-check-matches", answer = answer.display().to_string(), path = dir.display().to_string());
+        let text = zsim::words!(
+            lang,
+            "buet-check-matches",
+            answer = answer.display().to_string(),
+            path = dir.display().to_string()
+        );
         emit(out, &format!("{text}\n"))?;
         return Ok(Finish::Ok);
     }
@@ -197,7 +216,8 @@ fn check(lang: zsim::Lang, dir: &Path, from: Option<Source>, answer: &Path, out:
         };
         table.add_row([(i + 1).to_string(), (k + 1).to_string(), a.clone(), r.clone(), reason]);
     }
-    let heading = zsim::words!(lang, 
+    let heading = zsim::words!(
+        lang,
         "buet-check-differs",
         answer = answer.display().to_string(),
         count = differences.len(),

@@ -57,14 +57,22 @@ enum Format {
 
 /// Reads an answer file for one of `scene`'s buffers: a matrix as the book
 /// prints it; a symbolic link is followed only where `links` says so.
-pub fn read_answer(lang: zsim::Lang, path: &Path, scene: &Scene, buffer: Buffer, links: zsim::Links) -> Result<Matrix, Error> {
+pub fn read_answer(
+    lang: zsim::Lang,
+    path: &Path,
+    scene: &Scene,
+    buffer: Buffer,
+    links: zsim::Links,
+) -> Result<Matrix, Error> {
     let text = zsim::read_text_with(lang, path, links)?;
     let (max, description) = match buffer {
         Buffer::Frame => (
             zsim::max_for_bits(scene.frame_bits),
             zsim::words!(lang, "answer-frame-range", bits = scene.frame_bits.to_string()),
         ),
-        Buffer::Depth => (scene.depth_max(), zsim::words!(lang, "answer-depth-range", bits = scene.depth_bits.to_string())),
+        Buffer::Depth => {
+            (scene.depth_max(), zsim::words!(lang, "answer-depth-range", bits = scene.depth_bits.to_string()))
+        }
     };
     parse_answer(lang, &text, scene.width, scene.height, CellRange { max, buffer: &description })
         .map_err(|message| Error::Answer { path: path.to_owned(), message })
@@ -110,7 +118,8 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
         )],
     };
     if args.format == Format::Gradescope {
-        let results = gradescope::results(lang, &scene, &args.scene, &states, args.arith, args.visibility, args.points)?;
+        let results =
+            gradescope::results(lang, &scene, &args.scene, &states, args.arith, args.visibility, args.points)?;
         emit(out, &results)?;
         return Ok(Finish::Ok);
     }
@@ -213,7 +222,8 @@ pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Erro
 /// Checks `answers` (already read) against the buffers after polygon `last`,
 /// computed in `arith`, and explains every wrong cell: `zsim check`'s output,
 /// also the feedback `zsim grade` writes for each student.
-pub fn report(lang: zsim::Lang,
+pub fn report(
+    lang: zsim::Lang,
     scene: &Scene,
     scene_path: &Path,
     last: usize,
@@ -264,13 +274,20 @@ pub fn report(lang: zsim::Lang,
     for (buffer, path, mismatches, hint) in &results {
         let (after, file) = (zsim::explain::polygon_after(lang, scene, last), path.display().to_string());
         if mismatches.is_empty() {
-            let line =
-                zsim::words!(lang, "check-all-match", buffer = buffer.name(lang), file = file, cells = cells, after = after);
+            let line = zsim::words!(
+                lang,
+                "check-all-match",
+                buffer = buffer.name(lang),
+                file = file,
+                cells = cells,
+                after = after
+            );
             text.push_str(&line);
             text.push('\n');
             continue;
         }
-        let line = zsim::words!(lang, 
+        let line = zsim::words!(
+            lang,
             "check-differ",
             buffer = buffer.name(lang),
             file = file,
@@ -290,7 +307,10 @@ pub fn report(lang: zsim::Lang,
             text.push_str(&line);
             text.push('\n');
         }
-        text.push_str(&format!("{}\n", table(lang, scene, *buffer, mismatches, &watcher, (arith, simulation.buffers()))));
+        text.push_str(&format!(
+            "{}\n",
+            table(lang, scene, *buffer, mismatches, &watcher, (arith, simulation.buffers()))
+        ));
     }
     if let Some(diagnosis) = diagnosis {
         text.push_str(&format!("{}\n", diagnosis.words(lang)));
@@ -298,7 +318,8 @@ pub fn report(lang: zsim::Lang,
     Ok(Report { text, wrong })
 }
 
-fn table(lang: zsim::Lang,
+fn table(
+    lang: zsim::Lang,
     scene: &Scene,
     buffer: Buffer,
     mismatches: &[Mismatch],
@@ -326,7 +347,8 @@ fn table(lang: zsim::Lang,
             Buffer::Depth => exact.depth(cell.x, cell.y).level().unwrap_or(0),
         };
         if exact_value != cell.expected {
-            reason = zsim::words!(lang, 
+            reason = zsim::words!(
+                lang,
                 "check-in-arith",
                 arith = arith.to_string(),
                 mode = cell.expected,

@@ -65,8 +65,8 @@ pub fn run(lang: zsim::Lang, args: &Cs418Args, out: &mut dyn Write) -> Result<Fi
             run_case(lang, case, output, *arith, compare.as_deref(), *tolerance, out)
         }
         Cs418Command::Import { case, output } => {
-            let scene =
-                zsim::cs418::import::scene_json(lang, &load(lang, case, Textures::Ignored)?).map_err(|e| located(case, e))?;
+            let scene = zsim::cs418::import::scene_json(lang, &load(lang, case, Textures::Ignored)?)
+                .map_err(|e| located(case, e))?;
             super::emit_or_write(lang, out, output.as_deref(), &scene, &[case])?;
             Ok(Finish::Ok)
         }
@@ -110,7 +110,8 @@ fn load(lang: zsim::Lang, path: &Path, textures: Textures) -> Result<Case, Error
     Ok(case)
 }
 
-fn run_case(lang: zsim::Lang,
+fn run_case(
+    lang: zsim::Lang,
     path: &Path,
     output: &Path,
     arith: Arith,
@@ -126,7 +127,8 @@ fn run_case(lang: zsim::Lang,
     let reference = match compare {
         Some(png) => {
             let bytes = std::fs::read(png).map_err(|source| Error::Read { path: png.to_owned(), source })?;
-            let image = Image::from_png(lang, &bytes).map_err(|message| Error::Answer { path: png.to_owned(), message })?;
+            let image =
+                Image::from_png(lang, &bytes).map_err(|message| Error::Answer { path: png.to_owned(), message })?;
             Some((png, image))
         }
         None => None,
@@ -141,7 +143,8 @@ fn run_case(lang: zsim::Lang,
     std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
     let written = output.join(&case.output);
     std::fs::write(&written, result.image.to_png()).map_err(|source| Error::Write { path: written.clone(), source })?;
-    let mut text = zsim::words!(lang, 
+    let mut text = zsim::words!(
+        lang,
         "cs418-run-summary",
         path = path.display().to_string(),
         width = case.width.to_string(),
@@ -159,7 +162,8 @@ fn run_case(lang: zsim::Lang,
             None => {
                 return Err(Error::Answer {
                     path: png.to_owned(),
-                    message: zsim::words!(lang, 
+                    message: zsim::words!(
+                        lang,
                         "cs418-image-size",
                         width = image.width.to_string(),
                         height = image.height.to_string(),
@@ -170,7 +174,8 @@ fn run_case(lang: zsim::Lang,
                 .into());
             }
             Some(difference) if difference.pixels.is_empty() => {
-                let line = zsim::words!(lang, 
+                let line = zsim::words!(
+                    lang,
                     "cs418-compare-same",
                     path = png.display().to_string(),
                     tolerance = tolerance.to_string(),
@@ -180,7 +185,8 @@ fn run_case(lang: zsim::Lang,
             }
             Some(difference) => {
                 finish = Finish::Differs;
-                let line = zsim::words!(lang, 
+                let line = zsim::words!(
+                    lang,
                     "cs418-compare-differs",
                     path = png.display().to_string(),
                     count = difference.pixels.len(),
@@ -189,7 +195,8 @@ fn run_case(lang: zsim::Lang,
                 );
                 text.push_str(&format!("{line}\n"));
                 for (x, y, ours, theirs) in difference.pixels.iter().take(20) {
-                    let line = zsim::words!(lang, 
+                    let line = zsim::words!(
+                        lang,
                         "cs418-compare-pixel",
                         x = x.to_string(),
                         y = y.to_string(),
@@ -199,7 +206,8 @@ fn run_case(lang: zsim::Lang,
                     text.push_str(&format!("  {line}\n"));
                 }
                 if difference.pixels.len() > 20 {
-                    let more = zsim::words!(lang, "cs418-compare-more", count = (difference.pixels.len() - 20).to_string());
+                    let more =
+                        zsim::words!(lang, "cs418-compare-more", count = (difference.pixels.len() - 20).to_string());
                     text.push_str(&format!("  {more}\n"));
                 }
             }
@@ -232,7 +240,8 @@ fn disagreements(lang: zsim::Lang, course: &Comparison, exact: &Comparison) -> S
     let mut text = zsim::words!(lang, "cs418-arith-disagree", count = cells.len()) + "\n";
     for cell in &cells {
         let place = if course.level > 1 {
-            zsim::words!(lang, 
+            zsim::words!(
+                lang,
                 "cs418-place-sample",
                 x = cell.x.to_string(),
                 y = cell.y.to_string(),
@@ -250,7 +259,8 @@ fn disagreements(lang: zsim::Lang, course: &Comparison, exact: &Comparison) -> S
                 };
                 let (inside, outside) = (zsim::words!(lang, "cs418-inside"), zsim::words!(lang, "cs418-outside"));
                 let (course_side, exact_side) = if *course_covers { (inside, outside) } else { (outside, inside) };
-                zsim::words!(lang, 
+                zsim::words!(
+                    lang,
                     "cs418-why-span",
                     primitive = primitive.message(lang),
                     row = cell.y.to_string(),

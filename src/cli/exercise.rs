@@ -81,7 +81,8 @@ impl FigureFormat {
 }
 
 /// A figure's SVG in each format asked for: `(NAME.ext, bytes)`.
-fn figure_files(lang: zsim::Lang,
+fn figure_files(
+    lang: zsim::Lang,
     name: &str,
     svg: &str,
     formats: &[FigureFormat],
@@ -163,12 +164,14 @@ pub fn run(lang: zsim::Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result
     }
     // The worksheet and the solution are handed to students: in their language.
     let seed = args.seed.to_string();
-    let worksheet = svg_with(lang,
+    let worksheet = svg_with(
+        lang,
         scene,
         Simulation::new(scene).buffers(),
         last,
         Shading::Frame,
-        &zsim::words!(lang, 
+        &zsim::words!(
+            lang,
             "exercise-title",
             seed = &seed,
             width = scene.width,
@@ -185,7 +188,8 @@ pub fn run(lang: zsim::Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result
         },
     );
     let mut figures = figure_files(lang, "worksheet", &worksheet, &args.formats, dir)?;
-    let solution = svg_with(lang,
+    let solution = svg_with(
+        lang,
         scene,
         simulation.buffers(),
         last,
@@ -237,7 +241,8 @@ fn answers(simulation: &Simulation<'_>) -> [(&'static str, String); 2] {
 fn notes(lang: zsim::Lang, exercise: &Exercise, spec: &Spec, args: &ExerciseArgs) -> String {
     let scene = &exercise.scene;
     let asked: Vec<&str> = spec.hard.iter().map(|c| c.name()).collect();
-    let mut text = zsim::words!(lang, 
+    let mut text = zsim::words!(
+        lang,
         "exercise-notes-settings",
         seed = spec.seed.to_string(),
         width = scene.width.to_string(),

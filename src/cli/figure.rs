@@ -81,7 +81,13 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
     let mut title = if worksheet {
         zsim::words!(lang, "figure-title-worksheet", file = file)
     } else {
-        zsim::words!(lang, "figure-title-after", file = file, buffer = buffer, polygon = polygon_after(lang, &scene, last))
+        zsim::words!(
+            lang,
+            "figure-title-after",
+            file = file,
+            buffer = buffer,
+            polygon = polygon_after(lang, &scene, last)
+        )
     };
     // Antialiasing: the figure shows the samples, before they are averaged, and says so.
     let scene = match scene.effects.antialias {
@@ -115,7 +121,8 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
         out,
         &format!(
             "{}\n",
-            zsim::words!(lang, 
+            zsim::words!(
+                lang,
                 "file-written-about",
                 path = args.output.display().to_string(),
                 about = zsim::printable(&title).into_owned()
@@ -129,7 +136,8 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
 pub(super) fn png(lang: zsim::Lang, svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
     let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
     let tree = tree(lang, svg, path)?;
-    let size = tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed(zsim::words!(lang, "png-figure-too-large")))?;
+    let size =
+        tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed(zsim::words!(lang, "png-figure-too-large")))?;
     let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
         .ok_or_else(|| failed(zsim::words!(lang, "png-figure-too-large")))?;
     resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(2.0, 2.0), &mut pixmap.as_mut());

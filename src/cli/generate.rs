@@ -108,7 +108,8 @@ pub fn memory_command(lang: zsim::Lang, args: &MemoryArgs, out: &mut dyn Write) 
         out,
         &format!(
             "{}\n{table}\n{}\n",
-            zsim::words!(lang, 
+            zsim::words!(
+                lang,
                 "memory-heading",
                 width = args.width.to_string(),
                 height = args.height.to_string(),

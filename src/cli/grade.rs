@@ -116,7 +116,8 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
         }
         Format::Text => {
             let counts = |f: fn(&Grade) -> bool| rows.iter().filter(|g| f(g)).count();
-            let summary = zsim::words!(lang, 
+            let summary = zsim::words!(
+                lang,
                 "grade-summary",
                 class = args.class.display().to_string(),
                 scene = args.scene.display().to_string(),
@@ -180,23 +181,21 @@ fn submissions(
     students
         .into_par_iter()
         .map(|student| {
-            {
-                let answers = expected
-                    .iter()
-                    .map(|(buffer, _)| {
-                        let file = files.iter().find(|(s, b, _)| s == student && b == buffer);
-                        let handed = match file {
-                            None => Handed::Missing,
-                            Some((_, _, path)) => match read_answer(lang, path, scene, *buffer, zsim::Links::Refuse) {
-                                Ok(matrix) => Handed::Matrix(matrix),
-                                Err(error) => Handed::Malformed(as_the_student_sees(lang, &error, path)),
-                            },
-                        };
-                        (*buffer, handed)
-                    })
-                    .collect();
-                Submission { student: printable(student).into_owned(), answers }
-            }
+            let answers = expected
+                .iter()
+                .map(|(buffer, _)| {
+                    let file = files.iter().find(|(s, b, _)| s == student && b == buffer);
+                    let handed = match file {
+                        None => Handed::Missing,
+                        Some((_, _, path)) => match read_answer(lang, path, scene, *buffer, zsim::Links::Refuse) {
+                            Ok(matrix) => Handed::Matrix(matrix),
+                            Err(error) => Handed::Malformed(as_the_student_sees(lang, &error, path)),
+                        },
+                    };
+                    (*buffer, handed)
+                })
+                .collect();
+            Submission { student: printable(student).into_owned(), answers }
         })
         .collect()
 }
@@ -277,8 +276,13 @@ fn causes_text(lang: zsim::Lang, rows: &[&Grade]) -> String {
     counts.sort_by_key(|(m, count)| (std::cmp::Reverse(*count), *m));
     let mut text = format!("{}\n", zsim::words!(lang, "grade-causes"));
     for (misconception, count) in counts {
-        let line =
-            zsim::words!(lang, "grade-cause-count", what = misconception.words(lang), count = count, students = rows.len());
+        let line = zsim::words!(
+            lang,
+            "grade-cause-count",
+            what = misconception.words(lang),
+            count = count,
+            students = rows.len()
+        );
         text.push_str(&format!("  {line}\n"));
     }
     text.push('\n');
@@ -356,7 +360,14 @@ fn csv(rows: &[&Grade]) -> String {
     text
 }
 
-fn json(lang: zsim::Lang, scene: &Path, after: &str, rows: &[&Grade], mistakes: &[CommonMistake], reasons: &[String]) -> String {
+fn json(
+    lang: zsim::Lang,
+    scene: &Path,
+    after: &str,
+    rows: &[&Grade],
+    mistakes: &[CommonMistake],
+    reasons: &[String],
+) -> String {
     let students: Vec<serde_json::Value> = rows
         .iter()
         .map(|g| {
@@ -396,7 +407,8 @@ fn json(lang: zsim::Lang, scene: &Path, after: &str, rows: &[&Grade], mistakes: 
 }
 
 /// FOLDER/NAME.txt for each student and FOLDER/common-mistakes.txt.
-fn write_feedback(lang: zsim::Lang,
+fn write_feedback(
+    lang: zsim::Lang,
     folder: &Path,
     scene: &Scene,
     args: &GradeArgs,
@@ -407,7 +419,8 @@ fn write_feedback(lang: zsim::Lang,
 ) -> Result<(), Error> {
     let mut outputs = Vec::new();
     for (grade, _) in graded {
-        let mut text = zsim::words!(lang, 
+        let mut text = zsim::words!(
+            lang,
             "grade-feedback",
             student = &grade.student,
             scene = args.scene.display().to_string(),

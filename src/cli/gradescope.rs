@@ -40,7 +40,8 @@ impl Visibility {
 /// a polygon), worth an equal share of `points`, scored by its share of right
 /// cells; a missing or malformed file is a failed test worth nothing, its
 /// reason in the output. Text in the reader's language.
-pub fn results(lang: zsim::Lang,
+pub fn results(
+    lang: zsim::Lang,
     scene: &Scene,
     scene_path: &Path,
     states: &[super::check::State],
@@ -58,14 +59,19 @@ pub fn results(lang: zsim::Lang,
     for (k, (last, buffer, path)) in
         states.iter().flat_map(|(last, files)| files.iter().map(move |(b, p)| (last, b, p))).enumerate()
     {
-        let name =
-            zsim::words!(lang, "gradescope-test", buffer = buffer.name(lang), after = zsim::explain::polygon_after(lang, scene, *last));
+        let name = zsim::words!(
+            lang,
+            "gradescope-test",
+            buffer = buffer.name(lang),
+            after = zsim::explain::polygon_after(lang, scene, *last)
+        );
         let max_score = share(k as u64);
         let (score, output) = match super::check::read_answer(lang, path, scene, *buffer, zsim::Links::Refuse) {
             Ok(answer) => {
                 // The student sees the file's name, not where the autograder keeps it.
                 let shown = Path::new(path.file_name().unwrap_or(path.as_os_str()));
-                let report = super::check::report(lang, scene, scene_path, *last, vec![(*buffer, shown, answer)], arith)?;
+                let report =
+                    super::check::report(lang, scene, scene_path, *last, vec![(*buffer, shown, answer)], arith)?;
                 // The share of right cells, rounded down to a hundredth: only a right answer scores in full.
                 (max_score * (cells - (report.wrong as u64).min(cells)) / cells, report.text)
             }

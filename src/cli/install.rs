@@ -42,7 +42,8 @@ pub fn manual(lang: zsim::Lang, args: &ManualArgs, out: &mut dyn Write) -> Resul
             page_and_subpages(&command, &mut pages)?;
             super::write_fresh(dir, &pages, &[])?;
             let names: Vec<&str> = pages.iter().map(|(name, _)| name.as_str()).collect();
-            let line = zsim::words!(lang, "file-written-in", files = names.join(", "), path = dir.display().to_string());
+            let line =
+                zsim::words!(lang, "file-written-in", files = names.join(", "), path = dir.display().to_string());
             super::emit(out, &format!("{line}\n"))?;
         }
     }

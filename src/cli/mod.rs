@@ -198,7 +198,8 @@ fn usage_error(lang: zsim::Lang, error: &clap::Error) -> ExitCode {
         }
         ErrorKind::InvalidValue | ErrorKind::ValueValidation => {
             let reason = std::error::Error::source(error).map(|source| source.to_string());
-            Some(zsim::words!(lang, 
+            Some(zsim::words!(
+                lang,
                 "usage-invalid-value",
                 value = zsim::token(lang, &context(ContextKind::InvalidValue)),
                 arg = context(ContextKind::InvalidArg),
@@ -211,7 +212,8 @@ fn usage_error(lang: zsim::Lang, error: &clap::Error) -> ExitCode {
         ErrorKind::InvalidSubcommand => {
             Some(zsim::words!(lang, "usage-unknown-command", name = context(ContextKind::InvalidSubcommand)))
         }
-        ErrorKind::ArgumentConflict => Some(zsim::words!(lang, 
+        ErrorKind::ArgumentConflict => Some(zsim::words!(
+            lang,
             "usage-conflict",
             arg = context(ContextKind::InvalidArg),
             other = context(ContextKind::PriorArg)
@@ -242,7 +244,8 @@ fn emit(out: &mut dyn Write, text: &str) -> Result<(), Failure> {
 
 /// Prints `text`, or writes it to `output` (never one of `inputs`) and says
 /// so: the `-o FILE` of the commands that print a scene.
-pub(crate) fn emit_or_write(lang: zsim::Lang,
+pub(crate) fn emit_or_write(
+    lang: zsim::Lang,
     out: &mut dyn Write,
     output: Option<&Path>,
     text: &str,

@@ -169,7 +169,8 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
                     continue;
                 }
                 let mut text = format!("\n{}\n", report::polygon_heading(lang, &scene, index));
-                let counts = zsim::words!(lang, "run-counts", covered = counts.0.to_string(), written = counts.1.to_string());
+                let counts =
+                    zsim::words!(lang, "run-counts", covered = counts.0.to_string(), written = counts.1.to_string());
                 text.push_str(&format!("  {counts}\n"));
                 text.push_str(&buffers_text(lang, &simulation, index, &polygon.name, axes(args)));
                 emit(out, &text)?;
@@ -244,7 +245,8 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
                 out,
                 &format!(
                     "{}\n",
-                    summary(lang,
+                    summary(
+                        lang,
                         &scene,
                         &path,
                         simulation.stats(),
@@ -326,7 +328,8 @@ fn progress_bar(long: bool, length: usize, unit: &str) -> ProgressBar {
 /// The one-line summary: counts, effects, stages, the time spent reading and
 /// rasterizing (from clearing the buffers to the last polygon), and the memory held: the buffers' cells, the scene, and the
 /// process's peak resident size (where the system tells it).
-fn summary(lang: zsim::Lang,
+fn summary(
+    lang: zsim::Lang,
     scene: &Scene,
     path: &str,
     stats: Stats,
@@ -340,7 +343,8 @@ fn summary(lang: zsim::Lang,
     // The ratio means something only where the buffers and the scene dominate the
     // process (from 16 MiB); below, the program itself is most of the peak.
     let peak = match peak_resident_bytes() {
-        Some(peak) if buffers + scene_bytes >= 16 << 20 => zsim::words!(lang, 
+        Some(peak) if buffers + scene_bytes >= 16 << 20 => zsim::words!(
+            lang,
             "run-summary-peak-ratio",
             peak = bytes(peak),
             ratio = format!("{:.2}", peak as f64 / (buffers + scene_bytes) as f64)
@@ -348,7 +352,8 @@ fn summary(lang: zsim::Lang,
         Some(peak) => zsim::words!(lang, "run-summary-peak", peak = bytes(peak)),
         None => String::new(),
     };
-    zsim::words!(lang, 
+    zsim::words!(
+        lang,
         "run-summary",
         path = path,
         polygons = stats.polygons.to_string(),
@@ -386,7 +391,8 @@ fn peak_resident_bytes() -> Option<u64> {
 }
 
 /// `run --arith MODE` for an inexact mode: the final buffers, and how they differ from exact.
-fn run_inexact(lang: zsim::Lang,
+fn run_inexact(
+    lang: zsim::Lang,
     args: &RunArgs,
     scene: &Scene,
     path: &str,
@@ -426,7 +432,8 @@ fn run_inexact(lang: zsim::Lang,
                 &format!(
                     "{}{}\n\n{}\n{}\n{}\n{}",
                     report::scene_header(lang, scene, path),
-                    zsim::words!(lang, 
+                    zsim::words!(
+                        lang,
                         "run-arith-compared",
                         arith = args.arith.to_string(),
                         frame = frame_cells.to_string(),
@@ -488,7 +495,8 @@ fn compare_rules(lang: zsim::Lang, scene: &Scene, path: &str, preset: zsim::Pres
     };
     let point = |[x, y]: &[zsim::Exact; 2]| format!("({}, {})", zsim::fraction(x), zsim::fraction(y));
     for d in &differences {
-        let line = zsim::words!(lang, 
+        let line = zsim::words!(
+            lang,
             "compare-rules-cell",
             x = d.x.to_string(),
             y = d.y.to_string(),
@@ -503,7 +511,8 @@ fn compare_rules(lang: zsim::Lang, scene: &Scene, path: &str, preset: zsim::Pres
         for (polygon, boundary, a, b) in &d.ties {
             let name = &scene.polygons[*polygon].name;
             if *boundary == zsim::tie::Boundary::Vertex {
-                let line = zsim::words!(lang, 
+                let line = zsim::words!(
+                    lang,
                     "compare-rules-vertex",
                     x = d.x.to_string(),
                     y = d.y.to_string(),
@@ -517,7 +526,8 @@ fn compare_rules(lang: zsim::Lang, scene: &Scene, path: &str, preset: zsim::Pres
                 Some(true) => zsim::words!(lang, "compare-rules-covered"),
                 _ => zsim::words!(lang, "compare-rules-left-out"),
             };
-            let line = zsim::words!(lang, 
+            let line = zsim::words!(
+                lang,
                 "compare-rules-edge",
                 x = d.x.to_string(),
                 y = d.y.to_string(),

@@ -41,7 +41,8 @@ pub fn run(lang: zsim::Lang, args: &SpeedArgs, out: &mut dyn Write) -> Result<Fi
     let (low, high) = race.pair_ratios();
     let text = format!(
         "{}\n{}\n",
-        zsim::words!(lang, 
+        zsim::words!(
+            lang,
             "speed-header",
             scene = args.scene.display().to_string(),
             triangles = race.triangles,
@@ -52,7 +53,8 @@ pub fn run(lang: zsim::Lang, args: &SpeedArgs, out: &mut dyn Write) -> Result<Fi
             lp = lp_threads.as_str(),
             pairs = args.pairs
         ),
-        zsim::words!(lang, 
+        zsim::words!(
+            lang,
             "speed-result",
             zsim = ms(race.zsim_median()),
             gpu = ms(race.gpu_median()),

@@ -161,12 +161,15 @@ fn help(lang: zsim::Lang) -> String {
 /// What a move passed over, or why it stayed, as lines of the line mode.
 fn moved_text(lang: zsim::Lang, scene: &Scene, moved: &Moved) -> String {
     match moved {
-        Moved::To { skipped, .. } => skipped.iter().map(|skip| format!("  · {}\n", skip_text(lang, scene, skip))).collect(),
+        Moved::To { skipped, .. } => {
+            skipped.iter().map(|skip| format!("  · {}\n", skip_text(lang, scene, skip))).collect()
+        }
         Moved::Refused(refusal) => format!("{}\n", refusal.text(lang, scene)),
     }
 }
 
-fn interactive(lang: zsim::Lang,
+fn interactive(
+    lang: zsim::Lang,
     path: &str,
     stepper: &mut Stepper<'_>,
     start: Option<Stop>,
@@ -215,7 +218,13 @@ fn interactive(lang: zsim::Lang,
             Command::Back => stepper.back(),
             Command::Go(row) => stepper.go(row),
             Command::Unknown(text) => {
-                emit(out, &format!("{}\n", zsim::words!(lang, "step-unknown", text = zsim::token(lang, &text), help = help(lang))))?;
+                emit(
+                    out,
+                    &format!(
+                        "{}\n",
+                        zsim::words!(lang, "step-unknown", text = zsim::token(lang, &text), help = help(lang))
+                    ),
+                )?;
                 show = false;
                 continue;
             }
@@ -265,12 +274,19 @@ fn read_answer(
 /// Asks the quiz's questions of the current stop, as the model orders them
 /// (with `coverage`, first which centres the scanline covers; then, for each
 /// covered pixel, what the z-buffer holds after it).
-fn ask(lang: zsim::Lang, stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut Input, out: &mut dyn Write) -> Result<Asked, Failure> {
+fn ask(
+    lang: zsim::Lang,
+    stepper: &mut Stepper<'_>,
+    quiz: &mut Quiz,
+    input: &mut Input,
+    out: &mut dyn Write,
+) -> Result<Asked, Failure> {
     let scene = stepper.scene();
     while let Some(question) = quiz.question(stepper) {
         let (prompt, hint) = match &question {
             Question::Coverage { stop, row } => {
-                let ask = zsim::words!(lang, 
+                let ask = zsim::words!(
+                    lang,
                     "quiz-coverage-ask",
                     polygon = polygon_name(lang, scene, stop.polygon),
                     scanline = scanline_text(lang, *row)
@@ -281,14 +297,16 @@ fn ask(lang: zsim::Lang, stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut
             Question::Depth { stop, index, pixel } => {
                 if *index == 0 {
                     let row = pixel.y;
-                    let ask = zsim::words!(lang, 
+                    let ask = zsim::words!(
+                        lang,
                         "quiz-depth-ask",
                         polygon = polygon_name(lang, scene, stop.polygon),
                         scanline = scanline_text(lang, row)
                     );
                     emit(out, &format!("{ask}\n"))?;
                 }
-                let prompt = zsim::words!(lang, 
+                let prompt = zsim::words!(
+                    lang,
                     "quiz-depth-prompt",
                     x = pixel.x,
                     y = pixel.y,
@@ -298,14 +316,16 @@ fn ask(lang: zsim::Lang, stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut
             }
             Question::Frame { stop, index, pixel } => {
                 if *index == 0 {
-                    let ask = zsim::words!(lang, 
+                    let ask = zsim::words!(
+                        lang,
                         "quiz-frame-ask",
                         polygon = polygon_name(lang, scene, stop.polygon),
                         scanline = scanline_text(lang, pixel.y)
                     );
                     emit(out, &format!("{ask}\n"))?;
                 }
-                let prompt = zsim::words!(lang, "quiz-frame-prompt", x = pixel.x, y = pixel.y, before = pixel.frame_before);
+                let prompt =
+                    zsim::words!(lang, "quiz-frame-prompt", x = pixel.x, y = pixel.y, before = pixel.frame_before);
                 (prompt, zsim::words!(lang, "quiz-frame-hint"))
             }
         };
@@ -319,10 +339,12 @@ fn ask(lang: zsim::Lang, stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut
                 Reply::AskAgain(why) => emit(out, &format!("{why}\n"))?,
             }
         };
-        let right_or_wrong = if verdict.right { zsim::words!(lang, "tui-right") } else { zsim::words!(lang, "tui-wrong") };
+        let right_or_wrong =
+            if verdict.right { zsim::words!(lang, "tui-right") } else { zsim::words!(lang, "tui-wrong") };
         let (score, asked) = (quiz.right.to_string(), quiz.asked.to_string());
         let line = match &verdict.question {
-            Question::Coverage { .. } => zsim::words!(lang, 
+            Question::Coverage { .. } => zsim::words!(
+                lang,
                 "quiz-coverage-verdict",
                 right = &verdict.expected,
                 said = &verdict.said,
@@ -333,10 +355,13 @@ fn ask(lang: zsim::Lang, stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut
             ),
             Question::Depth { pixel, .. } | Question::Frame { pixel, .. } => {
                 let said = match (verdict.right, verdict.meant) {
-                    (true, Some(meant)) => zsim::words!(lang, "quiz-said-meant", said = &verdict.said, meant = meant.text(lang)),
+                    (true, Some(meant)) => {
+                        zsim::words!(lang, "quiz-said-meant", said = &verdict.said, meant = meant.text(lang))
+                    }
                     _ => zsim::words!(lang, "quiz-said", said = &verdict.said),
                 };
-                zsim::words!(lang, 
+                zsim::words!(
+                    lang,
                     "quiz-depth-verdict",
                     x = pixel.x,
                     y = pixel.y,
@@ -356,7 +381,9 @@ fn ask(lang: zsim::Lang, stepper: &mut Stepper<'_>, quiz: &mut Quiz, input: &mut
 /// For an antialiased scene, what `step` shows and what it does not.
 fn antialias_note(lang: zsim::Lang, scene: &Scene) -> String {
     match scene.effects.antialias {
-        Some(settings) => format!("   {}\n", zsim::words!(lang, "step-antialias-note", k = settings.samples.to_string())),
+        Some(settings) => {
+            format!("   {}\n", zsim::words!(lang, "step-antialias-note", k = settings.samples.to_string()))
+        }
         None => String::new(),
     }
 }
@@ -371,7 +398,8 @@ fn stop_text(lang: zsim::Lang, stepper: &mut Stepper<'_>, stop: Stop, color: boo
     let mut text = format!("\n── {}\n", report::polygon_heading(lang, scene, p));
     text.push_str(&antialias_note(lang, scene));
     text.push_str(&format!("   {}\n", zsim::words!(lang, "step-slope", slope = slope)));
-    let heading = zsim::words!(lang, "step-scanline", scanline = scanline_text(lang, record.row), row = record.row.to_string());
+    let heading =
+        zsim::words!(lang, "step-scanline", scanline = scanline_text(lang, record.row), row = record.row.to_string());
     text.push_str(&format!("{heading}\n"));
     let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(lang, x)).collect();
     let list = if crossings.is_empty() {
@@ -387,8 +415,11 @@ fn stop_text(lang: zsim::Lang, stepper: &mut Stepper<'_>, stop: Stop, color: boo
             }
             None => zsim::words!(lang, "step-no-column"),
         };
-        let depth = |z: &Option<Exact>| z.as_ref().map_or_else(|| zsim::words!(lang, "z-beyond"), |z| depth_text(lang, scene, z));
-        let line = zsim::words!(lang, 
+        let depth = |z: &Option<Exact>| {
+            z.as_ref().map_or_else(|| zsim::words!(lang, "z-beyond"), |z| depth_text(lang, scene, z))
+        };
+        let line = zsim::words!(
+            lang,
             "step-span",
             n = (n + 1).to_string(),
             xa = exact_and_decimal(lang, &span.left),
@@ -492,10 +523,22 @@ fn pixel_table(lang: zsim::Lang, scene: &Scene, pixels: &[PixelEvent], color: bo
             Outcome::Written if !depth_test.compares() => zsim::words!(lang, "step-written", test = uncompared(true)),
             Outcome::Hidden if !depth_test.compares() => zsim::words!(lang, "step-hidden", test = uncompared(false)),
             Outcome::Written => {
-                zsim::words!(lang, "step-test-written", z = fraction(&z), op = op, stored = pixel.stored_before.text(lang))
+                zsim::words!(
+                    lang,
+                    "step-test-written",
+                    z = fraction(&z),
+                    op = op,
+                    stored = pixel.stored_before.text(lang)
+                )
             }
             Outcome::Hidden => {
-                zsim::words!(lang, "step-test-hidden", z = fraction(&z), op = op, stored = pixel.stored_before.text(lang))
+                zsim::words!(
+                    lang,
+                    "step-test-hidden",
+                    z = fraction(&z),
+                    op = op,
+                    stored = pixel.stored_before.text(lang)
+                )
             }
             Outcome::BeyondSection => {
                 zsim::words!(lang, "step-beyond-section", op = op, stored = pixel.stored_before.text(lang))

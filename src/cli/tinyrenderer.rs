@@ -55,7 +55,8 @@ enum Command {
 fn side(lang: zsim::Lang, text: &str) -> Result<i64, String> {
     match text.parse::<i64>() {
         Ok(n) if tinyrenderer::SIDES.contains(&n) => Ok(n),
-        _ => Err(zsim::words!(lang, 
+        _ => Err(zsim::words!(
+            lang,
             "usage-tinyrenderer-size",
             text = zsim::printable(&zsim::token(lang, text)).into_owned(),
             min = *tinyrenderer::SIDES.start(),
@@ -99,7 +100,8 @@ pub fn run(lang: zsim::Lang, args: &TinyrendererArgs, out: &mut dyn Write) -> Re
             let drawn_faces = loaded.faces.len() - drawn.skipped;
             let mut text = format!(
                 "{}\n",
-                zsim::words!(lang, 
+                zsim::words!(
+                    lang,
                     "tinyrenderer-run",
                     model = model.display().to_string(),
                     faces = loaded.faces.len(),
@@ -131,7 +133,8 @@ fn differences(lang: zsim::Lang, model: &Model, exact: &tinyrenderer::Render, si
     for &cell in differing.iter().take(LISTED) {
         let (x, y) = (cell % size as usize, cell / size as usize);
         let face = exact.face[cell].map_or(0, |f| f + 1);
-        let line = zsim::words!(lang, 
+        let line = zsim::words!(
+            lang,
             "tinyrenderer-differ-pixel",
             x = x,
             y = y,

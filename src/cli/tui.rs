@@ -204,8 +204,11 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             Moved::To { at, skipped } => {
                 if !skipped.is_empty() {
                     let skipped: Vec<String> = skipped.iter().map(|skip| skip_text(lang, scene, skip)).collect();
-                    self.message =
-                        zsim::words!(lang, "tui-passed-over", list = skipped.join(&zsim::words!(lang, "list-semicolon")));
+                    self.message = zsim::words!(
+                        lang,
+                        "tui-passed-over",
+                        list = skipped.join(&zsim::words!(lang, "list-semicolon"))
+                    );
                 }
                 if at.is_none() {
                     self.message = zsim::words!(lang, "step-end");
@@ -264,7 +267,8 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
         let scene = self.stepper.scene();
         let record = self.record();
         let heading = match (self.stepper.at(), &record) {
-            (Some(stop), Some(r)) => zsim::words!(lang, 
+            (Some(stop), Some(r)) => zsim::words!(
+                lang,
                 "tui-heading",
                 polygon = polygon_name(lang, scene, stop.polygon),
                 scanline = scanline_text(lang, r.row)
@@ -318,14 +322,16 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
                 Question::Coverage { row, .. } => {
                     zsim::words!(lang, "tui-quiz-coverage-ask", scanline = scanline_text(lang, row), typed = typed)
                 }
-                Question::Frame { pixel, .. } => zsim::words!(lang, 
+                Question::Frame { pixel, .. } => zsim::words!(
+                    lang,
                     "tui-quiz-frame-ask",
                     x = pixel.x,
                     y = pixel.y,
                     before = pixel.frame_before,
                     typed = typed
                 ),
-                Question::Depth { pixel, .. } => zsim::words!(lang, 
+                Question::Depth { pixel, .. } => zsim::words!(
+                    lang,
                     "tui-quiz-ask",
                     x = pixel.x,
                     y = pixel.y,
@@ -407,7 +413,8 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
         }
         let last_shown = (first + columns_shown).min(width) - 1;
         lines.push(Line::from(format!("     {}", column_numbers(first..=last_shown, cell))));
-        let shown = zsim::words!(lang, 
+        let shown = zsim::words!(
+            lang,
             "tui-columns-shown",
             first = first.to_string(),
             last = last_shown.to_string(),
@@ -454,16 +461,19 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             ));
             for (pixel, z) in record.pixels.iter().zip(&zs) {
                 let (test, verdict, style) = match pixel.outcome {
-                    Outcome::Written => {
-                        (String::new(), format!("{} ({})", pixel.stored_after.text(lang), pixel.frame_after), Color::Green)
-                    }
+                    Outcome::Written => (
+                        String::new(),
+                        format!("{} ({})", pixel.stored_after.text(lang), pixel.frame_after),
+                        Color::Green,
+                    ),
                     _ => (
                         if compares { zsim::words!(lang, "tui-not") } else { String::new() },
                         zsim::words!(lang, "tui-hidden"),
                         Color::Red,
                     ),
                 };
-                let line = format!("{:>3} {z:<width$} {test}{op}{} → {verdict}", pixel.x, pixel.stored_before.text(lang));
+                let line =
+                    format!("{:>3} {z:<width$} {test}{op}{} → {verdict}", pixel.x, pixel.stored_before.text(lang));
                 lines.push(Line::styled(line, Style::new().fg(style)));
             }
             lines.push(Line::from(zsim::words!(lang, "tui-pixel-by-pixel")));
@@ -481,7 +491,8 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
                 }
                 _ => String::new(),
             };
-            lines.push(Line::from(zsim::words!(lang, 
+            lines.push(Line::from(zsim::words!(
+                lang,
                 "tui-pixel",
                 x = pixel.x,
                 y = pixel.y,
@@ -504,14 +515,16 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
 fn verdict_text(lang: zsim::Lang, verdict: &Verdict) -> String {
     let right_or_wrong = if verdict.right { zsim::words!(lang, "tui-right") } else { zsim::words!(lang, "tui-wrong") };
     match &verdict.question {
-        Question::Coverage { .. } => zsim::words!(lang, 
+        Question::Coverage { .. } => zsim::words!(
+            lang,
             "tui-quiz-coverage-verdict",
             right = &verdict.expected,
             typed = &verdict.said,
             verdict = right_or_wrong,
             why = &verdict.why
         ),
-        Question::Depth { pixel, .. } | Question::Frame { pixel, .. } => zsim::words!(lang, 
+        Question::Depth { pixel, .. } | Question::Frame { pixel, .. } => zsim::words!(
+            lang,
             "tui-quiz-verdict",
             x = pixel.x,
             y = pixel.y,

@@ -13,7 +13,8 @@ fn stepper(scene: &Scene, start: Option<Stop>) -> Stepper<'_> {
 }
 
 fn book() -> Scene {
-    Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
+    Scene::load(zsim::Lang::En, std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")))
+        .unwrap()
 }
 
 /// The screen as text, one line a row.
@@ -65,11 +66,9 @@ fn snapshot(name: &str, text: String) {
 fn the_app_speaks_the_chosen_language() {
     let scene = book();
     let mut stepper = stepper(&scene, None);
-    let mut app = App::new(&mut stepper, None);
-    let text = zsim::with_language(zsim::Lang::Zh, || {
-        press(&mut app, "pg15\n");
-        screen(&mut app, 100, 30)
-    });
+    let mut app = App::new(&mut stepper, None, zsim::Lang::Zh);
+    press(&mut app, "pg15\n");
+    let text = screen(&mut app, 100, 30);
     assert!(text.starts_with("zsim step · 多边形 2“triangle”，扫描线 y = 15.5 · 帧缓冲器 · ? 按键"), "{text}");
     snapshot("tui_rogers_triangle_15_zh", text);
 }
@@ -78,7 +77,7 @@ fn the_app_speaks_the_chosen_language() {
 fn the_first_screen_fits_80_by_24() {
     let scene = book();
     let mut stepper = stepper(&scene, None);
-    let mut app = App::new(&mut stepper, None);
+    let mut app = App::new(&mut stepper, None, zsim::Lang::En);
     let text = screen(&mut app, 80, 24);
     assert!(text.lines().all(|l| l.chars().count() <= 80));
     assert!(text.starts_with("zsim step · polygon 1 \"rectangle\", scanline y = 5.5 · framebuffer · ? keys"), "{text}");
@@ -89,7 +88,7 @@ fn the_first_screen_fits_80_by_24() {
 fn keys_move_without_enter_and_the_book_pixel_shows() {
     let scene = book();
     let mut stepper = stepper(&scene, None);
-    let mut app = App::new(&mut stepper, None);
+    let mut app = App::new(&mut stepper, None, zsim::Lang::En);
     // p: the triangle's first scanline (row 10); g15⏎: its scanline 15; z: the z-buffer.
     press(&mut app, "pg15\nz");
     let text = screen(&mut app, 100, 30);
@@ -154,10 +153,10 @@ mod random_keys {
             keys in prop::collection::vec(key(), 0..60),
         ) {
             let path = format!("{}/examples/{example}.json", env!("CARGO_MANIFEST_DIR"));
-            let scene = Scene::load(std::path::Path::new(&path)).unwrap();
+            let scene = Scene::load(zsim::Lang::En, std::path::Path::new(&path)).unwrap();
             let mut stepper = stepper(&scene, None);
             let mut quiz = quiz.map(Quiz::new);
-            let mut app = App::new(&mut stepper, quiz.as_mut());
+            let mut app = App::new(&mut stepper, quiz.as_mut(), zsim::Lang::En);
             screen(&mut app, size.0, size.1);
             for code in keys {
                 app.key(KeyEvent::new(code, KeyModifiers::NONE));
@@ -173,7 +172,7 @@ fn the_quiz_asks_before_each_pixel_is_shown() {
     // The triangle's scanline 15 (its recorded scanline 5: rows 10 … 15).
     let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
     let mut quiz = Quiz::new(QuizMode::Depth);
-    let mut app = App::new(&mut stepper, Some(&mut quiz));
+    let mut app = App::new(&mut stepper, Some(&mut quiz), zsim::Lang::En);
     let text = screen(&mut app, 100, 30);
     assert!(text.contains("quiz: the z-buffer after (15, 15), stored 10?"), "{text}");
     press(&mut app, "15\n");
@@ -191,16 +190,19 @@ fn the_quiz_asks_before_each_pixel_is_shown() {
 fn the_keys_box_keeps_each_key_and_its_action_on_one_line_at_80_by_24() {
     let scene = book();
     let mut stepper = stepper(&scene, None);
-    let mut app = App::new(&mut stepper, None);
+    let mut app = App::new(&mut stepper, None, zsim::Lang::En);
     press(&mut app, "?");
     let text = screen(&mut app, 80, 24);
     for line in ["n Space Enter → ↓  next scanline (or pixel)", "f / z              show the framebuffer / z-buffer"]
     {
         assert!(text.contains(line), "{line:?} on one line:\n{text}");
     }
+    drop(app);
     for lang in [zsim::Lang::Ru, zsim::Lang::Uk, zsim::Lang::Zh] {
-        let help = zsim::with_language(lang, || zsim::message("tui-help", &[]));
-        let text = zsim::with_language(lang, || screen(&mut app, 80, 24));
+        let mut app = App::new(&mut stepper, None, lang);
+        press(&mut app, "?");
+        let help = zsim::message(lang, "tui-help", &[]);
+        let text = screen(&mut app, 80, 24);
         let first = help.lines().next().unwrap();
         assert!(text.contains(first), "{lang:?}: {first:?} on one line:\n{text}");
     }
@@ -216,7 +218,7 @@ fn the_quiz_asks_again_on_junk_and_keeps_digits_typed_after_a_verdict() {
     let scene = book();
     let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
     let mut quiz = Quiz::new(QuizMode::Depth);
-    let mut app = App::new(&mut stepper, Some(&mut quiz));
+    let mut app = App::new(&mut stepper, Some(&mut quiz), zsim::Lang::En);
     press(&mut app, "abc\n");
     let text = screen(&mut app, 100, 30);
     assert!(text.contains("\"abc\" is not an answer"), "{text}");
@@ -236,7 +238,7 @@ fn the_quiz_asks_again_on_junk_and_keeps_digits_typed_after_a_verdict() {
     assert!(text.contains("quiz 2/2"), "{text}");
     press(&mut app, "1\nq");
     assert!(app.quit);
-    let summary = quiz.summary();
+    let summary = quiz.summary(zsim::Lang::En);
     assert!(
         summary.starts_with(
             "quiz score: 2 of 3 right\nyour mistakes:\n  (17, 15) of polygon 2 \"triangle\": you said 1, right 13: "
@@ -254,7 +256,7 @@ fn the_full_screen_quiz_asks_the_coverage_question_first() {
     let scene = book();
     let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
     let mut quiz = Quiz::new(QuizMode::Coverage);
-    let mut app = App::new(&mut stepper, Some(&mut quiz));
+    let mut app = App::new(&mut stepper, Some(&mut quiz), zsim::Lang::En);
     let text = screen(&mut app, 120, 30);
     assert!(text.contains("quiz: which centres does scanline y = 15.5 cover?"), "{text}");
     assert!(!text.contains("crossings"), "the crossings would give the answer away: {text}");
@@ -273,7 +275,7 @@ fn the_full_screen_quiz_asks_the_framebuffer_question() {
     let scene = book();
     let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
     let mut quiz = Quiz::new(QuizMode::Frame);
-    let mut app = App::new(&mut stepper, Some(&mut quiz));
+    let mut app = App::new(&mut stepper, Some(&mut quiz), zsim::Lang::En);
     let text = screen(&mut app, 120, 30);
     assert!(text.contains("quiz: the framebuffer after (15, 15), now 1?"), "{text}");
     press(&mut app, "2\n");

@@ -58,7 +58,13 @@ fn comparison(lang: zsim::Lang, ours: &Buffers, plain: &Buffers) -> String {
     }
 }
 
-pub fn run(lang: zsim::Lang, scene: &Scene, path: &str, variant: &Variant, out: &mut dyn Write) -> Result<Finish, Failure> {
+pub fn run(
+    lang: zsim::Lang,
+    scene: &Scene,
+    path: &str,
+    variant: &Variant,
+    out: &mut dyn Write,
+) -> Result<Finish, Failure> {
     let last_name = scene.polygons.last().map_or(String::new(), |p| p.name.clone());
     let mut plain = Simulation::new(scene);
     plain.finish(&mut Unobserved);
@@ -74,7 +80,8 @@ pub fn run(lang: zsim::Lang, scene: &Scene, path: &str, variant: &Variant, out: 
         let drawn = (0..scene.polygons.len()).filter(|&i| zsim::fate(scene, i) == zsim::Fate::Drawn).count();
         let lines = [
             zsim::words!(lang, "segments-kind", count = stats.segments.to_string(), segments = segments.to_string()),
-            zsim::words!(lang, 
+            zsim::words!(
+                lang,
                 "segments-memory",
                 cells = stats.depth_cells.to_string(),
                 bits = depth_bits.to_string(),
@@ -144,8 +151,13 @@ pub fn run(lang: zsim::Lang, scene: &Scene, path: &str, variant: &Variant, out: 
     let k = settings.samples;
     let mut text = report::scene_header(lang, scene, path);
     let at = if settings.depth_at_samples { "antialias-at-sample" } else { "antialias-at-centre" };
-    let line =
-        zsim::words!(lang, "antialias-heading", k = k.to_string(), at = zsim::words!(lang, at), samples = (k * k).to_string());
+    let line = zsim::words!(
+        lang,
+        "antialias-heading",
+        k = k.to_string(),
+        at = zsim::words!(lang, at),
+        samples = (k * k).to_string()
+    );
     text.push_str(&format!("{line}\n"));
     let style = MatrixStyle { axes: variant.axes, color: super::use_color(), ..MatrixStyle::default() };
     for (index, picture) in pictures.iter().enumerate() {

@@ -35,7 +35,9 @@ impl CaseError {
 
     fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self.line {
-            Some(line) => f.write_str(&words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str())),
+            Some(line) => {
+                f.write_str(&words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str()))
+            }
             None => f.write_str(&self.message),
         }
     }
@@ -83,7 +85,12 @@ impl Config {
             word.parse::<u32>().ok().filter(|v| (1..=crate::scene::MAX_SIDE as u32).contains(v)).ok_or_else(|| {
                 case_error(
                     Some(line),
-                    words!(lang, "buet-size", word = crate::words::token(lang, word), max = crate::scene::MAX_SIDE.to_string()),
+                    words!(
+                        lang,
+                        "buet-size",
+                        word = crate::words::token(lang, word),
+                        max = crate::scene::MAX_SIDE.to_string()
+                    ),
                 )
             })
         };
@@ -254,7 +261,8 @@ impl<'a> Lines<'a> {
             Ok(values) if values.len() == count && values.iter().all(|v| v.is_finite()) => Ok(values),
             _ => Err(case_error(
                 Some(line),
-                words!(lang, 
+                words!(
+                    lang,
                     "buet-numbers",
                     what = words!(lang, what),
                     count = count.to_string(),
@@ -618,18 +626,18 @@ mod tests {
 
     #[test]
     fn both_config_forms_are_read() {
-        let short = Config::parse("500 500").unwrap();
+        let short = Config::parse(crate::words::Lang::En, "500 500").unwrap();
         assert_eq!((short.width, short.height, short.z_max), (500, 500, Q::from_integer(2)));
         assert_eq!(
             (short.left, short.z_front, short.z_rear),
             (Q::from_integer(-1), Q::from_integer(-1), Q::from_integer(1))
         );
-        let long = Config::parse("640 480\n-2.5\n-1.5\n0.5 10\n").unwrap();
+        let long = Config::parse(crate::words::Lang::En, "640 480\n-2.5\n-1.5\n0.5 10\n").unwrap();
         assert_eq!((long.left, long.bottom), (Q::new(-5, 2), Q::new(-3, 2)));
         assert_eq!((long.z_front, long.z_rear, long.z_max), (Q::new(1, 2), Q::from_integer(10), Q::from_integer(10)));
-        assert!(Config::parse("500").is_err());
-        assert!(Config::parse("500 500\n-1\n").is_err());
-        assert!(Config::parse("500 500\n1\n-1\n-1 1").is_err());
+        assert!(Config::parse(crate::words::Lang::En, "500").is_err());
+        assert!(Config::parse(crate::words::Lang::En, "500 500\n-1\n").is_err());
+        assert!(Config::parse(crate::words::Lang::En, "500 500\n1\n-1\n-1 1").is_err());
     }
 
     #[test]

@@ -81,7 +81,9 @@ impl Model {
                     let first = corner.split('/').next().unwrap_or("");
                     face[k] = match first.parse::<usize>() {
                         Ok(v) if v >= 1 => v - 1,
-                        _ => return Err(fail(words!(lang, "obj-bad-index", token = crate::words::token(lang, corner)))),
+                        _ => {
+                            return Err(fail(words!(lang, "obj-bad-index", token = crate::words::token(lang, corner))));
+                        }
                     };
                 }
                 faces.push((number, face));
@@ -411,12 +413,15 @@ mod tests {
 
     #[test]
     fn obj_lines_are_read_as_the_lesson_reads_them_and_a_bad_one_is_named() {
-        let model =
-            Model::parse("# a comment\nv 0 0 0\nv 1 0 0.5\nv 0 1 -1\nvt 0 0\nf 1/1/1 2/2/2 3/3/3\ns 1\n").unwrap();
+        let model = Model::parse(
+            crate::words::Lang::En,
+            "# a comment\nv 0 0 0\nv 1 0 0.5\nv 0 1 -1\nvt 0 0\nf 1/1/1 2/2/2 3/3/3\ns 1\n",
+        )
+        .unwrap();
         assert_eq!((model.vertices.len(), model.faces.clone()), (3, vec![[0, 1, 2]]));
-        let error = Model::parse("v 0 0 0\nv 1 x 0\n").unwrap_err();
+        let error = Model::parse(crate::words::Lang::En, "v 0 0 0\nv 1 x 0\n").unwrap_err();
         assert_eq!(error.line, 2);
-        let error = Model::parse("v 0 0 0\nf 1 2 3\n").unwrap_err();
+        let error = Model::parse(crate::words::Lang::En, "v 0 0 0\nf 1 2 3\n").unwrap_err();
         assert_eq!(error.line, 2);
     }
 }

@@ -238,7 +238,8 @@ fn coplanar_scene(width: u32, height: u32, bits: u32) -> String {
 pub fn bits_sweep(lang: crate::words::Lang, settings: &Settings) -> Result<Vec<BitsRow>, Error> {
     let mut rows = Vec::new();
     for bits in [4u32, 8, 16, 24, 32] {
-        let scene = Scene::from_json(lang, &coplanar_scene(settings.width, settings.height, bits), Path::new("(coplanar)"))?;
+        let scene =
+            Scene::from_json(lang, &coplanar_scene(settings.width, settings.height, bits), Path::new("(coplanar)"))?;
         let ((buffers, _), time) = timed(|| arith::run(&scene, Arith::Exact))?;
         // The nearer polygon by world depth: A where x ≥ y at the centre (ties keep A, drawn first), B elsewhere.
         let mut z_fighting = 0;

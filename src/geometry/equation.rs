@@ -65,7 +65,8 @@ impl GeometryError {
             GeometryError::TooManyVertices(n) => {
                 f.write_str(&words!(lang, "geometry-too-many", count = n.to_string(), max = MAX_VERTICES.to_string()))
             }
-            GeometryError::OutOfRange { vertex, value, denominator } => f.write_str(&words!(lang, 
+            GeometryError::OutOfRange { vertex, value, denominator } => f.write_str(&words!(
+                lang,
                 "geometry-out-of-range",
                 vertex = vertex.to_string(),
                 value = crate::numbers::fraction(value),
@@ -78,7 +79,8 @@ impl GeometryError {
                 } else {
                     ("geometry-off-plane", crate::numbers::fraction(off_by))
                 };
-                f.write_str(&words!(lang, 
+                f.write_str(&words!(
+                    lang,
                     key,
                     vertex = vertex.to_string(),
                     plane = plane.to_string(),

@@ -137,7 +137,7 @@ mod tests {
         assert_eq!(decimal(Q::new(-1, 3), 2), "-0.33");
         assert_eq!(decimal(Q::new(-1, 1000), 2), "0.00");
         assert_eq!(decimal(Q::new(999, 1000), 2), "1.00");
-        assert_eq!(exact_and_decimal(Q::new(43, 4)), "43/4 ≈ 10.75");
-        assert_eq!(exact_and_decimal(Q::from_integer(10)), "10");
+        assert_eq!(exact_and_decimal(crate::words::Lang::En, Q::new(43, 4)), "43/4 ≈ 10.75");
+        assert_eq!(exact_and_decimal(crate::words::Lang::En, Q::from_integer(10)), "10");
     }
 }

@@ -19,7 +19,13 @@ pub struct CellRange<'a> {
 /// shape against the raster; the error names the line, the column and the
 /// raster cell, and says what was found: the first [`PROBLEMS_NAMED`]
 /// problems, separated by ` · `, then how many more there are.
-pub fn parse_answer(lang: crate::words::Lang, text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Matrix, String> {
+pub fn parse_answer(
+    lang: crate::words::Lang,
+    text: &str,
+    width: u32,
+    height: u32,
+    range: CellRange<'_>,
+) -> Result<Matrix, String> {
     let mut problems = Vec::new();
     let lines: Vec<(usize, &str)> = text
         .lines()
@@ -39,14 +45,22 @@ pub fn parse_answer(lang: crate::words::Lang, text: &str, width: u32, height: u3
                 let (line, place) = (line_number.to_string(), (column + 1).to_string());
                 match y {
                     Some(y) if column < width as usize => {
-                        words!(lang, "answer-at-cell", line = line, column = place, x = column.to_string(), y = y.to_string())
+                        words!(
+                            lang,
+                            "answer-at-cell",
+                            line = line,
+                            column = place,
+                            x = column.to_string(),
+                            y = y.to_string()
+                        )
                     }
                     _ => words!(lang, "answer-at", line = line, column = place),
                 }
             };
             let max = || range.max.to_string();
             let Ok(value) = cell.parse::<u64>() else {
-                problems.push(words!(lang, 
+                problems.push(words!(
+                    lang,
                     "answer-not-a-number",
                     at = at(),
                     cell = crate::words::token(lang, cell),
@@ -57,7 +71,8 @@ pub fn parse_answer(lang: crate::words::Lang, text: &str, width: u32, height: u3
                 continue;
             };
             if value > u64::from(range.max) {
-                problems.push(words!(lang, 
+                problems.push(words!(
+                    lang,
                     "answer-too-large",
                     at = at(),
                     value = value.to_string(),
@@ -68,7 +83,8 @@ pub fn parse_answer(lang: crate::words::Lang, text: &str, width: u32, height: u3
             row.push(value.min(u64::from(range.max)) as u32);
         }
         if row.len() != width as usize {
-            problems.push(words!(lang, 
+            problems.push(words!(
+                lang,
                 "answer-row-length",
                 line = line_number.to_string(),
                 count = row.len(),
@@ -164,16 +180,25 @@ mod tests {
     #[test]
     fn comments_blank_lines_and_commas_are_taken() {
         let text = "# my answer\n\n1 2\n\n3, 0\n";
-        assert_eq!(parse_answer(text, 2, 2, FRAME).unwrap(), vec![vec![1, 2], vec![3, 0]]);
-        assert_eq!(parse_answer("1,2\n3 ,0\n", 2, 2, FRAME).unwrap(), vec![vec![1, 2], vec![3, 0]]);
+        assert_eq!(parse_answer(crate::words::Lang::En, text, 2, 2, FRAME).unwrap(), vec![vec![1, 2], vec![3, 0]]);
+        assert_eq!(
+            parse_answer(crate::words::Lang::En, "1,2\n3 ,0\n", 2, 2, FRAME).unwrap(),
+            vec![vec![1, 2], vec![3, 0]]
+        );
     }
 
     #[test]
     fn wrong_shapes_say_what_was_found() {
-        assert_eq!(parse_answer("1 2\n3 0\n1 1\n", 2, 2, FRAME).unwrap_err(), "3 rows; the raster has 2");
-        assert_eq!(parse_answer("1 2\n3\n", 2, 2, FRAME).unwrap_err(), "line 2: 1 value; the raster is 2 wide");
         assert_eq!(
-            parse_answer("1 x\n", 2, 1, FRAME).unwrap_err(),
+            parse_answer(crate::words::Lang::En, "1 2\n3 0\n1 1\n", 2, 2, FRAME).unwrap_err(),
+            "3 rows; the raster has 2"
+        );
+        assert_eq!(
+            parse_answer(crate::words::Lang::En, "1 2\n3\n", 2, 2, FRAME).unwrap_err(),
+            "line 2: 1 value; the raster is 2 wide"
+        );
+        assert_eq!(
+            parse_answer(crate::words::Lang::En, "1 x\n", 2, 1, FRAME).unwrap_err(),
             "line 1, value 2 (x = 1, y = 0): \"x\" is not a whole number (a 2-bit framebuffer holds 0 … 3)"
         );
     }
@@ -182,7 +207,7 @@ mod tests {
     #[test]
     fn a_value_the_buffer_cannot_hold_is_named_at_its_cell() {
         assert_eq!(
-            parse_answer("0 0\n0 7\n", 2, 2, FRAME).unwrap_err(),
+            parse_answer(crate::words::Lang::En, "0 0\n0 7\n", 2, 2, FRAME).unwrap_err(),
             "line 2, value 2 (x = 1, y = 0): 7 does not fit a 2-bit framebuffer (0 … 3)"
         );
     }

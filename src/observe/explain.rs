@@ -89,7 +89,8 @@ pub fn stored_text(lang: crate::words::Lang, scene: &Scene, depth: &Depth) -> St
                 let key = if Exact::integer(rounded) > value { "stored-rounded-up" } else { "stored-rounded" };
                 words!(lang, key, stored = stored, value = crate::numbers::short(lang, value))
             } else {
-                words!(lang, 
+                words!(
+                    lang,
                     "stored-saturated",
                     stored = stored,
                     value = exact_and_decimal(lang, depth.value()),
@@ -105,12 +106,14 @@ pub fn stored_text(lang: crate::words::Lang, scene: &Scene, depth: &Depth) -> St
 /// `z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored and the framebuffer gets 2`.
 pub fn pixel_reason(lang: crate::words::Lang, scene: &Scene, event: &PixelEvent) -> String {
     let z = match scene.effects.perspective {
-        Some(perspective) if perspective.store_w => words!(lang, 
+        Some(perspective) if perspective.store_w => words!(
+            lang,
             "z-w-buffer",
             w = depth_text(lang, scene, event.compared.value()),
             z = depth_text(lang, scene, event.depth.value())
         ),
-        Some(perspective) => words!(lang, 
+        Some(perspective) => words!(
+            lang,
             "z-projected",
             z = depth_text(lang, scene, event.depth.value()),
             w = perspective
@@ -124,7 +127,8 @@ pub fn pixel_reason(lang: crate::words::Lang, scene: &Scene, event: &PixelEvent)
         Outcome::Written => {
             let polygon = &scene.polygons[event.index];
             let frame = match polygon.opacity {
-                Some(alpha) => words!(lang, 
+                Some(alpha) => words!(
+                    lang,
                     "frame-blended",
                     frame = event.frame_after,
                     alpha = crate::numbers::fraction(alpha),
@@ -134,21 +138,31 @@ pub fn pixel_reason(lang: crate::words::Lang, scene: &Scene, event: &PixelEvent)
                 ),
                 None => event.frame_after.to_string(),
             };
-            words!(lang, 
+            words!(
+                lang,
                 "reason-written",
                 test = scene.depth_test.outcome_text(lang, &z, &stored_before, true),
                 stored = stored_text(lang, scene, &event.compared),
                 frame = frame
             )
         }
-        Outcome::Hidden => words!(lang, "reason-hidden", test = scene.depth_test.outcome_text(lang, &z, &stored_before, false)),
+        Outcome::Hidden => {
+            words!(lang, "reason-hidden", test = scene.depth_test.outcome_text(lang, &z, &stored_before, false))
+        }
         Outcome::OutsideDepthRange => {
             let (front, rear) = scene.depth_range.unwrap_or((Q::from_integer(0), Q::from_integer(0)));
-            words!(lang, "reason-outside-range", z = z, front = depth_text(lang, scene, front), rear = depth_text(lang, scene, rear))
+            words!(
+                lang,
+                "reason-outside-range",
+                z = z,
+                front = depth_text(lang, scene, front),
+                rear = depth_text(lang, scene, rear)
+            )
         }
         Outcome::BeyondSection => {
             let section = scene.effects.section.map_or(String::new(), |z| depth_text(lang, scene, z));
-            words!(lang, 
+            words!(
+                lang,
                 "reason-beyond-section",
                 test = scene.depth_test.outcome_text(lang, &z, &stored_before, true),
                 op = scene.depth_test.section_symbol(),
@@ -185,7 +199,8 @@ pub fn entry_text(lang: crate::words::Lang, scene: &Scene, x: u32, y: u32, entry
         (Some(scanline), Some(pixel)) => {
             let reason = pixel_reason(lang, scene, pixel);
             match scanline.span_covering(x) {
-                Some(span) => words!(lang, 
+                Some(span) => words!(
+                    lang,
                     "entry-covered",
                     scanline = scanline_text(lang, y),
                     span = span_text(lang, span),
@@ -193,7 +208,8 @@ pub fn entry_text(lang: crate::words::Lang, scene: &Scene, x: u32, y: u32, entry
                     tie = tie,
                     reason = reason
                 ),
-                None => words!(lang, 
+                None => words!(
+                    lang,
                     "entry-covered-no-span",
                     scanline = scanline_text(lang, y),
                     centre = exact_and_decimal(lang, centre),
@@ -202,7 +218,8 @@ pub fn entry_text(lang: crate::words::Lang, scene: &Scene, x: u32, y: u32, entry
                 ),
             }
         }
-        (Some(scanline), None) => words!(lang, 
+        (Some(scanline), None) => words!(
+            lang,
             "entry-not-inside",
             scanline = scanline_text(lang, y),
             spans = spans_of(lang, scanline, &words!(lang, "subject-it")),
@@ -223,7 +240,14 @@ fn spans_of(lang: crate::words::Lang, scanline: &ScanlineRecord, subject: &str) 
 
 /// Why cell (x, y) of `buffer` holds what it holds after the polygons in
 /// `history` (all of them up to the one the check is after), in one sentence.
-pub fn why(lang: crate::words::Lang, scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistoryEntry]) -> String {
+pub fn why(
+    lang: crate::words::Lang,
+    scene: &Scene,
+    buffer: Buffer,
+    x: u32,
+    y: u32,
+    history: &[PixelHistoryEntry],
+) -> String {
     let last_write = history
         .iter()
         .rev()
@@ -235,7 +259,8 @@ pub fn why(lang: crate::words::Lang, scene: &Scene, buffer: Buffer, x: u32, y: u
     let semicolon = words!(lang, "list-semicolon");
     if let Some((index, pixel)) = last_write {
         let z = depth_text(lang, scene, pixel.compared.value());
-        let mut text = words!(lang, 
+        let mut text = words!(
+            lang,
             "why-covers",
             polygon = polygon_name(lang, scene, index),
             x = x,
@@ -247,7 +272,8 @@ pub fn why(lang: crate::words::Lang, scene: &Scene, buffer: Buffer, x: u32, y: u
             .iter()
             .filter(|entry| entry.index > index && entry.pixel.is_some())
             .map(|entry| {
-                words!(lang, 
+                words!(
+                    lang,
                     "why-later-item",
                     polygon = polygon_name(lang, scene, entry.index),
                     reason = entry.pixel.as_ref().map_or_else(String::new, |p| pixel_reason(lang, scene, p))
@@ -267,7 +293,12 @@ pub fn why(lang: crate::words::Lang, scene: &Scene, buffer: Buffer, x: u32, y: u
         .iter()
         .filter_map(|entry| {
             entry.pixel.as_ref().map(|p| {
-                words!(lang, "why-covered-item", polygon = polygon_name(lang, scene, entry.index), reason = pixel_reason(lang, scene, p))
+                words!(
+                    lang,
+                    "why-covered-item",
+                    polygon = polygon_name(lang, scene, entry.index),
+                    reason = pixel_reason(lang, scene, p)
+                )
             })
         })
         .collect();
@@ -281,7 +312,8 @@ pub fn why(lang: crate::words::Lang, scene: &Scene, buffer: Buffer, x: u32, y: u
     if reaching.is_empty() {
         words!(lang, "why-none-reaches", x = x, y = y, scanline = scanline_text(lang, y), cleared = cleared)
     } else {
-        words!(lang, 
+        words!(
+            lang,
             "why-not-covered",
             x = x,
             y = y,

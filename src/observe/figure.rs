@@ -60,12 +60,20 @@ pub struct Extras {
 
 /// Draws the buffers after polygon `last` (0-based): polygons `0 ..= last`
 /// are outlined. The raster must be at most [`MAX_FIGURE_SIDE`] on a side.
-pub fn svg(lang: crate::words::Lang, scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, title: &str) -> String {
+pub fn svg(
+    lang: crate::words::Lang,
+    scene: &Scene,
+    buffers: &Buffers,
+    last: usize,
+    shading: Shading,
+    title: &str,
+) -> String {
     svg_with(lang, scene, buffers, last, shading, title, &Extras::default())
 }
 
 /// Like [`svg`], with vertex labels and a caption.
-pub fn svg_with(lang: crate::words::Lang,
+pub fn svg_with(
+    lang: crate::words::Lang,
     scene: &Scene,
     buffers: &Buffers,
     last: usize,
@@ -121,7 +129,8 @@ pub fn svg_with(lang: crate::words::Lang,
             }
             if let Some(fill) = fill {
                 let what = if end - x == 1 {
-                    words!(lang, 
+                    words!(
+                        lang,
                         "figure-cell",
                         x = x,
                         y = y,
@@ -181,7 +190,8 @@ pub fn svg_with(lang: crate::words::Lang,
         let points: Vec<String> = polygon.vertices().iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect();
         // An unnamed polygon is labelled by its number alone, titled in the reader's language.
         let unnamed = crate::words::is_default_name(&polygon.name, index);
-        let title = if unnamed { crate::observe::explain::polygon_name(lang, scene, index) } else { polygon.name.clone() };
+        let title =
+            if unnamed { crate::observe::explain::polygon_name(lang, scene, index) } else { polygon.name.clone() };
         let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));
     }
     let _ = writeln!(out, "</g>");
@@ -327,7 +337,8 @@ fn value_label(lang: crate::words::Lang, scene: &Scene, value: u32) -> String {
 }
 
 /// Each cell's value written in its pixel: black on light fills, white on dark.
-fn cell_values(lang: crate::words::Lang,
+fn cell_values(
+    lang: crate::words::Lang,
     out: &mut String,
     scene: &Scene,
     buffers: &Buffers,
@@ -630,7 +641,7 @@ mod tests {
     /// The book's example, drawn.
     fn rogers_drawn() -> (Scene, Buffers) {
         let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")).unwrap();
-        let scene = Scene::from_json(&text, std::path::Path::new("rogers.json")).unwrap();
+        let scene = Scene::from_json(crate::words::Lang::En, &text, std::path::Path::new("rogers.json")).unwrap();
         let mut simulation = crate::Simulation::new(&scene);
         simulation.finish(&mut crate::Unobserved);
         let buffers = simulation.into_buffers();
@@ -656,7 +667,7 @@ mod tests {
             assert_eq!(buffers.frame(x, y), polygon.value);
             assert!((x + 1..scene.width).all(|r| [polygon.value, scene.background].contains(&buffers.frame(r, y))));
         }
-        let svg = svg(&scene, buffers, 1, Shading::Frame, "t");
+        let svg = svg(crate::words::Lang::En, &scene, buffers, 1, Shading::Frame, "t");
         let raster_right = MARGIN_LEFT + 32 * CELL;
         let name_x: Vec<i128> = svg
             .lines()
@@ -674,7 +685,7 @@ mod tests {
     fn values_sit_above_the_dashed_scanlines() {
         let (scene, buffers) = rogers_drawn();
         let extras = Extras { values: true, ..Extras::default() };
-        let svg = svg_with(&scene, &buffers, 1, Shading::Frame, "t", &extras);
+        let svg = svg_with(crate::words::Lang::En, &scene, &buffers, 1, Shading::Frame, "t", &extras);
         let group = |id: &str| -> Vec<f64> {
             let start = svg.find(&format!("<g id=\"{id}\"")).unwrap();
             let body = &svg[start..start + svg[start..].find("</g>").unwrap()];

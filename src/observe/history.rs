@@ -207,7 +207,8 @@ impl PixelHistory {
     pub fn text(&self, lang: crate::words::Lang, scene: &Scene, file: &Path) -> String {
         let (x, y) = self.pixel;
         let centre = |v: u32| exact_and_decimal(lang, Q::new(2 * i128::from(v) + 1, 2));
-        let mut text = words!(lang, 
+        let mut text = words!(
+            lang,
             "explain-heading",
             x = x,
             y = y,
@@ -218,8 +219,12 @@ impl PixelHistory {
             rule = scene.depth_test.rule_text(lang)
         ) + "\n";
         if let Some(section) = scene.effects.section {
-            let line =
-                words!(lang, "explain-section", op = scene.depth_test.section_symbol(), section = depth_text(lang, scene, section));
+            let line = words!(
+                lang,
+                "explain-section",
+                op = scene.depth_test.section_symbol(),
+                section = depth_text(lang, scene, section)
+            );
             text.push_str(&format!("{line}\n"));
         }
         if scene.rules.sample == crate::rules::Sample::Corner {
@@ -245,7 +250,8 @@ impl PixelHistory {
                 }
                 continue;
             }
-            let line = words!(lang, 
+            let line = words!(
+                lang,
                 "polygon-line",
                 polygon = polygon_name(lang, scene, entry.index),
                 text = entry_text(lang, scene, x, y, entry)
@@ -257,7 +263,13 @@ impl PixelHistory {
             }
         }
         if not_drawn + off_row > 0 {
-            text.push_str(&words!(lang, "explain-others", count = not_drawn + off_row, skipped = not_drawn, off = off_row));
+            text.push_str(&words!(
+                lang,
+                "explain-others",
+                count = not_drawn + off_row,
+                skipped = not_drawn,
+                off = off_row
+            ));
             text.push('\n');
         }
         let (frame, depth) = &self.last;
@@ -268,7 +280,8 @@ impl PixelHistory {
         }
         if let Some((mode, frame, depth)) = &self.arith {
             let same = (*frame, depth) == (self.last.0, &self.last.1);
-            let line = words!(lang, 
+            let line = words!(
+                lang,
                 "explain-arith",
                 arith = mode.to_string(),
                 frame = frame.to_string(),
@@ -283,7 +296,8 @@ impl PixelHistory {
 
 /// The two point-in-polygon tests at the centre, in words.
 fn inside_text(lang: crate::words::Lang, tests: &InsideTests) -> String {
-    let side = |inside: bool| if inside { words!(lang, "explain-inside-in") } else { words!(lang, "explain-inside-out") };
+    let side =
+        |inside: bool| if inside { words!(lang, "explain-inside-in") } else { words!(lang, "explain-inside-out") };
     let arc = match tests.arc {
         (_, ArcDifference::OnBoundary) => words!(lang, "explain-arc-boundary"),
         (inside, ArcDifference::Winding(w)) => {
@@ -299,7 +313,8 @@ fn segment_text(lang: crate::words::Lang, scene: &Scene, segment: &SegmentFacts)
     let visited: Vec<String> = visited.iter().map(|&i| polygon_name(lang, scene, i)).collect();
     let visited = if visited.is_empty() { words!(lang, "explain-segment-none") } else { visited.join(", ") };
     let cells = u64::from(rect.columns.1 - rect.columns.0 + 1) * u64::from(rect.rows.1 - rect.rows.0 + 1);
-    words!(lang, 
+    words!(
+        lang,
         "explain-segment",
         number = (number + 1).to_string(),
         count = count.to_string(),
@@ -320,7 +335,8 @@ fn antialias_text(lang: crate::words::Lang, scene: &Scene, facts: &AntialiasFact
     match &facts.detail {
         AntialiasDetail::Samples(big, samples) => {
             for sample in samples {
-                let line = words!(lang, 
+                let line = words!(
+                    lang,
                     "explain-sample",
                     i = sample.within.0.to_string(),
                     j = sample.within.1.to_string(),
@@ -332,7 +348,8 @@ fn antialias_text(lang: crate::words::Lang, scene: &Scene, facts: &AntialiasFact
                 text.push_str(&format!("{line}\n"));
                 let (sx, sy) = sample.sample;
                 for entry in &sample.entries {
-                    let line = words!(lang, 
+                    let line = words!(
+                        lang,
                         "polygon-line",
                         polygon = polygon_name(lang, scene, entry.index),
                         text = entry_text(lang, big, sx, sy, entry)
@@ -349,7 +366,8 @@ fn antialias_text(lang: crate::words::Lang, scene: &Scene, facts: &AntialiasFact
                     Outcome::Written => words!(lang, "explain-pixel-mode-written", stored = d.stored.text(lang)),
                     _ => words!(lang, "explain-pixel-mode-not-written"),
                 };
-                let line = words!(lang, 
+                let line = words!(
+                    lang,
                     "explain-pixel-mode",
                     polygon = polygon_name(lang, scene, note.index),
                     samples = samples.join(" "),

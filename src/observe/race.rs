@@ -68,7 +68,13 @@ fn median(times: &[Duration]) -> Duration {
 /// this thread). The GPU draws with the scene's depth test into a
 /// framebuffer of the raster's size (plus the margin that keeps vertices
 /// unclipped, see [`Triangles`]).
-pub fn race(lang: crate::words::Lang, scene: &Scene, pairs: usize, tile: Option<u32>, threads: usize) -> Result<Race, Error> {
+pub fn race(
+    lang: crate::words::Lang,
+    scene: &Scene,
+    pairs: usize,
+    tile: Option<u32>,
+    threads: usize,
+) -> Result<Race, Error> {
     if scene.has_pixel_effects() || scene.effects.antialias.is_some() {
         return Err(Usage::CompareGpuPlainOnly.into());
     }

@@ -37,7 +37,8 @@ use crate::simulate::stages::describe as stages;
 /// the stages that run and the effects asked for.
 pub fn scene_header(lang: crate::words::Lang, scene: &Scene, path: &str) -> String {
     let effects = scene.effects.names();
-    let header = words!(lang, 
+    let header = words!(
+        lang,
         "scene-header",
         path = path,
         width = scene.width.to_string(),
@@ -62,7 +63,8 @@ pub fn scene_header(lang: crate::words::Lang, scene: &Scene, path: &str) -> Stri
 pub fn polygon_heading(lang: crate::words::Lang, scene: &Scene, index: usize) -> String {
     let polygon = &scene.polygons[index];
     let geometry = polygon.geometry();
-    let start = words!(lang, 
+    let start = words!(
+        lang,
         "heading-start",
         polygon = crate::observe::explain::polygon_name(lang, scene, index),
         value = polygon.value.to_string()
@@ -74,7 +76,8 @@ pub fn polygon_heading(lang: crate::words::Lang, scene: &Scene, index: usize) ->
         Fate::OutsideView => words!(lang, "heading-outside-view", start = start),
         Fate::EdgeOn => words!(lang, "heading-edge-on", start = start, plane = plane),
         Fate::SmallArea => words!(lang, "heading-small-area", start = start, plane = plane),
-        Fate::Culled(winding) => words!(lang, 
+        Fate::Culled(winding) => words!(
+            lang,
             "heading-culled",
             start = start,
             plane = plane,
@@ -86,13 +89,15 @@ pub fn polygon_heading(lang: crate::words::Lang, scene: &Scene, index: usize) ->
                 words!(lang, "heading-winding", winding = crate::observe::explain::winding_text(lang, w))
             });
             let clipped = match polygon.clip {
-                Clip::Kept { front, of } if front < of => words!(lang, 
+                Clip::Kept { front, of } if front < of => words!(
+                    lang,
                     "heading-clipped",
                     front = front.to_string(),
                     of = of.to_string(),
                     n = polygon.vertices().len().to_string()
                 ),
-                Clip::View { inside, of } => words!(lang, 
+                Clip::View { inside, of } => words!(
+                    lang,
                     "heading-view",
                     inside = inside.to_string(),
                     of = of.to_string(),
@@ -358,12 +363,13 @@ mod tests {
                         let json = format!(
                             r#"{{"width": 4, "height": 3, "rules": {rules}, {test_key}{clear_key}"polygons": [{{"value": 1, "vertices": [[0, 0, "1/2"], [1, 0, "1/2"], [0, 1, "1/2"]]}}]}}"#
                         );
-                        let scene = Scene::from_json(&json, std::path::Path::new("s.json")).expect(&json);
+                        let scene = Scene::from_json(crate::words::Lang::En, &json, std::path::Path::new("s.json"))
+                            .expect(&json);
                         let mut simulation = Simulation::new(&scene);
                         simulation.finish(&mut crate::simulate::events::Unobserved);
                         // (3, 2) is far from the one small triangle: it keeps the clear value.
-                        let held = simulation.buffers().depth(3, 2);
-                        let heading = scene_header(&scene, "s.json");
+                        let held = simulation.buffers().depth(3, 2).text(crate::words::Lang::En);
+                        let heading = scene_header(crate::words::Lang::En, &scene, "s.json");
                         assert!(
                             heading.contains(&format!("cleared to {held}\n")),
                             "{json}\nthe buffer holds {held}, the heading says: {heading}"

@@ -48,7 +48,12 @@ pub fn skip_text(lang: crate::words::Lang, scene: &Scene, skip: &Skip) -> String
             words!(lang, "step-skip-no-centre", polygon = name(polygon), scanline = scanline_text(lang, row))
         }
         Skip::NoCentre { polygon, row, crossings: false } => {
-            words!(lang, "step-skip-no-centre-no-crossings", polygon = name(polygon), scanline = scanline_text(lang, row))
+            words!(
+                lang,
+                "step-skip-no-centre-no-crossings",
+                polygon = name(polygon),
+                scanline = scanline_text(lang, row)
+            )
         }
     }
 }

@@ -240,14 +240,18 @@ mod tests {
     fn ties_are_named_with_the_rule_that_decides_them() {
         let gpu = Rules::preset(Preset::Vulkan);
         assert_eq!(
-            tie_text(gpu, &triangle(), 6, 3).unwrap(),
+            tie_text(crate::words::Lang::En, gpu, &triangle(), 6, 3).unwrap(),
             "the centre lies exactly on the right edge from (13/2, 1/2) to (13/2, 13/2), which the top-left rule (centres in [x_l, x_r): left edges in, right edges out) leaves out"
         );
         assert_eq!(
-            tie_text(Rules::default(), &triangle(), 3, 0).unwrap(),
+            tie_text(crate::words::Lang::En, Rules::default(), &triangle(), 3, 0).unwrap(),
             "the centre lies exactly on the bottom edge from (1/2, 1/2) to (13/2, 1/2), which the book's half-interval rule (an edge counts for min ≤ y < max) includes"
         );
-        assert!(tie_text(gpu, &triangle(), 4, 2).is_none(), "an inside centre is no tie");
-        assert!(tie_text(gpu, &triangle(), 0, 0).unwrap().starts_with("the centre is exactly the vertex (1/2, 1/2)"));
+        assert!(tie_text(crate::words::Lang::En, gpu, &triangle(), 4, 2).is_none(), "an inside centre is no tie");
+        assert!(
+            tie_text(crate::words::Lang::En, gpu, &triangle(), 0, 0)
+                .unwrap()
+                .starts_with("the centre is exactly the vertex (1/2, 1/2)")
+        );
     }
 }

@@ -739,8 +739,14 @@ mod tests {
             assert!(DepthTest::Always.passes(&z, &stored));
             assert!(!DepthTest::Never.passes(&z, &stored));
         }
-        assert_eq!(DepthTest::Always.outcome_text("43/4", "10", true), "43/4 (always passes; 10 stored)");
-        assert_eq!(DepthTest::Greater.outcome_text("43/4", "11", false), "43/4 is not > 11 stored");
-        assert_eq!(DepthTest::Never.rule_text(), "no fragment passes");
+        assert_eq!(
+            DepthTest::Always.outcome_text(crate::words::Lang::En, "43/4", "10", true),
+            "43/4 (always passes; 10 stored)"
+        );
+        assert_eq!(
+            DepthTest::Greater.outcome_text(crate::words::Lang::En, "43/4", "11", false),
+            "43/4 is not > 11 stored"
+        );
+        assert_eq!(DepthTest::Never.rule_text(crate::words::Lang::En), "no fragment passes");
     }
 }

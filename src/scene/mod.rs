@@ -386,7 +386,8 @@ mod tests {
     use super::*;
 
     fn parse(text: &str) -> Result<Scene, String> {
-        Scene::from_json(text, Path::new("s.json")).map_err(|e| e.to_string())
+        Scene::from_json(crate::words::Lang::En, text, Path::new("s.json"))
+            .map_err(|e| e.message(crate::words::Lang::En))
     }
 
     #[test]
@@ -466,9 +467,7 @@ mod tests {
             {"name": "roof", "value": 2, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]}"#;
         let scene = parse(text).unwrap();
         assert_eq!(scene.polygons[0].name, crate::words::default_name(0));
-        let labels = |lang| {
-            crate::words::with_language(lang, || [0, 1].map(|i| crate::observe::explain::polygon_name(&scene, i)))
-        };
+        let labels = |lang| [0, 1].map(|i| crate::observe::explain::polygon_name(lang, &scene, i));
         assert_eq!(labels(crate::words::Lang::En), ["polygon 1".to_string(), "polygon 2 \"roof\"".to_string()]);
         assert_eq!(
             labels(crate::words::Lang::Ru),

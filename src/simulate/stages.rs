@@ -141,7 +141,8 @@ pub fn describe(lang: crate::words::Lang, scene: &Scene) -> Vec<String> {
         stages.push(words!(lang, "stage-cull", winding = winding.name()));
     }
     if let Some(perspective) = scene.effects.perspective {
-        stages.push(words!(lang, 
+        stages.push(words!(
+            lang,
             "stage-near-plane",
             near = fraction(perspective.near_plane()),
             eye = fraction(perspective.distance)
@@ -152,7 +153,8 @@ pub fn describe(lang: crate::words::Lang, scene: &Scene) -> Vec<String> {
         stages.push(words!(lang, key, k = antialias.samples.to_string()));
     }
     if let Some(window) = scene.window {
-        stages.push(words!(lang, 
+        stages.push(words!(
+            lang,
             "stage-window",
             left = fraction(window.left),
             right = fraction(window.right),

@@ -143,7 +143,8 @@ impl Observer for CaseFinder {
         let scan_y = Q::new(2 * i128::from(row) + 1, 2);
         if let Some((k, v)) = event.polygon.vertices().iter().enumerate().find(|(_, v)| v[1] == scan_y) {
             self.note(HardCase::VertexOnScanline, || {
-                words!(lang, 
+                words!(
+                    lang,
                     "place-vertex-on-scanline",
                     polygon = (index + 1).to_string(),
                     vertex = (k + 1).to_string(),
@@ -161,7 +162,8 @@ impl Observer for CaseFinder {
                 let column = (doubled - 1) / 2;
                 if (0..i128::from(self.width)).contains(&column) {
                     self.note(HardCase::CentreOnEdge, || {
-                        words!(lang, 
+                        words!(
+                            lang,
                             "place-centre-on-edge",
                             x = column.to_string(),
                             y = row.to_string(),
@@ -173,7 +175,8 @@ impl Observer for CaseFinder {
         }
         if event.spans.len() >= 2 {
             self.note(HardCase::Concave, || {
-                words!(lang, 
+                words!(
+                    lang,
                     "place-spans",
                     polygon = (index + 1).to_string(),
                     row = row.to_string(),
@@ -190,7 +193,8 @@ impl Observer for CaseFinder {
         let half = z.to_big() * num_bigint::BigInt::from(2);
         if self.quantized && half.is_integer() && half.to_integer().bit(0) {
             self.note(HardCase::HalfDepth, || {
-                words!(lang, 
+                words!(
+                    lang,
                     "place-half-depth",
                     x = x.to_string(),
                     y = y.to_string(),
@@ -204,7 +208,8 @@ impl Observer for CaseFinder {
         let range = num_bigint::BigInt::from(0)..=num_bigint::BigInt::from(self.depth_max);
         if self.quantized && event.outcome == Outcome::Written && !range.contains(&rounded) {
             self.note(HardCase::Saturation, || {
-                words!(lang, 
+                words!(
+                    lang,
                     "place-saturation",
                     x = x.to_string(),
                     y = y.to_string(),
@@ -229,7 +234,8 @@ impl Observer for CaseFinder {
             }
             Outcome::Hidden => {
                 self.note(HardCase::Hidden, || {
-                    words!(lang, 
+                    words!(
+                        lang,
                         "place-hidden",
                         x = x.to_string(),
                         y = y.to_string(),
@@ -445,16 +451,19 @@ mod tests {
         assert!(
             HardCase::parse_list("tricky")
                 .unwrap_err()
-                .to_string()
+                .message(crate::words::Lang::En)
                 .starts_with("--hard: \"tricky\" is not a hard case: vertex-on-scanline")
         );
     }
 
     #[test]
     fn the_books_example_has_its_known_cases() {
-        let scene =
-            Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap();
-        let cases: Vec<HardCase> = find_cases(&scene).into_iter().map(|f| f.case).collect();
+        let scene = Scene::load(
+            crate::words::Lang::En,
+            std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")),
+        )
+        .unwrap();
+        let cases: Vec<HardCase> = find_cases(crate::words::Lang::En, &scene).into_iter().map(|f| f.case).collect();
         // The triangle pierces the rectangle: hidden and intersecting; its depths step by
         // 3/4 and reach k + 1/2 (pixel (22, 14): z = 19/2).
         assert!(cases.contains(&HardCase::Hidden) && cases.contains(&HardCase::Intersecting), "{cases:?}");

@@ -46,7 +46,12 @@ impl Refusal {
                 words!(lang, "step-outside-raster", row = row.to_string(), last = (scene.height - 1).to_string())
             }
             Refusal::NotReached { polygon, row } => {
-                words!(lang, "step-not-reach", polygon = polygon_name(lang, scene, polygon), scanline = scanline_text(lang, row))
+                words!(
+                    lang,
+                    "step-not-reach",
+                    polygon = polygon_name(lang, scene, polygon),
+                    scanline = scanline_text(lang, row)
+                )
             }
         }
     }
@@ -200,7 +205,8 @@ impl<'s> Stepper<'s> {
                     || words!(lang, "tui-no-centre"),
                     |(first, last)| words!(lang, "step-columns", first = first.to_string(), last = last.to_string()),
                 );
-                words!(lang, 
+                words!(
+                    lang,
                     "tui-span",
                     n = (i + 1).to_string(),
                     left = exact_and_decimal(lang, &span.left),
@@ -211,7 +217,12 @@ impl<'s> Stepper<'s> {
             .collect();
         StopWords {
             heading: crate::observe::report::polygon_heading(lang, scene, stop.polygon),
-            scanline: words!(lang, "step-scanline", scanline = scanline_text(lang, record.row), row = record.row.to_string()),
+            scanline: words!(
+                lang,
+                "step-scanline",
+                scanline = scanline_text(lang, record.row),
+                row = record.row.to_string()
+            ),
             crossings,
             spans,
         }
@@ -450,7 +461,8 @@ impl Quiz {
 /// A wrong answer as the summary lists it.
 fn mistake_text(lang: crate::words::Lang, scene: &Scene, verdict: &Verdict) -> String {
     match &verdict.question {
-        Question::Coverage { stop, row } => words!(lang, 
+        Question::Coverage { stop, row } => words!(
+            lang,
             "quiz-coverage-mistake",
             row = row.to_string(),
             polygon = polygon_after(lang, scene, stop.polygon),
@@ -458,7 +470,8 @@ fn mistake_text(lang: crate::words::Lang, scene: &Scene, verdict: &Verdict) -> S
             right = &verdict.expected,
             why = &verdict.why
         ),
-        Question::Depth { stop, pixel, .. } | Question::Frame { stop, pixel, .. } => words!(lang, 
+        Question::Depth { stop, pixel, .. } | Question::Frame { stop, pixel, .. } => words!(
+            lang,
             "quiz-depth-mistake",
             x = pixel.x,
             y = pixel.y,
@@ -481,7 +494,9 @@ pub fn judge_coverage(lang: crate::words::Lang, record: &ScanlineRecord, typed: 
     let spans: Vec<String> = record
         .spans
         .iter()
-        .map(|s| words!(lang, "span", left = exact_and_decimal(lang, &s.left), right = exact_and_decimal(lang, &s.right)))
+        .map(|s| {
+            words!(lang, "span", left = exact_and_decimal(lang, &s.left), right = exact_and_decimal(lang, &s.right))
+        })
         .collect();
     let why = words!(lang, "quiz-coverage-why", spans = spans.join(&words!(lang, "list-comma")));
     Ok((columns == covered, None, columns_text(&covered), why))
@@ -558,7 +573,9 @@ fn does_not_fit(lang: crate::words::Lang, scene: &Scene, typed: &str) -> Option<
     let value = parse_number(typed).ok()?;
     let max = scene.depth_max();
     let fits = value.is_integer() && *value.numer() >= 0 && *value.numer() <= i128::from(max);
-    (!fits).then(|| words!(lang, "quiz-does-not-fit", text = printable(&token(lang, typed)).into_owned(), max = max.to_string()))
+    (!fits).then(|| {
+        words!(lang, "quiz-does-not-fit", text = printable(&token(lang, typed)).into_owned(), max = max.to_string())
+    })
 }
 
 /// The covered columns as a student writes them: `16-27`, `3-5 9-12`, or `-` for none.
@@ -603,7 +620,11 @@ mod tests {
     use super::*;
 
     fn book() -> Scene {
-        Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
+        Scene::load(
+            crate::words::Lang::En,
+            std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")),
+        )
+        .unwrap()
     }
 
     /// The coverage question comes first in a coverage quiz, then one depth
@@ -618,7 +639,9 @@ mod tests {
         let mut quiz = Quiz::new(QuizMode::Coverage);
         assert!(matches!(quiz.question(&mut stepper), Some(Question::Coverage { row: 15, .. })));
         let covered = columns_text(&stepper.record().unwrap().pixels.iter().map(|p| p.x).collect::<Vec<_>>());
-        let Some(Reply::Judged(verdict)) = quiz.answer(&mut stepper, &covered) else { panic!("not judged") };
+        let Some(Reply::Judged(verdict)) = quiz.answer(crate::words::Lang::En, &mut stepper, &covered) else {
+            panic!("not judged")
+        };
         assert!(verdict.right, "{verdict:?}");
         assert_eq!((quiz.right, quiz.asked), (1, 1));
         assert!(matches!(quiz.question(&mut stepper), Some(Question::Depth { index: 0, .. })));
@@ -630,8 +653,11 @@ mod tests {
         let mut stepper = Stepper::new(&scene, Arith::Exact);
         stepper.start(None);
         let mut quiz = Quiz::new(QuizMode::Depth);
-        assert!(matches!(quiz.answer(&mut stepper, "zz"), Some(Reply::AskAgain(_))));
-        assert!(matches!(quiz.answer(&mut stepper, "16"), Some(Reply::AskAgain(_))), "a 4-bit z-buffer holds 0 … 15");
+        assert!(matches!(quiz.answer(crate::words::Lang::En, &mut stepper, "zz"), Some(Reply::AskAgain(_))));
+        assert!(
+            matches!(quiz.answer(crate::words::Lang::En, &mut stepper, "16"), Some(Reply::AskAgain(_))),
+            "a 4-bit z-buffer holds 0 … 15"
+        );
         assert_eq!(quiz.asked, 0);
     }
 
@@ -643,10 +669,10 @@ mod tests {
         stepper.start(None);
         let quiz = Quiz::new(QuizMode::Depth);
         let Some(Question::Depth { pixel, .. }) = quiz.question(&mut stepper) else { panic!("no depth question") };
-        let value = pixel.stored_after.to_string();
+        let value = pixel.stored_after.text(crate::words::Lang::En);
         let twice = format!("{}/2", 2 * value.parse::<i64>().unwrap());
         for typed in [value.clone(), format!("{value}.0"), twice] {
-            let (right, ..) = judge_depth(&scene, &pixel, &typed).unwrap();
+            let (right, ..) = judge_depth(crate::words::Lang::En, &scene, &pixel, &typed).unwrap();
             assert!(right, "{typed}");
         }
     }
@@ -661,8 +687,13 @@ mod tests {
         let Some(Question::Frame { pixel, .. }) = quiz.question(&mut stepper) else {
             panic!("no framebuffer question")
         };
-        assert!(matches!(quiz.answer(&mut stepper, "4"), Some(Reply::AskAgain(_))), "a 2-bit framebuffer holds 0 … 3");
-        let Some(Reply::Judged(verdict)) = quiz.answer(&mut stepper, &pixel.frame_after.to_string()) else {
+        assert!(
+            matches!(quiz.answer(crate::words::Lang::En, &mut stepper, "4"), Some(Reply::AskAgain(_))),
+            "a 2-bit framebuffer holds 0 … 3"
+        );
+        let Some(Reply::Judged(verdict)) =
+            quiz.answer(crate::words::Lang::En, &mut stepper, &pixel.frame_after.to_string())
+        else {
             panic!("not judged")
         };
         assert!(verdict.right);

@@ -160,30 +160,29 @@ fn wanted(lang: crate::words::Lang, expected: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::words::{Lang, with_language};
+    use crate::words::Lang;
 
     #[test]
     fn json_messages_are_rendered_in_each_language_with_their_tokens_kept() {
         let message = "invalid type: integer `3`, expected a sequence at line 1 column 14";
         assert_eq!(
-            with_language(Lang::En, || json_reason(message)),
+            (json_reason(Lang::En, message)),
             "invalid type: found the integer `3` where a list was expected (line 1, column 14)"
         );
         assert_eq!(
-            with_language(Lang::Ru, || json_reason(message)),
+            (json_reason(Lang::Ru, message)),
             "неверный тип: найдено целое число `3`, а ожидался список (строка 1, позиция 14)"
         );
-        let unknown =
-            with_language(Lang::Uk, || json_reason("unknown field `colour`, expected one of `name`, `value`"));
+        let unknown = (json_reason(Lang::Uk, "unknown field `colour`, expected one of `name`, `value`"));
         assert_eq!(unknown, "невідоме поле `colour`; можливі поля: `name`, `value`");
         // A shape not known here passes unchanged rather than being guessed at.
-        assert_eq!(with_language(Lang::Zh, || json_reason("something new")), "something new");
+        assert_eq!((json_reason(Lang::Zh, "something new")), "something new");
     }
 
     #[test]
     fn io_reasons_are_named_by_kind() {
         let missing = std::io::Error::from(ErrorKind::NotFound);
-        assert_eq!(with_language(Lang::Ru, || io_reason(&missing)), "нет такого файла или папки");
-        assert_eq!(with_language(Lang::En, || io_reason(&missing)), "no such file or folder");
+        assert_eq!((io_reason(Lang::Ru, &missing)), "нет такого файла или папки");
+        assert_eq!((io_reason(Lang::En, &missing)), "no such file or folder");
     }
 }

@@ -110,7 +110,8 @@ fn the_step_page_is_clicked_and_typed_through_as_the_library_judges() {
     assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
 
     // What the library says of each answer, pixel by pixel, on the triangle's scanline 15.
-    let scene = Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/rogers.json")).unwrap();
+    let scene =
+        Scene::load(zsim::Lang::En, &Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/rogers.json")).unwrap();
     let mut stepper = Stepper::new(&scene, zsim::arith::Arith::Exact);
     stepper.start(None);
     while stepper.record().is_some_and(|r| r.index != 1 || r.row != 15) {
@@ -121,7 +122,7 @@ fn the_step_page_is_clicked_and_typed_through_as_the_library_judges() {
     let expected: Vec<&str> = pixels
         .iter()
         .zip(typed)
-        .map(|(pixel, typed)| match judge_depth(&scene, pixel, typed) {
+        .map(|(pixel, typed)| match judge_depth(zsim::Lang::En, &scene, pixel, typed) {
             _ if typed.is_empty() => "unanswered",
             Ok((true, ..)) => "right",
             Ok((false, ..)) => "wrong",

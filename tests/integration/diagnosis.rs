@@ -16,7 +16,7 @@ fn rogers_text() -> String {
 
 /// The buffers (rows top first) of a scene given as JSON, after polygon `last` (all when `None`).
 fn drawn(json: &str, last: Option<usize>) -> (Matrix, Matrix) {
-    let scene = Scene::from_json(json, Path::new("s.json")).unwrap();
+    let scene = Scene::from_json(zsim::Lang::En, json, Path::new("s.json")).unwrap();
     let mut simulation = Simulation::new(&scene);
     match last {
         Some(last) => simulation.draw_through(last, &mut Unobserved),
@@ -31,7 +31,7 @@ fn rogers_with(setting: &str) -> String {
 }
 
 fn named(scene_json: &str, frame: &Matrix, depth: &Matrix) -> (Misconception, usize, usize) {
-    let scene = Scene::from_json(scene_json, Path::new("s.json")).unwrap();
+    let scene = Scene::from_json(zsim::Lang::En, scene_json, Path::new("s.json")).unwrap();
     let last = scene.polygons.len() - 1;
     let found = diagnose(&scene, last, Some(frame), Some(depth)).expect("a misconception is named");
     (found.misconception, found.explained, found.wrong)
@@ -137,7 +137,7 @@ fn wrapping_instead_of_saturating_is_named() {
 #[test]
 fn a_right_answer_or_a_few_slips_name_nothing() {
     let rogers = rogers_text();
-    let scene = Scene::from_json(&rogers, Path::new("s.json")).unwrap();
+    let scene = Scene::from_json(zsim::Lang::En, &rogers, Path::new("s.json")).unwrap();
     let (frame, mut depth) = drawn(&rogers, None);
     assert_eq!(diagnose(&scene, 1, Some(&frame), Some(&depth)), None);
     depth[3][3] = 7;

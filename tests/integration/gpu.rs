@@ -36,7 +36,7 @@ fn vulkan() -> Option<Vulkan> {
             Some(vulkan)
         }
         Err(error) => {
-            crate::skipped(&format!("Vulkan ({error})"), "the Vulkan conformance tests");
+            crate::skipped(&format!("Vulkan ({})", error.message(zsim::Lang::En)), "the Vulkan conformance tests");
             None
         }
     }
@@ -46,7 +46,7 @@ fn open() -> Option<Gl> {
     match Gl::open() {
         Ok(gl) => Some(gl),
         Err(error) => {
-            crate::skipped(&format!("OpenGL ({error})"), "the GPU conformance tests");
+            crate::skipped(&format!("OpenGL ({})", error.message(zsim::Lang::En)), "the GPU conformance tests");
             None
         }
     }
@@ -118,7 +118,7 @@ fn zsim_covers(triangle: &[[f64; 2]; 3], rules: Rules) -> Vec<(u32, u32)> {
         }
     }
     let json = scene_json(&[(*triangle, 1, 5.0)], rules.preset);
-    let scene = Scene::from_json(&json, std::path::Path::new("gpu.json")).unwrap();
+    let scene = Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("gpu.json")).unwrap();
     let polygon = &scene.polygons[0];
     let mut covered = Covered(Vec::new());
     if zsim::fate(&scene, 0) == zsim::Fate::Drawn {
@@ -257,7 +257,7 @@ fn llvmpipe_shows_the_same_triangle_as_zsim_with_a_depth_test() {
     for _ in 0..40 {
         let layers = random_layers(&mut random);
         let json = scene_json(&layers, Preset::Gl);
-        let scene = Scene::from_json(&json, std::path::Path::new("gpu.json")).unwrap();
+        let scene = Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("gpu.json")).unwrap();
         let mut simulation = Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
         let triangles: Vec<GpuTriangle> = layers
@@ -319,7 +319,7 @@ fn speed_times_zsim_beside_opengl_in_alternating_pairs() {
         let run = crate::zsim(&["speed", scene, "--pairs", "3", "--threads", threads]);
         assert_eq!(run.code, 0, "{}", run.stderr);
         let (header, result) = run.stdout.split_once('\n').unwrap();
-        let drawn = Scene::load(std::path::Path::new(scene)).unwrap();
+        let drawn = Scene::load(zsim::Lang::En, std::path::Path::new(scene)).unwrap();
         let mut simulation = Simulation::new(&drawn);
         simulation.finish(&mut zsim::Unobserved);
         let tested = simulation.stats().tested;
@@ -377,7 +377,7 @@ fn lavapipe_shows_the_same_triangle_as_zsim_with_a_depth_test() {
     for _ in 0..40 {
         let layers = random_layers(&mut random);
         let json = scene_json(&layers, Preset::Vulkan);
-        let scene = Scene::from_json(&json, std::path::Path::new("gpu.json")).unwrap();
+        let scene = Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("gpu.json")).unwrap();
         let mut simulation = Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
         let max = f64::from(scene.depth_max());
@@ -419,7 +419,7 @@ fn llvmpipe_depths_are_within_a_few_levels_of_the_exact_ones() {
                 v.join(", ")
             )
         };
-        let Ok(scene) = Scene::from_json(&json, std::path::Path::new("gpu.json")) else { continue };
+        let Ok(scene) = Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("gpu.json")) else { continue };
         let mut simulation = Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
         let triangle = GpuTriangle { vertices: vertices.map(|[x, y, z]| shifted([x, y], z)), id: 1 };

@@ -12,7 +12,8 @@ const MODELS: [&str; 3] = ["african_head", "african_head_eye_inner", "african_he
 fn the_lessons_images_are_reproduced_byte_for_byte() {
     let Some(dir) = peer("tinyrenderer", "the tinyrenderer lesson's images") else { return };
     for name in MODELS {
-        let model = Model::parse(&std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
+        let model =
+            Model::parse(zsim::Lang::En, &std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
         let drawn = render(&model, Arith::F64, SIZE);
         let side = SIZE as u16;
         let zbuffer = tga(side, side, 1, &drawn.zbuffer, true);
@@ -39,7 +40,8 @@ fn exact_arithmetic_differs_from_the_lessons_f64_only_where_truncation_meets_an_
     let Some(dir) = peer("tinyrenderer", "the tinyrenderer lesson's images") else { return };
     let mut counts = Vec::new();
     for name in MODELS {
-        let model = Model::parse(&std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
+        let model =
+            Model::parse(zsim::Lang::En, &std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
         let (float, exact) = (render(&model, Arith::F64, SIZE), render(&model, Arith::Exact, SIZE));
         let differing: Vec<(u8, u8)> =
             float.zbuffer.iter().zip(&exact.zbuffer).filter(|(a, b)| a != b).map(|(a, b)| (*a, *b)).collect();
@@ -59,9 +61,10 @@ fn exact_arithmetic_differs_from_the_lessons_f64_only_where_truncation_meets_an_
 fn the_imported_model_draws_the_lessons_images_through_zsims_rasterizer() {
     let Some(dir) = peer("tinyrenderer", "the tinyrenderer lesson's images") else { return };
     for (name, f64_drops) in MODELS.into_iter().zip([310, 36, 39]) {
-        let model = Model::parse(&std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
+        let model =
+            Model::parse(zsim::Lang::En, &std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
         let json = zsim::tinyrenderer::scene_json(&model, Arith::F64, SIZE);
-        let scene = zsim::Scene::from_json(&json, std::path::Path::new("import.json")).unwrap();
+        let scene = zsim::Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("import.json")).unwrap();
         let mut simulation = zsim::Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
         let side = SIZE as usize;
@@ -90,7 +93,7 @@ fn the_imported_model_draws_the_lessons_images_through_zsims_rasterizer() {
 
 /// The frame and depth rows (top first) of a small scene.
 fn drawn(json: &str) -> (Vec<Vec<u32>>, Vec<Vec<u32>>) {
-    let scene = zsim::Scene::from_json(json, std::path::Path::new("rule.json")).unwrap();
+    let scene = zsim::Scene::from_json(zsim::Lang::En, json, std::path::Path::new("rule.json")).unwrap();
     let mut simulation = zsim::Simulation::new(&scene);
     simulation.finish(&mut zsim::Unobserved);
     (simulation.buffers().frame_rows(), simulation.buffers().depth_level_rows().unwrap())
@@ -199,10 +202,10 @@ fn the_command_writes_the_lessons_files_and_refuses_a_bad_line() {
 #[test]
 fn a_small_import_draws_as_the_lessons_rules_do() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/tinyrenderer/pyramid.obj");
-    let model = Model::parse(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let model = Model::parse(zsim::Lang::En, &std::fs::read_to_string(&path).unwrap()).unwrap();
     let run = crate::zsim(&["tinyrenderer", "import", path.to_str().unwrap(), "--size", "48"]);
     assert_eq!((run.code, run.stderr.as_str()), (0, ""));
-    let scene = zsim::Scene::from_json(&run.stdout, std::path::Path::new("pyramid.json")).unwrap();
+    let scene = zsim::Scene::from_json(zsim::Lang::En, &run.stdout, std::path::Path::new("pyramid.json")).unwrap();
     assert_eq!((scene.width, scene.height), (48, 48));
     let mut simulation = zsim::Simulation::new(&scene);
     simulation.finish(&mut zsim::Unobserved);

@@ -24,7 +24,10 @@ pub fn scene_json(lang: crate::words::Lang, case: &Case) -> Result<String, CaseE
     let count = primitives.len() as u64;
     let frame_bits = (64 - count.leading_zeros()).clamp(1, 32);
     if count >= 1 << 32 {
-        return Err(CaseError { line: None, message: words!(lang, "cs418-too-many-primitives", count = count.to_string()) });
+        return Err(CaseError {
+            line: None,
+            message: words!(lang, "cs418-too-many-primitives", count = count.to_string()),
+        });
     }
     let mut out = String::new();
     let _ = writeln!(out, "{{");

@@ -48,7 +48,6 @@ pub mod import;
 mod raster;
 mod scalar;
 
-
 pub use compare::{CellDifference, Comparison, Primitive, Reason, Shape, differences};
 pub use image::{Image, ImageDifference, compare_images};
 pub use raster::{Arithmetic, render};
@@ -72,7 +71,9 @@ impl CaseError {
 
     fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self.line {
-            Some(line) => f.write_str(&words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str())),
+            Some(line) => {
+                f.write_str(&words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str()))
+            }
             None => f.write_str(&self.message),
         }
     }
@@ -196,7 +197,11 @@ pub const MAX_SIDE: u32 = 8192;
 impl Case {
     /// Reads a CS 418 file. `load_texture` reads a texture the case names
     /// (the caller knows where the case's folder is), or says why it cannot.
-    pub fn parse(lang: crate::words::Lang, text: &str, load_texture: &dyn Fn(&str) -> Result<Image, String>) -> Result<Case, CaseError> {
+    pub fn parse(
+        lang: crate::words::Lang,
+        text: &str,
+        load_texture: &dyn Fn(&str) -> Result<Image, String>,
+    ) -> Result<Case, CaseError> {
         let mut case: Option<Case> = None;
         for (index, raw) in text.lines().enumerate() {
             let line = index + 1;
@@ -213,7 +218,10 @@ impl Case {
                 continue;
             }
             let Some(case) = case.as_mut() else {
-                return Err(error(line, words!(lang, "cs418-before-png", keyword = crate::words::token(lang, keyword))));
+                return Err(error(
+                    line,
+                    words!(lang, "cs418-before-png", keyword = crate::words::token(lang, keyword)),
+                ));
             };
             let flag = |on: &mut bool| {
                 if args.is_empty() {
@@ -222,7 +230,8 @@ impl Case {
                 } else {
                     Err(error(
                         line,
-                        words!(lang, 
+                        words!(
+                            lang,
                             "cs418-flag-numbers",
                             keyword = crate::words::token(lang, keyword),
                             found = args.len().to_string()
@@ -255,7 +264,8 @@ impl Case {
                     if !allowed.contains(&size) {
                         return Err(error(
                             line,
-                            words!(lang, 
+                            words!(
+                                lang,
                                 "cs418-size",
                                 keyword = crate::words::token(lang, keyword),
                                 size = size.to_string(),
@@ -277,8 +287,9 @@ impl Case {
                     let indices = args
                         .iter()
                         .map(|w| {
-                            w.parse::<usize>()
-                                .map_err(|_| error(line, words!(lang, "cs418-not-an-index", word = crate::words::token(lang, w))))
+                            w.parse::<usize>().map_err(|_| {
+                                error(line, words!(lang, "cs418-not-an-index", word = crate::words::token(lang, w)))
+                            })
                         })
                         .collect::<Result<Vec<_>, _>>()?;
                     case.commands.push((line, Command::Elements(indices)));
@@ -302,7 +313,12 @@ impl Case {
                     {
                         return Err(error(
                             line,
-                            words!(lang, "cs418-count", keyword = crate::words::token(lang, keyword), count = count.to_string()),
+                            words!(
+                                lang,
+                                "cs418-count",
+                                keyword = crate::words::token(lang, keyword),
+                                count = count.to_string()
+                            ),
                         ));
                     }
                     case.commands.push((line, command));
@@ -315,15 +331,21 @@ impl Case {
                     let index = match case.textures.iter().position(|t| t.name == name) {
                         Some(index) => index,
                         None => {
-                            let image = load_texture(&name)
-                                .map_err(|why| error(line, words!(lang, "cs418-texture", name = name.as_str(), why = why)))?;
+                            let image = load_texture(&name).map_err(|why| {
+                                error(line, words!(lang, "cs418-texture", name = name.as_str(), why = why))
+                            })?;
                             case.textures.push(Texture { name, image });
                             case.textures.len() - 1
                         }
                     };
                     case.commands.push((line, Command::Texture(index)));
                 }
-                _ => return Err(error(line, words!(lang, "case-unknown-command", command = crate::words::token(lang, keyword)))),
+                _ => {
+                    return Err(error(
+                        line,
+                        words!(lang, "case-unknown-command", command = crate::words::token(lang, keyword)),
+                    ));
+                }
             }
         }
         case.ok_or_else(|| CaseError { line: None, message: words!(lang, "cs418-no-png") })
@@ -338,7 +360,13 @@ fn png_line(lang: crate::words::Lang, line: usize, args: &[&str]) -> Result<Case
         word.parse::<u32>().ok().filter(|v| (1..=MAX_SIDE).contains(v)).ok_or_else(|| {
             error(
                 line,
-                words!(lang, "cs418-png-side", what = what, word = crate::words::token(lang, word), max = MAX_SIDE.to_string()),
+                words!(
+                    lang,
+                    "cs418-png-side",
+                    what = what,
+                    word = crate::words::token(lang, word),
+                    max = MAX_SIDE.to_string()
+                ),
             )
         })
     };
@@ -370,20 +398,41 @@ fn number(lang: crate::words::Lang, line: usize, keyword: &str, word: &str) -> R
         (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(Number { value, exact }),
         (Ok(value), Err(problem)) if finite && value.is_finite() => Err(error(
             line,
-            words!(lang, "case-keyword-problem", keyword = crate::words::token(lang, keyword), problem = problem.message(lang)),
+            words!(
+                lang,
+                "case-keyword-problem",
+                keyword = crate::words::token(lang, keyword),
+                problem = problem.message(lang)
+            ),
         )),
         _ => Err(error(
             line,
-            words!(lang, "cs418-not-a-number", keyword = crate::words::token(lang, keyword), word = crate::words::token(lang, word)),
+            words!(
+                lang,
+                "cs418-not-a-number",
+                keyword = crate::words::token(lang, keyword),
+                word = crate::words::token(lang, word)
+            ),
         )),
     }
 }
 
-fn integers<const N: usize>(lang: crate::words::Lang, line: usize, keyword: &str, args: &[&str]) -> Result<[usize; N], CaseError> {
+fn integers<const N: usize>(
+    lang: crate::words::Lang,
+    line: usize,
+    keyword: &str,
+    args: &[&str],
+) -> Result<[usize; N], CaseError> {
     if args.len() != N {
         return Err(error(
             line,
-            words!(lang, "cs418-integers", keyword = crate::words::token(lang, keyword), count = N, found = args.len().to_string()),
+            words!(
+                lang,
+                "cs418-integers",
+                keyword = crate::words::token(lang, keyword),
+                count = N,
+                found = args.len().to_string()
+            ),
         ));
     }
     let mut out = [0; N];
@@ -391,7 +440,8 @@ fn integers<const N: usize>(lang: crate::words::Lang, line: usize, keyword: &str
         *slot = word.parse::<usize>().map_err(|_| {
             error(
                 line,
-                words!(lang, 
+                words!(
+                    lang,
                     "cs418-not-a-whole-number",
                     keyword = crate::words::token(lang, keyword),
                     word = crate::words::token(lang, word)
@@ -402,12 +452,25 @@ fn integers<const N: usize>(lang: crate::words::Lang, line: usize, keyword: &str
     Ok(out)
 }
 
-fn sized(lang: crate::words::Lang, line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<Number>), CaseError> {
+fn sized(
+    lang: crate::words::Lang,
+    line: usize,
+    keyword: &str,
+    args: &[&str],
+) -> Result<(usize, Vec<Number>), CaseError> {
     let Some((size, rest)) = args.split_first() else {
         return Err(error(line, words!(lang, "cs418-sized", keyword = crate::words::token(lang, keyword))));
     };
     let size: usize = size.parse().map_err(|_| {
-        error(line, words!(lang, "cs418-size-word", keyword = crate::words::token(lang, keyword), size = crate::words::token(lang, size)))
+        error(
+            line,
+            words!(
+                lang,
+                "cs418-size-word",
+                keyword = crate::words::token(lang, keyword),
+                size = crate::words::token(lang, size)
+            ),
+        )
     })?;
     if size == 0 {
         return Err(error(line, words!(lang, "cs418-size-zero", keyword = crate::words::token(lang, keyword))));
@@ -416,7 +479,8 @@ fn sized(lang: crate::words::Lang, line: usize, keyword: &str, args: &[&str]) ->
     if numbers.len() % size != 0 {
         return Err(error(
             line,
-            words!(lang, 
+            words!(
+                lang,
                 "cs418-vertices",
                 keyword = crate::words::token(lang, keyword),
                 size = size.to_string(),
@@ -434,7 +498,7 @@ mod tests {
     use super::*;
 
     fn parse(text: &str) -> Result<Case, CaseError> {
-        Case::parse(text, &|_| Err("no such file beside the case".into()))
+        Case::parse(crate::words::Lang::En, text, &|_| Err("no such file beside the case".into()))
     }
 
     #[test]
@@ -448,7 +512,7 @@ mod tests {
 
     #[test]
     fn bad_lines_name_the_line_and_the_problem() {
-        let message = |text: &str| parse(text).unwrap_err().to_string();
+        let message = |text: &str| parse(text).unwrap_err().message(crate::words::Lang::En);
         assert_eq!(message("png 2 2 a.png\nfrobnicate 3"), "line 2: unknown command \"frobnicate\"");
         assert_eq!(
             message("png 2 2 a.png\nposition 3 1 2 3 4"),

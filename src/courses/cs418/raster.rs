@@ -185,7 +185,10 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 if first.checked_add(*count).is_none_or(|end| end > positions) {
                     let index = (*first).max(positions);
                     let has = positions.to_string();
-                    return Err(error(line, words!(lang, "cs418-vertex-index", index = index.to_string(), count = has)));
+                    return Err(error(
+                        line,
+                        words!(lang, "cs418-vertex-index", index = index.to_string(), count = has),
+                    ));
                 }
                 let indices: Vec<usize> = (*first..first + count).collect();
                 self.triangles(lang, line, &indices)?;
@@ -195,7 +198,8 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 let Some(indices) = range.and_then(|range| self.elements.get(range)).map(<[usize]>::to_vec) else {
                     return Err(error(
                         line,
-                        words!(lang, 
+                        words!(
+                            lang,
                             "cs418-elements-range",
                             count = count.to_string(),
                             offset = offset.to_string(),
@@ -211,7 +215,8 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                     let size = self.sizes.get(index).cloned().ok_or_else(|| {
                         error(
                             line,
-                            words!(lang, 
+                            words!(
+                                lang,
                                 "cs418-point-size-range",
                                 index = index.to_string(),
                                 has = self.sizes.len().to_string()
@@ -230,7 +235,13 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     /// Vertex `index` in clip space: its position times the matrix, its
     /// colour and its texture coordinates (needed only by a triangle drawn
     /// with a texture; (0, 0) otherwise).
-    fn vertex(&self, lang: crate::words::Lang, line: usize, index: usize, textured: bool) -> Result<Vertex<S>, CaseError> {
+    fn vertex(
+        &self,
+        lang: crate::words::Lang,
+        line: usize,
+        index: usize,
+        textured: bool,
+    ) -> Result<Vertex<S>, CaseError> {
         let position = self.positions.get(index).ok_or_else(|| {
             error(
                 line,
@@ -266,7 +277,12 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             None if textured => {
                 return Err(error(
                     line,
-                    words!(lang, "cs418-texcoord-range", index = index.to_string(), has = self.texcoords.len().to_string()),
+                    words!(
+                        lang,
+                        "cs418-texcoord-range",
+                        index = index.to_string(),
+                        has = self.texcoords.len().to_string()
+                    ),
                 ));
             }
             None => [S::int(0), S::int(0)],
@@ -556,10 +572,11 @@ mod tests {
 
     #[test]
     fn numbers_keep_their_exact_value() {
-        let case = super::super::Case::parse("png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| {
-            Err("no textures here".into())
-        })
-        .unwrap();
+        let case =
+            super::super::Case::parse(crate::words::Lang::En, "png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| {
+                Err("no textures here".into())
+            })
+            .unwrap();
         let super::super::Command::PointSize(numbers) = &case.commands[0].1 else { panic!("pointsize") };
         let exact: Vec<BigRational> = numbers.iter().map(BigRational::number).collect();
         let q = |n: i64, d: i64| BigRational::new(BigInt::from(n), BigInt::from(d));
@@ -591,8 +608,8 @@ mod tests {
     }
 
     fn textured(text: &str) -> Image {
-        let case = super::super::Case::parse(text, &|_| Ok(two_by_two())).unwrap();
-        render(&case, Arithmetic::DdaF64).unwrap().image
+        let case = super::super::Case::parse(crate::words::Lang::En, text, &|_| Ok(two_by_two())).unwrap();
+        render(crate::words::Lang::En, &case, Arithmetic::DdaF64).unwrap().image
     }
 
     /// The whole image as one quad whose (s, t) run from 0 to 2: each sample
@@ -629,8 +646,8 @@ mod tests {
                 s0 + 1,
                 s0 + 1
             );
-            let case = super::super::Case::parse(&text, &|_| Ok(greys.clone())).unwrap();
-            let image = render(&case, Arithmetic::DdaF64).unwrap().image;
+            let case = super::super::Case::parse(crate::words::Lang::En, &text, &|_| Ok(greys.clone())).unwrap();
+            let image = render(crate::words::Lang::En, &case, Arithmetic::DdaF64).unwrap().image;
             for x in 0..8u32 {
                 let k = ((x + shift) % 8) as u8 * 30;
                 assert_eq!(image.pixel(x, 0), [k, k, k, 255], "s from {s0}, pixel {x}");
@@ -671,12 +688,15 @@ mod tests {
     /// divided by 0: NaN alpha, drawn as transparent black), and agree.
     #[test]
     fn a_sample_at_infinity_gets_the_floats_colour_in_both_arithmetics() {
-        let case = super::super::Case::parse(
+        let case = super::super::Case::parse(crate::words::Lang::En,
             "png 4 4 o.png\nhyp\nposition 4 2 1.0 0 -2 0 -1.0 0 2 2 -0.5 0 -1\ncolor 3 1 0 0 0 1 0 0 0 1\ndrawArraysTriangles 0 3",
             &|_| Err("no textures here".into()),
         )
         .unwrap();
-        let (course, exact) = (render(&case, Arithmetic::DdaF64).unwrap(), render(&case, Arithmetic::Exact).unwrap());
+        let (course, exact) = (
+            render(crate::words::Lang::En, &case, Arithmetic::DdaF64).unwrap(),
+            render(crate::words::Lang::En, &case, Arithmetic::Exact).unwrap(),
+        );
         assert_eq!(course.image, exact.image);
         let at_infinity: Vec<(u32, u32)> = (0..4)
             .flat_map(|y| (0..4).map(move |x| (x, y)))
@@ -688,11 +708,13 @@ mod tests {
     #[test]
     fn a_textured_triangle_needs_texture_coordinates() {
         let case = super::super::Case::parse(
+            crate::words::Lang::En,
             "png 2 2 a.png\ntexture t.png\nposition 2 -1 -1 1 -1 -1 1\ntexcoord 2 0 0 1 0\ndrawArraysTriangles 0 3",
             &|_| Ok(two_by_two()),
         )
         .unwrap();
-        let problem = render(&case, Arithmetic::DdaF64).unwrap_err().to_string();
+        let problem =
+            render(crate::words::Lang::En, &case, Arithmetic::DdaF64).unwrap_err().message(crate::words::Lang::En);
         assert_eq!(problem, "line 5: vertex 2 is drawn with a texture, but \"texcoord\" has 2 vertices");
     }
 }

@@ -81,7 +81,8 @@ impl Arith {
             "f32-edge" => Ok(Arith::F32Edge),
             _ => match text.strip_prefix("fixed:").map(str::parse::<u32>) {
                 Some(Ok(bits @ 0..=24)) => Ok(Arith::Fixed(bits)),
-                _ => Err(words!(lang, 
+                _ => Err(words!(
+                    lang,
                     "usage-arith",
                     text = crate::scene::text::printable(&crate::words::token(lang, text)).into_owned()
                 )),
@@ -273,11 +274,11 @@ mod tests {
     #[test]
     fn modes_parse_and_print_alike() {
         for mode in Arith::ALL {
-            assert_eq!(Arith::parse(&mode.to_string()), Ok(mode));
+            assert_eq!(Arith::parse(crate::words::Lang::En, &mode.to_string()), Ok(mode));
         }
-        assert_eq!(Arith::parse("fixed:4"), Ok(Arith::Fixed(4)));
-        assert!(Arith::parse("fixed:25").is_err());
-        assert!(Arith::parse("f16").is_err());
+        assert_eq!(Arith::parse(crate::words::Lang::En, "fixed:4"), Ok(Arith::Fixed(4)));
+        assert!(Arith::parse(crate::words::Lang::En, "fixed:25").is_err());
+        assert!(Arith::parse(crate::words::Lang::En, "f16").is_err());
     }
 
     /// Cells (x, y) where two runs' framebuffers differ.
@@ -295,8 +296,11 @@ mod tests {
 
     #[test]
     fn modes_on_the_books_example() {
-        let scene =
-            Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap();
+        let scene = Scene::load(
+            crate::words::Lang::En,
+            std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")),
+        )
+        .unwrap();
         let (exact, _) = run(&scene, Arith::Exact).unwrap();
         for mode in [Arith::F64, Arith::F64Incremental, Arith::F32, Arith::F32Edge, Arith::Fixed(8)] {
             let (buffers, _) = run(&scene, mode).unwrap();
@@ -333,7 +337,7 @@ mod tests {
     fn edge_functions_cover_what_exact_covers_on_convex_and_concave_scenes() {
         for example in ["rogers", "less", "concave"] {
             let path = format!("{}/examples/{example}.json", env!("CARGO_MANIFEST_DIR"));
-            let scene = Scene::load(std::path::Path::new(&path)).unwrap();
+            let scene = Scene::load(crate::words::Lang::En, std::path::Path::new(&path)).unwrap();
             let (exact, exact_stats) = run(&scene, Arith::Exact).unwrap();
             let (edge, edge_stats) = run(&scene, Arith::F32Edge).unwrap();
             assert_eq!(differing(&edge, &exact), vec![], "{example}");
@@ -344,7 +348,7 @@ mod tests {
     #[test]
     fn edge_function_ties_follow_the_books_rule() {
         // The square [1.5, 3.5] × [1.5, 3.5] has pixel centres on all four edges.
-        let scene = Scene::from_json(
+        let scene = Scene::from_json(crate::words::Lang::En,
             r#"{"width": 5, "height": 5, "polygons": [{"value": 1, "vertices": [[1.5, 1.5, 5], [3.5, 1.5, 5], [3.5, 3.5, 5], [1.5, 3.5, 5]]}]}"#,
             std::path::Path::new("square.json"),
         )

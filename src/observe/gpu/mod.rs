@@ -55,7 +55,6 @@ impl GpuError {
     }
 }
 
-
 /// One triangle to draw: three vertices in pixel units `(x, y, z)` and the
 /// number it is drawn with (1 … 2^24 − 1; 0 is the background).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -179,7 +178,11 @@ pub fn triangles(scene: &crate::scene::Scene) -> Triangles {
 /// shows at every pixel with zsim under the scene's own rules and under the
 /// API's preset. Only the plain algorithm is compared (no per-pixel effects,
 /// no antialiasing).
-pub fn compare(lang: crate::words::Lang, scene: &crate::scene::Scene, api: GpuApi) -> Result<GpuComparison, crate::error::Error> {
+pub fn compare(
+    lang: crate::words::Lang,
+    scene: &crate::scene::Scene,
+    api: GpuApi,
+) -> Result<GpuComparison, crate::error::Error> {
     use crate::error::Usage;
     use crate::rules::{Preset, Rules};
     if scene.has_pixel_effects() || scene.effects.antialias.is_some() {
@@ -236,7 +239,8 @@ pub fn compare(lang: crate::words::Lang, scene: &crate::scene::Scene, api: GpuAp
                         || words!(lang, "gpu-background"),
                         |i| {
                             let depth = crate::raster::depth::depth_at_centre(scene.polygons[i].geometry(), x, y);
-                            words!(lang, 
+                            words!(
+                                lang,
                                 "gpu-exact-depth",
                                 polygon = crate::observe::explain::polygon_name(lang, scene, i),
                                 depth = crate::numbers::exact_and_decimal(lang, depth.value())
@@ -246,7 +250,13 @@ pub fn compare(lang: crate::words::Lang, scene: &crate::scene::Scene, api: GpuAp
                 };
                 match picture.depth.get(((y + margin) * picture.width + x + margin) as usize) {
                     Some(stored) => {
-                        words!(lang, "gpu-why-depth", gpu = format!("{stored:.3}"), shown = exact(gpu), book = exact(in_book))
+                        words!(
+                            lang,
+                            "gpu-why-depth",
+                            gpu = format!("{stored:.3}"),
+                            shown = exact(gpu),
+                            book = exact(in_book)
+                        )
                     }
                     None => words!(lang, "gpu-why-depth-unread", shown = exact(gpu), book = exact(in_book)),
                 }
@@ -315,7 +325,8 @@ impl GpuComparison {
             crate::rules::Preset::Vulkan => "vulkan",
             _ => "gl",
         };
-        let mut text = words!(lang, "gpu-heading", path = path, renderer = self.renderer.as_str(), preset = preset) + "\n";
+        let mut text =
+            words!(lang, "gpu-heading", path = path, renderer = self.renderer.as_str(), preset = preset) + "\n";
         for &index in &self.not_convex {
             text.push_str(&format!("  {}\n", words!(lang, "gpu-not-convex", polygon = name(Some(index)))));
         }
@@ -325,7 +336,8 @@ impl GpuComparison {
         }
         text.push_str(&format!("{}\n", words!(lang, "gpu-differ", count = self.differences.len())));
         for d in &self.differences {
-            let line = words!(lang, 
+            let line = words!(
+                lang,
                 "gpu-cell",
                 x = d.x.to_string(),
                 y = d.y.to_string(),

@@ -207,7 +207,8 @@ struct RulesFile {
 fn rules_from(lang: crate::words::Lang, value: Option<serde_json::Value>) -> Result<Rules, String> {
     let Some(value) = value else { return Ok(Rules::default()) };
     if value.is_string() {
-        let preset: Preset = serde_json::from_value(value).map_err(|e| crate::words::json_reason(lang, &e.to_string()))?;
+        let preset: Preset =
+            serde_json::from_value(value).map_err(|e| crate::words::json_reason(lang, &e.to_string()))?;
         return Ok(Rules::preset(preset));
     }
     let file: RulesFile = serde_json::from_value(value).map_err(|e| crate::words::json_reason(lang, &e.to_string()))?;
@@ -377,9 +378,10 @@ impl<P: Send> SceneFile<P> {
         let side = |key: &'static str, value: Option<u64>| -> Result<u32, Unmade> {
             match value.unwrap_or(32) {
                 0 => Err(setting(key, words!(lang, "setting-side-zero"))),
-                side if side > MAX_SIDE => {
-                    Err(setting(key, words!(lang, "setting-side-large", side = side.to_string(), max = MAX_SIDE.to_string())))
-                }
+                side if side > MAX_SIDE => Err(setting(
+                    key,
+                    words!(lang, "setting-side-large", side = side.to_string(), max = MAX_SIDE.to_string()),
+                )),
                 side => Ok(side as u32),
             }
         };
@@ -388,7 +390,8 @@ impl<P: Send> SceneFile<P> {
         if u64::from(width) * u64::from(height) > MAX_CELLS {
             return Err(setting(
                 "width",
-                words!(lang, 
+                words!(
+                    lang,
                     "setting-cells",
                     width = width.to_string(),
                     height = height.to_string(),
@@ -404,7 +407,8 @@ impl<P: Send> SceneFile<P> {
         if background > frame_max {
             return Err(setting(
                 "background",
-                words!(lang, 
+                words!(
+                    lang,
                     "setting-background",
                     value = background.to_string(),
                     bits = frame_bits.to_string(),
@@ -422,7 +426,8 @@ impl<P: Send> SceneFile<P> {
                 if window.left >= window.right || window.bottom >= window.top {
                     return Err(setting(
                         "window",
-                        words!(lang, 
+                        words!(
+                            lang,
                             "setting-window",
                             left = fraction(window.left),
                             right = fraction(window.right),
@@ -481,7 +486,8 @@ impl<P: Send> SceneFile<P> {
                 if u64::from(width) * u64::from(height) * u64::from(a.samples).pow(2) > MAX_CELLS {
                     return Err(setting(
                         "effects",
-                        words!(lang, 
+                        words!(
+                            lang,
                             "setting-antialias-cells",
                             width = width.to_string(),
                             height = height.to_string(),
@@ -583,7 +589,13 @@ fn after_space(bytes: &[u8], at: usize) -> usize {
 
 /// The polygon whose text is `text`, made; [`Unmade::Unread`] when the text
 /// does not read as a polygon.
-fn from_text(lang: crate::words::Lang, text: &str, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Unmade> {
+fn from_text(
+    lang: crate::words::Lang,
+    text: &str,
+    index: usize,
+    frame: &Frame,
+    path: &Path,
+) -> Result<Polygon, Unmade> {
     let polygon = match strict::polygon(text) {
         Some(polygon) => polygon,
         None => serde_json::from_str::<PolygonFile>(text).map_err(|_| Unmade::Unread)?,
