@@ -2,6 +2,7 @@
 //! line that starts lowercase and names the file and, where there is one, the
 //! polygon. Broken invariants of zsim itself are `debug_assert!`s instead.
 
+use crate::words::Lang;
 use std::path::PathBuf;
 
 use crate::geometry::equation::GeometryError;
@@ -374,13 +375,13 @@ fn quoted_list(items: &[String]) -> String {
 
 impl Usage {
     /// The message in `lang`, one line.
-    pub fn message(&self, lang: crate::words::Lang) -> String {
+    pub fn message(&self, lang: Lang) -> String {
         let mut text = String::new();
         self.write_in(lang, &mut text).expect("writing to a String cannot fail");
         text
     }
 
-    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
+    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         let path = |p: &PathBuf| p.display().to_string();
         let text = match self {
             Usage::ArithNeedsPlainRules { arith } => words!(lang, "usage-arith-plain-rules", arith = arith),
@@ -527,13 +528,13 @@ pub enum PolygonProblem {
 
 impl PolygonProblem {
     /// The message in `lang`, one line.
-    pub fn message(&self, lang: crate::words::Lang) -> String {
+    pub fn message(&self, lang: Lang) -> String {
         let mut text = String::new();
         self.write_in(lang, &mut text).expect("writing to a String cannot fail");
         text
     }
 
-    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
+    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self {
             PolygonProblem::Geometry(error) => f.write_str(&error.message(lang)),
             PolygonProblem::Other(message) => f.write_str(message),
@@ -550,13 +551,13 @@ impl PolygonProblem {
 
 impl Error {
     /// The message in `lang`, one line.
-    pub fn message(&self, lang: crate::words::Lang) -> String {
+    pub fn message(&self, lang: Lang) -> String {
         let mut text = String::new();
         self.write_in(lang, &mut text).expect("writing to a String cannot fail");
         text
     }
 
-    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
+    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self {
             Error::Read { path, source } => f.write_str(&words!(
                 lang,

@@ -86,9 +86,10 @@
 //!
 //! ```
 //! use std::path::Path;
-//! use zsim::{Scene, Simulation, Unobserved};
+//! use zsim::{Lang, Scene, Simulation, Unobserved};
 //!
 //! let scene = Scene::from_json(
+//!     Lang::En,
 //!     r#"{"width": 4, "height": 3, "polygons": [
 //!         {"value": 1, "vertices": [[0, 0, 5], [4, 0, 5], [0, 3, 5]]}]}"#,
 //!     Path::new("inline.json"),

@@ -7,6 +7,7 @@
 //! triangles back from `stage3.txt` as exact decimals and runs the `buet`
 //! rules (`crate::rules`) exactly on the one rasterizer.
 
+use crate::words::Lang;
 use std::fmt::Write as _;
 
 use std::path::Path;
@@ -27,13 +28,13 @@ pub struct CaseError {
 
 impl CaseError {
     /// The message in `lang`, one line.
-    pub fn message(&self, lang: crate::words::Lang) -> String {
+    pub fn message(&self, lang: Lang) -> String {
         let mut text = String::new();
         self.write_in(lang, &mut text).expect("writing to a String cannot fail");
         text
     }
 
-    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
+    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self.line {
             Some(line) => {
                 f.write_str(&words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str()))
@@ -71,7 +72,7 @@ impl Config {
     /// −1 … 1, buffer cleared to 2), or `W H`, `left_x`, `bottom_y`,
     /// `z_front z_rear` on the following lines (window `left_x … −left_x` ×
     /// `bottom_y … −bottom_y`, buffer cleared to `z_rear`).
-    pub fn parse(lang: crate::words::Lang, text: &str) -> Result<Config, CaseError> {
+    pub fn parse(lang: Lang, text: &str) -> Result<Config, CaseError> {
         let lines: Vec<(usize, Vec<&str>)> = text
             .lines()
             .enumerate()
@@ -251,7 +252,7 @@ impl<'a> Lines<'a> {
 
     /// The next line as exactly `count` numbers; `what` is the catalogue
     /// key naming them.
-    fn numbers(&mut self, lang: crate::words::Lang, count: usize, what: &str) -> Result<Vec<f64>, CaseError> {
+    fn numbers(&mut self, lang: Lang, count: usize, what: &str) -> Result<Vec<f64>, CaseError> {
         let Some((line, text)) = self.next_line() else {
             return Err(case_error(None, words!(lang, "buet-ends", what = words!(lang, what))));
         };
@@ -292,7 +293,7 @@ impl CaseScene {
     /// Reads `scene.txt` and applies the model transformations (stage 1):
     /// `triangle`, `translate`, `scale`, `rotate` (angle in degrees and an
     /// axis), `push`, `pop`, `end`; each transformation is `M = M·T`.
-    pub fn parse(lang: crate::words::Lang, text: &str) -> Result<CaseScene, CaseError> {
+    pub fn parse(lang: Lang, text: &str) -> Result<CaseScene, CaseError> {
         let lines: Vec<(usize, &str)> =
             text.lines().enumerate().map(|(i, l)| (i + 1, l.trim())).filter(|(_, l)| !l.is_empty()).collect();
         let mut reader = Lines { lines: &lines, next: 0 };
@@ -406,7 +407,7 @@ pub fn stage_text(triangles: &[[[f64; 3]; 3]]) -> String {
 
 /// Reads a stage file's triangles as the decimal texts written there, each
 /// checked to be a number (stage 4 reads them exactly, not as `f64`s).
-pub fn parse_stage(lang: crate::words::Lang, text: &str) -> Result<Vec<[[String; 3]; 3]>, CaseError> {
+pub fn parse_stage(lang: Lang, text: &str) -> Result<Vec<[[String; 3]; 3]>, CaseError> {
     let mut points = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let words: Vec<&str> = line.split_whitespace().collect();
@@ -502,7 +503,7 @@ pub struct Case {
     pub scene_json: String,
 }
 
-fn read(lang: crate::words::Lang, path: &Path) -> Result<String, Error> {
+fn read(lang: Lang, path: &Path) -> Result<String, Error> {
     crate::scene::text::read_text(lang, path)
 }
 
@@ -518,7 +519,7 @@ impl Case {
     /// Reads a case folder. With no `source`, stage 3 is read from
     /// `stage3.txt` when the folder has one, and computed from `scene.txt`
     /// otherwise.
-    pub fn load(lang: crate::words::Lang, dir: &Path, source: Option<Source>) -> Result<Case, Error> {
+    pub fn load(lang: Lang, dir: &Path, source: Option<Source>) -> Result<Case, Error> {
         let config_path = dir.join("config.txt");
         let config = Config::parse(lang, &read(lang, &config_path)?).map_err(|e| located(&config_path, e))?;
         let source = source.unwrap_or(if dir.join("stage3.txt").is_file() { Source::Stage3 } else { Source::Scene });
@@ -626,18 +627,18 @@ mod tests {
 
     #[test]
     fn both_config_forms_are_read() {
-        let short = Config::parse(crate::words::Lang::En, "500 500").unwrap();
+        let short = Config::parse(Lang::En, "500 500").unwrap();
         assert_eq!((short.width, short.height, short.z_max), (500, 500, Q::from_integer(2)));
         assert_eq!(
             (short.left, short.z_front, short.z_rear),
             (Q::from_integer(-1), Q::from_integer(-1), Q::from_integer(1))
         );
-        let long = Config::parse(crate::words::Lang::En, "640 480\n-2.5\n-1.5\n0.5 10\n").unwrap();
+        let long = Config::parse(Lang::En, "640 480\n-2.5\n-1.5\n0.5 10\n").unwrap();
         assert_eq!((long.left, long.bottom), (Q::new(-5, 2), Q::new(-3, 2)));
         assert_eq!((long.z_front, long.z_rear, long.z_max), (Q::new(1, 2), Q::from_integer(10), Q::from_integer(10)));
-        assert!(Config::parse(crate::words::Lang::En, "500").is_err());
-        assert!(Config::parse(crate::words::Lang::En, "500 500\n-1\n").is_err());
-        assert!(Config::parse(crate::words::Lang::En, "500 500\n1\n-1\n-1 1").is_err());
+        assert!(Config::parse(Lang::En, "500").is_err());
+        assert!(Config::parse(Lang::En, "500 500\n-1\n").is_err());
+        assert!(Config::parse(Lang::En, "500 500\n1\n-1\n-1 1").is_err());
     }
 
     #[test]

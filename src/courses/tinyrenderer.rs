@@ -15,6 +15,7 @@
 //! the interpolated depth, which [`Arith::Exact`] computes as fractions.
 
 use crate::numbers::{Exact, Q, parse_exact};
+use crate::words::Lang;
 
 /// The lesson's image size (its `width` and `height`).
 pub const SIZE: i64 = 800;
@@ -50,7 +51,7 @@ impl Model {
     /// Reads `v` and `f` lines (`f a/b/c d/e/f g/h/i`, `f a b c` or `f a//c …`);
     /// every other line is passed over, as the lesson does. A face must have
     /// three corners whose vertices exist.
-    pub fn parse(lang: crate::words::Lang, text: &str) -> Result<Model, ObjError> {
+    pub fn parse(lang: Lang, text: &str) -> Result<Model, ObjError> {
         let mut model = Model { vertices: Vec::new(), vertices_f64: Vec::new(), faces: Vec::new() };
         let mut faces = Vec::new();
         for (index, line) in text.lines().enumerate() {
@@ -413,15 +414,13 @@ mod tests {
 
     #[test]
     fn obj_lines_are_read_as_the_lesson_reads_them_and_a_bad_one_is_named() {
-        let model = Model::parse(
-            crate::words::Lang::En,
-            "# a comment\nv 0 0 0\nv 1 0 0.5\nv 0 1 -1\nvt 0 0\nf 1/1/1 2/2/2 3/3/3\ns 1\n",
-        )
-        .unwrap();
+        let model =
+            Model::parse(Lang::En, "# a comment\nv 0 0 0\nv 1 0 0.5\nv 0 1 -1\nvt 0 0\nf 1/1/1 2/2/2 3/3/3\ns 1\n")
+                .unwrap();
         assert_eq!((model.vertices.len(), model.faces.clone()), (3, vec![[0, 1, 2]]));
-        let error = Model::parse(crate::words::Lang::En, "v 0 0 0\nv 1 x 0\n").unwrap_err();
+        let error = Model::parse(Lang::En, "v 0 0 0\nv 1 x 0\n").unwrap_err();
         assert_eq!(error.line, 2);
-        let error = Model::parse(crate::words::Lang::En, "v 0 0 0\nf 1 2 3\n").unwrap_err();
+        let error = Model::parse(Lang::En, "v 0 0 0\nf 1 2 3\n").unwrap_err();
         assert_eq!(error.line, 2);
     }
 }

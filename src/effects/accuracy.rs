@@ -7,6 +7,7 @@
 //! them alike; the sweep's depths, the least of three runs each. Compare
 //! them as ratios.
 
+use crate::words::Lang;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -115,7 +116,7 @@ fn hard_scenes(settings: &Settings) -> Vec<String> {
 }
 
 /// The accuracy set: random scenes of several triangle sizes, then the hard cases.
-pub fn scenes(lang: crate::words::Lang, settings: &Settings) -> Result<Vec<Scene>, Error> {
+pub fn scenes(lang: Lang, settings: &Settings) -> Result<Vec<Scene>, Error> {
     let mut rng = SplitMix64::new(settings.seed);
     let mut texts = Vec::new();
     let area = u64::from(settings.width) * u64::from(settings.height);
@@ -235,7 +236,7 @@ fn coplanar_scene(width: u32, height: u32, bits: u32) -> String {
 }
 
 /// The depth-bits sweep: 4, 8, 16, 24 and 32 bits.
-pub fn bits_sweep(lang: crate::words::Lang, settings: &Settings) -> Result<Vec<BitsRow>, Error> {
+pub fn bits_sweep(lang: Lang, settings: &Settings) -> Result<Vec<BitsRow>, Error> {
     let mut rows = Vec::new();
     for bits in [4u32, 8, 16, 24, 32] {
         let scene =

@@ -2,6 +2,7 @@
 //! equation reduced as the book prints it, worked in big integers on every
 //! tier, and the errors a polygon's geometry reports.
 
+use crate::words::Lang;
 use std::fmt;
 
 use num_bigint::BigInt;
@@ -53,13 +54,13 @@ pub struct OffPlane {
 
 impl GeometryError {
     /// The message in `lang`, one line.
-    pub fn message(&self, lang: crate::words::Lang) -> String {
+    pub fn message(&self, lang: Lang) -> String {
         let mut text = String::new();
         self.write_in(lang, &mut text).expect("writing to a String cannot fail");
         text
     }
 
-    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
+    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self {
             GeometryError::TooFewVertices(n) => f.write_str(&words!(lang, "geometry-too-few", count = n.to_string())),
             GeometryError::TooManyVertices(n) => {

@@ -1,6 +1,7 @@
 //! Exact numbers written for people: reduced fractions, fixed decimals,
 //! both side by side, in the reader's decimal convention.
 
+use crate::words::Lang;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
@@ -21,7 +22,7 @@ pub fn fraction(value: impl Into<Exact>) -> String {
 /// A big integer as a message prints it: whole up to 60 digits, beyond
 /// that its first and last 12 digits and how many there are
 /// (`123456789012…345678901234 (1304 digits)`), so a line stays readable.
-pub fn big_integer(lang: crate::words::Lang, value: &num_bigint::BigInt) -> String {
+pub fn big_integer(lang: Lang, value: &num_bigint::BigInt) -> String {
     let text = value.to_string();
     let (sign, digits) = text.strip_prefix('-').map_or(("", text.as_str()), |rest| ("-", rest));
     if digits.len() <= 60 {
@@ -36,10 +37,12 @@ pub fn big_integer(lang: crate::words::Lang, value: &num_bigint::BigInt) -> Stri
 /// separator is the language's (`12,5` in Russian).
 ///
 /// ```
-/// use zsim::{Q, short};
+/// use zsim::{Lang, Q, short};
+/// let short = |q| short(Lang::En, q);
 /// assert_eq!((short(Q::new(13, 2)), short(Q::new(43, 8)), short(Q::new(41, 3))), ("6.5".into(), "5.375".into(), "41/3".into()));
+/// assert_eq!(zsim::short(Lang::Ru, Q::new(25, 2)), "12,5");
 /// ```
-pub fn short(lang: crate::words::Lang, value: impl Into<Exact>) -> String {
+pub fn short(lang: Lang, value: impl Into<Exact>) -> String {
     crate::words::localize_decimal(lang, short_in_files(value))
 }
 
@@ -110,13 +113,13 @@ fn big_decimal(value: &BigRational, places: u32) -> String {
 
 /// `43/4 ≈ 10.75`: the exact value and its decimal with 2 places, as zsim
 /// shows depths and crossings. Whole numbers print once: `10`.
-pub fn exact_and_decimal(lang: crate::words::Lang, value: impl Into<Exact>) -> String {
+pub fn exact_and_decimal(lang: Lang, value: impl Into<Exact>) -> String {
     exact_and_places(lang, value, 2)
 }
 
 /// The exact value and its decimal with `places` places (`4876543/5000000 ≈
 /// 0.975309`); whole numbers print once.
-pub fn exact_and_places(lang: crate::words::Lang, value: impl Into<Exact>, places: u32) -> String {
+pub fn exact_and_places(lang: Lang, value: impl Into<Exact>, places: u32) -> String {
     let value = value.into();
     if value.is_integer() {
         fraction(value)
@@ -137,7 +140,7 @@ mod tests {
         assert_eq!(decimal(Q::new(-1, 3), 2), "-0.33");
         assert_eq!(decimal(Q::new(-1, 1000), 2), "0.00");
         assert_eq!(decimal(Q::new(999, 1000), 2), "1.00");
-        assert_eq!(exact_and_decimal(crate::words::Lang::En, Q::new(43, 4)), "43/4 ≈ 10.75");
-        assert_eq!(exact_and_decimal(crate::words::Lang::En, Q::from_integer(10)), "10");
+        assert_eq!(exact_and_decimal(Lang::En, Q::new(43, 4)), "43/4 ≈ 10.75");
+        assert_eq!(exact_and_decimal(Lang::En, Q::from_integer(10)), "10");
     }
 }

@@ -25,13 +25,13 @@ impl NumberError {
     /// What is wrong and the text that failed, as a fact a serde visitor
     /// carries to where it is worded ([`crate::words::fact`]).
     pub fn fact(&self) -> String {
-        let (key, text) = match self {
-            NumberError::NotANumber(text) => ("number-not-a-number", text),
-            NumberError::ZeroDenominator(text) => ("number-zero-denominator", text),
-            NumberError::TooLarge(text) => ("number-too-large", text),
-            NumberError::TooLong(text) => ("number-too-long", text),
-        };
-        crate::words::fact(key, text)
+        let max = MAX_BIG_DIGITS.to_string();
+        match self {
+            NumberError::NotANumber(text) => crate::words::fact("number-not-a-number", &[("text", text)]),
+            NumberError::ZeroDenominator(text) => crate::words::fact("number-zero-denominator", &[("text", text)]),
+            NumberError::TooLarge(text) => crate::words::fact("number-too-large", &[("text", text)]),
+            NumberError::TooLong(text) => crate::words::fact("number-too-long", &[("text", text), ("max", &max)]),
+        }
     }
 
     /// The message in `lang`, one line.

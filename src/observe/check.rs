@@ -1,6 +1,8 @@
 //! Homework answers: reading a matrix as the book prints it, and finding the
 //! cells that differ from zsim's.
 
+use crate::words::Lang;
+
 /// A matrix read from an answer file, top row first.
 pub type Matrix = Vec<Vec<u32>>;
 
@@ -19,13 +21,7 @@ pub struct CellRange<'a> {
 /// shape against the raster; the error names the line, the column and the
 /// raster cell, and says what was found: the first [`PROBLEMS_NAMED`]
 /// problems, separated by ` · `, then how many more there are.
-pub fn parse_answer(
-    lang: crate::words::Lang,
-    text: &str,
-    width: u32,
-    height: u32,
-    range: CellRange<'_>,
-) -> Result<Matrix, String> {
+pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Matrix, String> {
     let mut problems = Vec::new();
     let lines: Vec<(usize, &str)> = text
         .lines()
@@ -120,7 +116,7 @@ pub enum Misreading {
 
 impl Misreading {
     /// How it was written, in words: `bottom row first`.
-    pub fn words(self, lang: crate::words::Lang) -> String {
+    pub fn words(self, lang: Lang) -> String {
         match self {
             Misreading::BottomRowFirst => words!(lang, "misreading-upside-down"),
             Misreading::Transposed => words!(lang, "misreading-transposed"),
@@ -180,25 +176,19 @@ mod tests {
     #[test]
     fn comments_blank_lines_and_commas_are_taken() {
         let text = "# my answer\n\n1 2\n\n3, 0\n";
-        assert_eq!(parse_answer(crate::words::Lang::En, text, 2, 2, FRAME).unwrap(), vec![vec![1, 2], vec![3, 0]]);
-        assert_eq!(
-            parse_answer(crate::words::Lang::En, "1,2\n3 ,0\n", 2, 2, FRAME).unwrap(),
-            vec![vec![1, 2], vec![3, 0]]
-        );
+        assert_eq!(parse_answer(Lang::En, text, 2, 2, FRAME).unwrap(), vec![vec![1, 2], vec![3, 0]]);
+        assert_eq!(parse_answer(Lang::En, "1,2\n3 ,0\n", 2, 2, FRAME).unwrap(), vec![vec![1, 2], vec![3, 0]]);
     }
 
     #[test]
     fn wrong_shapes_say_what_was_found() {
+        assert_eq!(parse_answer(Lang::En, "1 2\n3 0\n1 1\n", 2, 2, FRAME).unwrap_err(), "3 rows; the raster has 2");
         assert_eq!(
-            parse_answer(crate::words::Lang::En, "1 2\n3 0\n1 1\n", 2, 2, FRAME).unwrap_err(),
-            "3 rows; the raster has 2"
-        );
-        assert_eq!(
-            parse_answer(crate::words::Lang::En, "1 2\n3\n", 2, 2, FRAME).unwrap_err(),
+            parse_answer(Lang::En, "1 2\n3\n", 2, 2, FRAME).unwrap_err(),
             "line 2: 1 value; the raster is 2 wide"
         );
         assert_eq!(
-            parse_answer(crate::words::Lang::En, "1 x\n", 2, 1, FRAME).unwrap_err(),
+            parse_answer(Lang::En, "1 x\n", 2, 1, FRAME).unwrap_err(),
             "line 1, value 2 (x = 1, y = 0): \"x\" is not a whole number (a 2-bit framebuffer holds 0 … 3)"
         );
     }
@@ -207,7 +197,7 @@ mod tests {
     #[test]
     fn a_value_the_buffer_cannot_hold_is_named_at_its_cell() {
         assert_eq!(
-            parse_answer(crate::words::Lang::En, "0 0\n0 7\n", 2, 2, FRAME).unwrap_err(),
+            parse_answer(Lang::En, "0 0\n0 7\n", 2, 2, FRAME).unwrap_err(),
             "line 2, value 2 (x = 1, y = 0): 7 does not fit a 2-bit framebuffer (0 … 3)"
         );
     }

@@ -8,6 +8,7 @@ use crate::raster::depth::{Depth, Stored};
 use crate::rules::DepthStore;
 use crate::scene::Scene;
 use crate::simulate::events::{Fate, Outcome, PixelEvent};
+use crate::words::Lang;
 
 /// Which buffer a sentence is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -20,7 +21,7 @@ pub enum Buffer {
 
 impl Buffer {
     /// `framebuffer` or `z-buffer`, in the current language.
-    pub fn name(self, lang: crate::words::Lang) -> String {
+    pub fn name(self, lang: Lang) -> String {
         match self {
             Buffer::Frame => words!(lang, "buffer-frame"),
             Buffer::Depth => words!(lang, "buffer-depth"),
@@ -30,7 +31,7 @@ impl Buffer {
 
 /// A depth as shown for this scene: 2 decimals with a quantized z-buffer,
 /// 6 with an exact one (whose depths usually lie within −1 … 1).
-pub fn depth_text(lang: crate::words::Lang, scene: &Scene, z: impl Into<Exact>) -> String {
+pub fn depth_text(lang: Lang, scene: &Scene, z: impl Into<Exact>) -> String {
     match scene.rules.store {
         DepthStore::Quantized | DepthStore::Truncated => exact_and_decimal(lang, z),
         DepthStore::Exact => exact_and_places(lang, z, 6),
@@ -38,27 +39,27 @@ pub fn depth_text(lang: crate::words::Lang, scene: &Scene, z: impl Into<Exact>) 
 }
 
 /// `polygon 2 "triangle"`.
-pub fn polygon_name(lang: crate::words::Lang, scene: &Scene, index: usize) -> String {
+pub fn polygon_name(lang: Lang, scene: &Scene, index: usize) -> String {
     crate::words::polygon_label(lang, "polygon-name", index, &scene.polygons[index].name)
 }
 
 /// `polygon 2 "triangle"` after "after" (a genitive in some languages).
-pub fn polygon_after(lang: crate::words::Lang, scene: &Scene, index: usize) -> String {
+pub fn polygon_after(lang: Lang, scene: &Scene, index: usize) -> String {
     crate::words::polygon_label(lang, "polygon-after", index, &scene.polygons[index].name)
 }
 
 /// `43/4 ≈ 10.75 … 179/6 ≈ 29.83`.
-pub fn span_text(lang: crate::words::Lang, span: &SpanRecord) -> String {
+pub fn span_text(lang: Lang, span: &SpanRecord) -> String {
     words!(lang, "span", left = exact_and_decimal(lang, &span.left), right = exact_and_decimal(lang, &span.right))
 }
 
 /// `y = 15.5`: the scanline through row `row`.
-pub fn scanline_text(lang: crate::words::Lang, row: u32) -> String {
+pub fn scanline_text(lang: Lang, row: u32) -> String {
     words!(lang, "scanline", y = crate::words::localize_decimal(lang, format!("{row}.5")))
 }
 
 /// The direction a polygon's vertices run, in words.
-pub fn winding_text(lang: crate::words::Lang, winding: crate::scene::Winding) -> String {
+pub fn winding_text(lang: Lang, winding: crate::scene::Winding) -> String {
     match winding {
         crate::scene::Winding::Cw => words!(lang, "winding-cw"),
         crate::scene::Winding::Ccw => words!(lang, "winding-ccw"),
@@ -68,7 +69,7 @@ pub fn winding_text(lang: crate::words::Lang, winding: crate::scene::Winding) ->
 /// What is stored for an exact depth, naming the rounding when z is not
 /// whole (`10 is stored (10.25 rounds to 10)`, the book's pixel (20, 17))
 /// and the saturation when it does not fit.
-pub fn stored_text(lang: crate::words::Lang, scene: &Scene, depth: &Depth) -> String {
+pub fn stored_text(lang: Lang, scene: &Scene, depth: &Depth) -> String {
     match depth.stored(scene.rules.store, scene.depth_max()) {
         Stored::Level(stored) if scene.rules.store == crate::rules::DepthStore::Truncated => {
             let value = depth.value();
@@ -104,7 +105,7 @@ pub fn stored_text(lang: crate::words::Lang, scene: &Scene, depth: &Depth) -> St
 
 /// One sentence on what the depth test made of a covered pixel:
 /// `z = 43/4 ≈ 10.75 > 10 stored, so 11 is stored and the framebuffer gets 2`.
-pub fn pixel_reason(lang: crate::words::Lang, scene: &Scene, event: &PixelEvent) -> String {
+pub fn pixel_reason(lang: Lang, scene: &Scene, event: &PixelEvent) -> String {
     let z = match scene.effects.perspective {
         Some(perspective) if perspective.store_w => words!(
             lang,
@@ -173,7 +174,7 @@ pub fn pixel_reason(lang: crate::words::Lang, scene: &Scene, event: &PixelEvent)
 }
 
 /// Why a polygon was not drawn at all, or `None` when it was.
-pub fn fate_text(lang: crate::words::Lang, fate: Fate) -> Option<String> {
+pub fn fate_text(lang: Lang, fate: Fate) -> Option<String> {
     match fate {
         Fate::Drawn => None,
         Fate::Culled(winding) => Some(words!(lang, "fate-culled", winding = winding_text(lang, winding))),
@@ -186,7 +187,7 @@ pub fn fate_text(lang: crate::words::Lang, fate: Fate) -> Option<String> {
 }
 
 /// What one polygon did at pixel (x, y), in one sentence.
-pub fn entry_text(lang: crate::words::Lang, scene: &Scene, x: u32, y: u32, entry: &PixelHistoryEntry) -> String {
+pub fn entry_text(lang: Lang, scene: &Scene, x: u32, y: u32, entry: &PixelHistoryEntry) -> String {
     if let Some(text) = fate_text(lang, entry.fate) {
         return text;
     }
@@ -230,7 +231,7 @@ pub fn entry_text(lang: crate::words::Lang, scene: &Scene, x: u32, y: u32, entry
 }
 
 /// `it spans 57/2 … 179/6` (or has no crossings), with `subject` for "it".
-fn spans_of(lang: crate::words::Lang, scanline: &ScanlineRecord, subject: &str) -> String {
+fn spans_of(lang: Lang, scanline: &ScanlineRecord, subject: &str) -> String {
     if scanline.spans.is_empty() {
         return words!(lang, "spans-none", subject = subject);
     }
@@ -240,14 +241,7 @@ fn spans_of(lang: crate::words::Lang, scanline: &ScanlineRecord, subject: &str) 
 
 /// Why cell (x, y) of `buffer` holds what it holds after the polygons in
 /// `history` (all of them up to the one the check is after), in one sentence.
-pub fn why(
-    lang: crate::words::Lang,
-    scene: &Scene,
-    buffer: Buffer,
-    x: u32,
-    y: u32,
-    history: &[PixelHistoryEntry],
-) -> String {
+pub fn why(lang: Lang, scene: &Scene, buffer: Buffer, x: u32, y: u32, history: &[PixelHistoryEntry]) -> String {
     let last_write = history
         .iter()
         .rev()

@@ -4,6 +4,7 @@
 //! from exact values with [`crate::numbers::decimal`]; nothing passes through
 //! floating point.
 
+use crate::words::Lang;
 use std::fmt::Write as _;
 
 use crate::raster::convert::{Scratch, rasterize};
@@ -60,20 +61,13 @@ pub struct Extras {
 
 /// Draws the buffers after polygon `last` (0-based): polygons `0 ..= last`
 /// are outlined. The raster must be at most [`MAX_FIGURE_SIDE`] on a side.
-pub fn svg(
-    lang: crate::words::Lang,
-    scene: &Scene,
-    buffers: &Buffers,
-    last: usize,
-    shading: Shading,
-    title: &str,
-) -> String {
+pub fn svg(lang: Lang, scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, title: &str) -> String {
     svg_with(lang, scene, buffers, last, shading, title, &Extras::default())
 }
 
 /// Like [`svg`], with vertex labels and a caption.
 pub fn svg_with(
-    lang: crate::words::Lang,
+    lang: Lang,
     scene: &Scene,
     buffers: &Buffers,
     last: usize,
@@ -292,7 +286,7 @@ fn text_width(label: &str) -> i128 {
 
 /// The legend's entries, `(fill, label)`: each framebuffer value present
 /// (the background first), or for depth shading the far and near ends.
-fn legend(lang: crate::words::Lang, scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, String)> {
+fn legend(lang: Lang, scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec<(String, String)> {
     match shading {
         Shading::Frame => {
             let mut values: Vec<u32> = buffers.frame_rows().into_iter().flatten().collect();
@@ -325,7 +319,7 @@ fn legend(lang: crate::words::Lang, scene: &Scene, buffers: &Buffers, shading: S
 
 /// A framebuffer value's legend label, naming the polygons that write it
 /// (up to two; more are counted).
-fn value_label(lang: crate::words::Lang, scene: &Scene, value: u32) -> String {
+fn value_label(lang: Lang, scene: &Scene, value: u32) -> String {
     let names: Vec<String> =
         scene.polygons.iter().filter(|p| p.value == value).map(|p| format!("\"{}\"", p.name)).collect();
     let names = match names.len() {
@@ -338,7 +332,7 @@ fn value_label(lang: crate::words::Lang, scene: &Scene, value: u32) -> String {
 
 /// Each cell's value written in its pixel: black on light fills, white on dark.
 fn cell_values(
-    lang: crate::words::Lang,
+    lang: Lang,
     out: &mut String,
     scene: &Scene,
     buffers: &Buffers,
@@ -378,7 +372,7 @@ fn is_dark(fill: &str) -> bool {
 /// Each vertex of polygons `0 ..= last` labelled `(x, y, z)`, set off from
 /// the vertex away from its polygon's middle, on a white halo so that the
 /// label stays readable over lines.
-fn vertex_labels(lang: crate::words::Lang, out: &mut String, scene: &Scene, last: usize, (sx, sy): (&ToSvg, &ToSvg)) {
+fn vertex_labels(lang: Lang, out: &mut String, scene: &Scene, last: usize, (sx, sy): (&ToSvg, &ToSvg)) {
     let _ = writeln!(
         out,
         r#"<g id="vertices" font-size="10" fill="black" stroke="white" stroke-width="3" paint-order="stroke">"#
@@ -565,7 +559,7 @@ fn wrap(lines: &[String], width: usize) -> Vec<String> {
 
 /// Between a point's coordinates: `, `, or `; ` where the decimal separator
 /// is a comma (`(12,5; 3; 0,25)` in Russian), as `explain` writes centres.
-fn coordinate_separator(lang: crate::words::Lang) -> &'static str {
+fn coordinate_separator(lang: Lang) -> &'static str {
     if lang.decimal_separator() == ',' { "; " } else { ", " }
 }
 
@@ -641,7 +635,7 @@ mod tests {
     /// The book's example, drawn.
     fn rogers_drawn() -> (Scene, Buffers) {
         let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")).unwrap();
-        let scene = Scene::from_json(crate::words::Lang::En, &text, std::path::Path::new("rogers.json")).unwrap();
+        let scene = Scene::from_json(Lang::En, &text, std::path::Path::new("rogers.json")).unwrap();
         let mut simulation = crate::Simulation::new(&scene);
         simulation.finish(&mut crate::Unobserved);
         let buffers = simulation.into_buffers();
@@ -667,7 +661,7 @@ mod tests {
             assert_eq!(buffers.frame(x, y), polygon.value);
             assert!((x + 1..scene.width).all(|r| [polygon.value, scene.background].contains(&buffers.frame(r, y))));
         }
-        let svg = svg(crate::words::Lang::En, &scene, buffers, 1, Shading::Frame, "t");
+        let svg = svg(Lang::En, &scene, buffers, 1, Shading::Frame, "t");
         let raster_right = MARGIN_LEFT + 32 * CELL;
         let name_x: Vec<i128> = svg
             .lines()
@@ -685,7 +679,7 @@ mod tests {
     fn values_sit_above_the_dashed_scanlines() {
         let (scene, buffers) = rogers_drawn();
         let extras = Extras { values: true, ..Extras::default() };
-        let svg = svg_with(crate::words::Lang::En, &scene, &buffers, 1, Shading::Frame, "t", &extras);
+        let svg = svg_with(Lang::En, &scene, &buffers, 1, Shading::Frame, "t", &extras);
         let group = |id: &str| -> Vec<f64> {
             let start = svg.find(&format!("<g id=\"{id}\"")).unwrap();
             let body = &svg[start..start + svg[start..].find("</g>").unwrap()];

@@ -3,6 +3,7 @@
 //! and what the scene or the reader adds (point-in-polygon tests, the segment
 //! holding it, antialiasing, another arithmetic). `zsim explain` prints it.
 
+use crate::words::Lang;
 use std::path::Path;
 
 use crate::effects::antialias::{self, PixelModeNote};
@@ -204,7 +205,7 @@ pub const LISTED_ALL: usize = 50;
 impl PixelHistory {
     /// The history in the reader's language, one fact a line, as `zsim
     /// explain` prints it; `file` names the scene in the heading.
-    pub fn text(&self, lang: crate::words::Lang, scene: &Scene, file: &Path) -> String {
+    pub fn text(&self, lang: Lang, scene: &Scene, file: &Path) -> String {
         let (x, y) = self.pixel;
         let centre = |v: u32| exact_and_decimal(lang, Q::new(2 * i128::from(v) + 1, 2));
         let mut text = words!(
@@ -295,7 +296,7 @@ impl PixelHistory {
 }
 
 /// The two point-in-polygon tests at the centre, in words.
-fn inside_text(lang: crate::words::Lang, tests: &InsideTests) -> String {
+fn inside_text(lang: Lang, tests: &InsideTests) -> String {
     let side =
         |inside: bool| if inside { words!(lang, "explain-inside-in") } else { words!(lang, "explain-inside-out") };
     let arc = match tests.arc {
@@ -308,7 +309,7 @@ fn inside_text(lang: crate::words::Lang, tests: &InsideTests) -> String {
 }
 
 /// The segment holding the pixel and the polygons it visits, in words.
-fn segment_text(lang: crate::words::Lang, scene: &Scene, segment: &SegmentFacts) -> String {
+fn segment_text(lang: Lang, scene: &Scene, segment: &SegmentFacts) -> String {
     let SegmentFacts { segments, number, count, rect, visited } = segment;
     let visited: Vec<String> = visited.iter().map(|&i| polygon_name(lang, scene, i)).collect();
     let visited = if visited.is_empty() { words!(lang, "explain-segment-none") } else { visited.join(", ") };
@@ -329,7 +330,7 @@ fn segment_text(lang: crate::words::Lang, scene: &Scene, segment: &SegmentFacts)
 }
 
 /// What antialiasing did at the pixel, in words.
-fn antialias_text(lang: crate::words::Lang, scene: &Scene, facts: &AntialiasFacts) -> String {
+fn antialias_text(lang: Lang, scene: &Scene, facts: &AntialiasFacts) -> String {
     let k = facts.samples;
     let mut text = words!(lang, "explain-antialias", k = k.to_string()) + "\n";
     match &facts.detail {

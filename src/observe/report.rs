@@ -1,6 +1,7 @@
 //! Reports people read: matrices as the book prints them, and the JSON
 //! output of `zsim run`. Strings only; the CLI does the printing.
 
+use crate::words::Lang;
 use serde::Serialize;
 
 use crate::numbers::{Exact, decimal};
@@ -35,7 +36,7 @@ use crate::simulate::stages::describe as stages;
 
 /// The lines that open a text report: the scene's size, bit depths, test,
 /// the stages that run and the effects asked for.
-pub fn scene_header(lang: crate::words::Lang, scene: &Scene, path: &str) -> String {
+pub fn scene_header(lang: Lang, scene: &Scene, path: &str) -> String {
     let effects = scene.effects.names();
     let header = words!(
         lang,
@@ -60,7 +61,7 @@ pub fn scene_header(lang: crate::words::Lang, scene: &Scene, path: &str) -> Stri
 
 /// One line naming a polygon, its value, its plane and what happens to it:
 /// `polygon 2 "triangle" (value 2): plane 3x + y + 4z - 120 = 0, counter-clockwise`.
-pub fn polygon_heading(lang: crate::words::Lang, scene: &Scene, index: usize) -> String {
+pub fn polygon_heading(lang: Lang, scene: &Scene, index: usize) -> String {
     let polygon = &scene.polygons[index];
     let geometry = polygon.geometry();
     let start = words!(
@@ -363,13 +364,12 @@ mod tests {
                         let json = format!(
                             r#"{{"width": 4, "height": 3, "rules": {rules}, {test_key}{clear_key}"polygons": [{{"value": 1, "vertices": [[0, 0, "1/2"], [1, 0, "1/2"], [0, 1, "1/2"]]}}]}}"#
                         );
-                        let scene = Scene::from_json(crate::words::Lang::En, &json, std::path::Path::new("s.json"))
-                            .expect(&json);
+                        let scene = Scene::from_json(Lang::En, &json, std::path::Path::new("s.json")).expect(&json);
                         let mut simulation = Simulation::new(&scene);
                         simulation.finish(&mut crate::simulate::events::Unobserved);
                         // (3, 2) is far from the one small triangle: it keeps the clear value.
-                        let held = simulation.buffers().depth(3, 2).text(crate::words::Lang::En);
-                        let heading = scene_header(crate::words::Lang::En, &scene, "s.json");
+                        let held = simulation.buffers().depth(3, 2).text(Lang::En);
+                        let heading = scene_header(Lang::En, &scene, "s.json");
                         assert!(
                             heading.contains(&format!("cleared to {held}\n")),
                             "{json}\nthe buffer holds {held}, the heading says: {heading}"

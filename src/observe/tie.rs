@@ -2,6 +2,7 @@
 //! rule sets differ, and the cells where two rule sets draw a scene
 //! differently, each with the tie that decided it.
 
+use crate::words::Lang;
 use std::cmp::Ordering;
 
 use num_rational::BigRational;
@@ -32,7 +33,7 @@ pub enum Boundary {
 
 impl Boundary {
     /// The words for it: "left edge", "vertex", ….
-    pub fn words(self, lang: crate::words::Lang) -> String {
+    pub fn words(self, lang: Lang) -> String {
         match self {
             Boundary::TopEdge => words!(lang, "boundary-top"),
             Boundary::BottomEdge => words!(lang, "boundary-bottom"),
@@ -190,7 +191,7 @@ pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
 
 /// Which of a rule set's choices decides a centre on this kind of boundary,
 /// in words: "the book's column rule (centres in [x_l, x_r], ends included)", ….
-fn deciding_rule(lang: crate::words::Lang, rules: Rules, boundary: Boundary) -> String {
+fn deciding_rule(lang: Lang, rules: Rules, boundary: Boundary) -> String {
     use crate::rules::{ColumnRule, RowRule};
     match boundary {
         Boundary::LeftEdge | Boundary::RightEdge => match rules.columns {
@@ -208,7 +209,7 @@ fn deciding_rule(lang: crate::words::Lang, rules: Rules, boundary: Boundary) -> 
 
 /// One sentence on a centre exactly on a polygon's boundary and the rule
 /// that decides it, or `None` when pixel (x, y)'s centre is not on it.
-pub fn tie_text(lang: crate::words::Lang, rules: Rules, vertices: &[[Exact; 3]], x: u32, y: u32) -> Option<String> {
+pub fn tie_text(lang: Lang, rules: Rules, vertices: &[[Exact; 3]], x: u32, y: u32) -> Option<String> {
     let (boundary, a, b) = boundary_at(vertices, x, y)?;
     let point = |[x, y]: [Exact; 2]| format!("({}, {})", crate::numbers::fraction(x), crate::numbers::fraction(y));
     let place = boundary.words(lang);
@@ -240,16 +241,16 @@ mod tests {
     fn ties_are_named_with_the_rule_that_decides_them() {
         let gpu = Rules::preset(Preset::Vulkan);
         assert_eq!(
-            tie_text(crate::words::Lang::En, gpu, &triangle(), 6, 3).unwrap(),
+            tie_text(Lang::En, gpu, &triangle(), 6, 3).unwrap(),
             "the centre lies exactly on the right edge from (13/2, 1/2) to (13/2, 13/2), which the top-left rule (centres in [x_l, x_r): left edges in, right edges out) leaves out"
         );
         assert_eq!(
-            tie_text(crate::words::Lang::En, Rules::default(), &triangle(), 3, 0).unwrap(),
+            tie_text(Lang::En, Rules::default(), &triangle(), 3, 0).unwrap(),
             "the centre lies exactly on the bottom edge from (1/2, 1/2) to (13/2, 1/2), which the book's half-interval rule (an edge counts for min ≤ y < max) includes"
         );
-        assert!(tie_text(crate::words::Lang::En, gpu, &triangle(), 4, 2).is_none(), "an inside centre is no tie");
+        assert!(tie_text(Lang::En, gpu, &triangle(), 4, 2).is_none(), "an inside centre is no tie");
         assert!(
-            tie_text(crate::words::Lang::En, gpu, &triangle(), 0, 0)
+            tie_text(Lang::En, gpu, &triangle(), 0, 0)
                 .unwrap()
                 .starts_with("the centre is exactly the vertex (1/2, 1/2)")
         );

@@ -1,6 +1,7 @@
 //! Depth: the exact depth at a pixel centre, the depth tests, rounding and
 //! saturation, and the exact incremental step along a scanline.
 
+use crate::words::Lang;
 use std::cmp::Ordering;
 
 use serde::{Deserialize, Serialize};
@@ -46,7 +47,7 @@ impl Stored {
     /// A level as an integer (`11`); an exact value with 6 decimals
     /// (`4876543/5000000 ≈ 0.975309`, the separator `lang`'s), as the exact
     /// store is used for depths in small ranges.
-    pub fn text(&self, lang: crate::words::Lang) -> String {
+    pub fn text(&self, lang: Lang) -> String {
         match self {
             Stored::Level(level) => level.to_string(),
             Stored::Exact(value) => exact_and_places(lang, value, 6),
@@ -137,7 +138,7 @@ impl DepthTest {
 
     /// The rule in a heading's words: `z > stored`, or `every fragment
     /// passes`, `no fragment passes`.
-    pub fn rule_text(self, lang: crate::words::Lang) -> String {
+    pub fn rule_text(self, lang: Lang) -> String {
         match self {
             DepthTest::Always => words!(lang, "rule-always"),
             DepthTest::Never => words!(lang, "rule-never"),
@@ -148,7 +149,7 @@ impl DepthTest {
     /// A test's outcome in words, for `z` against `stored`: `43/4 > 10
     /// stored`, `43/4 is not > 10 stored`, or for the tests that compare
     /// nothing `43/4 (always passes; 10 stored)`.
-    pub fn outcome_text(self, lang: crate::words::Lang, z: &str, stored: &str, passed: bool) -> String {
+    pub fn outcome_text(self, lang: Lang, z: &str, stored: &str, passed: bool) -> String {
         match (self, passed) {
             (DepthTest::Always | DepthTest::Never, _) => {
                 words!(lang, "test-uncompared", z = z, test = self.symbol(), stored = stored)
@@ -172,7 +173,7 @@ impl DepthTest {
 
     /// The test's name in the reader's language (the scene file's keyword
     /// is [`DepthTest::name`]).
-    pub fn local_name(self, lang: crate::words::Lang) -> String {
+    pub fn local_name(self, lang: Lang) -> String {
         crate::words::text(lang, &format!("depth-test-{}", self.name()), &[])
     }
 
@@ -739,14 +740,8 @@ mod tests {
             assert!(DepthTest::Always.passes(&z, &stored));
             assert!(!DepthTest::Never.passes(&z, &stored));
         }
-        assert_eq!(
-            DepthTest::Always.outcome_text(crate::words::Lang::En, "43/4", "10", true),
-            "43/4 (always passes; 10 stored)"
-        );
-        assert_eq!(
-            DepthTest::Greater.outcome_text(crate::words::Lang::En, "43/4", "11", false),
-            "43/4 is not > 11 stored"
-        );
-        assert_eq!(DepthTest::Never.rule_text(crate::words::Lang::En), "no fragment passes");
+        assert_eq!(DepthTest::Always.outcome_text(Lang::En, "43/4", "10", true), "43/4 (always passes; 10 stored)");
+        assert_eq!(DepthTest::Greater.outcome_text(Lang::En, "43/4", "11", false), "43/4 is not > 11 stored");
+        assert_eq!(DepthTest::Never.rule_text(Lang::En), "no fragment passes");
     }
 }

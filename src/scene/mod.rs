@@ -22,6 +22,7 @@ pub mod perspective;
 pub mod random;
 pub mod text;
 
+use crate::words::Lang;
 use std::borrow::Cow;
 use std::fmt;
 use std::path::Path;
@@ -341,13 +342,13 @@ impl Scene {
     }
 
     /// Reads and validates a scene file.
-    pub fn load(lang: crate::words::Lang, path: &Path) -> Result<Scene, Error> {
+    pub fn load(lang: Lang, path: &Path) -> Result<Scene, Error> {
         let text = crate::scene::text::read_text(lang, path)?;
         Scene::from_json(lang, &text, path)
     }
 
     /// Validates scene JSON; `path` is used in error messages only.
-    pub fn from_json(lang: crate::words::Lang, text: &str, path: &Path) -> Result<Scene, Error> {
+    pub fn from_json(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
         crate::scene::file::read(lang, text, path)
     }
 
@@ -386,8 +387,7 @@ mod tests {
     use super::*;
 
     fn parse(text: &str) -> Result<Scene, String> {
-        Scene::from_json(crate::words::Lang::En, text, Path::new("s.json"))
-            .map_err(|e| e.message(crate::words::Lang::En))
+        Scene::from_json(Lang::En, text, Path::new("s.json")).map_err(|e| e.message(Lang::En))
     }
 
     #[test]
@@ -468,11 +468,8 @@ mod tests {
         let scene = parse(text).unwrap();
         assert_eq!(scene.polygons[0].name, crate::words::default_name(0));
         let labels = |lang| [0, 1].map(|i| crate::observe::explain::polygon_name(lang, &scene, i));
-        assert_eq!(labels(crate::words::Lang::En), ["polygon 1".to_string(), "polygon 2 \"roof\"".to_string()]);
-        assert_eq!(
-            labels(crate::words::Lang::Ru),
-            ["многоугольник 1".to_string(), "многоугольник 2 «roof»".to_string()]
-        );
+        assert_eq!(labels(Lang::En), ["polygon 1".to_string(), "polygon 2 \"roof\"".to_string()]);
+        assert_eq!(labels(Lang::Ru), ["многоугольник 1".to_string(), "многоугольник 2 «roof»".to_string()]);
         assert_eq!((scene.find_polygon("polygon 1").unwrap(), scene.find_polygon("roof").unwrap()), (0, 1));
     }
 

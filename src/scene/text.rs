@@ -2,6 +2,7 @@
 //! Windows Notepad writes it, is skipped), and showing text that came from a
 //! file without letting it steer the terminal.
 
+use crate::words::Lang;
 use std::borrow::Cow;
 use std::io::Read;
 use std::path::Path;
@@ -26,12 +27,12 @@ pub enum Links {
 /// Reads a whole input file as UTF-8, skipping a leading byte-order mark;
 /// `-` reads standard input, as Unix tools do. Every file zsim reads (scenes,
 /// answers, course files) comes through here or [`read_bytes`].
-pub fn read_text(lang: crate::words::Lang, path: &Path) -> Result<String, Error> {
+pub fn read_text(lang: Lang, path: &Path) -> Result<String, Error> {
     read_text_with(lang, path, Links::Follow)
 }
 
 /// [`read_text`], refusing a symbolic link when `links` says so.
-pub fn read_text_with(lang: crate::words::Lang, path: &Path, links: Links) -> Result<String, Error> {
+pub fn read_text_with(lang: Lang, path: &Path, links: Links) -> Result<String, Error> {
     let bytes = read_bytes(path, links)?;
     let mut text = String::from_utf8(bytes).map_err(|_| Error::Read {
         path: path.to_owned(),

@@ -19,6 +19,7 @@ use crate::rules::{ColumnRule, Compare, DepthStore};
 use crate::scene::Scene;
 use crate::simulate::events::{Observer, Outcome, PixelEvent};
 use crate::simulate::simulation::Simulation;
+use crate::words::Lang;
 
 /// A wrong rule students are known to follow.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -81,7 +82,7 @@ impl Misconception {
     }
 
     /// What the student did, in the reader's language.
-    pub fn words(self, lang: crate::words::Lang) -> String {
+    pub fn words(self, lang: Lang) -> String {
         words!(lang, &format!("misconception-{}", self.name()))
     }
 }
@@ -99,7 +100,7 @@ pub struct Diagnosis {
 
 impl Diagnosis {
     /// One sentence: the rule and how many wrong cells it explains.
-    pub fn words(&self, lang: crate::words::Lang) -> String {
+    pub fn words(&self, lang: Lang) -> String {
         words!(lang, "diagnosis", what = self.misconception.words(lang), explained = self.explained, wrong = self.wrong)
     }
 }

@@ -5,6 +5,7 @@
 //! the generator keeps drawing candidates until the trace shows every case
 //! asked for.
 
+use crate::words::Lang;
 use std::collections::BTreeSet;
 use std::fmt;
 
@@ -93,7 +94,7 @@ pub struct Found {
 
 /// The cases the run of `scene` meets, each at the first place it meets it,
 /// in [`HardCase::ALL`] order.
-pub fn find_cases(lang: crate::words::Lang, scene: &Scene) -> Vec<Found> {
+pub fn find_cases(lang: Lang, scene: &Scene) -> Vec<Found> {
     let mut finder = CaseFinder::new(lang, scene);
     Simulation::new(scene).finish(&mut finder);
     let mut found = finder.found;
@@ -103,7 +104,7 @@ pub fn find_cases(lang: crate::words::Lang, scene: &Scene) -> Vec<Found> {
 
 /// Watches a run for the hard cases.
 struct CaseFinder {
-    lang: crate::words::Lang,
+    lang: Lang,
     width: u32,
     depth_max: u32,
     quantized: bool,
@@ -116,7 +117,7 @@ struct CaseFinder {
 }
 
 impl CaseFinder {
-    fn new(lang: crate::words::Lang, scene: &Scene) -> CaseFinder {
+    fn new(lang: Lang, scene: &Scene) -> CaseFinder {
         CaseFinder {
             lang,
             width: scene.width,
@@ -313,7 +314,7 @@ pub struct Exercise {
 
 /// Makes an exercise: candidates drawn from the seed's sequence, the first
 /// whose trace shows every asked case kept.
-pub fn make(lang: crate::words::Lang, spec: &Spec) -> Result<Exercise, Usage> {
+pub fn make(lang: Lang, spec: &Spec) -> Result<Exercise, Usage> {
     if spec.width < 4 || spec.height < 4 || spec.width > 64 || spec.height > 64 {
         return Err(Usage::ExerciseSize { width: spec.width, height: spec.height });
     }
@@ -451,19 +452,17 @@ mod tests {
         assert!(
             HardCase::parse_list("tricky")
                 .unwrap_err()
-                .message(crate::words::Lang::En)
+                .message(Lang::En)
                 .starts_with("--hard: \"tricky\" is not a hard case: vertex-on-scanline")
         );
     }
 
     #[test]
     fn the_books_example_has_its_known_cases() {
-        let scene = Scene::load(
-            crate::words::Lang::En,
-            std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")),
-        )
-        .unwrap();
-        let cases: Vec<HardCase> = find_cases(crate::words::Lang::En, &scene).into_iter().map(|f| f.case).collect();
+        let scene =
+            Scene::load(Lang::En, std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")))
+                .unwrap();
+        let cases: Vec<HardCase> = find_cases(Lang::En, &scene).into_iter().map(|f| f.case).collect();
         // The triangle pierces the rectangle: hidden and intersecting; its depths step by
         // 3/4 and reach k + 1/2 (pixel (22, 14): z = 19/2).
         assert!(cases.contains(&HardCase::Hidden) && cases.contains(&HardCase::Intersecting), "{cases:?}");

@@ -12,9 +12,10 @@ use crate::observe::explain::pixel_reason;
 use crate::observe::report::MatrixCell;
 use crate::simulate::events::Outcome;
 use crate::teach::step::{Moved, Stepper};
+use crate::words::Lang;
 
 /// The page for the whole scene: every scanline that covers a pixel, in order.
-pub fn page(lang: crate::words::Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
+pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
     let scene = stepper.scene();
     let mut stops = Vec::new();
     let mut moved = stepper.start(None);
@@ -84,7 +85,7 @@ fn embedded_json(json: &str) -> String {
 }
 
 /// A part of the template with its title and words filled in, escaped.
-fn fill(lang: crate::words::Lang, part: &str, title: &str) -> String {
+fn fill(lang: Lang, part: &str, title: &str) -> String {
     let mut part = part.to_string();
     for (marker, key) in [
         ("{{LANG}}", None),

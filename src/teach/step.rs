@@ -13,6 +13,7 @@ use crate::observe::trace::ScanlineRecord;
 use crate::scene::Scene;
 use crate::scene::text::printable;
 use crate::simulate::events::{Outcome, PixelEvent};
+use crate::words::Lang;
 use crate::words::token;
 
 /// Why a move did not go anywhere.
@@ -38,7 +39,7 @@ pub enum Refusal {
 
 impl Refusal {
     /// The refusal in one line of the reader's language.
-    pub fn text(&self, lang: crate::words::Lang, scene: &Scene) -> String {
+    pub fn text(&self, lang: Lang, scene: &Scene) -> String {
         match *self {
             Refusal::First => words!(lang, "step-first"),
             Refusal::NoEarlierPolygon => words!(lang, "tui-no-earlier"),
@@ -187,7 +188,7 @@ impl<'s> Stepper<'s> {
 
     /// What a stop shows beside the buffers, worded: the polygon, the
     /// scanline, its crossings and spans.
-    pub fn stop_words(&mut self, lang: crate::words::Lang, stop: Stop) -> StopWords {
+    pub fn stop_words(&mut self, lang: Lang, stop: Stop) -> StopWords {
         let scene = self.scene();
         let record = self.tracer.record(stop);
         let crossings: Vec<String> = record.crossings.iter().map(|x| exact_and_decimal(lang, x)).collect();
@@ -243,7 +244,7 @@ pub struct StopWords {
 }
 
 /// A [`Skip`] in one line of the reader's language.
-pub fn skip_text(lang: crate::words::Lang, scene: &Scene, skip: &Skip) -> String {
+pub fn skip_text(lang: Lang, scene: &Scene, skip: &Skip) -> String {
     crate::observe::step::skip_text(lang, scene, skip)
 }
 
@@ -303,7 +304,7 @@ pub enum Meant {
 
 impl Meant {
     /// What the answer meant, in words.
-    pub fn text(self, lang: crate::words::Lang) -> String {
+    pub fn text(self, lang: Lang) -> String {
         match self {
             Meant::NotWritten => words!(lang, "meant-not-written"),
             Meant::ValueWritten => words!(lang, "meant-value-written"),
@@ -408,7 +409,7 @@ impl Quiz {
 
     /// Judges `typed` as the answer to the current question, scores it and
     /// moves to the next question; `None` when nothing is asked.
-    pub fn answer(&mut self, lang: crate::words::Lang, stepper: &mut Stepper<'_>, typed: &str) -> Option<Reply> {
+    pub fn answer(&mut self, lang: Lang, stepper: &mut Stepper<'_>, typed: &str) -> Option<Reply> {
         let question = self.question(stepper)?;
         let scene = stepper.scene();
         let typed = typed.trim();
@@ -445,7 +446,7 @@ impl Quiz {
     }
 
     /// The score, and each mistake with what was right and why.
-    pub fn summary(&self, lang: crate::words::Lang) -> String {
+    pub fn summary(&self, lang: Lang) -> String {
         let score = words!(lang, "quiz-score", right = self.right.to_string(), asked = self.asked.to_string());
         let mut text = format!("{score}\n");
         if !self.mistakes.is_empty() {
@@ -459,7 +460,7 @@ impl Quiz {
 }
 
 /// A wrong answer as the summary lists it.
-fn mistake_text(lang: crate::words::Lang, scene: &Scene, verdict: &Verdict) -> String {
+fn mistake_text(lang: Lang, scene: &Scene, verdict: &Verdict) -> String {
     match &verdict.question {
         Question::Coverage { stop, row } => words!(
             lang,
@@ -488,7 +489,7 @@ type Judged = (bool, Option<Meant>, String, String);
 
 /// Judges a coverage answer (`16-27`, `3-5 9-12`, `4` or `-`); `Err` with
 /// the reason to ask again when it is not columns.
-pub fn judge_coverage(lang: crate::words::Lang, record: &ScanlineRecord, typed: &str) -> Result<Judged, String> {
+pub fn judge_coverage(lang: Lang, record: &ScanlineRecord, typed: &str) -> Result<Judged, String> {
     let Some(columns) = parse_columns(typed) else { return Err(words!(lang, "quiz-coverage-hint")) };
     let covered: Vec<u32> = record.pixels.iter().map(|e| e.x).collect();
     let spans: Vec<String> = record
@@ -506,7 +507,7 @@ pub fn judge_coverage(lang: crate::words::Lang, record: &ScanlineRecord, typed: 
 /// when it is the value the z-buffer holds after the pixel (for a pixel not
 /// written, `-` or the value it keeps); `Err` with the reason to ask again
 /// for text that is neither, or a number no cell can hold.
-pub fn judge_depth(lang: crate::words::Lang, scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Judged, String> {
+pub fn judge_depth(lang: Lang, scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Judged, String> {
     let written = pixel.outcome == Outcome::Written;
     let expected = if written {
         pixel.stored_after.text(lang)
@@ -536,7 +537,7 @@ pub fn judge_depth(lang: crate::words::Lang, scene: &Scene, pixel: &PixelEvent, 
 /// value, right when it is the value the framebuffer holds after the pixel;
 /// `Err` with the reason to ask again for text that is neither, or a value
 /// no cell can hold.
-pub fn judge_frame(lang: crate::words::Lang, scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Judged, String> {
+pub fn judge_frame(lang: Lang, scene: &Scene, pixel: &PixelEvent, typed: &str) -> Result<Judged, String> {
     let written = pixel.outcome == Outcome::Written;
     let expected = if written {
         pixel.frame_after.to_string()
@@ -566,7 +567,7 @@ pub fn judge_frame(lang: crate::words::Lang, scene: &Scene, pixel: &PixelEvent, 
 
 /// Why `typed` is a number no cell of `scene`'s z-buffer can hold (a
 /// quantized z-buffer holds whole levels 0 … max); `None` for any other text.
-fn does_not_fit(lang: crate::words::Lang, scene: &Scene, typed: &str) -> Option<String> {
+fn does_not_fit(lang: Lang, scene: &Scene, typed: &str) -> Option<String> {
     if scene.rules.store != crate::rules::DepthStore::Quantized {
         return None;
     }
@@ -620,11 +621,8 @@ mod tests {
     use super::*;
 
     fn book() -> Scene {
-        Scene::load(
-            crate::words::Lang::En,
-            std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")),
-        )
-        .unwrap()
+        Scene::load(Lang::En, std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")))
+            .unwrap()
     }
 
     /// The coverage question comes first in a coverage quiz, then one depth
@@ -639,9 +637,7 @@ mod tests {
         let mut quiz = Quiz::new(QuizMode::Coverage);
         assert!(matches!(quiz.question(&mut stepper), Some(Question::Coverage { row: 15, .. })));
         let covered = columns_text(&stepper.record().unwrap().pixels.iter().map(|p| p.x).collect::<Vec<_>>());
-        let Some(Reply::Judged(verdict)) = quiz.answer(crate::words::Lang::En, &mut stepper, &covered) else {
-            panic!("not judged")
-        };
+        let Some(Reply::Judged(verdict)) = quiz.answer(Lang::En, &mut stepper, &covered) else { panic!("not judged") };
         assert!(verdict.right, "{verdict:?}");
         assert_eq!((quiz.right, quiz.asked), (1, 1));
         assert!(matches!(quiz.question(&mut stepper), Some(Question::Depth { index: 0, .. })));
@@ -653,9 +649,9 @@ mod tests {
         let mut stepper = Stepper::new(&scene, Arith::Exact);
         stepper.start(None);
         let mut quiz = Quiz::new(QuizMode::Depth);
-        assert!(matches!(quiz.answer(crate::words::Lang::En, &mut stepper, "zz"), Some(Reply::AskAgain(_))));
+        assert!(matches!(quiz.answer(Lang::En, &mut stepper, "zz"), Some(Reply::AskAgain(_))));
         assert!(
-            matches!(quiz.answer(crate::words::Lang::En, &mut stepper, "16"), Some(Reply::AskAgain(_))),
+            matches!(quiz.answer(Lang::En, &mut stepper, "16"), Some(Reply::AskAgain(_))),
             "a 4-bit z-buffer holds 0 … 15"
         );
         assert_eq!(quiz.asked, 0);
@@ -669,10 +665,10 @@ mod tests {
         stepper.start(None);
         let quiz = Quiz::new(QuizMode::Depth);
         let Some(Question::Depth { pixel, .. }) = quiz.question(&mut stepper) else { panic!("no depth question") };
-        let value = pixel.stored_after.text(crate::words::Lang::En);
+        let value = pixel.stored_after.text(Lang::En);
         let twice = format!("{}/2", 2 * value.parse::<i64>().unwrap());
         for typed in [value.clone(), format!("{value}.0"), twice] {
-            let (right, ..) = judge_depth(crate::words::Lang::En, &scene, &pixel, &typed).unwrap();
+            let (right, ..) = judge_depth(Lang::En, &scene, &pixel, &typed).unwrap();
             assert!(right, "{typed}");
         }
     }
@@ -688,12 +684,10 @@ mod tests {
             panic!("no framebuffer question")
         };
         assert!(
-            matches!(quiz.answer(crate::words::Lang::En, &mut stepper, "4"), Some(Reply::AskAgain(_))),
+            matches!(quiz.answer(Lang::En, &mut stepper, "4"), Some(Reply::AskAgain(_))),
             "a 2-bit framebuffer holds 0 … 3"
         );
-        let Some(Reply::Judged(verdict)) =
-            quiz.answer(crate::words::Lang::En, &mut stepper, &pixel.frame_after.to_string())
-        else {
+        let Some(Reply::Judged(verdict)) = quiz.answer(Lang::En, &mut stepper, &pixel.frame_after.to_string()) else {
             panic!("not judged")
         };
         assert!(verdict.right);

@@ -42,29 +42,39 @@ pub fn json_reason(lang: crate::words::Lang, message: &str) -> String {
 }
 
 /// A fact a serde visitor reports (`number-found-object`, or a number that
-/// does not read with the text it quotes), in a form no JSON message takes:
-/// [`json_reason`] words it in the reader's language where the error is
-/// turned into zsim's, as serde's own messages are.
-pub fn fact(key: &str, text: &str) -> String {
-    format!("{FACT}{key}{FACT}{text}")
+/// does not read, with the text it quotes), as a message key and its
+/// arguments in a form no JSON message takes: [`json_reason`] words it in
+/// the reader's language where the error is turned into zsim's, as serde's
+/// own messages are.
+pub fn fact(key: &str, args: &[(&str, &str)]) -> String {
+    let mut out = format!("{FACT}{key}");
+    for (name, value) in args {
+        out.push_str(&format!("{FACT}{name}{NAME_END}{value}"));
+    }
+    out
 }
 
 const FACT: char = '\u{1f}';
+const NAME_END: char = '\u{1e}';
 
-/// The message of a [`fact`]: keys that quote a text get it cut short.
-fn fact_body(lang: crate::words::Lang, key: &str, text: &str) -> String {
-    let text = crate::words::token(lang, text);
-    match key {
-        "number-too-long" => words!(lang, key, text = text, max = crate::numbers::MAX_BIG_DIGITS.to_string()),
-        _ => words!(lang, key, text = text),
-    }
+/// The message of a [`fact`]; a `text` argument (a token from the file) is
+/// cut short as every message quotes one.
+fn fact_body(lang: crate::words::Lang, fact: &str) -> String {
+    let mut parts = fact.split(FACT);
+    let key = parts.next().unwrap_or_default();
+    let args: Vec<(&str, crate::words::Arg)> = parts
+        .filter_map(|part| part.split_once(NAME_END))
+        .map(|(name, value)| match name {
+            "text" => (name, crate::words::token(lang, value).into()),
+            _ => (name, value.into()),
+        })
+        .collect();
+    crate::words::text(lang, key, &args)
 }
 
 fn json_body(lang: crate::words::Lang, body: &str) -> String {
-    if let Some(fact) = body.strip_prefix(FACT)
-        && let Some((key, text)) = fact.split_once(FACT)
-    {
-        return fact_body(lang, key, text);
+    if let Some(fact) = body.strip_prefix(FACT) {
+        return fact_body(lang, fact);
     }
     if let Some(rest) = body.strip_prefix("invalid type: ")
         && let Some((found, expected)) = rest.split_once(", expected ")
@@ -166,17 +176,17 @@ mod tests {
     fn json_messages_are_rendered_in_each_language_with_their_tokens_kept() {
         let message = "invalid type: integer `3`, expected a sequence at line 1 column 14";
         assert_eq!(
-            (json_reason(Lang::En, message)),
+            json_reason(Lang::En, message),
             "invalid type: found the integer `3` where a list was expected (line 1, column 14)"
         );
         assert_eq!(
-            (json_reason(Lang::Ru, message)),
+            json_reason(Lang::Ru, message),
             "неверный тип: найдено целое число `3`, а ожидался список (строка 1, позиция 14)"
         );
-        let unknown = (json_reason(Lang::Uk, "unknown field `colour`, expected one of `name`, `value`"));
+        let unknown = json_reason(Lang::Uk, "unknown field `colour`, expected one of `name`, `value`");
         assert_eq!(unknown, "невідоме поле `colour`; можливі поля: `name`, `value`");
         // A shape not known here passes unchanged rather than being guessed at.
-        assert_eq!((json_reason(Lang::Zh, "something new")), "something new");
+        assert_eq!(json_reason(Lang::Zh, "something new"), "something new");
     }
 
     #[test]

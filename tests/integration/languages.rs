@@ -208,9 +208,16 @@ fn every_message_gets_every_variable_it_uses_in_every_language() {
     let mut calls = 0;
     for file in files {
         let text = std::fs::read_to_string(&file).unwrap();
-        for (start, _) in text.match_indices("words!(\"") {
-            // The call's text up to its closing parenthesis.
-            let body = &text[start + "words!(lang, ".len()..];
+        for (start, _) in text.match_indices("words!(") {
+            // The call's text after its language, up to its closing parenthesis.
+            let after = text[start + "words!(".len()..].trim_start();
+            let Some(after) = after.strip_prefix("lang").map(str::trim_start).and_then(|a| a.strip_prefix(',')) else {
+                continue;
+            };
+            let body = after.trim_start();
+            if !body.starts_with('"') {
+                continue;
+            }
             let mut depth = 1;
             let end = body
                 .char_indices()

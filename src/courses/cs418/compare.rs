@@ -2,6 +2,7 @@
 //! per sample the primitive that wrote it last, each triangle's spans, the
 //! shapes as drawn; and the samples where two arithmetics disagree, with why.
 
+use crate::words::Lang;
 use std::collections::BTreeMap;
 
 use super::{Arithmetic, Image};
@@ -17,13 +18,13 @@ pub struct Primitive {
 
 impl Primitive {
     /// The message in `lang`, one line.
-    pub fn message(&self, lang: crate::words::Lang) -> String {
+    pub fn message(&self, lang: Lang) -> String {
         let mut text = String::new();
         self.write_in(lang, &mut text).expect("writing to a String cannot fail");
         text
     }
 
-    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
+    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         let list: Vec<String> = self.vertices.iter().map(ToString::to_string).collect();
         let (vertices, line) = (list.join(", "), self.line.to_string());
         f.write_str(&if self.vertices.len() == 1 {

@@ -41,6 +41,8 @@
 //!   is bound is a sprite: (s, t) runs from (0, 0) at its top-left corner to
 //!   (1, 1) at its bottom-right.
 
+use crate::words::Lang;
+
 mod clip;
 mod compare;
 mod image;
@@ -63,13 +65,13 @@ pub struct CaseError {
 
 impl CaseError {
     /// The message in `lang`, one line.
-    pub fn message(&self, lang: crate::words::Lang) -> String {
+    pub fn message(&self, lang: Lang) -> String {
         let mut text = String::new();
         self.write_in(lang, &mut text).expect("writing to a String cannot fail");
         text
     }
 
-    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
+    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self.line {
             Some(line) => {
                 f.write_str(&words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str()))
@@ -198,7 +200,7 @@ impl Case {
     /// Reads a CS 418 file. `load_texture` reads a texture the case names
     /// (the caller knows where the case's folder is), or says why it cannot.
     pub fn parse(
-        lang: crate::words::Lang,
+        lang: Lang,
         text: &str,
         load_texture: &dyn Fn(&str) -> Result<Image, String>,
     ) -> Result<Case, CaseError> {
@@ -352,7 +354,7 @@ impl Case {
     }
 }
 
-fn png_line(lang: crate::words::Lang, line: usize, args: &[&str]) -> Result<Case, CaseError> {
+fn png_line(lang: Lang, line: usize, args: &[&str]) -> Result<Case, CaseError> {
     let [width, height, file] = args else {
         return Err(error(line, words!(lang, "cs418-png-words", found = args.len().to_string())));
     };
@@ -384,7 +386,7 @@ fn png_line(lang: crate::words::Lang, line: usize, args: &[&str]) -> Result<Case
     })
 }
 
-fn list(lang: crate::words::Lang, values: &[usize]) -> String {
+fn list(lang: Lang, values: &[usize]) -> String {
     let words: Vec<String> = values.iter().map(ToString::to_string).collect();
     match words.split_last() {
         Some((last, rest)) if !rest.is_empty() => words!(lang, "list-or", rest = rest.join(", "), last = last.as_str()),
@@ -392,7 +394,7 @@ fn list(lang: crate::words::Lang, values: &[usize]) -> String {
     }
 }
 
-fn number(lang: crate::words::Lang, line: usize, keyword: &str, word: &str) -> Result<Number, CaseError> {
+fn number(lang: Lang, line: usize, keyword: &str, word: &str) -> Result<Number, CaseError> {
     let finite = word.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.' | b'e' | b'E'));
     match (word.parse::<f64>(), crate::numbers::parse_number(word)) {
         (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(Number { value, exact }),
@@ -417,12 +419,7 @@ fn number(lang: crate::words::Lang, line: usize, keyword: &str, word: &str) -> R
     }
 }
 
-fn integers<const N: usize>(
-    lang: crate::words::Lang,
-    line: usize,
-    keyword: &str,
-    args: &[&str],
-) -> Result<[usize; N], CaseError> {
+fn integers<const N: usize>(lang: Lang, line: usize, keyword: &str, args: &[&str]) -> Result<[usize; N], CaseError> {
     if args.len() != N {
         return Err(error(
             line,
@@ -452,12 +449,7 @@ fn integers<const N: usize>(
     Ok(out)
 }
 
-fn sized(
-    lang: crate::words::Lang,
-    line: usize,
-    keyword: &str,
-    args: &[&str],
-) -> Result<(usize, Vec<Number>), CaseError> {
+fn sized(lang: Lang, line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<Number>), CaseError> {
     let Some((size, rest)) = args.split_first() else {
         return Err(error(line, words!(lang, "cs418-sized", keyword = crate::words::token(lang, keyword))));
     };
@@ -498,7 +490,7 @@ mod tests {
     use super::*;
 
     fn parse(text: &str) -> Result<Case, CaseError> {
-        Case::parse(crate::words::Lang::En, text, &|_| Err("no such file beside the case".into()))
+        Case::parse(Lang::En, text, &|_| Err("no such file beside the case".into()))
     }
 
     #[test]
@@ -512,7 +504,7 @@ mod tests {
 
     #[test]
     fn bad_lines_name_the_line_and_the_problem() {
-        let message = |text: &str| parse(text).unwrap_err().message(crate::words::Lang::En);
+        let message = |text: &str| parse(text).unwrap_err().message(Lang::En);
         assert_eq!(message("png 2 2 a.png\nfrobnicate 3"), "line 2: unknown command \"frobnicate\"");
         assert_eq!(
             message("png 2 2 a.png\nposition 3 1 2 3 4"),

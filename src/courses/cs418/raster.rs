@@ -1,6 +1,7 @@
 //! The course's pipeline, written once over a number type ([`Scalar`]) and
 //! run in `f64` (the course's arithmetic) or in exact rationals.
 
+use crate::words::Lang;
 use std::collections::BTreeMap;
 
 use num_rational::BigRational;
@@ -60,7 +61,7 @@ enum Attributes<S> {
 }
 
 /// Runs a case in an arithmetic.
-pub fn render(lang: crate::words::Lang, case: &Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
+pub fn render(lang: Lang, case: &Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
     match arithmetic {
         Arithmetic::DdaF64 => Pipeline::<f64>::run(lang, case, arithmetic),
         Arithmetic::Exact => Pipeline::<BigRational>::run(lang, case, arithmetic),
@@ -70,7 +71,7 @@ pub fn render(lang: crate::words::Lang, case: &Case, arithmetic: Arithmetic) -> 
 /// What a case draws, after clipping and culling, in exact arithmetic,
 /// without sampling it: its primitives and their shapes (for `zsim cs418
 /// import`, which leaves the sampling to zsim's rasterizer).
-pub fn shapes(lang: crate::words::Lang, case: &Case) -> Result<(Vec<Primitive>, Vec<Shape>), CaseError> {
+pub fn shapes(lang: Lang, case: &Case) -> Result<(Vec<Primitive>, Vec<Shape>), CaseError> {
     let pipeline = Pipeline::<BigRational>::new(case, false).draw(lang)?;
     Ok((pipeline.primitives, pipeline.shapes))
 }
@@ -102,7 +103,7 @@ struct Pipeline<'a, S> {
 }
 
 impl<'a, S: Scalar> Pipeline<'a, S> {
-    fn run(lang: crate::words::Lang, case: &'a Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
+    fn run(lang: Lang, case: &'a Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
         let pipeline = Pipeline::<S>::new(case, true).draw(lang)?;
         Ok(Comparison {
             image: pipeline.resolve(),
@@ -144,14 +145,14 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     }
 
     /// Runs the case's commands.
-    fn draw(mut self, lang: crate::words::Lang) -> Result<Self, CaseError> {
+    fn draw(mut self, lang: Lang) -> Result<Self, CaseError> {
         for (line, command) in &self.case.commands {
             self.command(lang, *line, command)?;
         }
         Ok(self)
     }
 
-    fn command(&mut self, lang: crate::words::Lang, line: usize, command: &Command) -> Result<(), CaseError> {
+    fn command(&mut self, lang: Lang, line: usize, command: &Command) -> Result<(), CaseError> {
         match command {
             Command::Position { size, numbers } => {
                 self.positions = numbers
@@ -235,13 +236,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     /// Vertex `index` in clip space: its position times the matrix, its
     /// colour and its texture coordinates (needed only by a triangle drawn
     /// with a texture; (0, 0) otherwise).
-    fn vertex(
-        &self,
-        lang: crate::words::Lang,
-        line: usize,
-        index: usize,
-        textured: bool,
-    ) -> Result<Vertex<S>, CaseError> {
+    fn vertex(&self, lang: Lang, line: usize, index: usize, textured: bool) -> Result<Vertex<S>, CaseError> {
         let position = self.positions.get(index).ok_or_else(|| {
             error(
                 line,
@@ -290,7 +285,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         Ok(position.into_iter().chain(colour).chain(texcoord).collect())
     }
 
-    fn triangles(&mut self, lang: crate::words::Lang, line: usize, indices: &[usize]) -> Result<(), CaseError> {
+    fn triangles(&mut self, lang: Lang, line: usize, indices: &[usize]) -> Result<(), CaseError> {
         let textured = self.texture.is_some();
         for corners in indices.chunks_exact(3) {
             let vertices = [
@@ -332,7 +327,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     /// Refuses a triangle whose vertices land so far outside the image (or
     /// at no number at all) that walking its rows and columns would take
     /// ages: the DDA visits every integer between a vertex and the image.
-    fn within_reach(&self, lang: crate::words::Lang, line: usize, screen: &[Vertex<S>]) -> Result<(), CaseError> {
+    fn within_reach(&self, lang: Lang, line: usize, screen: &[Vertex<S>]) -> Result<(), CaseError> {
         let reach = REACH * (self.width.max(self.height) as f64);
         for v in screen {
             let (x, y) = (v[0].to_f64(), v[1].to_f64());
@@ -572,11 +567,10 @@ mod tests {
 
     #[test]
     fn numbers_keep_their_exact_value() {
-        let case =
-            super::super::Case::parse(crate::words::Lang::En, "png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| {
-                Err("no textures here".into())
-            })
-            .unwrap();
+        let case = super::super::Case::parse(Lang::En, "png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| {
+            Err("no textures here".into())
+        })
+        .unwrap();
         let super::super::Command::PointSize(numbers) = &case.commands[0].1 else { panic!("pointsize") };
         let exact: Vec<BigRational> = numbers.iter().map(BigRational::number).collect();
         let q = |n: i64, d: i64| BigRational::new(BigInt::from(n), BigInt::from(d));
@@ -608,8 +602,8 @@ mod tests {
     }
 
     fn textured(text: &str) -> Image {
-        let case = super::super::Case::parse(crate::words::Lang::En, text, &|_| Ok(two_by_two())).unwrap();
-        render(crate::words::Lang::En, &case, Arithmetic::DdaF64).unwrap().image
+        let case = super::super::Case::parse(Lang::En, text, &|_| Ok(two_by_two())).unwrap();
+        render(Lang::En, &case, Arithmetic::DdaF64).unwrap().image
     }
 
     /// The whole image as one quad whose (s, t) run from 0 to 2: each sample
@@ -646,8 +640,8 @@ mod tests {
                 s0 + 1,
                 s0 + 1
             );
-            let case = super::super::Case::parse(crate::words::Lang::En, &text, &|_| Ok(greys.clone())).unwrap();
-            let image = render(crate::words::Lang::En, &case, Arithmetic::DdaF64).unwrap().image;
+            let case = super::super::Case::parse(Lang::En, &text, &|_| Ok(greys.clone())).unwrap();
+            let image = render(Lang::En, &case, Arithmetic::DdaF64).unwrap().image;
             for x in 0..8u32 {
                 let k = ((x + shift) % 8) as u8 * 30;
                 assert_eq!(image.pixel(x, 0), [k, k, k, 255], "s from {s0}, pixel {x}");
@@ -688,15 +682,13 @@ mod tests {
     /// divided by 0: NaN alpha, drawn as transparent black), and agree.
     #[test]
     fn a_sample_at_infinity_gets_the_floats_colour_in_both_arithmetics() {
-        let case = super::super::Case::parse(crate::words::Lang::En,
+        let case = super::super::Case::parse(Lang::En,
             "png 4 4 o.png\nhyp\nposition 4 2 1.0 0 -2 0 -1.0 0 2 2 -0.5 0 -1\ncolor 3 1 0 0 0 1 0 0 0 1\ndrawArraysTriangles 0 3",
             &|_| Err("no textures here".into()),
         )
         .unwrap();
-        let (course, exact) = (
-            render(crate::words::Lang::En, &case, Arithmetic::DdaF64).unwrap(),
-            render(crate::words::Lang::En, &case, Arithmetic::Exact).unwrap(),
-        );
+        let (course, exact) =
+            (render(Lang::En, &case, Arithmetic::DdaF64).unwrap(), render(Lang::En, &case, Arithmetic::Exact).unwrap());
         assert_eq!(course.image, exact.image);
         let at_infinity: Vec<(u32, u32)> = (0..4)
             .flat_map(|y| (0..4).map(move |x| (x, y)))
@@ -708,13 +700,12 @@ mod tests {
     #[test]
     fn a_textured_triangle_needs_texture_coordinates() {
         let case = super::super::Case::parse(
-            crate::words::Lang::En,
+            Lang::En,
             "png 2 2 a.png\ntexture t.png\nposition 2 -1 -1 1 -1 -1 1\ntexcoord 2 0 0 1 0\ndrawArraysTriangles 0 3",
             &|_| Ok(two_by_two()),
         )
         .unwrap();
-        let problem =
-            render(crate::words::Lang::En, &case, Arithmetic::DdaF64).unwrap_err().message(crate::words::Lang::En);
+        let problem = render(Lang::En, &case, Arithmetic::DdaF64).unwrap_err().message(Lang::En);
         assert_eq!(problem, "line 5: vertex 2 is drawn with a texture, but \"texcoord\" has 2 vertices");
     }
 }

@@ -16,6 +16,7 @@
 //! at all (culled, edge-on, degenerate) is decided exactly, so the modes
 //! differ only in the arithmetic of the raster.
 
+use crate::words::Lang;
 use std::fmt;
 
 use num_bigint::BigInt;
@@ -71,7 +72,7 @@ impl Arith {
     ];
 
     /// Reads `exact`, `f64`, `f64-incremental`, `f32-incremental`, `f32`, `f32-edge` or `fixed:K` (0 ≤ K ≤ 24).
-    pub fn parse(lang: crate::words::Lang, text: &str) -> Result<Arith, String> {
+    pub fn parse(lang: Lang, text: &str) -> Result<Arith, String> {
         match text {
             "exact" => Ok(Arith::Exact),
             "f64" => Ok(Arith::F64),
@@ -274,11 +275,11 @@ mod tests {
     #[test]
     fn modes_parse_and_print_alike() {
         for mode in Arith::ALL {
-            assert_eq!(Arith::parse(crate::words::Lang::En, &mode.to_string()), Ok(mode));
+            assert_eq!(Arith::parse(Lang::En, &mode.to_string()), Ok(mode));
         }
-        assert_eq!(Arith::parse(crate::words::Lang::En, "fixed:4"), Ok(Arith::Fixed(4)));
-        assert!(Arith::parse(crate::words::Lang::En, "fixed:25").is_err());
-        assert!(Arith::parse(crate::words::Lang::En, "f16").is_err());
+        assert_eq!(Arith::parse(Lang::En, "fixed:4"), Ok(Arith::Fixed(4)));
+        assert!(Arith::parse(Lang::En, "fixed:25").is_err());
+        assert!(Arith::parse(Lang::En, "f16").is_err());
     }
 
     /// Cells (x, y) where two runs' framebuffers differ.
@@ -296,11 +297,9 @@ mod tests {
 
     #[test]
     fn modes_on_the_books_example() {
-        let scene = Scene::load(
-            crate::words::Lang::En,
-            std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")),
-        )
-        .unwrap();
+        let scene =
+            Scene::load(Lang::En, std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")))
+                .unwrap();
         let (exact, _) = run(&scene, Arith::Exact).unwrap();
         for mode in [Arith::F64, Arith::F64Incremental, Arith::F32, Arith::F32Edge, Arith::Fixed(8)] {
             let (buffers, _) = run(&scene, mode).unwrap();
@@ -337,7 +336,7 @@ mod tests {
     fn edge_functions_cover_what_exact_covers_on_convex_and_concave_scenes() {
         for example in ["rogers", "less", "concave"] {
             let path = format!("{}/examples/{example}.json", env!("CARGO_MANIFEST_DIR"));
-            let scene = Scene::load(crate::words::Lang::En, std::path::Path::new(&path)).unwrap();
+            let scene = Scene::load(Lang::En, std::path::Path::new(&path)).unwrap();
             let (exact, exact_stats) = run(&scene, Arith::Exact).unwrap();
             let (edge, edge_stats) = run(&scene, Arith::F32Edge).unwrap();
             assert_eq!(differing(&edge, &exact), vec![], "{example}");
@@ -348,7 +347,7 @@ mod tests {
     #[test]
     fn edge_function_ties_follow_the_books_rule() {
         // The square [1.5, 3.5] × [1.5, 3.5] has pixel centres on all four edges.
-        let scene = Scene::from_json(crate::words::Lang::En,
+        let scene = Scene::from_json(Lang::En,
             r#"{"width": 5, "height": 5, "polygons": [{"value": 1, "vertices": [[1.5, 1.5, 5], [3.5, 1.5, 5], [3.5, 3.5, 5], [1.5, 3.5, 5]]}]}"#,
             std::path::Path::new("square.json"),
         )

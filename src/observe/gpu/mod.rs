@@ -11,6 +11,8 @@
 //! precision snaps them). Each triangle's colour is its number, so what is
 //! read back is which triangle shows at each pixel, and its 24-bit depth.
 
+use crate::words::Lang;
+
 mod gl;
 #[cfg(feature = "vulkan")]
 mod vulkan;
@@ -39,13 +41,13 @@ pub enum GpuError {
 
 impl GpuError {
     /// The message in `lang`, one line.
-    pub fn message(&self, lang: crate::words::Lang) -> String {
+    pub fn message(&self, lang: Lang) -> String {
         let mut text = String::new();
         self.write_in(lang, &mut text).expect("writing to a String cannot fail");
         text
     }
 
-    fn write_in(&self, lang: crate::words::Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
+    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         f.write_str(&match self {
             GpuError::NoLibrary(reason) => words!(lang, "gpu-no-library", reason = reason.as_str()),
             GpuError::NoVulkan(reason) => words!(lang, "gpu-no-vulkan", reason = reason.as_str()),
@@ -178,11 +180,7 @@ pub fn triangles(scene: &crate::scene::Scene) -> Triangles {
 /// shows at every pixel with zsim under the scene's own rules and under the
 /// API's preset. Only the plain algorithm is compared (no per-pixel effects,
 /// no antialiasing).
-pub fn compare(
-    lang: crate::words::Lang,
-    scene: &crate::scene::Scene,
-    api: GpuApi,
-) -> Result<GpuComparison, crate::error::Error> {
+pub fn compare(lang: Lang, scene: &crate::scene::Scene, api: GpuApi) -> Result<GpuComparison, crate::error::Error> {
     use crate::error::Usage;
     use crate::rules::{Preset, Rules};
     if scene.has_pixel_effects() || scene.effects.antialias.is_some() {
@@ -317,7 +315,7 @@ fn convex(points: &[[f64; 3]]) -> bool {
 impl GpuComparison {
     /// The comparison in the reader's language, as `zsim run --compare-gpu`
     /// prints it.
-    pub fn text(&self, lang: crate::words::Lang, scene: &crate::scene::Scene, path: &str) -> String {
+    pub fn text(&self, lang: Lang, scene: &crate::scene::Scene, path: &str) -> String {
         let name = |i: Option<usize>| {
             i.map_or_else(|| words!(lang, "gpu-background"), |i| crate::observe::explain::polygon_name(lang, scene, i))
         };

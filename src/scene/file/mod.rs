@@ -7,6 +7,7 @@ mod strict;
 #[cfg(test)]
 mod tests;
 
+use crate::words::Lang;
 use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
@@ -26,7 +27,7 @@ use crate::scene::{Antialias, Effects, MAX_CELLS, MAX_SIDE, Polygon, Scene, Wind
 use numbers::{Coordinate, Number, ReadNumber};
 
 /// Reads and validates scene JSON; `path` is used in error messages only.
-pub(crate) fn read(lang: crate::words::Lang, text: &str, path: &Path) -> Result<Scene, Error> {
+pub(crate) fn read(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
     if let Some(found) = top_level_kind(text) {
         return Err(Error::SceneFormat {
             path: path.to_owned(),
@@ -43,7 +44,7 @@ pub(crate) fn read(lang: crate::words::Lang, text: &str, path: &Path) -> Result<
 }
 
 /// Reads and validates scene JSON of any shape, naming the first error.
-fn plain(lang: crate::words::Lang, text: &str, path: &Path) -> Result<Scene, Error> {
+fn plain(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
     // Read at full speed first: the settings, with each polygon's text only
     // found; then each polygon read from its text and made at once, on every
     // core. Only a file with a polygon that does not read is read again, in
@@ -110,7 +111,7 @@ fn top_level_kind(text: &str) -> Option<&'static str> {
 /// For "expected `,`", where the comma belongs: serde_json reports the
 /// token after the gap, often on the next line; the comma is missing after
 /// the last character before it.
-fn missing_comma(lang: crate::words::Lang, text: &str, error: &serde_json::Error) -> String {
+fn missing_comma(lang: Lang, text: &str, error: &serde_json::Error) -> String {
     if !error.to_string().starts_with("expected `,`") || error.line() == 0 {
         return String::new();
     }
@@ -133,7 +134,7 @@ fn missing_comma(lang: crate::words::Lang, text: &str, error: &serde_json::Error
 }
 
 /// serde_json's message, saying "not valid JSON" when the syntax is at fault.
-fn json_message(lang: crate::words::Lang, error: &serde_json::Error) -> String {
+fn json_message(lang: Lang, error: &serde_json::Error) -> String {
     match error.classify() {
         serde_json::error::Category::Syntax | serde_json::error::Category::Eof => {
             words!(lang, "json-invalid", error = crate::words::json_reason(lang, &error.to_string()))
@@ -144,7 +145,7 @@ fn json_message(lang: crate::words::Lang, error: &serde_json::Error) -> String {
 
 /// Turns serde's path `polygons[1].vertices[0][2]` into
 /// `polygon 2: vertices[0][2]`, so messages name polygons as the CLI does.
-fn describe_location(lang: crate::words::Lang, path: &str) -> String {
+fn describe_location(lang: Lang, path: &str) -> String {
     if path == "." {
         return String::new();
     }
@@ -204,7 +205,7 @@ struct RulesFile {
 }
 
 /// Reads `"rules"`: a preset name, or an object naming a preset and overrides.
-fn rules_from(lang: crate::words::Lang, value: Option<serde_json::Value>) -> Result<Rules, String> {
+fn rules_from(lang: Lang, value: Option<serde_json::Value>) -> Result<Rules, String> {
     let Some(value) = value else { return Ok(Rules::default()) };
     if value.is_string() {
         let preset: Preset =
@@ -354,7 +355,7 @@ impl<P: Send> SceneFile<P> {
     /// is the first setting's, else the first polygon's in the file.
     fn validate(
         self,
-        lang: crate::words::Lang,
+        lang: Lang,
         path: &Path,
         make: impl Fn(P, usize, &Frame) -> Result<Polygon, Unmade> + Sync,
     ) -> Result<Scene, Unmade> {
@@ -365,7 +366,7 @@ impl<P: Send> SceneFile<P> {
     /// Its settings validated: the scene they make, with no polygons yet
     /// ([`Scene::with_polygons`]), what its polygons are made in, and its
     /// polygons as read.
-    fn settings(self, lang: crate::words::Lang, path: &Path) -> Result<(Scene, Frame, Vec<P>), Unmade> {
+    fn settings(self, lang: Lang, path: &Path) -> Result<(Scene, Frame, Vec<P>), Unmade> {
         let setting = |key: &'static str, message: String| {
             Unmade::Invalid(Box::new(Error::Setting { path: path.to_owned(), key, message }))
         };
@@ -589,13 +590,7 @@ fn after_space(bytes: &[u8], at: usize) -> usize {
 
 /// The polygon whose text is `text`, made; [`Unmade::Unread`] when the text
 /// does not read as a polygon.
-fn from_text(
-    lang: crate::words::Lang,
-    text: &str,
-    index: usize,
-    frame: &Frame,
-    path: &Path,
-) -> Result<Polygon, Unmade> {
+fn from_text(lang: Lang, text: &str, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Unmade> {
     let polygon = match strict::polygon(text) {
         Some(polygon) => polygon,
         None => serde_json::from_str::<PolygonFile>(text).map_err(|_| Unmade::Unread)?,
@@ -615,7 +610,7 @@ struct Frame {
 }
 
 impl PolygonFile {
-    fn validate(self, lang: crate::words::Lang, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
+    fn validate(self, lang: Lang, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
         // Names reach terminals in every report: control characters are kept escaped (`\u{1b}`).
         let name = match self.name {
             None => crate::words::default_name(index),

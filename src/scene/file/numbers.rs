@@ -86,20 +86,20 @@ impl<'de, T: ReadNumber> serde::de::Visitor<'de> for NumberVisitor<T> {
         // large scene is nearly all numbers, and no string is built for either.
         match map.next_key_seed(IsNumberToken)? {
             Some(true) => map.next_value_seed(DigitsSeed(std::marker::PhantomData)),
-            _ => Err(A::Error::custom(crate::words::fact("number-found-object", ""))),
+            _ => Err(A::Error::custom(crate::words::fact("number-found-object", &[]))),
         }
     }
 
     fn visit_bool<E: serde::de::Error>(self, _: bool) -> Result<T, E> {
-        Err(E::custom(crate::words::fact("number-found-bool", "")))
+        Err(E::custom(crate::words::fact("number-found-bool", &[])))
     }
 
     fn visit_unit<E: serde::de::Error>(self) -> Result<T, E> {
-        Err(E::custom(crate::words::fact("number-found-null", "")))
+        Err(E::custom(crate::words::fact("number-found-null", &[])))
     }
 
     fn visit_seq<A: serde::de::SeqAccess<'de>>(self, _: A) -> Result<T, A::Error> {
-        Err(A::Error::custom(crate::words::fact("number-found-list", "")))
+        Err(A::Error::custom(crate::words::fact("number-found-list", &[])))
     }
 }
 

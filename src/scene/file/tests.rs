@@ -1,5 +1,6 @@
 //! The two fast readers held to serde's reading and to the plain way's.
 
+use crate::words::Lang;
 use std::path::Path;
 
 use proptest::prelude::*;
@@ -241,10 +242,10 @@ proptest! {
     #[test]
     fn pieces_read_the_scene_the_plain_way_reads((text, common) in scene_text(), piece_bytes in 1_usize..400) {
         let path = Path::new("scene.json");
-        let pieces = pieces::read_in(crate::words::Lang::En, &text, path, piece_bytes);
+        let pieces = pieces::read_in(Lang::En, &text, path, piece_bytes);
         prop_assert_eq!(pieces.is_some(), common, "{}", text);
         if let Some(scene) = pieces {
-            prop_assert_eq!(Some(scene), plain(crate::words::Lang::En, &text, path).ok());
+            prop_assert_eq!(Some(scene), plain(Lang::En, &text, path).ok());
         }
     }
 }
@@ -261,17 +262,13 @@ fn a_polygon_start_inside_a_name_is_passed_over() {
     );
     // The second piece cut just after the name's `x`, before its `, {`.
     let piece_bytes = text.find("x, {").unwrap() + 1 - (text.find("[{").unwrap() + 1);
-    let scene = pieces::read_in(crate::words::Lang::En, &text, Path::new("scene.json"), piece_bytes).unwrap();
+    let scene = pieces::read_in(Lang::En, &text, Path::new("scene.json"), piece_bytes).unwrap();
     let names: Vec<&str> = scene.polygons.iter().map(|polygon| polygon.name.as_str()).collect();
     assert_eq!(names.len(), 3);
     assert_eq!(names[0], "first");
     assert!(names[1].starts_with("x, {"));
     assert_eq!(names[2], crate::words::default_name(2));
-    assert_eq!(
-        Ok(scene),
-        plain(crate::words::Lang::En, &text, Path::new("scene.json"))
-            .map_err(|error| error.message(crate::words::Lang::En))
-    );
+    assert_eq!(Ok(scene), plain(Lang::En, &text, Path::new("scene.json")).map_err(|error| error.message(Lang::En)));
 }
 
 /// Past 18 digits a coordinate is no longer summed as it is scanned: the
