@@ -131,7 +131,7 @@ pub use observe::gpu;
 pub use observe::race;
 pub use observe::step::{PolygonTrace, Skip, Stop, Tracer};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
-pub use observe::{check, explain, figure, history, report, tie, tikz};
+pub use observe::{explain, figure, history, report, tie, tikz};
 pub use raster::convert::{Scratch, rasterize};
 pub use raster::depth::{Depth, DepthTest, Stored};
 pub use raster::scan::{Crossing, Span};
@@ -145,5 +145,5 @@ pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, Sc
 pub use simulate::setup::{Stats, fate};
 pub use simulate::simulation::Simulation;
 pub use simulate::stages::{StageSet, describe};
-pub use teach::{diagnose, exercise, grade, page, step};
+pub use teach::{check, diagnose, exercise, grade, gradebooks, gradescope, page, step};
 pub use words::{Arg, Lang, localize_decimal, polygon_label, text as message, token};

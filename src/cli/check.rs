@@ -2,18 +2,16 @@
 //! differing cell.
 
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::Args;
 use comfy_table::{Table, presets};
 use zsim::Error;
 use zsim::Scene;
-use zsim::Simulation;
-use zsim::check::{CellRange, Matrix, Mismatch, compare, misreading, parse_answer};
-use zsim::explain::{Buffer, why};
-use zsim::{PixelWatcher, Unobserved};
+use zsim::check::{CheckReport, State, WrongCell, check, read_answer, submission_files};
+use zsim::explain::Buffer;
+use zsim::gradescope::{Autograde, Visibility};
 
-use super::gradescope;
 use super::{Failure, Finish, emit};
 
 /// Arguments of `zsim check`.
@@ -40,8 +38,8 @@ pub struct CheckArgs {
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
     /// With --format gradescope: who sees the results.
-    #[arg(long, value_enum, default_value_t = gradescope::Visibility::Visible)]
-    visibility: gradescope::Visibility,
+    #[arg(long, default_value = "visible", value_parser = super::choice(&Visibility::NAMES, Visibility::parse))]
+    visibility: Visibility,
     /// With --format gradescope: the points the whole submission is worth, shared equally by its tests.
     #[arg(long, default_value_t = 100)]
     points: u32,
@@ -53,38 +51,6 @@ enum Format {
     Text,
     /// An autograder's results.json for Gradescope: one test per buffer and polygon step, the explanation in its output; exit 0 whatever the answer.
     Gradescope,
-}
-
-/// Reads an answer file for one of `scene`'s buffers: a matrix as the book
-/// prints it; a symbolic link is followed only where `links` says so.
-pub fn read_answer(
-    lang: zsim::Lang,
-    path: &Path,
-    scene: &Scene,
-    buffer: Buffer,
-    links: zsim::Links,
-) -> Result<Matrix, Error> {
-    let text = zsim::read_text_with(lang, path, links)?;
-    let (max, description) = match buffer {
-        Buffer::Frame => (
-            zsim::max_for_bits(scene.frame_bits),
-            zsim::words!(lang, "answer-frame-range", bits = scene.frame_bits.to_string()),
-        ),
-        Buffer::Depth => {
-            (scene.depth_max(), zsim::words!(lang, "answer-depth-range", bits = scene.depth_bits.to_string()))
-        }
-    };
-    parse_answer(lang, &text, scene.width, scene.height, CellRange { max, buffer: &description })
-        .map_err(|message| Error::Answer { path: path.to_owned(), message })
-}
-
-/// An error about a student's answer file as the student and the class
-/// table show it: the file's name where the message has its path (where the
-/// class folder or the autograder keeps it stretches tables and is nobody's
-/// business), in any language's wording, control characters escaped.
-pub fn as_the_student_sees(lang: zsim::Lang, error: &Error, path: &Path) -> String {
-    let file = path.file_name().map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
-    zsim::printable(&error.message(lang).replace(&path.display().to_string(), &file)).into_owned()
 }
 
 pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
@@ -104,34 +70,35 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
         Some(folder) if args.format == Format::Gradescope => match submission_files(folder, &scene) {
             Ok(states) => states,
             Err(error) => {
-                emit(out, &gradescope::nothing_to_grade(&error.message(lang), args.visibility))?;
+                emit(out, &zsim::gradescope::nothing_to_grade(&error.message(lang), args.visibility))?;
                 return Ok(Finish::Ok);
             }
         },
         Some(folder) => submission_files(folder, &scene)?,
-        None => vec![(
-            last,
-            [(Buffer::Frame, &args.frame), (Buffer::Depth, &args.depth)]
+        None => vec![State {
+            after: last,
+            files: [(Buffer::Frame, &args.frame), (Buffer::Depth, &args.depth)]
                 .into_iter()
                 .filter_map(|(b, p)| Some((b, p.clone()?)))
                 .collect(),
-        )],
+        }],
     };
     if args.format == Format::Gradescope {
-        let results =
-            gradescope::results(lang, &scene, &args.scene, &states, args.arith, args.visibility, args.points)?;
+        let grading = Autograde { visibility: args.visibility, points: args.points };
+        let render = |report: &CheckReport| report_text(lang, report);
+        let results = zsim::gradescope::results(lang, (&scene, &args.scene), &states, args.arith, grading, &render)?;
         emit(out, &results)?;
         return Ok(Finish::Ok);
     }
     if args.submission.is_some() {
         let mut finish = Finish::Ok;
-        for (last, files) in &states {
+        for state in &states {
             let mut read = Vec::new();
-            for (buffer, path) in files {
+            for (buffer, path) in &state.files {
                 read.push((*buffer, path.as_path(), read_answer(lang, path, &scene, *buffer, zsim::Links::Refuse)?));
             }
-            let report = report(lang, &scene, &args.scene, *last, read, args.arith)?;
-            emit(out, &report.text)?;
+            let report = check(lang, &scene, &args.scene, state.after, read, args.arith)?;
+            emit(out, &report_text(lang, &report))?;
             if report.differs() {
                 finish = Finish::Differs;
             }
@@ -152,8 +119,8 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
         }
     }
     if !answers.is_empty() {
-        let report = report(lang, &scene, &args.scene, last, answers, args.arith)?;
-        emit(out, &report.text)?;
+        let report = check(lang, &scene, &args.scene, last, answers, args.arith)?;
+        emit(out, &report_text(lang, &report))?;
         if malformed.is_none() {
             return Ok(if report.differs() { Finish::Differs } else { Finish::Ok });
         }
@@ -161,171 +128,43 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
     Err(malformed.expect("an answer was given, read or malformed").into())
 }
 
-/// What checking one student's answers found.
-pub struct Report {
-    /// What `zsim check` prints: per answer, "all cells match" or the table of wrong cells.
-    pub text: String,
-    /// How many cells differ, over all the answers.
-    pub wrong: usize,
-}
-
-impl Report {
-    /// Whether any cell differs.
-    pub fn differs(&self) -> bool {
-        self.wrong > 0
-    }
-}
-
-/// Answer files for the state after one polygon (0-based): each buffer's file.
-pub type State = (usize, Vec<(Buffer, PathBuf)>);
-
-/// The answer files of a submission folder, grouped by the polygon they are
-/// the state after: `frame.txt` and `depth.txt` after the last,
-/// `after-N.frame.txt` and `after-N.depth.txt` after polygon N; other files
-/// are passed over. Symbolic links are not followed.
-pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Error> {
-    let last = scene.polygons.len() - 1;
-    let read_error = |source| Error::Read { path: folder.to_owned(), source };
-    let mut states: Vec<State> = Vec::new();
-    let mut names: Vec<String> =
-        std::fs::read_dir(folder).map_err(read_error)?.filter_map(|e| e.ok()?.file_name().into_string().ok()).collect();
-    names.sort();
-    for name in names {
-        let (after, kind) = match name.strip_prefix("after-").and_then(|rest| rest.split_once('.')) {
-            Some((number, kind)) => match number.parse::<usize>() {
-                Ok(n) if (1..=last).contains(&n) => (n - 1, kind),
-                _ => continue,
-            },
-            None => (last, name.as_str()),
-        };
-        let buffer = match kind {
-            "frame.txt" => Buffer::Frame,
-            "depth.txt" => Buffer::Depth,
-            _ => continue,
-        };
-        let path = folder.join(&name);
-        match states.iter_mut().find(|(a, _)| *a == after) {
-            Some((_, files)) => files.push((buffer, path)),
-            None => states.push((after, vec![(buffer, path)])),
-        }
-    }
-    if states.is_empty() {
-        return Err(zsim::Usage::NoSubmission { folder: folder.to_owned() }.into());
-    }
-    states.sort_by_key(|(after, _)| *after);
-    for (_, files) in &mut states {
-        files.sort_by_key(|(buffer, _)| *buffer != Buffer::Frame);
-    }
-    Ok(states)
-}
-
-/// Checks `answers` (already read) against the buffers after polygon `last`,
-/// computed in `arith`, and explains every wrong cell: `zsim check`'s output,
-/// also the feedback `zsim grade` writes for each student.
-pub fn report(
-    lang: zsim::Lang,
-    scene: &Scene,
-    scene_path: &Path,
-    last: usize,
-    answers: Vec<(Buffer, &Path, Matrix)>,
-    arith: zsim::arith::Arith,
-) -> Result<Report, Error> {
-    zsim::arith::check_supported(scene, arith)?;
-    let mut simulation = Simulation::new(scene);
-    simulation.draw_through(last, &mut Unobserved);
-    // An inexact mode's buffers after polygon `last`: run it on the scene cut after that polygon.
-    let mode_buffers = if arith == zsim::arith::Arith::Exact {
-        None
-    } else {
-        let mut prefix = scene.clone();
-        prefix.polygons.truncate(last + 1);
-        Some(zsim::arith::run(&prefix, arith)?.0)
-    };
-    let reference = mode_buffers.as_ref().unwrap_or(simulation.buffers());
-    let cells = scene.width as usize * scene.height as usize;
-    // The misconception that explains the wrong cells, for answers checked exactly.
-    let diagnosis = if arith == zsim::arith::Arith::Exact {
-        let answer = |wanted: Buffer| answers.iter().find(|(b, _, _)| *b == wanted).map(|(_, _, m)| m);
-        zsim::diagnose::diagnose(scene, last, answer(Buffer::Frame), answer(Buffer::Depth))
-    } else {
-        None
-    };
-    let mut results = Vec::new();
-    for (buffer, path, answer) in answers {
-        let expected = match buffer {
-            Buffer::Frame => reference.frame_rows(),
-            Buffer::Depth => reference.depth_level_rows().ok_or_else(|| {
-                Error::from(zsim::Usage::ExactDepthsHaveNoMatrix {
-                    path: scene_path.to_path_buf(),
-                    task: zsim::Task::Check,
-                })
-            })?,
-        };
-        let hint = misreading(&answer, &expected);
-        results.push((buffer, path, compare(&answer, &expected), hint));
-    }
-    // Watch the differing cells through a second run, to explain each.
-    let mut watcher = PixelWatcher::new(results.iter().flat_map(|(_, _, m, _)| m.iter().map(|c| (c.x, c.y))));
-    if results.iter().any(|(_, _, m, _)| !m.is_empty()) {
-        Simulation::new(scene).draw_through(last, &mut watcher);
-    }
+/// A check's report as `zsim check` prints it: per answer, "all cells
+/// match" or the wrong cells in a table, each explained; then the likely
+/// misconception. `grade` writes the same as each student's feedback, and
+/// Gradescope's results hold it as each test's output.
+pub fn report_text(lang: zsim::Lang, report: &CheckReport) -> String {
     let mut text = String::new();
-    let wrong = results.iter().map(|(_, _, m, _)| m.len()).sum();
-    for (buffer, path, mismatches, hint) in &results {
-        let (after, file) = (zsim::explain::polygon_after(lang, scene, last), path.display().to_string());
-        if mismatches.is_empty() {
-            let line = zsim::words!(
-                lang,
-                "check-all-match",
-                buffer = buffer.name(lang),
-                file = file,
-                cells = cells,
-                after = after
-            );
-            text.push_str(&line);
-            text.push('\n');
+    for answer in &report.answers {
+        let (buffer, file, cells, after) = (answer.buffer.name(lang), &answer.file, report.cells, &report.after);
+        if answer.wrong.is_empty() {
+            let line =
+                zsim::words!(lang, "check-all-match", buffer = buffer, file = file, cells = cells, after = after);
+            text.push_str(&format!("{line}\n"));
             continue;
         }
+        let count = answer.wrong.len();
         let line = zsim::words!(
             lang,
             "check-differ",
-            buffer = buffer.name(lang),
+            buffer = buffer,
             file = file,
-            count = mismatches.len(),
+            count = count,
             cells = cells,
             after = after
         );
-        text.push_str(&line);
-        text.push('\n');
-        if let Some((how, left)) = hint {
-            let (how, top) = (how.words(lang), scene.height - 1);
-            let line = if *left == 0 {
-                zsim::words!(lang, "check-hint-matches", how = how, top = top)
-            } else {
-                zsim::words!(lang, "check-hint-fewer", how = how, left = *left, top = top)
-            };
-            text.push_str(&line);
-            text.push('\n');
+        text.push_str(&format!("{line}\n"));
+        if let Some(hint) = &answer.hint {
+            text.push_str(&format!("{hint}\n"));
         }
-        text.push_str(&format!(
-            "{}\n",
-            table(lang, scene, *buffer, mismatches, &watcher, (arith, simulation.buffers()))
-        ));
+        text.push_str(&format!("{}\n", table(lang, &answer.wrong)));
     }
-    if let Some(diagnosis) = diagnosis {
-        text.push_str(&format!("{}\n", diagnosis.words(lang)));
+    if let Some(diagnosis) = &report.diagnosis {
+        text.push_str(&format!("{diagnosis}\n"));
     }
-    Ok(Report { text, wrong })
+    text
 }
 
-fn table(
-    lang: zsim::Lang,
-    scene: &Scene,
-    buffer: Buffer,
-    mismatches: &[Mismatch],
-    watcher: &PixelWatcher,
-    (arith, exact): (zsim::arith::Arith, &zsim::Buffers),
-) -> Table {
+fn table(lang: zsim::Lang, wrong: &[WrongCell]) -> Table {
     let mut table = Table::new();
     // Wrapped to 80 columns: the "why" column breaks over lines instead of running on.
     table
@@ -339,29 +178,13 @@ fn table(
             zsim::words!(lang, "check-column-right"),
             zsim::words!(lang, "check-column-why"),
         ]);
-    for cell in mismatches {
-        let history = watcher.history(cell.x, cell.y);
-        let mut reason = why(lang, scene, buffer, cell.x, cell.y, history);
-        let exact_value = match buffer {
-            Buffer::Frame => exact.frame(cell.x, cell.y),
-            Buffer::Depth => exact.depth(cell.x, cell.y).level().unwrap_or(0),
-        };
-        if exact_value != cell.expected {
-            reason = zsim::words!(
-                lang,
-                "check-in-arith",
-                arith = arith.to_string(),
-                mode = cell.expected,
-                exact = exact_value,
-                reason = reason
-            );
-        }
+    for cell in wrong {
         table.add_row([
             cell.x.to_string(),
             cell.y.to_string(),
             cell.answer.to_string(),
             cell.expected.to_string(),
-            reason,
+            cell.reason.clone(),
         ]);
     }
     table

@@ -54,8 +54,8 @@ pub struct ExerciseArgs {
     #[arg(long, value_name = "DIR")]
     gradescope: Option<PathBuf>,
     /// With --gradescope: who sees the results.
-    #[arg(long, value_enum, default_value_t = super::gradescope::Visibility::Visible, requires = "gradescope")]
-    visibility: super::gradescope::Visibility,
+    #[arg(long, default_value = "visible", requires = "gradescope", value_parser = super::choice(&zsim::gradescope::Visibility::NAMES, zsim::gradescope::Visibility::parse))]
+    visibility: zsim::gradescope::Visibility,
     /// With --gradescope: the points the exercise is worth.
     #[arg(long, default_value_t = 100, requires = "gradescope")]
     points: u32,
@@ -207,7 +207,7 @@ pub fn run(lang: zsim::Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result
     let line = zsim::words!(lang, "file-written-in", files = written.join(", "), path = dir.display().to_string());
     emit(out, &format!("{notes}{line}\n"))?;
     if let Some(folder) = &args.gradescope {
-        let files = super::gradescope::autograder(&exercise.json, args.visibility, args.points, lang);
+        let files = zsim::gradescope::autograder(&exercise.json, args.visibility, args.points, lang);
         super::write_fresh(folder, &files, &[dir.as_path()])?;
         for script in ["setup.sh", "run_autograder"] {
             executable(&folder.join(script))?;

@@ -16,9 +16,10 @@ use zsim::explain::{Buffer, polygon_after, polygon_name, why};
 use zsim::grade::{CommonMistake, Grade, Handed, Status, Submission, common_mistakes, file_kind, grade};
 use zsim::printable;
 
-use super::check::{as_the_student_sees, read_answer, report};
-use super::gradebooks;
+use super::check::report_text;
 use super::{Failure, Finish, emit};
+use zsim::check::{as_the_student_sees, check, read_answer};
+use zsim::gradebooks::{self, Identity};
 
 /// Arguments of `zsim grade`.
 #[derive(Debug, Args)]
@@ -37,8 +38,8 @@ pub struct GradeArgs {
     #[arg(short, long, value_name = "FOLDER")]
     output: Option<PathBuf>,
     /// With --format moodle or canvas: the column that names the student (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id); the student's file name is its value.
-    #[arg(long, value_enum)]
-    identity: Option<gradebooks::Identity>,
+    #[arg(long, value_parser = super::choice(&Identity::NAMES, Identity::parse))]
+    identity: Option<Identity>,
     /// With --format moodle or canvas: the grade column's header (Moodle: "Assignment: NAME (Real)" as its exports write it; Canvas: "NAME (ID)" to fill an existing assignment).
     #[arg(long, value_name = "NAME")]
     item: Option<String>,
@@ -110,8 +111,8 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
             let (graded, mistakes, reasons) = assess(lang);
             let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
             match args.format {
-                Format::Csv => csv(&rows),
-                _ => json(lang, &args.scene, &polygon_name(lang, &scene, last), &rows, &mistakes, &reasons),
+                Format::Csv => gradebooks::csv(&rows),
+                _ => gradebooks::json(lang, &args.scene, &polygon_name(lang, &scene, last), &rows, &mistakes, &reasons),
             }
         }
         Format::Text => {
@@ -213,8 +214,7 @@ fn reasons(lang: zsim::Lang, scene: &Scene, last: usize, mistakes: &[CommonMista
 /// against the platform.
 fn gradebook(args: &GradeArgs, rows: &[&Grade]) -> Result<String, Error> {
     let moodle = args.format == Format::Moodle;
-    let identity =
-        args.identity.unwrap_or(if moodle { gradebooks::Identity::Email } else { gradebooks::Identity::SisLoginId });
+    let identity = args.identity.unwrap_or(if moodle { Identity::Email } else { Identity::SisLoginId });
     if identity.is_moodle() != moodle {
         return Err(zsim::Usage::IdentityColumn { column: identity.header() }.into());
     }
@@ -334,78 +334,6 @@ fn mistakes_text(lang: zsim::Lang, mistakes: &[CommonMistake], reasons: &[String
     format!("{}\n{table}\n", zsim::words!(lang, "grade-mistakes"))
 }
 
-/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC
-/// 4180). A cell a spreadsheet would run as a formula (one starting with `=`,
-/// `+`, `-`, `@`, a tab or a carriage return: a student's name is anyone's
-/// text) starts with `'` instead, as OWASP recommends, so it stays text.
-pub(super) fn csv_field(text: &str) -> String {
-    let text = if text.starts_with(['=', '+', '-', '@', '\t', '\r']) { format!("'{text}") } else { text.to_string() };
-    if text.contains([',', '"', '\n', '\r']) { format!("\"{}\"", text.replace('"', "\"\"")) } else { text }
-}
-
-fn csv(rows: &[&Grade]) -> String {
-    let mut text = String::from("student,frame_wrong,depth_wrong,score,status,misconception\n");
-    for grade in rows {
-        let count = |c: Option<usize>| c.map_or_else(String::new, |c| c.to_string());
-        text.push_str(&format!(
-            "{},{},{},{},{},{}\n",
-            csv_field(&grade.student),
-            count(grade.frame_wrong),
-            count(grade.depth_wrong),
-            grade.percent(),
-            csv_field(&grade.status.to_string()),
-            grade.misconception.map_or("", |d| d.misconception.name())
-        ));
-    }
-    text
-}
-
-fn json(
-    lang: zsim::Lang,
-    scene: &Path,
-    after: &str,
-    rows: &[&Grade],
-    mistakes: &[CommonMistake],
-    reasons: &[String],
-) -> String {
-    let students: Vec<serde_json::Value> = rows
-        .iter()
-        .map(|g| {
-            serde_json::json!({
-                "student": g.student,
-                "frame_wrong": g.frame_wrong,
-                "depth_wrong": g.depth_wrong,
-                "score": g.percent(),
-                "status": g.status.to_string(),
-                "misconception": g.misconception.map(|d| d.misconception.name()),
-                "explained": g.misconception.map(|d| d.explained),
-            })
-        })
-        .collect();
-    let mistakes: Vec<serde_json::Value> = mistakes
-        .iter()
-        .zip(reasons)
-        .map(|(m, why)| {
-            serde_json::json!({
-                "buffer": m.buffer.name(lang),
-                "x": m.x,
-                "y": m.y,
-                "right": m.right,
-                "students": m.students,
-                "answers": m.answers.iter().map(|(value, count)| serde_json::json!({"value": value, "count": count})).collect::<Vec<_>>(),
-                "why": why,
-            })
-        })
-        .collect();
-    let object = serde_json::json!({
-        "scene": scene.display().to_string(),
-        "after": after,
-        "students": students,
-        "common_mistakes": mistakes,
-    });
-    format!("{}\n", serde_json::to_string_pretty(&object).expect("serializing plain data cannot fail"))
-}
-
 /// FOLDER/NAME.txt for each student and FOLDER/common-mistakes.txt.
 fn write_feedback(
     lang: zsim::Lang,
@@ -440,7 +368,7 @@ fn write_feedback(
             }
         }
         if !answers.is_empty() {
-            text.push_str(&report(lang, scene, &args.scene, last, answers, Arith::Exact)?.text);
+            text.push_str(&report_text(lang, &check(lang, scene, &args.scene, last, answers, Arith::Exact)?));
         }
         // NAME.feedback.txt never ends as a submitted NAME.frame.txt or NAME.depth.txt
         // does, nor is it the summary's name, whatever the student's name.

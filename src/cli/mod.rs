@@ -10,8 +10,6 @@ mod explain;
 mod figure;
 mod generate;
 mod grade;
-mod gradebooks;
-mod gradescope;
 mod install;
 mod run;
 #[cfg(feature = "gpu")]
@@ -230,6 +228,17 @@ fn usage_error(lang: zsim::Lang, error: &clap::Error) -> ExitCode {
             ExitCode::from(error.exit_code().clamp(0, 255) as u8)
         }
     }
+}
+
+/// A parser for one of the library's named choices (a gradebook's
+/// identity column, a visibility): clap lists `names` and checks the value
+/// against them; `parse` turns the one given into the choice.
+fn choice<T: Clone + Send + Sync + 'static>(
+    names: &'static [&'static str],
+    parse: fn(&str) -> Option<T>,
+) -> impl clap::builder::TypedValueParser<Value = T> {
+    use clap::builder::TypedValueParser;
+    clap::builder::PossibleValuesParser::new(names).map(move |name| parse(&name).expect("clap checked the name"))
 }
 
 /// Whether to colour output: only on a terminal, and never with `NO_COLOR` set.

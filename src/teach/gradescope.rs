@@ -7,26 +7,51 @@
 
 use std::path::Path;
 
-use zsim::Error;
-use zsim::Scene;
+use crate::effects::arith::Arith;
+use crate::error::Error;
+use crate::scene::Scene;
+use crate::scene::text::{Links, printable};
+use crate::teach::check::{CheckReport, State, as_the_student_sees, check, read_answer};
+use crate::words::Lang;
+
+/// How an autograder's results are given: who sees them, and what the whole
+/// submission is worth.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Autograde {
+    /// Who sees the results.
+    pub visibility: Visibility,
+    /// The points the submission is worth, shared equally by its tests.
+    pub points: u32,
+}
 
 /// Who sees a result, as Gradescope names it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Visibility {
     /// Students see it at once.
     Visible,
     /// Students never see it.
     Hidden,
     /// After the due date.
-    #[value(name = "after_due_date")]
     AfterDueDate,
     /// Once the grades are published.
-    #[value(name = "after_published")]
     AfterPublished,
 }
 
 impl Visibility {
-    fn name(self) -> &'static str {
+    /// Every visibility, in the order of [`Visibility::NAMES`].
+    pub const ALL: [Visibility; 4] =
+        [Visibility::Visible, Visibility::Hidden, Visibility::AfterDueDate, Visibility::AfterPublished];
+
+    /// Gradescope's names, which a user chooses them by.
+    pub const NAMES: [&'static str; 4] = ["visible", "hidden", "after_due_date", "after_published"];
+
+    /// The visibility named `name` (one of [`Visibility::NAMES`]).
+    pub fn parse(name: &str) -> Option<Visibility> {
+        Visibility::NAMES.iter().position(|n| *n == name).map(|i| Visibility::ALL[i])
+    }
+
+    /// Gradescope's name.
+    pub fn name(self) -> &'static str {
         match self {
             Visibility::Visible => "visible",
             Visibility::Hidden => "hidden",
@@ -39,17 +64,17 @@ impl Visibility {
 /// The submission's `results.json`: one test per answer file (a buffer after
 /// a polygon), worth an equal share of `points`, scored by its share of right
 /// cells; a missing or malformed file is a failed test worth nothing, its
-/// reason in the output. Text in the reader's language.
+/// reason in the output, each test's output the check's report as `render`
+/// writes it. Text in the reader's language.
 pub fn results(
-    lang: zsim::Lang,
-    scene: &Scene,
-    scene_path: &Path,
-    states: &[super::check::State],
-    arith: zsim::arith::Arith,
-    visibility: Visibility,
-    points: u32,
+    lang: Lang,
+    (scene, scene_path): (&Scene, &Path),
+    states: &[State],
+    arith: Arith,
+    Autograde { visibility, points }: Autograde,
+    render: &dyn Fn(&CheckReport) -> String,
 ) -> Result<String, Error> {
-    let count: u64 = states.iter().map(|(_, files)| files.len() as u64).sum();
+    let count: u64 = states.iter().map(|state| state.files.len() as u64).sum();
     // Shares in hundredths of a point that add up to `points` exactly.
     let hundredths = u64::from(points) * 100;
     let share = |k: u64| hundredths / count.max(1) + u64::from(k < hundredths % count.max(1));
@@ -57,25 +82,24 @@ pub fn results(
     let mut tests = Vec::new();
     let mut total = 0;
     for (k, (last, buffer, path)) in
-        states.iter().flat_map(|(last, files)| files.iter().map(move |(b, p)| (last, b, p))).enumerate()
+        states.iter().flat_map(|state| state.files.iter().map(move |(b, p)| (&state.after, b, p))).enumerate()
     {
-        let name = zsim::words!(
+        let name = words!(
             lang,
             "gradescope-test",
             buffer = buffer.name(lang),
-            after = zsim::explain::polygon_after(lang, scene, *last)
+            after = crate::observe::explain::polygon_after(lang, scene, *last)
         );
         let max_score = share(k as u64);
-        let (score, output) = match super::check::read_answer(lang, path, scene, *buffer, zsim::Links::Refuse) {
+        let (score, output) = match read_answer(lang, path, scene, *buffer, Links::Refuse) {
             Ok(answer) => {
                 // The student sees the file's name, not where the autograder keeps it.
                 let shown = Path::new(path.file_name().unwrap_or(path.as_os_str()));
-                let report =
-                    super::check::report(lang, scene, scene_path, *last, vec![(*buffer, shown, answer)], arith)?;
+                let report = check(lang, scene, scene_path, *last, vec![(*buffer, shown, answer)], arith)?;
                 // The share of right cells, rounded down to a hundredth: only a right answer scores in full.
-                (max_score * (cells - (report.wrong as u64).min(cells)) / cells, report.text)
+                (max_score * (cells - (report.wrong() as u64).min(cells)) / cells, render(&report))
             }
-            Err(error) => (0, format!("{}\n", super::check::as_the_student_sees(lang, &error, path))),
+            Err(error) => (0, format!("{}\n", as_the_student_sees(lang, &error, path))),
         };
         total += score;
         tests.push(serde_json::json!({
@@ -100,7 +124,7 @@ pub fn results(
 pub fn nothing_to_grade(why: &str, visibility: Visibility) -> String {
     let results = serde_json::json!({
         "score": 0.0,
-        "output": zsim::printable(why),
+        "output": printable(why),
         "visibility": visibility.name(),
         "tests": [],
     });
@@ -112,7 +136,7 @@ pub fn nothing_to_grade(why: &str, visibility: Visibility) -> String {
 /// folder (`frame.txt`, `depth.txt`, `after-N.*.txt`) against the scene and
 /// writes `results/results.json`. `AUTOGRADER_ROOT` stands for `/autograder`
 /// (for trying it elsewhere).
-pub fn autograder(scene_json: &str, visibility: Visibility, points: u32, lang: zsim::Lang) -> Vec<(String, Vec<u8>)> {
+pub fn autograder(scene_json: &str, visibility: Visibility, points: u32, lang: Lang) -> Vec<(String, Vec<u8>)> {
     let setup = "#!/usr/bin/env bash\n\
         # Gradescope runs this once, as root, when it builds the autograder's image.\n\
         # Put zsim's Debian package (zsim_*.deb: `cargo deb`, or a release) beside\n\

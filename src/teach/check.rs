@@ -1,0 +1,235 @@
+//! Checking homework: a student's answer files read for a scene's buffers,
+//! the answers of a submission folder found, and every wrong cell of an
+//! answer explained, as facts that `check`, `grade`'s feedback and the
+//! Gradescope results all render.
+
+use std::path::{Path, PathBuf};
+
+use crate::effects::arith::{self, Arith};
+use crate::error::{Error, Task, Usage};
+pub use crate::observe::check::{
+    CellRange, Matrix, Mismatch, Misreading, compare as compare_cells, misreading as misread, parse_answer,
+};
+use crate::observe::check::{compare, misreading};
+use crate::observe::explain::{Buffer, polygon_after, why};
+use crate::observe::trace::PixelWatcher;
+use crate::scene::Scene;
+use crate::scene::text::{Links, printable, read_text_with};
+use crate::simulate::events::Unobserved;
+use crate::simulate::simulation::Simulation;
+use crate::words::Lang;
+
+/// Reads an answer file for one of `scene`'s buffers: a matrix as the book
+/// prints it; a symbolic link is followed only where `links` says so.
+pub fn read_answer(lang: Lang, path: &Path, scene: &Scene, buffer: Buffer, links: Links) -> Result<Matrix, Error> {
+    let text = read_text_with(lang, path, links)?;
+    let (max, description) = match buffer {
+        Buffer::Frame => (
+            crate::scene::max_for_bits(scene.frame_bits),
+            words!(lang, "answer-frame-range", bits = scene.frame_bits.to_string()),
+        ),
+        Buffer::Depth => (scene.depth_max(), words!(lang, "answer-depth-range", bits = scene.depth_bits.to_string())),
+    };
+    parse_answer(lang, &text, scene.width, scene.height, CellRange { max, buffer: &description })
+        .map_err(|message| Error::Answer { path: path.to_owned(), message })
+}
+
+/// An error about a student's answer file as the student and the class
+/// table show it: the file's name where the message has its path (where the
+/// class folder or the autograder keeps it stretches tables and is nobody's
+/// business), control characters escaped.
+pub fn as_the_student_sees(lang: Lang, error: &Error, path: &Path) -> String {
+    let file = path.file_name().map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
+    printable(&error.message(lang).replace(&path.display().to_string(), &file)).into_owned()
+}
+
+/// The answer files for the state after one polygon.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct State {
+    /// The polygon (0-based) the answers are the state after.
+    pub after: usize,
+    /// Each buffer's file, the framebuffer's first.
+    pub files: Vec<(Buffer, PathBuf)>,
+}
+
+/// The answer files of a submission folder, grouped by the polygon they are
+/// the state after: `frame.txt` and `depth.txt` after the last,
+/// `after-N.frame.txt` and `after-N.depth.txt` after polygon N; other files
+/// are passed over. Symbolic links are not followed.
+pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Error> {
+    let last = scene.polygons.len() - 1;
+    let read_error = |source| Error::Read { path: folder.to_owned(), source };
+    let mut states: Vec<State> = Vec::new();
+    let mut names: Vec<String> =
+        std::fs::read_dir(folder).map_err(read_error)?.filter_map(|e| e.ok()?.file_name().into_string().ok()).collect();
+    names.sort();
+    for name in names {
+        let (after, kind) = match name.strip_prefix("after-").and_then(|rest| rest.split_once('.')) {
+            Some((number, kind)) => match number.parse::<usize>() {
+                Ok(n) if (1..=last).contains(&n) => (n - 1, kind),
+                _ => continue,
+            },
+            None => (last, name.as_str()),
+        };
+        let buffer = match kind {
+            "frame.txt" => Buffer::Frame,
+            "depth.txt" => Buffer::Depth,
+            _ => continue,
+        };
+        let path = folder.join(&name);
+        match states.iter_mut().find(|state| state.after == after) {
+            Some(state) => state.files.push((buffer, path)),
+            None => states.push(State { after, files: vec![(buffer, path)] }),
+        }
+    }
+    if states.is_empty() {
+        return Err(Usage::NoSubmission { folder: folder.to_owned() }.into());
+    }
+    states.sort_by_key(|state| state.after);
+    for state in &mut states {
+        state.files.sort_by_key(|(buffer, _)| *buffer != Buffer::Frame);
+    }
+    Ok(states)
+}
+
+/// One wrong cell of an answer, explained.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct WrongCell {
+    /// Column.
+    pub x: u32,
+    /// Row.
+    pub y: u32,
+    /// What the student wrote.
+    pub answer: u32,
+    /// What is right.
+    pub expected: u32,
+    /// Why, in the reader's language.
+    pub reason: String,
+}
+
+/// What checking one answer file found.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct AnswerCheck {
+    /// The buffer it answers for.
+    pub buffer: Buffer,
+    /// The file, as given.
+    pub file: String,
+    /// The wrong cells, top row first.
+    pub wrong: Vec<WrongCell>,
+    /// A likely misreading of the whole matrix (flipped, transposed, …), worded.
+    pub hint: Option<String>,
+}
+
+/// What checking a student's answers for the state after one polygon found.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CheckReport {
+    /// The state checked, worded: `after polygon 2 "triangle"`.
+    pub after: String,
+    /// Cells in a buffer.
+    pub cells: usize,
+    /// Each answer's findings, in the order given.
+    pub answers: Vec<AnswerCheck>,
+    /// The misconception that explains the wrong cells, worded (exact checks only).
+    pub diagnosis: Option<String>,
+}
+
+impl CheckReport {
+    /// How many cells differ, over all the answers.
+    pub fn wrong(&self) -> usize {
+        self.answers.iter().map(|a| a.wrong.len()).sum()
+    }
+
+    /// Whether any cell differs.
+    pub fn differs(&self) -> bool {
+        self.wrong() > 0
+    }
+}
+
+/// Checks `answers` (already read) against the buffers after polygon `last`,
+/// computed in `arith`, and explains every wrong cell.
+pub fn check(
+    lang: Lang,
+    scene: &Scene,
+    scene_path: &Path,
+    last: usize,
+    answers: Vec<(Buffer, &Path, Matrix)>,
+    arith: Arith,
+) -> Result<CheckReport, Error> {
+    arith::check_supported(scene, arith)?;
+    let mut simulation = Simulation::new(scene);
+    simulation.draw_through(last, &mut Unobserved);
+    // An inexact mode's buffers after polygon `last`: run it on the scene cut after that polygon.
+    let mode_buffers = if arith == Arith::Exact {
+        None
+    } else {
+        let mut prefix = scene.clone();
+        prefix.polygons.truncate(last + 1);
+        Some(arith::run(&prefix, arith)?.0)
+    };
+    let reference = mode_buffers.as_ref().unwrap_or(simulation.buffers());
+    // The misconception that explains the wrong cells, for answers checked exactly.
+    let diagnosis = if arith == Arith::Exact {
+        let answer = |wanted: Buffer| answers.iter().find(|(b, _, _)| *b == wanted).map(|(_, _, m)| m);
+        crate::teach::diagnose::diagnose(scene, last, answer(Buffer::Frame), answer(Buffer::Depth))
+    } else {
+        None
+    };
+    let mut results = Vec::new();
+    for (buffer, path, answer) in answers {
+        let expected = match buffer {
+            Buffer::Frame => reference.frame_rows(),
+            Buffer::Depth => reference.depth_level_rows().ok_or_else(|| {
+                Error::from(Usage::ExactDepthsHaveNoMatrix { path: scene_path.to_path_buf(), task: Task::Check })
+            })?,
+        };
+        let hint = misreading(&answer, &expected);
+        results.push((buffer, path, compare(&answer, &expected), hint));
+    }
+    // Watch the differing cells through a second run, to explain each.
+    let mut watcher = PixelWatcher::new(results.iter().flat_map(|(_, _, m, _)| m.iter().map(|c| (c.x, c.y))));
+    if results.iter().any(|(_, _, m, _)| !m.is_empty()) {
+        Simulation::new(scene).draw_through(last, &mut watcher);
+    }
+    let exact = simulation.buffers();
+    let answers = results
+        .into_iter()
+        .map(|(buffer, path, mismatches, hint)| {
+            let wrong = mismatches
+                .iter()
+                .map(|cell| {
+                    let mut reason = why(lang, scene, buffer, cell.x, cell.y, watcher.history(cell.x, cell.y));
+                    let exact_value = match buffer {
+                        Buffer::Frame => exact.frame(cell.x, cell.y),
+                        Buffer::Depth => exact.depth(cell.x, cell.y).level().unwrap_or(0),
+                    };
+                    if exact_value != cell.expected {
+                        reason = words!(
+                            lang,
+                            "check-in-arith",
+                            arith = arith.to_string(),
+                            mode = cell.expected,
+                            exact = exact_value,
+                            reason = reason
+                        );
+                    }
+                    WrongCell { x: cell.x, y: cell.y, answer: cell.answer, expected: cell.expected, reason }
+                })
+                .collect();
+            let hint = hint.map(|(how, left)| {
+                let (how, top) = (how.words(lang), scene.height - 1);
+                if left == 0 {
+                    words!(lang, "check-hint-matches", how = how, top = top)
+                } else {
+                    words!(lang, "check-hint-fewer", how = how, left = left, top = top)
+                }
+            });
+            AnswerCheck { buffer, file: path.display().to_string(), wrong, hint }
+        })
+        .collect();
+    Ok(CheckReport {
+        after: polygon_after(lang, scene, last),
+        cells: scene.width as usize * scene.height as usize,
+        answers,
+        diagnosis: diagnosis.map(|d| d.words(lang)),
+    })
+}

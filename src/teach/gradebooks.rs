@@ -1,0 +1,184 @@
+//! Gradebooks: `grade --format csv` and `--format json` (the same in every
+//! language), and the imports `--format moodle` and `--format canvas` write a
+//! class's scores in the layout each platform imports. Moodle maps one
+//! identity column (email address, ID number or username) to its users and
+//! takes a grade column per item, refusing the whole file when a value lies
+//! outside the item's range; Canvas takes its export's layout, `Student, ID,
+//! SIS User ID, SIS Login ID, Section` then one column per assignment, and a
+//! second row `Points Possible`. The identity is each student's file name
+//! (`ana@uni.edu.frame.txt` gives `ana@uni.edu`); the grade is the share of
+//! right cells times the points, with two decimals, always within 0 … points.
+
+use std::path::Path;
+
+use crate::numbers::{Q, decimal};
+use crate::observe::explain::Buffer;
+use crate::teach::grade::{CommonMistake, Grade};
+use crate::words::Lang;
+
+/// Which column names the student in the import.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Identity {
+    /// Moodle: "Email address" (the default for Moodle).
+    Email,
+    /// Moodle: "ID number".
+    Idnumber,
+    /// Moodle: "Username".
+    Username,
+    /// Canvas: "ID".
+    Id,
+    /// Canvas: "SIS User ID".
+    SisUserId,
+    /// Canvas: "SIS Login ID" (the default for Canvas).
+    SisLoginId,
+}
+
+impl Identity {
+    /// Every identity, in the order of [`Identity::NAMES`].
+    pub const ALL: [Identity; 6] = [
+        Identity::Email,
+        Identity::Idnumber,
+        Identity::Username,
+        Identity::Id,
+        Identity::SisUserId,
+        Identity::SisLoginId,
+    ];
+
+    /// The names a user chooses them by.
+    pub const NAMES: [&'static str; 6] = ["email", "idnumber", "username", "id", "sis-user-id", "sis-login-id"];
+
+    /// The identity named `name` (one of [`Identity::NAMES`]).
+    pub fn parse(name: &str) -> Option<Identity> {
+        Identity::NAMES.iter().position(|n| *n == name).map(|i| Identity::ALL[i])
+    }
+
+    /// The column's header as the platform writes it in its own exports.
+    pub fn header(self) -> &'static str {
+        match self {
+            Identity::Email => "Email address",
+            Identity::Idnumber => "ID number",
+            Identity::Username => "Username",
+            Identity::Id => "ID",
+            Identity::SisUserId => "SIS User ID",
+            Identity::SisLoginId => "SIS Login ID",
+        }
+    }
+
+    /// Whether Moodle imports by this column (else Canvas does).
+    pub fn is_moodle(self) -> bool {
+        matches!(self, Identity::Email | Identity::Idnumber | Identity::Username)
+    }
+}
+
+/// A student's grade out of `points`, with two decimals (rounded half up,
+/// so never above `points`).
+fn points_of(grade: &Grade, points: u32) -> String {
+    decimal(grade.score * Q::from_integer(i128::from(points)), 2)
+}
+
+/// Moodle's gradebook import: the identity column, then the grade item.
+pub fn moodle(rows: &[&Grade], identity: Identity, item: &str, points: u32) -> String {
+    let mut text = format!("{},{}\n", identity.header(), csv_field(item));
+    for grade in rows {
+        text.push_str(&format!("{},{}\n", csv_field(&grade.student), points_of(grade, points)));
+    }
+    text
+}
+
+/// Canvas's gradebook import: its five identity columns, the assignment,
+/// the `Points Possible` row; the student's name goes in `Student` and in
+/// the identity column chosen.
+pub fn canvas(rows: &[&Grade], identity: Identity, item: &str, points: u32) -> String {
+    const COLUMNS: [&str; 5] = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"];
+    let mut text = format!("{},{}\n", COLUMNS.join(","), csv_field(item));
+    text.push_str(&format!("Points Possible,,,,,{points}\n"));
+    for grade in rows {
+        let name = csv_field(&grade.student);
+        let cells: Vec<String> = COLUMNS
+            .iter()
+            .map(|column| match *column {
+                "Student" => name.clone(),
+                column if column == identity.header() => name.clone(),
+                _ => String::new(),
+            })
+            .collect();
+        text.push_str(&format!("{},{}\n", cells.join(","), points_of(grade, points)));
+    }
+    text
+}
+
+/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC
+/// 4180). A cell a spreadsheet would run as a formula (one starting with `=`,
+/// `+`, `-`, `@`, a tab or a carriage return: a student's name is anyone's
+/// text) starts with `'` instead, as OWASP recommends, so it stays text.
+pub fn csv_field(text: &str) -> String {
+    let text = if text.starts_with(['=', '+', '-', '@', '\t', '\r']) { format!("'{text}") } else { text.to_string() };
+    if text.contains([',', '"', '\n', '\r']) { format!("\"{}\"", text.replace('"', "\"\"")) } else { text }
+}
+
+/// `grade --format csv`: one row a student, the same in every language.
+pub fn csv(rows: &[&Grade]) -> String {
+    let mut text = String::from("student,frame_wrong,depth_wrong,score,status,misconception\n");
+    for grade in rows {
+        let count = |c: Option<usize>| c.map_or_else(String::new, |c| c.to_string());
+        text.push_str(&format!(
+            "{},{},{},{},{},{}\n",
+            csv_field(&grade.student),
+            count(grade.frame_wrong),
+            count(grade.depth_wrong),
+            grade.percent(),
+            csv_field(&grade.status.to_string()),
+            grade.misconception.map_or("", |d| d.misconception.name())
+        ));
+    }
+    text
+}
+
+/// `grade --format json`: the students and the common mistakes, each with
+/// zsim's reason (`reasons`, in the order of `mistakes`).
+pub fn json(
+    lang: Lang,
+    scene: &Path,
+    after: &str,
+    rows: &[&Grade],
+    mistakes: &[CommonMistake],
+    reasons: &[String],
+) -> String {
+    let students: Vec<serde_json::Value> = rows
+        .iter()
+        .map(|g| {
+            serde_json::json!({
+                "student": g.student,
+                "frame_wrong": g.frame_wrong,
+                "depth_wrong": g.depth_wrong,
+                "score": g.percent(),
+                "status": g.status.to_string(),
+                "misconception": g.misconception.map(|d| d.misconception.name()),
+                "explained": g.misconception.map(|d| d.explained),
+            })
+        })
+        .collect();
+    let mistakes: Vec<serde_json::Value> = mistakes
+        .iter()
+        .zip(reasons)
+        .map(|(m, why)| {
+            let buffer: Buffer = m.buffer;
+            serde_json::json!({
+                "buffer": buffer.name(lang),
+                "x": m.x,
+                "y": m.y,
+                "right": m.right,
+                "students": m.students,
+                "answers": m.answers.iter().map(|(value, count)| serde_json::json!({"value": value, "count": count})).collect::<Vec<_>>(),
+                "why": why,
+            })
+        })
+        .collect();
+    let object = serde_json::json!({
+        "scene": scene.display().to_string(),
+        "after": after,
+        "students": students,
+        "common_mistakes": mistakes,
+    });
+    format!("{}\n", serde_json::to_string_pretty(&object).expect("serializing plain data cannot fail"))
+}
