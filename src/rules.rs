@@ -31,6 +31,8 @@
 
 use serde::Deserialize;
 
+use crate::words::Lang;
+
 /// Which rows a polygon covers, which edges cross a scanline and how the
 /// crossings become spans.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -159,6 +161,26 @@ pub struct Rules {
     /// Polygons whose signed area (counter-clockwise positive, in pixels) is
     /// below this are skipped: back faces and slivers.
     pub min_area: Option<crate::numbers::Q>,
+}
+
+impl Preset {
+    /// The preset named in the reader's language (`the book's`, `OpenGL's`).
+    pub fn name(self, lang: Lang) -> String {
+        match self {
+            Preset::Rogers => words!(lang, "preset-rogers"),
+            Preset::Buet => words!(lang, "preset-buet"),
+            Preset::Gl => words!(lang, "preset-gl"),
+            Preset::Vulkan => words!(lang, "preset-vulkan"),
+            Preset::Tinyrenderer => words!(lang, "preset-tinyrenderer"),
+        }
+    }
+
+    /// The preset a name chooses, as a scene file names it (`rogers`, `gl`,
+    /// `vulkan`, and the aliases `d3d` and `webgpu`); why not, in `lang`.
+    pub fn parse(lang: Lang, text: &str) -> Result<Preset, String> {
+        serde_json::from_value(serde_json::Value::String(text.to_string()))
+            .map_err(|_| words!(lang, "usage-not-a-preset", text = crate::words::token(lang, text)))
+    }
 }
 
 impl Rules {

@@ -6,14 +6,12 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
 use comfy_table::{ContentArrangement, Table, presets};
-use rayon::prelude::*;
 use zsim::Error;
-use zsim::PixelWatcher;
 use zsim::Scene;
-use zsim::Simulation;
 use zsim::arith::Arith;
-use zsim::explain::{Buffer, polygon_after, polygon_name, why};
-use zsim::grade::{CommonMistake, Grade, Handed, Status, Submission, common_mistakes, file_kind, grade};
+use zsim::class::{ClassGrades, grade_class};
+use zsim::explain::{polygon_after, polygon_name};
+use zsim::grade::{CommonMistake, Grade, Status};
 use zsim::printable;
 
 use super::check::report_text;
@@ -62,9 +60,6 @@ enum Format {
     Canvas,
 }
 
-/// How many common mistakes are listed.
-const MISTAKES_LISTED: usize = 10;
-
 pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(lang, &args.scene)?;
     if scene.polygons.is_empty() {
@@ -74,46 +69,16 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
         Some(spec) => scene.find_polygon(spec)?,
         None => scene.polygons.len() - 1,
     };
-    let files = answer_files(&args.class)?;
-    let mut simulation = Simulation::new(&scene);
-    let threads = std::thread::available_parallelism().map_or(1, usize::from);
-    simulation.draw_parallel_through(last, simulation.default_tile(threads), threads, &|| {});
-    let mut expected = Vec::new();
-    for buffer in [Buffer::Frame, Buffer::Depth] {
-        if !files.iter().any(|(_, b, _)| *b == buffer) {
-            continue;
-        }
-        let matrix = match buffer {
-            Buffer::Frame => simulation.buffers().frame_rows(),
-            Buffer::Depth => simulation.buffers().depth_level_rows().ok_or_else(|| {
-                Error::from(zsim::Usage::ExactDepthsHaveNoMatrix { path: args.scene.clone(), task: zsim::Task::Grade })
-            })?,
-        };
-        expected.push((buffer, matrix));
-    }
-    // The usual wrong rules, drawn once for the whole class.
-    let diagnoser = zsim::diagnose::Diagnoser::new(&scene, last);
-    // Each answer graded, the common mistakes and zsim's reason for each, in
-    // `lang`.
-    let assess = |lang: zsim::Lang| {
-        let graded = grade(&submissions(lang, &files, &expected, &scene), &expected, diagnoser.as_ref());
-        let mistakes = common_mistakes(&graded, MISTAKES_LISTED);
-        let reasons = reasons(lang, &scene, last, &mistakes);
-        (graded, mistakes, reasons)
-    };
-    let (graded, mistakes, reasons) = assess(lang);
-    let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
+    // CSV and JSON are the same in every language: their reasons and names in English.
+    let plain = matches!(args.format, Format::Csv | Format::Json);
+    let class = grade_class(if plain { zsim::Lang::En } else { lang }, &scene, &args.scene, &args.class, last)?;
+    let rows = class.rows();
     let text = match args.format {
-        // CSV and JSON are the same in every language: their reasons and names in English.
         Format::Moodle | Format::Canvas => gradebook(args, &rows)?,
-        Format::Csv | Format::Json => {
-            let lang = zsim::Lang::En;
-            let (graded, mistakes, reasons) = assess(lang);
-            let rows: Vec<&Grade> = graded.iter().map(|(g, _)| g).collect();
-            match args.format {
-                Format::Csv => gradebooks::csv(&rows),
-                _ => gradebooks::json(lang, &args.scene, &polygon_name(lang, &scene, last), &rows, &mistakes, &reasons),
-            }
+        Format::Csv => gradebooks::csv(&rows),
+        Format::Json => {
+            let en = zsim::Lang::En;
+            gradebooks::json(en, &args.scene, &polygon_name(en, &scene, last), &rows, &class.mistakes, &class.reasons)
         }
         Format::Text => {
             let counts = |f: fn(&Grade) -> bool| rows.iter().filter(|g| f(g)).count();
@@ -133,81 +98,17 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
                 "{summary}\n{}\n\n{}{}",
                 table(lang, &rows),
                 causes_text(lang, &rows),
-                mistakes_text(lang, &mistakes, &reasons, graded.len())
+                mistakes_text(lang, &class.mistakes, &class.reasons, rows.len())
             )
         }
     };
     if let Some(folder) = &args.output {
-        let mistakes_text = mistakes_text(lang, &mistakes, &reasons, graded.len());
-        write_feedback(lang, folder, &scene, args, last, &files, &graded, &mistakes_text)?;
+        // Feedback is for the students: in their language, graded again only where the table was English.
+        let class = if plain { grade_class(lang, &scene, &args.scene, &args.class, last)? } else { class.clone() };
+        write_feedback(lang, folder, (&scene, args), &class)?;
     }
     emit(out, &text)?;
     Ok(if rows.iter().all(|g| g.status == zsim::grade::Status::Ok) { Finish::Ok } else { Finish::Differs })
-}
-
-/// The answer files in the class folder: (student, buffer, path), by student
-/// then framebuffer before z-buffer. Other files are passed over.
-fn answer_files(class: &Path) -> Result<Vec<(String, Buffer, PathBuf)>, Error> {
-    let entries = std::fs::read_dir(class).map_err(|source| Error::Read { path: class.to_owned(), source })?;
-    let mut files = Vec::new();
-    for entry in entries {
-        let entry = entry.map_err(|source| Error::Read { path: class.to_owned(), source })?;
-        let name = entry.file_name().to_string_lossy().into_owned();
-        for buffer in [Buffer::Frame, Buffer::Depth] {
-            if let Some(student) = name.strip_suffix(&format!(".{}.txt", file_kind(buffer)))
-                && !student.is_empty()
-                && !student.starts_with('.')
-            {
-                files.push((student.to_string(), buffer, entry.path()));
-            }
-        }
-    }
-    if files.is_empty() {
-        return Err(zsim::Usage::NoAnswersFound { class: class.to_path_buf() }.into());
-    }
-    files.sort_by(|a, b| a.0.cmp(&b.0).then((a.1 == Buffer::Depth).cmp(&(b.1 == Buffer::Depth))));
-    Ok(files)
-}
-
-/// Each student's answers for the buffers the class hands in, read and checked for shape.
-fn submissions(
-    lang: zsim::Lang,
-    files: &[(String, Buffer, PathBuf)],
-    expected: &[(Buffer, Vec<Vec<u32>>)],
-    scene: &Scene,
-) -> Vec<Submission> {
-    let mut students: Vec<&str> = files.iter().map(|(s, _, _)| s.as_str()).collect();
-    students.dedup();
-    // Read on every core, in the student's order; messages in `lang`.
-    students
-        .into_par_iter()
-        .map(|student| {
-            let answers = expected
-                .iter()
-                .map(|(buffer, _)| {
-                    let file = files.iter().find(|(s, b, _)| s == student && b == buffer);
-                    let handed = match file {
-                        None => Handed::Missing,
-                        Some((_, _, path)) => match read_answer(lang, path, scene, *buffer, zsim::Links::Refuse) {
-                            Ok(matrix) => Handed::Matrix(matrix),
-                            Err(error) => Handed::Malformed(as_the_student_sees(lang, &error, path)),
-                        },
-                    };
-                    (*buffer, handed)
-                })
-                .collect();
-            Submission { student: printable(student).into_owned(), answers }
-        })
-        .collect()
-}
-
-/// zsim's reason for each common mistake, from one watched run.
-fn reasons(lang: zsim::Lang, scene: &Scene, last: usize, mistakes: &[CommonMistake]) -> Vec<String> {
-    let mut watcher = PixelWatcher::new(mistakes.iter().map(|m| (m.x, m.y)));
-    if !mistakes.is_empty() {
-        Simulation::new(scene).draw_through(last, &mut watcher);
-    }
-    mistakes.iter().map(|m| why(lang, scene, m.buffer, m.x, m.y, watcher.history(m.x, m.y))).collect()
 }
 
 /// A gradebook import for Moodle or Canvas, with the identity column checked
@@ -338,15 +239,12 @@ fn mistakes_text(lang: zsim::Lang, mistakes: &[CommonMistake], reasons: &[String
 fn write_feedback(
     lang: zsim::Lang,
     folder: &Path,
-    scene: &Scene,
-    args: &GradeArgs,
-    last: usize,
-    files: &[(String, Buffer, PathBuf)],
-    graded: &[(Grade, Vec<zsim::grade::WrongCells>)],
-    mistakes_text: &str,
+    (scene, args): (&Scene, &GradeArgs),
+    class: &ClassGrades,
 ) -> Result<(), Error> {
+    let last = class.last;
     let mut outputs = Vec::new();
-    for (grade, _) in graded {
+    for grade in class.rows() {
         let mut text = zsim::words!(
             lang,
             "grade-feedback",
@@ -358,13 +256,10 @@ fn write_feedback(
         ) + "\n";
         // The answers that were read, explained as `zsim check` explains them.
         let mut answers = Vec::new();
-        for (student, buffer, path) in files {
-            if printable(student) != grade.student {
-                continue;
-            }
-            match read_answer(lang, path, scene, *buffer, zsim::Links::Refuse) {
-                Ok(matrix) => answers.push((*buffer, path.as_path(), matrix)),
-                Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(lang, &error, path))),
+        for file in class.files.iter().filter(|file| printable(&file.student) == grade.student) {
+            match read_answer(lang, &file.path, scene, file.buffer, zsim::Links::Refuse) {
+                Ok(matrix) => answers.push((file.buffer, file.path.as_path(), matrix)),
+                Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(lang, &error, &file.path))),
             }
         }
         if !answers.is_empty() {
@@ -374,6 +269,7 @@ fn write_feedback(
         // does, nor is it the summary's name, whatever the student's name.
         outputs.push((format!("{}.feedback.txt", grade.student), text.into_bytes()));
     }
-    outputs.push(("common-mistakes.txt".to_string(), mistakes_text.as_bytes().to_vec()));
+    let mistakes = mistakes_text(lang, &class.mistakes, &class.reasons, class.graded.len());
+    outputs.push(("common-mistakes.txt".to_string(), mistakes.into_bytes()));
     super::write_fresh(folder, &outputs, &[&args.class])
 }

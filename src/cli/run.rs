@@ -10,10 +10,9 @@ use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use zsim::Scene;
 use zsim::Simulation;
-use zsim::Stats;
 use zsim::Unobserved;
 use zsim::arith::Arith;
-use zsim::report::{self, MatrixStyle, RunJson, StepJson};
+use zsim::report::{self, MatrixStyle, RunFigures, RunJson, StepJson};
 
 use super::{Failure, Finish, emit};
 
@@ -57,7 +56,7 @@ pub struct RunArgs {
     #[arg(long, value_enum, value_name = "API")]
     compare_gpu: Option<GpuApi>,
     /// List the cells where the scene's rules and this preset's (rogers, buet, gl or vulkan) draw differently, and why.
-    #[arg(long, value_name = "PRESET", value_parser = preset_parser)]
+    #[arg(long, value_name = "PRESET", value_parser = |text: &str| zsim::Preset::parse(super::language_of_the_run(), text))]
     compare_rules: Option<zsim::Preset>,
     /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
     #[arg(long, default_value = "exact", value_parser = |text: &str| Arith::parse(super::language_of_the_run(), text))]
@@ -126,7 +125,7 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
         return Ok(Finish::Ok);
     }
     if let Some(preset) = args.compare_rules {
-        emit(out, &compare_rules(lang, &scene, &path, preset))?;
+        emit(out, &zsim::tie::compare_rules_text(lang, &scene, &path, preset))?;
         return Ok(Finish::Ok);
     }
     if args.arith != Arith::Exact {
@@ -159,12 +158,9 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
             if final_only {
                 draw_all_but_the_last(&mut simulation, &scene, args);
             }
-            let mut before = simulation.stats();
-            while let Some(index) = simulation.draw_next(&mut Unobserved) {
-                let after = simulation.stats();
-                let polygon = &scene.polygons[index];
-                let counts = (after.tested - before.tested, after.written - before.written);
-                before = after;
+            while let Some(drawn) = simulation.draw_next_counted(&mut Unobserved) {
+                let (index, polygon) = (drawn.index, &scene.polygons[drawn.index]);
+                let counts = (drawn.tested, drawn.written);
                 if final_only && Some(index) != last {
                     continue;
                 }
@@ -197,11 +193,7 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
         Format::Json => {
             // The same object as `RunJson`, written one row at a time so that memory stays
             // near the buffers' own and a closed pipe stops the run early.
-            let empty =
-                RunJson { width: scene.width, height: scene.height, effects: scene.effects.names(), steps: Vec::new() };
-            let head = serde_json::to_string(&empty).expect("serializing plain data cannot fail");
-            let head = head.strip_suffix("]}").expect("RunJson ends with its steps list");
-            emit(out, head)?;
+            report::write_run_json_start(out, &scene)?;
             if final_only {
                 draw_all_but_the_last(&mut simulation, &scene, args);
             }
@@ -216,7 +208,7 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
                 report::write_step_json(out, &scene.polygons[index].name, simulation.buffers())?;
                 first = false;
             }
-            emit(out, "]}\n")?;
+            report::write_run_json_end(out)?;
         }
         Format::None => {
             let threads = threads(args);
@@ -245,14 +237,18 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
                 out,
                 &format!(
                     "{}\n",
-                    summary(
+                    report::run_summary(
                         lang,
                         &scene,
                         &path,
-                        simulation.stats(),
-                        simulation.buffers().memory_bytes(),
-                        (read_time, raster_time),
-                        drew,
+                        RunFigures {
+                            stats: simulation.stats(),
+                            buffers: simulation.buffers().memory_bytes(),
+                            read: read_time,
+                            raster: raster_time,
+                            threads: drew,
+                            peak: peak_resident_bytes(),
+                        },
                     )
                 ),
             )?;
@@ -325,62 +321,6 @@ fn progress_bar(long: bool, length: usize, unit: &str) -> ProgressBar {
     bar
 }
 
-/// The one-line summary: counts, effects, stages, the time spent reading and
-/// rasterizing (from clearing the buffers to the last polygon), and the memory held: the buffers' cells, the scene, and the
-/// process's peak resident size (where the system tells it).
-fn summary(
-    lang: zsim::Lang,
-    scene: &Scene,
-    path: &str,
-    stats: Stats,
-    buffers: u64,
-    (read, raster): (Duration, Duration),
-    threads: usize,
-) -> String {
-    let effects = scene.effects.names();
-    let rate = stats.tested as f64 / raster.as_secs_f64().max(1e-9) / 1e6;
-    let scene_bytes = scene.memory_bytes();
-    // The ratio means something only where the buffers and the scene dominate the
-    // process (from 16 MiB); below, the program itself is most of the peak.
-    let peak = match peak_resident_bytes() {
-        Some(peak) if buffers + scene_bytes >= 16 << 20 => zsim::words!(
-            lang,
-            "run-summary-peak-ratio",
-            peak = bytes(peak),
-            ratio = format!("{:.2}", peak as f64 / (buffers + scene_bytes) as f64)
-        ),
-        Some(peak) => zsim::words!(lang, "run-summary-peak", peak = bytes(peak)),
-        None => String::new(),
-    };
-    zsim::words!(
-        lang,
-        "run-summary",
-        path = path,
-        polygons = stats.polygons.to_string(),
-        tested = stats.tested.to_string(),
-        written = stats.written.to_string(),
-        effects = if effects.is_empty() { zsim::words!(lang, "run-summary-no-effects") } else { effects.join(", ") },
-        stages = zsim::describe(lang, scene).join(" → "),
-        read = format!("{:.1}", read.as_secs_f64() * 1000.0),
-        raster = format!("{:.1}", raster.as_secs_f64() * 1000.0),
-        threads = threads,
-        rate = format!("{rate:.1}"),
-        buffers = bytes(buffers),
-        scene = bytes(scene_bytes),
-        peak = peak
-    )
-}
-
-/// A size in KiB (below 1 MiB) or MiB, one decimal.
-fn bytes(count: u64) -> String {
-    const KIB: f64 = 1024.0;
-    if (count as f64) < KIB * KIB {
-        format!("{:.1} KiB", count as f64 / KIB)
-    } else {
-        format!("{:.1} MiB", count as f64 / (KIB * KIB))
-    }
-}
-
 /// The process's peak resident size so far, from `/proc/self/status`
 /// (`VmHWM`); `None` where there is no such file (systems other than Linux).
 fn peak_resident_bytes() -> Option<u64> {
@@ -419,7 +359,15 @@ fn run_inexact(
             emit(out, &format!("{}\n", serde_json::to_string(&json).expect("serializing plain data cannot fail")))?;
         }
         Format::None => {
-            let text = summary(lang, scene, path, stats, buffers.memory_bytes(), (read_time, raster_time), 1);
+            let figures = RunFigures {
+                stats,
+                buffers: buffers.memory_bytes(),
+                read: read_time,
+                raster: raster_time,
+                threads: 1,
+                peak: peak_resident_bytes(),
+            };
+            let text = report::run_summary(lang, scene, path, figures);
             emit(out, &format!("{text}{}\n", zsim::words!(lang, "run-summary-arith", arith = args.arith.to_string())))?;
         }
         Format::Text => {
@@ -458,100 +406,4 @@ enum GpuApi {
     Gl,
     /// Vulkan (Mesa's lavapipe where no GPU is present), in a zsim built with the `vulkan` feature.
     Vulkan,
-}
-
-fn preset_parser(text: &str) -> Result<zsim::Preset, String> {
-    serde_json::from_value(serde_json::Value::String(text.to_string())).map_err(|_| {
-        format!("\"{text}\" is not a rule preset: use rogers, buet, gl, vulkan (d3d, webgpu) or tinyrenderer")
-    })
-}
-
-/// `--compare-rules`: the cells two rule sets draw differently, each with the
-/// polygons covering it and the edge its centre lies on.
-fn compare_rules(lang: zsim::Lang, scene: &Scene, path: &str, preset: zsim::Preset) -> String {
-    use std::fmt::Write as _;
-    // An exact z-buffer stays exact (BUET's); otherwise the preset's whole rules, depth included.
-    let other = match scene.rules.store {
-        zsim::DepthStore::Exact => zsim::Rules { store: zsim::DepthStore::Exact, ..zsim::Rules::preset(preset) },
-        _ => zsim::Rules::preset(preset),
-    };
-    let differences = zsim::tie::compare_rules(scene, other);
-    let mut text = format!(
-        "{path}\n  {}\n  {}\n",
-        zsim::words!(lang, "compare-rules-this", rules = scene.rules.describe(lang)),
-        zsim::words!(lang, "compare-rules-other", rules = other.describe(lang))
-    );
-    if differences.is_empty() {
-        text.push_str(&format!("{}\n", zsim::words!(lang, "compare-rules-same")));
-        return text;
-    }
-    let _ = writeln!(text, "{}", zsim::words!(lang, "compare-rules-differ", count = differences.len()));
-    let names = |list: &[usize]| -> String {
-        if list.is_empty() {
-            return zsim::words!(lang, "compare-rules-nothing");
-        }
-        let names: Vec<String> = list.iter().map(|&i| format!("\"{}\"", scene.polygons[i].name)).collect();
-        names.join(&zsim::words!(lang, "list-and"))
-    };
-    let point = |[x, y]: &[zsim::Exact; 2]| format!("({}, {})", zsim::fraction(x), zsim::fraction(y));
-    for d in &differences {
-        let line = zsim::words!(
-            lang,
-            "compare-rules-cell",
-            x = d.x.to_string(),
-            y = d.y.to_string(),
-            before = d.values.0.to_string(),
-            after = d.values.1.to_string(),
-            covering = names(&d.covering.0),
-            rules = preset_name(lang, scene.rules.preset),
-            other_covering = names(&d.covering.1),
-            other_rules = preset_name(lang, preset)
-        );
-        let _ = writeln!(text, "  {line}");
-        for (polygon, boundary, a, b) in &d.ties {
-            let name = &scene.polygons[*polygon].name;
-            if *boundary == zsim::tie::Boundary::Vertex {
-                let line = zsim::words!(
-                    lang,
-                    "compare-rules-vertex",
-                    x = d.x.to_string(),
-                    y = d.y.to_string(),
-                    vertex = point(a),
-                    name = name.as_str()
-                );
-                let _ = writeln!(text, "      {line}");
-                continue;
-            }
-            let verdict = |rules: zsim::Rules| match zsim::tie::rule_covers(rules, *boundary) {
-                Some(true) => zsim::words!(lang, "compare-rules-covered"),
-                _ => zsim::words!(lang, "compare-rules-left-out"),
-            };
-            let line = zsim::words!(
-                lang,
-                "compare-rules-edge",
-                x = d.x.to_string(),
-                y = d.y.to_string(),
-                boundary = boundary.words(lang),
-                name = name.as_str(),
-                from = point(a),
-                to = point(b),
-                verdict = verdict(scene.rules),
-                rules = preset_name(lang, scene.rules.preset),
-                other_verdict = verdict(other),
-                other_rules = preset_name(lang, preset)
-            );
-            let _ = writeln!(text, "      {line}");
-        }
-    }
-    text
-}
-
-fn preset_name(lang: zsim::Lang, preset: zsim::Preset) -> String {
-    match preset {
-        zsim::Preset::Rogers => zsim::words!(lang, "preset-rogers"),
-        zsim::Preset::Buet => zsim::words!(lang, "preset-buet"),
-        zsim::Preset::Gl => zsim::words!(lang, "preset-gl"),
-        zsim::Preset::Vulkan => zsim::words!(lang, "preset-vulkan"),
-        zsim::Preset::Tinyrenderer => zsim::words!(lang, "preset-tinyrenderer"),
-    }
 }

@@ -239,7 +239,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             self.pixel = Some(done + 1);
             return;
         }
-        let moved = self.stepper.next();
+        let moved = self.stepper.forward();
         self.moved(moved);
     }
 

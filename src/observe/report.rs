@@ -337,9 +337,117 @@ pub struct StepJson {
     pub depth: Vec<Vec<Stored>>,
 }
 
+/// What a run measured, for its summary.
+#[derive(Debug, Clone, Copy)]
+pub struct RunFigures {
+    /// Polygons, tested centres and written pixels.
+    pub stats: crate::simulate::setup::Stats,
+    /// Bytes of the buffers' cells.
+    pub buffers: u64,
+    /// Reading the scene.
+    pub read: std::time::Duration,
+    /// Rasterizing: from clearing the buffers to the last polygon.
+    pub raster: std::time::Duration,
+    /// Threads that drew.
+    pub threads: usize,
+    /// The process's peak resident size, where the system tells it.
+    pub peak: Option<u64>,
+}
+
+/// `run --format none`'s one line: counts, effects, stages, the time spent
+/// reading and rasterizing, and the memory held: the buffers' cells, the
+/// scene, and the process's peak resident size (where the system tells it).
+/// The caller measures the times (a clock is the front end's: WebAssembly
+/// has none).
+pub fn run_summary(lang: Lang, scene: &Scene, path: &str, figures: RunFigures) -> String {
+    let RunFigures { stats, buffers, read, raster, threads, peak } = figures;
+    let effects = scene.effects.names();
+    let rate = stats.tested as f64 / raster.as_secs_f64().max(1e-9) / 1e6;
+    let scene_bytes = scene.memory_bytes();
+    // The ratio means something only where the buffers and the scene dominate the
+    // process (from 16 MiB); below, the program itself is most of the peak.
+    let peak = match peak {
+        Some(peak) if buffers + scene_bytes >= 16 << 20 => words!(
+            lang,
+            "run-summary-peak-ratio",
+            peak = bytes(peak),
+            ratio = format!("{:.2}", peak as f64 / (buffers + scene_bytes) as f64)
+        ),
+        Some(peak) => words!(lang, "run-summary-peak", peak = bytes(peak)),
+        None => String::new(),
+    };
+    words!(
+        lang,
+        "run-summary",
+        path = path,
+        polygons = stats.polygons.to_string(),
+        tested = stats.tested.to_string(),
+        written = stats.written.to_string(),
+        effects = if effects.is_empty() { words!(lang, "run-summary-no-effects") } else { effects.join(", ") },
+        stages = stages(lang, scene).join(" → "),
+        read = format!("{:.1}", read.as_secs_f64() * 1000.0),
+        raster = format!("{:.1}", raster.as_secs_f64() * 1000.0),
+        threads = threads,
+        rate = format!("{rate:.1}"),
+        buffers = bytes(buffers),
+        scene = bytes(scene_bytes),
+        peak = peak
+    )
+}
+
+/// A size in KiB (below 1 MiB) or MiB, one decimal.
+fn bytes(count: u64) -> String {
+    const KIB: f64 = 1024.0;
+    if (count as f64) < KIB * KIB {
+        format!("{:.1} KiB", count as f64 / KIB)
+    } else {
+        format!("{:.1} MiB", count as f64 / (KIB * KIB))
+    }
+}
+
+/// Writes the start of a [`RunJson`] for `scene`, up to its open `steps`
+/// list, exactly as serde_json writes the whole object (compact): the steps
+/// follow one by one ([`write_step_json`], comma-separated), then
+/// [`write_run_json_end`], so that a large run is streamed a polygon at a
+/// time (`run_json_streamed_is_run_json`).
+pub fn write_run_json_start(out: &mut dyn std::io::Write, scene: &Scene) -> std::io::Result<()> {
+    let effects = serde_json::to_string(&scene.effects.names()).expect("names serialize");
+    write!(out, "{{\"width\":{},\"height\":{},\"effects\":{effects},\"steps\":[", scene.width, scene.height)
+}
+
+/// Ends what [`write_run_json_start`] began, with a line break.
+pub fn write_run_json_end(out: &mut dyn std::io::Write) -> std::io::Result<()> {
+    out.write_all(b"]}\n")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The streamed object is the one serde_json writes whole.
+    #[test]
+    fn run_json_streamed_is_run_json() {
+        let scene = Scene::from_json(
+            Lang::En,
+            r#"{"width": 3, "height": 2, "polygons": [{"name": "a\"b", "value": 1, "vertices": [[0, 0, 5], [3, 0, 5], [0, 2, 5]]}]}"#,
+            std::path::Path::new("s.json"),
+        )
+        .unwrap();
+        let mut simulation = crate::simulate::simulation::Simulation::new(&scene);
+        simulation.finish(&mut crate::simulate::events::Unobserved);
+        let buffers = simulation.buffers();
+        let mut streamed = Vec::new();
+        write_run_json_start(&mut streamed, &scene).unwrap();
+        write_step_json(&mut streamed, "a\"b", buffers).unwrap();
+        write_run_json_end(&mut streamed).unwrap();
+        let whole = RunJson {
+            width: 3,
+            height: 2,
+            effects: scene.effects.names(),
+            steps: vec![StepJson { polygon: "a\"b".into(), frame: buffers.frame_rows(), depth: buffers.depth_rows() }],
+        };
+        assert_eq!(String::from_utf8(streamed).unwrap(), serde_json::to_string(&whole).unwrap() + "\n");
+    }
 
     /// Found by a new user: with `"store": "exact"` and `"clear_depth": 1` the
     /// heading said "cleared to 15" while the buffer held 1.

@@ -11,7 +11,7 @@ use num_traits::Zero;
 use crate::numbers::{Exact, Q};
 use crate::raster::convert::{Scratch, rasterize};
 use crate::raster::sink::{CoveredCentres, PixelRect};
-use crate::rules::{Rules, Sample};
+use crate::rules::{Preset, Rules, Sample};
 use crate::scene::Scene;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
@@ -224,6 +224,86 @@ pub fn tie_text(lang: Lang, rules: Rules, vertices: &[[Exact; 3]], x: u32, y: u3
             rule = deciding_rule(lang, rules, boundary)
         ),
     })
+}
+
+/// `--compare-rules` in words: the cells two rule sets draw differently,
+/// each with the polygons covering it and the edge its centre lies on.
+pub fn compare_rules_text(lang: Lang, scene: &Scene, path: &str, preset: Preset) -> String {
+    use std::fmt::Write as _;
+    // An exact z-buffer stays exact (BUET's); otherwise the preset's whole rules, depth included.
+    let other = match scene.rules.store {
+        crate::rules::DepthStore::Exact => Rules { store: crate::rules::DepthStore::Exact, ..Rules::preset(preset) },
+        _ => Rules::preset(preset),
+    };
+    let differences = compare_rules(scene, other);
+    let mut text = format!(
+        "{path}\n  {}\n  {}\n",
+        words!(lang, "compare-rules-this", rules = scene.rules.describe(lang)),
+        words!(lang, "compare-rules-other", rules = other.describe(lang))
+    );
+    if differences.is_empty() {
+        text.push_str(&format!("{}\n", words!(lang, "compare-rules-same")));
+        return text;
+    }
+    let _ = writeln!(text, "{}", words!(lang, "compare-rules-differ", count = differences.len()));
+    let names = |list: &[usize]| -> String {
+        if list.is_empty() {
+            return words!(lang, "compare-rules-nothing");
+        }
+        let names: Vec<String> = list.iter().map(|&i| format!("\"{}\"", scene.polygons[i].name)).collect();
+        names.join(&words!(lang, "list-and"))
+    };
+    let point = |[x, y]: &[Exact; 2]| format!("({}, {})", crate::numbers::fraction(x), crate::numbers::fraction(y));
+    for d in &differences {
+        let line = words!(
+            lang,
+            "compare-rules-cell",
+            x = d.x.to_string(),
+            y = d.y.to_string(),
+            before = d.values.0.to_string(),
+            after = d.values.1.to_string(),
+            covering = names(&d.covering.0),
+            rules = scene.rules.preset.name(lang),
+            other_covering = names(&d.covering.1),
+            other_rules = preset.name(lang)
+        );
+        let _ = writeln!(text, "  {line}");
+        for (polygon, boundary, a, b) in &d.ties {
+            let name = &scene.polygons[*polygon].name;
+            if *boundary == Boundary::Vertex {
+                let line = words!(
+                    lang,
+                    "compare-rules-vertex",
+                    x = d.x.to_string(),
+                    y = d.y.to_string(),
+                    vertex = point(a),
+                    name = name.as_str()
+                );
+                let _ = writeln!(text, "      {line}");
+                continue;
+            }
+            let verdict = |rules: Rules| match rule_covers(rules, *boundary) {
+                Some(true) => words!(lang, "compare-rules-covered"),
+                _ => words!(lang, "compare-rules-left-out"),
+            };
+            let line = words!(
+                lang,
+                "compare-rules-edge",
+                x = d.x.to_string(),
+                y = d.y.to_string(),
+                boundary = boundary.words(lang),
+                name = name.as_str(),
+                from = point(a),
+                to = point(b),
+                verdict = verdict(scene.rules),
+                rules = scene.rules.preset.name(lang),
+                other_verdict = verdict(other),
+                other_rules = preset.name(lang)
+            );
+            let _ = writeln!(text, "      {line}");
+        }
+    }
+    text
 }
 
 #[cfg(test)]

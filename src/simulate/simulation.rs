@@ -14,6 +14,17 @@ use crate::simulate::setup::{Stats, fate, prefetch_ahead};
 use crate::simulate::stages::{PixelStages, Plain, StageSet, WithEffects};
 use crate::simulate::tiles::{Tiles, Tiling, bins, pool};
 
+/// One polygon drawn, with its own counts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Drawn {
+    /// 0-based polygon index.
+    pub index: usize,
+    /// Covered pixel centres whose depth it tested.
+    pub tested: u64,
+    /// Pixels it wrote.
+    pub written: u64,
+}
+
 /// A scene being drawn, one polygon at a time.
 #[derive(Debug, Clone)]
 pub struct Simulation<'s> {
@@ -99,6 +110,14 @@ impl<'s> Simulation<'s> {
     /// The counts so far.
     pub fn stats(&self) -> Stats {
         self.stats
+    }
+
+    /// Draws the next polygon as [`Simulation::draw_next`] does, and says
+    /// what it alone tested and wrote.
+    pub fn draw_next_counted<O: Observer>(&mut self, observer: &mut O) -> Option<Drawn> {
+        let before = self.stats;
+        let index = self.draw_next(observer)?;
+        Some(Drawn { index, tested: self.stats.tested - before.tested, written: self.stats.written - before.written })
     }
 
     /// Draws the next polygon; returns its index, or `None` when all are done.

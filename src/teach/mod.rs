@@ -3,6 +3,7 @@
 //! named (`diagnose`), and the stepper's teaching model (`step`: stops,
 //! moves, the quiz and its judge). Imports: observe and the layers before it.
 pub mod check;
+pub mod class;
 pub mod diagnose;
 pub mod exercise;
 pub mod grade;

@@ -43,7 +43,7 @@ pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
             "frame": buffers.frame_rows(),
             "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
         }));
-        moved = stepper.next();
+        moved = stepper.forward();
     }
     // The page's words, in the student's language; {…} marks what the script fills in.
     let words = serde_json::json!({

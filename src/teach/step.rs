@@ -129,7 +129,7 @@ impl<'s> Stepper<'s> {
     }
 
     /// The next stop (or the end).
-    pub fn next(&mut self) -> Moved {
+    pub fn forward(&mut self) -> Moved {
         match self.at {
             Some(stop) => {
                 let (next, skipped) = self.tracer.next_stop(Some(stop));
@@ -335,7 +335,7 @@ pub struct Verdict {
 #[derive(Debug, Clone)]
 pub enum Reply {
     /// Judged and scored.
-    Judged(Verdict),
+    Judged(Box<Verdict>),
     /// Not an answer to this question: why, and the question stays.
     AskAgain(String),
 }
@@ -437,7 +437,7 @@ impl Quiz {
         } else {
             self.mistakes.push(mistake_text(lang, scene, &verdict));
         }
-        Some(Reply::Judged(verdict))
+        Some(Reply::Judged(Box::new(verdict)))
     }
 
     /// Each mistake, with what was right and why.
@@ -711,7 +711,7 @@ mod tests {
         stepper.start(None);
         assert_eq!(stepper.back(), Moved::Refused(Refusal::First));
         while stepper.at().is_some() {
-            stepper.next();
+            stepper.forward();
         }
         let Moved::To { at: Some(last), .. } = stepper.back() else { panic!("no last stop") };
         assert_eq!(last.polygon, scene.polygons.len() - 1);

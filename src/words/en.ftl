@@ -861,3 +861,4 @@ quiz-frame-hint = type the value the framebuffer will hold, or - for not written
 quiz-frame-prompt = pixel ({ $x }, { $y }), framebuffer { $before }: framebuffer after?{ " " }
 quiz-frame-does-not-fit = { $text } does not fit this framebuffer: its cells hold whole values 0 … { $max }; type again
 tui-quiz-frame-ask = quiz: the framebuffer after ({ $x }, { $y }), now { $before }? (a value, or - for not written; Enter) { $typed }▏
+usage-not-a-preset = "{ $text }" is not a rule preset: use rogers, buet, gl, vulkan (d3d, webgpu) or tinyrenderer

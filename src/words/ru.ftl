@@ -838,3 +838,4 @@ quiz-frame-hint = введите значение, которое будет в 
 quiz-frame-prompt = пиксел ({ $x }, { $y }), в буфере кадра { $before }: что в буфере кадра после?{ " " }
 quiz-frame-does-not-fit = { $text } не помещается в этот буфер кадра: его ячейки хранят целые значения 0 … { $max }; введите снова
 tui-quiz-frame-ask = опрос: что будет в буфере кадра после ({ $x }, { $y }), сейчас { $before }? (значение или - если не записывается; Enter) { $typed }▏
+usage-not-a-preset = «{ $text }» — не набор правил: используйте rogers, buet, gl, vulkan (d3d, webgpu) или tinyrenderer

@@ -838,3 +838,4 @@ quiz-frame-hint = введіть значення, яке буде в буфер
 quiz-frame-prompt = піксель ({ $x }, { $y }), у буфері кадру { $before }: що в буфері кадру після?{ " " }
 quiz-frame-does-not-fit = { $text } не вміщується в цей буфер кадру: його комірки зберігають цілі значення 0 … { $max }; введіть знову
 tui-quiz-frame-ask = опитування: що буде в буфері кадру після ({ $x }, { $y }), зараз { $before }? (значення або - якщо не записується; Enter) { $typed }▏
+usage-not-a-preset = «{ $text }» — не набір правил: використовуйте rogers, buet, gl, vulkan (d3d, webgpu) або tinyrenderer

@@ -801,3 +801,4 @@ quiz-frame-hint = 请输入帧缓冲器将保存的值，不写入则输入 -（
 quiz-frame-prompt = 像素 ({ $x }, { $y })，帧缓冲器原值 { $before }：之后帧缓冲器中是多少？{ " " }
 quiz-frame-does-not-fit = { $text } 放不进这个帧缓冲器：它的单元只存 0 … { $max } 的整数；请重新输入
 tui-quiz-frame-ask = 测验：({ $x }, { $y }) 之后帧缓冲器中是多少？原值 { $before }（输入数值，不写入则输入 -；Enter）{ $typed }▏
+usage-not-a-preset = “{ $text }” 不是规则预设：请用 rogers、buet、gl、vulkan（d3d、webgpu）或 tinyrenderer

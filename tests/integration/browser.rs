@@ -115,7 +115,7 @@ fn the_step_page_is_clicked_and_typed_through_as_the_library_judges() {
     let mut stepper = Stepper::new(&scene, zsim::arith::Arith::Exact);
     stepper.start(None);
     while stepper.record().is_some_and(|r| r.index != 1 || r.row != 15) {
-        assert!(matches!(stepper.next(), Moved::To { at: Some(_), .. }));
+        assert!(matches!(stepper.forward(), Moved::To { at: Some(_), .. }));
     }
     let pixels = stepper.record().unwrap().pixels.clone();
     let typed = ["15", "10", "zz", "24/2", "12.0", "1.1e1", "-", "16", "10.5", "", "", "", ""];

@@ -1,0 +1,152 @@
+//! A class graded in one pass: the answer files of a class folder found and
+//! read on every core, each student graded against the buffers after the
+//! chosen polygon, the cells most students got wrong, and zsim's reason for
+//! each. The command line's table, the gradebook formats and the feedback
+//! files all render this one result.
+
+use std::path::{Path, PathBuf};
+
+use rayon::prelude::*;
+
+use crate::error::{Error, Task, Usage};
+use crate::observe::check::Matrix;
+use crate::observe::explain::{Buffer, why};
+use crate::observe::trace::PixelWatcher;
+use crate::scene::Scene;
+use crate::scene::text::{Links, printable};
+use crate::simulate::simulation::Simulation;
+use crate::teach::check::{as_the_student_sees, read_answer};
+use crate::teach::diagnose::Diagnoser;
+use crate::teach::grade::{CommonMistake, Grade, Handed, Submission, WrongCells, common_mistakes, file_kind, grade};
+use crate::words::Lang;
+
+/// How many common mistakes are listed.
+pub const MISTAKES_LISTED: usize = 10;
+
+/// One answer file of a class folder.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct AnswerFile {
+    /// The student: the file name's stem, as found.
+    pub student: String,
+    /// The buffer it answers for.
+    pub buffer: Buffer,
+    /// Where it is.
+    pub path: PathBuf,
+}
+
+/// A class graded: each student's row with the wrong cells, the common
+/// mistakes and zsim's reason for each (in the language graded in).
+#[derive(Debug, Clone)]
+pub struct ClassGrades {
+    /// The polygon (0-based) the answers are the state after.
+    pub last: usize,
+    /// The answer files found, by student, the framebuffer's first.
+    pub files: Vec<AnswerFile>,
+    /// Each student's grade and wrong cells, in the students' order.
+    pub graded: Vec<(Grade, Vec<WrongCells>)>,
+    /// The cells at least two students got wrong, most first.
+    pub mistakes: Vec<CommonMistake>,
+    /// zsim's reason for each common mistake.
+    pub reasons: Vec<String>,
+}
+
+impl ClassGrades {
+    /// The students' rows.
+    pub fn rows(&self) -> Vec<&Grade> {
+        self.graded.iter().map(|(grade, _)| grade).collect()
+    }
+}
+
+/// Grades the answers in `class` for the state after polygon `last` of
+/// `scene` (read from `scene_path`), messages in `lang`.
+pub fn grade_class(
+    lang: Lang,
+    scene: &Scene,
+    scene_path: &Path,
+    class: &Path,
+    last: usize,
+) -> Result<ClassGrades, Error> {
+    let files = answer_files(class)?;
+    let mut simulation = Simulation::new(scene);
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    simulation.draw_parallel_through(last, simulation.default_tile(threads), threads, &|| {});
+    let mut expected = Vec::new();
+    for buffer in [Buffer::Frame, Buffer::Depth] {
+        if !files.iter().any(|file| file.buffer == buffer) {
+            continue;
+        }
+        let matrix = match buffer {
+            Buffer::Frame => simulation.buffers().frame_rows(),
+            Buffer::Depth => simulation.buffers().depth_level_rows().ok_or_else(|| {
+                Error::from(Usage::ExactDepthsHaveNoMatrix { path: scene_path.to_owned(), task: Task::Grade })
+            })?,
+        };
+        expected.push((buffer, matrix));
+    }
+    // The usual wrong rules, drawn once for the whole class.
+    let diagnoser = Diagnoser::new(scene, last);
+    let graded = grade(&submissions(lang, &files, &expected, scene), &expected, diagnoser.as_ref());
+    let mistakes = common_mistakes(&graded, MISTAKES_LISTED);
+    let reasons = reasons(lang, scene, last, &mistakes);
+    Ok(ClassGrades { last, files, graded, mistakes, reasons })
+}
+
+/// The answer files in the class folder, by student then framebuffer before
+/// z-buffer. Other files are passed over.
+fn answer_files(class: &Path) -> Result<Vec<AnswerFile>, Error> {
+    let entries = std::fs::read_dir(class).map_err(|source| Error::Read { path: class.to_owned(), source })?;
+    let mut files = Vec::new();
+    for entry in entries {
+        let entry = entry.map_err(|source| Error::Read { path: class.to_owned(), source })?;
+        let name = entry.file_name().to_string_lossy().into_owned();
+        for buffer in [Buffer::Frame, Buffer::Depth] {
+            if let Some(student) = name.strip_suffix(&format!(".{}.txt", file_kind(buffer)))
+                && !student.is_empty()
+                && !student.starts_with('.')
+            {
+                files.push(AnswerFile { student: student.to_string(), buffer, path: entry.path() });
+            }
+        }
+    }
+    if files.is_empty() {
+        return Err(Usage::NoAnswersFound { class: class.to_path_buf() }.into());
+    }
+    files.sort_by(|a, b| a.student.cmp(&b.student).then((a.buffer == Buffer::Depth).cmp(&(b.buffer == Buffer::Depth))));
+    Ok(files)
+}
+
+/// Each student's answers for the buffers the class hands in, read on every
+/// core and checked for shape, in the students' order.
+fn submissions(lang: Lang, files: &[AnswerFile], expected: &[(Buffer, Matrix)], scene: &Scene) -> Vec<Submission> {
+    let mut students: Vec<&str> = files.iter().map(|file| file.student.as_str()).collect();
+    students.dedup();
+    students
+        .into_par_iter()
+        .map(|student| {
+            let answers = expected
+                .iter()
+                .map(|(buffer, _)| {
+                    let file = files.iter().find(|file| file.student == student && file.buffer == *buffer);
+                    let handed = match file {
+                        None => Handed::Missing,
+                        Some(file) => match read_answer(lang, &file.path, scene, *buffer, Links::Refuse) {
+                            Ok(matrix) => Handed::Matrix(matrix),
+                            Err(error) => Handed::Malformed(as_the_student_sees(lang, &error, &file.path)),
+                        },
+                    };
+                    (*buffer, handed)
+                })
+                .collect();
+            Submission { student: printable(student).into_owned(), answers }
+        })
+        .collect()
+}
+
+/// zsim's reason for each common mistake, from one watched run.
+fn reasons(lang: Lang, scene: &Scene, last: usize, mistakes: &[CommonMistake]) -> Vec<String> {
+    let mut watcher = PixelWatcher::new(mistakes.iter().map(|m| (m.x, m.y)));
+    if !mistakes.is_empty() {
+        Simulation::new(scene).draw_through(last, &mut watcher);
+    }
+    mistakes.iter().map(|m| why(lang, scene, m.buffer, m.x, m.y, watcher.history(m.x, m.y))).collect()
+}
