@@ -145,5 +145,5 @@ pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, Sc
 pub use simulate::setup::{Stats, fate};
 pub use simulate::simulation::{Drawn, Simulation};
 pub use simulate::stages::{StageSet, describe};
-pub use teach::{check, class, diagnose, exercise, grade, gradebooks, gradescope, page, step};
+pub use teach::{check, class, diagnose, exercise, grade, gradebooks, gradescope, page, step, stop};
 pub use words::{Arg, Lang, localize_decimal, polygon_label, text as message, token};

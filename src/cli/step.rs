@@ -7,11 +7,11 @@ use std::path::PathBuf;
 use clap::Args;
 use comfy_table::{Cell, Color, Table, presets};
 use zsim::Error;
-use zsim::explain::{depth_text, fate_text, polygon_name, scanline_text};
+use zsim::explain::{fate_text, polygon_name, scanline_text};
 use zsim::report::{self, MatrixStyle};
 use zsim::step::{Moved, Question, Quiz, Reply, Stepper, skip_text};
-use zsim::{Exact, Q, exact_and_decimal, fraction};
-use zsim::{Outcome, PixelEvent, Scene, Stop};
+use zsim::{exact_and_decimal, fraction};
+use zsim::{PixelEvent, Scene, Stop};
 
 use super::{Failure, Finish, emit};
 
@@ -408,75 +408,14 @@ fn stop_text(lang: zsim::Lang, stepper: &mut Stepper<'_>, stop: Stop, color: boo
         crossings.join(&zsim::words!(lang, "list-comma"))
     };
     text.push_str(&format!("{}\n", zsim::words!(lang, "step-crossings", list = list)));
-    for (n, span) in record.spans.iter().enumerate() {
-        let columns = match span.columns {
-            Some((first, last)) => {
-                zsim::words!(lang, "step-columns", first = first.to_string(), last = last.to_string())
-            }
-            None => zsim::words!(lang, "step-no-column"),
-        };
-        let depth = |z: &Option<Exact>| {
-            z.as_ref().map_or_else(|| zsim::words!(lang, "z-beyond"), |z| depth_text(lang, scene, z))
-        };
-        let line = zsim::words!(
-            lang,
-            "step-span",
-            n = (n + 1).to_string(),
-            xa = exact_and_decimal(lang, &span.left),
-            za = depth(&span.left_depth),
-            xb = exact_and_decimal(lang, &span.right),
-            zb = depth(&span.right_depth),
-            columns = columns
-        );
+    for line in zsim::stop::span_lines(lang, scene, &record) {
         text.push_str(&format!("{line}\n"));
     }
     if !record.pixels.is_empty() {
         text.push_str(&format!("{}\n", pixel_table(lang, scene, &record.pixels, color)));
     }
-    // Centres exactly on the polygon's boundary along this scanline, and the rule deciding each.
-    for x in 0..scene.width {
-        if let Some(tie) = zsim::tie::tie_text(lang, scene.rules, &scene.polygons[p].vertices(), x, record.row) {
-            text.push_str(&format!("{}\n", zsim::words!(lang, "step-tie", x = x.to_string(), text = tie)));
-        }
-    }
-    if let zsim::arith::Arith::Fixed(bits) = stepper.arith() {
-        let line = zsim::words!(lang, "step-fixed", bits = bits.to_string(), unit = (1u64 << bits).to_string());
+    for line in zsim::stop::notes(lang, scene, p, &record, stepper.arith()) {
         text.push_str(&format!("{line}\n"));
-    }
-    if let Some(float) = zsim::arith::float_scanline(scene, p, record.row, stepper.arith()) {
-        let crossings: Vec<String> = float.crossings.iter().map(|x| format!("{x:.9}")).collect();
-        let pixels: Vec<String> = float
-            .pixels
-            .iter()
-            .map(|(x, z)| {
-                let exact = record.pixels.iter().find(|e| e.x == *x).map(|e| e.depth.value());
-                let note = match exact {
-                    Some(e) => zsim::words!(lang, "step-float-exact", z = zsim::decimal(e, 9)),
-                    None => zsim::words!(lang, "step-float-not-exact"),
-                };
-                format!("x = {x}: z = {z:.9} ({note})")
-            })
-            .collect();
-        let missed: Vec<String> = record
-            .pixels
-            .iter()
-            .filter(|e| !float.pixels.iter().any(|(x, _)| *x == e.x))
-            .map(|e| e.x.to_string())
-            .collect();
-        let found = match float.bounding_columns {
-            Some((first, last)) => {
-                zsim::words!(lang, "step-float-edges", first = first.to_string(), last = last.to_string())
-            }
-            None if crossings.is_empty() => zsim::words!(lang, "step-float-no-crossings"),
-            None => zsim::words!(lang, "step-float-crossings", crossings = crossings.join(", ")),
-        };
-        let heading = zsim::words!(lang, "step-float-heading", arith = stepper.arith().to_string(), found = found);
-        let pixels = if pixels.is_empty() { zsim::words!(lang, "step-float-no-pixel") } else { pixels.join("\n  ") };
-        text.push_str(&format!("{heading}\n  {pixels}\n"));
-        if !missed.is_empty() {
-            let line = zsim::words!(lang, "step-float-missed", columns = missed.join(", "));
-            text.push_str(&format!("  {line}\n"));
-        }
     }
     let buffers = stepper.tracer().buffers_after(stop);
     let low = record.row.saturating_sub(2);
@@ -498,67 +437,22 @@ fn stop_text(lang: zsim::Lang, stepper: &mut Stepper<'_>, stop: Stop, color: boo
 
 fn pixel_table(lang: zsim::Lang, scene: &Scene, pixels: &[PixelEvent], color: bool) -> Table {
     let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_header([
-        "x".to_string(),
-        zsim::words!(lang, "step-col-centre"),
-        "z".to_string(),
-        "≈ z".to_string(),
-        zsim::words!(lang, "step-col-step"),
-        zsim::words!(lang, "step-col-stored"),
-        zsim::words!(lang, "step-col-test"),
-        zsim::words!(lang, "step-col-after"),
-        zsim::words!(lang, "step-col-frame"),
-    ]);
-    let depth_test = scene.depth_test;
-    let op = depth_test.symbol();
-    for (i, pixel) in pixels.iter().enumerate() {
-        let z = pixel.depth.value();
-        let step = match i.checked_sub(1).map(|j| &pixels[j]) {
-            Some(previous) if previous.x + 1 == pixel.x => fraction(z.minus(&previous.depth.value())),
-            _ => zsim::words!(lang, "step-start"),
-        };
-        // `always` and `never` compare nothing: they say so instead of a symbol.
-        let uncompared = |passed| depth_test.outcome_text(lang, &fraction(&z), &pixel.stored_before.text(lang), passed);
-        let test = match pixel.outcome {
-            Outcome::Written if !depth_test.compares() => zsim::words!(lang, "step-written", test = uncompared(true)),
-            Outcome::Hidden if !depth_test.compares() => zsim::words!(lang, "step-hidden", test = uncompared(false)),
-            Outcome::Written => {
-                zsim::words!(
-                    lang,
-                    "step-test-written",
-                    z = fraction(&z),
-                    op = op,
-                    stored = pixel.stored_before.text(lang)
-                )
-            }
-            Outcome::Hidden => {
-                zsim::words!(
-                    lang,
-                    "step-test-hidden",
-                    z = fraction(&z),
-                    op = op,
-                    stored = pixel.stored_before.text(lang)
-                )
-            }
-            Outcome::BeyondSection => {
-                zsim::words!(lang, "step-beyond-section", op = op, stored = pixel.stored_before.text(lang))
-            }
-            Outcome::OutsideDepthRange => zsim::words!(lang, "step-outside-range", z = fraction(&z)),
-        };
-        let mut test = Cell::new(test);
+    table.load_style(presets::ASCII_MARKDOWN).set_header(zsim::stop::pixel_header(lang));
+    for row in zsim::stop::pixel_rows(lang, scene, pixels) {
+        let mut test = Cell::new(row.test);
         if color {
-            test = test.fg(if pixel.outcome == Outcome::Written { Color::Green } else { Color::Red });
+            test = test.fg(if row.written { Color::Green } else { Color::Red });
         }
         table.add_row(vec![
-            Cell::new(pixel.x),
-            Cell::new(exact_and_decimal(lang, Q::new(2 * i128::from(pixel.x) + 1, 2))),
-            Cell::new(fraction(&z)),
-            Cell::new(zsim::localize_decimal(lang, zsim::decimal(z, 2))),
-            Cell::new(step),
-            Cell::new(pixel.stored_before.text(lang)),
+            Cell::new(row.x),
+            Cell::new(row.centre),
+            Cell::new(row.z),
+            Cell::new(row.approx),
+            Cell::new(row.step),
+            Cell::new(row.stored),
             test,
-            Cell::new(pixel.stored_after.text(lang)),
-            Cell::new(pixel.frame_after),
+            Cell::new(row.after),
+            Cell::new(row.frame),
         ]);
     }
     table

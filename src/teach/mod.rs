@@ -11,3 +11,4 @@ pub mod gradebooks;
 pub mod gradescope;
 pub mod page;
 pub mod step;
+pub mod stop;
