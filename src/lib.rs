@@ -131,7 +131,7 @@ pub use observe::gpu;
 pub use observe::race;
 pub use observe::step::{PolygonTrace, Skip, Stop, Tracer};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
-pub use observe::{explain, figure, history, report, tie, tikz};
+pub use observe::{explain, figure, history, picture, report, tie, tikz};
 pub use raster::convert::{Scratch, rasterize};
 pub use raster::depth::{Depth, DepthTest, Stored};
 pub use raster::scan::{Crossing, Span};

@@ -10,6 +10,7 @@ use zsim::Simulation;
 use zsim::Unobserved;
 use zsim::exercise::{Exercise, HardCase, Spec, make};
 use zsim::figure::{Extras, Shading, svg_with};
+use zsim::picture::Format;
 use zsim::report::matrix;
 
 use super::{Failure, Finish, emit};
@@ -42,8 +43,8 @@ pub struct ExerciseArgs {
     #[arg(long, default_value_t = 12)]
     min_pixels: u32,
     /// The formats of the worksheet and the solution, comma-separated: svg, png, pdf, tex (TikZ in a LaTeX document).
-    #[arg(long, value_name = "LIST", default_value = "svg", value_delimiter = ',')]
-    formats: Vec<FigureFormat>,
+    #[arg(long, value_name = "LIST", default_value = "svg", value_delimiter = ',', value_parser = super::choice(&Format::NAMES, Format::parse))]
+    formats: Vec<Format>,
     /// Also write the answer after each polygon (answer.after-N.frame.txt, …).
     #[arg(long)]
     each_polygon: bool,
@@ -61,45 +62,19 @@ pub struct ExerciseArgs {
     points: u32,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-enum FigureFormat {
-    Svg,
-    Png,
-    Pdf,
-    Tex,
-}
-
-impl FigureFormat {
-    fn extension(self) -> &'static str {
-        match self {
-            FigureFormat::Svg => "svg",
-            FigureFormat::Png => "png",
-            FigureFormat::Pdf => "pdf",
-            FigureFormat::Tex => "tex",
-        }
-    }
-}
-
 /// A figure's SVG in each format asked for: `(NAME.ext, bytes)`.
 fn figure_files(
     lang: zsim::Lang,
     name: &str,
     svg: &str,
-    formats: &[FigureFormat],
+    formats: &[Format],
     dir: &std::path::Path,
 ) -> Result<Vec<(String, Vec<u8>)>, Error> {
-    let mut files = Vec::new();
+    let mut files: Vec<(String, Vec<u8>)> = Vec::new();
     for format in formats {
         let file = format!("{name}.{}", format.extension());
-        let bytes = match format {
-            FigureFormat::Svg => svg.as_bytes().to_vec(),
-            FigureFormat::Png => super::figure::png(lang, svg, &dir.join(&file))?,
-            FigureFormat::Pdf => super::figure::pdf(lang, svg, &dir.join(&file))?,
-            FigureFormat::Tex => zsim::tikz::tikz(svg, true)
-                .map_err(|reason| Error::from(zsim::Usage::PngFailed { path: dir.join(&file), reason }))?
-                .into_bytes(),
-        };
-        if !files.iter().any(|(f, _): &(String, Vec<u8>)| *f == file) {
+        if !files.iter().any(|(f, _)| *f == file) {
+            let bytes = format.encode(lang, svg, &dir.join(&file), false)?;
             files.push((file, bytes));
         }
     }

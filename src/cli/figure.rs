@@ -1,7 +1,7 @@
 //! `zsim figure`: the raster as an SVG (or PNG) for a handout.
 
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::Args;
 use zsim::Error;
@@ -37,23 +37,9 @@ pub struct FigureArgs {
     tikz_only: bool,
 }
 
-/// What the output file's extension asks for.
-enum Kind {
-    Svg,
-    Png,
-    Pdf,
-    Tex,
-}
-
 pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let kind = match args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
-        Some("svg") => Kind::Svg,
-        Some("png") => Kind::Png,
-        Some("pdf") => Kind::Pdf,
-        Some("tex") => Kind::Tex,
-        _ => {
-            return Err(Error::from(zsim::Usage::FigureFormat { path: args.output.clone() }).into());
-        }
+    let Some(format) = zsim::picture::Format::of(&args.output) else {
+        return Err(Error::from(zsim::Usage::FigureFormat { path: args.output.clone() }).into());
     };
     let scene = Scene::load(lang, &args.scene)?;
     if scene.width > MAX_FIGURE_SIDE || scene.height > MAX_FIGURE_SIDE {
@@ -107,14 +93,7 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
     }
     let extras = Extras { vertex_labels: worksheet, caption: Vec::new(), values: args.values };
     let text = svg_with(lang, &scene, simulation.buffers(), last, shading, &title, &extras);
-    let bytes = match kind {
-        Kind::Svg => text.into_bytes(),
-        Kind::Png => png(lang, &text, &args.output)?,
-        Kind::Pdf => pdf(lang, &text, &args.output)?,
-        Kind::Tex => zsim::tikz::tikz(&text, !args.tikz_only)
-            .map_err(|reason| Error::from(zsim::Usage::PngFailed { path: args.output.clone(), reason }))?
-            .into_bytes(),
-    };
+    let bytes = format.encode(lang, &text, &args.output, args.tikz_only)?;
     super::not_an_input(&args.output, &[&args.scene])?;
     std::fs::write(&args.output, bytes).map_err(|source| Error::Write { path: args.output.clone(), source })?;
     emit(
@@ -130,51 +109,4 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
         ),
     )?;
     Ok(Finish::Ok)
-}
-
-/// The SVG drawn as a PNG at twice its size (text in the system's sans-serif font).
-pub(super) fn png(lang: zsim::Lang, svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
-    let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
-    let tree = tree(lang, svg, path)?;
-    let size =
-        tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed(zsim::words!(lang, "png-figure-too-large")))?;
-    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
-        .ok_or_else(|| failed(zsim::words!(lang, "png-figure-too-large")))?;
-    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(2.0, 2.0), &mut pixmap.as_mut());
-    pixmap.encode_png().map_err(|e| failed(e.to_string()))
-}
-
-/// The SVG as a one-page PDF of its size, text embedded as the system's
-/// sans-serif font (svg2pdf, from the same tree as the PNG).
-#[cfg(feature = "pdf")]
-pub(super) fn pdf(lang: zsim::Lang, svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
-    let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
-    let tree = tree(lang, svg, path)?;
-    svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), svg2pdf::PageOptions::default())
-        .map_err(|e| failed(e.to_string()))
-}
-
-#[cfg(not(feature = "pdf"))]
-pub(super) fn pdf(_svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
-    Err(zsim::Usage::PngFailed { path: path.to_path_buf(), reason: zsim::words!(lang, "pdf-not-built") }.into())
-}
-
-/// The SVG parsed with the system's fonts, "sans-serif" being the first of
-/// the usual sans fonts the system has.
-fn tree(lang: zsim::Lang, svg: &str, path: &Path) -> Result<resvg::usvg::Tree, Error> {
-    let failed = |reason: String| Error::from(zsim::Usage::PngFailed { path: path.to_path_buf(), reason });
-    let mut options = resvg::usvg::Options::default();
-    let fonts = options.fontdb_mut();
-    fonts.load_system_fonts();
-    // The figure asks for "sans-serif"; take the first of the usual sans fonts the system has.
-    let families: Vec<String> =
-        fonts.faces().flat_map(|face| face.families.iter().map(|(name, _)| name.clone())).collect();
-    let sans = ["DejaVu Sans", "Liberation Sans", "Arial", "Helvetica", "Noto Sans", "FreeSans"]
-        .into_iter()
-        .find(|wanted| families.iter().any(|f| f == wanted))
-        .map(str::to_string)
-        .or_else(|| families.first().cloned())
-        .ok_or_else(|| failed(zsim::words!(lang, "png-no-fonts")))?;
-    fonts.set_sans_serif_family(sans);
-    resvg::usvg::Tree::from_str(svg, &options).map_err(|e| failed(e.to_string()))
 }

@@ -10,8 +10,8 @@ use zsim::Error;
 use zsim::explain::{fate_text, polygon_name, scanline_text};
 use zsim::report::{self, MatrixStyle};
 use zsim::step::{Moved, Question, Quiz, Reply, Stepper, skip_text};
-use zsim::{exact_and_decimal, fraction};
 use zsim::{PixelEvent, Scene, Stop};
+use zsim::{exact_and_decimal, fraction};
 
 use super::{Failure, Finish, emit};
 

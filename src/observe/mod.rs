@@ -9,6 +9,7 @@ pub mod figure;
 #[cfg(feature = "gpu")]
 pub mod gpu;
 pub mod history;
+pub mod picture;
 #[cfg(feature = "gpu")]
 pub mod race;
 pub mod report;

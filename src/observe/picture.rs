@@ -1,0 +1,105 @@
+//! A figure's SVG in the other formats a handout takes: a PNG picture, a
+//! PDF page and a TikZ picture in a LaTeX document, chosen by the output's
+//! extension.
+
+use std::path::Path;
+
+use crate::error::{Error, Usage};
+use crate::words::Lang;
+
+/// A format a figure is written in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Format {
+    /// The SVG itself.
+    Svg,
+    /// A picture at twice the SVG's size.
+    Png,
+    /// A page of the SVG's size.
+    Pdf,
+    /// A TikZ picture in a LaTeX document (with `whole`), or alone.
+    Tex,
+}
+
+impl Format {
+    /// Every format, in the order of [`Format::NAMES`].
+    pub const ALL: [Format; 4] = [Format::Svg, Format::Png, Format::Pdf, Format::Tex];
+
+    /// The formats' names, which are also their files' extensions.
+    pub const NAMES: [&'static str; 4] = ["svg", "png", "pdf", "tex"];
+
+    /// The format named `name` (an extension, in any case).
+    pub fn parse(name: &str) -> Option<Format> {
+        let name = name.to_ascii_lowercase();
+        Format::NAMES.iter().position(|n| *n == name).map(|i| Format::ALL[i])
+    }
+
+    /// The format a file's extension asks for.
+    pub fn of(path: &Path) -> Option<Format> {
+        path.extension().and_then(|e| e.to_str()).and_then(Format::parse)
+    }
+
+    /// The extension of its files.
+    pub fn extension(self) -> &'static str {
+        Format::NAMES[Format::ALL.iter().position(|f| *f == self).expect("every format is named")]
+    }
+
+    /// `svg` in this format, for the file `path` (named in errors); a TeX
+    /// file is a whole LaTeX document unless `tikz_only`.
+    pub fn encode(self, lang: Lang, svg: &str, path: &Path, tikz_only: bool) -> Result<Vec<u8>, Error> {
+        match self {
+            Format::Svg => Ok(svg.as_bytes().to_vec()),
+            Format::Png => png(lang, svg, path),
+            Format::Pdf => pdf(lang, svg, path),
+            Format::Tex => crate::observe::tikz::tikz(svg, !tikz_only)
+                .map(String::into_bytes)
+                .map_err(|reason| Usage::PngFailed { path: path.to_path_buf(), reason }.into()),
+        }
+    }
+}
+
+/// The SVG drawn as a PNG at twice its size (text in the system's sans-serif font).
+pub fn png(lang: Lang, svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+    let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
+    let tree = tree(lang, svg, path)?;
+    let size = tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed(words!(lang, "png-figure-too-large")))?;
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
+        .ok_or_else(|| failed(words!(lang, "png-figure-too-large")))?;
+    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(2.0, 2.0), &mut pixmap.as_mut());
+    pixmap.encode_png().map_err(|e| failed(e.to_string()))
+}
+
+/// The SVG as a one-page PDF of its size, text embedded as the system's
+/// sans-serif font (svg2pdf, from the same tree as the PNG).
+#[cfg(feature = "pdf")]
+pub fn pdf(lang: Lang, svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+    let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
+    let tree = tree(lang, svg, path)?;
+    svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), svg2pdf::PageOptions::default())
+        .map_err(|e| failed(e.to_string()))
+}
+
+/// Without the `pdf` feature: says so.
+#[cfg(not(feature = "pdf"))]
+pub fn pdf(lang: Lang, _svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+    Err(Usage::PngFailed { path: path.to_path_buf(), reason: words!(lang, "pdf-not-built") }.into())
+}
+
+/// The SVG parsed with the system's fonts, "sans-serif" being the first of
+/// the usual sans fonts the system has.
+fn tree(lang: Lang, svg: &str, path: &Path) -> Result<resvg::usvg::Tree, Error> {
+    let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
+    let mut options = resvg::usvg::Options::default();
+    let fonts = options.fontdb_mut();
+    fonts.load_system_fonts();
+    // The figure asks for "sans-serif"; take the first of the usual sans fonts the system has.
+    let families: Vec<String> =
+        fonts.faces().flat_map(|face| face.families.iter().map(|(name, _)| name.clone())).collect();
+    let sans = ["DejaVu Sans", "Liberation Sans", "Arial", "Helvetica", "Noto Sans", "FreeSans"]
+        .into_iter()
+        .find(|wanted| families.iter().any(|f| f == wanted))
+        .map(str::to_string)
+        .or_else(|| families.first().cloned())
+        .ok_or_else(|| failed(words!(lang, "png-no-fonts")))?;
+    fonts.set_sans_serif_family(sans);
+    resvg::usvg::Tree::from_str(svg, &options).map_err(|e| failed(e.to_string()))
+}
