@@ -49,8 +49,10 @@ pub fn run(lang: zsim::Lang, args: &AccuracyArgs, out: &mut dyn Write) -> Result
     }
     let settings = Settings { seed: args.seed, width: args.size.0, height: args.size.1, scenes: args.scenes };
     let scenes = accuracy::scenes(lang, &settings)?;
-    let modes = accuracy::modes(&scenes)?;
-    let bits = accuracy::bits_sweep(lang, &settings)?;
+    let origin = std::time::Instant::now();
+    let clock = || origin.elapsed();
+    let modes = accuracy::modes(&scenes, &clock)?;
+    let bits = accuracy::bits_sweep(lang, &settings, &clock)?;
     let exact = modes[0].clone();
     let ns = |row: &accuracy::ModeRow| row.time.as_nanos() as f64 / exact.pixels.max(1) as f64;
     if args.format == Format::Json {

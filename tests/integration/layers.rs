@@ -88,3 +88,122 @@ fn the_library_never_prints() {
         }
     }
 }
+
+/// A file's module path: `src/simulate/levels.rs` is `simulate::levels`,
+/// `src/scene/file/mod.rs` is `scene::file`, `src/lib.rs` the root.
+fn module_of(src: &Path, file: &Path) -> Vec<String> {
+    let relative = file.strip_prefix(src).unwrap().with_extension("");
+    let mut parts: Vec<String> = relative.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+    if matches!(parts.last().map(String::as_str), Some("mod" | "lib" | "main")) {
+        parts.pop();
+    }
+    parts
+}
+
+/// No two files of `src/` import each other, directly or round a longer
+/// circle (found by a new maintainer: `cli/step.rs` ↔ `cli/tui.rs`,
+/// `cli/check.rs` ↔ `cli/gradescope.rs`, `cli/grade.rs` ↔ `cli/gradebooks.rs`,
+/// `simulate/levels.rs` ↔ `simulate/triangle.rs`). A folder's `mod.rs` is the
+/// folder's own face: its files may use it and it them.
+#[test]
+fn no_import_circle_between_files() {
+    let src = src();
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    let modules: Vec<Vec<String>> = files.iter().map(|f| module_of(&src, f)).collect();
+    let find = |path: &[String]| (1..=path.len()).rev().find_map(|n| modules.iter().position(|m| m[..] == path[..n]));
+    let mut edges: Vec<Vec<usize>> = vec![Vec::new(); files.len()];
+    for (me, file) in files.iter().enumerate() {
+        let is_mod = file.file_name().is_some_and(|n| n == "mod.rs");
+        let module = &modules[me];
+        let parent: Vec<String> =
+            if is_mod { module.clone() } else { module[..module.len().saturating_sub(1)].to_vec() };
+        let code = code(file);
+        let mut targets = Vec::new();
+        for (prefix, base) in [("crate::", Vec::new()), ("super::", parent[..parent.len().saturating_sub(1)].to_vec())]
+        {
+            for (at, _) in code.match_indices(prefix) {
+                let rest = &code[at + prefix.len()..];
+                let names: Vec<&str> = if let Some(group) = rest.strip_prefix('{') {
+                    group.split('}').next().unwrap().split(',').map(|n| n.trim().split("::").next().unwrap()).collect()
+                } else {
+                    vec![rest]
+                };
+                for name in names {
+                    let path: Vec<String> = name
+                        .split("::")
+                        .map(|p| p.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect::<String>())
+                        .take_while(|p| !p.is_empty())
+                        .collect();
+                    let mut full = base.clone();
+                    full.extend(path);
+                    targets.push(full);
+                }
+            }
+        }
+        for target in targets {
+            let Some(to) = find(&target) else { continue };
+            let own_face = !is_mod && modules[to] == parent;
+            let own_file = is_mod && modules[to].starts_with(module) && modules[to].len() == module.len() + 1;
+            if to != me && !own_face && !own_file && !edges[me].contains(&to) {
+                edges[me].push(to);
+            }
+        }
+    }
+    let reaches = |from: usize, to: usize| {
+        let (mut seen, mut stack) = (vec![false; files.len()], vec![from]);
+        while let Some(at) = stack.pop() {
+            if at == to {
+                return true;
+            }
+            if !std::mem::replace(&mut seen[at], true) {
+                stack.extend(&edges[at]);
+            }
+        }
+        false
+    };
+    let circles: Vec<String> = (0..files.len())
+        .flat_map(|a| edges[a].iter().map(move |&b| (a, b)))
+        .filter(|&(a, b)| reaches(b, a))
+        .map(|(a, b)| {
+            format!(
+                "{} → {}",
+                files[a].strip_prefix(&src).unwrap().display(),
+                files[b].strip_prefix(&src).unwrap().display()
+            )
+        })
+        .collect();
+    assert!(circles.is_empty(), "imports that come back round: {circles:#?}");
+    assert!(edges.iter().map(Vec::len).sum::<usize>() > 150, "the imports were found");
+}
+
+/// The language is passed where words are made, never held behind the
+/// caller's back (found by a new maintainer: a thread-local copied by hand
+/// into every rayon task, and left changed by a panic).
+#[test]
+fn no_thread_local_in_the_source() {
+    let mut files = Vec::new();
+    sources(&src(), &mut files);
+    for file in &files {
+        assert!(!std::fs::read_to_string(file).unwrap().contains("thread_local!"), "{}", file.display());
+    }
+}
+
+/// The library builds without the command line: with no default features its
+/// normal dependencies hold none of the command line's and terminal's crates
+/// (the browser front end needs exactly that).
+#[test]
+fn the_library_needs_none_of_the_command_lines_crates() {
+    let output = std::process::Command::new(env!("CARGO"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(["tree", "--offline", "--no-default-features", "-e", "normal", "--prefix", "none", "--format", "{p}"])
+        .output()
+        .expect("cargo runs");
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let tree = String::from_utf8(output.stdout).unwrap();
+    assert!(tree.lines().any(|l| l.starts_with("zsim ")), "{tree}");
+    let names: Vec<&str> = tree.lines().filter_map(|l| l.split(' ').next()).collect();
+    for crate_name in ["clap", "ratatui", "crossterm", "comfy-table", "indicatif", "clap_complete", "clap_mangen"] {
+        assert!(!names.contains(&crate_name), "{crate_name} is in the library's tree:\n{tree}");
+    }
+}
