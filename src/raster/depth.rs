@@ -430,6 +430,23 @@ pub struct DepthStepper<W = i128> {
     step_remainder: W,
 }
 
+/// A [`DepthStepper`]'s state: the depth `whole + remainder/denominator`
+/// (`0 ≤ remainder < denominator`) and the step per pixel
+/// `step_whole + step_remainder/denominator`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StepperState<W> {
+    /// The depth's whole part.
+    pub whole: W,
+    /// The depth's remainder.
+    pub remainder: W,
+    /// The denominator, positive.
+    pub denominator: W,
+    /// The step's whole part.
+    pub step_whole: W,
+    /// The step's remainder.
+    pub step_remainder: W,
+}
+
 /// A polygon's plane prepared for stepping: the step per pixel split once
 /// into whole part and remainder, and the depth numerator at any centre by
 /// multiplication only, measured from vertex 1 so that the products stay as
@@ -546,9 +563,16 @@ impl DepthStepper {
 }
 
 impl<W: Word> DepthStepper<W> {
-    /// The state as `(whole, remainder, denominator, step whole, step remainder)`.
-    pub fn parts(&self) -> (W, W, W, W, W) {
-        (self.whole, self.remainder, self.denominator, self.step_whole, self.step_remainder)
+    /// The state: the depth at the current centre as whole part and
+    /// remainder over the denominator, and the step per pixel likewise.
+    pub fn state(&self) -> StepperState<W> {
+        StepperState {
+            whole: self.whole,
+            remainder: self.remainder,
+            denominator: self.denominator,
+            step_whole: self.step_whole,
+            step_remainder: self.step_remainder,
+        }
     }
 
     /// The depth at the current pixel centre.

@@ -9,35 +9,55 @@ use std::hint::select_unpredictable;
 use crate::raster::depth::{BranchFreeTest, round_half_up};
 use crate::simulate::buffer::FrameCell;
 
-/// One cell of a branch-free loop: the depth `whole + remainder/denominator`
-/// (`0 ≤ remainder < denominator`) against the stored level with the test's
-/// constants ([`BranchFreeTest`]); both cells are rewritten with their old or
-/// their new value, so nothing is guessed. `covered` false leaves them as
-/// they are. Returns whether the cell was written.
-#[inline(always)]
-pub(super) fn test_and_store<F: FrameCell>(
-    (depth, frame): (&mut u32, &mut F),
-    (whole, remainder, denominator): (i64, i64, i64),
-    test: BranchFreeTest,
-    (max, value): (i64, F),
-    covered: bool,
-) -> bool {
-    let passes = covered & test.passes(whole, remainder, *depth);
-    let rounded = round_half_up(whole, remainder, denominator).clamp(0, max) as u32;
-    *depth = select_unpredictable(passes, rounded, *depth);
-    *frame = select_unpredictable(passes, value, *frame);
-    passes
+/// A depth `whole + remainder/denominator` (`0 ≤ remainder < denominator`)
+/// over the denominator its loop keeps; also a step of that form.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Stepped {
+    /// The whole part.
+    pub(super) whole: i64,
+    /// The remainder.
+    pub(super) remainder: i64,
 }
 
-/// `whole + remainder/denominator` plus `step`, as whole part and remainder
-/// again (the carry chosen without a branch).
+impl Stepped {
+    /// This plus `step`, as whole part and remainder again (the carry chosen
+    /// without a branch).
+    #[inline(always)]
+    pub(super) fn plus(self, step: Stepped, denominator: i64) -> Stepped {
+        let remainder = self.remainder + step.remainder;
+        let carry = remainder >= denominator;
+        Stepped {
+            whole: self.whole + step.whole + i64::from(carry),
+            remainder: remainder - select_unpredictable(carry, denominator, 0),
+        }
+    }
+}
+
+/// What a loop writes where the test passes: the test's constants, the
+/// largest level the z-buffer holds, and the polygon's framebuffer value.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct CellWrite<F> {
+    pub(super) test: BranchFreeTest,
+    pub(super) max: i64,
+    pub(super) value: F,
+}
+
+/// One cell of a branch-free loop: `depth` over `denominator` against the
+/// stored level with the test's constants ([`BranchFreeTest`]); both cells
+/// are rewritten with their old or their new value, so nothing is guessed.
+/// `covered` false leaves them as they are. Returns whether the cell was
+/// written.
 #[inline(always)]
-pub(super) fn carry_step(
-    (whole, remainder): (i64, i64),
-    (step_whole, step_remainder): (i64, i64),
+pub(super) fn test_and_store<F: FrameCell>(
+    (depth_cell, frame_cell): (&mut u32, &mut F),
+    depth: Stepped,
     denominator: i64,
-) -> (i64, i64) {
-    let remainder = remainder + step_remainder;
-    let carry = remainder >= denominator;
-    (whole + step_whole + i64::from(carry), remainder - select_unpredictable(carry, denominator, 0))
+    write: CellWrite<F>,
+    covered: bool,
+) -> bool {
+    let passes = covered & write.test.passes(depth.whole, depth.remainder, *depth_cell);
+    let rounded = round_half_up(depth.whole, depth.remainder, denominator).clamp(0, write.max) as u32;
+    *depth_cell = select_unpredictable(passes, rounded, *depth_cell);
+    *frame_cell = select_unpredictable(passes, write.value, *frame_cell);
+    passes
 }

@@ -8,7 +8,7 @@ use crate::raster::depth::{BranchFreeTest, Depth, DepthStepper, DepthTest, Store
 use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
-use crate::simulate::branch_free::{carry_step, test_and_store};
+use crate::simulate::branch_free::{CellWrite, Stepped, test_and_store};
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
 use crate::simulate::setup::{CORE_CACHE, Stats, fate, prefetch_ahead, prefetch_cells};
@@ -126,7 +126,9 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         if O::OBSERVES_PIXELS {
             return false;
         }
-        let (whole, remainder, denominator, step_whole, step_remainder) = stepper.parts();
+        let state = stepper.state();
+        let (whole, remainder, denominator, step_whole, step_remainder) =
+            (state.whole, state.remainder, state.denominator, state.step_whole, state.step_remainder);
         let (Some(whole), Some(remainder), Some(denominator), Some(step_whole), Some(step_remainder)) =
             (whole.to_i64(), remainder.to_i64(), denominator.to_i64(), step_whole.to_i64(), step_remainder.to_i64())
         else {
@@ -141,12 +143,12 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         }
         let start = (row - self.first_row) as usize * self.width;
         let cells = start + first as usize..=start + last as usize;
-        let depth = (whole, remainder, denominator, (step_whole, step_remainder));
+        let (start, step) = (Stepped { whole, remainder }, Stepped { whole: step_whole, remainder: step_remainder });
         // The book's test compiled with its constants, as a small triangle's.
         let written = if self.test == DepthTest::Greater {
-            self.span_cells::<true>(cells, depth)
+            self.span_cells::<true>(cells, start, denominator, step)
         } else {
-            self.span_cells::<false>(cells, depth)
+            self.span_cells::<false>(cells, start, denominator, step)
         };
         self.stats.tested += u64::from(last - first) + 1;
         self.stats.written += written;
@@ -161,17 +163,25 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
     fn span_cells<const GREATER: bool>(
         &mut self,
         cells: std::ops::RangeInclusive<usize>,
-        (mut whole, mut remainder, denominator, step): (i64, i64, i64, (i64, i64)),
+        mut depth: Stepped,
+        denominator: i64,
+        step: Stepped,
     ) -> u64 {
-        let test = if GREATER { BranchFreeTest::GREATER } else { BranchFreeTest::of(self.test) };
-        let (max, value) = (i64::from(self.depth_max), self.value);
+        let write = self.cell_write::<GREATER>();
         let mut written = 0u64;
-        for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
-            let passes = test_and_store((depth, frame), (whole, remainder, denominator), test, (max, value), true);
-            written += u64::from(passes);
-            (whole, remainder) = carry_step((whole, remainder), step, denominator);
+        for cell in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
+            written += u64::from(test_and_store(cell, depth, denominator, write, true));
+            depth = depth.plus(step, denominator);
         }
         written
+    }
+
+    /// What the branch-free loops write: `GREATER`, the book's test with its
+    /// constants known to the compiler; else the scene's test read as the loop runs.
+    #[inline(always)]
+    pub(super) fn cell_write<const GREATER: bool>(&self) -> CellWrite<F> {
+        let test = if GREATER { BranchFreeTest::GREATER } else { BranchFreeTest::of(self.test) };
+        CellWrite { test, max: i64::from(self.depth_max), value: self.value }
     }
 }
 

@@ -17,10 +17,10 @@
 
 use crate::geometry::plane::Geometry;
 use crate::numbers::Word;
-use crate::raster::depth::{BranchFreeTest, DepthPlane, DepthTest};
+use crate::raster::depth::{DepthPlane, DepthTest};
 use crate::raster::sink::PixelRect;
 use crate::rules::{ColumnRule, RowRule, Rules};
-use crate::simulate::branch_free::{carry_step, test_and_store};
+use crate::simulate::branch_free::{Stepped, test_and_store};
 use crate::simulate::buffer::FrameCell;
 use crate::simulate::events::Observer;
 use crate::simulate::levels::LevelSink;
@@ -86,16 +86,25 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         let edge = |[ax, ay]: [i64; 2], [bx, by]: [i64; 2]| {
             let (dx, dy) = (sign * (bx - ax), sign * (by - ay));
             // At the first centre; per column −dy·2D, per row +dx·2D.
-            (dx * (centre_y - ay) - dy * (centre_x - ax), -dy * two_d, dx * two_d)
+            EdgeFunction {
+                at_first: dx * (centre_y - ay) - dy * (centre_x - ax),
+                per_column: -dy * two_d,
+                per_row: dx * two_d,
+            }
         };
         let edges = [edge([px, py], [qx, qy]), edge([qx, qy], [rx, ry]), edge([rx, ry], [px, py])];
         let plane = DepthPlane::<i64>::new(geometry);
         let stepper = plane.start_at(plane.row_numerator(centre_y), first_column as u32);
-        let (row_whole, row_remainder, denominator, step_whole, step_remainder) = stepper.parts();
-        let (down_whole, down_remainder) = plane.row_step().floor_div(denominator);
-        let start = (row_whole, row_remainder);
-        let steps = (denominator, (step_whole, step_remainder), (down_whole, down_remainder));
-        let box_ = ((first_row, last_row), (first_column as usize, last_column as usize));
+        let state = stepper.state();
+        let (down_whole, down_remainder) = plane.row_step().floor_div(state.denominator);
+        let start = Stepped { whole: state.whole, remainder: state.remainder };
+        let steps = Steps {
+            denominator: state.denominator,
+            per_column: Stepped { whole: state.step_whole, remainder: state.step_remainder },
+            per_row: Stepped { whole: down_whole, remainder: down_remainder },
+        };
+        let box_ =
+            CentreBox { first_row, last_row, first_column: first_column as usize, last_column: last_column as usize };
         // The book's test with its constants known to the compiler (about 5% of exact's time
         // in `zsim accuracy`); any other with them read as the loop runs.
         let (tested, written) = if self.test == DepthTest::Greater {
@@ -116,35 +125,59 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
     /// `z > stored`, compiled with its constants. Returns the centres tested
     /// and written.
     #[inline(always)]
-    #[allow(clippy::type_complexity)]
     fn box_rows<const GREATER: bool>(
         &mut self,
-        ((first_row, last_row), (first_column, last_column)): ((i64, i64), (usize, usize)),
-        edges: [(i64, i64, i64); 3],
-        (mut row_whole, mut row_remainder): (i64, i64),
-        (denominator, step, down): (i64, (i64, i64), (i64, i64)),
+        centres: CentreBox,
+        edges: [EdgeFunction; 3],
+        mut row_start: Stepped,
+        steps: Steps,
     ) -> (u64, u64) {
-        let test = if GREATER { BranchFreeTest::GREATER } else { BranchFreeTest::of(self.test) };
-        let (max, value, width) = (i64::from(self.depth_max), self.value, self.width);
+        let write = self.cell_write::<GREATER>();
+        let (width, denominator) = (self.width, steps.denominator);
         let (mut tested, mut written) = (0u64, 0u64);
-        let mut row_edges = edges.map(|e| e.0);
-        for row in first_row..=last_row {
+        let mut row_edges = edges.map(|e| e.at_first);
+        for row in centres.first_row..=centres.last_row {
             let start = (row as u32 - self.first_row) as usize * width;
-            let cells = start + first_column..=start + last_column;
+            let cells = start + centres.first_column..=start + centres.last_column;
             let [mut e0, mut e1, mut e2] = row_edges;
-            let (mut whole, mut remainder) = (row_whole, row_remainder);
-            for (depth, frame) in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
+            let mut depth = row_start;
+            for cell in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
                 let covered = (e0 | e1 | e2) >= 0;
-                let passes =
-                    test_and_store((depth, frame), (whole, remainder, denominator), test, (max, value), covered);
+                let passes = test_and_store(cell, depth, denominator, write, covered);
                 tested += u64::from(covered);
                 written += u64::from(passes);
-                (e0, e1, e2) = (e0 + edges[0].1, e1 + edges[1].1, e2 + edges[2].1);
-                (whole, remainder) = carry_step((whole, remainder), step, denominator);
+                (e0, e1, e2) = (e0 + edges[0].per_column, e1 + edges[1].per_column, e2 + edges[2].per_column);
+                depth = depth.plus(steps.per_column, denominator);
             }
-            row_edges = [0, 1, 2].map(|k| row_edges[k] + edges[k].2);
-            (row_whole, row_remainder) = carry_step((row_whole, row_remainder), down, denominator);
+            row_edges = [0, 1, 2].map(|k| row_edges[k] + edges[k].per_row);
+            row_start = row_start.plus(steps.per_row, denominator);
         }
         (tested, written)
     }
+}
+
+/// A small triangle's box of pixel centres: rows and columns, inclusive.
+#[derive(Debug, Clone, Copy)]
+struct CentreBox {
+    first_row: i64,
+    last_row: i64,
+    first_column: usize,
+    last_column: usize,
+}
+
+/// An edge function at the box's first centre, with its steps per column
+/// and per row (a centre is inside where all three are ≥ 0).
+#[derive(Debug, Clone, Copy)]
+struct EdgeFunction {
+    at_first: i64,
+    per_column: i64,
+    per_row: i64,
+}
+
+/// The depth's denominator and its steps per column and per row.
+#[derive(Debug, Clone, Copy)]
+struct Steps {
+    denominator: i64,
+    per_column: Stepped,
+    per_row: Stepped,
 }
