@@ -1,19 +1,24 @@
-//! Observe: what the rasterizer did, in words and pictures. Recorders
-//! (`trace`), a centre on an edge and the rule that decides it (`tie`),
-//! explanations (`explain`) and a pixel's whole history (`history`), the
-//! printed matrices (`report`), figures (`figure`), homework answers
-//! (`check`) and the stepper's model (`step`). Imports: effects and the layers before it.
-pub mod check;
+//! Observe: what the rasterizer did, in words and pictures, in four kinds.
+//! Imports: effects and the layers before it.
+//!
+//! - `record`: a run recorded as it happens (`trace`: scanlines, pixels, a
+//!   watched pixel's events; `step`: polygons recorded as a student reaches
+//!   them, the stops between them).
+//! - `explain`: why a pixel holds what it holds (`explain`), its whole
+//!   history (`history`), a centre on an edge and the rule that decides it
+//!   (`tie`), a homework answer read and compared (`check`).
+//! - `render`: the printed matrices and the run's JSON (`report`), figures
+//!   (`figure`), their PNG, PDF and TeX (`picture`, `tikz`).
+//! - `gpu`: a real GPU implementation drawing the same scene, as a
+//!   reference (`gpu`) and as a peer for speed (`race`).
 pub mod explain;
-pub mod figure;
 #[cfg(feature = "gpu")]
 pub mod gpu;
-pub mod history;
-pub mod picture;
+pub mod record;
+pub mod render;
+
+pub use explain::{check, history, tie};
 #[cfg(feature = "gpu")]
-pub mod race;
-pub mod report;
-pub mod step;
-pub mod tie;
-pub mod tikz;
-pub mod trace;
+pub use gpu::race;
+pub use record::{step, trace};
+pub use render::{figure, picture, report, tikz};

@@ -14,6 +14,7 @@
 use crate::words::Lang;
 
 mod gl;
+pub mod race;
 #[cfg(feature = "vulkan")]
 mod vulkan;
 

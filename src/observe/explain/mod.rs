@@ -1,6 +1,12 @@
 //! Explanations in words a student can follow, built from the rasterizer's
 //! events: what the depth test made of a pixel, the history of a pixel
-//! through a scene, and why a cell holds its value.
+//! through a scene, and why a cell holds its value. Beside it: a pixel's
+//! whole history (`history`), the rule that decides a centre on an edge
+//! (`tie`), and a homework answer read and compared (`check`).
+
+pub mod check;
+pub mod history;
+pub mod tie;
 
 use crate::numbers::{Exact, Q, exact_and_decimal, exact_and_places};
 use crate::observe::trace::{PixelHistoryEntry, ScanlineRecord, SpanRecord};
