@@ -8,8 +8,8 @@ use comfy_table::{Table, presets};
 use zsim::Error;
 use zsim::Simulation;
 use zsim::buet::{self, Case, Source};
-use zsim::explain::{Buffer, why};
-use zsim::{PixelWatcher, Unobserved};
+
+use zsim::Unobserved;
 
 use super::{Failure, Finish, emit};
 
@@ -131,36 +131,6 @@ fn run_case(
     Ok(Finish::Ok)
 }
 
-/// A student's z_buffer.txt: per row, the values written.
-fn parse_answer(lang: zsim::Lang, path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
-    let text = zsim::read_text(lang, path)?;
-    let rows: Vec<Vec<String>> =
-        text.lines().map(|line| line.split_whitespace().map(str::to_string).collect()).collect();
-    for (i, row) in rows.iter().enumerate() {
-        for (k, value) in row.iter().enumerate() {
-            if value.parse::<f64>().is_err() {
-                return Err(Error::Answer {
-                    path: path.to_owned(),
-                    message: zsim::words!(
-                        lang,
-                        "buet-answer-not-a-number",
-                        line = (i + 1).to_string(),
-                        value = (k + 1).to_string(),
-                        text = zsim::token(lang, value.as_str())
-                    ),
-                });
-            }
-        }
-    }
-    if rows.len() != height as usize {
-        return Err(Error::Answer {
-            path: path.to_owned(),
-            message: zsim::words!(lang, "buet-answer-rows", rows = rows.len().to_string(), height = height.to_string()),
-        });
-    }
-    Ok(rows)
-}
-
 fn check(
     lang: zsim::Lang,
     dir: &Path,
@@ -169,60 +139,22 @@ fn check(
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
     let case = Case::load(lang, dir, from)?;
-    let scene = &case.scene;
-    let answer_rows = parse_answer(lang, answer, scene.height)?;
-    let mut simulation = Simulation::new(scene);
-    simulation.finish(&mut Unobserved);
-    let expected = buet::z_buffer_cells(simulation.buffers(), case.config.z_max);
-    // (row from the top, value index, answer, right, column)
-    let mut differences: Vec<(usize, usize, String, String, Option<u32>)> = Vec::new();
-    for (i, (given, right)) in answer_rows.iter().zip(&expected).enumerate() {
-        for k in 0..given.len().max(right.len()) {
-            let a = given.get(k).cloned().unwrap_or_else(|| zsim::words!(lang, "buet-none"));
-            let (column, r) =
-                right.get(k).map_or((None, zsim::words!(lang, "buet-none")), |(x, v)| (Some(*x), v.clone()));
-            if a != r {
-                differences.push((i, k, a, r, column));
-            }
-        }
-    }
+    let differences = buet::check::check(lang, &case, answer)?;
+    let (answer, path) = (answer.display().to_string(), dir.display().to_string());
     if differences.is_empty() {
-        let text = zsim::words!(
-            lang,
-            "buet-check-matches",
-            answer = answer.display().to_string(),
-            path = dir.display().to_string()
-        );
-        emit(out, &format!("{text}\n"))?;
+        emit(out, &format!("{}\n", zsim::words!(lang, "buet-check-matches", answer = answer, path = path)))?;
         return Ok(Finish::Ok);
     }
-    let mut watcher = PixelWatcher::new(
-        differences.iter().filter_map(|(i, _, _, _, column)| column.map(|x| (x, scene.height - 1 - *i as u32))),
-    );
-    Simulation::new(scene).finish(&mut watcher);
     let mut table = Table::new();
     table.load_style(presets::ASCII_MARKDOWN).set_header(
         ["buet-header-line", "buet-header-value", "buet-header-answer", "buet-header-right", "buet-header-why"]
             .map(|key| zsim::words!(lang, key)),
     );
-    for (i, k, a, r, column) in &differences {
-        let reason = match column {
-            Some(x) => {
-                let y = scene.height - 1 - *i as u32;
-                let why = why(lang, scene, Buffer::Depth, *x, y, watcher.history(*x, y));
-                zsim::words!(lang, "buet-cell", x = x.to_string(), y = y.to_string(), why = why)
-            }
-            None => zsim::words!(lang, "buet-extra-value"),
-        };
-        table.add_row([(i + 1).to_string(), (k + 1).to_string(), a.clone(), r.clone(), reason]);
+    for d in &differences {
+        table.add_row([d.line.to_string(), d.value.to_string(), d.answer.clone(), d.right.clone(), d.reason.clone()]);
     }
-    let heading = zsim::words!(
-        lang,
-        "buet-check-differs",
-        answer = answer.display().to_string(),
-        count = differences.len(),
-        path = dir.display().to_string()
-    );
+    let count = differences.len();
+    let heading = zsim::words!(lang, "buet-check-differs", answer = answer, count = count, path = path);
     emit(out, &format!("{heading}\n{table}\n"))?;
     Ok(Finish::Differs)
 }

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, Subcommand, ValueEnum};
 use zsim::Error;
-use zsim::cs418::{self, Arithmetic, Case, Comparison, Image, Reason};
+use zsim::cs418::{self, Arithmetic, Image};
 
 use super::{Failure, Finish, emit};
 
@@ -65,49 +65,15 @@ pub fn run(lang: zsim::Lang, args: &Cs418Args, out: &mut dyn Write) -> Result<Fi
             run_case(lang, case, output, *arith, compare.as_deref(), *tolerance, out)
         }
         Cs418Command::Import { case, output } => {
-            let scene = zsim::cs418::import::scene_json(lang, &load(lang, case, Textures::Ignored)?)
-                .map_err(|e| located(case, e))?;
+            let scene = zsim::cs418::import::scene_json(
+                lang,
+                &cs418::report::load(lang, case, cs418::report::Textures::Ignored)?,
+            )
+            .map_err(|e| cs418::report::located(case, e))?;
             super::emit_or_write(lang, out, output.as_deref(), &scene, &[case])?;
             Ok(Finish::Ok)
         }
     }
-}
-
-fn located(path: &Path, error: cs418::CaseError) -> Error {
-    Error::SceneFormat {
-        path: path.to_owned(),
-        location: error.line.map_or(String::new(), |line| format!("line {line}")),
-        message: error.message,
-    }
-}
-
-/// Whether a case's texture files are read.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Textures {
-    /// Read from beside the case: the image needs them.
-    Read,
-    /// Not read (each stands in as one transparent texel): what is drawn
-    /// where does not depend on them.
-    Ignored,
-}
-
-fn load(lang: zsim::Lang, path: &Path, textures: Textures) -> Result<Case, Error> {
-    let text = zsim::read_text(lang, path)?;
-    let folder = path.parent().unwrap_or(Path::new("."));
-    let texture = |name: &str| {
-        if textures == Textures::Ignored {
-            return Ok(Image { width: 1, height: 1, rgba: vec![0; 4] });
-        }
-        let file = folder.join(name);
-        if !file.is_file() {
-            return Err(zsim::words!(lang, "cs418-texture-missing"));
-        }
-        let bytes =
-            std::fs::read(&file).map_err(|e| zsim::words!(lang, "cs418-texture-unreadable", reason = e.to_string()))?;
-        Image::from_png(lang, &bytes)
-    };
-    let case = Case::parse(lang, &text, &texture).map_err(|e| located(path, e))?;
-    Ok(case)
 }
 
 fn run_case(
@@ -119,7 +85,7 @@ fn run_case(
     tolerance: u8,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
-    let case = load(lang, path, Textures::Read)?;
+    let case = cs418::report::load(lang, path, cs418::report::Textures::Read)?;
     let arithmetic = match arith {
         Arith::DdaF64 => Arithmetic::DdaF64,
         Arith::Exact => Arithmetic::Exact,
@@ -139,7 +105,7 @@ fn run_case(
         || cs418::render(lang, &case, arithmetic),
         || (arithmetic == Arithmetic::Exact).then(|| cs418::render(lang, &case, Arithmetic::DdaF64)),
     );
-    let result = result.map_err(|e| located(path, e))?;
+    let result = result.map_err(|e| cs418::report::located(path, e))?;
     std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
     let written = output.join(&case.output);
     std::fs::write(&written, result.image.to_png()).map_err(|source| Error::Write { path: written.clone(), source })?;
@@ -150,135 +116,24 @@ fn run_case(
         width = case.width.to_string(),
         height = case.height.to_string(),
         arithmetic = arithmetic.name(),
-        features = features(&case),
+        features = cs418::report::features_text(&case),
         written = written.display().to_string()
     ) + "\n";
     if let Some(course) = course {
-        text.push_str(&disagreements(lang, &course.map_err(|e| located(path, e))?, &result));
+        text.push_str(&cs418::report::disagreements_text(
+            lang,
+            &course.map_err(|e| cs418::report::located(path, e))?,
+            &result,
+        ));
     }
     let mut finish = Finish::Ok;
     if let Some((png, image)) = reference {
-        match cs418::compare_images(&result.image, &image, tolerance) {
-            None => {
-                return Err(Error::Answer {
-                    path: png.to_owned(),
-                    message: zsim::words!(
-                        lang,
-                        "cs418-image-size",
-                        width = image.width.to_string(),
-                        height = image.height.to_string(),
-                        case_width = case.width.to_string(),
-                        case_height = case.height.to_string()
-                    ),
-                }
-                .into());
-            }
-            Some(difference) if difference.pixels.is_empty() => {
-                let line = zsim::words!(
-                    lang,
-                    "cs418-compare-same",
-                    path = png.display().to_string(),
-                    tolerance = tolerance.to_string(),
-                    largest = difference.largest.to_string()
-                );
-                text.push_str(&format!("{line}\n"));
-            }
-            Some(difference) => {
-                finish = Finish::Differs;
-                let line = zsim::words!(
-                    lang,
-                    "cs418-compare-differs",
-                    path = png.display().to_string(),
-                    count = difference.pixels.len(),
-                    tolerance = tolerance.to_string(),
-                    largest = difference.largest.to_string()
-                );
-                text.push_str(&format!("{line}\n"));
-                for (x, y, ours, theirs) in difference.pixels.iter().take(20) {
-                    let line = zsim::words!(
-                        lang,
-                        "cs418-compare-pixel",
-                        x = x.to_string(),
-                        y = y.to_string(),
-                        ours = format!("{ours:?}"),
-                        theirs = format!("{theirs:?}")
-                    );
-                    text.push_str(&format!("  {line}\n"));
-                }
-                if difference.pixels.len() > 20 {
-                    let more =
-                        zsim::words!(lang, "cs418-compare-more", count = (difference.pixels.len() - 20).to_string());
-                    text.push_str(&format!("  {more}\n"));
-                }
-            }
+        let (compared, differs) = cs418::report::compare_text(lang, png, &image, &result.image, tolerance)?;
+        text.push_str(&compared);
+        if differs {
+            finish = Finish::Differs;
         }
     }
     emit(out, &text)?;
     Ok(finish)
-}
-
-fn features(case: &Case) -> String {
-    let f = case.features;
-    let mut on: Vec<String> =
-        [(f.depth, "depth"), (f.srgb, "sRGB"), (f.hyp, "hyp"), (f.cull, "cull"), (f.frustum, "frustum")]
-            .into_iter()
-            .filter(|(on, _)| *on)
-            .map(|(_, name)| name.to_string())
-            .collect();
-    if f.fsaa > 1 {
-        on.push(format!("fsaa {}", f.fsaa));
-    }
-    if on.is_empty() { String::new() } else { format!(", {}", on.join(", ")) }
-}
-
-/// The samples where the course's floats and exact arithmetic disagree, each with why.
-fn disagreements(lang: zsim::Lang, course: &Comparison, exact: &Comparison) -> String {
-    let cells = cs418::differences(course, exact);
-    if cells.is_empty() {
-        return zsim::words!(lang, "cs418-arith-alike") + "\n";
-    }
-    let mut text = zsim::words!(lang, "cs418-arith-disagree", count = cells.len()) + "\n";
-    for cell in &cells {
-        let place = if course.level > 1 {
-            zsim::words!(
-                lang,
-                "cs418-place-sample",
-                x = cell.x.to_string(),
-                y = cell.y.to_string(),
-                px = cell.pixel.0.to_string(),
-                py = cell.pixel.1.to_string()
-            )
-        } else {
-            zsim::words!(lang, "cs418-place-pixel", x = cell.x.to_string(), y = cell.y.to_string())
-        };
-        let why = match &cell.reason {
-            Reason::Span { primitive, course, exact, course_covers } => {
-                let span = |s: &Option<(String, String)>| match s {
-                    Some((l, r)) => format!("[{l}, {r})"),
-                    None => zsim::words!(lang, "cs418-no-span"),
-                };
-                let (inside, outside) = (zsim::words!(lang, "cs418-inside"), zsim::words!(lang, "cs418-outside"));
-                let (course_side, exact_side) = if *course_covers { (inside, outside) } else { (outside, inside) };
-                zsim::words!(
-                    lang,
-                    "cs418-why-span",
-                    primitive = primitive.message(lang),
-                    row = cell.y.to_string(),
-                    course = span(course),
-                    exact = span(exact),
-                    x = cell.x.to_string(),
-                    course_side = course_side,
-                    exact_side = exact_side
-                )
-            }
-            Reason::Depth { course, exact } => {
-                let who = |p: &Option<cs418::Primitive>| {
-                    p.as_ref().map_or_else(|| zsim::words!(lang, "cs418-nothing"), |p| p.message(lang))
-                };
-                zsim::words!(lang, "cs418-why-depth", course = who(course), exact = who(exact))
-            }
-        };
-        text.push_str(&format!("  {place}: {why}\n"));
-    }
-    text
 }

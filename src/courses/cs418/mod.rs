@@ -48,6 +48,7 @@ mod compare;
 mod image;
 pub mod import;
 mod raster;
+pub mod report;
 mod scalar;
 
 pub use compare::{CellDifference, Comparison, Primitive, Reason, Shape, differences};

@@ -7,6 +7,8 @@
 //! triangles back from `stage3.txt` as exact decimals and runs the `buet`
 //! rules (`crate::rules`) exactly on the one rasterizer.
 
+pub mod check;
+
 use crate::words::Lang;
 use std::fmt::Write as _;
 

@@ -1,0 +1,174 @@
+//! A CS 418 run in words: a case read with its textures, the features it
+//! uses, where the course's floats and exact arithmetic disagree and why,
+//! and our image against a reference PNG.
+
+use std::path::Path;
+
+use super::{Case, Comparison, Image, Primitive, Reason, compare_images, differences};
+use crate::error::Error;
+use crate::words::Lang;
+
+/// Whether a case's texture files are read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Textures {
+    /// Read from beside the case: the image needs them.
+    Read,
+    /// Not read (each stands in as one transparent texel): what is drawn
+    /// where does not depend on them.
+    Ignored,
+}
+
+/// A case's error as zsim's, naming the file and the line.
+pub fn located(path: &Path, error: super::CaseError) -> Error {
+    Error::SceneFormat {
+        path: path.to_owned(),
+        location: error.line.map_or(String::new(), |line| format!("line {line}")),
+        message: error.message,
+    }
+}
+
+/// Reads the case at `path`, its textures from beside it where `textures`
+/// says so; errors name the file and the line.
+pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<Case, Error> {
+    let text = crate::scene::text::read_text(lang, path)?;
+    let folder = path.parent().unwrap_or(Path::new("."));
+    let texture = |name: &str| {
+        if textures == Textures::Ignored {
+            return Ok(Image { width: 1, height: 1, rgba: vec![0; 4] });
+        }
+        let file = folder.join(name);
+        if !file.is_file() {
+            return Err(words!(lang, "cs418-texture-missing"));
+        }
+        let bytes =
+            std::fs::read(&file).map_err(|e| words!(lang, "cs418-texture-unreadable", reason = e.to_string()))?;
+        Image::from_png(lang, &bytes)
+    };
+    let case = Case::parse(lang, &text, &texture).map_err(|e| located(path, e))?;
+    Ok(case)
+}
+
+/// `--compare`: our image against a reference `image` read from `png`,
+/// within `tolerance` per channel, in words; and whether they differ. An
+/// image of another size is an error about the reference.
+pub fn compare_text(
+    lang: Lang,
+    png: &Path,
+    image: &Image,
+    ours: &Image,
+    tolerance: u8,
+) -> Result<(String, bool), Error> {
+    let mut text = String::new();
+    let Some(difference) = compare_images(ours, image, tolerance) else {
+        return Err(Error::Answer {
+            path: png.to_owned(),
+            message: words!(
+                lang,
+                "cs418-image-size",
+                width = image.width.to_string(),
+                height = image.height.to_string(),
+                case_width = ours.width.to_string(),
+                case_height = ours.height.to_string()
+            ),
+        });
+    };
+    let (path, tolerance_text, largest) =
+        (png.display().to_string(), tolerance.to_string(), difference.largest.to_string());
+    if difference.pixels.is_empty() {
+        let line = words!(lang, "cs418-compare-same", path = path, tolerance = tolerance_text, largest = largest);
+        text.push_str(&format!("{line}\n"));
+        return Ok((text, false));
+    }
+    let count = difference.pixels.len();
+    let line = words!(
+        lang,
+        "cs418-compare-differs",
+        path = path,
+        count = count,
+        tolerance = tolerance_text,
+        largest = largest
+    );
+    text.push_str(&format!("{line}\n"));
+    for (x, y, ours, theirs) in difference.pixels.iter().take(20) {
+        let line = words!(
+            lang,
+            "cs418-compare-pixel",
+            x = x.to_string(),
+            y = y.to_string(),
+            ours = format!("{ours:?}"),
+            theirs = format!("{theirs:?}")
+        );
+        text.push_str(&format!("  {line}\n"));
+    }
+    if count > 20 {
+        text.push_str(&format!("  {}\n", words!(lang, "cs418-compare-more", count = (count - 20).to_string())));
+    }
+    Ok((text, true))
+}
+
+/// The case's features in use, after a comma: `, depth, sRGB, fsaa 4`.
+pub fn features_text(case: &Case) -> String {
+    let f = case.features;
+    let mut on: Vec<String> =
+        [(f.depth, "depth"), (f.srgb, "sRGB"), (f.hyp, "hyp"), (f.cull, "cull"), (f.frustum, "frustum")]
+            .into_iter()
+            .filter(|(on, _)| *on)
+            .map(|(_, name)| name.to_string())
+            .collect();
+    if f.fsaa > 1 {
+        on.push(format!("fsaa {}", f.fsaa));
+    }
+    if on.is_empty() { String::new() } else { format!(", {}", on.join(", ")) }
+}
+
+/// The samples where the course's floats and exact arithmetic disagree, each with why.
+pub fn disagreements_text(lang: Lang, course: &Comparison, exact: &Comparison) -> String {
+    let cells = differences(course, exact);
+    if cells.is_empty() {
+        return words!(lang, "cs418-arith-alike") + "\n";
+    }
+    let mut text = words!(lang, "cs418-arith-disagree", count = cells.len()) + "\n";
+    for cell in &cells {
+        let place = if course.level > 1 {
+            words!(
+                lang,
+                "cs418-place-sample",
+                x = cell.x.to_string(),
+                y = cell.y.to_string(),
+                px = cell.pixel.0.to_string(),
+                py = cell.pixel.1.to_string()
+            )
+        } else {
+            words!(lang, "cs418-place-pixel", x = cell.x.to_string(), y = cell.y.to_string())
+        };
+        let why = match &cell.reason {
+            Reason::Span { primitive, course, exact, course_covers } => {
+                let span = |s: &Option<(String, String)>| match s {
+                    Some((l, r)) => format!("[{l}, {r})"),
+                    None => words!(lang, "cs418-no-span"),
+                };
+                let (inside, outside) = (words!(lang, "cs418-inside"), words!(lang, "cs418-outside"));
+                let (course_side, exact_side) = if *course_covers { (inside, outside) } else { (outside, inside) };
+                words!(
+                    lang,
+                    "cs418-why-span",
+                    primitive = primitive.message(lang),
+                    row = cell.y.to_string(),
+                    course = span(course),
+                    exact = span(exact),
+                    x = cell.x.to_string(),
+                    course_side = course_side,
+                    exact_side = exact_side
+                )
+            }
+            Reason::Depth { course, exact } => {
+                let who = |p: &Option<Primitive>| {
+                    p.as_ref().map_or_else(|| words!(lang, "cs418-nothing"), |p| p.message(lang))
+                };
+                words!(lang, "cs418-why-depth", course = who(course), exact = who(exact))
+            }
+        };
+        text.push_str(&format!("  {place}: {why}\n"));
+    }
+    text
+}
