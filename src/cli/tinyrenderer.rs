@@ -2,11 +2,10 @@
 //! lesson does (its two TGA images), or import it as a zsim scene.
 
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
-use zsim::Error;
-use zsim::tinyrenderer::{self, Model, SIZE};
+use zsim::tinyrenderer::{self, SIZE};
 
 use super::{Failure, Finish, emit};
 
@@ -82,13 +81,10 @@ impl Arith {
     }
 }
 
-/// How many pixels `run --arith exact` lists where exact and f64 differ.
-const LISTED: usize = 10;
-
 pub fn run(lang: zsim::Lang, args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     match &args.command {
         Command::Run { model, output, arith, uncompressed, size } => {
-            let loaded = load(lang, model)?;
+            let loaded = tinyrenderer::load(lang, model)?;
             let drawn = tinyrenderer::render(&loaded, arith.lesson(), *size);
             let side = *size as u16;
             let frame: Vec<u8> = drawn.framebuffer.iter().flatten().copied().collect();
@@ -111,47 +107,15 @@ pub fn run(lang: zsim::Lang, args: &TinyrendererArgs, out: &mut dyn Write) -> Re
                 )
             );
             if *arith == Arith::Exact {
-                text.push_str(&differences(lang, &loaded, &drawn, *size));
+                text.push_str(&tinyrenderer::differences_text(lang, &loaded, &drawn, *size));
             }
             emit(out, &text)?;
             Ok(Finish::Ok)
         }
         Command::Import { model, arith, output, size } => {
-            let scene = tinyrenderer::scene_json(&load(lang, model)?, arith.lesson(), *size);
+            let scene = tinyrenderer::scene_json(&tinyrenderer::load(lang, model)?, arith.lesson(), *size);
             super::emit_or_write(lang, out, output.as_deref(), &scene, &[model])?;
             Ok(Finish::Ok)
         }
     }
-}
-
-/// The pixels where the lesson's f64 gives another z-buffer level than
-/// exact arithmetic, counted, the first few listed.
-fn differences(lang: zsim::Lang, model: &Model, exact: &tinyrenderer::Render, size: i64) -> String {
-    let float = tinyrenderer::render(model, tinyrenderer::Arith::F64, size);
-    let differing: Vec<usize> = (0..exact.zbuffer.len()).filter(|&i| exact.zbuffer[i] != float.zbuffer[i]).collect();
-    let mut text = format!("{}\n", zsim::words!(lang, "tinyrenderer-differ", count = differing.len()));
-    for &cell in differing.iter().take(LISTED) {
-        let (x, y) = (cell % size as usize, cell / size as usize);
-        let face = exact.face[cell].map_or(0, |f| f + 1);
-        let line = zsim::words!(
-            lang,
-            "tinyrenderer-differ-pixel",
-            x = x,
-            y = y,
-            face = face,
-            float = u32::from(float.zbuffer[cell]),
-            exact = u32::from(exact.zbuffer[cell])
-        );
-        text.push_str(&format!("  {line}\n"));
-    }
-    text
-}
-
-fn load(lang: zsim::Lang, path: &Path) -> Result<Model, Error> {
-    let text = zsim::read_text(lang, path)?;
-    Model::parse(lang, &text).map_err(|e| Error::SceneFormat {
-        path: path.to_owned(),
-        location: zsim::words!(lang, "tinyrenderer-line", line = e.line),
-        message: e.message,
-    })
 }

@@ -391,6 +391,42 @@ pub fn read_tga(bytes: &[u8]) -> Result<(usize, usize, usize, Vec<u8>), String> 
     Ok((width, height, bpp, data))
 }
 
+/// How many pixels `run --arith exact` lists where exact and f64 differ.
+pub const DIFFERENCES_LISTED: usize = 10;
+
+/// The pixels where the lesson's f64 gives another z-buffer level than
+/// exact arithmetic, counted, the first few listed.
+pub fn differences_text(lang: Lang, model: &Model, exact: &Render, size: i64) -> String {
+    let float = render(model, Arith::F64, size);
+    let differing: Vec<usize> = (0..exact.zbuffer.len()).filter(|&i| exact.zbuffer[i] != float.zbuffer[i]).collect();
+    let mut text = format!("{}\n", words!(lang, "tinyrenderer-differ", count = differing.len()));
+    for &cell in differing.iter().take(DIFFERENCES_LISTED) {
+        let (x, y) = (cell % size as usize, cell / size as usize);
+        let face = exact.face[cell].map_or(0, |f| f + 1);
+        let line = words!(
+            lang,
+            "tinyrenderer-differ-pixel",
+            x = x,
+            y = y,
+            face = face,
+            float = u32::from(float.zbuffer[cell]),
+            exact = u32::from(exact.zbuffer[cell])
+        );
+        text.push_str(&format!("  {line}\n"));
+    }
+    text
+}
+
+/// Reads the model (OBJ) at `path`; errors name the file and the line.
+pub fn load(lang: Lang, path: &std::path::Path) -> Result<Model, crate::error::Error> {
+    let text = crate::scene::text::read_text(lang, path)?;
+    Model::parse(lang, &text).map_err(|e| crate::error::Error::SceneFormat {
+        path: path.to_owned(),
+        location: words!(lang, "tinyrenderer-line", line = e.line),
+        message: e.message,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
