@@ -373,9 +373,14 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
         let rows_shown = (area.height as i32 - 2).max(1);
         let columns_shown = ((area.width as i32 - 5) / cell as i32).max(1);
         let row = record.map_or(0, |r| r.row as i32);
-        let (span_first, span_last) = record
-            .and_then(|r| r.spans.iter().filter_map(|s| s.columns).reduce(|a, b| (a.0.min(b.0), a.1.max(b.1))))
-            .map_or((0, 0), |(a, b)| (a as i32, b as i32));
+        // Centred on the span, or while the coverage question waits (where the span lies
+        // would answer it), on the raster.
+        let (span_first, span_last) = match record {
+            _ if coverage_pending => (0, width - 1),
+            _ => record
+                .and_then(|r| r.spans.iter().filter_map(|s| s.columns).reduce(|a, b| (a.0.min(b.0), a.1.max(b.1))))
+                .map_or((0, 0), |(a, b)| (a as i32, b as i32)),
+        };
         // Top row shown, and first column shown: centred, then scrolled, then kept on the raster.
         let top = (row + rows_shown / 2 - self.scroll.0).clamp((rows_shown - 1).min(height - 1), height - 1);
         let first =
