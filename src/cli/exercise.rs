@@ -6,12 +6,8 @@ use std::path::PathBuf;
 
 use clap::Args;
 use zsim::Error;
-use zsim::Simulation;
-use zsim::Unobserved;
-use zsim::exercise::{Exercise, HardCase, Spec, make};
-use zsim::figure::{Extras, Shading, svg_with};
+use zsim::exercise::{HardCase, Spec, make};
 use zsim::picture::Format;
-use zsim::report::matrix;
 
 use super::{Failure, Finish, emit};
 
@@ -62,25 +58,6 @@ pub struct ExerciseArgs {
     points: u32,
 }
 
-/// A figure's SVG in each format asked for: `(NAME.ext, bytes)`.
-fn figure_files(
-    lang: zsim::Lang,
-    name: &str,
-    svg: &str,
-    formats: &[Format],
-    dir: &std::path::Path,
-) -> Result<Vec<(String, Vec<u8>)>, Error> {
-    let mut files: Vec<(String, Vec<u8>)> = Vec::new();
-    for format in formats {
-        let file = format!("{name}.{}", format.extension());
-        if !files.iter().any(|(f, _)| *f == file) {
-            let bytes = format.encode(lang, svg, &dir.join(&file), false)?;
-            files.push((file, bytes));
-        }
-    }
-    Ok(files)
-}
-
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 enum StyleArg {
     /// Like the book's example.
@@ -113,71 +90,9 @@ pub fn run(lang: zsim::Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result
     let exercise = make(lang, &spec).map_err(Error::from)?;
     let dir = &args.output;
     // Everything is made first and written at the end, replacing nothing.
-    let mut files: Vec<(String, Vec<u8>)> = Vec::new();
-    let mut write = |name: &str, text: &str| -> Result<(), Error> {
-        files.push((name.to_string(), text.as_bytes().to_vec()));
-        Ok(())
-    };
-    write("scene.json", &exercise.json)?;
-    let scene = &exercise.scene;
-    let last = scene.polygons.len() - 1;
-    let mut simulation = Simulation::new(scene);
-    let mut written = vec!["scene.json".to_string()];
-    while let Some(index) = simulation.draw_next(&mut Unobserved) {
-        if args.each_polygon && index < last {
-            for (kind, text) in answers(&simulation) {
-                let name = format!("answer.after-{}.{kind}.txt", index + 1);
-                write(&name, &text)?;
-                written.push(name);
-            }
-        }
-    }
-    for (kind, text) in answers(&simulation) {
-        let name = format!("answer.{kind}.txt");
-        write(&name, &text)?;
-        written.push(name);
-    }
-    // The worksheet and the solution are handed to students: in their language.
-    let seed = args.seed.to_string();
-    let worksheet = svg_with(
-        lang,
-        scene,
-        Simulation::new(scene).buffers(),
-        last,
-        Shading::Frame,
-        &zsim::words!(
-            lang,
-            "exercise-title",
-            seed = &seed,
-            width = scene.width,
-            height = scene.height,
-            count = scene.polygons.len()
-        ),
-        &Extras {
-            vertex_labels: true,
-            caption: vec![
-                zsim::words!(lang, "exercise-task-draw", max = scene.depth_max()),
-                zsim::words!(lang, "exercise-task-write"),
-            ],
-            values: false,
-        },
-    );
-    let mut figures = figure_files(lang, "worksheet", &worksheet, &args.formats, dir)?;
-    let solution = svg_with(
-        lang,
-        scene,
-        simulation.buffers(),
-        last,
-        Shading::Frame,
-        &zsim::words!(lang, "exercise-solution-title", seed = &seed),
-        &Extras { vertex_labels: true, caption: Vec::new(), values: true },
-    );
-    figures.extend(figure_files(lang, "solution", &solution, &args.formats, dir)?);
-    written.extend(figures.iter().map(|(name, _)| name.clone()));
-    let notes = notes(lang, &exercise, &spec, args);
-    write("exercise.txt", &notes)?;
-    written.push("exercise.txt".into());
-    files.extend(figures);
+    let made = zsim::exercise::files::files(lang, &exercise, &spec, &args.formats, args.each_polygon, dir)?;
+    let (files, notes) = (made.files, made.notes);
+    let written: Vec<String> = files.iter().map(|(name, _)| name.clone()).collect();
     super::write_fresh(dir, &files, &[])?;
     let line = zsim::words!(lang, "file-written-in", files = written.join(", "), path = dir.display().to_string());
     emit(out, &format!("{notes}{line}\n"))?;
@@ -203,41 +118,4 @@ fn executable(path: &std::path::Path) -> Result<(), Error> {
             .map_err(|source| Error::Write { path: path.to_owned(), source })?;
     }
     Ok(())
-}
-
-/// The framebuffer and the z-buffer as `zsim check` reads them.
-fn answers(simulation: &Simulation<'_>) -> [(&'static str, String); 2] {
-    let buffers = simulation.buffers();
-    let depth = buffers.depth_level_rows().expect("exercises keep a quantized z-buffer");
-    [("frame", matrix(&buffers.frame_rows(), false)), ("depth", matrix(&depth, false))]
-}
-
-/// What the teacher reads: the settings, the cases asked for and found, and where.
-fn notes(lang: zsim::Lang, exercise: &Exercise, spec: &Spec, args: &ExerciseArgs) -> String {
-    let scene = &exercise.scene;
-    let asked: Vec<&str> = spec.hard.iter().map(|c| c.name()).collect();
-    let mut text = zsim::words!(
-        lang,
-        "exercise-notes-settings",
-        seed = spec.seed.to_string(),
-        width = scene.width.to_string(),
-        height = scene.height.to_string(),
-        polygons = scene.polygons.len().to_string(),
-        frame_bits = scene.frame_bits.to_string(),
-        depth_bits = scene.depth_bits.to_string(),
-        max = scene.depth_max().to_string()
-    ) + "\n";
-    let asked = if asked.is_empty() { zsim::words!(lang, "exercise-notes-no-case") } else { asked.join(", ") };
-    let line = zsim::words!(lang, "exercise-notes-asked", asked = asked, candidate = exercise.tries.to_string());
-    text.push_str(&format!("{line}\n{}\n", zsim::words!(lang, "exercise-notes-contains")));
-    if exercise.found.is_empty() {
-        text.push_str(&format!("  {}\n", zsim::words!(lang, "exercise-notes-none")));
-    }
-    for found in &exercise.found {
-        text.push_str(&format!("  {}: {}\n", found.case, found.place));
-    }
-    let scene_path = args.output.join("scene.json");
-    let line = zsim::words!(lang, "exercise-notes-next", path = scene_path.display().to_string());
-    text.push_str(&format!("{line}\n"));
-    text
 }

@@ -5,6 +5,8 @@
 //! the generator keeps drawing candidates until the trace shows every case
 //! asked for.
 
+pub mod files;
+
 use crate::words::Lang;
 use std::collections::BTreeSet;
 use std::fmt;
