@@ -157,8 +157,6 @@ pub enum Usage {
         /// The scene's depth test.
         test: String,
     },
-    /// An inexact `--arith` with `--segments` or `--order`.
-    ArithPlainLoopOnly,
     /// `--after N` past the last polygon.
     NoPolygonNumbered {
         /// N.
@@ -183,11 +181,6 @@ pub enum Usage {
         width: u32,
         /// The raster's height.
         height: u32,
-    },
-    /// A figure file that is neither SVG nor PNG.
-    FigureFormat {
-        /// The file asked for.
-        path: PathBuf,
     },
     /// A raster too large for a figure.
     FigureTooLarge {
@@ -221,15 +214,6 @@ pub enum Usage {
         /// The command.
         task: Task,
     },
-    /// `check` with neither `--frame` nor `--depth`.
-    CheckNeedsAnswer,
-    /// `grade --identity`: a column the chosen platform does not import by.
-    IdentityColumn {
-        /// The column's header.
-        column: &'static str,
-    },
-    /// `grade --points 0`.
-    NoPoints,
     /// `check --submission`: the folder holds no answer file.
     NoSubmission {
         /// The folder.
@@ -239,33 +223,6 @@ pub enum Usage {
     NoAnswersFound {
         /// The folder.
         class: PathBuf,
-    },
-    /// `accuracy --scenes` out of range.
-    ScenesOutOfRange,
-    /// `memory --frame-bits`/`--depth-bits` out of range.
-    MemoryBits {
-        /// The option.
-        option: &'static str,
-        /// The bits given.
-        bits: u32,
-    },
-    /// `memory` with a zero size.
-    MemoryZeroSize,
-    /// `memory` on a raster of more than 2^50 cells.
-    MemoryTooLarge,
-    /// `random --count` too large.
-    RandomCount {
-        /// The count given.
-        count: usize,
-        /// The largest allowed.
-        max: usize,
-    },
-    /// `random --frame-bits`/`--depth-bits` out of range.
-    RandomBits,
-    /// `random --width`/`--height` out of range.
-    RandomSide {
-        /// The largest side.
-        max: u32,
     },
     /// `exercise --hard` names an unknown case.
     NotAHardCase {
@@ -315,8 +272,6 @@ pub enum Usage {
         /// The files it would replace, by name.
         files: Vec<String>,
     },
-    /// `--tile 0`.
-    TileZero,
     /// `--compare-gpu` on a scene with per-pixel effects or antialiasing.
     CompareGpuPlainOnly,
     /// `--compare-gpu` without a usable GPU.
@@ -324,12 +279,6 @@ pub enum Usage {
         /// What went wrong.
         reason: String,
     },
-    /// `--inside` without `--order pixels`.
-    InsideNeedsPixelOrder,
-    /// `--tile` or `--threads` with a format other than `none`.
-    TilesNeedFormatNone,
-    /// `--format none` with a variant of the loop.
-    FormatNoneIsPlain,
     /// `step --polygon` on a polygon that is not drawn.
     NoScanlines {
         /// 0-based polygon index.
@@ -388,7 +337,6 @@ impl Usage {
             Usage::ArithNeedsGreaterOrLess { arith, test } => {
                 words!(lang, "usage-arith-greater-or-less", arith = arith, test = test)
             }
-            Usage::ArithPlainLoopOnly => words!(lang, "usage-arith-plain-loop"),
             Usage::NoPolygonNumbered { number, count } => {
                 words!(lang, "usage-no-polygon-numbered", number = number.to_string(), count = count.to_string())
             }
@@ -405,7 +353,6 @@ impl Usage {
                 last_x = (width - 1).to_string(),
                 last_y = (height - 1).to_string()
             ),
-            Usage::FigureFormat { path: p } => words!(lang, "usage-figure-format", path = path(p)),
             Usage::FigureTooLarge { path: p, width, height, max } => words!(
                 lang,
                 "usage-figure-too-large",
@@ -424,24 +371,10 @@ impl Usage {
                 Task::Grade => words!(lang, "usage-exact-depths-grade", path = path(p)),
                 Task::Draw | Task::Check => words!(lang, "usage-exact-depths-check", path = path(p)),
             },
-            Usage::CheckNeedsAnswer => words!(lang, "usage-check-needs-answer"),
-            Usage::IdentityColumn { column } => words!(lang, "usage-identity-column", column = *column),
-            Usage::NoPoints => words!(lang, "usage-no-points"),
             Usage::NoSubmission { folder } => {
                 words!(lang, "usage-no-submission", folder = folder.display().to_string())
             }
             Usage::NoAnswersFound { class } => words!(lang, "usage-no-answers", path = path(class)),
-            Usage::ScenesOutOfRange => words!(lang, "usage-scenes-range"),
-            Usage::MemoryBits { option, bits } => {
-                words!(lang, "usage-memory-bits", option = *option, bits = bits.to_string())
-            }
-            Usage::MemoryZeroSize => words!(lang, "usage-memory-zero"),
-            Usage::MemoryTooLarge => words!(lang, "usage-memory-too-large"),
-            Usage::RandomCount { count, max } => {
-                words!(lang, "usage-random-count", count = count.to_string(), max = max.to_string())
-            }
-            Usage::RandomBits => words!(lang, "usage-random-bits"),
-            Usage::RandomSide { max } => words!(lang, "usage-random-side", max = max.to_string()),
             Usage::NotAHardCase { name, names } => {
                 words!(lang, "usage-not-a-hard-case", name = name, names = names.join(", "))
             }
@@ -471,12 +404,8 @@ impl Usage {
                     more = files.len().saturating_sub(5)
                 )
             }
-            Usage::TileZero => words!(lang, "usage-tile-zero"),
             Usage::CompareGpuPlainOnly => words!(lang, "usage-compare-gpu-plain"),
             Usage::NoGpu { reason } => words!(lang, "usage-no-gpu", reason = reason.as_str()),
-            Usage::InsideNeedsPixelOrder => words!(lang, "usage-inside-needs-pixel-order"),
-            Usage::TilesNeedFormatNone => words!(lang, "usage-tiles-need-format-none"),
-            Usage::FormatNoneIsPlain => words!(lang, "usage-format-none-is-plain"),
             Usage::NoScanlines { index, name, why } => {
                 words!(
                     lang,

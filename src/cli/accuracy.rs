@@ -4,7 +4,6 @@ use std::io::Write;
 
 use clap::{Args, ValueEnum};
 use comfy_table::{Table, presets};
-use zsim::Error;
 use zsim::accuracy::{self, Settings};
 
 use super::{Failure, Finish, emit};
@@ -45,7 +44,7 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
 
 pub fn run(lang: zsim::Lang, args: &AccuracyArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.scenes == 0 || args.scenes > 100 {
-        return Err(Error::from(zsim::Usage::ScenesOutOfRange).into());
+        return Err(super::flags::Flag::ScenesOutOfRange.into());
     }
     let settings = Settings { seed: args.seed, width: args.size.0, height: args.size.1, scenes: args.scenes };
     let scenes = accuracy::scenes(lang, &settings)?;

@@ -56,7 +56,7 @@ enum Format {
 pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let scene = Scene::load(lang, &args.scene)?;
     if args.frame.is_none() && args.depth.is_none() && args.submission.is_none() {
-        return Err(Error::from(zsim::Usage::CheckNeedsAnswer).into());
+        return Err(super::flags::Flag::CheckNeedsAnswer.into());
     }
     if scene.polygons.is_empty() {
         return Err(Error::from(zsim::Usage::NoPolygons { path: args.scene.clone(), task: zsim::Task::Check }).into());

@@ -39,7 +39,7 @@ pub struct FigureArgs {
 
 pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let Some(format) = zsim::picture::Format::of(&args.output) else {
-        return Err(Error::from(zsim::Usage::FigureFormat { path: args.output.clone() }).into());
+        return Err(super::flags::Flag::FigureFormat { path: args.output.clone() }.into());
     };
     let scene = Scene::load(lang, &args.scene)?;
     if scene.width > MAX_FIGURE_SIDE || scene.height > MAX_FIGURE_SIDE {

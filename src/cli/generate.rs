@@ -4,7 +4,6 @@ use std::io::Write;
 
 use clap::{Args, ValueEnum};
 use comfy_table::{Table, presets};
-use zsim::Error;
 use zsim::{RandomScene, memory};
 
 use super::{Failure, Finish, emit};
@@ -47,11 +46,11 @@ fn megabytes(bytes: u64) -> String {
 pub fn memory_command(lang: zsim::Lang, args: &MemoryArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     for (name, bits) in [("--frame-bits", args.frame_bits), ("--depth-bits", args.depth_bits)] {
         if !(1..=64).contains(&bits) {
-            return Err(Error::from(zsim::Usage::MemoryBits { option: name, bits }).into());
+            return Err(super::flags::Flag::MemoryBits { option: name, bits }.into());
         }
     }
     if args.width == 0 || args.height == 0 || args.supersample == 0 {
-        return Err(Error::from(zsim::Usage::MemoryZeroSize).into());
+        return Err(super::flags::Flag::MemoryZeroSize.into());
     }
     if args
         .width
@@ -59,7 +58,7 @@ pub fn memory_command(lang: zsim::Lang, args: &MemoryArgs, out: &mut dyn Write) 
         .and_then(|c| c.checked_mul(args.supersample.pow(2)))
         .is_none_or(|c| c > 1 << 50)
     {
-        return Err(Error::from(zsim::Usage::MemoryTooLarge).into());
+        return Err(super::flags::Flag::MemoryTooLarge.into());
     }
     let [frame, depth] = memory(
         args.width,
@@ -158,14 +157,14 @@ const MAX_RANDOM_COUNT: usize = 10_000_000;
 
 pub fn random_command(lang: zsim::Lang, args: &RandomArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.count > MAX_RANDOM_COUNT {
-        return Err(Error::from(zsim::Usage::RandomCount { count: args.count, max: MAX_RANDOM_COUNT }).into());
+        return Err(super::flags::Flag::RandomCount { count: args.count, max: MAX_RANDOM_COUNT }.into());
     }
     if !(1..=32).contains(&args.frame_bits) || !(1..=32).contains(&args.depth_bits) {
-        return Err(Error::from(zsim::Usage::RandomBits).into());
+        return Err(super::flags::Flag::RandomBits.into());
     }
     let side = zsim::MAX_SIDE as u32;
     if !(1..=side).contains(&args.width) || !(1..=side).contains(&args.height) {
-        return Err(Error::from(zsim::Usage::RandomSide { max: side }).into());
+        return Err(super::flags::Flag::RandomSide { max: side }.into());
     }
     let spec = RandomScene {
         count: args.count,

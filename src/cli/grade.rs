@@ -113,14 +113,14 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
 
 /// A gradebook import for Moodle or Canvas, with the identity column checked
 /// against the platform.
-fn gradebook(args: &GradeArgs, rows: &[&Grade]) -> Result<String, Error> {
+fn gradebook(args: &GradeArgs, rows: &[&Grade]) -> Result<String, Failure> {
     let moodle = args.format == Format::Moodle;
     let identity = args.identity.unwrap_or(if moodle { Identity::Email } else { Identity::SisLoginId });
     if identity.is_moodle() != moodle {
-        return Err(zsim::Usage::IdentityColumn { column: identity.header() }.into());
+        return Err(super::flags::Flag::IdentityColumn { column: identity.header() }.into());
     }
     if args.points == 0 {
-        return Err(zsim::Usage::NoPoints.into());
+        return Err(super::flags::Flag::NoPoints.into());
     }
     Ok(if moodle {
         gradebooks::moodle(rows, identity, args.item.as_deref().unwrap_or("Assignment: z-buffer (Real)"), args.points)

@@ -8,6 +8,7 @@ mod cs418;
 mod exercise;
 mod explain;
 mod figure;
+mod flags;
 mod generate;
 mod grade;
 mod install;
@@ -91,8 +92,10 @@ pub enum Finish {
 /// What can stop a command.
 #[derive(Debug)]
 pub enum Failure {
-    /// Bad input or usage: exit 2 with the message.
+    /// Bad input: exit 2 with the message.
     Input(Error),
+    /// Flags that do not go together: exit 2 with the message.
+    Flag(flags::Flag),
     /// Writing the output failed (a closed pipe is not reported).
     Io(io::Error),
 }
@@ -100,6 +103,12 @@ pub enum Failure {
 impl From<Error> for Failure {
     fn from(error: Error) -> Failure {
         Failure::Input(error)
+    }
+}
+
+impl From<flags::Flag> for Failure {
+    fn from(flag: flags::Flag) -> Failure {
+        Failure::Flag(flag)
     }
 }
 
@@ -156,6 +165,10 @@ pub fn main() -> ExitCode {
         Err(Failure::Input(error)) => {
             // Messages quote the input (names, tokens): never let it steer the terminal.
             eprintln!("zsim: {}", zsim::printable(&error.message(lang)));
+            ExitCode::from(2)
+        }
+        Err(Failure::Flag(flag)) => {
+            eprintln!("zsim: {}", zsim::printable(&flag.message(lang)));
             ExitCode::from(2)
         }
     }

@@ -96,14 +96,14 @@ enum Format {
 
 pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     if args.inside.is_some() && args.order != Order::Pixels {
-        return Err(zsim::Error::from(zsim::Usage::InsideNeedsPixelOrder).into());
+        return Err(super::flags::Flag::InsideNeedsPixelOrder.into());
     }
     if args.tile == Some(0) {
-        return Err(zsim::Error::from(zsim::Usage::TileZero).into());
+        return Err(super::flags::Flag::TileZero.into());
     }
     let final_only = args.final_only || args.after.is_some();
     if (args.tile.is_some() || args.threads.is_some()) && args.format != Format::None && !final_only {
-        return Err(zsim::Error::from(zsim::Usage::TilesNeedFormatNone).into());
+        return Err(super::flags::Flag::TilesNeedFormatNone.into());
     }
     let reading = Instant::now();
     let mut scene = Scene::load(lang, &args.scene)?;
@@ -134,7 +134,7 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
     let json = args.format == Format::Json;
     if args.segments.is_some() || args.order == Order::Pixels || scene.effects.antialias.is_some() {
         if args.format == Format::None {
-            return Err(zsim::Error::from(zsim::Usage::FormatNoneIsPlain).into());
+            return Err(super::flags::Flag::FormatNoneIsPlain.into());
         }
         let variant = super::variants::Variant {
             segments: args.segments,
@@ -341,7 +341,7 @@ fn run_inexact(
 ) -> Result<Finish, Failure> {
     zsim::arith::check_supported(scene, args.arith)?;
     if args.segments.is_some() || args.order != Order::Polygons {
-        return Err(zsim::Error::from(zsim::Usage::ArithPlainLoopOnly).into());
+        return Err(super::flags::Flag::ArithPlainLoopOnly.into());
     }
     let prepared = zsim::arith::Prepared::new(scene, args.arith)?;
     let rasterizing = Instant::now();

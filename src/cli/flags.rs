@@ -1,0 +1,91 @@
+//! Errors of the command line's own flags (a tile of zero pixels, a
+//! format that does not go with another flag): worded here, in the
+//! reader's language, and reported as every other error is (exit status 2).
+//! The library's errors are the library's (`zsim::Error`).
+
+use std::path::PathBuf;
+
+/// A request of the command line that its flags do not allow.
+#[derive(Debug)]
+pub enum Flag {
+    /// An inexact `--arith` with `--segments` or `--order`.
+    ArithPlainLoopOnly,
+    /// A figure file that is neither SVG nor PNG.
+    FigureFormat {
+        /// The file asked for.
+        path: PathBuf,
+    },
+    /// `check` with neither `--frame` nor `--depth`.
+    CheckNeedsAnswer,
+    /// `grade --identity`: a column the chosen platform does not import by.
+    IdentityColumn {
+        /// The column's header.
+        column: &'static str,
+    },
+    /// `grade --points 0`.
+    NoPoints,
+    /// `accuracy --scenes` out of range.
+    ScenesOutOfRange,
+    /// `memory --frame-bits`/`--depth-bits` out of range.
+    MemoryBits {
+        /// The option.
+        option: &'static str,
+        /// The bits given.
+        bits: u32,
+    },
+    /// `memory` with a zero size.
+    MemoryZeroSize,
+    /// `memory` on a raster of more than 2^50 cells.
+    MemoryTooLarge,
+    /// `random --count` too large.
+    RandomCount {
+        /// The count given.
+        count: usize,
+        /// The largest allowed.
+        max: usize,
+    },
+    /// `random --frame-bits`/`--depth-bits` out of range.
+    RandomBits,
+    /// `random --width`/`--height` out of range.
+    RandomSide {
+        /// The largest side.
+        max: u32,
+    },
+    /// `--tile 0`.
+    TileZero,
+    /// `--inside` without `--order pixels`.
+    InsideNeedsPixelOrder,
+    /// `--tile` or `--threads` with a format other than `none`.
+    TilesNeedFormatNone,
+    /// `--format none` with a variant of the loop.
+    FormatNoneIsPlain,
+}
+
+impl Flag {
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: zsim::Lang) -> String {
+        let path = |p: &PathBuf| p.display().to_string();
+        match self {
+            Flag::ArithPlainLoopOnly => zsim::words!(lang, "usage-arith-plain-loop"),
+            Flag::FigureFormat { path: p } => zsim::words!(lang, "usage-figure-format", path = path(p)),
+            Flag::CheckNeedsAnswer => zsim::words!(lang, "usage-check-needs-answer"),
+            Flag::IdentityColumn { column } => zsim::words!(lang, "usage-identity-column", column = *column),
+            Flag::NoPoints => zsim::words!(lang, "usage-no-points"),
+            Flag::ScenesOutOfRange => zsim::words!(lang, "usage-scenes-range"),
+            Flag::MemoryBits { option, bits } => {
+                zsim::words!(lang, "usage-memory-bits", option = *option, bits = bits.to_string())
+            }
+            Flag::MemoryZeroSize => zsim::words!(lang, "usage-memory-zero"),
+            Flag::MemoryTooLarge => zsim::words!(lang, "usage-memory-too-large"),
+            Flag::RandomCount { count, max } => {
+                zsim::words!(lang, "usage-random-count", count = count.to_string(), max = max.to_string())
+            }
+            Flag::RandomBits => zsim::words!(lang, "usage-random-bits"),
+            Flag::RandomSide { max } => zsim::words!(lang, "usage-random-side", max = max.to_string()),
+            Flag::TileZero => zsim::words!(lang, "usage-tile-zero"),
+            Flag::InsideNeedsPixelOrder => zsim::words!(lang, "usage-inside-needs-pixel-order"),
+            Flag::TilesNeedFormatNone => zsim::words!(lang, "usage-tiles-need-format-none"),
+            Flag::FormatNoneIsPlain => zsim::words!(lang, "usage-format-none-is-plain"),
+        }
+    }
+}
