@@ -91,12 +91,13 @@ impl Lang {
     }
 }
 
-/// The four catalogues, each parsed once for the whole process and shared
-/// by every thread (the concurrent bundle's memoizer is `Sync`); which one a
-/// sentence is made in is always passed by the caller.
-fn bundles() -> &'static [FluentBundle<FluentResource>; 4] {
-    static BUNDLES: std::sync::OnceLock<[FluentBundle<FluentResource>; 4]> = std::sync::OnceLock::new();
-    BUNDLES.get_or_init(|| Lang::ALL.map(bundle))
+/// A language's catalogue, parsed the first time it is asked for and then
+/// shared by every thread (the concurrent bundle's memoizer is `Sync`);
+/// which language a sentence is made in is always passed by the caller.
+fn catalogue(lang: Lang) -> &'static FluentBundle<FluentResource> {
+    static BUNDLES: [std::sync::OnceLock<FluentBundle<FluentResource>>; 4] = [const { std::sync::OnceLock::new() }; 4];
+    let index = Lang::ALL.iter().position(|l| *l == lang).expect("every language has a catalogue");
+    BUNDLES[index].get_or_init(|| bundle(lang))
 }
 
 fn bundle(lang: Lang) -> FluentBundle<FluentResource> {
@@ -152,11 +153,9 @@ number_arg!(u32, usize, u64, i32, i64);
 /// The message `key` in `lang` with `args`; a key missing from a catalogue
 /// falls back to English (the key-coverage test keeps that from happening).
 pub fn text(lang: Lang, key: &str, args: &[(&str, Arg)]) -> String {
-    let bundles = bundles();
-    let index = |lang: Lang| Lang::ALL.iter().position(|l| *l == lang).expect("every language has a catalogue");
-    let bundle = match bundles[index(lang)].has_message(key) {
-        true => &bundles[index(lang)],
-        false => &bundles[index(Lang::En)],
+    let bundle = match catalogue(lang).has_message(key) {
+        true => catalogue(lang),
+        false => catalogue(Lang::En),
     };
     let Some(pattern) = bundle.get_message(key).and_then(|m| m.value()) else {
         debug_assert!(false, "message {key} is missing: please report this bug");
