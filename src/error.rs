@@ -325,14 +325,8 @@ fn quoted_list(items: &[String]) -> String {
 impl Usage {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
-        let mut text = String::new();
-        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
-        text
-    }
-
-    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         let path = |p: &PathBuf| p.display().to_string();
-        let text = match self {
+        match self {
             Usage::ArithNeedsPlainRules { arith } => words!(lang, "usage-arith-plain-rules", arith = arith),
             Usage::ArithNeedsGreaterOrLess { arith, test } => {
                 words!(lang, "usage-arith-greater-or-less", arith = arith, test = test)
@@ -434,8 +428,7 @@ impl Usage {
                     None => words!(lang, "usage-scanline-no-rows", reach = reach),
                 }
             }
-        };
-        f.write_str(&text)
+        }
     }
 }
 
@@ -458,22 +451,16 @@ pub enum PolygonProblem {
 impl PolygonProblem {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
-        let mut text = String::new();
-        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
-        text
-    }
-
-    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self {
-            PolygonProblem::Geometry(error) => f.write_str(&error.message(lang)),
-            PolygonProblem::Other(message) => f.write_str(message),
-            PolygonProblem::ValueTooWide { value, frame_bits } => f.write_str(&words!(
+            PolygonProblem::Geometry(error) => error.message(lang),
+            PolygonProblem::Other(message) => message.to_string(),
+            PolygonProblem::ValueTooWide { value, frame_bits } => words!(
                 lang,
                 "polygon-value-too-wide",
                 value = value.to_string(),
                 bits = frame_bits.to_string(),
                 max = ((1u64 << frame_bits) - 1).to_string()
-            )),
+            ),
         }
     }
 }
@@ -481,19 +468,13 @@ impl PolygonProblem {
 impl Error {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
-        let mut text = String::new();
-        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
-        text
-    }
-
-    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self {
-            Error::Read { path, source } => f.write_str(&words!(
+            Error::Read { path, source } => words!(
                 lang,
                 "error-read",
                 path = path.display().to_string(),
                 reason = crate::words::io_reason(lang, source)
-            )),
+            ),
             Error::NotRegular { path, kind } => {
                 let kind = match kind {
                     FileKind::Directory => words!(lang, "file-kind-directory"),
@@ -503,29 +484,26 @@ impl Error {
                     FileKind::Link => words!(lang, "file-kind-link"),
                     FileKind::Other => words!(lang, "file-kind-other"),
                 };
-                f.write_str(&words!(lang, "error-not-regular", path = path.display().to_string(), kind = kind))
+                words!(lang, "error-not-regular", path = path.display().to_string(), kind = kind)
             }
-            Error::TooLarge { path, limit } => f.write_str(&words!(
-                lang,
-                "error-too-large",
-                path = path.display().to_string(),
-                limit = (limit >> 20).to_string()
-            )),
-            Error::Write { path, source } => f.write_str(&words!(
+            Error::TooLarge { path, limit } => {
+                words!(lang, "error-too-large", path = path.display().to_string(), limit = (limit >> 20).to_string())
+            }
+            Error::Write { path, source } => words!(
                 lang,
                 "error-write",
                 path = path.display().to_string(),
                 reason = crate::words::io_reason(lang, source)
-            )),
+            ),
             Error::SceneFormat { path, location, message } => {
                 if location.is_empty() {
-                    write!(f, "{}: {message}", path.display())
+                    format!("{}: {message}", path.display())
                 } else {
-                    write!(f, "{}: {location}: {message}", path.display())
+                    format!("{}: {location}: {message}", path.display())
                 }
             }
-            Error::Setting { path, key, message } => write!(f, "{}: {key}: {message}", path.display()),
-            Error::Polygon { origin, index, name, problem } => f.write_str(&words!(
+            Error::Setting { path, key, message } => format!("{}: {key}: {message}", path.display()),
+            Error::Polygon { origin, index, name, problem } => words!(
                 lang,
                 "error-polygon",
                 path = match origin {
@@ -536,9 +514,9 @@ impl Error {
                 },
                 polygon = crate::words::polygon_label(lang, "polygon-name", *index, name),
                 problem = problem.message(lang)
-            )),
-            Error::Usage(usage) => usage.write_in(lang, f),
-            Error::Answer { path, message } => write!(f, "{}: {message}", path.display()),
+            ),
+            Error::Usage(usage) => usage.message(lang),
+            Error::Answer { path, message } => format!("{}: {message}", path.display()),
         }
     }
 }

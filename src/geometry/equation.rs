@@ -55,24 +55,18 @@ pub struct OffPlane {
 impl GeometryError {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
-        let mut text = String::new();
-        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
-        text
-    }
-
-    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self {
-            GeometryError::TooFewVertices(n) => f.write_str(&words!(lang, "geometry-too-few", count = n.to_string())),
+            GeometryError::TooFewVertices(n) => words!(lang, "geometry-too-few", count = n.to_string()),
             GeometryError::TooManyVertices(n) => {
-                f.write_str(&words!(lang, "geometry-too-many", count = n.to_string(), max = MAX_VERTICES.to_string()))
+                words!(lang, "geometry-too-many", count = n.to_string(), max = MAX_VERTICES.to_string())
             }
-            GeometryError::OutOfRange { vertex, value, denominator } => f.write_str(&words!(
+            GeometryError::OutOfRange { vertex, value, denominator } => words!(
                 lang,
                 "geometry-out-of-range",
                 vertex = vertex.to_string(),
                 value = crate::numbers::fraction(value),
                 denominator = crate::numbers::big_integer(lang, denominator)
-            )),
+            ),
             GeometryError::NotPlanar(off) => {
                 let OffPlane { vertex, through: [i, j, k], plane, off_by, along_z } = off.as_ref();
                 let (key, off) = if *along_z {
@@ -80,7 +74,7 @@ impl GeometryError {
                 } else {
                     ("geometry-off-plane", crate::numbers::fraction(off_by))
                 };
-                f.write_str(&words!(
+                words!(
                     lang,
                     key,
                     vertex = vertex.to_string(),
@@ -89,7 +83,7 @@ impl GeometryError {
                     j = j.to_string(),
                     k = k.to_string(),
                     off = off
-                ))
+                )
             }
         }
     }

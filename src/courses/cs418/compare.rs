@@ -19,19 +19,13 @@ pub struct Primitive {
 impl Primitive {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
-        let mut text = String::new();
-        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
-        text
-    }
-
-    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         let list: Vec<String> = self.vertices.iter().map(ToString::to_string).collect();
         let (vertices, line) = (list.join(", "), self.line.to_string());
-        f.write_str(&if self.vertices.len() == 1 {
+        if self.vertices.len() == 1 {
             words!(lang, "cs418-primitive-point", vertices = vertices, line = line)
         } else {
             words!(lang, "cs418-primitive-triangle", vertices = vertices, line = line)
-        })
+        }
     }
 }
 

@@ -67,17 +67,11 @@ pub struct CaseError {
 impl CaseError {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
-        let mut text = String::new();
-        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
-        text
-    }
-
-    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
         match self.line {
             Some(line) => {
-                f.write_str(&words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str()))
+                words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str())
             }
-            None => f.write_str(&self.message),
+            None => self.message.clone(),
         }
     }
 }

@@ -43,18 +43,12 @@ pub enum GpuError {
 impl GpuError {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
-        let mut text = String::new();
-        self.write_in(lang, &mut text).expect("writing to a String cannot fail");
-        text
-    }
-
-    fn write_in(&self, lang: Lang, f: &mut dyn std::fmt::Write) -> std::fmt::Result {
-        f.write_str(&match self {
+        match self {
             GpuError::NoLibrary(reason) => words!(lang, "gpu-no-library", reason = reason.as_str()),
             GpuError::NoVulkan(reason) => words!(lang, "gpu-no-vulkan", reason = reason.as_str()),
             GpuError::NotBuilt(feature) => words!(lang, "gpu-not-built", feature = *feature),
             GpuError::Refused { step, reason } => words!(lang, "gpu-refused", step = *step, reason = reason.as_str()),
-        })
+        }
     }
 }
 
