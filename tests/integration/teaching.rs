@@ -164,6 +164,26 @@ fn quiz_coverage_asks_which_centres_are_covered_first() {
     );
 }
 
+/// The framebuffer question in the line mode: the value after each pixel,
+/// judged by value, and a value no framebuffer cell can hold asked again.
+#[test]
+fn quiz_frame_asks_the_framebuffer_value() {
+    let run = zsim_with_input(
+        &["step", "examples/rogers.json", "--quiz", "frame", "--polygon", "2", "--scanline", "15"],
+        "4\n2\n1\nq\n",
+    );
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert!(run.stdout.contains("for each pixel type the framebuffer value after it"), "{}", run.stdout);
+    assert!(
+        run.stdout.contains("4 does not fit this framebuffer: its cells hold whole values 0 … 3"),
+        "{}",
+        run.stdout
+    );
+    assert!(run.stdout.contains("  (15, 15): you said 2 (the value written), right:"), "{}", run.stdout);
+    assert!(run.stdout.contains("  (16, 15): you said 1, wrong:"), "{}", run.stdout);
+    assert!(run.stdout.contains("quiz score: 1 of 2 right"), "{}", run.stdout);
+}
+
 #[test]
 fn go_to_a_row_off_the_raster_says_so() {
     let run = zsim_with_input(&["step", "examples/rogers.json"], "g 99\nq\n");
