@@ -222,7 +222,12 @@ fn interactive(
                     out,
                     &format!(
                         "{}\n",
-                        zsim::words!(lang, "step-unknown", text = zsim::token(lang, &text), help = help(lang))
+                        zsim::words!(
+                            lang,
+                            "step-unknown",
+                            text = zsim::printable(&zsim::token(lang, &text)).into_owned(),
+                            help = help(lang)
+                        )
                     ),
                 )?;
                 show = false;

@@ -184,6 +184,16 @@ fn quiz_frame_asks_the_framebuffer_value() {
     assert!(run.stdout.contains("quiz score: 1 of 2 right"), "{}", run.stdout);
 }
 
+/// Found by a new maintainer: the line mode put what was typed into its
+/// message raw, where the full-screen app escaped it; an escape sequence
+/// typed at the prompt now reaches the terminal escaped.
+#[test]
+fn the_line_mode_escapes_what_was_typed() {
+    let run = zsim_with_input(&["step", "examples/rogers.json"], "\u{1b}[31mred\nq\n");
+    assert!(run.stdout.contains("\\u{1b}[31mred"), "{}", run.stdout);
+    assert!(!run.stdout.contains('\u{1b}'), "{}", run.stdout);
+}
+
 #[test]
 fn go_to_a_row_off_the_raster_says_so() {
     let run = zsim_with_input(&["step", "examples/rogers.json"], "g 99\nq\n");
