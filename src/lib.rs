@@ -88,7 +88,7 @@
 //!                                                          │
 //!          ┌───────────────────────────────┬───────────────┴──────────────┐
 //!          ▼                               ▼                              ▼
-//!   cli: line mode, tables         cli: full-screen app           page: zsim step --html
+//!   cli: line mode, tables         app: full-screen app           page: zsim step --html
 //!   (comfy-table)                  (ratatui)                      (the model's data, embedded)
 //! ```
 //!
@@ -98,7 +98,8 @@
 //! ratatui, crossterm, comfy-table, indicatif, clap_complete or clap_mangen),
 //! holds no hidden state (the language is an argument, as is the time: a
 //! clock is the caller's), and never prints: printing happens only in the
-//! binary (`src/cli/`), which renders the library's facts.
+//! binary (`src/cli/`, and the full-screen app in `src/app/`), which
+//! renders the library's facts.
 //!
 //! # Example
 //!
@@ -147,6 +148,7 @@ pub use numbers::{
 pub use observe::gpu;
 #[cfg(feature = "gpu")]
 pub use observe::race;
+pub use observe::render::variant_report;
 pub use observe::step::{PolygonTrace, Skip, Stop, Tracer};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
 pub use observe::{explain, figure, history, picture, report, tie, tikz};

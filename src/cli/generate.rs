@@ -3,7 +3,6 @@
 use std::io::Write;
 
 use clap::{Args, ValueEnum};
-use comfy_table::{Table, presets};
 use zsim::{RandomScene, memory};
 
 use super::{Failure, Finish, emit};
@@ -68,34 +67,9 @@ pub fn memory_command(lang: zsim::Lang, args: &MemoryArgs, out: &mut dyn Write) 
         args.supersample,
         args.depth_at == DepthAt::Sample,
     );
-    let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_header(
-        [
-            "memory-header-buffer",
-            "memory-header-cells",
-            "memory-header-bits-per-cell",
-            "memory-header-bits",
-            "memory-header-bytes",
-        ]
-        .map(|key| zsim::words!(lang, key)),
-    );
-    for (name, buffer) in [("buffer-frame", frame), ("buffer-depth", depth)] {
-        table.add_row([
-            zsim::words!(lang, name),
-            buffer.cells.to_string(),
-            buffer.bits_per_cell.to_string(),
-            buffer.bits().to_string(),
-            buffer.bytes().to_string(),
-        ]);
-    }
+    let listed = zsim::report::memory_table(lang, [frame, depth]);
     let total = frame.bytes() + depth.bytes();
-    table.add_row([
-        zsim::words!(lang, "memory-total"),
-        String::new(),
-        String::new(),
-        (frame.bits() + depth.bits()).to_string(),
-        total.to_string(),
-    ]);
+    let table = super::table(listed);
     let k = args.supersample;
     let sampling = if k == 1 {
         String::new()

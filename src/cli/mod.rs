@@ -17,7 +17,6 @@ mod run;
 mod speed;
 mod step;
 mod tinyrenderer;
-mod tui;
 mod variants;
 
 use std::io::{self, IsTerminal, Write};
@@ -252,6 +251,16 @@ fn choice<T: Clone + Send + Sync + 'static>(
 ) -> impl clap::builder::TypedValueParser<Value = T> {
     use clap::builder::TypedValueParser;
     clap::builder::PossibleValuesParser::new(names).map(move |name| parse(&name).expect("clap checked the name"))
+}
+
+/// The library's rows under their headings, as the book's tables are printed.
+fn table<const N: usize>(listed: zsim::report::Listed<N>) -> comfy_table::Table {
+    let mut table = comfy_table::Table::new();
+    table.load_style(comfy_table::presets::ASCII_MARKDOWN).set_header(listed.header);
+    for row in listed.rows {
+        table.add_row(row);
+    }
+    table
 }
 
 /// Whether to colour output: only on a terminal, and never with `NO_COLOR` set.

@@ -89,7 +89,7 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
     // On a terminal, the full-screen app; piped or redirected, the line mode scripts rely on.
     if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
         stepper.start(start);
-        super::tui::run(&mut super::tui::App::new(&mut stepper, quiz.as_mut(), lang))?;
+        crate::app::run(&mut crate::app::App::new(&mut stepper, quiz.as_mut(), lang))?;
         // The screen is gone: the score and each mistake stay on the terminal, as in the line mode.
         if let Some(quiz) = &quiz {
             emit(out, &quiz.summary(lang))?;

@@ -420,6 +420,51 @@ pub fn write_run_json_end(out: &mut dyn std::io::Write) -> std::io::Result<()> {
     out.write_all(b"]}\n")
 }
 
+/// A table's facts: the line that says what it lists, its headings and a
+/// row of cells each.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Listed<const N: usize> {
+    /// What the rows are, in a line.
+    pub line: String,
+    /// The headings.
+    pub header: [String; N],
+    /// The rows.
+    pub rows: Vec<[String; N]>,
+}
+
+/// `zsim memory`'s table: each buffer's cells, bits per cell, bits and
+/// bytes, and their total (the line says nothing: the heading does).
+pub fn memory_table(lang: Lang, [frame, depth]: [crate::scene::random::BufferMemory; 2]) -> Listed<5> {
+    let header = [
+        "memory-header-buffer",
+        "memory-header-cells",
+        "memory-header-bits-per-cell",
+        "memory-header-bits",
+        "memory-header-bytes",
+    ]
+    .map(|key| words!(lang, key));
+    let mut rows: Vec<[String; 5]> = [("buffer-frame", frame), ("buffer-depth", depth)]
+        .into_iter()
+        .map(|(name, buffer)| {
+            [
+                words!(lang, name),
+                buffer.cells.to_string(),
+                buffer.bits_per_cell.to_string(),
+                buffer.bits().to_string(),
+                buffer.bytes().to_string(),
+            ]
+        })
+        .collect();
+    rows.push([
+        words!(lang, "memory-total"),
+        String::new(),
+        String::new(),
+        (frame.bits() + depth.bits()).to_string(),
+        (frame.bytes() + depth.bytes()).to_string(),
+    ]);
+    Listed { line: String::new(), header, rows }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

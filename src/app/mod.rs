@@ -1,9 +1,12 @@
-//! `zsim step` on a terminal: a full-screen app redrawn in place. The raster
+//! The full-screen app: `zsim step` on a terminal, a front end of its own
+//! beside the command line (`cli/`, which starts it) and the page, redrawn in
+//! place with ratatui. The raster
 //! on the left (framebuffer or z-buffer) with the scanline marked, the
 //! current span highlighted and this polygon's earlier pixels set apart; on
 //! the right the polygon, the scanline, its crossings and spans, and the
 //! current pixel's row of the table. Keys act without Enter. Everything shown
-//! comes from the same recorded trace as the line mode ([`super::step`]).
+//! comes from the library's step model (`zsim::step`), as the line mode's
+//! and the page's do; the app keeps only what is on the screen.
 
 use ratatui::Frame;
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
@@ -579,5 +582,4 @@ pub fn run(app: &mut App<'_, '_, '_>) -> std::io::Result<()> {
 }
 
 #[cfg(test)]
-#[path = "tui_tests.rs"]
 mod tests;
