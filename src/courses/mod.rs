@@ -8,3 +8,24 @@
 pub mod buet;
 pub mod cs418;
 pub mod tinyrenderer;
+
+use crate::words::Lang;
+
+/// A problem in a course's file, with the line it is on (1-based).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CaseError {
+    /// The line, when one is to blame.
+    pub line: Option<usize>,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl CaseError {
+    /// The message in `lang`, one line.
+    pub fn message(&self, lang: Lang) -> String {
+        match self.line {
+            Some(line) => words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str()),
+            None => self.message.clone(),
+        }
+    }
+}

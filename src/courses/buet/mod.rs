@@ -19,26 +19,7 @@ use crate::numbers::{Exact, Q, parse_number, to_f64};
 use crate::raster::depth::Stored;
 use crate::simulate::buffer::Buffers;
 
-/// A problem in a case file, with the line it is on (1-based).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct CaseError {
-    /// The line, when one is to blame.
-    pub line: Option<usize>,
-    /// What is wrong.
-    pub message: String,
-}
-
-impl CaseError {
-    /// The message in `lang`, one line.
-    pub fn message(&self, lang: Lang) -> String {
-        match self.line {
-            Some(line) => {
-                words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str())
-            }
-            None => self.message.clone(),
-        }
-    }
-}
+pub use super::CaseError;
 
 fn case_error(line: Option<usize>, message: impl Into<String>) -> CaseError {
     CaseError { line, message: message.into() }

@@ -55,26 +55,7 @@ pub use compare::{CellDifference, Comparison, Primitive, Reason, Shape, differen
 pub use image::{Image, ImageDifference, compare_images};
 pub use raster::{Arithmetic, render};
 
-/// A problem in a CS 418 file, with its line (1-based).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct CaseError {
-    /// The line the problem is on, when one is to blame.
-    pub line: Option<usize>,
-    /// What is wrong.
-    pub message: String,
-}
-
-impl CaseError {
-    /// The message in `lang`, one line.
-    pub fn message(&self, lang: Lang) -> String {
-        match self.line {
-            Some(line) => {
-                words!(lang, "case-line", line = line.to_string(), problem = self.message.as_str())
-            }
-            None => self.message.clone(),
-        }
-    }
-}
+pub use super::CaseError;
 
 fn error(line: usize, message: impl Into<String>) -> CaseError {
     CaseError { line: Some(line), message: message.into() }
