@@ -157,6 +157,7 @@ pub use raster::depth::{Depth, DepthTest, Stored};
 pub use raster::scan::{Crossing, Span};
 pub use raster::sink::{PixelRect, RasterSink};
 pub use rules::{ColumnRule, Compare, DepthStore, Preset, RowRule, Rules, Sample};
+pub use scene::output;
 pub use scene::random::{RandomScene, memory};
 pub use scene::text::{Links, MAX_INPUT_BYTES, printable, read_bytes, read_text, read_text_with};
 pub use scene::{Antialias, MAX_SIDE, Polygon, Scene, max_for_bits};

@@ -12,7 +12,7 @@ use zsim::check::{CheckReport, State, WrongCell, check, read_answer, submission_
 use zsim::explain::Buffer;
 use zsim::gradescope::{Autograde, Visibility};
 
-use super::{Failure, Finish, emit};
+use super::{Failure, Finish, emit, emit_then};
 
 /// Arguments of `zsim check`.
 #[derive(Debug, Args)]
@@ -91,19 +91,19 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
         return Ok(Finish::Ok);
     }
     if args.submission.is_some() {
-        let mut finish = Finish::Ok;
+        let (mut finish, mut text) = (Finish::Ok, String::new());
         for state in &states {
             let mut read = Vec::new();
             for (buffer, path) in &state.files {
                 read.push((*buffer, path.as_path(), read_answer(lang, path, &scene, *buffer, zsim::Links::Refuse)?));
             }
             let report = check(lang, &scene, &args.scene, state.after, read, args.arith)?;
-            emit(out, &report_text(lang, &report))?;
+            text.push_str(&report_text(lang, &report));
             if report.differs() {
                 finish = Finish::Differs;
             }
         }
-        return Ok(finish);
+        return emit_then(out, &text, finish);
     }
     // A malformed file is reported (exit 2), but the other answer is still checked.
     let mut answers = Vec::new();
@@ -120,10 +120,11 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
     }
     if !answers.is_empty() {
         let report = check(lang, &scene, &args.scene, last, answers, args.arith)?;
-        emit(out, &report_text(lang, &report))?;
         if malformed.is_none() {
-            return Ok(if report.differs() { Finish::Differs } else { Finish::Ok });
+            let finish = if report.differs() { Finish::Differs } else { Finish::Ok };
+            return emit_then(out, &report_text(lang, &report), finish);
         }
+        emit(out, &report_text(lang, &report))?;
     }
     Err(malformed.expect("an answer was given, read or malformed").into())
 }

@@ -93,12 +93,12 @@ pub fn run(lang: zsim::Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result
     let made = zsim::exercise::files::files(lang, &exercise, &spec, &args.formats, args.each_polygon, dir)?;
     let (files, notes) = (made.files, made.notes);
     let written: Vec<String> = files.iter().map(|(name, _)| name.clone()).collect();
-    super::write_fresh(dir, &files, &[])?;
+    zsim::output::write_fresh(dir, &files, &[])?;
     let line = zsim::words!(lang, "file-written-in", files = written.join(", "), path = dir.display().to_string());
     emit(out, &format!("{notes}{line}\n"))?;
     if let Some(folder) = &args.gradescope {
         let files = zsim::gradescope::autograder(&exercise.json, args.visibility, args.points, lang);
-        super::write_fresh(folder, &files, &[dir.as_path()])?;
+        zsim::output::write_fresh(folder, &files, &[dir.as_path()])?;
         for script in ["setup.sh", "run_autograder"] {
             executable(&folder.join(script))?;
         }

@@ -94,7 +94,7 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
     let extras = Extras { vertex_labels: worksheet, caption: Vec::new(), values: args.values };
     let text = svg_with(lang, &scene, simulation.buffers(), last, shading, &title, &extras);
     let bytes = format.encode(lang, &text, &args.output, args.tikz_only)?;
-    super::not_an_input(&args.output, &[&args.scene])?;
+    zsim::output::not_an_input(&args.output, &[&args.scene])?;
     std::fs::write(&args.output, bytes).map_err(|source| Error::Write { path: args.output.clone(), source })?;
     emit(
         out,

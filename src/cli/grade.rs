@@ -15,7 +15,7 @@ use zsim::grade::{CommonMistake, Grade, Status};
 use zsim::printable;
 
 use super::check::report_text;
-use super::{Failure, Finish, emit};
+use super::{Failure, Finish, emit_then};
 use zsim::check::{as_the_student_sees, check, read_answer};
 use zsim::gradebooks::{self, Identity};
 
@@ -107,8 +107,8 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
         let class = if plain { grade_class(lang, &scene, &args.scene, &args.class, last)? } else { class.clone() };
         write_feedback(lang, folder, (&scene, args), &class)?;
     }
-    emit(out, &text)?;
-    Ok(if rows.iter().all(|g| g.status == zsim::grade::Status::Ok) { Finish::Ok } else { Finish::Differs })
+    let finish = if rows.iter().all(|g| g.status == zsim::grade::Status::Ok) { Finish::Ok } else { Finish::Differs };
+    emit_then(out, &text, finish)
 }
 
 /// A gradebook import for Moodle or Canvas, with the identity column checked
@@ -271,5 +271,5 @@ fn write_feedback(
     }
     let mistakes = mistakes_text(lang, &class.mistakes, &class.reasons, class.graded.len());
     outputs.push(("common-mistakes.txt".to_string(), mistakes.into_bytes()));
-    super::write_fresh(folder, &outputs, &[&args.class])
+    zsim::output::write_fresh(folder, &outputs, &[&args.class])
 }

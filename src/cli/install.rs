@@ -26,7 +26,10 @@ pub struct ManualArgs {
 /// Prints the completion script for one shell.
 pub fn completions(args: &CompletionsArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let mut command = Cli::command();
-    clap_complete::generate(args.shell, &mut command, "zsim", out);
+    // Made whole first: clap_complete panics on a write that fails (`| true` closes the pipe).
+    let mut script = Vec::new();
+    clap_complete::generate(args.shell, &mut command, "zsim", &mut script);
+    out.write_all(&script)?;
     Ok(Finish::Ok)
 }
 
@@ -40,7 +43,7 @@ pub fn manual(lang: zsim::Lang, args: &ManualArgs, out: &mut dyn Write) -> Resul
             command.build();
             let mut pages = Vec::new();
             page_and_subpages(&command, &mut pages)?;
-            super::write_fresh(dir, &pages, &[])?;
+            zsim::output::write_fresh(dir, &pages, &[])?;
             let names: Vec<&str> = pages.iter().map(|(name, _)| name.as_str()).collect();
             let line =
                 zsim::words!(lang, "file-written-in", files = names.join(", "), path = dir.display().to_string());

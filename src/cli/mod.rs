@@ -128,7 +128,7 @@ pub fn main() -> ExitCode {
     let lang = cli.lang.unwrap_or(lang);
     if stdout_is_closed() {
         // Rust's standard output drops writes to a closed descriptor silently.
-        eprintln!("zsim: {}", zsim::words!(lang, "error-output", reason = zsim::words!(lang, "stdout-closed")));
+        say(&zsim::words!(lang, "error-output", reason = zsim::words!(lang, "stdout-closed")));
         return ExitCode::from(2);
     }
     let stdout = io::stdout();
@@ -152,22 +152,26 @@ pub fn main() -> ExitCode {
         Command::Completions(args) => install::completions(&args, &mut out),
         Command::Manual(args) => install::manual(lang, &args, &mut out),
     };
-    let result = result.and_then(|finish| out.flush().map(|()| finish).map_err(Failure::Io));
+    // A reader that closed the pipe after the last write still gets the status.
+    let result = result.and_then(|finish| match out.flush() {
+        Err(error) if error.kind() != io::ErrorKind::BrokenPipe => Err(Failure::Io(error)),
+        _ => Ok(finish),
+    });
     match result {
         Ok(Finish::Ok) => ExitCode::SUCCESS,
         Ok(Finish::Differs) => ExitCode::from(1),
         Err(Failure::Io(error)) if error.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
         Err(Failure::Io(error)) => {
-            eprintln!("zsim: {}", zsim::words!(lang, "error-output", reason = error.to_string()));
+            say(&zsim::words!(lang, "error-output", reason = error.to_string()));
             ExitCode::from(2)
         }
         Err(Failure::Input(error)) => {
             // Messages quote the input (names, tokens): never let it steer the terminal.
-            eprintln!("zsim: {}", zsim::printable(&error.message(lang)));
+            say(&zsim::printable(&error.message(lang)));
             ExitCode::from(2)
         }
         Err(Failure::Flag(flag)) => {
-            eprintln!("zsim: {}", zsim::printable(&flag.message(lang)));
+            say(&zsim::printable(&flag.message(lang)));
             ExitCode::from(2)
         }
     }
@@ -178,6 +182,13 @@ pub fn main() -> ExitCode {
 /// before the parsed `--lang` is there to pass.
 fn language_of_the_run() -> zsim::Lang {
     language_asked().unwrap_or_else(zsim::Lang::from_env)
+}
+
+/// Says one line on standard error, `zsim: ` first; a standard error that
+/// cannot be written to loses the line but never stops zsim (an `eprintln!`
+/// would panic).
+fn say(line: &str) {
+    let _ = writeln!(io::stderr(), "zsim: {line}");
 }
 
 /// The `--lang` of the command line, read before clap parses it.
@@ -232,7 +243,7 @@ fn usage_error(lang: zsim::Lang, error: &clap::Error) -> ExitCode {
     };
     match message {
         Some(message) => {
-            eprintln!("zsim: {message} ({})", zsim::words!(lang, "usage-see-help"));
+            say(&format!("{message} ({})", zsim::words!(lang, "usage-see-help")));
             ExitCode::from(2)
         }
         None => {
@@ -268,6 +279,16 @@ fn use_color() -> bool {
     io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
 }
 
+/// Writes a command's last text and ends with `finish`, also when the reader
+/// has closed the pipe (`zsim check … | head`): the exit status says what
+/// it would have said (1 for a wrong answer), as ripgrep's does.
+fn emit_then(out: &mut dyn Write, text: &str, finish: Finish) -> Result<Finish, Failure> {
+    match out.write_all(text.as_bytes()) {
+        Err(error) if error.kind() != io::ErrorKind::BrokenPipe => Err(Failure::Io(error)),
+        _ => Ok(finish),
+    }
+}
+
 /// Writes text, turning a closed pipe into a quiet stop.
 fn emit(out: &mut dyn Write, text: &str) -> Result<(), Failure> {
     out.write_all(text.as_bytes()).map_err(Failure::Io)
@@ -283,50 +304,9 @@ pub(crate) fn emit_or_write(
     inputs: &[&Path],
 ) -> Result<(), Failure> {
     let Some(path) = output else { return emit(out, text) };
-    not_an_input(path, inputs)?;
+    zsim::output::not_an_input(path, inputs)?;
     std::fs::write(path, text).map_err(|source| Error::Write { path: path.to_owned(), source })?;
     emit(out, &format!("{}\n", zsim::words!(lang, "file-written", path = path.display().to_string())))
-}
-
-/// Refuses an output file that is one of the command's inputs (the same file
-/// by another name included): writing it would destroy what was read.
-pub(crate) fn not_an_input(output: &Path, inputs: &[&Path]) -> Result<(), Error> {
-    if inputs.iter().any(|input| same_file(output, input)) {
-        return Err(zsim::Usage::OutputIsInput { folder: output.to_owned() }.into());
-    }
-    Ok(())
-}
-
-/// Whether two paths name the same existing file or folder.
-fn same_file(a: &Path, b: &Path) -> bool {
-    matches!((std::fs::canonicalize(a), std::fs::canonicalize(b)), (Ok(a), Ok(b)) if a == b)
-}
-
-/// Writes `files` (name, contents) into `folder`, made if missing, replacing
-/// nothing: refused, before anything is written, when `folder` is one of the
-/// folders the command reads (`inputs`) or already holds one of the files.
-pub(crate) fn write_fresh(folder: &Path, files: &[(String, Vec<u8>)], inputs: &[&Path]) -> Result<(), Error> {
-    not_an_input(folder, inputs)?;
-    let existing: Vec<String> = files
-        .iter()
-        .filter(|(name, _)| std::fs::symlink_metadata(folder.join(name)).is_ok())
-        .map(|(n, _)| n.clone())
-        .collect();
-    if !existing.is_empty() {
-        return Err(zsim::Usage::OutputWouldReplace { folder: folder.to_owned(), files: existing }.into());
-    }
-    std::fs::create_dir_all(folder).map_err(|source| Error::Write { path: folder.to_owned(), source })?;
-    for (name, contents) in files {
-        let path = folder.join(name);
-        // create_new: a file that appeared since the check is not replaced either.
-        let written = std::fs::OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&path)
-            .and_then(|mut file| file.write_all(contents));
-        written.map_err(|source| Error::Write { path, source })?;
-    }
-    Ok(())
 }
 
 /// Whether standard output was closed when zsim started (`zsim run SCENE

@@ -60,7 +60,7 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
         let name =
             args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
         let page = zsim::page::page(lang, &mut stepper, &name);
-        super::not_an_input(output, &[&args.scene])?;
+        zsim::output::not_an_input(output, &[&args.scene])?;
         std::fs::write(output, page).map_err(|source| Error::Write { path: output.clone(), source })?;
         emit(out, &format!("{}\n", zsim::words!(lang, "file-written-page", path = output.display().to_string())))?;
         return Ok(Finish::Ok);

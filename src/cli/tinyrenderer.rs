@@ -92,7 +92,7 @@ pub fn run(lang: zsim::Lang, args: &TinyrendererArgs, out: &mut dyn Write) -> Re
                 ("zbuffer.tga".to_string(), tinyrenderer::tga(side, side, 1, &drawn.zbuffer, !uncompressed)),
                 ("framebuffer.tga".to_string(), tinyrenderer::tga(side, side, 3, &frame, !uncompressed)),
             ];
-            super::write_fresh(output, &files, &[model.as_path()])?;
+            zsim::output::write_fresh(output, &files, &[model.as_path()])?;
             let drawn_faces = loaded.faces.len() - drawn.skipped;
             let mut text = format!(
                 "{}\n",

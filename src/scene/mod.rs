@@ -18,6 +18,7 @@
 
 pub mod clip_space;
 mod file;
+pub mod output;
 pub mod perspective;
 pub mod random;
 pub mod text;

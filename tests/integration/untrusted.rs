@@ -476,3 +476,58 @@ mod any_input {
         }
     }
 }
+
+/// Runs zsim with a standard output (or error) whose reader has already
+/// gone, as `| head -c 100` leaves it; its exit code and standard error.
+fn with_reader_gone(args: &[&str], stream: &str) -> (Option<i32>, String) {
+    use std::process::Stdio;
+    let mut command = Command::new(env!("CARGO_BIN_EXE_zsim"));
+    command.args(args).current_dir(env!("CARGO_MANIFEST_DIR")).env("LC_ALL", "C");
+    let (out, err) = match stream {
+        "stdout" => (Stdio::piped(), Stdio::piped()),
+        _ => (Stdio::null(), Stdio::piped()),
+    };
+    let mut child = command.stdout(out).stderr(err).spawn().unwrap();
+    let stderr = match stream {
+        "stdout" => {
+            drop(child.stdout.take());
+            let mut text = String::new();
+            std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut text).unwrap();
+            text
+        }
+        _ => {
+            drop(child.stderr.take());
+            String::new()
+        }
+    };
+    (child.wait().unwrap().code(), stderr)
+}
+
+/// `zsim check … --frame wrong.txt | head -c 100` exited 0, so a script
+/// with `pipefail` passed a wrong answer: a reader that closes the pipe now
+/// ends zsim quietly with the status it would have had, 1.
+#[test]
+fn a_wrong_answer_read_by_a_reader_that_stops_still_exits_1() {
+    let dir = scratch("reader-gone");
+    let right = book_answer("frame", " ");
+    std::fs::write(dir.join("right.txt"), &right).unwrap();
+    std::fs::write(dir.join("wrong.txt"), right.replacen('0', "3", 40)).unwrap();
+    let check = |file: &str| {
+        let path = dir.join(file);
+        with_reader_gone(&["check", "examples/rogers.json", "--frame", path.to_str().unwrap()], "stdout")
+    };
+    assert_eq!(check("wrong.txt"), (Some(1), String::new()));
+    assert_eq!(check("right.txt"), (Some(0), String::new()), "a right answer stays 0");
+}
+
+/// `zsim completions bash | true` panicked inside the completion writer (exit 101).
+#[test]
+fn completions_into_a_closed_pipe_do_not_panic() {
+    assert_eq!(with_reader_gone(&["completions", "bash"], "stdout"), (Some(0), String::new()));
+}
+
+/// An error written to a standard error whose reader is gone panicked (exit 101).
+#[test]
+fn an_error_to_a_closed_standard_error_still_exits_2() {
+    assert_eq!(with_reader_gone(&["run", "no-such-scene.json"], "stderr").0, Some(2));
+}
