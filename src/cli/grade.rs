@@ -104,8 +104,8 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
     };
     if let Some(folder) = &args.output {
         // Feedback is for the students: in their language, graded again only where the table was English.
-        let class = if plain { grade_class(lang, &scene, &args.scene, &args.class, last)? } else { class.clone() };
-        write_feedback(lang, folder, (&scene, args), &class)?;
+        let regraded = if plain { Some(grade_class(lang, &scene, &args.scene, &args.class, last)?) } else { None };
+        write_feedback(lang, folder, (&scene, args), regraded.as_ref().unwrap_or(&class))?;
     }
     let finish = if rows.iter().all(|g| g.status == zsim::grade::Status::Ok) { Finish::Ok } else { Finish::Differs };
     emit_then(out, &text, finish)

@@ -212,8 +212,6 @@ fn interactive(
         let moved = match parse_command(&line) {
             Command::Quit => break,
             Command::Next => stepper.forward(),
-            // At the end there is no later polygon to go to: nothing happens.
-            Command::NextPolygon if stepper.at().is_none() => Moved::To { at: None, skipped: Vec::new() },
             Command::NextPolygon => stepper.next_polygon(),
             Command::Back => stepper.back(),
             Command::Go(row) => stepper.go(row),

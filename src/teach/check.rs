@@ -7,10 +7,7 @@ use std::path::{Path, PathBuf};
 
 use crate::effects::arith::{self, Arith};
 use crate::error::{Error, Task, Usage};
-pub use crate::observe::check::{
-    CellRange, Matrix, Mismatch, Misreading, compare as compare_cells, misreading as misread, parse_answer,
-};
-use crate::observe::check::{compare, misreading};
+pub use crate::observe::check::{CellRange, Matrix, Mismatch, Misreading, compare, misreading, parse_answer};
 use crate::observe::explain::{Buffer, polygon_after, why};
 use crate::observe::trace::PixelWatcher;
 use crate::scene::Scene;

@@ -244,9 +244,7 @@ pub struct StopWords {
 }
 
 /// A [`Skip`] in one line of the reader's language.
-pub fn skip_text(lang: Lang, scene: &Scene, skip: &Skip) -> String {
-    crate::observe::step::skip_text(lang, scene, skip)
-}
+pub use crate::observe::step::skip_text;
 
 /// What the quiz asks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
