@@ -2,6 +2,7 @@
 //! line that starts lowercase and names the file and, where there is one, the
 //! polygon. Broken invariants of zsim itself are `debug_assert!`s instead.
 
+use crate::words::shown_path;
 use crate::words::Lang;
 use std::path::PathBuf;
 
@@ -31,6 +32,14 @@ pub enum Error {
         path: PathBuf,
         /// The largest size read, in bytes.
         limit: u64,
+    },
+    /// A name inside a file that leads out of that file's folder (`..`, an
+    /// absolute path): refused, nothing read.
+    OutsideFolder {
+        /// The path it names.
+        path: PathBuf,
+        /// The folder it must stay in.
+        folder: PathBuf,
     },
     /// A file could not be written.
     Write {
@@ -265,6 +274,18 @@ pub enum Usage {
         /// The folder.
         folder: PathBuf,
     },
+    /// An output whose name the file system cannot hold.
+    OutputNameTooLong {
+        /// The path.
+        path: PathBuf,
+        /// The longest name, in bytes.
+        max: usize,
+    },
+    /// One command asked to write one file twice.
+    OutputTwice {
+        /// The file.
+        path: PathBuf,
+    },
     /// `-o FOLDER` already holds files the command would write.
     OutputWouldReplace {
         /// The folder.
@@ -325,7 +346,7 @@ fn quoted_list(items: &[String]) -> String {
 impl Usage {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
-        let path = |p: &PathBuf| p.display().to_string();
+        let path = |p: &PathBuf| shown_path(p);
         match self {
             Usage::ArithNeedsPlainRules { arith } => words!(lang, "usage-arith-plain-rules", arith = arith),
             Usage::ArithNeedsGreaterOrLess { arith, test } => {
@@ -366,7 +387,7 @@ impl Usage {
                 Task::Draw | Task::Check => words!(lang, "usage-exact-depths-check", path = path(p)),
             },
             Usage::NoSubmission { folder } => {
-                words!(lang, "usage-no-submission", folder = folder.display().to_string())
+                words!(lang, "usage-no-submission", folder = shown_path(folder))
             }
             Usage::NoAnswersFound { class } => words!(lang, "usage-no-answers", path = path(class)),
             Usage::NotAHardCase { name, names } => {
@@ -388,6 +409,10 @@ impl Usage {
                 tries = tries.to_string()
             ),
             Usage::OutputIsInput { folder } => words!(lang, "usage-output-is-input", path = path(folder)),
+            Usage::OutputNameTooLong { path: p, max } => {
+                words!(lang, "usage-output-name-too-long", path = path(p), max = max.to_string())
+            }
+            Usage::OutputTwice { path: p } => words!(lang, "usage-output-twice", path = path(p)),
             Usage::OutputWouldReplace { folder, files } => {
                 let shown: Vec<&str> = files.iter().take(5).map(String::as_str).collect();
                 words!(
@@ -472,7 +497,7 @@ impl Error {
             Error::Read { path, source } => words!(
                 lang,
                 "error-read",
-                path = path.display().to_string(),
+                path = shown_path(path),
                 reason = crate::words::io_reason(lang, source)
             ),
             Error::NotRegular { path, kind } => {
@@ -484,30 +509,33 @@ impl Error {
                     FileKind::Link => words!(lang, "file-kind-link"),
                     FileKind::Other => words!(lang, "file-kind-other"),
                 };
-                words!(lang, "error-not-regular", path = path.display().to_string(), kind = kind)
+                words!(lang, "error-not-regular", path = shown_path(path), kind = kind)
             }
             Error::TooLarge { path, limit } => {
-                words!(lang, "error-too-large", path = path.display().to_string(), limit = (limit >> 20).to_string())
+                words!(lang, "error-too-large", path = shown_path(path), limit = (limit >> 20).to_string())
+            }
+            Error::OutsideFolder { path, folder } => {
+                words!(lang, "error-outside-folder", path = shown_path(path), folder = shown_path(folder))
             }
             Error::Write { path, source } => words!(
                 lang,
                 "error-write",
-                path = path.display().to_string(),
+                path = shown_path(path),
                 reason = crate::words::io_reason(lang, source)
             ),
             Error::SceneFormat { path, location, message } => {
                 if location.is_empty() {
-                    format!("{}: {message}", path.display())
+                    format!("{}: {message}", shown_path(path))
                 } else {
-                    format!("{}: {location}: {message}", path.display())
+                    format!("{}: {location}: {message}", shown_path(path))
                 }
             }
-            Error::Setting { path, key, message } => format!("{}: {key}: {message}", path.display()),
+            Error::Setting { path, key, message } => format!("{}: {key}: {message}", shown_path(path)),
             Error::Polygon { origin, index, name, problem } => words!(
                 lang,
                 "error-polygon",
                 path = match origin {
-                    PolygonOrigin::File(path) => path.display().to_string(),
+                    PolygonOrigin::File(path) => shown_path(path),
                     PolygonOrigin::Supersampled { factor } =>
                         words!(lang, "origin-supersampled", factor = factor.to_string()),
                     PolygonOrigin::Snapped { bits } => words!(lang, "origin-snapped", bits = bits.to_string()),
@@ -516,7 +544,7 @@ impl Error {
                 problem = problem.message(lang)
             ),
             Error::Usage(usage) => usage.message(lang),
-            Error::Answer { path, message } => format!("{}: {message}", path.display()),
+            Error::Answer { path, message } => format!("{}: {message}", shown_path(path)),
         }
     }
 }

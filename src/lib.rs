@@ -65,11 +65,15 @@
 //! branch-free depth test beside [`DepthTest`], below the loops that use it).
 //!
 //! ```text
-//! words      every sentence a person reads, in en, ru, uk and zh, in the language passed
+//! words      every sentence a person reads, in en, ru, uk and zh, in the language passed; text
+//!            from outside (names, paths) escaped for showing
 //! numbers    Q and Exact, parsing, word arithmetic, the Ring trait, formatting
 //! rules      the rule presets as data
 //! geometry   a polygon's plane: Newell and planarity once over Ring; the big tier's polygon
 //! error      typed errors with their facts, worded in a language by `message(lang)`
+//! door       the one door in (regular files, size limits, names confined to their file's
+//!            folder, images' declared size) and the one door out (a plan checked whole,
+//!            then written atomically, never onto an input), and text escaped for showing
 //! raster     the one scan converter, its sink trait, crossings, spans, depth steppers, the depth test
 //! scene      the scene file and its validation, perspective, clip space, random scenes
 //! simulate   the Simulation driver, buffers, per-pixel stages, events, tiles and threads
@@ -127,6 +131,7 @@
 #[macro_use]
 mod words;
 mod courses;
+mod door;
 mod effects;
 mod error;
 mod geometry;
@@ -157,9 +162,12 @@ pub use raster::depth::{Depth, DepthTest, Stored};
 pub use raster::scan::{Crossing, Span};
 pub use raster::sink::{PixelRect, RasterSink};
 pub use rules::{ColumnRule, Compare, DepthStore, Preset, RowRule, Rules, Sample};
-pub use scene::output;
 pub use scene::random::{RandomScene, memory};
-pub use scene::text::{Links, MAX_INPUT_BYTES, printable, read_bytes, read_text, read_text_with};
+pub use door::{
+    Folder, Identity, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, Plan, Replace, png_reader, read_bytes, read_text,
+    read_text_with, same_folder, write_fresh,
+};
+pub use door::outward::{MAX_NAME_BYTES, MAX_PATH_BYTES};
 pub use scene::{Antialias, MAX_SIDE, Polygon, Scene, max_for_bits};
 pub use simulate::buffer::Buffers;
 pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};
@@ -167,4 +175,4 @@ pub use simulate::setup::{Stats, fate};
 pub use simulate::simulation::{Drawn, Simulation};
 pub use simulate::stages::{StageSet, describe};
 pub use teach::{check, class, diagnose, exercise, grade, gradebooks, gradescope, page, step, stop};
-pub use words::{Arg, Lang, localize_decimal, polygon_label, text as message, token};
+pub use words::{Arg, Lang, localize_decimal, polygon_label, printable, shown_path, text as message, token};

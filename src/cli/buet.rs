@@ -5,7 +5,6 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, Subcommand, ValueEnum};
 use comfy_table::{Table, presets};
-use zsim::Error;
 use zsim::Simulation;
 use zsim::buet::{self, Case, Source};
 
@@ -84,10 +83,6 @@ pub fn run(lang: zsim::Lang, args: &BuetArgs, out: &mut dyn Write) -> Result<Fin
     }
 }
 
-fn write(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    std::fs::write(path, bytes).map_err(|source| Error::Write { path: path.to_owned(), source })
-}
-
 fn run_case(
     lang: zsim::Lang,
     dir: &Path,
@@ -96,28 +91,24 @@ fn run_case(
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
     let case = Case::load(lang, dir, from)?;
-    std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
-    let mut written = Vec::new();
+    // The course's files are written as the course writes them, replacing
+    // earlier runs' outputs, but never into the case folder that is read.
+    let mut plan = zsim::Plan::new(&[dir], zsim::Replace::Allowed);
     if let Some(stages) = &case.stages {
         for (n, triangles) in stages.iter().enumerate() {
-            let path = output.join(format!("stage{}.txt", n + 1));
-            write(&path, buet::stage_text(triangles).as_bytes())?;
-            written.push(path);
+            plan.file(output.join(format!("stage{}.txt", n + 1)), buet::stage_text(triangles));
         }
     }
     let mut simulation = Simulation::new(&case.scene);
     simulation.finish(&mut Unobserved);
-    let z_buffer = output.join("z_buffer.txt");
-    write(&z_buffer, buet::z_buffer_text(simulation.buffers(), case.config.z_max).as_bytes())?;
-    written.push(z_buffer);
-    let image = output.join("out.bmp");
-    write(&image, &buet::bmp(simulation.buffers()))?;
-    written.push(image);
+    plan.file(output.join("z_buffer.txt"), buet::z_buffer_text(simulation.buffers(), case.config.z_max));
+    plan.file(output.join("out.bmp"), buet::bmp(simulation.buffers()));
+    let written = plan.write()?;
     let stats = simulation.stats();
     let mut text = zsim::words!(
         lang,
         "buet-run-summary",
-        path = dir.display().to_string(),
+        path = zsim::shown_path(&dir),
         triangles = case.stage3.len().to_string(),
         width = case.config.width.to_string(),
         height = case.config.height.to_string(),
@@ -125,7 +116,7 @@ fn run_case(
         written = stats.written.to_string()
     ) + "\n";
     for path in written {
-        text.push_str(&format!("{}\n", zsim::words!(lang, "file-written", path = path.display().to_string())));
+        text.push_str(&format!("{}\n", zsim::words!(lang, "file-written", path = zsim::shown_path(&path))));
     }
     emit(out, &text)?;
     Ok(Finish::Ok)
@@ -140,7 +131,7 @@ fn check(
 ) -> Result<Finish, Failure> {
     let case = Case::load(lang, dir, from)?;
     let differences = buet::check::check(lang, &case, answer)?;
-    let (answer, path) = (answer.display().to_string(), dir.display().to_string());
+    let (answer, path) = (zsim::shown_path(&answer), zsim::shown_path(&dir));
     if differences.is_empty() {
         emit(out, &format!("{}\n", zsim::words!(lang, "buet-check-matches", answer = answer, path = path)))?;
         return Ok(Finish::Ok);

@@ -4,8 +4,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use clap::{Args, Subcommand, ValueEnum};
-use zsim::Error;
-use zsim::cs418::{self, Arithmetic, Image};
+use zsim::cs418::{self, Arithmetic};
 
 use super::{Failure, Finish, emit};
 
@@ -67,7 +66,7 @@ pub fn run(lang: zsim::Lang, args: &Cs418Args, out: &mut dyn Write) -> Result<Fi
         Cs418Command::Import { case, output } => {
             let scene = zsim::cs418::import::scene_json(
                 lang,
-                &cs418::report::load(lang, case, cs418::report::Textures::Ignored)?,
+                &cs418::report::load(lang, case, cs418::report::Textures::Ignored)?.case,
             )
             .map_err(|e| cs418::report::located(case, e))?;
             super::emit_or_write(lang, out, output.as_deref(), &scene, &[case])?;
@@ -85,16 +84,22 @@ fn run_case(
     tolerance: u8,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
-    let case = cs418::report::load(lang, path, cs418::report::Textures::Read)?;
+    let cs418::report::Loaded { case, textures } = cs418::report::load(lang, path, cs418::report::Textures::Read)?;
     let arithmetic = match arith {
         Arith::DdaF64 => Arithmetic::DdaF64,
         Arith::Exact => Arithmetic::Exact,
     };
+    // The case, its textures and the reference are the inputs no output may replace.
+    let mut plan = zsim::Plan::new(&[path], zsim::Replace::Allowed);
+    for (texture, identity) in textures {
+        plan.input(texture, identity);
+    }
     let reference = match compare {
         Some(png) => {
-            let bytes = std::fs::read(png).map_err(|source| Error::Read { path: png.to_owned(), source })?;
-            let image =
-                Image::from_png(lang, &bytes).map_err(|message| Error::Answer { path: png.to_owned(), message })?;
+            let (image, identity) = cs418::report::reference(lang, png)?;
+            if let Some(identity) = identity {
+                plan.input(png.to_owned(), identity);
+            }
             Some((png, image))
         }
         None => None,
@@ -106,18 +111,18 @@ fn run_case(
         || (arithmetic == Arithmetic::Exact).then(|| cs418::render(lang, &case, Arithmetic::DdaF64)),
     );
     let result = result.map_err(|e| cs418::report::located(path, e))?;
-    std::fs::create_dir_all(output).map_err(|source| Error::Write { path: output.to_owned(), source })?;
     let written = output.join(&case.output);
-    std::fs::write(&written, result.image.to_png()).map_err(|source| Error::Write { path: written.clone(), source })?;
+    plan.file(&written, result.image.to_png());
+    plan.write()?;
     let mut text = zsim::words!(
         lang,
         "cs418-run-summary",
-        path = path.display().to_string(),
+        path = zsim::shown_path(&path),
         width = case.width.to_string(),
         height = case.height.to_string(),
         arithmetic = arithmetic.name(),
         features = cs418::report::features_text(&case),
-        written = written.display().to_string()
+        written = zsim::shown_path(&written)
     ) + "\n";
     if let Some(course) = course {
         text.push_str(&cs418::report::disagreements_text(

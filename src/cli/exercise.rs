@@ -93,29 +93,33 @@ pub fn run(lang: zsim::Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result
     let made = zsim::exercise::files::files(lang, &exercise, &spec, &args.formats, args.each_polygon, dir)?;
     let (files, notes) = (made.files, made.notes);
     let written: Vec<String> = files.iter().map(|(name, _)| name.clone()).collect();
-    zsim::output::write_fresh(dir, &files, &[])?;
-    let line = zsim::words!(lang, "file-written-in", files = written.join(", "), path = dir.display().to_string());
-    emit(out, &format!("{notes}{line}\n"))?;
+    // Both folders are planned whole, and nothing is written when one file is refused.
+    let mut plan = zsim::Plan::new(&[], zsim::Replace::Never);
+    for (name, bytes) in files {
+        plan.file(dir.join(name), bytes);
+    }
+    let mut text = format!(
+        "{notes}{}\n",
+        zsim::words!(lang, "file-written-in", files = written.join(", "), path = zsim::shown_path(dir))
+    );
     if let Some(folder) = &args.gradescope {
-        let files = zsim::gradescope::autograder(&exercise.json, args.visibility, args.points, lang);
-        zsim::output::write_fresh(folder, &files, &[dir.as_path()])?;
-        for script in ["setup.sh", "run_autograder"] {
-            executable(&folder.join(script))?;
+        if zsim::same_folder(folder, dir) {
+            return Err(Error::from(zsim::Usage::OutputIsInput { folder: folder.clone() }).into());
         }
+        let files = zsim::gradescope::autograder(&exercise.json, args.visibility, args.points, lang);
         let names: Vec<&str> = files.iter().map(|(name, _)| name.as_str()).collect();
-        let line = zsim::words!(lang, "file-written-in", files = names.join(", "), path = folder.display().to_string());
-        emit(out, &format!("{line}\n"))?;
+        let line = zsim::words!(lang, "file-written-in", files = names.join(", "), path = zsim::shown_path(folder));
+        text.push_str(&format!("{line}\n"));
+        for (name, bytes) in files {
+            // Gradescope runs setup.sh and run_autograder as they are.
+            if ["setup.sh", "run_autograder"].contains(&name.as_str()) {
+                plan.executable(folder.join(name), bytes);
+            } else {
+                plan.file(folder.join(name), bytes);
+            }
+        }
     }
+    plan.write()?;
+    emit(out, &text)?;
     Ok(Finish::Ok)
-}
-
-/// Marks a script zsim wrote as executable (Gradescope runs `run_autograder` as is).
-fn executable(path: &std::path::Path) -> Result<(), Error> {
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        std::fs::set_permissions(path, std::fs::Permissions::from_mode(0o755))
-            .map_err(|source| Error::Write { path: path.to_owned(), source })?;
-    }
-    Ok(())
 }

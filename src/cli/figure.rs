@@ -63,7 +63,7 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
     };
     let shading = if args.depth { Shading::Depth } else { Shading::Frame };
     let buffer = zsim::words!(lang, if args.depth { "buffer-depth" } else { "buffer-frame" });
-    let file = args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
+    let file = args.scene.file_name().map_or_else(|| zsim::shown_path(&args.scene), |n| n.to_string_lossy().into());
     let mut title = if worksheet {
         zsim::words!(lang, "figure-title-worksheet", file = file)
     } else {
@@ -94,8 +94,9 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
     let extras = Extras { vertex_labels: worksheet, caption: Vec::new(), values: args.values };
     let text = svg_with(lang, &scene, simulation.buffers(), last, shading, &title, &extras);
     let bytes = format.encode(lang, &text, &args.output, args.tikz_only)?;
-    zsim::output::not_an_input(&args.output, &[&args.scene])?;
-    std::fs::write(&args.output, bytes).map_err(|source| Error::Write { path: args.output.clone(), source })?;
+    let mut plan = zsim::Plan::new(&[&args.scene], zsim::Replace::Allowed);
+    plan.file(&args.output, bytes);
+    plan.write()?;
     emit(
         out,
         &format!(
@@ -103,7 +104,7 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
             zsim::words!(
                 lang,
                 "file-written-about",
-                path = args.output.display().to_string(),
+                path = zsim::shown_path(&args.output),
                 about = zsim::printable(&title).into_owned()
             )
         ),

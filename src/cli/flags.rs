@@ -64,7 +64,7 @@ pub enum Flag {
 impl Flag {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: zsim::Lang) -> String {
-        let path = |p: &PathBuf| p.display().to_string();
+        let path = |p: &PathBuf| zsim::shown_path(p);
         match self {
             Flag::ArithPlainLoopOnly => zsim::words!(lang, "usage-arith-plain-loop"),
             Flag::FigureFormat { path: p } => zsim::words!(lang, "usage-figure-format", path = path(p)),

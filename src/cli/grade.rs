@@ -85,8 +85,8 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
             let summary = zsim::words!(
                 lang,
                 "grade-summary",
-                class = args.class.display().to_string(),
-                scene = args.scene.display().to_string(),
+                class = zsim::shown_path(&args.class),
+                scene = zsim::shown_path(&args.scene),
                 polygon = polygon_after(lang, &scene, last),
                 students = rows.len(),
                 ok = counts(|g| g.status == Status::Ok),
@@ -249,7 +249,7 @@ fn write_feedback(
             lang,
             "grade-feedback",
             student = &grade.student,
-            scene = args.scene.display().to_string(),
+            scene = zsim::shown_path(&args.scene),
             polygon = polygon_after(lang, scene, last),
             score = zsim::localize_decimal(lang, grade.percent()),
             status = status_text(lang, &grade.status)
@@ -271,5 +271,5 @@ fn write_feedback(
     }
     let mistakes = mistakes_text(lang, &class.mistakes, &class.reasons, class.graded.len());
     outputs.push(("common-mistakes.txt".to_string(), mistakes.into_bytes()));
-    zsim::output::write_fresh(folder, &outputs, &[&args.class])
+    zsim::write_fresh(folder, &outputs, &[&args.class]).map(drop)
 }

@@ -304,32 +304,40 @@ pub(crate) fn emit_or_write(
     inputs: &[&Path],
 ) -> Result<(), Failure> {
     let Some(path) = output else { return emit(out, text) };
-    zsim::output::not_an_input(path, inputs)?;
-    std::fs::write(path, text).map_err(|source| Error::Write { path: path.to_owned(), source })?;
-    emit(out, &format!("{}\n", zsim::words!(lang, "file-written", path = path.display().to_string())))
+    let mut plan = zsim::Plan::new(inputs, zsim::Replace::Allowed);
+    plan.file(path, text);
+    plan.write()?;
+    emit(out, &format!("{}\n", zsim::words!(lang, "file-written", path = zsim::shown_path(&path))))
 }
 
 /// Whether standard output was closed when zsim started (`zsim run SCENE
 /// >&-`): everything written would be lost without an error. Rust's runtime
-/// opens `/dev/null` read-write in place of a closed standard descriptor
-/// before `main`, so that is what a closed one looks like here; a shell's
-/// `> /dev/null` opens it write-only, and stays a silent, wanted sink.
+/// opens `/dev/null` in place of a closed standard descriptor before `main`,
+/// which looks just like `1<>/dev/null` (Python's `subprocess.DEVNULL`), a
+/// wanted sink; so descriptor 1 is looked at before the runtime starts, by
+/// a function the system's loader runs first ([`started`]).
 fn stdout_is_closed() -> bool {
+    started::STDOUT_CLOSED.load(std::sync::atomic::Ordering::Relaxed)
+}
+
+/// What the process was started with, noted before Rust's runtime starts.
+mod started {
+    use std::sync::atomic::AtomicBool;
+
+    /// Whether descriptor 1 was closed when the process started.
+    pub static STDOUT_CLOSED: AtomicBool = AtomicBool::new(false);
+
     #[cfg(target_os = "linux")]
-    {
-        use std::os::unix::fs::{FileTypeExt, MetadataExt};
+    extern "C" fn note_closed_stdout() {
         // SAFETY: F_GETFL only reads descriptor 1's flags; it changes nothing.
-        let flags = unsafe { libc::fcntl(1, libc::F_GETFL) };
-        if flags == -1 {
-            return true;
-        }
-        let device =
-            |path: &str| std::fs::metadata(path).ok().filter(|m| m.file_type().is_char_device()).map(|m| m.rdev());
-        let null = device("/dev/null");
-        flags & libc::O_ACCMODE == libc::O_RDWR && null.is_some() && device("/proc/self/fd/1") == null
+        let closed = unsafe { libc::fcntl(1, libc::F_GETFL) } == -1;
+        STDOUT_CLOSED.store(closed, std::sync::atomic::Ordering::Relaxed);
     }
-    #[cfg(not(target_os = "linux"))]
-    {
-        false
-    }
+
+    /// Run by the loader with the program's other initializers, before `main`
+    /// and before Rust's runtime replaces a closed descriptor.
+    #[cfg(target_os = "linux")]
+    #[used]
+    #[unsafe(link_section = ".init_array")]
+    static NOTE_CLOSED_STDOUT: extern "C" fn() = note_closed_stdout;
 }

@@ -113,7 +113,7 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
         let last = scene.find_polygon(spec)?;
         scene.polygons.truncate(last + 1);
     }
-    let path = args.scene.display().to_string();
+    let path = zsim::shown_path(&args.scene);
     #[cfg(feature = "gpu")]
     if let Some(api) = args.compare_gpu {
         let api = match api {
@@ -153,7 +153,7 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
     let mut simulation = Simulation::new_on(&scene, threads(args));
     match args.format {
         Format::Text => {
-            emit(out, &report::scene_header(lang, &scene, &args.scene.display().to_string()))?;
+            emit(out, &report::scene_header(lang, &scene, &zsim::shown_path(&args.scene)))?;
             let last = scene.polygons.len().checked_sub(1);
             if final_only {
                 draw_all_but_the_last(&mut simulation, &scene, args);

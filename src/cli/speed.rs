@@ -44,13 +44,13 @@ pub fn run(lang: zsim::Lang, args: &SpeedArgs, out: &mut dyn Write) -> Result<Fi
         zsim::words!(
             lang,
             "speed-header",
-            scene = args.scene.display().to_string(),
+            scene = zsim::shown_path(&args.scene),
             triangles = race.triangles,
             pixels = race.pixels,
             threads = race.threads,
             tile = race.tile,
-            renderer = race.renderer.as_str(),
-            lp = lp_threads.as_str(),
+            renderer = zsim::printable(&race.renderer).into_owned(),
+            lp = zsim::printable(&lp_threads).into_owned(),
             pairs = args.pairs
         ),
         zsim::words!(

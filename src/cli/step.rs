@@ -58,11 +58,12 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
     let mut stepper = Stepper::new(&scene, args.arith);
     if let (true, Some(output)) = (args.html, &args.output) {
         let name =
-            args.scene.file_name().map_or_else(|| args.scene.display().to_string(), |n| n.to_string_lossy().into());
+            args.scene.file_name().map_or_else(|| zsim::shown_path(&args.scene), |n| n.to_string_lossy().into());
         let page = zsim::page::page(lang, &mut stepper, &name);
-        zsim::output::not_an_input(output, &[&args.scene])?;
-        std::fs::write(output, page).map_err(|source| Error::Write { path: output.clone(), source })?;
-        emit(out, &format!("{}\n", zsim::words!(lang, "file-written-page", path = output.display().to_string())))?;
+        let mut plan = zsim::Plan::new(&[&args.scene], zsim::Replace::Allowed);
+        plan.file(output, page);
+        plan.write()?;
+        emit(out, &format!("{}\n", zsim::words!(lang, "file-written-page", path = zsim::shown_path(&output))))?;
         return Ok(Finish::Ok);
     }
     let mut start = None;
@@ -96,7 +97,7 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
         }
         return Ok(Finish::Ok);
     }
-    interactive(lang, &args.scene.display().to_string(), &mut stepper, start, quiz.as_mut(), color, out)
+    interactive(lang, &zsim::shown_path(&args.scene), &mut stepper, start, quiz.as_mut(), color, out)
 }
 
 impl From<QuizMode> for zsim::step::QuizMode {

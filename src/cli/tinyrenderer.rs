@@ -92,18 +92,18 @@ pub fn run(lang: zsim::Lang, args: &TinyrendererArgs, out: &mut dyn Write) -> Re
                 ("zbuffer.tga".to_string(), tinyrenderer::tga(side, side, 1, &drawn.zbuffer, !uncompressed)),
                 ("framebuffer.tga".to_string(), tinyrenderer::tga(side, side, 3, &frame, !uncompressed)),
             ];
-            zsim::output::write_fresh(output, &files, &[model.as_path()])?;
+            zsim::write_fresh(output, &files, &[model.as_path()])?;
             let drawn_faces = loaded.faces.len() - drawn.skipped;
             let mut text = format!(
                 "{}\n",
                 zsim::words!(
                     lang,
                     "tinyrenderer-run",
-                    model = model.display().to_string(),
+                    model = zsim::shown_path(&model),
                     faces = loaded.faces.len(),
                     skipped = drawn.skipped,
                     drawn = drawn_faces,
-                    folder = output.display().to_string()
+                    folder = zsim::shown_path(&output)
                 )
             );
             if *arith == Arith::Exact {

@@ -18,10 +18,8 @@
 
 pub mod clip_space;
 mod file;
-pub mod output;
 pub mod perspective;
 pub mod random;
-pub mod text;
 
 use crate::words::Lang;
 use std::borrow::Cow;
@@ -165,7 +163,7 @@ impl Window {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Polygon {
     /// Its name (from the file, or `crate::words::default_name`), with control characters
-    /// escaped as `\u{1b}` ([`crate::scene::text::printable`]) so that no report can
+    /// escaped as `\u{1b}` ([`crate::words::printable`]) so that no report can
     /// carry them to a terminal.
     pub name: String,
     /// The framebuffer value it writes; fits `frame_bits`.
@@ -344,7 +342,7 @@ impl Scene {
 
     /// Reads and validates a scene file.
     pub fn load(lang: Lang, path: &Path) -> Result<Scene, Error> {
-        let text = crate::scene::text::read_text(lang, path)?;
+        let text = crate::door::read_text(lang, path)?;
         Scene::from_json(lang, &text, path)
     }
 

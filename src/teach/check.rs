@@ -11,7 +11,8 @@ pub use crate::observe::check::{CellRange, Matrix, Mismatch, Misreading, compare
 use crate::observe::explain::{Buffer, polygon_after, why};
 use crate::observe::trace::PixelWatcher;
 use crate::scene::Scene;
-use crate::scene::text::{Links, printable, read_text_with};
+use crate::door::{Links, read_text_with};
+use crate::words::printable;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::words::Lang;
@@ -36,8 +37,8 @@ pub fn read_answer(lang: Lang, path: &Path, scene: &Scene, buffer: Buffer, links
 /// class folder or the autograder keeps it stretches tables and is nobody's
 /// business), control characters escaped.
 pub fn as_the_student_sees(lang: Lang, error: &Error, path: &Path) -> String {
-    let file = path.file_name().map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
-    printable(&error.message(lang).replace(&path.display().to_string(), &file)).into_owned()
+    let file = path.file_name().map_or_else(|| crate::words::shown_path(&path), |n| n.to_string_lossy().into_owned());
+    printable(&error.message(lang).replace(&crate::words::shown_path(&path), &file)).into_owned()
 }
 
 /// The answer files for the state after one polygon.
@@ -220,7 +221,7 @@ pub fn check(
                     words!(lang, "check-hint-fewer", how = how, left = left, top = top)
                 }
             });
-            AnswerCheck { buffer, file: path.display().to_string(), wrong, hint }
+            AnswerCheck { buffer, file: crate::words::shown_path(&path), wrong, hint }
         })
         .collect();
     Ok(CheckReport {

@@ -175,7 +175,7 @@ pub fn json(
         })
         .collect();
     let object = serde_json::json!({
-        "scene": scene.display().to_string(),
+        "scene": scene.to_string_lossy(),
         "after": after,
         "students": students,
         "common_mistakes": mistakes,

@@ -10,7 +10,8 @@ use std::path::Path;
 use crate::effects::arith::Arith;
 use crate::error::Error;
 use crate::scene::Scene;
-use crate::scene::text::{Links, printable};
+use crate::door::Links;
+use crate::words::printable;
 use crate::teach::check::{CheckReport, State, as_the_student_sees, check, read_answer};
 use crate::words::Lang;
 

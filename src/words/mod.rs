@@ -183,8 +183,10 @@ macro_rules! words {
 }
 
 // After the macro: `words!` is in scope from here on.
+mod shown;
 mod system;
 
+pub use shown::{path as shown_path, printable};
 pub use system::{fact, io_reason, json_reason};
 
 /// How many characters of a token from a file a message quotes.

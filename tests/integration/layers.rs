@@ -6,9 +6,9 @@
 use std::path::{Path, PathBuf};
 
 /// The layers, lowest first (`words` and `error` are used from above).
-const LAYERS: [&str; 12] = [
-    "words", "numbers", "rules", "geometry", "error", "raster", "scene", "simulate", "effects", "observe", "teach",
-    "courses",
+const LAYERS: [&str; 13] = [
+    "words", "numbers", "rules", "geometry", "error", "door", "raster", "scene", "simulate", "effects", "observe",
+    "teach", "courses",
 ];
 
 fn sources(dir: &Path, out: &mut Vec<PathBuf>) {

@@ -88,25 +88,25 @@ fn a_device_is_refused_before_anything_is_read() {
     );
 }
 
-/// A 1 GiB sparse answer file aborted `check` and `grade` ("memory
+/// A 1 GiB sparse answer file once aborted `check` and `grade` ("memory
 /// allocation of 2147483716 bytes failed", exit 134).
 #[test]
 fn a_huge_answer_is_refused_by_its_size_before_it_is_read() {
     let class = class("huge", |dir| {
         let file = std::fs::File::create(dir.join("zed.frame.txt")).unwrap();
-        file.set_len((1 << 30) + 1).unwrap();
+        file.set_len(zsim::MAX_INPUT_BYTES + 1).unwrap();
     });
     let huge = class.join("zed.frame.txt");
     let start = Instant::now();
     let run = zsim(&["check", "examples/rogers.json", "--frame", path(&huge)]);
     assert_eq!(run.code, 2);
-    assert!(run.stderr.ends_with("zed.frame.txt: is larger than zsim reads (1024 MiB)\n"), "{}", run.stderr);
+    assert!(run.stderr.ends_with("zed.frame.txt: is larger than zsim reads (64 MiB)\n"), "{}", run.stderr);
     let run = zsim(&["grade", "examples/rogers.json", path(&class)]);
     assert_eq!(run.code, 1, "{}", run.stderr);
     // The status names the file once, without the folder's path; it may wrap
     // in its column, so the table's rules and line breaks are taken out.
     let text = run.stdout.replace('|', " ").split_whitespace().collect::<Vec<_>>().join(" ");
-    assert!(text.contains("malformed: zed.frame.txt: is larger than zsim reads (1024 MiB)"), "{}", run.stdout);
+    assert!(text.contains("malformed: zed.frame.txt: is larger than zsim reads (64 MiB)"), "{}", run.stdout);
     assert!(!run.stdout.contains("untrusted/huge/zed"), "{}", run.stdout);
     assert!(start.elapsed() < Duration::from_secs(30), "took {:?}", start.elapsed());
 }

@@ -6,7 +6,7 @@ use std::path::Path;
 use crate::error::Error;
 use crate::observe::explain::{Buffer, why};
 use crate::observe::trace::PixelWatcher;
-use crate::scene::text::read_text;
+use crate::door::read_text;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::words::{Lang, token};

@@ -481,7 +481,7 @@ pub struct Case {
 }
 
 fn read(lang: Lang, path: &Path) -> Result<String, Error> {
-    crate::scene::text::read_text(lang, path)
+    crate::door::read_text(lang, path)
 }
 
 fn located(path: &Path, error: CaseError) -> Error {

@@ -39,11 +39,10 @@ impl Image {
     }
 
     /// Reads a PNG (any colour type and depth png expands to 8-bit RGB or
-    /// RGBA, grey included); `Err` says why not.
+    /// RGBA, grey included) that declares at most
+    /// [`crate::door::MAX_IMAGE_PIXELS`]; `Err` says why not.
     pub fn from_png(lang: crate::words::Lang, bytes: &[u8]) -> Result<Image, String> {
-        let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
-        decoder.set_transformations(png::Transformations::normalize_to_color8() | png::Transformations::ALPHA);
-        let mut reader = decoder.read_info().map_err(|e| words!(lang, "png-not-an-image", reason = e.to_string()))?;
+        let mut reader = crate::door::png_reader(lang, bytes)?;
         let size = reader.output_buffer_size().ok_or_else(|| words!(lang, "png-too-large"))?;
         let mut buffer = vec![0; size];
         let frame = reader.next_frame(&mut buffer).map_err(|e| words!(lang, "png-broken", reason = e.to_string()))?;

@@ -172,6 +172,11 @@ pub struct Case {
 /// Largest image side accepted: 16384 × 16384 RGBA in f64 is 8 GiB already.
 pub const MAX_SIDE: u32 = 8192;
 
+/// The most samples a case may ask for, width × height × fsaa²: what an
+/// 8192 × 8192 image takes at fsaa 1. A larger `fsaa` is refused at its
+/// line, before any sample buffer is allocated.
+pub const MAX_SAMPLES: u64 = 8192 * 8192;
+
 impl Case {
     /// Reads a CS 418 file. `load_texture` reads a texture the case names
     /// (the caller knows where the case's folder is), or says why it cannot.
@@ -228,6 +233,19 @@ impl Case {
                     let [level] = integers::<1>(lang, line, keyword, args)?;
                     if !(1..=8).contains(&level) {
                         return Err(error(line, words!(lang, "cs418-fsaa", level = level.to_string())));
+                    }
+                    let samples = u64::from(case.width) * u64::from(case.height) * (level * level) as u64;
+                    if samples > MAX_SAMPLES {
+                        return Err(error(
+                            line,
+                            words!(
+                                lang,
+                                "cs418-too-many-samples",
+                                level = level.to_string(),
+                                samples = samples.to_string(),
+                                max = MAX_SAMPLES.to_string()
+                            ),
+                        ));
                     }
                     case.features.fsaa = level as u32;
                 }

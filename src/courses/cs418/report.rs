@@ -2,9 +2,11 @@
 //! uses, where the course's floats and exact arithmetic disagree and why,
 //! and our image against a reference PNG.
 
-use std::path::Path;
+use std::cell::RefCell;
+use std::path::{Path, PathBuf};
 
 use super::{Case, Comparison, Image, Primitive, Reason, compare_images, differences};
+use crate::door::{Folder, Identity};
 use crate::error::Error;
 use crate::words::Lang;
 
@@ -29,23 +31,48 @@ pub fn located(path: &Path, error: super::CaseError) -> Error {
 
 /// Reads the case at `path`, its textures from beside it where `textures`
 /// says so; errors name the file and the line.
-pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<Case, Error> {
-    let text = crate::scene::text::read_text(lang, path)?;
-    let folder = path.parent().unwrap_or(Path::new("."));
+pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<Loaded, Error> {
+    let text = crate::door::read_text(lang, path)?;
+    let folder = Folder::beside(path)?;
+    // Each file decoded once, however many names lead to it (`x.png`, `./x.png`).
+    let read: RefCell<Vec<(PathBuf, Identity, Image)>> = RefCell::new(Vec::new());
     let texture = |name: &str| {
         if textures == Textures::Ignored {
             return Ok(Image { width: 1, height: 1, rgba: vec![0; 4] });
         }
-        let file = folder.join(name);
-        if !file.is_file() {
-            return Err(words!(lang, "cs418-texture-missing"));
+        let (bytes, identity) = folder.read(name).map_err(|error| match error {
+            Error::Read { source, .. } if source.kind() == std::io::ErrorKind::NotFound => {
+                words!(lang, "cs418-texture-missing")
+            }
+            other => other.message(lang),
+        })?;
+        if let Some((_, _, image)) = read.borrow().iter().find(|(_, known, _)| *known == identity) {
+            return Ok(image.clone());
         }
-        let bytes =
-            std::fs::read(&file).map_err(|e| words!(lang, "cs418-texture-unreadable", reason = e.to_string()))?;
-        Image::from_png(lang, &bytes)
+        let image = Image::from_png(lang, &bytes)?;
+        read.borrow_mut().push((folder.path_of(name), identity, image.clone()));
+        Ok(image)
     };
     let case = Case::parse(lang, &text, &texture).map_err(|e| located(path, e))?;
-    Ok(case)
+    let textures = read.into_inner().into_iter().map(|(path, identity, _)| (path, identity)).collect();
+    Ok(Loaded { case, textures })
+}
+
+/// A case read, with the texture files it read: a run writes onto none of them.
+pub struct Loaded {
+    /// The case.
+    pub case: Case,
+    /// Each texture file read, once, by the name that first led to it.
+    pub textures: Vec<(PathBuf, Identity)>,
+}
+
+/// Reads a reference image for `--compare`, through the same door as every
+/// input: a regular file within [`crate::door::MAX_INPUT_BYTES`], its declared
+/// size checked before decoding; its identity comes with it.
+pub fn reference(lang: Lang, png: &Path) -> Result<(Image, Option<Identity>), Error> {
+    let bytes = crate::door::read_bytes(png, crate::door::Links::Follow)?;
+    let image = Image::from_png(lang, &bytes).map_err(|message| Error::Answer { path: png.to_owned(), message })?;
+    Ok((image, Identity::of(png)))
 }
 
 /// `--compare`: our image against a reference `image` read from `png`,
@@ -73,7 +100,7 @@ pub fn compare_text(
         });
     };
     let (path, tolerance_text, largest) =
-        (png.display().to_string(), tolerance.to_string(), difference.largest.to_string());
+        (crate::words::shown_path(&png), tolerance.to_string(), difference.largest.to_string());
     if difference.pixels.is_empty() {
         let line = words!(lang, "cs418-compare-same", path = path, tolerance = tolerance_text, largest = largest);
         text.push_str(&format!("{line}\n"));

@@ -85,7 +85,7 @@ impl Arith {
                 _ => Err(words!(
                     lang,
                     "usage-arith",
-                    text = crate::scene::text::printable(&crate::words::token(lang, text)).into_owned()
+                    text = crate::words::printable(&crate::words::token(lang, text)).into_owned()
                 )),
             },
         }

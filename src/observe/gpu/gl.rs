@@ -24,6 +24,38 @@ impl std::fmt::Debug for Gl {
 /// Mesa's platform for contexts without any window system.
 const PLATFORM_SURFACELESS_MESA: egl::Enum = 0x31DD;
 
+/// Runs `f` with the process's standard error sent to a temporary file, and
+/// returns what was written there; standard error is put back before it
+/// returns. Where that cannot be done, `f` runs as it is.
+fn captured_stderr<T>(f: impl FnOnce() -> T) -> (T, String) {
+    #[cfg(unix)]
+    {
+        use std::io::{Read, Seek};
+        use std::os::fd::AsRawFd;
+        if let Ok(mut file) = tempfile::tempfile() {
+            // SAFETY: dup and dup2 on descriptor 2 and a file this function owns;
+            // descriptor 2 is restored from its duplicate before returning.
+            let saved = unsafe { libc::dup(2) };
+            if saved >= 0 && unsafe { libc::dup2(file.as_raw_fd(), 2) } >= 0 {
+                let result = f();
+                // SAFETY: puts the saved descriptor back as 2 and closes the duplicate.
+                unsafe {
+                    libc::dup2(saved, 2);
+                    libc::close(saved);
+                }
+                let mut said = String::new();
+                let _ = file.rewind().and_then(|_| file.take(64 << 10).read_to_string(&mut said));
+                return (result, said);
+            }
+            if saved >= 0 {
+                // SAFETY: closes the duplicate made above.
+                unsafe { libc::close(saved) };
+            }
+        }
+    }
+    (f(), String::new())
+}
+
 fn refused(step: &'static str) -> impl Fn(egl::Error) -> GpuError {
     move |error| GpuError::Refused { step, reason: error.to_string() }
 }
@@ -32,6 +64,21 @@ impl Gl {
     /// Loads `libEGL.so.1` and makes an OpenGL 3.3 core context current on
     /// this thread, with no surface.
     pub fn open() -> Result<Gl, GpuError> {
+        // What Mesa prints while it starts (`libEGL warning: …`) is kept
+        // from the terminal and told as part of zsim's one line instead.
+        let (opened, said) = captured_stderr(Gl::open_quietly);
+        opened.map_err(|error| match (error, said.lines().find(|line| !line.trim().is_empty())) {
+            (GpuError::Refused { step, reason }, Some(line)) => {
+                GpuError::Refused { step, reason: format!("{reason} ({})", crate::words::printable(line.trim())) }
+            }
+            (GpuError::NoLibrary(reason), Some(line)) => {
+                GpuError::NoLibrary(format!("{reason} ({})", crate::words::printable(line.trim())))
+            }
+            (error, _) => error,
+        })
+    }
+
+    fn open_quietly() -> Result<Gl, GpuError> {
         // SAFETY: loading the system's EGL runs its initializers, as any program linking it does.
         let egl = unsafe { egl::DynamicInstance::<egl::EGL1_5>::load_required() }
             .map_err(|error| GpuError::NoLibrary(error.to_string()))?;

@@ -22,7 +22,7 @@ use crate::raster::depth::{DepthTest, Stored};
 use crate::rules::{DepthStore, Preset, Rules};
 use crate::scene::clip_space::Clipped;
 use crate::scene::perspective::{Clip, Perspective};
-use crate::scene::text::printable;
+use crate::words::printable;
 use crate::scene::{Antialias, Effects, MAX_CELLS, MAX_SIDE, Polygon, Scene, Winding, Window, max_for_bits};
 use numbers::{Coordinate, Number, ReadNumber};
 

@@ -123,7 +123,7 @@ fn notes(lang: Lang, exercise: &Exercise, spec: &Spec, dir: &Path) -> String {
         text.push_str(&format!("  {}: {}\n", found.case, found.place));
     }
     let scene_path = dir.join("scene.json");
-    let line = words!(lang, "exercise-notes-next", path = scene_path.display().to_string());
+    let line = words!(lang, "exercise-notes-next", path = crate::words::shown_path(&scene_path));
     text.push_str(&format!("{line}\n"));
     text
 }

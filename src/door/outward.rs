@@ -1,0 +1,334 @@
+//! The one way out: everything a command writes is planned first, then
+//! written atomically, never onto one of its inputs.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use super::inward::Identity;
+use crate::error::{Error, Usage};
+
+/// Whether a planned file may replace one that is there.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Replace {
+    /// It may (`-o FILE`: the user named the file).
+    Allowed,
+    /// It may not: the command makes a folder of files (feedback, an
+    /// exercise) and replaces nothing; refused, before anything is written,
+    /// when one is there.
+    Never,
+}
+
+/// The longest file name the file systems zsim writes to accept, in bytes.
+pub const MAX_NAME_BYTES: usize = 255;
+
+/// The longest path the system opens, in bytes.
+pub const MAX_PATH_BYTES: usize = 4095;
+
+/// One file to write.
+#[derive(Debug)]
+struct Planned {
+    path: PathBuf,
+    bytes: Vec<u8>,
+    executable: bool,
+}
+
+/// Everything one command writes, planned before the first byte is written.
+///
+/// [`Plan::write`] checks every file first: none is one of the command's
+/// inputs or in one of its input folders (compared as files, by
+/// [`Identity`], so another name or a hard link is caught), no two are the
+/// same, each name fits the file system ([`MAX_NAME_BYTES`],
+/// [`MAX_PATH_BYTES`]), and none replaces a file where [`Replace::Never`]
+/// says so. Only then does it write each to a temporary file beside its
+/// place and rename it there, with Ctrl-C, `SIGTERM` and `SIGHUP` held
+/// until the last is in place, so an interrupted command leaves the old
+/// files or none, never half of one.
+#[derive(Debug)]
+pub struct Plan {
+    inputs: Vec<(PathBuf, Identity)>,
+    files: Vec<Planned>,
+    replace: Replace,
+}
+
+impl Plan {
+    /// A plan that must not write onto any of `inputs` (files, or folders
+    /// whose files it must not write into).
+    pub fn new(inputs: &[&Path], replace: Replace) -> Plan {
+        let inputs = inputs.iter().filter_map(|p| Some((p.to_path_buf(), Identity::of(p)?))).collect();
+        Plan { inputs, files: Vec::new(), replace }
+    }
+
+    /// One more input not to write onto, known by its identity (a file
+    /// named inside another, read through [`super::Folder`]).
+    pub fn input(&mut self, path: PathBuf, identity: Identity) {
+        self.inputs.push((path, identity));
+    }
+
+    /// Plans `bytes` into the file at `path`.
+    pub fn file(&mut self, path: impl Into<PathBuf>, bytes: impl Into<Vec<u8>>) {
+        self.files.push(Planned { path: path.into(), bytes: bytes.into(), executable: false });
+    }
+
+    /// Plans an executable file (a script), mode 0755 on Unix.
+    pub fn executable(&mut self, path: impl Into<PathBuf>, bytes: impl Into<Vec<u8>>) {
+        self.files.push(Planned { path: path.into(), bytes: bytes.into(), executable: true });
+    }
+
+    /// The paths planned, in order.
+    pub fn paths(&self) -> impl Iterator<Item = &Path> {
+        self.files.iter().map(|f| f.path.as_path())
+    }
+
+    /// Checks the whole plan, as [`Plan`] says, without writing anything.
+    pub fn check(&self) -> Result<(), Error> {
+        let mut existing = Vec::new();
+        for (n, file) in self.files.iter().enumerate() {
+            let path = &file.path;
+            let name = path.file_name().map_or(0, |n| n.len());
+            if name == 0 || name > MAX_NAME_BYTES || path.as_os_str().len() > MAX_PATH_BYTES {
+                return Err(Usage::OutputNameTooLong { path: path.clone(), max: MAX_NAME_BYTES }.into());
+            }
+            if self.files[..n].iter().any(|earlier| same_place(&earlier.path, path)) {
+                return Err(Usage::OutputTwice { path: path.clone() }.into());
+            }
+            let folder = folder_of(path);
+            for candidate in [Some(path.as_path()), Some(folder)].into_iter().flatten() {
+                if let Some(identity) = Identity::of(candidate)
+                    && self.inputs.iter().any(|(_, input)| *input == identity)
+                {
+                    return Err(Usage::OutputIsInput { folder: candidate.to_owned() }.into());
+                }
+            }
+            if std::fs::symlink_metadata(path).is_ok() {
+                existing.push(path.clone());
+            }
+        }
+        if self.replace == Replace::Never && !existing.is_empty() {
+            let folder = folder_of(&existing[0]).to_owned();
+            let files = existing.iter().map(|p| crate::words::shown_path(Path::new(p.file_name().unwrap_or_default()))).collect();
+            return Err(Usage::OutputWouldReplace { folder, files }.into());
+        }
+        Ok(())
+    }
+
+    /// Checks the plan, then writes it (see [`Plan`]); the paths written.
+    pub fn write(self) -> Result<Vec<PathBuf>, Error> {
+        self.check()?;
+        let _held = held::Interruptions::hold();
+        let mut staged = Vec::with_capacity(self.files.len());
+        for file in &self.files {
+            let folder = folder_of(&file.path);
+            std::fs::create_dir_all(folder).map_err(|source| Error::Write { path: folder.to_owned(), source })?;
+            let failed = |source| Error::Write { path: file.path.clone(), source };
+            let mut temporary = tempfile::Builder::new().prefix(".zsim-").tempfile_in(folder).map_err(failed)?;
+            temporary.write_all(&file.bytes).map_err(failed)?;
+            temporary.as_file().sync_data().map_err(failed)?;
+            #[cfg(unix)]
+            if file.executable {
+                use std::os::unix::fs::PermissionsExt;
+                temporary.as_file().set_permissions(std::fs::Permissions::from_mode(0o755)).map_err(failed)?;
+            }
+            staged.push(temporary);
+        }
+        let mut written = Vec::with_capacity(self.files.len());
+        for (file, temporary) in self.files.iter().zip(staged) {
+            let placed = match self.replace {
+                Replace::Allowed => temporary.persist(&file.path).map(drop),
+                Replace::Never => temporary.persist_noclobber(&file.path).map(drop),
+            };
+            if let Err(error) = placed {
+                // Undo what this plan placed: it replaced nothing, so nothing is lost.
+                if self.replace == Replace::Never {
+                    for path in &written {
+                        let _ = std::fs::remove_file(path);
+                    }
+                }
+                return Err(Error::Write { path: file.path.clone(), source: error.error });
+            }
+            written.push(file.path.clone());
+        }
+        Ok(written)
+    }
+}
+
+/// Writes `files` (name, contents) into `folder` as one plan that replaces
+/// nothing and writes nowhere among `inputs`: the folder of outputs most
+/// commands make.
+pub fn write_fresh(folder: &Path, files: &[(String, Vec<u8>)], inputs: &[&Path]) -> Result<Vec<PathBuf>, Error> {
+    let mut plan = Plan::new(inputs, Replace::Never);
+    for (name, bytes) in files {
+        plan.file(folder.join(name), bytes.clone());
+    }
+    plan.write()
+}
+
+/// Whether two folders are one: the same folder if both exist, else the
+/// same path.
+pub fn same_folder(a: &Path, b: &Path) -> bool {
+    match (Identity::of(a), Identity::of(b)) {
+        (Some(a), Some(b)) => a == b,
+        _ => a.components().eq(b.components()),
+    }
+}
+
+/// The folder a path is in (`.` for a bare name).
+fn folder_of(path: &Path) -> &Path {
+    path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."))
+}
+
+/// Whether two planned paths are one place: the same file if it exists,
+/// else the same folder (as a file) and the same name.
+fn same_place(a: &Path, b: &Path) -> bool {
+    match (Identity::of(a), Identity::of(b)) {
+        (Some(a), Some(b)) => a == b,
+        _ => {
+            a.file_name() == b.file_name()
+                && match (Identity::of(folder_of(a)), Identity::of(folder_of(b))) {
+                    (Some(x), Some(y)) => x == y,
+                    _ => folder_of(a) == folder_of(b),
+                }
+        }
+    }
+}
+
+/// Interruptions held while a plan is written.
+mod held {
+    /// While one of these lives, `SIGINT`, `SIGTERM` and `SIGHUP` are only
+    /// noted; when the last one goes, the former handlers come back and a
+    /// signal noted meanwhile is raised again, so the process ends as it
+    /// would have, after the files are in place.
+    pub struct Interruptions(());
+
+    #[cfg(unix)]
+    mod unix {
+        use std::sync::Mutex;
+        use std::sync::atomic::{AtomicI32, Ordering};
+
+        pub const SIGNALS: [libc::c_int; 3] = [libc::SIGINT, libc::SIGTERM, libc::SIGHUP];
+        /// The signal noted while held (0: none).
+        pub static NOTED: AtomicI32 = AtomicI32::new(0);
+        /// How many holds are open, and the handlers they replaced.
+        pub static HOLDS: Mutex<(usize, Vec<libc::sigaction>)> = Mutex::new((0, Vec::new()));
+
+        pub extern "C" fn note(signal: libc::c_int) {
+            NOTED.store(signal, Ordering::SeqCst);
+        }
+    }
+
+    impl Interruptions {
+        /// Holds interruptions until the value is dropped.
+        pub fn hold() -> Interruptions {
+            #[cfg(unix)]
+            {
+                let mut holds = unix::HOLDS.lock().unwrap_or_else(|e| e.into_inner());
+                if holds.0 == 0 {
+                    holds.1 = unix::SIGNALS
+                        .iter()
+                        .map(|&signal| {
+                            // SAFETY: sigaction with a handler that only stores to an atomic,
+                            // which is async-signal-safe; the old action is kept to restore.
+                            unsafe {
+                                let mut action: libc::sigaction = std::mem::zeroed();
+                                action.sa_sigaction = unix::note as extern "C" fn(libc::c_int) as usize;
+                                libc::sigemptyset(&mut action.sa_mask);
+                                let mut old: libc::sigaction = std::mem::zeroed();
+                                libc::sigaction(signal, &action, &mut old);
+                                old
+                            }
+                        })
+                        .collect();
+                }
+                holds.0 += 1;
+            }
+            Interruptions(())
+        }
+    }
+
+    impl Drop for Interruptions {
+        fn drop(&mut self) {
+            #[cfg(unix)]
+            {
+                use std::sync::atomic::Ordering;
+                let mut holds = unix::HOLDS.lock().unwrap_or_else(|e| e.into_inner());
+                holds.0 -= 1;
+                if holds.0 == 0 {
+                    for (signal, old) in unix::SIGNALS.iter().zip(&holds.1) {
+                        // SAFETY: puts back the action taken in `hold`.
+                        unsafe { libc::sigaction(*signal, old, std::ptr::null_mut()) };
+                    }
+                    let noted = unix::NOTED.swap(0, Ordering::SeqCst);
+                    if noted != 0 {
+                        // SAFETY: raising a signal the process was sent, now with its own handler.
+                        unsafe { libc::raise(noted) };
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("zsim-plan-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn a_hard_link_to_an_input_is_the_input() {
+        let dir = scratch("hard-link");
+        let (model, link) = (dir.join("m.obj"), dir.join("h.obj"));
+        std::fs::write(&model, "v 0 0 0\n").unwrap();
+        std::fs::hard_link(&model, &link).unwrap();
+        let mut plan = Plan::new(&[&model], Replace::Allowed);
+        plan.file(&link, "overwritten");
+        assert!(matches!(plan.write(), Err(Error::Usage(Usage::OutputIsInput { .. }))));
+        assert_eq!(std::fs::read_to_string(&model).unwrap(), "v 0 0 0\n");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn nothing_is_written_when_one_file_is_refused() {
+        let dir = scratch("refused");
+        std::fs::write(dir.join("b.txt"), "old").unwrap();
+        let mut plan = Plan::new(&[], Replace::Never);
+        plan.file(dir.join("a.txt"), "new");
+        plan.file(dir.join("b.txt"), "new");
+        assert!(matches!(plan.write(), Err(Error::Usage(Usage::OutputWouldReplace { .. }))));
+        assert!(!dir.join("a.txt").exists());
+        assert_eq!(std::fs::read_to_string(dir.join("b.txt")).unwrap(), "old");
+        let mut plan = Plan::new(&[], Replace::Never);
+        plan.file(dir.join(format!("{}.txt", "x".repeat(300))), "new");
+        plan.file(dir.join("c.txt"), "new");
+        assert!(matches!(plan.write(), Err(Error::Usage(Usage::OutputNameTooLong { .. }))));
+        assert!(!dir.join("c.txt").exists());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_plan_names_no_file_twice() {
+        let dir = scratch("twice");
+        let mut plan = Plan::new(&[], Replace::Allowed);
+        plan.file(dir.join("a.txt"), "1");
+        plan.file(dir.join(".").join("a.txt"), "2");
+        assert!(matches!(plan.write(), Err(Error::Usage(Usage::OutputTwice { .. }))));
+        assert!(!dir.join("a.txt").exists());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_written_file_replaces_the_old_one_whole_and_leaves_no_temporary_file() {
+        let dir = scratch("whole");
+        std::fs::write(dir.join("a.txt"), "old").unwrap();
+        let mut plan = Plan::new(&[], Replace::Allowed);
+        plan.file(dir.join("a.txt"), "new");
+        assert_eq!(plan.write().unwrap(), vec![dir.join("a.txt")]);
+        assert_eq!(std::fs::read_to_string(dir.join("a.txt")).unwrap(), "new");
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

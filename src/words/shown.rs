@@ -1,0 +1,51 @@
+//! Showing text that came from outside (a name in a file, a path, an
+//! environment variable) without letting it steer the terminal or break a
+//! one-line message.
+
+use std::borrow::Cow;
+use std::path::Path;
+
+/// The text with every control character (escape, bell, newline, …) written
+/// as Rust writes it, `\u{1b}`, so that a name from a scene file can neither
+/// retitle nor recolour a terminal, nor break a one-line message.
+///
+/// ```
+/// assert_eq!(zsim::printable("\u{1b}[31mred"), "\\u{1b}[31mred");
+/// assert_eq!(zsim::printable("plain"), "plain");
+/// ```
+pub fn printable(text: &str) -> Cow<'_, str> {
+    if !text.chars().any(char::is_control) {
+        return Cow::Borrowed(text);
+    }
+    Cow::Owned(
+        text.chars().map(|c| if c.is_control() { c.escape_unicode().to_string() } else { c.to_string() }).collect(),
+    )
+}
+
+/// A path as a message shows it: its bytes that are not UTF-8 replaced by
+/// U+FFFD, its control characters escaped as [`printable`] escapes them
+/// (a file named `\u{1b}]0;x\u{7}.json` cannot retitle the terminal).
+///
+/// ```
+/// use std::path::Path;
+/// assert_eq!(zsim::shown_path(Path::new("a\u{1b}[2J.json")), "a\\u{1b}[2J.json");
+/// ```
+pub fn path(path: &Path) -> String {
+    printable(&path.to_string_lossy()).into_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn control_characters_are_escaped_and_others_kept() {
+        assert_eq!(printable("a\nb\u{7}"), "a\\u{a}b\\u{7}");
+        assert_eq!(printable("треугольник 三角形"), "треугольник 三角形");
+    }
+
+    #[test]
+    fn a_path_is_shown_escaped() {
+        assert_eq!(path(Path::new("x/\u{1b}]0;owned\u{7}.json")), "x/\\u{1b}]0;owned\\u{7}.json");
+    }
+}
