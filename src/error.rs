@@ -274,6 +274,29 @@ pub enum Usage {
         /// The folder.
         folder: PathBuf,
     },
+    /// Two files of a submission answer for one buffer of one state.
+    SameAnswerTwice {
+        /// The submission folder.
+        folder: PathBuf,
+        /// The two files, by name.
+        files: Vec<String>,
+    },
+    /// Two files of a class folder that name one student for one buffer.
+    SameStudentTwice {
+        /// The class folder.
+        class: PathBuf,
+        /// The student, as shown.
+        student: String,
+        /// The two files, by name.
+        files: Vec<String>,
+    },
+    /// Two students a gradebook import would take for one.
+    GradebookCannotTell {
+        /// One student, as shown.
+        first: String,
+        /// The other.
+        second: String,
+    },
     /// An output whose name the file system cannot hold.
     OutputNameTooLong {
         /// The path.
@@ -413,6 +436,22 @@ impl Usage {
                 words!(lang, "usage-output-name-too-long", path = path(p), max = max.to_string())
             }
             Usage::OutputTwice { path: p } => words!(lang, "usage-output-twice", path = path(p)),
+            Usage::SameStudentTwice { class, student, files } => words!(
+                lang,
+                "usage-same-student-twice",
+                path = path(class),
+                student = student.as_str(),
+                files = quoted_list(files)
+            ),
+            Usage::GradebookCannotTell { first, second } => words!(
+                lang,
+                "usage-gradebook-cannot-tell",
+                first = first.as_str(),
+                second = second.as_str()
+            ),
+            Usage::SameAnswerTwice { folder, files } => {
+                words!(lang, "usage-same-answer-twice", path = path(folder), files = quoted_list(files))
+            }
             Usage::OutputWouldReplace { folder, files } => {
                 let shown: Vec<&str> = files.iter().take(5).map(String::as_str).collect();
                 words!(

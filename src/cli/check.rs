@@ -41,8 +41,11 @@ pub struct CheckArgs {
     #[arg(long, default_value = "visible", value_parser = super::choice(&Visibility::NAMES, Visibility::parse))]
     visibility: Visibility,
     /// With --format gradescope: the points the whole submission is worth, shared equally by its tests.
-    #[arg(long, default_value_t = 100)]
+    #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=i64::from(zsim::gradescope::MAX_POINTS)))]
     points: u32,
+    /// With --format gradescope: the states the submission must answer, each a test per buffer (final, each, or polygon numbers such as 1,3); other files earn nothing.
+    #[arg(long, default_value = "final", value_parser = |text: &str| zsim::check::Expect::parse(super::language_of_the_run(), text))]
+    expect: zsim::check::Expect,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -65,15 +68,23 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
         Some(spec) => scene.find_polygon(spec)?,
         None => scene.polygons.len() - 1,
     };
-    let states = match &args.submission {
-        // An autograder writes results.json whatever it is given: an empty submission scores 0.
-        Some(folder) if args.format == Format::Gradescope => match submission_files(folder, &scene) {
-            Ok(states) => states,
+    if let (Some(folder), Format::Gradescope) = (&args.submission, args.format) {
+        // An autograder writes results.json whatever it is given: a missing answer scores 0.
+        let (expected, unused) = match zsim::check::expected_answers(folder, &scene, &args.expect) {
+            Ok(found) => found,
             Err(error) => {
                 emit(out, &zsim::gradescope::nothing_to_grade(&error.message(lang), args.visibility))?;
                 return Ok(Finish::Ok);
             }
-        },
+        };
+        let grading = Autograde { visibility: args.visibility, points: args.points };
+        let render = |report: &CheckReport| report_text(lang, report);
+        let found = (expected.as_slice(), unused.as_slice());
+        let results = zsim::gradescope::results(lang, (&scene, &args.scene), found, args.arith, grading, &render)?;
+        emit(out, &results)?;
+        return Ok(Finish::Ok);
+    }
+    let states = match &args.submission {
         Some(folder) => submission_files(folder, &scene)?,
         None => vec![State {
             after: last,
@@ -84,9 +95,19 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
         }],
     };
     if args.format == Format::Gradescope {
+        // Answers named on the command line: the states they answer are the ones graded.
+        let expected: Vec<zsim::check::Expected> = states
+            .iter()
+            .flat_map(|s| s.files.iter().map(|(buffer, path)| zsim::check::Expected {
+                after: s.after,
+                buffer: *buffer,
+                files: vec![path.clone()],
+            }))
+            .collect();
         let grading = Autograde { visibility: args.visibility, points: args.points };
         let render = |report: &CheckReport| report_text(lang, report);
-        let results = zsim::gradescope::results(lang, (&scene, &args.scene), &states, args.arith, grading, &render)?;
+        let found = (expected.as_slice(), &[][..]);
+        let results = zsim::gradescope::results(lang, (&scene, &args.scene), found, args.arith, grading, &render)?;
         emit(out, &results)?;
         return Ok(Finish::Ok);
     }

@@ -54,7 +54,7 @@ pub struct ExerciseArgs {
     #[arg(long, default_value = "visible", requires = "gradescope", value_parser = super::choice(&zsim::gradescope::Visibility::NAMES, zsim::gradescope::Visibility::parse))]
     visibility: zsim::gradescope::Visibility,
     /// With --gradescope: the points the exercise is worth.
-    #[arg(long, default_value_t = 100, requires = "gradescope")]
+    #[arg(long, default_value_t = 100, requires = "gradescope", value_parser = clap::value_parser!(u32).range(1..=i64::from(zsim::gradescope::MAX_POINTS)))]
     points: u32,
 }
 
@@ -106,7 +106,9 @@ pub fn run(lang: zsim::Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result
         if zsim::same_folder(folder, dir) {
             return Err(Error::from(zsim::Usage::OutputIsInput { folder: folder.clone() }).into());
         }
-        let files = zsim::gradescope::autograder(&exercise.json, args.visibility, args.points, lang);
+        let expect = if args.each_polygon { zsim::check::Expect::Each } else { zsim::check::Expect::Final };
+        let grading = zsim::gradescope::Autograde { visibility: args.visibility, points: args.points };
+        let files = zsim::gradescope::autograder(&exercise.json, &expect, grading, lang);
         let names: Vec<&str> = files.iter().map(|(name, _)| name.as_str()).collect();
         let line = zsim::words!(lang, "file-written-in", files = names.join(", "), path = zsim::shown_path(folder));
         text.push_str(&format!("{line}\n"));

@@ -12,7 +12,6 @@ use zsim::arith::Arith;
 use zsim::class::{ClassGrades, grade_class};
 use zsim::explain::{polygon_after, polygon_name};
 use zsim::grade::{CommonMistake, Grade, Status};
-use zsim::printable;
 
 use super::check::report_text;
 use super::{Failure, Finish, emit_then};
@@ -121,6 +120,9 @@ fn gradebook(args: &GradeArgs, rows: &[&Grade]) -> Result<String, Failure> {
     }
     if args.points == 0 {
         return Err(super::flags::Flag::NoPoints.into());
+    }
+    if let Some((first, second)) = gradebooks::indistinct(rows) {
+        return Err(zsim::Error::from(zsim::Usage::GradebookCannotTell { first, second }).into());
     }
     Ok(if moodle {
         gradebooks::moodle(rows, identity, args.item.as_deref().unwrap_or("Assignment: z-buffer (Real)"), args.points)
@@ -256,7 +258,7 @@ fn write_feedback(
         ) + "\n";
         // The answers that were read, explained as `zsim check` explains them.
         let mut answers = Vec::new();
-        for file in class.files.iter().filter(|file| printable(&file.student) == grade.student) {
+        for file in class.files.iter().filter(|file| file.student == grade.student) {
             match read_answer(lang, &file.path, scene, file.buffer, zsim::Links::Refuse) {
                 Ok(matrix) => answers.push((file.buffer, file.path.as_path(), matrix)),
                 Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(lang, &error, &file.path))),
@@ -267,7 +269,7 @@ fn write_feedback(
         }
         // NAME.feedback.txt never ends as a submitted NAME.frame.txt or NAME.depth.txt
         // does, nor is it the summary's name, whatever the student's name.
-        outputs.push((format!("{}.feedback.txt", grade.student), text.into_bytes()));
+        outputs.push((zsim::class::feedback_name(&grade.student), text.into_bytes()));
     }
     let mistakes = mistakes_text(lang, &class.mistakes, &class.reasons, class.graded.len());
     outputs.push(("common-mistakes.txt".to_string(), mistakes.into_bytes()));

@@ -126,7 +126,8 @@ pub fn project(model: &Model, vertex: usize, arith: Arith, size: i64) -> Screen 
         Arith::F64 => {
             let [x, y, z] = model.vertices_f64[vertex];
             // ((v.x + 1.) * width) / 2, then the conversion to int (toward zero).
-            let screen = |v: f64, scale: f64| ((v + 1.0) * scale / 2.0) as i64;
+            // A value beyond 2^40 lies far off the image: held there, as in exact arithmetic.
+            let screen = |v: f64, scale: f64| (((v + 1.0) * scale / 2.0) as i64).clamp(-FAR, FAR);
             [screen(x, size as f64), screen(y, size as f64), screen(z, 255.0)]
         }
         Arith::Exact => {
@@ -134,7 +135,7 @@ pub fn project(model: &Model, vertex: usize, arith: Arith, size: i64) -> Screen 
             let screen = |v: &Exact, scale: i128| {
                 let value = v.plus(&Exact::Word(Q::from_integer(1))).times(scale).divided_by(2);
                 // Toward zero, as a conversion to int; a value beyond 64 bits lies far off the image.
-                value.word().map_or(i64::MAX / 4, |q| q.trunc().to_integer().clamp(-(1 << 40), 1 << 40) as i64)
+                value.word().map_or(FAR, |q| q.trunc().to_integer().clamp(-FAR as i128, FAR as i128) as i64)
             };
             [screen(x, i128::from(size)), screen(y, i128::from(size)), screen(z, 255)]
         }
@@ -143,9 +144,14 @@ pub fn project(model: &Model, vertex: usize, arith: Arith, size: i64) -> Screen 
 
 /// The lesson's `signed_triangle_area`, times two (an integer: the lesson
 /// computes it in `int` and halves it in `double`, which is exact).
-pub fn twice_area(a: [i64; 2], b: [i64; 2], c: [i64; 2]) -> i64 {
+pub fn twice_area(a: [i64; 2], b: [i64; 2], c: [i64; 2]) -> i128 {
+    let [a, b, c] = [a, b, c].map(|p| p.map(i128::from));
     (b[1] - a[1]) * (b[0] + a[0]) + (c[1] - b[1]) * (c[0] + b[0]) + (a[1] - c[1]) * (a[0] + c[0])
 }
+
+/// How far off the image a projected coordinate is held (2^40 pixels): the
+/// areas of triangles with such corners still fit 128 bits.
+const FAR: i64 = 1 << 40;
 
 /// glibc's `rand()` (the TYPE_3 additive generator), from a seed.
 #[derive(Debug, Clone)]
@@ -222,8 +228,11 @@ pub fn render(model: &Model, arith: Arith, size: i64) -> Render {
             out.skipped += 1;
             continue;
         }
-        let (minx, maxx) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
-        let (miny, maxy) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
+        // The lesson's bounding box, clipped to the image: the pixels beyond
+        // it are never drawn, and a vertex far off the image cannot make the
+        // loop run for ever.
+        let (minx, maxx) = (a[0].min(b[0]).min(c[0]).max(0), a[0].max(b[0]).max(c[0]).min(size - 1));
+        let (miny, maxy) = (a[1].min(b[1]).min(c[1]).max(0), a[1].max(b[1]).max(c[1]).min(size - 1));
         for x in minx..=maxx {
             for y in miny..=maxy {
                 let p = [x, y];
@@ -238,16 +247,14 @@ pub fn render(model: &Model, arith: Arith, size: i64) -> Render {
                 let z = match arith {
                     Arith::F64 => {
                         // As the lesson: each area halved in double, divided by the halved total.
-                        let half = |v: i64| 0.5 * v as f64;
+                        let half = |v: i128| 0.5 * v as f64;
                         let t = half(total);
                         let (alpha, beta, gamma) = (half(wa) / t, half(wb) / t, half(wc) / t);
                         (alpha * a[2] as f64 + beta * b[2] as f64 + gamma * c[2] as f64) as u8
                     }
                     Arith::Exact => {
-                        let n = i128::from(wa) * i128::from(a[2])
-                            + i128::from(wb) * i128::from(b[2])
-                            + i128::from(wc) * i128::from(c[2]);
-                        (n / i128::from(total)).clamp(0, 255) as u8
+                        let n = wa * i128::from(a[2]) + wb * i128::from(b[2]) + wc * i128::from(c[2]);
+                        (n / total).clamp(0, 255) as u8
                     }
                 };
                 if !(0..size).contains(&x) || !(0..size).contains(&y) {

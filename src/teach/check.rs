@@ -50,33 +50,60 @@ pub struct State {
     pub files: Vec<(Buffer, PathBuf)>,
 }
 
-/// The answer files of a submission folder, grouped by the polygon they are
-/// the state after: `frame.txt` and `depth.txt` after the last,
-/// `after-N.frame.txt` and `after-N.depth.txt` after polygon N; other files
-/// are passed over. Symbolic links are not followed.
-pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Error> {
-    let last = scene.polygons.len() - 1;
+/// The state and buffer a submission's file name answers for: `frame.txt`
+/// and `depth.txt` after the last polygon, `after-N.frame.txt` and
+/// `after-N.depth.txt` after polygon N (ASCII digits, so `after-01` is
+/// `after-1`, and `after-K` for the last polygon K is `frame.txt`'s state);
+/// `None` for any other name.
+pub fn answer_of(name: &str, polygons: usize) -> Option<(usize, Buffer)> {
+    let (after, kind) = match name.strip_prefix("after-").and_then(|rest| rest.split_once('.')) {
+        Some((number, kind)) => {
+            if number.is_empty() || !number.bytes().all(|b| b.is_ascii_digit()) {
+                return None;
+            }
+            let n: usize = number.trim_start_matches('0').parse().ok().filter(|n| (1..=polygons).contains(n))?;
+            (n - 1, kind)
+        }
+        None => (polygons.checked_sub(1)?, name),
+    };
+    let buffer = match kind {
+        "frame.txt" => Buffer::Frame,
+        "depth.txt" => Buffer::Depth,
+        _ => return None,
+    };
+    Some((after, buffer))
+}
+
+/// The files of a submission folder, as names: those that are not UTF-8
+/// shown with U+FFFD, so they are never mistaken for a right name.
+fn folder_names(folder: &Path) -> Result<Vec<String>, Error> {
     let read_error = |source| Error::Read { path: folder.to_owned(), source };
-    let mut states: Vec<State> = Vec::new();
-    let mut names: Vec<String> =
-        std::fs::read_dir(folder).map_err(read_error)?.filter_map(|e| e.ok()?.file_name().into_string().ok()).collect();
+    let mut names: Vec<String> = std::fs::read_dir(folder)
+        .map_err(read_error)?
+        .filter_map(|e| Some(e.ok()?.file_name().to_string_lossy().into_owned()))
+        .collect();
     names.sort();
-    for name in names {
-        let (after, kind) = match name.strip_prefix("after-").and_then(|rest| rest.split_once('.')) {
-            Some((number, kind)) => match number.parse::<usize>() {
-                Ok(n) if (1..=last).contains(&n) => (n - 1, kind),
-                _ => continue,
-            },
-            None => (last, name.as_str()),
-        };
-        let buffer = match kind {
-            "frame.txt" => Buffer::Frame,
-            "depth.txt" => Buffer::Depth,
-            _ => continue,
-        };
+    Ok(names)
+}
+
+/// The answer files of a submission folder, grouped by the polygon they are
+/// the state after ([`answer_of`] reads the names); other files are passed
+/// over. Two files answering for one buffer of one state (`after-1.frame.txt`
+/// and `after-01.frame.txt`) are refused by name. Symbolic links are not
+/// followed.
+pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Error> {
+    let mut states: Vec<State> = Vec::new();
+    for name in folder_names(folder)? {
+        let Some((after, buffer)) = answer_of(&name, scene.polygons.len()) else { continue };
         let path = folder.join(&name);
         match states.iter_mut().find(|state| state.after == after) {
-            Some(state) => state.files.push((buffer, path)),
+            Some(state) => {
+                if let Some((_, other)) = state.files.iter().find(|(b, _)| *b == buffer) {
+                    let files = vec![printable(&file_name(other)).into_owned(), printable(&name).into_owned()];
+                    return Err(Usage::SameAnswerTwice { folder: folder.to_owned(), files }.into());
+                }
+                state.files.push((buffer, path));
+            }
             None => states.push(State { after, files: vec![(buffer, path)] }),
         }
     }
@@ -88,6 +115,98 @@ pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Erro
         state.files.sort_by_key(|(buffer, _)| *buffer != Buffer::Frame);
     }
     Ok(states)
+}
+
+fn file_name(path: &Path) -> String {
+    path.file_name().map_or_else(|| path.to_string_lossy().into_owned(), |n| n.to_string_lossy().into_owned())
+}
+
+/// Which states an autograded submission must answer, as the teacher sets
+/// them (`--expect`): each is one test per buffer, whatever else is handed in.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Expect {
+    /// The state after the last polygon (the default).
+    Final,
+    /// The state after every polygon.
+    Each,
+    /// The states after these polygons, numbered from 1.
+    After(Vec<usize>),
+}
+
+impl Expect {
+    /// Reads `final`, `each`, or polygon numbers from 1 separated by commas
+    /// (`1,3`); `Err` says what is wrong, in `lang`.
+    pub fn parse(lang: Lang, text: &str) -> Result<Expect, String> {
+        match text {
+            "final" => Ok(Expect::Final),
+            "each" => Ok(Expect::Each),
+            _ => text
+                .split(',')
+                .map(|n| n.trim().parse::<usize>().ok().filter(|n| *n >= 1))
+                .collect::<Option<Vec<usize>>>()
+                .map(Expect::After)
+                .ok_or_else(|| words!(lang, "expect-not-states", text = printable(text).into_owned())),
+        }
+    }
+
+    /// As [`Expect::parse`] reads it.
+    pub fn text(&self) -> String {
+        match self {
+            Expect::Final => "final".to_string(),
+            Expect::Each => "each".to_string(),
+            Expect::After(numbers) => numbers.iter().map(usize::to_string).collect::<Vec<_>>().join(","),
+        }
+    }
+
+    /// The states (0-based polygons) for `scene`, in order, each once.
+    pub fn states(&self, scene: &Scene) -> Result<Vec<usize>, Error> {
+        let count = scene.polygons.len();
+        let mut states = match self {
+            Expect::Final => vec![count - 1],
+            Expect::Each => (0..count).collect(),
+            Expect::After(numbers) => {
+                if let Some(&number) = numbers.iter().find(|n| **n > count) {
+                    return Err(Usage::NoPolygonNumbered { number, count }.into());
+                }
+                numbers.iter().map(|n| n - 1).collect()
+            }
+        };
+        states.sort_unstable();
+        states.dedup();
+        Ok(states)
+    }
+}
+
+/// One buffer of one state an autograded submission must answer, and the
+/// files that answer it: none (missing), one, or several (refused).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Expected {
+    /// The polygon (0-based) it is the state after.
+    pub after: usize,
+    /// The buffer.
+    pub buffer: Buffer,
+    /// The files answering it.
+    pub files: Vec<PathBuf>,
+}
+
+/// What an autograder grades in a submission folder: a test for each buffer
+/// of each state `expect` names, in order, with the files that answer it,
+/// and the names of the files that answer nothing asked (they earn nothing).
+pub fn expected_answers(folder: &Path, scene: &Scene, expect: &Expect) -> Result<(Vec<Expected>, Vec<String>), Error> {
+    let mut expected: Vec<Expected> = expect
+        .states(scene)?
+        .into_iter()
+        .flat_map(|after| [Buffer::Frame, Buffer::Depth].map(|buffer| Expected { after, buffer, files: Vec::new() }))
+        .collect();
+    let mut unused = Vec::new();
+    for name in folder_names(folder)? {
+        let answer = answer_of(&name, scene.polygons.len());
+        match answer.and_then(|(after, buffer)| expected.iter_mut().find(|e| (e.after, e.buffer) == (after, buffer))) {
+            Some(test) => test.files.push(folder.join(&name)),
+            None => unused.push(printable(&name).into_owned()),
+        }
+    }
+    Ok((expected, unused))
 }
 
 /// One wrong cell of an answer, explained.

@@ -93,7 +93,13 @@ pub fn grade_class(
 }
 
 /// The answer files in the class folder, by student then framebuffer before
-/// z-buffer. Other files are passed over.
+/// z-buffer. Other files are passed over. A student is named once, by one
+/// normalisation of the file name's stem: bytes that are not UTF-8 become
+/// U+FFFD and control characters are escaped ([`printable`]), as every
+/// table, gradebook and feedback file shows them; two files that come to one
+/// student and buffer (`a\xff.frame.txt` and `a\xfe.frame.txt`, a real
+/// newline and a written `\u{a}`) are refused by name, before anything is
+/// graded or written.
 fn answer_files(class: &Path) -> Result<Vec<AnswerFile>, Error> {
     let entries = std::fs::read_dir(class).map_err(|source| Error::Read { path: class.to_owned(), source })?;
     let mut files = Vec::new();
@@ -105,7 +111,12 @@ fn answer_files(class: &Path) -> Result<Vec<AnswerFile>, Error> {
                 && !student.is_empty()
                 && !student.starts_with('.')
             {
-                files.push(AnswerFile { student: student.to_string(), buffer, path: entry.path() });
+                let student = printable(student).into_owned();
+                if let Some(other) = files.iter().find(|f: &&AnswerFile| f.student == student && f.buffer == buffer) {
+                    let names = [&other.path, &entry.path()].map(|p| crate::words::shown_path(Path::new(p.file_name().unwrap_or_default())));
+                    return Err(Usage::SameStudentTwice { class: class.to_path_buf(), student, files: names.to_vec() }.into());
+                }
+                files.push(AnswerFile { student, buffer, path: entry.path() });
             }
         }
     }
@@ -138,9 +149,34 @@ fn submissions(lang: Lang, files: &[AnswerFile], expected: &[(Buffer, Matrix)], 
                     (*buffer, handed)
                 })
                 .collect();
-            Submission { student: printable(student).into_owned(), answers }
+            Submission { student: student.to_string(), answers }
         })
         .collect()
+}
+
+/// The name of a student's feedback file: `NAME.feedback.txt`, which never
+/// ends as a submitted `NAME.frame.txt` or `NAME.depth.txt` does, nor is
+/// `common-mistakes.txt`. A name too long for a file system
+/// ([`crate::door::outward::MAX_NAME_BYTES`]) is cut at a character and
+/// told apart by a hash of the whole: `NAME…~1a2b3c4d.feedback.txt`.
+pub fn feedback_name(student: &str) -> String {
+    const SUFFIX: &str = ".feedback.txt";
+    let whole = format!("{student}{SUFFIX}");
+    if whole.len() <= crate::door::outward::MAX_NAME_BYTES && !student.contains('/') {
+        return whole;
+    }
+    // FNV-1a, 32 bits: the same name gives the same file on every run.
+    let hash = student.bytes().fold(0x811c_9dc5u32, |h, b| (h ^ u32::from(b)).wrapping_mul(0x0100_0193));
+    let tail = format!("~{hash:08x}{SUFFIX}");
+    let room = crate::door::outward::MAX_NAME_BYTES - tail.len();
+    let mut cut = String::new();
+    for c in student.chars().map(|c| if c == '/' { '_' } else { c }) {
+        if cut.len() + c.len_utf8() > room {
+            break;
+        }
+        cut.push(c);
+    }
+    format!("{cut}{tail}")
 }
 
 /// zsim's reason for each common mistake, from one watched run.

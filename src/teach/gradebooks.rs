@@ -76,6 +76,22 @@ fn points_of(grade: &Grade, points: u32) -> String {
     decimal(grade.score * Q::from_integer(i128::from(points)), 2)
 }
 
+/// Two students a gradebook cannot tell apart: the identity cells it would
+/// receive are the same once written as a CSV cell (`=x` is written `'=x`)
+/// and compared without case, as Moodle and Canvas match identities. The
+/// first such pair, as shown, or `None`.
+pub fn indistinct(rows: &[&Grade]) -> Option<(String, String)> {
+    let mut seen: Vec<(String, &str)> = Vec::with_capacity(rows.len());
+    for grade in rows {
+        let key = csv_field(&grade.student).to_lowercase();
+        if let Some((_, other)) = seen.iter().find(|(k, _)| *k == key) {
+            return Some((other.to_string(), grade.student.clone()));
+        }
+        seen.push((key, &grade.student));
+    }
+    None
+}
+
 /// Moodle's gradebook import: the identity column, then the grade item.
 pub fn moodle(rows: &[&Grade], identity: Identity, item: &str, points: u32) -> String {
     let mut text = format!("{},{}\n", identity.header(), csv_field(item));

@@ -12,7 +12,8 @@ use crate::error::Error;
 use crate::scene::Scene;
 use crate::door::Links;
 use crate::words::printable;
-use crate::teach::check::{CheckReport, State, as_the_student_sees, check, read_answer};
+use crate::observe::explain::Buffer;
+use crate::teach::check::{CheckReport, Expect, Expected, as_the_student_sees, check, read_answer};
 use crate::words::Lang;
 
 /// How an autograder's results are given: who sees them, and what the whole
@@ -62,62 +63,96 @@ impl Visibility {
     }
 }
 
-/// The submission's `results.json`: one test per answer file (a buffer after
-/// a polygon), worth an equal share of `points`, scored by its share of right
-/// cells; a missing or malformed file is a failed test worth nothing, its
-/// reason in the output, each test's output the check's report as `render`
-/// writes it. Text in the reader's language.
+/// The most points a submission may be worth (`--points`): a bound that
+/// keeps every share and sum exact in hundredths of a point.
+pub const MAX_POINTS: u32 = 100_000;
+
+/// The submission's `results.json`: one test per buffer of each state the
+/// teacher expects ([`Expected`], from [`crate::teach::check::expected_answers`]),
+/// worth an equal share of `points` (1 to [`MAX_POINTS`]), scored by its
+/// share of right cells and passed only when every cell is right. A test no
+/// file answers, or several do, or whose file is malformed, fails with 0 and
+/// says why in its output; files that answer nothing asked (`unused`) earn
+/// nothing and are named in the results' output. Each test's output is the
+/// check's report as `render` writes it. Text in the reader's language.
 pub fn results(
     lang: Lang,
     (scene, scene_path): (&Scene, &Path),
-    states: &[State],
+    (expected, unused): (&[Expected], &[String]),
     arith: Arith,
     Autograde { visibility, points }: Autograde,
     render: &dyn Fn(&CheckReport) -> String,
 ) -> Result<String, Error> {
-    let count: u64 = states.iter().map(|state| state.files.len() as u64).sum();
+    let points = points.clamp(1, MAX_POINTS);
+    let count = expected.len().max(1) as u64;
     // Shares in hundredths of a point that add up to `points` exactly.
     let hundredths = u64::from(points) * 100;
-    let share = |k: u64| hundredths / count.max(1) + u64::from(k < hundredths % count.max(1));
+    let share = |k: u64| hundredths / count + u64::from(k < hundredths % count);
     let cells = u64::from(scene.width) * u64::from(scene.height);
     let mut tests = Vec::new();
     let mut total = 0;
-    for (k, (last, buffer, path)) in
-        states.iter().flat_map(|state| state.files.iter().map(move |(b, p)| (&state.after, b, p))).enumerate()
-    {
+    for (k, test) in expected.iter().enumerate() {
         let name = words!(
             lang,
             "gradescope-test",
-            buffer = buffer.name(lang),
-            after = crate::observe::explain::polygon_after(lang, scene, *last)
+            buffer = test.buffer.name(lang),
+            after = crate::observe::explain::polygon_after(lang, scene, test.after)
         );
         let max_score = share(k as u64);
-        let (score, output) = match read_answer(lang, path, scene, *buffer, Links::Refuse) {
-            Ok(answer) => {
-                // The student sees the file's name, not where the autograder keeps it.
-                let shown = Path::new(path.file_name().unwrap_or(path.as_os_str()));
-                let report = check(lang, scene, scene_path, *last, vec![(*buffer, shown, answer)], arith)?;
-                // The share of right cells, rounded down to a hundredth: only a right answer scores in full.
-                (max_score * (cells - (report.wrong() as u64).min(cells)) / cells, render(&report))
+        let (score, passed, output) = match test.files.as_slice() {
+            [] => {
+                let file = expected_name(scene, test.after, test.buffer);
+                (0, false, words!(lang, "gradescope-missing", file = file) + "\n")
             }
-            Err(error) => (0, format!("{}\n", as_the_student_sees(lang, &error, path))),
+            [path] => match read_answer(lang, path, scene, test.buffer, Links::Refuse) {
+                Ok(answer) => {
+                    // The student sees the file's name, not where the autograder keeps it.
+                    let shown = Path::new(path.file_name().unwrap_or(path.as_os_str()));
+                    let report = check(lang, scene, scene_path, test.after, vec![(test.buffer, shown, answer)], arith)?;
+                    let wrong = (report.wrong() as u64).min(cells);
+                    // The share of right cells, rounded down to a hundredth: only a right answer scores in full.
+                    (max_score * (cells - wrong) / cells.max(1), wrong == 0, render(&report))
+                }
+                Err(error) => (0, false, format!("{}\n", as_the_student_sees(lang, &error, path))),
+            },
+            several => {
+                let names: Vec<String> = several
+                    .iter()
+                    .map(|p| format!("\"{}\"", crate::words::shown_path(Path::new(p.file_name().unwrap_or_default()))))
+                    .collect();
+                (0, false, words!(lang, "gradescope-ambiguous", files = names.join(", ")) + "\n")
+            }
         };
         total += score;
         tests.push(serde_json::json!({
             "name": name,
             "score": score as f64 / 100.0,
             "max_score": max_score as f64 / 100.0,
-            "status": if score == max_score { "passed" } else { "failed" },
+            "status": if passed { "passed" } else { "failed" },
             "output": output,
             "visibility": visibility.name(),
         }));
     }
-    let results = serde_json::json!({
+    let mut results = serde_json::json!({
         "score": total as f64 / 100.0,
         "visibility": visibility.name(),
         "tests": tests,
     });
+    if !unused.is_empty() {
+        let names: Vec<String> = unused.iter().map(|n| format!("\"{}\"", printable(n))).collect();
+        results["output"] = serde_json::Value::from(words!(lang, "gradescope-unused", files = names.join(", ")));
+    }
     Ok(format!("{}\n", serde_json::to_string_pretty(&results).expect("plain data")))
+}
+
+/// The file that answers for `buffer` after polygon `after` (0-based), as a
+/// student names it.
+pub fn expected_name(scene: &Scene, after: usize, buffer: Buffer) -> String {
+    let kind = match buffer {
+        Buffer::Frame => "frame.txt",
+        Buffer::Depth => "depth.txt",
+    };
+    if after + 1 == scene.polygons.len() { kind.to_string() } else { format!("after-{}.{kind}", after + 1) }
 }
 
 /// The `results.json` of a submission with nothing to grade: score 0, why in
@@ -136,8 +171,13 @@ pub fn nothing_to_grade(why: &str, visibility: Visibility) -> String {
 /// the Debian package put beside it; `run_autograder` checks the submission
 /// folder (`frame.txt`, `depth.txt`, `after-N.*.txt`) against the scene and
 /// writes `results/results.json`. `AUTOGRADER_ROOT` stands for `/autograder`
-/// (for trying it elsewhere).
-pub fn autograder(scene_json: &str, visibility: Visibility, points: u32, lang: Lang) -> Vec<(String, Vec<u8>)> {
+/// (for trying it elsewhere). The states graded are `expect`'s.
+pub fn autograder(
+    scene_json: &str,
+    expect: &Expect,
+    Autograde { visibility, points }: Autograde,
+    lang: Lang,
+) -> Vec<(String, Vec<u8>)> {
     let setup = "#!/usr/bin/env bash\n\
         # Gradescope runs this once, as root, when it builds the autograder's image.\n\
         # Put zsim's Debian package (zsim_*.deb: `cargo deb`, or a release) beside\n\
@@ -159,7 +199,8 @@ pub fn autograder(scene_json: &str, visibility: Visibility, points: u32, lang: L
         root=\"${{AUTOGRADER_ROOT:-/autograder}}\"\n\
         mkdir -p \"$root/results\"\n\
         zsim check \"$root/source/scene.json\" --submission \"$root/submission\" --format gradescope \\\n\
-        \x20 --visibility {} --points {points} --lang {} >\"$root/results/results.json\"\n",
+        \x20 --expect {} --visibility {} --points {points} --lang {} >\"$root/results/results.json\"\n",
+        expect.text(),
         visibility.name(),
         lang.code()
     );

@@ -75,6 +75,7 @@ pub fn svg_with(
     title: &str,
     extras: &Extras,
 ) -> String {
+    let title = &*drawn(title, MAX_DRAWN_TITLE);
     let (width, height) = (i128::from(scene.width), i128::from(scene.height));
     // Vertex labels reach out beside the raster: room for them on both sides.
     let pad = if extras.vertex_labels { 100 } else { 0 };
@@ -185,7 +186,7 @@ pub fn svg_with(
         // An unnamed polygon is labelled by its number alone, titled in the reader's language.
         let unnamed = crate::words::is_default_name(&polygon.name, index);
         let title =
-            if unnamed { crate::observe::explain::polygon_name(lang, scene, index) } else { polygon.name.clone() };
+            if unnamed { crate::observe::explain::polygon_name(lang, scene, index) } else { drawn(&polygon.name, MAX_DRAWN_NAME).into_owned() };
         let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));
     }
     let _ = writeln!(out, "</g>");
@@ -317,11 +318,27 @@ fn legend(lang: Lang, scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec
     }
 }
 
+/// The most characters of a polygon's name a figure draws; a longer name is
+/// cut and ends in `…` (the scene keeps it whole: names are cut for drawing,
+/// not for reading).
+pub const MAX_DRAWN_NAME: usize = 80;
+
+/// The most characters of a figure's title drawn, as [`MAX_DRAWN_NAME`].
+pub const MAX_DRAWN_TITLE: usize = 400;
+
+/// `text` cut to `max` characters for drawing, ending in `…` when cut.
+pub fn drawn(text: &str, max: usize) -> std::borrow::Cow<'_, str> {
+    match text.char_indices().nth(max) {
+        None => std::borrow::Cow::Borrowed(text),
+        Some((end, _)) => std::borrow::Cow::Owned(format!("{}…", &text[..end])),
+    }
+}
+
 /// A framebuffer value's legend label, naming the polygons that write it
 /// (up to two; more are counted).
 fn value_label(lang: Lang, scene: &Scene, value: u32) -> String {
     let names: Vec<String> =
-        scene.polygons.iter().filter(|p| p.value == value).map(|p| format!("\"{}\"", p.name)).collect();
+        scene.polygons.iter().filter(|p| p.value == value).map(|p| format!("\"{}\"", drawn(&p.name, MAX_DRAWN_NAME))).collect();
     let names = match names.len() {
         0 => return words!(lang, "figure-value", value = value),
         1 | 2 => names.join(&words!(lang, "list-comma")),
@@ -513,7 +530,8 @@ fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> 
             }
         }
         let unnamed = crate::words::is_default_name(&polygon.name, index);
-        let text = if unnamed { (index + 1).to_string() } else { format!("{} {}", index + 1, polygon.name) };
+        let text =
+            if unnamed { (index + 1).to_string() } else { format!("{} {}", index + 1, drawn(&polygon.name, MAX_DRAWN_NAME)) };
         labels.push(NameLabel { text, anchor: clear.or(visible).or(inside).unwrap_or(middle) });
     }
     labels

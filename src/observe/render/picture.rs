@@ -45,10 +45,12 @@ impl Format {
 
     /// `svg` in this format, for the file `path` (named in errors); a TeX
     /// file is a whole LaTeX document unless `tikz_only`.
-    pub fn encode(self, lang: Lang, svg: &str, path: &Path, tikz_only: bool) -> Result<Vec<u8>, Error> {
+    /// A PNG is drawn at `scale` pixels a unit (default: 2, or less to keep
+    /// its longer side within [`PNG_SIDE`]).
+    pub fn encode(self, lang: Lang, svg: &str, path: &Path, tikz_only: bool, scale: Option<f32>) -> Result<Vec<u8>, Error> {
         match self {
             Format::Svg => Ok(svg.as_bytes().to_vec()),
-            Format::Png => png(lang, svg, path),
+            Format::Png => png(lang, svg, path, scale),
             Format::Pdf => pdf(lang, svg, path),
             Format::Tex => crate::observe::tikz::tikz(svg, !tikz_only)
                 .map(String::into_bytes)
@@ -57,14 +59,30 @@ impl Format {
     }
 }
 
-/// The SVG drawn as a PNG at twice its size (text in the system's sans-serif font).
-pub fn png(lang: Lang, svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+/// The longest side of a figure's PNG unless `--scale` asks for more, in
+/// pixels: the default scale, 2 pixels a unit, is lowered to keep within it.
+pub const PNG_SIDE: f32 = 4096.0;
+
+/// The most pixels a figure's PNG may have, whatever `--scale` asks: 8192 ×
+/// 8192, 256 MiB as RGBA. Refused before the image is allocated.
+pub const MAX_PNG_PIXELS: f64 = 8192.0 * 8192.0;
+
+/// The SVG drawn as a PNG at `scale` pixels a unit (default: twice its size,
+/// or less to keep the longer side within [`PNG_SIDE`]), text in the
+/// system's sans-serif font; more than [`MAX_PNG_PIXELS`] is refused.
+pub fn png(lang: Lang, svg: &str, path: &Path, scale: Option<f32>) -> Result<Vec<u8>, Error> {
     let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
     let tree = tree(lang, svg, path)?;
-    let size = tree.size().to_int_size().scale_by(2.0).ok_or_else(|| failed(words!(lang, "png-figure-too-large")))?;
+    let (width, height) = (tree.size().width(), tree.size().height());
+    let scale = scale.unwrap_or_else(|| 2f32.min(PNG_SIDE / width.max(height).max(1.0)));
+    let pixels = f64::from(width * scale).ceil() * f64::from(height * scale).ceil();
+    if !(scale > 0.0 && pixels <= MAX_PNG_PIXELS) {
+        return Err(failed(words!(lang, "png-figure-too-many-pixels", max = (MAX_PNG_PIXELS as u64).to_string())));
+    }
+    let size = tree.size().to_int_size().scale_by(scale).ok_or_else(|| failed(words!(lang, "png-figure-too-large")))?;
     let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
         .ok_or_else(|| failed(words!(lang, "png-figure-too-large")))?;
-    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(2.0, 2.0), &mut pixmap.as_mut());
+    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(scale, scale), &mut pixmap.as_mut());
     pixmap.encode_png().map_err(|e| failed(e.to_string()))
 }
 

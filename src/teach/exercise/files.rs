@@ -84,7 +84,7 @@ fn figure_files(
     for format in formats {
         let file = format!("{name}.{}", format.extension());
         if !files.iter().any(|(f, _)| *f == file) {
-            let bytes = format.encode(lang, svg, &dir.join(&file), false)?;
+            let bytes = format.encode(lang, svg, &dir.join(&file), false, None)?;
             files.push((file, bytes));
         }
     }
