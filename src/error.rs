@@ -2,8 +2,8 @@
 //! line that starts lowercase and names the file and, where there is one, the
 //! polygon. Broken invariants of zsim itself are `debug_assert!`s instead.
 
-use crate::words::shown_path;
 use crate::words::Lang;
+use crate::words::shown_path;
 use std::path::PathBuf;
 
 use crate::geometry::equation::GeometryError;
@@ -443,12 +443,9 @@ impl Usage {
                 student = student.as_str(),
                 files = quoted_list(files)
             ),
-            Usage::GradebookCannotTell { first, second } => words!(
-                lang,
-                "usage-gradebook-cannot-tell",
-                first = first.as_str(),
-                second = second.as_str()
-            ),
+            Usage::GradebookCannotTell { first, second } => {
+                words!(lang, "usage-gradebook-cannot-tell", first = first.as_str(), second = second.as_str())
+            }
             Usage::SameAnswerTwice { folder, files } => {
                 words!(lang, "usage-same-answer-twice", path = path(folder), files = quoted_list(files))
             }
@@ -533,12 +530,9 @@ impl Error {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
         match self {
-            Error::Read { path, source } => words!(
-                lang,
-                "error-read",
-                path = shown_path(path),
-                reason = crate::words::io_reason(lang, source)
-            ),
+            Error::Read { path, source } => {
+                words!(lang, "error-read", path = shown_path(path), reason = crate::words::io_reason(lang, source))
+            }
             Error::NotRegular { path, kind } => {
                 let kind = match kind {
                     FileKind::Directory => words!(lang, "file-kind-directory"),
@@ -556,12 +550,9 @@ impl Error {
             Error::OutsideFolder { path, folder } => {
                 words!(lang, "error-outside-folder", path = shown_path(path), folder = shown_path(folder))
             }
-            Error::Write { path, source } => words!(
-                lang,
-                "error-write",
-                path = shown_path(path),
-                reason = crate::words::io_reason(lang, source)
-            ),
+            Error::Write { path, source } => {
+                words!(lang, "error-write", path = shown_path(path), reason = crate::words::io_reason(lang, source))
+            }
             Error::SceneFormat { path, location, message } => {
                 if location.is_empty() {
                     format!("{}: {message}", shown_path(path))

@@ -144,6 +144,11 @@ mod simulate;
 mod teach;
 
 pub use courses::{buet, cs418, tinyrenderer};
+pub use door::outward::{MAX_NAME_BYTES, MAX_PATH_BYTES};
+pub use door::{
+    Folder, Identity, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, Plan, Replace, png_reader, read_bytes, read_text,
+    read_text_with, same_folder, write_fresh,
+};
 pub use effects::{accuracy, antialias, arith, variants};
 pub use error::{Error, FileKind, PolygonOrigin, PolygonProblem, Task, Usage};
 pub use numbers::{
@@ -163,11 +168,6 @@ pub use raster::scan::{Crossing, Span};
 pub use raster::sink::{PixelRect, RasterSink};
 pub use rules::{ColumnRule, Compare, DepthStore, Preset, RowRule, Rules, Sample};
 pub use scene::random::{RandomScene, memory};
-pub use door::{
-    Folder, Identity, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, Plan, Replace, png_reader, read_bytes, read_text,
-    read_text_with, same_folder, write_fresh,
-};
-pub use door::outward::{MAX_NAME_BYTES, MAX_PATH_BYTES};
 pub use scene::{Antialias, MAX_SIDE, Polygon, Scene, max_for_bits};
 pub use simulate::buffer::Buffers;
 pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};

@@ -108,7 +108,7 @@ fn run_case(
     let mut text = zsim::words!(
         lang,
         "buet-run-summary",
-        path = zsim::shown_path(&dir),
+        path = zsim::shown_path(dir),
         triangles = case.stage3.len().to_string(),
         width = case.config.width.to_string(),
         height = case.config.height.to_string(),
@@ -131,7 +131,7 @@ fn check(
 ) -> Result<Finish, Failure> {
     let case = Case::load(lang, dir, from)?;
     let differences = buet::check::check(lang, &case, answer)?;
-    let (answer, path) = (zsim::shown_path(&answer), zsim::shown_path(&dir));
+    let (answer, path) = (zsim::shown_path(answer), zsim::shown_path(dir));
     if differences.is_empty() {
         emit(out, &format!("{}\n", zsim::words!(lang, "buet-check-matches", answer = answer, path = path)))?;
         return Ok(Finish::Ok);

@@ -98,11 +98,13 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
         // Answers named on the command line: the states they answer are the ones graded.
         let expected: Vec<zsim::check::Expected> = states
             .iter()
-            .flat_map(|s| s.files.iter().map(|(buffer, path)| zsim::check::Expected {
-                after: s.after,
-                buffer: *buffer,
-                files: vec![path.clone()],
-            }))
+            .flat_map(|s| {
+                s.files.iter().map(|(buffer, path)| zsim::check::Expected {
+                    after: s.after,
+                    buffer: *buffer,
+                    files: vec![path.clone()],
+                })
+            })
             .collect();
         let grading = Autograde { visibility: args.visibility, points: args.points };
         let render = |report: &CheckReport| report_text(lang, report);

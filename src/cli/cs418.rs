@@ -117,7 +117,7 @@ fn run_case(
     let mut text = zsim::words!(
         lang,
         "cs418-run-summary",
-        path = zsim::shown_path(&path),
+        path = zsim::shown_path(path),
         width = case.width.to_string(),
         height = case.height.to_string(),
         arithmetic = arithmetic.name(),

@@ -45,8 +45,7 @@ pub fn manual(lang: zsim::Lang, args: &ManualArgs, out: &mut dyn Write) -> Resul
             page_and_subpages(&command, &mut pages)?;
             zsim::write_fresh(dir, &pages, &[])?;
             let names: Vec<&str> = pages.iter().map(|(name, _)| name.as_str()).collect();
-            let line =
-                zsim::words!(lang, "file-written-in", files = names.join(", "), path = zsim::shown_path(&dir));
+            let line = zsim::words!(lang, "file-written-in", files = names.join(", "), path = zsim::shown_path(dir));
             super::emit(out, &format!("{line}\n"))?;
         }
     }

@@ -307,7 +307,7 @@ pub(crate) fn emit_or_write(
     let mut plan = zsim::Plan::new(inputs, zsim::Replace::Allowed);
     plan.file(path, text);
     plan.write()?;
-    emit(out, &format!("{}\n", zsim::words!(lang, "file-written", path = zsim::shown_path(&path))))
+    emit(out, &format!("{}\n", zsim::words!(lang, "file-written", path = zsim::shown_path(path))))
 }
 
 /// Whether standard output was closed when zsim started (`zsim run SCENE

@@ -57,13 +57,12 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
     let color = super::use_color();
     let mut stepper = Stepper::new(&scene, args.arith);
     if let (true, Some(output)) = (args.html, &args.output) {
-        let name =
-            args.scene.file_name().map_or_else(|| zsim::shown_path(&args.scene), |n| n.to_string_lossy().into());
+        let name = args.scene.file_name().map_or_else(|| zsim::shown_path(&args.scene), |n| n.to_string_lossy().into());
         let page = zsim::page::page(lang, &mut stepper, &name);
         let mut plan = zsim::Plan::new(&[&args.scene], zsim::Replace::Allowed);
         plan.file(output, page);
         plan.write()?;
-        emit(out, &format!("{}\n", zsim::words!(lang, "file-written-page", path = zsim::shown_path(&output))))?;
+        emit(out, &format!("{}\n", zsim::words!(lang, "file-written-page", path = zsim::shown_path(output))))?;
         return Ok(Finish::Ok);
     }
     let mut start = None;

@@ -99,11 +99,11 @@ pub fn run(lang: zsim::Lang, args: &TinyrendererArgs, out: &mut dyn Write) -> Re
                 zsim::words!(
                     lang,
                     "tinyrenderer-run",
-                    model = zsim::shown_path(&model),
+                    model = zsim::shown_path(model),
                     faces = loaded.faces.len(),
                     skipped = drawn.skipped,
                     drawn = drawn_faces,
-                    folder = zsim::shown_path(&output)
+                    folder = zsim::shown_path(output)
                 )
             );
             if *arith == Arith::Exact {

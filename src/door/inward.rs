@@ -59,8 +59,10 @@ pub struct Identity(same_file::Handle);
 
 impl Identity {
     /// The identity of the file at `path`; `None` when there is none to open.
+    /// Opening it never waits (a FIFO is opened without blocking).
     pub fn of(path: &Path) -> Option<Identity> {
-        same_file::Handle::from_path(path).ok().map(Identity)
+        let file = open_without_blocking(path).ok()?;
+        same_file::Handle::from_file(file).ok().map(Identity)
     }
 }
 
@@ -99,7 +101,9 @@ impl Folder {
         let path = self.path_of(name);
         let relative = Path::new(name);
         let plain = !name.is_empty()
-            && relative.components().all(|part| matches!(part, std::path::Component::Normal(_) | std::path::Component::CurDir));
+            && relative
+                .components()
+                .all(|part| matches!(part, std::path::Component::Normal(_) | std::path::Component::CurDir));
         if !plain {
             return Err(Error::OutsideFolder { path, folder: self.path.clone() });
         }
@@ -127,8 +131,10 @@ impl Folder {
 /// 16-bit RGBA pixels take. Expands every colour type to 8 bits with alpha.
 /// `Err` says why not, in `lang`.
 pub fn png_reader(lang: Lang, bytes: &[u8]) -> Result<png::Reader<std::io::Cursor<&[u8]>>, String> {
-    let mut decoder =
-        png::Decoder::new_with_limits(std::io::Cursor::new(bytes), png::Limits { bytes: (MAX_IMAGE_PIXELS * 8) as usize });
+    let mut decoder = png::Decoder::new_with_limits(
+        std::io::Cursor::new(bytes),
+        png::Limits { bytes: (MAX_IMAGE_PIXELS * 8) as usize },
+    );
     decoder.set_transformations(png::Transformations::normalize_to_color8() | png::Transformations::ALPHA);
     let header = decoder.read_header_info().map_err(|e| words!(lang, "png-not-an-image", reason = e.to_string()))?;
     let pixels = u64::from(header.width) * u64::from(header.height);
@@ -257,5 +263,4 @@ mod tests {
         assert_eq!(read_bytes(&path, Links::Follow).unwrap(), content);
         std::fs::remove_file(&path).unwrap();
     }
-
 }

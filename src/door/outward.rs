@@ -105,7 +105,10 @@ impl Plan {
         }
         if self.replace == Replace::Never && !existing.is_empty() {
             let folder = folder_of(&existing[0]).to_owned();
-            let files = existing.iter().map(|p| crate::words::shown_path(Path::new(p.file_name().unwrap_or_default()))).collect();
+            let files = existing
+                .iter()
+                .map(|p| crate::words::shown_path(Path::new(p.file_name().unwrap_or_default())))
+                .collect();
             return Err(Usage::OutputWouldReplace { folder, files }.into());
         }
         Ok(())

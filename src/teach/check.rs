@@ -5,17 +5,17 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::door::{Links, read_text_with};
 use crate::effects::arith::{self, Arith};
 use crate::error::{Error, Task, Usage};
 pub use crate::observe::check::{CellRange, Matrix, Mismatch, Misreading, compare, misreading, parse_answer};
 use crate::observe::explain::{Buffer, polygon_after, why};
 use crate::observe::trace::PixelWatcher;
 use crate::scene::Scene;
-use crate::door::{Links, read_text_with};
-use crate::words::printable;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::words::Lang;
+use crate::words::printable;
 
 /// Reads an answer file for one of `scene`'s buffers: a matrix as the book
 /// prints it; a symbolic link is followed only where `links` says so.
@@ -37,8 +37,8 @@ pub fn read_answer(lang: Lang, path: &Path, scene: &Scene, buffer: Buffer, links
 /// class folder or the autograder keeps it stretches tables and is nobody's
 /// business), control characters escaped.
 pub fn as_the_student_sees(lang: Lang, error: &Error, path: &Path) -> String {
-    let file = path.file_name().map_or_else(|| crate::words::shown_path(&path), |n| n.to_string_lossy().into_owned());
-    printable(&error.message(lang).replace(&crate::words::shown_path(&path), &file)).into_owned()
+    let file = path.file_name().map_or_else(|| crate::words::shown_path(path), |n| n.to_string_lossy().into_owned());
+    printable(&error.message(lang).replace(&crate::words::shown_path(path), &file)).into_owned()
 }
 
 /// The answer files for the state after one polygon.
@@ -340,7 +340,7 @@ pub fn check(
                     words!(lang, "check-hint-fewer", how = how, left = left, top = top)
                 }
             });
-            AnswerCheck { buffer, file: crate::words::shown_path(&path), wrong, hint }
+            AnswerCheck { buffer, file: crate::words::shown_path(path), wrong, hint }
         })
         .collect();
     Ok(CheckReport {

@@ -8,18 +8,18 @@ use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
 
+use crate::door::Links;
 use crate::error::{Error, Task, Usage};
 use crate::observe::check::Matrix;
 use crate::observe::explain::{Buffer, why};
 use crate::observe::trace::PixelWatcher;
 use crate::scene::Scene;
-use crate::door::Links;
-use crate::words::printable;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::{as_the_student_sees, read_answer};
 use crate::teach::diagnose::Diagnoser;
 use crate::teach::grade::{CommonMistake, Grade, Handed, Submission, WrongCells, common_mistakes, file_kind, grade};
 use crate::words::Lang;
+use crate::words::printable;
 
 /// How many common mistakes are listed.
 pub const MISTAKES_LISTED: usize = 10;
@@ -113,8 +113,11 @@ fn answer_files(class: &Path) -> Result<Vec<AnswerFile>, Error> {
             {
                 let student = printable(student).into_owned();
                 if let Some(other) = files.iter().find(|f: &&AnswerFile| f.student == student && f.buffer == buffer) {
-                    let names = [&other.path, &entry.path()].map(|p| crate::words::shown_path(Path::new(p.file_name().unwrap_or_default())));
-                    return Err(Usage::SameStudentTwice { class: class.to_path_buf(), student, files: names.to_vec() }.into());
+                    let names = [&other.path, &entry.path()]
+                        .map(|p| crate::words::shown_path(Path::new(p.file_name().unwrap_or_default())));
+                    return Err(
+                        Usage::SameStudentTwice { class: class.to_path_buf(), student, files: names.to_vec() }.into()
+                    );
                 }
                 files.push(AnswerFile { student, buffer, path: entry.path() });
             }

@@ -7,14 +7,14 @@
 
 use std::path::Path;
 
+use crate::door::Links;
 use crate::effects::arith::Arith;
 use crate::error::Error;
-use crate::scene::Scene;
-use crate::door::Links;
-use crate::words::printable;
 use crate::observe::explain::Buffer;
+use crate::scene::Scene;
 use crate::teach::check::{CheckReport, Expect, Expected, as_the_student_sees, check, read_answer};
 use crate::words::Lang;
+use crate::words::printable;
 
 /// How an autograder's results are given: who sees them, and what the whole
 /// submission is worth.

@@ -11,9 +11,9 @@ use crate::observe::explain::{pixel_reason, polygon_after, polygon_name, scanlin
 use crate::observe::step::{Skip, Stop, Tracer};
 use crate::observe::trace::ScanlineRecord;
 use crate::scene::Scene;
-use crate::words::printable;
 use crate::simulate::events::{Outcome, PixelEvent};
 use crate::words::Lang;
+use crate::words::printable;
 use crate::words::token;
 
 /// Why a move did not go anywhere.

@@ -15,7 +15,9 @@ mod buet;
 mod classroom;
 mod cs418;
 mod diagnosis;
+
 mod docs;
+mod door;
 mod effects;
 mod exact_range;
 mod generate;

@@ -3,10 +3,10 @@
 
 use std::path::Path;
 
+use crate::door::read_text;
 use crate::error::Error;
 use crate::observe::explain::{Buffer, why};
 use crate::observe::trace::PixelWatcher;
-use crate::door::read_text;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::words::{Lang, token};

@@ -100,7 +100,7 @@ pub fn compare_text(
         });
     };
     let (path, tolerance_text, largest) =
-        (crate::words::shown_path(&png), tolerance.to_string(), difference.largest.to_string());
+        (crate::words::shown_path(png), tolerance.to_string(), difference.largest.to_string());
     if difference.pixels.is_empty() {
         let line = words!(lang, "cs418-compare-same", path = path, tolerance = tolerance_text, largest = largest);
         text.push_str(&format!("{line}\n"));

@@ -213,7 +213,7 @@ impl PixelHistory {
             "explain-heading",
             x = x,
             y = y,
-            file = crate::words::shown_path(&file),
+            file = crate::words::shown_path(file),
             cx = centre(x),
             cy = centre(y),
             test = scene.depth_test.local_name(lang),

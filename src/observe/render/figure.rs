@@ -182,11 +182,28 @@ pub fn svg_with(
             // Clipped away in clip space: nothing on the raster to outline.
             continue;
         }
-        let points: Vec<String> = polygon.vertices().iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect();
+        let mut points: Vec<String> =
+            polygon.vertices().iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect();
+        // An outline reaching far past the picture (a vertex near the eye in
+        // perspective) is cut to a box around it: the picture shows the same
+        // lines, and every coordinate stays within what TeX can hold.
+        let reach = (total_width.max(total_height) * 2) as f64;
+        let bound = [-reach, -reach, reach, reach];
+        let at = |text: &str| -> (f64, f64) {
+            let (x, y) = text.split_once(',').unwrap_or((text, text));
+            (x.parse().unwrap_or(0.0), y.parse().unwrap_or(0.0))
+        };
+        let corners: Vec<(f64, f64)> = points.iter().map(|p| at(p)).collect();
+        if corners.iter().any(|&(x, y)| x.abs() > reach || y.abs() > reach) {
+            points = clip_to_box(&corners, bound).iter().map(|(x, y)| format!("{x:.2},{y:.2}")).collect();
+        }
         // An unnamed polygon is labelled by its number alone, titled in the reader's language.
         let unnamed = crate::words::is_default_name(&polygon.name, index);
-        let title =
-            if unnamed { crate::observe::explain::polygon_name(lang, scene, index) } else { drawn(&polygon.name, MAX_DRAWN_NAME).into_owned() };
+        let title = if unnamed {
+            crate::observe::explain::polygon_name(lang, scene, index)
+        } else {
+            drawn(&polygon.name, MAX_DRAWN_NAME).into_owned()
+        };
         let _ = writeln!(out, r#"<polygon points="{}"><title>{}</title></polygon>"#, points.join(" "), escape(&title));
     }
     let _ = writeln!(out, "</g>");
@@ -318,6 +335,32 @@ fn legend(lang: Lang, scene: &Scene, buffers: &Buffers, shading: Shading) -> Vec
     }
 }
 
+/// A closed outline clipped to the box `[x0, y0, x1, y1]`
+/// (Sutherland–Hodgman, one side of the box at a time): the part of it
+/// inside the box, the same lines there.
+fn clip_to_box(points: &[(f64, f64)], [x0, y0, x1, y1]: [f64; 4]) -> Vec<(f64, f64)> {
+    // Each side as (axis, sign, value): a point is inside when sign × (its coordinate − value) ≥ 0.
+    let sides = [(0, 1.0, x0), (0, -1.0, x1), (1, 1.0, y0), (1, -1.0, y1)];
+    let inside =
+        |p: (f64, f64), (axis, sign, value): (usize, f64, f64)| sign * (if axis == 0 { p.0 } else { p.1 } - value);
+    let mut out = points.to_vec();
+    for side in sides {
+        let input = std::mem::take(&mut out);
+        for (i, &current) in input.iter().enumerate() {
+            let previous = input[(i + input.len() - 1) % input.len()];
+            let (a, b) = (inside(previous, side), inside(current, side));
+            if (a >= 0.0) != (b >= 0.0) {
+                let t = a / (a - b);
+                out.push((previous.0 + t * (current.0 - previous.0), previous.1 + t * (current.1 - previous.1)));
+            }
+            if b >= 0.0 {
+                out.push(current);
+            }
+        }
+    }
+    out
+}
+
 /// The most characters of a polygon's name a figure draws; a longer name is
 /// cut and ends in `…` (the scene keeps it whole: names are cut for drawing,
 /// not for reading).
@@ -337,8 +380,12 @@ pub fn drawn(text: &str, max: usize) -> std::borrow::Cow<'_, str> {
 /// A framebuffer value's legend label, naming the polygons that write it
 /// (up to two; more are counted).
 fn value_label(lang: Lang, scene: &Scene, value: u32) -> String {
-    let names: Vec<String> =
-        scene.polygons.iter().filter(|p| p.value == value).map(|p| format!("\"{}\"", drawn(&p.name, MAX_DRAWN_NAME))).collect();
+    let names: Vec<String> = scene
+        .polygons
+        .iter()
+        .filter(|p| p.value == value)
+        .map(|p| format!("\"{}\"", drawn(&p.name, MAX_DRAWN_NAME)))
+        .collect();
     let names = match names.len() {
         0 => return words!(lang, "figure-value", value = value),
         1 | 2 => names.join(&words!(lang, "list-comma")),
@@ -530,8 +577,11 @@ fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> 
             }
         }
         let unnamed = crate::words::is_default_name(&polygon.name, index);
-        let text =
-            if unnamed { (index + 1).to_string() } else { format!("{} {}", index + 1, drawn(&polygon.name, MAX_DRAWN_NAME)) };
+        let text = if unnamed {
+            (index + 1).to_string()
+        } else {
+            format!("{} {}", index + 1, drawn(&polygon.name, MAX_DRAWN_NAME))
+        };
         labels.push(NameLabel { text, anchor: clear.or(visible).or(inside).unwrap_or(middle) });
     }
     labels

@@ -47,7 +47,14 @@ impl Format {
     /// file is a whole LaTeX document unless `tikz_only`.
     /// A PNG is drawn at `scale` pixels a unit (default: 2, or less to keep
     /// its longer side within [`PNG_SIDE`]).
-    pub fn encode(self, lang: Lang, svg: &str, path: &Path, tikz_only: bool, scale: Option<f32>) -> Result<Vec<u8>, Error> {
+    pub fn encode(
+        self,
+        lang: Lang,
+        svg: &str,
+        path: &Path,
+        tikz_only: bool,
+        scale: Option<f32>,
+    ) -> Result<Vec<u8>, Error> {
         match self {
             Format::Svg => Ok(svg.as_bytes().to_vec()),
             Format::Png => png(lang, svg, path, scale),

@@ -22,8 +22,8 @@ use crate::raster::depth::{DepthTest, Stored};
 use crate::rules::{DepthStore, Preset, Rules};
 use crate::scene::clip_space::Clipped;
 use crate::scene::perspective::{Clip, Perspective};
-use crate::words::printable;
 use crate::scene::{Antialias, Effects, MAX_CELLS, MAX_SIDE, Polygon, Scene, Winding, Window, max_for_bits};
+use crate::words::printable;
 use numbers::{Coordinate, Number, ReadNumber};
 
 /// Reads and validates scene JSON; `path` is used in error messages only.

@@ -1,0 +1,586 @@
+//! The one door in and the one door out: each test is named for a hole found
+//! when every command that reads or writes a file was tried as an attacker
+//! and as a careless teacher would, and checks that it stays closed. A
+//! property test then drives the boundary with names of every kind.
+
+use std::path::{Path, PathBuf};
+
+use proptest::prelude::*;
+
+use crate::{zsim, zsim_in, zsim_with};
+
+/// An empty scratch folder of its own.
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("door").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn path(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// A PNG of `width` × `height` declared in its header, with `data` as its
+/// only (zlib) image data chunk.
+fn png_declaring(width: u32, height: u32) -> Vec<u8> {
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, 1, 1);
+    encoder.set_color(png::ColorType::Grayscale);
+    encoder.write_header().unwrap().write_image_data(&[0]).unwrap();
+    // The IHDR chunk's width and height, then its CRC over type and data.
+    bytes[16..20].copy_from_slice(&width.to_be_bytes());
+    bytes[20..24].copy_from_slice(&height.to_be_bytes());
+    let crc = crc32(&bytes[12..29]);
+    bytes[29..33].copy_from_slice(&crc.to_be_bytes());
+    bytes
+}
+
+fn crc32(data: &[u8]) -> u32 {
+    let mut crc = !0u32;
+    for &byte in data {
+        crc ^= u32::from(byte);
+        for _ in 0..8 {
+            crc = if crc & 1 == 1 { (crc >> 1) ^ 0xEDB8_8320 } else { crc >> 1 };
+        }
+    }
+    !crc
+}
+
+/// A CS 418 case in `dir` drawing a textured square with `texture`, written
+/// to `png`.
+fn textured_case(dir: &Path, png: &str, texture: &str) -> PathBuf {
+    let case = dir.join("case.txt");
+    std::fs::write(
+        &case,
+        format!(
+            "png 8 8 {png}\nposition 2 -1 -1 1 -1 -1 1\ntexcoord 2 0 0 1 0 0 1\ntexture {texture}\ndrawArraysTriangles 0 3\n"
+        ),
+    )
+    .unwrap();
+    case
+}
+
+/// `texture ../x.png` and `texture /abs/x.png` drew any PNG the grader could
+/// read into the image handed back, as did a texture that is a symbolic link.
+#[test]
+fn a_texture_named_outside_the_case_folder_is_refused() {
+    let dir = scratch("texture-outside");
+    let case_dir = dir.join("case");
+    std::fs::create_dir_all(&case_dir).unwrap();
+    let secret = dir.join("secret.png");
+    std::fs::copy("examples/cs418/checker-texture.png", &secret).unwrap();
+    std::os::unix::fs::symlink(&secret, case_dir.join("link.png")).unwrap();
+    for texture in ["../secret.png", path(&secret), "link.png", "sub/../../secret.png"] {
+        let case = textured_case(&case_dir, "out.png", texture);
+        let run = zsim(&["cs418", "run", path(&case), "-o", path(&dir.join("out"))]);
+        assert_eq!(run.code, 2, "{texture}: {}", run.stdout);
+        assert!(!dir.join("out/out.png").exists(), "{texture}");
+        assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+    }
+    std::fs::copy("examples/cs418/checker-texture.png", case_dir.join("inside.png")).unwrap();
+    let case = textured_case(&case_dir, "out.png", "./inside.png");
+    let run = zsim(&["cs418", "run", path(&case), "-o", path(&dir.join("out"))]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+}
+
+/// `cs418 run` whose `png` line names the case file itself, its texture or
+/// the `--compare` reference replaced it.
+#[test]
+fn cs418_run_never_writes_onto_its_case_its_texture_or_its_reference() {
+    let dir = scratch("cs418-onto-inputs");
+    std::fs::copy("examples/cs418/checker-texture.png", dir.join("t.png")).unwrap();
+    let reference = dir.join("ref.png");
+    std::fs::copy("examples/cs418/checker-texture.png", &reference).unwrap();
+    for (png, compare) in [("case.txt", None), ("t.png", None), ("ref.png", Some(&reference))] {
+        let case = textured_case(&dir, png, "t.png");
+        let before: Vec<Vec<u8>> =
+            ["case.txt", "t.png", "ref.png"].map(|f| std::fs::read(dir.join(f)).unwrap()).to_vec();
+        let mut args = vec!["cs418", "run", path(&case), "-o", path(&dir)];
+        if let Some(reference) = compare {
+            args.extend(["--compare", path(reference)]);
+        }
+        let run = zsim(&args);
+        assert_eq!(run.code, 2, "{png}: {}", run.stdout);
+        assert!(run.stderr.contains("is one of the inputs"), "{}", run.stderr);
+        let after: Vec<Vec<u8>> =
+            ["case.txt", "t.png", "ref.png"].map(|f| std::fs::read(dir.join(f)).unwrap()).to_vec();
+        assert!(before == after, "{png}: an input changed");
+    }
+}
+
+/// `buet run CASE --from scene -o CASE` replaced the course's `stage3.txt`.
+#[test]
+fn buet_run_never_writes_into_the_case_folder_it_reads() {
+    let dir = scratch("buet-into-case");
+    let case = dir.join("case");
+    std::fs::create_dir_all(&case).unwrap();
+    for file in ["config.txt", "scene.txt"] {
+        std::fs::copy(Path::new("examples/buet/case").join(file), case.join(file)).unwrap();
+    }
+    std::fs::write(case.join("stage3.txt"), "the course's own\n").unwrap();
+    let run = zsim(&["buet", "run", path(&case), "--from", "scene", "-o", path(&case)]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert_eq!(std::fs::read_to_string(case.join("stage3.txt")).unwrap(), "the course's own\n");
+    assert!(!case.join("z_buffer.txt").exists());
+}
+
+/// `tinyrenderer import m.obj -o h.obj`, `h.obj` a hard link to the model,
+/// overwrote the model: outputs were compared with inputs by name.
+#[test]
+fn an_output_that_is_a_hard_link_to_an_input_is_refused() {
+    let dir = scratch("hard-link");
+    let (model, link) = (dir.join("m.obj"), dir.join("h.obj"));
+    std::fs::copy("examples/tinyrenderer/pyramid.obj", &model).unwrap();
+    std::fs::hard_link(&model, &link).unwrap();
+    let before = std::fs::read(&model).unwrap();
+    let run = zsim(&["tinyrenderer", "import", path(&model), "-o", path(&link)]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert!(run.stderr.contains("is one of the inputs"), "{}", run.stderr);
+    assert_eq!(std::fs::read(&model).unwrap(), before);
+}
+
+/// `exercise -o X --gradescope X` was refused only after the six exercise
+/// files were written; so was a `--gradescope` folder already holding `setup.sh`.
+#[test]
+fn an_exercise_refused_in_part_writes_nothing() {
+    let dir = scratch("exercise-whole");
+    let same = dir.join("same");
+    let run = zsim(&["exercise", "--seed", "3", "-o", path(&same), "--gradescope", path(&same)]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert!(!same.exists() || std::fs::read_dir(&same).unwrap().next().is_none(), "files were written");
+    let (exercise, grader) = (dir.join("ex"), dir.join("grader"));
+    std::fs::create_dir_all(&grader).unwrap();
+    std::fs::write(grader.join("setup.sh"), "# the teacher's own\n").unwrap();
+    let run = zsim(&["exercise", "--seed", "3", "-o", path(&exercise), "--gradescope", path(&grader)]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert!(run.stderr.contains("setup.sh"), "{}", run.stderr);
+    assert!(!exercise.exists(), "the exercise was written before the refusal");
+    assert_eq!(std::fs::read_to_string(grader.join("setup.sh")).unwrap(), "# the teacher's own\n");
+}
+
+/// Ctrl-C during a multi-file write left prefixes of files that looked
+/// complete. Here `grade -o` writes many feedback files and is sent SIGINT
+/// at many moments: every time, the folder holds either no file or every
+/// file whole, and never a temporary one.
+#[test]
+fn an_interrupted_multi_file_write_leaves_the_old_files_or_none() {
+    let dir = scratch("interrupted");
+    let class = dir.join("class");
+    std::fs::create_dir_all(&class).unwrap();
+    let answer = crate::book_answer("frame", " ");
+    for n in 0..300 {
+        std::fs::write(class.join(format!("s{n:03}.frame.txt")), &answer).unwrap();
+    }
+    let started = std::time::Instant::now();
+    let whole = {
+        let out = dir.join("whole");
+        let run = zsim(&["grade", "examples/rogers.json", path(&class), "-o", path(&out)]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let mut files: Vec<(String, Vec<u8>)> = std::fs::read_dir(&out)
+            .unwrap()
+            .map(|e| {
+                let e = e.unwrap();
+                (e.file_name().into_string().unwrap(), std::fs::read(e.path()).unwrap())
+            })
+            .collect();
+        files.sort();
+        files
+    };
+    // Interrupted at 40 moments from the start to past the end of a whole run.
+    let took = started.elapsed();
+    let (mut none, mut all) = (0, 0);
+    for delay in (0..40).map(|k| took * k / 30) {
+        let out = dir.join("out");
+        let _ = std::fs::remove_dir_all(&out);
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_zsim"))
+            .args(["grade", "examples/rogers.json", path(&class), "-o", path(&out)])
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(delay);
+        // SAFETY: kill sends SIGINT to the child this test started.
+        unsafe { libc::kill(child.id() as i32, libc::SIGINT) };
+        child.wait().unwrap();
+        let mut found: Vec<(String, Vec<u8>)> = match std::fs::read_dir(&out) {
+            Ok(entries) => entries
+                .map(|e| {
+                    let e = e.unwrap();
+                    (e.file_name().into_string().unwrap(), std::fs::read(e.path()).unwrap())
+                })
+                .collect(),
+            Err(_) => Vec::new(),
+        };
+        found.sort();
+        if found.is_empty() {
+            none += 1;
+        } else {
+            assert!(found == whole, "after {delay:?}: {} files, not the {} whole ones", found.len(), whole.len());
+            all += 1;
+        }
+    }
+    // Both ends were reached: interrupted before the write, and after it.
+    assert!(none > 0 && all > 0, "none {none}, all {all}");
+}
+
+/// The CS 418 results a student could game: a submission holding only
+/// `after-1.frame.txt` scored 100/100; copies named `after-1`, `after-01`,
+/// `after-+1` each became a test; `--points 4294967295` wrapped and
+/// `--points 0` passed a wrong answer.
+#[test]
+fn gradescope_grades_the_states_the_teacher_expects_and_nothing_else() {
+    let dir = scratch("gradescope-gamed");
+    let exercise = dir.join("ex");
+    let run = zsim(&["exercise", "--seed", "9", "--each-polygon", "-o", path(&exercise)]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let scene = exercise.join("scene.json");
+    let key = |name: &str| std::fs::read_to_string(exercise.join(name)).unwrap();
+    let grade = |files: &[(&str, String)], extra: &[&str]| {
+        let submission = dir.join("submission");
+        let _ = std::fs::remove_dir_all(&submission);
+        std::fs::create_dir_all(&submission).unwrap();
+        for (name, text) in files {
+            std::fs::write(submission.join(name), text).unwrap();
+        }
+        let mut args = vec!["check", path(&scene), "--submission", path(&submission), "--format", "gradescope"];
+        args.extend(extra);
+        let run = zsim(&args);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        serde_json::from_str::<serde_json::Value>(&run.stdout).unwrap()
+    };
+    // Only the easy state after the first polygon: the final state is missing, score 0.
+    let early = [("after-1.frame.txt", key("answer.after-1.frame.txt"))];
+    let results = grade(&early, &[]);
+    assert_eq!(results["score"], 0.0, "{results}");
+    assert_eq!(results["tests"].as_array().unwrap().len(), 2);
+    assert!(results["output"].as_str().unwrap().contains("after-1.frame.txt"), "{results}");
+    // A wrong final framebuffer and right copies of other states: they earn nothing.
+    let mut wrong = key("answer.frame.txt");
+    wrong.replace_range(0..1, if wrong.starts_with('0') { "1" } else { "0" });
+    let copies = [
+        ("frame.txt", wrong.clone()),
+        ("depth.txt", key("answer.depth.txt")),
+        ("after-1.frame.txt", key("answer.after-1.frame.txt")),
+        ("after-+1.frame.txt", key("answer.after-1.frame.txt")),
+    ];
+    let results = grade(&copies, &[]);
+    let tests = results["tests"].as_array().unwrap();
+    assert_eq!(tests.len(), 2, "{results}");
+    assert_eq!(tests[0]["status"], "failed");
+    assert_eq!(tests[1]["status"], "passed");
+    assert!(results["score"].as_f64().unwrap() < 100.0);
+    // A state is one test however its number is written: two files for it are refused, not both graded.
+    let twice = [
+        ("frame.txt", key("answer.after-1.frame.txt")),
+        ("after-1.frame.txt", key("answer.after-1.frame.txt")),
+        ("after-01.frame.txt", key("answer.after-1.frame.txt")),
+    ];
+    let results = grade(&twice, &["--expect", "each"]);
+    let tests = results["tests"].as_array().unwrap();
+    assert_eq!(tests.len(), 4, "{results}");
+    assert_eq!((tests[0]["score"].as_f64(), tests[0]["status"].as_str()), (Some(0.0), Some("failed")));
+    assert!(tests[0]["output"].as_str().unwrap().contains("after-01.frame.txt"), "{}", tests[0]);
+    // Points: 0 is refused; the most allowed adds up exactly; more is refused.
+    for points in ["0", "4294967295", "100001"] {
+        let run = zsim(&[
+            "check",
+            path(&scene),
+            "--submission",
+            path(&exercise),
+            "--format",
+            "gradescope",
+            "--points",
+            points,
+        ]);
+        assert_eq!(run.code, 2, "--points {points}: {}", run.stdout);
+    }
+    let right = [("frame.txt", key("answer.frame.txt")), ("depth.txt", key("answer.depth.txt"))];
+    let results = grade(&right, &["--points", "100000"]);
+    assert_eq!(results["score"], 100000.0);
+    assert!(results["tests"].as_array().unwrap().iter().all(|t| t["status"] == "passed"));
+}
+
+/// Two students whose file names differ only in bytes that are not UTF-8
+/// were one row (the second silently not graded); a real newline and a
+/// written `\u{a}` shared one Moodle identity and one feedback file.
+#[test]
+fn two_files_for_one_student_are_refused_by_name_before_anything_is_written() {
+    use std::os::unix::ffi::OsStrExt;
+    let answer = crate::book_answer("frame", " ");
+    for (case, names) in [
+        ("bytes", [&b"a\xff.frame.txt"[..], &b"a\xfe.frame.txt"[..]]),
+        ("newline", [&b"b\n.frame.txt"[..], &b"b\\u{a}.frame.txt"[..]]),
+    ] {
+        let class = scratch(&format!("one-student-{case}"));
+        for name in names {
+            std::fs::write(class.join(std::ffi::OsStr::from_bytes(name)), &answer).unwrap();
+        }
+        let out = class.join("feedback");
+        let run = zsim(&["grade", "examples/rogers.json", path(&class), "-o", path(&out)]);
+        assert_eq!(run.code, 2, "{case}: {}", run.stdout);
+        assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+        assert!(run.stderr.contains("rename one"), "{}", run.stderr);
+        assert!(!out.exists(), "{case}: feedback was written");
+    }
+    // `=x` is written `'=x` in a gradebook cell, as `'=x` itself is.
+    let class = scratch("one-student-gradebook");
+    for name in ["=x.frame.txt", "'=x.frame.txt"] {
+        std::fs::write(class.join(name), &answer).unwrap();
+    }
+    let run = zsim(&["grade", "examples/rogers.json", path(&class), "--format", "moodle"]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert!(run.stderr.contains("one student to a gradebook"), "{}", run.stderr);
+}
+
+/// One legal 245-byte file name stopped `grade -o` for the whole class
+/// after one feedback file ("File name too long").
+#[test]
+fn a_student_name_too_long_for_a_feedback_file_gets_one_that_fits() {
+    let class = scratch("long-name");
+    let answer = crate::book_answer("frame", " ");
+    let long = "é".repeat(122);
+    std::fs::write(class.join(format!("{long}.frame.txt")), &answer).unwrap();
+    std::fs::write(class.join("bo.frame.txt"), &answer).unwrap();
+    let out = class.join("feedback");
+    let run = zsim(&["grade", "examples/rogers.json", path(&class), "-o", path(&out)]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let names: Vec<String> =
+        std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+    assert_eq!(names.len(), 3, "{names:?}");
+    assert!(names.iter().all(|n| n.len() <= 255), "{names:?}");
+    assert!(names.iter().any(|n| n.starts_with("éé") && n.ends_with(".feedback.txt") && n.contains('~')), "{names:?}");
+}
+
+/// `tinyrenderer run` on a model with one vertex far outside the image ran
+/// for ever: the loop covered the triangle's whole bounding box.
+#[test]
+fn a_vertex_far_outside_the_image_draws_at_once() {
+    let dir = scratch("far-vertex");
+    let model = dir.join("m.obj");
+    std::fs::write(&model, "v 0 100000 0\nv 0.5 -0.5 0\nv -0.5 -0.5 0\nv 1e308 1e308 0\nf 1 3 2\nf 4 3 2\n").unwrap();
+    for arith in ["f64", "exact"] {
+        let run = zsim(&["tinyrenderer", "run", path(&model), "-o", path(&dir.join(arith)), "--arith", arith]);
+        assert_eq!(run.code, 0, "{arith}: {}", run.stderr);
+        assert!(run.stdout.contains("2 drawn"), "{}", run.stdout);
+    }
+}
+
+/// A 58-byte PNG declaring 100000 × 100000 as a texture or `--compare`
+/// aborted on a 40 GB allocation; `--compare` also hung on a FIFO and read
+/// `/dev/zero` until memory ran out.
+#[test]
+fn an_image_is_refused_by_its_declared_size_and_kind_before_it_is_decoded() {
+    let dir = scratch("png-bomb");
+    std::fs::write(dir.join("bomb.png"), png_declaring(100_000, 100_000)).unwrap();
+    let case = textured_case(&dir, "out.png", "bomb.png");
+    let run = zsim(&["cs418", "run", path(&case), "-o", path(&dir.join("out"))]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert!(run.stderr.contains("declares 100000 × 100000 pixels"), "{}", run.stderr);
+    std::fs::copy("examples/cs418/checker-texture.png", dir.join("t.png")).unwrap();
+    let case = textured_case(&dir, "out.png", "t.png");
+    let fifo = dir.join("fifo.png");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status().unwrap();
+    assert!(made.success());
+    for reference in [dir.join("bomb.png"), fifo, PathBuf::from("/dev/zero")] {
+        let run = zsim(&["cs418", "run", path(&case), "-o", path(&dir.join("out")), "--compare", path(&reference)]);
+        assert_eq!(run.code, 2, "{}: {}", reference.display(), run.stdout);
+        assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+    }
+}
+
+/// `png 8192 8192` with `fsaa 8` asked for 137 GB.
+#[test]
+fn antialiasing_refuses_a_sample_buffer_beyond_the_limit_before_allocating() {
+    let dir = scratch("fsaa");
+    let case = dir.join("case.txt");
+    std::fs::write(&case, "png 8192 8192 out.png\nfsaa 8\nposition 2 -1 -1 1 -1 -1 1\ndrawArraysTriangles 0 3\n")
+        .unwrap();
+    let run = zsim(&["cs418", "run", path(&case), "-o", path(&dir)]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert!(run.stderr.contains("line 2: fsaa 8 asks for 4294967296 samples"), "{}", run.stderr);
+}
+
+/// `figure` of a 512 × 512 scene wrote a 24,904 × 24,772 PNG (5.3 GB of
+/// memory); a 12,000-character polygon name peaked at 2.7 GB.
+#[test]
+fn a_figure_png_stays_within_4096_pixels_and_names_are_cut_for_drawing() {
+    let dir = scratch("figure-size");
+    let scene = dir.join("s.json");
+    let name = "n".repeat(12_000);
+    std::fs::write(
+        &scene,
+        format!(r#"{{"width": 512, "height": 512, "polygons": [{{"name": "{name}", "value": 1, "vertices": [[0, 0, 1], [512, 0, 1], [0, 512, 1]]}}]}}"#),
+    )
+    .unwrap();
+    let png = dir.join("s.png");
+    let run = zsim(&["figure", path(&scene), "-o", path(&png)]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&png).unwrap()));
+    let info = decoder.read_info().unwrap();
+    let (width, height) = (info.info().width, info.info().height);
+    assert_eq!(width.max(height), 4096, "{width} × {height}");
+    let svg = dir.join("s.svg");
+    assert_eq!(zsim(&["figure", path(&scene), "-o", path(&svg)]).code, 0);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    // Names at most 80 characters, the title (which names the polygon) at most 400.
+    assert!(text.contains(&format!("&quot;{}…&quot;", "n".repeat(80))), "a legend name is not cut at 80");
+    assert!(!text.contains(&"n".repeat(401)), "a name drawn whole");
+    let run = zsim(&["figure", path(&scene), "-o", path(&png), "--scale", "64"]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+}
+
+/// Standard output on `/dev/null` opened read-write (`subprocess.DEVNULL`,
+/// `1<>/dev/null`) was taken for a closed one: exit 2, nothing written.
+#[test]
+fn dev_null_opened_read_write_is_an_ordinary_output() {
+    let dir = scratch("devnull");
+    let out = dir.join("feedback");
+    let command = format!(
+        "exec '{}' grade examples/rogers.json examples/class -o '{}' 1<>/dev/null",
+        env!("CARGO_BIN_EXE_zsim"),
+        out.display()
+    );
+    let status = std::process::Command::new("sh")
+        .args(["-c", &command])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("LANG", "C.UTF-8")
+        .status()
+        .unwrap();
+    assert_eq!(status.code(), Some(1), "a class with wrong answers grades with 1");
+    assert!(out.join("common-mistakes.txt").exists(), "no feedback was written");
+}
+
+/// A scene *file name* holding ESC and BEL reached the terminal raw.
+#[test]
+fn a_file_name_is_escaped_before_it_reaches_the_terminal() {
+    let dir = scratch("escaped-name");
+    let name = "x\u{1b}]0;owned\u{7}.json";
+    std::fs::copy("examples/rogers.json", dir.join(name)).unwrap();
+    for args in
+        [vec!["run", name, "--final"], vec!["explain", name, "--pixel", "20,17"], vec!["figure", name, "-o", "f.svg"]]
+    {
+        let run = zsim_in(Some(&dir), &args);
+        assert_eq!(run.code, 0, "{args:?}: {}", run.stderr);
+        assert!(!run.stdout.contains('\u{1b}') && !run.stdout.contains('\u{7}'), "{args:?}: {}", run.stdout);
+        assert!(run.stdout.contains("x\\u{1b}]0;owned\\u{7}.json"), "{args:?}: {}", run.stdout);
+    }
+    std::fs::write(dir.join(name), "{").unwrap();
+    let run = zsim_in(Some(&dir), &["run", name]);
+    assert_eq!(run.code, 2);
+    assert!(!run.stderr.contains('\u{1b}') && run.stderr.starts_with("zsim: x\\u{1b}]0;owned"), "{}", run.stderr);
+}
+
+/// `GALLIUM_DRIVER=bogus` put Mesa's own lines before zsim's one-line message.
+#[cfg(feature = "gpu")]
+#[test]
+fn mesa_start_up_lines_become_part_of_the_one_line_message() {
+    let run = zsim_with(None, &["run", "examples/rogers.json", "--compare-gpu", "gl"], &[("GALLIUM_DRIVER", "bogus")]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+    assert!(run.stderr.starts_with("zsim: "), "{}", run.stderr);
+}
+
+/// Names the property test gives a command to read or write, of every kind
+/// an attacker or a careless teacher might: plain, with `..`, absolute,
+/// links to outside, hard links to an input, FIFOs, devices, lying sizes.
+#[derive(Debug, Clone)]
+enum Named {
+    Plain(String),
+    Up(usize),
+    Absolute,
+    LinkOut,
+    HardLinkToInput,
+    Fifo,
+    Device,
+    Lying,
+}
+
+fn named() -> impl Strategy<Value = Named> {
+    prop_oneof![
+        "[a-z]{1,8}".prop_map(Named::Plain),
+        (1usize..4).prop_map(Named::Up),
+        Just(Named::Absolute),
+        Just(Named::LinkOut),
+        Just(Named::HardLinkToInput),
+        Just(Named::Fifo),
+        Just(Named::Device),
+        Just(Named::Lying),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, failure_persistence: None, .. ProptestConfig::default() })]
+
+    /// Every command that takes a texture, a reference or an output, given
+    /// such a name: it ends within a second with exit 0 or a one-line
+    /// error, reads nothing outside the case folder, and leaves every input
+    /// as it was.
+    #[test]
+    fn the_boundary_holds_for_every_kind_of_name(texture in named(), output in named(), reference in named()) {
+        let dir = scratch("property");
+        let case_dir = dir.join("case");
+        std::fs::create_dir_all(&case_dir).unwrap();
+        let outside = dir.join("outside.png");
+        std::fs::write(&outside, png_declaring(1, 1)).unwrap();
+        std::fs::copy("examples/cs418/checker-texture.png", case_dir.join("t.png")).unwrap();
+        let realise = |named: &Named, what: &str| -> String {
+            match named {
+                Named::Plain(name) => {
+                    let name = format!("{name}.png");
+                    if what == "texture" {
+                        std::fs::copy("examples/cs418/checker-texture.png", case_dir.join(&name)).unwrap();
+                    }
+                    name
+                }
+                Named::Up(n) => format!("{}outside.png", "../".repeat(*n)),
+                Named::Absolute => outside.display().to_string(),
+                Named::LinkOut => {
+                    let link = case_dir.join(format!("{what}-link.png"));
+                    let _ = std::os::unix::fs::symlink(&outside, &link);
+                    format!("{what}-link.png")
+                }
+                Named::HardLinkToInput => {
+                    let link = case_dir.join(format!("{what}-hard.png"));
+                    let _ = std::fs::hard_link(case_dir.join("t.png"), &link);
+                    format!("{what}-hard.png")
+                }
+                Named::Fifo => {
+                    let fifo = case_dir.join(format!("{what}-fifo.png"));
+                    let _ = std::process::Command::new("mkfifo").arg(&fifo).status();
+                    format!("{what}-fifo.png")
+                }
+                Named::Device => "/dev/zero".to_string(),
+                Named::Lying => {
+                    let file = std::fs::File::create(case_dir.join(format!("{what}-sparse.png"))).unwrap();
+                    file.set_len(zsim::MAX_INPUT_BYTES + 1).unwrap();
+                    format!("{what}-sparse.png")
+                }
+            }
+        };
+        let texture_name = realise(&texture, "texture");
+        let png_name = realise(&output, "output");
+        let reference_name = realise(&reference, "reference");
+        let inputs: Vec<(PathBuf, Vec<u8>)> = ["t.png"]
+            .iter()
+            .map(|f| (case_dir.join(f), std::fs::read(case_dir.join(f)).unwrap()))
+            .collect();
+        let case = textured_case(&case_dir, &png_name, &texture_name);
+        let case_text = std::fs::read(&case).unwrap();
+        let reference_path = if reference_name.starts_with('/') { PathBuf::from(&reference_name) } else { case_dir.join(&reference_name) };
+        let start = std::time::Instant::now();
+        let run = zsim(&["cs418", "run", path(&case), "-o", path(&case_dir), "--compare", path(&reference_path)]);
+        prop_assert!(start.elapsed() < std::time::Duration::from_secs(20), "took {:?}", start.elapsed());
+        prop_assert!(run.code == 0 || run.code == 1 || (run.code == 2 && run.stderr.lines().count() == 1), "{} {}", run.code, run.stderr);
+        for (file, bytes) in &inputs {
+            prop_assert!(std::fs::read(file).unwrap() == *bytes, "{} changed", file.display());
+        }
+        prop_assert!(std::fs::read(&case).unwrap() == case_text, "the case changed");
+        prop_assert!(std::fs::read(&outside).unwrap() == png_declaring(1, 1), "a file outside changed");
+        let escaped = matches!(texture, Named::Up(_) | Named::Absolute | Named::LinkOut);
+        prop_assert!(!(escaped && run.code != 2), "a texture outside the folder was read: {}", run.stdout);
+        let temporary = std::fs::read_dir(&case_dir).unwrap().any(|e| e.unwrap().file_name().to_string_lossy().starts_with(".zsim-"));
+        prop_assert!(!temporary, "a temporary file was left");
+    }
+}
