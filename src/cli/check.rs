@@ -68,21 +68,27 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
         Some(spec) => scene.find_polygon(spec)?,
         None => scene.polygons.len() - 1,
     };
-    if let (Some(folder), Format::Gradescope) = (&args.submission, args.format) {
+    if args.format == Format::Gradescope {
         // An autograder writes results.json whatever it is given: a missing answer scores 0.
-        let (expected, unused) = match zsim::check::expected_answers(folder, &scene, &args.expect) {
+        let found = match &args.submission {
+            Some(folder) => zsim::check::expected_answers(folder, &scene, &args.expect),
+            None => Ok(zsim::check::named_answers(last, &[args.frame.as_deref(), args.depth.as_deref()])),
+        };
+        let (expected, unused) = match found {
             Ok(found) => found,
             Err(error) => {
-                emit(out, &zsim::gradescope::nothing_to_grade(&error.message(lang), args.visibility))?;
-                return Ok(Finish::Ok);
+                return emit_then(
+                    out,
+                    &zsim::gradescope::nothing_to_grade(&error.message(lang), args.visibility),
+                    Finish::Ok,
+                );
             }
         };
         let grading = Autograde { visibility: args.visibility, points: args.points };
         let render = |report: &CheckReport| report_text(lang, report);
         let found = (expected.as_slice(), unused.as_slice());
         let results = zsim::gradescope::results(lang, (&scene, &args.scene), found, args.arith, grading, &render)?;
-        emit(out, &results)?;
-        return Ok(Finish::Ok);
+        return emit_then(out, &results, Finish::Ok);
     }
     let states = match &args.submission {
         Some(folder) => submission_files(folder, &scene)?,
@@ -94,25 +100,6 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
                 .collect(),
         }],
     };
-    if args.format == Format::Gradescope {
-        // Answers named on the command line: the states they answer are the ones graded.
-        let expected: Vec<zsim::check::Expected> = states
-            .iter()
-            .flat_map(|s| {
-                s.files.iter().map(|(buffer, path)| zsim::check::Expected {
-                    after: s.after,
-                    buffer: *buffer,
-                    files: vec![path.clone()],
-                })
-            })
-            .collect();
-        let grading = Autograde { visibility: args.visibility, points: args.points };
-        let render = |report: &CheckReport| report_text(lang, report);
-        let found = (expected.as_slice(), &[][..]);
-        let results = zsim::gradescope::results(lang, (&scene, &args.scene), found, args.arith, grading, &render)?;
-        emit(out, &results)?;
-        return Ok(Finish::Ok);
-    }
     if args.submission.is_some() {
         let (mut finish, mut text) = (Finish::Ok, String::new());
         for state in &states {

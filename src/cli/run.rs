@@ -324,7 +324,8 @@ fn progress_bar(long: bool, length: usize, unit: &str) -> ProgressBar {
 /// The process's peak resident size so far, from `/proc/self/status`
 /// (`VmHWM`); `None` where there is no such file (systems other than Linux).
 fn peak_resident_bytes() -> Option<u64> {
-    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let status = zsim::read_bytes(std::path::Path::new("/proc/self/status"), zsim::Links::Follow).ok()?;
+    let status = String::from_utf8(status).ok()?;
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
     let kib: u64 = line.trim_start_matches("VmHWM:").trim().trim_end_matches("kB").trim().parse().ok()?;
     Some(kib * 1024)

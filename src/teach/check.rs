@@ -189,6 +189,17 @@ pub struct Expected {
     pub files: Vec<PathBuf>,
 }
 
+/// The tests of answers named one by one (`--frame`, `--depth`), for the
+/// state after polygon `after`: a test per file given, framebuffer first.
+pub fn named_answers(after: usize, [frame, depth]: &[Option<&Path>; 2]) -> (Vec<Expected>, Vec<String>) {
+    let named = [(Buffer::Frame, frame), (Buffer::Depth, depth)];
+    let tests = named
+        .into_iter()
+        .filter_map(|(buffer, path)| Some(Expected { after, buffer, files: vec![path.as_ref()?.to_path_buf()] }))
+        .collect();
+    (tests, Vec::new())
+}
+
 /// What an autograder grades in a submission folder: a test for each buffer
 /// of each state `expect` names, in order, with the files that answer it,
 /// and the names of the files that answer nothing asked (they earn nothing).

@@ -125,22 +125,29 @@ fn an_exercise_writes_a_gradescope_autograder_that_grades_by_buffer_and_polygon(
     );
     assert_eq!(results["score"], 12.0);
     assert_eq!(results["tests"][0]["visibility"], "after_due_date");
-    // One cell wrong in the final z-buffer, and a malformed framebuffer: those two tests fail.
+    // One cell wrong in the final z-buffer, a malformed framebuffer, and the
+    // states after polygon 1 not handed in: every test fails.
     let mut depth = key("answer.depth.txt");
     depth.replace_range(0..1, if depth.starts_with('0') { "1" } else { "0" });
     let results = autograde(&root, &[("frame.txt", "0 x\n".into()), ("depth.txt", depth)]);
     assert_gradescope_layout(&results);
     let tests = results["tests"].as_array().unwrap();
-    assert_eq!((tests[0]["score"].as_f64(), tests[0]["status"].as_str()), (Some(0.0), Some("failed")));
-    assert!(tests[0]["output"].as_str().unwrap().contains("\"x\" is not a whole number"), "{}", tests[0]);
-    // 6 points for the z-buffer, 255 of 256 cells right, rounded down to a hundredth.
-    assert_eq!((tests[1]["score"].as_f64(), tests[1]["status"].as_str()), (Some(5.97), Some("failed")));
-    assert!(tests[1]["output"].as_str().unwrap().contains("1 of 256 cell differs"), "{}", tests[1]);
-    // Nothing handed in: a score of 0 and why, still a results.json.
+    for missing in &tests[..2] {
+        assert_eq!((missing["score"].as_f64(), missing["status"].as_str()), (Some(0.0), Some("failed")));
+        assert!(missing["output"].as_str().unwrap().starts_with("no file answers this: hand in after-1."), "{missing}");
+    }
+    assert_eq!((tests[2]["score"].as_f64(), tests[2]["status"].as_str()), (Some(0.0), Some("failed")));
+    assert!(tests[2]["output"].as_str().unwrap().contains("\"x\" is not a whole number"), "{}", tests[2]);
+    // 3 points for the final z-buffer, 255 of 256 cells right, rounded down to a hundredth.
+    assert_eq!((tests[3]["score"].as_f64(), tests[3]["status"].as_str()), (Some(2.98), Some("failed")));
+    assert!(tests[3]["output"].as_str().unwrap().contains("1 of 256 cell differs"), "{}", tests[3]);
+    // Nothing handed in: a score of 0 and, in each test, which file was missing.
     let results = autograde(&root, &[]);
     assert_gradescope_layout(&results);
     assert_eq!(results["score"], 0.0);
-    assert!(results["output"].as_str().unwrap().contains("no answer here"), "{results}");
+    let tests = results["tests"].as_array().unwrap();
+    assert_eq!(tests.len(), 4);
+    assert!(tests.iter().all(|t| t["output"].as_str().unwrap().starts_with("no file answers this")), "{results}");
 }
 
 /// Moodle's gradebook export writes `First name,Surname,ID number,
