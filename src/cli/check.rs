@@ -153,7 +153,7 @@ pub fn report_text(lang: zsim::Lang, report: &CheckReport) -> String {
             text.push_str(&format!("{line}\n"));
             continue;
         }
-        let count = answer.wrong.len();
+        let count = answer.differing;
         let line = zsim::words!(
             lang,
             "check-differ",
@@ -168,6 +168,10 @@ pub fn report_text(lang: zsim::Lang, report: &CheckReport) -> String {
             text.push_str(&format!("{hint}\n"));
         }
         text.push_str(&format!("{}\n", table(lang, &answer.wrong)));
+        if count > answer.wrong.len() {
+            let more = zsim::words!(lang, "check-more-cells", count = count - answer.wrong.len());
+            text.push_str(&format!("{more}\n"));
+        }
     }
     if let Some(diagnosis) = &report.diagnosis {
         text.push_str(&format!("{diagnosis}\n"));

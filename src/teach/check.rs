@@ -244,9 +244,17 @@ pub struct AnswerCheck {
     pub file: String,
     /// The wrong cells, top row first.
     pub wrong: Vec<WrongCell>,
+    /// How many cells differ in all: [`AnswerCheck::wrong`] explains the
+    /// first [`MAX_EXPLAINED`] of them, top row first.
+    pub differing: usize,
     /// A likely misreading of the whole matrix (flipped, transposed, …), worded.
     pub hint: Option<String>,
 }
+
+/// The most wrong cells of one answer explained, each with its reason; the
+/// rest are counted. An answer wrong everywhere on a large raster would
+/// otherwise hold a reason, and a watched history, for every cell.
+pub const MAX_EXPLAINED: usize = 1000;
 
 /// What checking a student's answers for the state after one polygon found.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -264,7 +272,7 @@ pub struct CheckReport {
 impl CheckReport {
     /// How many cells differ, over all the answers.
     pub fn wrong(&self) -> usize {
-        self.answers.iter().map(|a| a.wrong.len()).sum()
+        self.answers.iter().map(|a| a.differing).sum()
     }
 
     /// Whether any cell differs.
@@ -311,17 +319,20 @@ pub fn check(
             })?,
         };
         let hint = misreading(&answer, &expected);
-        results.push((buffer, path, compare(&answer, &expected), hint));
+        let mut mismatches = compare(&answer, &expected);
+        let differing = mismatches.len();
+        mismatches.truncate(MAX_EXPLAINED);
+        results.push((buffer, path, mismatches, hint, differing));
     }
     // Watch the differing cells through a second run, to explain each.
-    let mut watcher = PixelWatcher::new(results.iter().flat_map(|(_, _, m, _)| m.iter().map(|c| (c.x, c.y))));
-    if results.iter().any(|(_, _, m, _)| !m.is_empty()) {
+    let mut watcher = PixelWatcher::new(results.iter().flat_map(|(_, _, m, _, _)| m.iter().map(|c| (c.x, c.y))));
+    if results.iter().any(|(_, _, m, _, _)| !m.is_empty()) {
         Simulation::new(scene).draw_through(last, &mut watcher);
     }
     let exact = simulation.buffers();
     let answers = results
         .into_iter()
-        .map(|(buffer, path, mismatches, hint)| {
+        .map(|(buffer, path, mismatches, hint, differing)| {
             let wrong = mismatches
                 .iter()
                 .map(|cell| {
@@ -351,7 +362,7 @@ pub fn check(
                     words!(lang, "check-hint-fewer", how = how, left = left, top = top)
                 }
             });
-            AnswerCheck { buffer, file: crate::words::shown_path(path), wrong, hint }
+            AnswerCheck { buffer, file: crate::words::shown_path(path), wrong, differing, hint }
         })
         .collect();
     Ok(CheckReport {

@@ -17,7 +17,7 @@ use crate::scene::Scene;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::{as_the_student_sees, read_answer};
 use crate::teach::diagnose::Diagnoser;
-use crate::teach::grade::{CommonMistake, Grade, Handed, Submission, WrongCells, common_mistakes, file_kind, grade};
+use crate::teach::grade::{CommonMistake, Grade, Handed, Submission, WrongCells, file_kind, grade};
 use crate::words::Lang;
 use crate::words::printable;
 
@@ -43,7 +43,9 @@ pub struct ClassGrades {
     pub last: usize,
     /// The answer files found, by student, the framebuffer's first.
     pub files: Vec<AnswerFile>,
-    /// Each student's grade and wrong cells, in the students' order.
+    /// Each student's grade and wrong cells (the first
+    /// [`crate::teach::check::MAX_EXPLAINED`] of each buffer), in the
+    /// students' order.
     pub graded: Vec<(Grade, Vec<WrongCells>)>,
     /// The cells at least two students got wrong, most first.
     pub mistakes: Vec<CommonMistake>,
@@ -86,8 +88,31 @@ pub fn grade_class(
     }
     // The usual wrong rules, drawn once for the whole class.
     let diagnoser = Diagnoser::new(scene, last);
-    let graded = grade(&submissions(lang, &files, &expected, scene), &expected, diagnoser.as_ref());
-    let mistakes = common_mistakes(&graded, MISTAKES_LISTED);
+    // A few students at a time, one a core: only their answers are held in
+    // memory at once, whatever the size of the class.
+    let mut students: Vec<&str> = files.iter().map(|file| file.student.as_str()).collect();
+    students.dedup();
+    // Each student's wrong cells are counted per cell and kept only up to
+    // MAX_EXPLAINED: a class wrong everywhere on a large raster would
+    // otherwise hold every student's every cell at once.
+    let cells = scene.width as usize * scene.height as usize;
+    let mut counts: Vec<(Buffer, Vec<u32>)> = expected.iter().map(|(b, _)| (*b, vec![0; cells])).collect();
+    let mut graded = Vec::with_capacity(students.len());
+    for batch in students.chunks(threads.max(1)) {
+        for (grade, mut wrong) in
+            grade(&submissions(lang, &files, batch, &expected, scene), &expected, diagnoser.as_ref())
+        {
+            for WrongCells { buffer, cells } in &mut wrong {
+                let (_, count) = counts.iter_mut().find(|(b, _)| b == buffer).expect("a buffer handed in");
+                for cell in cells.iter() {
+                    count[cell.y as usize * scene.width as usize + cell.x as usize] += 1;
+                }
+                cells.truncate(crate::teach::check::MAX_EXPLAINED);
+            }
+            graded.push((grade, wrong));
+        }
+    }
+    let mistakes = common_mistakes(lang, scene, &files, &students, &expected, &counts);
     let reasons = reasons(lang, scene, last, &mistakes);
     Ok(ClassGrades { last, files, graded, mistakes, reasons })
 }
@@ -130,18 +155,22 @@ fn answer_files(class: &Path) -> Result<Vec<AnswerFile>, Error> {
     Ok(files)
 }
 
-/// Each student's answers for the buffers the class hands in, read on every
-/// core and checked for shape, in the students' order.
-fn submissions(lang: Lang, files: &[AnswerFile], expected: &[(Buffer, Matrix)], scene: &Scene) -> Vec<Submission> {
-    let mut students: Vec<&str> = files.iter().map(|file| file.student.as_str()).collect();
-    students.dedup();
+/// The answers of `students` for the buffers the class hands in, read on
+/// every core and checked for shape, in the students' order.
+fn submissions(
+    lang: Lang,
+    files: &[AnswerFile],
+    students: &[&str],
+    expected: &[(Buffer, Matrix)],
+    scene: &Scene,
+) -> Vec<Submission> {
     students
-        .into_par_iter()
+        .par_iter()
         .map(|student| {
             let answers = expected
                 .iter()
                 .map(|(buffer, _)| {
-                    let file = files.iter().find(|file| file.student == student && file.buffer == *buffer);
+                    let file = files.iter().find(|file| file.student == *student && file.buffer == *buffer);
                     let handed = match file {
                         None => Handed::Missing,
                         Some(file) => match read_answer(lang, &file.path, scene, *buffer, Links::Refuse) {
@@ -180,6 +209,72 @@ pub fn feedback_name(student: &str) -> String {
         cut.push(c);
     }
     format!("{cut}{tail}")
+}
+
+/// The cells at least two students got wrong, most students first (then
+/// the framebuffer before the z-buffer, top row first, left to right), at
+/// most [`MISTAKES_LISTED`], from the counts per cell; who gave which value
+/// there is read again from the answers, a few students at a time, so the
+/// memory taken is the counts and a few answers whatever the class's size.
+fn common_mistakes(
+    lang: Lang,
+    scene: &Scene,
+    files: &[AnswerFile],
+    students: &[&str],
+    expected: &[(Buffer, Matrix)],
+    counts: &[(Buffer, Vec<u32>)],
+) -> Vec<CommonMistake> {
+    let (width, height) = (scene.width, scene.height);
+    let mut cells: Vec<(u32, Buffer, u32, u32)> = Vec::new();
+    for buffer in [Buffer::Frame, Buffer::Depth] {
+        let Some((_, count)) = counts.iter().find(|(b, _)| *b == buffer) else { continue };
+        for y in (0..height).rev() {
+            for x in 0..width {
+                let n = count[y as usize * width as usize + x as usize];
+                if n >= 2 {
+                    cells.push((n, buffer, x, y));
+                }
+            }
+        }
+    }
+    // Stable: equal counts keep the order above.
+    cells.sort_by_key(|(n, ..)| std::cmp::Reverse(*n));
+    cells.truncate(MISTAKES_LISTED);
+    let mut mistakes: Vec<CommonMistake> = cells
+        .iter()
+        .map(|&(_, buffer, x, y)| {
+            let (_, matrix) = expected.iter().find(|(b, _)| *b == buffer).expect("a buffer handed in");
+            let right = matrix[(height - 1 - y) as usize][x as usize];
+            CommonMistake { buffer, x, y, right, students: Vec::new(), answers: Vec::new() }
+        })
+        .collect();
+    if mistakes.is_empty() {
+        return mistakes;
+    }
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    for batch in students.chunks(threads) {
+        for submission in submissions(lang, files, batch, expected, scene) {
+            for mistake in &mut mistakes {
+                let answer = submission.answers.iter().find(|(b, _)| *b == mistake.buffer).and_then(|(_, h)| match h {
+                    Handed::Matrix(m) => Some(m[(height - 1 - mistake.y) as usize][mistake.x as usize]),
+                    _ => None,
+                });
+                if let Some(value) = answer.filter(|v| *v != mistake.right) {
+                    mistake.students.push(submission.student.clone());
+                    match mistake.answers.iter_mut().find(|(v, _)| *v == value) {
+                        Some((_, n)) => *n += 1,
+                        None => mistake.answers.push((value, 1)),
+                    }
+                }
+            }
+        }
+    }
+    for mistake in &mut mistakes {
+        mistake.students.sort();
+        // Most given first; equal counts by value.
+        mistake.answers.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
+    }
+    mistakes
 }
 
 /// zsim's reason for each common mistake, from one watched run.

@@ -3,8 +3,6 @@
 //! and the cells most students got wrong. Data only; the CLI reads the
 //! folder and prints.
 
-use std::collections::BTreeMap;
-
 use rayon::prelude::*;
 
 use crate::numbers::{Q, decimal};
@@ -165,45 +163,6 @@ pub struct WrongCells {
     /// The cells, in reading order.
     pub cells: Vec<crate::observe::check::Mismatch>,
 }
-
-/// The cells that at least two students got wrong, most students first
-/// (then the framebuffer before the z-buffer, then top row first, left to
-/// right), at most `limit` of them.
-pub fn common_mistakes(graded: &[(Grade, Vec<WrongCells>)], limit: usize) -> Vec<CommonMistake> {
-    // Keyed for the tie order: buffer (frame first), row from the top, column.
-    let mut by_cell: BTreeMap<(u8, std::cmp::Reverse<u32>, u32), CommonMistake> = BTreeMap::new();
-    for (grade, wrong) in graded {
-        for WrongCells { buffer, cells } in wrong {
-            for cell in cells {
-                let key = (matches!(buffer, Buffer::Depth) as u8, std::cmp::Reverse(cell.y), cell.x);
-                let entry = by_cell.entry(key).or_insert_with(|| CommonMistake {
-                    buffer: *buffer,
-                    x: cell.x,
-                    y: cell.y,
-                    right: cell.expected,
-                    students: Vec::new(),
-                    answers: Vec::new(),
-                });
-                entry.students.push(grade.student.clone());
-                match entry.answers.iter_mut().find(|(value, _)| *value == cell.answer) {
-                    Some((_, count)) => *count += 1,
-                    None => entry.answers.push((cell.answer, 1)),
-                }
-            }
-        }
-    }
-    let mut mistakes: Vec<CommonMistake> = by_cell.into_values().filter(|m| m.students.len() >= 2).collect();
-    for mistake in &mut mistakes {
-        mistake.students.sort();
-        // Most given first; equal counts by value.
-        mistake.answers.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
-    }
-    // Stable: equal counts keep the tie order of the map.
-    mistakes.sort_by_key(|m| std::cmp::Reverse(m.students.len()));
-    mistakes.truncate(limit);
-    mistakes
-}
-
 /// The middle of an answer file's name: `NAME.frame.txt`, `NAME.depth.txt`.
 pub fn file_kind(buffer: Buffer) -> &'static str {
     match buffer {
@@ -241,20 +200,5 @@ mod tests {
                 ("di".into(), None, "0.0".into(), "missing: di.frame.txt".into()),
             ]
         );
-    }
-
-    #[test]
-    fn common_mistakes_are_cells_two_or_more_students_got_wrong() {
-        let expected = vec![(Buffer::Frame, vec![vec![1, 0, 0], vec![1, 1, 0]])];
-        let class = [
-            submission("a", Handed::Matrix(vec![vec![1, 1, 0], vec![1, 1, 1]])),
-            submission("b", Handed::Matrix(vec![vec![1, 2, 0], vec![1, 1, 0]])),
-            submission("c", Handed::Matrix(vec![vec![1, 1, 0], vec![1, 1, 1]])),
-        ];
-        let mistakes = common_mistakes(&grade(&class, &expected, None), 10);
-        let cells: Vec<(u32, u32, usize)> = mistakes.iter().map(|m| (m.x, m.y, m.students.len())).collect();
-        // (1, 1): all three wrong, two said 1 and one 2; (2, 0): two wrong.
-        assert_eq!(cells, vec![(1, 1, 3), (2, 0, 2)]);
-        assert_eq!((mistakes[0].answers.clone(), mistakes[1].answers.clone()), (vec![(1, 2), (2, 1)], vec![(1, 2)]));
     }
 }

@@ -875,3 +875,7 @@ gradescope-unused = not graded (the assignment does not ask for them): { $files 
 usage-same-student-twice = { $path }: { $files } are both "{ $student }" once their names are shown: rename one; nothing was graded
 usage-gradebook-cannot-tell = "{ $first }" and "{ $second }" are one student to a gradebook (the same cell, without case): rename one; nothing was written
 png-figure-too-many-pixels = at that --scale the PNG would have more than { $max } pixels: ask for less
+check-more-cells = … and { $count } more { $count ->
+    [one] cell differs
+   *[other] cells differ
+}, not listed

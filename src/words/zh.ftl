@@ -815,3 +815,4 @@ gradescope-unused = 未评分（作业不要求这些文件）：{ $files }
 usage-same-student-twice = { $path }：{ $files } 显示出来都是“{ $student }”：请重命名其中一个；未评分
 usage-gradebook-cannot-tell = 对成绩册而言“{ $first }”和“{ $second }”是同一个学生（同一单元格，不区分大小写）：请重命名其中一个；未写入任何内容
 png-figure-too-many-pixels = 按该 --scale，PNG 将超过 { $max } 个像素：请调小
+check-more-cells = …… 另有 { $count } 个单元格不同，未列出

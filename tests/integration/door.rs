@@ -584,3 +584,52 @@ proptest! {
         prop_assert!(!temporary, "a temporary file was left");
     }
 }
+
+/// The peak resident memory of one run of the binary, in KiB, from the
+/// kernel's accounting of that child alone (`wait4`).
+fn peak_kib(args: &[&str]) -> (i32, i64) {
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let (mut status, mut usage) = (0, unsafe { std::mem::zeroed::<libc::rusage>() });
+    // SAFETY: waits for the child this function started, into locals.
+    let waited = unsafe { libc::wait4(child.id() as i32, &mut status, 0, &mut usage) };
+    assert!(waited > 0);
+    (libc::WEXITSTATUS(status), usage.ru_maxrss)
+}
+
+/// An answer wrong in every cell held a reason and a watched history for
+/// each, and `grade` held every student's every wrong cell. The reasons are
+/// for the first 1000 cells, the rest counted; the class's common mistakes
+/// come from counts per cell. The bounds leave room over what this code
+/// takes and are far below what the old code took (the design note
+/// `2026-11-25-one-door-in-one-door-out.md` has both).
+#[test]
+fn answers_wrong_everywhere_take_memory_for_a_few_answers_not_for_every_cell() {
+    let dir = scratch("wrong-everywhere");
+    let side = 600;
+    let scene = dir.join("s.json");
+    std::fs::write(
+        &scene,
+        format!(r#"{{"width": {side}, "height": {side}, "polygons": [{{"value": 1, "vertices": [[0, 0, 5], [{side}, 0, 5], [0, {side}, 5]]}}]}}"#),
+    )
+    .unwrap();
+    let class = dir.join("class");
+    std::fs::create_dir_all(&class).unwrap();
+    let row = vec!["2"; side].join(" ") + "\n";
+    for n in 0..8 {
+        std::fs::write(class.join(format!("s{n}.frame.txt")), row.repeat(side)).unwrap();
+    }
+    let (code, check) = peak_kib(&["check", path(&scene), "--frame", path(&class.join("s0.frame.txt"))]);
+    assert_eq!(code, 1);
+    let (code, grade) = peak_kib(&["grade", path(&scene), path(&class)]);
+    assert_eq!(code, 1);
+    assert!(check < 160_000 && grade < 200_000, "check {check} KiB, grade {grade} KiB");
+    let run = zsim(&["check", path(&scene), "--frame", path(&class.join("s0.frame.txt"))]);
+    assert!(run.stdout.contains("360000 of 360000 cells differ"), "{}", &run.stdout[..200]);
+    assert!(run.stdout.contains("… and 359000 more cells differ, not listed"));
+}

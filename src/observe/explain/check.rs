@@ -126,9 +126,18 @@ impl Misreading {
 
 /// When an answer that differs would match, or nearly, read another way:
 /// bottom row first (upside down) or with rows and columns swapped. Returns
-/// how it was written and how many cells differ when read that way.
+/// how it was written and how many cells differ when read that way; not
+/// looked for past 1,048,576 cells (two more copies of the answer).
 pub fn misreading(answer: &Matrix, expected: &Matrix) -> Option<(Misreading, usize)> {
+    // A right answer was read right; a raster past a million cells is not read twice more.
+    let cells: usize = answer.iter().map(Vec::len).sum();
+    if cells > 1 << 20 {
+        return None;
+    }
     let differing = compare(answer, expected).len();
+    if differing == 0 {
+        return None;
+    }
     let upside_down: Matrix = answer.iter().rev().cloned().collect();
     let mut readings = vec![(Misreading::BottomRowFirst, compare(&upside_down, expected).len())];
     if answer.len() == answer.first().map_or(0, Vec::len) {
