@@ -395,11 +395,19 @@ fn an_image_is_refused_by_its_declared_size_and_kind_before_it_is_decoded() {
 fn antialiasing_refuses_a_sample_buffer_beyond_the_limit_before_allocating() {
     let dir = scratch("fsaa");
     let case = dir.join("case.txt");
-    std::fs::write(&case, "png 8192 8192 out.png\nfsaa 8\nposition 2 -1 -1 1 -1 -1 1\ndrawArraysTriangles 0 3\n")
-        .unwrap();
-    let run = zsim(&["cs418", "run", path(&case), "-o", path(&dir)]);
-    assert_eq!(run.code, 2, "{}", run.stdout);
-    assert!(run.stderr.contains("line 2: fsaa 8 asks for 4294967296 samples"), "{}", run.stderr);
+    let draw = "position 2 -1 -1 1 -1 -1 1\ncolor 3 1 1 1 1 1 1 1 1 1\ndrawArraysTriangles 0 3\n";
+    for (head, refused) in [
+        ("png 8192 8192 out.png\nfsaa 8\n", "line 1: fsaa 1 asks for 67108864 samples"),
+        ("png 1024 1024 out.png\nfsaa 8\n", "line 2: fsaa 8 asks for 67108864 samples"),
+    ] {
+        std::fs::write(&case, format!("{head}{draw}")).unwrap();
+        let run = zsim(&["cs418", "run", path(&case), "-o", path(&dir)]);
+        assert_eq!(run.code, 2, "{}", run.stdout);
+        assert!(run.stderr.contains(refused), "{}", run.stderr);
+        assert!(run.stderr.contains("more than zsim draws (8388608)"), "{}", run.stderr);
+    }
+    std::fs::write(&case, format!("png 1024 1024 out.png\nfsaa 2\n{draw}")).unwrap();
+    assert_eq!(zsim(&["cs418", "run", path(&case), "-o", path(&dir), "--arith", "dda-f64"]).code, 0);
 }
 
 /// `figure` of a 512 × 512 scene wrote a 24,904 × 24,772 PNG (5.3 GB of

@@ -172,10 +172,13 @@ pub struct Case {
 /// Largest image side accepted: 16384 × 16384 RGBA in f64 is 8 GiB already.
 pub const MAX_SIDE: u32 = 8192;
 
-/// The most samples a case may ask for, width × height × fsaa²: what an
-/// 8192 × 8192 image takes at fsaa 1. A larger `fsaa` is refused at its
-/// line, before any sample buffer is allocated.
-pub const MAX_SAMPLES: u64 = 8192 * 8192;
+/// The most samples a case may ask for, width × height × fsaa², 2^23
+/// (8,388,608: 2896 × 2896 at fsaa 1, 1024 × 1024 at fsaa 2): exact
+/// arithmetic keeps a rational depth and the course's floats beside each
+/// sample. A larger image or `fsaa` is refused at its line, before any
+/// sample buffer is allocated (the guide's Safety chapter has the memory
+/// this takes).
+pub const MAX_SAMPLES: u64 = 1 << 23;
 
 impl Case {
     /// Reads a CS 418 file. `load_texture` reads a texture the case names
@@ -367,6 +370,14 @@ fn png_line(lang: Lang, line: usize, args: &[&str]) -> Result<Case, CaseError> {
         })
     };
     let (width, height) = (side(width, &words!(lang, "cs418-width"))?, side(height, &words!(lang, "cs418-height"))?);
+    let samples = u64::from(width) * u64::from(height);
+    if samples > MAX_SAMPLES {
+        let max = MAX_SAMPLES.to_string();
+        return Err(error(
+            line,
+            words!(lang, "cs418-too-many-samples", level = "1", samples = samples.to_string(), max = max),
+        ));
+    }
     if file.contains(['/', '\\']) || *file == ".." || *file == "." {
         return Err(error(line, words!(lang, "cs418-png-file", file = crate::words::token(lang, file))));
     }
