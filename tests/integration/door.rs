@@ -641,3 +641,107 @@ fn answers_wrong_everywhere_take_memory_for_a_few_answers_not_for_every_cell() {
     assert!(run.stdout.contains("360000 of 360000 cells differ"), "{}", &run.stdout[..200]);
     assert!(run.stdout.contains("… and 359000 more cells differ, not listed"));
 }
+
+/// What an output name may be, to the property test of the writing door.
+#[derive(Debug, Clone)]
+enum OutputName {
+    Plain(String),
+    TheInput,
+    HardLinkToInput,
+    SymlinkToInput,
+    Fifo,
+    Folder,
+    TooLong,
+    Nested(String),
+}
+
+fn output_name() -> impl Strategy<Value = OutputName> {
+    prop_oneof![
+        "[a-z]{1,8}".prop_map(OutputName::Plain),
+        Just(OutputName::TheInput),
+        Just(OutputName::HardLinkToInput),
+        Just(OutputName::SymlinkToInput),
+        Just(OutputName::Fifo),
+        Just(OutputName::Folder),
+        Just(OutputName::TooLong),
+        "[a-z]{1,8}".prop_map(OutputName::Nested),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 32, failure_persistence: None, .. ProptestConfig::default() })]
+
+    /// Every command that writes a file named on its command line, given an
+    /// output name of every kind: it ends with exit 0 or a one-line error,
+    /// its input is unchanged, and no temporary file is left.
+    #[test]
+    fn the_writing_door_holds_for_every_command(command in 0usize..4, name in output_name()) {
+        let dir = scratch("property-out");
+        let (input, args): (PathBuf, Vec<&str>) = match command {
+            0 => (dir.join("s.json"), vec!["figure"]),
+            1 => (dir.join("s.json"), vec!["step", "--html"]),
+            2 => (dir.join("m.obj"), vec!["tinyrenderer", "import"]),
+            _ => (dir.join("s.json"), vec!["run", "--format", "json"]),
+        };
+        if command == 2 {
+            std::fs::copy("examples/tinyrenderer/pyramid.obj", &input).unwrap();
+        } else {
+            std::fs::copy("examples/rogers.json", &input).unwrap();
+        }
+        let before = std::fs::read(&input).unwrap();
+        let extension = if command == 0 { ".svg" } else { ".out" };
+        let output = match &name {
+            OutputName::Plain(n) => dir.join(format!("{n}{extension}")),
+            OutputName::TheInput => input.clone(),
+            OutputName::HardLinkToInput => {
+                let link = dir.join(format!("hard{extension}"));
+                std::fs::hard_link(&input, &link).unwrap();
+                link
+            }
+            OutputName::SymlinkToInput => {
+                let link = dir.join(format!("soft{extension}"));
+                std::os::unix::fs::symlink(&input, &link).unwrap();
+                link
+            }
+            OutputName::Fifo => {
+                let fifo = dir.join(format!("fifo{extension}"));
+                std::process::Command::new("mkfifo").arg(&fifo).status().unwrap();
+                fifo
+            }
+            OutputName::Folder => {
+                let folder = dir.join(format!("folder{extension}"));
+                std::fs::create_dir_all(&folder).unwrap();
+                folder
+            }
+            OutputName::TooLong => dir.join(format!("{}{extension}", "x".repeat(300))),
+            OutputName::Nested(n) => dir.join(n).join(format!("deep{extension}")),
+        };
+        let mut all = args.clone();
+        all.push(path(&input));
+        // `run` prints its JSON; the others write it with -o.
+        if command != 3 {
+            all.extend(["-o", path(&output)]);
+        }
+        let start = std::time::Instant::now();
+        let run = zsim(&all);
+        prop_assert!(start.elapsed() < std::time::Duration::from_secs(30));
+        prop_assert!(run.code == 0 || (run.code == 2 && run.stderr.lines().count() == 1), "{} {}", run.code, run.stderr);
+        prop_assert!(std::fs::read(&input).unwrap() == before, "the input changed");
+        let refused_names = matches!(name, OutputName::TheInput | OutputName::HardLinkToInput | OutputName::SymlinkToInput | OutputName::TooLong | OutputName::Folder);
+        prop_assert!(!(refused_names && command != 3 && run.code == 0), "{name:?} was written: {}", run.stdout);
+        let temporary = walk(&dir).iter().any(|p| p.file_name().unwrap().to_string_lossy().starts_with(".zsim-"));
+        prop_assert!(!temporary, "a temporary file was left");
+    }
+}
+
+fn walk(dir: &Path) -> Vec<PathBuf> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() && !path.is_symlink() {
+            found.extend(walk(&path));
+        }
+        found.push(path);
+    }
+    found
+}
