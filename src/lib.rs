@@ -101,9 +101,16 @@
 //! the command line (`cargo build --lib --no-default-features`: none of clap,
 //! ratatui, crossterm, comfy-table, indicatif, clap_complete or clap_mangen),
 //! holds no hidden state (the language is an argument, as is the time: a
-//! clock is the caller's), and never prints: printing happens only in the
-//! binary (`src/cli/`, and the full-screen app in `src/app/`), which
-//! renders the library's facts.
+//! clock is the caller's; the one process-wide effect is that [`Plan::write`]
+//! holds Ctrl-C, `SIGTERM` and `SIGHUP` while it writes), and never prints:
+//! printing happens only in the binary (`src/cli/`, and the full-screen app
+//! in `src/app/`), which renders the library's facts.
+//!
+//! Every file is read and written through one door (`src/door/`): regular
+//! files within [`MAX_INPUT_BYTES`], names inside a file opened through a
+//! [`Folder`], images measured by [`png_reader`] before decoding, and every
+//! output a [`Plan`], checked whole and written atomically, never onto an
+//! input ([`Identity`]).
 //!
 //! # Example
 //!

@@ -607,6 +607,9 @@ fn peak_kib(args: &[&str]) -> (i32, i64) {
     // SAFETY: waits for the child this function started, into locals.
     let waited = unsafe { libc::wait4(child.id() as i32, &mut status, 0, &mut usage) };
     assert!(waited > 0);
+    // Reaped above with its usage; std's own wait then finds no child, which is expected.
+    let mut child = child;
+    assert!(child.wait().is_err());
     (libc::WEXITSTATUS(status), usage.ru_maxrss)
 }
 
@@ -744,4 +747,74 @@ fn walk(dir: &Path) -> Vec<PathBuf> {
         found.push(path);
     }
     found
+}
+
+/// One texture named `x.png`, `./x.png`, `././x.png` … was decoded once per
+/// name; it is one file, read and decoded once.
+#[test]
+fn a_texture_is_decoded_once_however_it_is_named() {
+    let dir = scratch("texture-once");
+    std::fs::copy("examples/cs418/checker-texture.png", dir.join("x.png")).unwrap();
+    let mut text = String::from("png 8 8 out.png\nposition 2 -1 -1 1 -1 -1 1\ntexcoord 2 0 0 1 0 0 1\n");
+    for k in 0..20 {
+        text.push_str(&format!("texture {}x.png\ndrawArraysTriangles 0 3\n", "./".repeat(k)));
+    }
+    let case = dir.join("case.txt");
+    std::fs::write(&case, text).unwrap();
+    let loaded = zsim::cs418::report::load(zsim::Lang::En, &case, zsim::cs418::report::Textures::Read).unwrap();
+    assert_eq!(loaded.textures.len(), 1);
+    assert_eq!(loaded.textures[0].0, dir.join("x.png"));
+}
+
+/// What an input path may be, to the property test of the reading door.
+#[derive(Debug, Clone, Copy)]
+enum InputKind {
+    Fifo,
+    Device,
+    Folder,
+    Lying,
+    Missing,
+    LinkToDevice,
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 32, failure_persistence: None, .. ProptestConfig::default() })]
+
+    /// Every command that reads a file named on its command line, given one
+    /// that is no regular file or too large: a one-line error (exit 2) at
+    /// once, nothing waited for and nothing read whole.
+    #[test]
+    fn the_reading_door_holds_for_every_command(
+        command in 0usize..7,
+        kind in prop_oneof![
+            Just(InputKind::Fifo), Just(InputKind::Device), Just(InputKind::Folder),
+            Just(InputKind::Lying), Just(InputKind::Missing), Just(InputKind::LinkToDevice),
+        ],
+    ) {
+        let dir = scratch("property-in");
+        let bad = dir.join("bad");
+        match kind {
+            InputKind::Fifo => { std::process::Command::new("mkfifo").arg(&bad).status().unwrap(); }
+            InputKind::Device => std::os::unix::fs::symlink("/dev/zero", &bad).unwrap(),
+            InputKind::Folder => std::fs::create_dir_all(&bad).unwrap(),
+            InputKind::Lying => std::fs::File::create(&bad).unwrap().set_len(zsim::MAX_INPUT_BYTES + 1).unwrap(),
+            InputKind::Missing => {}
+            InputKind::LinkToDevice => std::os::unix::fs::symlink("/dev/urandom", &bad).unwrap(),
+        }
+        let bad = path(&bad);
+        let args: Vec<&str> = match command {
+            0 => vec!["run", bad],
+            1 => vec!["check", "examples/rogers.json", "--frame", bad],
+            2 => vec!["explain", bad, "--pixel", "1,1"],
+            3 => vec!["tinyrenderer", "import", bad],
+            4 => vec!["cs418", "import", bad],
+            5 => vec!["buet", "check", "examples/buet/case", "--answer", bad],
+            _ => vec!["cs418", "run", "examples/cs418/rast-checker.txt", "-o", "target/tmp/door/unused", "--compare", bad],
+        };
+        let start = std::time::Instant::now();
+        let run = zsim(&args);
+        prop_assert!(start.elapsed() < std::time::Duration::from_secs(30), "took {:?}", start.elapsed());
+        prop_assert_eq!(run.code, 2, "{}", run.stdout);
+        prop_assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+    }
 }
