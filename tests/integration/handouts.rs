@@ -127,3 +127,46 @@ fn an_exercise_writes_its_worksheet_and_solution_in_each_format_asked() {
     assert_eq!(run.code, 2);
     assert!(run.stderr.contains("doc"), "{}", run.stderr);
 }
+
+/// `.tex` handouts pdflatex rejected: names holding U+2028 or U+200B, a
+/// title with a control character, a name with U+FFFE (which the SVG holds
+/// as U+FFFD), a Russian figure, and zsim's own figure of a valid
+/// perspective scene with a vertex near the eye ("Dimension too large").
+#[test]
+fn every_handout_compiles_whatever_its_names_hold() {
+    let Some(latex) = tool("pdflatex") else {
+        skipped("pdflatex (texlive-latex-base, texlive-pictures)", "compiling handouts with odd names");
+        return;
+    };
+    let dir = scratch("odd-names");
+    let names = "a\u{2028}b\u{200B}c\u{FFFE}d é ł Прямоугольник 三角形 \\\\input{x} $ % & #";
+    std::fs::write(
+        dir.join("names.json"),
+        serde_json::json!({"width": 8, "height": 8, "polygons": [
+            {"name": names, "value": 1, "vertices": [[0, 0, 1], [8, 0, 1], [0, 8, 1]]}]})
+        .to_string(),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("near.json"),
+        r#"{"width": 32, "height": 32, "frame_bits": 2, "depth_bits": 5,
+            "effects": {"perspective": {"distance": 40, "near": 1}},
+            "polygons": [{"name": "close", "value": 1, "vertices": [[0, 0, 38.999], [32, 0, 38.999], [16, 32, 20]]}]}"#,
+    )
+    .unwrap();
+    for (scene, title, lang) in
+        [("names.json", "T\u{1}itle \u{2028}", "en"), ("near.json", "near", "en"), ("names.json", "заголовок", "ru")]
+    {
+        let tex = format!("{}-{lang}.tex", scene.trim_end_matches(".json"));
+        let run = crate::zsim_in(Some(&dir), &["figure", scene, "-o", &tex, "--title", title, "--lang", lang]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let compiled = Command::new("pdflatex")
+            .args(["-interaction=nonstopmode", "-halt-on-error", &tex])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let log = String::from_utf8_lossy(&compiled.stdout);
+        assert!(compiled.status.success(), "{tex}: pdflatex: {log}");
+    }
+    ran("handouts with odd names compiled", &latex);
+}
