@@ -237,19 +237,7 @@ impl Case {
                     if !(1..=8).contains(&level) {
                         return Err(error(line, words!(lang, "cs418-fsaa", level = level.to_string())));
                     }
-                    let samples = u64::from(case.width) * u64::from(case.height) * (level * level) as u64;
-                    if samples > MAX_SAMPLES {
-                        return Err(error(
-                            line,
-                            words!(
-                                lang,
-                                "cs418-too-many-samples",
-                                level = level.to_string(),
-                                samples = samples.to_string(),
-                                max = MAX_SAMPLES.to_string()
-                            ),
-                        ));
-                    }
+                    samples_within_limit(lang, line, case.width, case.height, level as u32)?;
                     case.features.fsaa = level as u32;
                 }
                 "position" | "color" | "pointsize" | "texcoord" => {
@@ -351,6 +339,17 @@ impl Case {
     }
 }
 
+/// Refuses, at its line, an image of `width` × `height` at `fsaa level` whose
+/// samples pass [`MAX_SAMPLES`].
+fn samples_within_limit(lang: Lang, line: usize, width: u32, height: u32, level: u32) -> Result<(), CaseError> {
+    let samples = u64::from(width) * u64::from(height) * u64::from(level * level);
+    if samples <= MAX_SAMPLES {
+        return Ok(());
+    }
+    let (level, samples, max) = (level.to_string(), samples.to_string(), MAX_SAMPLES.to_string());
+    Err(error(line, words!(lang, "cs418-too-many-samples", level = level, samples = samples, max = max)))
+}
+
 fn png_line(lang: Lang, line: usize, args: &[&str]) -> Result<Case, CaseError> {
     let [width, height, file] = args else {
         return Err(error(line, words!(lang, "cs418-png-words", found = args.len().to_string())));
@@ -370,14 +369,7 @@ fn png_line(lang: Lang, line: usize, args: &[&str]) -> Result<Case, CaseError> {
         })
     };
     let (width, height) = (side(width, &words!(lang, "cs418-width"))?, side(height, &words!(lang, "cs418-height"))?);
-    let samples = u64::from(width) * u64::from(height);
-    if samples > MAX_SAMPLES {
-        let max = MAX_SAMPLES.to_string();
-        return Err(error(
-            line,
-            words!(lang, "cs418-too-many-samples", level = "1", samples = samples.to_string(), max = max),
-        ));
-    }
+    samples_within_limit(lang, line, width, height, 1)?;
     if file.contains(['/', '\\']) || *file == ".." || *file == "." {
         return Err(error(line, words!(lang, "cs418-png-file", file = crate::words::token(lang, file))));
     }
