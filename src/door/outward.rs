@@ -81,6 +81,14 @@ impl Plan {
 
     /// Checks the whole plan, as [`Plan`] says, without writing anything.
     pub fn check(&self) -> Result<(), Error> {
+        self.check_streams().map(drop)
+    }
+
+    /// [`Plan::check`], and which planned files are streams: an existing
+    /// device or FIFO (`/dev/null`, `/dev/stdout` on a pipe), written into
+    /// as it is, never replaced by a rename. A folder is refused.
+    fn check_streams(&self) -> Result<Vec<bool>, Error> {
+        let mut streams = Vec::with_capacity(self.files.len());
         let mut existing = Vec::new();
         for (n, file) in self.files.iter().enumerate() {
             let path = &file.path;
@@ -99,7 +107,14 @@ impl Plan {
                     return Err(Usage::OutputIsInput { folder: candidate.to_owned() }.into());
                 }
             }
-            if std::fs::symlink_metadata(path).is_ok() {
+            let followed = std::fs::metadata(path).ok();
+            if followed.as_ref().is_some_and(std::fs::Metadata::is_dir) {
+                let source = std::io::Error::new(std::io::ErrorKind::IsADirectory, "a folder");
+                return Err(Error::Write { path: path.clone(), source });
+            }
+            let stream = followed.is_some_and(|m| !m.is_file());
+            streams.push(stream);
+            if !stream && std::fs::symlink_metadata(path).is_ok() {
                 existing.push(path.clone());
             }
         }
@@ -111,30 +126,34 @@ impl Plan {
                 .collect();
             return Err(Usage::OutputWouldReplace { folder, files }.into());
         }
-        Ok(())
+        Ok(streams)
     }
 
     /// Checks the plan, then writes it (see [`Plan`]); the paths written.
     pub fn write(self) -> Result<Vec<PathBuf>, Error> {
-        self.check()?;
+        let streams = self.check_streams()?;
         let _held = held::Interruptions::hold();
         let mut staged = Vec::with_capacity(self.files.len());
-        for file in &self.files {
+        for file in self.files.iter().zip(&streams).filter(|(_, stream)| !**stream).map(|(file, _)| file) {
             let folder = folder_of(&file.path);
             std::fs::create_dir_all(folder).map_err(|source| Error::Write { path: folder.to_owned(), source })?;
             let failed = |source| Error::Write { path: file.path.clone(), source };
-            let mut temporary = tempfile::Builder::new().prefix(".zsim-").tempfile_in(folder).map_err(failed)?;
+            let mut builder = tempfile::Builder::new();
+            builder.prefix(".zsim-");
+            #[cfg(unix)]
+            {
+                // The mode a new file gets (0666, or 0777 for a script, less the umask), not a temporary file's 0600.
+                use std::os::unix::fs::PermissionsExt;
+                builder.permissions(std::fs::Permissions::from_mode(if file.executable { 0o777 } else { 0o666 }));
+            }
+            let mut temporary = builder.tempfile_in(folder).map_err(failed)?;
             temporary.write_all(&file.bytes).map_err(failed)?;
             temporary.as_file().sync_data().map_err(failed)?;
-            #[cfg(unix)]
-            if file.executable {
-                use std::os::unix::fs::PermissionsExt;
-                temporary.as_file().set_permissions(std::fs::Permissions::from_mode(0o755)).map_err(failed)?;
-            }
             staged.push(temporary);
         }
         let mut written = Vec::with_capacity(self.files.len());
-        for (file, temporary) in self.files.iter().zip(staged) {
+        let files = self.files.iter().zip(&streams).filter(|(_, stream)| !**stream).map(|(file, _)| file);
+        for (file, temporary) in files.zip(staged) {
             let placed = match self.replace {
                 Replace::Allowed => temporary.persist(&file.path).map(drop),
                 Replace::Never => temporary.persist_noclobber(&file.path).map(drop),
@@ -150,8 +169,37 @@ impl Plan {
             }
             written.push(file.path.clone());
         }
+        // Streams last: what is written into them cannot be taken back.
+        for file in self.files.iter().zip(&streams).filter(|(_, stream)| **stream).map(|(file, _)| file) {
+            write_stream(&file.path, &file.bytes).map_err(|source| Error::Write { path: file.path.clone(), source })?;
+            written.push(file.path.clone());
+        }
         Ok(written)
     }
+}
+
+/// Writes `bytes` into an existing device or FIFO, opened without waiting
+/// for a reader (a FIFO nobody reads is an error, not a hang).
+fn write_stream(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let mut options = std::fs::OpenOptions::new();
+    options.write(true);
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK);
+    }
+    let mut file = options.open(path)?;
+    #[cfg(target_os = "linux")]
+    {
+        // Back to blocking writes once open: a pipe's reader sets the pace.
+        use std::os::fd::AsRawFd;
+        // SAFETY: F_GETFL/F_SETFL on a descriptor this function owns.
+        unsafe {
+            let flags = libc::fcntl(file.as_raw_fd(), libc::F_GETFL);
+            libc::fcntl(file.as_raw_fd(), libc::F_SETFL, flags & !libc::O_NONBLOCK);
+        }
+    }
+    file.write_all(bytes)
 }
 
 /// Writes `files` (name, contents) into `folder` as one plan that replaces

@@ -818,3 +818,38 @@ proptest! {
         prop_assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
     }
 }
+
+/// Written by a rename, an output named by a FIFO or a device (`-o
+/// /dev/null`, `-o /dev/stdout`) would be replaced by a regular file, and
+/// every new file came out with a temporary file's mode, 0600. A stream is
+/// written into as it is; a new file gets 0666 less the umask.
+#[test]
+fn a_stream_output_is_written_into_and_a_new_file_gets_the_usual_mode() {
+    use std::os::unix::fs::{FileTypeExt, PermissionsExt};
+    let dir = scratch("streams");
+    let fifo = dir.join("fifo.svg");
+    assert!(std::process::Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read(fifo).unwrap())
+    };
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    let run = zsim(&["figure", "examples/rogers.json", "-o", path(&fifo)]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let read = reader.join().unwrap();
+    assert!(read.starts_with(b"<svg") || read.starts_with(b"<?xml"), "{}", String::from_utf8_lossy(&read[..40]));
+    assert!(std::fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo(), "the FIFO was replaced");
+    // Nobody reading: an error at once, not a wait.
+    let run = zsim(&["figure", "examples/rogers.json", "-o", path(&fifo)]);
+    assert_eq!((run.code, run.stderr.lines().count()), (2, 1), "{}", run.stderr);
+    let new = dir.join("new.svg");
+    let command =
+        format!("umask 022; exec '{}' figure examples/rogers.json -o '{}'", env!("CARGO_BIN_EXE_zsim"), new.display());
+    let status = std::process::Command::new("sh")
+        .args(["-c", &command])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .status()
+        .unwrap();
+    assert!(status.success());
+    assert_eq!(std::fs::metadata(&new).unwrap().permissions().mode() & 0o777, 0o644);
+}
