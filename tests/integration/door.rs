@@ -190,7 +190,7 @@ fn an_interrupted_multi_file_write_leaves_the_old_files_or_none() {
     // Interrupted at 40 moments from the start to past the end of a whole run.
     let took = started.elapsed();
     let (mut none, mut all) = (0, 0);
-    for delay in (0..40).map(|k| took * k / 30) {
+    for delay in (0..40).map(|k| took * k / 20) {
         let out = dir.join("out");
         let _ = std::fs::remove_dir_all(&out);
         let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_zsim"))
