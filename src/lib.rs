@@ -151,7 +151,6 @@ mod simulate;
 mod teach;
 
 pub use courses::{buet, cs418, tinyrenderer};
-pub use door::outward::{MAX_NAME_BYTES, MAX_PATH_BYTES};
 pub use door::{
     Folder, Identity, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, Plan, Replace, png_reader, read_bytes, read_text,
     read_text_with, same_folder, write_fresh,
@@ -182,4 +181,6 @@ pub use simulate::setup::{Stats, fate};
 pub use simulate::simulation::{Drawn, Simulation};
 pub use simulate::stages::{StageSet, describe};
 pub use teach::{check, class, diagnose, exercise, grade, gradebooks, gradescope, page, step, stop};
-pub use words::{Arg, Lang, localize_decimal, polygon_label, printable, shown_path, text as message, token};
+pub use words::{
+    Arg, Lang, localize_decimal, polygon_label, printable, shown_name, shown_path, text as message, token,
+};

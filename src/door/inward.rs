@@ -157,16 +157,20 @@ pub fn png_reader(lang: Lang, bytes: &[u8]) -> Result<png::Reader<std::io::Curso
 /// follows it. `-` reads standard input, with the same bound.
 pub fn read_bytes(path: &Path, links: Links) -> Result<Vec<u8>, Error> {
     let failed = |source| Error::Read { path: path.to_owned(), source };
-    let mut bytes = Vec::new();
     if path == Path::new("-") {
+        let mut bytes = Vec::new();
         std::io::stdin().lock().take(MAX_INPUT_BYTES + 1).read_to_end(&mut bytes).map_err(failed)?;
-    } else {
-        if links == Links::Refuse && std::fs::symlink_metadata(path).map_err(failed)?.file_type().is_symlink() {
-            return Err(Error::NotRegular { path: path.to_owned(), kind: FileKind::Link });
-        }
-        let file = open_without_blocking(path).map_err(failed)?;
-        return read_open_file(path, &file);
+        return within_limit(path, bytes);
     }
+    if links == Links::Refuse && std::fs::symlink_metadata(path).map_err(failed)?.file_type().is_symlink() {
+        return Err(Error::NotRegular { path: path.to_owned(), kind: FileKind::Link });
+    }
+    let file = open_without_blocking(path).map_err(failed)?;
+    read_open_file(path, &file)
+}
+
+/// `bytes`, read from `path`, unless they pass [`MAX_INPUT_BYTES`].
+fn within_limit(path: &Path, bytes: Vec<u8>) -> Result<Vec<u8>, Error> {
     if bytes.len() as u64 > MAX_INPUT_BYTES {
         return Err(Error::TooLarge { path: path.to_owned(), limit: MAX_INPUT_BYTES });
     }
@@ -195,10 +199,7 @@ fn read_open_file(path: &Path, file: &std::fs::File) -> Result<Vec<u8>, Error> {
             bytes
         }
     };
-    if bytes.len() as u64 > MAX_INPUT_BYTES {
-        return Err(Error::TooLarge { path: path.to_owned(), limit: MAX_INPUT_BYTES });
-    }
-    Ok(bytes)
+    within_limit(path, bytes)
 }
 
 /// Files at least this long are read in two halves at once, where the

@@ -45,7 +45,7 @@ struct Planned {
 /// files or none, never half of one.
 #[derive(Debug)]
 pub struct Plan {
-    inputs: Vec<(PathBuf, Identity)>,
+    inputs: Vec<Identity>,
     files: Vec<Planned>,
     replace: Replace,
 }
@@ -54,14 +54,14 @@ impl Plan {
     /// A plan that must not write onto any of `inputs` (files, or folders
     /// whose files it must not write into).
     pub fn new(inputs: &[&Path], replace: Replace) -> Plan {
-        let inputs = inputs.iter().filter_map(|p| Some((p.to_path_buf(), Identity::of(p)?))).collect();
+        let inputs = inputs.iter().filter_map(|p| Identity::of(p)).collect();
         Plan { inputs, files: Vec::new(), replace }
     }
 
     /// One more input not to write onto, known by its identity (a file
     /// named inside another, read through [`super::Folder`]).
-    pub fn input(&mut self, path: PathBuf, identity: Identity) {
-        self.inputs.push((path, identity));
+    pub fn input(&mut self, identity: Identity) {
+        self.inputs.push(identity);
     }
 
     /// Plans `bytes` into the file at `path`.
@@ -69,25 +69,16 @@ impl Plan {
         self.files.push(Planned { path: path.into(), bytes: bytes.into(), executable: false });
     }
 
-    /// Plans an executable file (a script), mode 0755 on Unix.
+    /// Plans an executable file (a script): mode 0777 less the umask on Unix.
     pub fn executable(&mut self, path: impl Into<PathBuf>, bytes: impl Into<Vec<u8>>) {
         self.files.push(Planned { path: path.into(), bytes: bytes.into(), executable: true });
     }
 
-    /// The paths planned, in order.
-    pub fn paths(&self) -> impl Iterator<Item = &Path> {
-        self.files.iter().map(|f| f.path.as_path())
-    }
-
-    /// Checks the whole plan, as [`Plan`] says, without writing anything.
-    pub fn check(&self) -> Result<(), Error> {
-        self.check_streams().map(drop)
-    }
-
-    /// [`Plan::check`], and which planned files are streams: an existing
-    /// device or FIFO (`/dev/null`, `/dev/stdout` on a pipe), written into
-    /// as it is, never replaced by a rename. A folder is refused.
-    fn check_streams(&self) -> Result<Vec<bool>, Error> {
+    /// Checks the whole plan, as [`Plan`] says, and tells which planned files
+    /// are streams: an existing device or FIFO (`/dev/null`, `/dev/stdout`
+    /// on a pipe), written into as it is, never replaced by a rename. A
+    /// folder is refused.
+    fn check(&self) -> Result<Vec<bool>, Error> {
         let mut streams = Vec::with_capacity(self.files.len());
         let mut existing = Vec::new();
         for (n, file) in self.files.iter().enumerate() {
@@ -102,7 +93,7 @@ impl Plan {
             let folder = folder_of(path);
             for candidate in [Some(path.as_path()), Some(folder)].into_iter().flatten() {
                 if let Some(identity) = Identity::of(candidate)
-                    && self.inputs.iter().any(|(_, input)| *input == identity)
+                    && self.inputs.contains(&identity)
                 {
                     return Err(Usage::OutputIsInput { folder: candidate.to_owned() }.into());
                 }
@@ -120,10 +111,7 @@ impl Plan {
         }
         if self.replace == Replace::Never && !existing.is_empty() {
             let folder = folder_of(&existing[0]).to_owned();
-            let files = existing
-                .iter()
-                .map(|p| crate::words::shown_path(Path::new(p.file_name().unwrap_or_default())))
-                .collect();
+            let files = existing.iter().map(|p| crate::words::shown_name(p)).collect();
             return Err(Usage::OutputWouldReplace { folder, files }.into());
         }
         Ok(streams)
@@ -131,10 +119,11 @@ impl Plan {
 
     /// Checks the plan, then writes it (see [`Plan`]); the paths written.
     pub fn write(self) -> Result<Vec<PathBuf>, Error> {
-        let streams = self.check_streams()?;
+        let is_stream = self.check()?;
+        let (streams, files): (Vec<_>, Vec<_>) = self.files.iter().zip(is_stream).partition(|(_, stream)| *stream);
         let _held = held::Interruptions::hold();
-        let mut staged = Vec::with_capacity(self.files.len());
-        for file in self.files.iter().zip(&streams).filter(|(_, stream)| !**stream).map(|(file, _)| file) {
+        let mut staged = Vec::with_capacity(files.len());
+        for (file, _) in &files {
             let folder = folder_of(&file.path);
             std::fs::create_dir_all(folder).map_err(|source| Error::Write { path: folder.to_owned(), source })?;
             let failed = |source| Error::Write { path: file.path.clone(), source };
@@ -152,8 +141,7 @@ impl Plan {
             staged.push(temporary);
         }
         let mut written = Vec::with_capacity(self.files.len());
-        let files = self.files.iter().zip(&streams).filter(|(_, stream)| !**stream).map(|(file, _)| file);
-        for (file, temporary) in files.zip(staged) {
+        for ((file, _), temporary) in files.into_iter().zip(staged) {
             let placed = match self.replace {
                 Replace::Allowed => temporary.persist(&file.path).map(drop),
                 Replace::Never => temporary.persist_noclobber(&file.path).map(drop),
@@ -170,7 +158,7 @@ impl Plan {
             written.push(file.path.clone());
         }
         // Streams last: what is written into them cannot be taken back.
-        for file in self.files.iter().zip(&streams).filter(|(_, stream)| **stream).map(|(file, _)| file) {
+        for (file, _) in streams {
             write_stream(&file.path, &file.bytes).map_err(|source| Error::Write { path: file.path.clone(), source })?;
             written.push(file.path.clone());
         }
@@ -232,13 +220,7 @@ fn folder_of(path: &Path) -> &Path {
 fn same_place(a: &Path, b: &Path) -> bool {
     match (Identity::of(a), Identity::of(b)) {
         (Some(a), Some(b)) => a == b,
-        _ => {
-            a.file_name() == b.file_name()
-                && match (Identity::of(folder_of(a)), Identity::of(folder_of(b))) {
-                    (Some(x), Some(y)) => x == y,
-                    _ => folder_of(a) == folder_of(b),
-                }
-        }
+        _ => a.file_name() == b.file_name() && same_folder(folder_of(a), folder_of(b)),
     }
 }
 

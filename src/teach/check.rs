@@ -37,8 +37,8 @@ pub fn read_answer(lang: Lang, path: &Path, scene: &Scene, buffer: Buffer, links
 /// class folder or the autograder keeps it stretches tables and is nobody's
 /// business), control characters escaped.
 pub fn as_the_student_sees(lang: Lang, error: &Error, path: &Path) -> String {
-    let file = path.file_name().map_or_else(|| crate::words::shown_path(path), |n| n.to_string_lossy().into_owned());
-    printable(&error.message(lang).replace(&crate::words::shown_path(path), &file)).into_owned()
+    printable(&error.message(lang).replace(&crate::words::shown_path(path), &crate::words::shown_name(path)))
+        .into_owned()
 }
 
 /// The answer files for the state after one polygon.
@@ -99,7 +99,7 @@ pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Erro
         match states.iter_mut().find(|state| state.after == after) {
             Some(state) => {
                 if let Some((_, other)) = state.files.iter().find(|(b, _)| *b == buffer) {
-                    let files = vec![printable(&file_name(other)).into_owned(), printable(&name).into_owned()];
+                    let files = vec![crate::words::shown_name(other), printable(&name).into_owned()];
                     return Err(Usage::SameAnswerTwice { folder: folder.to_owned(), files }.into());
                 }
                 state.files.push((buffer, path));
@@ -115,10 +115,6 @@ pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Erro
         state.files.sort_by_key(|(buffer, _)| *buffer != Buffer::Frame);
     }
     Ok(states)
-}
-
-fn file_name(path: &Path) -> String {
-    path.file_name().map_or_else(|| path.to_string_lossy().into_owned(), |n| n.to_string_lossy().into_owned())
 }
 
 /// Which states an autograded submission must answer, as the teacher sets

@@ -138,8 +138,7 @@ fn answer_files(class: &Path) -> Result<Vec<AnswerFile>, Error> {
             {
                 let student = printable(student).into_owned();
                 if let Some(other) = files.iter().find(|f: &&AnswerFile| f.student == student && f.buffer == buffer) {
-                    let names = [&other.path, &entry.path()]
-                        .map(|p| crate::words::shown_path(Path::new(p.file_name().unwrap_or_default())));
+                    let names = [&other.path, &entry.path()].map(|p| crate::words::shown_name(p));
                     return Err(
                         Usage::SameStudentTwice { class: class.to_path_buf(), student, files: names.to_vec() }.into()
                     );
@@ -190,11 +189,11 @@ fn submissions(
 /// ends as a submitted `NAME.frame.txt` or `NAME.depth.txt` does, nor is
 /// `common-mistakes.txt`. A name too long for a file system
 /// ([`crate::door::outward::MAX_NAME_BYTES`]) is cut at a character and
-/// told apart by a hash of the whole: `NAME…~1a2b3c4d.feedback.txt`.
+/// told apart by a hash of the whole: `NAME~1a2b3c4d.feedback.txt`.
 pub fn feedback_name(student: &str) -> String {
     const SUFFIX: &str = ".feedback.txt";
     let whole = format!("{student}{SUFFIX}");
-    if whole.len() <= crate::door::outward::MAX_NAME_BYTES && !student.contains('/') {
+    if whole.len() <= crate::door::outward::MAX_NAME_BYTES {
         return whole;
     }
     // FNV-1a, 32 bits: the same name gives the same file on every run.
@@ -202,7 +201,7 @@ pub fn feedback_name(student: &str) -> String {
     let tail = format!("~{hash:08x}{SUFFIX}");
     let room = crate::door::outward::MAX_NAME_BYTES - tail.len();
     let mut cut = String::new();
-    for c in student.chars().map(|c| if c == '/' { '_' } else { c }) {
+    for c in student.chars() {
         if cut.len() + c.len_utf8() > room {
             break;
         }

@@ -13,7 +13,7 @@
 //! answer one polygon early, rows written bottom first.
 
 use crate::numbers::{Q, floor_div};
-use crate::observe::check::Matrix;
+use crate::observe::check::{HINTED_CELLS, Matrix};
 use crate::raster::depth::{Depth, DepthTest, Stored};
 use crate::rules::{ColumnRule, Compare, DepthStore};
 use crate::scene::Scene;
@@ -114,12 +114,6 @@ pub fn diagnose(scene: &Scene, last: usize, frame: Option<&Matrix>, depth: Optio
     Diagnoser::new(scene, last)?.diagnose(frame, depth)
 }
 
-/// The largest raster whose wrong cells are traced to a likely
-/// misconception, 1024 × 1024: the diagnosis holds the buffers of every
-/// wrong rule at once, so it is for homework-sized scenes; a larger one is
-/// checked cell by cell all the same, without the likely cause.
-pub const DIAGNOSED_CELLS: u64 = 1 << 20;
-
 /// The right buffers and those of every wrong rule, for one scene and
 /// polygon, drawn once and then held against any number of answers.
 #[derive(Debug, Clone)]
@@ -132,10 +126,11 @@ impl Diagnoser {
     /// Draws the scene under every wrong rule; `None` when the scene is
     /// outside what they are defined for (an exact z-buffer, per-pixel
     /// effects, a test other than `greater` or `less`) or larger than
-    /// [`DIAGNOSED_CELLS`].
+    /// [`HINTED_CELLS`] (the diagnosis holds the buffers of every wrong rule
+    /// at once).
     pub fn new(scene: &Scene, last: usize) -> Option<Diagnoser> {
         let cells = u64::from(scene.width) * u64::from(scene.height);
-        if !applies(scene) || last >= scene.polygons.len() || cells > DIAGNOSED_CELLS {
+        if !applies(scene) || last >= scene.polygons.len() || cells > HINTED_CELLS {
             return None;
         }
         let right = state(scene, last);

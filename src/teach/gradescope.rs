@@ -116,10 +116,8 @@ pub fn results(
                 Err(error) => (0, false, format!("{}\n", as_the_student_sees(lang, &error, path))),
             },
             several => {
-                let names: Vec<String> = several
-                    .iter()
-                    .map(|p| format!("\"{}\"", crate::words::shown_path(Path::new(p.file_name().unwrap_or_default()))))
-                    .collect();
+                let names: Vec<String> =
+                    several.iter().map(|p| format!("\"{}\"", crate::words::shown_name(p))).collect();
                 (0, false, words!(lang, "gradescope-ambiguous", files = names.join(", ")) + "\n")
             }
         };

@@ -34,6 +34,13 @@ pub fn path(path: &Path) -> String {
     printable(&path.to_string_lossy()).into_owned()
 }
 
+/// A file's name as a message shows it, without its folder (where a class
+/// folder or an autograder keeps it is nobody's business): [`path`] of the
+/// last component, or of the whole path when it has none.
+pub fn name(file: &Path) -> String {
+    path(file.file_name().map_or(file, Path::new))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -124,14 +124,21 @@ impl Misreading {
     }
 }
 
+/// The largest raster, in cells, on which a wrong answer is looked at for
+/// more than its wrong cells (a misreading here, the likely misconception in
+/// the diagnosis): 1024 × 1024. Both hold several more buffers of the
+/// raster at once, so they are for homework-sized scenes; a larger answer is
+/// checked cell by cell all the same.
+pub const HINTED_CELLS: u64 = 1 << 20;
+
 /// When an answer that differs would match, or nearly, read another way:
 /// bottom row first (upside down) or with rows and columns swapped. Returns
 /// how it was written and how many cells differ when read that way; not
-/// looked for past 1,048,576 cells (two more copies of the answer).
+/// looked for past [`HINTED_CELLS`] (two more copies of the answer).
 pub fn misreading(answer: &Matrix, expected: &Matrix) -> Option<(Misreading, usize)> {
-    // A right answer was read right; a raster past a million cells is not read twice more.
+    // A right answer was read right.
     let cells: usize = answer.iter().map(Vec::len).sum();
-    if cells > 1 << 20 {
+    if cells as u64 > HINTED_CELLS {
         return None;
     }
     let differing = compare(answer, expected).len();

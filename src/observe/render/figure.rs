@@ -98,8 +98,14 @@ pub fn svg_with(
     let sy = |y: Q| decimal(Q::from_integer(top) + (Q::from_integer(height) - y) * CELL, 2);
     let int = |v: i128| Q::from_integer(v);
     // The same for a vertex, exact however large (clip space may make it so).
-    let vx = |x: &Exact| decimal(Exact::Word(int(left)).plus(&x.times(CELL)), 2);
-    let vy = |y: &Exact| decimal(Exact::Word(int(top + height * CELL)).minus(&y.times(CELL)), 2);
+    let svg_x = |x: &Exact| Exact::Word(int(left)).plus(&x.times(CELL));
+    let svg_y = |y: &Exact| Exact::Word(int(top + height * CELL)).minus(&y.times(CELL));
+    let vx = |x: &Exact| decimal(svg_x(x), 2);
+    let vy = |y: &Exact| decimal(svg_y(y), 2);
+    // An outline reaching far past the picture (a vertex near the eye in
+    // perspective) is cut to a box around it: the picture shows the same
+    // lines, and every coordinate stays within what TeX can hold.
+    let reach = (total_width.max(total_height) * 2) as f64;
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -182,21 +188,19 @@ pub fn svg_with(
             // Clipped away in clip space: nothing on the raster to outline.
             continue;
         }
-        let mut points: Vec<String> =
-            polygon.vertices().iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect();
-        // An outline reaching far past the picture (a vertex near the eye in
-        // perspective) is cut to a box around it: the picture shows the same
-        // lines, and every coordinate stays within what TeX can hold.
-        let reach = (total_width.max(total_height) * 2) as f64;
-        let bound = [-reach, -reach, reach, reach];
-        let at = |text: &str| -> (f64, f64) {
-            let (x, y) = text.split_once(',').unwrap_or((text, text));
-            (x.parse().unwrap_or(0.0), y.parse().unwrap_or(0.0))
+        let corners: Vec<(f64, f64)> = polygon
+            .vertices()
+            .iter()
+            .map(|v| (crate::numbers::to_f64(svg_x(&v[0])), crate::numbers::to_f64(svg_y(&v[1]))))
+            .collect();
+        let points: Vec<String> = if corners.iter().any(|(x, y)| x.abs() > reach || y.abs() > reach) {
+            clip_to_box(&corners, [-reach, -reach, reach, reach])
+                .iter()
+                .map(|(x, y)| format!("{x:.2},{y:.2}"))
+                .collect()
+        } else {
+            polygon.vertices().iter().map(|v| format!("{},{}", vx(&v[0]), vy(&v[1]))).collect()
         };
-        let corners: Vec<(f64, f64)> = points.iter().map(|p| at(p)).collect();
-        if corners.iter().any(|&(x, y)| x.abs() > reach || y.abs() > reach) {
-            points = clip_to_box(&corners, bound).iter().map(|(x, y)| format!("{x:.2},{y:.2}")).collect();
-        }
         // An unnamed polygon is labelled by its number alone, titled in the reader's language.
         let unnamed = crate::words::is_default_name(&polygon.name, index);
         let title = if unnamed {
