@@ -146,24 +146,11 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
 pub fn report_text(lang: zsim::Lang, report: &CheckReport) -> String {
     let mut text = String::new();
     for answer in &report.answers {
-        let (buffer, file, cells, after) = (answer.buffer.name(lang), &answer.file, report.cells, &report.after);
+        text.push_str(&format!("{}\n", report.verdict(lang, answer)));
         if answer.wrong.is_empty() {
-            let line =
-                zsim::words!(lang, "check-all-match", buffer = buffer, file = file, cells = cells, after = after);
-            text.push_str(&format!("{line}\n"));
             continue;
         }
         let count = answer.differing;
-        let line = zsim::words!(
-            lang,
-            "check-differ",
-            buffer = buffer,
-            file = file,
-            count = count,
-            cells = cells,
-            after = after
-        );
-        text.push_str(&format!("{line}\n"));
         if let Some(hint) = &answer.hint {
             text.push_str(&format!("{hint}\n"));
         }

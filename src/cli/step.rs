@@ -52,13 +52,17 @@ enum QuizMode {
 }
 
 pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let scene = Scene::load(lang, &args.scene)?;
+    let text = zsim::read_text(lang, &args.scene)?;
+    let scene = Scene::from_json(lang, &text, &args.scene)?;
     zsim::arith::check_supported(&scene, args.arith)?;
     let color = super::use_color();
     let mut stepper = Stepper::new(&scene, args.arith);
     if let (true, Some(output)) = (args.html, &args.output) {
         let name = args.scene.file_name().map_or_else(|| zsim::shown_path(&args.scene), |n| n.to_string_lossy().into());
-        let page = zsim::page::page(lang, &mut stepper, &name);
+        // The playground where this zsim was built with it (exact arithmetic only); the recorded stepper otherwise.
+        let playground =
+            (args.arith == zsim::arith::Arith::Exact).then(|| zsim::playground::one_file_page(lang, &text));
+        let page = playground.flatten().unwrap_or_else(|| zsim::page::page(lang, &mut stepper, &name));
         let mut plan = zsim::Plan::new(&[&args.scene], zsim::Replace::Allowed);
         plan.file(output, page);
         plan.write()?;

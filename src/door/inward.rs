@@ -71,14 +71,19 @@ impl Identity {
 /// handle on the folder, and must stay inside it.
 pub struct Folder {
     path: PathBuf,
+    #[cfg(not(target_arch = "wasm32"))]
     dir: cap_std::fs::Dir,
 }
 
 impl Folder {
     /// The folder at `path`.
     pub fn open(path: &Path) -> Result<Folder, Error> {
+        #[cfg(target_arch = "wasm32")]
+        return Err(Error::Read { path: path.to_owned(), source: std::io::ErrorKind::Unsupported.into() });
+        #[cfg(not(target_arch = "wasm32"))]
         let dir = cap_std::fs::Dir::open_ambient_dir(path, cap_std::ambient_authority())
             .map_err(|source| Error::Read { path: path.to_owned(), source })?;
+        #[cfg(not(target_arch = "wasm32"))]
         Ok(Folder { path: path.to_owned(), dir })
     }
 
@@ -107,6 +112,15 @@ impl Folder {
         if !plain {
             return Err(Error::OutsideFolder { path, folder: self.path.clone() });
         }
+        #[cfg(target_arch = "wasm32")]
+        return Err(Error::Read { path, source: std::io::ErrorKind::Unsupported.into() });
+        #[cfg(not(target_arch = "wasm32"))]
+        self.read_plain(path, relative)
+    }
+
+    /// [`Folder::read`] of a name known to be plain.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn read_plain(&self, path: PathBuf, relative: &Path) -> Result<(Vec<u8>, Identity), Error> {
         let failed = |source| Error::Read { path: path.clone(), source };
         let metadata = self.dir.symlink_metadata(relative).map_err(failed)?;
         if metadata.is_symlink() {
@@ -205,6 +219,7 @@ fn read_open_file(path: &Path, file: &std::fs::File) -> Result<Vec<u8>, Error> {
 /// Files at least this long are read in two halves at once, where the
 /// system allows it: copying a file out of the page cache into fresh memory
 /// takes a core's time.
+#[cfg(unix)]
 const READ_IN_HALVES: u64 = 1 << 22;
 
 /// A file of `length` bytes read in two halves on two threads, when it is

@@ -129,12 +129,15 @@ impl Plan {
             let failed = |source| Error::Write { path: file.path.clone(), source };
             let mut builder = tempfile::Builder::new();
             builder.prefix(".zsim-");
+            // The mode a new file gets (0666, or 0777 for a script, less the umask), not a temporary file's 0600.
+            let mode = if file.executable { 0o777 } else { 0o666 };
             #[cfg(unix)]
             {
-                // The mode a new file gets (0666, or 0777 for a script, less the umask), not a temporary file's 0600.
                 use std::os::unix::fs::PermissionsExt;
-                builder.permissions(std::fs::Permissions::from_mode(if file.executable { 0o777 } else { 0o666 }));
+                builder.permissions(std::fs::Permissions::from_mode(mode));
             }
+            #[cfg(not(unix))]
+            let _ = mode;
             let mut temporary = builder.tempfile_in(folder).map_err(failed)?;
             temporary.write_all(&file.bytes).map_err(failed)?;
             temporary.as_file().sync_data().map_err(failed)?;

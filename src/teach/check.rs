@@ -21,6 +21,12 @@ use crate::words::printable;
 /// prints it; a symbolic link is followed only where `links` says so.
 pub fn read_answer(lang: Lang, path: &Path, scene: &Scene, buffer: Buffer, links: Links) -> Result<Matrix, Error> {
     let text = read_text_with(lang, path, links)?;
+    answer_from_text(lang, &text, scene, buffer).map_err(|message| Error::Answer { path: path.to_owned(), message })
+}
+
+/// An answer for one of `scene`'s buffers read from `text` (a file's, or one
+/// typed into the page); `Err` says why not, in `lang`.
+pub fn answer_from_text(lang: Lang, text: &str, scene: &Scene, buffer: Buffer) -> Result<Matrix, String> {
     let (max, description) = match buffer {
         Buffer::Frame => (
             crate::scene::max_for_bits(scene.frame_bits),
@@ -28,8 +34,7 @@ pub fn read_answer(lang: Lang, path: &Path, scene: &Scene, buffer: Buffer, links
         ),
         Buffer::Depth => (scene.depth_max(), words!(lang, "answer-depth-range", bits = scene.depth_bits.to_string())),
     };
-    parse_answer(lang, &text, scene.width, scene.height, CellRange { max, buffer: &description })
-        .map_err(|message| Error::Answer { path: path.to_owned(), message })
+    parse_answer(lang, text, scene.width, scene.height, CellRange { max, buffer: &description })
 }
 
 /// An error about a student's answer file as the student and the class
@@ -274,6 +279,17 @@ impl CheckReport {
     /// Whether any cell differs.
     pub fn differs(&self) -> bool {
         self.wrong() > 0
+    }
+
+    /// The verdict on one of its answers, one line in `lang`: all cells match,
+    /// or how many differ.
+    pub fn verdict(&self, lang: Lang, answer: &AnswerCheck) -> String {
+        let (buffer, file, cells, after) = (answer.buffer.name(lang), &answer.file, self.cells, &self.after);
+        if answer.wrong.is_empty() {
+            return words!(lang, "check-all-match", buffer = buffer, file = file, cells = cells, after = after);
+        }
+        let count = answer.differing;
+        words!(lang, "check-differ", buffer = buffer, file = file, count = count, cells = cells, after = after)
     }
 }
 

@@ -10,5 +10,6 @@ pub mod grade;
 pub mod gradebooks;
 pub mod gradescope;
 pub mod page;
+pub mod playground;
 pub mod step;
 pub mod stop;

@@ -17,34 +17,7 @@ use crate::words::Lang;
 /// The page for the whole scene: every scanline that covers a pixel, in order.
 pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
     let scene = stepper.scene();
-    let mut stops = Vec::new();
-    let mut moved = stepper.start(None);
-    while let Moved::To { at: Some(stop), .. } = moved {
-        let record = stepper.tracer().record(stop).clone();
-        let buffers = stepper.tracer().buffers_after(stop);
-        let pixels: Vec<serde_json::Value> = record
-            .pixels
-            .iter()
-            .map(|e| {
-                serde_json::json!({
-                    "x": e.x, "z": exact_and_decimal(lang, e.depth.value()), "stored": e.stored_before.text(lang),
-                    "written": e.outcome == Outcome::Written, "after": e.stored_after.text(lang),
-                    "afterExact": crate::numbers::fraction(e.stored_after.value()), "frame": e.frame_after,
-                    "frameBefore": e.frame_before,
-                    "reason": pixel_reason(lang, scene, e),
-                })
-            })
-            .collect();
-        let stop_words = stepper.stop_words(lang, stop);
-        stops.push(serde_json::json!({
-            "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
-            "scanline": stop_words.scanline, "crossings": stop_words.crossings, "spans": stop_words.spans,
-            "pixels": pixels,
-            "frame": buffers.frame_rows(),
-            "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
-        }));
-        moved = stepper.forward();
-    }
+    let stops = stops(lang, stepper);
     // The page's words, in the student's language; {…} marks what the script fills in.
     let words = serde_json::json!({
         "noPixel": words!(lang, "page-no-pixel"),
@@ -76,11 +49,47 @@ pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
     format!("{}{}{}", fill(lang, head, title), embedded_json(&data), fill(lang, tail, title))
 }
 
+/// Every stop of the scene (each scanline that covers a pixel, in order) as
+/// data for a page: its heading, crossings and spans in words, each pixel's
+/// depth, test and reason, and both buffers after it, top row first.
+pub fn stops(lang: Lang, stepper: &mut Stepper<'_>) -> Vec<serde_json::Value> {
+    let scene = stepper.scene();
+    let mut stops = Vec::new();
+    let mut moved = stepper.start(None);
+    while let Moved::To { at: Some(stop), .. } = moved {
+        let record = stepper.tracer().record(stop).clone();
+        let buffers = stepper.tracer().buffers_after(stop);
+        let pixels: Vec<serde_json::Value> = record
+            .pixels
+            .iter()
+            .map(|e| {
+                serde_json::json!({
+                    "x": e.x, "z": exact_and_decimal(lang, e.depth.value()), "stored": e.stored_before.text(lang),
+                    "written": e.outcome == Outcome::Written, "after": e.stored_after.text(lang),
+                    "afterExact": crate::numbers::fraction(e.stored_after.value()), "frame": e.frame_after,
+                    "frameBefore": e.frame_before,
+                    "reason": pixel_reason(lang, scene, e),
+                })
+            })
+            .collect();
+        let stop_words = stepper.stop_words(lang, stop);
+        stops.push(serde_json::json!({
+            "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
+            "scanline": stop_words.scanline, "crossings": stop_words.crossings, "spans": stop_words.spans,
+            "pixels": pixels,
+            "frame": buffers.frame_rows(),
+            "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        }));
+        moved = stepper.forward();
+    }
+    stops
+}
+
 /// Markup's special characters written as JSON escapes (`<` as `\u003c`, …),
 /// so that no string in the data can end the `<script>` element holding it
 /// (`</script>`), open a comment that hides its end (`<!--`) or start an
 /// entity; the JSON reads the same.
-fn embedded_json(json: &str) -> String {
+pub(crate) fn embedded_json(json: &str) -> String {
     json.replace('<', "\\u003c").replace('>', "\\u003e").replace('&', "\\u0026")
 }
 

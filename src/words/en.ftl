@@ -879,3 +879,46 @@ check-more-cells = … and { $count } more { $count ->
     [one] cell differs
    *[other] cells differ
 }, not listed
+
+## The browser playground
+play-title = zsim playground: the z-buffer, step by step
+play-intro = Edit the scene on the left; every buffer below is drawn by zsim's own library, compiled for your browser.
+play-language = Language
+play-scene = Scene
+play-width = width
+play-height = height
+play-frame-bits = framebuffer bits
+play-depth-bits = z-buffer bits
+play-depth-test = depth test
+play-preset = rules
+play-preset-none = the book's
+play-snap = snap to
+play-polygon = polygon
+play-value = value
+play-add-polygon = + polygon
+play-remove-polygon = − polygon
+play-add-vertex = + vertex
+play-remove-vertex = − vertex
+play-json = Scene JSON
+play-share = Copy a link to this scene
+play-shared = The link is in the address bar: copy it from there.
+play-buffers = Buffers after each polygon
+play-final = Final buffers (as zsim run --final prints them)
+play-grid = The raster
+play-grid-help = Drag a vertex to move it; click a pixel to see its history.
+play-explain = The pixel's history
+play-stepper = Scanline by scanline
+play-figure = The figure
+play-homework = Check a homework answer
+play-homework-help = Type or paste the matrix as the book prints it, top row first.
+play-check = Check
+play-after = after
+play-coverage = covered columns (e.g. 16-27, or -)
+play-your-answer = your answer
+play-too-large = This scene is too large to show cell by cell (more than { $cells } pixels or { $polygons } polygons): only the final buffers are shown.
+play-no-antialias = This page draws the scene without its antialiasing; zsim run shows the antialiased pictures.
+play-no-such-stop = There is no such stop in this scene any more: it was edited.
+play-no-polygon = There is no such polygon in this scene.
+play-not-json = The scene is not JSON: { $reason }
+play-bad-edit = That change does not fit this scene's JSON.
+play-bad-address = The address does not hold a scene: #scene= must be followed by the scene's JSON in base64url.

@@ -857,3 +857,46 @@ check-more-cells = … и ещё { $count } { $count ->
     [few] ячейки отличаются
    *[other] ячеек отличаются
 }, не перечислены
+
+## The browser playground
+play-title = Песочница zsim: z-буфер шаг за шагом
+play-intro = Меняйте сцену слева; все буферы ниже рисует библиотека zsim, скомпилированная для вашего браузера.
+play-language = Язык
+play-scene = Сцена
+play-width = ширина
+play-height = высота
+play-frame-bits = бит буфера кадра
+play-depth-bits = бит z-буфера
+play-depth-test = тест глубины
+play-preset = правила
+play-preset-none = как в книге
+play-snap = шаг сетки
+play-polygon = многоугольник
+play-value = значение
+play-add-polygon = + многоугольник
+play-remove-polygon = − многоугольник
+play-add-vertex = + вершина
+play-remove-vertex = − вершина
+play-json = JSON сцены
+play-share = Ссылка на эту сцену
+play-shared = Ссылка — в адресной строке: скопируйте её оттуда.
+play-buffers = Буферы после каждого многоугольника
+play-final = Итоговые буферы (как их печатает zsim run --final)
+play-grid = Растр
+play-grid-help = Перетащите вершину, чтобы сдвинуть её; щёлкните пиксел, чтобы увидеть его историю.
+play-explain = История пиксела
+play-stepper = Строка за строкой
+play-figure = Рисунок
+play-homework = Проверить домашнее задание
+play-homework-help = Введите или вставьте матрицу так, как её печатает книга, начиная с верхней строки.
+play-check = Проверить
+play-after = после
+play-coverage = покрытые столбцы (например, 16-27 или -)
+play-your-answer = ваш ответ
+play-too-large = Сцена слишком велика, чтобы показать её по ячейкам (больше { $cells } пикселов или { $polygons } многоугольников): показаны только итоговые буферы.
+play-no-antialias = Эта страница рисует сцену без сглаживания; сглаженные изображения показывает zsim run.
+play-no-such-stop = Такой остановки в сцене больше нет: сцену изменили.
+play-no-polygon = Такого многоугольника в сцене нет.
+play-not-json = Сцена — не JSON: { $reason }
+play-bad-edit = Это изменение не подходит к JSON этой сцены.
+play-bad-address = В адресе нет сцены: после #scene= должен идти JSON сцены в base64url.

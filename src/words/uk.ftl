@@ -857,3 +857,46 @@ check-more-cells = … і ще { $count } { $count ->
     [few] клітинки відрізняються
    *[other] клітинок відрізняються
 }, не перелічено
+
+## The browser playground
+play-title = Пісочниця zsim: z-буфер крок за кроком
+play-intro = Змінюйте сцену ліворуч; усі буфери нижче малює бібліотека zsim, скомпільована для вашого браузера.
+play-language = Мова
+play-scene = Сцена
+play-width = ширина
+play-height = висота
+play-frame-bits = бітів буфера кадру
+play-depth-bits = бітів z-буфера
+play-depth-test = тест глибини
+play-preset = правила
+play-preset-none = як у книзі
+play-snap = крок сітки
+play-polygon = многокутник
+play-value = значення
+play-add-polygon = + многокутник
+play-remove-polygon = − многокутник
+play-add-vertex = + вершина
+play-remove-vertex = − вершина
+play-json = JSON сцени
+play-share = Посилання на цю сцену
+play-shared = Посилання — в адресному рядку: скопіюйте його звідти.
+play-buffers = Буфери після кожного многокутника
+play-final = Підсумкові буфери (як їх друкує zsim run --final)
+play-grid = Растр
+play-grid-help = Перетягніть вершину, щоб зсунути її; клацніть піксель, щоб побачити його історію.
+play-explain = Історія пікселя
+play-stepper = Рядок за рядком
+play-figure = Рисунок
+play-homework = Перевірити домашнє завдання
+play-homework-help = Введіть або вставте матрицю так, як її друкує книга, починаючи з верхнього рядка.
+play-check = Перевірити
+play-after = після
+play-coverage = покриті стовпці (наприклад, 16-27 або -)
+play-your-answer = ваша відповідь
+play-too-large = Сцена завелика, щоб показати її по клітинках (понад { $cells } пікселів або { $polygons } многокутників): показано лише підсумкові буфери.
+play-no-antialias = Ця сторінка малює сцену без згладжування; згладжені зображення показує zsim run.
+play-no-such-stop = Такої зупинки в сцені більше немає: сцену змінили.
+play-no-polygon = Такого многокутника в сцені немає.
+play-not-json = Сцена — не JSON: { $reason }
+play-bad-edit = Ця зміна не пасує до JSON цієї сцени.
+play-bad-address = В адресі немає сцени: після #scene= має йти JSON сцени в base64url.

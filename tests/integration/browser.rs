@@ -12,7 +12,7 @@ use zsim::step::{Moved, Stepper, judge_depth};
 use zsim::{Outcome, Scene};
 
 /// chromedriver on a free loopback port, ended when dropped.
-struct Driver {
+pub struct Driver {
     child: Child,
     port: u16,
 }
@@ -25,7 +25,7 @@ impl Drop for Driver {
 }
 
 /// chromedriver and Chromium, or `None` after saying which is missing.
-fn driver() -> Option<(Driver, PathBuf)> {
+pub fn driver() -> Option<(Driver, PathBuf)> {
     let browser =
         ["/usr/bin/chromium", "/usr/bin/chromium-browser"].into_iter().map(PathBuf::from).find(|p| p.exists());
     let found = |name: &str| Command::new(name).arg("--version").output().is_ok_and(|o| o.status.success());
@@ -54,11 +54,18 @@ fn driver() -> Option<(Driver, PathBuf)> {
 
 /// A headless Chromium session that reaches nothing outside this machine.
 async fn session(driver: &Driver, browser: &Path, profile: &Path) -> Client {
+    session_as(driver, browser, profile, "en-US", (1280, 900)).await
+}
+
+/// [`session`] in a browser whose language is `lang`, with a window of `size` (width, height).
+pub async fn session_as(driver: &Driver, browser: &Path, profile: &Path, lang: &str, size: (u32, u32)) -> Client {
     let options = serde_json::json!({
         "binary": browser,
         "args": ["--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--no-first-run",
                  "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                 "--lang=en-US", "--window-size=1280,900", format!("--user-data-dir={}", profile.display())],
+                 format!("--lang={lang}"), format!("--window-size={},{}", size.0, size.1),
+                 format!("--user-data-dir={}", profile.display())],
+        "prefs": {"intl.accept_languages": lang},
     });
     let mut capabilities = serde_json::Map::new();
     capabilities.insert("goog:chromeOptions".to_string(), options);
@@ -69,11 +76,11 @@ async fn session(driver: &Driver, browser: &Path, profile: &Path) -> Client {
         .expect("a WebDriver session")
 }
 
-async fn text(client: &Client, css: &str) -> String {
+pub async fn text(client: &Client, css: &str) -> String {
     client.find(Locator::Css(css)).await.unwrap().text().await.unwrap()
 }
 
-async fn click(client: &Client, css: &str) {
+pub async fn click(client: &Client, css: &str) {
     client.find(Locator::Css(css)).await.unwrap().click().await.unwrap();
 }
 
@@ -99,19 +106,15 @@ fn the_step_page_is_clicked_and_typed_through_as_the_library_judges() {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("browser-step");
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
+    // The recorded stepper's page, as `zsim step --html` writes it where zsim was built without the playground.
     let page = dir.join("step.html");
-    let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .args(["step", "examples/rogers.json", "--html", "-o"])
-        .arg(&page)
-        .env("LC_ALL", "C")
-        .output()
-        .unwrap();
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-
-    // What the library says of each answer, pixel by pixel, on the triangle's scanline 15.
     let scene =
         Scene::load(zsim::Lang::En, &Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/rogers.json")).unwrap();
+    let recorded =
+        zsim::page::page(zsim::Lang::En, &mut Stepper::new(&scene, zsim::arith::Arith::Exact), "rogers.json");
+    std::fs::write(&page, recorded).unwrap();
+
+    // What the library says of each answer, pixel by pixel, on the triangle's scanline 15.
     let mut stepper = Stepper::new(&scene, zsim::arith::Arith::Exact);
     stepper.start(None);
     while stepper.record().is_some_and(|r| r.index != 1 || r.row != 15) {

@@ -30,6 +30,7 @@ mod hardening;
 mod languages;
 mod layers;
 mod platforms;
+mod playground;
 mod run_command;
 mod stability;
 mod teaching;

@@ -1,0 +1,550 @@
+//! The browser playground's side in the library: everything the page shows
+//! of a scene, as data made here from the scene's JSON text, so that the
+//! page (compiled to WebAssembly with this library) renders facts and holds
+//! no rule of its own. Each function takes the scene as text, exactly as the
+//! page's editor holds it, and answers with JSON: the buffers after each
+//! polygon and at the end (as `zsim run --final` prints them), the stepper's
+//! stops, the quiz's verdicts, a homework answer's check, a pixel's history,
+//! the book-style figure, an edit of the scene, and the page's words.
+//!
+//! A scene is named [`SCENE_NAME`] in messages, where the command line names
+//! its file. A scene travels in a page's address as `#scene=` and the scene
+//! JSON in base64url (RFC 4648 §5, padding optional): [`fragment_of`] and
+//! [`scene_of_fragment`].
+
+use std::path::Path;
+
+use base64::Engine as _;
+use serde_json::{Value, json};
+
+use crate::effects::arith::Arith;
+use crate::observe::explain::Buffer;
+use crate::observe::explain::history::{Extras, history};
+use crate::observe::render::figure::{self, Shading};
+use crate::observe::render::report::{self, MatrixCell, MatrixStyle};
+use crate::scene::Scene;
+use crate::simulate::events::Unobserved;
+use crate::simulate::simulation::Simulation;
+use crate::teach::check::answer_from_text;
+use crate::teach::step::{Moved, Stepper, judge_coverage, judge_depth, judge_frame};
+use crate::words::{Lang, polygon_label};
+
+/// How a scene typed into the page is named in messages.
+pub const SCENE_NAME: &str = "scene.json";
+
+/// The largest raster the page shows cell by cell (each polygon's buffers,
+/// every stop): 128 × 128. A larger scene is still drawn and its final
+/// buffers shown.
+pub const MAX_SHOWN_CELLS: u64 = 128 * 128;
+
+/// The most polygons whose buffers the page shows one by one.
+pub const MAX_SHOWN_POLYGONS: usize = 64;
+
+/// The scene read from `text`, or its error worded as the command line words it.
+fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
+    Scene::from_json(lang, text, Path::new(SCENE_NAME))
+        .map_err(|error| json!({"ok": false, "error": error.message(lang)}))
+}
+
+/// A matrix exactly as `zsim run --final` prints it bare (top row first).
+fn matrix_text<T: MatrixCell>(rows: &[Vec<T>]) -> String {
+    report::matrix_styled(rows, &MatrixStyle::default())
+}
+
+/// Everything the page shows of the scene in `text`: its settings and
+/// header, each polygon's outline in pixel units, the buffers after each
+/// polygon, the final buffers as `zsim run --final` prints them
+/// (`framebuffer`, `zbuffer`), the stepper's stops and the figure; or
+/// `{"ok": false, "error": …}` with the scene's error.
+pub fn view(lang: Lang, text: &str) -> Value {
+    let scene = match scene_of(lang, text) {
+        Ok(scene) => scene,
+        Err(error) => return error,
+    };
+    let cells = u64::from(scene.width) * u64::from(scene.height);
+    let shown = cells <= MAX_SHOWN_CELLS && scene.polygons.len() <= MAX_SHOWN_POLYGONS;
+    let polygons: Vec<Value> = scene
+        .polygons
+        .iter()
+        .enumerate()
+        .map(|(index, polygon)| {
+            let outline: Vec<[f64; 2]> = polygon
+                .vertices()
+                .iter()
+                .map(|v| [crate::numbers::to_f64(&v[0]), crate::numbers::to_f64(&v[1])])
+                .collect();
+            json!({"name": polygon.name, "label": polygon_label(lang, "polygon-after", index, &polygon.name),
+                   "value": polygon.value, "outline": outline})
+        })
+        .collect();
+    let mut simulation = Simulation::new(&scene);
+    let mut after = Vec::new();
+    while let Some(drawn) = simulation.draw_next_counted(&mut Unobserved) {
+        if shown {
+            let buffers = simulation.buffers();
+            after.push(json!({
+                "heading": report::polygon_heading(lang, &scene, drawn.index),
+                "counts": words!(lang, "run-counts", covered = drawn.tested.to_string(), written = drawn.written.to_string()),
+                "frame": buffers.frame_rows(),
+                "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
+            }));
+        }
+    }
+    let buffers = simulation.buffers();
+    let last = scene.polygons.len().checked_sub(1);
+    let figure = match last {
+        Some(last) if shown => Some(figure::svg(lang, &scene, buffers, last, Shading::Frame, SCENE_NAME)),
+        _ => None,
+    };
+    let stops =
+        if shown { crate::teach::page::stops(lang, &mut Stepper::new(&scene, Arith::Exact)) } else { Vec::new() };
+    let mut notes = Vec::new();
+    if !shown {
+        notes.push(words!(
+            lang,
+            "play-too-large",
+            cells = MAX_SHOWN_CELLS.to_string(),
+            polygons = MAX_SHOWN_POLYGONS.to_string()
+        ));
+    }
+    if scene.effects.antialias.is_some() {
+        notes.push(words!(lang, "play-no-antialias"));
+    }
+    json!({
+        "ok": true,
+        "header": report::scene_header(lang, &scene, SCENE_NAME),
+        "width": scene.width, "height": scene.height,
+        "frameBits": scene.frame_bits, "depthBits": scene.depth_bits,
+        "depthTest": scene.depth_test.local_name(lang), "op": scene.depth_test.symbol(),
+        "polygons": polygons, "after": after,
+        "framebuffer": matrix_text(&buffers.frame_rows()),
+        "zbuffer": matrix_text(&buffers.depth_rows()),
+        "stops": stops, "figure": figure, "notes": notes,
+    })
+}
+
+/// The stop numbered `stop` (0-based, in the stepper's order) and its record.
+fn stop_record(scene: &Scene, stop: usize) -> Option<crate::observe::trace::ScanlineRecord> {
+    let mut stepper = Stepper::new(scene, Arith::Exact);
+    let mut moved = stepper.start(None);
+    for _ in 0..stop {
+        moved = stepper.forward();
+    }
+    match moved {
+        Moved::To { at: Some(at), .. } => Some(stepper.tracer().record(at).clone()),
+        _ => None,
+    }
+}
+
+/// The quiz's question on the scene in `text`, at stop `stop`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Question {
+    /// Which columns the scanline covers.
+    Coverage,
+    /// What the z-buffer holds after pixel number `pixel` of the stop.
+    Depth(usize),
+    /// What the framebuffer holds after pixel number `pixel` of the stop.
+    Frame(usize),
+}
+
+/// The library's verdict on `typed` as the answer to `question` at stop
+/// `stop`: `{"right": bool, "expected", "why", "line"}`, or `{"again": …}`
+/// with the reason to ask again (not an answer, or a value no cell holds),
+/// or `{"ok": false, "error"}`.
+pub fn judge(lang: Lang, text: &str, stop: usize, question: Question, typed: &str) -> Value {
+    let scene = match scene_of(lang, text) {
+        Ok(scene) => scene,
+        Err(error) => return error,
+    };
+    let Some(record) = stop_record(&scene, stop) else {
+        return json!({"ok": false, "error": words!(lang, "play-no-such-stop")});
+    };
+    let typed = typed.trim();
+    let pixel = |number: usize| record.pixels.get(number);
+    let judged = match question {
+        Question::Coverage => judge_coverage(lang, &record, typed),
+        Question::Depth(number) | Question::Frame(number) => {
+            let Some(pixel) = pixel(number) else {
+                return json!({"ok": false, "error": words!(lang, "play-no-such-stop")});
+            };
+            match question {
+                Question::Frame(_) => judge_frame(lang, &scene, pixel, typed),
+                _ => judge_depth(lang, &scene, pixel, typed),
+            }
+        }
+    };
+    match judged {
+        Err(again) => json!({"ok": true, "again": again}),
+        Ok((right, _, expected, why)) => {
+            let line = if right { words!(lang, "page-right") } else { words!(lang, "page-wrong") };
+            json!({"ok": true, "right": right, "expected": expected, "why": why, "line": format!("{line}{why}")})
+        }
+    }
+}
+
+/// A homework answer for `buffer` after polygon number `after` (0-based),
+/// typed or pasted as the book prints a matrix, checked as `zsim check`
+/// checks a file: `{"verdict", "hint", "wrong": [{x, y, answer, expected,
+/// reason}], "more", "diagnosis"}`, or `{"ok": false, "error"}` for a scene
+/// or an answer that cannot be read.
+pub fn check(lang: Lang, text: &str, after: usize, buffer: Buffer, typed: &str) -> Value {
+    let scene = match scene_of(lang, text) {
+        Ok(scene) => scene,
+        Err(error) => return error,
+    };
+    if after >= scene.polygons.len() {
+        return json!({"ok": false, "error": words!(lang, "play-no-polygon")});
+    }
+    let answer = match answer_from_text(lang, typed, &scene, buffer) {
+        Ok(answer) => answer,
+        Err(message) => return json!({"ok": false, "error": message}),
+    };
+    let name = words!(lang, "play-your-answer");
+    let answers = vec![(buffer, Path::new(&name), answer)];
+    let report = match crate::teach::check::check(lang, &scene, Path::new(SCENE_NAME), after, answers, Arith::Exact) {
+        Ok(report) => report,
+        Err(error) => return json!({"ok": false, "error": error.message(lang)}),
+    };
+    let answer = &report.answers[0];
+    let wrong: Vec<Value> = answer
+        .wrong
+        .iter()
+        .map(|c| json!({"x": c.x, "y": c.y, "answer": c.answer, "expected": c.expected, "reason": c.reason}))
+        .collect();
+    let more = (answer.differing > answer.wrong.len())
+        .then(|| words!(lang, "check-more-cells", count = answer.differing - answer.wrong.len()));
+    json!({
+        "ok": true, "right": answer.wrong.is_empty(), "verdict": report.verdict(lang, answer), "hint": answer.hint,
+        "wrong": wrong, "more": more, "diagnosis": report.diagnosis,
+        "columns": ["x", "y", words!(lang, "check-column-answer"), words!(lang, "check-column-right"), words!(lang, "check-column-why")],
+    })
+}
+
+/// Pixel `(x, y)`'s history through the scene, as `zsim explain` prints it.
+pub fn explain(lang: Lang, text: &str, x: u32, y: u32) -> Value {
+    let scene = match scene_of(lang, text) {
+        Ok(scene) => scene,
+        Err(error) => return error,
+    };
+    match history(&scene, (x, y), Extras::default()) {
+        Ok(history) => json!({"ok": true, "text": history.text(lang, &scene, Path::new(SCENE_NAME))}),
+        Err(error) => json!({"ok": false, "error": error.message(lang)}),
+    }
+}
+
+/// A change the page makes to the scene's JSON: the value at `path` (keys
+/// and 0-based indices from the top) set to `value` (JSON text; text that
+/// is not JSON, such as `43/4`, is kept as a string, which the scene format
+/// reads as an exact number), or removed, or a value inserted before an
+/// index of an array.
+#[derive(Debug, Clone, serde::Deserialize)]
+#[serde(tag = "op", rename_all = "lowercase")]
+pub enum Edit {
+    /// Set the value at `path`.
+    Set {
+        /// Where.
+        path: Vec<Value>,
+        /// The new value as JSON text.
+        value: String,
+    },
+    /// Insert `value` before index `path`'s last entry of an array (at the end when past it).
+    Insert {
+        /// Where.
+        path: Vec<Value>,
+        /// The value as JSON text.
+        value: String,
+    },
+    /// Remove the value at `path`.
+    Remove {
+        /// Where.
+        path: Vec<Value>,
+    },
+}
+
+/// The scene text after `edit` (given as JSON), laid out as [`layout`]
+/// does; `Err` worded in `lang` when the text is not JSON or the edit does
+/// not fit it.
+pub fn edit(lang: Lang, text: &str, edit: &str) -> Result<String, String> {
+    let not_json = |e: serde_json::Error| words!(lang, "play-not-json", reason = e.to_string());
+    let mut scene: Value = serde_json::from_str(text).map_err(not_json)?;
+    let edit: Edit = serde_json::from_str(edit).map_err(|_| words!(lang, "play-bad-edit"))?;
+    let value_of =
+        |text: &str| serde_json::from_str(text.trim()).unwrap_or_else(|_| Value::String(text.trim().to_string()));
+    let bad = || words!(lang, "play-bad-edit");
+    let (last, path) = match &edit {
+        Edit::Set { path, .. } | Edit::Insert { path, .. } | Edit::Remove { path } => {
+            path.split_last().ok_or_else(bad)?
+        }
+    };
+    let mut at = &mut scene;
+    for step in path {
+        at = match (at, step) {
+            (Value::Object(map), Value::String(key)) => map.get_mut(key).ok_or_else(bad)?,
+            (Value::Array(list), Value::Number(n)) => {
+                list.get_mut(n.as_u64().ok_or_else(bad)? as usize).ok_or_else(bad)?
+            }
+            _ => return Err(bad()),
+        };
+    }
+    match (at, last, &edit) {
+        (Value::Object(map), Value::String(key), Edit::Set { value, .. }) => {
+            map.insert(key.clone(), value_of(value));
+        }
+        (Value::Object(map), Value::String(key), Edit::Remove { .. }) => {
+            map.remove(key);
+        }
+        (Value::Array(list), Value::Number(n), edit) => {
+            let index = n.as_u64().ok_or_else(bad)? as usize;
+            match edit {
+                Edit::Set { value, .. } => *list.get_mut(index).ok_or_else(bad)? = value_of(value),
+                Edit::Insert { value, .. } => list.insert(index.min(list.len()), value_of(value)),
+                Edit::Remove { .. } if index < list.len() => drop(list.remove(index)),
+                Edit::Remove { .. } => return Err(bad()),
+            }
+        }
+        _ => return Err(bad()),
+    }
+    Ok(layout(&scene))
+}
+
+/// The order of a scene's keys as the page writes them (the others follow, in order of name).
+const KEY_ORDER: [&str; 10] =
+    ["width", "height", "frame_bits", "depth_bits", "depth_test", "background", "rules", "name", "value", "vertices"];
+
+/// A scene's JSON laid out as the examples are: one key a line, one
+/// polygon a line, `polygons` last; numbers kept exactly as written.
+pub fn layout(scene: &Value) -> String {
+    fn compact(value: &Value) -> String {
+        match value {
+            Value::Array(list) => format!("[{}]", list.iter().map(compact).collect::<Vec<_>>().join(", ")),
+            Value::Object(map) => {
+                let entries: Vec<String> = ordered(map)
+                    .into_iter()
+                    .map(|(k, v)| format!("{}: {}", Value::String(k.clone()), compact(v)))
+                    .collect();
+                format!("{{{}}}", entries.join(", "))
+            }
+            other => other.to_string(),
+        }
+    }
+    fn ordered(map: &serde_json::Map<String, Value>) -> Vec<(&String, &Value)> {
+        let mut entries: Vec<_> = map.iter().collect();
+        let rank = |key: &str| (key == "polygons", KEY_ORDER.iter().position(|k| *k == key).unwrap_or(KEY_ORDER.len()));
+        entries.sort_by(|a, b| rank(a.0).cmp(&rank(b.0)).then(a.0.cmp(b.0)));
+        entries
+    }
+    let Value::Object(map) = scene else { return compact(scene) };
+    let lines: Vec<String> = ordered(map)
+        .into_iter()
+        .map(|(key, value)| match value {
+            Value::Array(polygons) if key == "polygons" && !polygons.is_empty() => {
+                let rows: Vec<String> = polygons.iter().map(|p| format!("    {}", compact(p))).collect();
+                format!("  \"polygons\": [\n{}\n  ]", rows.join(",\n"))
+            }
+            _ => format!("  {}: {}", Value::String(key.clone()), compact(value)),
+        })
+        .collect();
+    format!("{{\n{}\n}}\n", lines.join(",\n"))
+}
+
+/// The address fragment that carries a scene: `scene=` and the text in
+/// base64url without padding.
+pub fn fragment_of(text: &str) -> String {
+    format!("scene={}", base64::engine::general_purpose::URL_SAFE_NO_PAD.encode(text.as_bytes()))
+}
+
+/// The scene text carried by `fragment` (`scene=…`, with or without `#`,
+/// base64url with or without padding); `Err` worded in `lang`.
+pub fn scene_of_fragment(lang: Lang, fragment: &str) -> Result<String, String> {
+    let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
+    let Some(encoded) = fragment.strip_prefix("scene=") else { return Err(words!(lang, "play-bad-address")) };
+    let encoded = encoded.trim_end_matches('=');
+    if encoded.len() as u64 > crate::door::MAX_INPUT_BYTES / 3 * 4 {
+        return Err(words!(lang, "play-bad-address"));
+    }
+    let bytes = base64::engine::general_purpose::URL_SAFE_NO_PAD
+        .decode(encoded)
+        .map_err(|_| words!(lang, "play-bad-address"))?;
+    String::from_utf8(bytes).map_err(|_| words!(lang, "error-not-utf8"))
+}
+
+/// The playground as one self-contained page that opens from `file://`
+/// (`zsim step --html`): its style, script and WebAssembly module inlined,
+/// the scene in `text` to start with, in `lang` unless the address asks for
+/// another (`?lang=`). `None` when this zsim was built without the playground
+/// (the build is given it by `ZSIM_PLAYGROUND`, the folder `web/build` writes).
+pub fn one_file_page(lang: Lang, text: &str) -> Option<String> {
+    #[cfg(playground)]
+    {
+        macro_rules! built {
+            ($name:literal) => {
+                include_bytes!(concat!(env!("OUT_DIR"), "/", $name))
+            };
+        }
+        let utf8 = |bytes: &'static [u8]| std::str::from_utf8(bytes).expect("the playground's files are UTF-8");
+        let (index, script, style, glue) = (
+            utf8(built!("index.html")),
+            utf8(built!("playground.js")),
+            utf8(built!("playground.css")),
+            utf8(built!("zsim_web.js")),
+        );
+        let module = base64::engine::general_purpose::STANDARD.encode(built!("zsim_web_bg.wasm"));
+        let start = format!(
+            "window.ZSIM_WASM = Uint8Array.from(atob(\"{module}\"), (c) => c.charCodeAt(0));\n\
+             window.ZSIM_SCENE = {};\nwindow.ZSIM_LANG = \"{}\";\n",
+            crate::teach::page::embedded_json(&Value::String(text.to_string()).to_string()),
+            lang.code()
+        );
+        let page = index
+            .replace(r#"<link rel="stylesheet" href="playground.css">"#, &format!("<style>\n{style}</style>"))
+            .replace(r#"<script src="zsim_web.js"></script>"#, &format!("<script>\n{glue}\n{start}</script>"))
+            .replace(r#"<script src="playground.js"></script>"#, &format!("<script>\n{script}</script>"));
+        Some(page)
+    }
+    #[cfg(not(playground))]
+    {
+        let _ = (lang, text);
+        None
+    }
+}
+
+/// The page's own words in `lang`, by the name the page gives each.
+pub fn page_words(lang: Lang) -> Value {
+    let mut words = serde_json::Map::new();
+    for (name, key) in PAGE_WORDS {
+        words.insert(name.to_string(), Value::String(crate::words::text(lang, key, &[])));
+    }
+    words.insert("lang".into(), Value::String(lang.code().into()));
+    words.insert("depthName".into(), Value::String(Buffer::Depth.name(lang)));
+    words.insert("frameName".into(), Value::String(Buffer::Frame.name(lang)));
+    words.insert("keeps".into(), Value::String(words!(lang, "page-keeps", value = "{after}")));
+    words.insert("status".into(), Value::String(words!(lang, "page-status", at = "{at}", count = "{count}")));
+    Value::Object(words)
+}
+
+/// The page's labels: the name the page uses, and the catalogue's key.
+const PAGE_WORDS: [(&str, &str); 40] = [
+    ("title", "play-title"),
+    ("intro", "play-intro"),
+    ("language", "play-language"),
+    ("sceneHeading", "play-scene"),
+    ("width", "play-width"),
+    ("height", "play-height"),
+    ("frameBits", "play-frame-bits"),
+    ("depthBits", "play-depth-bits"),
+    ("depthTest", "play-depth-test"),
+    ("preset", "play-preset"),
+    ("presetNone", "play-preset-none"),
+    ("snap", "play-snap"),
+    ("polygon", "play-polygon"),
+    ("value", "play-value"),
+    ("addPolygon", "play-add-polygon"),
+    ("removePolygon", "play-remove-polygon"),
+    ("addVertex", "play-add-vertex"),
+    ("removeVertex", "play-remove-vertex"),
+    ("json", "play-json"),
+    ("share", "play-share"),
+    ("shared", "play-shared"),
+    ("buffers", "play-buffers"),
+    ("finalBuffers", "play-final"),
+    ("grid", "play-grid"),
+    ("gridHelp", "play-grid-help"),
+    ("explainHeading", "play-explain"),
+    ("stepper", "play-stepper"),
+    ("figure", "play-figure"),
+    ("homework", "play-homework"),
+    ("homeworkHelp", "play-homework-help"),
+    ("checkAnswer", "play-check"),
+    ("after", "play-after"),
+    ("back", "page-back"),
+    ("next", "page-next"),
+    ("quiz", "page-quiz"),
+    ("coverage", "play-coverage"),
+    ("stored", "page-column-stored"),
+    ("why", "page-column-why"),
+    ("check", "page-check"),
+    ("unanswered", "page-unanswered"),
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const BOOK: &str = include_str!("../../examples/rogers.json");
+
+    /// The page's final buffers are `zsim run --final`'s matrices: here the
+    /// book's depth 15 at (15, 15) and the triangle's 2 beside the rectangle.
+    #[test]
+    fn the_final_buffers_are_run_final_s_matrices() {
+        let view = view(Lang::En, BOOK);
+        let depth = view["zbuffer"].as_str().unwrap();
+        let row_15 = depth.lines().nth(31 - 15).unwrap();
+        assert_eq!(row_15.split_whitespace().nth(15), Some("15"));
+        assert_eq!(view["framebuffer"].as_str().unwrap().lines().count(), 32);
+        assert_eq!(view["after"].as_array().unwrap().len(), 2);
+    }
+
+    /// A scene's error is the command line's, naming the scene and the place.
+    #[test]
+    fn a_bad_scene_is_worded_as_the_command_line_words_it() {
+        let view = view(
+            Lang::En,
+            r#"{"width": 32, "height": 32, "polygons": [{"value": 1, "vertices": [[1, 2, 3], [4, 5]]}]}"#,
+        );
+        assert_eq!(view["ok"], false);
+        let error = view["error"].as_str().unwrap();
+        assert!(error.starts_with("scene.json: polygon 1: vertices[1]: 2 entries"), "{error}");
+    }
+
+    /// An edit keeps every other number exactly as written and lays the scene out one polygon a line.
+    #[test]
+    fn an_edit_changes_one_value_and_keeps_the_rest_exact() {
+        let text = r#"{"polygons": [{"value": 1, "vertices": [[0.1, "43/4", 3], [1, 2, 3], [5, 1, 2]]}], "width": 8, "height": 8}"#;
+        let edited =
+            edit(Lang::En, text, r#"{"op": "set", "path": ["polygons", 0, "vertices", 1, 0], "value": "12.5"}"#)
+                .unwrap();
+        assert_eq!(
+            edited,
+            "{\n  \"width\": 8,\n  \"height\": 8,\n  \"polygons\": [\n    {\"value\": 1, \"vertices\": [[0.1, \"43/4\", 3], [12.5, 2, 3], [5, 1, 2]]}\n  ]\n}\n"
+        );
+        let fraction = edit(Lang::En, &edited, r#"{"op": "set", "path": ["width"], "value": "43/4"}"#).unwrap();
+        assert!(fraction.contains("\"width\": \"43/4\""), "{fraction}");
+        assert!(edit(Lang::En, &edited, r#"{"op": "remove", "path": ["polygons", 3]}"#).is_err());
+    }
+
+    /// A scene sent as `#scene=` comes back as it went, padded or not.
+    #[test]
+    fn a_scene_travels_in_the_address_and_back() {
+        let fragment = fragment_of(BOOK);
+        assert!(!fragment.contains(['+', '/', '=']) || fragment.starts_with("scene="));
+        assert_eq!(scene_of_fragment(Lang::En, &format!("#{fragment}")).unwrap(), BOOK);
+        assert_eq!(scene_of_fragment(Lang::En, "scene=e30=").unwrap(), "{}");
+        assert_eq!(scene_of_fragment(Lang::En, "scene=e30").unwrap(), "{}");
+        assert!(scene_of_fragment(Lang::En, "scene=%%%").is_err());
+    }
+
+    /// The quiz's verdicts are the library's judges': 15 right at (15, 15) on the triangle's first stop there.
+    #[test]
+    fn the_quiz_is_judged_by_the_library() {
+        let view = view(Lang::En, BOOK);
+        let stops = view["stops"].as_array().unwrap();
+        let stop = stops.iter().position(|s| s["polygon"] == 1 && s["row"] == 15).unwrap();
+        let pixel = stops[stop]["pixels"].as_array().unwrap().iter().position(|p| p["x"] == 15).unwrap();
+        assert_eq!(judge(Lang::En, BOOK, stop, Question::Depth(pixel), "15")["right"], true);
+        assert_eq!(judge(Lang::En, BOOK, stop, Question::Depth(pixel), "14")["right"], false);
+        assert!(judge(Lang::En, BOOK, stop, Question::Depth(pixel), "16")["again"].is_string());
+        assert_eq!(judge(Lang::En, BOOK, stop, Question::Frame(pixel), "2")["right"], true);
+        assert_eq!(judge(Lang::En, BOOK, stop, Question::Coverage, "15-27")["right"], true);
+    }
+
+    /// The page's words exist in every language (a missing key would show its name).
+    #[test]
+    fn every_page_word_is_in_every_catalogue() {
+        for lang in Lang::ALL {
+            let words = page_words(lang);
+            for (name, key) in PAGE_WORDS {
+                assert_ne!(words[name].as_str().unwrap(), key, "{key} missing in {}", lang.code());
+            }
+        }
+    }
+}

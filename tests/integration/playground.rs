@@ -1,0 +1,364 @@
+//! The browser playground (`web/build`'s site in `target/web/`, and the one
+//! file `zsim step --html` writes) in headless Chromium, driven from outside
+//! through WebDriver as a person would: typing into the vertex table,
+//! dragging a vertex on the grid, opening scenes through `#scene=`, ticking
+//! the quiz and pasting a homework answer. Every buffer it shows is held to
+//! what the native `zsim run --final` prints, every verdict to the library's.
+
+use std::io::{Read, Write};
+use std::net::TcpListener;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+use fantoccini::actions::{InputSource, MOUSE_BUTTON_LEFT, MouseActions, PointerAction};
+use fantoccini::{Client, Locator};
+use zsim::Lang;
+use zsim::playground::{self, Question};
+
+use crate::browser::{click, driver, session_as, text};
+
+fn manifest() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The site `web/build` wrote, or `None` after saying it is missing.
+fn site() -> Option<PathBuf> {
+    let site = manifest().join("target/web");
+    if site.join("index.html").is_file() && site.join("zsim_web_bg.wasm").is_file() {
+        return Some(site);
+    }
+    crate::skipped("the playground's site (web/build writes it into target/web)", "the browser playground");
+    None
+}
+
+/// Serves `folder` on a loopback port, as a static host would, for as long as the test runs.
+fn serve(folder: PathBuf) -> u16 {
+    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = listener.local_addr().unwrap().port();
+    std::thread::spawn(move || {
+        for stream in listener.incoming() {
+            let Ok(mut stream) = stream else { continue };
+            let mut request = [0u8; 4096];
+            let read = stream.read(&mut request).unwrap_or(0);
+            let request = String::from_utf8_lossy(&request[..read]);
+            let path = request.split_whitespace().nth(1).unwrap_or("/").split(['?', '#']).next().unwrap_or("/");
+            let name = if path == "/" { "index.html" } else { path.trim_start_matches('/') };
+            let file = (!name.contains("..")).then(|| std::fs::read(folder.join(name)).ok()).flatten();
+            let kind = match name.rsplit('.').next() {
+                Some("html") => "text/html; charset=utf-8",
+                Some("js") => "text/javascript",
+                Some("css") => "text/css",
+                Some("wasm") => "application/wasm",
+                _ => "application/octet-stream",
+            };
+            let _ = match file {
+                Some(body) => stream
+                    .write_all(
+                        format!("HTTP/1.1 200 OK\r\nContent-Type: {kind}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n", body.len())
+                            .as_bytes(),
+                    )
+                    .and_then(|_| stream.write_all(&body)),
+                None => stream.write_all(b"HTTP/1.1 404 Not Found\r\nContent-Length: 0\r\nConnection: close\r\n\r\n"),
+            };
+        }
+    });
+    port
+}
+
+/// The final buffers `zsim run --final` prints for `scene`, bare: (framebuffer, z-buffer).
+fn run_final(scene: &str, scratch: &Path) -> (String, String) {
+    let file = scratch.join("scene.json");
+    std::fs::write(&file, scene).unwrap();
+    let output =
+        Command::new(env!("CARGO_BIN_EXE_zsim")).args(["run", "--final", "--lang", "en"]).arg(&file).output().unwrap();
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    let matrix = |heading: &str| {
+        let start = stdout.find(heading).unwrap_or_else(|| panic!("{heading} in {stdout}"));
+        let body = &stdout[start..];
+        let body = &body[body.find('\n').unwrap() + 1..];
+        let end = body.find("\n\n").unwrap_or(body.len());
+        format!("{}\n", body[..end].trim_end_matches('\n'))
+    };
+    (matrix("framebuffer after"), matrix("z-buffer after"))
+}
+
+/// Waits until the page shows a final framebuffer, and returns both buffers as the page holds them.
+async fn shown_buffers(client: &Client) -> (String, String) {
+    let start = Instant::now();
+    loop {
+        let frame = inner_text(client, "framebuffer").await;
+        if !frame.is_empty() {
+            return (frame, inner_text(client, "zbuffer").await);
+        }
+        assert!(start.elapsed() < Duration::from_secs(30), "the page showed no framebuffer within 30 s");
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+}
+
+/// An element's text exactly as it is in the page (a `<pre>`'s spaces and its last newline kept).
+async fn inner_text(client: &Client, id: &str) -> String {
+    let script = format!("const e = document.getElementById('{id}'); return e ? e.textContent : '';");
+    client.execute(&script, vec![]).await.unwrap().as_str().unwrap_or_default().to_string()
+}
+
+async fn scene_text(client: &Client) -> String {
+    client.execute("return document.getElementById('json').value;", vec![]).await.unwrap().as_str().unwrap().to_string()
+}
+
+/// Types `value` into vertex `vertex`'s coordinate `coordinate` of polygon `polygon` (0-based) and leaves the box.
+async fn type_vertex(client: &Client, polygon: usize, vertex: usize, coordinate: usize, value: &str) {
+    let css = format!("input.coord[data-p='{polygon}'][data-v='{vertex}'][data-c='{coordinate}']");
+    let input = client.find(Locator::Css(&css)).await.unwrap();
+    input.clear().await.unwrap();
+    input.send_keys(&format!("{value}\u{e004}")).await.unwrap();
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// The book's scene, edited by typing a vertex and by dragging one, and
+/// random scenes opened through `#scene=`: after each, the page's final
+/// buffers are exactly what the native `zsim run --final` prints for the
+/// scene the page holds.
+#[test]
+fn the_playground_shows_what_run_final_prints_as_a_scene_is_typed_dragged_and_linked() {
+    let Some(site) = site() else { return };
+    let Some((driver, browser)) = driver() else { return };
+    let dir = scratch("playground-edit");
+    let port = serve(site);
+    let mut random_scenes = Vec::new();
+    for seed in 1..=6 {
+        let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
+            .args(["random", "--count", "6", "--width", "24", "--height", "20", "--depth-bits", "6", "--seed"])
+            .arg(seed.to_string())
+            .output()
+            .unwrap();
+        assert!(output.status.success());
+        random_scenes.push(String::from_utf8(output.stdout).unwrap());
+    }
+    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    runtime.block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
+        client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
+        let book = std::fs::read_to_string(manifest().join("examples/rogers.json")).unwrap();
+        assert_eq!(shown_buffers(&client).await, run_final(&book, &dir), "the book's scene");
+
+        // Typed: the triangle's first vertex moves from x = 15 to x = 12.
+        type_vertex(&client, 1, 0, 0, "12").await;
+        let typed = scene_text(&client).await;
+        assert!(typed.contains("[[12, 15, 15], [25, 25, 5], [30, 10, 5]]"), "{typed}");
+        let expected = run_final(&typed, &dir);
+        assert_ne!(expected, run_final(&book, &dir), "the edit changes the picture");
+        assert_eq!(shown_buffers(&client).await, expected, "after typing a vertex");
+
+        // Dragged: the triangle's third vertex, (30, 10), moved on the grid.
+        let handle = client.find(Locator::Css("circle.vertex[data-p='1'][data-v='2']")).await.unwrap();
+        let grid = client.find(Locator::Css("#grid")).await.unwrap();
+        let (_, _, width, _) = grid.rectangle().await.unwrap();
+        let cell = width / 32.0;
+        let actions = MouseActions::new("mouse".to_string())
+            .then(PointerAction::MoveToElement { element: handle, duration: None, x: 0.0, y: 0.0 })
+            .then(PointerAction::Down { button: MOUSE_BUTTON_LEFT })
+            .then(PointerAction::MoveBy {
+                duration: Some(Duration::from_millis(100)),
+                x: -(3.0 * cell),
+                y: -(4.0 * cell),
+            })
+            .then(PointerAction::Up { button: MOUSE_BUTTON_LEFT });
+        client.perform_actions(actions).await.unwrap();
+        let dragged = scene_text(&client).await;
+        assert!(!dragged.contains("[30, 10, 5]"), "the vertex moved: {dragged}");
+        assert!(dragged.contains("[27, 14, 5]"), "three cells left and four up, snapped to whole pixels: {dragged}");
+        assert_eq!(shown_buffers(&client).await, run_final(&dragged, &dir), "after dragging a vertex");
+
+        // Linked: each random scene opened through #scene=, as a teacher's link opens it.
+        for scene in &random_scenes {
+            let address = format!("http://127.0.0.1:{port}/#{}", playground::fragment_of(scene));
+            client.goto("about:blank").await.unwrap();
+            client.goto(&address).await.unwrap();
+            assert_eq!(shown_buffers(&client).await, run_final(scene, &dir), "a random scene through #scene=");
+            assert_eq!(scene_text(&client).await, *scene, "the page holds the linked scene as sent");
+        }
+        client.close().await.unwrap();
+    });
+    crate::ran("the playground's edits and links through WebDriver", &format!("{} random scenes", random_scenes.len()));
+}
+
+/// The quiz on the triangle's scanline 15 and a pasted homework answer:
+/// each verdict the page shows is the library's, and the homework's
+/// misconception is the one `zsim check` names for the same file.
+#[test]
+fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
+    let Some(site) = site() else { return };
+    let Some((driver, browser)) = driver() else { return };
+    let dir = scratch("playground-quiz");
+    let port = serve(site);
+    let book = std::fs::read_to_string(manifest().join("examples/rogers.json")).unwrap();
+    let view = playground::view(Lang::En, &book);
+    let stops = view["stops"].as_array().unwrap();
+    let stop = stops.iter().position(|s| s["polygon"] == 1 && s["row"] == 15).unwrap();
+    let pixels = stops[stop]["pixels"].as_array().unwrap().len();
+    let typed = ["15", "10", "zz", "24/2", "12.0", "1.1e1", "-", "16", "10.5", "", "", "", ""];
+    assert_eq!(pixels, typed.len());
+    let expected: Vec<(String, String)> = typed
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            if t.is_empty() {
+                return ("again".to_string(), "no answer".to_string());
+            }
+            let verdict = playground::judge(Lang::En, &book, stop, Question::Depth(i), t);
+            match verdict["again"].as_str() {
+                Some(again) => ("again".to_string(), again.to_string()),
+                None => {
+                    let class = if verdict["right"] == true { "right" } else { "wrong" };
+                    (class.to_string(), verdict["line"].as_str().unwrap().to_string())
+                }
+            }
+        })
+        .collect();
+    assert_eq!(
+        expected.iter().map(|(c, _)| c.as_str()).collect::<Vec<_>>(),
+        [
+            "right", "wrong", "again", "right", "right", "right", "right", "again", "again", "again", "again", "again",
+            "again"
+        ],
+        "the library's verdicts this test holds the page to"
+    );
+    // A homework drawn with the depth test the wrong way round, and zsim check's verdict on it.
+    let reversed = book.replace(r#""depth_test": "greater""#, r#""depth_test": "less""#);
+    let (_, answer) = run_final(&reversed, &dir);
+    std::fs::write(dir.join("depth.txt"), &answer).unwrap();
+    std::fs::write(dir.join("book.json"), &book).unwrap();
+    let checked = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(["check", "--lang", "en", "book.json", "--depth", "depth.txt"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(checked.status.code(), Some(1));
+    let report = String::from_utf8(checked.stdout).unwrap();
+    let verdict_line = report.lines().next().unwrap().replace("depth.txt", "your answer");
+    let diagnosis = report.lines().last().unwrap().to_string();
+
+    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    runtime.block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
+        client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
+        shown_buffers(&client).await;
+        for _ in 0..stop {
+            click(&client, "#next").await;
+        }
+        assert_eq!(text(&client, "#stop p").await, "scanline y = 15.5 (row 15)");
+        click(&client, "#quiz").await;
+        let inputs = client.find_all(Locator::Css("#pixels input")).await.unwrap();
+        assert_eq!(inputs.len(), typed.len());
+        for (input, typed) in inputs.iter().zip(typed) {
+            if !typed.is_empty() {
+                input.send_keys(typed).await.unwrap();
+            }
+        }
+        client.find(Locator::Css("#coverage")).await.unwrap().send_keys("15-27").await.unwrap();
+        click(&client, "#checkQuiz").await;
+        let mut shown = Vec::new();
+        for cell in client.find_all(Locator::Css("#pixels td.why")).await.unwrap() {
+            let class = cell.attr("class").await.unwrap().unwrap_or_default();
+            shown.push((class.trim_start_matches("why ").to_string(), cell.text().await.unwrap()));
+        }
+        assert_eq!(shown, expected, "the page's verdicts are the library's");
+        let coverage = playground::judge(Lang::En, &book, stop, Question::Coverage, "15-27");
+        assert_eq!(text(&client, "#coverageWhy").await, coverage["line"].as_str().unwrap());
+
+        // The homework, pasted as the book prints it.
+        client.find(Locator::Css("#hwBuffer option[value='depth']")).await.unwrap().click().await.unwrap();
+        let answer_box = client.find(Locator::Css("#answer")).await.unwrap();
+        answer_box.send_keys(&answer).await.unwrap();
+        click(&client, "#checkAnswer").await;
+        assert_eq!(text(&client, "#verdict p").await, verdict_line, "check's verdict");
+        assert_eq!(text(&client, "#diagnosis").await, diagnosis, "check's misconception");
+        let rows = client.find_all(Locator::Css("#wrongCells tr")).await.unwrap();
+        let wrong_in_report = report.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| x")).count();
+        assert!(wrong_in_report > 0 && rows.len() > 1, "{report}");
+        client.close().await.unwrap();
+    });
+    crate::ran("the playground's quiz and homework through WebDriver", &format!("{} answers", typed.len()));
+}
+
+/// A Russian browser gets the page in Russian, errors included; screenshots
+/// at 1280 and 360 pixels wide are saved for a person to look at, and at 360
+/// nothing is wider than the window.
+#[test]
+fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
+    let Some(site) = site() else { return };
+    let Some((driver, browser)) = driver() else { return };
+    let dir = scratch("playground-lang");
+    let port = serve(site);
+    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    runtime.block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile-ru"), "ru-RU", (1280, 900)).await;
+        client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
+        shown_buffers(&client).await;
+        let words = playground::page_words(Lang::Ru);
+        assert_eq!(text(&client, "#title").await, words["title"].as_str().unwrap());
+        let bad = r#"{"width": 32, "height": 32, "polygons": [{"value": 1, "vertices": [[1, 2, 3], [4, 5]]}]}"#;
+        client
+            .execute(
+                &format!(
+                    "const j = document.getElementById('json'); j.value = {bad:?}; j.dispatchEvent(new Event('input'));"
+                ),
+                vec![],
+            )
+            .await
+            .unwrap();
+        let error = playground::view(Lang::Ru, bad)["error"].as_str().unwrap().to_string();
+        assert_eq!(text(&client, "#error").await, error, "the scene's error in Russian");
+        assert!(error.contains("вершин"), "{error}");
+        std::fs::write(dir.join("playground-ru-1280.png"), client.screenshot().await.unwrap()).unwrap();
+        client.close().await.unwrap();
+
+        let client = session_as(&driver, &browser, &dir.join("profile-360"), "en-US", (360, 800)).await;
+        client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
+        shown_buffers(&client).await;
+        let width = client.execute("return document.documentElement.scrollWidth;", vec![]).await.unwrap();
+        let inner = client.execute("return window.innerWidth;", vec![]).await.unwrap();
+        assert!(width.as_u64() <= inner.as_u64(), "the page is {width} px wide in a {inner} px window");
+        std::fs::write(dir.join("playground-360.png"), client.screenshot().await.unwrap()).unwrap();
+        client.close().await.unwrap();
+    });
+    crate::ran("the playground in Russian and at 360 px", &dir.display().to_string());
+}
+
+/// `zsim step --html -o page.html` writes the playground as one file that
+/// opens from `file://` with its scene, where zsim was built with it
+/// (`ZSIM_PLAYGROUND`, as .ci/run builds it).
+#[test]
+fn step_html_writes_the_playground_as_one_file_that_opens_from_disk() {
+    if option_env!("ZSIM_PLAYGROUND").is_none() {
+        crate::skipped("a zsim built with the playground (ZSIM_PLAYGROUND=target/web)", "step --html's playground");
+        return;
+    }
+    let Some((driver, browser)) = driver() else { return };
+    let dir = scratch("playground-one-file");
+    let scene = std::fs::read_to_string(manifest().join("examples/less.json")).unwrap();
+    std::fs::write(dir.join("less.json"), &scene).unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(["step", "less.json", "--html", "-o", "page.html"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    runtime.block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
+        client.goto(&format!("file://{}", dir.join("page.html").display())).await.unwrap();
+        assert_eq!(shown_buffers(&client).await, run_final(&scene, &dir), "the page's own scene, from disk");
+        assert_eq!(scene_text(&client).await, scene, "the page holds the scene it was written for");
+        client.close().await.unwrap();
+    });
+    crate::ran("step --html's playground from file://", "examples/less.json");
+}
