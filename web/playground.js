@@ -21,6 +21,8 @@
   // Framebuffer values as colours (0, the usual background, is white).
   const PALETTE = ["#ffffff", "#56b4e9", "#e69f00", "#009e73", "#f0e442", "#0072b2", "#d55e00", "#cc79a7"];
   let z, lang = "en", words = {}, scene = "", view = null, at = 0, drag = null;
+  // What the shown stop shows, from the library (with the view, or asked when the stop changes).
+  let shownStop = null;
 
   function call(name, ...args) { return JSON.parse(z[name](lang, ...args)); }
 
@@ -42,9 +44,11 @@
   function setScene(text, keepEditor) {
     scene = text;
     if (!keepEditor || $("json").value !== text) $("json").value = text;
-    const next = JSON.parse(z.view(lang, text));
+    const next = JSON.parse(z.view(lang, text, at));
     $("json").classList.toggle("invalid", !next.ok);
     $("error").textContent = next.ok ? "" : next.error;
+    // What is drawn is the last scene that could be read: dimmed while the text is not one.
+    $("view").classList.toggle("stale", !next.ok);
     if (!next.ok) {
       view = null;
       ["framebuffer", "zbuffer", "afterFrame", "afterDepth", "explain"].forEach((id) => { $(id).textContent = ""; });
@@ -54,6 +58,8 @@
     view = next;
     if (!sameStops) at = 0;
     at = Math.min(at, Math.max(0, view.stops.length - 1));
+    // The view brings what the current stop shows: no second tracing of the scene.
+    if (view.stop && sameStops) shownStop = { scene, at, lang, data: Object.assign({ ok: true }, view.stop) };
     render();
   }
 
@@ -82,13 +88,21 @@
     renderAfter();
     renderStop();
     renderHomeworkChoices();
-    $("figure").innerHTML = view.figure || "";
+    renderFigure();
+  }
+
+  // The figure, drawn by the library when its section is open.
+  function renderFigure() {
+    if (!$("figureBox").open) return;
+    const figure = call("figure", scene);
+    $("figure").innerHTML = figure.ok ? figure.svg : "";
   }
 
   function renderPolygons(object) {
     const box = $("polygons");
     if (box.contains(document.activeElement)) return;
-    const polygons = Array.isArray(object.polygons) ? object.polygons : [];
+    // The table only where the library shows the scene polygon by polygon (a few dozen polygons).
+    const polygons = Array.isArray(object.polygons) && view.after.length === view.polygons.length ? object.polygons : [];
     box.replaceChildren();
     polygons.forEach((polygon, p) => {
       const table = el("table", undefined, "vertices");
@@ -148,15 +162,25 @@
   function renderGrid(object) {
     const grid = $("grid"), w = view.width, h = view.height;
     grid.setAttribute("viewBox", `0 0 ${w} ${h}`);
-    grid.replaceChildren();
-    const rows = view.framebuffer.trim().split("\n").map((r) => r.trim().split(/\s+/).map(Number));
+    // Cell by cell only where the library shows the scene so (a few thousand cells).
+    const rows = view.cellByCell ? view.framebuffer.trim().split("\n").map((r) => r.trim().split(/\s+/).map(Number)) : [];
+    // The cells as one piece of markup (numbers only), made once for a raster's size; an edit
+    // recolours them and redraws only the outlines and vertices.
+    const size = `${w}x${h}:${rows.length}`;
+    if (grid.dataset.size !== size) {
+      let cells = "";
+      rows.forEach((row, i) => row.forEach((value, x) => {
+        cells += `<rect x="${x}" y="${i}" width="1" height="1" class="cell" data-x="${x}" data-y="${h - 1 - i}"/>`;
+      }));
+      grid.innerHTML = cells;
+      grid.dataset.size = size;
+    } else {
+      grid.querySelectorAll(":scope > :not(.cell)").forEach((e) => e.remove());
+    }
+    const cells = grid.children;
     rows.forEach((row, i) => row.forEach((value, x) => {
-      const y = h - 1 - i;
-      const rect = svg("rect", { x, y: i, width: 1, height: 1, class: "cell", fill: PALETTE[value % PALETTE.length] });
-      rect.dataset.x = x;
-      rect.dataset.y = y;
-      rect.addEventListener("click", () => explainPixel(x, y));
-      grid.appendChild(rect);
+      const fill = PALETTE[value % PALETTE.length], cell = cells[i * w + x];
+      if (cell.getAttribute("fill") !== fill) cell.setAttribute("fill", fill);
     }));
     // Only a scene in pixel units can be dragged: its vertices are the raster's coordinates.
     const draggable = !object.window && !(object.effects && object.effects.perspective);
@@ -230,7 +254,12 @@
   }
 
   function renderStop() {
-    const box = $("stop"), stop = view.stops[at];
+    const box = $("stop");
+    if (!view.stops[at]) { box.replaceChildren(); $("status").textContent = ""; return; }
+    if (!shownStop || shownStop.scene !== scene || shownStop.at !== at || shownStop.lang !== lang) {
+      shownStop = { scene, at, lang, data: call("stop", scene, at) };
+    }
+    const stop = shownStop.data.ok ? shownStop.data : null;
     $("status").textContent = view.stops.length ? words.status.replace("{at}", at + 1).replace("{count}", view.stops.length) : "";
     if (!stop) { box.replaceChildren(); return; }
     const quiz = $("quiz").checked, kind = $("quizKind").value;
@@ -246,6 +275,7 @@
     } else {
       box.appendChild(el("p", stop.crossings));
       stop.spans.forEach((s) => box.appendChild(el("p", s)));
+      stop.notes.forEach((s) => box.appendChild(el("p", s, "help")));
     }
     const table = el("table");
     table.id = "pixels";
@@ -360,6 +390,12 @@
     $("quizKind").onchange = renderStop;
     $("afterSelect").onchange = renderAfter;
     $("checkAnswer").onclick = checkAnswer;
+    $("figureBox").addEventListener("toggle", renderFigure);
+    // A click on a cell asks for its history (one listener for every cell).
+    $("grid").addEventListener("click", (e) => {
+      const cell = e.target.closest("rect.cell");
+      if (cell) explainPixel(Number(cell.dataset.x), Number(cell.dataset.y));
+    });
   }
 
   async function start() {

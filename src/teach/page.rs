@@ -10,6 +10,7 @@
 use crate::numbers::exact_and_decimal;
 use crate::observe::explain::pixel_reason;
 use crate::observe::report::MatrixCell;
+use crate::observe::step::Stop;
 use crate::simulate::events::Outcome;
 use crate::teach::step::{Moved, Stepper};
 use crate::words::Lang;
@@ -50,39 +51,60 @@ pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
 }
 
 /// Every stop of the scene (each scanline that covers a pixel, in order) as
-/// data for a page: its heading, crossings and spans in words, each pixel's
-/// depth, test and reason, and both buffers after it, top row first.
+/// data for a page ([`stop_data`]).
 pub fn stops(lang: Lang, stepper: &mut Stepper<'_>) -> Vec<serde_json::Value> {
-    let scene = stepper.scene();
     let mut stops = Vec::new();
     let mut moved = stepper.start(None);
     while let Moved::To { at: Some(stop), .. } = moved {
-        let record = stepper.tracer().record(stop).clone();
-        let buffers = stepper.tracer().buffers_after(stop);
-        let pixels: Vec<serde_json::Value> = record
-            .pixels
-            .iter()
-            .map(|e| {
-                serde_json::json!({
-                    "x": e.x, "z": exact_and_decimal(lang, e.depth.value()), "stored": e.stored_before.text(lang),
-                    "written": e.outcome == Outcome::Written, "after": e.stored_after.text(lang),
-                    "afterExact": crate::numbers::fraction(e.stored_after.value()), "frame": e.frame_after,
-                    "frameBefore": e.frame_before,
-                    "reason": pixel_reason(lang, scene, e),
-                })
-            })
-            .collect();
-        let stop_words = stepper.stop_words(lang, stop);
-        stops.push(serde_json::json!({
-            "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
-            "scanline": stop_words.scanline, "crossings": stop_words.crossings, "spans": stop_words.spans,
-            "pixels": pixels,
-            "frame": buffers.frame_rows(),
-            "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
-        }));
+        stops.push(stop_data(lang, stepper, stop));
         moved = stepper.forward();
     }
     stops
+}
+
+/// Where the stepper's stops are, without what each shows: each stop's
+/// polygon and row, in order.
+pub fn stop_places(stepper: &mut Stepper<'_>) -> Vec<Stop> {
+    let mut places = Vec::new();
+    let mut moved = stepper.start(None);
+    while let Moved::To { at: Some(stop), .. } = moved {
+        places.push(stop);
+        moved = stepper.forward();
+    }
+    places
+}
+
+/// One stop as data for a page: its heading, crossings, spans with their
+/// ends' depths and the notes in words, each pixel's depth, test and reason,
+/// and both buffers after it, top row first.
+pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop) -> serde_json::Value {
+    let scene = stepper.scene();
+    let record = stepper.tracer().record(stop).clone();
+    let buffers = stepper.tracer().buffers_after(stop);
+    let pixels: Vec<serde_json::Value> = record
+        .pixels
+        .iter()
+        .map(|e| {
+            serde_json::json!({
+                "x": e.x, "z": exact_and_decimal(lang, e.depth.value()), "stored": e.stored_before.text(lang),
+                "written": e.outcome == Outcome::Written, "after": e.stored_after.text(lang),
+                "afterExact": crate::numbers::fraction(e.stored_after.value()), "frame": e.frame_after,
+                "frameBefore": e.frame_before,
+                "reason": pixel_reason(lang, scene, e),
+            })
+        })
+        .collect();
+    let stop_words = stepper.stop_words(lang, stop);
+    serde_json::json!({
+        "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
+        "scanline": stop_words.scanline, "crossings": stop_words.crossings,
+        // Each span with its ends' depths (x_a, z_a, x_b, z_b) and its columns, as the line mode shows it.
+        "spans": crate::teach::stop::span_lines(lang, scene, &record),
+        "notes": crate::teach::stop::notes(lang, scene, stop.polygon, &record, stepper.arith()),
+        "pixels": pixels,
+        "frame": buffers.frame_rows(),
+        "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
+    })
 }
 
 /// Markup's special characters written as JSON escapes (`<` as `\u003c`, …),

@@ -26,7 +26,7 @@ use crate::scene::Scene;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::answer_from_text;
-use crate::teach::step::{Moved, Stepper, judge_coverage, judge_depth, judge_frame};
+use crate::teach::step::{Stepper, judge_coverage, judge_depth, judge_frame};
 use crate::words::{Lang, polygon_label};
 
 /// How a scene typed into the page is named in messages.
@@ -39,6 +39,11 @@ pub const MAX_SHOWN_CELLS: u64 = 128 * 128;
 
 /// The most polygons whose buffers the page shows one by one.
 pub const MAX_SHOWN_POLYGONS: usize = 64;
+
+/// The largest raster whose final buffers the page prints as text: 1024 ×
+/// 1024 (a few megabytes of text). A larger scene is drawn, and the page
+/// says why its buffers are not printed.
+pub const MAX_PRINTED_CELLS: u64 = 1024 * 1024;
 
 /// The scene read from `text`, or its error worded as the command line words it.
 fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
@@ -54,9 +59,12 @@ fn matrix_text<T: MatrixCell>(rows: &[Vec<T>]) -> String {
 /// Everything the page shows of the scene in `text`: its settings and
 /// header, each polygon's outline in pixel units, the buffers after each
 /// polygon, the final buffers as `zsim run --final` prints them
-/// (`framebuffer`, `zbuffer`), the stepper's stops and the figure; or
+/// (`framebuffer`, `zbuffer`) and where the stepper stops; or
 /// `{"ok": false, "error": …}` with the scene's error.
-pub fn view(lang: Lang, text: &str) -> Value {
+///
+/// With it comes what stop number `at` shows (the last when there are fewer),
+/// as [`stop`] gives it, from the same tracing of the scene.
+pub fn view(lang: Lang, text: &str, at: usize) -> Value {
     let scene = match scene_of(lang, text) {
         Ok(scene) => scene,
         Err(error) => return error,
@@ -73,6 +81,8 @@ pub fn view(lang: Lang, text: &str) -> Value {
                 .iter()
                 .map(|v| [crate::numbers::to_f64(&v[0]), crate::numbers::to_f64(&v[1])])
                 .collect();
+            // Outlines only where the page shows the scene polygon by polygon.
+            let outline = if shown { outline } else { Vec::new() };
             json!({"name": polygon.name, "label": polygon_label(lang, "polygon-after", index, &polygon.name),
                    "value": polygon.value, "outline": outline})
         })
@@ -91,13 +101,18 @@ pub fn view(lang: Lang, text: &str) -> Value {
         }
     }
     let buffers = simulation.buffers();
-    let last = scene.polygons.len().checked_sub(1);
-    let figure = match last {
-        Some(last) if shown => Some(figure::svg(lang, &scene, buffers, last, Shading::Frame, SCENE_NAME)),
-        _ => None,
+    // Where the stops are; what one shows is asked for when it is shown ([`stop`]).
+    let (stops, stop): (Vec<Value>, Value) = if shown {
+        let mut stepper = Stepper::new(&scene, Arith::Exact);
+        let places = crate::teach::page::stop_places(&mut stepper);
+        let stop = match places.get(at.min(places.len().saturating_sub(1))) {
+            Some(&place) => crate::teach::page::stop_data(lang, &mut stepper, place),
+            None => Value::Null,
+        };
+        (places.iter().map(|&s| json!({"polygon": s.polygon, "row": stepper.tracer().record(s).row})).collect(), stop)
+    } else {
+        (Vec::new(), Value::Null)
     };
-    let stops =
-        if shown { crate::teach::page::stops(lang, &mut Stepper::new(&scene, Arith::Exact)) } else { Vec::new() };
     let mut notes = Vec::new();
     if !shown {
         notes.push(words!(
@@ -110,6 +125,12 @@ pub fn view(lang: Lang, text: &str) -> Value {
     if scene.effects.antialias.is_some() {
         notes.push(words!(lang, "play-no-antialias"));
     }
+    let printed = cells <= MAX_PRINTED_CELLS;
+    if !printed {
+        notes.push(words!(lang, "play-not-printed", cells = MAX_PRINTED_CELLS.to_string()));
+    }
+    let print =
+        |text: fn(&crate::simulate::buffer::Buffers) -> String| if printed { text(buffers) } else { String::new() };
     json!({
         "ok": true,
         "header": report::scene_header(lang, &scene, SCENE_NAME),
@@ -117,23 +138,51 @@ pub fn view(lang: Lang, text: &str) -> Value {
         "frameBits": scene.frame_bits, "depthBits": scene.depth_bits,
         "depthTest": scene.depth_test.local_name(lang), "op": scene.depth_test.symbol(),
         "polygons": polygons, "after": after,
-        "framebuffer": matrix_text(&buffers.frame_rows()),
-        "zbuffer": matrix_text(&buffers.depth_rows()),
-        "stops": stops, "figure": figure, "notes": notes,
+        "cellByCell": cells <= MAX_SHOWN_CELLS,
+        "framebuffer": print(|b| matrix_text(&b.frame_rows())),
+        "zbuffer": print(|b| matrix_text(&b.depth_rows())),
+        "stops": stops, "stop": stop, "notes": notes,
     })
 }
 
-/// The stop numbered `stop` (0-based, in the stepper's order) and its record.
+/// What stop number `stop` (0-based, in the stepper's order) of the scene in
+/// `text` shows ([`crate::teach::page::stop_data`]), or `{"ok": false, "error"}`.
+pub fn stop(lang: Lang, text: &str, stop: usize) -> Value {
+    let scene = match scene_of(lang, text) {
+        Ok(scene) => scene,
+        Err(error) => return error,
+    };
+    let mut stepper = Stepper::new(&scene, Arith::Exact);
+    match crate::teach::page::stop_places(&mut stepper).get(stop) {
+        Some(&at) => {
+            let mut data = crate::teach::page::stop_data(lang, &mut stepper, at);
+            data["ok"] = Value::Bool(true);
+            data
+        }
+        None => json!({"ok": false, "error": words!(lang, "play-no-such-stop")}),
+    }
+}
+
+/// The book-style figure of the scene in `text` after its last polygon, as
+/// `zsim figure` draws it (SVG), or `{"ok": false, "error"}`.
+pub fn figure(lang: Lang, text: &str) -> Value {
+    let scene = match scene_of(lang, text) {
+        Ok(scene) => scene,
+        Err(error) => return error,
+    };
+    let Some(last) = scene.polygons.len().checked_sub(1) else {
+        return json!({"ok": false, "error": words!(lang, "play-no-polygon")});
+    };
+    let mut simulation = Simulation::new(&scene);
+    simulation.finish(&mut Unobserved);
+    json!({"ok": true, "svg": figure::svg(lang, &scene, simulation.buffers(), last, Shading::Frame, SCENE_NAME)})
+}
+
+/// The record of stop number `stop` (0-based, in the stepper's order).
 fn stop_record(scene: &Scene, stop: usize) -> Option<crate::observe::trace::ScanlineRecord> {
     let mut stepper = Stepper::new(scene, Arith::Exact);
-    let mut moved = stepper.start(None);
-    for _ in 0..stop {
-        moved = stepper.forward();
-    }
-    match moved {
-        Moved::To { at: Some(at), .. } => Some(stepper.tracer().record(at).clone()),
-        _ => None,
-    }
+    let at = *crate::teach::page::stop_places(&mut stepper).get(stop)?;
+    Some(stepper.tracer().record(at).clone())
 }
 
 /// The quiz's question on the scene in `text`, at stop `stop`.
@@ -476,7 +525,7 @@ mod tests {
     /// book's depth 15 at (15, 15) and the triangle's 2 beside the rectangle.
     #[test]
     fn the_final_buffers_are_run_final_s_matrices() {
-        let view = view(Lang::En, BOOK);
+        let view = view(Lang::En, BOOK, 0);
         let depth = view["zbuffer"].as_str().unwrap();
         let row_15 = depth.lines().nth(31 - 15).unwrap();
         assert_eq!(row_15.split_whitespace().nth(15), Some("15"));
@@ -490,6 +539,7 @@ mod tests {
         let view = view(
             Lang::En,
             r#"{"width": 32, "height": 32, "polygons": [{"value": 1, "vertices": [[1, 2, 3], [4, 5]]}]}"#,
+            0,
         );
         assert_eq!(view["ok"], false);
         let error = view["error"].as_str().unwrap();
@@ -526,10 +576,12 @@ mod tests {
     /// The quiz's verdicts are the library's judges': 15 right at (15, 15) on the triangle's first stop there.
     #[test]
     fn the_quiz_is_judged_by_the_library() {
-        let view = view(Lang::En, BOOK);
+        let view = view(Lang::En, BOOK, 0);
         let stops = view["stops"].as_array().unwrap();
         let stop = stops.iter().position(|s| s["polygon"] == 1 && s["row"] == 15).unwrap();
-        let pixel = stops[stop]["pixels"].as_array().unwrap().iter().position(|p| p["x"] == 15).unwrap();
+        let shown = super::stop(Lang::En, BOOK, stop);
+        assert_eq!(shown["row"], 15);
+        let pixel = shown["pixels"].as_array().unwrap().iter().position(|p| p["x"] == 15).unwrap();
         assert_eq!(judge(Lang::En, BOOK, stop, Question::Depth(pixel), "15")["right"], true);
         assert_eq!(judge(Lang::En, BOOK, stop, Question::Depth(pixel), "14")["right"], false);
         assert!(judge(Lang::En, BOOK, stop, Question::Depth(pixel), "16")["again"].is_string());

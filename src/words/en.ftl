@@ -882,7 +882,7 @@ check-more-cells = … and { $count } more { $count ->
 
 ## The browser playground
 play-title = zsim playground: the z-buffer, step by step
-play-intro = Edit the scene on the left; every buffer below is drawn by zsim's own library, compiled for your browser.
+play-intro = Edit the scene; every buffer below is drawn by zsim's own library, compiled for your browser.
 play-language = Language
 play-scene = Scene
 play-width = width
@@ -916,6 +916,7 @@ play-after = after
 play-coverage = covered columns (e.g. 16-27, or -)
 play-your-answer = your answer
 play-too-large = This scene is too large to show cell by cell (more than { $cells } pixels or { $polygons } polygons): only the final buffers are shown.
+play-not-printed = This raster has more than { $cells } pixels: its buffers are drawn but not printed here; zsim run --final prints them.
 play-no-antialias = This page draws the scene without its antialiasing; zsim run shows the antialiased pictures.
 play-no-such-stop = There is no such stop in this scene any more: it was edited.
 play-no-polygon = There is no such polygon in this scene.

@@ -819,7 +819,7 @@ check-more-cells = …… 另有 { $count } 个单元格不同，未列出
 
 ## The browser playground
 play-title = zsim 演练场：逐步演示 z 缓冲
-play-intro = 在左侧编辑场景；下面的每个缓冲都由编译到浏览器中的 zsim 库绘制。
+play-intro = 编辑场景；下面的每个缓冲都由编译到浏览器中的 zsim 库绘制。
 play-language = 语言
 play-scene = 场景
 play-width = 宽度
@@ -853,6 +853,7 @@ play-after = 之后
 play-coverage = 覆盖的列（例如 16-27，或 -）
 play-your-answer = 你的答案
 play-too-large = 此场景太大，无法逐格显示（超过 { $cells } 个像素或 { $polygons } 个多边形）：只显示最终缓冲。
+play-not-printed = 此光栅超过 { $cells } 个像素：缓冲已绘制，但不在此打印；请用 zsim run --final 打印。
 play-no-antialias = 本页绘制场景时不做反走样；反走样的图像请用 zsim run 查看。
 play-no-such-stop = 场景中已没有这一步：场景已被修改。
 play-no-polygon = 场景中没有这个多边形。

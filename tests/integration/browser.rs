@@ -3,6 +3,8 @@
 //! the page's buttons and typing into its boxes. Nothing in the page knows it
 //! is being tested.
 
+use std::io::{Read, Write};
+use std::net::TcpListener;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
@@ -52,6 +54,40 @@ pub fn driver() -> Option<(Driver, PathBuf)> {
     Some((driver, browser))
 }
 
+/// Serves `folder` on a loopback port, as a static host would, for as long as the test runs.
+pub fn serve(folder: PathBuf) -> u16 {
+    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = listener.local_addr().unwrap().port();
+    std::thread::spawn(move || {
+        for stream in listener.incoming() {
+            let Ok(mut stream) = stream else { continue };
+            let mut request = [0u8; 4096];
+            let read = stream.read(&mut request).unwrap_or(0);
+            let request = String::from_utf8_lossy(&request[..read]);
+            let path = request.split_whitespace().nth(1).unwrap_or("/").split(['?', '#']).next().unwrap_or("/");
+            let name = if path == "/" { "index.html" } else { path.trim_start_matches('/') };
+            let file = (!name.contains("..")).then(|| std::fs::read(folder.join(name)).ok()).flatten();
+            let kind = match name.rsplit('.').next() {
+                Some("html") => "text/html; charset=utf-8",
+                Some("js") => "text/javascript",
+                Some("css") => "text/css",
+                Some("wasm") => "application/wasm",
+                _ => "application/octet-stream",
+            };
+            let _ = match file {
+                Some(body) => stream
+                    .write_all(
+                        format!("HTTP/1.1 200 OK\r\nContent-Type: {kind}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n", body.len())
+                            .as_bytes(),
+                    )
+                    .and_then(|_| stream.write_all(&body)),
+                None => stream.write_all(b"HTTP/1.1 404 Not Found\r\nContent-Length: 0\r\nConnection: close\r\n\r\n"),
+            };
+        }
+    });
+    port
+}
+
 /// A headless Chromium session that reaches nothing outside this machine.
 async fn session(driver: &Driver, browser: &Path, profile: &Path) -> Client {
     session_as(driver, browser, profile, "en-US", (1280, 900)).await
@@ -67,6 +103,12 @@ pub async fn session_as(driver: &Driver, browser: &Path, profile: &Path, lang: &
                  format!("--user-data-dir={}", profile.display())],
         "prefs": {"intl.accept_languages": lang},
     });
+    // A window narrower than headless Chromium's smallest is a phone's screen, emulated.
+    let mut options = options;
+    if size.0 < 500 {
+        options["mobileEmulation"] =
+            serde_json::json!({"deviceMetrics": {"width": size.0, "height": size.1, "pixelRatio": 1.0}});
+    }
     let mut capabilities = serde_json::Map::new();
     capabilities.insert("goog:chromeOptions".to_string(), options);
     ClientBuilder::new(hyper_util::client::legacy::connect::HttpConnector::new())

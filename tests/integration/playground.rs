@@ -5,8 +5,6 @@
 //! the quiz and pasting a homework answer. Every buffer it shows is held to
 //! what the native `zsim run --final` prints, every verdict to the library's.
 
-use std::io::{Read, Write};
-use std::net::TcpListener;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -16,7 +14,7 @@ use fantoccini::{Client, Locator};
 use zsim::Lang;
 use zsim::playground::{self, Question};
 
-use crate::browser::{click, driver, session_as, text};
+use crate::browser::{click, driver, serve, session_as, text};
 
 fn manifest() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -30,40 +28,6 @@ fn site() -> Option<PathBuf> {
     }
     crate::skipped("the playground's site (web/build writes it into target/web)", "the browser playground");
     None
-}
-
-/// Serves `folder` on a loopback port, as a static host would, for as long as the test runs.
-fn serve(folder: PathBuf) -> u16 {
-    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
-    let port = listener.local_addr().unwrap().port();
-    std::thread::spawn(move || {
-        for stream in listener.incoming() {
-            let Ok(mut stream) = stream else { continue };
-            let mut request = [0u8; 4096];
-            let read = stream.read(&mut request).unwrap_or(0);
-            let request = String::from_utf8_lossy(&request[..read]);
-            let path = request.split_whitespace().nth(1).unwrap_or("/").split(['?', '#']).next().unwrap_or("/");
-            let name = if path == "/" { "index.html" } else { path.trim_start_matches('/') };
-            let file = (!name.contains("..")).then(|| std::fs::read(folder.join(name)).ok()).flatten();
-            let kind = match name.rsplit('.').next() {
-                Some("html") => "text/html; charset=utf-8",
-                Some("js") => "text/javascript",
-                Some("css") => "text/css",
-                Some("wasm") => "application/wasm",
-                _ => "application/octet-stream",
-            };
-            let _ = match file {
-                Some(body) => stream
-                    .write_all(
-                        format!("HTTP/1.1 200 OK\r\nContent-Type: {kind}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n", body.len())
-                            .as_bytes(),
-                    )
-                    .and_then(|_| stream.write_all(&body)),
-                None => stream.write_all(b"HTTP/1.1 404 Not Found\r\nContent-Length: 0\r\nConnection: close\r\n\r\n"),
-            };
-        }
-    });
-    port
 }
 
 /// The final buffers `zsim run --final` prints for `scene`, bare: (framebuffer, z-buffer).
@@ -200,10 +164,10 @@ fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
     let dir = scratch("playground-quiz");
     let port = serve(site);
     let book = std::fs::read_to_string(manifest().join("examples/rogers.json")).unwrap();
-    let view = playground::view(Lang::En, &book);
+    let view = playground::view(Lang::En, &book, 0);
     let stops = view["stops"].as_array().unwrap();
     let stop = stops.iter().position(|s| s["polygon"] == 1 && s["row"] == 15).unwrap();
-    let pixels = stops[stop]["pixels"].as_array().unwrap().len();
+    let pixels = playground::stop(Lang::En, &book, stop)["pixels"].as_array().unwrap().len();
     let typed = ["15", "10", "zz", "24/2", "12.0", "1.1e1", "-", "16", "10.5", "", "", "", ""];
     assert_eq!(pixels, typed.len());
     let expected: Vec<(String, String)> = typed
@@ -315,7 +279,7 @@ fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
             )
             .await
             .unwrap();
-        let error = playground::view(Lang::Ru, bad)["error"].as_str().unwrap().to_string();
+        let error = playground::view(Lang::Ru, bad, 0)["error"].as_str().unwrap().to_string();
         assert_eq!(text(&client, "#error").await, error, "the scene's error in Russian");
         assert!(error.contains("вершин"), "{error}");
         std::fs::write(dir.join("playground-ru-1280.png"), client.screenshot().await.unwrap()).unwrap();
@@ -326,8 +290,13 @@ fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
         shown_buffers(&client).await;
         let width = client.execute("return document.documentElement.scrollWidth;", vec![]).await.unwrap();
         let inner = client.execute("return window.innerWidth;", vec![]).await.unwrap();
+        assert_eq!(inner.as_u64(), Some(360), "a phone's width");
         assert!(width.as_u64() <= inner.as_u64(), "the page is {width} px wide in a {inner} px window");
         std::fs::write(dir.join("playground-360.png"), client.screenshot().await.unwrap()).unwrap();
+        for part in ["grid", "framebuffer", "stop"] {
+            client.execute(&format!("document.getElementById('{part}').scrollIntoView();"), vec![]).await.unwrap();
+            std::fs::write(dir.join(format!("playground-360-{part}.png")), client.screenshot().await.unwrap()).unwrap();
+        }
         client.close().await.unwrap();
     });
     crate::ran("the playground in Russian and at 360 px", &dir.display().to_string());

@@ -26,8 +26,20 @@ pub fn book_scene() -> String {
 
 /// See [`playground::view`].
 #[wasm_bindgen]
-pub fn view(code: &str, scene: &str) -> String {
-    playground::view(lang(code), scene).to_string()
+pub fn view(code: &str, scene: &str, at: usize) -> String {
+    playground::view(lang(code), scene, at).to_string()
+}
+
+/// See [`playground::stop`].
+#[wasm_bindgen]
+pub fn stop(code: &str, scene: &str, stop: usize) -> String {
+    playground::stop(lang(code), scene, stop).to_string()
+}
+
+/// See [`playground::figure`].
+#[wasm_bindgen]
+pub fn figure(code: &str, scene: &str) -> String {
+    playground::figure(lang(code), scene).to_string()
 }
 
 /// See [`playground::judge`]: `question` is `coverage`, `depth` or `frame`.

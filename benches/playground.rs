@@ -1,0 +1,97 @@
+//! How fast the browser playground answers, measured in headless Chromium
+//! through WebDriver on `web/build`'s site: an edit of the book's scene (a
+//! vertex typed into the table) and a step of the stepper (Next), each from
+//! the event to the page redrawn, timed with the page's `performance.now()`
+//! around the event's dispatch, 41 times each, alternating; and the module's
+//! size, plain and gzipped. Run with `cargo bench --bench playground` after
+//! `web/build`.
+
+use std::path::Path;
+use std::time::Duration;
+
+#[path = "../tests/integration/browser.rs"]
+mod browser;
+
+/// Where a test would skip, the measurement cannot be made.
+pub fn skipped(what: &str, check: &str) {
+    panic!("{what} is missing, so {check} cannot be measured");
+}
+
+/// Unused here: the tests say what ran.
+pub fn ran(_check: &str, _with: &str) {}
+
+const ROUNDS: usize = 41;
+
+fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
+}
+
+fn main() {
+    let site = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/web");
+    assert!(site.join("zsim_web_bg.wasm").is_file(), "run web/build first");
+    let wasm = std::fs::read(site.join("zsim_web_bg.wasm")).unwrap();
+    let gzipped = std::process::Command::new("gzip")
+        .args(["-9", "-c"])
+        .arg(site.join("zsim_web_bg.wasm"))
+        .output()
+        .map(|o| o.stdout.len())
+        .unwrap_or(0);
+    let Some((driver, browser)) = browser::driver() else { return };
+    let port = browser::serve(site);
+    let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join("bench-playground-profile");
+    let _ = std::fs::remove_dir_all(&profile);
+    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    let (edits, steps, views) = runtime.block_on(async {
+        let client = browser::session_as(&driver, &browser, &profile, "en-US", (1280, 900)).await;
+        client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
+        for _ in 0..600 {
+            let shown = client.execute("return document.getElementById('framebuffer').textContent.length;", vec![]);
+            if shown.await.unwrap().as_u64().unwrap_or(0) > 0 {
+                break;
+            }
+            tokio::time::sleep(Duration::from_millis(50)).await;
+        }
+        let script = format!(
+            r#"const edits = [], steps = [], views = [];
+            const text = document.getElementById("json").value;
+            for (let i = 0; i < {ROUNDS}; i++) {{
+              const input = document.querySelector("input.coord[data-p='1'][data-v='0'][data-c='0']");
+              input.value = String(12 + (i % 3));
+              let t = performance.now();
+              input.dispatchEvent(new Event("change"));
+              edits.push(performance.now() - t);
+              const button = document.getElementById(i % 2 ? "back" : "next");
+              t = performance.now();
+              button.click();
+              steps.push(performance.now() - t);
+              t = performance.now();
+              JSON.parse(wasm_bindgen.view("en", text, 20));
+              views.push(performance.now() - t);
+            }}
+            return [edits, steps, views];"#
+        );
+        let times = client.execute(&script, vec![]).await.unwrap();
+        let list = |i: usize| times[i].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect::<Vec<_>>();
+        let measured = (list(0), list(1), list(2));
+        client.close().await.unwrap();
+        measured
+    });
+    let version = std::process::Command::new(&browser).arg("--version").output().map(|o| o.stdout).unwrap_or_default();
+    println!("browser: {}", String::from_utf8_lossy(&version).trim());
+    println!("module: {} bytes, {} gzipped (gzip -9)", wasm.len(), gzipped);
+    println!(
+        "edit of the book's scene (a vertex typed), event to page redrawn: median {:.2} ms, max {:.2} ms ({ROUNDS} runs)",
+        median(edits.clone()),
+        edits.iter().copied().fold(0.0, f64::max)
+    );
+    println!(
+        "the library's view of the book's scene alone (wasm_bindgen.view and JSON.parse): median {:.2} ms ({ROUNDS} runs)",
+        median(views)
+    );
+    println!(
+        "step (Next/Back), event to page redrawn: median {:.2} ms, max {:.2} ms ({ROUNDS} runs)",
+        median(steps.clone()),
+        steps.iter().copied().fold(0.0, f64::max)
+    );
+}
