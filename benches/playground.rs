@@ -9,16 +9,13 @@
 use std::path::Path;
 use std::time::Duration;
 
-#[path = "../tests/integration/browser.rs"]
-mod browser;
+#[path = "../tests/integration/chromium.rs"]
+mod chromium;
 
 /// Where a test would skip, the measurement cannot be made.
 pub fn skipped(what: &str, check: &str) {
     panic!("{what} is missing, so {check} cannot be measured");
 }
-
-/// Unused here: the tests say what ran.
-pub fn ran(_check: &str, _with: &str) {}
 
 const ROUNDS: usize = 41;
 
@@ -37,13 +34,13 @@ fn main() {
         .output()
         .map(|o| o.stdout.len())
         .unwrap_or(0);
-    let Some((driver, browser)) = browser::driver() else { return };
-    let port = browser::serve(site);
+    let Some((driver, browser)) = chromium::driver() else { return };
+    let port = chromium::serve(site);
     let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join("bench-playground-profile");
     let _ = std::fs::remove_dir_all(&profile);
     let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
     let (edits, steps, views) = runtime.block_on(async {
-        let client = browser::session_as(&driver, &browser, &profile, "en-US", (1280, 900)).await;
+        let client = chromium::session_as(&driver, &browser, &profile, "en-US", (1280, 900)).await;
         client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
         for _ in 0..600 {
             let shown = client.execute("return document.getElementById('framebuffer').textContent.length;", vec![]);

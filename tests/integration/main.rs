@@ -12,6 +12,7 @@ mod accuracy;
 mod bad_input;
 mod browser;
 mod buet;
+mod chromium;
 mod classroom;
 mod cs418;
 mod diagnosis;

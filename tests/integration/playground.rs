@@ -14,7 +14,8 @@ use fantoccini::{Client, Locator};
 use zsim::Lang;
 use zsim::playground::{self, Question};
 
-use crate::browser::{click, driver, serve, session_as, text};
+use crate::browser::{click, text};
+use crate::chromium::{driver, serve, session_as};
 
 fn manifest() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -205,8 +205,7 @@ fn no_name_can_change_the_page_it_is_embedded_in() {
     let run = zsim_in(Some(&dir), &["step", "scene.json", "--html", "-o", "page.html"]);
     assert_eq!(run.code, 0, "{}", run.stderr);
     let html = std::fs::read_to_string(dir.join("page.html")).unwrap();
-    let data = html.split(r#"<script type="application/json" id="data">"#).nth(1).unwrap();
-    let data = data.split("</script>").next().unwrap();
+    let data = embedded_data(&html);
     assert!(!data.contains(['<', '>', '&']), "markup inside the data: {data}");
     let parsed: serde_json::Value = serde_json::from_str(data).unwrap();
     assert!(
@@ -214,6 +213,16 @@ fn no_name_can_change_the_page_it_is_embedded_in() {
         "the name reads the same"
     );
     assert_eq!(html.matches("<script").count(), 2, "only the page's own scripts: its data and its code");
+}
+
+/// The data a page written by `step --html` embeds, as JSON text: the
+/// recorded page's data element, or the playground's scene (a JSON string).
+fn embedded_data(html: &str) -> &str {
+    if let Some(after) = html.split("window.ZSIM_SCENE = ").nth(1) {
+        return after.split(";\n").next().unwrap();
+    }
+    let data = html.split(r#"<script type="application/json" id="data">"#).nth(1).unwrap();
+    data.split("</script>").next().unwrap()
 }
 
 /// `figure` wrote invalid XML for names or titles holding characters XML
@@ -422,8 +431,7 @@ mod any_input {
             let run = zsim_in(Some(&dir), &["step", "scene.json", "--html", "-o", "page.html"]);
             prop_assert_eq!(run.code, 0, "{}", run.stderr);
             let html = std::fs::read_to_string(dir.join("page.html")).unwrap();
-            let data = html.split(r#"<script type="application/json" id="data">"#).nth(1).unwrap();
-            let data = data.split("</script>").next().unwrap();
+            let data = super::embedded_data(&html);
             prop_assert!(!data.contains(['<', '>', '&']));
             prop_assert!(serde_json::from_str::<serde_json::Value>(data).is_ok());
             prop_assert_eq!(html.matches("<script").count(), 2);
