@@ -211,6 +211,16 @@ fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
     let verdict_line = report.lines().next().unwrap().replace("depth.txt", "your answer");
     let diagnosis = report.lines().last().unwrap().to_string();
 
+    // Named as the page names the scene it holds.
+    std::fs::write(dir.join("scene.json"), &book).unwrap();
+    let explain = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(["explain", "--lang", "en", "scene.json", "--pixel", "20,15"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(explain.status.success());
+    let explained = String::from_utf8(explain.stdout).unwrap();
+    assert!(explained.contains("43/4 ≈ 10.75 > 10 stored, so 11 is stored"), "{explained}");
     let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
     runtime.block_on(async {
         let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
@@ -238,6 +248,10 @@ fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
         assert_eq!(shown, expected, "the page's verdicts are the library's");
         let coverage = playground::judge(Lang::En, &book, stop, Question::Coverage, "15-27");
         assert_eq!(text(&client, "#coverageWhy").await, coverage["line"].as_str().unwrap());
+
+        // A click on pixel (20, 15) shows its history as `zsim explain` prints it (the scene named as the page names it).
+        client.find(Locator::Css("rect.cell[data-x='20'][data-y='15']")).await.unwrap().click().await.unwrap();
+        assert_eq!(inner_text(&client, "explain").await, explained, "the pixel's history");
 
         // The homework, pasted as the book prints it.
         client.find(Locator::Css("#hwBuffer option[value='depth']")).await.unwrap().click().await.unwrap();
