@@ -329,6 +329,36 @@
     select.value = chosen !== "" && Number(chosen) < view.polygons.length ? chosen : Math.max(0, view.polygons.length - 1);
   }
 
+  // A grid of cells to type an answer into, top row first, starting from the cleared buffer;
+  // what is typed is written into the answer's text as the book prints a matrix.
+  function answerGrid() {
+    const box = $("answerCells");
+    if (box.firstChild) { box.replaceChildren(); return; }
+    const buffer = $("hwBuffer").value, start = view.cleared[buffer];
+    const lines = $("answer").value.trim().split("\n").map((l) => l.trim().split(/\s+/));
+    const fits = lines.length === view.height && lines.every((l) => l.length === view.width);
+    const table = el("table");
+    for (let i = 0; i < view.height; i++) {
+      const tr = el("tr");
+      for (let x = 0; x < view.width; x++) {
+        const input = el("input");
+        input.value = fits ? lines[i][x] : start === null ? "" : String(start);
+        Object.assign(input.dataset, { x, y: view.height - 1 - i });
+        input.setAttribute("aria-label", `(${x}, ${view.height - 1 - i})`);
+        const td = el("td");
+        td.appendChild(input);
+        tr.appendChild(td);
+      }
+      table.appendChild(tr);
+    }
+    table.addEventListener("input", () => {
+      const rows = [...table.rows].map((tr) => [...tr.querySelectorAll("input")].map((i) => i.value.trim() || "-").join(" "));
+      $("answer").value = rows.join("\n") + "\n";
+    });
+    box.appendChild(table);
+    table.dispatchEvent(new Event("input"));
+  }
+
   function checkAnswer() {
     const box = $("verdict");
     const result = call("check", scene, Number($("hwAfter").value), $("hwBuffer").value, $("answer").value);
@@ -390,6 +420,7 @@
     $("quizKind").onchange = renderStop;
     $("afterSelect").onchange = renderAfter;
     $("checkAnswer").onclick = checkAnswer;
+    $("answerGrid").onclick = answerGrid;
     $("figureBox").addEventListener("toggle", renderFigure);
     // A click on a cell asks for its history (one listener for every cell).
     $("grid").addEventListener("click", (e) => {

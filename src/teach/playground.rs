@@ -139,6 +139,8 @@ pub fn view(lang: Lang, text: &str, at: usize) -> Value {
         "depthTest": scene.depth_test.local_name(lang), "op": scene.depth_test.symbol(),
         "polygons": polygons, "after": after,
         "cellByCell": cells <= MAX_SHOWN_CELLS,
+        // What each buffer is cleared to: where a student's answer grid starts (no level: exact depths).
+        "cleared": {"frame": scene.background, "depth": scene.clear_depth.level()},
         "framebuffer": print(|b| matrix_text(&b.frame_rows())),
         "zbuffer": print(|b| matrix_text(&b.depth_rows())),
         "stops": stops, "stop": stop, "notes": notes,
@@ -472,7 +474,7 @@ pub fn page_words(lang: Lang) -> Value {
 }
 
 /// The page's labels: the name the page uses, and the catalogue's key.
-const PAGE_WORDS: [(&str, &str); 40] = [
+const PAGE_WORDS: [(&str, &str); 41] = [
     ("title", "play-title"),
     ("intro", "play-intro"),
     ("language", "play-language"),
@@ -504,6 +506,7 @@ const PAGE_WORDS: [(&str, &str); 40] = [
     ("homework", "play-homework"),
     ("homeworkHelp", "play-homework-help"),
     ("checkAnswer", "play-check"),
+    ("answerGrid", "play-answer-grid"),
     ("after", "play-after"),
     ("back", "page-back"),
     ("next", "page-next"),

@@ -912,6 +912,7 @@ play-figure = The figure
 play-homework = Check a homework answer
 play-homework-help = Type or paste the matrix as the book prints it, top row first.
 play-check = Check
+play-answer-grid = Type into a grid (starts from the cleared buffer)
 play-after = after
 play-coverage = covered columns (e.g. 16-27, or -)
 play-your-answer = your answer

@@ -849,6 +849,7 @@ play-figure = 图
 play-homework = 检查作业答案
 play-homework-help = 按教材的格式输入或粘贴矩阵，从最上面一行开始。
 play-check = 检查
+play-answer-grid = 在网格中输入（从清空的缓冲开始）
 play-after = 之后
 play-coverage = 覆盖的列（例如 16-27，或 -）
 play-your-answer = 你的答案

@@ -263,6 +263,35 @@ fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
         let rows = client.find_all(Locator::Css("#wrongCells tr")).await.unwrap();
         let wrong_in_report = report.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| x")).count();
         assert!(wrong_in_report > 0 && rows.len() > 1, "{report}");
+
+        // Typed into the grid instead: the cleared framebuffer, two cells filled in, checked as zsim check checks it.
+        client.execute("document.getElementById('answer').value = '';", vec![]).await.unwrap();
+        client.find(Locator::Css("#hwBuffer option[value='frame']")).await.unwrap().click().await.unwrap();
+        click(&client, "#answerGrid").await;
+        for (x, y, value) in [(20, 15, "2"), (10, 5, "1")] {
+            let cell =
+                client.find(Locator::Css(&format!("#answerCells input[data-x='{x}'][data-y='{y}']"))).await.unwrap();
+            cell.clear().await.unwrap();
+            cell.send_keys(value).await.unwrap();
+        }
+        let typed_answer = client.execute("return document.getElementById('answer').value;", vec![]).await.unwrap();
+        let typed_answer = typed_answer.as_str().unwrap().to_string();
+        let rows: Vec<&str> = typed_answer.lines().collect();
+        assert_eq!(rows.len(), 32);
+        assert_eq!(rows[31 - 15].split(' ').nth(20), Some("2"), "{typed_answer}");
+        assert_eq!(rows[31 - 5].split(' ').nth(10), Some("1"), "{typed_answer}");
+        std::fs::write(dir.join("frame.txt"), &typed_answer).unwrap();
+        let checked = Command::new(env!("CARGO_BIN_EXE_zsim"))
+            .args(["check", "--lang", "en", "book.json", "--frame", "frame.txt"])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let report = String::from_utf8(checked.stdout).unwrap();
+        click(&client, "#checkAnswer").await;
+        assert_eq!(
+            text(&client, "#verdict p").await,
+            report.lines().next().unwrap().replace("frame.txt", "your answer")
+        );
         client.close().await.unwrap();
     });
     crate::ran("the playground's quiz and homework through WebDriver", &format!("{} answers", typed.len()));
