@@ -377,6 +377,7 @@ explain-arith-differs = not what exact arithmetic gives
 
 ## clip-space vertices [x, y, z, w]
 
+vertex-decimal-comma = a vertex has four numbers, { $written }, among [x, y, z] vertices: is { $comma } a decimal comma? JSON numbers take a point: write { $meant }
 clip-space-mixed = mixes [x, y, z] vertices with clip-space [x, y, z, w] ones: write every vertex of a polygon the same way
 clip-space-alone = has clip-space vertices [x, y, z, w], which the viewport maps onto the raster; they do not combine with a window or the perspective effect
 fate-outside-view = it lies outside the view volume (−w ≤ x, y, z ≤ w): clipped away, not drawn

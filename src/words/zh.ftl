@@ -360,6 +360,7 @@ explain-arith-differs = 与精确运算结果不同
 
 ## 裁剪空间顶点 [x, y, z, w]
 
+vertex-decimal-comma = 一个顶点有四个数 { $written }，而其他顶点是 [x, y, z]：{ $comma } 是小数逗号吗？JSON 的小数用小数点：请写 { $meant }
 clip-space-mixed = 同时使用了 [x, y, z] 顶点和裁剪空间的 [x, y, z, w] 顶点：同一多边形的顶点请用同一种写法
 clip-space-alone = 使用裁剪空间顶点 [x, y, z, w]，由视口变换映射到光栅上；它们不能与窗口或透视效果同时使用
 fate-outside-view = 它位于视见体（−w ≤ x, y, z ≤ w）之外：被完全裁剪，不绘制

@@ -191,3 +191,26 @@ fn the_first_bad_polygon_of_a_large_scene_is_named_in_the_readers_language() {
     assert!(run.stderr.contains("непрозрачность 2 вне диапазона 0 … 1"), "{}", run.stderr);
     assert!(run.stderr.contains("p1234") && !run.stderr.contains("p3456"), "{}", run.stderr);
 }
+
+/// A vertex written with a decimal comma, `[1, 1, 2,5]` (natural in Russian
+/// and Ukrainian), was refused as a mix of pixel and clip-space vertices:
+/// it is named as a decimal comma, with the vertex probably meant.
+#[test]
+fn a_decimal_comma_is_named_as_one() {
+    let text =
+        r#"{"width": 8, "height": 8, "polygons": [{"value": 1, "vertices": [[1, 1, 2,5], [6, 1, 2], [1, 6, 2]]}]}"#;
+    let (dir, name) = scene_file("comma.json", text);
+    assert!(refused("comma.json", text).ends_with(
+        "polygon 1: a vertex has four numbers, [1, 1, 2, 5], among [x, y, z] vertices: is 2,5 a decimal comma? \
+         JSON numbers take a point: write [1, 1, 2.5]\n"
+    ));
+    let run = zsim_in(Some(&dir), &["run", &name, "--lang", "ru"]);
+    assert!(
+        run.stderr.contains("2,5 — это десятичная запятая? В JSON дробную часть отделяет точка: напишите [1, 1, 2.5]"),
+        "{}",
+        run.stderr
+    );
+    // A clip-space vertex that cannot be a decimal comma (a fraction for w) is still named as a mix.
+    let mixed = r#"{"width": 8, "height": 8, "polygons": [{"value": 1, "vertices": [[1, 1, 2, "1/2"], [6, 1, 2], [1, 6, 2]]}]}"#;
+    assert!(refused("mixed.json", mixed).contains("mixes [x, y, z] vertices with clip-space [x, y, z, w] ones"));
+}

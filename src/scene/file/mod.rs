@@ -349,6 +349,20 @@ impl<'de> serde::de::Visitor<'de> for VertexInto<'_> {
     }
 }
 
+/// A four-entry vertex among three-entry ones that reads as a decimal comma
+/// (`[1, 1, 2,5]`, natural in Russian and Ukrainian, is JSON's four numbers
+/// `[1, 1, 2, 5]`): whole `z` and `w`, `w` not negative. The vertex as read,
+/// the number with its comma (`2,5`) and the vertex as probably meant (`[1, 1, 2.5]`).
+fn decimal_comma([x, y, z, w]: &[Exact; 4]) -> Option<(String, String, String)> {
+    let (z, w) = (fraction(z.clone()), fraction(w.clone()));
+    let whole = |text: &str| text.parse::<i128>().is_ok();
+    if !whole(&z) || !whole(&w) || w.starts_with('-') {
+        return None;
+    }
+    let (x, y) = (fraction(x.clone()), fraction(y.clone()));
+    Some((format!("[{x}, {y}, {z}, {w}]"), format!("{z},{w}"), format!("[{x}, {y}, {z}.{w}]")))
+}
+
 impl<P: Send> SceneFile<P> {
     /// The scene: its settings validated, then each polygon made by `make`
     /// on every core, each thread in this thread's language; the error named
@@ -649,7 +663,13 @@ impl PolygonFile {
         let mut vertices: Vec<[Exact; 3]> = if clip_space.is_empty() {
             given
         } else if clip_space.len() < count {
-            return Err(fail(&name, PolygonProblem::Other(words!(lang, "clip-space-mixed"))));
+            let problem = match clip_space.first().and_then(decimal_comma) {
+                Some((written, comma, meant)) => {
+                    words!(lang, "vertex-decimal-comma", written = written, comma = comma, meant = meant)
+                }
+                None => words!(lang, "clip-space-mixed"),
+            };
+            return Err(fail(&name, PolygonProblem::Other(problem)));
         } else if frame.window.is_some() || frame.perspective.is_some() {
             return Err(fail(&name, PolygonProblem::Other(words!(lang, "clip-space-alone"))));
         } else {
