@@ -164,6 +164,20 @@ pub struct Rules {
 }
 
 impl Preset {
+    /// Every preset, the book's first.
+    pub const ALL: [Preset; 5] = [Preset::Rogers, Preset::Buet, Preset::Gl, Preset::Vulkan, Preset::Tinyrenderer];
+
+    /// The name a scene file gives it (`rogers`, `gl`, …).
+    pub fn key(self) -> &'static str {
+        match self {
+            Preset::Rogers => "rogers",
+            Preset::Buet => "buet",
+            Preset::Gl => "gl",
+            Preset::Vulkan => "vulkan",
+            Preset::Tinyrenderer => "tinyrenderer",
+        }
+    }
+
     /// The preset named in the reader's language (`the book's`, `OpenGL's`).
     pub fn name(self, lang: Lang) -> String {
         match self {
@@ -175,8 +189,8 @@ impl Preset {
         }
     }
 
-    /// The preset a name chooses, as a scene file names it (`rogers`, `gl`,
-    /// `vulkan`, and the aliases `d3d` and `webgpu`); why not, in `lang`.
+    /// The preset a name chooses, as a scene file names it ([`Preset::key`],
+    /// or the aliases `d3d`, `webgpu` and `gpu`); why not, in `lang`.
     pub fn parse(lang: Lang, text: &str) -> Result<Preset, String> {
         serde_json::from_value(serde_json::Value::String(text.to_string()))
             .map_err(|_| words!(lang, "usage-not-a-preset", text = crate::words::token(lang, text)))

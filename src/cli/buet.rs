@@ -109,7 +109,7 @@ fn run_case(
         lang,
         "buet-run-summary",
         path = zsim::shown_path(dir),
-        triangles = case.stage3.len().to_string(),
+        triangles = case.stage3.len(),
         width = case.config.width.to_string(),
         height = case.config.height.to_string(),
         tested = stats.tested.to_string(),

@@ -38,7 +38,11 @@ enum DepthAt {
     Pixel,
 }
 
+/// A size in MB (MiB) with three decimals, or in kB (KiB) below a megabyte, which would show as 0.000 MB.
 fn megabytes(bytes: u64) -> String {
+    if bytes < 1_000_000 {
+        return format!("{}.{:03} kB ({:.3} KiB)", bytes / 1000, bytes % 1000, bytes as f64 / 1024.0);
+    }
     format!("{}.{:03} MB ({:.3} MiB)", bytes / 1_000_000, (bytes % 1_000_000) / 1000, bytes as f64 / 1_048_576.0)
 }
 

@@ -49,7 +49,7 @@ pub struct GradeArgs {
 enum Format {
     /// A table, then the common mistakes.
     Text,
-    /// One row a student with a header row: student,frame_wrong,depth_wrong,score,status.
+    /// One row a student with a header row: student,frame_wrong,depth_wrong,score,status,misconception.
     Csv,
     /// One object: students and common mistakes.
     Json,

@@ -55,7 +55,7 @@ pub struct RunArgs {
     #[cfg(feature = "gpu")]
     #[arg(long, value_enum, value_name = "API")]
     compare_gpu: Option<GpuApi>,
-    /// List the cells where the scene's rules and this preset's (rogers, buet, gl or vulkan) draw differently, and why.
+    /// List the cells where the scene's rules and this preset's (rogers, buet, gl, vulkan or tinyrenderer) draw differently, and why.
     #[arg(long, value_name = "PRESET", value_parser = |text: &str| zsim::Preset::parse(super::language_of_the_run(), text))]
     compare_rules: Option<zsim::Preset>,
     /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.

@@ -167,7 +167,8 @@ pub fn json(
                 "student": g.student,
                 "frame_wrong": g.frame_wrong,
                 "depth_wrong": g.depth_wrong,
-                "score": g.percent(),
+                // A number, written exactly as the table shows it (one decimal).
+                "score": g.percent().parse::<serde_json::Number>().expect("a decimal is a JSON number"),
                 "status": g.status.to_string(),
                 "misconception": g.misconception.map(|d| d.misconception.name()),
                 "explained": g.misconception.map(|d| d.explained),

@@ -555,7 +555,10 @@ cs418-too-many-primitives = { $count } primitives do not fit a 32-bit framebuffe
 
 # The course commands and other command-line reports.
 file-written = wrote { $path }
-buet-run-summary = { $path }: { $triangles } triangles on { $width }×{ $height }, { $tested } pixel centres tested, { $written } written
+buet-run-summary = { $path }: { $triangles } { $triangles ->
+    [one] triangle
+   *[other] triangles
+} on { $width }×{ $height }, { $tested } pixel centres tested, { $written } written
 buet-answer-not-a-number = line { $line }, value { $value }: "{ $text }" is not a number
 buet-answer-rows = { $rows } rows; the raster has { $height }
 buet-none = (none)
@@ -625,7 +628,10 @@ step-float-crossings = crossings { $crossings }
 step-float-heading = in { $arith } arithmetic: { $found }
 step-float-no-pixel = no pixel covered
 step-float-missed = it misses the exact centres x = { $columns }
-run-summary = { $path }: { $polygons } polygons, { $tested } pixel centres tested, { $written } written; effects: { $effects }; stages: { $stages }; read { $read } ms, rasterized { $raster } ms on { $threads } { $threads ->
+run-summary = { $path }: { $polygons } { $polygons ->
+    [one] polygon
+   *[other] polygons
+}, { $tested } pixel centres tested, { $written } written; effects: { $effects }; stages: { $stages }; read { $read } ms, rasterized { $raster } ms on { $threads } { $threads ->
     [one] thread
    *[other] threads
 } ({ $rate } M pixels/s); memory: buffers { $buffers }, scene { $scene }{ $peak }

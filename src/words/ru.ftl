@@ -545,7 +545,11 @@ cs418-too-far = вершина попадает в ({ $x }, { $y }) на изо�
 cs418-too-many-primitives = { $count } примитивов не помещаются в 32-битный буфер кадра
 
 file-written = записан { $path }
-buet-run-summary = { $path }: { $triangles } треугольников на { $width }×{ $height }, проверено центров пикселов: { $tested }, записано: { $written }
+buet-run-summary = { $path }: { $triangles } { $triangles ->
+    [one] треугольник
+    [few] треугольника
+   *[other] треугольников
+} на { $width }×{ $height }, проверено центров пикселов: { $tested }, записано: { $written }
 buet-answer-not-a-number = строка { $line }, значение { $value }: «{ $text }» — не число
 buet-answer-rows = строк { $rows }; в растре { $height }
 buet-none = (нет)

@@ -545,7 +545,11 @@ cs418-too-far = вершина потрапляє в ({ $x }, { $y }) на зо�
 cs418-too-many-primitives = { $count } примітивів не вміщуються в 32-бітний буфер кадру
 
 file-written = записано { $path }
-buet-run-summary = { $path }: { $triangles } трикутників на { $width }×{ $height }, перевірено центрів пікселів: { $tested }, записано: { $written }
+buet-run-summary = { $path }: { $triangles } { $triangles ->
+    [one] трикутник
+    [few] трикутники
+   *[other] трикутників
+} на { $width }×{ $height }, перевірено центрів пікселів: { $tested }, записано: { $written }
 buet-answer-not-a-number = рядок { $line }, значення { $value }: «{ $text }» — не число
 buet-answer-rows = рядків { $rows }; у растрі { $height }
 buet-none = (немає)

@@ -209,3 +209,15 @@ fn seven_decimal_cases_are_drawn_exactly_instead_of_refused() {
         explain.stdout
     );
 }
+
+/// `buet run --lang ru` said "2 треугольников": the count agrees with its noun in every language.
+#[test]
+fn buet_run_counts_triangles_with_the_right_plural() {
+    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("buet-plural");
+    for (lang, words) in [("en", "2 triangles on"), ("ru", "2 треугольника на"), ("uk", "2 трикутники на")]
+    {
+        let run = crate::zsim(&["buet", "run", "examples/buet/case", "--lang", lang, "-o", out.to_str().unwrap()]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        assert!(run.stdout.starts_with(&format!("examples/buet/case: {words} 32×32")), "{}", run.stdout);
+    }
+}

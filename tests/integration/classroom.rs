@@ -421,3 +421,17 @@ fn a_book_style_exercise_has_no_sliver_and_no_depth_outside_the_range() {
     }
     assert!(free_sliver_or_outside, "the free style is what the book style excludes");
 }
+
+/// `grade --format json` gave the score as a string ("98.5"), and `grade
+/// --help` showed a CSV header without the `misconception` column the CSV has.
+#[test]
+fn grade_json_scores_are_numbers_and_the_help_shows_the_csv_header() {
+    let run = zsim(&["grade", "examples/rogers.json", "examples/class", "--format", "json"]);
+    let report: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
+    let scores: Vec<f64> =
+        report["students"].as_array().unwrap().iter().map(|s| s["score"].as_f64().unwrap()).collect();
+    assert_eq!(scores[..2], [100.0, 98.5], "{}", run.stdout);
+    let csv = zsim(&["grade", "examples/rogers.json", "examples/class", "--format", "csv"]).stdout;
+    let header = csv.lines().next().unwrap();
+    assert!(zsim(&["grade", "--help"]).stdout.contains(&format!("header row: {header}\n")), "{header}");
+}

@@ -192,6 +192,8 @@ fn import_does_not_need_the_textures() {
     let out = zsim(&["cs418", "import", case.to_str().unwrap()]);
     assert_eq!(out.code, 0, "{}", out.stderr);
     assert_eq!(out.stdout.matches("\"name\": \"point ").count(), 20, "{}", out.stdout);
+    // The preset by its name, not the old `gpu` it is also read as.
+    assert!(out.stdout.contains(r#""rules": {"preset": "vulkan", "store": "exact"}"#), "{}", out.stdout);
     let run = zsim(&["cs418", "run", case.to_str().unwrap(), "-o", env!("CARGO_TARGET_TMPDIR")]);
     assert_eq!(run.code, 2);
     assert!(

@@ -45,3 +45,13 @@ fn random_scenes_repeat_for_a_seed_and_respect_the_size() {
         zsim(&["random", "--count", "50", "--seed", "4", "--width", "64", "--height", "48", "--max-size", "10"]);
     assert_ne!(first.stdout, other.stdout);
 }
+
+/// `memory` printed "0.000 MB" for buffers under a kilobyte: below a
+/// megabyte the total is in kilobytes.
+#[test]
+fn memory_below_a_megabyte_is_in_kilobytes() {
+    let run = zsim(&["memory", "--width", "1", "--height", "1"]);
+    assert_eq!(run.stdout.lines().last(), Some("total: 2 bytes = 0.002 kB (0.002 KiB)"));
+    let run = zsim(&["memory", "--width", "32", "--height", "32"]);
+    assert_eq!(run.stdout.lines().last(), Some("total: 768 bytes = 0.768 kB (0.750 KiB)"));
+}

@@ -225,3 +225,33 @@ fn run_after_a_polygon_and_from_standard_input() {
         crate::zsim_stdin(&["run", "-", "--final"], &std::fs::read_to_string("examples/rogers.json").unwrap()).stdout;
     assert_eq!(stdout.replacen("scene -:", "scene examples/rogers.json:", 1), final_only.stdout);
 }
+
+/// `run --format none` said "1 polygons" for a scene of one polygon.
+#[test]
+fn format_none_counts_one_polygon_in_the_singular() {
+    let (dir, name) = crate::scene_file(
+        "one_polygon.json",
+        r#"{"polygons": [{"value": 1, "vertices": [[0, 0, 1], [4, 0, 1], [0, 4, 1]]}]}"#,
+    );
+    let run = crate::zsim_in(Some(&dir), &["run", &name, "--format", "none", "--lang", "en"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert!(
+        run.stdout.starts_with(&format!("{name}: 1 polygon, 10 pixel centres tested, 10 written;")),
+        "{}",
+        run.stdout
+    );
+}
+
+/// `run --help` named four of the five presets `--compare-rules` takes
+/// (tinyrenderer was missing): it names every one, each read back as itself.
+#[test]
+fn compare_rules_help_names_every_preset() {
+    let help = zsim(&["run", "--help"]).stdout;
+    let line = help.lines().find(|l| l.contains("--compare-rules")).unwrap();
+    let text = &help[help.find(line).unwrap()..];
+    let text = &text[..text.find("\n\n").unwrap_or(text.len())];
+    for preset in zsim::Preset::ALL {
+        assert!(text.contains(preset.key()), "--compare-rules' help names {}: {text}", preset.key());
+        assert_eq!(zsim::Preset::parse(zsim::Lang::En, preset.key()), Ok(preset));
+    }
+}

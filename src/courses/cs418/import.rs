@@ -33,7 +33,7 @@ pub fn scene_json(lang: crate::words::Lang, case: &Case) -> Result<String, CaseE
     let _ = writeln!(out, "{{");
     let _ = writeln!(out, "  \"width\": {}, \"height\": {},", case.width * level, case.height * level);
     let _ = writeln!(out, "  \"frame_bits\": {frame_bits}, \"background\": 0,");
-    let _ = writeln!(out, "  \"rules\": {{\"preset\": \"gpu\", \"store\": \"exact\"}},");
+    let _ = writeln!(out, "  \"rules\": {{\"preset\": \"vulkan\", \"store\": \"exact\"}},");
     let test = if case.features.depth { "less-equal" } else { "always" };
     let _ = writeln!(out, "  \"depth_test\": \"{test}\", \"clear_depth\": 1,");
     let _ = writeln!(out, "  \"polygons\": [");

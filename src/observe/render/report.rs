@@ -380,7 +380,7 @@ pub fn run_summary(lang: Lang, scene: &Scene, path: &str, figures: RunFigures) -
         lang,
         "run-summary",
         path = path,
-        polygons = stats.polygons.to_string(),
+        polygons = stats.polygons,
         tested = stats.tested.to_string(),
         written = stats.written.to_string(),
         effects = if effects.is_empty() { words!(lang, "run-summary-no-effects") } else { effects.join(", ") },
