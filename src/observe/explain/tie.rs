@@ -322,7 +322,7 @@ mod tests {
         let gpu = Rules::preset(Preset::Vulkan);
         assert_eq!(
             tie_text(Lang::En, gpu, &triangle(), 6, 3).unwrap(),
-            "the centre lies exactly on the right edge from (13/2, 1/2) to (13/2, 13/2), which the top-left rule (centres in [x_l, x_r): left edges in, right edges out) leaves out"
+            "the centre lies exactly on the right edge from (13/2, 1/2) to (13/2, 13/2), which the half-open column rule (centres in [x_l, x_r): left edges in, right edges out) leaves out"
         );
         assert_eq!(
             tie_text(Lang::En, Rules::default(), &triangle(), 3, 0).unwrap(),
