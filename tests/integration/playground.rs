@@ -375,3 +375,35 @@ fn step_html_writes_the_playground_as_one_file_that_opens_from_disk() {
     });
     crate::ran("step --html's playground from file://", "examples/less.json");
 }
+
+/// For every example scene (effects, windows, perspective, clip space,
+/// concave polygons, another depth test), the final buffers the page shows
+/// are what `zsim run --final` prints, where the scene has no antialiasing
+/// (the page draws without it and says so).
+#[test]
+fn the_pages_buffers_are_run_final_s_for_every_example() {
+    let dir = scratch("playground-examples");
+    let mut compared = 0;
+    for entry in std::fs::read_dir(manifest().join("examples")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "json") {
+            continue;
+        }
+        let scene = std::fs::read_to_string(&path).unwrap();
+        let view = playground::view(Lang::En, &scene, 0);
+        assert_eq!(view["ok"], true, "{}: {view}", path.display());
+        if scene.contains("\"antialias\"") {
+            assert_eq!(
+                view["notes"].as_array().unwrap().len(),
+                1,
+                "{}: the page says it draws without antialiasing",
+                path.display()
+            );
+            continue;
+        }
+        let shown = (view["framebuffer"].as_str().unwrap().to_string(), view["zbuffer"].as_str().unwrap().to_string());
+        assert_eq!(shown, run_final(&scene, &dir), "{}", path.display());
+        compared += 1;
+    }
+    assert!(compared >= 10, "{compared} examples compared");
+}
