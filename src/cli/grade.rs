@@ -77,7 +77,8 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
         Format::Csv => gradebooks::csv(&rows),
         Format::Json => {
             let en = zsim::Lang::En;
-            gradebooks::json(en, &args.scene, &polygon_name(en, &scene, last), &rows, &class.mistakes, &class.reasons)
+            let found = (&class.mistakes[..], &class.reasons[..], &class.skipped[..]);
+            gradebooks::json(en, &args.scene, &polygon_name(en, &scene, last), &rows, found)
         }
         Format::Text => {
             let counts = |f: fn(&Grade) -> bool| rows.iter().filter(|g| f(g)).count();
@@ -93,8 +94,9 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
                 malformed = counts(|g| matches!(g.status, Status::Malformed(_))),
                 missing = counts(|g| matches!(g.status, Status::Missing(_)))
             );
+            let skipped: String = class.skipped.iter().map(|s| format!("{}\n", s.text(lang))).collect();
             format!(
-                "{summary}\n{}\n\n{}{}",
+                "{summary}\n{}\n\n{}{}{skipped}",
                 table(lang, &rows),
                 causes_text(lang, &rows),
                 mistakes_text(lang, &class.mistakes, &class.reasons, rows.len())
@@ -106,7 +108,10 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
         let regraded = if plain { Some(grade_class(lang, &scene, &args.scene, &args.class, last)?) } else { None };
         write_feedback(lang, folder, (&scene, args), regraded.as_ref().unwrap_or(&class))?;
     }
-    let finish = if rows.iter().all(|g| g.status == zsim::grade::Status::Ok) { Finish::Ok } else { Finish::Differs };
+    // A misnamed answer is a student's work not graded, as a wrong one is.
+    let all_graded = class.skipped.iter().all(|s| s.meant.is_none());
+    let ok = all_graded && rows.iter().all(|g| g.status == zsim::grade::Status::Ok);
+    let finish = if ok { Finish::Ok } else { Finish::Differs };
     emit_then(out, &text, finish)
 }
 

@@ -51,6 +51,63 @@ pub struct ClassGrades {
     pub mistakes: Vec<CommonMistake>,
     /// zsim's reason for each common mistake.
     pub reasons: Vec<String>,
+    /// The folder's other files, by name: none of them was graded.
+    pub skipped: Vec<Skipped>,
+}
+
+/// A file of a class folder that is not an answer file, so nobody's work:
+/// named in the report, so that a misnamed answer (`frank.depht.txt`,
+/// `ana.FRAME.txt`) does not leave its student ungraded unnoticed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Skipped {
+    /// Its name, as shown ([`printable`]).
+    pub name: String,
+    /// The student and buffer it was probably meant for, when its name is one
+    /// letter or letter case away from an answer file's.
+    pub meant: Option<(String, Buffer)>,
+}
+
+impl Skipped {
+    /// One line in `lang`: the file and why it was not graded.
+    pub fn text(&self, lang: Lang) -> String {
+        match &self.meant {
+            Some((student, buffer)) => words!(
+                lang,
+                "grade-skipped-near",
+                file = self.name.as_str(),
+                student = student.as_str(),
+                buffer = buffer.name(lang),
+                name = format!("{student}.{}.txt", file_kind(*buffer))
+            ),
+            None => words!(lang, "grade-skipped", file = self.name.as_str()),
+        }
+    }
+}
+
+/// The student and buffer a file name nearly names: `STUDENT.KIND.txt`
+/// where `KIND` is `frame` or `depth` but for letter case or one letter
+/// (added, left out, changed or two swapped), or the extension is `txt` in
+/// another case.
+fn near_miss(name: &str) -> Option<(String, Buffer)> {
+    let (rest, extension) = name.rsplit_once('.')?;
+    let (student, kind) = rest.rsplit_once('.')?;
+    if student.is_empty() || student.starts_with('.') || !extension.eq_ignore_ascii_case("txt") {
+        return None;
+    }
+    let kind = kind.to_ascii_lowercase();
+    let buffer = [Buffer::Frame, Buffer::Depth].into_iter().find(|b| one_edit(&kind, file_kind(*b)))?;
+    Some((printable(student).into_owned(), buffer))
+}
+
+/// Whether `a` is `b`, or `b` with one letter added, left out, changed, or two neighbours swapped.
+fn one_edit(a: &str, b: &str) -> bool {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    let start = a.iter().zip(&b).take_while(|(x, y)| x == y).count();
+    let (a, b) = (&a[start..], &b[start..]);
+    let end = a.iter().rev().zip(b.iter().rev()).take_while(|(x, y)| x == y).count().min(a.len().min(b.len()));
+    let (a, b) = (&a[..a.len() - end], &b[..b.len() - end]);
+    let swapped = a.len() == 2 && b.len() == 2 && a[0] == b[1] && a[1] == b[0];
+    a.len() <= 1 && b.len() <= 1 || swapped
 }
 
 impl ClassGrades {
@@ -69,7 +126,7 @@ pub fn grade_class(
     class: &Path,
     last: usize,
 ) -> Result<ClassGrades, Error> {
-    let files = answer_files(class)?;
+    let (files, skipped) = answer_files(class)?;
     let mut simulation = Simulation::new(scene);
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
     simulation.draw_parallel_through(last, simulation.default_tile(threads), threads, &|| {});
@@ -114,23 +171,24 @@ pub fn grade_class(
     }
     let mistakes = common_mistakes(lang, scene, &files, &students, &expected, &counts);
     let reasons = reasons(lang, scene, last, &mistakes);
-    Ok(ClassGrades { last, files, graded, mistakes, reasons })
+    Ok(ClassGrades { last, files, graded, mistakes, reasons, skipped })
 }
 
 /// The answer files in the class folder, by student then framebuffer before
-/// z-buffer. Other files are passed over. A student is named once, by one
+/// z-buffer, and the other files by name (but for zsim's own feedback). A student is named once, by one
 /// normalisation of the file name's stem: bytes that are not UTF-8 become
 /// U+FFFD and control characters are escaped ([`printable`]), as every
 /// table, gradebook and feedback file shows them; two files that come to one
 /// student and buffer (`a\xff.frame.txt` and `a\xfe.frame.txt`, a real
 /// newline and a written `\u{a}`) are refused by name, before anything is
 /// graded or written.
-fn answer_files(class: &Path) -> Result<Vec<AnswerFile>, Error> {
+fn answer_files(class: &Path) -> Result<(Vec<AnswerFile>, Vec<Skipped>), Error> {
     let entries = std::fs::read_dir(class).map_err(|source| Error::Read { path: class.to_owned(), source })?;
-    let mut files = Vec::new();
+    let (mut files, mut skipped) = (Vec::new(), Vec::new());
     for entry in entries {
         let entry = entry.map_err(|source| Error::Read { path: class.to_owned(), source })?;
         let name = entry.file_name().to_string_lossy().into_owned();
+        let answers = files.len();
         for buffer in [Buffer::Frame, Buffer::Depth] {
             if let Some(student) = name.strip_suffix(&format!(".{}.txt", file_kind(buffer)))
                 && !student.is_empty()
@@ -146,12 +204,17 @@ fn answer_files(class: &Path) -> Result<Vec<AnswerFile>, Error> {
                 files.push(AnswerFile { student, buffer, path: entry.path() });
             }
         }
+        let zsims_own = name.ends_with(".feedback.txt") || name == "common-mistakes.txt";
+        if files.len() == answers && !zsims_own {
+            skipped.push(Skipped { name: printable(&name).into_owned(), meant: near_miss(&name) });
+        }
     }
     if files.is_empty() {
         return Err(Usage::NoAnswersFound { class: class.to_path_buf() }.into());
     }
     files.sort_by(|a, b| a.student.cmp(&b.student).then((a.buffer == Buffer::Depth).cmp(&(b.buffer == Buffer::Depth))));
-    Ok(files)
+    skipped.sort_by(|a, b| a.name.cmp(&b.name));
+    Ok((files, skipped))
 }
 
 /// The answers of `students` for the buffers the class hands in, read on

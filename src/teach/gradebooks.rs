@@ -157,9 +157,15 @@ pub fn json(
     scene: &Path,
     after: &str,
     rows: &[&Grade],
-    mistakes: &[CommonMistake],
-    reasons: &[String],
+    (mistakes, reasons, skipped): (&[CommonMistake], &[String], &[crate::teach::class::Skipped]),
 ) -> String {
+    let skipped: Vec<serde_json::Value> = skipped
+        .iter()
+        .map(|s| {
+            let (student, buffer) = s.meant.as_ref().map(|(student, buffer)| (student, buffer.name(lang))).unzip();
+            serde_json::json!({"file": s.name, "student": student, "buffer": buffer, "reason": s.text(lang)})
+        })
+        .collect();
     let students: Vec<serde_json::Value> = rows
         .iter()
         .map(|g| {
@@ -196,6 +202,8 @@ pub fn json(
         "after": after,
         "students": students,
         "common_mistakes": mistakes,
+        // The folder's files that were not graded, and why (a misnamed answer names its student).
+        "not_graded": skipped,
     });
     format!("{}\n", serde_json::to_string_pretty(&object).expect("serializing plain data cannot fail"))
 }

@@ -887,6 +887,9 @@ check-more-cells = … and { $count } more { $count ->
    *[other] cells differ
 }, not listed
 
+grade-skipped = not graded: { $file } is not an answer file (NAME.frame.txt or NAME.depth.txt)
+grade-skipped-near = not graded: { $file } looks like { $student }'s { $buffer }: name it { $name }
+
 ## The browser playground
 play-title = zsim playground: the z-buffer, step by step
 play-intro = Edit the scene; every buffer below is drawn by zsim's own library, compiled for your browser.

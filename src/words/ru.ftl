@@ -863,6 +863,9 @@ check-more-cells = … и ещё { $count } { $count ->
    *[other] ячеек отличаются
 }, не перечислены
 
+grade-skipped = не проверен: { $file } — не файл ответа (ИМЯ.frame.txt или ИМЯ.depth.txt)
+grade-skipped-near = не проверен: { $file } похож на { $buffer } ученика { $student }: назовите его { $name }
+
 ## The browser playground
 play-title = Песочница zsim: z-буфер шаг за шагом
 play-intro = Меняйте сцену; все буферы ниже рисует библиотека zsim, скомпилированная для вашего браузера.

@@ -863,6 +863,9 @@ check-more-cells = … і ще { $count } { $count ->
    *[other] клітинок відрізняються
 }, не перелічено
 
+grade-skipped = не перевірено: { $file } — не файл відповіді (ІМ'Я.frame.txt або ІМ'Я.depth.txt)
+grade-skipped-near = не перевірено: { $file } схожий на { $buffer } учня { $student }: назвіть його { $name }
+
 ## The browser playground
 play-title = Пісочниця zsim: z-буфер крок за кроком
 play-intro = Змінюйте сцену; усі буфери нижче малює бібліотека zsim, скомпільована для вашого браузера.

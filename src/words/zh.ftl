@@ -818,6 +818,9 @@ usage-gradebook-cannot-tell = 对成绩册而言“{ $first }”和“{ $second 
 png-figure-too-many-pixels = 按该 --scale，PNG 将超过 { $max } 个像素：请调小
 check-more-cells = …… 另有 { $count } 个单元格不同，未列出
 
+grade-skipped = 未评分：{ $file } 不是答案文件（应为 姓名.frame.txt 或 姓名.depth.txt）
+grade-skipped-near = 未评分：{ $file } 看起来是 { $student } 的{ $buffer }：请命名为 { $name }
+
 ## The browser playground
 play-title = zsim 演练场：逐步演示 z 缓冲
 play-intro = 编辑场景；下面的每个缓冲都由编译到浏览器中的 zsim 库绘制。

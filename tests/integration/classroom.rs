@@ -435,3 +435,52 @@ fn grade_json_scores_are_numbers_and_the_help_shows_the_csv_header() {
     let header = csv.lines().next().unwrap();
     assert!(zsim(&["grade", "--help"]).stdout.contains(&format!("header row: {header}\n")), "{header}");
 }
+
+/// `grade` passed over files it could not match without a word:
+/// `frank.depht.txt` and `bob.FRAME.txt` left frank and bob ungraded, exit 0.
+/// Each file not graded is named with why, a near miss with the name it
+/// should have, in the table and in the JSON, and the exit status is 1.
+#[test]
+fn grade_names_every_file_it_did_not_grade() {
+    let class = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("class-near-misses");
+    let _ = std::fs::remove_dir_all(&class);
+    std::fs::create_dir_all(&class).unwrap();
+    let examples = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/class");
+    for (from, to) in [
+        ("ana.frame.txt", "ana.frame.txt"),
+        ("ana.depth.txt", "ana.depth.txt"),
+        ("bo.depth.txt", "frank.depht.txt"),
+        ("di.frame.txt", "bob.FRAME.txt"),
+    ] {
+        std::fs::copy(examples.join(from), class.join(to)).unwrap();
+    }
+    std::fs::write(class.join("notes.md"), "the answers are in the .txt files\n").unwrap();
+    let folder = class.to_str().unwrap();
+    let run = zsim(&["grade", "examples/rogers.json", folder, "--lang", "en"]);
+    assert_eq!(run.code, 1, "a student's work was not graded: {}", run.stdout);
+    assert!(
+        run.stdout.ends_with(
+            "not graded: bob.FRAME.txt looks like bob's framebuffer: name it bob.frame.txt\n\
+             not graded: frank.depht.txt looks like frank's z-buffer: name it frank.depth.txt\n\
+             not graded: notes.md is not an answer file (NAME.frame.txt or NAME.depth.txt)\n"
+        ),
+        "{}",
+        run.stdout
+    );
+    let json = zsim(&["grade", "examples/rogers.json", folder, "--format", "json"]);
+    assert_eq!(json.code, 1);
+    let report: serde_json::Value = serde_json::from_str(&json.stdout).unwrap();
+    let not_graded = report["not_graded"].as_array().unwrap();
+    assert_eq!(not_graded.len(), 3);
+    assert_eq!(
+        (not_graded[1]["file"].as_str(), not_graded[1]["student"].as_str()),
+        (Some("frank.depht.txt"), Some("frank"))
+    );
+    assert_eq!(not_graded[2]["student"], serde_json::Value::Null);
+    // Only stray files, no misnamed answer: named, but everyone's work was graded.
+    std::fs::remove_file(class.join("frank.depht.txt")).unwrap();
+    std::fs::remove_file(class.join("bob.FRAME.txt")).unwrap();
+    let run = zsim(&["grade", "examples/rogers.json", folder]);
+    assert_eq!(run.code, 0, "{}", run.stdout);
+    assert!(run.stdout.contains("not graded: notes.md is not an answer file"), "{}", run.stdout);
+}

@@ -349,7 +349,7 @@ impl<'de> serde::de::Visitor<'de> for VertexInto<'_> {
     }
 }
 
-/// A four-entry vertex among three-entry ones that reads as a decimal comma
+/// A four-entry vertex among (more) three-entry ones that reads as a decimal comma
 /// (`[1, 1, 2,5]`, natural in Russian and Ukrainian, is JSON's four numbers
 /// `[1, 1, 2, 5]`): whole `z` and `w`, `w` not negative. The vertex as read,
 /// the number with its comma (`2,5`) and the vertex as probably meant (`[1, 1, 2.5]`).
@@ -663,7 +663,9 @@ impl PolygonFile {
         let mut vertices: Vec<[Exact; 3]> = if clip_space.is_empty() {
             given
         } else if clip_space.len() < count {
-            let problem = match clip_space.first().and_then(decimal_comma) {
+            // Four numbers where most vertices have three: a decimal comma, when it reads as one.
+            let odd_ones_out = clip_space.len() < given.len();
+            let problem = match clip_space.first().filter(|_| odd_ones_out).and_then(decimal_comma) {
                 Some((written, comma, meant)) => {
                     words!(lang, "vertex-decimal-comma", written = written, comma = comma, meant = meant)
                 }
