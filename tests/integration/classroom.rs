@@ -484,3 +484,22 @@ fn grade_names_every_file_it_did_not_grade() {
     assert_eq!(run.code, 0, "{}", run.stdout);
     assert!(run.stdout.contains("not graded: notes.md is not an answer file"), "{}", run.stdout);
 }
+
+/// `exercise --lang ru` wrote "тест глубины greater" in the teacher's notes:
+/// the depth test is named in the notes' language.
+#[test]
+fn exercise_notes_name_the_depth_test_in_their_language() {
+    for (lang, ending) in [
+        ("ru", "тест глубины больше"),
+        ("uk", "тест глибини більше"),
+        ("zh", "深度测试 大于"),
+        ("en", "depth test greater"),
+    ] {
+        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("exercise-notes-{lang}"));
+        let _ = std::fs::remove_dir_all(&dir);
+        let run = zsim(&["exercise", "-o", dir.to_str().unwrap(), "--lang", lang]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let notes = std::fs::read_to_string(dir.join("exercise.txt")).unwrap();
+        assert!(notes.lines().next().unwrap().ends_with(ending), "{notes}");
+    }
+}

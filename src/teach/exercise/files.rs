@@ -111,7 +111,8 @@ fn notes(lang: Lang, exercise: &Exercise, spec: &Spec, dir: &Path) -> String {
         polygons = scene.polygons.len().to_string(),
         frame_bits = scene.frame_bits.to_string(),
         depth_bits = scene.depth_bits.to_string(),
-        max = scene.depth_max().to_string()
+        max = scene.depth_max().to_string(),
+        test = scene.depth_test.local_name(lang)
     ) + "\n";
     let asked = if asked.is_empty() { words!(lang, "exercise-notes-no-case") } else { asked.join(", ") };
     let line = words!(lang, "exercise-notes-asked", asked = asked, candidate = exercise.tries.to_string());
