@@ -137,7 +137,9 @@ fn check(
         return Ok(Finish::Ok);
     }
     let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_header(
+    // The "why" column wraps: the table stays 100 columns wide at most.
+    table.load_style(presets::ASCII_MARKDOWN).set_content_arrangement(comfy_table::ContentArrangement::Dynamic);
+    table.set_width(100).set_header(
         ["buet-header-line", "buet-header-value", "buet-header-answer", "buet-header-right", "buet-header-why"]
             .map(|key| zsim::words!(lang, key)),
     );

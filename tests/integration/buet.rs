@@ -96,6 +96,9 @@ fn check_accepts_the_golden_answer_and_explains_a_wrong_one() {
     assert_eq!(run.code, 1, "{}", run.stdout);
     assert!(run.stdout.contains("1 value differs"), "{}", run.stdout);
     assert!(run.stdout.contains("| 0.979799 | 0.979798 | cell ("), "{}", run.stdout);
+    // Its table wrapped its reasons at 347 characters: it stays 100 columns wide at most.
+    let widest = run.stdout.lines().filter(|l| l.starts_with('|')).map(|l| l.chars().count()).max().unwrap();
+    assert!(widest <= 100, "widest line {widest}: {}", run.stdout);
     // A malformed answer is refused.
     std::fs::write(&answer, "0.5\tabc\n").unwrap();
     let run = zsim(&["buet", "check", case.to_str().unwrap(), "--answer", answer.to_str().unwrap()]);
