@@ -243,14 +243,8 @@
     select.value = chosen;
     const after = view.after[chosen];
     $("afterHeading").textContent = after ? `${after.heading} — ${after.counts}` : "";
-    $("afterFrame").textContent = after ? matrix(after.frame) : "";
-    $("afterDepth").textContent = after ? matrix(after.depth) : "";
-  }
-
-  // A matrix as the command line lays it out: each column right-aligned to its widest value.
-  function matrix(rows) {
-    const widths = rows[0].map((_, x) => Math.max(...rows.map((r) => String(r[x]).length)));
-    return rows.map((r) => r.map((v, x) => String(v).padStart(widths[x])).join(" ")).join("\n") + "\n";
+    $("afterFrame").textContent = after ? after.frame : "";
+    $("afterDepth").textContent = after ? after.depth : "";
   }
 
   function renderStop() {
@@ -311,8 +305,7 @@
       };
       box.appendChild(check);
     } else {
-      const rows = $("quizKind").value === "frame" ? stop.frame : stop.depth;
-      box.appendChild(el("pre", matrix(rows)));
+      box.appendChild(el("pre", $("quizKind").value === "frame" ? stop.frame : stop.depth));
     }
   }
 

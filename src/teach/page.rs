@@ -9,7 +9,7 @@
 
 use crate::numbers::exact_and_decimal;
 use crate::observe::explain::pixel_reason;
-use crate::observe::report::MatrixCell;
+use crate::observe::report::{MatrixCell, MatrixStyle, matrix_styled};
 use crate::observe::step::Stop;
 use crate::simulate::events::Outcome;
 use crate::teach::step::{Moved, Stepper};
@@ -56,7 +56,7 @@ pub fn stops(lang: Lang, stepper: &mut Stepper<'_>) -> Vec<serde_json::Value> {
     let mut stops = Vec::new();
     let mut moved = stepper.start(None);
     while let Moved::To { at: Some(stop), .. } = moved {
-        stops.push(stop_data(lang, stepper, stop));
+        stops.push(stop_data(lang, stepper, stop, Buffers::Cells));
         moved = stepper.forward();
     }
     stops
@@ -74,10 +74,19 @@ pub fn stop_places(stepper: &mut Stepper<'_>) -> Vec<Stop> {
     places
 }
 
+/// How a page wants a stop's buffers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Buffers {
+    /// Rows of cells, top row first, to draw a grid of.
+    Cells,
+    /// The matrices as `zsim run` prints them.
+    Printed,
+}
+
 /// One stop as data for a page: its heading, crossings, spans with their
 /// ends' depths and the notes in words, each pixel's depth, test and reason,
-/// and both buffers after it, top row first.
-pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop) -> serde_json::Value {
+/// and both buffers after it, as `asked`.
+pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop, asked: Buffers) -> serde_json::Value {
     let scene = stepper.scene();
     let record = stepper.tracer().record(stop).clone();
     let buffers = stepper.tracer().buffers_after(stop);
@@ -95,6 +104,7 @@ pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop) -> serde_jso
         })
         .collect();
     let stop_words = stepper.stop_words(lang, stop);
+    let matrices = buffer_data(&buffers, asked);
     serde_json::json!({
         "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
         "scanline": stop_words.scanline, "crossings": stop_words.crossings,
@@ -102,9 +112,32 @@ pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop) -> serde_jso
         "spans": crate::teach::stop::span_lines(lang, scene, &record),
         "notes": crate::teach::stop::notes(lang, scene, stop.polygon, &record, stepper.arith()),
         "pixels": pixels,
-        "frame": buffers.frame_rows(),
-        "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        "frame": matrices.0,
+        "depth": matrices.1,
     })
+}
+
+/// A state's two buffers as a page asks for them ([`Buffers`]).
+pub fn buffer_data(
+    buffers: &crate::simulate::buffer::Buffers,
+    asked: Buffers,
+) -> (serde_json::Value, serde_json::Value) {
+    match asked {
+        Buffers::Cells => (
+            serde_json::json!(buffers.frame_rows()),
+            serde_json::json!(
+                buffers
+                    .depth_rows()
+                    .iter()
+                    .map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>())
+                    .collect::<Vec<_>>()
+            ),
+        ),
+        Buffers::Printed => {
+            let style = MatrixStyle::default();
+            (matrix_styled(&buffers.frame_rows(), &style).into(), matrix_styled(&buffers.depth_rows(), &style).into())
+        }
+    }
 }
 
 /// Markup's special characters written as JSON escapes (`<` as `\u003c`, …),

@@ -18,14 +18,16 @@ use base64::Engine as _;
 use serde_json::{Value, json};
 
 use crate::effects::arith::Arith;
+use crate::numbers::to_f64;
 use crate::observe::explain::Buffer;
 use crate::observe::explain::history::{Extras, history};
 use crate::observe::render::figure::{self, Shading};
-use crate::observe::render::report::{self, MatrixCell, MatrixStyle};
+use crate::observe::render::report;
 use crate::scene::Scene;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::answer_from_text;
+use crate::teach::page::{Buffers, buffer_data};
 use crate::teach::step::{Stepper, judge_coverage, judge_depth, judge_frame};
 use crate::words::{Lang, polygon_label};
 
@@ -51,13 +53,8 @@ fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
         .map_err(|error| json!({"ok": false, "error": error.message(lang)}))
 }
 
-/// A matrix exactly as `zsim run --final` prints it bare (top row first).
-fn matrix_text<T: MatrixCell>(rows: &[Vec<T>]) -> String {
-    report::matrix_styled(rows, &MatrixStyle::default())
-}
-
-/// Everything the page shows of the scene in `text`: its settings and
-/// header, each polygon's outline in pixel units, the buffers after each
+/// Everything the page shows of the scene in `text`: its size, each
+/// polygon's outline in pixel units, the buffers after each
 /// polygon, the final buffers as `zsim run --final` prints them
 /// (`framebuffer`, `zbuffer`) and where the stepper stops; or
 /// `{"ok": false, "error": …}` with the scene's error.
@@ -76,13 +73,11 @@ pub fn view(lang: Lang, text: &str, at: usize) -> Value {
         .iter()
         .enumerate()
         .map(|(index, polygon)| {
-            let outline: Vec<[f64; 2]> = polygon
-                .vertices()
-                .iter()
-                .map(|v| [crate::numbers::to_f64(&v[0]), crate::numbers::to_f64(&v[1])])
-                .collect();
             // Outlines only where the page shows the scene polygon by polygon.
-            let outline = if shown { outline } else { Vec::new() };
+            let outline: Vec<[f64; 2]> = match shown {
+                true => polygon.vertices().iter().map(|v| [to_f64(&v[0]), to_f64(&v[1])]).collect(),
+                false => Vec::new(),
+            };
             json!({"name": polygon.name, "label": polygon_label(lang, "polygon-after", index, &polygon.name),
                    "value": polygon.value, "outline": outline})
         })
@@ -91,12 +86,11 @@ pub fn view(lang: Lang, text: &str, at: usize) -> Value {
     let mut after = Vec::new();
     while let Some(drawn) = simulation.draw_next_counted(&mut Unobserved) {
         if shown {
-            let buffers = simulation.buffers();
+            let (frame, depth) = buffer_data(simulation.buffers(), Buffers::Printed);
             after.push(json!({
                 "heading": report::polygon_heading(lang, &scene, drawn.index),
                 "counts": words!(lang, "run-counts", covered = drawn.tested.to_string(), written = drawn.written.to_string()),
-                "frame": buffers.frame_rows(),
-                "depth": buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                "frame": frame, "depth": depth,
             }));
         }
     }
@@ -106,7 +100,7 @@ pub fn view(lang: Lang, text: &str, at: usize) -> Value {
         let mut stepper = Stepper::new(&scene, Arith::Exact);
         let places = crate::teach::page::stop_places(&mut stepper);
         let stop = match places.get(at.min(places.len().saturating_sub(1))) {
-            Some(&place) => crate::teach::page::stop_data(lang, &mut stepper, place),
+            Some(&place) => crate::teach::page::stop_data(lang, &mut stepper, place, Buffers::Printed),
             None => Value::Null,
         };
         (places.iter().map(|&s| json!({"polygon": s.polygon, "row": stepper.tracer().record(s).row})).collect(), stop)
@@ -129,20 +123,18 @@ pub fn view(lang: Lang, text: &str, at: usize) -> Value {
     if !printed {
         notes.push(words!(lang, "play-not-printed", cells = MAX_PRINTED_CELLS.to_string()));
     }
-    let print =
-        |text: fn(&crate::simulate::buffer::Buffers) -> String| if printed { text(buffers) } else { String::new() };
+    let (framebuffer, zbuffer) = match printed {
+        true => buffer_data(buffers, Buffers::Printed),
+        false => (Value::from(""), Value::from("")),
+    };
     json!({
         "ok": true,
-        "header": report::scene_header(lang, &scene, SCENE_NAME),
         "width": scene.width, "height": scene.height,
-        "frameBits": scene.frame_bits, "depthBits": scene.depth_bits,
-        "depthTest": scene.depth_test.local_name(lang), "op": scene.depth_test.symbol(),
         "polygons": polygons, "after": after,
         "cellByCell": cells <= MAX_SHOWN_CELLS,
         // What each buffer is cleared to: where a student's answer grid starts (no level: exact depths).
         "cleared": {"frame": scene.background, "depth": scene.clear_depth.level()},
-        "framebuffer": print(|b| matrix_text(&b.frame_rows())),
-        "zbuffer": print(|b| matrix_text(&b.depth_rows())),
+        "framebuffer": framebuffer, "zbuffer": zbuffer,
         "stops": stops, "stop": stop, "notes": notes,
     })
 }
@@ -157,7 +149,7 @@ pub fn stop(lang: Lang, text: &str, stop: usize) -> Value {
     let mut stepper = Stepper::new(&scene, Arith::Exact);
     match crate::teach::page::stop_places(&mut stepper).get(stop) {
         Some(&at) => {
-            let mut data = crate::teach::page::stop_data(lang, &mut stepper, at);
+            let mut data = crate::teach::page::stop_data(lang, &mut stepper, at, Buffers::Printed);
             data["ok"] = Value::Bool(true);
             data
         }

@@ -15,7 +15,7 @@ use zsim::Lang;
 use zsim::playground::{self, Question};
 
 use crate::browser::{click, text};
-use crate::chromium::{driver, serve, session_as};
+use crate::chromium::{Driver, driver, serve, session_as};
 
 fn manifest() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -29,6 +29,18 @@ fn site() -> Option<PathBuf> {
     }
     crate::skipped("the playground's site (web/build writes it into target/web)", "the browser playground");
     None
+}
+
+/// The site served on loopback, a browser to open it with and a scratch
+/// folder `name`; `None` after saying what is missing.
+fn served(name: &str) -> Option<(Driver, PathBuf, PathBuf, u16)> {
+    let site = site()?;
+    let (driver, browser) = driver()?;
+    Some((driver, browser, scratch(name), serve(site)))
+}
+
+fn runtime() -> tokio::runtime::Runtime {
+    tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap()
 }
 
 /// The final buffers `zsim run --final` prints for `scene`, bare: (framebuffer, z-buffer).
@@ -93,10 +105,7 @@ fn scratch(name: &str) -> PathBuf {
 /// scene the page holds.
 #[test]
 fn the_playground_shows_what_run_final_prints_as_a_scene_is_typed_dragged_and_linked() {
-    let Some(site) = site() else { return };
-    let Some((driver, browser)) = driver() else { return };
-    let dir = scratch("playground-edit");
-    let port = serve(site);
+    let Some((driver, browser, dir, port)) = served("playground-edit") else { return };
     let mut random_scenes = Vec::new();
     for seed in 1..=6 {
         let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
@@ -107,7 +116,7 @@ fn the_playground_shows_what_run_final_prints_as_a_scene_is_typed_dragged_and_li
         assert!(output.status.success());
         random_scenes.push(String::from_utf8(output.stdout).unwrap());
     }
-    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    let runtime = runtime();
     runtime.block_on(async {
         let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
         client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
@@ -160,10 +169,7 @@ fn the_playground_shows_what_run_final_prints_as_a_scene_is_typed_dragged_and_li
 /// misconception is the one `zsim check` names for the same file.
 #[test]
 fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
-    let Some(site) = site() else { return };
-    let Some((driver, browser)) = driver() else { return };
-    let dir = scratch("playground-quiz");
-    let port = serve(site);
+    let Some((driver, browser, dir, port)) = served("playground-quiz") else { return };
     let book = std::fs::read_to_string(manifest().join("examples/rogers.json")).unwrap();
     let view = playground::view(Lang::En, &book, 0);
     let stops = view["stops"].as_array().unwrap();
@@ -221,7 +227,7 @@ fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
     assert!(explain.status.success());
     let explained = String::from_utf8(explain.stdout).unwrap();
     assert!(explained.contains("43/4 ≈ 10.75 > 10 stored, so 11 is stored"), "{explained}");
-    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    let runtime = runtime();
     runtime.block_on(async {
         let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
         client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
@@ -302,11 +308,8 @@ fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
 /// nothing is wider than the window.
 #[test]
 fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
-    let Some(site) = site() else { return };
-    let Some((driver, browser)) = driver() else { return };
-    let dir = scratch("playground-lang");
-    let port = serve(site);
-    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    let Some((driver, browser, dir, port)) = served("playground-lang") else { return };
+    let runtime = runtime();
     runtime.block_on(async {
         let client = session_as(&driver, &browser, &dir.join("profile-ru"), "ru-RU", (1280, 900)).await;
         client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
@@ -365,7 +368,7 @@ fn step_html_writes_the_playground_as_one_file_that_opens_from_disk() {
         .output()
         .unwrap();
     assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    let runtime = runtime();
     runtime.block_on(async {
         let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
         client.goto(&format!("file://{}", dir.join("page.html").display())).await.unwrap();
