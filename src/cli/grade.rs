@@ -90,7 +90,7 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
                 polygon = polygon_after(lang, &scene, last),
                 students = rows.len(),
                 ok = counts(|g| g.status == Status::Ok),
-                wrong = counts(|g| g.status == Status::Wrong),
+                wrong = counts(|g| matches!(g.status, Status::Wrong | Status::Incomplete(_))),
                 malformed = counts(|g| matches!(g.status, Status::Malformed(_))),
                 missing = counts(|g| matches!(g.status, Status::Missing(_)))
             );
@@ -107,6 +107,10 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
         // Feedback is for the students: in their language, graded again only where the table was English.
         let regraded = if plain { Some(grade_class(lang, &scene, &args.scene, &args.class, last)?) } else { None };
         write_feedback(lang, folder, (&scene, args), regraded.as_ref().unwrap_or(&class))?;
+    }
+    // A gradebook stays importable: the files not graded are named on standard error.
+    if matches!(args.format, Format::Csv | Format::Moodle | Format::Canvas) {
+        class.skipped.iter().for_each(|skipped| super::say(&skipped.text(lang)));
     }
     // A misnamed answer is a student's work not graded, as a wrong one is.
     let all_graded = class.skipped.iter().all(|s| s.meant.is_none());
@@ -155,7 +159,7 @@ fn table(lang: zsim::Lang, rows: &[&Grade]) -> Table {
             count(grade.frame_wrong),
             count(grade.depth_wrong),
             zsim::localize_decimal(lang, grade.percent()),
-            status_text(lang, &grade.status),
+            grade.status.words(lang),
         ];
         if causes {
             row.push(grade.misconception.map_or_else(String::new, |d| {
@@ -195,17 +199,6 @@ fn causes_text(lang: zsim::Lang, rows: &[&Grade]) -> String {
     }
     text.push('\n');
     text
-}
-
-/// A student's status in the reader's language (CSV and JSON keep
-/// [`Status`]'s English words).
-fn status_text(lang: zsim::Lang, status: &Status) -> String {
-    match status {
-        Status::Ok => zsim::words!(lang, "grade-status-ok"),
-        Status::Wrong => zsim::words!(lang, "grade-status-wrong"),
-        Status::Malformed(why) => zsim::words!(lang, "grade-status-malformed", why = why),
-        Status::Missing(what) => zsim::words!(lang, "grade-status-missing", what = what),
-    }
 }
 
 fn mistakes_text(lang: zsim::Lang, mistakes: &[CommonMistake], reasons: &[String], students: usize) -> String {
@@ -259,7 +252,7 @@ fn write_feedback(
             scene = zsim::shown_path(&args.scene),
             polygon = polygon_after(lang, scene, last),
             score = zsim::localize_decimal(lang, grade.percent()),
-            status = status_text(lang, &grade.status)
+            status = grade.status.words(lang)
         ) + "\n";
         // The answers that were read, explained as `zsim check` explains them.
         let mut answers = Vec::new();

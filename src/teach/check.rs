@@ -8,7 +8,9 @@ use std::path::{Path, PathBuf};
 use crate::door::{Links, read_text_with};
 use crate::effects::arith::{self, Arith};
 use crate::error::{Error, Task, Usage};
-pub use crate::observe::check::{CellRange, Matrix, Mismatch, Misreading, compare, misreading, parse_answer};
+pub use crate::observe::check::{
+    Answer, CellRange, Matrix, Mismatch, Misreading, compare, compare_answer, misreading, parse_answer,
+};
 use crate::observe::explain::{Buffer, polygon_after, why};
 use crate::observe::trace::PixelWatcher;
 use crate::scene::Scene;
@@ -19,14 +21,14 @@ use crate::words::printable;
 
 /// Reads an answer file for one of `scene`'s buffers: a matrix as the book
 /// prints it; a symbolic link is followed only where `links` says so.
-pub fn read_answer(lang: Lang, path: &Path, scene: &Scene, buffer: Buffer, links: Links) -> Result<Matrix, Error> {
+pub fn read_answer(lang: Lang, path: &Path, scene: &Scene, buffer: Buffer, links: Links) -> Result<Answer, Error> {
     let text = read_text_with(lang, path, links)?;
     answer_from_text(lang, &text, scene, buffer).map_err(|message| Error::Answer { path: path.to_owned(), message })
 }
 
 /// An answer for one of `scene`'s buffers read from `text` (a file's, or one
 /// typed into the page); `Err` says why not, in `lang`.
-pub fn answer_from_text(lang: Lang, text: &str, scene: &Scene, buffer: Buffer) -> Result<Matrix, String> {
+pub fn answer_from_text(lang: Lang, text: &str, scene: &Scene, buffer: Buffer) -> Result<Answer, String> {
     let (max, description) = match buffer {
         Buffer::Frame => (
             crate::scene::max_for_bits(scene.frame_bits),
@@ -248,6 +250,10 @@ pub struct AnswerCheck {
     /// How many cells differ in all: [`AnswerCheck::wrong`] explains the
     /// first [`MAX_EXPLAINED`] of them, top row first.
     pub differing: usize,
+    /// How many cells were left unanswered (`?` or `.`): neither right nor wrong.
+    pub unanswered: usize,
+    /// What it earns by the score's rule ([`crate::teach::grade::score`]).
+    pub earned: crate::teach::grade::Earned,
     /// A likely misreading of the whole matrix (flipped, transposed, …), worded.
     pub hint: Option<String>,
 }
@@ -276,20 +282,27 @@ impl CheckReport {
         self.answers.iter().map(|a| a.differing).sum()
     }
 
-    /// Whether any cell differs.
+    /// Whether any cell differs or was left unanswered: the answers are not
+    /// yet the whole right answer.
     pub fn differs(&self) -> bool {
-        self.wrong() > 0
+        self.wrong() > 0 || self.answers.iter().any(|a| a.unanswered > 0)
     }
 
-    /// The verdict on one of its answers, one line in `lang`: all cells match,
-    /// or how many differ.
+    /// The verdict on one of its answers, one line in `lang`: all the cells
+    /// answered match, or how many differ; and how many were left unanswered.
     pub fn verdict(&self, lang: Lang, answer: &AnswerCheck) -> String {
-        let (buffer, file, cells, after) = (answer.buffer.name(lang), &answer.file, self.cells, &self.after);
-        if answer.wrong.is_empty() {
-            return words!(lang, "check-all-match", buffer = buffer, file = file, cells = cells, after = after);
+        let (buffer, file, after) = (answer.buffer.name(lang), &answer.file, &self.after);
+        let cells = self.cells - answer.unanswered;
+        let mut verdict = if answer.wrong.is_empty() {
+            words!(lang, "check-all-match", buffer = buffer, file = file, cells = cells, after = after)
+        } else {
+            let count = answer.differing;
+            words!(lang, "check-differ", buffer = buffer, file = file, count = count, cells = cells, after = after)
+        };
+        if answer.unanswered > 0 {
+            verdict.push_str(&words!(lang, "check-unanswered", count = answer.unanswered, cells = self.cells));
         }
-        let count = answer.differing;
-        words!(lang, "check-differ", buffer = buffer, file = file, count = count, cells = cells, after = after)
+        verdict
     }
 }
 
@@ -300,7 +313,7 @@ pub fn check(
     scene: &Scene,
     scene_path: &Path,
     last: usize,
-    answers: Vec<(Buffer, &Path, Matrix)>,
+    answers: Vec<(Buffer, &Path, Answer)>,
     arith: Arith,
 ) -> Result<CheckReport, Error> {
     arith::check_supported(scene, arith)?;
@@ -331,10 +344,15 @@ pub fn check(
             })?,
         };
         let hint = misreading(&answer, &expected);
-        let mut mismatches = compare(&answer, &expected);
+        let mut mismatches = compare_answer(&answer, &expected);
         let differing = mismatches.len();
         mismatches.truncate(MAX_EXPLAINED);
-        results.push((buffer, path, mismatches, hint, differing));
+        let cleared = match buffer {
+            Buffer::Frame => scene.background,
+            Buffer::Depth => scene.clear_depth.level().unwrap_or(0),
+        };
+        let earned = crate::teach::grade::Earned::of(Some(&answer), &expected, cleared);
+        results.push((buffer, path, mismatches, hint, (differing, answer.unanswered(), earned)));
     }
     // Watch the differing cells through a second run, to explain each.
     let mut watcher = PixelWatcher::new(results.iter().flat_map(|(_, _, m, _, _)| m.iter().map(|c| (c.x, c.y))));
@@ -344,7 +362,7 @@ pub fn check(
     let exact = simulation.buffers();
     let answers = results
         .into_iter()
-        .map(|(buffer, path, mismatches, hint, differing)| {
+        .map(|(buffer, path, mismatches, hint, (differing, unanswered, earned))| {
             let wrong = mismatches
                 .iter()
                 .map(|cell| {
@@ -374,7 +392,8 @@ pub fn check(
                     words!(lang, "check-hint-fewer", how = how, left = left, top = top)
                 }
             });
-            AnswerCheck { buffer, file: crate::words::shown_path(path), wrong, differing, hint }
+            let file = crate::words::shown_path(path);
+            AnswerCheck { buffer, file, wrong, differing, unanswered, earned, hint }
         })
         .collect();
     Ok(CheckReport {

@@ -10,14 +10,13 @@ use rayon::prelude::*;
 
 use crate::door::Links;
 use crate::error::{Error, Task, Usage};
-use crate::observe::check::Matrix;
 use crate::observe::explain::{Buffer, why};
 use crate::observe::trace::PixelWatcher;
 use crate::scene::Scene;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::{as_the_student_sees, read_answer};
 use crate::teach::diagnose::Diagnoser;
-use crate::teach::grade::{CommonMistake, Grade, Handed, Submission, WrongCells, file_kind, grade};
+use crate::teach::grade::{CommonMistake, Grade, Handed, Key, Submission, WrongCells, file_kind, grade};
 use crate::words::Lang;
 use crate::words::printable;
 
@@ -141,7 +140,11 @@ pub fn grade_class(
                 Error::from(Usage::ExactDepthsHaveNoMatrix { path: scene_path.to_owned(), task: Task::Grade })
             })?,
         };
-        expected.push((buffer, matrix));
+        let cleared = match buffer {
+            Buffer::Frame => scene.background,
+            Buffer::Depth => scene.clear_depth.level().unwrap_or(0),
+        };
+        expected.push(Key { buffer, matrix, cleared });
     }
     // The usual wrong rules, drawn once for the whole class.
     let diagnoser = Diagnoser::new(scene, last);
@@ -153,7 +156,7 @@ pub fn grade_class(
     // MAX_EXPLAINED: a class wrong everywhere on a large raster would
     // otherwise hold every student's every cell at once.
     let cells = scene.width as usize * scene.height as usize;
-    let mut counts: Vec<(Buffer, Vec<u32>)> = expected.iter().map(|(b, _)| (*b, vec![0; cells])).collect();
+    let mut counts: Vec<(Buffer, Vec<u32>)> = expected.iter().map(|key| (key.buffer, vec![0; cells])).collect();
     let mut graded = Vec::with_capacity(students.len());
     for batch in students.chunks(threads.max(1)) {
         for (grade, mut wrong) in
@@ -223,7 +226,7 @@ fn submissions(
     lang: Lang,
     files: &[AnswerFile],
     students: &[&str],
-    expected: &[(Buffer, Matrix)],
+    expected: &[Key],
     scene: &Scene,
 ) -> Vec<Submission> {
     students
@@ -231,7 +234,7 @@ fn submissions(
         .map(|student| {
             let answers = expected
                 .iter()
-                .map(|(buffer, _)| {
+                .map(|Key { buffer, .. }| {
                     let file = files.iter().find(|file| file.student == *student && file.buffer == *buffer);
                     let handed = match file {
                         None => Handed::Missing,
@@ -283,7 +286,7 @@ fn common_mistakes(
     scene: &Scene,
     files: &[AnswerFile],
     students: &[&str],
-    expected: &[(Buffer, Matrix)],
+    expected: &[Key],
     counts: &[(Buffer, Vec<u32>)],
 ) -> Vec<CommonMistake> {
     let (width, height) = (scene.width, scene.height);
@@ -305,8 +308,8 @@ fn common_mistakes(
     let mut mistakes: Vec<CommonMistake> = cells
         .iter()
         .map(|&(_, buffer, x, y)| {
-            let (_, matrix) = expected.iter().find(|(b, _)| *b == buffer).expect("a buffer handed in");
-            let right = matrix[(height - 1 - y) as usize][x as usize];
+            let key = expected.iter().find(|key| key.buffer == buffer).expect("a buffer handed in");
+            let right = key.matrix[(height - 1 - y) as usize][x as usize];
             CommonMistake { buffer, x, y, right, students: Vec::new(), answers: Vec::new() }
         })
         .collect();
@@ -318,7 +321,10 @@ fn common_mistakes(
         for submission in submissions(lang, files, batch, expected, scene) {
             for mistake in &mut mistakes {
                 let answer = submission.answers.iter().find(|(b, _)| *b == mistake.buffer).and_then(|(_, h)| match h {
-                    Handed::Matrix(m) => Some(m[(height - 1 - mistake.y) as usize][mistake.x as usize]),
+                    Handed::Matrix(m) => {
+                        let (row, x) = ((height - 1 - mistake.y) as usize, mistake.x as usize);
+                        m.answered(row, x).then(|| m.rows[row][x])
+                    }
                     _ => None,
                 });
                 if let Some(value) = answer.filter(|v| *v != mistake.right) {

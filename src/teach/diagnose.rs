@@ -13,7 +13,7 @@
 //! answer one polygon early, rows written bottom first.
 
 use crate::numbers::{Q, floor_div};
-use crate::observe::check::{HINTED_CELLS, Matrix};
+use crate::observe::check::{Answer, HINTED_CELLS, Matrix};
 use crate::raster::depth::{Depth, DepthTest, Stored};
 use crate::rules::{ColumnRule, Compare, DepthStore};
 use crate::scene::Scene;
@@ -110,7 +110,7 @@ type State = (Matrix, Matrix);
 
 /// The misconception that best explains a student's answer to `scene` after
 /// polygon `last` (either buffer may be missing); see [`Diagnoser::diagnose`].
-pub fn diagnose(scene: &Scene, last: usize, frame: Option<&Matrix>, depth: Option<&Matrix>) -> Option<Diagnosis> {
+pub fn diagnose(scene: &Scene, last: usize, frame: Option<&Answer>, depth: Option<&Answer>) -> Option<Diagnosis> {
     Diagnoser::new(scene, last)?.diagnose(frame, depth)
 }
 
@@ -119,6 +119,7 @@ pub fn diagnose(scene: &Scene, last: usize, frame: Option<&Matrix>, depth: Optio
 #[derive(Debug, Clone)]
 pub struct Diagnoser {
     right: State,
+    cleared: (u32, u32),
     candidates: Vec<(Misconception, State)>,
 }
 
@@ -140,16 +141,19 @@ impl Diagnoser {
             .filter_map(|m| buffers_under(m, scene, last, &right, &covered).map(|state| (m, state)))
             .filter(|(_, state)| *state != right)
             .collect();
-        Some(Diagnoser { right, candidates })
+        let cleared = (scene.background, scene.clear_depth.level()?);
+        Some(Diagnoser { right, cleared, candidates })
     }
 
     /// The misconception whose buffers explain the most wrong cells net of
     /// the right cells they contradict, or `None`: for a right answer, or when
     /// no rule explains at least half the wrong cells and more of them than
     /// it contradicts right ones. Ties go to the earlier in [`Misconception::ALL`].
-    pub fn diagnose(&self, frame: Option<&Matrix>, depth: Option<&Matrix>) -> Option<Diagnosis> {
+    /// A blank sheet (every answered cell the cleared value) follows no rule:
+    /// it is `None` too. Cells left unanswered count for nothing.
+    pub fn diagnose(&self, frame: Option<&Answer>, depth: Option<&Answer>) -> Option<Diagnosis> {
         let wrong = wrong_cells(&self.right, frame, depth);
-        if wrong == 0 {
+        if wrong == 0 || is_blank(self.cleared, &self.right, frame, depth) {
             return None;
         }
         let mut best: Option<(i64, Diagnosis)> = None;
@@ -175,11 +179,12 @@ fn applies(scene: &Scene) -> bool {
 
 /// (explained, contradicted): the student's wrong cells that `rule` gives as
 /// written, and the right cells where `rule` gives something else.
-fn explained_cells(right: &State, rule: &State, frame: Option<&Matrix>, depth: Option<&Matrix>) -> (usize, usize) {
+fn explained_cells(right: &State, rule: &State, frame: Option<&Answer>, depth: Option<&Answer>) -> (usize, usize) {
     let mut counts = (0, 0);
     for (answer, correct, under_rule) in [(frame, &right.0, &rule.0), (depth, &right.1, &rule.1)] {
         let Some(answer) = answer else { continue };
-        for ((a, c), r) in answer.iter().flatten().zip(correct.iter().flatten()).zip(under_rule.iter().flatten()) {
+        for (i, x, a, c) in answer.cells(correct) {
+            let r = under_rule[i][x];
             if a != c && a == r {
                 counts.0 += 1;
             } else if a == c && r != c {
@@ -190,13 +195,22 @@ fn explained_cells(right: &State, rule: &State, frame: Option<&Matrix>, depth: O
     counts
 }
 
-/// How many cells of the answers differ from `right`.
-fn wrong_cells(right: &State, frame: Option<&Matrix>, depth: Option<&Matrix>) -> usize {
+/// How many answered cells of the answers differ from `right`.
+fn wrong_cells(right: &State, frame: Option<&Answer>, depth: Option<&Answer>) -> usize {
     [(frame, &right.0), (depth, &right.1)]
         .into_iter()
         .filter_map(|(answer, correct)| answer.map(|a| (a, correct)))
-        .map(|(a, c)| a.iter().flatten().zip(c.iter().flatten()).filter(|(a, c)| a != c).count())
+        .map(|(a, c)| a.cells(c).filter(|(_, _, a, c)| a != c).count())
         .sum()
+}
+
+/// Whether every answered cell holds its buffer's cleared value (the
+/// background, the clear depth): a sheet handed in blank.
+fn is_blank(cleared: (u32, u32), right: &State, frame: Option<&Answer>, depth: Option<&Answer>) -> bool {
+    [(frame, &right.0, cleared.0), (depth, &right.1, cleared.1)]
+        .into_iter()
+        .filter_map(|(answer, correct, clear)| answer.map(|a| (a, correct, clear)))
+        .all(|(a, c, clear)| a.cells(c).all(|(_, _, a, _)| a == clear))
 }
 
 /// The right buffers after polygon `last` (before any when `last` is `None`).

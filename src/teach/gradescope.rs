@@ -10,6 +10,7 @@ use std::path::Path;
 use crate::door::Links;
 use crate::effects::arith::Arith;
 use crate::error::Error;
+use crate::numbers::Q;
 use crate::observe::explain::Buffer;
 use crate::scene::Scene;
 use crate::teach::check::{CheckReport, Expect, Expected, as_the_student_sees, check, read_answer};
@@ -88,7 +89,6 @@ pub fn results(
     // Shares in hundredths of a point that add up to `points` exactly.
     let hundredths = u64::from(points) * 100;
     let share = |k: u64| hundredths / count + u64::from(k < hundredths % count);
-    let cells = u64::from(scene.width) * u64::from(scene.height);
     let mut tests = Vec::new();
     let mut total = 0;
     for (k, test) in expected.iter().enumerate() {
@@ -109,9 +109,17 @@ pub fn results(
                     // The student sees the file's name, not where the autograder keeps it.
                     let shown = Path::new(path.file_name().unwrap_or(path.as_os_str()));
                     let report = check(lang, scene, scene_path, test.after, vec![(test.buffer, shown, answer)], arith)?;
-                    let wrong = (report.wrong() as u64).min(cells);
-                    // The share of right cells, rounded down to a hundredth: only a right answer scores in full.
-                    (max_score * (cells - wrong) / cells.max(1), wrong == 0, render(&report))
+                    let passed = report.wrong() == 0 && report.answers.iter().all(|a| a.unanswered == 0);
+                    let earned: Vec<_> = report.answers.iter().map(|a| a.earned).collect();
+                    // The score's rule, rounded down to a hundredth: only a right answer scores in full.
+                    let share = crate::teach::grade::score(&earned) * Q::from_integer(i128::from(max_score));
+                    let score = if passed { max_score } else { share.floor().to_integer().clamp(0, 10_000) as u64 };
+                    let rule = earned.iter().map(|e| {
+                        let (changed, right, stray) = (e.changed, e.right, e.stray);
+                        words!(lang, "gradescope-score-rule", changed = changed, right = right, stray = stray)
+                    });
+                    let rule: String = rule.map(|line| line + "\n").collect();
+                    (score, passed, render(&report) + &rule)
                 }
                 Err(error) => (0, false, format!("{}\n", as_the_student_sees(lang, &error, path))),
             },

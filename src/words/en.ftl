@@ -95,6 +95,10 @@ check-differ = { $buffer } { $file }: { $count } of { $cells } { $count ->
     [one] cell differs
    *[other] cells differ
   } from the { $buffer } after { $after }
+check-unanswered = ; { $count } of { $cells } { $count ->
+    [one] cell was
+   *[other] cells were
+  } left unanswered (? or .)
 check-hint-matches = hint: read { $how }, it matches; write the top row (y = { $top }) first and each row from x = 0, as the book prints them
 check-hint-fewer = hint: read { $how }, only { $left } cells differ; write the top row (y = { $top }) first and each row from x = 0, as the book prints them
 check-column-answer = answer
@@ -115,6 +119,10 @@ grade-column-wrong = wrong
 grade-column-answered = answered
 grade-status-ok = ok
 grade-status-wrong = wrong
+grade-status-incomplete = incomplete: { $count } { $count ->
+    [one] cell
+   *[other] cells
+  } left unanswered
 grade-status-malformed = malformed: { $why }
 grade-status-missing = missing: { $what }
 grade-students-of = { $count } of { $total }
@@ -877,6 +885,7 @@ cs418-too-many-samples = fsaa { $level } asks for { $samples } samples, more tha
 usage-same-answer-twice = { $path }: { $files } answer for the same buffer of the same state: hand in one
 expect-not-states = "{ $text }" is not a list of states: write final, each, or polygon numbers from 1 separated by commas (1,3)
 gradescope-missing = no file answers this: hand in { $file }
+gradescope-score-rule = score: the share of the { $changed } cells the scene changes that are right ({ $right }), less one such share for each of the { $stray } cells written where the buffer keeps its cleared value; unanswered cells count for nothing
 gradescope-ambiguous = { $files } all answer this: none is graded; hand in one
 gradescope-unused = not graded (the assignment does not ask for them): { $files }
 usage-same-student-twice = { $path }: { $files } are both "{ $student }" once their names are shown: rename one; nothing was graded

@@ -95,6 +95,11 @@ check-differ = { $buffer } { $file }: { $count ->
     [few] отличаются { $count } ячейки
    *[many] отличаются { $count } ячеек
   } из { $cells } после { $after }
+check-unanswered = ; без ответа (? или .) { $count ->
+    [one] оставлена { $count } ячейка
+    [few] оставлены { $count } ячейки
+   *[many] оставлено { $count } ячеек
+  } из { $cells }
 check-hint-matches = подсказка: если читать { $how }, ответ совпадает; записывайте сначала верхнюю строку (y = { $top }), каждую строку от x = 0, как в книге
 check-hint-fewer = подсказка: если читать { $how }, расхождений остаётся: { $left }; записывайте сначала верхнюю строку (y = { $top }), каждую строку от x = 0, как в книге
 check-column-answer = ответ
@@ -116,6 +121,11 @@ grade-column-wrong = ошиблись
 grade-column-answered = ответы
 grade-status-ok = верно
 grade-status-wrong = с ошибками
+grade-status-incomplete = не закончено: { $count ->
+    [one] { $count } ячейка оставлена
+    [few] { $count } ячейки оставлены
+   *[many] { $count } ячеек оставлено
+  } без ответа
 grade-status-malformed = негодный файл: { $why }
 grade-status-missing = нет файла: { $what }
 grade-students-of = { $count } из { $total }
@@ -852,6 +862,7 @@ cs418-too-many-samples = fsaa { $level } требует { $samples } отсчё�
 usage-same-answer-twice = { $path }: { $files } отвечают за один и тот же буфер одного состояния: сдайте один
 expect-not-states = «{ $text }» — не список состояний: напишите final, each или номера многоугольников от 1 через запятую (1,3)
 gradescope-missing = нет файла с этим ответом: сдайте { $file }
+gradescope-score-rule = оценка: доля верных ({ $right }) среди { $changed } ячеек, которые сцена меняет, минус такая же доля за каждую из { $stray } ячеек, записанных там, где буфер сохраняет начальное значение; ячейки без ответа не учитываются
 gradescope-ambiguous = на это отвечают сразу { $files }: ни один не оценён; сдайте один
 gradescope-unused = не оценены (задание их не требует): { $files }
 usage-same-student-twice = { $path }: { $files } — оба «{ $student }», когда имена показаны: переименуйте один; ничего не оценено

@@ -95,6 +95,11 @@ check-differ = { $buffer } { $file }: { $count ->
     [few] відрізняються { $count } клітинки
    *[many] відрізняються { $count } клітинок
   } з { $cells } після { $after }
+check-unanswered = ; без відповіді (? або .) { $count ->
+    [one] залишено { $count } клітинку
+    [few] залишено { $count } клітинки
+   *[many] залишено { $count } клітинок
+  } з { $cells }
 check-hint-matches = підказка: якщо читати { $how }, відповідь збігається; записуйте спочатку верхній рядок (y = { $top }), кожен рядок від x = 0, як у книзі
 check-hint-fewer = підказка: якщо читати { $how }, розбіжностей лишається: { $left }; записуйте спочатку верхній рядок (y = { $top }), кожен рядок від x = 0, як у книзі
 check-column-answer = відповідь
@@ -116,6 +121,11 @@ grade-column-wrong = помилилися
 grade-column-answered = відповіді
 grade-status-ok = правильно
 grade-status-wrong = з помилками
+grade-status-incomplete = не завершено: { $count ->
+    [one] { $count } клітинку залишено
+    [few] { $count } клітинки залишено
+   *[many] { $count } клітинок залишено
+  } без відповіді
 grade-status-malformed = непридатний файл: { $why }
 grade-status-missing = немає файлу: { $what }
 grade-students-of = { $count } з { $total }
@@ -852,6 +862,7 @@ cs418-too-many-samples = fsaa { $level } потребує { $samples } відл�
 usage-same-answer-twice = { $path }: { $files } відповідають за той самий буфер того самого стану: здайте один
 expect-not-states = «{ $text }» — не список станів: напишіть final, each або номери многокутників від 1 через кому (1,3)
 gradescope-missing = немає файлу з цією відповіддю: здайте { $file }
+gradescope-score-rule = оцінка: частка правильних ({ $right }) серед { $changed } клітинок, які сцена змінює, мінус така сама частка за кожну з { $stray } клітинок, записаних там, де буфер зберігає початкове значення; клітинки без відповіді не враховуються
 gradescope-ambiguous = на це відповідають одразу { $files }: жоден не оцінено; здайте один
 gradescope-unused = не оцінено (завдання їх не вимагає): { $files }
 usage-same-student-twice = { $path }: { $files } — обидва «{ $student }», коли імена показано: перейменуйте один; нічого не оцінено

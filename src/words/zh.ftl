@@ -90,6 +90,7 @@ explain-final = 结果：帧缓冲器 { $frame }，z缓冲器 { $depth }
 
 check-all-match = { $buffer } { $file }：{ $after } 之后全部 { $cells } 个单元都正确
 check-differ = { $buffer } { $file }：{ $after } 之后，{ $cells } 个单元中有 { $count } 个不同
+check-unanswered = ；{ $cells } 个单元中有 { $count } 个未作答（? 或 .）
 check-hint-matches = 提示：如果按{ $how }读取，答案完全正确；请先写最上面一行（y = { $top }），每行从 x = 0 写起，与教材的印法相同
 check-hint-fewer = 提示：如果按{ $how }读取，只有 { $left } 个单元不同；请先写最上面一行（y = { $top }），每行从 x = 0 写起，与教材的印法相同
 check-column-answer = 答案
@@ -107,6 +108,7 @@ grade-column-wrong = 出错人数
 grade-column-answered = 作答
 grade-status-ok = 正确
 grade-status-wrong = 有错
+grade-status-incomplete = 未完成：{ $count } 个单元未作答
 grade-status-malformed = 文件有误：{ $why }
 grade-status-missing = 缺少：{ $what }
 grade-students-of = { $total } 人中 { $count } 人
@@ -811,6 +813,7 @@ cs418-too-many-samples = fsaa { $level } 需要 { $samples } 个采样，超过 
 usage-same-answer-twice = { $path }：{ $files } 回答的是同一状态的同一缓冲区：只交一个
 expect-not-states = “{ $text }”不是状态列表：请写 final、each，或用逗号分隔、从 1 开始的多边形编号（1,3）
 gradescope-missing = 没有文件回答这一项：请提交 { $file }
+gradescope-score-rule = 得分：场景改变的 { $changed } 个单元中答对的比例（{ $right } 个），每有一个单元在缓冲区应保持初始值处被写入（共 { $stray } 个）就减去同样一份；未作答的单元不计
 gradescope-ambiguous = { $files } 都回答这一项：均不评分；只交一个
 gradescope-unused = 未评分（作业不要求这些文件）：{ $files }
 usage-same-student-twice = { $path }：{ $files } 显示出来都是“{ $student }”：请重命名其中一个；未评分

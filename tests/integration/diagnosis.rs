@@ -5,6 +5,7 @@
 
 use std::path::Path;
 
+use zsim::check::Answer;
 use zsim::diagnose::{Misconception, diagnose};
 use zsim::{Scene, Simulation, Unobserved};
 
@@ -33,7 +34,8 @@ fn rogers_with(setting: &str) -> String {
 fn named(scene_json: &str, frame: &Matrix, depth: &Matrix) -> (Misconception, usize, usize) {
     let scene = Scene::from_json(zsim::Lang::En, scene_json, Path::new("s.json")).unwrap();
     let last = scene.polygons.len() - 1;
-    let found = diagnose(&scene, last, Some(frame), Some(depth)).expect("a misconception is named");
+    let (frame, depth) = (Answer::complete(frame.clone()), Answer::complete(depth.clone()));
+    let found = diagnose(&scene, last, Some(&frame), Some(&depth)).expect("a misconception is named");
     (found.misconception, found.explained, found.wrong)
 }
 
@@ -139,8 +141,23 @@ fn a_right_answer_or_a_few_slips_name_nothing() {
     let rogers = rogers_text();
     let scene = Scene::from_json(zsim::Lang::En, &rogers, Path::new("s.json")).unwrap();
     let (frame, mut depth) = drawn(&rogers, None);
-    assert_eq!(diagnose(&scene, 1, Some(&frame), Some(&depth)), None);
+    let read = |m: &Matrix| Some(Answer::complete(m.clone()));
+    assert_eq!(diagnose(&scene, 1, read(&frame).as_ref(), read(&depth).as_ref()), None);
     depth[3][3] = 7;
     depth[30][1] = 2;
+    assert_eq!(diagnose(&scene, 1, read(&frame).as_ref(), read(&depth).as_ref()), None);
+}
+
+/// Found by a teacher: a sheet handed in blank (every cell the cleared
+/// value) was labelled "only the last polygon drawn". It follows no rule.
+#[test]
+fn a_blank_sheet_names_no_misconception() {
+    let rogers = rogers_text();
+    let scene = Scene::from_json(zsim::Lang::En, &rogers, Path::new("s.json")).unwrap();
+    let (frame, depth) = drawn(&rogers, None);
+    let (blank_frame, blank_depth) = (vec![vec![0; 32]; 32], vec![vec![0; 32]; 32]);
+    assert_ne!((&frame, &depth), (&blank_frame, &blank_depth), "the scene draws something");
+    let (frame, depth) = (Answer::complete(blank_frame), Answer::complete(blank_depth));
     assert_eq!(diagnose(&scene, 1, Some(&frame), Some(&depth)), None);
+    assert_eq!(diagnose(&scene, 1, Some(&frame), None), None);
 }

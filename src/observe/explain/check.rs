@@ -3,8 +3,46 @@
 
 use crate::words::Lang;
 
-/// A matrix read from an answer file, top row first.
+/// A matrix of a buffer's values, top row first.
 pub type Matrix = Vec<Vec<u32>>;
+
+/// An answer read from a file or typed in: its values, top row first, and
+/// the cells the student did not work out (written `?` or `.`), which are
+/// judged neither right nor wrong.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Answer {
+    /// The values, top row first; an unanswered cell holds 0.
+    pub rows: Matrix,
+    /// Per cell in reading order, whether it was left unanswered; empty when
+    /// every cell was answered.
+    left: Vec<bool>,
+}
+
+impl Answer {
+    /// An answer with every cell worked out.
+    pub fn complete(rows: Matrix) -> Answer {
+        Answer { rows, left: Vec::new() }
+    }
+
+    /// Whether the cell in row `row` (top first), column `x` was answered.
+    pub fn answered(&self, row: usize, x: usize) -> bool {
+        let width = self.rows.first().map_or(0, Vec::len);
+        self.left.is_empty() || !self.left[row * width + x]
+    }
+
+    /// How many cells were left unanswered.
+    pub fn unanswered(&self) -> usize {
+        self.left.iter().filter(|left| **left).count()
+    }
+
+    /// Every answered cell's value with the expected one beside it:
+    /// (row top first, column, answer, expected).
+    pub fn cells<'a>(&'a self, expected: &'a Matrix) -> impl Iterator<Item = (usize, usize, u32, u32)> + 'a {
+        self.rows.iter().zip(expected).enumerate().flat_map(move |(i, (row, right))| {
+            row.iter().zip(right).enumerate().filter(move |(x, _)| self.answered(i, *x)).map(move |(x, (&a, &e))| (i, x, a, e))
+        })
+    }
+}
 
 /// What an answer's cells may hold: `0 ..= max`, said as `a 2-bit framebuffer`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -16,13 +54,14 @@ pub struct CellRange<'a> {
 }
 
 /// Reads an answer: integers separated by spaces or commas (`0, 1, 2` as
-/// handed in is fine), top row first, one row a line; blank lines and lines
-/// starting with `#` are ignored. Checks each value against `range` and the
+/// handed in is fine), top row first, one row a line, `?` or `.` for a cell
+/// not worked out; blank lines and lines starting with `#` are ignored. Checks each value against `range` and the
 /// shape against the raster; the error names the line, the column and the
 /// raster cell, and says what was found: the first [`PROBLEMS_NAMED`]
 /// problems, separated by ` · `, then how many more there are.
-pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Matrix, String> {
+pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Answer, String> {
     let mut problems = Vec::new();
+    let mut left = Vec::new();
     let lines: Vec<(usize, &str)> = text
         .lines()
         .enumerate()
@@ -54,6 +93,17 @@ pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: Cell
                 }
             };
             let max = || range.max.to_string();
+            if matches!(*cell, "?" | ".") {
+                // Marked only once the first is met: a complete answer holds no mask.
+                if left.is_empty() {
+                    left = vec![false; width as usize * height as usize];
+                }
+                if let Some(y) = y.filter(|_| column < width as usize) {
+                    left[(height as usize - 1 - y) * width as usize + column] = true;
+                }
+                row.push(0);
+                continue;
+            }
             let Ok(value) = cell.parse::<u64>() else {
                 problems.push(words!(
                     lang,
@@ -93,7 +143,7 @@ pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: Cell
         problems.push(words!(lang, "answer-row-count", count = rows.len(), height = height.to_string()));
     }
     if problems.is_empty() {
-        return Ok(rows);
+        return Ok(Answer { rows, left });
     }
     let mut text = problems[..problems.len().min(PROBLEMS_NAMED)].join(" · ");
     if problems.len() > PROBLEMS_NAMED {
@@ -134,8 +184,14 @@ pub const HINTED_CELLS: u64 = 1 << 20;
 /// When an answer that differs would match, or nearly, read another way:
 /// bottom row first (upside down) or with rows and columns swapped. Returns
 /// how it was written and how many cells differ when read that way; not
-/// looked for past [`HINTED_CELLS`] (two more copies of the answer).
-pub fn misreading(answer: &Matrix, expected: &Matrix) -> Option<(Misreading, usize)> {
+/// looked for past [`HINTED_CELLS`] (two more copies of the answer), nor in
+/// an answer with cells left unanswered (which cells were left is itself
+/// written one way).
+pub fn misreading(answer: &Answer, expected: &Matrix) -> Option<(Misreading, usize)> {
+    if answer.unanswered() > 0 {
+        return None;
+    }
+    let answer = &answer.rows;
     // A right answer was read right.
     let cells: usize = answer.iter().map(Vec::len).sum();
     if cells as u64 > HINTED_CELLS {
@@ -168,6 +224,17 @@ pub struct Mismatch {
     pub expected: u32,
 }
 
+/// The answered cells where `answer` differs from `expected` (top row
+/// first), in reading order: top row first, left to right.
+pub fn compare_answer(answer: &Answer, expected: &Matrix) -> Vec<Mismatch> {
+    let height = expected.len() as u32;
+    answer
+        .cells(expected)
+        .filter(|(_, _, a, e)| a != e)
+        .map(|(i, x, answer, expected)| Mismatch { x: x as u32, y: height - 1 - i as u32, answer, expected })
+        .collect()
+}
+
 /// The cells where `answer` differs from `expected` (both top row first),
 /// in reading order: top row first, left to right.
 pub fn compare(answer: &Matrix, expected: &Matrix) -> Vec<Mismatch> {
@@ -192,8 +259,8 @@ mod tests {
     #[test]
     fn comments_blank_lines_and_commas_are_taken() {
         let text = "# my answer\n\n1 2\n\n3, 0\n";
-        assert_eq!(parse_answer(Lang::En, text, 2, 2, FRAME).unwrap(), vec![vec![1, 2], vec![3, 0]]);
-        assert_eq!(parse_answer(Lang::En, "1,2\n3 ,0\n", 2, 2, FRAME).unwrap(), vec![vec![1, 2], vec![3, 0]]);
+        assert_eq!(parse_answer(Lang::En, text, 2, 2, FRAME).unwrap().rows, vec![vec![1, 2], vec![3, 0]]);
+        assert_eq!(parse_answer(Lang::En, "1,2\n3 ,0\n", 2, 2, FRAME).unwrap().rows, vec![vec![1, 2], vec![3, 0]]);
     }
 
     #[test]
@@ -222,15 +289,30 @@ mod tests {
     fn answers_written_upside_down_or_transposed_are_recognised() {
         let expected = vec![vec![1, 1, 0], vec![1, 0, 0], vec![0, 0, 0]];
         let upside_down: Matrix = expected.iter().rev().cloned().collect();
-        assert_eq!(misreading(&upside_down, &expected), Some((Misreading::BottomRowFirst, 0)));
+        let read = |m: &Matrix| Answer::complete(m.clone());
+        assert_eq!(misreading(&read(&upside_down), &expected), Some((Misreading::BottomRowFirst, 0)));
         let transposed = vec![vec![1, 1, 0], vec![1, 0, 0], vec![0, 0, 0]];
         let other = vec![vec![0, 1, 1], vec![0, 0, 1], vec![0, 0, 0]];
         let transposed_other: Matrix = (0..3).map(|c| other.iter().map(|row| row[c]).collect()).collect();
-        assert_eq!(misreading(&transposed_other, &other), Some((Misreading::Transposed, 0)));
+        assert_eq!(misreading(&read(&transposed_other), &other), Some((Misreading::Transposed, 0)));
         // A plain mistake is not a misreading.
         let mut one_wrong = transposed.clone();
         one_wrong[0][0] = 2;
-        assert_eq!(misreading(&one_wrong, &expected), None);
+        assert_eq!(misreading(&read(&one_wrong), &expected), None);
+    }
+
+    /// Asked for by a student who worked out a few rows: `?` and `.` mark
+    /// the cells left, which are neither right nor wrong.
+    #[test]
+    fn question_marks_and_dots_leave_cells_unanswered() {
+        let answer = parse_answer(Lang::En, "? 1\n. 2\n", 2, 2, FRAME).unwrap();
+        assert_eq!(answer.unanswered(), 2);
+        assert_eq!((answer.answered(0, 0), answer.answered(0, 1), answer.answered(1, 0)), (false, true, false));
+        let expected = vec![vec![3, 1], vec![0, 0]];
+        assert_eq!(compare_answer(&answer, &expected), vec![Mismatch { x: 1, y: 0, answer: 2, expected: 0 }]);
+        assert_eq!(parse_answer(Lang::En, "1 2\n3 0\n", 2, 2, FRAME).unwrap().unanswered(), 0);
+        // A question mark is a cell like any other: the row still needs its width.
+        assert_eq!(parse_answer(Lang::En, "?\n1 1\n", 2, 2, FRAME).unwrap_err(), "line 1: 1 value; the raster is 2 wide");
     }
 
     #[test]
