@@ -1,8 +1,11 @@
 //! Embeds the browser playground in `zsim step --html` when the build is
 //! given it: `ZSIM_PLAYGROUND` names the folder `web/build` writes
 //! (`target/web`). Without it, `step --html` writes the recorded stepper page.
+//! Also gathers the commands of the README's and the guide's ```console
+//! examples (which `cargo test` runs) for the man pages' EXAMPLES.
 
 fn main() {
+    examples();
     println!("cargo::rustc-check-cfg=cfg(playground)");
     println!("cargo::rerun-if-env-changed=ZSIM_PLAYGROUND");
     let Some(folder) = std::env::var_os("ZSIM_PLAYGROUND") else { return };
@@ -16,4 +19,33 @@ fn main() {
         }
     }
     println!("cargo::rustc-cfg=playground");
+}
+
+/// Writes `OUT_DIR/examples.txt`: every `$ zsim …` line of a ```console
+/// block in README.md and docs/src/*.md, once each, in the documents' order.
+fn examples() {
+    let out = std::path::PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
+    let mut documents = vec![std::path::PathBuf::from("README.md")];
+    println!("cargo::rerun-if-changed=README.md");
+    println!("cargo::rerun-if-changed=docs/src");
+    if let Ok(entries) = std::fs::read_dir("docs/src") {
+        let mut chapters: Vec<_> = entries.filter_map(|e| Some(e.ok()?.path())).collect();
+        chapters.sort();
+        documents.extend(chapters.into_iter().filter(|p| p.extension().is_some_and(|e| e == "md")));
+    }
+    let mut commands: Vec<String> = Vec::new();
+    for document in documents {
+        let text = std::fs::read_to_string(&document).unwrap_or_default();
+        let mut inside = false;
+        for line in text.lines() {
+            if let Some(info) = line.strip_prefix("```") {
+                inside = !inside && info.trim() == "console";
+            } else if let Some(command) = line.strip_prefix("$ zsim ").filter(|_| inside)
+                && !commands.iter().any(|c| c == command)
+            {
+                commands.push(command.to_string());
+            }
+        }
+    }
+    std::fs::write(out.join("examples.txt"), commands.join("\n")).expect("OUT_DIR is writable");
 }

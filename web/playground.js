@@ -345,7 +345,7 @@
       table.appendChild(tr);
     }
     table.addEventListener("input", () => {
-      const rows = [...table.rows].map((tr) => [...tr.querySelectorAll("input")].map((i) => i.value.trim() || "-").join(" "));
+      const rows = [...table.rows].map((tr) => [...tr.querySelectorAll("input")].map((i) => i.value.trim() || "?").join(" "));
       $("answer").value = rows.join("\n") + "\n";
     });
     box.appendChild(table);

@@ -263,8 +263,47 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
     pub fn draw(&mut self, frame: &mut Frame<'_>) {
         let lang = self.lang;
         let area = frame.area();
-        // A quiz's reason to ask again gets lines of its own above the question.
-        let status_lines = if self.quiz.is_some() && !self.message.is_empty() { 4 } else { 2 };
+        let status_text = if let Some(text) = &self.go {
+            zsim::words!(lang, "tui-go", text = text)
+        } else if let Some(verdict) = &self.verdict {
+            zsim::words!(lang, "tui-verdict-next", verdict = verdict)
+        } else if let Some(question) = self.question() {
+            let typed = zsim::printable(&self.typed).into_owned();
+            let ask = match question {
+                Question::Coverage { row, .. } => {
+                    zsim::words!(lang, "tui-quiz-coverage-ask", scanline = scanline_text(lang, row), typed = typed)
+                }
+                Question::Frame { pixel, .. } => zsim::words!(
+                    lang,
+                    "tui-quiz-frame-ask",
+                    x = pixel.x,
+                    y = pixel.y,
+                    before = pixel.frame_before,
+                    typed = typed
+                ),
+                Question::Depth { pixel, .. } => zsim::words!(
+                    lang,
+                    "tui-quiz-ask",
+                    x = pixel.x,
+                    y = pixel.y,
+                    stored = pixel.stored_before.text(lang),
+                    typed = typed
+                ),
+            };
+            // Why the last answer was asked again, on its own line above the question.
+            if self.message.is_empty() { ask } else { format!("{}\n{ask}", self.message) }
+        } else if !self.message.is_empty() {
+            self.message.clone()
+        } else {
+            zsim::words!(lang, "tui-status")
+        };
+        // The status gets the lines its text wraps to (a quiz's reason to ask again on lines of
+        // its own above the question), at least two, at most half the screen.
+        let status_paragraph = Paragraph::new(status_text).wrap(Wrap { trim: true });
+        let wrapped = status_paragraph.line_count(area.width) as u16;
+        let status_lines = wrapped.clamp(2, (area.height / 2).max(2));
+        // When it cannot all show, its end does: the question and what is typed.
+        let status_paragraph = status_paragraph.scroll((wrapped.saturating_sub(status_lines), 0));
         let [title, body, status] =
             Layout::vertical([Constraint::Length(1), Constraint::Min(3), Constraint::Length(status_lines)]).areas(area);
         let scene = self.stepper.scene();
@@ -315,41 +354,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
                 right,
             );
         }
-        let status_text = if let Some(text) = &self.go {
-            zsim::words!(lang, "tui-go", text = text)
-        } else if let Some(verdict) = &self.verdict {
-            zsim::words!(lang, "tui-verdict-next", verdict = verdict)
-        } else if let Some(question) = self.question() {
-            let typed = zsim::printable(&self.typed).into_owned();
-            let ask = match question {
-                Question::Coverage { row, .. } => {
-                    zsim::words!(lang, "tui-quiz-coverage-ask", scanline = scanline_text(lang, row), typed = typed)
-                }
-                Question::Frame { pixel, .. } => zsim::words!(
-                    lang,
-                    "tui-quiz-frame-ask",
-                    x = pixel.x,
-                    y = pixel.y,
-                    before = pixel.frame_before,
-                    typed = typed
-                ),
-                Question::Depth { pixel, .. } => zsim::words!(
-                    lang,
-                    "tui-quiz-ask",
-                    x = pixel.x,
-                    y = pixel.y,
-                    stored = pixel.stored_before.text(lang),
-                    typed = typed
-                ),
-            };
-            // Why the last answer was asked again, on its own line above the question.
-            if self.message.is_empty() { ask } else { format!("{}\n{ask}", self.message) }
-        } else if !self.message.is_empty() {
-            self.message.clone()
-        } else {
-            zsim::words!(lang, "tui-status")
-        };
-        frame.render_widget(Paragraph::new(status_text).wrap(Wrap { trim: true }), status);
+        frame.render_widget(status_paragraph, status);
     }
 
     /// The raster's rows that fit, top row first, centred on the scanline.

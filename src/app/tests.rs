@@ -291,3 +291,27 @@ fn the_raster_pane_numbers_its_columns() {
     assert_eq!(super::column_numbers(8..=12, 2), " 8 9  11");
     assert_eq!(super::column_numbers(0..=3, 3), "  0  1  2  3");
 }
+
+/// Found by a new student: in a narrow terminal the quiz's reason to ask
+/// again ran into the question, and what was typed fell off the screen. The
+/// status gets the lines its text wraps to, and its end always shows.
+#[test]
+fn the_quizs_error_text_keeps_its_own_lines_and_the_prompt_shows() {
+    let scene = book();
+    let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
+    let mut quiz = Quiz::new(QuizMode::Depth);
+    let mut app = App::new(&mut stepper, Some(&mut quiz), zsim::Lang::Ru);
+    press(&mut app, "abc\n");
+    for (width, height) in [(80, 24), (40, 24), (30, 16)] {
+        let text = screen(&mut app, width, height);
+        let lines: Vec<&str> = text.lines().collect();
+        // The prompt (what is typed, nothing yet) ends the screen's last written line.
+        let last = lines.iter().rposition(|l| !l.is_empty()).unwrap();
+        assert!(lines[last].ends_with("Enter) ▏"), "{width}×{height}: {text}");
+        if width >= 40 {
+            let error = lines.iter().position(|l| l.starts_with("«abc» — не ответ")).expect(&text);
+            let question = lines.iter().position(|l| l.starts_with("опрос: что будет")).expect(&text);
+            assert!(error < question, "the reason above the question, on lines of its own: {text}");
+        }
+    }
+}

@@ -21,7 +21,7 @@ pub struct BuetArgs {
 
 #[derive(Debug, Subcommand)]
 enum BuetCommand {
-    /// Run a case: write the stage files computed, z_buffer.txt and out.bmp.
+    /// Run a case: write the stage files computed, z_buffer.txt and out.bmp (as the course writes it: its header's file size is one more than the file's).
     Run {
         /// The case folder (config.txt, and stage3.txt or scene.txt).
         case: PathBuf,

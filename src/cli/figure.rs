@@ -38,6 +38,9 @@ pub struct FigureArgs {
     /// With -o FILE.png: pixels per unit of the drawing (default 2, lowered to keep the longer side within 4096 pixels; at most 8192 × 8192 pixels in all).
     #[arg(long, value_name = "PIXELS", value_parser = |text: &str| text.parse::<f32>().ok().filter(|s| s.is_finite() && *s > 0.0 && *s <= 64.0).ok_or_else(|| format!("\"{text}\" is not a scale from 0 to 64")))]
     scale: Option<f32>,
+    /// With -o FILE.pdf: the page, a4 or letter (turned to landscape when the figure fits larger so).
+    #[arg(long, value_name = "a4|letter", default_value = "a4", value_parser = |t: &str| zsim::picture::Paper::parse(t).ok_or_else(|| format!("\"{t}\" is not a paper: a4 or letter")))]
+    paper: zsim::picture::Paper,
 }
 
 pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
@@ -96,7 +99,7 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
     }
     let extras = Extras { vertex_labels: worksheet, caption: Vec::new(), values: args.values };
     let text = svg_with(lang, &scene, simulation.buffers(), last, shading, &title, &extras);
-    let bytes = format.encode(lang, &text, &args.output, args.tikz_only, args.scale)?;
+    let bytes = format.encode(lang, &text, &args.output, args.tikz_only, (args.scale, args.paper))?;
     let mut plan = zsim::Plan::new(&[&args.scene], zsim::Replace::Allowed);
     plan.file(&args.output, bytes);
     plan.write()?;

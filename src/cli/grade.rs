@@ -175,17 +175,10 @@ fn table(lang: zsim::Lang, rows: &[&Grade]) -> Table {
 /// The class's likely causes: each misconception named for a student, with
 /// how many students it was named for, most first.
 fn causes_text(lang: zsim::Lang, rows: &[&Grade]) -> String {
-    let mut counts: Vec<(zsim::diagnose::Misconception, usize)> = Vec::new();
-    for misconception in rows.iter().filter_map(|g| g.misconception.map(|d| d.misconception)) {
-        match counts.iter_mut().find(|(m, _)| *m == misconception) {
-            Some((_, count)) => *count += 1,
-            None => counts.push((misconception, 1)),
-        }
-    }
+    let counts = zsim::grade::causes(rows);
     if counts.is_empty() {
         return String::new();
     }
-    counts.sort_by_key(|(m, count)| (std::cmp::Reverse(*count), *m));
     let mut text = format!("{}\n", zsim::words!(lang, "grade-causes"));
     for (misconception, count) in counts {
         let line = zsim::words!(

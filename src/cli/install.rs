@@ -52,6 +52,19 @@ pub fn manual(lang: zsim::Lang, args: &ManualArgs, out: &mut dyn Write) -> Resul
     Ok(Finish::Ok)
 }
 
+/// The EXAMPLES section of command `name` (`zsim-buet-run`): the README's
+/// and the guide's examples of it, which `cargo test` runs, at most eight.
+fn examples(name: &str) -> String {
+    let words: Vec<&str> = name.split('-').skip(1).collect();
+    let of_it = |line: &&str| line.split(' ').take(words.len()).eq(words.iter().copied());
+    let lines: Vec<&str> =
+        include_str!(concat!(env!("OUT_DIR"), "/examples.txt")).lines().filter(of_it).take(8).collect();
+    // Roff: a backslash is written `\e`; a line may not start with `.` or `'` (it is after `zsim `).
+    let body: String =
+        lines.iter().map(|line| format!("zsim {}\n", line.replace('\\', "\\e").replace('-', "\\-"))).collect();
+    if body.is_empty() { String::new() } else { format!(".SH EXAMPLES\n.nf\n{body}.fi\n") }
+}
+
 /// The man page of `command`, then those of its subcommands, named as man
 /// names them (zsim.1, zsim-run.1, zsim-buet-run.1, …; clap sets these
 /// display names when it builds the command).
@@ -59,6 +72,7 @@ fn page_and_subpages(command: &clap::Command, pages: &mut Vec<(String, Vec<u8>)>
     let man = clap_mangen::Man::new(command.clone());
     let mut page = Vec::new();
     man.render(&mut page)?;
+    page.extend(examples(command.get_display_name().unwrap_or("zsim")).into_bytes());
     pages.push((man.get_filename(), page));
     for sub in command.get_subcommands().filter(|s| !s.is_hide_set()) {
         page_and_subpages(sub, pages)?;

@@ -36,33 +36,7 @@ pub fn run(lang: zsim::Lang, args: &SpeedArgs, out: &mut dyn Write) -> Result<Fi
     let scene = Scene::load(lang, &args.scene)?;
     let threads = args.threads as usize;
     let race = zsim::race::race(lang, &scene, args.pairs as usize, args.tile, threads)?;
-    let ms = |d: std::time::Duration| zsim::localize_decimal(lang, format!("{:.2}", d.as_secs_f64() * 1e3));
-    let ratio = |r: f64| zsim::localize_decimal(lang, format!("{r:.2}"));
-    let (low, high) = race.pair_ratios();
-    let text = format!(
-        "{}\n{}\n",
-        zsim::words!(
-            lang,
-            "speed-header",
-            scene = zsim::shown_path(&args.scene),
-            triangles = race.triangles,
-            pixels = race.pixels,
-            threads = race.threads,
-            tile = race.tile,
-            renderer = zsim::printable(&race.renderer).into_owned(),
-            lp = zsim::printable(&lp_threads).into_owned(),
-            pairs = args.pairs
-        ),
-        zsim::words!(
-            lang,
-            "speed-result",
-            zsim = ms(race.zsim_median()),
-            gpu = ms(race.gpu_median()),
-            ratio = ratio(race.ratio()),
-            low = ratio(low),
-            high = ratio(high)
-        )
-    );
+    let text = race.report(lang, &zsim::shown_path(&args.scene), &lp_threads);
     emit(out, &text)?;
     Ok(Finish::Ok)
 }

@@ -8,7 +8,7 @@ use rayon::prelude::*;
 use crate::numbers::{Q, decimal};
 use crate::observe::check::{Answer, Matrix, compare_answer};
 use crate::observe::explain::Buffer;
-use crate::teach::diagnose::{Diagnoser, Diagnosis};
+use crate::teach::diagnose::{Diagnoser, Diagnosis, Misconception};
 use crate::words::Lang;
 
 /// The right answer for one buffer a class hands in: its matrix (top row
@@ -185,7 +185,11 @@ impl Earned {
 pub fn score(earned: &[Earned]) -> Q {
     let total = earned.iter().copied().fold(Earned::default(), Earned::add);
     if total.changed == 0 {
-        return if total.cells == 0 { Q::from_integer(0) } else { Q::new(total.all_right as i128, total.cells as i128) };
+        return if total.cells == 0 {
+            Q::from_integer(0)
+        } else {
+            Q::new(total.all_right as i128, total.cells as i128)
+        };
     }
     let net = total.right.saturating_sub(total.stray);
     Q::new(net as i128, total.changed as i128)
@@ -195,11 +199,7 @@ pub fn score(earned: &[Earned]) -> Q {
 /// hands in); rows in the order of `submissions`. Also returns each
 /// student's wrong cells per buffer, for the common mistakes. With a
 /// `diagnoser`, each wrong answer's likely misconception is named.
-pub fn grade(
-    submissions: &[Submission],
-    keys: &[Key],
-    diagnoser: Option<&Diagnoser>,
-) -> Vec<(Grade, Vec<WrongCells>)> {
+pub fn grade(submissions: &[Submission], keys: &[Key], diagnoser: Option<&Diagnoser>) -> Vec<(Grade, Vec<WrongCells>)> {
     // Students in parallel, rows in their order.
     submissions
         .par_iter()
@@ -249,6 +249,20 @@ pub fn grade(
             (Grade { student, frame_wrong, depth_wrong, unanswered, score, status, misconception }, cells)
         })
         .collect()
+}
+
+/// The misconceptions named for the students of `rows`, each with how many
+/// students it was named for, most first (equal counts in the order `Misconception` declares them).
+pub fn causes(rows: &[&Grade]) -> Vec<(Misconception, usize)> {
+    let mut counts: Vec<(Misconception, usize)> = Vec::new();
+    for misconception in rows.iter().filter_map(|g| g.misconception.map(|d| d.misconception)) {
+        match counts.iter_mut().find(|(m, _)| *m == misconception) {
+            Some((_, count)) => *count += 1,
+            None => counts.push((misconception, 1)),
+        }
+    }
+    counts.sort_by_key(|(m, count)| (std::cmp::Reverse(*count), *m));
+    counts
 }
 
 /// A student's wrong cells in one buffer.

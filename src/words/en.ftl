@@ -744,7 +744,10 @@ gpu-background = nothing
 gpu-exact-depth = { $polygon } at exact depth { $depth }
 gpu-why-depth = the GPU stored depth { $gpu } (interpolated in f32, kept in 24 bits) for { $shown }; the scene's rules keep { $book }
 gpu-not-convex = note: { $polygon } is not convex: the GPU draws it as a fan of triangles from its first vertex, which is not the polygon
-speed-header = { $scene }: { $triangles } triangles, { $pixels } pixel centres tested; zsim on { $threads } { $threads ->
+speed-header = { $scene }: { $triangles } triangles (fans of { $polygons } polygons{ $skipped ->
+    [0] {""}
+   *[other] ; { $skipped } more draw nothing: degenerate, edge-on, culled or outside the view
+  }), { $pixels } pixel centres tested; zsim on { $threads } { $threads ->
     [one] thread
    *[other] threads
 }, { $tile ->

@@ -720,7 +720,10 @@ gpu-background = ничего
 gpu-exact-depth = { $polygon } на точной глубине { $depth }
 gpu-why-depth = GPU записал глубину { $gpu } (интерполяция в f32, хранение в 24 битах) для { $shown }; по правилам сцены остаётся { $book }
 gpu-not-convex = замечание: { $polygon } не выпуклый: GPU рисует его веером треугольников из первой вершины, а это не тот многоугольник
-speed-header = { $scene }: треугольников { $triangles }, проверено центров пикселей { $pixels }; zsim на { $threads } { $threads ->
+speed-header = { $scene }: треугольников { $triangles } (веера { $polygons } многоугольников{ $skipped ->
+    [0] {""}
+   *[other] ; ещё { $skipped } ничего не рисуют: вырожденные, видны с ребра, отсечены или вне поля зрения
+  }), проверено центров пикселей { $pixels }; zsim на { $threads } { $threads ->
     [one] потоке
    *[other] потоках
 }, { $tile ->

@@ -720,7 +720,10 @@ gpu-background = нічого
 gpu-exact-depth = { $polygon } на точній глибині { $depth }
 gpu-why-depth = GPU записав глибину { $gpu } (інтерполяція в f32, зберігання в 24 бітах) для { $shown }; за правилами сцени лишається { $book }
 gpu-not-convex = примітка: { $polygon } не опуклий: GPU малює його віялом трикутників із першої вершини, а це не той багатокутник
-speed-header = { $scene }: трикутників { $triangles }, перевірено центрів пікселів { $pixels }; zsim на { $threads } { $threads ->
+speed-header = { $scene }: трикутників { $triangles } (віяла { $polygons } многокутників{ $skipped ->
+    [0] {""}
+   *[other] ; ще { $skipped } нічого не малюють: вироджені, видні з ребра, відсічені або поза полем зору
+  }), перевірено центрів пікселів { $pixels }; zsim на { $threads } { $threads ->
     [one] потоці
    *[other] потоках
 }, { $tile ->

@@ -687,7 +687,10 @@ gpu-background = 无
 gpu-exact-depth = { $polygon }，精确深度 { $depth }
 gpu-why-depth = GPU 为 { $shown } 存储的深度为 { $gpu }（f32 插值，24 位保存）；按场景规则保留的是 { $book }
 gpu-not-convex = 注意：{ $polygon } 不是凸的：GPU 从其第一个顶点以三角形扇绘制，这并不是该多边形
-speed-header = { $scene }：{ $triangles } 个三角形，测试了 { $pixels } 个像素中心；zsim 用 { $threads } 个线程，{ $tile ->
+speed-header = { $scene }：{ $triangles } 个三角形（{ $polygons } 个多边形的扇形{ $skipped ->
+    [0] {""}
+   *[other] ；另有 { $skipped } 个多边形不绘制任何像素：退化、侧对、被剔除或在视野之外
+  }），测试了 { $pixels } 个像素中心；zsim 用 { $threads } 个线程，{ $tile ->
     [0] 逐个多边形
    *[other] 以 { $tile } 像素见方的图块
 }，对比 { $renderer }（LP_NUM_THREADS={ $lp }），交替计时 { $pairs } 对（各先不计时运行一次）

@@ -82,3 +82,92 @@ fn copy_folder(from: &Path, to: &Path) {
         }
     }
 }
+
+/// Found building the guide: four links pointed out of the book
+/// (`../../README.md`, `SUMMARY.md`, the design notes), which mdbook turns
+/// into pages it never writes. Every link of a chapter leads to another
+/// chapter (or a file beside them) and, with `#…`, to a heading there; every
+/// relative link of the README leads to a file of the repository. The built
+/// book's links are checked again in CI (`.ci/book`).
+#[test]
+fn the_guides_and_the_readmes_links_lead_somewhere() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let src = root.join("docs/src");
+    let mut documents: Vec<PathBuf> = std::fs::read_dir(&src).unwrap().map(|e| e.unwrap().path()).collect();
+    documents.retain(|p| p.extension().is_some_and(|e| e == "md"));
+    documents.push(root.join("README.md"));
+    let mut broken = Vec::new();
+    let mut links = 0;
+    for document in &documents {
+        let text = std::fs::read_to_string(document).unwrap();
+        for target in markdown_links(&text) {
+            if target.contains("://") || target.starts_with("mailto:") {
+                continue;
+            }
+            links += 1;
+            let (file, anchor) = target.split_once('#').unwrap_or((&target, ""));
+            let folder = document.parent().unwrap();
+            let path = if file.is_empty() { document.clone() } else { folder.join(file) };
+            let inside_the_book = document.starts_with(&src);
+            let found = std::fs::canonicalize(&path).ok();
+            let fine = match &found {
+                None => false,
+                Some(found) if inside_the_book => found.starts_with(std::fs::canonicalize(&src).unwrap()),
+                Some(_) => true,
+            };
+            let heading = anchor.is_empty()
+                || found.as_ref().is_some_and(|f| {
+                    headings(&std::fs::read_to_string(f).unwrap_or_default()).contains(&anchor.to_string())
+                });
+            if !fine || !heading {
+                broken.push(format!("{}: {target}", document.strip_prefix(root).unwrap().display()));
+            }
+        }
+    }
+    assert!(links >= 10, "the documents' links were found: {links}");
+    assert!(broken.is_empty(), "links that lead nowhere in the built guide: {broken:#?}");
+}
+
+/// The targets of a document's `[text](target)` links, outside code.
+fn markdown_links(text: &str) -> Vec<String> {
+    let mut targets = Vec::new();
+    let mut fenced = false;
+    for line in text.lines() {
+        if line.starts_with("```") {
+            fenced = !fenced;
+            continue;
+        }
+        if fenced {
+            continue;
+        }
+        // Inline code is no link: drop what is between backticks.
+        let prose: String = line.split('`').step_by(2).collect::<Vec<_>>().join(" ");
+        let mut rest = prose.as_str();
+        while let Some(at) = rest.find("](") {
+            let after = &rest[at + 2..];
+            let Some(end) = after.find(')') else { break };
+            targets.push(after[..end].to_string());
+            rest = &after[end..];
+        }
+    }
+    targets
+}
+
+/// The anchors mdbook gives a document's headings: lower case, spaces as
+/// `-`, only letters, digits, `-` and `_` kept.
+fn headings(text: &str) -> Vec<String> {
+    text.lines()
+        .filter_map(|line| line.strip_prefix('#'))
+        .map(|heading| {
+            let heading = heading.trim_start_matches('#').trim().to_lowercase();
+            heading
+                .chars()
+                .filter_map(|c| match c {
+                    ' ' => Some('-'),
+                    c if c.is_alphanumeric() || c == '-' || c == '_' => Some(c),
+                    _ => None,
+                })
+                .collect()
+        })
+        .collect()
+}

@@ -313,7 +313,14 @@ fn speed_times_zsim_beside_opengl_in_alternating_pairs() {
     std::fs::create_dir_all(&dir).unwrap();
     let scene = dir.join("scene.json");
     let random = crate::zsim(&["random", "--count", "400", "--width", "128", "--height", "128", "--seed", "2"]);
-    std::fs::write(&scene, random.stdout).unwrap();
+    // Found by a user: "1987 triangles" for a file of 2,000 polygons, without saying why. Two
+    // polygons that draw nothing (collinear vertices) are added to the 400 triangles.
+    let mut json: serde_json::Value = serde_json::from_str(&random.stdout).unwrap();
+    for _ in 0..2 {
+        let flat = serde_json::json!({"value": 1, "vertices": [[0, 0, 1], [5, 5, 1], [9, 9, 1]]});
+        json["polygons"].as_array_mut().unwrap().push(flat);
+    }
+    std::fs::write(&scene, json.to_string()).unwrap();
     let scene = scene.to_str().unwrap();
     for (threads, lp) in [("1", "0"), ("2", "2")] {
         let run = crate::zsim(&["speed", scene, "--pairs", "3", "--threads", threads]);
@@ -325,9 +332,13 @@ fn speed_times_zsim_beside_opengl_in_alternating_pairs() {
         let tested = simulation.stats().tested;
         assert!(header.starts_with(&format!("{scene}: ")), "{header}");
         assert!(
-            header.contains(&format!(" triangles, {tested} pixel centres tested; zsim on {threads} thread")),
+            header.contains(&format!(" polygons; 2 more draw nothing: degenerate, edge-on, culled or outside the view), {tested} pixel centres tested; zsim on {threads} thread")),
             "{header}"
         );
+        // Each drawn triangle is one triangle for the GPU; with the two that draw nothing, 402.
+        let counts = header[scene.len() + 2..].split_once(" triangles (fans of ").unwrap();
+        let polygons: usize = counts.1.split_once(' ').unwrap().0.parse().unwrap();
+        assert_eq!((counts.0.parse::<usize>().unwrap(), polygons + 2), (polygons, 402), "{header}");
         assert!(
             header.contains("against llvmpipe")
                 && header.contains(&format!("(LP_NUM_THREADS={lp}), 3 alternating pairs")),

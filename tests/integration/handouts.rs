@@ -117,12 +117,39 @@ fn an_exercise_writes_its_worksheet_and_solution_in_each_format_asked() {
     let folder = dir.join("ex");
     let run = zsim(&["exercise", "--seed", "3", "--formats", "svg,pdf,tex", "-o", folder.to_str().unwrap()]);
     assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    // Beside zsim's PDF the TeX source is NAME-tikz.tex, so that pdflatex on it writes
+    // NAME-tikz.pdf: `pdflatex worksheet.tex` once overwrote zsim's own worksheet.pdf.
     for name in ["worksheet", "solution"] {
-        for extension in ["svg", "pdf", "tex"] {
-            let file = folder.join(format!("{name}.{extension}"));
-            assert!(file.is_file(), "{}", file.display());
+        for file in [format!("{name}.svg"), format!("{name}.pdf"), format!("{name}-tikz.tex")] {
+            assert!(folder.join(&file).is_file(), "{file}");
         }
+        assert!(!folder.join(format!("{name}.tex")).exists());
+        // The page is A4, turned to landscape when the figure fits larger so.
+        let pdf = std::fs::read(folder.join(format!("{name}.pdf"))).unwrap();
+        let media =
+            String::from_utf8_lossy(&pdf).split("/MediaBox [").nth(1).unwrap().split(']').next().unwrap().to_string();
+        assert!(["0 0 595.2756 841.8898", "0 0 841.8898 595.2756"].contains(&media.as_str()), "{name}: {media}");
     }
+    if let Some(latex) = tool("pdflatex") {
+        let before = std::fs::read(folder.join("worksheet.pdf")).unwrap();
+        let compiled = Command::new("pdflatex")
+            .args(["-interaction=nonstopmode", "-halt-on-error", "worksheet-tikz.tex"])
+            .current_dir(&folder)
+            .output()
+            .unwrap();
+        assert!(compiled.status.success(), "{}", String::from_utf8_lossy(&compiled.stdout));
+        assert!(folder.join("worksheet-tikz.pdf").is_file());
+        assert_eq!(std::fs::read(folder.join("worksheet.pdf")).unwrap(), before, "zsim's PDF is left alone");
+        ran("pdflatex on the exercise's TeX beside its PDF", &latex);
+    } else {
+        skipped("pdflatex (texlive-latex-base, texlive-pictures)", "compiling the exercise's TeX beside its PDF");
+    }
+    // `figure --paper letter`: a US Letter page.
+    let letter = dir.join("letter.pdf");
+    let run = zsim(&["figure", "examples/rogers.json", "--paper", "letter", "-o", letter.to_str().unwrap()]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let pdf = String::from_utf8_lossy(&std::fs::read(&letter).unwrap()).into_owned();
+    assert!(pdf.contains("/MediaBox [0 0 792 612]") || pdf.contains("/MediaBox [0 0 612 792]"), "a Letter page");
     let run = zsim(&["exercise", "--seed", "3", "--formats", "svg,doc", "-o", dir.join("bad").to_str().unwrap()]);
     assert_eq!(run.code, 2);
     assert!(run.stderr.contains("doc"), "{}", run.stderr);
@@ -169,4 +196,85 @@ fn every_handout_compiles_whatever_its_names_hold() {
         assert!(compiled.status.success(), "{tex}: pdflatex: {log}");
     }
     ran("handouts with odd names compiled", &latex);
+}
+
+/// A text of a figure's SVG as a box: (left, top, right, bottom), its width
+/// estimated as the figure lays it out (about 6 units a character at font size
+/// 10, 7 at 11, 8 bold), its height the font's.
+fn text_boxes(svg: &str, group: &str, per_char: f64, size: f64) -> Vec<(String, [f64; 4])> {
+    let start = svg.find(&format!(r#"<g id="{group}""#)).unwrap_or_else(|| panic!("a group {group}"));
+    let body = &svg[start..start + svg[start..].find("</g>").unwrap()];
+    let attribute = |tag: &str, name: &str| {
+        let at = tag.find(&format!(" {name}=\""))? + name.len() + 3;
+        Some(tag[at..at + tag[at..].find('"')?].to_string())
+    };
+    body.split("<text")
+        .skip(1)
+        .map(|rest| {
+            let (tag, rest) = rest.split_once('>').unwrap();
+            let text = rest.split("</text>").next().unwrap().to_string();
+            let x: f64 = attribute(tag, "x").unwrap().parse().unwrap();
+            let y: f64 = attribute(tag, "y").unwrap().parse().unwrap();
+            let width = text.chars().count() as f64 * per_char;
+            let left = match attribute(tag, "text-anchor").as_deref() {
+                Some("end") => x - width,
+                Some("middle") => x - width / 2.0,
+                _ => x,
+            };
+            (text, [left, y - size * 0.75, left + width, y + size * 0.2])
+        })
+        .collect()
+}
+
+fn overlap(a: &[f64; 4], b: &[f64; 4]) -> bool {
+    a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
+}
+
+/// Found by a teacher: handouts' vertex labels sat on centre dots and
+/// scanlines ("(10, 5, 10)" read "(10,.5, 10)") and covered cell values;
+/// leader lines ran along edges. The labels stand in columns beside the
+/// raster, where no cell, centre or value is, clear of each other, of the
+/// row numbers and of the polygons' names, on the book's worksheet and on
+/// a 3-polygon exercise's worksheet and answer key.
+#[test]
+fn vertex_labels_collide_with_no_centre_value_or_other_label() {
+    let dir = scratch("labels");
+    let book = dir.join("book.svg");
+    let run = zsim(&["figure", "examples/rogers.json", "--after", "0", "-o", book.to_str().unwrap()]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let exercise = dir.join("ex");
+    let run =
+        zsim(&["exercise", "--seed", "4", "--polygons", "3", "--formats", "svg", "-o", exercise.to_str().unwrap()]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    for (figure, labels) in [(book, 7), (exercise.join("worksheet.svg"), 9), (exercise.join("solution.svg"), 9)] {
+        let svg = std::fs::read_to_string(&figure).unwrap();
+        let vertices = text_boxes(&svg, "vertices", 6.0, 10.0);
+        assert_eq!(vertices.len(), labels, "{}", figure.display());
+        // The raster: the grid's outer lines.
+        let grid = &svg[svg.find(r#"<g id="grid""#).unwrap()..];
+        let grid = &grid[..grid.find("</g>").unwrap()];
+        let coordinates = |names: [&str; 2]| -> Vec<f64> {
+            let mut found = Vec::new();
+            for name in names {
+                for rest in grid.split(&format!(" {name}=\"")).skip(1) {
+                    found.push(rest.split('"').next().unwrap().parse().unwrap());
+                }
+            }
+            found
+        };
+        let (xs, ys) = (coordinates(["x1", "x2"]), coordinates(["y1", "y2"]));
+        let low = |v: &[f64]| v.iter().cloned().fold(f64::INFINITY, f64::min);
+        let high = |v: &[f64]| v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+        let raster = [low(&xs), low(&ys), high(&xs), high(&ys)];
+        let mut others = text_boxes(&svg, "names", 8.0, 11.0);
+        others.extend(text_boxes(&svg, "axes", 7.0, 11.0));
+        let width: f64 = svg.split("width=\"").nth(1).unwrap().split('"').next().unwrap().parse().unwrap();
+        for (k, (text, area)) in vertices.iter().enumerate() {
+            assert!(!overlap(area, &raster), "{}: {text} over the raster {area:?} {raster:?}", figure.display());
+            assert!(area[0] >= 0.0 && area[2] <= width, "{}: {text} outside the figure", figure.display());
+            for (other, other_area) in vertices[k + 1..].iter().chain(&others) {
+                assert!(!overlap(area, other_area), "{}: {text} over {other}", figure.display());
+            }
+        }
+    }
 }

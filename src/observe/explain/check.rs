@@ -39,7 +39,11 @@ impl Answer {
     /// (row top first, column, answer, expected).
     pub fn cells<'a>(&'a self, expected: &'a Matrix) -> impl Iterator<Item = (usize, usize, u32, u32)> + 'a {
         self.rows.iter().zip(expected).enumerate().flat_map(move |(i, (row, right))| {
-            row.iter().zip(right).enumerate().filter(move |(x, _)| self.answered(i, *x)).map(move |(x, (&a, &e))| (i, x, a, e))
+            row.iter()
+                .zip(right)
+                .enumerate()
+                .filter(move |(x, _)| self.answered(i, *x))
+                .map(move |(x, (&a, &e))| (i, x, a, e))
         })
     }
 }
@@ -312,7 +316,10 @@ mod tests {
         assert_eq!(compare_answer(&answer, &expected), vec![Mismatch { x: 1, y: 0, answer: 2, expected: 0 }]);
         assert_eq!(parse_answer(Lang::En, "1 2\n3 0\n", 2, 2, FRAME).unwrap().unanswered(), 0);
         // A question mark is a cell like any other: the row still needs its width.
-        assert_eq!(parse_answer(Lang::En, "?\n1 1\n", 2, 2, FRAME).unwrap_err(), "line 1: 1 value; the raster is 2 wide");
+        assert_eq!(
+            parse_answer(Lang::En, "?\n1 1\n", 2, 2, FRAME).unwrap_err(),
+            "line 1: 1 value; the raster is 2 wide"
+        );
     }
 
     #[test]

@@ -11,6 +11,7 @@ use std::time::{Duration, Instant};
 use crate::error::{Error, Usage};
 use crate::observe::gpu::{Gl, GpuError, Triangles, triangles};
 use crate::scene::Scene;
+use crate::simulate::events::Fate;
 use crate::simulate::simulation::Simulation;
 
 /// The times of a race, pair by pair.
@@ -20,6 +21,11 @@ pub struct Race {
     pub renderer: String,
     /// Triangles the GPU drew (polygons as fans).
     pub triangles: usize,
+    /// The polygons drawn as those fans.
+    pub polygons: usize,
+    /// The scene's polygons that draw nothing (degenerate, edge-on, culled,
+    /// outside the view), for which no triangle is sent.
+    pub skipped: usize,
     /// Pixel centres zsim tested in one drawing.
     pub pixels: u64,
     /// Threads zsim drew on.
@@ -33,6 +39,40 @@ pub struct Race {
 }
 
 impl Race {
+    /// The report, two lines in `lang`: the scene (shown as `scene`), the
+    /// counts, the threads (llvmpipe's as `lp`, LP_NUM_THREADS) and the
+    /// pairs; then both medians, their ratio and the range of the pairs'.
+    pub fn report(&self, lang: crate::words::Lang, scene: &str, lp: &str) -> String {
+        use crate::words::{localize_decimal, printable};
+        let ms = |d: Duration| localize_decimal(lang, format!("{:.2}", d.as_secs_f64() * 1e3));
+        let ratio = |r: f64| localize_decimal(lang, format!("{r:.2}"));
+        let (low, high) = self.pair_ratios();
+        let header = words!(
+            lang,
+            "speed-header",
+            scene = scene,
+            triangles = self.triangles,
+            polygons = self.polygons,
+            skipped = self.skipped,
+            pixels = self.pixels,
+            threads = self.threads,
+            tile = self.tile,
+            renderer = printable(&self.renderer).into_owned(),
+            lp = printable(lp).into_owned(),
+            pairs = self.zsim.len()
+        );
+        let times = words!(
+            lang,
+            "speed-result",
+            zsim = ms(self.zsim_median()),
+            gpu = ms(self.gpu_median()),
+            ratio = ratio(self.ratio()),
+            low = ratio(low),
+            high = ratio(high)
+        );
+        format!("{header}\n{times}\n")
+    }
+
     /// zsim's median time.
     pub fn zsim_median(&self) -> Duration {
         median(&self.zsim)
@@ -80,6 +120,8 @@ pub fn race(
     }
     let no_gpu = |error: GpuError| Error::from(Usage::NoGpu { reason: error.message(lang) });
     let Triangles { triangles, margin, .. } = triangles(scene);
+    let polygons = (0..scene.polygons.len()).filter(|&i| crate::simulate::setup::fate(scene, i) == Fate::Drawn).count();
+    let skipped = scene.polygons.len() - polygons;
     let gl = Gl::open().map_err(no_gpu)?;
     let size = (scene.width + 2 * margin, scene.height + 2 * margin);
     let drawing = gl.upload(size, &triangles, Some((scene.depth_test, scene.depth_max()))).map_err(no_gpu)?;
@@ -108,6 +150,8 @@ pub fn race(
     let mut race = Race {
         renderer: gl.renderer().to_string(),
         triangles: triangles.len(),
+        polygons,
+        skipped,
         pixels,
         threads,
         tile,
@@ -133,6 +177,8 @@ mod tests {
         let race = Race {
             renderer: "test".into(),
             triangles: 1,
+            polygons: 1,
+            skipped: 0,
             pixels: 1,
             threads: 1,
             tile: 0,

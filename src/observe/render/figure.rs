@@ -77,12 +77,13 @@ pub fn svg_with(
 ) -> String {
     let title = &*drawn(title, MAX_DRAWN_TITLE);
     let (width, height) = (i128::from(scene.width), i128::from(scene.height));
-    // Vertex labels reach out beside the raster: room for them on both sides.
-    let pad = if extras.vertex_labels { 100 } else { 0 };
+    // Vertex labels stand in a column on each side of the raster: room for the widest.
+    let vertices = if extras.vertex_labels { vertex_texts(lang, scene, last) } else { Vec::new() };
+    let pad = vertices.iter().map(|v| label_width(&v.text)).max().map_or(0, |w| w + 16);
     // The polygons' names stand in a column right of the raster, each led to
     // its polygon by a line, so that no name covers a cell, a value or another polygon.
     let names = name_labels(scene, buffers, last);
-    let column = names.iter().map(|n| bold_width(&n.text)).max().map_or(0, |w| w + 28);
+    let column = names.iter().map(|n| bold_width(&n.text)).max().map_or(0, |w| w + 34);
     let (left, right) = (MARGIN_LEFT + pad, MARGIN_RIGHT + pad + column);
     let total_width = left + width * CELL + right;
     // About 6 units a character at font size 11.
@@ -92,7 +93,10 @@ pub fn svg_with(
     let title_lines = wrap(&[title.to_string()], ((total_width - left - 8) * 2 / 15).max(20) as usize);
     let top = MARGIN_TOP + 18 * (title_lines.len() as i128 - 1);
     let legend = legend(lang, scene, buffers, shading);
-    let total_height = top + height * CELL + MARGIN_BOTTOM + LEGEND + caption_height;
+    // A column of vertex labels longer than the raster is tall lengthens the picture.
+    let side_count = |left_side: bool| vertices.iter().filter(|v| v.left == left_side).count() as i128;
+    let labels_height = (side_count(true).max(side_count(false)) * VERTEX_LINE).max(height * CELL);
+    let total_height = top + labels_height + MARGIN_BOTTOM + LEGEND + caption_height;
     // Pixel-unit point to SVG coordinates: x right, y up (flipped).
     let sx = |x: Q| decimal(Q::from_integer(left) + x * CELL, 2);
     let sy = |y: Q| decimal(Q::from_integer(top) + (Q::from_integer(height) - y) * CELL, 2);
@@ -214,22 +218,27 @@ pub fn svg_with(
     // The names: top to bottom in the order of their anchors, each as near its
     // anchor's height as the names above it allow, a leader line to the anchor.
     let _ = writeln!(out, r##"<g id="names" font-weight="bold" stroke-width="0.8">"##);
-    let column_x = left + width * CELL + pad + 14;
+    let column_x = left + width * CELL + pad + 20;
     let mut order: Vec<&NameLabel> = names.iter().collect();
     order.sort_by(|a, b| b.anchor.1.total_cmp(&a.anchor.1));
     let mut next_free = (top + 4) as f64;
+    // The heights the names' leaders cross the right-hand vertex labels' column at.
+    let mut leader_rows = Vec::new();
     for name in order {
-        // The leader starts on the top edge of the anchor's cell (so it covers
-        // no value printed in a cell), runs right along that grid line out of
-        // the raster, then to the name.
+        // The leader leaves the anchor's centre at 45° for the row's lane, three quarters down
+        // the row (between its scanline and the grid line below: no centre, value, grid line or
+        // scanline there), runs right along it out of the raster, then to the name.
         let ax = left as f64 + name.anchor.0 * CELL as f64;
-        let ay = (top + height * CELL) as f64 - (name.anchor.1 + 0.5) * CELL as f64;
-        let edge = (left + width * CELL + pad / 2 + 6) as f64;
-        let y = (ay + 4.0).max(next_free);
+        let ay = (top + height * CELL) as f64 - name.anchor.1 * CELL as f64;
+        let lane = ay + CELL as f64 / 4.0;
+        let edge = (left + width * CELL + pad + 6) as f64;
+        let y = (lane + 4.0).max(next_free);
         next_free = y + 16.0;
+        leader_rows.push(lane);
         let _ = writeln!(
             out,
-            r##"<polyline points="{ax:.2},{ay:.2} {edge:.2},{ay:.2} {},{:.2}" fill="none" stroke="#333333"/><circle cx="{ax:.2}" cy="{ay:.2}" r="2.6" fill="black" stroke="white"/><text x="{column_x}" y="{y:.2}" fill="black">{}</text>"##,
+            r##"<polyline points="{ax:.2},{ay:.2} {:.2},{lane:.2} {edge:.2},{lane:.2} {},{:.2}" fill="none" stroke="#333333"/><circle cx="{ax:.2}" cy="{ay:.2}" r="2.6" fill="black" stroke="white"/><text x="{column_x}" y="{y:.2}" fill="black">{}</text>"##,
+            ax + CELL as f64 / 4.0,
             column_x - 3,
             y - 4.0,
             escape(&name.text)
@@ -240,7 +249,9 @@ pub fn svg_with(
         cell_values(lang, &mut out, scene, buffers, shading, (&sx, &sy));
     }
     if extras.vertex_labels {
-        vertex_labels(lang, &mut out, scene, last, (&vx, &vy));
+        let raster = [left as f64, top as f64, (left + width * CELL) as f64, (top + height * CELL) as f64];
+        let bottom = (top + labels_height) as f64;
+        vertex_labels(&mut out, &vertices, (&vx, &vy), raster, bottom, &leader_rows);
     }
     // Axes: column numbers below, row numbers on the left.
     let step = if width.max(height) > 64 {
@@ -268,7 +279,8 @@ pub fn svg_with(
             out,
             r#"<text x="{}" y="{}" text-anchor="end">{row}</text>"#,
             left - 6,
-            sy(Q::new(2 * row + 1, 2) - Q::new(1, 3))
+            // Centred on the row's scanline: the leaders' lanes run under the numbers.
+            sy(Q::new(2 * row + 1, 2) - Q::new(1, 6))
         );
     }
     let _ = writeln!(out, r#"<text x="{}" y="{}">y</text>"#, left - 28, sy(Q::new(height, 2)));
@@ -437,35 +449,104 @@ fn is_dark(fill: &str) -> bool {
     299 * channel(0) + 587 * channel(1) + 114 * channel(2) < 500 * 255
 }
 
-/// Each vertex of polygons `0 ..= last` labelled `(x, y, z)`, set off from
-/// the vertex away from its polygon's middle, on a white halo so that the
-/// label stays readable over lines.
-fn vertex_labels(lang: Lang, out: &mut String, scene: &Scene, last: usize, (sx, sy): (&ToSvg, &ToSvg)) {
-    let _ = writeln!(
-        out,
-        r#"<g id="vertices" font-size="10" fill="black" stroke="white" stroke-width="3" paint-order="stroke">"#
-    );
-    // Vertices already labelled, so that a point shared by two polygons gets its labels one under the other.
-    let mut labelled: Vec<[Exact; 2]> = Vec::new();
+/// The height of a line of vertex labels.
+const VERTEX_LINE: i128 = 13;
+
+/// A vertex's label: its point and `(x, y, z)`, and whether it stands left
+/// of the raster (the vertex is left of its polygon's middle) or right.
+struct VertexText {
+    point: [Exact; 2],
+    text: String,
+    left: bool,
+}
+
+/// The labels of the vertices of polygons `0 ..= last`, in the scene's order.
+fn vertex_texts(lang: Lang, scene: &Scene, last: usize) -> Vec<VertexText> {
+    let mut texts = Vec::new();
     for polygon in scene.polygons.iter().take(last + 1).filter(|p| !p.vertices().is_empty()) {
         let vertices = polygon.vertices();
-        let (middle_x, middle_y) = (middle(&vertices, 0), middle(&vertices, 1));
+        let middle_x = middle(&vertices, 0);
         for v in vertices.iter() {
-            // Left of the middle: the label ends at the vertex; right: it starts there.
-            let (anchor, dx) = if v[0] < middle_x { ("end", Q::new(-1, 4)) } else { ("start", Q::new(1, 4)) };
-            let point = [v[0].clone(), v[1].clone()];
-            let below = labelled.iter().filter(|p| **p == point).count() as i128;
-            labelled.push(point);
-            let dy = if v[1] < middle_y { Q::new(-1, 2) } else { Q::new(1, 4) } - Q::new(below, 2);
-            let label = format!("({})", v.each_ref().map(|c| short(lang, c)).join(coordinate_separator(lang)));
+            let text = format!("({})", v.each_ref().map(|c| short(lang, c)).join(coordinate_separator(lang)));
+            texts.push(VertexText { point: [v[0].clone(), v[1].clone()], text, left: v[0] < middle_x });
+        }
+    }
+    texts
+}
+
+/// The width of a vertex label at font size 10: about 6 units a character,
+/// 11 for a wide one.
+fn label_width(text: &str) -> i128 {
+    text.chars().map(|c| if is_wide(c) { 11 } else { 6 }).sum()
+}
+
+/// The vertex labels in a column on each side of the `raster` (left, top,
+/// right, bottom), never over a cell, a centre, a value or another label:
+/// each as near its vertex's height as the labels above it allow (and,
+/// right of the raster, off the heights where the names' leaders cross,
+/// `leader_rows`), down to `bottom`, a dot on the vertex and a thin leader
+/// from the dot to the label.
+fn vertex_labels(
+    out: &mut String,
+    labels: &[VertexText],
+    (sx, sy): (&ToSvg, &ToSvg),
+    raster: [f64; 4],
+    bottom: f64,
+    leader_rows: &[f64],
+) {
+    let _ = writeln!(out, r#"<g id="vertices" font-size="10" fill="black">"#);
+    let at = |v: &VertexText| {
+        let coordinate = |text: String| text.parse::<f64>().unwrap_or(0.0);
+        (coordinate(sx(&v.point[0])), coordinate(sy(&v.point[1])))
+    };
+    // A leader leaves its vertex at 45° to the nearest lane (three quarters down a row, between
+    // its scanline and the grid line below: no centre, value or line there) and runs along it.
+    let rows = ((raster[3] - raster[1]) / CELL as f64).round().max(1.0);
+    let lane = |y: f64| {
+        let row = ((y - raster[1] - 18.0) / CELL as f64).round().clamp(0.0, rows - 1.0);
+        raster[1] + row * CELL as f64 + 18.0
+    };
+    for left in [true, false] {
+        let mut side: Vec<(&VertexText, (f64, f64), f64)> =
+            labels.iter().filter(|v| v.left == left).map(|v| (v, at(v), lane(at(v).1))).collect();
+        side.sort_by(|a, b| a.2.total_cmp(&b.2).then(a.1.1.total_cmp(&b.1.1)));
+        // Baselines, top down: the text's middle at its lane's height or below the last label.
+        let line = VERTEX_LINE as f64;
+        let mut baselines: Vec<f64> = Vec::with_capacity(side.len());
+        for (_, _, lane) in &side {
+            let mut baseline = (lane + 3.5).max(baselines.last().map_or(raster[1] + 9.0, |b| b + line));
+            // Right of the raster, off a name's leader (it crosses the column at that height).
+            while !left && leader_rows.iter().any(|row| (baseline - 3.5 - row).abs() < line / 2.0 + 1.0) {
+                baseline += 1.0;
+            }
+            baselines.push(baseline);
+        }
+        // Pushed back up from the bottom where the column ran past it.
+        let mut limit = bottom;
+        for baseline in baselines.iter_mut().rev() {
+            if *baseline > limit {
+                *baseline = limit;
+            }
+            limit = *baseline - line;
+        }
+        let (edge, outward) = if left { (raster[0], -1.0) } else { (raster[2], 1.0) };
+        for ((label, (x, y), lane), baseline) in side.iter().zip(&baselines) {
+            // Left, past the row numbers (the lane runs under them), right, just past the raster.
+            let (text_x, beyond, anchor) =
+                if left { (edge - 38.0, edge - 30.0, "end") } else { (edge + 10.0, edge + 2.0, "start") };
+            let mut points = vec![(*x, *y)];
+            // Inside the raster: to the lane, along it out of the raster (and the row numbers).
+            if (raster[0]..=raster[2]).contains(x) && (raster[1]..=raster[3]).contains(y) {
+                points.push((x + outward * (lane - y).abs(), *lane));
+                points.push((beyond, *lane));
+            }
+            points.push((text_x - outward * 2.0, baseline - 3.5));
+            let points: Vec<String> = points.iter().map(|(x, y)| format!("{x:.2},{y:.2}")).collect();
             let _ = writeln!(
                 out,
-                r#"<circle cx="{}" cy="{}" r="2.5" stroke="none"/><text x="{}" y="{}" text-anchor="{anchor}">{}</text>"#,
-                sx(&v[0]),
-                sy(&v[1]),
-                sx(&v[0].plus(&Exact::Word(dx))),
-                sy(&v[1].plus(&Exact::Word(dy))),
-                escape(&label)
+                r##"<circle cx="{x:.2}" cy="{y:.2}" r="2.5"/><polyline points="{}" fill="none" stroke="#555555" stroke-width="0.6"/><text x="{text_x:.2}" y="{baseline:.2}" text-anchor="{anchor}">{}</text>"##,
+                points.join(" "),
+                escape(&label.text)
             );
         }
     }

@@ -14,11 +14,47 @@ pub enum Format {
     Svg,
     /// A picture at twice the SVG's size.
     Png,
-    /// A page of the SVG's size.
+    /// A page (A4 or Letter) with the figure fitted on it.
     Pdf,
     /// A TikZ picture in a LaTeX document (with `whole`), or alone.
     Tex,
 }
+
+/// The paper a figure's PDF page is: A4 (the default) or US Letter, turned
+/// to landscape when that fits the figure larger.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Paper {
+    /// 210 × 297 mm.
+    #[default]
+    A4,
+    /// 8.5 × 11 inches.
+    Letter,
+}
+
+impl Paper {
+    /// The papers' names, as `--paper` takes them.
+    pub const NAMES: [&'static str; 2] = ["a4", "letter"];
+
+    /// The paper named `name` (`a4`, `letter`, in any case).
+    pub fn parse(name: &str) -> Option<Paper> {
+        match name.to_ascii_lowercase().as_str() {
+            "a4" => Some(Paper::A4),
+            "letter" => Some(Paper::Letter),
+            _ => None,
+        }
+    }
+
+    /// Width and height in points (1/72 inch), portrait.
+    pub fn points(self) -> (f32, f32) {
+        match self {
+            Paper::A4 => (595.2756, 841.8898),
+            Paper::Letter => (612.0, 792.0),
+        }
+    }
+}
+
+/// The margin around a figure on its PDF page: half an inch, in points.
+pub const PAGE_MARGIN: f32 = 36.0;
 
 impl Format {
     /// Every format, in the order of [`Format::NAMES`].
@@ -46,19 +82,19 @@ impl Format {
     /// `svg` in this format, for the file `path` (named in errors); a TeX
     /// file is a whole LaTeX document unless `tikz_only`.
     /// A PNG is drawn at `scale` pixels a unit (default: 2, or less to keep
-    /// its longer side within [`PNG_SIDE`]).
+    /// its longer side within [`PNG_SIDE`]); a PDF is a page of `paper`.
     pub fn encode(
         self,
         lang: Lang,
         svg: &str,
         path: &Path,
         tikz_only: bool,
-        scale: Option<f32>,
+        (scale, paper): (Option<f32>, Paper),
     ) -> Result<Vec<u8>, Error> {
         match self {
             Format::Svg => Ok(svg.as_bytes().to_vec()),
             Format::Png => png(lang, svg, path, scale),
-            Format::Pdf => pdf(lang, svg, path),
+            Format::Pdf => pdf(lang, svg, path, paper),
             Format::Tex => crate::observe::tikz::tikz(svg, !tikz_only)
                 .map(String::into_bytes)
                 .map_err(|reason| Usage::PngFailed { path: path.to_path_buf(), reason }.into()),
@@ -93,19 +129,38 @@ pub fn png(lang: Lang, svg: &str, path: &Path, scale: Option<f32>) -> Result<Vec
     pixmap.encode_png().map_err(|e| failed(e.to_string()))
 }
 
-/// The SVG as a one-page PDF of its size, text embedded as the system's
-/// sans-serif font (svg2pdf, from the same tree as the PNG).
+/// The SVG on one page of `paper` (portrait or landscape, whichever shows
+/// it larger), fitted within [`PAGE_MARGIN`] and centred across, its text
+/// drawn as the outlines of the system's sans-serif font (the glyphs the PNG
+/// shows; the PDF embeds no font, so needs none of svg2pdf's font crates).
 #[cfg(feature = "pdf")]
-pub fn pdf(lang: Lang, svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+pub fn pdf(lang: Lang, svg: &str, path: &Path, paper: Paper) -> Result<Vec<u8>, Error> {
     let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
     let tree = tree(lang, svg, path)?;
-    svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), svg2pdf::PageOptions::default())
+    // usvg writes text as paths (its glyphs' outlines) unless asked to keep it.
+    let outlined = tree.to_string(&resvg::usvg::WriteOptions::default());
+    let (width, height) = (tree.size().width(), tree.size().height());
+    let (short, long) = paper.points();
+    let fit = |(page_width, page_height): (f32, f32)| {
+        ((page_width - 2.0 * PAGE_MARGIN) / width).min((page_height - 2.0 * PAGE_MARGIN) / height)
+    };
+    let (page_width, page_height) = if fit((long, short)) > fit((short, long)) { (long, short) } else { (short, long) };
+    let scale = fit((page_width, page_height));
+    let x = (page_width - width * scale) / 2.0;
+    // The written SVG's content, inside its root element, placed on the page.
+    let body = outlined.find('>').zip(outlined.rfind("</svg>")).map_or("", |(start, end)| &outlined[start + 1..end]);
+    let page = format!(
+        r#"<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" width="{page_width}" height="{page_height}" viewBox="0 0 {page_width} {page_height}"><g transform="matrix({scale} 0 0 {scale} {x} {PAGE_MARGIN})">{body}</g></svg>"#
+    );
+    let page =
+        resvg::usvg::Tree::from_str(&page, &resvg::usvg::Options::default()).map_err(|e| failed(e.to_string()))?;
+    svg2pdf::to_pdf(&page, svg2pdf::ConversionOptions::default(), svg2pdf::PageOptions::default())
         .map_err(|e| failed(e.to_string()))
 }
 
 /// Without the `pdf` feature: says so.
 #[cfg(not(feature = "pdf"))]
-pub fn pdf(lang: Lang, _svg: &str, path: &Path) -> Result<Vec<u8>, Error> {
+pub fn pdf(lang: Lang, _svg: &str, path: &Path, _paper: Paper) -> Result<Vec<u8>, Error> {
     Err(Usage::PngFailed { path: path.to_path_buf(), reason: words!(lang, "pdf-not-built") }.into())
 }
 

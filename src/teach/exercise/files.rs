@@ -7,7 +7,7 @@ use std::path::Path;
 
 use crate::error::Error;
 use crate::observe::render::figure::{Extras, Shading, svg_with};
-use crate::observe::render::picture::Format;
+use crate::observe::render::picture::{Format, Paper};
 use crate::observe::render::report::matrix;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
@@ -82,9 +82,11 @@ fn figure_files(
 ) -> Result<Vec<(String, Vec<u8>)>, Error> {
     let mut files: Vec<(String, Vec<u8>)> = Vec::new();
     for format in formats {
-        let file = format!("{name}.{}", format.extension());
+        // Beside zsim's PDF, the TeX source is NAME-tikz.tex: pdflatex on it writes NAME-tikz.pdf.
+        let beside_pdf = *format == Format::Tex && formats.contains(&Format::Pdf);
+        let file = format!("{name}{}.{}", if beside_pdf { "-tikz" } else { "" }, format.extension());
         if !files.iter().any(|(f, _)| *f == file) {
-            let bytes = format.encode(lang, svg, &dir.join(&file), false, None)?;
+            let bytes = format.encode(lang, svg, &dir.join(&file), false, (None, Paper::default()))?;
             files.push((file, bytes));
         }
     }
