@@ -119,6 +119,12 @@ impl From<io::Error> for Failure {
 
 /// Parses the arguments, runs the command and maps the outcome to an exit code.
 pub fn main() -> ExitCode {
+    // Mesa's Vulkan device-selection layer looks for a Wayland display and has libwayland print
+    // "XDG_RUNTIME_DIR is invalid or not set" on a headless machine; zsim picks its adapter itself.
+    if std::env::var_os("NODEVICE_SELECT").is_none() {
+        // SAFETY: the process's first step, before any other thread starts.
+        unsafe { std::env::set_var("NODEVICE_SELECT", "1") };
+    }
     // The language first, so that a usage error is already in it.
     let lang = language_of_the_run();
     let cli = match Cli::try_parse() {

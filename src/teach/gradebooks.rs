@@ -173,6 +173,7 @@ pub fn json(
                 "student": g.student,
                 "frame_wrong": g.frame_wrong,
                 "depth_wrong": g.depth_wrong,
+                "unanswered": g.unanswered,
                 // A number, written exactly as the table shows it (one decimal).
                 "score": g.percent().parse::<serde_json::Number>().expect("a decimal is a JSON number"),
                 "status": g.status.to_string(),

@@ -514,3 +514,40 @@ fn exercise_notes_name_the_depth_test_in_their_language() {
         assert!(notes.lines().next().unwrap().ends_with(ending), "{notes}");
     }
 }
+
+/// Asked for by a student who worked out only the top half: `?` cells are
+/// not answered, so they earn nothing and cost nothing; `check` says how
+/// many were left and exits 1; `grade` calls the student incomplete.
+#[test]
+fn unanswered_cells_are_counted_by_check_and_grade() {
+    let half = "tests/fixtures/rogers/frame_top_half.txt";
+    let run = zsim(&["check", "examples/rogers.json", "--frame", half]);
+    assert_eq!(run.code, 1, "not yet the whole answer: {}", run.stdout);
+    assert!(
+        run.stdout.contains("all 512 cells match the framebuffer after polygon 2 \"triangle\"; 512 of 1024 cells were left unanswered (? or .)"),
+        "{}",
+        run.stdout
+    );
+    let class = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("class-unanswered");
+    let _ = std::fs::remove_dir_all(&class);
+    std::fs::create_dir_all(&class).unwrap();
+    std::fs::copy(half, class.join("half.frame.txt")).unwrap();
+    let json = zsim(&["grade", "examples/rogers.json", class.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(json.code, 1);
+    let report: serde_json::Value = serde_json::from_str(&json.stdout).unwrap();
+    let student = &report["students"][0];
+    assert_eq!(
+        (student["status"].as_str(), student["unanswered"].as_u64()),
+        (Some("incomplete: 512 unanswered"), Some(512))
+    );
+    assert_eq!(student["frame_wrong"], 0);
+    // The changed cells in the top half, over the 337 the triangle and rectangle change in all.
+    let top: usize = std::fs::read_to_string(half)
+        .unwrap()
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .flat_map(|l| l.split_whitespace().filter(|v| *v != "0" && *v != "?"))
+        .count();
+    let score = (top as f64 * 1000.0 / 337.0).round() / 10.0;
+    assert_eq!(student["score"].as_f64(), Some(score), "{top} of 337");
+}
