@@ -416,9 +416,10 @@ fn figure_has_a_legend_values_a_worksheet_and_png() {
     assert_eq!(group("polygons").children().filter(|n| n.has_tag_name("polygon")).count(), 2);
     let labels: Vec<&str> =
         group("vertices").children().filter(|n| n.has_tag_name("text")).filter_map(|n| n.text()).collect();
+    // Left of the raster the vertices left of their polygon's middle, top down; then the right.
     assert_eq!(
         labels,
-        ["(10, 5, 10)", "(10, 25, 10)", "(25, 25, 10)", "(25, 5, 10)", "(15, 15, 15)", "(25, 25, 5)", "(30, 10, 5)"]
+        ["(10, 25, 10)", "(15, 15, 15)", "(10, 5, 10)", "(25, 25, 10)", "(25, 25, 5)", "(30, 10, 5)", "(25, 5, 10)"]
     );
     // A PNG for .png; a Word file is refused with the formats there are.
     let png = dir.join("rogers.png");

@@ -18,6 +18,9 @@ use num_traits::ToPrimitive;
 use crate::numbers::{Exact, Q, decimal, short};
 use crate::scene::Scene;
 
+use super::svg_text::{escape, is_wide};
+use super::vertex_labels;
+
 /// Largest raster side a figure draws.
 pub const MAX_FIGURE_SIDE: u32 = 1024;
 
@@ -78,8 +81,8 @@ pub fn svg_with(
     let title = &*drawn(title, MAX_DRAWN_TITLE);
     let (width, height) = (i128::from(scene.width), i128::from(scene.height));
     // Vertex labels stand in a column on each side of the raster: room for the widest.
-    let vertices = if extras.vertex_labels { vertex_texts(lang, scene, last) } else { Vec::new() };
-    let pad = vertices.iter().map(|v| label_width(&v.text)).max().map_or(0, |w| w + 16);
+    let vertices = if extras.vertex_labels { vertex_labels::texts(lang, scene, last) } else { Vec::new() };
+    let pad = vertices.iter().map(|v| vertex_labels::width(&v.text)).max().map_or(0, |w| w + 16);
     // The polygons' names stand in a column right of the raster, each led to
     // its polygon by a line, so that no name covers a cell, a value or another polygon.
     let names = name_labels(scene, buffers, last);
@@ -95,7 +98,7 @@ pub fn svg_with(
     let legend = legend(lang, scene, buffers, shading);
     // A column of vertex labels longer than the raster is tall lengthens the picture.
     let side_count = |left_side: bool| vertices.iter().filter(|v| v.left == left_side).count() as i128;
-    let labels_height = (side_count(true).max(side_count(false)) * VERTEX_LINE).max(height * CELL);
+    let labels_height = (side_count(true).max(side_count(false)) * vertex_labels::LINE).max(height * CELL);
     let total_height = top + labels_height + MARGIN_BOTTOM + LEGEND + caption_height;
     // Pixel-unit point to SVG coordinates: x right, y up (flipped).
     let sx = |x: Q| decimal(Q::from_integer(left) + x * CELL, 2);
@@ -251,7 +254,7 @@ pub fn svg_with(
     if extras.vertex_labels {
         let raster = [left as f64, top as f64, (left + width * CELL) as f64, (top + height * CELL) as f64];
         let bottom = (top + labels_height) as f64;
-        vertex_labels(&mut out, &vertices, (&vx, &vy), raster, bottom, &leader_rows);
+        vertex_labels::draw(&mut out, &vertices, (&vx, &vy), (raster, CELL as f64), bottom, &leader_rows);
     }
     // Axes: column numbers below, row numbers on the left.
     let step = if width.max(height) > 64 {
@@ -449,110 +452,6 @@ fn is_dark(fill: &str) -> bool {
     299 * channel(0) + 587 * channel(1) + 114 * channel(2) < 500 * 255
 }
 
-/// The height of a line of vertex labels.
-const VERTEX_LINE: i128 = 13;
-
-/// A vertex's label: its point and `(x, y, z)`, and whether it stands left
-/// of the raster (the vertex is left of its polygon's middle) or right.
-struct VertexText {
-    point: [Exact; 2],
-    text: String,
-    left: bool,
-}
-
-/// The labels of the vertices of polygons `0 ..= last`, in the scene's order.
-fn vertex_texts(lang: Lang, scene: &Scene, last: usize) -> Vec<VertexText> {
-    let mut texts = Vec::new();
-    for polygon in scene.polygons.iter().take(last + 1).filter(|p| !p.vertices().is_empty()) {
-        let vertices = polygon.vertices();
-        let middle_x = middle(&vertices, 0);
-        for v in vertices.iter() {
-            let text = format!("({})", v.each_ref().map(|c| short(lang, c)).join(coordinate_separator(lang)));
-            texts.push(VertexText { point: [v[0].clone(), v[1].clone()], text, left: v[0] < middle_x });
-        }
-    }
-    texts
-}
-
-/// The width of a vertex label at font size 10: about 6 units a character,
-/// 11 for a wide one.
-fn label_width(text: &str) -> i128 {
-    text.chars().map(|c| if is_wide(c) { 11 } else { 6 }).sum()
-}
-
-/// The vertex labels in a column on each side of the `raster` (left, top,
-/// right, bottom), never over a cell, a centre, a value or another label:
-/// each as near its vertex's height as the labels above it allow (and,
-/// right of the raster, off the heights where the names' leaders cross,
-/// `leader_rows`), down to `bottom`, a dot on the vertex and a thin leader
-/// from the dot to the label.
-fn vertex_labels(
-    out: &mut String,
-    labels: &[VertexText],
-    (sx, sy): (&ToSvg, &ToSvg),
-    raster: [f64; 4],
-    bottom: f64,
-    leader_rows: &[f64],
-) {
-    let _ = writeln!(out, r#"<g id="vertices" font-size="10" fill="black">"#);
-    let at = |v: &VertexText| {
-        let coordinate = |text: String| text.parse::<f64>().unwrap_or(0.0);
-        (coordinate(sx(&v.point[0])), coordinate(sy(&v.point[1])))
-    };
-    // A leader leaves its vertex at 45° to the nearest lane (three quarters down a row, between
-    // its scanline and the grid line below: no centre, value or line there) and runs along it.
-    let rows = ((raster[3] - raster[1]) / CELL as f64).round().max(1.0);
-    let lane = |y: f64| {
-        let row = ((y - raster[1] - 18.0) / CELL as f64).round().clamp(0.0, rows - 1.0);
-        raster[1] + row * CELL as f64 + 18.0
-    };
-    for left in [true, false] {
-        let mut side: Vec<(&VertexText, (f64, f64), f64)> =
-            labels.iter().filter(|v| v.left == left).map(|v| (v, at(v), lane(at(v).1))).collect();
-        side.sort_by(|a, b| a.2.total_cmp(&b.2).then(a.1.1.total_cmp(&b.1.1)));
-        // Baselines, top down: the text's middle at its lane's height or below the last label.
-        let line = VERTEX_LINE as f64;
-        let mut baselines: Vec<f64> = Vec::with_capacity(side.len());
-        for (_, _, lane) in &side {
-            let mut baseline = (lane + 3.5).max(baselines.last().map_or(raster[1] + 9.0, |b| b + line));
-            // Right of the raster, off a name's leader (it crosses the column at that height).
-            while !left && leader_rows.iter().any(|row| (baseline - 3.5 - row).abs() < line / 2.0 + 1.0) {
-                baseline += 1.0;
-            }
-            baselines.push(baseline);
-        }
-        // Pushed back up from the bottom where the column ran past it.
-        let mut limit = bottom;
-        for baseline in baselines.iter_mut().rev() {
-            if *baseline > limit {
-                *baseline = limit;
-            }
-            limit = *baseline - line;
-        }
-        let (edge, outward) = if left { (raster[0], -1.0) } else { (raster[2], 1.0) };
-        for ((label, (x, y), lane), baseline) in side.iter().zip(&baselines) {
-            // Left, past the row numbers (the lane runs under them), right, just past the raster.
-            let (text_x, beyond, anchor) =
-                if left { (edge - 38.0, edge - 30.0, "end") } else { (edge + 10.0, edge + 2.0, "start") };
-            let mut points = vec![(*x, *y)];
-            // Inside the raster: to the lane, along it out of the raster (and the row numbers).
-            if (raster[0]..=raster[2]).contains(x) && (raster[1]..=raster[3]).contains(y) {
-                points.push((x + outward * (lane - y).abs(), *lane));
-                points.push((beyond, *lane));
-            }
-            points.push((text_x - outward * 2.0, baseline - 3.5));
-            let points: Vec<String> = points.iter().map(|(x, y)| format!("{x:.2},{y:.2}")).collect();
-            let _ = writeln!(
-                out,
-                r##"<circle cx="{x:.2}" cy="{y:.2}" r="2.5"/><polyline points="{}" fill="none" stroke="#555555" stroke-width="0.6"/><text x="{text_x:.2}" y="{baseline:.2}" text-anchor="{anchor}">{}</text>"##,
-                points.join(" "),
-                escape(&label.text)
-            );
-        }
-    }
-    let _ = writeln!(out, "</g>");
-}
-
 /// The fill of cell (x, y), or `None` where it shows the background.
 fn cell_fill(
     scene: &Scene,
@@ -600,9 +499,6 @@ fn depth_grey(value: &Stored, scene: &Scene, (low, high): &(Exact, Exact)) -> St
     let level = 230 - shade.to_u8().expect("clamped");
     format!("#{level:02x}{level:02x}{level:02x}")
 }
-
-/// A vertex coordinate to the SVG's (x, or y flipped).
-type ToSvg<'a> = dyn Fn(&Exact) -> String + 'a;
 
 /// A point in pixel units, for placing names.
 type Point = (f64, f64);
@@ -677,12 +573,6 @@ fn bold_width(label: &str) -> i128 {
     label.chars().map(|c| if is_wide(c) { 12 } else { 8 }).sum()
 }
 
-/// The mean of the vertices' coordinate `axis`, exactly.
-fn middle(vertices: &[[Exact; 3]], axis: usize) -> Exact {
-    let sum = vertices.iter().fold(Exact::Word(Q::from_integer(0)), |sum, v| sum.plus(&v[axis]));
-    sum.divided_by(vertices.len() as i128)
-}
-
 /// The least and greatest exact depths written (for shading).
 fn exact_range(scene: &Scene, buffers: &Buffers) -> (Exact, Exact) {
     let written: Vec<Exact> =
@@ -710,18 +600,6 @@ fn wrap(lines: &[String], width: usize) -> Vec<String> {
     out
 }
 
-/// Between a point's coordinates: `, `, or `; ` where the decimal separator
-/// is a comma (`(12,5; 3; 0,25)` in Russian), as `explain` writes centres.
-fn coordinate_separator(lang: Lang) -> &'static str {
-    if lang.decimal_separator() == ',' { "; " } else { ", " }
-}
-
-/// Whether a character is one of Chinese's wide ones (from U+2E80 on),
-/// which take about two columns and may be broken between.
-fn is_wide(c: char) -> bool {
-    u32::from(c) >= 0x2E80
-}
-
 /// The columns a text takes: one a character, two a wide one.
 fn columns(text: &str) -> usize {
     text.chars().map(|c| if is_wide(c) { 2 } else { 1 }).sum()
@@ -747,21 +625,6 @@ fn breakable(line: &str) -> Vec<(bool, &str)> {
         }
     }
     pieces
-}
-
-/// Text for SVG: markup's special characters as entities, and every
-/// character XML does not allow (control characters but tab and line ends,
-/// U+FFFE, U+FFFF) as U+FFFD, so that any name or title gives a valid file.
-fn escape(text: &str) -> String {
-    let allowed =
-        |c: char| matches!(c, '\t' | '\n' | '\r' | '\u{20}'..='\u{D7FF}' | '\u{E000}'..='\u{FFFD}' | '\u{10000}'..);
-    text.chars()
-        .map(|c| if allowed(c) { c } else { char::REPLACEMENT_CHARACTER })
-        .collect::<String>()
-        .replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
 }
 
 #[cfg(test)]
