@@ -755,6 +755,8 @@ speed-header = { $scene }: { $triangles } triangles (fans of { $polygons } polyg
    *[other] in tiles of { $tile }
 }, against { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } alternating pairs after one untimed round each
 speed-result = zsim { $zsim } ms, GPU { $gpu } ms (medians): zsim takes { $ratio }× the GPU's time (pairs from { $low }× to { $high }×)
+speed-fresh = zsim's whole run, in fresh buffers as `zsim run` draws: { $fresh } ms (median), { $ratio }× the GPU's time
+speed-memory = zsim tested { $rate } million pixel centres a second; a copy of the buffers' { $megabytes } MB took { $copy } ms ({ $bandwidth } GB/s), which at { $bytes } bytes a pixel, each read and written once, allows { $limit } million pixels a second
 usage-compare-gpu-plain = --compare-gpu compares the plain algorithm: this scene asks for per-pixel effects or antialiasing
 usage-no-gpu = --compare-gpu: { $reason }
 gpu-why-depth-unread = the GPU shows { $shown }; the scene's rules keep { $book } (the depths decided: the GPU interpolates them in f32)

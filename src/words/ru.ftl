@@ -731,6 +731,8 @@ speed-header = { $scene }: треугольников { $triangles } (веера
    *[other] плитками по { $tile }
 }, против { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } чередующихся пар после одного неучтённого прогона каждого
 speed-result = zsim { $zsim } мс, GPU { $gpu } мс (медианы): zsim тратит { $ratio }× времени GPU (в парах от { $low }× до { $high }×)
+speed-fresh = весь прогон zsim в новых буферах, как рисует `zsim run`: { $fresh } мс (медиана), { $ratio }× времени GPU
+speed-memory = zsim проверял { $rate } млн центров пикселей в секунду; копия { $megabytes } МБ буферов заняла { $copy } мс ({ $bandwidth } ГБ/с), что при { $bytes } байтах на пиксель, прочитанных и записанных по разу, допускает { $limit } млн пикселей в секунду
 usage-compare-gpu-plain = --compare-gpu сравнивает простой алгоритм: эта сцена требует попиксельных эффектов или сглаживания
 usage-no-gpu = --compare-gpu: { $reason }
 gpu-why-depth-unread = GPU показывает { $shown }; по правилам сцены остаётся { $book } (решили глубины: GPU интерполирует их в f32)

@@ -731,6 +731,8 @@ speed-header = { $scene }: трикутників { $triangles } (віяла { $
    *[other] плитками по { $tile }
 }, проти { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } пар по черзі після одного неврахованого прогону кожного
 speed-result = zsim { $zsim } мс, GPU { $gpu } мс (медіани): zsim витрачає { $ratio }× часу GPU (у парах від { $low }× до { $high }×)
+speed-fresh = увесь прогін zsim у нових буферах, як малює `zsim run`: { $fresh } мс (медіана), { $ratio }× часу GPU
+speed-memory = zsim перевіряв { $rate } млн центрів пікселів за секунду; копія { $megabytes } МБ буферів зайняла { $copy } мс ({ $bandwidth } ГБ/с), що при { $bytes } байтах на піксель, прочитаних і записаних по разу, дозволяє { $limit } млн пікселів за секунду
 usage-compare-gpu-plain = --compare-gpu порівнює простий алгоритм: ця сцена потребує попіксельних ефектів або згладжування
 usage-no-gpu = --compare-gpu: { $reason }
 gpu-why-depth-unread = GPU показує { $shown }; за правилами сцени лишається { $book } (вирішили глибини: GPU інтерполює їх у f32)

@@ -695,6 +695,8 @@ speed-header = { $scene }：{ $triangles } 个三角形（{ $polygons } 个多�
    *[other] 以 { $tile } 像素见方的图块
 }，对比 { $renderer }（LP_NUM_THREADS={ $lp }），交替计时 { $pairs } 对（各先不计时运行一次）
 speed-result = zsim { $zsim } 毫秒，GPU { $gpu } 毫秒（中位数）：zsim 用时是 GPU 的 { $ratio } 倍（各对从 { $low } 倍到 { $high } 倍）
+speed-fresh = zsim 整次运行（像 `zsim run` 一样使用新缓冲区）：{ $fresh } 毫秒（中位数），是 GPU 时间的 { $ratio }×
+speed-memory = zsim 每秒测试 { $rate } 百万个像素中心；复制缓冲区的 { $megabytes } MB 用时 { $copy } 毫秒（{ $bandwidth } GB/s），按每像素 { $bytes } 字节各读写一次计算，每秒最多 { $limit } 百万像素
 usage-compare-gpu-plain = --compare-gpu 比较的是基本算法：此场景要求逐像素效果或抗锯齿
 usage-no-gpu = --compare-gpu：{ $reason }
 gpu-why-depth-unread = GPU 显示 { $shown }；按场景规则保留的是 { $book }（由深度决定：GPU 以 f32 插值）

@@ -325,7 +325,8 @@ fn speed_times_zsim_beside_opengl_in_alternating_pairs() {
     for (threads, lp) in [("1", "0"), ("2", "2")] {
         let run = crate::zsim(&["speed", scene, "--pairs", "3", "--threads", threads]);
         assert_eq!(run.code, 0, "{}", run.stderr);
-        let (header, result) = run.stdout.split_once('\n').unwrap();
+        let lines: Vec<&str> = run.stdout.lines().collect();
+        let [header, result, whole, memory] = lines[..] else { panic!("four lines: {}", run.stdout) };
         let drawn = Scene::load(zsim::Lang::En, std::path::Path::new(scene)).unwrap();
         let mut simulation = Simulation::new(&drawn);
         simulation.finish(&mut zsim::Unobserved);
@@ -351,6 +352,19 @@ fn speed_times_zsim_beside_opengl_in_alternating_pairs() {
         assert!(low <= ratio && ratio <= high, "{result}");
         // The ratio is of the unrounded medians; the printed ones are rounded to 0.01 ms.
         assert!((zsim / gpu - ratio).abs() <= 0.005 + 0.01 * (zsim + gpu) / (gpu * gpu), "{result}");
+        // The whole run as `zsim run` draws it, against the same GPU median.
+        let numbers = |line: &str| -> Vec<f64> {
+            line.split(|c: char| !(c.is_ascii_digit() || c == '.')).filter_map(|t| t.parse().ok()).collect()
+        };
+        assert!(whole.starts_with("zsim's whole run, in fresh buffers as `zsim run` draws: "), "{whole}");
+        let [fresh, fresh_ratio] = numbers(whole)[..] else { panic!("{whole}") };
+        assert!((fresh / gpu - fresh_ratio).abs() <= 0.005 + 0.01 * (fresh + gpu) / (gpu * gpu), "{whole}");
+        // The memory's speed measured in the same run: 128 × 128 pixels of a 1-byte framebuffer
+        // cell and a 4-byte depth level, 81,920 bytes; the limit is the copy's rate over 5 bytes.
+        let [rate, megabytes, copy, bandwidth, bytes, limit] = numbers(memory)[..] else { panic!("{memory}") };
+        assert_eq!((megabytes, bytes), (0.1, 5.0), "{memory}");
+        assert!((rate - tested as f64 / zsim / 1e3).abs() <= 0.05 + rate * 0.01, "{memory}");
+        assert!(copy > 0.0 && (limit - bandwidth * 1e3 / 5.0).abs() <= 0.1 + limit * 0.01, "{memory}");
     }
 }
 

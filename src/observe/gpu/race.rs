@@ -36,6 +36,16 @@ pub struct Race {
     pub zsim: Vec<Duration>,
     /// The GPU's time in each pair.
     pub gpu: Vec<Duration>,
+    /// zsim's whole run in each pair, as `zsim run` draws: buffers made
+    /// fresh (the kernel handing over their pages), then every polygon.
+    pub fresh: Vec<Duration>,
+    /// A copy of as many bytes as the buffers take, in each pair: what the
+    /// machine's memory allows, measured in the same run.
+    pub copy: Vec<Duration>,
+    /// The bytes both buffers take ([`crate::simulate::buffer::Buffers::memory_bytes`]).
+    pub bytes: u64,
+    /// The raster's pixels.
+    pub cells: u64,
 }
 
 impl Race {
@@ -70,7 +80,33 @@ impl Race {
             low = ratio(low),
             high = ratio(high)
         );
-        format!("{header}\n{times}\n")
+        let gpu = self.gpu_median().as_secs_f64().max(1e-12);
+        let fresh = median(&self.fresh);
+        let whole = words!(lang, "speed-fresh", fresh = ms(fresh), ratio = ratio(fresh.as_secs_f64() / gpu));
+        let (rate, bandwidth, limit) = self.rates();
+        let millions = |v: f64| localize_decimal(lang, format!("{:.1}", v / 1e6));
+        let memory = words!(
+            lang,
+            "speed-memory",
+            rate = millions(rate),
+            megabytes = localize_decimal(lang, format!("{:.1}", self.bytes as f64 / 1e6)),
+            copy = ms(median(&self.copy)),
+            bandwidth = localize_decimal(lang, format!("{:.2}", bandwidth / 1e9)),
+            bytes = localize_decimal(lang, format!("{:.2}", self.bytes as f64 / self.cells.max(1) as f64)),
+            limit = millions(limit)
+        );
+        format!("{header}\n{times}\n{whole}\n{memory}\n")
+    }
+
+    /// Pixel centres zsim tested a second (at its median), the bytes a second
+    /// the copy moved (each read once and written once), and the pixels a
+    /// second that rate allows when each pixel's cells are read and written
+    /// once.
+    pub fn rates(&self) -> (f64, f64, f64) {
+        let rate = self.pixels as f64 / self.zsim_median().as_secs_f64().max(1e-12);
+        let bandwidth = self.bytes as f64 / median(&self.copy).as_secs_f64().max(1e-12);
+        let per_pixel = self.bytes as f64 / self.cells.max(1) as f64;
+        (rate, bandwidth, bandwidth / per_pixel.max(1e-12))
     }
 
     /// zsim's median time.
@@ -130,6 +166,7 @@ pub fn race(
     // kernel handing over zeroed pages, a cost llvmpipe does not pay per frame).
     let mut simulation = Simulation::new_on(scene, threads);
     let tile = tile.unwrap_or_else(|| simulation.default_tile(threads));
+    let bytes = simulation.buffers().memory_bytes();
     let mut zsim = || {
         let start = Instant::now();
         simulation.restart();
@@ -144,9 +181,30 @@ pub fn race(
         drawing.draw();
         start.elapsed()
     };
+    // As `zsim run` draws: fresh buffers, then every polygon.
+    let fresh = || {
+        let start = Instant::now();
+        let mut simulation = Simulation::new_on(scene, threads);
+        match tile {
+            0 => simulation.draw_parallel_through(scene.polygons.len().saturating_sub(1), 0, 1, &|| {}),
+            tile => simulation.finish_parallel(tile, threads, &|| {}),
+        };
+        std::hint::black_box(simulation.stats().tested);
+        start.elapsed()
+    };
+    // The memory's own speed: as many bytes as the buffers take, copied (both touched beforehand).
+    let (source, mut target) = (vec![1u8; bytes as usize], vec![0u8; bytes as usize]);
+    let mut copy = || {
+        let start = Instant::now();
+        target.copy_from_slice(std::hint::black_box(&source));
+        std::hint::black_box(&target);
+        start.elapsed()
+    };
     // One round each before timing: caches, page faults, the JIT's first compile.
     let (_, pixels, threads) = zsim();
     gpu();
+    fresh();
+    copy();
     let mut race = Race {
         renderer: gl.renderer().to_string(),
         triangles: triangles.len(),
@@ -157,10 +215,17 @@ pub fn race(
         tile,
         zsim: Vec::with_capacity(pairs),
         gpu: Vec::with_capacity(pairs),
+        fresh: Vec::with_capacity(pairs),
+        copy: Vec::with_capacity(pairs),
+        bytes,
+        cells: u64::from(scene.width) * u64::from(scene.height),
     };
+    // In turn, round after round: so that a busy moment of the machine falls on all of them.
     for _ in 0..pairs {
         race.zsim.push(zsim().0);
         race.gpu.push(gpu());
+        race.fresh.push(fresh());
+        race.copy.push(copy());
     }
     // Read back once so that an error the GPU recorded while drawing (glGetError) is reported.
     drawing.picture().map_err(no_gpu)?;
@@ -184,10 +249,16 @@ mod tests {
             tile: 0,
             zsim: vec![ms(30), ms(10), ms(20), ms(40)],
             gpu: vec![ms(10), ms(20), ms(20), ms(80)],
+            fresh: vec![ms(50)],
+            copy: vec![ms(2)],
+            bytes: 5_000_000,
+            cells: 1_000_000,
         };
         assert_eq!((race.zsim_median(), race.gpu_median()), (ms(20), ms(20)));
         assert_eq!(race.ratio(), 1.0);
         assert_eq!(race.pair_ratios(), (0.5, 3.0));
         assert_eq!(median(&[]), Duration::ZERO);
+        // 1 pixel in 20 ms; 5 MB copied in 2 ms; 5 bytes a pixel.
+        assert_eq!(race.rates(), (50.0, 2.5e9, 5e8));
     }
 }
