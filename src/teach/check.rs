@@ -347,10 +347,7 @@ pub fn check(
         let mut mismatches = compare_answer(&answer, &expected);
         let differing = mismatches.len();
         mismatches.truncate(MAX_EXPLAINED);
-        let cleared = match buffer {
-            Buffer::Frame => scene.background,
-            Buffer::Depth => scene.clear_depth.level().unwrap_or(0),
-        };
+        let cleared = crate::teach::grade::cleared(scene, buffer);
         let earned = crate::teach::grade::Earned::of(Some(&answer), &expected, cleared);
         results.push((buffer, path, mismatches, hint, (differing, answer.unanswered(), earned)));
     }

@@ -140,11 +140,7 @@ pub fn grade_class(
                 Error::from(Usage::ExactDepthsHaveNoMatrix { path: scene_path.to_owned(), task: Task::Grade })
             })?,
         };
-        let cleared = match buffer {
-            Buffer::Frame => scene.background,
-            Buffer::Depth => scene.clear_depth.level().unwrap_or(0),
-        };
-        expected.push(Key { buffer, matrix, cleared });
+        expected.push(Key { buffer, matrix, cleared: crate::teach::grade::cleared(scene, buffer) });
     }
     // The usual wrong rules, drawn once for the whole class.
     let diagnoser = Diagnoser::new(scene, last);

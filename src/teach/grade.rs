@@ -131,6 +131,16 @@ pub struct CommonMistake {
     pub answers: Vec<(u32, usize)>,
 }
 
+/// The value `buffer`'s cells hold before any polygon is drawn, as an
+/// answer matrix holds it: the background, or the clear depth's level (0
+/// when the z-buffer is cleared to something no level holds, as +∞).
+pub fn cleared(scene: &crate::scene::Scene, buffer: Buffer) -> u32 {
+    match buffer {
+        Buffer::Frame => scene.background,
+        Buffer::Depth => scene.clear_depth.level().unwrap_or(0),
+    }
+}
+
 /// What one answer earns toward [`score`]: the cells the scene changes
 /// (the key differs from the cleared value there), how many of them the
 /// answer has right, and how many cells it writes where the key keeps the

@@ -167,13 +167,15 @@ pub fn race(
     let mut simulation = Simulation::new_on(scene, threads);
     let tile = tile.unwrap_or_else(|| simulation.default_tile(threads));
     let bytes = simulation.buffers().memory_bytes();
+    // Every polygon, polygon by polygon on this thread (tile 0) or in tiles; the threads drawn on.
+    let draw = |simulation: &mut Simulation<'_>| match tile {
+        0 => simulation.draw_parallel_through(scene.polygons.len().saturating_sub(1), 0, 1, &|| {}),
+        tile => simulation.finish_parallel(tile, threads, &|| {}),
+    };
     let mut zsim = || {
         let start = Instant::now();
         simulation.restart();
-        let threads = match tile {
-            0 => simulation.draw_parallel_through(scene.polygons.len().saturating_sub(1), 0, 1, &|| {}),
-            tile => simulation.finish_parallel(tile, threads, &|| {}),
-        };
+        let threads = draw(&mut simulation);
         (start.elapsed(), simulation.stats().tested, threads)
     };
     let gpu = || {
@@ -185,10 +187,7 @@ pub fn race(
     let fresh = || {
         let start = Instant::now();
         let mut simulation = Simulation::new_on(scene, threads);
-        match tile {
-            0 => simulation.draw_parallel_through(scene.polygons.len().saturating_sub(1), 0, 1, &|| {}),
-            tile => simulation.finish_parallel(tile, threads, &|| {}),
-        };
+        draw(&mut simulation);
         std::hint::black_box(simulation.stats().tested);
         start.elapsed()
     };

@@ -71,7 +71,7 @@ pub(super) fn draw(
     };
     for left in [true, false] {
         let mut side: Vec<(&VertexText, (f64, f64), f64)> =
-            labels.iter().filter(|v| v.left == left).map(|v| (v, at(v), lane(at(v).1))).collect();
+            labels.iter().filter(|v| v.left == left).map(|v| (v, at(v))).map(|(v, p)| (v, p, lane(p.1))).collect();
         side.sort_by(|a, b| a.2.total_cmp(&b.2).then(a.1.1.total_cmp(&b.1.1)));
         // Baselines, top down: the text's middle at its lane's height or below the last label.
         let line = LINE as f64;
