@@ -11,7 +11,11 @@
 //! - `tracing`: the same run unobserved, with an observer that counts pixels,
 //!   and with the full recorder that `step` uses;
 //! - `large scene`: 4096×4096 with 100,000 random triangles, polygon by
-//!   polygon and in 64-pixel tiles on one thread, two, and all cores.
+//!   polygon and in 64-pixel tiles on one thread, two, and all cores;
+//! - `span loop and setup`, apart: a few large triangles, whose time is
+//!   their spans' cells (per pixel), and many of a pixel or two, whose time
+//!   is their setup (per triangle), each on a 1024×1024 raster drawn
+//!   polygon by polygon on one thread.
 
 use std::path::Path;
 
@@ -202,5 +206,24 @@ fn peer(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, arithmetic, small_triangles, tracing, large_scene, peer);
+fn span_loop_and_setup(c: &mut Criterion) {
+    let mut group = c.benchmark_group("span loop and setup, 1024x1024");
+    group.sample_size(20);
+    let draw = |scene: &Scene| {
+        let mut simulation = Simulation::new(scene);
+        simulation.finish(&mut Unobserved);
+        simulation.stats().written
+    };
+    // 40 triangles within squares of up to 1024 px: spans hundreds of cells long.
+    let large = random(40, 1024, 1024, 5);
+    group.throughput(Throughput::Elements(pixels(&large)));
+    group.bench_function("span loop (per pixel)", |b| b.iter(|| draw(&large)));
+    // 50,000 triangles within squares of 3 px: a pixel or none each.
+    let tiny = random(50_000, 1024, 3, 5);
+    group.throughput(Throughput::Elements(tiny.polygons.len() as u64));
+    group.bench_function("setup (per triangle)", |b| b.iter(|| draw(&tiny)));
+    group.finish();
+}
+
+criterion_group!(benches, arithmetic, small_triangles, tracing, large_scene, peer, span_loop_and_setup);
 criterion_main!(benches);

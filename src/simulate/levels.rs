@@ -8,7 +8,7 @@ use crate::raster::depth::{BranchFreeTest, Depth, DepthStepper, DepthTest, Store
 use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
-use crate::simulate::branch_free::{CellWrite, Stepped, test_and_store};
+use crate::simulate::branch_free::{self, CellWrite, Stepped};
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
 use crate::simulate::setup::{CORE_CACHE, Stats, fate, prefetch_ahead, prefetch_cells};
@@ -163,17 +163,13 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
     fn span_cells<const GREATER: bool>(
         &mut self,
         cells: std::ops::RangeInclusive<usize>,
-        mut depth: Stepped,
+        depth: Stepped,
         denominator: i64,
         step: Stepped,
     ) -> u64 {
         let write = self.cell_write::<GREATER>();
-        let mut written = 0u64;
-        for cell in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {
-            written += u64::from(test_and_store(cell, depth, denominator, write, true));
-            depth = depth.plus(step, denominator);
-        }
-        written
+        let cells = (&mut self.depth[cells.clone()], &mut self.frame[cells]);
+        branch_free::span::<F, GREATER>(cells, depth, step, denominator, write)
     }
 
     /// What the branch-free loops write: `GREATER`, the book's test with its

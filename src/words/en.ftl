@@ -847,7 +847,7 @@ usage-no-submission = { $folder }: no answer here: frame.txt, depth.txt, after-N
 gradescope-test = { $buffer } after { $after }
 usage-identity-column = --identity: this platform does not import by "{ $column }" (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id)
 usage-no-points = --points must be at least 1
-pdf-not-built = this zsim was built without its pdf feature: build it with `cargo install --path .` (the feature is on by default)
+figures-not-built = this zsim was built without { $format } figures (the figures feature, off in a default build): build it with `cargo install --path . --features figures`; the Debian package has them. SVG and TeX figures need nothing
 
 ## tinyrenderer's OBJ files (courses/tinyrenderer.rs)
 obj-vertex-count = a vertex needs x, y and z; this line has { $count }

@@ -824,7 +824,7 @@ usage-no-submission = { $folder }: здесь нет ответа: frame.txt, de
 gradescope-test = { $buffer } после { $after }
 usage-identity-column = --identity: эта платформа не импортирует по столбцу «{ $column }» (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id)
 usage-no-points = --points должно быть не меньше 1
-pdf-not-built = этот zsim собран без возможности pdf: соберите его командой `cargo install --path .` (она включена по умолчанию)
+figures-not-built = этот zsim собран без рисунков { $format } (возможность figures, выключенная в обычной сборке): соберите его командой `cargo install --path . --features figures`; в пакете Debian они есть. Рисункам SVG и TeX ничего не нужно
 
 ## tinyrenderer's OBJ files (courses/tinyrenderer.rs)
 obj-vertex-count = у вершины должны быть x, y и z; в этой строке чисел: { $count }

@@ -824,7 +824,7 @@ usage-no-submission = { $folder }: тут немає відповіді: frame.t
 gradescope-test = { $buffer } після { $after }
 usage-identity-column = --identity: ця платформа не імпортує за стовпцем «{ $column }» (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id)
 usage-no-points = --points має бути не менше 1
-pdf-not-built = цей zsim зібрано без можливості pdf: зберіть його командою `cargo install --path .` (вона ввімкнена типово)
+figures-not-built = цей zsim зібрано без рисунків { $format } (можливість figures, вимкнена у звичайній збірці): зберіть його командою `cargo install --path . --features figures`; у пакеті Debian вони є. Рисункам SVG і TeX нічого не потрібно
 
 ## tinyrenderer's OBJ files (courses/tinyrenderer.rs)
 obj-vertex-count = у вершини мають бути x, y і z; у цьому рядку чисел: { $count }

@@ -778,7 +778,7 @@ usage-no-submission = { $folder }：这里没有答案：frame.txt、depth.txt�
 gradescope-test = { $after } 之后的{ $buffer }
 usage-identity-column = --identity：该平台不按“{ $column }”列导入（Moodle：email、idnumber、username；Canvas：id、sis-user-id、sis-login-id）
 usage-no-points = --points 至少为 1
-pdf-not-built = 这个 zsim 构建时没有 pdf 功能：请用 `cargo install --path .` 构建（默认开启）
+figures-not-built = 这个 zsim 构建时没有 { $format } 图形（figures 功能，默认构建不开启）：请用 `cargo install --path . --features figures` 构建；Debian 软件包包含它。SVG 和 TeX 图形不需要它
 
 ## tinyrenderer's OBJ files (courses/tinyrenderer.rs)
 obj-vertex-count = 顶点需要 x、y 和 z；这一行有 { $count } 个数

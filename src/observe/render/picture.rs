@@ -113,6 +113,7 @@ pub const MAX_PNG_PIXELS: f64 = 8192.0 * 8192.0;
 /// The SVG drawn as a PNG at `scale` pixels a unit (default: twice its size,
 /// or less to keep the longer side within [`PNG_SIDE`]), text in the
 /// system's sans-serif font; more than [`MAX_PNG_PIXELS`] is refused.
+#[cfg(feature = "figures")]
 pub fn png(lang: Lang, svg: &str, path: &Path, scale: Option<f32>) -> Result<Vec<u8>, Error> {
     let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
     let tree = tree(lang, svg, path)?;
@@ -133,7 +134,7 @@ pub fn png(lang: Lang, svg: &str, path: &Path, scale: Option<f32>) -> Result<Vec
 /// it larger), fitted within [`PAGE_MARGIN`] and centred across, its text
 /// drawn as the outlines of the system's sans-serif font (the glyphs the PNG
 /// shows; the PDF embeds no font, so needs none of svg2pdf's font crates).
-#[cfg(feature = "pdf")]
+#[cfg(feature = "figures")]
 pub fn pdf(lang: Lang, svg: &str, path: &Path, paper: Paper) -> Result<Vec<u8>, Error> {
     let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
     let tree = tree(lang, svg, path)?;
@@ -158,14 +159,28 @@ pub fn pdf(lang: Lang, svg: &str, path: &Path, paper: Paper) -> Result<Vec<u8>, 
         .map_err(|e| failed(e.to_string()))
 }
 
-/// Without the `pdf` feature: says so.
-#[cfg(not(feature = "pdf"))]
+/// Without the `figures` feature: says so.
+#[cfg(not(feature = "figures"))]
+pub fn png(lang: Lang, _svg: &str, path: &Path, _scale: Option<f32>) -> Result<Vec<u8>, Error> {
+    Err(not_built(lang, path, Format::Png))
+}
+
+/// Without the `figures` feature: says so.
+#[cfg(not(feature = "figures"))]
 pub fn pdf(lang: Lang, _svg: &str, path: &Path, _paper: Paper) -> Result<Vec<u8>, Error> {
-    Err(Usage::PngFailed { path: path.to_path_buf(), reason: words!(lang, "pdf-not-built") }.into())
+    Err(not_built(lang, path, Format::Pdf))
+}
+
+/// A figure in `format` asked of a build without the `figures` feature.
+#[cfg(not(feature = "figures"))]
+fn not_built(lang: Lang, path: &Path, format: Format) -> Error {
+    let reason = words!(lang, "figures-not-built", format = format.extension().to_ascii_uppercase());
+    Usage::PngFailed { path: path.to_path_buf(), reason }.into()
 }
 
 /// The SVG parsed with the system's fonts, "sans-serif" being the first of
 /// the usual sans fonts the system has.
+#[cfg(feature = "figures")]
 fn tree(lang: Lang, svg: &str, path: &Path) -> Result<resvg::usvg::Tree, Error> {
     let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
     let mut options = resvg::usvg::Options::default();

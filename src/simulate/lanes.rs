@@ -1,0 +1,101 @@
+//! A span's cells four at a time in AVX2's 256-bit registers: lane `k`
+//! holds the depth of a chunk's cell `k` as whole part and remainder (64-bit
+//! each) and steps four cells a chunk, the carry a compare and a masked
+//! subtraction; the test, the rounding, the saturation and the store are the
+//! branch-free cell's ([`super::branch_free::test_and_store`]) on all four
+//! lanes, the last cells of the span one at a time. Its specification is
+//! [`super::branch_free::cell_by_cell`], as the proptest
+//! `lanes_decide_as_the_cell_does` holds it.
+
+use std::arch::x86_64::{
+    __m256i, _mm_blendv_epi8, _mm_loadu_si128, _mm_storeu_si128, _mm256_add_epi64, _mm256_and_si256,
+    _mm256_andnot_si256, _mm256_blendv_epi8, _mm256_castsi256_pd, _mm256_castsi256_si128, _mm256_cmpgt_epi64,
+    _mm256_cvtepu32_epi64, _mm256_movemask_pd, _mm256_permutevar8x32_epi32, _mm256_set1_epi64x, _mm256_setr_epi32,
+    _mm256_setr_epi64x, _mm256_setzero_si256, _mm256_sub_epi64,
+};
+
+use crate::raster::depth::BranchFreeTest;
+use crate::simulate::branch_free::{CellWrite, Stepped, cell_by_cell};
+use crate::simulate::buffer::FrameCell;
+
+/// How many cells a chunk holds.
+const LANES: usize = 4;
+
+/// The span's cells, four at a time where the span holds four more, from
+/// the depth at the first (`start`) with `step` per cell; returns how many
+/// were written. `GREATER`: `write.test` is the book's test, its constants
+/// folded in by the compiler.
+#[target_feature(enable = "avx2")]
+pub(super) fn span_avx2<F: FrameCell, const GREATER: bool>(
+    (depth, frame): (&mut [u32], &mut [F]),
+    start: Stepped,
+    step: Stepped,
+    denominator: i64,
+    write: CellWrite<F>,
+) -> u64 {
+    let write = if GREATER { CellWrite { test: BranchFreeTest::GREATER, ..write } } else { write };
+    let chunks = depth.len().min(frame.len()) / LANES;
+    if chunks == 0 {
+        return cell_by_cell((depth, frame), start, step, denominator, write);
+    }
+    // The first chunk's four depths, and four steps as one (each sum's remainder below the denominator).
+    let (mut wholes, mut remainders) = ([0i64; LANES], [0i64; LANES]);
+    let (mut at, mut stride) = (start, Stepped { whole: 0, remainder: 0 });
+    for k in 0..LANES {
+        (wholes[k], remainders[k]) = (at.whole, at.remainder);
+        at = at.plus(step, denominator);
+        stride = stride.plus(step, denominator);
+    }
+    let [w0, w1, w2, w3] = wholes;
+    let [r0, r1, r2, r3] = remainders;
+    let mut whole = _mm256_setr_epi64x(w0, w1, w2, w3);
+    let mut remainder = _mm256_setr_epi64x(r0, r1, r2, r3);
+    let (stride_whole, stride_remainder) = (_mm256_set1_epi64x(stride.whole), _mm256_set1_epi64x(stride.remainder));
+    let zero = _mm256_setzero_si256();
+    let (denominator_lanes, below_denominator) = (_mm256_set1_epi64x(denominator), _mm256_set1_epi64x(denominator - 1));
+    let (max, threshold) = (_mm256_set1_epi64x(write.max), _mm256_set1_epi64x(write.test.threshold));
+    // The low 32 bits of each 64-bit lane, gathered into the low 128 bits.
+    let low_halves = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    let mut written = 0u64;
+    for chunk in 0..chunks {
+        let cells = chunk * LANES..chunk * LANES + LANES;
+        let depth_cells = &mut depth[cells.clone()];
+        // SAFETY: `depth_cells` is four u32s, 16 bytes, read unaligned.
+        let stored_32 = unsafe { _mm_loadu_si128(depth_cells.as_ptr().cast()) };
+        let stored = _mm256_cvtepu32_epi64(stored_32);
+        // v: the ceiling (whole part, plus one where a remainder is left) or the floor.
+        let above_whole = _mm256_cmpgt_epi64(remainder, zero);
+        let v = if write.test.use_ceiling { _mm256_sub_epi64(whole, above_whole) } else { whole };
+        let difference = if write.test.sign > 0 { _mm256_sub_epi64(v, stored) } else { _mm256_sub_epi64(stored, v) };
+        let passes = _mm256_cmpgt_epi64(difference, threshold);
+        // Rounded half up (one more where 2·remainder ≥ denominator), saturated to 0 … max.
+        let half_up = _mm256_cmpgt_epi64(_mm256_add_epi64(remainder, remainder), below_denominator);
+        let rounded = _mm256_sub_epi64(whole, half_up);
+        let rounded = _mm256_andnot_si256(_mm256_cmpgt_epi64(zero, rounded), rounded);
+        let rounded = _mm256_blendv_epi8(rounded, max, _mm256_cmpgt_epi64(rounded, max));
+        let rounded_32 = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(rounded, low_halves));
+        let passes_32 = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(passes, low_halves));
+        let stored_after = _mm_blendv_epi8(stored_32, rounded_32, passes_32);
+        // SAFETY: `depth_cells` is four u32s, 16 bytes, written unaligned.
+        unsafe { _mm_storeu_si128(depth_cells.as_mut_ptr().cast(), stored_after) };
+        let mask = _mm256_movemask_pd(_mm256_castsi256_pd(passes));
+        for (k, cell) in frame[cells].iter_mut().enumerate() {
+            *cell = std::hint::select_unpredictable(mask & (1 << k) != 0, write.value, *cell);
+        }
+        written += u64::from(mask.count_ones());
+        // Four cells on: the carry (−1 where the remainder reached the denominator) added to the whole part.
+        remainder = _mm256_add_epi64(remainder, stride_remainder);
+        let carry = _mm256_cmpgt_epi64(remainder, below_denominator);
+        whole = _mm256_sub_epi64(_mm256_add_epi64(whole, stride_whole), carry);
+        remainder = _mm256_sub_epi64(remainder, _mm256_and_si256(carry, denominator_lanes));
+    }
+    let next = Stepped { whole: lane_0(whole), remainder: lane_0(remainder) };
+    let done = chunks * LANES;
+    written + cell_by_cell((&mut depth[done..], &mut frame[done..]), next, step, denominator, write)
+}
+
+/// The first lane's 64 bits.
+#[target_feature(enable = "avx2")]
+fn lane_0(lanes: __m256i) -> i64 {
+    std::arch::x86_64::_mm_cvtsi128_si64(_mm256_castsi256_si128(lanes))
+}
