@@ -29,7 +29,7 @@ pub struct FigureArgs {
     /// The title (default: the scene's file name and what is drawn).
     #[arg(long)]
     title: Option<String>,
-    /// The file to write, by its extension: .svg, .png (a picture), .pdf (a page), .tex (a TikZ picture in a LaTeX document).
+    /// The file to write, by its extension: .svg, .png (a picture), .pdf (a page), .tex (a TikZ picture in a LaTeX document); .png and .pdf need a build with the figures feature, as the package is.
     #[arg(short, long, value_name = "FILE.svg|png|pdf|tex")]
     output: PathBuf,
     /// With -o FILE.tex: the tikzpicture alone, for \input in your own document (which loads tikz).

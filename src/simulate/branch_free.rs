@@ -63,6 +63,7 @@ pub(super) fn test_and_store<F: FrameCell>(
 }
 
 /// The fewest cells a span drawn in lanes has.
+#[cfg(target_arch = "x86_64")]
 const LONG_SPAN: usize = 16;
 
 /// A span's cells, each rewritten with its old or its new value as
