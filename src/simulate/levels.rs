@@ -8,9 +8,10 @@ use crate::raster::depth::{BranchFreeTest, Depth, DepthStepper, DepthTest, Store
 use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
-use crate::simulate::branch_free::{self, CellWrite, Stepped};
+use crate::simulate::branch_free::{CellWrite, Stepped};
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
+use crate::simulate::lanes;
 use crate::simulate::setup::{CORE_CACHE, Stats, fate, prefetch_ahead, prefetch_cells};
 
 /// How many polygons ahead the plain loop asks for the cells of.
@@ -169,7 +170,7 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
     ) -> u64 {
         let write = self.cell_write::<GREATER>();
         let cells = (&mut self.depth[cells.clone()], &mut self.frame[cells]);
-        branch_free::span::<F, GREATER>(cells, depth, step, denominator, write)
+        lanes::span::<F, GREATER>(cells, depth, step, denominator, write)
     }
 
     /// What the branch-free loops write: `GREATER`, the book's test with its

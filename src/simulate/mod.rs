@@ -9,7 +9,6 @@
 mod branch_free;
 pub mod buffer;
 pub mod events;
-#[cfg(target_arch = "x86_64")]
 mod lanes;
 mod levels;
 pub mod setup;
