@@ -94,13 +94,13 @@ impl Buffers {
         let pool = clearing_pool(cells, threads);
         let pool = pool.as_ref();
         let depth = match clear_depth {
-            Stored::Level(level) => DepthCells::Levels(filled(cells, level, pool)),
+            Stored::Level(level) => DepthCells::Levels(filled_levels(cells, level, pool)),
             Stored::Exact(value) => DepthCells::Exact(filled(cells, value, pool)),
         };
         let frame = match frame_bits {
-            0..=8 => FrameCells::Bytes(filled(cells, u8::from_value(background), pool)),
-            9..=16 => FrameCells::Halves(filled(cells, u16::from_value(background), pool)),
-            _ => FrameCells::Words(filled(cells, background, pool)),
+            0..=8 => FrameCells::Bytes(filled_levels(cells, u8::from_value(background), pool)),
+            9..=16 => FrameCells::Halves(filled_levels(cells, u16::from_value(background), pool)),
+            _ => FrameCells::Words(filled_levels(cells, background, pool)),
         };
         Buffers { width, height, frame, depth }
     }
@@ -241,6 +241,21 @@ impl Buffers {
     }
 }
 
+/// `cells` copies of an integer `value`: zeros are left unwritten (memory
+/// fresh from the system reads as zeros, so its pages are first touched
+/// where the cells are first written, by the thread that draws them, and a
+/// tiled run writes them once instead of twice), any other value written now
+/// ([`filled`]). Large zeros are offered huge pages too.
+fn filled_levels<T: FrameCell + Sync>(cells: usize, value: T, pool: Option<&rayon::ThreadPool>) -> Vec<T> {
+    if value != T::default() {
+        return filled(cells, value, pool);
+    }
+    // The standard library allocates integer zeros already zeroed (calloc), without writing them.
+    let mut zeros = vec![value; cells];
+    advise_huge_pages(zeros.as_mut_ptr().cast(), std::mem::size_of_val(zeros.as_slice()));
+    zeros
+}
+
 /// `cells` copies of `value`, all written now (the book's first step: clear
 /// both buffers). A large buffer is first offered transparent huge pages, so
 /// that clearing it takes a few dozen page faults instead of tens of
@@ -248,7 +263,8 @@ impl Buffers {
 /// With a pool, each of its threads writes a part.
 fn filled<T: Clone + Send + Sync>(cells: usize, value: T, pool: Option<&rayon::ThreadPool>) -> Vec<T> {
     let mut out = Vec::with_capacity(cells);
-    advise_huge_pages(out.spare_capacity_mut());
+    let untouched = out.spare_capacity_mut();
+    advise_huge_pages(untouched.as_mut_ptr().cast(), std::mem::size_of_val(untouched));
     match pool {
         Some(pool) => {
             pool.install(|| rayon::iter::ParallelExtend::par_extend(&mut out, rayon::iter::repeat_n(value, cells)))
@@ -284,20 +300,21 @@ fn clearing_pool(cells: usize, threads: usize) -> Option<rayon::ThreadPool> {
         .flatten()
 }
 
-/// Asks Linux to back the untouched `memory` with 2 MiB pages where it can.
+/// Asks Linux to back the `bytes` of memory from `memory`, which belong to
+/// one allocation and have not been written, with 2 MiB pages where it can.
 #[cfg(target_os = "linux")]
-fn advise_huge_pages<T>(memory: &mut [std::mem::MaybeUninit<T>]) {
+fn advise_huge_pages(memory: *mut u8, bytes: usize) {
     const PAGE: usize = 4096;
     const HUGE_PAGE: usize = 2 << 20;
-    let (start, bytes) = (memory.as_mut_ptr() as usize, std::mem::size_of_val(memory));
+    let start = memory as usize;
     if bytes < 2 * HUGE_PAGE {
         return;
     }
     // madvise wants a page-aligned start: the whole pages inside the block.
     let aligned = start.next_multiple_of(PAGE);
     let length = (start + bytes - aligned) / PAGE * PAGE;
-    // SAFETY: the range lies inside an allocation this vector owns and has not
-    // yet written; MADV_HUGEPAGE only advises how to back it and changes no
+    // SAFETY: the range lies inside an allocation a vector owns, which it has
+    // not written; MADV_HUGEPAGE only advises how to back it and changes no
     // contents. A refusal (no huge pages on this system) leaves it as it was,
     // so the result is ignored.
     unsafe {
@@ -306,7 +323,7 @@ fn advise_huge_pages<T>(memory: &mut [std::mem::MaybeUninit<T>]) {
 }
 
 #[cfg(not(target_os = "linux"))]
-fn advise_huge_pages<T>(_memory: &mut [std::mem::MaybeUninit<T>]) {}
+fn advise_huge_pages(_memory: *mut u8, _bytes: usize) {}
 
 fn rows_top_first<T: Clone>(cells: &[T], width: u32) -> Vec<Vec<T>> {
     cells.chunks_exact(width as usize).rev().map(<[T]>::to_vec).collect()

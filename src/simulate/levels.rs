@@ -24,36 +24,67 @@ pub(super) struct Levels<'a, 's> {
     pub(super) depth_max: u32,
     pub(super) stats: &'a mut Stats,
     pub(super) scratch: &'a mut Scratch,
+    /// Whether small triangles may be drawn by edge functions
+    /// ([`LevelSink::small_triangle`]), which rewrite every cell of their
+    /// box: only on cells that fit the core's cache, and not on a tile's
+    /// copy, where the scan converter, visiting only covered centres, is the
+    /// faster (the design note on tiled buffers).
+    pub(super) edge_functions: bool,
 }
 
 impl<'s> Levels<'_, 's> {
-    /// Draws polygon `index` within `rect` on the cells.
+    /// Draws polygon `index` within `rect` on the cells, which hold the
+    /// pixels from `origin` on.
     #[inline]
     pub(super) fn draw<F: FrameCell, O: Observer>(
         &mut self,
         (frame, depth): (&mut [F], &mut [u32]),
-        first_row: u32,
+        origin: Origin,
         index: usize,
         rect: PixelRect,
         observer: &mut O,
     ) {
         let polygon = &self.scene.polygons[index];
+        let edge_functions = self.edge_functions && std::mem::size_of_val(depth) <= CORE_CACHE;
         let mut sink = LevelSink {
             index,
             polygon,
             value: F::from_value(polygon.value),
             test: self.test,
             depth_max: self.depth_max,
-            width: self.scene.width as usize,
-            first_row,
+            origin,
             frame,
             depth,
             stats: &mut *self.stats,
             observer,
         };
-        if !sink.small_triangle(polygon.geometry(), self.scene.rules, rect) {
+        if !(edge_functions && sink.small_triangle(polygon.geometry(), self.scene.rules, rect)) {
             rasterize(polygon.geometry(), self.scene.rules, rect, self.scratch, &mut sink);
         }
+    }
+}
+
+/// Where a slice of cells lies in the raster: the pixel its first cell
+/// holds, and how many cells a row of it takes. The whole raster's cells
+/// start at (0, 0) with a row of the raster's width; a band's at its first
+/// row; a tile's copy at its first pixel, with a row of the tile's width.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Origin {
+    pub(super) column: u32,
+    pub(super) row: u32,
+    pub(super) stride: usize,
+}
+
+impl Origin {
+    /// The whole raster's cells.
+    pub(super) fn raster(scene: &Scene) -> Origin {
+        Origin { column: 0, row: 0, stride: scene.width as usize }
+    }
+
+    /// The index of pixel (`x`, `y`)'s cell.
+    #[inline(always)]
+    pub(super) fn cell(self, x: u32, y: u32) -> usize {
+        (y - self.row) as usize * self.stride + (x - self.column) as usize
     }
 }
 
@@ -69,7 +100,8 @@ impl<O: Observer> LevelCells for OnePolygon<'_, '_, O> {
 
     fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
         let rect = PixelRect::raster(self.levels.scene.width, self.levels.scene.height);
-        self.levels.draw((frame, depth), 0, self.index, rect, self.observer);
+        let origin = Origin::raster(self.levels.scene);
+        self.levels.draw((frame, depth), origin, self.index, rect, self.observer);
     }
 }
 
@@ -84,7 +116,7 @@ impl LevelCells for InOrder<'_, '_> {
 
     fn run<F: FrameCell>(mut self, frame: &mut [F], depth: &mut [u32]) {
         let scene = self.levels.scene;
-        let rect = PixelRect::raster(scene.width, scene.height);
+        let (rect, origin) = (PixelRect::raster(scene.width, scene.height), Origin::raster(scene));
         // Cells worth asking for ahead only when the buffers outgrow the cache.
         let far = std::mem::size_of_val(depth) > CORE_CACHE;
         for index in self.polygons.clone() {
@@ -93,7 +125,7 @@ impl LevelCells for InOrder<'_, '_> {
                 prefetch_cells(scene, index + AHEAD, (&*frame, &*depth), 0);
             }
             if fate(scene, index) == Fate::Drawn {
-                self.levels.draw((&mut *frame, &mut *depth), 0, index, rect, &mut Unobserved);
+                self.levels.draw((&mut *frame, &mut *depth), origin, index, rect, &mut Unobserved);
             }
         }
     }
@@ -108,9 +140,8 @@ pub(super) struct LevelSink<'a, O, F> {
     pub(super) value: F,
     pub(super) test: DepthTest,
     pub(super) depth_max: u32,
-    pub(super) width: usize,
-    /// The raster row of the cells' first row (a band's cells start there).
-    pub(super) first_row: u32,
+    /// Where the cells lie in the raster.
+    pub(super) origin: Origin,
     pub(super) frame: &'a mut [F],
     pub(super) depth: &'a mut [u32],
     pub(super) stats: &'a mut Stats,
@@ -142,8 +173,8 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         if !W::NARROW && (i128::from(denominator) >= LIMIT || reach() >= LIMIT) {
             return false;
         }
-        let start = (row - self.first_row) as usize * self.width;
-        let cells = start + first as usize..=start + last as usize;
+        let start = self.origin.cell(first, row);
+        let cells = start..=start + (last - first) as usize;
         let (start, step) = (Stepped { whole, remainder }, Stepped { whole: step_whole, remainder: step_remainder });
         // The book's test compiled with its constants, as a small triangle's.
         let written = if self.test == DepthTest::Greater {
@@ -203,7 +234,7 @@ impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
 
     #[inline]
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
-        let cell = (y - self.first_row) as usize * self.width + x as usize;
+        let cell = self.origin.cell(x, y);
         let (stored_before, frame_before) = (self.depth[cell], self.frame[cell].value());
         self.stats.tested += 1;
         let written = self.test.passes(&depth, &Stored::Level(stored_before));

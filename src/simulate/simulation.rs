@@ -3,7 +3,7 @@
 //! with only the stages the scene asks for.
 
 use crate::raster::convert::{Scratch, rasterize};
-use crate::raster::depth::{Depth, DepthTest};
+use crate::raster::depth::{Depth, DepthTest, Stored};
 use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
@@ -12,7 +12,7 @@ use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent,
 use crate::simulate::levels::{InOrder, Levels, OnePolygon};
 use crate::simulate::setup::{Stats, fate, prefetch_ahead};
 use crate::simulate::stages::{PixelStages, Plain, StageSet, WithEffects};
-use crate::simulate::tiles::{Tiles, Tiling, bins, pool};
+use crate::simulate::tiles::{Cleared, Tiles, Tiling, bins, pool};
 
 /// One polygon drawn, with its own counts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -179,14 +179,20 @@ impl<'s> Simulation<'s> {
         match tiling {
             None => {
                 let (stats, scratch) = (&mut self.stats, &mut self.scratch);
-                let levels = Levels { scene, test, depth_max, stats, scratch };
+                let levels = Levels { scene, test, depth_max, stats, scratch, edge_functions: true };
                 self.buffers.with_level_cells(InOrder { levels, polygons: first..end });
                 1
             }
             Some(tiling) => {
                 let pool = pool(tiling.threads);
                 let bins = bins(scene, first..end, tiling.tile, pool.as_ref());
-                let tiles = Tiles { scene, test, depth_max, bins, tiling, pool: pool.as_ref() };
+                // Before the first polygon every cell holds the clear values (only drawing,
+                // which moves `next` on, writes the buffers).
+                let cleared = match scene.clear_depth {
+                    Stored::Level(level) if first == 0 => Some(Cleared { frame: scene.background, depth: level }),
+                    _ => None,
+                };
+                let tiles = Tiles { scene, test, depth_max, bins, tiling, pool: pool.as_ref(), cleared };
                 let (stats, threads) =
                     self.buffers.with_level_cells(tiles).expect("plain levels imply a level z-buffer");
                 self.stats.tested += stats.tested;
@@ -259,7 +265,7 @@ impl<'s> Simulation<'s> {
             && self.buffers.holds_levels()
         {
             let (stats, scratch) = (&mut self.stats, &mut self.scratch);
-            let levels = Levels { scene, test, depth_max, stats, scratch };
+            let levels = Levels { scene, test, depth_max, stats, scratch, edge_functions: true };
             self.buffers.with_level_cells(OnePolygon { levels, index, observer });
             return;
         }

@@ -8,8 +8,8 @@ use crate::raster::sink::PixelRect;
 use crate::scene::Scene;
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Unobserved};
-use crate::simulate::levels::Levels;
-use crate::simulate::setup::{CORE_CACHE, Stats, fate, pixel_bounds, prefetch, prefetch_cells};
+use crate::simulate::levels::{Levels, Origin};
+use crate::simulate::setup::{Stats, fate, pixel_bounds, prefetch, prefetch_polygon};
 
 /// How a tiled run is spread.
 #[derive(Clone, Copy)]
@@ -31,40 +31,77 @@ pub(super) struct Tiles<'a> {
     pub(super) tiling: Tiling<'a>,
     /// The threads that draw the bands, when more than one does.
     pub(super) pool: Option<&'a rayon::ThreadPool>,
+    /// The values every cell holds, when no polygon has been drawn yet: a
+    /// tile's copy then starts from them instead of from the buffers, whose
+    /// memory is first touched when the tile is copied back
+    /// ([`crate::simulate::buffer::Buffers::new`] leaves fresh buffers of zeros unwritten).
+    pub(super) cleared: Option<Cleared>,
+}
+
+/// The values of a cleared framebuffer cell and z-buffer cell.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Cleared {
+    pub(super) frame: u32,
+    pub(super) depth: u32,
 }
 
 impl Tiles<'_> {
     /// Draws band `ty` (raster rows `ty·tile …`) on its own cells, which start
-    /// at that band's first row; returns its counts.
+    /// at that band's first row; returns its counts. Each tile with polygons
+    /// is drawn on a copy of its cells, row after row in one piece of memory
+    /// that stays in the core's cache, then copied back: in the raster's
+    /// own layout a tile's rows lie a raster row apart, and a triangle's
+    /// first touch of each of them waits for memory.
     pub(super) fn band<F: FrameCell>(&self, ty: u32, frame: &mut [F], depth: &mut [u32]) -> Stats {
         let scene = self.scene;
         let tile = self.tiling.tile;
         let tiles_x = scene.width.div_ceil(tile);
         let (mut stats, mut scratch) = (Stats::default(), Scratch::default());
+        let (test, depth_max) = (self.test, self.depth_max);
         let mut levels =
-            Levels { scene, test: self.test, depth_max: self.depth_max, stats: &mut stats, scratch: &mut scratch };
-        let first_row = ty * tile;
-        // A band's cells are worth asking for ahead when its rows outgrow the cache.
-        let far = std::mem::size_of_val(depth) > CORE_CACHE;
+            Levels { scene, test, depth_max, stats: &mut stats, scratch: &mut scratch, edge_functions: false };
+        let band = Origin { column: 0, row: ty * tile, stride: scene.width as usize };
+        let side = tile as usize;
+        let (mut tile_frame, mut tile_depth) = (vec![F::default(); side * side], vec![0u32; side * side]);
         for tx in 0..tiles_x {
+            let bin = &self.bins[(ty * tiles_x + tx) as usize];
+            if bin.is_empty() {
+                continue;
+            }
             let rect = PixelRect {
                 columns: (tx * tile, ((tx + 1) * tile).min(scene.width) - 1),
-                rows: (first_row, ((ty + 1) * tile).min(scene.height) - 1),
+                rows: (band.row, ((ty + 1) * tile).min(scene.height) - 1),
             };
-            let bin = &self.bins[(ty * tiles_x + tx) as usize];
+            let width = (rect.columns.1 - rect.columns.0 + 1) as usize;
+            let origin = Origin { column: rect.columns.0, row: rect.rows.0, stride: width };
+            let copy = |row: u32| (band.cell(rect.columns.0, row), origin.cell(rect.columns.0, row));
+            let cells = width * (rect.rows.1 - rect.rows.0 + 1) as usize;
+            if let Some(cleared) = self.cleared {
+                tile_frame[..cells].fill(F::from_value(cleared.frame));
+                tile_depth[..cells].fill(cleared.depth);
+            } else {
+                for row in rect.rows.0..=rect.rows.1 {
+                    let (from, to) = copy(row);
+                    tile_frame[to..to + width].copy_from_slice(&frame[from..from + width]);
+                    tile_depth[to..to + width].copy_from_slice(&depth[from..from + width]);
+                }
+            }
             for (k, &index) in bin.iter().enumerate() {
                 // The polygons of a tile lie far apart in memory: ask for the
                 // ones a few steps ahead while this one is drawn.
                 if let Some(&ahead) = bin.get(k + 4) {
-                    prefetch(scene.polygons[ahead as usize].geometry());
+                    prefetch_polygon(&scene.polygons[ahead as usize]);
                 }
                 if let Some(&ahead) = bin.get(k + 2) {
                     prefetch(scene.polygons[ahead as usize].geometry().points.as_ptr());
-                    if far {
-                        prefetch_cells(scene, ahead as usize, (&*frame, &*depth), first_row);
-                    }
                 }
-                levels.draw((&mut *frame, &mut *depth), first_row, index as usize, rect, &mut Unobserved);
+                let cells = (&mut tile_frame[..], &mut tile_depth[..]);
+                levels.draw(cells, origin, index as usize, rect, &mut Unobserved);
+            }
+            for row in rect.rows.0..=rect.rows.1 {
+                let (from, to) = copy(row);
+                frame[from..from + width].copy_from_slice(&tile_frame[to..to + width]);
+                depth[from..from + width].copy_from_slice(&tile_depth[to..to + width]);
             }
         }
         (self.tiling.band_done)();

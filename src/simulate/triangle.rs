@@ -24,7 +24,6 @@ use crate::simulate::branch_free::{Stepped, test_and_store};
 use crate::simulate::buffer::FrameCell;
 use crate::simulate::events::Observer;
 use crate::simulate::levels::LevelSink;
-use crate::simulate::setup::CORE_CACHE;
 
 /// The largest bounding box (in pixel centres) drawn this way: above it the
 /// scan converter, which visits only covered centres, is faster.
@@ -37,6 +36,7 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
     /// Draws a small triangle within `rect` by edge functions, with the same
     /// cells and counts as the scan converter; `false` (having done nothing)
     /// when the triangle, the rules or an observer need the scan converter.
+    /// [`Levels::draw`](crate::simulate::levels::Levels) decides whether the cells suit it.
     pub(super) fn small_triangle(&mut self, geometry: &Geometry, rules: Rules, rect: PixelRect) -> bool {
         if O::OBSERVES_PIXELS
             || O::OBSERVES_SCANLINES
@@ -44,9 +44,6 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
             || rules.columns != ColumnRule::CentreInside
             || geometry.big().is_some()
             || !geometry.fits_i64()
-            // Every cell of the box is rewritten: on buffers larger than the cache, the
-            // cells around the triangle would go back to memory for nothing.
-            || std::mem::size_of_val(self.depth) > CORE_CACHE
         {
             return false;
         }
@@ -133,12 +130,12 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         steps: Steps,
     ) -> (u64, u64) {
         let write = self.cell_write::<GREATER>();
-        let (width, denominator) = (self.width, steps.denominator);
+        let denominator = steps.denominator;
         let (mut tested, mut written) = (0u64, 0u64);
         let mut row_edges = edges.map(|e| e.at_first);
         for row in centres.first_row..=centres.last_row {
-            let start = (row as u32 - self.first_row) as usize * width;
-            let cells = start + centres.first_column..=start + centres.last_column;
+            let start = self.origin.cell(centres.first_column as u32, row as u32);
+            let cells = start..=start + (centres.last_column - centres.first_column);
             let [mut e0, mut e1, mut e2] = row_edges;
             let mut depth = row_start;
             for cell in self.depth[cells.clone()].iter_mut().zip(&mut self.frame[cells]) {

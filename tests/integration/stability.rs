@@ -252,10 +252,16 @@ proptest! {
         partly.draw_parallel_through(stop, tile, threads, &|| {});
         prop_assert_eq!(in_order.buffers(), partly.buffers(), "through {}, tile {}, {} threads: {}", stop, tile, threads, json);
         prop_assert_eq!(in_order.stats(), partly.stats());
+        // The first polygons in order, the rest on threads: the tiles start from the cells
+        // drawn so far, not from the cleared ones.
+        let mut then_tiled = in_order.clone();
+        then_tiled.finish_parallel(tile, threads, &|| {});
         while in_order.draw_next(&mut Unobserved).is_some() {}
         while partly.draw_next(&mut Unobserved).is_some() {}
         prop_assert_eq!(quiet.buffers(), partly.buffers());
         prop_assert_eq!(in_order.stats(), partly.stats());
+        prop_assert_eq!(quiet.buffers(), then_tiled.buffers(), "tiled after {}: {}", stop, json);
+        prop_assert_eq!(quiet.stats().written, then_tiled.stats().written);
     }
 
     /// The everyday guard against panics in the reader: any text is a scene or an error,
