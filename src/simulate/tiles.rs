@@ -52,7 +52,12 @@ impl Tiles<'_> {
     /// that stays in the core's cache, then copied back: in the raster's
     /// own layout a tile's rows lie a raster row apart, and a triangle's
     /// first touch of each of them waits for memory.
-    pub(super) fn band<F: FrameCell>(&self, ty: u32, frame: &mut [F], depth: &mut [u32]) -> Stats {
+    pub(super) fn band<F: FrameCell>(
+        &self,
+        ty: u32,
+        (frame, depth): (&mut [F], &mut [u32]),
+        copy_cells: &mut TileCopy<F>,
+    ) -> Stats {
         let scene = self.scene;
         let tile = self.tiling.tile;
         let tiles_x = scene.width.div_ceil(tile);
@@ -61,8 +66,7 @@ impl Tiles<'_> {
         let mut levels =
             Levels { scene, test, depth_max, stats: &mut stats, scratch: &mut scratch, edge_functions: false };
         let band = Origin { column: 0, row: ty * tile, stride: scene.width as usize };
-        let side = tile as usize;
-        let (mut tile_frame, mut tile_depth) = (vec![F::default(); side * side], vec![0u32; side * side]);
+        let (tile_frame, tile_depth) = copy_cells.cells(tile);
         for tx in 0..tiles_x {
             let bin = &self.bins[(ty * tiles_x + tx) as usize];
             if bin.is_empty() {
@@ -109,6 +113,29 @@ impl Tiles<'_> {
     }
 }
 
+/// The cells a tile is drawn on, kept from tile to tile and band to band
+/// on one thread.
+pub(super) struct TileCopy<F> {
+    frame: Vec<F>,
+    depth: Vec<u32>,
+}
+
+impl<F: FrameCell> Default for TileCopy<F> {
+    fn default() -> Self {
+        TileCopy { frame: Vec::new(), depth: Vec::new() }
+    }
+}
+
+impl<F: FrameCell> TileCopy<F> {
+    /// Room for a `tile`×`tile` tile in both buffers.
+    fn cells(&mut self, tile: u32) -> (&mut [F], &mut [u32]) {
+        let cells = tile as usize * tile as usize;
+        self.frame.resize(cells, F::default());
+        self.depth.resize(cells, 0);
+        (&mut self.frame, &mut self.depth)
+    }
+}
+
 impl LevelCells for Tiles<'_> {
     /// The counts, and how many threads drew.
     type Output = (Stats, usize);
@@ -119,8 +146,9 @@ impl LevelCells for Tiles<'_> {
         let add =
             |a: Stats, b: Stats| Stats { polygons: 0, tested: a.tested + b.tested, written: a.written + b.written };
         let Some(pool) = self.pool else {
+            let mut copy_cells = TileCopy::default();
             return (
-                bands.map(|(ty, (frame, depth))| self.band(ty as u32, frame, depth)).fold(Stats::default(), add),
+                bands.map(|(ty, cells)| self.band(ty as u32, cells, &mut copy_cells)).fold(Stats::default(), add),
                 1,
             );
         };
@@ -129,7 +157,7 @@ impl LevelCells for Tiles<'_> {
         let stats = pool.install(|| {
             bands
                 .into_par_iter()
-                .map(|(ty, (frame, depth))| self.band(ty as u32, frame, depth))
+                .map_init(TileCopy::default, |copy_cells, (ty, cells)| self.band(ty as u32, cells, copy_cells))
                 .reduce(Stats::default, add)
         });
         (stats, pool.current_num_threads())
