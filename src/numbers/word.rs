@@ -122,7 +122,7 @@ impl Word for i64 {
         Some(self)
     }
 
-    #[inline]
+    #[inline(always)]
     fn floor_div(self, d: i64) -> (i64, i64) {
         debug_assert!(d > 0);
         // Truncated division, then one step down for a negative remainder,
@@ -132,12 +132,12 @@ impl Word for i64 {
         (quotient - i64::from(negative), remainder + std::hint::select_unpredictable(negative, d, 0))
     }
 
-    #[inline]
+    #[inline(always)]
     fn floor_div_pow2(self, shift: u32) -> (i64, i64) {
         (self >> shift, self & ((1 << shift) - 1))
     }
 
-    #[inline]
+    #[inline(always)]
     fn ceil_div(self, d: i64) -> i64 {
         debug_assert!(d > 0);
         let (quotient, remainder) = self.floor_div(d);

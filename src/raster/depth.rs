@@ -394,6 +394,7 @@ impl BranchFreeTest {
     pub const GREATER: BranchFreeTest = BranchFreeTest { use_ceiling: true, sign: 1, threshold: 0 };
 
     /// The constants of `test`.
+    #[inline(always)]
     pub fn of(test: DepthTest) -> BranchFreeTest {
         let threshold = match test {
             // sign·(v − s) lies well inside ±2^62, so these decide alone.
@@ -469,12 +470,16 @@ pub struct DepthPlane<W = i128> {
 impl<W: Word> DepthPlane<W> {
     /// Prepares a polygon whose Newell `c` is non-zero (for `W = i64`, one
     /// that [`Geometry::fits_i64`]).
+    #[inline(always)]
     pub fn new(geometry: &Geometry) -> DepthPlane<W> {
         debug_assert!(geometry.c() != 0, "depth of an edge-on polygon: please report this bug");
         // Every input and product here is within the bounds of Geometry::fits_i64
         // when W is i64, so the work is done in W.
-        let [a, b, c] = geometry.normal.map(W::narrow);
-        let [x1, y1, z1] = geometry.points[0].map(W::narrow);
+        let [a, b, c] = geometry.normal;
+        let [a, b, c] = [W::narrow(a), W::narrow(b), W::narrow(c)];
+        let points: &[[i128; 3]] = &geometry.points;
+        let [x1, y1, z1] = points[0];
+        let [x1, y1, z1] = [W::narrow(x1), W::narrow(y1), W::narrow(z1)];
         let two_d = W::narrow(2 * geometry.denominator);
         // Signs folded so that the denominator c·2D is positive.
         let flip = c < W::ZERO;
@@ -510,7 +515,7 @@ impl<W: Word> DepthPlane<W> {
 
     /// A stepper at the centre of pixel `column` on the row whose
     /// [`DepthPlane::row_numerator`] is `row_numerator`.
-    #[inline]
+    #[inline(always)]
     pub fn start_at(&self, row_numerator: W, column: u32) -> DepthStepper<W> {
         let column = W::narrow(i128::from(column));
         let centre_x = (column + column + W::ONE) * self.half_unit;
@@ -565,6 +570,7 @@ impl DepthStepper {
 impl<W: Word> DepthStepper<W> {
     /// The state: the depth at the current centre as whole part and
     /// remainder over the denominator, and the step per pixel likewise.
+    #[inline]
     pub fn state(&self) -> StepperState<W> {
         StepperState {
             whole: self.whole,

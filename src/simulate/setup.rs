@@ -32,11 +32,16 @@ pub(super) fn pixel_bounds(geometry: &Geometry, width: u32, height: u32) -> Opti
     Some(PixelRect { columns: (clamp(c0, width), clamp(c1, width)), rows: (clamp(r0, height), clamp(r1, height)) })
 }
 
-/// Each polygon's vertices live in their own allocation: asks for those of
-/// the polygon a few steps after `index` in scene order, so that they are in
-/// cache when it is drawn.
+/// Asks for the polygons a few steps after `index` in scene order, so that
+/// they are in cache when they are drawn: the whole record of the one eight
+/// steps on (its bounds are read two steps before it is drawn, to ask for
+/// its cells), and the vertices of the one four steps on (in their own
+/// allocation when they are more than a triangle's).
 #[inline]
 pub(super) fn prefetch_ahead(scene: &Scene, index: usize) {
+    if let Some(ahead) = scene.polygons.get(index + 8) {
+        prefetch_polygon(ahead);
+    }
     if let Some(ahead) = scene.polygons.get(index + 4) {
         prefetch(ahead.geometry().points.as_ptr());
     }

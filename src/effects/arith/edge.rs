@@ -224,15 +224,19 @@ impl<const N: usize> EdgePolygon<N> {
             return;
         }
         let x = first as f32 + 0.5;
-        let mut e: [f32; N] = std::array::from_fn(|i| at(i, x));
-        let step: [f32; N] = std::array::from_fn(|i| self.edges[i][0]);
+        // Filled and stepped by index: no call per row or column where the compiler's
+        // inlining stops (a release build optimizes each code generation unit alone).
+        let (mut e, mut step) = ([0.0f32; N], [0.0f32; N]);
+        for i in 0..N {
+            (e[i], step[i]) = (at(i, x), self.edges[i][0]);
+        }
         let [dzdx, dzdy, x1, y1, z1] = self.depth;
         let mut z = z1 + dzdx * (x - x1) + dzdy * (y - y1);
         for column in first..=last {
             let covered = e.iter().fold(true, |inside, v| inside & (*v >= 0.0));
             pixel(column, covered, z);
-            for (v, s) in e.iter_mut().zip(&step) {
-                *v += s;
+            for i in 0..N {
+                e[i] += step[i];
             }
             z += dzdx;
         }
