@@ -28,7 +28,7 @@ pub(super) struct Levels<'a, 's> {
     /// ([`LevelSink::small_triangle`]), which rewrite every cell of their
     /// box: only on cells that fit the core's cache, and not on a tile's
     /// copy, where the scan converter, visiting only covered centres, is the
-    /// faster (the design note on tiled buffers).
+    /// faster (the design note on tiles drawn in cache).
     pub(super) edge_functions: bool,
 }
 
