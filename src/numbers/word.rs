@@ -96,6 +96,14 @@ pub trait Word:
     fn floor_div(self, d: Self) -> (Self, Self);
     /// Ceiling of `self / d` for `d > 0`.
     fn ceil_div(self, d: Self) -> Self;
+    /// What [`Word::floor_div_by`] multiplies by to divide by `d > 0`: on
+    /// 64 bits `⌊(2^64 − 1)/d⌋`, on 128 bits nothing (0).
+    fn reciprocal(d: Self) -> u64;
+    /// [`Word::floor_div`] by `d`, given its [`Word::reciprocal`]: on 64
+    /// bits a multiplication and one correction instead of a division (the
+    /// quotient of `|self|` by the reciprocal is the true one or one less),
+    /// on 128 bits the division.
+    fn floor_div_by(self, d: Self, reciprocal: u64) -> (Self, Self);
     /// Floor of `self / 2^shift`, as whole part and remainder: the same as
     /// [`Word::floor_div`] by a power of two, by a shift and a mask.
     fn floor_div_pow2(self, shift: u32) -> (Self, Self);
@@ -130,6 +138,31 @@ impl Word for i64 {
         let (quotient, remainder) = (self / d, self % d);
         let negative = remainder < 0;
         (quotient - i64::from(negative), remainder + std::hint::select_unpredictable(negative, d, 0))
+    }
+
+    #[inline(always)]
+    fn reciprocal(d: i64) -> u64 {
+        debug_assert!(d > 0);
+        u64::MAX / d as u64
+    }
+
+    #[inline(always)]
+    fn floor_div_by(self, d: i64, reciprocal: u64) -> (i64, i64) {
+        debug_assert!(d > 0 && reciprocal == u64::MAX / d as u64);
+        // A negative n is −u − 1 with u = !n ≥ 0: ⌊n/d⌋ = −⌊u/d⌋ − 1, remainder d − 1 − (u mod d).
+        let negative = self < 0;
+        let u = (self ^ (self >> 63)) as u64;
+        let d_unsigned = d as u64;
+        // reciprocal ≥ (2^64 − d)/d, so u·reciprocal/2^64 > u/d − 1: the estimate is ⌊u/d⌋ or one less.
+        let estimate = ((u128::from(u) * u128::from(reciprocal)) >> 64) as u64;
+        let remainder = u - estimate * d_unsigned;
+        let short = remainder >= d_unsigned;
+        let (quotient, remainder) =
+            ((estimate + u64::from(short)) as i64, (remainder - if short { d_unsigned } else { 0 }) as i64);
+        (
+            std::hint::select_unpredictable(negative, -quotient - 1, quotient),
+            std::hint::select_unpredictable(negative, d - 1 - remainder, remainder),
+        )
     }
 
     #[inline(always)]
@@ -171,6 +204,16 @@ impl Word for i128 {
     }
 
     #[inline]
+    fn reciprocal(_d: i128) -> u64 {
+        0
+    }
+
+    #[inline]
+    fn floor_div_by(self, d: i128, _reciprocal: u64) -> (i128, i128) {
+        floor_div(self, d)
+    }
+
+    #[inline]
     fn floor_div_pow2(self, shift: u32) -> (i128, i128) {
         (self >> shift, self & ((1 << shift) - 1))
     }
@@ -183,6 +226,8 @@ impl Word for i128 {
 
 #[cfg(test)]
 mod tests {
+    use proptest::prelude::*;
+
     use super::*;
 
     #[test]
@@ -199,6 +244,24 @@ mod tests {
                 assert_eq!(n.floor_div_pow2(shift), n.floor_div(1 << shift), "{n} >> {shift}");
                 assert_eq!(i128::from(n).floor_div_pow2(shift), i128::from(n).floor_div(1 << shift));
             }
+        }
+    }
+
+    proptest! {
+        /// The division by a reciprocal gives the division's quotient and
+        /// remainder for every 64-bit numerator and positive divisor, small
+        /// ones and those near a power of two weighted.
+        #[test]
+        fn dividing_by_a_reciprocal_is_dividing(
+            n in prop_oneof![-1000i64..1000, any::<i64>()],
+            d in prop_oneof![
+                1i64..100,
+                1i64..=i64::MAX,
+                (1u32..63).prop_flat_map(|k| (-3i64..4).prop_map(move |e| ((1i64 << k) + e).max(1))),
+            ],
+        ) {
+            prop_assert_eq!(n.floor_div_by(d, i64::reciprocal(d)), n.floor_div(d), "{} / {}", n, d);
+            prop_assert_eq!(i128::from(n).floor_div_by(i128::from(d), 0), i128::from(n).floor_div(i128::from(d)));
         }
     }
 

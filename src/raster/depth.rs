@@ -465,6 +465,8 @@ pub struct DepthPlane<W = i128> {
     half_unit: W,
     step_whole: W,
     step_remainder: W,
+    /// The denominator's [`Word::reciprocal`], to find each span's start without a division.
+    reciprocal: u64,
 }
 
 impl<W: Word> DepthPlane<W> {
@@ -497,6 +499,7 @@ impl<W: Word> DepthPlane<W> {
             half_unit: W::narrow(geometry.denominator),
             step_whole,
             step_remainder,
+            reciprocal: W::reciprocal(denominator),
         }
     }
 
@@ -519,7 +522,8 @@ impl<W: Word> DepthPlane<W> {
     pub fn start_at(&self, row_numerator: W, column: u32) -> DepthStepper<W> {
         let column = W::narrow(i128::from(column));
         let centre_x = (column + column + W::ONE) * self.half_unit;
-        let (whole, remainder) = (row_numerator + self.minus_a * (centre_x - self.x1)).floor_div(self.denominator);
+        let numerator = row_numerator + self.minus_a * (centre_x - self.x1);
+        let (whole, remainder) = numerator.floor_div_by(self.denominator, self.reciprocal);
         DepthStepper {
             whole,
             remainder,
