@@ -42,6 +42,18 @@ pub(super) struct CellWrite<F> {
     pub(super) value: F,
 }
 
+impl<F: FrameCell> CellWrite<F> {
+    /// This write for a loop compiled with `GREATER`: its test then the
+    /// book's `z > stored` as constants the compiler folds in (callers pass
+    /// only that test then), any test otherwise. Each loop that is its own
+    /// function (the lanes' is, for AVX2) sets it again, since constants do
+    /// not cross a call.
+    #[inline(always)]
+    pub(super) fn compiled<const GREATER: bool>(self) -> CellWrite<F> {
+        if GREATER { CellWrite { test: BranchFreeTest::GREATER, ..self } } else { self }
+    }
+}
+
 /// One cell of a branch-free loop: `depth` over `denominator` against the
 /// stored level with the test's constants ([`BranchFreeTest`]); both cells
 /// are rewritten with their old or their new value, so nothing is guessed.

@@ -16,7 +16,6 @@ use std::arch::x86_64::{
     _mm256_setr_epi64x, _mm256_setzero_si256, _mm256_sub_epi64,
 };
 
-use crate::raster::depth::BranchFreeTest;
 use crate::simulate::branch_free::{CellWrite, Stepped, cell_by_cell};
 use crate::simulate::buffer::FrameCell;
 
@@ -43,7 +42,7 @@ pub(super) fn span<F: FrameCell, const GREATER: bool>(
     denominator: i64,
     write: CellWrite<F>,
 ) -> u64 {
-    let write = if GREATER { CellWrite { test: BranchFreeTest::GREATER, ..write } } else { write };
+    let write = write.compiled::<GREATER>();
     // Lanes pay for their setup (four depths and a stride) only on longer spans.
     #[cfg(target_arch = "x86_64")]
     if cells.0.len() >= LONG_SPAN && std::arch::is_x86_feature_detected!("avx2") {
@@ -66,7 +65,7 @@ pub(super) fn span_avx2<F: FrameCell, const GREATER: bool>(
     denominator: i64,
     write: CellWrite<F>,
 ) -> u64 {
-    let write = if GREATER { CellWrite { test: BranchFreeTest::GREATER, ..write } } else { write };
+    let write = write.compiled::<GREATER>();
     let chunks = depth.len().min(frame.len()) / LANES;
     if chunks == 0 {
         return cell_by_cell((depth, frame), start, step, denominator, write);
@@ -139,6 +138,7 @@ mod tests {
     use proptest::prelude::*;
 
     use super::*;
+    use crate::raster::depth::BranchFreeTest;
     use crate::raster::depth::DepthTest;
 
     /// A depth or a step over `denominator`: a whole part near the stored

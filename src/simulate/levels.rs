@@ -122,7 +122,7 @@ impl LevelCells for InOrder<'_, '_> {
         for index in self.polygons.clone() {
             prefetch_ahead(scene, index);
             if far && index + AHEAD < self.polygons.end {
-                prefetch_cells(scene, index + AHEAD, (&*frame, &*depth), 0);
+                prefetch_cells(scene, index + AHEAD, (&*frame, &*depth));
             }
             if fate(scene, index) == Fate::Drawn {
                 self.levels.draw((&mut *frame, &mut *depth), origin, index, rect, &mut Unobserved);
@@ -208,8 +208,8 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
     /// constants known to the compiler; else the scene's test read as the loop runs.
     #[inline(always)]
     pub(super) fn cell_write<const GREATER: bool>(&self) -> CellWrite<F> {
-        let test = if GREATER { BranchFreeTest::GREATER } else { BranchFreeTest::of(self.test) };
-        CellWrite { test, max: i64::from(self.depth_max), value: self.value }
+        CellWrite { test: BranchFreeTest::of(self.test), max: i64::from(self.depth_max), value: self.value }
+            .compiled::<GREATER>()
     }
 }
 

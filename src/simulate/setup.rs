@@ -72,10 +72,11 @@ pub(super) fn prefetch<T>(data: *const T) {
     let _ = data;
 }
 
-/// A z-buffer (or, in tiles, a band's cells) larger than this many bytes
-/// outgrows a core's cache (256 KiB, 256×256 cells): asking for its cells
-/// ahead ([`prefetch_cells`]) pays only then, and drawing small triangles by
-/// edge functions, which rewrite every cell of their box, pays only below.
+/// A z-buffer larger than this many bytes outgrows a core's cache (256 KiB,
+/// 256×256 cells): asking for its cells ahead ([`prefetch_cells`]) pays only
+/// then, and drawing small triangles by edge functions, which rewrite every
+/// cell of their box, pays only below (and not on a tile's copy:
+/// `Levels::edge_functions`).
 pub(super) const CORE_CACHE: usize = 256 << 10;
 
 /// A processor's last-level cache (32 MiB of L3, a common size), shared
@@ -87,25 +88,25 @@ pub(super) const CORE_CACHE: usize = 256 << 10;
 pub(super) const LAST_LEVEL_CACHE: usize = 32 << 20;
 
 /// Asks for the cells of polygon `index`'s bounding box, row by row, in
-/// both buffers (whose first row is raster row `first_row`), so that they
+/// both buffers (the whole raster's, drawn in scene order), so that they
 /// are in cache when it is drawn a couple of polygons later: a large raster's
 /// rows lie a page apart, and waiting for each in turn is most of the time a
 /// small triangle takes. Only for boxes of at most 64 rows of 256 cells
 /// (larger polygons spend long enough on their pixels).
 #[inline]
-pub(super) fn prefetch_cells<F>(scene: &Scene, index: usize, (frame, depth): (&[F], &[u32]), first_row: u32) {
+pub(super) fn prefetch_cells<F>(scene: &Scene, index: usize, (frame, depth): (&[F], &[u32])) {
     const ROWS: u32 = 64;
     const CELLS: u32 = 256;
     let Some(polygon) = scene.polygons.get(index) else { return };
     let Some(rect) = pixel_bounds(polygon.geometry(), scene.width, scene.height) else { return };
     let (rows, columns) = (rect.rows, rect.columns);
-    if rows.1 - rows.0 >= ROWS || columns.1 - columns.0 >= CELLS || rows.0 < first_row {
+    if rows.1 - rows.0 >= ROWS || columns.1 - columns.0 >= CELLS {
         return;
     }
     let width = scene.width as usize;
     let line = |bytes: usize| (64 / bytes.max(1)).max(1);
     for row in rows.0..=rows.1 {
-        let start = (row - first_row) as usize * width;
+        let start = row as usize * width;
         let (first, last) = (start + columns.0 as usize, start + columns.1 as usize);
         if last >= depth.len().min(frame.len()) {
             return;
