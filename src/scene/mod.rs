@@ -160,31 +160,42 @@ impl Window {
 }
 
 /// One validated polygon.
+///
+/// Laid out as written (`repr(C)`): first what drawing reads of every
+/// polygon (its value, how it was clipped, its geometry), within
+/// [`Polygon::DRAWN_BYTES`], then what only reports and effects read, so that
+/// a run asks the memory for the first part alone
+/// ([`crate::simulate::setup::prefetch_polygon`]).
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[repr(C)]
 pub struct Polygon {
+    /// The framebuffer value it writes; fits `frame_bits`.
+    pub value: u32,
+    /// How the polygon fared against the near plane.
+    pub clip: Clip,
+    /// Its scaled integer geometry and plane, made from its vertices.
+    geometry: Geometry,
     /// Its name (from the file, or `crate::words::default_name`), with control characters
     /// escaped as `\u{1b}` ([`crate::words::printable`]) so that no report can
     /// carry them to a terminal.
     pub name: String,
-    /// The framebuffer value it writes; fits `frame_bits`.
-    pub value: u32,
     /// Where its vertices are kept ([`Polygon::vertices`]); private, so that
     /// they and the geometry made from them never disagree
     /// ([`Polygon::with_vertices`]).
     vertices: Vertices,
-    /// Its scaled integer geometry and plane, made from its vertices.
-    geometry: Geometry,
     /// Its opacity α (0 … 1) when it is transparent; `None` is opaque.
     pub opacity: Option<Q>,
     /// With perspective: the vertices as given (eye space, through the
     /// window when there is one), before clipping and projection; `vertices`
     /// then holds the projected ones.
     pub eye_vertices: Option<Vec<[Exact; 3]>>,
-    /// How the polygon fared against the near plane.
-    pub clip: Clip,
 }
 
 impl Polygon {
+    /// How many bytes from its start hold every field the plain loop reads
+    /// of a drawn polygon (see the type's layout).
+    pub(crate) const DRAWN_BYTES: usize = std::mem::offset_of!(Polygon, geometry) + std::mem::size_of::<Geometry>();
+
     /// A polygon on its vertices: their geometry is made here, once, so the
     /// two always agree; the error when the vertices are unusable.
     pub(crate) fn new(
@@ -383,6 +394,27 @@ impl fmt::Display for Winding {
 
 #[cfg(test)]
 mod tests {
+    /// What drawing reads of a polygon comes first and takes fewer cache
+    /// lines than the whole record (the names, opacity and eye-space
+    /// vertices after it are read only by reports and effects).
+    #[test]
+    fn what_drawing_reads_of_a_polygon_comes_first() {
+        use std::mem::{offset_of, size_of};
+        let drawn = Polygon::DRAWN_BYTES;
+        for field in [offset_of!(Polygon, value), offset_of!(Polygon, clip), offset_of!(Polygon, geometry)] {
+            assert!(field < drawn);
+        }
+        for field in [
+            offset_of!(Polygon, name),
+            offset_of!(Polygon, vertices),
+            offset_of!(Polygon, opacity),
+            offset_of!(Polygon, eye_vertices),
+        ] {
+            assert!(field >= drawn, "{field} within the first {drawn} bytes");
+        }
+        assert!(drawn.div_ceil(64) < size_of::<Polygon>().div_ceil(64), "{drawn} of {} bytes", size_of::<Polygon>());
+    }
+
     use super::*;
 
     fn parse(text: &str) -> Result<Scene, String> {

@@ -49,9 +49,9 @@ frame_cell!(u8, u16, u32);
 /// The framebuffer's cells, in the width its bits need.
 #[derive(Debug, Clone, PartialEq, Eq)]
 enum FrameCells {
-    Bytes(Vec<u8>),
-    Halves(Vec<u16>),
-    Words(Vec<u32>),
+    Bytes(Cells<u8>),
+    Halves(Cells<u16>),
+    Words(Cells<u32>),
 }
 
 /// Code that works on the cells of a quantized z-buffer and of the
@@ -67,7 +67,7 @@ pub trait LevelCells {
 /// The z-buffer's cells: integer levels (4 bytes each) or exact values.
 #[derive(Debug, Clone, PartialEq, Eq)]
 enum DepthCells {
-    Levels(Vec<u32>),
+    Levels(Cells<u32>),
     Exact(Vec<Exact>),
 }
 
@@ -94,13 +94,13 @@ impl Buffers {
         let pool = clearing_pool(cells, threads);
         let pool = pool.as_ref();
         let depth = match clear_depth {
-            Stored::Level(level) => DepthCells::Levels(filled_levels(cells, level, pool)),
+            Stored::Level(level) => DepthCells::Levels(Cells::new(cells, level, pool)),
             Stored::Exact(value) => DepthCells::Exact(filled(cells, value, pool)),
         };
         let frame = match frame_bits {
-            0..=8 => FrameCells::Bytes(filled_levels(cells, u8::from_value(background), pool)),
-            9..=16 => FrameCells::Halves(filled_levels(cells, u16::from_value(background), pool)),
-            _ => FrameCells::Words(filled_levels(cells, background, pool)),
+            0..=8 => FrameCells::Bytes(Cells::new(cells, u8::from_value(background), pool)),
+            9..=16 => FrameCells::Halves(Cells::new(cells, u16::from_value(background), pool)),
+            _ => FrameCells::Words(Cells::new(cells, background, pool)),
         };
         Buffers { width, height, frame, depth }
     }
@@ -149,7 +149,7 @@ impl Buffers {
     /// rational an exact depth); `zsim memory` gives the book's packed figures.
     pub fn memory_bytes(&self) -> u64 {
         let depth = match &self.depth {
-            DepthCells::Levels(cells) => std::mem::size_of_val(cells.as_slice()),
+            DepthCells::Levels(cells) => std::mem::size_of_val(&**cells),
             DepthCells::Exact(cells) => std::mem::size_of_val(cells.as_slice()),
         };
         let frame = match &self.frame {
@@ -205,7 +205,7 @@ impl Buffers {
     pub fn differences(&self, other: &Buffers) -> (u64, u64) {
         let frame = (0..self.frame.len()).filter(|&i| self.frame.get(i) != other.frame.get(i)).count() as u64;
         let depth = match (&self.depth, &other.depth) {
-            (DepthCells::Levels(a), DepthCells::Levels(b)) => a.iter().zip(b).filter(|(x, y)| x != y).count(),
+            (DepthCells::Levels(a), DepthCells::Levels(b)) => a.iter().zip(b.iter()).filter(|(x, y)| x != y).count(),
             (DepthCells::Exact(a), DepthCells::Exact(b)) => a.iter().zip(b).filter(|(x, y)| x != y).count(),
             _ => self.depth.len(),
         } as u64;
@@ -241,19 +241,73 @@ impl Buffers {
     }
 }
 
-/// `cells` copies of an integer `value`: zeros are left unwritten (memory
-/// fresh from the system reads as zeros, so its pages are first touched
+/// The integer cells of one buffer: a vector of zeros from the system, of
+/// which the cells used start at `start`. Memory fresh from the system
+/// reads as zeros, so zeros are left unwritten: its pages are first touched
 /// where the cells are first written, by the thread that draws them, and a
-/// tiled run writes them once instead of twice), any other value written now
-/// ([`filled`]). Large zeros are offered huge pages too.
-fn filled_levels<T: FrameCell + Sync>(cells: usize, value: T, pool: Option<&rayon::ThreadPool>) -> Vec<T> {
-    if value != T::default() {
-        return filled(cells, value, pool);
+/// tiled run writes them once instead of twice. A large buffer's cells
+/// start on a 2 MiB boundary and are offered huge pages: Linux backs with
+/// them only whole 2 MiB pages aligned in memory, which a vector's start is
+/// not, so that otherwise the first and last megabytes of each buffer take
+/// a page fault every 4 KiB.
+#[derive(Clone)]
+struct Cells<T> {
+    memory: Vec<T>,
+    start: usize,
+}
+
+/// A huge page (x86-64 and most others).
+const HUGE_PAGE: usize = 2 << 20;
+
+impl<T: FrameCell + Sync> Cells<T> {
+    /// `cells` copies of `value`; any other value than zero written now
+    /// (the book's first step: clear both buffers), with a pool each of its
+    /// threads writing a part.
+    fn new(cells: usize, value: T, pool: Option<&rayon::ThreadPool>) -> Cells<T> {
+        let size = std::mem::size_of::<T>();
+        let large = cells * size >= 2 * HUGE_PAGE;
+        let room = if large { HUGE_PAGE / size } else { 0 };
+        // The standard library allocates integer zeros already zeroed (calloc), without writing them.
+        let mut memory = vec![T::default(); cells + room];
+        let start = if large { memory.as_ptr().align_offset(HUGE_PAGE).min(room) } else { 0 };
+        memory.truncate(start + cells);
+        if large {
+            advise_huge_pages(memory[start..].as_mut_ptr().cast(), cells * size);
+        }
+        let mut made = Cells { memory, start };
+        if value != T::default() {
+            fill(&mut made, value, pool);
+        }
+        made
     }
-    // The standard library allocates integer zeros already zeroed (calloc), without writing them.
-    let mut zeros = vec![value; cells];
-    advise_huge_pages(zeros.as_mut_ptr().cast(), std::mem::size_of_val(zeros.as_slice()));
-    zeros
+}
+
+impl<T> std::ops::Deref for Cells<T> {
+    type Target = [T];
+
+    fn deref(&self) -> &[T] {
+        &self.memory[self.start..]
+    }
+}
+
+impl<T> std::ops::DerefMut for Cells<T> {
+    fn deref_mut(&mut self) -> &mut [T] {
+        &mut self.memory[self.start..]
+    }
+}
+
+impl<T: PartialEq> PartialEq for Cells<T> {
+    fn eq(&self, other: &Cells<T>) -> bool {
+        **self == **other
+    }
+}
+
+impl<T: Eq> Eq for Cells<T> {}
+
+impl<T: std::fmt::Debug> std::fmt::Debug for Cells<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Debug::fmt(&**self, f)
+    }
 }
 
 /// `cells` copies of `value`, all written now (the book's first step: clear
@@ -305,7 +359,6 @@ fn clearing_pool(cells: usize, threads: usize) -> Option<rayon::ThreadPool> {
 #[cfg(target_os = "linux")]
 fn advise_huge_pages(memory: *mut u8, bytes: usize) {
     const PAGE: usize = 4096;
-    const HUGE_PAGE: usize = 2 << 20;
     let start = memory as usize;
     if bytes < 2 * HUGE_PAGE {
         return;
@@ -367,6 +420,23 @@ impl DepthCells {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A large buffer's cells start on a 2 MiB boundary (so that every page
+    /// of it can be a huge one) and hold the clear value, zero or not; a
+    /// small buffer's start where its vector does.
+    #[test]
+    fn large_buffers_start_on_a_huge_page() {
+        let cells = 1 << 20;
+        for value in [0, 5] {
+            let large = Cells::<u32>::new(cells, value, None);
+            assert_eq!(large.as_ptr() as usize % HUGE_PAGE, 0, "value {value}");
+            assert_eq!(large.len(), cells);
+            assert!(large.iter().all(|&cell| cell == value), "value {value}");
+            let small = Cells::<u8>::new(1000, value as u8, None);
+            assert_eq!((small.start, small.len()), (0, 1000));
+            assert_eq!(large.clone(), large, "value {value}: a copy holds the same cells");
+        }
+    }
 
     #[test]
     fn pixel_origin_is_bottom_left_and_printed_last() {

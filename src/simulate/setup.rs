@@ -47,15 +47,18 @@ pub(super) fn prefetch_ahead(scene: &Scene, index: usize) {
     }
 }
 
-/// Asks for every cache line of `polygon`'s own record (its geometry and
-/// value take several): drawing it touches most of them.
+/// Asks for the cache lines of `polygon`'s own record that drawing reads
+/// (its value, clipping and geometry take several; the rest of the record
+/// is for reports: [`Polygon::DRAWN_BYTES`]).
 #[inline]
 pub(super) fn prefetch_polygon(polygon: &Polygon) {
     const LINE: usize = 64;
     let start: *const u8 = std::ptr::from_ref(polygon).cast();
-    for offset in (0..std::mem::size_of::<Polygon>()).step_by(LINE) {
+    for offset in (0..Polygon::DRAWN_BYTES).step_by(LINE) {
         prefetch(start.wrapping_add(offset));
     }
+    // The line of the last byte, when the record does not start a line.
+    prefetch(start.wrapping_add(Polygon::DRAWN_BYTES - 1));
 }
 
 /// Asks the processor to bring the memory at `data` into its cache (a hint;

@@ -36,6 +36,10 @@ pub(super) struct Tiles<'a> {
     /// memory is first touched when the tile is copied back
     /// ([`crate::simulate::buffer::Buffers::new`] leaves fresh buffers of zeros unwritten).
     pub(super) cleared: Option<Cleared>,
+    /// Whether the tiles without polygons are set to the `cleared` values
+    /// too ([`crate::simulate::simulation::Simulation::redraw`]: the buffers
+    /// are then not cleared beforehand).
+    pub(super) clear_empty: bool,
 }
 
 /// The values of a cleared framebuffer cell and z-buffer cell.
@@ -69,14 +73,21 @@ impl Tiles<'_> {
         let (tile_frame, tile_depth) = copy_cells.cells(tile);
         for tx in 0..tiles_x {
             let bin = &self.bins[(ty * tiles_x + tx) as usize];
-            if bin.is_empty() {
-                continue;
-            }
             let rect = PixelRect {
                 columns: (tx * tile, ((tx + 1) * tile).min(scene.width) - 1),
                 rows: (band.row, ((ty + 1) * tile).min(scene.height) - 1),
             };
             let width = (rect.columns.1 - rect.columns.0 + 1) as usize;
+            if bin.is_empty() {
+                if let Some(cleared) = self.cleared.filter(|_| self.clear_empty) {
+                    for row in rect.rows.0..=rect.rows.1 {
+                        let from = band.cell(rect.columns.0, row);
+                        frame[from..from + width].fill(F::from_value(cleared.frame));
+                        depth[from..from + width].fill(cleared.depth);
+                    }
+                }
+                continue;
+            }
             let origin = Origin { column: rect.columns.0, row: rect.rows.0, stride: width };
             let copy = |row: u32| (band.cell(rect.columns.0, row), origin.cell(rect.columns.0, row));
             let cells = width * (rect.rows.1 - rect.rows.0 + 1) as usize;
@@ -104,13 +115,56 @@ impl Tiles<'_> {
             }
             for row in rect.rows.0..=rect.rows.1 {
                 let (from, to) = copy(row);
-                frame[from..from + width].copy_from_slice(&tile_frame[to..to + width]);
-                depth[from..from + width].copy_from_slice(&tile_depth[to..to + width]);
+                stream_copy(&mut frame[from..from + width], &tile_frame[to..to + width]);
+                stream_copy(&mut depth[from..from + width], &tile_depth[to..to + width]);
             }
+            streamed();
         }
         (self.tiling.band_done)();
         stats
     }
+}
+
+/// Copies `from` into `to`, of the same length, past the cache where the
+/// processor can: a tile's drawn cells go back to the buffers without the
+/// buffers' old cells first being read into the cache (which an ordinary
+/// store does, doubling the memory traffic). [`streamed`] orders them
+/// before what follows.
+fn stream_copy<T: Copy>(to: &mut [T], from: &[T]) {
+    assert_eq!(to.len(), from.len(), "a tile's row and the buffers' are as long");
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{__m128i, _mm_loadu_si128, _mm_stream_si128};
+        let bytes = std::mem::size_of_val(from);
+        let (target, source) = (to.as_mut_ptr().cast::<u8>(), from.as_ptr().cast::<u8>());
+        let head = target.align_offset(16).min(bytes);
+        // SAFETY: both ranges are `bytes` long and lie in distinct slices;
+        // each 16-byte store starts at a multiple of 16 (after `head`) and
+        // ends within `to`; SSE2, which streaming stores need, is part of
+        // every x86_64 processor.
+        unsafe {
+            std::ptr::copy_nonoverlapping(source, target, head);
+            let mut offset = head;
+            while offset + 16 <= bytes {
+                let chunk = _mm_loadu_si128(source.add(offset).cast::<__m128i>());
+                _mm_stream_si128(target.add(offset).cast::<__m128i>(), chunk);
+                offset += 16;
+            }
+            std::ptr::copy_nonoverlapping(source.add(offset), target.add(offset), bytes - offset);
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    to.copy_from_slice(from);
+}
+
+/// Orders the streamed stores of [`stream_copy`] before every later store,
+/// so that the band's cells are whole when another thread reads them.
+fn streamed() {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: SSE is part of every x86_64 processor.
+    unsafe {
+        std::arch::x86_64::_mm_sfence()
+    };
 }
 
 /// The cells a tile is drawn on, kept from tile to tile and band to band
@@ -207,4 +261,32 @@ fn bins_in_order(scene: &Scene, polygons: std::ops::Range<usize>, tile: u32) -> 
         }
     }
     bins
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Streamed copies hold what `copy_from_slice` gives, whatever the
+    /// target's alignment and length (the head before a 16-byte boundary
+    /// and the tail after the last whole chunk are copied as usual).
+    #[test]
+    fn a_streamed_copy_is_a_copy() {
+        fn check<T: Copy + PartialEq + std::fmt::Debug + From<u8>>() {
+            let source: Vec<T> = (0..200u8).map(T::from).collect();
+            for offset in 0..9 {
+                for length in 0..source.len() - offset {
+                    let mut target = vec![T::from(255); source.len()];
+                    let mut copied = target.clone();
+                    stream_copy(&mut target[offset..offset + length], &source[..length]);
+                    streamed();
+                    copied[offset..offset + length].copy_from_slice(&source[..length]);
+                    assert_eq!(target, copied, "offset {offset}, length {length}");
+                }
+            }
+        }
+        check::<u8>();
+        check::<u16>();
+        check::<u32>();
+    }
 }

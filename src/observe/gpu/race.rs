@@ -3,8 +3,9 @@
 //! in one run, so that a busy machine slows both alike; medians and their
 //! ratio. zsim's time is what `zsim run --format none` prints as rasterized
 //! (clearing the buffers, then every polygon), except that the buffers are
-//! made once and cleared in place each round; the GPU's is a clear, the draw
-//! of a vertex buffer uploaded beforehand, and `glFinish`.
+//! made once and cleared each round, tile by tile as each is drawn
+//! ([`Simulation::redraw`]) as llvmpipe clears its tiles; the GPU's is a
+//! clear, the draw of a vertex buffer uploaded beforehand, and `glFinish`.
 
 use std::time::{Duration, Instant};
 
@@ -162,7 +163,7 @@ pub fn race(
     let size = (scene.width + 2 * margin, scene.height + 2 * margin);
     let drawing = gl.upload(size, &triangles, Some((scene.depth_test, scene.depth_max()))).map_err(no_gpu)?;
     // The buffers are made once, as the GPU's framebuffer is: each round
-    // clears them and draws (a fresh 4096² pair of buffers was mostly the
+    // clears and draws them (a fresh 4096² pair of buffers was mostly the
     // kernel handing over zeroed pages, a cost llvmpipe does not pay per frame).
     let mut simulation = Simulation::new_on(scene, threads);
     let tile = tile.unwrap_or_else(|| simulation.default_tile(threads));
@@ -172,10 +173,11 @@ pub fn race(
         0 => simulation.draw_parallel_through(scene.polygons.len().saturating_sub(1), 0, 1, &|| {}),
         tile => simulation.finish_parallel(tile, threads, &|| {}),
     };
+    // Each round clears and draws: in tiles, each tile is cleared as it is
+    // drawn, as llvmpipe clears its tiles.
     let mut zsim = || {
         let start = Instant::now();
-        simulation.restart();
-        let threads = draw(&mut simulation);
+        let threads = simulation.redraw(tile, threads, &|| {});
         (start.elapsed(), simulation.stats().tested, threads)
     };
     let gpu = || {
