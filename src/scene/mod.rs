@@ -18,6 +18,7 @@
 
 pub mod clip_space;
 mod file;
+pub(crate) mod pages;
 pub mod perspective;
 pub mod random;
 

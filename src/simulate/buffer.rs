@@ -6,6 +6,7 @@
 
 use crate::numbers::Exact;
 use crate::raster::depth::Stored;
+use crate::scene::pages::{HUGE_PAGE, advise_huge_pages, with_huge_pages};
 
 /// A framebuffer and a z-buffer of the same size.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -256,9 +257,6 @@ struct Cells<T> {
     start: usize,
 }
 
-/// A huge page (x86-64 and most others).
-const HUGE_PAGE: usize = 2 << 20;
-
 impl<T: FrameCell + Sync> Cells<T> {
     /// `cells` copies of `value`; any other value than zero written now
     /// (the book's first step: clear both buffers), with a pool each of its
@@ -316,9 +314,7 @@ impl<T: std::fmt::Debug> std::fmt::Debug for Cells<T> {
 /// thousands.
 /// With a pool, each of its threads writes a part.
 fn filled<T: Clone + Send + Sync>(cells: usize, value: T, pool: Option<&rayon::ThreadPool>) -> Vec<T> {
-    let mut out = Vec::with_capacity(cells);
-    let untouched = out.spare_capacity_mut();
-    advise_huge_pages(untouched.as_mut_ptr().cast(), std::mem::size_of_val(untouched));
+    let mut out = with_huge_pages(cells);
     match pool {
         Some(pool) => {
             pool.install(|| rayon::iter::ParallelExtend::par_extend(&mut out, rayon::iter::repeat_n(value, cells)))
@@ -353,30 +349,6 @@ fn clearing_pool(cells: usize, threads: usize) -> Option<rayon::ThreadPool> {
         .then(|| rayon::ThreadPoolBuilder::new().num_threads(threads).build().ok())
         .flatten()
 }
-
-/// Asks Linux to back the `bytes` of memory from `memory`, which belong to
-/// one allocation and have not been written, with 2 MiB pages where it can.
-#[cfg(target_os = "linux")]
-fn advise_huge_pages(memory: *mut u8, bytes: usize) {
-    const PAGE: usize = 4096;
-    let start = memory as usize;
-    if bytes < 2 * HUGE_PAGE {
-        return;
-    }
-    // madvise wants a page-aligned start: the whole pages inside the block.
-    let aligned = start.next_multiple_of(PAGE);
-    let length = (start + bytes - aligned) / PAGE * PAGE;
-    // SAFETY: the range lies inside an allocation a vector owns, which it has
-    // not written; MADV_HUGEPAGE only advises how to back it and changes no
-    // contents. A refusal (no huge pages on this system) leaves it as it was,
-    // so the result is ignored.
-    unsafe {
-        libc::madvise(aligned as *mut libc::c_void, length, libc::MADV_HUGEPAGE);
-    }
-}
-
-#[cfg(not(target_os = "linux"))]
-fn advise_huge_pages(_memory: *mut u8, _bytes: usize) {}
 
 fn rows_top_first<T: Clone>(cells: &[T], width: u32) -> Vec<Vec<T>> {
     cells.chunks_exact(width as usize).rev().map(<[T]>::to_vec).collect()

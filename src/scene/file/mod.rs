@@ -565,22 +565,21 @@ fn with_made<P: Send>(
     // aside, and the list is then dropped.
     let failed = std::sync::Mutex::new(Vec::new());
     let transparency = std::sync::atomic::AtomicBool::new(false);
-    let polygons: Vec<Polygon> = polygons
-        .into_par_iter()
-        .enumerate()
-        .map(|(index, polygon)| match make(polygon, index, frame) {
-            Ok(polygon) => {
-                if polygon.opacity.is_some() {
-                    transparency.store(true, std::sync::atomic::Ordering::Relaxed);
-                }
-                polygon
+    // In memory offered huge pages: drawing in tiles reads the polygons out of order.
+    let mut made: Vec<Polygon> = crate::scene::pages::with_huge_pages(polygons.len());
+    let polygons = polygons.into_par_iter().enumerate().map(|(index, polygon)| match make(polygon, index, frame) {
+        Ok(polygon) => {
+            if polygon.opacity.is_some() {
+                transparency.store(true, std::sync::atomic::Ordering::Relaxed);
             }
-            Err(unmade) => {
-                failed.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push((index, unmade));
-                Polygon::outside_view(String::new(), 0, None)
-            }
-        })
-        .collect();
+            polygon
+        }
+        Err(unmade) => {
+            failed.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push((index, unmade));
+            Polygon::outside_view(String::new(), 0, None)
+        }
+    });
+    made.par_extend(polygons);
     let mut failed = failed.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
     if failed.iter().any(|(_, unmade)| matches!(unmade, Unmade::Unread)) {
         return Err(Unmade::Unread);
@@ -590,7 +589,7 @@ fn with_made<P: Send>(
         return Err(unmade);
     }
     scene.effects.transparency = transparency.into_inner();
-    scene.polygons = polygons;
+    scene.polygons = made;
     Ok(scene)
 }
 
