@@ -162,16 +162,24 @@ impl Window {
 
 /// One validated polygon.
 ///
-/// Laid out as written (`repr(C)`): first what drawing reads of every
-/// polygon (its value, how it was clipped, its geometry), within
-/// [`Polygon::DRAWN_BYTES`], then what only reports and effects read, so that
-/// a run asks the memory for the first part alone
-/// ([`crate::simulate::setup::prefetch_polygon`]).
+/// Laid out as written (`repr(C)`): in its first cache line what binning
+/// reads of every polygon (its bounding cells and which way it faces, made
+/// with its geometry, and how it was clipped), then what drawing reads (its
+/// value and geometry) within [`Polygon::DRAWN_BYTES`], then what only
+/// reports and effects read, so that a run asks the memory for those parts
+/// alone ([`crate::simulate::setup::prefetch_polygon`]).
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[repr(C)]
 pub struct Polygon {
     /// The framebuffer value it writes; fits `frame_bits`.
     pub value: u32,
+    /// Whether Newell's normal vanishes ([`Geometry::is_degenerate`]).
+    degenerate: bool,
+    /// Which way it faces (the sign of Newell's `c`); `None` edge-on.
+    winding: Option<Winding>,
+    /// The cells holding its bounding box ([`Geometry::cells`]), beyond
+    /// 64 bits as the nearest that fit.
+    cells: [i64; 4],
     /// How the polygon fared against the near plane.
     pub clip: Clip,
     /// Its scaled integer geometry and plane, made from its vertices.
@@ -209,7 +217,31 @@ impl Polygon {
     ) -> Result<Polygon, GeometryError> {
         let geometry = Geometry::from_exact(&vertices)?;
         let vertices = Vertices::beside(&geometry, vertices);
-        Ok(Polygon { name, value, vertices, geometry, opacity, eye_vertices, clip })
+        Ok(Polygon::made(name, value, (vertices, geometry), opacity, eye_vertices, clip))
+    }
+
+    /// The polygon with what binning reads made from its geometry.
+    fn made(
+        name: String,
+        value: u32,
+        (vertices, geometry): (Vertices, Geometry),
+        opacity: Option<Q>,
+        eye_vertices: Option<Vec<[Exact; 3]>>,
+        clip: Clip,
+    ) -> Polygon {
+        let nearest = |cell: i128| cell.clamp(i128::from(i64::MIN), i128::from(i64::MAX)) as i64;
+        Polygon {
+            value,
+            degenerate: geometry.is_degenerate(),
+            winding: Winding::of(geometry.c()),
+            cells: geometry.cells().map(nearest),
+            clip,
+            geometry,
+            name,
+            vertices,
+            opacity,
+            eye_vertices,
+        }
     }
 
     /// A polygon given in clip space that lies wholly outside the view
@@ -219,8 +251,7 @@ impl Polygon {
         let (zero, one) = (Q::from_integer(0), Q::from_integer(1));
         let geometry = Geometry::new(&[[zero, zero, zero], [one, zero, zero], [zero, one, zero]])
             .expect("a unit triangle is a polygon");
-        let vertices = Vertices::Kept(Vec::new());
-        Polygon { name, value, vertices, geometry, opacity, eye_vertices: None, clip: Clip::ViewAway }
+        Polygon::made(name, value, (Vertices::Kept(Vec::new()), geometry), opacity, None, Clip::ViewAway)
     }
 
     /// Its vertices, exact, in pixel units (mapped through the scene's
@@ -249,7 +280,26 @@ impl Polygon {
     pub fn with_vertices(&self, vertices: Vec<[Exact; 3]>) -> Result<Polygon, GeometryError> {
         let geometry = Geometry::from_exact(&vertices)?;
         let vertices = Vertices::beside(&geometry, vertices);
-        Ok(Polygon { vertices, geometry, ..self.clone() })
+        let (name, opacity, eye_vertices) = (self.name.clone(), self.opacity, self.eye_vertices.clone());
+        Ok(Polygon::made(name, self.value, (vertices, geometry), opacity, eye_vertices, self.clip))
+    }
+
+    /// Whether Newell's normal vanishes (as [`Geometry::is_degenerate`], read
+    /// from the polygon's first cache line).
+    pub fn is_degenerate(&self) -> bool {
+        self.degenerate
+    }
+
+    /// Which way it faces, `None` edge-on (as `Winding::of` Newell's `c`).
+    pub fn winding(&self) -> Option<Winding> {
+        self.winding
+    }
+
+    /// The cells holding its bounding box: lowest and highest column, lowest
+    /// and highest row (as [`Geometry::cells`], beyond 64 bits the nearest
+    /// that fit).
+    pub fn cells(&self) -> [i64; 4] {
+        self.cells
     }
 
     /// The same polygon moved by `by` in x and in y (z unchanged): where
@@ -395,13 +445,18 @@ impl fmt::Display for Winding {
 
 #[cfg(test)]
 mod tests {
-    /// What drawing reads of a polygon comes first and takes fewer cache
-    /// lines than the whole record (the names, opacity and eye-space
-    /// vertices after it are read only by reports and effects).
+    /// What binning reads of a polygon fits its first cache line; what
+    /// drawing reads comes next and takes fewer lines than the whole record
+    /// (the names, opacity and eye-space vertices after it are read only by
+    /// reports and effects).
     #[test]
-    fn what_drawing_reads_of_a_polygon_comes_first() {
+    fn what_binning_and_drawing_read_of_a_polygon_comes_first() {
         use std::mem::{offset_of, size_of};
-        let drawn = Polygon::DRAWN_BYTES;
+        let (binned, drawn) = (offset_of!(Polygon, clip) + size_of::<Clip>(), Polygon::DRAWN_BYTES);
+        assert!(binned <= 64, "{binned} bytes binned");
+        for field in [offset_of!(Polygon, degenerate), offset_of!(Polygon, winding), offset_of!(Polygon, cells)] {
+            assert!(field < binned);
+        }
         for field in [offset_of!(Polygon, value), offset_of!(Polygon, clip), offset_of!(Polygon, geometry)] {
             assert!(field < drawn);
         }
@@ -414,6 +469,33 @@ mod tests {
             assert!(field >= drawn, "{field} within the first {drawn} bytes");
         }
         assert!(drawn.div_ceil(64) < size_of::<Polygon>().div_ceil(64), "{drawn} of {} bytes", size_of::<Polygon>());
+    }
+
+    /// What binning reads is what the geometry says, on every tier: a
+    /// polygon, a degenerate one, an edge-on one, each winding, one beyond
+    /// 64-bit cells.
+    #[test]
+    fn what_binning_reads_agrees_with_the_geometry() {
+        let e = |v: i128| Exact::Word(Q::from_integer(v));
+        let polygon = |points: [[i128; 3]; 3]| {
+            let vertices = points.iter().map(|p| p.map(e)).collect();
+            Polygon::new(String::new(), 1, vertices, None, None, Clip::NotClipped).expect("a polygon")
+        };
+        let huge = 1i128 << 70;
+        for points in [
+            [[0, 0, 0], [4, 0, 1], [0, 3, 2]],
+            [[0, 0, 0], [0, 3, 2], [4, 0, 1]],
+            [[0, 0, 0], [1, 1, 1], [2, 2, 2]],
+            [[0, 0, 0], [0, 0, 5], [4, 0, 1]],
+            [[-huge, 0, 0], [huge, 0, 1], [0, huge, 2]],
+        ] {
+            let polygon = polygon(points);
+            let geometry = polygon.geometry();
+            assert_eq!(polygon.is_degenerate(), geometry.is_degenerate(), "{points:?}");
+            assert_eq!(polygon.winding(), Winding::of(geometry.c()), "{points:?}");
+            let nearest = geometry.cells().map(|c| c.clamp(i128::from(i64::MIN), i128::from(i64::MAX)));
+            assert_eq!(polygon.cells().map(i128::from), nearest, "{points:?}");
+        }
     }
 
     use super::*;

@@ -2,10 +2,9 @@
 //! whether it is drawn at all, the pixels its bounding box can cover, its data
 //! asked into the cache ahead of time; and the counts of a run.
 
-use crate::geometry::plane::Geometry;
 use crate::numbers::{Exact, Q};
 use crate::raster::sink::PixelRect;
-use crate::scene::{Polygon, Scene, Winding};
+use crate::scene::{Polygon, Scene};
 use crate::simulate::events::Fate;
 
 /// Counts of a run so far.
@@ -21,12 +20,12 @@ pub struct Stats {
 
 /// The pixels a polygon's bounding box can cover (centres or cells), clipped
 /// to the raster; `None` when it lies outside.
-pub(super) fn pixel_bounds(geometry: &Geometry, width: u32, height: u32) -> Option<PixelRect> {
-    let [x0, x1, y0, y1] = geometry.cells();
+pub(super) fn pixel_bounds(polygon: &Polygon, width: u32, height: u32) -> Option<PixelRect> {
+    let [x0, x1, y0, y1] = polygon.cells();
     // Widen by one cell each way for safety.
-    let clamp = |v: i128, max: u32| v.clamp(0, i128::from(max) - 1) as u32;
-    let (c0, c1, r0, r1) = (x0 - 1, x1 + 1, y0 - 1, y1 + 1);
-    if c1 < 0 || r1 < 0 || c0 >= i128::from(width) || r0 >= i128::from(height) {
+    let clamp = |v: i64, max: u32| v.clamp(0, i64::from(max) - 1) as u32;
+    let (c0, c1, r0, r1) = (x0.saturating_sub(1), x1.saturating_add(1), y0.saturating_sub(1), y1.saturating_add(1));
+    if c1 < 0 || r1 < 0 || c0 >= i64::from(width) || r0 >= i64::from(height) {
         return None;
     }
     Some(PixelRect { columns: (clamp(c0, width), clamp(c1, width)), rows: (clamp(r0, height), clamp(r1, height)) })
@@ -101,7 +100,7 @@ pub(super) fn prefetch_cells<F>(scene: &Scene, index: usize, (frame, depth): (&[
     const ROWS: u32 = 64;
     const CELLS: u32 = 256;
     let Some(polygon) = scene.polygons.get(index) else { return };
-    let Some(rect) = pixel_bounds(polygon.geometry(), scene.width, scene.height) else { return };
+    let Some(rect) = pixel_bounds(polygon, scene.width, scene.height) else { return };
     let (rows, columns) = (rect.rows, rect.columns);
     if rows.1 - rows.0 >= ROWS || columns.1 - columns.0 >= CELLS {
         return;
@@ -144,8 +143,8 @@ pub fn fate(scene: &Scene, index: usize) -> Fate {
         crate::scene::perspective::Clip::ViewAway => return Fate::OutsideView,
         _ => {}
     }
-    let geometry = polygon.geometry();
-    if geometry.is_degenerate() {
+    // Read from the polygon's first cache line (binning asks every polygon).
+    if polygon.is_degenerate() {
         return Fate::Degenerate;
     }
     if let Some(bound) = scene.rules.min_area
@@ -153,12 +152,10 @@ pub fn fate(scene: &Scene, index: usize) -> Fate {
     {
         return Fate::SmallArea;
     }
-    if geometry.c() == 0 {
-        return Fate::EdgeOn;
-    }
+    let Some(winding) = polygon.winding() else { return Fate::EdgeOn };
     // The winding matters only when culling is on (and its sign comes as it comes).
     match scene.effects.cull {
-        Some(cull) if Winding::of(geometry.c()) == Some(cull) => Fate::Culled(cull),
+        Some(cull) if winding == cull => Fate::Culled(cull),
         _ => Fate::Drawn,
     }
 }

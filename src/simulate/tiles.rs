@@ -253,7 +253,7 @@ fn bins_in_order(scene: &Scene, polygons: std::ops::Range<usize>, tile: u32) -> 
         if fate(scene, index) != Fate::Drawn {
             continue;
         }
-        let Some(rect) = pixel_bounds(scene.polygons[index].geometry(), scene.width, scene.height) else { continue };
+        let Some(rect) = pixel_bounds(&scene.polygons[index], scene.width, scene.height) else { continue };
         for ty in rect.rows.0 / tile..=rect.rows.1 / tile {
             for tx in rect.columns.0 / tile..=rect.columns.1 / tile {
                 bins[(ty * tiles_x + tx) as usize].push(index as u32);
