@@ -57,6 +57,7 @@ impl<'s> Levels<'_, 's> {
             depth,
             stats: &mut *self.stats,
             observer,
+            eight: None,
         };
         if !(edge_functions && sink.small_triangle(polygon.geometry(), self.scene.rules, rect)) {
             rasterize(polygon.geometry(), self.scene.rules, rect, self.scratch, &mut sink);
@@ -146,6 +147,9 @@ pub(super) struct LevelSink<'a, O, F> {
     pub(super) depth: &'a mut [u32],
     pub(super) stats: &'a mut Stats,
     pub(super) observer: &'a mut O,
+    /// The polygon's step in 32-bit lanes for its short spans, made at its
+    /// first span ([`lanes::EightLanes`]; the inner `None`: its values do not fit them).
+    pub(super) eight: Option<Option<lanes::EightLanes>>,
 }
 
 impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
@@ -173,35 +177,38 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         if !W::NARROW && (i128::from(denominator) >= LIMIT || reach() >= LIMIT) {
             return false;
         }
-        let start = self.origin.cell(first, row);
-        let cells = start..=start + (last - first) as usize;
+        let cell = self.origin.cell(first, row);
+        let length = (last - first) as usize + 1;
         let (start, step) = (Stepped { whole, remainder }, Stepped { whole: step_whole, remainder: step_remainder });
         // The book's test compiled with its constants, as a small triangle's.
         let written = if self.test == DepthTest::Greater {
-            self.span_cells::<true>(cells, start, denominator, step)
+            self.span_cells::<true>((cell, length), start, denominator, step)
         } else {
-            self.span_cells::<false>(cells, start, denominator, step)
+            self.span_cells::<false>((cell, length), start, denominator, step)
         };
         self.stats.tested += u64::from(last - first) + 1;
         self.stats.written += written;
         true
     }
 
-    /// A span's cells, each rewritten with its old or its new value, from the
-    /// depth at the first as whole part and remainder with its denominator and
-    /// step; `GREATER` as `LevelSink::box_rows` takes it. Returns how many
-    /// were written.
+    /// A span's `length` cells from cell `cell`, each rewritten with its old
+    /// or its new value, from the depth at the first as whole part and
+    /// remainder with its denominator and step; `GREATER` as
+    /// `LevelSink::box_rows` takes it. The lanes may rewrite cells after the
+    /// span with their own values ([`lanes::span`]). Returns how many were
+    /// written.
     #[inline(always)]
     fn span_cells<const GREATER: bool>(
         &mut self,
-        cells: std::ops::RangeInclusive<usize>,
+        (cell, length): (usize, usize),
         depth: Stepped,
         denominator: i64,
         step: Stepped,
     ) -> u64 {
         let write = self.cell_write::<GREATER>();
-        let cells = (&mut self.depth[cells.clone()], &mut self.frame[cells]);
-        lanes::span::<F, GREATER>(cells, depth, step, denominator, write)
+        let eight = self.eight.get_or_insert_with(|| lanes::EightLanes::new(step, denominator, write)).as_ref();
+        let cells = (&mut self.depth[cell..], &mut self.frame[cell..]);
+        lanes::span::<F, GREATER>(cells, length, (depth, step, denominator), eight, write)
     }
 
     /// What the branch-free loops write: `GREATER`, the book's test with its
