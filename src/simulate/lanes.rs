@@ -1,12 +1,13 @@
-//! A span's cells four at a time in AVX2's 256-bit registers, where the
-//! processor has them and the span is long enough ([`span`]): lane `k`
-//! holds the depth of a chunk's cell `k` as whole part and remainder (64-bit
-//! each) and steps four cells a chunk, the carry a compare and a masked
+//! A span's cells several at a time in AVX2's 256-bit registers, where the
+//! processor has them ([`span`]): spans of up to 32 cells eight at a time
+//! in 32-bit lanes when the polygon's values fit them ([`span_eight`]),
+//! others from 16 cells on four at a time in 64-bit lanes ([`span_avx2`]).
+//! Lane `k` holds the depth of a chunk's cell `k` as whole part and
+//! remainder and steps a chunk at once, the carry a compare and a masked
 //! subtraction; the test, the rounding, the saturation and the store are the
-//! branch-free cell's ([`super::branch_free::test_and_store`]) on all four
-//! lanes, the last cells of the span one at a time. Its specification is
-//! [`super::branch_free::cell_by_cell`], as the proptest
-//! `lanes_decide_as_the_cell_does` holds it.
+//! branch-free cell's ([`super::branch_free::test_and_store`]) on every lane.
+//! Its specification is [`super::branch_free::cell_by_cell`], as the
+//! proptest `lanes_decide_as_the_cell_does` holds it.
 
 #[cfg(target_arch = "x86_64")]
 use std::arch::x86_64::{
@@ -25,7 +26,7 @@ use crate::simulate::buffer::FrameCell;
 #[cfg(target_arch = "x86_64")]
 const LANES: usize = 4;
 
-/// The fewest cells a span drawn in lanes has.
+/// The fewest cells a span drawn in 64-bit lanes has.
 #[cfg(target_arch = "x86_64")]
 const LONG_SPAN: usize = 16;
 
@@ -34,13 +35,13 @@ const LONG_SPAN: usize = 16;
 /// `step` per cell; returns how many were written. The span is the first
 /// `length` cells of `cells`, which may hold more after it (left as they
 /// are). `GREATER`: the test is the book's `z > stored`, its constants known
-/// to the compiler. Where the processor has AVX2: a span of [`LONG_SPAN`]
-/// cells or more four cells at a time in 64-bit lanes ([`span_avx2`]); a
-/// shorter one eight cells at a time in 32-bit lanes when its polygon's
-/// values fit them (`eight`, [`EightLanes::new`]) and the cells hold whole
-/// chunks from its start ([`span_eight`]), a chunk's cells past the span
-/// rewritten with their own values. The decisions are the same (the proptest
-/// `lanes_decide_as_the_cell_does`).
+/// to the compiler. Where the processor has AVX2: a span of up to
+/// [`EightLanes::LONGEST`] cells eight at a time in 32-bit lanes when its
+/// polygon's values fit them (`eight`, [`EightLanes::new`]) and the cells
+/// hold whole chunks from its start ([`span_eight`]), a chunk's cells past
+/// the span rewritten with their own values; else a span of [`LONG_SPAN`]
+/// cells or more four at a time in 64-bit lanes ([`span_avx2`]). The
+/// decisions are the same (the proptest `lanes_decide_as_the_cell_does`).
 #[inline(always)]
 pub(super) fn span<F: FrameCell, const GREATER: bool>(
     (depth, frame): (&mut [u32], &mut [F]),
