@@ -92,7 +92,9 @@ impl Buffers {
         threads: usize,
     ) -> Buffers {
         let cells = width as usize * height as usize;
-        let pool = clearing_pool(cells, threads);
+        // Threads only where cells are written now: zeros are left unwritten (`Cells::new`).
+        let written = background != 0 || !matches!(clear_depth, Stored::Level(0));
+        let pool = if written { clearing_pool(cells, threads) } else { None };
         let pool = pool.as_ref();
         let depth = match clear_depth {
             Stored::Level(level) => DepthCells::Levels(Cells::new(cells, level, pool)),

@@ -70,6 +70,8 @@ pub(super) fn span<F: FrameCell, const GREATER: bool>(
             return unsafe { span_avx2::<F, GREATER>(cells, start, step, denominator, write) };
         }
     }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = eight;
     cell_by_cell((&mut depth[..length], &mut frame[..length]), start, step, denominator, write)
 }
 
@@ -81,6 +83,8 @@ const EIGHT: usize = 8;
 /// cell (`k` steps, as whole part and remainder), eight steps as one, the
 /// denominator, and the test's constants in 32 bits.
 #[derive(Debug, Clone, Copy)]
+// Only x86-64's AVX2 reads them: elsewhere a polygon's lanes are made and left unread.
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
 pub(super) struct EightLanes {
     whole: [i32; EIGHT],
     remainder: [i32; EIGHT],
@@ -90,6 +94,7 @@ pub(super) struct EightLanes {
     threshold: i32,
 }
 
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
 impl EightLanes {
     /// A span's first whole part must lie below this for its lanes to fit 32
     /// bits (with the bounds [`EightLanes::new`] checks, every whole part,

@@ -208,10 +208,18 @@ impl LevelCells for Tiles<'_> {
         };
         use rayon::prelude::*;
         let bands: Vec<_> = bands.collect();
+        // One tile copy a thread (rayon's `map_init` makes one a job, and a
+        // fresh one's pages are each a fault): the thread's own, never waited for.
+        let copies: Vec<std::sync::Mutex<TileCopy<F>>> =
+            (0..pool.current_num_threads()).map(|_| std::sync::Mutex::new(TileCopy::default())).collect();
         let stats = pool.install(|| {
             bands
                 .into_par_iter()
-                .map_init(TileCopy::default, |copy_cells, (ty, cells)| self.band(ty as u32, cells, copy_cells))
+                .map(|(ty, cells)| {
+                    let thread = rayon::current_thread_index().unwrap_or(0) % copies.len();
+                    let mut copy = copies[thread].lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+                    self.band(ty as u32, cells, &mut copy)
+                })
                 .reduce(Stats::default, add)
         });
         (stats, pool.current_num_threads())
