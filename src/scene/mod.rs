@@ -445,6 +445,8 @@ impl fmt::Display for Winding {
 
 #[cfg(test)]
 mod tests {
+    use super::*;
+
     /// What binning reads of a polygon fits its first cache line; what
     /// drawing reads comes next and takes fewer lines than the whole record
     /// (the names, opacity and eye-space vertices after it are read only by
@@ -497,8 +499,6 @@ mod tests {
             assert_eq!(polygon.cells().map(i128::from), nearest, "{points:?}");
         }
     }
-
-    use super::*;
 
     fn parse(text: &str) -> Result<Scene, String> {
         Scene::from_json(Lang::En, text, Path::new("s.json")).map_err(|e| e.message(Lang::En))

@@ -12,7 +12,7 @@ use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent,
 use crate::simulate::levels::{InOrder, Levels, OnePolygon};
 use crate::simulate::setup::{Stats, fate, prefetch_ahead};
 use crate::simulate::stages::{PixelStages, Plain, StageSet, WithEffects};
-use crate::simulate::tiles::{Cleared, Tiles, Tiling, bins, pool};
+use crate::simulate::tiles::{Cleared, TileStart, Tiles, Tiling, bins, pool};
 
 /// One polygon drawn, with its own counts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -105,7 +105,7 @@ impl<'s> Simulation<'s> {
     pub fn redraw(&mut self, tile: u32, threads: usize, band_done: &(dyn Fn() + Sync)) -> usize {
         let scene = self.scene;
         match (self.plain_levels(), &scene.clear_depth) {
-            (Some(levels), Stored::Level(_)) if tile > 0 && self.buffers.holds_levels() => {
+            (Some(levels), Stored::Level(_)) if tile > 0 => {
                 self.next = 0;
                 self.stats = Stats::default();
                 let tiling = Tiling { tile, threads: threads.max(1), band_done };
@@ -216,12 +216,16 @@ impl<'s> Simulation<'s> {
                 let bins = bins(scene, first..end, tiling.tile, pool.as_ref());
                 // Before the first polygon every cell holds the clear values (only drawing,
                 // which moves `next` on, writes the buffers).
-                let cleared = match scene.clear_depth {
-                    Stored::Level(level) if first == 0 => Some(Cleared { frame: scene.background, depth: level }),
-                    _ => None,
+                let start = match (&scene.clear_depth, clearing) {
+                    (&Stored::Level(depth), Clearing::Tiles) => {
+                        TileStart::Clearing(Cleared { frame: scene.background, depth })
+                    }
+                    (&Stored::Level(depth), Clearing::Done) if first == 0 => {
+                        TileStart::Cleared(Cleared { frame: scene.background, depth })
+                    }
+                    _ => TileStart::Buffers,
                 };
-                let clear_empty = clearing == Clearing::Tiles;
-                let tiles = Tiles { scene, test, depth_max, bins, tiling, pool: pool.as_ref(), cleared, clear_empty };
+                let tiles = Tiles { scene, test, depth_max, bins, tiling, pool: pool.as_ref(), start };
                 let (stats, threads) =
                     self.buffers.with_level_cells(tiles).expect("plain levels imply a level z-buffer");
                 self.stats.tested += stats.tested;

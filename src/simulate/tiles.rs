@@ -31,15 +31,26 @@ pub(super) struct Tiles<'a> {
     pub(super) tiling: Tiling<'a>,
     /// The threads that draw the bands, when more than one does.
     pub(super) pool: Option<&'a rayon::ThreadPool>,
-    /// The values every cell holds, when no polygon has been drawn yet: a
-    /// tile's copy then starts from them instead of from the buffers, whose
-    /// memory is first touched when the tile is copied back
-    /// ([`crate::simulate::buffer::Buffers::new`] leaves fresh buffers of zeros unwritten).
-    pub(super) cleared: Option<Cleared>,
-    /// Whether the tiles without polygons are set to the `cleared` values
-    /// too ([`crate::simulate::simulation::Simulation::redraw`]: the buffers
-    /// are then not cleared beforehand).
-    pub(super) clear_empty: bool,
+    /// What each tile's copy starts from.
+    pub(super) start: TileStart,
+}
+
+/// What a tile's copy starts from, and whether the tiles without polygons
+/// are written.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum TileStart {
+    /// The buffers' cells, copied in (polygons were drawn before); tiles
+    /// without polygons are left as they are.
+    Buffers,
+    /// The clear values, which every cell holds before the first polygon;
+    /// tiles without polygons are left as they are, so that fresh buffers'
+    /// memory is first touched when a tile is copied back
+    /// ([`crate::simulate::buffer::Buffers::new`] leaves zeros unwritten).
+    Cleared(Cleared),
+    /// The clear values, whatever the buffers hold; tiles without polygons
+    /// are set to them too ([`crate::simulate::simulation::Simulation::redraw`]:
+    /// the buffers are then not cleared beforehand).
+    Clearing(Cleared),
 }
 
 /// The values of a cleared framebuffer cell and z-buffer cell.
@@ -79,7 +90,7 @@ impl Tiles<'_> {
             };
             let width = (rect.columns.1 - rect.columns.0 + 1) as usize;
             if bin.is_empty() {
-                if let Some(cleared) = self.cleared.filter(|_| self.clear_empty) {
+                if let TileStart::Clearing(cleared) = self.start {
                     for row in rect.rows.0..=rect.rows.1 {
                         let from = band.cell(rect.columns.0, row);
                         frame[from..from + width].fill(F::from_value(cleared.frame));
@@ -91,7 +102,7 @@ impl Tiles<'_> {
             let origin = Origin { column: rect.columns.0, row: rect.rows.0, stride: width };
             let copy = |row: u32| (band.cell(rect.columns.0, row), origin.cell(rect.columns.0, row));
             let cells = width * (rect.rows.1 - rect.rows.0 + 1) as usize;
-            if let Some(cleared) = self.cleared {
+            if let TileStart::Cleared(cleared) | TileStart::Clearing(cleared) = self.start {
                 tile_frame[..cells].fill(F::from_value(cleared.frame));
                 tile_depth[..cells].fill(cleared.depth);
             } else {
@@ -208,8 +219,8 @@ impl LevelCells for Tiles<'_> {
         };
         use rayon::prelude::*;
         let bands: Vec<_> = bands.collect();
-        // One tile copy a thread (rayon's `map_init` makes one a job, and a
-        // fresh one's pages are each a fault): the thread's own, never waited for.
+        // One tile copy a thread, the thread's own and never waited for (one
+        // a job, as rayon's `map_init` makes them, paid a fault a fresh page).
         let copies: Vec<std::sync::Mutex<TileCopy<F>>> =
             (0..pool.current_num_threads()).map(|_| std::sync::Mutex::new(TileCopy::default())).collect();
         let stats = pool.install(|| {
