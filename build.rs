@@ -11,7 +11,7 @@ fn main() {
     let Some(folder) = std::env::var_os("ZSIM_PLAYGROUND") else { return };
     let folder = std::path::PathBuf::from(folder);
     let out = std::path::PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
-    for name in ["index.html", "playground.js", "playground.css", "zsim_web.js", "zsim_web_bg.wasm"] {
+    for name in ["index.html", "playground.js", "playground.css", "zsim_web.js", "zsim_module.js"] {
         let from = folder.join(name);
         println!("cargo::rerun-if-changed={}", from.display());
         if let Err(error) = std::fs::copy(&from, out.join(name)) {

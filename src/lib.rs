@@ -180,7 +180,9 @@ pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, Sc
 pub use simulate::setup::{Stats, fate};
 pub use simulate::simulation::{Drawn, Simulation};
 pub use simulate::stages::{StageSet, describe};
-pub use teach::{check, class, diagnose, exercise, grade, gradebooks, gradescope, page, playground, step, stop};
+pub use teach::{
+    check, class, diagnose, exercise, grade, gradebooks, gradescope, lesson, page, playground, step, stop,
+};
 pub use words::{
     Arg, Lang, localize_decimal, polygon_label, printable, shown_name, shown_path, text as message, token,
 };

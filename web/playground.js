@@ -1,8 +1,10 @@
 // The playground's page: it shows what zsim's library (compiled to
 // WebAssembly, `wasm_bindgen` below) says of the scene, and asks the library
 // for every verdict. It holds no rule of its own: editing the scene, the
-// buffers, the quiz's verdicts, a homework's check and the words all come
-// from the module.
+// buffers, the stepper and its quiz (one library object, `WebLesson`: what
+// may be shown, what is asked, each verdict and the score), a homework's
+// check and the words all come from the module. The address is the state:
+// `#scene=…&polygon=P&scanline=Y&quiz=K&pixel=X,Y`.
 "use strict";
 (function () {
   const $ = (id) => document.getElementById(id);
@@ -18,11 +20,13 @@
     for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
     return e;
   };
-  // Framebuffer values as colours (0, the usual background, is white).
-  const PALETTE = ["#ffffff", "#56b4e9", "#e69f00", "#009e73", "#f0e442", "#0072b2", "#d55e00", "#cc79a7"];
-  let z, lang = "en", words = {}, scene = "", view = null, at = 0, drag = null;
-  // What the shown stop shows, from the library (with the view, or asked when the stop changes).
-  let shownStop = null;
+  let z, lang = "en", words = {}, scene = "", view = null, drag = null;
+  // The stepper and its quiz (the library's object) and what it last said it shows.
+  let lesson = null, lessonState = null, lessonScene = null;
+  // The pixel whose history is shown, and the keyboard's pixel cursor on the raster.
+  let picked = null, cursor = null;
+  // Framebuffer values as colours: the library's (the figure's), 0 white.
+  const colour = (value) => value === 0 || !view ? "#ffffff" : view.palette[(value - 1) % view.palette.length];
 
   function call(name, ...args) { return JSON.parse(z[name](lang, ...args)); }
 
@@ -35,6 +39,9 @@
     $("title").textContent = words.title;
     $("intro").textContent = words.intro;
     document.querySelectorAll("[data-word]").forEach((e) => { e.textContent = words[e.dataset.word]; });
+    document.querySelectorAll("[data-aria-word]").forEach((e) => { e.setAttribute("aria-label", words[e.dataset.ariaWord]); });
+    renderExamples();
+    if (lesson) lesson.set_language(lang);
     document.querySelectorAll(".frameName").forEach((e) => { e.textContent = words.frameName; });
     document.querySelectorAll(".depthName").forEach((e) => { e.textContent = words.depthName; });
     setScene(scene, true);
@@ -44,8 +51,9 @@
   function setScene(text, keepEditor) {
     scene = text;
     if (!keepEditor || $("json").value !== text) $("json").value = text;
-    const next = JSON.parse(z.view(lang, text, at));
+    const next = JSON.parse(z.view(lang, text, 0));
     $("json").classList.toggle("invalid", !next.ok);
+    $("json").setAttribute("aria-invalid", String(!next.ok));
     $("error").textContent = next.ok ? "" : next.error;
     // What is drawn is the last scene that could be read: dimmed while the text is not one.
     $("view").classList.toggle("stale", !next.ok);
@@ -54,13 +62,43 @@
       ["framebuffer", "zbuffer", "afterFrame", "afterDepth", "explain"].forEach((id) => { $(id).textContent = ""; });
       return;
     }
-    const sameStops = view && view.stops.length === next.stops.length;
     view = next;
-    if (!sameStops) at = 0;
-    at = Math.min(at, Math.max(0, view.stops.length - 1));
-    // The view brings what the current stop shows: no second tracing of the scene.
-    if (view.stop && sameStops) shownStop = { scene, at, lang, data: Object.assign({ ok: true }, view.stop) };
+    // The lesson follows the scene, staying on the same polygon and row where it still can; in
+    // another language it goes on where it was, score and all.
+    if (!lesson || lessonScene !== text) newLesson(lessonState && lessonState.at);
+    else lessonState = JSON.parse(lesson.state());
     render();
+    writeAddress(false);
+  }
+
+  // The quiz asked: "depth", "frame", "coverage", or "" for none.
+  function quizMode() { return $("quiz").checked ? $("quizKind").value : ""; }
+
+  // A new lesson of the scene (the quiz as chosen) at `place` ({polygon, row}), or at its first stop.
+  function newLesson(place) {
+    if (lesson) lesson.free();
+    lesson = null;
+    lessonState = null;
+    lessonScene = null;
+    if (!view || !view.cellByCell) return;
+    try {
+      lesson = new z.WebLesson(lang, scene, quizMode(), place ? place.polygon : 0, place ? place.row : 0);
+    } catch (e) { return; }
+    lessonScene = scene;
+    lessonState = JSON.parse(lesson.state());
+    $("said").textContent = "";
+  }
+
+  // Sends the lesson a command ({key}, {go: [polygon, row]}, {answer}) and shows what it said.
+  function act(command) {
+    if (!lesson) return;
+    const result = JSON.parse(lesson.act(JSON.stringify(command)));
+    if (!result.ok) return;
+    lessonState = result.state;
+    $("said").textContent = result.said;
+    $("said").className = result.kind;
+    renderLesson();
+    if (result.kind === "moved") writeAddress(true);
   }
 
   function edit(change) {
@@ -86,9 +124,11 @@
     $("framebuffer").textContent = view.framebuffer;
     $("zbuffer").textContent = view.zbuffer;
     renderAfter();
-    renderStop();
+    renderLesson();
     renderHomeworkChoices();
     renderFigure();
+    // The pixel's history follows every edit.
+    if (picked) explainPixel(picked.x, picked.y);
   }
 
   // The figure, drawn by the library when its section is open.
@@ -116,6 +156,7 @@
       const value = el("input", undefined, "value");
       value.value = polygon.value === undefined ? "" : polygon.value;
       value.dataset.p = p;
+      value.setAttribute("aria-label", `${words.polygon} ${p + 1}: ${words.value}`);
       value.onchange = () => edit({ op: "set", path: ["polygons", p, "value"], value: value.value });
       valueCell.appendChild(value);
       head.appendChild(valueCell);
@@ -158,12 +199,19 @@
     });
   }
 
-  // The raster: each cell filled by the final framebuffer, outlines, and vertices to drag.
+  // The framebuffer the raster shows, rows top first: in the quiz the lesson's (what may be
+  // shown so far), otherwise the final one.
+  function shownFrame() {
+    if (quizMode() && lessonState && lessonState.cells) return lessonState.cells;
+    return view.cellByCell ? view.framebuffer.trim().split("\n").map((r) => r.trim().split(/\s+/).map(Number)) : [];
+  }
+
+  // The raster: each cell filled by the framebuffer, outlines, vertices to drag, and the lesson's scanline.
   function renderGrid(object) {
     const grid = $("grid"), w = view.width, h = view.height;
     grid.setAttribute("viewBox", `0 0 ${w} ${h}`);
-    // Cell by cell only where the library shows the scene so (a few thousand cells).
-    const rows = view.cellByCell ? view.framebuffer.trim().split("\n").map((r) => r.trim().split(/\s+/).map(Number)) : [];
+    grid.setAttribute("aria-label", words.gridLabel);
+    const rows = shownFrame();
     // The cells as one piece of markup (numbers only), made once for a raster's size; an edit
     // recolours them and redraws only the outlines and vertices.
     const size = `${w}x${h}:${rows.length}`;
@@ -177,20 +225,18 @@
     } else {
       grid.querySelectorAll(":scope > :not(.cell)").forEach((e) => e.remove());
     }
-    const cells = grid.children;
-    rows.forEach((row, i) => row.forEach((value, x) => {
-      const fill = PALETTE[value % PALETTE.length], cell = cells[i * w + x];
-      if (cell.getAttribute("fill") !== fill) cell.setAttribute("fill", fill);
-    }));
+    colourCells(rows);
     // Only a scene in pixel units can be dragged: its vertices are the raster's coordinates.
     const draggable = !object.window && !(object.effects && object.effects.perspective);
+    // A handle at least 24 px across on any screen (26, for rounding).
+    const pixelsPerUnit = Math.max(1, grid.clientWidth || 640) / w;
+    const radius = Math.max(0.35, w / 90, 13 / pixelsPerUnit);
     view.polygons.forEach((polygon, p) => {
-      const colour = PALETTE[polygon.value % PALETTE.length];
       const points = polygon.outline.map(([x, y]) => `${x},${h - y}`).join(" ");
       grid.appendChild(svg("polygon", { points, class: "outline", stroke: "#333" }));
       if (!draggable) return;
       polygon.outline.forEach(([x, y], v) => {
-        const handle = svg("circle", { cx: x, cy: h - y, r: Math.max(0.35, w / 90), class: "vertex", fill: colour });
+        const handle = svg("circle", { cx: x, cy: h - y, r: radius, class: "vertex", fill: colour(polygon.value) });
         handle.dataset.p = p;
         handle.dataset.v = v;
         handle.addEventListener("pointerdown", (e) => {
@@ -201,6 +247,49 @@
         grid.appendChild(handle);
       });
     });
+    renderLegend(rows);
+  }
+
+  function colourCells(rows) {
+    const cells = $("grid").children, w = view.width;
+    rows.forEach((row, i) => row.forEach((value, x) => {
+      const fill = colour(value), cell = cells[i * w + x];
+      if (cell && cell.getAttribute("fill") !== fill) cell.setAttribute("fill", fill);
+    }));
+  }
+
+  // Which colour is which value: each value the raster shows.
+  function renderLegend(rows) {
+    const values = [...new Set(rows.flat())].sort((a, b) => a - b);
+    const items = values.map((v) => {
+      const item = el("span", words.legendValue.replace("{value}", v), "legendItem");
+      const swatch = el("span", undefined, "swatch");
+      swatch.style.background = colour(v);
+      item.prepend(swatch);
+      return item;
+    });
+    $("legend").replaceChildren(...(items.length ? [el("span", words.legend + " "), ...items] : []));
+  }
+
+  // The lesson's scanline on the raster: the line y + ½, its crossings and covered cells once
+  // they may be shown, the pixel asked, and the keyboard's cursor.
+  function drawLesson() {
+    const grid = $("grid");
+    if (!view) return;
+    grid.querySelectorAll(".lesson").forEach((e) => e.remove());
+    if (quizMode() && lessonState && lessonState.cells) colourCells(lessonState.cells);
+    const s = lessonState, h = view.height, g = svg("g", { class: "lesson" });
+    if (s && s.at) {
+      const y = h - s.at.row - 0.5;
+      g.appendChild(svg("line", { x1: 0, y1: y, x2: view.width, y2: y, class: "scanline" }));
+      s.columns.forEach((x) => g.appendChild(svg("rect", { x, y: y - 0.5, width: 1, height: 1, class: "covered" })));
+      s.crossingsX.forEach((x) => g.appendChild(svg("circle", { cx: x, cy: y, r: 0.22, class: "crossing" })));
+      if (s.askedX !== null && s.askedX !== undefined) {
+        g.appendChild(svg("rect", { x: s.askedX, y: y - 0.5, width: 1, height: 1, class: "asked" }));
+      }
+    }
+    if (cursor) g.appendChild(svg("rect", { x: cursor.x, y: h - 1 - cursor.y, width: 1, height: 1, class: "cursor" }));
+    grid.appendChild(g);
   }
 
   function pointIn(e) {
@@ -229,6 +318,7 @@
   }
 
   function explainPixel(x, y) {
+    picked = { x, y };
     const result = call("explain", scene, x, y);
     $("explain").textContent = result.ok ? result.text : result.error;
     const grid = $("grid");
@@ -247,73 +337,64 @@
     $("afterDepth").textContent = after ? after.depth : "";
   }
 
-  function renderStop() {
-    const box = $("stop");
-    if (!view.stops[at]) { box.replaceChildren(); $("status").textContent = ""; return; }
-    if (!shownStop || shownStop.scene !== scene || shownStop.at !== at || shownStop.lang !== lang) {
-      shownStop = { scene, at, lang, data: call("stop", scene, at) };
+  // What the lesson shows now, already cut by the library to what may be shown.
+  function renderLesson() {
+    const s = lessonState, box = $("stop");
+    const asking = Boolean(s && s.prompt);
+    $("answerForm").hidden = !asking;
+    $("skip").hidden = !quizMode();
+    $("score").textContent = s && s.score ? s.score : "";
+    drawLesson();
+    if (!s || !s.at) {
+      box.replaceChildren(el("p", s && s.end ? s.end : ""));
+      $("status").textContent = "";
+      return;
     }
-    const stop = shownStop.data.ok ? shownStop.data : null;
-    $("status").textContent = view.stops.length ? words.status.replace("{at}", at + 1).replace("{count}", view.stops.length) : "";
-    if (!stop) { box.replaceChildren(); return; }
-    const quiz = $("quiz").checked, kind = $("quizKind").value;
-    box.replaceChildren(el("h3", stop.heading), el("p", stop.scanline));
-    if (quiz) {
-      const label = el("label", words.coverage + " ");
-      const coverage = el("input");
-      coverage.id = "coverage";
-      label.appendChild(coverage);
-      const why = el("span", "", "why");
-      why.id = "coverageWhy";
-      box.append(label, why);
-    } else {
-      box.appendChild(el("p", stop.crossings));
-      stop.spans.forEach((s) => box.appendChild(el("p", s)));
-      stop.notes.forEach((s) => box.appendChild(el("p", s, "help")));
-    }
+    $("status").textContent = s.scanline;
+    if (asking) $("prompt").textContent = s.prompt;
+    box.replaceChildren(el("h3", s.heading), el("p", s.slope));
+    if (s.crossings) box.appendChild(el("p", s.crossings));
+    (s.spanDepths.length ? s.spanDepths : s.spans).forEach((t) => box.appendChild(el("p", t)));
     const table = el("table");
     table.id = "pixels";
+    table.appendChild(el("caption", s.scanline));
     const head = el("tr");
-    const asked = kind === "frame" ? words.frameName : words.depthName;
-    ["x", "z", words.stored, quiz ? asked : words.depthName, words.why].forEach((h) => head.appendChild(el("th", h)));
+    ["x", "z", words.stored, words.depthName, words.frameName, words.why].forEach((t) => {
+      const th = el("th", t);
+      th.scope = "col";
+      head.appendChild(th);
+    });
     table.appendChild(head);
-    stop.pixels.forEach((p, i) => {
-      const tr = el("tr", undefined, quiz ? "" : p.written ? "right" : "wrong");
-      tr.append(el("td", String(p.x)), el("td", p.z), el("td", p.stored));
-      if (quiz) {
-        const td = el("td"), input = el("input");
-        input.dataset.pixel = i;
-        td.appendChild(input);
-        tr.append(td, el("td", "", "why"));
-      } else {
-        tr.append(el("td", p.written ? p.after : words.keeps.replace("{after}", p.after)), el("td", p.reason));
-      }
+    s.rows.forEach((r) => {
+      const tr = el("tr", undefined, r.written ? "right" : "wrong");
+      [String(r.x), r.z, r.stored, r.after, String(r.frame), r.test].forEach((t) => tr.appendChild(el("td", t)));
       table.appendChild(tr);
     });
-    box.appendChild(table);
-    if (quiz) {
-      const check = el("button", words.check);
-      check.id = "checkQuiz";
-      check.onclick = () => {
-        const typed = $("coverage").value.trim();
-        if (typed !== "") show($("coverageWhy"), call("judge", scene, at, "coverage", 0, typed));
-        table.querySelectorAll("input").forEach((input) => {
-          const cell = input.parentElement.nextSibling, text = input.value.trim();
-          if (text === "") { cell.className = "why again"; cell.textContent = words.unanswered; return; }
-          show(cell, call("judge", scene, at, kind, Number(input.dataset.pixel), text));
-        });
-      };
-      box.appendChild(check);
-    } else {
-      box.appendChild(el("pre", $("quizKind").value === "frame" ? stop.frame : stop.depth));
+    if (s.hidden) {
+      const tr = el("tr"), td = el("td", words.hidden.replace("{count}", s.hidden), "help");
+      td.colSpan = 6;
+      tr.appendChild(td);
+      table.appendChild(tr);
     }
+    if (s.rows.length || s.hidden) box.appendChild(table);
+    s.notes.forEach((n) => box.appendChild(el("p", n, "help")));
+    box.appendChild(matrix(s.frame, words.frameName));
+    box.appendChild(matrix(s.depth, words.depthName));
   }
 
-  function show(cell, verdict) {
-    if (!verdict.ok) { cell.className = "why again"; cell.textContent = verdict.error; return; }
-    if (verdict.again !== undefined) { cell.className = "why again"; cell.textContent = verdict.again; return; }
-    cell.className = verdict.right ? "why right" : "why wrong";
-    cell.textContent = verdict.line;
+  // A buffer as the lesson prints it (rows and columns numbered), the scanline's row (`▶`) marked.
+  function matrix(text, name) {
+    const figure = el("figure", undefined, "matrix");
+    figure.appendChild(el("figcaption", name));
+    const pre = el("pre");
+    // Scrolled sideways on a narrow screen, so reachable by keyboard.
+    pre.tabIndex = 0;
+    (text || "").split("\n").forEach((line) => {
+      pre.appendChild(line.startsWith("▶") ? el("mark", line) : document.createTextNode(line));
+      pre.appendChild(document.createTextNode("\n"));
+    });
+    figure.appendChild(pre);
+    return figure;
   }
 
   function renderHomeworkChoices() {
@@ -375,11 +456,73 @@
     if (result.diagnosis) { const d = el("p", result.diagnosis); d.id = "diagnosis"; box.appendChild(d); }
   }
 
-  function sceneFromAddress() {
-    if (!location.hash.startsWith("#scene=")) return null;
-    const result = call("scene_of_fragment", location.hash);
-    if (!result.ok) { $("error").textContent = result.error; return null; }
-    return result.scene;
+  // The address's parts: `scene`, `polygon`, `scanline`, `quiz`, `pixel`.
+  function addressParts() {
+    const parts = {};
+    location.hash.replace(/^#/, "").split("&").forEach((part) => {
+      const i = part.indexOf("=");
+      if (i > 0) parts[part.slice(0, i)] = part.slice(i + 1);
+    });
+    return parts;
+  }
+
+  // The address follows the page: the scene, the stepper's stop, the quiz and the pixel.
+  function writeAddress(push) {
+    if (!z) return;
+    let hash = "#" + z.fragment_of(scene);
+    const s = lessonState;
+    if (s && s.at) hash += `&polygon=${s.at.polygon}&scanline=${s.at.row}`;
+    if (quizMode()) hash += `&quiz=${quizMode()}`;
+    if (picked) hash += `&pixel=${picked.x},${picked.y}`;
+    if (location.hash !== hash) {
+      try { history[push ? "pushState" : "replaceState"](null, "", hash); } catch (e) { /* a page from disk may refuse */ }
+    }
+    $("link").value = location.href;
+  }
+
+  // The page follows the address (opened, edited, back or forward): a scene that cannot be read
+  // is said on the page, never replaced silently.
+  function readAddress() {
+    const parts = addressParts();
+    let text = null;
+    if (parts.scene !== undefined) {
+      const result = call("scene_of_fragment", "scene=" + parts.scene);
+      if (result.ok) text = result.scene;
+      else $("error").textContent = result.error;
+    }
+    if (parts.quiz !== undefined) {
+      const kind = ["depth", "frame", "coverage"].includes(parts.quiz) ? parts.quiz : "";
+      $("quiz").checked = kind !== "";
+      if (kind) $("quizKind").value = kind;
+    }
+    const place = parts.polygon !== undefined && parts.scanline !== undefined
+      ? { polygon: Number(parts.polygon) || 0, row: Number(parts.scanline) || 0 } : null;
+    const pixel = parts.pixel && /^\d+,\d+$/.test(parts.pixel) ? parts.pixel.split(",").map(Number) : null;
+    return { text, place, pixel, broken: parts.scene !== undefined && text === null };
+  }
+
+  function applyAddress() {
+    const { text, place, pixel, broken } = readAddress();
+    if (broken) return;
+    if (text !== null && text !== scene) {
+      lessonState = place ? { at: place } : null;
+      setScene(text);
+    } else {
+      newLesson(place);
+      render();
+    }
+    if (pixel) explainPixel(pixel[0], pixel[1]);
+  }
+
+  function renderExamples() {
+    if (!z) return;
+    const select = $("examples"), chosen = select.value;
+    select.replaceChildren(...JSON.parse(z.examples()).map((e, i) => {
+      const o = el("option", words[e.word]);
+      o.value = i;
+      return o;
+    }));
+    select.value = chosen || "0";
   }
 
   function wire() {
@@ -402,15 +545,77 @@
       const polygon = { value: 1, vertices: [[Math.round(w / 4), Math.round(h / 4), 1], [Math.round(w / 2), Math.round(3 * h / 4), 1], [Math.round(3 * w / 4), Math.round(h / 4), 1]] };
       edit({ op: "insert", path: ["polygons", count], value: JSON.stringify(polygon) });
     };
-    $("share").onclick = () => {
-      history.replaceState(null, "", "#" + z.fragment_of(scene));
-      $("shared").textContent = words.shared;
+    $("examples").onchange = () => {
+      lessonState = null;
+      picked = null;
+      setScene(JSON.parse(z.examples())[Number($("examples").value)].scene);
     };
-    window.addEventListener("hashchange", () => { const text = sceneFromAddress(); if (text !== null) setScene(text); });
-    $("back").onclick = () => { at = Math.max(0, at - 1); renderStop(); };
-    $("next").onclick = () => { at = Math.min(view.stops.length - 1, at + 1); renderStop(); };
-    $("quiz").onchange = renderStop;
-    $("quizKind").onchange = renderStop;
+    $("reset").onclick = () => {
+      lessonState = null;
+      picked = null;
+      $("quiz").checked = false;
+      $("examples").value = "0";
+      $("explain").textContent = "";
+      setScene(z.book_scene());
+    };
+    $("share").onclick = async () => {
+      writeAddress(false);
+      const link = location.href;
+      $("link").value = link;
+      try {
+        await navigator.clipboard.writeText(link);
+        $("shared").textContent = words.copied;
+      } catch (e) {
+        $("link").select();
+        const copied = document.execCommand && document.execCommand("copy");
+        $("shared").textContent = copied ? words.copied : words.shared;
+      }
+    };
+    window.addEventListener("popstate", applyAddress);
+    window.addEventListener("hashchange", applyAddress);
+    for (const [id, key] of [["back", "b"], ["next", "n"], ["prevPolygon", "P"], ["nextPolygon", "p"], ["skip", "s"]]) {
+      $(id).onclick = () => act({ key });
+    }
+    const requiz = () => { newLesson(lessonState && lessonState.at); render(); writeAddress(false); };
+    $("quiz").onchange = requiz;
+    $("quizKind").onchange = () => { if (quizMode()) requiz(); };
+    // Enter checks: the form's submit.
+    $("answerForm").addEventListener("submit", (e) => {
+      e.preventDefault();
+      const typed = $("quizAnswer").value;
+      if (typed.trim() === "") return;
+      $("quizAnswer").value = "";
+      act({ answer: typed });
+      $("quizAnswer").focus();
+    });
+    // The keys as the buttons say, where no field takes what is typed.
+    document.addEventListener("keydown", (e) => {
+      if (e.ctrlKey || e.metaKey || e.altKey || !lesson) return;
+      if (e.target.closest && e.target.closest("input, textarea, select")) return;
+      if (["n", "b", "p", "P", "s"].includes(e.key)) {
+        if (e.key === "s" && !quizMode()) return;
+        e.preventDefault();
+        act({ key: e.key });
+      }
+    });
+    // The raster by keyboard: arrows move a pixel cursor, Enter explains the pixel.
+    $("grid").addEventListener("keydown", (e) => {
+      if (!view) return;
+      const moves = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
+      if (moves[e.key]) {
+        e.preventDefault();
+        const at = cursor || { x: 0, y: view.height - 1 };
+        cursor = {
+          x: Math.min(view.width - 1, Math.max(0, at.x + moves[e.key][0])),
+          y: Math.min(view.height - 1, Math.max(0, at.y + moves[e.key][1])),
+        };
+        drawLesson();
+      } else if (e.key === "Enter" && cursor) {
+        e.preventDefault();
+        explainPixel(cursor.x, cursor.y);
+        writeAddress(false);
+      }
+    });
     $("afterSelect").onchange = renderAfter;
     $("checkAnswer").onclick = checkAnswer;
     $("answerGrid").onclick = answerGrid;
@@ -418,18 +623,29 @@
     // A click on a cell asks for its history (one listener for every cell).
     $("grid").addEventListener("click", (e) => {
       const cell = e.target.closest("rect.cell");
-      if (cell) explainPixel(Number(cell.dataset.x), Number(cell.dataset.y));
+      if (cell) { explainPixel(Number(cell.dataset.x), Number(cell.dataset.y)); writeAddress(false); }
     });
   }
 
   async function start() {
-    await wasm_bindgen({ module_or_path: window.ZSIM_WASM || "zsim_web_bg.wasm" });
+    // The module's bytes come with the page as a script, so that a site opened from disk works too.
+    const base64 = window.ZSIM_WASM_BASE64;
+    const bytes = window.ZSIM_WASM || (base64 && Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)));
+    await wasm_bindgen({ module_or_path: bytes || "zsim_web_bg.wasm" });
     z = wasm_bindgen;
     wire();
     const asked = new URLSearchParams(location.search).get("lang");
     const preferred = asked ? [asked] : window.ZSIM_LANG ? [window.ZSIM_LANG] : (navigator.languages && navigator.languages.length ? navigator.languages : [navigator.language || "en"]);
-    scene = sceneFromAddress() || window.ZSIM_SCENE || z.book_scene();
-    setLanguage(z.choose_language(preferred.join("\n")));
+    lang = z.choose_language(preferred.join("\n"));
+    words = JSON.parse(z.words(lang));
+    const { text, place, pixel } = readAddress();
+    lessonState = place ? { at: place } : null;
+    scene = text !== null ? text : window.ZSIM_SCENE || z.book_scene();
+    const error = $("error").textContent;
+    setLanguage(lang);
+    // A broken address is said, not replaced silently (the scene shown is the book's).
+    if (error) $("error").textContent = error;
+    if (pixel) { explainPixel(pixel[0], pixel[1]); writeAddress(false); }
   }
   start();
 })();

@@ -16,8 +16,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Wrap};
 use zsim::Buffers;
 use zsim::explain::{pixel_reason, polygon_name, scanline_text};
+use zsim::lesson::{Command, Lesson, Said};
 use zsim::report;
-use zsim::step::{Moved, Question, Quiz, Reply, Stepper, Verdict, skip_text};
+use zsim::step::Moved;
 use zsim::{Outcome, ScanlineRecord};
 use zsim::{Q, exact_and_decimal, fraction};
 
@@ -31,10 +32,10 @@ pub enum View {
 }
 
 /// The stepper's screen state. Keys change it ([`App::key`]); [`App::draw`]
-/// shows it. Where the student is and what the quiz asks are the library's
-/// ([`Stepper`], [`Quiz`]); the app keeps only what is on the screen.
-pub struct App<'t, 's, 'q> {
-    stepper: &'t mut Stepper<'s>,
+/// shows it. Where the student is, what may be shown and what is asked are
+/// the library's [`Lesson`]'s; the app keeps only what is on the screen.
+pub struct App<'l> {
+    lesson: &'l mut Lesson,
     /// Outside the quiz, in pixel steps, how many of the scanline's pixels
     /// are shown; in scanline steps, `None` (all of them).
     pixel: Option<usize>,
@@ -42,27 +43,25 @@ pub struct App<'t, 's, 'q> {
     help: bool,
     /// The `g` prompt's text while it is open.
     go: Option<String>,
+    /// What became of the last command, worded by the lesson.
     message: String,
     /// Rows and columns the raster is scrolled by, from where it centres itself.
     scroll: (i32, i32),
     /// Lines the right panel is scrolled by.
     table_scroll: u16,
-    quiz: Option<&'q mut Quiz>,
     /// The quiz answer being typed.
     typed: String,
-    /// The verdict on the last answer, shown until the next key.
-    verdict: Option<String>,
     /// Set by `q`, Esc or Ctrl-C.
     pub quit: bool,
     /// The language the screen speaks.
     lang: zsim::Lang,
 }
 
-impl<'t, 's, 'q> App<'t, 's, 'q> {
-    /// The app at the stepper's stop, with `quiz` asking.
-    pub fn new(stepper: &'t mut Stepper<'s>, quiz: Option<&'q mut Quiz>, lang: zsim::Lang) -> App<'t, 's, 'q> {
+impl<'l> App<'l> {
+    /// The app at the lesson's stop.
+    pub fn new(lesson: &'l mut Lesson, lang: zsim::Lang) -> App<'l> {
         App {
-            stepper,
+            lesson,
             pixel: None,
             view: View::Frame,
             help: false,
@@ -70,38 +69,26 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             message: String::new(),
             scroll: (0, 0),
             table_scroll: 0,
-            quiz,
             typed: String::new(),
-            verdict: None,
             quit: false,
             lang,
         }
     }
 
     fn record(&mut self) -> Option<ScanlineRecord> {
-        self.stepper.record().cloned()
-    }
-
-    /// The question the quiz asks now, if any (none while a verdict shows).
-    fn question(&mut self) -> Option<Question> {
-        if self.verdict.is_some() {
-            return None;
-        }
-        self.quiz.as_deref().and_then(|quiz| quiz.question(self.stepper))
+        self.lesson.record()
     }
 
     /// How many of the current scanline's pixels are shown.
     fn shown_pixels(&mut self) -> usize {
-        match (&self.quiz, self.stepper.at()) {
-            (Some(quiz), Some(stop)) => quiz.pixels_answered(stop),
-            _ => self.pixel.unwrap_or(usize::MAX),
+        match self.lesson.mode() {
+            Some(_) => self.lesson.showing().pixels,
+            None => self.pixel.unwrap_or(usize::MAX),
         }
     }
 
     /// Handles one key press.
     pub fn key(&mut self, key: KeyEvent) {
-        let lang = self.lang;
-        self.message.clear();
         if key.modifiers.contains(KeyModifiers::CONTROL) && key.code == KeyCode::Char('c') {
             self.quit = true;
             return;
@@ -116,8 +103,7 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
                     let row = text.parse::<u32>().ok();
                     self.go = None;
                     if let Some(row) = row {
-                        let moved = self.stepper.go(row);
-                        self.moved(moved);
+                        self.act(Command::Go(row));
                     }
                 }
                 KeyCode::Esc => self.go = None,
@@ -125,13 +111,10 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             }
             return;
         }
-        // A digit or `-` while a verdict shows starts the next answer (it is not lost).
-        if self.verdict.is_some() && matches!(key.code, KeyCode::Char(c) if c.is_ascii_digit() || c == '-') {
-            self.verdict = None;
-        }
-        if self.question().is_some() && self.quiz_key(key) {
+        if self.lesson.question().is_some() && self.quiz_key(key) {
             return;
         }
+        self.message.clear();
         if self.help && !matches!(key.code, KeyCode::Char('q') | KeyCode::Esc) {
             self.help = false;
             return;
@@ -140,24 +123,15 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             KeyCode::Char('q') | KeyCode::Esc => self.quit = true,
             KeyCode::Char('n' | ' ') | KeyCode::Enter | KeyCode::Right | KeyCode::Down => self.next(),
             KeyCode::Char('b') | KeyCode::Left | KeyCode::Up => self.back(),
-            KeyCode::Char('p') => {
-                let moved = match self.stepper.at() {
-                    Some(_) => self.stepper.next_polygon(),
-                    None => return,
-                };
-                match moved {
-                    Moved::To { at: None, .. } => self.message = zsim::words!(lang, "tui-no-later"),
-                    moved => self.moved(moved),
+            KeyCode::Char(key @ ('p' | 'P' | 's')) => {
+                if let Some(command) = Command::from_key(key) {
+                    self.act(command);
                 }
-            }
-            KeyCode::Char('P') => {
-                let moved = self.stepper.previous_polygon();
-                self.moved(moved);
             }
             KeyCode::Char('g') => self.go = Some(String::new()),
             KeyCode::Char('f') => self.view = View::Frame,
             KeyCode::Char('z') => self.view = View::Depth,
-            KeyCode::Char('m') if self.quiz.is_none() => {
+            KeyCode::Char('m') if self.lesson.mode().is_none() => {
                 self.pixel = if self.pixel.is_some() { None } else { Some(1) };
             }
             KeyCode::Char('?') => self.help = true,
@@ -167,95 +141,72 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             KeyCode::Char('>') => self.scroll.1 += 4,
             KeyCode::Char('[') => self.table_scroll = self.table_scroll.saturating_sub(4),
             KeyCode::Char(']') => self.table_scroll += 4,
-            _ => self.message = zsim::words!(lang, "tui-key-nothing"),
+            _ => self.message = zsim::words!(self.lang, "tui-key-nothing"),
         }
     }
 
     /// A key while the quiz asks. Typing: any character but the keys that
-    /// act alone (`q`, `?`, and `n`, `b`, `p`, `P`, `g`, `f`, `z` before
+    /// act alone (`q`, `?`, and `n`, `b`, `p`, `P`, `s`, `g`, `f`, `z` before
     /// anything is typed) goes into the answer, Backspace takes one back,
-    /// Enter answers: the library judges it, or says why it is no answer and
-    /// asks again. Returns `false` for a key that acts as usual.
+    /// Enter answers: the lesson judges it. Returns `false` for a key that
+    /// acts as usual.
     fn quiz_key(&mut self, key: KeyEvent) -> bool {
-        let lang = self.lang;
         match key.code {
             KeyCode::Char('q' | '?') => return false,
-            KeyCode::Char('n' | 'b' | 'p' | 'P' | 'g' | 'f' | 'z' | ' ') if self.typed.is_empty() => return false,
+            KeyCode::Char('n' | 'b' | 'p' | 'P' | 's' | 'g' | 'f' | 'z' | ' ') if self.typed.is_empty() => {
+                return false;
+            }
             KeyCode::Char(c) if !c.is_control() => self.typed.push(c),
             KeyCode::Backspace => {
                 self.typed.pop();
             }
             KeyCode::Enter if !self.typed.is_empty() => {
                 let typed = std::mem::take(&mut self.typed);
-                let Some(quiz) = self.quiz.as_deref_mut() else { return false };
-                match quiz.answer(lang, self.stepper, &typed) {
-                    Some(Reply::Judged(verdict)) => self.verdict = Some(verdict_text(lang, &verdict)),
-                    Some(Reply::AskAgain(why)) => self.message = why,
-                    None => return false,
-                }
+                self.act(Command::Answer(typed));
             }
             _ => return false,
         }
         true
     }
 
-    /// What a move passed over, or why it stayed, on the status line.
-    fn moved(&mut self, moved: Moved) {
-        let lang = self.lang;
-        let scene = self.stepper.scene();
-        match moved {
-            Moved::To { at, skipped } => {
-                if !skipped.is_empty() {
-                    let skipped: Vec<String> = skipped.iter().map(|skip| skip_text(lang, scene, skip)).collect();
-                    self.message = zsim::words!(
-                        lang,
-                        "tui-passed-over",
-                        list = skipped.join(&zsim::words!(lang, "list-semicolon"))
-                    );
-                }
-                if at.is_none() {
-                    self.message = zsim::words!(lang, "step-end");
-                }
-                self.scroll = (0, 0);
-                self.table_scroll = 0;
-                self.typed.clear();
-                if self.pixel.is_some() {
-                    self.pixel = Some(1);
-                }
+    /// Sends `command` to the lesson; what became of it goes on the status line.
+    fn act(&mut self, command: Command) {
+        let said = self.lesson.act(self.lang, command);
+        if matches!(said, Said::Quit) {
+            self.quit = true;
+            return;
+        }
+        self.message = said.text(self.lang, self.lesson.scene());
+        if let Said::Moved(Moved::To { .. }) = said {
+            self.scroll = (0, 0);
+            self.table_scroll = 0;
+            self.typed.clear();
+            if self.pixel.is_some() {
+                self.pixel = Some(1);
             }
-            Moved::Refused(refusal) => self.message = refusal.text(lang, scene),
         }
     }
 
     fn next(&mut self) {
-        self.verdict = None;
-        let Some(stop) = self.stepper.at() else { return };
-        // The quiz waits for its answers: `n` only clears the verdict.
-        if self.question().is_some() {
-            return;
-        }
-        let count = self.stepper.tracer().record(stop).pixels.len();
-        if self.quiz.is_none()
+        let Some(stop) = self.lesson.at() else { return };
+        let count = self.lesson.with_stepper(|stepper| stepper.tracer().record(stop).pixels.len());
+        if self.lesson.mode().is_none()
             && let Some(done) = self.pixel
             && done < count
         {
             self.pixel = Some(done + 1);
             return;
         }
-        let moved = self.stepper.forward();
-        self.moved(moved);
+        self.act(Command::Next);
     }
 
     fn back(&mut self) {
-        if self.stepper.at().is_none() {
+        if self.lesson.at().is_none() {
             return;
         }
         match self.pixel {
-            Some(done) if done > 1 && self.quiz.is_none() => self.pixel = Some(done - 1),
-            _ => {
-                let moved = self.stepper.back();
-                self.moved(moved);
-            }
+            Some(done) if done > 1 && self.lesson.mode().is_none() => self.pixel = Some(done - 1),
+            _ => self.act(Command::Back),
         }
     }
 
@@ -265,32 +216,9 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
         let area = frame.area();
         let status_text = if let Some(text) = &self.go {
             zsim::words!(lang, "tui-go", text = text)
-        } else if let Some(verdict) = &self.verdict {
-            zsim::words!(lang, "tui-verdict-next", verdict = verdict)
-        } else if let Some(question) = self.question() {
-            let typed = zsim::printable(&self.typed).into_owned();
-            let ask = match question {
-                Question::Coverage { row, .. } => {
-                    zsim::words!(lang, "tui-quiz-coverage-ask", scanline = scanline_text(lang, row), typed = typed)
-                }
-                Question::Frame { pixel, .. } => zsim::words!(
-                    lang,
-                    "tui-quiz-frame-ask",
-                    x = pixel.x,
-                    y = pixel.y,
-                    before = pixel.frame_before,
-                    typed = typed
-                ),
-                Question::Depth { pixel, .. } => zsim::words!(
-                    lang,
-                    "tui-quiz-ask",
-                    x = pixel.x,
-                    y = pixel.y,
-                    stored = pixel.stored_before.text(lang),
-                    typed = typed
-                ),
-            };
-            // Why the last answer was asked again, on its own line above the question.
+        } else if let Some(ask) = self.lesson.prompt(lang) {
+            let ask = format!("{ask} {}▏", zsim::printable(&self.typed));
+            // What became of the last answer, on its own lines above the question.
             if self.message.is_empty() { ask } else { format!("{}\n{ask}", self.message) }
         } else if !self.message.is_empty() {
             self.message.clone()
@@ -306,9 +234,10 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
         let status_paragraph = status_paragraph.scroll((wrapped.saturating_sub(status_lines), 0));
         let [title, body, status] =
             Layout::vertical([Constraint::Length(1), Constraint::Min(3), Constraint::Length(status_lines)]).areas(area);
-        let scene = self.stepper.scene();
         let record = self.record();
-        let heading = match (self.stepper.at(), &record) {
+        let at = self.lesson.at();
+        let scene = self.lesson.scene();
+        let heading = match (at, &record) {
             (Some(stop), Some(r)) => zsim::words!(
                 lang,
                 "tui-heading",
@@ -321,8 +250,9 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
             View::Frame => zsim::words!(lang, "buffer-frame"),
             View::Depth => zsim::words!(lang, "buffer-depth"),
         };
-        let score = self.quiz.as_ref().map_or(String::new(), |q| {
-            zsim::words!(lang, "tui-score", right = q.right.to_string(), asked = q.asked.to_string())
+        let score = self.lesson.score().map_or(String::new(), |score| {
+            let right = score.first_try + score.second_try;
+            zsim::words!(lang, "tui-score", right = right.to_string(), asked = score.asked().to_string())
         });
         frame.render_widget(
             Paragraph::new(zsim::words!(lang, "tui-title", heading = heading, view = view, score = score))
@@ -360,15 +290,15 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
     /// The raster's rows that fit, top row first, centred on the scanline.
     fn draw_raster(&mut self, frame: &mut Frame<'_>, area: Rect, record: Option<&ScanlineRecord>) {
         let lang = self.lang;
-        let scene = self.stepper.scene();
-        let Some(stop) = self.stepper.at() else {
+        let Some(stop) = self.lesson.at() else {
             frame.render_widget(Paragraph::new(zsim::words!(lang, "tui-no-scanline")), area);
             return;
         };
         let done = self.shown_pixels();
         // Until the coverage question is answered, the covered cells are not marked.
-        let coverage_pending = self.quiz.as_deref().is_some_and(|quiz| quiz.coverage_pending(self.stepper));
-        let buffers: Buffers = self.stepper.tracer().buffers_through(stop, done);
+        let coverage_pending = !self.lesson.showing().spans;
+        let buffers: Buffers = self.lesson.with_stepper(|stepper| stepper.tracer().buffers_through(stop, done));
+        let scene = self.lesson.scene();
         let values: Vec<Vec<String>> = match self.view {
             View::Frame => buffers.frame_rows().iter().map(|r| r.iter().map(u32::to_string).collect()).collect(),
             View::Depth => {
@@ -393,11 +323,12 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
         let top = (row + rows_shown / 2 - self.scroll.0).clamp((rows_shown - 1).min(height - 1), height - 1);
         let first =
             ((span_first + span_last) / 2 - columns_shown / 2 + self.scroll.1).clamp(0, (width - columns_shown).max(0));
-        let trace_pixels: std::collections::HashSet<(u32, u32)> = self.stepper.tracer().trace(stop.polygon).scanlines
-            [..stop.scanline]
-            .iter()
-            .flat_map(|r| r.pixels.iter().filter(|e| e.outcome == Outcome::Written).map(|e| (e.x, e.y)))
-            .collect();
+        let trace_pixels: std::collections::HashSet<(u32, u32)> = self.lesson.with_stepper(|stepper| {
+            stepper.tracer().trace(stop.polygon).scanlines[..stop.scanline]
+                .iter()
+                .flat_map(|r| r.pixels.iter().filter(|e| e.outcome == Outcome::Written).map(|e| (e.x, e.y)))
+                .collect()
+        });
         let current: Vec<u32> = match record {
             Some(r) if !coverage_pending => r.pixels.iter().map(|e| e.x).collect(),
             _ => Vec::new(),
@@ -440,25 +371,20 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
     /// The right panel: the polygon, the scanline, crossings, spans, and the pixel's row.
     fn details(&mut self, record: Option<&ScanlineRecord>) -> Vec<Line<'static>> {
         let lang = self.lang;
-        let scene = self.stepper.scene();
-        let (Some(stop), Some(record)) = (self.stepper.at(), record) else {
+        let (Some(view), Some(record)) = (self.lesson.stop_view(lang), record) else {
             return vec![Line::from(zsim::words!(lang, "tui-end"))];
         };
-        let geometry = scene.polygons[stop.polygon].geometry();
-        let slope = geometry.slope().map_or_else(String::new, fraction);
-        let stop_words = self.stepper.stop_words(lang, stop);
         let mut lines = vec![
-            Line::styled(stop_words.heading, Style::new().add_modifier(Modifier::BOLD)),
-            Line::from(zsim::words!(lang, "tui-slope", slope = slope)),
-            Line::from(stop_words.scanline),
+            Line::styled(view.heading, Style::new().add_modifier(Modifier::BOLD)),
+            Line::from(view.slope),
+            Line::from(view.scanline),
         ];
-        // The crossings and spans would answer the coverage question: shown once it is answered.
-        if !self.quiz.as_deref().is_some_and(|quiz| quiz.coverage_pending(self.stepper)) {
-            lines.push(Line::from(stop_words.crossings));
-            lines.extend(stop_words.spans.into_iter().map(Line::from));
-        }
+        // The lesson leaves out the crossings and spans while they would answer the coverage question.
+        lines.extend(view.crossings.into_iter().map(Line::from));
+        lines.extend(view.spans.into_iter().map(Line::from));
         lines.push(Line::from(""));
-        let pixel_steps = if self.quiz.is_some() { Some(self.shown_pixels()) } else { self.pixel };
+        let pixel_steps = if self.lesson.mode().is_some() { Some(self.shown_pixels()) } else { self.pixel };
+        let scene = self.lesson.scene();
         let Some(done) = pixel_steps else {
             // Scanline steps: the table, one line a pixel: x, z, the test, what is stored.
             // `always` and `never` compare nothing: say so instead of a symbol.
@@ -524,30 +450,6 @@ impl<'t, 's, 'q> App<'t, 's, 'q> {
     }
 }
 
-/// A verdict as the status line shows it.
-fn verdict_text(lang: zsim::Lang, verdict: &Verdict) -> String {
-    let right_or_wrong = if verdict.right { zsim::words!(lang, "tui-right") } else { zsim::words!(lang, "tui-wrong") };
-    match &verdict.question {
-        Question::Coverage { .. } => zsim::words!(
-            lang,
-            "tui-quiz-coverage-verdict",
-            right = &verdict.expected,
-            typed = &verdict.said,
-            verdict = right_or_wrong,
-            why = &verdict.why
-        ),
-        Question::Depth { pixel, .. } | Question::Frame { pixel, .. } => zsim::words!(
-            lang,
-            "tui-quiz-verdict",
-            x = pixel.x,
-            y = pixel.y,
-            typed = &verdict.said,
-            verdict = right_or_wrong,
-            reason = &verdict.why
-        ),
-    }
-}
-
 /// The numbers of `columns`, each right-aligned under its cell of `cell`
 /// characters, left out where it would touch the number before it (on
 /// narrow cells every other one, or fewer, is shown).
@@ -569,7 +471,7 @@ fn column_numbers(columns: std::ops::RangeInclusive<i32>, cell: usize) -> String
 /// Runs the app on the terminal until the user quits; the terminal is given
 /// back as it was (raw mode off, alternate screen left) on quitting and on a
 /// panic (ratatui's hook).
-pub fn run(app: &mut App<'_, '_, '_>) -> std::io::Result<()> {
+pub fn run(app: &mut App<'_>) -> std::io::Result<()> {
     let mut terminal = ratatui::init();
     let result = (|| {
         while !app.quit {

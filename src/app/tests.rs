@@ -5,11 +5,11 @@ use ratatui::backend::TestBackend;
 use zsim::step::QuizMode;
 use zsim::{Scene, Stop};
 
-/// A stepper at `start`, or at the first stop.
-fn stepper(scene: &Scene, start: Option<Stop>) -> Stepper<'_> {
-    let mut stepper = Stepper::new(scene, zsim::arith::Arith::Exact);
-    stepper.start(start);
-    stepper
+/// A lesson of `scene` at `start`, or at the first stop, with a quiz in `mode` or none.
+fn lesson(scene: Scene, start: Option<Stop>, mode: Option<QuizMode>) -> Lesson {
+    let mut lesson = Lesson::new(scene, zsim::arith::Arith::Exact, mode);
+    lesson.start(start);
+    lesson
 }
 
 fn book() -> Scene {
@@ -18,7 +18,7 @@ fn book() -> Scene {
 }
 
 /// The screen as text, one line a row.
-fn screen(app: &mut App<'_, '_, '_>, width: u16, height: u16) -> String {
+fn screen(app: &mut App<'_>, width: u16, height: u16) -> String {
     let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
     terminal.draw(|frame| app.draw(frame)).unwrap();
     let buffer = terminal.backend().buffer();
@@ -42,7 +42,7 @@ fn screen(app: &mut App<'_, '_, '_>, width: u16, height: u16) -> String {
         .collect()
 }
 
-fn press(app: &mut App<'_, '_, '_>, keys: &str) {
+fn press(app: &mut App<'_>, keys: &str) {
     for c in keys.chars() {
         let code = match c {
             '\n' => KeyCode::Enter,
@@ -64,9 +64,8 @@ fn snapshot(name: &str, text: String) {
 /// scanline through (20, 15), in Chinese, at 100 × 30.
 #[test]
 fn the_app_speaks_the_chosen_language() {
-    let scene = book();
-    let mut stepper = stepper(&scene, None);
-    let mut app = App::new(&mut stepper, None, zsim::Lang::Zh);
+    let mut lesson = lesson(book(), None, None);
+    let mut app = App::new(&mut lesson, zsim::Lang::Zh);
     press(&mut app, "pg15\n");
     let text = screen(&mut app, 100, 30);
     assert!(text.starts_with("zsim step · 多边形 2“triangle”，扫描线 y = 15.5 · 帧缓冲器 · ? 按键"), "{text}");
@@ -75,9 +74,8 @@ fn the_app_speaks_the_chosen_language() {
 
 #[test]
 fn the_first_screen_fits_80_by_24() {
-    let scene = book();
-    let mut stepper = stepper(&scene, None);
-    let mut app = App::new(&mut stepper, None, zsim::Lang::En);
+    let mut lesson = lesson(book(), None, None);
+    let mut app = App::new(&mut lesson, zsim::Lang::En);
     let text = screen(&mut app, 80, 24);
     assert!(text.lines().all(|l| l.chars().count() <= 80));
     assert!(text.starts_with("zsim step · polygon 1 \"rectangle\", scanline y = 5.5 · framebuffer · ? keys"), "{text}");
@@ -86,9 +84,8 @@ fn the_first_screen_fits_80_by_24() {
 
 #[test]
 fn keys_move_without_enter_and_the_book_pixel_shows() {
-    let scene = book();
-    let mut stepper = stepper(&scene, None);
-    let mut app = App::new(&mut stepper, None, zsim::Lang::En);
+    let mut lesson = lesson(book(), None, None);
+    let mut app = App::new(&mut lesson, zsim::Lang::En);
     // p: the triangle's first scanline (row 10); g15⏎: its scanline 15; z: the z-buffer.
     press(&mut app, "pg15\nz");
     let text = screen(&mut app, 100, 30);
@@ -120,8 +117,8 @@ mod random_keys {
     fn key() -> impl Strategy<Value = KeyCode> {
         prop_oneof![
             prop::sample::select(vec![
-                'n', ' ', 'b', 'p', 'P', 'g', 'f', 'z', 'm', '?', 'q', '<', '>', '[', ']', '-', '/', '0', '1', '5',
-                '9', 'x',
+                'n', ' ', 'b', 'p', 'P', 's', 'g', 'f', 'z', 'm', '?', 'q', '<', '>', '[', ']', '-', '/', '0', '1',
+                '5', '9', 'x',
             ])
             .prop_map(KeyCode::Char),
             prop::sample::select(vec![
@@ -154,9 +151,8 @@ mod random_keys {
         ) {
             let path = format!("{}/examples/{example}.json", env!("CARGO_MANIFEST_DIR"));
             let scene = Scene::load(zsim::Lang::En, std::path::Path::new(&path)).unwrap();
-            let mut stepper = stepper(&scene, None);
-            let mut quiz = quiz.map(Quiz::new);
-            let mut app = App::new(&mut stepper, quiz.as_mut(), zsim::Lang::En);
+            let mut lesson = lesson(scene, None, quiz);
+            let mut app = App::new(&mut lesson, zsim::Lang::En);
             screen(&mut app, size.0, size.1);
             for code in keys {
                 app.key(KeyEvent::new(code, KeyModifiers::NONE));
@@ -168,19 +164,23 @@ mod random_keys {
 
 #[test]
 fn the_quiz_asks_before_each_pixel_is_shown() {
-    let scene = book();
     // The triangle's scanline 15 (its recorded scanline 5: rows 10 … 15).
-    let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
-    let mut quiz = Quiz::new(QuizMode::Depth);
-    let mut app = App::new(&mut stepper, Some(&mut quiz), zsim::Lang::En);
+    let mut lesson = lesson(book(), Some(Stop { polygon: 1, scanline: 5 }), Some(QuizMode::Depth));
+    let mut app = App::new(&mut lesson, zsim::Lang::En);
     let text = screen(&mut app, 100, 30);
-    assert!(text.contains("quiz: the z-buffer after (15, 15), stored 10?"), "{text}");
+    assert!(text.contains("pixel (15, 15), stored 10: the z-buffer after?"), "{text}");
+    assert!(!text.contains("29/2"), "the asked pixel's z stays hidden: {text}");
     press(&mut app, "15\n");
     let text = screen(&mut app, 100, 30);
-    assert!(text.contains("(15, 15): you said 15: right: z = 29/2 ≈ 14.50 > 10 stored"), "{text}");
+    assert!(text.contains("15: right. z = 29/2 ≈ 14.50 > 10 stored"), "{text}");
     assert!(text.contains("quiz 1/1"), "{text}");
-    press(&mut app, "n9\n");
-    assert!(screen(&mut app, 100, 30).contains("(16, 15): you said 9: wrong"));
+    // n is refused while questions are open; a wrong answer gets its kind, not its value.
+    press(&mut app, "n");
+    assert!(screen(&mut app, 100, 30).contains("12 open questions on this scanline"));
+    press(&mut app, "9\n");
+    let text = screen(&mut app, 100, 30);
+    assert!(text.contains("9: not yet."), "{text}");
+    assert!(text.contains("last try: pixel (16, 15)"), "{text}");
 }
 
 /// Found by a new student: at 80×24 the `?` box wrapped each key's action
@@ -188,9 +188,8 @@ fn the_quiz_asks_before_each_pixel_is_shown() {
 /// action on one line, in every language.
 #[test]
 fn the_keys_box_keeps_each_key_and_its_action_on_one_line_at_80_by_24() {
-    let scene = book();
-    let mut stepper = stepper(&scene, None);
-    let mut app = App::new(&mut stepper, None, zsim::Lang::En);
+    let mut lesson = lesson(book(), None, None);
+    let mut app = App::new(&mut lesson, zsim::Lang::En);
     press(&mut app, "?");
     let text = screen(&mut app, 80, 24);
     for line in ["n Space Enter → ↓  next scanline (or pixel)", "f / z              show the framebuffer / z-buffer"]
@@ -199,7 +198,7 @@ fn the_keys_box_keeps_each_key_and_its_action_on_one_line_at_80_by_24() {
     }
     drop(app);
     for lang in [zsim::Lang::Ru, zsim::Lang::Uk, zsim::Lang::Zh] {
-        let mut app = App::new(&mut stepper, None, lang);
+        let mut app = App::new(&mut lesson, lang);
         press(&mut app, "?");
         let help = zsim::message(lang, "tui-help", &[]);
         let text = screen(&mut app, 80, 24);
@@ -209,39 +208,35 @@ fn the_keys_box_keeps_each_key_and_its_action_on_one_line_at_80_by_24() {
 }
 
 /// Found by a new student: in the full-screen quiz `abc` Enter went back a
-/// scanline (on `b`), `xy` vanished, a digit typed while the verdict showed
-/// was lost, and 99 on a 4-bit z-buffer was scored wrong. Now junk is typed
-/// and asked again, a number the z-buffer cannot hold is asked again, and a
-/// digit after a verdict starts the next answer.
+/// scanline (on `b`), `xy` vanished, and 99 on a 4-bit z-buffer was scored
+/// wrong. Now junk is typed and asked again, and a number the z-buffer
+/// cannot hold is asked again.
 #[test]
-fn the_quiz_asks_again_on_junk_and_keeps_digits_typed_after_a_verdict() {
-    let scene = book();
-    let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
-    let mut quiz = Quiz::new(QuizMode::Depth);
-    let mut app = App::new(&mut stepper, Some(&mut quiz), zsim::Lang::En);
+fn the_quiz_asks_again_on_junk_and_numbers_no_cell_holds() {
+    let mut lesson = lesson(book(), Some(Stop { polygon: 1, scanline: 5 }), Some(QuizMode::Depth));
+    let mut app = App::new(&mut lesson, zsim::Lang::En);
     press(&mut app, "abc\n");
     let text = screen(&mut app, 100, 30);
     assert!(text.contains("\"abc\" is not an answer"), "{text}");
-    assert!(text.contains("quiz: the z-buffer after (15, 15), stored 10?"), "still the same question: {text}");
+    assert!(text.contains("pixel (15, 15), stored 10: the z-buffer after?"), "still the same question: {text}");
     assert!(text.contains("quiz 0/0"), "nothing scored: {text}");
     press(&mut app, "xy");
     let text = screen(&mut app, 100, 30);
-    assert!(text.contains("Enter) xy"), "what is typed shows: {text}");
+    assert!(text.contains("written) xy▏"), "what is typed shows: {text}");
     press(&mut app, "\n99\n");
     let text = screen(&mut app, 100, 30);
     assert!(text.contains("99 does not fit this z-buffer: its cells hold whole levels 0 … 15"), "{text}");
     assert!(text.contains("quiz 0/0"), "{text}");
-    // Answered, then the next answer typed straight away while the verdict shows.
     press(&mut app, "15\n14\n");
     let text = screen(&mut app, 100, 30);
-    assert!(text.contains("(16, 15): you said 14: right"), "{text}");
+    assert!(text.contains("14: right"), "{text}");
     assert!(text.contains("quiz 2/2"), "{text}");
-    press(&mut app, "1\nq");
+    press(&mut app, "1\n2\nq");
     assert!(app.quit);
-    let summary = quiz.summary(zsim::Lang::En);
+    let summary = lesson.summary(zsim::Lang::En);
     assert!(
         summary.starts_with(
-            "quiz score: 2 of 3 right\nyour mistakes:\n  (17, 15) of polygon 2 \"triangle\": you said 1, right 13: "
+            "quiz: 2 right at the first try, 0 at the second, 1 shown, 0 skipped, of 3 questions\nyour mistakes:\n  (17, 15) of polygon 2 \"triangle\": you said 2, right 13: "
         ),
         "{summary}"
     );
@@ -253,34 +248,31 @@ fn the_quiz_asks_again_on_junk_and_keeps_digits_typed_after_a_verdict() {
 /// nothing on the screen gives it away, and a range answers it.
 #[test]
 fn the_full_screen_quiz_asks_the_coverage_question_first() {
-    let scene = book();
-    let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
-    let mut quiz = Quiz::new(QuizMode::Coverage);
-    let mut app = App::new(&mut stepper, Some(&mut quiz), zsim::Lang::En);
+    let mut lesson = lesson(book(), Some(Stop { polygon: 1, scanline: 5 }), Some(QuizMode::Coverage));
+    let mut app = App::new(&mut lesson, zsim::Lang::En);
     let text = screen(&mut app, 120, 30);
-    assert!(text.contains("quiz: which centres does scanline y = 15.5 cover?"), "{text}");
+    assert!(text.contains("scanline y = 15.5: which columns' centres does it cover?"), "{text}");
     assert!(!text.contains("crossings"), "the crossings would give the answer away: {text}");
     press(&mut app, "16-27\n");
     let text = screen(&mut app, 120, 30);
-    assert!(text.contains("columns 15-27: you said 16-27: wrong"), "{text}");
-    assert!(text.contains("quiz 0/1"), "{text}");
-    press(&mut app, "n");
+    assert!(text.contains("16-27: not yet. a centre lies exactly on the polygon's boundary"), "{text}");
+    assert!(text.contains("quiz 0/0"), "{text}");
+    press(&mut app, "15 … 27\n");
     let text = screen(&mut app, 120, 30);
-    assert!(text.contains("quiz: the z-buffer after (15, 15), stored 10?"), "then the z-buffer: {text}");
+    assert!(text.contains("15 … 27: right at the second try"), "{text}");
+    assert!(text.contains("pixel (15, 15), stored 10: the z-buffer after?"), "then the z-buffer: {text}");
 }
 
 /// The framebuffer question, asked and judged in the full-screen app.
 #[test]
 fn the_full_screen_quiz_asks_the_framebuffer_question() {
-    let scene = book();
-    let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
-    let mut quiz = Quiz::new(QuizMode::Frame);
-    let mut app = App::new(&mut stepper, Some(&mut quiz), zsim::Lang::En);
+    let mut lesson = lesson(book(), Some(Stop { polygon: 1, scanline: 5 }), Some(QuizMode::Frame));
+    let mut app = App::new(&mut lesson, zsim::Lang::En);
     let text = screen(&mut app, 120, 30);
-    assert!(text.contains("quiz: the framebuffer after (15, 15), now 1?"), "{text}");
+    assert!(text.contains("pixel (15, 15), framebuffer 1: the framebuffer after?"), "{text}");
     press(&mut app, "2\n");
     let text = screen(&mut app, 120, 30);
-    assert!(text.contains("(15, 15): you said 2: right"), "{text}");
+    assert!(text.contains("2: right."), "{text}");
     assert!(text.contains("quiz 1/1"), "{text}");
 }
 
@@ -297,20 +289,18 @@ fn the_raster_pane_numbers_its_columns() {
 /// status gets the lines its text wraps to, and its end always shows.
 #[test]
 fn the_quizs_error_text_keeps_its_own_lines_and_the_prompt_shows() {
-    let scene = book();
-    let mut stepper = stepper(&scene, Some(Stop { polygon: 1, scanline: 5 }));
-    let mut quiz = Quiz::new(QuizMode::Depth);
-    let mut app = App::new(&mut stepper, Some(&mut quiz), zsim::Lang::Ru);
+    let mut lesson = lesson(book(), Some(Stop { polygon: 1, scanline: 5 }), Some(QuizMode::Depth));
+    let mut app = App::new(&mut lesson, zsim::Lang::Ru);
     press(&mut app, "abc\n");
     for (width, height) in [(80, 24), (40, 24), (30, 16)] {
         let text = screen(&mut app, width, height);
         let lines: Vec<&str> = text.lines().collect();
         // The prompt (what is typed, nothing yet) ends the screen's last written line.
         let last = lines.iter().rposition(|l| !l.is_empty()).unwrap();
-        assert!(lines[last].ends_with("Enter) ▏"), "{width}×{height}: {text}");
+        assert!(lines[last].ends_with(") ▏"), "{width}×{height}: {text}");
         if width >= 40 {
             let error = lines.iter().position(|l| l.starts_with("«abc» — не ответ")).expect(&text);
-            let question = lines.iter().position(|l| l.starts_with("опрос: что будет")).expect(&text);
+            let question = lines.iter().position(|l| l.starts_with("пиксель (15, 15)")).expect(&text);
             assert!(error < question, "the reason above the question, on lines of its own: {text}");
         }
     }

@@ -2,10 +2,9 @@
 //! no external script or style) for a course site or a lecture. Every stop,
 //! every number and every word on it comes from the teaching model
 //! ([`crate::teach::step`]), embedded as data; the page's script only shows
-//! it. The quiz's answers are judged by the model's rule for depth answers
-//! (`-`, or a number read exactly: an integer, a decimal or a fraction, that
-//! a cell can hold), which the script applies to the embedded right answer;
-//! the tests hold the two to the same verdicts through a real browser.
+//! it. It asks nothing: a quiz is judged by the library's lesson
+//! ([`crate::teach::lesson`]), which this page does not carry, so it says in
+//! one line where the quiz is (the browser playground, `step --quiz`).
 
 use crate::numbers::exact_and_decimal;
 use crate::observe::explain::pixel_reason;
@@ -24,25 +23,13 @@ pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
         "noPixel": words!(lang, "page-no-pixel"),
         "frameAfter": words!(lang, "page-frame-after"),
         "depthAfter": words!(lang, "page-depth-after"),
-        "frameBefore": words!(lang, "page-frame-before"),
-        "depthBefore": words!(lang, "page-depth-before"),
-        "notNumber": words!(lang, "page-not-a-number", text = "{text}"),
-        "doesNotFit": words!(lang, "quiz-does-not-fit", text = "{text}", max = scene.depth_max().to_string()),
-        "unanswered": words!(lang, "page-unanswered"),
         "stored": words!(lang, "page-column-stored"),
-        "yours": words!(lang, "page-column-yours"),
         "after": words!(lang, "page-column-after"),
         "why": words!(lang, "page-column-why"),
-        "check": words!(lang, "page-check"),
         "keeps": words!(lang, "page-keeps", value = "{after}"),
-        "right": words!(lang, "page-right"),
-        "wrong": words!(lang, "page-wrong"),
-        "quizScore": words!(lang, "page-quiz-score", right = "{right}", total = "{total}"),
         "status": words!(lang, "page-status", at = "{at}", count = "{count}"),
     });
-    // The most a cell can hold, for the quiz's "no cell can hold it" (`None`: exact depths).
-    let max = (scene.rules.store == crate::rules::DepthStore::Quantized).then(|| scene.depth_max());
-    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "op": scene.depth_test.symbol(), "max": max, "words": words, "stops": stops});
+    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "op": scene.depth_test.symbol(), "words": words, "stops": stops});
     let data = serde_json::to_string(&data).expect("serializing plain data cannot fail");
     let (head, tail) = TEMPLATE.split_once("{{DATA}}").expect("the template has a place for the data");
     // The data goes in last, so that nothing in it (a polygon named "{{TITLE}}") is
@@ -97,8 +84,7 @@ pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop, asked: Buffe
             serde_json::json!({
                 "x": e.x, "z": exact_and_decimal(lang, e.depth.value()), "stored": e.stored_before.text(lang),
                 "written": e.outcome == Outcome::Written, "after": e.stored_after.text(lang),
-                "afterExact": crate::numbers::fraction(e.stored_after.value()), "frame": e.frame_after,
-                "frameBefore": e.frame_before,
+                "frame": e.frame_after,
                 "reason": pixel_reason(lang, scene, e),
             })
         })
@@ -159,7 +145,7 @@ fn fill(lang: Lang, part: &str, title: &str) -> String {
         ("{{NEXT_POLYGON}}", Some("page-next-polygon")),
         ("{{FRAME}}", Some("page-frame")),
         ("{{DEPTH}}", Some("page-depth")),
-        ("{{QUIZ}}", Some("page-quiz")),
+        ("{{NO_QUIZ}}", Some("page-no-quiz")),
     ] {
         let text = key.map_or_else(|| lang.code().to_string(), |key| crate::words::text(lang, key, &[]));
         part = part.replace(marker, &escape(&text));
@@ -186,7 +172,7 @@ td.earlier { color: #0072b2; font-weight: bold; }
 #panel { max-width: 40em; }
 #pixels { border-collapse: collapse; font-size: 13px; }
 #pixels td, #pixels th { border-bottom: 1px solid #eee; padding: 2px 6px; text-align: left; }
-.written, .right { color: #1a7f37; } .hidden, .wrong { color: #b42318; } .unanswered { color: #9a6700; }
+.written { color: #1a7f37; } .hidden { color: #b42318; }
 button { margin: 0 .3em .5em 0; }
 #status { color: #555; }
 </style></head>
@@ -196,9 +182,9 @@ button { margin: 0 .3em .5em 0; }
 <button id="back">{{BACK}}</button><button id="next">{{NEXT}}</button>
 <button id="prevPolygon">{{PREVIOUS_POLYGON}}</button><button id="nextPolygon">{{NEXT_POLYGON}}</button>
 <button id="frame">{{FRAME}}</button><button id="depth">{{DEPTH}}</button>
-<label><input type="checkbox" id="quiz"> {{QUIZ}}</label>
 <span id="status"></span>
 </div>
+<p id="noQuiz">{{NO_QUIZ}}</p>
 <div id="main"><div id="raster"></div><div id="panel"></div></div>
 <script type="application/json" id="data">{{DATA}}</script>
 <script>
@@ -207,10 +193,8 @@ const data = JSON.parse(document.getElementById("data").textContent);
 const words = data.words;
 let at = 0, view = "frame";
 const el = (tag, text, cls) => { const e = document.createElement(tag); if (text !== undefined) e.textContent = text; if (cls) e.className = cls; return e; };
-// The raster: after the scanline, or in the quiz until its answers are checked, before it
-// (the covered cells of the current row as they were), so that the grid gives nothing away.
-function renderGrid(stop, quiz) {
-  const before = quiz && !stop.checked;
+// The raster after the scanline: its covered cells in yellow, the polygon's earlier writes in blue.
+function renderGrid(stop) {
   const covered = new Map(stop.pixels.map(p => [p.x, p]));
   const earlier = new Set();
   for (let i = 0; i < at; i++) {
@@ -229,91 +213,31 @@ function renderGrid(stop, quiz) {
     tr.appendChild(el("th", (y === stop.row ? "▶ " : "") + y));
     row.forEach((v, x) => {
       const cls = y === stop.row && covered.has(x) ? "span" : earlier.has(y + "," + x) ? "earlier" : "";
-      const p = y === stop.row && before ? covered.get(x) : undefined;
-      const shown = p === undefined ? v : view === "frame" ? p.frameBefore : p.stored;
-      tr.appendChild(el("td", String(shown), cls));
+      tr.appendChild(el("td", String(v), cls));
     });
     table.appendChild(tr);
   });
-  const caption = before ? (view === "frame" ? words.frameBefore : words.depthBefore) : (view === "frame" ? words.frameAfter : words.depthAfter);
-  document.getElementById("raster").replaceChildren(el("div", caption), table);
+  document.getElementById("raster").replaceChildren(el("div", view === "frame" ? words.frameAfter : words.depthAfter), table);
 }
 function render() {
   const stop = data.stops[at];
   if (!stop) { document.getElementById("panel").textContent = words.noPixel; return; }
-  const quiz = document.getElementById("quiz").checked;
-  renderGrid(stop, quiz);
+  renderGrid(stop);
   const panel = document.getElementById("panel");
   panel.replaceChildren(el("h2", stop.heading), el("p", stop.scanline), el("p", stop.crossings));
   stop.spans.forEach(s => panel.appendChild(el("p", s)));
   const pixels = el("table"); pixels.id = "pixels";
-  const head = el("tr"); ["x", "z", words.stored, quiz ? words.yours : words.after, words.why].forEach(h => head.appendChild(el("th", h)));
+  const head = el("tr"); ["x", "z", words.stored, words.after, words.why].forEach(h => head.appendChild(el("th", h)));
   pixels.appendChild(head);
   stop.pixels.forEach(p => {
-    // In the quiz the row's colour would tell written from hidden: none until checked.
-    const tr = el("tr", undefined, quiz ? "" : p.written ? "written" : "hidden");
+    const tr = el("tr", undefined, p.written ? "written" : "hidden");
     tr.appendChild(el("td", String(p.x))); tr.appendChild(el("td", p.z)); tr.appendChild(el("td", p.stored));
-    if (quiz) {
-      const td = el("td"); const input = el("input"); input.size = 4; input.dataset.x = p.x; td.appendChild(input); tr.appendChild(td);
-      tr.appendChild(el("td", "", "why"));
-    } else {
-      tr.appendChild(el("td", p.written ? p.after : words.keeps.replace("{after}", p.after)));
-      tr.appendChild(el("td", p.reason));
-    }
+    tr.appendChild(el("td", p.written ? p.after : words.keeps.replace("{after}", p.after)));
+    tr.appendChild(el("td", p.reason));
     pixels.appendChild(tr);
   });
   panel.appendChild(pixels);
-  if (quiz) {
-    const check = el("button", words.check); check.id = "check";
-    check.onclick = () => {
-      let right = 0;
-      pixels.querySelectorAll("input").forEach((input, i) => {
-        const p = stop.pixels[i], typed = input.value.trim(), why = input.parentElement.nextSibling;
-        const verdict = typed === "" ? { again: words.unanswered } : judge(p, typed);
-        if (verdict.again !== undefined) { why.className = "why unanswered"; why.textContent = verdict.again; return; }
-        right += verdict.right ? 1 : 0;
-        why.className = verdict.right ? "why right" : "why wrong";
-        why.textContent = (verdict.right ? words.right : words.wrong) + p.reason;
-      });
-      stop.checked = true;
-      renderGrid(stop, true);
-      document.getElementById("status").textContent = words.quizScore.replace("{right}", right).replace("{total}", stop.pixels.length);
-    };
-    panel.appendChild(check);
-  }
   document.getElementById("status").textContent = words.status.replace("{at}", at + 1).replace("{count}", data.stops.length);
-}
-// A number read exactly, as the model reads one (an integer, a decimal with an optional
-// exponent, or a fraction of two): [numerator, denominator] as BigInts; null if it is not one.
-function decimal(text) {
-  const m = /^([+-]?)(\d*)(?:\.(\d*))?(?:[eE]([+-]?\d{1,4}))?$/.exec(text.trim());
-  if (!m || (m[2] + (m[3] || "")) === "") return null;
-  let num = BigInt((m[2] || "") + (m[3] || "")), den = 10n ** BigInt((m[3] || "").length);
-  const e = m[4] ? Number(m[4]) : 0;
-  if (e > 0) num *= 10n ** BigInt(e); else if (e < 0) den *= 10n ** BigInt(-e);
-  return [m[1] === "-" ? -num : num, den];
-}
-function exact(text) {
-  const parts = text.split("/");
-  if (parts.length > 2) return null;
-  const a = decimal(parts[0]);
-  if (!a || parts.length === 1) return a;
-  const b = decimal(parts[1]);
-  if (!b || b[0] === 0n) return null;
-  const n = a[0] * b[1], d = a[1] * b[0];
-  return d < 0n ? [-n, -d] : [n, d];
-}
-// The model's judge of a depth answer (teach::step::judge_depth): "-" means not written;
-// a number is right when it is the value the z-buffer holds after the pixel; anything else,
-// or a number no cell can hold, is asked again.
-function judge(p, typed) {
-  if (typed === "-") return { right: !p.written };
-  const q = exact(typed);
-  if (!q) return { again: words.notNumber.replace("{text}", typed) };
-  if (data.max !== null && (q[0] % q[1] !== 0n || q[0] / q[1] < 0n || q[0] / q[1] > BigInt(data.max)))
-    return { again: words.doesNotFit.replace("{text}", typed) };
-  const r = exact(p.afterExact);
-  return { right: q[0] * r[1] === r[0] * q[1] };
 }
 function go(i) { at = Math.max(0, Math.min(data.stops.length - 1, i)); render(); }
 function polygon(direction) {
@@ -329,9 +253,7 @@ document.getElementById("nextPolygon").onclick = () => polygon(1);
 document.getElementById("prevPolygon").onclick = () => polygon(-1);
 document.getElementById("frame").onclick = () => { view = "frame"; render(); };
 document.getElementById("depth").onclick = () => { view = "depth"; render(); };
-document.getElementById("quiz").onchange = render;
 document.addEventListener("keydown", e => {
-  if (e.target.tagName === "INPUT" && e.target.type !== "checkbox") return;
   const k = e.key;
   if (k === "n" || k === " " || k === "ArrowRight" || k === "ArrowDown") go(at + 1);
   else if (k === "b" || k === "ArrowLeft" || k === "ArrowUp") go(at - 1);

@@ -7,8 +7,9 @@
 //! stops, the quiz's verdicts, a homework answer's check, a pixel's history,
 //! the book-style figure, an edit of the scene, and the page's words.
 //!
-//! A scene is named [`SCENE_NAME`] in messages, where the command line names
-//! its file. A scene travels in a page's address as `#scene=` and the scene
+//! A scene is named in messages by [`scene_name`] ("the scene", in the
+//! student's language), where the command line names its file: the student
+//! never had a file. A scene travels in a page's address as `#scene=` and the scene
 //! JSON in base64url (RFC 4648 §5, padding optional): [`fragment_of`] and
 //! [`scene_of_fragment`].
 
@@ -27,12 +28,16 @@ use crate::scene::Scene;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::answer_from_text;
+use crate::teach::lesson::{Command, Lesson, Said};
 use crate::teach::page::{Buffers, buffer_data};
-use crate::teach::step::{Stepper, judge_coverage, judge_depth, judge_frame};
+use crate::teach::step::{Moved, Question, QuizMode, Stepper};
 use crate::words::{Lang, polygon_label};
 
-/// How a scene typed into the page is named in messages.
-pub const SCENE_NAME: &str = "scene.json";
+/// How the scene typed into the page is named in messages: "the scene", in
+/// the student's language.
+pub fn scene_name(lang: Lang) -> String {
+    words!(lang, "play-scene-name")
+}
 
 /// The largest raster the page shows cell by cell (each polygon's buffers,
 /// every stop): 128 × 128. A larger scene is still drawn and its final
@@ -49,7 +54,7 @@ pub const MAX_PRINTED_CELLS: u64 = 1024 * 1024;
 
 /// The scene read from `text`, or its error worded as the command line words it.
 fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
-    Scene::from_json(lang, text, Path::new(SCENE_NAME))
+    Scene::from_json(lang, text, Path::new(&scene_name(lang)))
         .map_err(|error| json!({"ok": false, "error": error.message(lang)}))
 }
 
@@ -136,6 +141,8 @@ pub fn view(lang: Lang, text: &str, at: usize) -> Value {
         "cleared": {"frame": scene.background, "depth": scene.clear_depth.level()},
         "framebuffer": framebuffer, "zbuffer": zbuffer,
         "stops": stops, "stop": stop, "notes": notes,
+        // The figure's colours for framebuffer values 1, 2, … (0 is white), so page and figure agree.
+        "palette": figure::PALETTE,
     })
 }
 
@@ -169,60 +176,130 @@ pub fn figure(lang: Lang, text: &str) -> Value {
     };
     let mut simulation = Simulation::new(&scene);
     simulation.finish(&mut Unobserved);
-    json!({"ok": true, "svg": figure::svg(lang, &scene, simulation.buffers(), last, Shading::Frame, SCENE_NAME)})
+    json!({"ok": true, "svg": figure::svg(lang, &scene, simulation.buffers(), last, Shading::Frame, &scene_name(lang))})
 }
 
-/// The record of stop number `stop` (0-based, in the stepper's order).
-fn stop_record(scene: &Scene, stop: usize) -> Option<crate::observe::trace::ScanlineRecord> {
-    let mut stepper = Stepper::new(scene, Arith::Exact);
-    let at = *crate::teach::page::stop_places(&mut stepper).get(stop)?;
-    Some(stepper.tracer().record(at).clone())
-}
-
-/// The quiz's question on the scene in `text`, at stop `stop`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Question {
-    /// Which columns the scanline covers.
-    Coverage,
-    /// What the z-buffer holds after pixel number `pixel` of the stop.
-    Depth(usize),
-    /// What the framebuffer holds after pixel number `pixel` of the stop.
-    Frame(usize),
-}
-
-/// The library's verdict on `typed` as the answer to `question` at stop
-/// `stop`: `{"right": bool, "expected", "why", "line"}`, or `{"again": …}`
-/// with the reason to ask again (not an answer, or a value no cell holds),
-/// or `{"ok": false, "error"}`.
-pub fn judge(lang: Lang, text: &str, stop: usize, question: Question, typed: &str) -> Value {
-    let scene = match scene_of(lang, text) {
-        Ok(scene) => scene,
-        Err(error) => return error,
-    };
-    let Some(record) = stop_record(&scene, stop) else {
-        return json!({"ok": false, "error": words!(lang, "play-no-such-stop")});
-    };
-    let typed = typed.trim();
-    let pixel = |number: usize| record.pixels.get(number);
-    let judged = match question {
-        Question::Coverage => judge_coverage(lang, &record, typed),
-        Question::Depth(number) | Question::Frame(number) => {
-            let Some(pixel) = pixel(number) else {
-                return json!({"ok": false, "error": words!(lang, "play-no-such-stop")});
-            };
-            match question {
-                Question::Frame(_) => judge_frame(lang, &scene, pixel, typed),
-                _ => judge_depth(lang, &scene, pixel, typed),
-            }
-        }
-    };
-    match judged {
-        Err(again) => json!({"ok": true, "again": again}),
-        Ok((right, _, expected, why)) => {
-            let line = if right { words!(lang, "page-right") } else { words!(lang, "page-wrong") };
-            json!({"ok": true, "right": right, "expected": expected, "why": why, "line": format!("{line}{why}")})
-        }
+/// The lesson of the scene in `text` with a quiz in `mode` or none, at
+/// `place` (polygon from 1, pixel row: where an address points) or, when it
+/// is `None` or no stop of the scene, at the first stop; or `{"ok": false,
+/// "error"}` with the scene's error.
+pub fn lesson(lang: Lang, text: &str, mode: Option<QuizMode>, place: Option<(usize, u32)>) -> Result<Lesson, Value> {
+    let mut lesson = Lesson::new(scene_of(lang, text)?, Arith::Exact, mode);
+    let placed = place.is_some_and(|(polygon, row)| {
+        matches!(lesson.place(polygon.saturating_sub(1), row), Said::Moved(Moved::To { at: Some(_), .. }))
+    });
+    if !placed {
+        lesson.start(None);
     }
+    Ok(lesson)
+}
+
+/// A page's command to the lesson: `{"key": "n"}` (a key of
+/// [`crate::teach::lesson::KEYS`]), `{"go": [polygon, row]}` (polygon
+/// from 1, as an address names it) or `{"answer": "15"}`.
+#[derive(Debug, Clone, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum PageCommand {
+    /// A key that acts alone.
+    Key(char),
+    /// A polygon (from 1) and a pixel row.
+    Go(usize, u32),
+    /// An answer to the open question.
+    Answer(String),
+}
+
+/// Carries out `command` (JSON, [`PageCommand`]) and answers with what became
+/// of it (`said`, in words; `kind`: `moved`, `refused`, `right`, `tryAgain`,
+/// `revealed`, `askAgain`, `skipped`, `nothingAsked`, `quit`) and the state
+/// after it ([`lesson_state`]).
+pub fn lesson_act(lang: Lang, lesson: &mut Lesson, command: &str) -> Value {
+    let command = match serde_json::from_str::<PageCommand>(command) {
+        Ok(PageCommand::Key(key)) => Command::from_key(key),
+        Ok(PageCommand::Go(polygon, row)) => {
+            Some(Command::GoTo { polygon: polygon.saturating_sub(1).min(usize::MAX - 1), row })
+        }
+        Ok(PageCommand::Answer(typed)) => Some(Command::Answer(typed)),
+        Err(_) => None,
+    };
+    let Some(command) = command else {
+        return json!({"ok": false, "error": words!(lang, "play-bad-edit")});
+    };
+    let said = lesson.act(lang, command);
+    let kind = match &said {
+        Said::Moved(Moved::To { .. }) => "moved",
+        Said::Moved(Moved::Refused(_)) => "refused",
+        Said::Right { .. } => "right",
+        Said::TryAgain { .. } => "tryAgain",
+        Said::Revealed(_) => "revealed",
+        Said::AskAgain(_) => "askAgain",
+        Said::Skipped(_) => "skipped",
+        Said::NothingAsked(_) => "nothingAsked",
+        Said::Quit => "quit",
+    };
+    let text = said.text(lang, lesson.scene());
+    json!({"ok": true, "kind": kind, "said": text, "state": lesson_state(lang, lesson)})
+}
+
+/// Everything the page shows of the lesson now, already cut to what may be
+/// shown: where it is (`polygon` from 1, `row`), the stop (heading, slope,
+/// scanline, crossings, spans, covered columns, the shown pixels' rows,
+/// how many are hidden, notes), the question (`prompt`, `asking`:
+/// `coverage`, `depth`, `frame` or null), the score and its words, and the
+/// buffers as the student may see them (`frame`, `depth`: printed matrices).
+pub fn lesson_state(lang: Lang, lesson: &mut Lesson) -> Value {
+    let asking = match lesson.question() {
+        Some(Question::Coverage { .. }) => Some("coverage"),
+        Some(Question::Depth { .. }) => Some("depth"),
+        Some(Question::Frame { .. }) => Some("frame"),
+        None => None,
+    };
+    let prompt = lesson.prompt(lang);
+    let score = lesson.score();
+    let open = lesson.open_questions();
+    let Some(view) = lesson.stop_view(lang) else {
+        return json!({"at": null, "end": words!(lang, "step-end"), "asking": asking, "prompt": prompt,
+                      "score": score.map(|s| s.text(lang)), "open": open});
+    };
+    // The buffers' rows around the scanline, numbered as the line mode prints them, its row
+    // marked `▶`; and the whole framebuffer's cells for the raster's colours.
+    let height = lesson.scene().height;
+    let rows = view.row.saturating_sub(2)..=(view.row + 2).min(height - 1);
+    let style =
+        crate::observe::report::MatrixStyle { axes: true, mark: Some(view.row), rows: Some(rows), color: false };
+    let (frame, depth, cells) = match lesson.buffers() {
+        Some(buffers) => (
+            Value::from(crate::observe::report::matrix_styled(&buffers.frame_rows(), &style)),
+            Value::from(crate::observe::report::matrix_styled(&buffers.depth_rows(), &style)),
+            json!(buffers.frame_rows()),
+        ),
+        None => (Value::Null, Value::Null, Value::Null),
+    };
+    // Where the scanline crosses the outline, for drawing, once the crossings may be shown.
+    let crossings_x: Vec<f64> = match (&view.crossings, lesson.record()) {
+        (Some(_), Some(record)) => record.crossings.iter().map(to_f64).collect(),
+        _ => Vec::new(),
+    };
+    let asked_x = match lesson.question() {
+        Some(Question::Depth { pixel, .. } | Question::Frame { pixel, .. }) => Some(pixel.x),
+        _ => None,
+    };
+    let rows: Vec<Value> = view
+        .rows
+        .iter()
+        .map(|r| {
+            json!({"x": r.x, "z": r.z, "approx": r.approx, "stored": r.stored, "test": r.test,
+                        "after": r.after, "frame": r.frame, "written": r.written})
+        })
+        .collect();
+    json!({
+        "at": {"polygon": view.stop.polygon + 1, "row": view.row},
+        "heading": view.heading, "slope": view.slope, "scanline": view.scanline,
+        "crossings": view.crossings, "spans": view.spans, "spanDepths": view.span_depths,
+        "columns": view.columns, "rows": rows, "hidden": view.hidden, "notes": view.notes,
+        "asking": asking, "prompt": prompt, "secondTry": lesson.second_try(), "open": open,
+        "score": score.map(|s| s.text(lang)),
+        "frame": frame, "depth": depth, "cells": cells, "crossingsX": crossings_x, "askedX": asked_x,
+    })
 }
 
 /// A homework answer for `buffer` after polygon number `after` (0-based),
@@ -244,10 +321,11 @@ pub fn check(lang: Lang, text: &str, after: usize, buffer: Buffer, typed: &str) 
     };
     let name = words!(lang, "play-your-answer");
     let answers = vec![(buffer, Path::new(&name), answer)];
-    let report = match crate::teach::check::check(lang, &scene, Path::new(SCENE_NAME), after, answers, Arith::Exact) {
-        Ok(report) => report,
-        Err(error) => return json!({"ok": false, "error": error.message(lang)}),
-    };
+    let report =
+        match crate::teach::check::check(lang, &scene, Path::new(&scene_name(lang)), after, answers, Arith::Exact) {
+            Ok(report) => report,
+            Err(error) => return json!({"ok": false, "error": error.message(lang)}),
+        };
     let answer = &report.answers[0];
     let wrong: Vec<Value> = answer
         .wrong
@@ -270,7 +348,7 @@ pub fn explain(lang: Lang, text: &str, x: u32, y: u32) -> Value {
         Err(error) => return error,
     };
     match history(&scene, (x, y), Extras::default()) {
-        Ok(history) => json!({"ok": true, "text": history.text(lang, &scene, Path::new(SCENE_NAME))}),
+        Ok(history) => json!({"ok": true, "text": history.text(lang, &scene, Path::new(&scene_name(lang)))}),
         Err(error) => json!({"ok": false, "error": error.message(lang)}),
     }
 }
@@ -425,22 +503,22 @@ pub fn one_file_page(lang: Lang, text: &str) -> Option<String> {
             };
         }
         let utf8 = |bytes: &'static [u8]| std::str::from_utf8(bytes).expect("the playground's files are UTF-8");
-        let (index, script, style, glue) = (
+        let (index, script, style, glue, module) = (
             utf8(built!("index.html")),
             utf8(built!("playground.js")),
             utf8(built!("playground.css")),
             utf8(built!("zsim_web.js")),
+            utf8(built!("zsim_module.js")),
         );
-        let module = base64::engine::general_purpose::STANDARD.encode(built!("zsim_web_bg.wasm"));
         let start = format!(
-            "window.ZSIM_WASM = Uint8Array.from(atob(\"{module}\"), (c) => c.charCodeAt(0));\n\
-             window.ZSIM_SCENE = {};\nwindow.ZSIM_LANG = \"{}\";\n",
+            "window.ZSIM_SCENE = {};\nwindow.ZSIM_LANG = \"{}\";\n",
             crate::teach::page::embedded_json(&Value::String(text.to_string()).to_string()),
             lang.code()
         );
         let page = index
             .replace(r#"<link rel="stylesheet" href="playground.css">"#, &format!("<style>\n{style}</style>"))
             .replace(r#"<script src="zsim_web.js"></script>"#, &format!("<script>\n{glue}\n{start}</script>"))
+            .replace(r#"<script src="zsim_module.js"></script>"#, &format!("<script>\n{module}</script>"))
             .replace(r#"<script src="playground.js"></script>"#, &format!("<script>\n{script}</script>"));
         Some(page)
     }
@@ -462,11 +540,13 @@ pub fn page_words(lang: Lang) -> Value {
     words.insert("frameName".into(), Value::String(Buffer::Frame.name(lang)));
     words.insert("keeps".into(), Value::String(words!(lang, "page-keeps", value = "{after}")));
     words.insert("status".into(), Value::String(words!(lang, "page-status", at = "{at}", count = "{count}")));
+    words.insert("hidden".into(), Value::String(words!(lang, "play-hidden", count = "{count}")));
+    words.insert("legendValue".into(), Value::String(words!(lang, "play-legend-value", value = "{value}")));
     Value::Object(words)
 }
 
 /// The page's labels: the name the page uses, and the catalogue's key.
-const PAGE_WORDS: [(&str, &str); 41] = [
+const PAGE_WORDS: [(&str, &str); 55] = [
     ("title", "play-title"),
     ("intro", "play-intro"),
     ("language", "play-language"),
@@ -503,11 +583,25 @@ const PAGE_WORDS: [(&str, &str); 41] = [
     ("back", "page-back"),
     ("next", "page-next"),
     ("quiz", "page-quiz"),
-    ("coverage", "play-coverage"),
     ("stored", "page-column-stored"),
     ("why", "page-column-why"),
     ("check", "page-check"),
-    ("unanswered", "page-unanswered"),
+    ("previousPolygon", "page-previous-polygon"),
+    ("nextPolygon", "page-next-polygon"),
+    ("skip", "page-skip"),
+    ("quizKind", "play-quiz-kind"),
+    ("coverageKind", "play-coverage-kind"),
+    ("examples", "play-examples"),
+    ("reset", "play-reset"),
+    ("copied", "play-copied"),
+    ("gridLabel", "play-grid-label"),
+    ("bufferKind", "play-buffer-kind"),
+    ("exampleRogers", "play-example-rogers"),
+    ("exampleSection", "play-example-section"),
+    ("exampleLess", "play-example-less"),
+    ("exampleCull", "play-example-cull"),
+    ("exampleConcave", "play-example-concave"),
+    ("legend", "play-legend"),
 ];
 
 #[cfg(test)]
@@ -538,7 +632,7 @@ mod tests {
         );
         assert_eq!(view["ok"], false);
         let error = view["error"].as_str().unwrap();
-        assert!(error.starts_with("scene.json: polygon 1: vertices[1]: 2 entries"), "{error}");
+        assert!(error.starts_with("the scene: polygon 1: vertices[1]: 2 entries"), "{error}");
     }
 
     /// An edit keeps every other number exactly as written and lays the scene out one polygon a line.
@@ -568,20 +662,23 @@ mod tests {
         assert!(scene_of_fragment(Lang::En, "scene=%%%").is_err());
     }
 
-    /// The quiz's verdicts are the library's judges': 15 right at (15, 15) on the triangle's first stop there.
+    /// The page's lesson is the library's: the same refusals, hints and score as every front end.
     #[test]
-    fn the_quiz_is_judged_by_the_library() {
-        let view = view(Lang::En, BOOK, 0);
-        let stops = view["stops"].as_array().unwrap();
-        let stop = stops.iter().position(|s| s["polygon"] == 1 && s["row"] == 15).unwrap();
-        let shown = super::stop(Lang::En, BOOK, stop);
-        assert_eq!(shown["row"], 15);
-        let pixel = shown["pixels"].as_array().unwrap().iter().position(|p| p["x"] == 15).unwrap();
-        assert_eq!(judge(Lang::En, BOOK, stop, Question::Depth(pixel), "15")["right"], true);
-        assert_eq!(judge(Lang::En, BOOK, stop, Question::Depth(pixel), "14")["right"], false);
-        assert!(judge(Lang::En, BOOK, stop, Question::Depth(pixel), "16")["again"].is_string());
-        assert_eq!(judge(Lang::En, BOOK, stop, Question::Frame(pixel), "2")["right"], true);
-        assert_eq!(judge(Lang::En, BOOK, stop, Question::Coverage, "15-27")["right"], true);
+    fn the_page_asks_the_librarys_lesson() {
+        let mut lesson = lesson(Lang::En, BOOK, Some(QuizMode::Depth), None).unwrap();
+        let moved = lesson_act(Lang::En, &mut lesson, r#"{"go": [2, 15]}"#);
+        assert_eq!(moved["kind"], "refused", "{moved}");
+        lesson_act(Lang::En, &mut lesson, r#"{"key": "s"}"#);
+        let moved = lesson_act(Lang::En, &mut lesson, r#"{"go": [2, 15]}"#);
+        assert_eq!((moved["kind"].as_str(), moved["state"]["at"]["row"].as_u64()), (Some("moved"), Some(15)));
+        assert_eq!(moved["state"]["rows"].as_array().unwrap().len(), 0, "{moved}");
+        let wrong = lesson_act(Lang::En, &mut lesson, r#"{"answer": "14"}"#);
+        assert_eq!(wrong["kind"], "tryAgain");
+        assert!(!wrong["said"].as_str().unwrap().contains("15"), "{wrong}");
+        let right = lesson_act(Lang::En, &mut lesson, r#"{"answer": "15"}"#);
+        assert_eq!(right["kind"], "right");
+        assert_eq!(right["state"]["rows"][0]["z"], "29/2");
+        assert!(right["state"]["score"].as_str().unwrap().contains("1 at the second"), "{right}");
     }
 
     /// The page's words exist in every language (a missing key would show its name).

@@ -28,6 +28,18 @@ pub enum Refusal {
         /// The row asked for.
         row: u32,
     },
+    /// Next polygon from the last polygon with a stop.
+    NoLaterPolygon,
+    /// A move while the scanline's questions are open.
+    QuestionsOpen {
+        /// How many.
+        open: usize,
+    },
+    /// A polygon number beyond the scene's.
+    NoSuchPolygon {
+        /// 0-based polygon index asked for.
+        polygon: usize,
+    },
     /// A row the current polygon does not reach.
     NotReached {
         /// 0-based polygon index.
@@ -43,6 +55,14 @@ impl Refusal {
         match *self {
             Refusal::First => words!(lang, "step-first"),
             Refusal::NoEarlierPolygon => words!(lang, "tui-no-earlier"),
+            Refusal::NoLaterPolygon => words!(lang, "tui-no-later"),
+            Refusal::QuestionsOpen { open } => words!(lang, "lesson-questions-open", open = open.to_string()),
+            Refusal::NoSuchPolygon { polygon } => words!(
+                lang,
+                "lesson-no-such-polygon",
+                polygon = (polygon + 1).to_string(),
+                count = scene.polygons.len().to_string()
+            ),
             Refusal::OutsideRaster { row } => {
                 words!(lang, "step-outside-raster", row = row.to_string(), last = (scene.height - 1).to_string())
             }
@@ -175,11 +195,19 @@ impl<'s> Stepper<'s> {
 
     /// Scanline `row` of the current polygon (the last polygon at the end).
     pub fn go(&mut self, row: u32) -> Moved {
+        let polygon = self.at.map_or(0, |stop| stop.polygon).min(self.scene().polygons.len().saturating_sub(1));
+        self.go_to(polygon, row)
+    }
+
+    /// Scanline `row` of polygon `polygon` (0-based).
+    pub fn go_to(&mut self, polygon: usize, row: u32) -> Moved {
         let scene = self.scene();
+        if polygon >= scene.polygons.len() {
+            return Moved::Refused(Refusal::NoSuchPolygon { polygon });
+        }
         if row >= scene.height {
             return Moved::Refused(Refusal::OutsideRaster { row });
         }
-        let polygon = self.at.map_or(0, |stop| stop.polygon).min(scene.polygons.len().saturating_sub(1));
         match self.tracer.trace(polygon).scanlines.iter().position(|r| r.row == row) {
             Some(scanline) => self.arrive(Some(Stop { polygon, scanline }), Vec::new()),
             None => Moved::Refused(Refusal::NotReached { polygon, row }),
@@ -329,136 +357,8 @@ pub struct Verdict {
     pub why: String,
 }
 
-/// What became of a typed answer.
-#[derive(Debug, Clone)]
-pub enum Reply {
-    /// Judged and scored.
-    Judged(Box<Verdict>),
-    /// Not an answer to this question: why, and the question stays.
-    AskAgain(String),
-}
-
-/// The quiz: which question comes next at the stepper's stop, the score,
-/// and each mistake with what was right and why.
-#[derive(Debug, Clone)]
-pub struct Quiz {
-    /// What it asks.
-    pub mode: QuizMode,
-    /// Answers judged right.
-    pub right: usize,
-    /// Answers judged.
-    pub asked: usize,
-    mistakes: Vec<String>,
-    progress: Progress,
-}
-
-/// How far the questions of one stop have got.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-struct Progress {
-    stop: Option<Stop>,
-    coverage_answered: bool,
-    pixels_answered: usize,
-}
-
-impl Quiz {
-    /// A quiz with nothing asked yet.
-    pub fn new(mode: QuizMode) -> Quiz {
-        Quiz { mode, right: 0, asked: 0, mistakes: Vec::new(), progress: Progress::default() }
-    }
-
-    /// How far the questions of `stop` have got: a stop left and come back
-    /// to is asked again from its first question.
-    fn progress(&self, stop: Stop) -> Progress {
-        if self.progress.stop == Some(stop) {
-            self.progress
-        } else {
-            Progress { stop: Some(stop), ..Progress::default() }
-        }
-    }
-
-    /// The question the stepper's stop asks next; `None` at the end or when
-    /// every question of the stop has been answered.
-    pub fn question(&self, stepper: &mut Stepper<'_>) -> Option<Question> {
-        let stop = stepper.at()?;
-        let progress = self.progress(stop);
-        let record = stepper.tracer.record(stop);
-        if self.mode == QuizMode::Coverage && !progress.coverage_answered {
-            return Some(Question::Coverage { stop, row: record.row });
-        }
-        let pixel = record.pixels.get(progress.pixels_answered)?.clone();
-        let index = progress.pixels_answered;
-        Some(match self.mode {
-            QuizMode::Frame => Question::Frame { stop, index, pixel },
-            QuizMode::Depth | QuizMode::Coverage => Question::Depth { stop, index, pixel },
-        })
-    }
-
-    /// Whether the student must still say which centres the stop covers
-    /// (until then a front end shows neither the spans nor the covered cells).
-    pub fn coverage_pending(&self, stepper: &mut Stepper<'_>) -> bool {
-        matches!(self.question(stepper), Some(Question::Coverage { .. }))
-    }
-
-    /// How many of the stop's covered pixels have been answered (and so may
-    /// be shown).
-    pub fn pixels_answered(&self, stop: Stop) -> usize {
-        self.progress(stop).pixels_answered
-    }
-
-    /// Judges `typed` as the answer to the current question, scores it and
-    /// moves to the next question; `None` when nothing is asked.
-    pub fn answer(&mut self, lang: Lang, stepper: &mut Stepper<'_>, typed: &str) -> Option<Reply> {
-        let question = self.question(stepper)?;
-        let scene = stepper.scene();
-        let typed = typed.trim();
-        let judged = match &question {
-            Question::Coverage { stop, .. } => judge_coverage(lang, stepper.tracer.record(*stop), typed),
-            Question::Depth { pixel, .. } => judge_depth(lang, scene, pixel, typed),
-            Question::Frame { pixel, .. } => judge_frame(lang, scene, pixel, typed),
-        };
-        let verdict = match judged {
-            Ok((right, meant, expected, why)) => {
-                let said = printable(typed).into_owned();
-                Verdict { question: question.clone(), right, said, meant, expected, why }
-            }
-            Err(again) => return Some(Reply::AskAgain(again)),
-        };
-        let mut progress = self.progress(stepper.at()?);
-        match question {
-            Question::Coverage { .. } => progress.coverage_answered = true,
-            Question::Depth { .. } | Question::Frame { .. } => progress.pixels_answered += 1,
-        }
-        self.progress = progress;
-        self.asked += 1;
-        if verdict.right {
-            self.right += 1;
-        } else {
-            self.mistakes.push(mistake_text(lang, scene, &verdict));
-        }
-        Some(Reply::Judged(Box::new(verdict)))
-    }
-
-    /// Each mistake, with what was right and why.
-    pub fn mistakes(&self) -> &[String] {
-        &self.mistakes
-    }
-
-    /// The score, and each mistake with what was right and why.
-    pub fn summary(&self, lang: Lang) -> String {
-        let score = words!(lang, "quiz-score", right = self.right.to_string(), asked = self.asked.to_string());
-        let mut text = format!("{score}\n");
-        if !self.mistakes.is_empty() {
-            text.push_str(&format!("{}\n", words!(lang, "quiz-mistakes")));
-            for mistake in &self.mistakes {
-                text.push_str(&format!("  {mistake}\n"));
-            }
-        }
-        text
-    }
-}
-
 /// A wrong answer as the summary lists it.
-fn mistake_text(lang: Lang, scene: &Scene, verdict: &Verdict) -> String {
+pub(crate) fn mistake_text(lang: Lang, scene: &Scene, verdict: &Verdict) -> String {
     match &verdict.question {
         Question::Coverage { stop, row } => words!(
             lang,
@@ -592,16 +492,31 @@ pub fn columns_text(columns: &[u32]) -> String {
     runs.iter().map(|(a, b)| if a == b { a.to_string() } else { format!("{a}-{b}") }).collect::<Vec<_>>().join(" ")
 }
 
-/// Reads `16-27`, `3-5 9-12`, `4` or `-` as columns; `None` when it is not that.
+/// Reads columns as zsim writes them and students type them: runs as
+/// `16-27`, `16 … 27`, `16...27` or `16..27`, apart by spaces or commas
+/// (`3-5 9-12`, `28, 29`), a single `4`, or `-` for none; `None` when it is
+/// not that.
 pub fn parse_columns(text: &str) -> Option<Vec<u32>> {
     if text.trim() == "-" {
         return Some(Vec::new());
     }
+    // Every way of writing a run's dash as `-`, with no space around it.
+    let dashed = text.replace("...", "-").replace('…', "-").replace("..", "-").replace(['–', '—'], "-");
+    let mut joined = String::with_capacity(dashed.len());
+    for (i, part) in dashed.split('-').enumerate() {
+        if i > 0 {
+            joined.truncate(joined.trim_end().len());
+            joined.push('-');
+            joined.push_str(part.trim_start());
+        } else {
+            joined.push_str(part);
+        }
+    }
     let mut columns = Vec::new();
-    for run in text.split([' ', ',']).filter(|r| !r.is_empty()) {
-        let (a, b) = run.split_once(['-', '…']).unwrap_or((run, run));
-        let (a, b): (u32, u32) = (a.trim().parse().ok()?, b.trim().parse().ok()?);
-        if a > b || b - a > 100_000 {
+    for run in joined.split([' ', ',', ';']).filter(|r| !r.is_empty()) {
+        let (a, b) = run.split_once('-').unwrap_or((run, run));
+        let (a, b): (u32, u32) = (a.parse().ok()?, b.parse().ok()?);
+        if a > b || b - a > 100_000 || columns.len() > 100_000 {
             return None;
         }
         columns.extend(a..=b);
@@ -623,81 +538,18 @@ mod tests {
             .unwrap()
     }
 
-    /// The coverage question comes first in a coverage quiz, then one depth
-    /// question per covered pixel; a range answers it (the full-screen app
-    /// once skipped it and called `16-27` no answer).
-    #[test]
-    fn the_coverage_quiz_asks_coverage_first_and_takes_a_range() {
-        let scene = book();
-        let mut stepper = Stepper::new(&scene, Arith::Exact);
-        stepper.start(None);
-        assert_eq!(stepper.go(15), Moved::To { at: stepper.at(), skipped: Vec::new() });
-        let mut quiz = Quiz::new(QuizMode::Coverage);
-        assert!(matches!(quiz.question(&mut stepper), Some(Question::Coverage { row: 15, .. })));
-        let covered = columns_text(&stepper.record().unwrap().pixels.iter().map(|p| p.x).collect::<Vec<_>>());
-        let Some(Reply::Judged(verdict)) = quiz.answer(Lang::En, &mut stepper, &covered) else { panic!("not judged") };
-        assert!(verdict.right, "{verdict:?}");
-        assert_eq!((quiz.right, quiz.asked), (1, 1));
-        assert!(matches!(quiz.question(&mut stepper), Some(Question::Depth { index: 0, .. })));
-    }
-
-    #[test]
-    fn an_answer_that_is_not_one_is_asked_again_and_not_scored() {
-        let scene = book();
-        let mut stepper = Stepper::new(&scene, Arith::Exact);
-        stepper.start(None);
-        let mut quiz = Quiz::new(QuizMode::Depth);
-        assert!(matches!(quiz.answer(Lang::En, &mut stepper, "zz"), Some(Reply::AskAgain(_))));
-        assert!(
-            matches!(quiz.answer(Lang::En, &mut stepper, "16"), Some(Reply::AskAgain(_))),
-            "a 4-bit z-buffer holds 0 … 15"
-        );
-        assert_eq!(quiz.asked, 0);
-    }
-
-    /// One judge: `15`, `15.0` and `30/2` mean the same number.
-    #[test]
-    fn a_number_is_judged_by_its_value_not_its_spelling() {
-        let scene = book();
-        let mut stepper = Stepper::new(&scene, Arith::Exact);
-        stepper.start(None);
-        let quiz = Quiz::new(QuizMode::Depth);
-        let Some(Question::Depth { pixel, .. }) = quiz.question(&mut stepper) else { panic!("no depth question") };
-        let value = pixel.stored_after.text(Lang::En);
-        let twice = format!("{}/2", 2 * value.parse::<i64>().unwrap());
-        for typed in [value.clone(), format!("{value}.0"), twice] {
-            let (right, ..) = judge_depth(Lang::En, &scene, &pixel, &typed).unwrap();
-            assert!(right, "{typed}");
-        }
-    }
-
-    /// The framebuffer question: the value after the pixel, judged by value.
-    #[test]
-    fn the_framebuffer_quiz_asks_the_framebuffer_value() {
-        let scene = book();
-        let mut stepper = Stepper::new(&scene, Arith::Exact);
-        stepper.start(None);
-        let mut quiz = Quiz::new(QuizMode::Frame);
-        let Some(Question::Frame { pixel, .. }) = quiz.question(&mut stepper) else {
-            panic!("no framebuffer question")
-        };
-        assert!(
-            matches!(quiz.answer(Lang::En, &mut stepper, "4"), Some(Reply::AskAgain(_))),
-            "a 2-bit framebuffer holds 0 … 3"
-        );
-        let Some(Reply::Judged(verdict)) = quiz.answer(Lang::En, &mut stepper, &pixel.frame_after.to_string()) else {
-            panic!("not judged")
-        };
-        assert!(verdict.right);
-        assert!(matches!(quiz.question(&mut stepper), Some(Question::Frame { index: 1, .. })));
-    }
-
     #[test]
     fn columns_are_read_as_students_write_them() {
         assert_eq!(parse_columns("16-27"), Some((16..=27).collect()));
         assert_eq!(parse_columns("3-5 9"), Some(vec![3, 4, 5, 9]));
         assert_eq!(parse_columns("-"), Some(vec![]));
         assert_eq!(parse_columns("x"), None);
+        for typed in ["28 … 29", "28-29", "28..29", "28...29", "28, 29", "28 29", "28 - 29", "28–29"] {
+            assert_eq!(parse_columns(typed), Some(vec![28, 29]), "{typed}");
+        }
+        assert_eq!(parse_columns("3-5, 9 … 10"), Some(vec![3, 4, 5, 9, 10]));
+        assert_eq!(parse_columns("-3"), None);
+        assert_eq!(parse_columns("5-3"), None);
         assert_eq!(parse_columns(""), None);
         assert_eq!(columns_text(&[3, 4, 5, 9]), "3-5 9");
     }

@@ -30,6 +30,7 @@ mod hard_cases;
 mod hardening;
 mod languages;
 mod layers;
+mod lesson;
 mod platforms;
 mod playground;
 mod run_command;

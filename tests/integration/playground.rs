@@ -12,17 +12,17 @@ use std::time::{Duration, Instant};
 use fantoccini::actions::{InputSource, MOUSE_BUTTON_LEFT, MouseActions, PointerAction};
 use fantoccini::{Client, Locator};
 use zsim::Lang;
-use zsim::playground::{self, Question};
+use zsim::playground;
 
 use crate::browser::{click, text};
 use crate::chromium::{Driver, driver, serve, session_as};
 
-fn manifest() -> &'static Path {
+pub(crate) fn manifest() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
 /// The site `web/build` wrote, or `None` after saying it is missing.
-fn site() -> Option<PathBuf> {
+pub(crate) fn site() -> Option<PathBuf> {
     let site = manifest().join("target/web");
     if site.join("index.html").is_file() && site.join("zsim_web_bg.wasm").is_file() {
         return Some(site);
@@ -39,12 +39,12 @@ fn served(name: &str) -> Option<(Driver, PathBuf, PathBuf, u16)> {
     Some((driver, browser, scratch(name), serve(site)))
 }
 
-fn runtime() -> tokio::runtime::Runtime {
+pub(crate) fn runtime() -> tokio::runtime::Runtime {
     tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap()
 }
 
 /// The final buffers `zsim run --final` prints for `scene`, bare: (framebuffer, z-buffer).
-fn run_final(scene: &str, scratch: &Path) -> (String, String) {
+pub(crate) fn run_final(scene: &str, scratch: &Path) -> (String, String) {
     let file = scratch.join("scene.json");
     std::fs::write(&file, scene).unwrap();
     let output =
@@ -62,7 +62,7 @@ fn run_final(scene: &str, scratch: &Path) -> (String, String) {
 }
 
 /// Waits until the page shows a final framebuffer, and returns both buffers as the page holds them.
-async fn shown_buffers(client: &Client) -> (String, String) {
+pub(crate) async fn shown_buffers(client: &Client) -> (String, String) {
     let start = Instant::now();
     loop {
         let frame = inner_text(client, "framebuffer").await;
@@ -75,24 +75,24 @@ async fn shown_buffers(client: &Client) -> (String, String) {
 }
 
 /// An element's text exactly as it is in the page (a `<pre>`'s spaces and its last newline kept).
-async fn inner_text(client: &Client, id: &str) -> String {
+pub(crate) async fn inner_text(client: &Client, id: &str) -> String {
     let script = format!("const e = document.getElementById('{id}'); return e ? e.textContent : '';");
     client.execute(&script, vec![]).await.unwrap().as_str().unwrap_or_default().to_string()
 }
 
-async fn scene_text(client: &Client) -> String {
+pub(crate) async fn scene_text(client: &Client) -> String {
     client.execute("return document.getElementById('json').value;", vec![]).await.unwrap().as_str().unwrap().to_string()
 }
 
 /// Types `value` into vertex `vertex`'s coordinate `coordinate` of polygon `polygon` (0-based) and leaves the box.
-async fn type_vertex(client: &Client, polygon: usize, vertex: usize, coordinate: usize, value: &str) {
+pub(crate) async fn type_vertex(client: &Client, polygon: usize, vertex: usize, coordinate: usize, value: &str) {
     let css = format!("input.coord[data-p='{polygon}'][data-v='{vertex}'][data-c='{coordinate}']");
     let input = client.find(Locator::Css(&css)).await.unwrap();
     input.clear().await.unwrap();
     input.send_keys(&format!("{value}\u{e004}")).await.unwrap();
 }
 
-fn scratch(name: &str) -> PathBuf {
+pub(crate) fn scratch(name: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
@@ -164,44 +164,14 @@ fn the_playground_shows_what_run_final_prints_as_a_scene_is_typed_dragged_and_li
     crate::ran("the playground's edits and links through WebDriver", &format!("{} random scenes", random_scenes.len()));
 }
 
-/// The quiz on the triangle's scanline 15 and a pasted homework answer:
-/// each verdict the page shows is the library's, and the homework's
-/// misconception is the one `zsim check` names for the same file.
+/// A pasted and a typed homework answer and a pixel's history: each verdict
+/// the page shows is `zsim check`'s, the homework's misconception the one
+/// it names for the same file, the history `zsim explain`'s. (The quiz is
+/// the lesson's: `lesson.rs`.)
 #[test]
-fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
-    let Some((driver, browser, dir, port)) = served("playground-quiz") else { return };
+fn the_playground_checks_a_homework_as_check_does() {
+    let Some((driver, browser, dir, port)) = served("playground-homework") else { return };
     let book = std::fs::read_to_string(manifest().join("examples/rogers.json")).unwrap();
-    let view = playground::view(Lang::En, &book, 0);
-    let stops = view["stops"].as_array().unwrap();
-    let stop = stops.iter().position(|s| s["polygon"] == 1 && s["row"] == 15).unwrap();
-    let pixels = playground::stop(Lang::En, &book, stop)["pixels"].as_array().unwrap().len();
-    let typed = ["15", "10", "zz", "24/2", "12.0", "1.1e1", "-", "16", "10.5", "", "", "", ""];
-    assert_eq!(pixels, typed.len());
-    let expected: Vec<(String, String)> = typed
-        .iter()
-        .enumerate()
-        .map(|(i, t)| {
-            if t.is_empty() {
-                return ("again".to_string(), "no answer".to_string());
-            }
-            let verdict = playground::judge(Lang::En, &book, stop, Question::Depth(i), t);
-            match verdict["again"].as_str() {
-                Some(again) => ("again".to_string(), again.to_string()),
-                None => {
-                    let class = if verdict["right"] == true { "right" } else { "wrong" };
-                    (class.to_string(), verdict["line"].as_str().unwrap().to_string())
-                }
-            }
-        })
-        .collect();
-    assert_eq!(
-        expected.iter().map(|(c, _)| c.as_str()).collect::<Vec<_>>(),
-        [
-            "right", "wrong", "again", "right", "right", "right", "right", "again", "again", "again", "again", "again",
-            "again"
-        ],
-        "the library's verdicts this test holds the page to"
-    );
     // A homework drawn with the depth test the wrong way round, and zsim check's verdict on it.
     let reversed = book.replace(r#""depth_test": "greater""#, r#""depth_test": "less""#);
     let (_, answer) = run_final(&reversed, &dir);
@@ -218,9 +188,9 @@ fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
     let diagnosis = report.lines().last().unwrap().to_string();
 
     // Named as the page names the scene it holds.
-    std::fs::write(dir.join("scene.json"), &book).unwrap();
+    std::fs::write(dir.join("the scene"), &book).unwrap();
     let explain = Command::new(env!("CARGO_BIN_EXE_zsim"))
-        .args(["explain", "--lang", "en", "scene.json", "--pixel", "20,15"])
+        .args(["explain", "--lang", "en", "the scene", "--pixel", "20,15"])
         .current_dir(&dir)
         .output()
         .unwrap();
@@ -232,29 +202,6 @@ fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
         let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
         client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
         shown_buffers(&client).await;
-        for _ in 0..stop {
-            click(&client, "#next").await;
-        }
-        assert_eq!(text(&client, "#stop p").await, "scanline y = 15.5 (row 15)");
-        click(&client, "#quiz").await;
-        let inputs = client.find_all(Locator::Css("#pixels input")).await.unwrap();
-        assert_eq!(inputs.len(), typed.len());
-        for (input, typed) in inputs.iter().zip(typed) {
-            if !typed.is_empty() {
-                input.send_keys(typed).await.unwrap();
-            }
-        }
-        client.find(Locator::Css("#coverage")).await.unwrap().send_keys("15-27").await.unwrap();
-        click(&client, "#checkQuiz").await;
-        let mut shown = Vec::new();
-        for cell in client.find_all(Locator::Css("#pixels td.why")).await.unwrap() {
-            let class = cell.attr("class").await.unwrap().unwrap_or_default();
-            shown.push((class.trim_start_matches("why ").to_string(), cell.text().await.unwrap()));
-        }
-        assert_eq!(shown, expected, "the page's verdicts are the library's");
-        let coverage = playground::judge(Lang::En, &book, stop, Question::Coverage, "15-27");
-        assert_eq!(text(&client, "#coverageWhy").await, coverage["line"].as_str().unwrap());
-
         // A click on pixel (20, 15) shows its history as `zsim explain` prints it (the scene named as the page names it).
         client.find(Locator::Css("rect.cell[data-x='20'][data-y='15']")).await.unwrap().click().await.unwrap();
         assert_eq!(inner_text(&client, "explain").await, explained, "the pixel's history");
@@ -300,7 +247,7 @@ fn the_playground_judges_the_quiz_and_a_homework_as_the_library_and_check_do() {
         );
         client.close().await.unwrap();
     });
-    crate::ran("the playground's quiz and homework through WebDriver", &format!("{} answers", typed.len()));
+    crate::ran("the playground's homework through WebDriver", "two answers");
 }
 
 /// A Russian browser gets the page in Russian, errors included; screenshots

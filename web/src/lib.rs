@@ -5,7 +5,9 @@
 
 use wasm_bindgen::prelude::*;
 use zsim::Lang;
-use zsim::playground::{self, Question};
+use zsim::lesson::Lesson;
+use zsim::playground;
+use zsim::step::QuizMode;
 
 /// The language of a code (`ru`, `uk-UA`, `zh-CN`); English for others.
 fn lang(code: &str) -> Lang {
@@ -22,6 +24,22 @@ pub fn choose_language(preferred: &str) -> String {
 #[wasm_bindgen]
 pub fn book_scene() -> String {
     include_str!("../../examples/rogers.json").to_string()
+}
+
+/// The examples the page's menu offers, as JSON: `[{"word", "scene"}]`, `word`
+/// the page word that names it.
+#[wasm_bindgen]
+pub fn examples() -> String {
+    let examples = [
+        ("exampleRogers", include_str!("../../examples/rogers.json")),
+        ("exampleSection", include_str!("../../examples/section.json")),
+        ("exampleLess", include_str!("../../examples/less.json")),
+        ("exampleCull", include_str!("../../examples/cull.json")),
+        ("exampleConcave", include_str!("../../examples/concave.json")),
+    ];
+    let list: Vec<serde_json::Value> =
+        examples.iter().map(|(word, scene)| serde_json::json!({"word": word, "scene": scene})).collect();
+    serde_json::Value::Array(list).to_string()
 }
 
 /// See [`playground::view`].
@@ -42,15 +60,50 @@ pub fn figure(code: &str, scene: &str) -> String {
     playground::figure(lang(code), scene).to_string()
 }
 
-/// See [`playground::judge`]: `question` is `coverage`, `depth` or `frame`.
+/// The stepper and its quiz as one object the page keeps: the scene parsed
+/// once, where the student is, what is asked and the score, all the
+/// library's [`Lesson`]; the page sends it keys and answers and renders
+/// what it answers.
 #[wasm_bindgen]
-pub fn judge(code: &str, scene: &str, stop: usize, question: &str, pixel: usize, typed: &str) -> String {
-    let question = match question {
-        "coverage" => Question::Coverage,
-        "frame" => Question::Frame(pixel),
-        _ => Question::Depth(pixel),
-    };
-    playground::judge(lang(code), scene, stop, question, typed).to_string()
+pub struct WebLesson {
+    lesson: Lesson,
+    lang: Lang,
+}
+
+#[wasm_bindgen]
+impl WebLesson {
+    /// The lesson of `scene` at scanline `row` of polygon `polygon` (from 1;
+    /// 0, or a place that is no stop: the first stop); `quiz` is `depth`,
+    /// `frame`, `coverage` or anything else for none. `Err` with the scene's
+    /// error (JSON text, `{"ok": false, "error"}`).
+    #[wasm_bindgen(constructor)]
+    pub fn new(code: &str, scene: &str, quiz: &str, polygon: usize, row: u32) -> Result<WebLesson, String> {
+        let mode = match quiz {
+            "depth" => Some(QuizMode::Depth),
+            "frame" => Some(QuizMode::Frame),
+            "coverage" => Some(QuizMode::Coverage),
+            _ => None,
+        };
+        let lang = lang(code);
+        let place = (polygon > 0).then_some((polygon, row));
+        let lesson = playground::lesson(lang, scene, mode, place).map_err(|error| error.to_string())?;
+        Ok(WebLesson { lesson, lang })
+    }
+
+    /// Speaks `code` from now on.
+    pub fn set_language(&mut self, code: &str) {
+        self.lang = lang(code);
+    }
+
+    /// See [`playground::lesson_state`].
+    pub fn state(&mut self) -> String {
+        playground::lesson_state(self.lang, &mut self.lesson).to_string()
+    }
+
+    /// See [`playground::lesson_act`]: `command` is `{"key": "n"}`, `{"go": [polygon, row]}` or `{"answer": "15"}`.
+    pub fn act(&mut self, command: &str) -> String {
+        playground::lesson_act(self.lang, &mut self.lesson, command).to_string()
+    }
 }
 
 /// See [`playground::check`]: `buffer` is `frame` or `depth`.

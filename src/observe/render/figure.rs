@@ -40,7 +40,8 @@ const LEGEND: i128 = 22;
 /// Fill colours for framebuffer values 1, 2, …; 0 (the usual background) is
 /// white. Okabe and Ito's colour-blind-safe set, ordered so that 1, 2 and 3
 /// (a 2-bit framebuffer) are light, middle and dark in grey print too.
-const PALETTE: [&str; 7] = ["#f0e442", "#e69f00", "#0072b2", "#009e73", "#cc79a7", "#56b4e9", "#d55e00"];
+/// The playground colours its raster with the same set.
+pub const PALETTE: [&str; 7] = ["#f0e442", "#e69f00", "#0072b2", "#009e73", "#cc79a7", "#56b4e9", "#d55e00"];
 
 /// What the cells show.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

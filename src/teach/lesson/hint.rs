@@ -1,0 +1,111 @@
+//! The kind of a wrong answer, named before its value: which known wrong
+//! rule gives exactly what the student typed, or which way coverage or the
+//! depth test went wrong.
+
+use crate::numbers::{Exact, Q, parse_number};
+use crate::observe::tie::tie_text;
+use crate::raster::depth::{Depth, Stored};
+use crate::rules::DepthStore;
+use crate::scene::Scene;
+use crate::simulate::events::{Outcome, PixelEvent};
+use crate::teach::diagnose::Misconception;
+use crate::teach::step::{Question, parse_columns};
+use crate::words::Lang;
+
+use super::Hint;
+
+/// The kind of a wrong answer (judged already); `covered`, the columns the
+/// question's scanline covers.
+pub(super) fn hint(scene: &Scene, question: &Question, covered: &[u32], typed: &str) -> Hint {
+    match question {
+        Question::Coverage { stop, row } => match parse_columns(typed) {
+            Some(said) => coverage_hint(scene, stop.polygon, *row, covered, &said),
+            None => Hint::Other,
+        },
+        Question::Depth { pixel, .. } => depth_hint(scene, pixel, typed),
+        Question::Frame { pixel, .. } => frame_hint(scene, pixel, typed),
+    }
+}
+
+/// A coverage answer's kind of mistake: a differing column whose centre is
+/// on the polygon's boundary first, then columns taken in, then left out.
+fn coverage_hint(scene: &Scene, polygon: usize, row: u32, covered: &[u32], said: &[u32]) -> Hint {
+    let vertices = scene.polygons[polygon].vertices();
+    let taken_in = said.iter().filter(|x| !covered.contains(x));
+    let left_out = covered.iter().filter(|x| !said.contains(x));
+    if taken_in.clone().chain(left_out).any(|&x| tie_text(Lang::En, scene.rules, &vertices, x, row).is_some()) {
+        return Hint::CentreOnBoundary;
+    }
+    if taken_in.count() > 0 { Hint::ColumnOutside } else { Hint::ColumnLeftOut }
+}
+
+/// A depth answer's kind of mistake: a known wrong rule that gives exactly
+/// this value first, then whether the pixel is written.
+pub(super) fn depth_hint(scene: &Scene, pixel: &PixelEvent, typed: &str) -> Hint {
+    let written = pixel.outcome == Outcome::Written;
+    if typed == "-" {
+        return if written { written_hint(scene, pixel) } else { Hint::Other };
+    }
+    let Ok(value) = parse_number(typed) else { return Hint::Other };
+    let said = Exact::Word(value);
+    let z = pixel.compared.value();
+    let rounded = Exact::integer(pixel.compared.rounded());
+    if scene.rules.store == DepthStore::Quantized && written {
+        let max = i128::from(scene.depth_max());
+        let fits = value.is_integer() && *value.numer() >= 0 && *value.numer() <= max;
+        if !fits && said == rounded {
+            return Hint::Misconception(Misconception::NoSaturation);
+        }
+        let floor = Exact::integer(z.floor());
+        if said == floor && floor != rounded {
+            let half = z.minus(&floor) == Exact::Word(Q::new(1, 2));
+            return Hint::Misconception(if half { Misconception::HalfDown } else { Misconception::Truncated });
+        }
+    }
+    match written {
+        // The old value kept where the pixel is written.
+        true if said == pixel.stored_before.value() => written_hint(scene, pixel),
+        // The pixel's own depth stored where it is hidden.
+        false if said == rounded || said == z => reversed_hint(scene, pixel),
+        _ => Hint::Other,
+    }
+}
+
+/// Why a student says a written pixel is not written: comparing the rounded
+/// depth, a test not strict, or the test reversed.
+fn written_hint(scene: &Scene, pixel: &PixelEvent) -> Hint {
+    if scene.rules.store == DepthStore::Quantized
+        && let Ok(rounded) = i128::try_from(pixel.compared.rounded())
+        && !scene.depth_test.passes(&Depth::from_fraction(rounded, 1), &pixel.stored_before)
+    {
+        return Hint::Misconception(Misconception::RoundedCompared);
+    }
+    Hint::IsWritten
+}
+
+/// Why a student writes a hidden pixel: the test not strict where the depths
+/// are equal, else reversed.
+fn reversed_hint(scene: &Scene, pixel: &PixelEvent) -> Hint {
+    let equal = match &pixel.stored_before {
+        Stored::Level(level) => pixel.compared.cmp_integer(i128::from(*level)).is_eq(),
+        Stored::Exact(value) => pixel.compared.cmp_exact(value).is_eq(),
+    };
+    if equal && scene.depth_test.compares() {
+        return Hint::Misconception(Misconception::NotStrict);
+    }
+    Hint::IsNotWritten
+}
+
+/// A framebuffer answer's kind of mistake.
+fn frame_hint(scene: &Scene, pixel: &PixelEvent, typed: &str) -> Hint {
+    let written = pixel.outcome == Outcome::Written;
+    let value = if typed == "-" { None } else { parse_number(typed).ok() };
+    let said_kept = typed == "-" || value.is_some_and(|v| *v.numer() == i128::from(pixel.frame_before));
+    let polygon_value = scene.polygons[pixel.index].value;
+    let said_written = value.is_some_and(|v| *v.numer() == i128::from(polygon_value));
+    match (written, said_kept, said_written) {
+        (true, true, _) => written_hint(scene, pixel),
+        (false, _, true) => reversed_hint(scene, pixel),
+        _ => Hint::Other,
+    }
+}

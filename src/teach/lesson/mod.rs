@@ -1,0 +1,668 @@
+//! The lesson: one stateful model of a student stepping through a scene, with
+//! or without a quiz, that every front end (the line mode, the full-screen
+//! app, the browser playground) renders and sends commands to. It owns the
+//! scene, parsed once, and the stepper over it, and decides at each moment
+//! what may be shown and what is being asked. Its rules, the same in every
+//! front end:
+//!
+//! - What is asked is never shown before it is answered: while coverage is
+//!   asked, the crossings, spans and covered columns are hidden; while a
+//!   pixel is asked, its exact z and what it stores (and every pixel after it
+//!   on the scanline) are hidden: the plane is shown, computing z is the
+//!   exercise.
+//! - A wrong answer first gets a [`Hint`] that names the kind of mistake
+//!   without the value, and a second try; a second wrong answer gets the
+//!   answer with its reason.
+//! - Moving on (next scanline, next or previous polygon, a row) is refused
+//!   while the scanline's questions are open, until they are answered or
+//!   skipped on purpose ([`Command::Skip`]; a skip counts as not answered).
+//! - The [`Score`] counts first-try right, second-try right, revealed and
+//!   skipped questions.
+//!
+//! The keys are one table ([`Command::from_key`], [`Command::parse`]) that
+//! every front end reads, and every answer and move is worded here
+//! ([`Said::text`]), so the three front ends ask and answer alike.
+
+use self_cell::self_cell;
+
+use crate::effects::arith::Arith;
+use crate::numbers::fraction;
+use crate::observe::explain::{polygon_name, scanline_text};
+use crate::observe::step::Stop;
+use crate::observe::trace::ScanlineRecord;
+use crate::scene::Scene;
+use crate::simulate::buffer::Buffers;
+use crate::teach::diagnose::Misconception;
+use crate::teach::step::{
+    Meant, Moved, Question, QuizMode, Refusal, Stepper, Verdict, judge_coverage, judge_depth, judge_frame, skip_text,
+};
+use crate::teach::stop::{PixelRow, notes, pixel_rows, span_lines};
+
+use crate::words::{Lang, printable};
+use hint::{depth_hint, hint};
+
+/// The stepper over a scene the lesson owns.
+type StepperOf<'s> = Stepper<'s>;
+
+self_cell!(
+    /// The scene and the stepper that borrows it, held together.
+    struct Held {
+        owner: Scene,
+        #[not_covariant]
+        dependent: StepperOf,
+    }
+);
+
+/// What a student can ask of the lesson: the same keys in every front end.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Command {
+    /// `n` (or Enter on an empty line): the next scanline.
+    Next,
+    /// `b`: the scanline before.
+    Back,
+    /// `p`: the next polygon's first scanline.
+    NextPolygon,
+    /// `P`: the previous polygon's first scanline.
+    PreviousPolygon,
+    /// `g Y`: scanline Y + ½ of the current polygon.
+    Go(u32),
+    /// Scanline `row` + ½ of polygon `polygon` (0-based): where a page's address points.
+    GoTo {
+        /// 0-based polygon index.
+        polygon: usize,
+        /// The pixel row.
+        row: u32,
+    },
+    /// `s`: skip the scanline's open questions (each counts as skipped).
+    Skip,
+    /// Anything else typed: an answer to the open question.
+    Answer(String),
+    /// `q`: the end of the lesson.
+    Quit,
+}
+
+/// The keys that act alone, and what each does: one table for every front end.
+pub const KEYS: [(char, &str); 6] = [
+    ('n', "lesson-key-next"),
+    ('b', "lesson-key-back"),
+    ('p', "lesson-key-next-polygon"),
+    ('P', "lesson-key-previous-polygon"),
+    ('s', "lesson-key-skip"),
+    ('q', "lesson-key-quit"),
+];
+
+impl Command {
+    /// The command of a key that acts alone (see [`KEYS`]).
+    pub fn from_key(key: char) -> Option<Command> {
+        Some(match key {
+            'n' => Command::Next,
+            'b' => Command::Back,
+            'p' => Command::NextPolygon,
+            'P' => Command::PreviousPolygon,
+            's' => Command::Skip,
+            'q' => Command::Quit,
+            _ => return None,
+        })
+    }
+
+    /// A line as typed: empty is [`Command::Next`], a key of [`KEYS`] alone
+    /// its command, `g Y` a row, anything else an answer.
+    pub fn parse(line: &str) -> Command {
+        let line = line.trim();
+        let mut chars = line.chars();
+        if let (Some(key), None) = (chars.next(), chars.next())
+            && let Some(command) = Command::from_key(key)
+        {
+            return command;
+        }
+        if line.is_empty() {
+            return Command::Next;
+        }
+        if let Some(row) = line.strip_prefix("g ").and_then(|row| row.trim().parse().ok()) {
+            return Command::Go(row);
+        }
+        Command::Answer(line.to_string())
+    }
+
+    /// The keys in one line of the reader's language.
+    pub fn keys_text(lang: Lang) -> String {
+        let keys: Vec<String> = KEYS.iter().map(|(key, what)| format!("{key} {}", words!(lang, what))).collect();
+        words!(lang, "lesson-keys", keys = keys.join(&words!(lang, "list-comma")))
+    }
+}
+
+/// The kind of a wrong answer, named before its value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Hint {
+    /// A wrong rule students are known to follow gives exactly this answer.
+    Misconception(Misconception),
+    /// The pixel is written, and the answer says it is not (or keeps the old value).
+    IsWritten,
+    /// The pixel is not written, and the answer writes it.
+    IsNotWritten,
+    /// A centre exactly on the polygon's boundary decided the other way.
+    CentreOnBoundary,
+    /// A column whose centre lies outside every span taken in.
+    ColumnOutside,
+    /// A column whose centre lies inside a span left out.
+    ColumnLeftOut,
+    /// No known rule gives this value.
+    Other,
+}
+
+impl Hint {
+    /// The hint in one line of the reader's language (no value in it).
+    pub fn text(self, lang: Lang) -> String {
+        match self {
+            Hint::Misconception(what) => words!(lang, "lesson-hint-misconception", what = what.words(lang)),
+            Hint::IsWritten => words!(lang, "lesson-hint-is-written"),
+            Hint::IsNotWritten => words!(lang, "lesson-hint-is-not-written"),
+            Hint::CentreOnBoundary => words!(lang, "lesson-hint-centre-on-boundary"),
+            Hint::ColumnOutside => words!(lang, "lesson-hint-column-outside"),
+            Hint::ColumnLeftOut => words!(lang, "lesson-hint-column-left-out"),
+            Hint::Other => words!(lang, "lesson-hint-other"),
+        }
+    }
+}
+
+/// What became of a command.
+#[derive(Debug, Clone)]
+pub enum Said {
+    /// Moved to a stop or to the end, or refused (with why).
+    Moved(Moved),
+    /// Right, at the first try or the second.
+    Right {
+        /// The verdict, with the reason.
+        verdict: Box<Verdict>,
+        /// Whether it took a second try.
+        second_try: bool,
+    },
+    /// Wrong at the first try: the kind of mistake; the question stays open.
+    TryAgain {
+        /// What the student typed, shown safely.
+        said: String,
+        /// The kind of mistake.
+        hint: Hint,
+    },
+    /// Wrong at the second try: the answer and why; the next question follows.
+    Revealed(Box<Verdict>),
+    /// Not an answer to the question (why); nothing is counted.
+    AskAgain(String),
+    /// This many open questions skipped.
+    Skipped(usize),
+    /// An answer typed while nothing is asked.
+    NothingAsked(String),
+    /// The student asked to stop.
+    Quit,
+}
+
+impl Said {
+    /// What happened, in the reader's language, as every front end shows it
+    /// (empty for a move that passed over nothing).
+    pub fn text(&self, lang: Lang, scene: &Scene) -> String {
+        match self {
+            Said::Moved(Moved::To { at, skipped }) => {
+                let mut lines: Vec<String> =
+                    skipped.iter().map(|skip| format!("· {}", skip_text(lang, scene, skip))).collect();
+                if at.is_none() {
+                    lines.push(words!(lang, "step-end"));
+                }
+                lines.join("\n")
+            }
+            Said::Moved(Moved::Refused(refusal)) => refusal.text(lang, scene),
+            Said::Right { verdict, second_try } => {
+                let said = match verdict.meant {
+                    Some(meant) => words!(lang, "lesson-said-meant", said = &verdict.said, meant = meant.text(lang)),
+                    None => verdict.said.clone(),
+                };
+                let key = if *second_try { "lesson-right-second" } else { "lesson-right" };
+                words!(lang, key, said = said, why = &verdict.why)
+            }
+            Said::TryAgain { said, hint } => words!(lang, "lesson-try-again", said = said, hint = hint.text(lang)),
+            Said::Revealed(verdict) => {
+                words!(lang, "lesson-revealed", said = &verdict.said, expected = &verdict.expected, why = &verdict.why)
+            }
+            Said::AskAgain(why) => why.clone(),
+            Said::Skipped(count) => words!(lang, "lesson-skipped", count = count.to_string()),
+            Said::NothingAsked(typed) => words!(
+                lang,
+                "step-unknown",
+                text = printable(&crate::words::token(lang, typed)).into_owned(),
+                help = Command::keys_text(lang)
+            ),
+            Said::Quit => String::new(),
+        }
+    }
+}
+
+/// The quiz's score: each question counted once, by how it ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Score {
+    /// Right at the first try.
+    pub first_try: usize,
+    /// Right at the second try.
+    pub second_try: usize,
+    /// Wrong twice: the answer was shown.
+    pub revealed: usize,
+    /// Skipped on purpose.
+    pub skipped: usize,
+}
+
+impl Score {
+    /// Every question that ended.
+    pub fn asked(&self) -> usize {
+        self.first_try + self.second_try + self.revealed + self.skipped
+    }
+
+    /// The score in one line of the reader's language.
+    pub fn text(&self, lang: Lang) -> String {
+        words!(
+            lang,
+            "lesson-score",
+            first = self.first_try.to_string(),
+            second = self.second_try.to_string(),
+            revealed = self.revealed.to_string(),
+            skipped = self.skipped.to_string(),
+            asked = self.asked().to_string()
+        )
+    }
+}
+
+/// What the current stop may show: the rest is being asked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Showing {
+    /// Whether the crossings, spans and covered columns may be shown.
+    pub spans: bool,
+    /// How many of the scanline's covered pixels (from the left) may be
+    /// shown with their exact z and what they store.
+    pub pixels: usize,
+    /// How many covered pixels the scanline has.
+    pub covered: usize,
+}
+
+/// What the current stop shows beside the buffers, worded and already cut
+/// to what may be shown.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct StopView {
+    /// The stop.
+    pub stop: Stop,
+    /// The pixel row of the scanline.
+    pub row: u32,
+    /// The polygon: its name, plane and what it is.
+    pub heading: String,
+    /// How z steps along a scanline.
+    pub slope: String,
+    /// The scanline and its row.
+    pub scanline: String,
+    /// The crossings (`None` while coverage is asked).
+    pub crossings: Option<String>,
+    /// Each span's ends and columns (empty while coverage is asked).
+    pub spans: Vec<String>,
+    /// Each span with its ends' depths too (empty while anything is asked).
+    pub span_depths: Vec<String>,
+    /// The covered columns, left to right (empty while coverage is asked).
+    pub columns: Vec<u32>,
+    /// The rows of the covered pixels that may be shown.
+    pub rows: Vec<PixelRow>,
+    /// How many covered pixels are hidden after them.
+    pub hidden: usize,
+    /// The boundary centres' rules and an inexact arithmetic's values (once nothing is hidden).
+    pub notes: Vec<String>,
+}
+
+/// A wrong answer kept for the summary: the question and what was typed.
+#[derive(Debug, Clone)]
+struct Mistake {
+    question: Question,
+    said: String,
+    revealed: bool,
+}
+
+/// The quiz's place: which question of which stop, and how many tries.
+#[derive(Debug, Clone)]
+struct QuizState {
+    mode: QuizMode,
+    stop: Option<Stop>,
+    coverage_done: bool,
+    pixels_done: usize,
+    wrong_tries: u8,
+    score: Score,
+    mistakes: Vec<Mistake>,
+}
+
+impl QuizState {
+    /// Moves the questions to `stop`: a stop left and come back to is asked again.
+    fn at(&mut self, stop: Option<Stop>) {
+        if self.stop != stop {
+            self.stop = stop;
+            self.coverage_done = false;
+            self.pixels_done = 0;
+            self.wrong_tries = 0;
+        }
+    }
+}
+
+/// The lesson: the scene, where the student is, and the quiz.
+pub struct Lesson {
+    held: Held,
+    quiz: Option<QuizState>,
+}
+
+impl Lesson {
+    /// The lesson of `scene`, before its first stop, showing `arith` beside
+    /// the exact values, with a quiz in `mode` or none; [`Lesson::start`] moves
+    /// to the first stop.
+    pub fn new(scene: Scene, arith: Arith, mode: Option<QuizMode>) -> Lesson {
+        let held = Held::new(scene, |scene| Stepper::new(scene, arith));
+        let quiz = mode.map(|mode| QuizState {
+            mode,
+            stop: None,
+            coverage_done: false,
+            pixels_done: 0,
+            wrong_tries: 0,
+            score: Score::default(),
+            mistakes: Vec::new(),
+        });
+        Lesson { held, quiz }
+    }
+
+    /// Moves to `at`, or to the first stop when `None`.
+    pub fn start(&mut self, at: Option<Stop>) -> Said {
+        let moved = self.held.with_dependent_mut(|_, stepper| stepper.start(at));
+        self.arrived(moved)
+    }
+
+    /// Moves to scanline `row` of polygon `polygon` (0-based) whatever is
+    /// open, as a page's address or a reload places the student; its
+    /// questions are asked from the first.
+    pub fn place(&mut self, polygon: usize, row: u32) -> Said {
+        let moved = self.held.with_dependent_mut(|_, stepper| stepper.go_to(polygon, row));
+        self.arrived(moved)
+    }
+
+    /// The scene.
+    pub fn scene(&self) -> &Scene {
+        self.held.borrow_owner()
+    }
+
+    /// The quiz's mode, if there is a quiz.
+    pub fn mode(&self) -> Option<QuizMode> {
+        self.quiz.as_ref().map(|quiz| quiz.mode)
+    }
+
+    /// The score (`None` without a quiz).
+    pub fn score(&self) -> Option<Score> {
+        self.quiz.as_ref().map(|quiz| quiz.score)
+    }
+
+    /// Where the student is: `None` at the end.
+    pub fn at(&mut self) -> Option<Stop> {
+        self.held.with_dependent_mut(|_, stepper| stepper.at())
+    }
+
+    /// The stepper, for what a front end draws of the recording (the raster,
+    /// this polygon's earlier pixels). What it shows must go through
+    /// [`Lesson::showing`].
+    pub fn with_stepper<R>(&mut self, f: impl FnOnce(&mut Stepper<'_>) -> R) -> R {
+        self.held.with_dependent_mut(|_, stepper| f(stepper))
+    }
+
+    /// The current stop's scanline (`None` at the end).
+    pub fn record(&mut self) -> Option<ScanlineRecord> {
+        self.with_stepper(|stepper| stepper.record().cloned())
+    }
+
+    /// The question open now, if any.
+    pub fn question(&mut self) -> Option<Question> {
+        let quiz = self.quiz.as_ref()?;
+        let (mode, coverage_done, pixels_done) = (quiz.mode, quiz.coverage_done, quiz.pixels_done);
+        self.with_stepper(|stepper| {
+            let stop = stepper.at()?;
+            let record = stepper.tracer().record(stop);
+            if mode == QuizMode::Coverage && !coverage_done {
+                return Some(Question::Coverage { stop, row: record.row });
+            }
+            let pixel = record.pixels.get(pixels_done)?.clone();
+            let index = pixels_done;
+            Some(match mode {
+                QuizMode::Frame => Question::Frame { stop, index, pixel },
+                QuizMode::Depth | QuizMode::Coverage => Question::Depth { stop, index, pixel },
+            })
+        })
+    }
+
+    /// Whether the open question has had one wrong answer (the next is its last try).
+    pub fn second_try(&self) -> bool {
+        self.quiz.as_ref().is_some_and(|quiz| quiz.wrong_tries > 0)
+    }
+
+    /// What the current stop may show now.
+    pub fn showing(&mut self) -> Showing {
+        let covered = self.record().map_or(0, |record| record.pixels.len());
+        match self.question() {
+            Some(Question::Coverage { .. }) => Showing { spans: false, pixels: 0, covered },
+            Some(Question::Depth { index, .. } | Question::Frame { index, .. }) => {
+                Showing { spans: true, pixels: index, covered }
+            }
+            None => Showing { spans: true, pixels: covered, covered },
+        }
+    }
+
+    /// The open question as the student is asked it, in one line.
+    pub fn prompt(&mut self, lang: Lang) -> Option<String> {
+        let question = self.question()?;
+        let scene = self.scene();
+        let ask = match &question {
+            Question::Coverage { stop, row } => words!(
+                lang,
+                "lesson-ask-coverage",
+                polygon = polygon_name(lang, scene, stop.polygon),
+                scanline = scanline_text(lang, *row)
+            ),
+            Question::Depth { pixel, .. } => {
+                words!(lang, "lesson-ask-depth", x = pixel.x, y = pixel.y, stored = pixel.stored_before.text(lang))
+            }
+            Question::Frame { pixel, .. } => {
+                words!(lang, "lesson-ask-frame", x = pixel.x, y = pixel.y, before = pixel.frame_before)
+            }
+        };
+        Some(if self.second_try() { words!(lang, "lesson-last-try", ask = ask) } else { ask })
+    }
+
+    /// What the current stop shows, cut to what may be shown (`None` at the end).
+    pub fn stop_view(&mut self, lang: Lang) -> Option<StopView> {
+        let showing = self.showing();
+        let stop = self.at()?;
+        self.held.with_dependent_mut(|scene, stepper| {
+            let arith = stepper.arith();
+            let record = stepper.tracer().record(stop).clone();
+            let words = stepper.stop_words(lang, stop);
+            let slope = scene.polygons[stop.polygon].geometry().slope().map_or_else(String::new, fraction);
+            let everything = showing.spans && showing.pixels == showing.covered;
+            let shown = &record.pixels[..showing.pixels.min(record.pixels.len())];
+            Some(StopView {
+                stop,
+                row: record.row,
+                heading: words.heading,
+                slope: words!(lang, "step-slope", slope = slope),
+                scanline: words.scanline,
+                crossings: showing.spans.then_some(words.crossings),
+                spans: if showing.spans { words.spans } else { Vec::new() },
+                // A span's end can be a pixel's centre: its depth is shown once no depth is asked.
+                span_depths: if everything { span_lines(lang, scene, &record) } else { Vec::new() },
+                columns: if showing.spans { record.pixels.iter().map(|p| p.x).collect() } else { Vec::new() },
+                rows: pixel_rows(lang, scene, shown),
+                hidden: record.pixels.len() - shown.len(),
+                notes: if everything { notes(lang, scene, stop.polygon, &record, arith) } else { Vec::new() },
+            })
+        })
+    }
+
+    /// The buffers as the student may see them: after the stop's polygon's
+    /// earlier scanlines and the shown pixels of its own (`None` at the end).
+    pub fn buffers(&mut self) -> Option<Buffers> {
+        let pixels = self.showing().pixels;
+        let stop = self.at()?;
+        Some(self.with_stepper(|stepper| stepper.tracer().buffers_through(stop, pixels)))
+    }
+
+    /// Carries out `command` and says what became of it.
+    pub fn act(&mut self, lang: Lang, command: Command) -> Said {
+        if let Command::Answer(typed) = &command {
+            return self.answer(lang, typed);
+        }
+        if command == Command::Quit {
+            return Said::Quit;
+        }
+        if command == Command::Skip {
+            return self.skip();
+        }
+        let open = self.open_questions();
+        if open > 0 {
+            return Said::Moved(Moved::Refused(Refusal::QuestionsOpen { open }));
+        }
+        let moved = self.held.with_dependent_mut(|_, stepper| match command {
+            Command::Next => stepper.forward(),
+            Command::Back => stepper.back(),
+            Command::NextPolygon => match stepper.at() {
+                Some(_) => match stepper.next_polygon() {
+                    Moved::To { at: None, .. } => Moved::Refused(Refusal::NoLaterPolygon),
+                    moved => moved,
+                },
+                None => Moved::Refused(Refusal::NoLaterPolygon),
+            },
+            Command::PreviousPolygon => stepper.previous_polygon(),
+            Command::Go(row) => stepper.go(row),
+            Command::GoTo { polygon, row } => stepper.go_to(polygon, row),
+            Command::Answer(_) | Command::Skip | Command::Quit => unreachable!("handled above"),
+        });
+        self.arrived(moved)
+    }
+
+    /// How many questions of the current stop are still open.
+    pub fn open_questions(&mut self) -> usize {
+        let Some(quiz) = &self.quiz else { return 0 };
+        let (mode, coverage_done, pixels_done) = (quiz.mode, quiz.coverage_done, quiz.pixels_done);
+        let Some(record) = self.record() else { return 0 };
+        let coverage = usize::from(mode == QuizMode::Coverage && !coverage_done);
+        coverage + record.pixels.len().saturating_sub(pixels_done)
+    }
+
+    fn arrived(&mut self, moved: Moved) -> Said {
+        let at = self.at();
+        if let Some(quiz) = &mut self.quiz {
+            quiz.at(at);
+        }
+        Said::Moved(moved)
+    }
+
+    /// Skips every open question of the stop.
+    fn skip(&mut self) -> Said {
+        let open = self.open_questions();
+        let Some(quiz) = &mut self.quiz else { return Said::Skipped(0) };
+        quiz.score.skipped += open;
+        quiz.coverage_done = true;
+        quiz.pixels_done = usize::MAX;
+        quiz.wrong_tries = 0;
+        Said::Skipped(open)
+    }
+
+    fn answer(&mut self, lang: Lang, typed: &str) -> Said {
+        let Some(question) = self.question() else { return Said::NothingAsked(typed.to_string()) };
+        let typed = typed.trim();
+        let judged = self.held.with_dependent_mut(|scene, stepper| {
+            let verdict = judge(lang, scene, stepper, &question, typed)?;
+            let covered: Vec<u32> = match &question {
+                Question::Coverage { stop, .. } => stepper.tracer().record(*stop).pixels.iter().map(|p| p.x).collect(),
+                _ => Vec::new(),
+            };
+            let hint = (!verdict.right).then(|| hint(scene, &question, &covered, typed));
+            Ok::<_, String>((verdict, hint))
+        });
+        let (verdict, hint) = match judged {
+            Ok(judged) => judged,
+            Err(again) => return Said::AskAgain(again),
+        };
+        let quiz = self.quiz.as_mut().expect("a question is asked only in a quiz");
+        let first = quiz.wrong_tries == 0;
+        let said = match (verdict.right, first) {
+            (true, _) => {
+                if first {
+                    quiz.score.first_try += 1;
+                } else {
+                    quiz.score.second_try += 1;
+                }
+                Said::Right { verdict: Box::new(verdict), second_try: !first }
+            }
+            (false, true) => {
+                quiz.wrong_tries = 1;
+                let said = verdict.said.clone();
+                quiz.mistakes.push(Mistake { question: question.clone(), said: said.clone(), revealed: false });
+                return Said::TryAgain { said, hint: hint.unwrap_or(Hint::Other) };
+            }
+            (false, false) => {
+                quiz.score.revealed += 1;
+                quiz.mistakes.push(Mistake { question: question.clone(), said: verdict.said.clone(), revealed: true });
+                Said::Revealed(Box::new(verdict))
+            }
+        };
+        quiz.wrong_tries = 0;
+        match question {
+            Question::Coverage { .. } => quiz.coverage_done = true,
+            Question::Depth { .. } | Question::Frame { .. } => quiz.pixels_done += 1,
+        }
+        said
+    }
+
+    /// The score and each question answered wrong, with what was right and why.
+    pub fn summary(&mut self, lang: Lang) -> String {
+        let Some(quiz) = &self.quiz else { return String::new() };
+        let mistakes = quiz.mistakes.clone();
+        let mut text = format!("{}\n", quiz.score.text(lang));
+        let revealed: Vec<&Mistake> = mistakes.iter().filter(|m| m.revealed).collect();
+        if !revealed.is_empty() {
+            text.push_str(&format!("{}\n", words!(lang, "quiz-mistakes")));
+        }
+        for mistake in revealed {
+            let line = self.held.with_dependent_mut(|scene, stepper| {
+                let verdict = judge(lang, scene, stepper, &mistake.question, &mistake.said).ok()?;
+                Some(crate::teach::step::mistake_text(lang, scene, &verdict))
+            });
+            if let Some(line) = line {
+                text.push_str(&format!("  {line}\n"));
+            }
+        }
+        text
+    }
+}
+
+/// The library's judge of one question.
+fn judge(
+    lang: Lang,
+    scene: &Scene,
+    stepper: &mut Stepper<'_>,
+    question: &Question,
+    typed: &str,
+) -> Result<Verdict, String> {
+    let (right, meant, expected, why) = match question {
+        Question::Coverage { stop, .. } => judge_coverage(lang, stepper.tracer().record(*stop), typed),
+        // A value no cell holds is asked again, but not the depth left unsaturated: that is a mistake.
+        Question::Depth { pixel, .. } => {
+            judge_depth(lang, scene, pixel, typed).or_else(|again| match depth_hint(scene, pixel, typed) {
+                Hint::Misconception(Misconception::NoSaturation) => {
+                    let (_, meant, expected, why) = judge_depth(lang, scene, pixel, &pixel.stored_after.text(lang))?;
+                    Ok((false, meant.map(|_| Meant::Value), expected, why))
+                }
+                _ => Err(again),
+            })
+        }
+        Question::Frame { pixel, .. } => judge_frame(lang, scene, pixel, typed),
+    }?;
+    let said = printable(typed).into_owned();
+    Ok(Verdict { question: question.clone(), right, said, meant, expected, why })
+}
+
+mod hint;
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,283 @@
+//! The lesson in every front end: the same keys and answers give the same
+//! verdicts, moves and score in the line mode, the full-screen app (in a real
+//! terminal, tmux) and the browser playground (headless Chromium through
+//! WebDriver), each held to what the library's own `Lesson` says. The
+//! browser's student flows: the quiz hides what it asks, blocks moving on,
+//! hints then reveals, takes zsim's notations, keeps the score; the pixel's
+//! history follows an edit; the keys; the address in both directions; the
+//! site from `file://`; axe-core; a 390 px phone.
+
+use fantoccini::actions::{InputSource, KeyAction, KeyActions};
+use fantoccini::key::Key;
+use fantoccini::{Client, Locator};
+use zsim::Lang;
+use zsim::lesson::Command;
+use zsim::playground;
+use zsim::step::QuizMode;
+
+use crate::browser::{click, text};
+use crate::chromium::{driver, serve, session_as};
+use crate::playground::{
+    inner_text, manifest, run_final, runtime, scene_text, scratch, shown_buffers, site, type_vertex,
+};
+
+/// One student's keys and answers on the book's triangle, scanline 15, with
+/// the depth quiz: `n` (refused: questions are open), 14 (the half rounded
+/// down: a hint), 13 (wrong again: the answer), 14 (right), `s` (the rest
+/// skipped), `n` (on to scanline 16), then `q`.
+const SCRIPT: [&str; 6] = ["n", "14", "13", "14", "s", "n"];
+
+fn book() -> String {
+    std::fs::read_to_string(manifest().join("examples/rogers.json")).unwrap()
+}
+
+/// What the library's lesson says to each step of [`SCRIPT`], and its summary at the end.
+fn library_says() -> (Vec<String>, String) {
+    let mut lesson = playground::lesson(Lang::En, &book(), Some(QuizMode::Depth), Some((2, 15))).unwrap();
+    let said =
+        SCRIPT.iter().map(|typed| lesson.act(Lang::En, Command::parse(typed)).text(Lang::En, lesson.scene())).collect();
+    (said, lesson.summary(Lang::En))
+}
+
+#[test]
+fn the_librarys_answers_to_the_script_are_the_rules() {
+    let (said, summary) = library_says();
+    assert_eq!(said[0], "13 open questions on this scanline: answer them first, or s to skip them");
+    assert_eq!(
+        said[1],
+        "14: not yet. it looks as if halves rounded down instead of up (10.5 stored as 10). One more try."
+    );
+    assert!(said[2].starts_with("13: wrong again. The answer is 15: z = 29/2"), "{}", said[2]);
+    assert!(said[3].starts_with("14 (the value written): right. z = 55/4"), "{}", said[3]);
+    assert_eq!(said[4], "skipped: 11 questions (counted as not answered)");
+    assert_eq!(said[5], "");
+    assert!(
+        summary.starts_with("quiz: 1 right at the first try, 0 at the second, 1 shown, 11 skipped, of 13 questions\n"),
+        "{summary}"
+    );
+}
+
+/// The line mode, driven line by line, says what the library says, in order.
+#[test]
+fn the_line_mode_says_what_the_lesson_says() {
+    let (said, summary) = library_says();
+    let input = format!("{}\nq\n", SCRIPT.join("\n"));
+    let run = crate::zsim_stdin(
+        &["step", "examples/rogers.json", "--quiz", "depth", "--polygon", "2", "--scanline", "15", "--lang", "en"],
+        &input,
+    );
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    let mut from = 0;
+    for line in said.iter().filter(|s| !s.is_empty()) {
+        let at = run.stdout[from..]
+            .find(&format!("  {line}\n"))
+            .unwrap_or_else(|| panic!("{line:?} in order in {}", run.stdout));
+        from += at + line.len();
+    }
+    assert!(run.stdout.ends_with(&summary), "{}", run.stdout);
+    assert!(run.stdout.contains("scanline y = 16.5 (row 16)"), "moved on after the skip: {}", run.stdout);
+}
+
+/// The full-screen app in a real terminal, given the same keys, ends with the same summary.
+#[test]
+#[ignore = "needs tmux"]
+fn the_full_screen_app_ends_with_the_same_score() {
+    let (_, summary) = library_says();
+    let command = "zsim step examples/rogers.json --quiz depth --polygon 2 --scanline 15 --lang en; echo EXIT=$?";
+    let keys: [&[&str]; 7] =
+        [&["n"], &["1", "4", "Enter"], &["1", "3", "Enter"], &["1", "4", "Enter"], &["s"], &["n"], &["q"]];
+    let Some(shown) = crate::teaching::in_tmux((110, 32), command, "the z-buffer after?", &keys, "EXIT=") else {
+        panic!("tmux is needed")
+    };
+    // Each line's start (a long line wraps at the terminal's width).
+    for line in summary.lines() {
+        let start: String = line.chars().take(80).collect();
+        assert!(shown.contains(&start), "{start:?} in:\n{shown}");
+    }
+    assert!(shown.contains("EXIT=0"), "{shown}");
+}
+
+/// Presses `key` as a person does, with the focus on the page itself.
+async fn press(client: &Client, key: char) {
+    client.execute("document.activeElement && document.activeElement.blur();", vec![]).await.unwrap();
+    let actions =
+        KeyActions::new("keyboard".to_string()).then(KeyAction::Down { value: key }).then(KeyAction::Up { value: key });
+    client.perform_actions(actions).await.unwrap();
+}
+
+/// Types `answer` into the quiz's box and presses Enter.
+async fn answer(client: &Client, answer: &str) {
+    let input = client.find(Locator::Css("#quizAnswer")).await.unwrap();
+    input.send_keys(&format!("{answer}{}", char::from(Key::Enter))).await.unwrap();
+}
+
+/// The page's address after `#`.
+async fn fragment(client: &Client) -> String {
+    client.current_url().await.unwrap().fragment().unwrap_or_default().to_string()
+}
+
+/// axe-core's critical and serious violations on the page as it is now, one line each.
+async fn axe(client: &Client) -> Vec<String> {
+    let source = manifest().join("target/web-tools/node_modules/axe-core/axe.min.js");
+    let axe = std::fs::read_to_string(&source)
+        .unwrap_or_else(|_| panic!("{} (npm install --prefix target/web-tools axe-core)", source.display()));
+    client.execute(&axe, vec![]).await.unwrap();
+    let found = client
+        .execute_async(
+            "const done = arguments[arguments.length - 1];
+             axe.run(document, {resultTypes: ['violations']}).then((r) => done(r.violations
+               .filter((v) => v.impact === 'critical' || v.impact === 'serious')
+               .map((v) => v.id + ': ' + v.nodes.map((n) => n.target.join(' ')).join(', '))));",
+            vec![],
+        )
+        .await
+        .unwrap();
+    found.as_array().unwrap().iter().map(|v| v.as_str().unwrap().to_string()).collect()
+}
+
+/// The address the page opens: the book at the triangle's scanline 15 with a quiz.
+fn address(port: u16, quiz: &str) -> String {
+    format!("http://127.0.0.1:{port}/#{}&polygon=2&scanline=15&quiz={quiz}", playground::fragment_of(&book()))
+}
+
+/// The playground given the same keys and answers says what the library
+/// says, step by step, and keeps the same score; the quiz hides the asked
+/// pixel's z and the coverage answer; the address follows the stepper and
+/// back goes back; screenshots before and after a wrong answer are saved.
+#[test]
+#[ignore = "needs Chromium, chromedriver and web/build's site (target/web)"]
+fn the_playground_asks_as_the_lesson_asks() {
+    let site = site().expect("web/build's site");
+    let (driver, browser) = driver().expect("Chromium and chromedriver");
+    let port = serve(site);
+    let dir = scratch("lesson-browser");
+    let (said, summary) = library_says();
+    runtime().block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 1000)).await;
+        client.goto(&address(port, "depth")).await.unwrap();
+        shown_buffers(&client).await;
+        assert_eq!(
+            text(&client, "#prompt").await,
+            "pixel (15, 15), stored 10: the z-buffer after? (a value, or - if not written)"
+        );
+        let stop = text(&client, "#stop").await;
+        assert!(!stop.contains("29/2") && !stop.contains("14.50"), "the asked pixel's z is hidden: {stop}");
+        std::fs::write(dir.join("quiz-before-1280.png"), client.screenshot().await.unwrap()).unwrap();
+        for (step, expected) in SCRIPT.iter().zip(&said) {
+            match *step {
+                "n" | "s" => press(&client, step.chars().next().unwrap()).await,
+                typed => answer(&client, typed).await,
+            }
+            assert_eq!(&text(&client, "#said").await, expected, "after {step:?}");
+            if *step == "14" && fragment(&client).await.contains("scanline=15") && expected.contains("not yet") {
+                std::fs::write(dir.join("quiz-after-wrong-1280.png"), client.screenshot().await.unwrap()).unwrap();
+            }
+        }
+        assert_eq!(text(&client, "#score").await, summary.lines().next().unwrap());
+        // The address followed the stepper; back goes back to scanline 15.
+        let moved = fragment(&client).await;
+        assert!(moved.ends_with("&polygon=2&scanline=16&quiz=depth"), "{moved}");
+        client.back().await.unwrap();
+        let back = fragment(&client).await;
+        assert!(back.ends_with("&polygon=2&scanline=15&quiz=depth"), "{back}");
+        assert_eq!(text(&client, "#status").await, "scanline y = 15.5 (row 15)");
+
+        // The coverage question: nothing on the page gives the columns away; zsim's own notation answers it.
+        client.goto(&address(port, "coverage")).await.unwrap();
+        shown_buffers(&client).await;
+        let stop = text(&client, "#stop").await;
+        assert!(!stop.contains("crossings") && !stop.contains("columns"), "{stop}");
+        let covered = client.find_all(Locator::Css("#grid .covered")).await.unwrap();
+        assert!(covered.is_empty(), "the raster marks no covered cell while coverage is asked");
+        answer(&client, "15 … 27").await;
+        assert!(
+            text(&client, "#said").await.starts_with("15 … 27: right. the spans are"),
+            "{}",
+            text(&client, "#said").await
+        );
+        assert_eq!(client.find_all(Locator::Css("#grid .covered")).await.unwrap().len(), 13);
+        client.close().await.unwrap();
+    });
+    crate::ran("the lesson in the playground through WebDriver", &format!("{} steps", SCRIPT.len()));
+}
+
+/// What a student does first: the pixel's history follows an edit, the keys
+/// do as the buttons say, the site opens from disk, and axe-core finds no
+/// critical or serious violation in the default and the quiz views; on a
+/// 390 px phone nothing scrolls sideways and every control is at least 24 px.
+#[test]
+#[ignore = "needs Chromium, chromedriver, web/build's site and npm's axe-core in target/web-tools"]
+fn a_student_finds_the_playground_usable() {
+    let site = site().expect("web/build's site");
+    let (driver, browser) = driver().expect("Chromium and chromedriver");
+    let port = serve(site.clone());
+    let dir = scratch("lesson-usable");
+    let book = book();
+    runtime().block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 1000)).await;
+        client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
+        shown_buffers(&client).await;
+        let violations = axe(&client).await;
+        assert!(violations.is_empty(), "the default view: {violations:#?}");
+        // The history of (20, 15), then the triangle's first vertex typed to x = 12: the history follows.
+        client.find(Locator::Css("rect.cell[data-x='20'][data-y='15']")).await.unwrap().click().await.unwrap();
+        assert!(fragment(&client).await.ends_with("&pixel=20,15"));
+        type_vertex(&client, 1, 0, 0, "12").await;
+        let edited = scene_text(&client).await;
+        let expected = playground::explain(Lang::En, &edited, 20, 15)["text"].as_str().unwrap().to_string();
+        assert_eq!(inner_text(&client, "explain").await, expected, "the history of the edited scene");
+        // The keys as the buttons say: n and b move, p the next polygon.
+        click(&client, "#reset").await;
+        shown_buffers(&client).await;
+        assert_eq!(text(&client, "#status").await, "scanline y = 5.5 (row 5)");
+        press(&client, 'n').await;
+        assert_eq!(text(&client, "#status").await, "scanline y = 6.5 (row 6)");
+        press(&client, 'b').await;
+        assert_eq!(text(&client, "#status").await, "scanline y = 5.5 (row 5)");
+        press(&client, 'p').await;
+        assert_eq!(text(&client, "#status").await, "scanline y = 10.5 (row 10)");
+        // The raster by keyboard: the cursor from the top-left cell, Enter explains it.
+        let grid = client.find(Locator::Css("#grid")).await.unwrap();
+        grid.send_keys(&format!("{}{}", char::from(Key::Right), char::from(Key::Enter))).await.unwrap();
+        assert!(fragment(&client).await.ends_with("&pixel=1,31"), "{}", fragment(&client).await);
+        // The quiz view.
+        click(&client, "#quiz").await;
+        let violations = axe(&client).await;
+        assert!(violations.is_empty(), "the quiz view: {violations:#?}");
+        client.close().await.unwrap();
+
+        // From disk: the site's own folder, no server.
+        let client = session_as(&driver, &browser, &dir.join("profile-file"), "en-US", (1280, 1000)).await;
+        client.goto(&format!("file://{}", site.join("index.html").display())).await.unwrap();
+        assert_eq!(shown_buffers(&client).await, run_final(&book, &dir), "the site opened from disk");
+        client.close().await.unwrap();
+
+        // A phone: 390 px, nothing wider than the window, every control a 24 px target.
+        let client = session_as(&driver, &browser, &dir.join("profile-390"), "en-US", (390, 844)).await;
+        client
+            .goto(&format!(
+                "http://127.0.0.1:{port}/#{}&polygon=2&scanline=15&quiz=depth",
+                playground::fragment_of(&book)
+            ))
+            .await
+            .unwrap();
+        shown_buffers(&client).await;
+        let width = client.execute("return document.documentElement.scrollWidth;", vec![]).await.unwrap();
+        assert!(width.as_u64() <= Some(390), "the page is {width} px wide on a 390 px phone");
+        let small = client
+            .execute(
+                "return [...document.querySelectorAll('button, select, input, circle.vertex')]
+                   .filter((e) => e.getClientRects().length && !e.closest('[hidden]'))
+                   .map((e) => [e.id || e.className.baseVal || e.tagName, e.getBoundingClientRect()])
+                   .filter(([, r]) => r.width < 24 || r.height < 24)
+                   .map(([name, r]) => name + ' ' + Math.round(r.width) + 'x' + Math.round(r.height));",
+                vec![],
+            )
+            .await
+            .unwrap();
+        assert_eq!(small.as_array().map(Vec::len), Some(0), "targets under 24 px: {small}");
+        std::fs::write(dir.join("lesson-390.png"), client.screenshot().await.unwrap()).unwrap();
+        client.close().await.unwrap();
+    });
+    crate::ran("the playground as a student meets it", &dir.display().to_string());
+}
