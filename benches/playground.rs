@@ -1,10 +1,11 @@
 //! How fast the browser playground answers, measured in headless Chromium
-//! through WebDriver on `web/build`'s site: an edit of the book's scene (a
-//! vertex typed into the table) and a step of the stepper (Next), each from
-//! the event to the page redrawn, timed with the page's `performance.now()`
-//! around the event's dispatch, 41 times each, alternating; and the module's
-//! size, plain and gzipped. Run with `cargo bench --bench playground` after
-//! `web/build`.
+//! through WebDriver on `web/build`'s site: an edit (a vertex typed into the
+//! table) of the book's scene and of a 64×64 scene of 64 triangles (`zsim
+//! random --count 64 --width 64 --height 64 --seed 1`), and a step of the
+//! stepper (Next), each from the event to the page redrawn, timed with the
+//! page's `performance.now()` around the event's dispatch, 41 times each,
+//! alternating; and the module's size, plain and gzipped. Run with `cargo
+//! bench --bench playground` after `web/build`.
 
 use std::path::Path;
 use std::time::Duration;
@@ -39,7 +40,7 @@ fn main() {
     let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join("bench-playground-profile");
     let _ = std::fs::remove_dir_all(&profile);
     let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
-    let (edits, steps, views) = runtime.block_on(async {
+    let (edits, steps, class_edits) = runtime.block_on(async {
         let client = chromium::session_as(&driver, &browser, &profile, "en-US", (1280, 900)).await;
         client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
         for _ in 0..600 {
@@ -49,30 +50,51 @@ fn main() {
             }
             tokio::time::sleep(Duration::from_millis(50)).await;
         }
-        let script = format!(
-            r#"const edits = [], steps = [], views = [];
-            const text = document.getElementById("json").value;
-            for (let i = 0; i < {ROUNDS}; i++) {{
-              const input = document.querySelector("input.coord[data-p='1'][data-v='0'][data-c='0']");
-              input.value = String(12 + (i % 3));
-              let t = performance.now();
-              input.dispatchEvent(new Event("change"));
-              edits.push(performance.now() - t);
-              const button = document.getElementById(i % 2 ? "back" : "next");
-              t = performance.now();
-              button.click();
-              steps.push(performance.now() - t);
-              t = performance.now();
-              JSON.parse(wasm_bindgen.view("en", text, 20));
-              views.push(performance.now() - t);
-            }}
-            return [edits, steps, views];"#
-        );
-        let times = client.execute(&script, vec![]).await.unwrap();
-        let list = |i: usize| times[i].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect::<Vec<_>>();
-        let measured = (list(0), list(1), list(2));
+        let measure = |polygon: usize| {
+            format!(
+                r#"const edits = [], steps = [];
+                for (let i = 0; i < {ROUNDS}; i++) {{
+                  const input = document.querySelector("input.coord[data-p='{polygon}'][data-v='0'][data-c='0']");
+                  input.value = String(12 + (i % 3));
+                  let t = performance.now();
+                  input.dispatchEvent(new Event("change"));
+                  edits.push(performance.now() - t);
+                  const button = document.getElementById(i % 2 ? "back" : "next");
+                  t = performance.now();
+                  button.click();
+                  steps.push(performance.now() - t);
+                }}
+                return [edits, steps];"#
+            )
+        };
+        let list = |times: &serde_json::Value, i: usize| {
+            times[i].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect::<Vec<_>>()
+        };
+        let book = client.execute(&measure(1), vec![]).await.unwrap();
+        // The class-sized scene, opened as a link opens it.
+        let large = zsim::RandomScene {
+            count: 64,
+            seed: 1,
+            width: 64,
+            height: 64,
+            max_size: 64,
+            frame_bits: 2,
+            depth_bits: 4,
+        }
+        .json();
+        let address = format!("http://127.0.0.1:{port}/#{}", zsim::playground::fragment_of(&large));
+        client.goto("about:blank").await.unwrap();
+        client.goto(&address).await.unwrap();
+        for _ in 0..600 {
+            let shown = client.execute("return document.querySelectorAll('input.coord').length;", vec![]);
+            if shown.await.unwrap().as_u64().unwrap_or(0) > 0 {
+                break;
+            }
+            tokio::time::sleep(Duration::from_millis(50)).await;
+        }
+        let class = client.execute(&measure(1), vec![]).await.unwrap();
         client.close().await.unwrap();
-        measured
+        (list(&book, 0), list(&book, 1), list(&class, 0))
     });
     let version = std::process::Command::new(&browser).arg("--version").output().map(|o| o.stdout).unwrap_or_default();
     println!("browser: {}", String::from_utf8_lossy(&version).trim());
@@ -83,8 +105,9 @@ fn main() {
         edits.iter().copied().fold(0.0, f64::max)
     );
     println!(
-        "the library's view of the book's scene alone (wasm_bindgen.view and JSON.parse): median {:.2} ms ({ROUNDS} runs)",
-        median(views)
+        "edit of a 64×64 scene of 64 triangles (a vertex typed), event to page redrawn: median {:.2} ms, max {:.2} ms ({ROUNDS} runs)",
+        median(class_edits.clone()),
+        class_edits.iter().copied().fold(0.0, f64::max)
     );
     println!(
         "step (Next/Back), event to page redrawn: median {:.2} ms, max {:.2} ms ({ROUNDS} runs)",

@@ -55,6 +55,8 @@ pub enum Error {
         path: PathBuf,
         /// Where in the file, e.g. `polygon 2: vertices[0][1]`.
         location: String,
+        /// The file's line where it is (from 1), where known.
+        line: Option<usize>,
         /// What is wrong.
         message: String,
     },
@@ -553,7 +555,7 @@ impl Error {
             Error::Write { path, source } => {
                 words!(lang, "error-write", path = shown_path(path), reason = crate::words::io_reason(lang, source))
             }
-            Error::SceneFormat { path, location, message } => {
+            Error::SceneFormat { path, location, message, .. } => {
                 if location.is_empty() {
                     format!("{}: {message}", shown_path(path))
                 } else {

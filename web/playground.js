@@ -51,13 +51,19 @@
   function setScene(text, keepEditor) {
     scene = text;
     if (!keepEditor || $("json").value !== text) $("json").value = text;
-    const next = JSON.parse(z.view(lang, text, 0));
+    const next = JSON.parse(z.view(lang, text));
     $("json").classList.toggle("invalid", !next.ok);
     $("json").setAttribute("aria-invalid", String(!next.ok));
     $("error").textContent = next.ok ? "" : next.error;
+    markError(next.ok ? null : next.at);
     // What is drawn is the last scene that could be read: dimmed while the text is not one.
     $("view").classList.toggle("stale", !next.ok);
     if (!next.ok) {
+      // The polygon at fault marked in its own table, where the page shows the table.
+      if (next.at && next.at.polygon !== undefined && view && view.byPolygon) {
+        renderPolygons(parsed() || {});
+        markError(next.at);
+      }
       view = null;
       ["framebuffer", "zbuffer", "afterFrame", "afterDepth", "explain"].forEach((id) => { $(id).textContent = ""; });
       return;
@@ -69,6 +75,25 @@
     else lessonState = JSON.parse(lesson.state());
     render();
     writeAddress(false);
+  }
+
+  // Where an error is, marked where the student typed it: a polygon's table, a setting's box,
+  // or the JSON's line (said under the error); `null` clears every mark.
+  function markError(at) {
+    document.querySelectorAll(".invalid").forEach((e) => { if (e.id !== "json") e.classList.remove("invalid"); });
+    document.querySelectorAll("[aria-invalid='true']").forEach((e) => { if (e.id !== "json") e.removeAttribute("aria-invalid"); });
+    if (!at) return;
+    const settings = { width: "width", height: "height", frame_bits: "frameBits", depth_bits: "depthBits", depth_test: "depthTest" };
+    const marked = at.polygon !== undefined ? document.querySelectorAll(`#polygons table`)[at.polygon]
+      : at.key !== undefined ? $(settings[at.key]) : null;
+    if (marked) {
+      marked.classList.add("invalid");
+      (marked.matches("input, select") ? [marked] : marked.querySelectorAll("input")).forEach((e) => e.setAttribute("aria-invalid", "true"));
+    }
+    if (at.line !== undefined) {
+      const line = el("code", words.errorLine.replace("{line}", at.line).replace("{text}", at.text), "errorLine");
+      $("error").append(el("br"), line);
+    }
   }
 
   // The quiz asked: "depth", "frame", "coverage", or "" for none.
@@ -142,7 +167,7 @@
     const box = $("polygons");
     if (box.contains(document.activeElement)) return;
     // The table only where the library shows the scene polygon by polygon (a few dozen polygons).
-    const polygons = Array.isArray(object.polygons) && view.after.length === view.polygons.length ? object.polygons : [];
+    const polygons = Array.isArray(object.polygons) && view.byPolygon ? object.polygons : [];
     box.replaceChildren();
     polygons.forEach((polygon, p) => {
       const table = el("table", undefined, "vertices");
@@ -326,15 +351,17 @@
     grid.appendChild(svg("rect", { x, y: view.height - 1 - y, width: 1, height: 1, class: "picked" }));
   }
 
+  // The buffers after the chosen polygon, asked of the library when shown (not one set per polygon on every edit).
   function renderAfter() {
     const select = $("afterSelect");
-    const chosen = Math.min(Number(select.value || 0), Math.max(0, view.after.length - 1));
-    select.replaceChildren(...view.after.map((a, i) => { const o = el("option", view.polygons[i].label); o.value = i; return o; }));
+    const count = view.byPolygon ? view.polygons.length : 0;
+    const chosen = Math.min(Number(select.value || 0), Math.max(0, count - 1));
+    select.replaceChildren(...view.polygons.slice(0, count).map((p, i) => { const o = el("option", p.label); o.value = i; return o; }));
     select.value = chosen;
-    const after = view.after[chosen];
-    $("afterHeading").textContent = after ? `${after.heading} — ${after.counts}` : "";
-    $("afterFrame").textContent = after ? after.frame : "";
-    $("afterDepth").textContent = after ? after.depth : "";
+    const after = count ? call("after", scene, chosen) : { ok: false };
+    $("afterHeading").textContent = after.ok ? `${after.heading} — ${after.counts}` : "";
+    $("afterFrame").textContent = after.ok ? after.frame : "";
+    $("afterDepth").textContent = after.ok ? after.depth : "";
   }
 
   // What the lesson shows now, already cut by the library to what may be shown.

@@ -430,6 +430,7 @@ pub fn load(lang: Lang, path: &std::path::Path) -> Result<Model, crate::error::E
     Model::parse(lang, &text).map_err(|e| crate::error::Error::SceneFormat {
         path: path.to_owned(),
         location: words!(lang, "tinyrenderer-line", line = e.line),
+        line: Some(e.line),
         message: e.message,
     })
 }

@@ -49,18 +49,6 @@ pub fn stops(lang: Lang, stepper: &mut Stepper<'_>) -> Vec<serde_json::Value> {
     stops
 }
 
-/// Where the stepper's stops are, without what each shows: each stop's
-/// polygon and row, in order.
-pub fn stop_places(stepper: &mut Stepper<'_>) -> Vec<Stop> {
-    let mut places = Vec::new();
-    let mut moved = stepper.start(None);
-    while let Moved::To { at: Some(stop), .. } = moved {
-        places.push(stop);
-        moved = stepper.forward();
-    }
-    places
-}
-
 /// How a page wants a stop's buffers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Buffers {

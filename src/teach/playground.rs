@@ -4,7 +4,7 @@
 //! no rule of its own. Each function takes the scene as text, exactly as the
 //! page's editor holds it, and answers with JSON: the buffers after each
 //! polygon and at the end (as `zsim run --final` prints them), the stepper's
-//! stops, the quiz's verdicts, a homework answer's check, a pixel's history,
+//! lesson (the stepper and its quiz), a homework answer's check, a pixel's history,
 //! the book-style figure, an edit of the scene, and the page's words.
 //!
 //! A scene is named in messages by [`scene_name`] ("the scene", in the
@@ -30,7 +30,7 @@ use crate::simulate::simulation::Simulation;
 use crate::teach::check::answer_from_text;
 use crate::teach::lesson::{Command, Lesson, Said};
 use crate::teach::page::{Buffers, buffer_data};
-use crate::teach::step::{Moved, Question, QuizMode, Stepper};
+use crate::teach::step::{Moved, Question, QuizMode};
 use crate::words::{Lang, polygon_label};
 
 /// How the scene typed into the page is named in messages: "the scene", in
@@ -52,21 +52,32 @@ pub const MAX_SHOWN_POLYGONS: usize = 64;
 /// says why its buffers are not printed.
 pub const MAX_PRINTED_CELLS: u64 = 1024 * 1024;
 
-/// The scene read from `text`, or its error worded as the command line words it.
+/// The scene read from `text`, or its error worded as the command line words
+/// it, with where the page marks it (`at`): `{"polygon": i}` (0-based) for a
+/// polygon, `{"key": "width"}` for a setting, `{"line": n, "text"}` (from 1)
+/// for JSON that does not read.
 fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
-    Scene::from_json(lang, text, Path::new(&scene_name(lang)))
-        .map_err(|error| json!({"ok": false, "error": error.message(lang)}))
+    Scene::from_json(lang, text, Path::new(&scene_name(lang))).map_err(|error| {
+        let at = match &error {
+            crate::error::Error::Polygon { index, .. } => json!({"polygon": index}),
+            crate::error::Error::Setting { key, .. } => json!({"key": key}),
+            crate::error::Error::SceneFormat { line: Some(line), .. } => {
+                let shown = text.lines().nth(line.saturating_sub(1)).unwrap_or_default();
+                json!({"line": line, "text": crate::words::printable(shown).into_owned()})
+            }
+            _ => Value::Null,
+        };
+        json!({"ok": false, "error": error.message(lang), "at": at})
+    })
 }
 
 /// Everything the page shows of the scene in `text`: its size, each
-/// polygon's outline in pixel units, the buffers after each
-/// polygon, the final buffers as `zsim run --final` prints them
-/// (`framebuffer`, `zbuffer`) and where the stepper stops; or
-/// `{"ok": false, "error": …}` with the scene's error.
-///
-/// With it comes what stop number `at` shows (the last when there are fewer),
-/// as [`stop`] gives it, from the same tracing of the scene.
-pub fn view(lang: Lang, text: &str, at: usize) -> Value {
+/// polygon's outline in pixel units and whether the page shows it polygon
+/// by polygon (`byPolygon`), the final buffers as `zsim run --final` prints
+/// them (`framebuffer`, `zbuffer`), the palette and notes; or `{"ok":
+/// false, "error": …}` with the scene's error. The buffers after one
+/// polygon are [`after`]'s, the stepper's the lesson's ([`lesson_state`]).
+pub fn view(lang: Lang, text: &str) -> Value {
     let scene = match scene_of(lang, text) {
         Ok(scene) => scene,
         Err(error) => return error,
@@ -88,30 +99,8 @@ pub fn view(lang: Lang, text: &str, at: usize) -> Value {
         })
         .collect();
     let mut simulation = Simulation::new(&scene);
-    let mut after = Vec::new();
-    while let Some(drawn) = simulation.draw_next_counted(&mut Unobserved) {
-        if shown {
-            let (frame, depth) = buffer_data(simulation.buffers(), Buffers::Printed);
-            after.push(json!({
-                "heading": report::polygon_heading(lang, &scene, drawn.index),
-                "counts": words!(lang, "run-counts", covered = drawn.tested.to_string(), written = drawn.written.to_string()),
-                "frame": frame, "depth": depth,
-            }));
-        }
-    }
+    simulation.finish(&mut Unobserved);
     let buffers = simulation.buffers();
-    // Where the stops are; what one shows is asked for when it is shown ([`stop`]).
-    let (stops, stop): (Vec<Value>, Value) = if shown {
-        let mut stepper = Stepper::new(&scene, Arith::Exact);
-        let places = crate::teach::page::stop_places(&mut stepper);
-        let stop = match places.get(at.min(places.len().saturating_sub(1))) {
-            Some(&place) => crate::teach::page::stop_data(lang, &mut stepper, place, Buffers::Printed),
-            None => Value::Null,
-        };
-        (places.iter().map(|&s| json!({"polygon": s.polygon, "row": stepper.tracer().record(s).row})).collect(), stop)
-    } else {
-        (Vec::new(), Value::Null)
-    };
     let mut notes = Vec::new();
     if !shown {
         notes.push(words!(
@@ -135,33 +124,43 @@ pub fn view(lang: Lang, text: &str, at: usize) -> Value {
     json!({
         "ok": true,
         "width": scene.width, "height": scene.height,
-        "polygons": polygons, "after": after,
+        "polygons": polygons, "byPolygon": shown,
         "cellByCell": cells <= MAX_SHOWN_CELLS,
         // What each buffer is cleared to: where a student's answer grid starts (no level: exact depths).
         "cleared": {"frame": scene.background, "depth": scene.clear_depth.level()},
         "framebuffer": framebuffer, "zbuffer": zbuffer,
-        "stops": stops, "stop": stop, "notes": notes,
+        "notes": notes,
         // The figure's colours for framebuffer values 1, 2, … (0 is white), so page and figure agree.
         "palette": figure::PALETTE,
     })
 }
 
-/// What stop number `stop` (0-based, in the stepper's order) of the scene in
-/// `text` shows ([`crate::teach::page::stop_data`]), or `{"ok": false, "error"}`.
-pub fn stop(lang: Lang, text: &str, stop: usize) -> Value {
+/// The buffers after polygon `index` (0-based) of the scene in `text`, as
+/// `zsim run --after` prints them, with the polygon's heading and counts:
+/// `{"heading", "counts", "frame", "depth"}`, or `{"ok": false, "error"}`
+/// (also where the page does not show the scene polygon by polygon).
+pub fn after(lang: Lang, text: &str, index: usize) -> Value {
     let scene = match scene_of(lang, text) {
         Ok(scene) => scene,
         Err(error) => return error,
     };
-    let mut stepper = Stepper::new(&scene, Arith::Exact);
-    match crate::teach::page::stop_places(&mut stepper).get(stop) {
-        Some(&at) => {
-            let mut data = crate::teach::page::stop_data(lang, &mut stepper, at, Buffers::Printed);
-            data["ok"] = Value::Bool(true);
-            data
-        }
-        None => json!({"ok": false, "error": words!(lang, "play-no-such-stop")}),
+    let cells = u64::from(scene.width) * u64::from(scene.height);
+    if cells > MAX_SHOWN_CELLS || scene.polygons.len() > MAX_SHOWN_POLYGONS || index >= scene.polygons.len() {
+        return json!({"ok": false, "error": words!(lang, "play-no-polygon")});
     }
+    let mut simulation = Simulation::new(&scene);
+    let mut last = None;
+    for _ in 0..=index {
+        last = simulation.draw_next_counted(&mut Unobserved);
+    }
+    let Some(drawn) = last else { return json!({"ok": false, "error": words!(lang, "play-no-polygon")}) };
+    let (frame, depth) = buffer_data(simulation.buffers(), Buffers::Printed);
+    json!({
+        "ok": true,
+        "heading": report::polygon_heading(lang, &scene, drawn.index),
+        "counts": words!(lang, "run-counts", covered = drawn.tested.to_string(), written = drawn.written.to_string()),
+        "frame": frame, "depth": depth,
+    })
 }
 
 /// The book-style figure of the scene in `text` after its last polygon, as
@@ -542,6 +541,7 @@ pub fn page_words(lang: Lang) -> Value {
     words.insert("status".into(), Value::String(words!(lang, "page-status", at = "{at}", count = "{count}")));
     words.insert("hidden".into(), Value::String(words!(lang, "play-hidden", count = "{count}")));
     words.insert("legendValue".into(), Value::String(words!(lang, "play-legend-value", value = "{value}")));
+    words.insert("errorLine".into(), Value::String(words!(lang, "play-error-line", line = "{line}", text = "{text}")));
     Value::Object(words)
 }
 
@@ -614,12 +614,17 @@ mod tests {
     /// book's depth 15 at (15, 15) and the triangle's 2 beside the rectangle.
     #[test]
     fn the_final_buffers_are_run_final_s_matrices() {
-        let view = view(Lang::En, BOOK, 0);
+        let view = view(Lang::En, BOOK);
         let depth = view["zbuffer"].as_str().unwrap();
         let row_15 = depth.lines().nth(31 - 15).unwrap();
         assert_eq!(row_15.split_whitespace().nth(15), Some("15"));
         assert_eq!(view["framebuffer"].as_str().unwrap().lines().count(), 32);
-        assert_eq!(view["after"].as_array().unwrap().len(), 2);
+        assert_eq!(view["byPolygon"], true);
+        // After the rectangle alone: 10 at (15, 15), where the triangle later writes 15.
+        let first = after(Lang::En, BOOK, 0);
+        assert_eq!(first["depth"].as_str().unwrap().lines().nth(31 - 15).unwrap().split_whitespace().nth(15), Some("10"));
+        assert_eq!(after(Lang::En, BOOK, 1)["depth"], view["zbuffer"]);
+        assert_eq!(after(Lang::En, BOOK, 2)["ok"], false);
     }
 
     /// A scene's error is the command line's, naming the scene and the place.
@@ -628,11 +633,18 @@ mod tests {
         let view = view(
             Lang::En,
             r#"{"width": 32, "height": 32, "polygons": [{"value": 1, "vertices": [[1, 2, 3], [4, 5]]}]}"#,
-            0,
         );
         assert_eq!(view["ok"], false);
         let error = view["error"].as_str().unwrap();
         assert!(error.starts_with("the scene: polygon 1: vertices[1]: 2 entries"), "{error}");
+        // Where the page marks it: the polygon's table, the setting, or the JSON's line.
+        assert_eq!(view["at"]["line"], 1, "{view}");
+        let view = super::view(Lang::En, "{\n  \"width\": 32,\n  \"height\": 32\n  \"polygons\": []\n}");
+        assert_eq!(view["at"], json!({"line": 4, "text": "  \"polygons\": []"}), "{view}");
+        let view = super::view(Lang::En, r#"{"width": 8, "height": 8, "polygons": [{"value": 1, "vertices": [[0, 0, 1], [1, 1, 1]]}]}"#);
+        assert_eq!(view["at"], json!({"polygon": 0}), "{view}");
+        let view = super::view(Lang::En, r#"{"width": 0, "height": 32, "polygons": []}"#);
+        assert_eq!(view["at"], json!({"key": "width"}), "{view}");
     }
 
     /// An edit keeps every other number exactly as written and lays the scene out one polygon a line.

@@ -995,3 +995,4 @@ play-legend = Framebuffer values:
 play-hidden = { $count } more covered pixels, asked one at a time
 play-legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
+play-error-line = line { $line }: { $text }

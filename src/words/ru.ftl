@@ -973,3 +973,4 @@ play-legend = Значения буфера кадра:
 play-hidden = ещё покрытых пикселей: { $count }, спрашиваются по одному
 play-legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
+play-error-line = строка { $line }: { $text }

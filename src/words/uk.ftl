@@ -973,3 +973,4 @@ play-legend = Значення буфера кадру:
 play-hidden = ще покритих пікселів: { $count }, питаються по одному
 play-legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
+play-error-line = рядок { $line }: { $text }

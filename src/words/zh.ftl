@@ -920,3 +920,4 @@ play-legend = 帧缓冲区的值：
 play-hidden = 还有 { $count } 个被覆盖的像素，逐个提问
 play-legend-value = { $value }
 lesson-said-meant = { $said }（{ $meant }）
+play-error-line = 第 { $line } 行：{ $text }

@@ -273,7 +273,7 @@ fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
             )
             .await
             .unwrap();
-        let error = playground::view(Lang::Ru, bad, 0)["error"].as_str().unwrap().to_string();
+        let error = playground::view(Lang::Ru, bad)["error"].as_str().unwrap().to_string();
         assert_eq!(text(&client, "#error").await, error, "the scene's error in Russian");
         assert!(error.contains("вершин"), "{error}");
         std::fs::write(dir.join("playground-ru-1280.png"), client.screenshot().await.unwrap()).unwrap();
@@ -340,7 +340,7 @@ fn the_pages_buffers_are_run_final_s_for_every_example() {
             continue;
         }
         let scene = std::fs::read_to_string(&path).unwrap();
-        let view = playground::view(Lang::En, &scene, 0);
+        let view = playground::view(Lang::En, &scene);
         assert_eq!(view["ok"], true, "{}: {view}", path.display());
         if scene.contains("\"antialias\"") {
             assert_eq!(

@@ -44,14 +44,14 @@ pub fn examples() -> String {
 
 /// See [`playground::view`].
 #[wasm_bindgen]
-pub fn view(code: &str, scene: &str, at: usize) -> String {
-    playground::view(lang(code), scene, at).to_string()
+pub fn view(code: &str, scene: &str) -> String {
+    playground::view(lang(code), scene).to_string()
 }
 
-/// See [`playground::stop`].
+/// See [`playground::after`].
 #[wasm_bindgen]
-pub fn stop(code: &str, scene: &str, stop: usize) -> String {
-    playground::stop(lang(code), scene, stop).to_string()
+pub fn after(code: &str, scene: &str, index: usize) -> String {
+    playground::after(lang(code), scene, index).to_string()
 }
 
 /// See [`playground::figure`].

@@ -488,6 +488,7 @@ fn located(path: &Path, error: CaseError) -> Error {
     Error::SceneFormat {
         path: path.to_owned(),
         location: error.line.map_or(String::new(), |line| format!("line {line}")),
+        line: error.line,
         message: error.message,
     }
 }

@@ -25,6 +25,7 @@ pub fn located(path: &Path, error: super::CaseError) -> Error {
     Error::SceneFormat {
         path: path.to_owned(),
         location: error.line.map_or(String::new(), |line| format!("line {line}")),
+        line: error.line,
         message: error.message,
     }
 }

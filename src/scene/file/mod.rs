@@ -32,6 +32,7 @@ pub(crate) fn read(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> 
         return Err(Error::SceneFormat {
             path: path.to_owned(),
             location: String::new(),
+            line: None,
             message: words!(lang, "scene-not-object", found = words!(lang, found)),
         });
     }
@@ -69,12 +70,14 @@ fn plain(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
         Error::SceneFormat {
             path: path.to_owned(),
             location: if syntax { String::new() } else { describe_location(lang, &error.path().to_string()) },
+            line: (error.inner().line() > 0).then(|| error.inner().line()),
             message: format!("{}{}", json_message(lang, error.inner()), missing_comma(lang, text, error.inner())),
         }
     })?;
     deserializer.end().map_err(|error| Error::SceneFormat {
         path: path.to_owned(),
         location: String::new(),
+        line: (error.line() > 0).then(|| error.line()),
         message: json_message(lang, &error),
     })?;
     file.validate(lang, path, |polygon, index, frame| {
