@@ -72,16 +72,9 @@ fn main() {
         };
         let book = client.execute(&measure(1), vec![]).await.unwrap();
         // The class-sized scene, opened as a link opens it.
-        let large = zsim::RandomScene {
-            count: 64,
-            seed: 1,
-            width: 64,
-            height: 64,
-            max_size: 64,
-            frame_bits: 2,
-            depth_bits: 4,
-        }
-        .json();
+        let large =
+            zsim::RandomScene { count: 64, seed: 1, width: 64, height: 64, max_size: 64, frame_bits: 2, depth_bits: 4 }
+                .json();
         let address = format!("http://127.0.0.1:{port}/#{}", zsim::playground::fragment_of(&large));
         client.goto("about:blank").await.unwrap();
         client.goto(&address).await.unwrap();

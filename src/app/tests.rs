@@ -172,14 +172,14 @@ fn the_quiz_asks_before_each_pixel_is_shown() {
     assert!(!text.contains("29/2"), "the asked pixel's z stays hidden: {text}");
     press(&mut app, "15\n");
     let text = screen(&mut app, 100, 30);
-    assert!(text.contains("15: right. z = 29/2 ≈ 14.50 > 10 stored"), "{text}");
+    assert!(text.contains("15 (the value written): right. z = 29/2 ≈ 14.50 > 10 stored"), "{text}");
     assert!(text.contains("quiz 1/1"), "{text}");
     // n is refused while questions are open; a wrong answer gets its kind, not its value.
     press(&mut app, "n");
     assert!(screen(&mut app, 100, 30).contains("12 open questions on this scanline"));
     press(&mut app, "9\n");
     let text = screen(&mut app, 100, 30);
-    assert!(text.contains("9: not yet."), "{text}");
+    assert!(text.contains("9: not yet:"), "{text}");
     assert!(text.contains("last try: pixel (16, 15)"), "{text}");
 }
 
@@ -229,7 +229,7 @@ fn the_quiz_asks_again_on_junk_and_numbers_no_cell_holds() {
     assert!(text.contains("quiz 0/0"), "{text}");
     press(&mut app, "15\n14\n");
     let text = screen(&mut app, 100, 30);
-    assert!(text.contains("14: right"), "{text}");
+    assert!(text.contains("14 (the value written): right"), "{text}");
     assert!(text.contains("quiz 2/2"), "{text}");
     press(&mut app, "1\n2\nq");
     assert!(app.quit);
@@ -255,7 +255,7 @@ fn the_full_screen_quiz_asks_the_coverage_question_first() {
     assert!(!text.contains("crossings"), "the crossings would give the answer away: {text}");
     press(&mut app, "16-27\n");
     let text = screen(&mut app, 120, 30);
-    assert!(text.contains("16-27: not yet. a centre lies exactly on the polygon's boundary"), "{text}");
+    assert!(text.contains("16-27: not yet: a centre lies exactly on the polygon's boundary"), "{text}");
     assert!(text.contains("quiz 0/0"), "{text}");
     press(&mut app, "15 … 27\n");
     let text = screen(&mut app, 120, 30);
@@ -272,7 +272,7 @@ fn the_full_screen_quiz_asks_the_framebuffer_question() {
     assert!(text.contains("pixel (15, 15), framebuffer 1: the framebuffer after?"), "{text}");
     press(&mut app, "2\n");
     let text = screen(&mut app, 120, 30);
-    assert!(text.contains("2: right."), "{text}");
+    assert!(text.contains("2 (the value written): right."), "{text}");
     assert!(text.contains("quiz 1/1"), "{text}");
 }
 

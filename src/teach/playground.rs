@@ -622,7 +622,10 @@ mod tests {
         assert_eq!(view["byPolygon"], true);
         // After the rectangle alone: 10 at (15, 15), where the triangle later writes 15.
         let first = after(Lang::En, BOOK, 0);
-        assert_eq!(first["depth"].as_str().unwrap().lines().nth(31 - 15).unwrap().split_whitespace().nth(15), Some("10"));
+        assert_eq!(
+            first["depth"].as_str().unwrap().lines().nth(31 - 15).unwrap().split_whitespace().nth(15),
+            Some("10")
+        );
         assert_eq!(after(Lang::En, BOOK, 1)["depth"], view["zbuffer"]);
         assert_eq!(after(Lang::En, BOOK, 2)["ok"], false);
     }
@@ -641,7 +644,10 @@ mod tests {
         assert_eq!(view["at"]["line"], 1, "{view}");
         let view = super::view(Lang::En, "{\n  \"width\": 32,\n  \"height\": 32\n  \"polygons\": []\n}");
         assert_eq!(view["at"], json!({"line": 4, "text": "  \"polygons\": []"}), "{view}");
-        let view = super::view(Lang::En, r#"{"width": 8, "height": 8, "polygons": [{"value": 1, "vertices": [[0, 0, 1], [1, 1, 1]]}]}"#);
+        let view = super::view(
+            Lang::En,
+            r#"{"width": 8, "height": 8, "polygons": [{"value": 1, "vertices": [[0, 0, 1], [1, 1, 1]]}]}"#,
+        );
         assert_eq!(view["at"], json!({"polygon": 0}), "{view}");
         let view = super::view(Lang::En, r#"{"width": 0, "height": 32, "polygons": []}"#);
         assert_eq!(view["at"], json!({"key": "width"}), "{view}");

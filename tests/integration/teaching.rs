@@ -100,7 +100,7 @@ fn quiz_scores_the_students_answers() {
     assert!(run.stdout.contains("pixel (10, 5), stored 0: the z-buffer after?"), "{}", run.stdout);
     assert!(run.stdout.contains("  10 (the value written): right. z = 10 > 0 stored"), "{}", run.stdout);
     assert!(
-        run.stdout.contains("  -: not yet. this pixel passes the depth test: compare its exact z with the stored value again. One more try.\nlast try: pixel (12, 5)"),
+        run.stdout.contains("  -: not yet: this pixel passes the depth test: compare its exact z with the stored value again (one more try)\nlast try: pixel (12, 5)"),
         "{}",
         run.stdout
     );
@@ -165,7 +165,7 @@ fn quiz_coverage_asks_which_centres_are_covered_first() {
     assert!(!run.stdout[..asked].contains("crossings:"), "the crossings would answer it: {}", run.stdout);
     assert!(
         run.stdout
-            .contains("  16-28: not yet. a centre lies exactly on the polygon's boundary: which rule decides it?"),
+            .contains("  16-28: not yet: a centre lies exactly on the polygon's boundary: which rule decides it?"),
         "{}",
         run.stdout
     );
@@ -199,7 +199,7 @@ fn quiz_frame_asks_the_framebuffer_value() {
         run.stdout
     );
     assert!(run.stdout.contains("  2 (the value written): right."), "{}", run.stdout);
-    assert!(run.stdout.contains("  1: not yet. this pixel passes the depth test"), "{}", run.stdout);
+    assert!(run.stdout.contains("  1: not yet: this pixel passes the depth test"), "{}", run.stdout);
     assert!(run.stdout.contains("quiz: 1 right at the first try"), "{}", run.stdout);
 }
 
