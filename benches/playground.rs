@@ -40,7 +40,7 @@ fn main() {
     let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join("bench-playground-profile");
     let _ = std::fs::remove_dir_all(&profile);
     let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
-    let (edits, steps, class_edits) = runtime.block_on(async {
+    let (edits, steps, class_edits, parts) = runtime.block_on(async {
         let client = chromium::session_as(&driver, &browser, &profile, "en-US", (1280, 900)).await;
         client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
         for _ in 0..600 {
@@ -86,8 +86,21 @@ fn main() {
             tokio::time::sleep(Duration::from_millis(50)).await;
         }
         let class = client.execute(&measure(1), vec![]).await.unwrap();
+        // Where an edit of the class-sized scene goes: each of the library's calls alone.
+        let parts = format!(
+            r#"const text = document.getElementById("json").value, z = wasm_bindgen, times = {{}};
+            const time = (name, f) => {{ const t = performance.now(); f(); (times[name] = times[name] || []).push(performance.now() - t); }};
+            for (let i = 0; i < {ROUNDS}; i++) {{
+              time("view", () => JSON.parse(z.view("en", text)));
+              time("lesson", () => {{ const l = new z.WebLesson("en", text, "", 0, 0); JSON.parse(l.state()); l.free(); }});
+              time("after", () => JSON.parse(z.after("en", text, 0)));
+              time("edit", () => z.edit("en", text, JSON.stringify({{op: "set", path: ["width"], value: "64"}})));
+            }}
+            return times;"#
+        );
+        let parts = client.execute(&parts, vec![]).await.unwrap();
         client.close().await.unwrap();
-        (list(&book, 0), list(&book, 1), list(&class, 0))
+        (list(&book, 0), list(&book, 1), list(&class, 0), parts)
     });
     let version = std::process::Command::new(&browser).arg("--version").output().map(|o| o.stdout).unwrap_or_default();
     println!("browser: {}", String::from_utf8_lossy(&version).trim());
@@ -102,6 +115,15 @@ fn main() {
         median(class_edits.clone()),
         class_edits.iter().copied().fold(0.0, f64::max)
     );
+    for (name, what) in [
+        ("view", "the scene's view (zsim::playground::view)"),
+        ("lesson", "a new lesson and its state (WebLesson)"),
+        ("after", "the buffers after polygon 1 (zsim::playground::after)"),
+        ("edit", "the edit of the scene's text (zsim::playground::edit)"),
+    ] {
+        let times: Vec<f64> = parts[name].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+        println!("  of which {what}: median {:.2} ms", median(times));
+    }
     println!(
         "step (Next/Back), event to page redrawn: median {:.2} ms, max {:.2} ms ({ROUNDS} runs)",
         median(steps.clone()),

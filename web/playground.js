@@ -22,9 +22,11 @@
   };
   let z, lang = "en", words = {}, scene = "", view = null, drag = null;
   // The stepper and its quiz (the library's object) and what it last said it shows.
-  let lesson = null, lessonState = null, lessonScene = null;
+  let lesson = null, lessonState = null, lessonScene = null, addressTimer = null;
   // The pixel whose history is shown, and the keyboard's pixel cursor on the raster.
   let picked = null, cursor = null;
+  // The raster's width on the screen, kept by a ResizeObserver.
+  let gridWidth = 640;
   // Framebuffer values as colours: the library's (the figure's), 0 white.
   const colour = (value) => value === 0 || !view ? "#ffffff" : view.palette[(value - 1) % view.palette.length];
 
@@ -47,11 +49,19 @@
     setScene(scene, true);
   }
 
-  // The scene's text is the one source: every control edits it through the library.
+  // The scene's text is the one source: every control edits it through the library. It is read
+  // once, by the lesson, and its view, buffers, figure and histories are asked of that reading.
   function setScene(text, keepEditor) {
     scene = text;
     if (!keepEditor || $("json").value !== text) $("json").value = text;
-    const next = JSON.parse(z.view(lang, text));
+    let next;
+    if (!lesson || lessonScene !== text) {
+      next = newLesson(lessonState && lessonState.at);
+    } else {
+      // The same scene in another language: the lesson goes on where it was, score and all.
+      next = JSON.parse(lesson.view());
+      lessonState = JSON.parse(lesson.state());
+    }
     $("json").classList.toggle("invalid", !next.ok);
     $("json").setAttribute("aria-invalid", String(!next.ok));
     $("error").textContent = next.ok ? "" : next.error;
@@ -69,12 +79,10 @@
       return;
     }
     view = next;
-    // The lesson follows the scene, staying on the same polygon and row where it still can; in
-    // another language it goes on where it was, score and all.
-    if (!lesson || lessonScene !== text) newLesson(lessonState && lessonState.at);
-    else lessonState = JSON.parse(lesson.state());
     render();
-    writeAddress(false);
+    // The address follows a moment later: a drag's many edits write it once.
+    clearTimeout(addressTimer);
+    addressTimer = setTimeout(() => writeAddress(false), 150);
   }
 
   // Where an error is, marked where the student typed it: a polygon's table, a setting's box,
@@ -99,19 +107,22 @@
   // The quiz asked: "depth", "frame", "coverage", or "" for none.
   function quizMode() { return $("quiz").checked ? $("quizKind").value : ""; }
 
-  // A new lesson of the scene (the quiz as chosen) at `place` ({polygon, row}), or at its first stop.
+  // A new lesson of the scene (the quiz as chosen) at `place` ({polygon, row}), or at its first
+  // stop; answers with the scene's view, or its error ({ok: false, error, at}).
   function newLesson(place) {
     if (lesson) lesson.free();
     lesson = null;
     lessonState = null;
     lessonScene = null;
-    if (!view || !view.cellByCell) return;
     try {
       lesson = new z.WebLesson(lang, scene, quizMode(), place ? place.polygon : 0, place ? place.row : 0);
-    } catch (e) { return; }
+    } catch (error) {
+      return JSON.parse(error);
+    }
     lessonScene = scene;
     lessonState = JSON.parse(lesson.state());
     $("said").textContent = "";
+    return JSON.parse(lesson.view());
   }
 
   // Sends the lesson a command ({key}, {go: [polygon, row]}, {answer}) and shows what it said.
@@ -158,8 +169,8 @@
 
   // The figure, drawn by the library when its section is open.
   function renderFigure() {
-    if (!$("figureBox").open) return;
-    const figure = call("figure", scene);
+    if (!$("figureBox").open || !lesson) return;
+    const figure = JSON.parse(lesson.figure());
     $("figure").innerHTML = figure.ok ? figure.svg : "";
   }
 
@@ -168,6 +179,19 @@
     if (box.contains(document.activeElement)) return;
     // The table only where the library shows the scene polygon by polygon (a few dozen polygons).
     const polygons = Array.isArray(object.polygons) && view.byPolygon ? object.polygons : [];
+    // The same tables as before (polygons, vertices and language alike): only their values change.
+    const shape = lang + "|" + polygons.map((p) => (Array.isArray(p.vertices) ? p.vertices.map((v) => (Array.isArray(v) ? v.length : 0)).join(".") : "")).join(",");
+    if (box.dataset.shape === shape) {
+      box.querySelectorAll("input.value").forEach((input) => {
+        const value = polygons[input.dataset.p].value;
+        input.value = value === undefined ? "" : value;
+      });
+      box.querySelectorAll("input.coord").forEach((input) => {
+        input.value = polygons[input.dataset.p].vertices[input.dataset.v][input.dataset.c];
+      });
+      return;
+    }
+    box.dataset.shape = shape;
     box.replaceChildren();
     polygons.forEach((polygon, p) => {
       const table = el("table", undefined, "vertices");
@@ -209,12 +233,15 @@
       cell.colSpan = 4;
       const add = el("button", words.addVertex, "addVertex");
       add.onclick = () => {
-        const vs = polygon.vertices || [];
+        const vs = ((parsed() || {}).polygons || [])[p]?.vertices || [];
         const last = vs[vs.length - 1] || [0, 0, 0];
         edit({ op: "insert", path: ["polygons", p, "vertices", vs.length], value: JSON.stringify(last) });
       };
       const remove = el("button", words.removeVertex, "removeVertex");
-      remove.onclick = () => edit({ op: "remove", path: ["polygons", p, "vertices", (polygon.vertices || []).length - 1] });
+      remove.onclick = () => {
+        const vs = ((parsed() || {}).polygons || [])[p]?.vertices || [];
+        edit({ op: "remove", path: ["polygons", p, "vertices", vs.length - 1] });
+      };
       const drop = el("button", words.removePolygon, "removePolygon");
       drop.onclick = () => edit({ op: "remove", path: ["polygons", p] });
       cell.append(add, remove, drop);
@@ -238,7 +265,7 @@
     grid.setAttribute("aria-label", words.gridLabel);
     const rows = shownFrame();
     // The cells as one piece of markup (numbers only), made once for a raster's size; an edit
-    // recolours them and redraws only the outlines and vertices.
+    // recolours them.
     const size = `${w}x${h}:${rows.length}`;
     if (grid.dataset.size !== size) {
       let cells = "";
@@ -247,31 +274,55 @@
       }));
       grid.innerHTML = cells;
       grid.dataset.size = size;
-    } else {
-      grid.querySelectorAll(":scope > :not(.cell)").forEach((e) => e.remove());
+      grid.dataset.shape = "";
     }
     colourCells(rows);
     // Only a scene in pixel units can be dragged: its vertices are the raster's coordinates.
     const draggable = !object.window && !(object.effects && object.effects.perspective);
-    // A handle at least 24 px across on any screen (26, for rounding).
-    const pixelsPerUnit = Math.max(1, grid.clientWidth || 640) / w;
+    // A handle at least 24 px across on any screen (26, for rounding), from the raster's width as
+    // last laid out (reading it now would lay the whole page out again).
+    const pixelsPerUnit = Math.max(1, gridWidth) / w;
     const radius = Math.max(0.35, w / 90, 13 / pixelsPerUnit);
+    // The outlines and handles: moved in place while the polygons keep their vertices' count.
+    const shape = `${draggable}:` + view.polygons.map((p) => p.outline.length).join(",");
+    if (grid.dataset.shape === shape) {
+      const outlines = grid.querySelectorAll(":scope > polygon.outline"), handles = grid.querySelectorAll(":scope > circle.vertex");
+      let k = 0;
+      view.polygons.forEach((polygon, p) => {
+        outlines[p].setAttribute("points", polygon.outline.map(([x, y]) => `${x},${h - y}`).join(" "));
+        if (!draggable) return;
+        polygon.outline.forEach(([x, y]) => {
+          const handle = handles[k++];
+          handle.setAttribute("cx", x);
+          handle.setAttribute("cy", h - y);
+          handle.setAttribute("r", radius);
+          handle.setAttribute("fill", colour(polygon.value));
+        });
+      });
+      renderLegend(rows);
+      return;
+    }
+    grid.querySelectorAll(":scope > :not(.cell)").forEach((e) => e.remove());
+    grid.dataset.shape = shape;
     view.polygons.forEach((polygon, p) => {
       const points = polygon.outline.map(([x, y]) => `${x},${h - y}`).join(" ");
       grid.appendChild(svg("polygon", { points, class: "outline", stroke: "#333" }));
-      if (!draggable) return;
-      polygon.outline.forEach(([x, y], v) => {
-        const handle = svg("circle", { cx: x, cy: h - y, r: radius, class: "vertex", fill: colour(polygon.value) });
-        handle.dataset.p = p;
-        handle.dataset.v = v;
-        handle.addEventListener("pointerdown", (e) => {
-          e.preventDefault();
-          handle.setPointerCapture(e.pointerId);
-          drag = { p, v, last: null };
-        });
-        grid.appendChild(handle);
-      });
     });
+    if (draggable) {
+      view.polygons.forEach((polygon, p) => {
+        polygon.outline.forEach(([x, y], v) => {
+          const handle = svg("circle", { cx: x, cy: h - y, r: radius, class: "vertex", fill: colour(polygon.value) });
+          handle.dataset.p = p;
+          handle.dataset.v = v;
+          handle.addEventListener("pointerdown", (e) => {
+            e.preventDefault();
+            handle.setPointerCapture(e.pointerId);
+            drag = { p, v, last: null };
+          });
+          grid.appendChild(handle);
+        });
+      });
+    }
     renderLegend(rows);
   }
 
@@ -344,7 +395,7 @@
 
   function explainPixel(x, y) {
     picked = { x, y };
-    const result = call("explain", scene, x, y);
+    const result = lesson ? JSON.parse(lesson.explain(x, y)) : { ok: false, error: "" };
     $("explain").textContent = result.ok ? result.text : result.error;
     const grid = $("grid");
     grid.querySelectorAll(".picked").forEach((e) => e.remove());
@@ -358,7 +409,7 @@
     const chosen = Math.min(Number(select.value || 0), Math.max(0, count - 1));
     select.replaceChildren(...view.polygons.slice(0, count).map((p, i) => { const o = el("option", p.label); o.value = i; return o; }));
     select.value = chosen;
-    const after = count ? call("after", scene, chosen) : { ok: false };
+    const after = count && lesson ? JSON.parse(lesson.after(chosen)) : { ok: false };
     $("afterHeading").textContent = after.ok ? `${after.heading} — ${after.counts}` : "";
     $("afterFrame").textContent = after.ok ? after.frame : "";
     $("afterDepth").textContent = after.ok ? after.depth : "";
@@ -535,10 +586,10 @@
       lessonState = place ? { at: place } : null;
       setScene(text);
     } else {
-      newLesson(place);
-      render();
+      view = newLesson(place);
+      if (view.ok) render();
     }
-    if (pixel) explainPixel(pixel[0], pixel[1]);
+    if (pixel && view && view.ok) explainPixel(pixel[0], pixel[1]);
   }
 
   function renderExamples() {
@@ -603,7 +654,7 @@
     for (const [id, key] of [["back", "b"], ["next", "n"], ["prevPolygon", "P"], ["nextPolygon", "p"], ["skip", "s"]]) {
       $(id).onclick = () => act({ key });
     }
-    const requiz = () => { newLesson(lessonState && lessonState.at); render(); writeAddress(false); };
+    const requiz = () => { view = newLesson(lessonState && lessonState.at); render(); writeAddress(false); };
     $("quiz").onchange = requiz;
     $("quizKind").onchange = () => { if (quizMode()) requiz(); };
     // Enter checks: the form's submit.
@@ -643,6 +694,13 @@
         writeAddress(false);
       }
     });
+    new ResizeObserver((entries) => {
+      const width = entries[0].contentRect.width;
+      if (width && Math.abs(width - gridWidth) > 1) {
+        gridWidth = width;
+        if (view) renderGrid(parsed() || {});
+      }
+    }).observe($("grid"));
     $("afterSelect").onchange = renderAfter;
     $("checkAnswer").onclick = checkAnswer;
     $("answerGrid").onclick = answerGrid;

@@ -47,6 +47,12 @@ pub const MAX_SHOWN_CELLS: u64 = 128 * 128;
 /// The most polygons whose buffers the page shows one by one.
 pub const MAX_SHOWN_POLYGONS: usize = 64;
 
+/// Whether the page shows `scene` cell by cell and polygon by polygon (its
+/// buffers after each polygon, the stepper).
+fn shown_by_polygon(scene: &Scene) -> bool {
+    u64::from(scene.width) * u64::from(scene.height) <= MAX_SHOWN_CELLS && scene.polygons.len() <= MAX_SHOWN_POLYGONS
+}
+
 /// The largest raster whose final buffers the page prints as text: 1024 ×
 /// 1024 (a few megabytes of text). A larger scene is drawn, and the page
 /// says why its buffers are not printed.
@@ -78,10 +84,14 @@ fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
 /// false, "error": …}` with the scene's error. The buffers after one
 /// polygon are [`after`]'s, the stepper's the lesson's ([`lesson_state`]).
 pub fn view(lang: Lang, text: &str) -> Value {
-    let scene = match scene_of(lang, text) {
-        Ok(scene) => scene,
-        Err(error) => return error,
-    };
+    match scene_of(lang, text) {
+        Ok(scene) => view_of(lang, &scene),
+        Err(error) => error,
+    }
+}
+
+/// [`view`] of a scene already read (the lesson's: one reading for every view).
+pub fn view_of(lang: Lang, scene: &Scene) -> Value {
     let cells = u64::from(scene.width) * u64::from(scene.height);
     let shown = cells <= MAX_SHOWN_CELLS && scene.polygons.len() <= MAX_SHOWN_POLYGONS;
     let polygons: Vec<Value> = scene
@@ -140,10 +150,14 @@ pub fn view(lang: Lang, text: &str) -> Value {
 /// `{"heading", "counts", "frame", "depth"}`, or `{"ok": false, "error"}`
 /// (also where the page does not show the scene polygon by polygon).
 pub fn after(lang: Lang, text: &str, index: usize) -> Value {
-    let scene = match scene_of(lang, text) {
-        Ok(scene) => scene,
-        Err(error) => return error,
-    };
+    match scene_of(lang, text) {
+        Ok(scene) => after_of(lang, &scene, index),
+        Err(error) => error,
+    }
+}
+
+/// [`after`] of a scene already read (the lesson's: one reading for every view).
+pub fn after_of(lang: Lang, scene: &Scene, index: usize) -> Value {
     let cells = u64::from(scene.width) * u64::from(scene.height);
     if cells > MAX_SHOWN_CELLS || scene.polygons.len() > MAX_SHOWN_POLYGONS || index >= scene.polygons.len() {
         return json!({"ok": false, "error": words!(lang, "play-no-polygon")});
@@ -166,10 +180,14 @@ pub fn after(lang: Lang, text: &str, index: usize) -> Value {
 /// The book-style figure of the scene in `text` after its last polygon, as
 /// `zsim figure` draws it (SVG), or `{"ok": false, "error"}`.
 pub fn figure(lang: Lang, text: &str) -> Value {
-    let scene = match scene_of(lang, text) {
-        Ok(scene) => scene,
-        Err(error) => return error,
-    };
+    match scene_of(lang, text) {
+        Ok(scene) => figure_of(lang, &scene),
+        Err(error) => error,
+    }
+}
+
+/// [`figure`] of a scene already read (the lesson's: one reading for every view).
+pub fn figure_of(lang: Lang, scene: &Scene) -> Value {
     let Some(last) = scene.polygons.len().checked_sub(1) else {
         return json!({"ok": false, "error": words!(lang, "play-no-polygon")});
     };
@@ -184,6 +202,10 @@ pub fn figure(lang: Lang, text: &str) -> Value {
 /// "error"}` with the scene's error.
 pub fn lesson(lang: Lang, text: &str, mode: Option<QuizMode>, place: Option<(usize, u32)>) -> Result<Lesson, Value> {
     let mut lesson = Lesson::new(scene_of(lang, text)?, Arith::Exact, mode);
+    // A scene the page does not show cell by cell is not stepped: the lesson stays before its first stop.
+    if !shown_by_polygon(lesson.scene()) {
+        return Ok(lesson);
+    }
     let placed = place.is_some_and(|(polygon, row)| {
         matches!(lesson.place(polygon.saturating_sub(1), row), Said::Moved(Moved::To { at: Some(_), .. }))
     });
@@ -256,7 +278,16 @@ pub fn lesson_state(lang: Lang, lesson: &mut Lesson) -> Value {
     let score = lesson.score();
     let open = lesson.open_questions();
     let Some(view) = lesson.stop_view(lang) else {
-        return json!({"at": null, "end": words!(lang, "step-end"), "asking": asking, "prompt": prompt,
+        let end = match shown_by_polygon(lesson.scene()) {
+            true => words!(lang, "step-end"),
+            false => words!(
+                lang,
+                "play-too-large",
+                cells = MAX_SHOWN_CELLS.to_string(),
+                polygons = MAX_SHOWN_POLYGONS.to_string()
+            ),
+        };
+        return json!({"at": null, "end": end, "asking": asking, "prompt": prompt,
                       "score": score.map(|s| s.text(lang)), "open": open});
     };
     // The buffers' rows around the scanline, numbered as the line mode prints them, its row
@@ -269,7 +300,8 @@ pub fn lesson_state(lang: Lang, lesson: &mut Lesson) -> Value {
         Some(buffers) => (
             Value::from(crate::observe::report::matrix_styled(&buffers.frame_rows(), &style)),
             Value::from(crate::observe::report::matrix_styled(&buffers.depth_rows(), &style)),
-            json!(buffers.frame_rows()),
+            // The raster shows the lesson's framebuffer only in a quiz (else the final one).
+            if lesson.mode().is_some() { json!(buffers.frame_rows()) } else { Value::Null },
         ),
         None => (Value::Null, Value::Null, Value::Null),
     };
@@ -342,10 +374,14 @@ pub fn check(lang: Lang, text: &str, after: usize, buffer: Buffer, typed: &str) 
 
 /// Pixel `(x, y)`'s history through the scene, as `zsim explain` prints it.
 pub fn explain(lang: Lang, text: &str, x: u32, y: u32) -> Value {
-    let scene = match scene_of(lang, text) {
-        Ok(scene) => scene,
-        Err(error) => return error,
-    };
+    match scene_of(lang, text) {
+        Ok(scene) => explain_of(lang, &scene, x, y),
+        Err(error) => error,
+    }
+}
+
+/// [`explain`] of a scene already read (the lesson's: one reading for every view).
+pub fn explain_of(lang: Lang, scene: &Scene, x: u32, y: u32) -> Value {
     match history(&scene, (x, y), Extras::default()) {
         Ok(history) => json!({"ok": true, "text": history.text(lang, &scene, Path::new(&scene_name(lang)))}),
         Err(error) => json!({"ok": false, "error": error.message(lang)}),

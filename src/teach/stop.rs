@@ -8,7 +8,7 @@
 use crate::effects::arith::{Arith, float_scanline};
 use crate::numbers::{Exact, Q, decimal, exact_and_decimal, fraction};
 use crate::observe::explain::depth_text;
-use crate::observe::tie::tie_text;
+use crate::observe::tie::{boundary_columns, tie_text};
 use crate::observe::trace::ScanlineRecord;
 use crate::scene::Scene;
 use crate::simulate::events::{Outcome, PixelEvent};
@@ -125,8 +125,10 @@ pub fn span_lines(lang: Lang, scene: &Scene, record: &ScanlineRecord) -> Vec<Str
 /// `arith`, what it computes there beside the exact values.
 pub fn notes(lang: Lang, scene: &Scene, polygon: usize, record: &ScanlineRecord, arith: Arith) -> Vec<String> {
     let mut lines = Vec::new();
-    for x in 0..scene.width {
-        if let Some(tie) = tie_text(lang, scene.rules, &scene.polygons[polygon].vertices(), x, record.row) {
+    let vertices = scene.polygons[polygon].vertices();
+    // Only the columns whose centre can lie on the boundary, not every column of the raster.
+    for x in boundary_columns(&vertices, record.row).into_iter().filter(|&x| x < scene.width) {
+        if let Some(tie) = tie_text(lang, scene.rules, &vertices, x, record.row) {
             lines.push(words!(lang, "step-tie", x = x.to_string(), text = tie));
         }
     }

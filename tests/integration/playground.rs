@@ -274,7 +274,8 @@ fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
             .await
             .unwrap();
         let error = playground::view(Lang::Ru, bad)["error"].as_str().unwrap().to_string();
-        assert_eq!(text(&client, "#error").await, error, "the scene's error in Russian");
+        // Under it, the JSON's line it is on, quoted.
+        assert_eq!(text(&client, "#error").await, format!("{error}\nстрока 1: {bad}"), "the scene's error in Russian");
         assert!(error.contains("вершин"), "{error}");
         std::fs::write(dir.join("playground-ru-1280.png"), client.screenshot().await.unwrap()).unwrap();
         client.close().await.unwrap();

@@ -104,6 +104,26 @@ impl WebLesson {
     pub fn act(&mut self, command: &str) -> String {
         playground::lesson_act(self.lang, &mut self.lesson, command).to_string()
     }
+
+    /// See [`playground::view`]: of the scene the lesson read.
+    pub fn view(&self) -> String {
+        playground::view_of(self.lang, self.lesson.scene()).to_string()
+    }
+
+    /// See [`playground::after`]: of the scene the lesson read.
+    pub fn after(&self, index: usize) -> String {
+        playground::after_of(self.lang, self.lesson.scene(), index).to_string()
+    }
+
+    /// See [`playground::explain`]: of the scene the lesson read.
+    pub fn explain(&self, x: u32, y: u32) -> String {
+        playground::explain_of(self.lang, self.lesson.scene(), x, y).to_string()
+    }
+
+    /// See [`playground::figure`]: of the scene the lesson read.
+    pub fn figure(&self) -> String {
+        playground::figure_of(self.lang, self.lesson.scene()).to_string()
+    }
 }
 
 /// See [`playground::check`]: `buffer` is `frame` or `depth`.

@@ -6,7 +6,7 @@ use crate::words::Lang;
 use std::cmp::Ordering;
 
 use num_rational::BigRational;
-use num_traits::Zero;
+use num_traits::{Signed, Zero};
 
 use crate::numbers::{Exact, Q};
 use crate::raster::convert::{Scratch, rasterize};
@@ -42,6 +42,50 @@ impl Boundary {
             Boundary::Vertex => words!(lang, "boundary-vertex"),
         }
     }
+}
+
+/// The columns of row `y` whose centres can lie on the polygon's boundary:
+/// where an edge meets the scanline y + ½ exactly at a centre, and every
+/// centre along an edge that lies on the scanline. A superset of the
+/// columns [`boundary_at`] finds on that row (held to it by
+/// `boundary_columns_hold_every_centre_on_a_boundary`), so a caller asks
+/// [`boundary_at`] a few columns instead of every one.
+pub fn boundary_columns(vertices: &[[Exact; 3]], y: u32) -> Vec<u32> {
+    let scan_y = Exact::Word(Q::new(2 * i128::from(y) + 1, 2)).to_big();
+    let half = BigRational::new(1.into(), 2.into());
+    let n = vertices.len();
+    let mut columns = Vec::new();
+    // The column whose centre is at `x`, if `x` is a centre.
+    let centre_column = |x: &BigRational| {
+        let column = x - &half;
+        (column.is_integer() && !column.is_negative()).then(|| column.to_integer()).and_then(|c| u32::try_from(c).ok())
+    };
+    for i in 0..n {
+        let (a, b) = (&vertices[i], &vertices[(i + 1) % n]);
+        let (ax, ay, bx, by) = (a[0].to_big(), a[1].to_big(), b[0].to_big(), b[1].to_big());
+        if ay == by {
+            if ay == scan_y {
+                // A horizontal edge on the scanline: every centre along it.
+                let (low, high) = if ax <= bx { (ax, bx) } else { (bx, ax) };
+                let first = (&low - &half).ceil().to_integer().max(0.into());
+                let last = (&high - &half).floor().to_integer();
+                let mut c = first;
+                while c <= last {
+                    columns.extend(u32::try_from(&c).ok());
+                    c += 1;
+                }
+            }
+            continue;
+        }
+        if scan_y < ay.clone().min(by.clone()) || scan_y > ay.clone().max(by.clone()) {
+            continue;
+        }
+        let x = &ax + (&scan_y - &ay) * (&bx - &ax) / (&by - &ay);
+        columns.extend(centre_column(&x));
+    }
+    columns.sort_unstable();
+    columns.dedup();
+    columns
 }
 
 /// Where pixel (x, y)'s centre lies on a polygon's boundary, if it does:
@@ -315,6 +359,38 @@ mod tests {
         // (1/2, 1/2), (13/2, 1/2), (13/2, 13/2): centres on its right and bottom edges.
         let q = |n: i128| Exact::Word(Q::new(n, 2));
         vec![[q(1), q(1), q(10)], [q(13), q(1), q(10)], [q(13), q(13), q(10)]]
+    }
+
+    /// The columns `boundary_columns` offers hold every centre `boundary_at`
+    /// finds, row by row, on every example scene's polygons (a filter that
+    /// left one out would leave out its tie's note).
+    #[test]
+    fn boundary_columns_hold_every_centre_on_a_boundary() {
+        let mut found = 0;
+        let folder = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples"));
+        let mut scenes: Vec<_> = std::fs::read_dir(folder).unwrap().map(|e| e.unwrap().path()).collect();
+        scenes.retain(|p| p.extension().is_some_and(|e| e == "json"));
+        scenes.sort();
+        let mut polygons: Vec<(Vec<[Exact; 3]>, u32, u32)> = scenes
+            .iter()
+            .flat_map(|path| {
+                let scene = Scene::load(Lang::En, path).unwrap();
+                let (w, h) = (scene.width, scene.height);
+                scene.polygons.iter().map(move |p| (p.vertices().into_owned(), w, h)).collect::<Vec<_>>()
+            })
+            .collect();
+        polygons.push((triangle(), 8, 8));
+        for (vertices, width, height) in polygons {
+            for y in 0..height {
+                let every: Vec<u32> = (0..width).filter(|&x| boundary_at(&vertices, x, y).is_some()).collect();
+                let offered = boundary_columns(&vertices, y);
+                let kept: Vec<u32> =
+                    offered.into_iter().filter(|&x| x < width && boundary_at(&vertices, x, y).is_some()).collect();
+                assert_eq!(kept, every, "row {y} of {vertices:?}");
+                found += every.len();
+            }
+        }
+        assert!(found > 20, "{found} centres on a boundary: the examples should have some");
     }
 
     #[test]

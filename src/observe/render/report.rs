@@ -219,13 +219,18 @@ pub fn matrix_styled<T: MatrixCell>(rows: &[Vec<T>], style: &MatrixStyle) -> Str
         if style.axes {
             out.push_str(&format!("{y:>label_width$} | "));
         }
-        let cells: Vec<String> = row
-            .iter()
-            .zip(&texts[i])
-            .zip(&column_widths)
-            .map(|((value, text), w)| paint(&format!("{text:>w$}"), value.colour_key(), style.color))
-            .collect();
-        out.push_str(&cells.join(" "));
+        // Each cell right-aligned to its column, written straight into the text (no string a cell).
+        for (x, ((value, text), &w)) in row.iter().zip(&texts[i]).zip(&column_widths).enumerate() {
+            if x > 0 {
+                out.push(' ');
+            }
+            if style.color {
+                out.push_str(&paint(&format!("{text:>w$}"), value.colour_key(), true));
+            } else {
+                out.extend(std::iter::repeat_n(' ', w.saturating_sub(text.chars().count())));
+                out.push_str(text);
+            }
+        }
         out.push('\n');
     }
     if style.axes {
