@@ -277,6 +277,8 @@ fn a_student_finds_the_playground_usable() {
             .unwrap();
         assert_eq!(small.as_array().map(Vec::len), Some(0), "targets under 24 px: {small}");
         std::fs::write(dir.join("lesson-390.png"), client.screenshot().await.unwrap()).unwrap();
+        client.execute("document.getElementById('stepper').scrollIntoView();", vec![]).await.unwrap();
+        std::fs::write(dir.join("lesson-390-stepper.png"), client.screenshot().await.unwrap()).unwrap();
         client.close().await.unwrap();
     });
     crate::ran("the playground as a student meets it", &dir.display().to_string());
