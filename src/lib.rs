@@ -169,6 +169,7 @@ pub use observe::step::{PolygonTrace, Skip, Stop, Tracer};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
 pub use observe::{explain, figure, history, picture, report, tie, tikz};
 pub use raster::convert::{Scratch, rasterize};
+pub use raster::{printed_row, row_y};
 pub use raster::depth::{Depth, DepthTest, Stored};
 pub use raster::scan::{Crossing, Span};
 pub use raster::sink::{PixelRect, RasterSink};

@@ -339,7 +339,7 @@ impl<'l> App<'l> {
             let marker = if y == row { "▶" } else { " " };
             let mut spans = vec![Span::raw(format!("{marker}{y:>3}│"))];
             for x in first..(first + columns_shown).min(width) {
-                let text = format!("{:>cell$}", values[(height - 1 - y) as usize][x as usize]);
+                let text = format!("{:>cell$}", values[zsim::printed_row(height as u32, y as u32)][x as usize]);
                 let (xu, yu) = (x as u32, y as u32);
                 let mut style = Style::new();
                 if trace_pixels.contains(&(xu, yu)) {

@@ -305,7 +305,7 @@ fn common_mistakes(
         .iter()
         .map(|&(_, buffer, x, y)| {
             let key = expected.iter().find(|key| key.buffer == buffer).expect("a buffer handed in");
-            let right = key.matrix[(height - 1 - y) as usize][x as usize];
+            let right = key.matrix[crate::raster::printed_row(height, y)][x as usize];
             CommonMistake { buffer, x, y, right, students: Vec::new(), answers: Vec::new() }
         })
         .collect();
@@ -318,7 +318,7 @@ fn common_mistakes(
             for mistake in &mut mistakes {
                 let answer = submission.answers.iter().find(|(b, _)| *b == mistake.buffer).and_then(|(_, h)| match h {
                     Handed::Matrix(m) => {
-                        let (row, x) = ((height - 1 - mistake.y) as usize, mistake.x as usize);
+                        let (row, x) = (crate::raster::printed_row(height, mistake.y), mistake.x as usize);
                         m.answered(row, x).then(|| m.rows[row][x])
                     }
                     _ => None,

@@ -325,7 +325,7 @@ fn replay(scene: &Scene, covered: &Covered, level: impl Fn(i128, i128) -> i128) 
     let mut depth = vec![vec![clear; width]; height];
     for (index, x, y, z) in &covered.0 {
         let (n, d) = z.fraction()?;
-        let row = height - 1 - *y as usize;
+        let row = crate::raster::printed_row(height as u32, *y);
         let cell = &mut depth[row][*x as usize];
         if scene.depth_test.passes(z, &Stored::Level(*cell)) {
             *cell = level(n, d).clamp(0, i128::from(max)) as u32;

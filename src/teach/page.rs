@@ -29,7 +29,9 @@ pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
         "keeps": words!(lang, "page-keeps", value = "{after}"),
         "status": words!(lang, "page-status", at = "{at}", count = "{count}"),
     });
-    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "op": scene.depth_test.symbol(), "words": words, "stops": stops});
+    // The top row's y: the rows are printed top first.
+    let top = crate::raster::row_y(scene.height, 0);
+    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "top": top, "op": scene.depth_test.symbol(), "words": words, "stops": stops});
     let data = serde_json::to_string(&data).expect("serializing plain data cannot fail");
     let (head, tail) = TEMPLATE.split_once("{{DATA}}").expect("the template has a place for the data");
     // The data goes in last, so that nothing in it (a polygon named "{{TITLE}}") is
@@ -196,7 +198,7 @@ function renderGrid(stop) {
   table.appendChild(numbers);
   const rows = view === "frame" ? stop.frame : stop.depth;
   rows.forEach((row, i) => {
-    const y = data.height - 1 - i;
+    const y = data.top - i;
     const tr = el("tr", undefined, y === stop.row ? "current" : "");
     tr.appendChild(el("th", (y === stop.row ? "▶ " : "") + y));
     row.forEach((v, x) => {

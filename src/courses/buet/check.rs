@@ -48,7 +48,7 @@ pub fn check(lang: Lang, case: &Case, answer: &Path) -> Result<Vec<Difference>, 
         }
     }
     let mut watcher = PixelWatcher::new(
-        found.iter().filter_map(|(i, _, _, _, column)| column.map(|x| (x, scene.height - 1 - *i as u32))),
+        found.iter().filter_map(|(i, _, _, _, column)| column.map(|x| (x, crate::raster::row_y(scene.height, *i)))),
     );
     if !found.is_empty() {
         Simulation::new(scene).finish(&mut watcher);
@@ -58,7 +58,7 @@ pub fn check(lang: Lang, case: &Case, answer: &Path) -> Result<Vec<Difference>, 
         .map(|(i, k, answer, right, column)| {
             let reason = match column {
                 Some(x) => {
-                    let y = scene.height - 1 - i as u32;
+                    let y = crate::raster::row_y(scene.height, i);
                     let why = why(lang, scene, Buffer::Depth, x, y, watcher.history(x, y));
                     words!(lang, "buet-cell", x = x.to_string(), y = y.to_string(), why = why)
                 }

@@ -235,7 +235,7 @@ pub fn compare_answer(answer: &Answer, expected: &Matrix) -> Vec<Mismatch> {
     answer
         .cells(expected)
         .filter(|(_, _, a, e)| a != e)
-        .map(|(i, x, answer, expected)| Mismatch { x: x as u32, y: height - 1 - i as u32, answer, expected })
+        .map(|(i, x, answer, expected)| Mismatch { x: x as u32, y: crate::raster::row_y(height, i), answer, expected })
         .collect()
 }
 
@@ -247,7 +247,7 @@ pub fn compare(answer: &Matrix, expected: &Matrix) -> Vec<Mismatch> {
     for (i, (answer_row, expected_row)) in answer.iter().zip(expected).enumerate() {
         for (x, (&a, &e)) in answer_row.iter().zip(expected_row).enumerate() {
             if a != e {
-                mismatches.push(Mismatch { x: x as u32, y: height - 1 - i as u32, answer: a, expected: e });
+                mismatches.push(Mismatch { x: x as u32, y: crate::raster::row_y(height, i), answer: a, expected: e });
             }
         }
     }

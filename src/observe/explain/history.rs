@@ -193,7 +193,7 @@ fn antialias_facts(scene: &Scene, settings: Antialias, (x, y): (u32, u32)) -> Re
     } else {
         AntialiasDetail::Pixel(notes)
     };
-    let row = (scene.height - 1 - y) as usize;
+    let row = crate::raster::printed_row(scene.height, y);
     let mean = pictures.last().map(|last| (last.frame[row][x as usize], last.depth[row][x as usize].clone()));
     Ok(AntialiasFacts { samples: k, detail, mean })
 }

@@ -210,7 +210,7 @@ pub fn compare_rules(scene: &Scene, other: Rules) -> Vec<RuleDifference> {
     let (ours, theirs) = (coverage(scene), coverage(&changed));
     let mut out = Vec::new();
     for (printed_row, (a, b)) in frames[0].iter().zip(&frames[1]).enumerate() {
-        let y = scene.height - 1 - printed_row as u32;
+        let y = crate::raster::row_y(scene.height, printed_row);
         for (x, (&va, &vb)) in a.iter().zip(b).enumerate() {
             let x = x as u32;
             let cell = y as usize * scene.width as usize + x as usize;

@@ -211,7 +211,7 @@ pub fn matrix_styled<T: MatrixCell>(rows: &[Vec<T>], style: &MatrixStyle) -> Str
     };
     let mut out = String::new();
     for (i, row) in rows.iter().enumerate() {
-        let y = (height - 1 - i) as u32;
+        let y = crate::raster::row_y(height as u32, i);
         if style.rows.as_ref().is_some_and(|r| !r.contains(&y)) {
             continue;
         }
