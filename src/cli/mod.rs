@@ -198,10 +198,13 @@ fn say(line: &str) {
 }
 
 /// The `--lang` of the command line, read before clap parses it.
+/// Arguments are read as the system gives them (`args_os`): a file name
+/// that is not UTF-8 is an argument like any other, not a panic.
 fn language_asked() -> Option<zsim::Lang> {
-    let args: Vec<String> = std::env::args().collect();
-    args.iter().enumerate().find_map(|(i, arg)| match arg.strip_prefix("--lang") {
-        Some("") => args.get(i + 1).and_then(|code| zsim::Lang::parse(code)),
+    let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    let text = |arg: &std::ffi::OsString| arg.to_str().map(str::to_owned);
+    args.iter().enumerate().find_map(|(i, arg)| match text(arg)?.strip_prefix("--lang") {
+        Some("") => args.get(i + 1).and_then(text).and_then(|code| zsim::Lang::parse(&code)),
         Some(rest) => rest.strip_prefix('=').and_then(zsim::Lang::parse),
         None => None,
     })

@@ -539,3 +539,36 @@ fn completions_into_a_closed_pipe_do_not_panic() {
 fn an_error_to_a_closed_standard_error_still_exits_2() {
     assert_eq!(with_reader_gone(&["run", "no-such-scene.json"], "stderr").0, Some(2));
 }
+
+/// Found by a careless teacher: any argument that is not UTF-8 (a scene
+/// `\xff\xfe.json`, a class folder `Kl\xe4sse`) made every command panic
+/// (exit 101), since the language was looked up before clap read the
+/// arguments as the system gives them. Now such a name is read and shown
+/// with its bytes escaped (`\xff`), never merged into U+FFFD.
+#[cfg(unix)]
+#[test]
+fn a_name_that_is_not_utf8_is_read_and_shown_not_a_panic() {
+    use std::os::unix::ffi::OsStrExt;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("not-utf8");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join(std::ffi::OsStr::from_bytes(b"\xff\xfe.json"));
+    std::fs::write(&scene, r#"{"width": 4, "height": 4, "polygons": []}"#).unwrap();
+    let class = dir.join(std::ffi::OsStr::from_bytes(b"Kl\xe4sse"));
+    std::fs::create_dir_all(&class).unwrap();
+    let zsim = |args: &[&std::ffi::OsStr]| {
+        let output = Command::new(env!("CARGO_BIN_EXE_zsim")).args(args).env("LANG", "C.UTF-8").output().unwrap();
+        (output.status.code(), String::from_utf8(output.stdout).unwrap(), String::from_utf8(output.stderr).unwrap())
+    };
+    let (code, stdout, stderr) = zsim(&["run".as_ref(), scene.as_os_str(), "--final".as_ref()]);
+    assert_eq!((code, stderr.as_str()), (Some(0), ""), "{stdout}");
+    assert!(stdout.contains("\\xff\\xfe.json"), "the name's bytes escaped: {stdout}");
+    let missing = dir.join(std::ffi::OsStr::from_bytes(b"nope\xff.json"));
+    let (code, _, stderr) = zsim(&["run".as_ref(), missing.as_os_str()]);
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(stderr.contains("nope\\xff.json: cannot read"), "{stderr}");
+    let book = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/rogers.json");
+    let (code, _, stderr) = zsim(&["grade".as_ref(), book.as_os_str(), class.as_os_str()]);
+    assert_ne!(code, Some(101), "{stderr}");
+    assert!(stderr.contains("Kl\\xe4sse"), "{stderr}");
+}
