@@ -15,7 +15,7 @@ use zsim::grade::{CommonMistake, Grade, Status};
 
 use super::check::report_text;
 use super::{Failure, Finish, emit_then};
-use zsim::check::{as_the_student_sees, check, read_answer};
+use zsim::check::{as_the_student_sees, check_with, read_answer};
 use zsim::gradebooks::{self, Identity};
 
 /// Arguments of `zsim grade`.
@@ -237,6 +237,13 @@ fn write_feedback(
 ) -> Result<(), Error> {
     let last = class.last;
     let mut outputs = Vec::new();
+    // The scene's buffers and wrong rules drawn once for the class, each student's files found once: a
+    // class of thousands costs what its students cost, not their square.
+    let prepared = zsim::check::Prepared::new(scene, last);
+    let mut files_of: std::collections::HashMap<&str, Vec<&zsim::class::AnswerFile>> = std::collections::HashMap::new();
+    for file in &class.files {
+        files_of.entry(file.student.as_str()).or_default().push(file);
+    }
     for grade in class.rows() {
         let mut text = zsim::words!(
             lang,
@@ -249,14 +256,15 @@ fn write_feedback(
         ) + "\n";
         // The answers that were read, explained as `zsim check` explains them.
         let mut answers = Vec::new();
-        for file in class.files.iter().filter(|file| file.student == grade.student) {
+        for file in files_of.get(grade.student.as_str()).into_iter().flatten() {
             match read_answer(lang, &file.path, scene, file.buffer, zsim::Links::Refuse) {
                 Ok(matrix) => answers.push((file.buffer, file.path.as_path(), matrix)),
                 Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(lang, &error, &file.path))),
             }
         }
         if !answers.is_empty() {
-            text.push_str(&report_text(lang, &check(lang, scene, &args.scene, last, answers, Arith::Exact)?));
+            let report = check_with(lang, scene, &args.scene, last, answers, Arith::Exact, Some(&prepared))?;
+            text.push_str(&report_text(lang, &report));
         }
         // NAME.feedback.txt never ends as a submitted NAME.frame.txt or NAME.depth.txt
         // does, nor is it the summary's name, whatever the student's name.

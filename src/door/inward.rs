@@ -57,12 +57,62 @@ pub fn read_text_with(lang: Lang, path: &Path, links: Links) -> Result<String, E
 #[derive(Debug, PartialEq, Eq, Hash)]
 pub struct Identity(same_file::Handle);
 
+/// A file's identity as numbers (device and inode on Unix), kept without
+/// keeping the file open: what a plan of thousands of files compares in a set.
+pub type FileKey = (u64, u64);
+
 impl Identity {
     /// The identity of the file at `path`; `None` when there is none to open.
     /// Opening it never waits (a FIFO is opened without blocking).
     pub fn of(path: &Path) -> Option<Identity> {
         let file = open_without_blocking(path).ok()?;
         same_file::Handle::from_file(file).ok().map(Identity)
+    }
+
+    /// The identity of zsim's standard input, where it is a file: an output
+    /// must not be written onto what `-` reads.
+    pub fn stdin() -> Option<Identity> {
+        same_file::Handle::stdin().ok().filter(|_| std_is_file(0)).map(Identity)
+    }
+
+    /// The identity of zsim's standard output.
+    pub fn stdout() -> Option<Identity> {
+        same_file::Handle::stdout().ok().map(Identity)
+    }
+
+    /// The identity of zsim's standard error.
+    pub fn stderr() -> Option<Identity> {
+        same_file::Handle::stderr().ok().map(Identity)
+    }
+
+    /// The identity as numbers.
+    pub fn key(&self) -> FileKey {
+        #[cfg(unix)]
+        {
+            (self.0.dev(), self.0.ino())
+        }
+        #[cfg(not(unix))]
+        {
+            // Without device and inode numbers: the handle's hash, which same-file makes of them.
+            use std::hash::{Hash, Hasher};
+            let mut hasher = std::collections::hash_map::DefaultHasher::new();
+            self.0.hash(&mut hasher);
+            (hasher.finish(), 0)
+        }
+    }
+}
+
+/// Whether descriptor `fd` (0, 1, 2) is a regular file.
+fn std_is_file(fd: i32) -> bool {
+    #[cfg(unix)]
+    {
+        let link = std::fs::metadata(format!("/proc/self/fd/{fd}"));
+        link.is_ok_and(|m| m.is_file())
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = fd;
+        false
     }
 }
 

@@ -316,9 +316,49 @@ pub fn check(
     answers: Vec<(Buffer, &Path, Answer)>,
     arith: Arith,
 ) -> Result<CheckReport, Error> {
+    check_with(lang, scene, scene_path, last, answers, arith, None)
+}
+
+/// What checking many answers to one scene after one polygon shares, drawn
+/// once (a class's feedback): the buffers after the polygon and the scene
+/// drawn under each wrong rule.
+pub struct Prepared {
+    buffers: crate::simulate::buffer::Buffers,
+    diagnoser: Option<crate::teach::diagnose::Diagnoser>,
+}
+
+impl Prepared {
+    /// The buffers of `scene` after polygon `last` (0-based) and its wrong rules, drawn.
+    pub fn new(scene: &Scene, last: usize) -> Prepared {
+        let mut simulation = Simulation::new(scene);
+        simulation.draw_through(last, &mut Unobserved);
+        let buffers = simulation.buffers().clone();
+        Prepared { buffers, diagnoser: crate::teach::diagnose::Diagnoser::new(scene, last) }
+    }
+}
+
+/// [`check`] with what every answer shares drawn once ([`Prepared`], for the
+/// same scene and polygon) instead of drawn again for these answers.
+pub fn check_with(
+    lang: Lang,
+    scene: &Scene,
+    scene_path: &Path,
+    last: usize,
+    answers: Vec<(Buffer, &Path, Answer)>,
+    arith: Arith,
+    prepared: Option<&Prepared>,
+) -> Result<CheckReport, Error> {
     arith::check_supported(scene, arith)?;
-    let mut simulation = Simulation::new(scene);
-    simulation.draw_through(last, &mut Unobserved);
+    let drawn;
+    let exact = match prepared {
+        Some(prepared) => &prepared.buffers,
+        None => {
+            let mut simulation = Simulation::new(scene);
+            simulation.draw_through(last, &mut Unobserved);
+            drawn = simulation.buffers().clone();
+            &drawn
+        }
+    };
     // An inexact mode's buffers after polygon `last`: run it on the scene cut after that polygon.
     let mode_buffers = if arith == Arith::Exact {
         None
@@ -327,11 +367,16 @@ pub fn check(
         prefix.polygons.truncate(last + 1);
         Some(arith::run(&prefix, arith)?.0)
     };
-    let reference = mode_buffers.as_ref().unwrap_or(simulation.buffers());
+    let reference = mode_buffers.as_ref().unwrap_or(exact);
     // The misconception that explains the wrong cells, for answers checked exactly.
     let diagnosis = if arith == Arith::Exact {
         let answer = |wanted: Buffer| answers.iter().find(|(b, _, _)| *b == wanted).map(|(_, _, m)| m);
-        crate::teach::diagnose::diagnose(scene, last, answer(Buffer::Frame), answer(Buffer::Depth))
+        match prepared {
+            Some(prepared) => {
+                prepared.diagnoser.as_ref().and_then(|d| d.diagnose(answer(Buffer::Frame), answer(Buffer::Depth)))
+            }
+            None => crate::teach::diagnose::diagnose(scene, last, answer(Buffer::Frame), answer(Buffer::Depth)),
+        }
     } else {
         None
     };
@@ -356,7 +401,6 @@ pub fn check(
     if results.iter().any(|(_, _, m, _, _)| !m.is_empty()) {
         Simulation::new(scene).draw_through(last, &mut watcher);
     }
-    let exact = simulation.buffers();
     let answers = results
         .into_iter()
         .map(|(buffer, path, mismatches, hint, (differing, unanswered, earned))| {

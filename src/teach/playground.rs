@@ -108,7 +108,7 @@ pub fn view_of(lang: Lang, scene: &Scene) -> Value {
                    "value": polygon.value, "outline": outline})
         })
         .collect();
-    let mut simulation = Simulation::new(&scene);
+    let mut simulation = Simulation::new(scene);
     simulation.finish(&mut Unobserved);
     let buffers = simulation.buffers();
     let mut notes = Vec::new();
@@ -162,7 +162,7 @@ pub fn after_of(lang: Lang, scene: &Scene, index: usize) -> Value {
     if cells > MAX_SHOWN_CELLS || scene.polygons.len() > MAX_SHOWN_POLYGONS || index >= scene.polygons.len() {
         return json!({"ok": false, "error": words!(lang, "play-no-polygon")});
     }
-    let mut simulation = Simulation::new(&scene);
+    let mut simulation = Simulation::new(scene);
     let mut last = None;
     for _ in 0..=index {
         last = simulation.draw_next_counted(&mut Unobserved);
@@ -171,7 +171,7 @@ pub fn after_of(lang: Lang, scene: &Scene, index: usize) -> Value {
     let (frame, depth) = buffer_data(simulation.buffers(), Buffers::Printed);
     json!({
         "ok": true,
-        "heading": report::polygon_heading(lang, &scene, drawn.index),
+        "heading": report::polygon_heading(lang, scene, drawn.index),
         "counts": words!(lang, "run-counts", covered = drawn.tested.to_string(), written = drawn.written.to_string()),
         "frame": frame, "depth": depth,
     })
@@ -191,9 +191,9 @@ pub fn figure_of(lang: Lang, scene: &Scene) -> Value {
     let Some(last) = scene.polygons.len().checked_sub(1) else {
         return json!({"ok": false, "error": words!(lang, "play-no-polygon")});
     };
-    let mut simulation = Simulation::new(&scene);
+    let mut simulation = Simulation::new(scene);
     simulation.finish(&mut Unobserved);
-    json!({"ok": true, "svg": figure::svg(lang, &scene, simulation.buffers(), last, Shading::Frame, &scene_name(lang))})
+    json!({"ok": true, "svg": figure::svg(lang, scene, simulation.buffers(), last, Shading::Frame, &scene_name(lang))})
 }
 
 /// The lesson of the scene in `text` with a quiz in `mode` or none, at
@@ -382,8 +382,8 @@ pub fn explain(lang: Lang, text: &str, x: u32, y: u32) -> Value {
 
 /// [`explain`] of a scene already read (the lesson's: one reading for every view).
 pub fn explain_of(lang: Lang, scene: &Scene, x: u32, y: u32) -> Value {
-    match history(&scene, (x, y), Extras::default()) {
-        Ok(history) => json!({"ok": true, "text": history.text(lang, &scene, Path::new(&scene_name(lang)))}),
+    match history(scene, (x, y), Extras::default()) {
+        Ok(history) => json!({"ok": true, "text": history.text(lang, scene, Path::new(&scene_name(lang)))}),
         Err(error) => json!({"ok": false, "error": error.message(lang)}),
     }
 }

@@ -859,3 +859,44 @@ fn a_stream_output_is_written_into_and_a_new_file_gets_the_usual_mode() {
     assert!(status.success());
     assert_eq!(std::fs::metadata(&new).unwrap().permissions().mode() & 0o777, 0o644);
 }
+
+/// Found by an attacker: an input given on standard input (`zsim figure -
+/// -o e.tex < e.tex`) was overwritten by the output, since the plan
+/// compared named files only. Standard input is an input too, as a file.
+#[test]
+fn an_output_onto_standard_input_is_refused() {
+    let dir = scratch("stdin-input");
+    let scene = dir.join("e.tex");
+    std::fs::copy("examples/rogers.json", &scene).unwrap();
+    let before = std::fs::read(&scene).unwrap();
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(["figure", "-", "-o", path(&scene), "--lang", "en"])
+        .stdin(std::fs::File::open(&scene).unwrap())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("is one of the inputs"), "{stderr}");
+    assert_eq!(std::fs::read(&scene).unwrap(), before, "the input is as it was");
+}
+
+/// Found by an attacker: `-o /dev/stdout` with standard output redirected to
+/// a file was renamed over (as root, the `/dev/stdout` link itself became a
+/// regular file). zsim's own standard output is written through, whatever
+/// name it is given.
+#[cfg(target_os = "linux")]
+#[test]
+fn an_output_named_dev_stdout_goes_into_standard_output() {
+    let dir = scratch("dev-stdout");
+    let out = dir.join("out.json");
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(["random", "--count", "3", "-o", "/dev/stdout", "--lang", "en"])
+        .stdout(std::fs::File::create(&out).unwrap())
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(0), "{}", String::from_utf8_lossy(&output.stderr));
+    let written = std::fs::read_to_string(&out).unwrap();
+    assert!(written.contains("\"polygons\""), "the scene is in the file: {written:.200}");
+    let link = std::fs::symlink_metadata("/dev/stdout").unwrap();
+    assert!(link.file_type().is_symlink(), "/dev/stdout is still a link");
+}
