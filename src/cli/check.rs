@@ -19,6 +19,9 @@ use super::{Failure, Finish, emit, emit_then};
 pub struct CheckArgs {
     /// The scene file (JSON), or - for standard input.
     scene: PathBuf,
+    /// An answer named without --frame or --depth: refused, saying which to use.
+    #[arg(hide = true, value_name = "ANSWER")]
+    stray: Option<PathBuf>,
     /// The answer for the framebuffer: integers as the book prints them, top row first.
     #[arg(long, value_name = "FILE")]
     frame: Option<PathBuf>,
@@ -57,6 +60,9 @@ enum Format {
 }
 
 pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    if let Some(path) = &args.stray {
+        return Err(super::flags::Flag::AnswerWithoutBuffer { path: path.clone() }.into());
+    }
     let scene = Scene::load(lang, &args.scene)?;
     if args.frame.is_none() && args.depth.is_none() && args.submission.is_none() {
         return Err(super::flags::Flag::CheckNeedsAnswer.into());

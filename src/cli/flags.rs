@@ -17,6 +17,11 @@ pub enum Flag {
     },
     /// `check` with neither `--frame` nor `--depth`.
     CheckNeedsAnswer,
+    /// `check SCENE FILE`: an answer named without `--frame` or `--depth`.
+    AnswerWithoutBuffer {
+        /// The answer named.
+        path: PathBuf,
+    },
     /// `grade --identity`: a column the chosen platform does not import by.
     IdentityColumn {
         /// The column's header.
@@ -69,6 +74,7 @@ impl Flag {
             Flag::ArithPlainLoopOnly => zsim::words!(lang, "usage-arith-plain-loop"),
             Flag::FigureFormat { path: p } => zsim::words!(lang, "usage-figure-format", path = path(p)),
             Flag::CheckNeedsAnswer => zsim::words!(lang, "usage-check-needs-answer"),
+            Flag::AnswerWithoutBuffer { path: p } => zsim::words!(lang, "usage-answer-without-buffer", path = path(p)),
             Flag::IdentityColumn { column } => zsim::words!(lang, "usage-identity-column", column = *column),
             Flag::NoPoints => zsim::words!(lang, "usage-no-points"),
             Flag::ScenesOutOfRange => zsim::words!(lang, "usage-scenes-range"),

@@ -996,3 +996,6 @@ play-hidden = { $count } more covered pixels, asked one at a time
 play-legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
 play-error-line = line { $line }: { $text }
+answer-empty = the file is empty: it holds no row of the answer
+answer-decimal-comma = line { $line }: { $text } has a decimal comma; each cell holds a whole number (cells are apart by spaces)
+usage-answer-without-buffer = { $path } is an answer: name it with --frame { $path } or --depth { $path }

@@ -974,3 +974,6 @@ play-hidden = ещё покрытых пикселей: { $count }, спраши
 play-legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
 play-error-line = строка { $line }: { $text }
+answer-empty = файл пуст: в нём нет ни одной строки ответа
+answer-decimal-comma = строка { $line }: в { $text } десятичная запятая; каждая ячейка — целое число (ячейки разделяются пробелами)
+usage-answer-without-buffer = { $path } — это ответ: укажите его как --frame { $path } или --depth { $path }

@@ -974,3 +974,6 @@ play-hidden = ще покритих пікселів: { $count }, питають
 play-legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
 play-error-line = рядок { $line }: { $text }
+answer-empty = файл порожній: у ньому немає жодного рядка відповіді
+answer-decimal-comma = рядок { $line }: у { $text } десяткова кома; кожна клітинка — ціле число (клітинки розділяються пробілами)
+usage-answer-without-buffer = { $path } — це відповідь: вкажіть її як --frame { $path } або --depth { $path }

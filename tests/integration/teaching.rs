@@ -638,3 +638,46 @@ fn run_labels_the_matrices_on_a_terminal_and_not_when_piped() {
     // Piped (the first command through tail) and --no-axes: bare.
     assert!(!zsim(&["run", "examples/rogers.json", "--after", "1"]).stdout.contains(" | "));
 }
+
+/// Found by a teacher: `check SCENE FILE` got clap's bare "unexpected
+/// argument"; it now says to name the answer with `--frame` or `--depth`.
+#[test]
+fn check_with_an_answer_named_bare_says_to_use_frame_or_depth() {
+    let run = zsim(&["check", "examples/rogers.json", "answer.txt"]);
+    assert_eq!(run.code, 2);
+    assert_eq!(run.stderr, "zsim: answer.txt is an answer: name it with --frame answer.txt or --depth answer.txt\n");
+}
+
+/// Found by a teacher: an empty answer said "0 rows; the raster has 32"; a
+/// decimal comma (`9,5`, as `--lang ru` itself writes numbers) voided the
+/// row with "33 values; the raster is 32 wide" and no word of the comma.
+#[test]
+fn an_empty_answer_and_a_decimal_comma_are_named_as_such() {
+    let (dir, _) = scene_file("unused-comma.json", "{}");
+    let empty = dir.join("empty.txt");
+    std::fs::write(&empty, "\n# nothing yet\n").unwrap();
+    let run = zsim(&["check", "examples/rogers.json", "--frame", empty.to_str().unwrap()]);
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.ends_with("empty.txt: the file is empty: it holds no row of the answer\n"), "{}", run.stderr);
+    let right = zsim(&["run", "examples/rogers.json", "--final", "--format", "json"]);
+    let frame: serde_json::Value = serde_json::from_str(&right.stdout).unwrap();
+    let rows: Vec<String> = frame["steps"][0]["frame"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|row| row.as_array().unwrap().iter().map(|v| v.to_string()).collect::<Vec<_>>().join(" "))
+        .collect();
+    let mut answer = rows.join("\n") + "\n";
+    answer = answer.replacen("\n0 ", "\n9,5 ", 1);
+    let comma = dir.join("comma.txt");
+    std::fs::write(&comma, &answer).unwrap();
+    let run = zsim(&["check", "examples/rogers.json", "--frame", comma.to_str().unwrap()]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert!(
+        run.stderr.ends_with(
+            "comma.txt: line 2: 9,5 has a decimal comma; each cell holds a whole number (cells are apart by spaces)\n"
+        ),
+        "{}",
+        run.stderr
+    );
+}

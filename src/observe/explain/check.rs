@@ -72,11 +72,32 @@ pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: Cell
         .map(|(n, line)| (n + 1, line.trim()))
         .filter(|(_, line)| !line.is_empty() && !line.starts_with('#'))
         .collect();
+    if lines.is_empty() {
+        return Err(words!(lang, "answer-empty"));
+    }
     let mut rows = Vec::new();
     for (row_index, (line_number, line)) in lines.iter().enumerate() {
         // The raster row this line stands for when the shape is right: the top row first.
         let y = (height as usize).checked_sub(row_index + 1);
         let cells: Vec<&str> = line.split([' ', '\t', ',']).filter(|cell| !cell.is_empty()).collect();
+        // `9,5` (a decimal comma, as a Russian or Ukrainian student writes a number) would read as
+        // two cells: said as what it is, first, not as values too large or a row too long.
+        let comma = line.split_whitespace().find(|token| {
+            token.split_once(',').is_some_and(|(a, b)| {
+                let digits = |t: &str| !t.is_empty() && t.bytes().all(|c| c.is_ascii_digit());
+                digits(a) && digits(b)
+            })
+        });
+        if let (Some(token), true) = (comma, cells.len() != width as usize) {
+            problems.push(words!(
+                lang,
+                "answer-decimal-comma",
+                line = line_number.to_string(),
+                text = crate::words::printable(token).into_owned()
+            ));
+            rows.push(vec![0; width as usize]);
+            continue;
+        }
         let mut row = Vec::with_capacity(cells.len());
         for (column, cell) in cells.iter().enumerate() {
             // Where the cell is, worded only when it is wrong (not once per cell).
