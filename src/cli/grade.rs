@@ -99,7 +99,7 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
                 "{summary}\n{}\n\n{}{}{skipped}",
                 table(lang, &rows),
                 causes_text(lang, &rows),
-                mistakes_text(lang, &class.mistakes, &class.reasons, rows.len())
+                mistakes_text(lang, (&class.mistakes, class.mistakes_left_out), &class.reasons, rows.len())
             )
         }
     };
@@ -194,7 +194,12 @@ fn causes_text(lang: zsim::Lang, rows: &[&Grade]) -> String {
     text
 }
 
-fn mistakes_text(lang: zsim::Lang, mistakes: &[CommonMistake], reasons: &[String], students: usize) -> String {
+fn mistakes_text(
+    lang: zsim::Lang,
+    (mistakes, left_out): (&[CommonMistake], usize),
+    reasons: &[String],
+    students: usize,
+) -> String {
     if mistakes.is_empty() {
         return format!("{}\n", zsim::words!(lang, "grade-mistakes-none"));
     }
@@ -225,7 +230,11 @@ fn mistakes_text(lang: zsim::Lang, mistakes: &[CommonMistake], reasons: &[String
             reason.clone(),
         ]);
     }
-    format!("{}\n{table}\n", zsim::words!(lang, "grade-mistakes"))
+    let more = match left_out {
+        0 => String::new(),
+        count => format!("{}\n", zsim::words!(lang, "grade-mistakes-more", count = count)),
+    };
+    format!("{}\n{table}\n{more}", zsim::words!(lang, "grade-mistakes"))
 }
 
 /// FOLDER/NAME.txt for each student and FOLDER/common-mistakes.txt.
@@ -270,7 +279,7 @@ fn write_feedback(
         // does, nor is it the summary's name, whatever the student's name.
         outputs.push((zsim::class::feedback_name(&grade.student), text.into_bytes()));
     }
-    let mistakes = mistakes_text(lang, &class.mistakes, &class.reasons, class.graded.len());
+    let mistakes = mistakes_text(lang, (&class.mistakes, class.mistakes_left_out), &class.reasons, class.graded.len());
     outputs.push(("common-mistakes.txt".to_string(), mistakes.into_bytes()));
     zsim::write_fresh(folder, &outputs, &[&args.class]).map(drop)
 }

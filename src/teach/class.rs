@@ -46,8 +46,11 @@ pub struct ClassGrades {
     /// [`crate::teach::check::MAX_EXPLAINED`] of each buffer), in the
     /// students' order.
     pub graded: Vec<(Grade, Vec<WrongCells>)>,
-    /// The cells at least two students got wrong, most first.
+    /// The cells at least two students got wrong, most first (at most
+    /// [`MISTAKES_LISTED`]).
     pub mistakes: Vec<CommonMistake>,
+    /// How many more cells at least two students got wrong, not listed.
+    pub mistakes_left_out: usize,
     /// zsim's reason for each common mistake.
     pub reasons: Vec<String>,
     /// The folder's other files, by name: none of them was graded.
@@ -168,9 +171,9 @@ pub fn grade_class(
             graded.push((grade, wrong));
         }
     }
-    let mistakes = common_mistakes(lang, scene, &files, &students, &expected, &counts);
+    let (mistakes, mistakes_left_out) = common_mistakes(lang, scene, &files, &students, &expected, &counts);
     let reasons = reasons(lang, scene, last, &mistakes);
-    Ok(ClassGrades { last, files, graded, mistakes, reasons, skipped })
+    Ok(ClassGrades { last, files, graded, mistakes, mistakes_left_out, reasons, skipped })
 }
 
 /// The answer files in the class folder, by student then framebuffer before
@@ -284,7 +287,7 @@ fn common_mistakes(
     students: &[&str],
     expected: &[Key],
     counts: &[(Buffer, Vec<u32>)],
-) -> Vec<CommonMistake> {
+) -> (Vec<CommonMistake>, usize) {
     let (width, height) = (scene.width, scene.height);
     let mut cells: Vec<(u32, Buffer, u32, u32)> = Vec::new();
     for buffer in [Buffer::Frame, Buffer::Depth] {
@@ -300,6 +303,7 @@ fn common_mistakes(
     }
     // Stable: equal counts keep the order above.
     cells.sort_by_key(|(n, ..)| std::cmp::Reverse(*n));
+    let left_out = cells.len().saturating_sub(MISTAKES_LISTED);
     cells.truncate(MISTAKES_LISTED);
     let mut mistakes: Vec<CommonMistake> = cells
         .iter()
@@ -310,7 +314,7 @@ fn common_mistakes(
         })
         .collect();
     if mistakes.is_empty() {
-        return mistakes;
+        return (mistakes, left_out);
     }
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
     for batch in students.chunks(threads) {
@@ -338,7 +342,7 @@ fn common_mistakes(
         // Most given first; equal counts by value.
         mistake.answers.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
     }
-    mistakes
+    (mistakes, left_out)
 }
 
 /// zsim's reason for each common mistake, from one watched run.

@@ -186,12 +186,13 @@ pub fn autograder(
 ) -> Vec<(String, Vec<u8>)> {
     let setup = "#!/usr/bin/env bash\n\
         # Gradescope runs this once, as root, when it builds the autograder's image.\n\
-        # Put zsim's Debian package (zsim_*.deb: `cargo deb`, or a release) beside\n\
+        # Put zsim's Debian package (zsim_*.deb: `packaging/deb` on a clone of zsim\n\
+        # writes it into target/debian/, or a release's) beside\n\
         # this script before zipping the folder's files.\n\
         set -euo pipefail\n\
         cd \"$(dirname \"$0\")\"\n\
         if ! ls zsim_*.deb >/dev/null 2>&1; then\n\
-        \x20 echo \"setup.sh: no zsim_*.deb beside this script: build it with cargo deb and copy it here\" >&2\n\
+        \x20 echo \"setup.sh: no zsim_*.deb beside this script: build it with packaging/deb on a clone of zsim (it writes target/debian/zsim_*.deb) and copy it here\" >&2\n\
         \x20 exit 1\n\
         fi\n\
         apt-get install -y ./zsim_*.deb\n"

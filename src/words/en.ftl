@@ -999,3 +999,10 @@ play-error-line = line { $line }: { $text }
 answer-empty = the file is empty: it holds no row of the answer
 answer-decimal-comma = line { $line }: { $text } has a decimal comma; each cell holds a whole number (cells are apart by spaces)
 usage-answer-without-buffer = { $path } is an answer: name it with --frame { $path } or --depth { $path }
+grade-mistakes-more = { $count } more { $count ->
+    [one] cell
+   *[other] cells
+} that two or more students got wrong { $count ->
+    [one] is
+   *[other] are
+} not listed

@@ -977,3 +977,4 @@ play-error-line = строка { $line }: { $text }
 answer-empty = файл пуст: в нём нет ни одной строки ответа
 answer-decimal-comma = строка { $line }: в { $text } десятичная запятая; каждая ячейка — целое число (ячейки разделяются пробелами)
 usage-answer-without-buffer = { $path } — это ответ: укажите его как --frame { $path } или --depth { $path }
+grade-mistakes-more = ещё ячеек, в которых ошиблись двое или больше студентов, не показано: { $count }

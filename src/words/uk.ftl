@@ -977,3 +977,4 @@ play-error-line = рядок { $line }: { $text }
 answer-empty = файл порожній: у ньому немає жодного рядка відповіді
 answer-decimal-comma = рядок { $line }: у { $text } десяткова кома; кожна клітинка — ціле число (клітинки розділяються пробілами)
 usage-answer-without-buffer = { $path } — це відповідь: вкажіть її як --frame { $path } або --depth { $path }
+grade-mistakes-more = ще клітинок, у яких помилилися двоє або більше студентів, не показано: { $count }

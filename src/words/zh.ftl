@@ -924,3 +924,4 @@ play-error-line = 第 { $line } 行：{ $text }
 answer-empty = 文件为空：其中没有答案的任何一行
 answer-decimal-comma = 第 { $line } 行：{ $text } 含有小数逗号；每个单元格是一个整数（单元格之间用空格分隔）
 usage-answer-without-buffer = { $path } 是一个答案：请用 --frame { $path } 或 --depth { $path } 指定
+grade-mistakes-more = 另有 { $count } 个两名或更多学生答错的单元格未列出

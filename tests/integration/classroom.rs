@@ -553,3 +553,55 @@ fn unanswered_cells_are_counted_by_check_and_grade() {
     let score = (top as f64 * 1000.0 / 337.0).round() / 10.0;
     assert_eq!(student["score"].as_f64(), Some(score), "{top} of 337");
 }
+
+/// Found by a teacher: "common mistakes" stopped at 10 rows without saying
+/// how many more there were.
+#[test]
+fn common_mistakes_say_how_many_they_leave_out() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("mistakes-left-out");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    // Two students who hand in the cleared framebuffer: every cell either polygon writes is wrong twice.
+    let zeros = format!("{}\n", vec!["0"; 32].join(" ")).repeat(32);
+    for student in ["ann", "bob"] {
+        std::fs::write(dir.join(format!("{student}.frame.txt")), &zeros).unwrap();
+    }
+    let run = crate::zsim(&["grade", "examples/rogers.json", dir.to_str().unwrap()]);
+    let covered = crate::zsim(&["run", "examples/rogers.json", "--final", "--format", "json"]);
+    let frame: serde_json::Value = serde_json::from_str(&covered.stdout).unwrap();
+    let written = frame["steps"][0]["frame"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|r| r.as_array().unwrap().clone())
+        .filter(|v| v != 0)
+        .count();
+    assert!(
+        run.stdout
+            .ends_with(&format!("{} more cells that two or more students got wrong are not listed\n", written - 10)),
+        "{}",
+        run.stdout
+    );
+}
+
+/// Found by a teacher: the Gradescope `setup.sh` said "build it with cargo
+/// deb", which fails on a clone; it names `packaging/deb`, which is there.
+#[test]
+fn the_gradescope_setup_names_the_command_that_builds_the_package() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("gradescope-setup");
+    let _ = std::fs::remove_dir_all(&dir);
+    let (exercise, grader) = (dir.join("ex"), dir.join("grader"));
+    let run = crate::zsim(&[
+        "exercise",
+        "--seed",
+        "3",
+        "-o",
+        exercise.to_str().unwrap(),
+        "--gradescope",
+        grader.to_str().unwrap(),
+    ]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let setup = std::fs::read_to_string(grader.join("setup.sh")).unwrap();
+    assert!(setup.contains("packaging/deb") && !setup.contains("cargo deb"), "{setup}");
+    assert!(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("packaging/deb").is_file());
+}
