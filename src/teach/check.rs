@@ -391,10 +391,18 @@ pub fn check_with(
         let hint = misreading(&answer, &expected);
         let mut mismatches = compare_answer(&answer, &expected);
         let differing = mismatches.len();
+        // The other buffer handed in for this one (the framebuffer as the z-buffer's answer).
+        let other = match buffer {
+            Buffer::Frame => reference.depth_level_rows().map(|rows| (Buffer::Depth, rows)),
+            Buffer::Depth => Some((Buffer::Frame, reference.frame_rows())),
+        };
+        let other = other.filter(|(_, rows)| differing > 0 && answer.unanswered() == 0 && answer.rows == *rows).map(
+            |(other, _)| words!(lang, "check-hint-other-buffer", other = other.name(lang), buffer = buffer.name(lang)),
+        );
         mismatches.truncate(MAX_EXPLAINED);
         let cleared = crate::teach::grade::cleared(scene, buffer);
         let earned = crate::teach::grade::Earned::of(Some(&answer), &expected, cleared);
-        results.push((buffer, path, mismatches, hint, (differing, answer.unanswered(), earned)));
+        results.push((buffer, path, mismatches, (hint, other), (differing, answer.unanswered(), earned)));
     }
     // Watch the differing cells through a second run, to explain each.
     let mut watcher = PixelWatcher::new(results.iter().flat_map(|(_, _, m, _, _)| m.iter().map(|c| (c.x, c.y))));
@@ -425,13 +433,16 @@ pub fn check_with(
                     WrongCell { x: cell.x, y: cell.y, answer: cell.answer, expected: cell.expected, reason }
                 })
                 .collect();
-            let hint = hint.map(|(how, left)| {
-                let (how, top) = (how.words(lang), scene.height - 1);
-                if left == 0 {
-                    words!(lang, "check-hint-matches", how = how, top = top)
-                } else {
-                    words!(lang, "check-hint-fewer", how = how, left = left, top = top)
-                }
+            let (hint, other) = hint;
+            let hint = other.or_else(|| {
+                hint.map(|(how, left)| {
+                    let (how, top) = (how.words(lang), scene.height - 1);
+                    if left == 0 {
+                        words!(lang, "check-hint-matches", how = how, top = top)
+                    } else {
+                        words!(lang, "check-hint-fewer", how = how, left = left, top = top)
+                    }
+                })
             });
             let file = crate::words::shown_path(path);
             AnswerCheck { buffer, file, wrong, differing, unanswered, earned, hint }

@@ -1006,3 +1006,4 @@ grade-mistakes-more = { $count } more { $count ->
     [one] is
    *[other] are
 } not listed
+check-hint-other-buffer = this is exactly the { $other }, not the { $buffer }: was it handed in as the other buffer?

@@ -978,3 +978,4 @@ answer-empty = файл пуст: в нём нет ни одной строки 
 answer-decimal-comma = строка { $line }: в { $text } десятичная запятая; каждая ячейка — целое число (ячейки разделяются пробелами)
 usage-answer-without-buffer = { $path } — это ответ: укажите его как --frame { $path } или --depth { $path }
 grade-mistakes-more = ещё ячеек, в которых ошиблись двое или больше студентов, не показано: { $count }
+check-hint-other-buffer = это в точности { $other }, а не { $buffer }: не сдан ли он как другой буфер?

@@ -978,3 +978,4 @@ answer-empty = файл порожній: у ньому немає жодног�
 answer-decimal-comma = рядок { $line }: у { $text } десяткова кома; кожна клітинка — ціле число (клітинки розділяються пробілами)
 usage-answer-without-buffer = { $path } — це відповідь: вкажіть її як --frame { $path } або --depth { $path }
 grade-mistakes-more = ще клітинок, у яких помилилися двоє або більше студентів, не показано: { $count }
+check-hint-other-buffer = це точно { $other }, а не { $buffer }: чи не здано його як інший буфер?

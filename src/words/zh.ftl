@@ -925,3 +925,4 @@ answer-empty = 文件为空：其中没有答案的任何一行
 answer-decimal-comma = 第 { $line } 行：{ $text } 含有小数逗号；每个单元格是一个整数（单元格之间用空格分隔）
 usage-answer-without-buffer = { $path } 是一个答案：请用 --frame { $path } 或 --depth { $path } 指定
 grade-mistakes-more = 另有 { $count } 个两名或更多学生答错的单元格未列出
+check-hint-other-buffer = 这正是{ $other }，而不是{ $buffer }：是否把它当作另一个缓冲区交上来了？

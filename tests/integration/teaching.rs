@@ -681,3 +681,28 @@ fn an_empty_answer_and_a_decimal_comma_are_named_as_such() {
         run.stderr
     );
 }
+
+/// Found by a teacher: a framebuffer given as `--depth` printed a 338-row
+/// table without a word that it is the framebuffer.
+#[test]
+fn a_framebuffer_given_as_the_depth_answer_is_named_as_such() {
+    let (dir, _) = scene_file("unused-other.json", "{}");
+    let right = zsim(&["run", "examples/rogers.json", "--final", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_str(&right.stdout).unwrap();
+    let rows: Vec<String> = json["steps"][0]["frame"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|row| row.as_array().unwrap().iter().map(|v| v.to_string()).collect::<Vec<_>>().join(" "))
+        .collect();
+    let frame = dir.join("frame-as-depth.txt");
+    std::fs::write(&frame, rows.join("\n") + "\n").unwrap();
+    let run = zsim(&["check", "examples/rogers.json", "--depth", frame.to_str().unwrap()]);
+    assert_eq!(run.code, 1, "{}", run.stderr);
+    assert_eq!(
+        run.stdout.lines().nth(1),
+        Some("this is exactly the framebuffer, not the z-buffer: was it handed in as the other buffer?"),
+        "{}",
+        run.stdout
+    );
+}
