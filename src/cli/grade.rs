@@ -263,6 +263,10 @@ fn write_feedback(
             score = zsim::localize_decimal(lang, grade.percent()),
             status = grade.status.words(lang)
         ) + "\n";
+        // A file that looked like this student's but was not graded: said as the report says it.
+        for skipped in class.skipped.iter().filter(|s| s.meant.as_ref().is_some_and(|(who, _)| *who == grade.student)) {
+            text.push_str(&format!("{}\n", skipped.text(lang)));
+        }
         // The answers that were read, explained as `zsim check` explains them.
         let mut answers = Vec::new();
         for file in files_of.get(grade.student.as_str()).into_iter().flatten() {

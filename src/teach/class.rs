@@ -92,6 +92,13 @@ impl Skipped {
 /// another case.
 fn near_miss(name: &str) -> Option<(String, Buffer)> {
     let (rest, extension) = name.rsplit_once('.')?;
+    // A double extension (`ivan.frame.txt.txt`, as Windows hides the first): the name without the last.
+    if extension.eq_ignore_ascii_case("txt")
+        && let Some((_, inner)) = rest.rsplit_once('.')
+        && inner.eq_ignore_ascii_case("txt")
+    {
+        return near_miss(rest);
+    }
     let (student, kind) = rest.rsplit_once('.')?;
     if student.is_empty() || student.starts_with('.') || !extension.eq_ignore_ascii_case("txt") {
         return None;
@@ -150,6 +157,10 @@ pub fn grade_class(
     // A few students at a time, one a core: only their answers are held in
     // memory at once, whatever the size of the class.
     let mut students: Vec<&str> = files.iter().map(|file| file.student.as_str()).collect();
+    // A student whose only file is misnamed (`frank.depht.txt`) gets a row too, with nothing
+    // handed in; the skipped file's line says which name it was probably meant to have.
+    students.extend(skipped.iter().filter_map(|s| s.meant.as_ref().map(|(student, _)| student.as_str())));
+    students.sort_unstable();
     students.dedup();
     // Each student's wrong cells are counted per cell and kept only up to
     // MAX_EXPLAINED: a class wrong everywhere on a large raster would
@@ -187,22 +198,26 @@ pub fn grade_class(
 fn answer_files(class: &Path) -> Result<(Vec<AnswerFile>, Vec<Skipped>), Error> {
     let entries = std::fs::read_dir(class).map_err(|source| Error::Read { path: class.to_owned(), source })?;
     let (mut files, mut skipped) = (Vec::new(), Vec::new());
+    // Each student's file of each buffer, found in a map (not by a search of every earlier file).
+    let mut handed: std::collections::HashMap<(String, bool), PathBuf> = std::collections::HashMap::new();
     for entry in entries {
         let entry = entry.map_err(|source| Error::Read { path: class.to_owned(), source })?;
-        let name = entry.file_name().to_string_lossy().into_owned();
+        // As shown, bytes that are not UTF-8 escaped (`\xff`): two names that differ there are two students.
+        let name = crate::words::shown_name(Path::new(&entry.file_name()));
         let answers = files.len();
         for buffer in [Buffer::Frame, Buffer::Depth] {
             if let Some(student) = name.strip_suffix(&format!(".{}.txt", file_kind(buffer)))
                 && !student.is_empty()
                 && !student.starts_with('.')
             {
-                let student = printable(student).into_owned();
-                if let Some(other) = files.iter().find(|f: &&AnswerFile| f.student == student && f.buffer == buffer) {
-                    let names = [&other.path, &entry.path()].map(|p| crate::words::shown_name(p));
+                let student = student.to_owned();
+                if let Some(other) = handed.get(&(student.clone(), buffer == Buffer::Depth)) {
+                    let names = [other, &entry.path()].map(|p| crate::words::shown_name(p));
                     return Err(
                         Usage::SameStudentTwice { class: class.to_path_buf(), student, files: names.to_vec() }.into()
                     );
                 }
+                handed.insert((student.clone(), buffer == Buffer::Depth), entry.path());
                 files.push(AnswerFile { student, buffer, path: entry.path() });
             }
         }
@@ -234,7 +249,12 @@ fn submissions(
             let answers = expected
                 .iter()
                 .map(|Key { buffer, .. }| {
-                    let file = files.iter().find(|file| file.student == *student && file.buffer == *buffer);
+                    // The files are sorted by student: this student's are found by a binary search.
+                    let first = files.partition_point(|file| file.student.as_str() < *student);
+                    let file = files[first..]
+                        .iter()
+                        .take_while(|file| file.student == *student)
+                        .find(|file| file.buffer == *buffer);
                     let handed = match file {
                         None => Handed::Missing,
                         Some(file) => match read_answer(lang, &file.path, scene, *buffer, Links::Refuse) {

@@ -605,3 +605,33 @@ fn the_gradescope_setup_names_the_command_that_builds_the_package() {
     assert!(setup.contains("packaging/deb") && !setup.contains("cargo deb"), "{setup}");
     assert!(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("packaging/deb").is_file());
 }
+
+/// Found by a teacher: a student whose only file was misnamed
+/// (`frank.frmae.txt`) got no row at all, a Windows double extension
+/// (`ivan.frame.txt.txt`) got no hint, and the feedback said only "missing"
+/// where the report said which file looked like the student's.
+#[test]
+fn a_misnamed_only_student_gets_a_row_the_hint_and_feedback_that_says_so() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("misnamed-only");
+    let _ = std::fs::remove_dir_all(&dir);
+    let class = dir.join("class");
+    std::fs::create_dir_all(&class).unwrap();
+    let answer = crate::book_answer("frame", " ");
+    for name in ["ann.frame.txt", "frank.frmae.txt", "ivan.frame.txt.txt"] {
+        std::fs::write(class.join(name), &answer).unwrap();
+    }
+    let feedback = dir.join("feedback");
+    let run =
+        crate::zsim(&["grade", "examples/rogers.json", class.to_str().unwrap(), "-o", feedback.to_str().unwrap()]);
+    assert_eq!(run.code, 1, "{}", run.stderr);
+    for line in [
+        "| frank   | -           | -           | 0.0     | missing: frank.frame.txt |",
+        "| ivan    | -           | -           | 0.0     | missing: ivan.frame.txt  |",
+        "not graded: frank.frmae.txt looks like frank's framebuffer: name it frank.frame.txt",
+        "not graded: ivan.frame.txt.txt looks like ivan's framebuffer: name it ivan.frame.txt",
+    ] {
+        assert!(run.stdout.lines().any(|l| l == line), "{line:?} in:\n{}", run.stdout);
+    }
+    let frank = std::fs::read_to_string(feedback.join("frank.feedback.txt")).unwrap();
+    assert!(frank.contains("frank.frmae.txt looks like frank's framebuffer"), "{frank}");
+}

@@ -303,16 +303,24 @@ fn gradescope_grades_the_states_the_teacher_expects_and_nothing_else() {
 }
 
 /// Two students whose file names differ only in bytes that are not UTF-8
-/// were one row (the second silently not graded); a real newline and a
-/// written `\u{a}` shared one Moodle identity and one feedback file.
+/// were one row (the second silently not graded); they are two students,
+/// shown with those bytes escaped (`a\xff`, `a\xfe`), each graded and each
+/// with feedback. A real newline and a written `\u{a}` still come to one
+/// shown name, one Moodle identity and one feedback file: refused by name.
 #[test]
 fn two_files_for_one_student_are_refused_by_name_before_anything_is_written() {
     use std::os::unix::ffi::OsStrExt;
     let answer = crate::book_answer("frame", " ");
-    for (case, names) in [
-        ("bytes", [&b"a\xff.frame.txt"[..], &b"a\xfe.frame.txt"[..]]),
-        ("newline", [&b"b\n.frame.txt"[..], &b"b\\u{a}.frame.txt"[..]]),
-    ] {
+    let class = scratch("two-students-bytes");
+    for name in [&b"a\xff.frame.txt"[..], &b"a\xfe.frame.txt"[..]] {
+        std::fs::write(class.join(std::ffi::OsStr::from_bytes(name)), &answer).unwrap();
+    }
+    let out = class.join("feedback");
+    let run = zsim(&["grade", "examples/rogers.json", path(&class), "-o", path(&out)]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert!(run.stdout.contains("| a\\xfe   | 0 ") && run.stdout.contains("| a\\xff   | 0 "), "{}", run.stdout);
+    assert!(out.join("a\\xff.feedback.txt").is_file() && out.join("a\\xfe.feedback.txt").is_file());
+    for (case, names) in [("newline", [&b"b\n.frame.txt"[..], &b"b\\u{a}.frame.txt"[..]])] {
         let class = scratch(&format!("one-student-{case}"));
         for name in names {
             std::fs::write(class.join(std::ffi::OsStr::from_bytes(name)), &answer).unwrap();
