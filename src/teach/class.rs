@@ -189,12 +189,12 @@ pub fn grade_class(
 
 /// The answer files in the class folder, by student then framebuffer before
 /// z-buffer, and the other files by name (but for zsim's own feedback). A student is named once, by one
-/// normalisation of the file name's stem: bytes that are not UTF-8 become
-/// U+FFFD and control characters are escaped ([`printable`]), as every
-/// table, gradebook and feedback file shows them; two files that come to one
-/// student and buffer (`a\xff.frame.txt` and `a\xfe.frame.txt`, a real
-/// newline and a written `\u{a}`) are refused by name, before anything is
-/// graded or written.
+/// normalisation of the file name's stem: bytes that are not UTF-8 written
+/// as `\xff` and control characters escaped ([`crate::words::shown_name`]),
+/// as every table, gradebook and feedback file shows them, so `a\xff` and
+/// `a\xfe` are two students; two files that come to one student and buffer
+/// (a real newline and a written `\u{a}`) are refused by name, before
+/// anything is graded or written.
 fn answer_files(class: &Path) -> Result<(Vec<AnswerFile>, Vec<Skipped>), Error> {
     let entries = std::fs::read_dir(class).map_err(|source| Error::Read { path: class.to_owned(), source })?;
     let (mut files, mut skipped) = (Vec::new(), Vec::new());
