@@ -72,6 +72,11 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
     let plain = matches!(args.format, Format::Csv | Format::Json);
     let class = grade_class(if plain { zsim::Lang::En } else { lang }, &scene, &args.scene, &args.class, last)?;
     let rows = class.rows();
+    // Students a gradebook cannot tell apart (`Emma`, `emma`) are refused in every format, so that
+    // every report of one class has the same students.
+    if let Some((first, second)) = gradebooks::indistinct(&rows) {
+        return Err(zsim::Error::from(zsim::Usage::GradebookCannotTell { first, second }).into());
+    }
     let text = match args.format {
         Format::Moodle | Format::Canvas => gradebook(args, &rows)?,
         Format::Csv => gradebooks::csv(&rows),
@@ -129,9 +134,6 @@ fn gradebook(args: &GradeArgs, rows: &[&Grade]) -> Result<String, Failure> {
     }
     if args.points == 0 {
         return Err(super::flags::Flag::NoPoints.into());
-    }
-    if let Some((first, second)) = gradebooks::indistinct(rows) {
-        return Err(zsim::Error::from(zsim::Usage::GradebookCannotTell { first, second }).into());
     }
     Ok(if moodle {
         gradebooks::moodle(rows, identity, args.item.as_deref().unwrap_or("Assignment: z-buffer (Real)"), args.points)

@@ -81,13 +81,13 @@ fn points_of(grade: &Grade, points: u32) -> String {
 /// and compared without case, as Moodle and Canvas match identities. The
 /// first such pair, as shown, or `None`.
 pub fn indistinct(rows: &[&Grade]) -> Option<(String, String)> {
-    let mut seen: Vec<(String, &str)> = Vec::with_capacity(rows.len());
+    let mut seen: std::collections::HashMap<String, &str> = std::collections::HashMap::with_capacity(rows.len());
     for grade in rows {
         let key = csv_field(&grade.student).to_lowercase();
-        if let Some((_, other)) = seen.iter().find(|(k, _)| *k == key) {
+        if let Some(other) = seen.get(&key) {
             return Some((other.to_string(), grade.student.clone()));
         }
-        seen.push((key, &grade.student));
+        seen.insert(key, &grade.student);
     }
     None
 }

@@ -635,3 +635,33 @@ fn a_misnamed_only_student_gets_a_row_the_hint_and_feedback_that_says_so() {
     let frank = std::fs::read_to_string(feedback.join("frank.feedback.txt")).unwrap();
     assert!(frank.contains("frank.frmae.txt looks like frank's framebuffer"), "{frank}");
 }
+
+/// Found by a teacher: names that differ only in case (`Emma`, `emma`) were
+/// two rows and two feedback files in text, CSV and JSON, and only the
+/// Moodle and Canvas exports refused them. They are refused in every format,
+/// before anything is written.
+#[test]
+fn names_that_differ_only_in_case_are_refused_in_every_format() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("case-names");
+    let _ = std::fs::remove_dir_all(&dir);
+    let class = dir.join("class");
+    std::fs::create_dir_all(&class).unwrap();
+    let answer = crate::book_answer("frame", " ");
+    for name in ["Emma.frame.txt", "emma.frame.txt"] {
+        std::fs::write(class.join(name), &answer).unwrap();
+    }
+    for format in ["text", "csv", "json", "moodle", "canvas"] {
+        let run = crate::zsim(&["grade", "examples/rogers.json", class.to_str().unwrap(), "--format", format]);
+        assert_eq!(run.code, 2, "{format}: {}", run.stdout);
+        assert!(
+            run.stderr.contains("\"Emma\" and \"emma\" are one student to a gradebook"),
+            "{format}: {}",
+            run.stderr
+        );
+    }
+    let feedback = dir.join("feedback");
+    let run =
+        crate::zsim(&["grade", "examples/rogers.json", class.to_str().unwrap(), "-o", feedback.to_str().unwrap()]);
+    assert_eq!(run.code, 2, "{}", run.stdout);
+    assert!(!feedback.exists(), "no feedback was written");
+}

@@ -64,7 +64,7 @@ pub struct CellRange<'a> {
 /// raster cell, and says what was found: the first [`PROBLEMS_NAMED`]
 /// problems, separated by ` · `, then how many more there are.
 pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Answer, String> {
-    let mut problems = Vec::new();
+    let mut problems = Problems::default();
     let mut left = Vec::new();
     let lines: Vec<(usize, &str)> = text
         .lines()
@@ -89,12 +89,14 @@ pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: Cell
             })
         });
         if let (Some(token), true) = (comma, cells.len() != width as usize) {
-            problems.push(words!(
-                lang,
-                "answer-decimal-comma",
-                line = line_number.to_string(),
-                text = crate::words::printable(token).into_owned()
-            ));
+            problems.push(|| {
+                words!(
+                    lang,
+                    "answer-decimal-comma",
+                    line = line_number.to_string(),
+                    text = crate::words::printable(token).into_owned()
+                )
+            });
             rows.push(vec![0; width as usize]);
             continue;
         }
@@ -130,51 +132,75 @@ pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: Cell
                 continue;
             }
             let Ok(value) = cell.parse::<u64>() else {
-                problems.push(words!(
-                    lang,
-                    "answer-not-a-number",
-                    at = at(),
-                    cell = crate::words::token(lang, cell),
-                    buffer = range.buffer,
-                    max = max()
-                ));
+                problems.push(|| {
+                    words!(
+                        lang,
+                        "answer-not-a-number",
+                        at = at(),
+                        cell = crate::words::token(lang, cell),
+                        buffer = range.buffer,
+                        max = max()
+                    )
+                });
                 row.push(0);
                 continue;
             };
             if value > u64::from(range.max) {
-                problems.push(words!(
-                    lang,
-                    "answer-too-large",
-                    at = at(),
-                    value = value.to_string(),
-                    buffer = range.buffer,
-                    max = max()
-                ));
+                problems.push(|| {
+                    words!(
+                        lang,
+                        "answer-too-large",
+                        at = at(),
+                        value = value.to_string(),
+                        buffer = range.buffer,
+                        max = max()
+                    )
+                });
             }
             row.push(value.min(u64::from(range.max)) as u32);
         }
         if row.len() != width as usize {
-            problems.push(words!(
-                lang,
-                "answer-row-length",
-                line = line_number.to_string(),
-                count = row.len(),
-                width = width.to_string()
-            ));
+            problems.push(|| {
+                words!(
+                    lang,
+                    "answer-row-length",
+                    line = line_number.to_string(),
+                    count = row.len(),
+                    width = width.to_string()
+                )
+            });
         }
         rows.push(row);
     }
     if rows.len() != height as usize {
-        problems.push(words!(lang, "answer-row-count", count = rows.len(), height = height.to_string()));
+        problems.push(|| words!(lang, "answer-row-count", count = rows.len(), height = height.to_string()));
     }
-    if problems.is_empty() {
+    if problems.count == 0 {
         return Ok(Answer { rows, left });
     }
-    let mut text = problems[..problems.len().min(PROBLEMS_NAMED)].join(" · ");
-    if problems.len() > PROBLEMS_NAMED {
-        text.push_str(&words!(lang, "answer-more-problems", count = problems.len() - PROBLEMS_NAMED));
+    let mut text = problems.named.join(" · ");
+    if problems.count > PROBLEMS_NAMED {
+        text.push_str(&words!(lang, "answer-more-problems", count = problems.count - PROBLEMS_NAMED));
     }
     Err(text)
+}
+
+/// An answer file's problems: the first [`PROBLEMS_NAMED`] worded, the rest
+/// only counted (a file of garbage costs what its cells cost, not a message each).
+#[derive(Default)]
+struct Problems {
+    named: Vec<String>,
+    count: usize,
+}
+
+impl Problems {
+    /// One more problem, worded by `words` only if it is among those named.
+    fn push(&mut self, words: impl FnOnce() -> String) {
+        if self.count < PROBLEMS_NAMED {
+            self.named.push(words());
+        }
+        self.count += 1;
+    }
 }
 
 /// How many of an answer file's problems a message names.
