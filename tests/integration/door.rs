@@ -908,3 +908,22 @@ fn an_output_named_dev_stdout_goes_into_standard_output() {
     let link = std::fs::symlink_metadata("/dev/stdout").unwrap();
     assert!(link.file_type().is_symlink(), "/dev/stdout is still a link");
 }
+
+/// Found by an attacker: `check` of an 8 MB answer of garbage peaked at
+/// 667 MB, a message built for every bad value though three are shown. The
+/// problems past the third are counted, not worded.
+#[test]
+fn an_answer_of_garbage_costs_what_its_cells_cost() {
+    let dir = scratch("garbage-answer");
+    let line = format!("{}\n", vec!["x"; 32].join(" "));
+    let garbage = dir.join("garbage.txt");
+    std::fs::write(&garbage, line.repeat(8 * 1024 * 1024 / line.len())).unwrap();
+    let (code, peak) = peak_kib(&["check", "examples/rogers.json", "--frame", path(&garbage)]);
+    assert_eq!(code, 2);
+    assert!(peak < 100_000, "check of 8 MiB of garbage peaked at {peak} KiB");
+    let run = zsim(&["check", "examples/rogers.json", "--frame", path(&garbage)]);
+    assert!(run.stderr.contains("\"x\" is not a whole number"), "{}", &run.stderr[..200.min(run.stderr.len())]);
+    // 4,194,304 cells, each a problem: three named, the rest counted.
+    let cells = 8 * 1024 * 1024 / line.len() * 32;
+    assert!(run.stderr.ends_with(&format!(" · and {} more problems\n", cells - 3)), "{}", run.stderr);
+}
