@@ -59,9 +59,14 @@ fn examples(name: &str) -> String {
     let of_it = |line: &&str| line.split(' ').take(words.len()).eq(words.iter().copied());
     let lines: Vec<&str> =
         include_str!(concat!(env!("OUT_DIR"), "/examples.txt")).lines().filter(of_it).take(8).collect();
+    // The examples as the package installs them (`/usr/share/doc/zsim/examples`), so that each
+    // runs from any folder; the guide's run from a clone, where they are `examples/`.
+    let installed = |line: &str| line.replace(" examples/", " /usr/share/doc/zsim/examples/");
     // Roff: a backslash is written `\e`; a line may not start with `.` or `'` (it is after `zsim `).
-    let body: String =
-        lines.iter().map(|line| format!("zsim {}\n", line.replace('\\', "\\e").replace('-', "\\-"))).collect();
+    let body: String = lines
+        .iter()
+        .map(|line| format!("zsim {}\n", installed(line).replace('\\', "\\e").replace('-', "\\-")))
+        .collect();
     if body.is_empty() { String::new() } else { format!(".SH EXAMPLES\n.nf\n{body}.fi\n") }
 }
 

@@ -91,13 +91,13 @@ explain-start = start: framebuffer { $frame }, z-buffer { $depth } (cleared)
 explain-final = final: framebuffer { $frame }, z-buffer { $depth }
 
 check-all-match = { $buffer } { $file }: all { $cells } cells match the { $buffer } after { $after }
-check-differ = { $buffer } { $file }: { $count } of { $cells } { $count ->
-    [one] cell differs
-   *[other] cells differ
+check-differ = { $buffer } { $file }: { $count } of { $cells } cells { $count ->
+    [one] differs
+   *[other] differ
   } from the { $buffer } after { $after }
-check-unanswered = ; { $count } of { $cells } { $count ->
-    [one] cell was
-   *[other] cells were
+check-unanswered = ; { $count } of { $cells } cells { $count ->
+    [one] was
+   *[other] were
   } left unanswered (? or .)
 check-hint-matches = hint: read { $how }, it matches; write the top row (y = { $top }) first and each row from x = 0, as the book prints them
 check-hint-fewer = hint: read { $how }, only { $left } cells differ; write the top row (y = { $top }) first and each row from x = 0, as the book prints them

@@ -145,7 +145,7 @@ fn an_exercise_writes_a_gradescope_autograder_that_grades_by_buffer_and_polygon(
     let points = (300 * (changed - 1) / changed) as f64 / 100.0;
     assert_eq!((tests[3]["score"].as_f64(), tests[3]["status"].as_str()), (Some(points), Some("failed")));
     let output = tests[3]["output"].as_str().unwrap();
-    assert!(output.contains("1 of 256 cell differs"), "{output}");
+    assert!(output.contains("1 of 256 cells differs"), "{output}");
     let rule = format!("score: the share of the {changed} cells the scene changes that are right");
     assert!(output.contains(&rule), "the rule is stated with the student's counts: {output}");
     // Nothing handed in: a score of 0 and, in each test, which file was missing.

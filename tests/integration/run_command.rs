@@ -255,3 +255,19 @@ fn compare_rules_help_names_every_preset() {
         assert_eq!(zsim::Preset::parse(zsim::Lang::En, preset.key()), Ok(preset));
     }
 }
+
+/// Found by a teacher: the man pages' examples named `examples/rogers.json`,
+/// which does not exist where the package installs them; they name the
+/// installed examples, `/usr/share/doc/zsim/examples/` (`.ci/package` runs one
+/// after installing the package).
+#[test]
+fn the_man_pages_examples_name_the_installed_examples() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("man-pages");
+    let _ = std::fs::remove_dir_all(&dir);
+    let run = crate::zsim(&["manual", "--dir", dir.to_str().unwrap()]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let page = std::fs::read_to_string(dir.join("zsim-run.1")).unwrap();
+    let examples = page.split(".SH EXAMPLES").nth(1).expect("an EXAMPLES section");
+    assert!(examples.contains("zsim run /usr/share/doc/zsim/examples/rogers.json"), "{examples}");
+    assert!(!examples.contains(" examples/"), "{examples}");
+}

@@ -308,7 +308,7 @@ fn check_explains_a_students_mistakes() {
     std::fs::write(&answer_path, lines.join("\n")).unwrap();
     let run = zsim(&["check", "examples/rogers.json", "--depth", answer_path.to_str().unwrap()]);
     assert_eq!(run.code, 1);
-    assert!(run.stdout.contains("1 of 1024 cell differs"), "{}", run.stdout);
+    assert!(run.stdout.contains("1 of 1024 cells differs"), "{}", run.stdout);
     assert_eq!(
         crate::table_rows(&run.stdout)[1],
         [
