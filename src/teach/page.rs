@@ -31,7 +31,12 @@ pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
     });
     // The top row's y: the rows are printed top first.
     let top = crate::raster::row_y(scene.height, 0);
-    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "top": top, "op": scene.depth_test.symbol(), "words": words, "stops": stops});
+    // The buffers once, as cleared; each stop carries only its pixels' values after it, which the
+    // script applies in order (a page of every buffer at every stop grew as the cube of the side).
+    let cleared = crate::simulate::simulation::Simulation::new(scene);
+    let (frame, depth) = buffer_data(cleared.buffers(), Buffers::Cells);
+    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "top": top,
+        "op": scene.depth_test.symbol(), "words": words, "cleared": {"frame": frame, "depth": depth}, "stops": stops});
     let data = serde_json::to_string(&data).expect("serializing plain data cannot fail");
     let (head, tail) = TEMPLATE.split_once("{{DATA}}").expect("the template has a place for the data");
     // The data goes in last, so that nothing in it (a polygon named "{{TITLE}}") is
@@ -45,7 +50,7 @@ pub fn stops(lang: Lang, stepper: &mut Stepper<'_>) -> Vec<serde_json::Value> {
     let mut stops = Vec::new();
     let mut moved = stepper.start(None);
     while let Moved::To { at: Some(stop), .. } = moved {
-        stops.push(stop_data(lang, stepper, stop, Buffers::Cells));
+        stops.push(stop_data(lang, stepper, stop));
         moved = stepper.forward();
     }
     stops
@@ -61,12 +66,12 @@ pub enum Buffers {
 }
 
 /// One stop as data for a page: its heading, crossings, spans with their
-/// ends' depths and the notes in words, each pixel's depth, test and reason,
-/// and both buffers after it, as `asked`.
-pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop, asked: Buffers) -> serde_json::Value {
+/// ends' depths and the notes in words, and each covered pixel's depth, test,
+/// reason and the values both buffers hold after it (applied in order from
+/// the cleared buffers, they give the buffers at any stop).
+pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop) -> serde_json::Value {
     let scene = stepper.scene();
     let record = stepper.tracer().record(stop).clone();
-    let buffers = stepper.tracer().buffers_after(stop);
     let pixels: Vec<serde_json::Value> = record
         .pixels
         .iter()
@@ -74,13 +79,13 @@ pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop, asked: Buffe
             serde_json::json!({
                 "x": e.x, "z": exact_and_decimal(lang, e.depth.value()), "stored": e.stored_before.text(lang),
                 "written": e.outcome == Outcome::Written, "after": e.stored_after.text(lang),
-                "frame": e.frame_after,
+                // The z-buffer's cell after it, as the grid writes a cell.
+                "cell": MatrixCell::text(&e.stored_after), "frame": e.frame_after,
                 "reason": pixel_reason(lang, scene, e),
             })
         })
         .collect();
     let stop_words = stepper.stop_words(lang, stop);
-    let matrices = buffer_data(&buffers, asked);
     serde_json::json!({
         "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
         "scanline": stop_words.scanline, "crossings": stop_words.crossings,
@@ -88,8 +93,6 @@ pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop, asked: Buffe
         "spans": crate::teach::stop::span_lines(lang, scene, &record),
         "notes": crate::teach::stop::notes(lang, scene, stop.polygon, &record, stepper.arith()),
         "pixels": pixels,
-        "frame": matrices.0,
-        "depth": matrices.1,
     })
 }
 
@@ -196,7 +199,12 @@ function renderGrid(stop) {
   const numbers = el("tr"); numbers.appendChild(el("th", ""));
   for (let x = 0; x < data.width; x++) numbers.appendChild(el("th", String(x)));
   table.appendChild(numbers);
-  const rows = view === "frame" ? stop.frame : stop.depth;
+  // The buffers after this stop: the cleared buffers with every stop's pixels up to it applied.
+  const rows = (view === "frame" ? data.cleared.frame : data.cleared.depth).map(r => r.slice());
+  for (let i = 0; i <= at; i++) {
+    const s = data.stops[i], row = rows[data.top - s.row];
+    s.pixels.forEach(p => { row[p.x] = view === "frame" ? p.frame : p.cell; });
+  }
   rows.forEach((row, i) => {
     const y = data.top - i;
     const tr = el("tr", undefined, y === stop.row ? "current" : "");
@@ -256,3 +264,51 @@ render();
 </script>
 </body></html>
 "##;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Scene;
+
+    /// The page carries the cleared buffers and each stop's pixels; applied in
+    /// order (as its script applies them) they are the buffers after each stop,
+    /// on every example scene.
+    #[test]
+    fn each_stops_pixels_applied_in_order_give_the_buffers_after_it() {
+        let folder = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples"));
+        let mut checked = 0;
+        for entry in std::fs::read_dir(folder).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_none_or(|e| e != "json") {
+                continue;
+            }
+            let scene = Scene::load(Lang::En, &path).unwrap();
+            let mut stepper = Stepper::new(&scene, crate::effects::arith::Arith::Exact);
+            let stops = stops(Lang::En, &mut stepper);
+            let cleared = crate::simulate::simulation::Simulation::new(&scene);
+            let (frame, depth) = buffer_data(cleared.buffers(), Buffers::Cells);
+            let (mut frame, mut depth) = (frame.as_array().unwrap().clone(), depth.as_array().unwrap().clone());
+            let top = crate::raster::row_y(scene.height, 0);
+            let mut moved = stepper.start(None);
+            for data in &stops {
+                let Moved::To { at: Some(stop), .. } = moved else { panic!("as many stops") };
+                let row = (top - data["row"].as_u64().unwrap() as u32) as usize;
+                for pixel in data["pixels"].as_array().unwrap() {
+                    let x = pixel["x"].as_u64().unwrap() as usize;
+                    frame[row][x] = pixel["frame"].clone();
+                    depth[row][x] = pixel["cell"].clone();
+                }
+                let (frame_after, depth_after) = buffer_data(&stepper.tracer().buffers_after(stop), Buffers::Cells);
+                assert_eq!(
+                    (&frame, &depth),
+                    (frame_after.as_array().unwrap(), depth_after.as_array().unwrap()),
+                    "{}",
+                    path.display()
+                );
+                moved = stepper.forward();
+                checked += 1;
+            }
+        }
+        assert!(checked > 100, "{checked} stops");
+    }
+}

@@ -927,3 +927,30 @@ fn an_answer_of_garbage_costs_what_its_cells_cost() {
     let cells = 8 * 1024 * 1024 / line.len() * 32;
     assert!(run.stderr.ends_with(&format!(" · and {} more problems\n", cells + 1 - 3)), "{}", run.stderr);
 }
+
+/// Found by an attacker: `step --html` of a 256×256 scene ran past 20 s and
+/// 2 GB, since the recorded page held both buffers at every stop (it grew as
+/// the cube of the side: 128×128 gave a 14 MB page). It holds them once and
+/// each stop's pixels.
+#[test]
+fn a_recorded_page_holds_the_buffers_once_not_at_every_stop() {
+    let dir = scratch("page-size");
+    let scene = dir.join("r128.json");
+    let run =
+        zsim(&["random", "--count", "20", "--width", "128", "--height", "128", "--seed", "2", "-o", path(&scene)]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let page = dir.join("page.html");
+    // The recorded page, as a zsim built without the playground writes it: through the library.
+    let text = std::fs::read_to_string(&scene).unwrap();
+    let parsed = zsim::Scene::from_json(zsim::Lang::En, &text, &scene).unwrap();
+    let recorded = zsim::page::page(
+        zsim::Lang::En,
+        &mut zsim::step::Stepper::new(&parsed, zsim::arith::Arith::Exact),
+        "r128.json",
+    );
+    std::fs::write(&page, &recorded).unwrap();
+    assert!(recorded.len() < 8_000_000, "a page of {} bytes for a 128×128 scene", recorded.len());
+    let (code, peak) = peak_kib(&["step", path(&scene), "--html", "-o", path(&page)]);
+    assert_eq!(code, 0);
+    assert!(peak < 400_000, "step --html of a 128×128 scene peaked at {peak} KiB");
+}
