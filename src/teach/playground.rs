@@ -53,16 +53,29 @@ fn shown_by_polygon(scene: &Scene) -> bool {
     u64::from(scene.width) * u64::from(scene.height) <= MAX_SHOWN_CELLS && scene.polygons.len() <= MAX_SHOWN_POLYGONS
 }
 
-/// The largest raster whose final buffers the page prints as text: 1024 ×
-/// 1024 (a few megabytes of text). A larger scene is drawn, and the page
-/// says why its buffers are not printed.
-pub const MAX_PRINTED_CELLS: u64 = 1024 * 1024;
+/// The largest raster whose final buffers the page prints as text: 512 ×
+/// 512 (a 1024 × 1024 raster's text kept a tab busy past a second). A larger
+/// scene is drawn, and the page says why its buffers are not printed.
+pub const MAX_PRINTED_CELLS: u64 = 512 * 512;
+
+/// The longest scene text the page reads, typed or in its address: 1 MiB
+/// (thousands of polygons; a longer one is for `zsim run`, and reading it
+/// kept a tab busy for seconds). Refused in one line naming the limit.
+pub const MAX_PAGE_SCENE_BYTES: usize = 1 << 20;
+
+/// Why a scene of `bytes` bytes is not read by the page, in one line.
+fn too_long(lang: Lang, bytes: usize) -> String {
+    words!(lang, "play-scene-too-long", bytes = bytes.to_string(), max = MAX_PAGE_SCENE_BYTES.to_string())
+}
 
 /// The scene read from `text`, or its error worded as the command line words
 /// it, with where the page marks it (`at`): `{"polygon": i}` (0-based) for a
 /// polygon, `{"key": "width"}` for a setting, `{"line": n, "text"}` (from 1)
 /// for JSON that does not read.
 fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
+    if text.len() > MAX_PAGE_SCENE_BYTES {
+        return Err(json!({"ok": false, "error": too_long(lang, text.len()), "at": null}));
+    }
     Scene::from_json(lang, text, Path::new(&scene_name(lang))).map_err(|error| {
         let at = match &error {
             crate::error::Error::Polygon { index, .. } => json!({"polygon": index}),
@@ -515,8 +528,11 @@ pub fn scene_of_fragment(lang: Lang, fragment: &str) -> Result<String, String> {
     let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
     let Some(encoded) = fragment.strip_prefix("scene=") else { return Err(words!(lang, "play-bad-address")) };
     let encoded = encoded.trim_end_matches('=');
-    if encoded.len() as u64 > crate::door::MAX_INPUT_BYTES / 3 * 4 {
-        return Err(words!(lang, "play-bad-address"));
+    // The decoded length, known before decoding: three bytes each four characters, and one or two
+    // for a last group of two or three.
+    let bytes = encoded.len() / 4 * 3 + [0, 0, 1, 2][encoded.len() % 4];
+    if bytes > MAX_PAGE_SCENE_BYTES {
+        return Err(too_long(lang, bytes));
     }
     let bytes = base64::engine::general_purpose::URL_SAFE_NO_PAD
         .decode(encoded)
@@ -714,6 +730,21 @@ mod tests {
         assert_eq!(scene_of_fragment(Lang::En, "scene=e30=").unwrap(), "{}");
         assert_eq!(scene_of_fragment(Lang::En, "scene=e30").unwrap(), "{}");
         assert!(scene_of_fragment(Lang::En, "scene=%%%").is_err());
+        // A scene longer than the page reads is refused in one line that names the limit, before any work.
+        let long = fragment_of(&" ".repeat(MAX_PAGE_SCENE_BYTES + 3));
+        let refused = scene_of_fragment(Lang::En, &long).unwrap_err();
+        assert_eq!(
+            refused,
+            format!(
+                "This scene has {} bytes; the page reads scenes of up to 1048576 bytes: zsim run draws it.",
+                MAX_PAGE_SCENE_BYTES + 3
+            )
+        );
+        let view = view(Lang::En, &" ".repeat(MAX_PAGE_SCENE_BYTES + 1));
+        assert_eq!(
+            view["error"],
+            "This scene has 1048577 bytes; the page reads scenes of up to 1048576 bytes: zsim run draws it."
+        );
     }
 
     /// The page's lesson is the library's: the same refusals, hints and score as every front end.

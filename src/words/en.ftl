@@ -1007,3 +1007,4 @@ grade-mistakes-more = { $count } more { $count ->
    *[other] are
 } not listed
 check-hint-other-buffer = this is exactly the { $other }, not the { $buffer }: was it handed in as the other buffer?
+play-scene-too-long = This scene has { $bytes } bytes; the page reads scenes of up to { $max } bytes: zsim run draws it.

@@ -979,3 +979,4 @@ answer-decimal-comma = строка { $line }: в { $text } десятичная
 usage-answer-without-buffer = { $path } — это ответ: укажите его как --frame { $path } или --depth { $path }
 grade-mistakes-more = ещё ячеек, в которых ошиблись двое или больше студентов, не показано: { $count }
 check-hint-other-buffer = это в точности { $other }, а не { $buffer }: не сдан ли он как другой буфер?
+play-scene-too-long = В этой сцене { $bytes } байт; страница читает сцены до { $max } байт: её нарисует zsim run.

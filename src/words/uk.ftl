@@ -979,3 +979,4 @@ answer-decimal-comma = рядок { $line }: у { $text } десяткова к�
 usage-answer-without-buffer = { $path } — це відповідь: вкажіть її як --frame { $path } або --depth { $path }
 grade-mistakes-more = ще клітинок, у яких помилилися двоє або більше студентів, не показано: { $count }
 check-hint-other-buffer = це точно { $other }, а не { $buffer }: чи не здано його як інший буфер?
+play-scene-too-long = У цій сцені { $bytes } байт; сторінка читає сцени до { $max } байт: її намалює zsim run.
