@@ -292,7 +292,7 @@ mod tests {
                 ],
             )
         };
-        assert_eq!(differ(Lang::En, 1), "b f: 1 of 1024 cell differs from the b after p");
+        assert_eq!(differ(Lang::En, 1), "b f: 1 of 1024 cells differs from the b after p");
         assert_eq!(differ(Lang::En, 3), "b f: 3 of 1024 cells differ from the b after p");
         assert!(differ(Lang::Ru, 1).contains("отличается 1"), "{}", differ(Lang::Ru, 1));
         assert!(differ(Lang::Ru, 3).contains("отличаются 3"), "{}", differ(Lang::Ru, 3));

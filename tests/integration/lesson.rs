@@ -7,7 +7,7 @@
 //! history follows an edit; the keys; the address in both directions; the
 //! site from `file://`; axe-core; a 390 px phone.
 
-use fantoccini::actions::{InputSource, KeyAction, KeyActions};
+use fantoccini::actions::{InputSource, KeyAction, KeyActions, MOUSE_BUTTON_LEFT, MouseActions, PointerAction};
 use fantoccini::key::Key;
 use fantoccini::{Client, Locator};
 use zsim::Lang;
@@ -226,6 +226,23 @@ fn a_student_finds_the_playground_usable() {
         let edited = scene_text(&client).await;
         let expected = playground::explain(Lang::En, &edited, 20, 15)["text"].as_str().unwrap().to_string();
         assert_eq!(inner_text(&client, "explain").await, expected, "the history of the edited scene");
+        // Then the triangle's third vertex dragged three cells left: the history follows the drag too.
+        let handle = client.find(Locator::Css("circle.vertex[data-p='1'][data-v='2']")).await.unwrap();
+        let (_, _, width, _) = client.find(Locator::Css("#grid")).await.unwrap().rectangle().await.unwrap();
+        let drag = MouseActions::new("mouse".to_string())
+            .then(PointerAction::MoveToElement { element: handle, duration: None, x: 0.0, y: 0.0 })
+            .then(PointerAction::Down { button: MOUSE_BUTTON_LEFT })
+            .then(PointerAction::MoveBy {
+                duration: Some(std::time::Duration::from_millis(100)),
+                x: -3.0 * width / 32.0,
+                y: 0.0,
+            })
+            .then(PointerAction::Up { button: MOUSE_BUTTON_LEFT });
+        client.perform_actions(drag).await.unwrap();
+        let dragged = scene_text(&client).await;
+        assert_ne!(dragged, edited, "the drag moved the vertex");
+        let expected = playground::explain(Lang::En, &dragged, 20, 15)["text"].as_str().unwrap().to_string();
+        assert_eq!(inner_text(&client, "explain").await, expected, "the history of the dragged scene");
         // The keys as the buttons say: n and b move, p the next polygon.
         click(&client, "#reset").await;
         shown_buffers(&client).await;
