@@ -54,12 +54,6 @@ pub fn after(code: &str, scene: &str, index: usize) -> String {
     playground::after(lang(code), scene, index).to_string()
 }
 
-/// See [`playground::figure`].
-#[wasm_bindgen]
-pub fn figure(code: &str, scene: &str) -> String {
-    playground::figure(lang(code), scene).to_string()
-}
-
 /// The stepper and its quiz as one object the page keeps: the scene parsed
 /// once, where the student is, what is asked and the score, all the
 /// library's [`Lesson`]; the page sends it keys and answers and renders
@@ -131,12 +125,6 @@ impl WebLesson {
 pub fn check(code: &str, scene: &str, after: usize, buffer: &str, typed: &str) -> String {
     let buffer = if buffer == "frame" { zsim::explain::Buffer::Frame } else { zsim::explain::Buffer::Depth };
     playground::check(lang(code), scene, after, buffer, typed).to_string()
-}
-
-/// See [`playground::explain`].
-#[wasm_bindgen]
-pub fn explain(code: &str, scene: &str, x: u32, y: u32) -> String {
-    playground::explain(lang(code), scene, x, y).to_string()
 }
 
 /// See [`playground::edit`]: `{"ok": true, "scene"}` or `{"ok": false, "error"}`.
