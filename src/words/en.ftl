@@ -1008,3 +1008,4 @@ grade-mistakes-more = { $count } more { $count ->
 } not listed
 check-hint-other-buffer = this is exactly the { $other }, not the { $buffer }: was it handed in as the other buffer?
 play-scene-too-long = This scene has { $bytes } bytes; the page reads scenes of up to { $max } bytes: zsim run draws it.
+lesson-nothing-to-skip = no question is open here: nothing to skip

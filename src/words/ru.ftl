@@ -980,3 +980,4 @@ usage-answer-without-buffer = { $path } — это ответ: укажите е
 grade-mistakes-more = ещё ячеек, в которых ошиблись двое или больше студентов, не показано: { $count }
 check-hint-other-buffer = это в точности { $other }, а не { $buffer }: не сдан ли он как другой буфер?
 play-scene-too-long = В этой сцене { $bytes } байт; страница читает сцены до { $max } байт: её нарисует zsim run.
+lesson-nothing-to-skip = здесь нет открытых вопросов: пропускать нечего

@@ -980,3 +980,4 @@ usage-answer-without-buffer = { $path } — це відповідь: вкажі�
 grade-mistakes-more = ще клітинок, у яких помилилися двоє або більше студентів, не показано: { $count }
 check-hint-other-buffer = це точно { $other }, а не { $buffer }: чи не здано його як інший буфер?
 play-scene-too-long = У цій сцені { $bytes } байт; сторінка читає сцени до { $max } байт: її намалює zsim run.
+lesson-nothing-to-skip = тут немає відкритих питань: пропускати нічого

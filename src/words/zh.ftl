@@ -927,3 +927,4 @@ usage-answer-without-buffer = { $path } 是一个答案：请用 --frame { $path
 grade-mistakes-more = 另有 { $count } 个两名或更多学生答错的单元格未列出
 check-hint-other-buffer = 这正是{ $other }，而不是{ $buffer }：是否把它当作另一个缓冲区交上来了？
 play-scene-too-long = 该场景有 { $bytes } 字节；本页面只读取不超过 { $max } 字节的场景：请用 zsim run 绘制。
+lesson-nothing-to-skip = 这里没有未答的问题：无需跳过

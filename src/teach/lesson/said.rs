@@ -177,6 +177,7 @@ impl Said {
                 words!(lang, "lesson-revealed", said = &verdict.said, expected = &verdict.expected, why = &verdict.why)
             }
             Said::AskAgain(why) => why.clone(),
+            Said::Skipped(0) => words!(lang, "lesson-nothing-to-skip"),
             Said::Skipped(count) => words!(lang, "lesson-skipped", count = count.to_string()),
             Said::NothingAsked(typed) => words!(
                 lang,

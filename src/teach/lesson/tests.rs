@@ -204,3 +204,13 @@ fn the_summary_counts_each_way_a_question_ended() {
         "{summary}"
     );
 }
+
+#[test]
+fn a_skip_with_nothing_open_says_so_and_counts_nothing() {
+    let mut lesson = Lesson::new(book(), Arith::Exact, None);
+    lesson.start(None);
+    let said = lesson.act(Lang::En, Command::Skip);
+    assert!(matches!(said, Said::Skipped(0)));
+    assert_eq!(said.text(Lang::En, lesson.scene()), "no question is open here: nothing to skip");
+    assert_eq!(lesson.score(), None);
+}
