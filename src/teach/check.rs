@@ -330,11 +330,15 @@ pub struct Prepared {
 impl Prepared {
     /// The buffers of `scene` after polygon `last` (0-based) and its wrong rules, drawn.
     pub fn new(scene: &Scene, last: usize) -> Prepared {
-        let mut simulation = Simulation::new(scene);
-        simulation.draw_through(last, &mut Unobserved);
-        let buffers = simulation.buffers().clone();
-        Prepared { buffers, diagnoser: crate::teach::diagnose::Diagnoser::new(scene, last) }
+        Prepared { buffers: drawn_through(scene, last), diagnoser: crate::teach::diagnose::Diagnoser::new(scene, last) }
     }
+}
+
+/// The buffers of `scene` after polygon `last` (0-based).
+fn drawn_through(scene: &Scene, last: usize) -> crate::simulate::buffer::Buffers {
+    let mut simulation = Simulation::new(scene);
+    simulation.draw_through(last, &mut Unobserved);
+    simulation.buffers().clone()
 }
 
 /// [`check`] with what every answer shares drawn once ([`Prepared`], for the
@@ -353,9 +357,7 @@ pub fn check_with(
     let exact = match prepared {
         Some(prepared) => &prepared.buffers,
         None => {
-            let mut simulation = Simulation::new(scene);
-            simulation.draw_through(last, &mut Unobserved);
-            drawn = simulation.buffers().clone();
+            drawn = drawn_through(scene, last);
             &drawn
         }
     };

@@ -229,7 +229,6 @@ step-outside-range = { $z }: outside the depth range, discarded
 step-tie = tie at x = { $x }: { $text }
 step-frame-after = framebuffer after this scanline (rows { $low } … { $high }):
 step-depth-after = z-buffer after this scanline (rows { $low } … { $high }):
-step-help = keys: Enter or n next scanline, p next polygon, b back, g Y go to scanline Y, q quit
 step-end = end of the scene: no more scanlines (b back, q quit)
 step-first = already at the first scanline
 step-outside-raster = row { $row } is outside the raster (rows 0 … { $last })
@@ -244,22 +243,13 @@ tui-heading = { " " }{ $polygon }, scanline { $scanline }
 tui-heading-end = { " end of the scene" }
 tui-score = { " · quiz " }{ $right }/{ $asked }
 tui-key-nothing = that key does nothing here: ? shows the keys
-tui-quiz-verdict = ({ $x }, { $y }): you said { $typed }: { $verdict }: { $reason }
-tui-right = right
-tui-wrong = wrong
-tui-passed-over = passed over: { $list }
 tui-no-later = no later polygon covers a pixel
 tui-no-earlier = no earlier polygon covers a pixel
 tui-go = go to scanline of row: { $text }▏ (Enter to go, Esc to cancel)
-tui-verdict-next = { $verdict }   (n: next)
-tui-quiz-ask = quiz: the z-buffer after ({ $x }, { $y }), stored { $stored }? (a value, or - for not written; Enter) { $typed }▏
-tui-quiz-coverage-ask = quiz: which centres does scanline { $scanline } cover? (columns as first-last, e.g. 16-27, or - for none; Enter) { $typed }▏
-tui-quiz-coverage-verdict = columns { $right }: you said { $typed }: { $verdict }: { $why }
 tui-status = n/→ next · b/← back · p/P polygon · g go · f/z buffer · m pixel steps · q quit
 tui-no-scanline = no scanline
 tui-columns-shown = x { $first } … { $last } of 0 … { $max }
 tui-end = end of the scene
-tui-slope = z steps by −a/c = { $slope } along a scanline
 tui-span = span { $n }: { $left } … { $right }; { $columns }
 tui-no-centre = no centre
 tui-table-heading = x { $z } test → stored (frame)
@@ -287,28 +277,19 @@ tui-help =
 
 ## the quiz (step --quiz)
 
-quiz-score = quiz score: { $right } of { $asked } right
 quiz-mistakes = your mistakes:
 meant-not-written = not written
 meant-value-written = the value written
 meant-value-kept = not written: the value it keeps
 meant-value = a value
-quiz-coverage-ask = quiz: { $polygon }, scanline { $scanline }: which centres does it cover?
 quiz-coverage-hint = type the covered columns as first-last (several runs apart: 3-5 9-12), or - for none
-quiz-coverage-prompt = { "columns covered? " }
 quiz-coverage-why = the spans are { $spans }; a column is covered when its centre x + 1/2 lies within one
 quiz-coverage-mistake = row { $row } of { $polygon }: you said columns { $said }, right { $right }: { $why }
-quiz-coverage-verdict = columns { $right }: you said { $said }, { $verdict }: { $why } [score { $score }/{ $asked }]
-quiz-depth-ask = quiz: { $polygon }, scanline { $scanline }; for each pixel type the z-buffer value after it, - if it is not written, q to stop
 quiz-depth-hint = type the value the z-buffer will hold, or - for not written (q stops the quiz)
-quiz-depth-prompt = pixel ({ $x }, { $y }), stored { $stored }: z-buffer after?{ " " }
 quiz-not-an-answer = "{ $text }" is not an answer: { $hint }
 quiz-does-not-fit = { $text } does not fit this z-buffer: its cells hold whole levels 0 … { $max }; type again
 quiz-keeps = - (it keeps { $value })
 quiz-depth-mistake = ({ $x }, { $y }) of { $polygon }: you said { $said }, right { $right }: { $reason }
-quiz-said-meant = you said { $said } ({ $meant })
-quiz-said = you said { $said }
-quiz-depth-verdict = ({ $x }, { $y }): { $said }, { $verdict }: { $reason } [score { $score }/{ $asked }]
 
 ## step --html: the page
 
@@ -322,19 +303,11 @@ page-quiz = quiz
 page-no-pixel = This scene covers no pixel.
 page-frame-after = framebuffer after this scanline
 page-depth-after = z-buffer after this scanline
-page-frame-before = framebuffer before this scanline (the quiz: check your answers to see after)
-page-depth-before = z-buffer before this scanline (the quiz: check your answers to see after)
-page-not-a-number = "{ $text }" is not a number or -
-page-unanswered = no answer
 page-column-stored = stored
-page-column-yours = your z-buffer after
 page-column-after = z-buffer after
 page-column-why = why
 page-keeps = – (keeps { $value })
 page-check = Check my answers
-page-right = { "right: " }
-page-wrong = { "wrong: " }
-page-quiz-score = quiz: { $right } of { $total } right on this scanline
 page-status = scanline { $at } of { $count }
 
 ## errors a student meets most: the files, the polygons, the answers
@@ -876,11 +849,8 @@ explain-corner-sample = the rules sample the integer point ({ $x }, { $y }): zsi
 stored-truncated = { $stored } is stored ({ $value } truncated to { $stored })
 stored-truncated-saturated = { $stored } is stored ({ $value } truncated, saturated to { $stored })
 usage-tinyrenderer-size = "{ $text }" is not an image side: { $min } … { $max } pixels
-quiz-frame-ask = quiz: { $polygon }, scanline { $scanline }; for each pixel type the framebuffer value after it, - if it is not written, q to stop
 quiz-frame-hint = type the value the framebuffer will hold, or - for not written (q stops the quiz)
-quiz-frame-prompt = pixel ({ $x }, { $y }), framebuffer { $before }: framebuffer after?{ " " }
 quiz-frame-does-not-fit = { $text } does not fit this framebuffer: its cells hold whole values 0 … { $max }; type again
-tui-quiz-frame-ask = quiz: the framebuffer after ({ $x }, { $y }), now { $before }? (a value, or - for not written; Enter) { $typed }▏
 usage-not-a-preset = "{ $text }" is not a rule preset: use rogers, buet, gl, vulkan (d3d, webgpu) or tinyrenderer
 error-outside-folder = { $path }: a name inside a file must stay in that file's folder ({ $folder }): no "..", no absolute path
 usage-output-name-too-long = { $path }: the name is longer than file systems hold ({ $max } bytes); nothing was written
@@ -938,12 +908,10 @@ play-homework-help = Type or paste the matrix as the book prints it, top row fir
 play-check = Check
 play-answer-grid = Type into a grid (starts from the cleared buffer)
 play-after = after
-play-coverage = covered columns (e.g. 16-27, or -)
 play-your-answer = your answer
 play-too-large = This scene is too large to show cell by cell (more than { $cells } pixels or { $polygons } polygons): only the final buffers are shown.
 play-not-printed = This raster has more than { $cells } pixels: its buffers are drawn but not printed here; zsim run --final prints them.
 play-no-antialias = This page draws the scene without its antialiasing; zsim run shows the antialiased pictures.
-play-no-such-stop = There is no such stop in this scene any more: it was edited.
 play-no-polygon = There is no such polygon in this scene.
 play-not-json = The scene is not JSON: { $reason }
 play-bad-edit = That change does not fit this scene's JSON.

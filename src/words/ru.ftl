@@ -233,7 +233,6 @@ step-outside-range = { $z }: вне диапазона глубины, отбр�
 step-tie = граничный случай при x = { $x }: { $text }
 step-frame-after = буфер кадра после этой строки (строки { $low } … { $high }):
 step-depth-after = z-буфер после этой строки (строки { $low } … { $high }):
-step-help = клавиши: Enter или n следующая строка, p следующий многоугольник, b назад, g Y перейти к строке Y, q выход
 step-end = конец сцены: строк больше нет (b назад, q выход)
 step-first = это уже первая строка
 step-outside-raster = строка { $row } вне растра (строки 0 … { $last })
@@ -248,22 +247,13 @@ tui-heading = { " " }{ $polygon }, сканирующая строка { $scanli
 tui-heading-end = { " конец сцены" }
 tui-score = { " · опрос " }{ $right }/{ $asked }
 tui-key-nothing = эта клавиша здесь ничего не делает: ? покажет клавиши
-tui-quiz-verdict = ({ $x }, { $y }): ваш ответ { $typed }: { $verdict }: { $reason }
-tui-right = верно
-tui-wrong = неверно
-tui-passed-over = пропущено: { $list }
 tui-no-later = ни один следующий многоугольник не покрывает пикселов
 tui-no-earlier = ни один предыдущий многоугольник не покрывает пикселов
 tui-go = перейти к сканирующей строке ряда: { $text }▏ (Enter — перейти, Esc — отмена)
-tui-verdict-next = { $verdict }   (n: дальше)
-tui-quiz-ask = опрос: что будет в z-буфере после ({ $x }, { $y }), сейчас { $stored }? (значение или - если не записывается; Enter) { $typed }▏
-tui-quiz-coverage-ask = опрос: центры каких столбцов покрывает строка { $scanline }? (столбцы как первый-последний, например 16-27, или - если ни одного; Enter) { $typed }▏
-tui-quiz-coverage-verdict = столбцы { $right }: ваш ответ { $typed }: { $verdict }: { $why }
 tui-status = n/→ дальше · b/← назад · p/P многоугольник · g перейти · f/z буфер · m по пикселам · q выход
 tui-no-scanline = нет сканирующей строки
 tui-columns-shown = x { $first } … { $last } из 0 … { $max }
 tui-end = конец сцены
-tui-slope = вдоль сканирующей строки z меняется на −a/c = { $slope }
 tui-span = отрезок { $n }: { $left } … { $right }; { $columns }
 tui-no-centre = ни одного центра
 tui-table-heading = x { $z } тест → в z-буфер (кадр)
@@ -291,28 +281,19 @@ tui-help =
 
 ## опрос (step --quiz)
 
-quiz-score = итог опроса: верно { $right } из { $asked }
 quiz-mistakes = ваши ошибки:
 meant-not-written = не записывается
 meant-value-written = записанное значение
 meant-value-kept = не записывается: значение, которое остаётся
 meant-value = значение
-quiz-coverage-ask = опрос: { $polygon }, сканирующая строка { $scanline }: какие центры он покрывает?
 quiz-coverage-hint = введите покрытые столбцы как первый-последний (несколько отрезков через пробел: 3-5 9-12) или -, если ни одного
-quiz-coverage-prompt = { "покрытые столбцы? " }
 quiz-coverage-why = отрезки: { $spans }; столбец покрыт, если его центр x + 1/2 лежит в одном из них
 quiz-coverage-mistake = строка { $row } { $polygon }: ваш ответ — столбцы { $said }, верно { $right }: { $why }
-quiz-coverage-verdict = столбцы { $right }: ваш ответ { $said }, { $verdict }: { $why } [счёт { $score }/{ $asked }]
-quiz-depth-ask = опрос: { $polygon }, сканирующая строка { $scanline }; для каждого пиксела введите значение z-буфера после него, - если не записывается, q для выхода
 quiz-depth-hint = введите значение, которое будет в z-буфере, или - если не записывается (q завершает опрос)
-quiz-depth-prompt = пиксел ({ $x }, { $y }), сейчас { $stored }: что в z-буфере после?{ " " }
 quiz-not-an-answer = «{ $text }» — не ответ: { $hint }
 quiz-does-not-fit = { $text } не помещается в этот z-буфер: его ячейки хранят целые уровни 0 … { $max }; введите снова
 quiz-keeps = - (остаётся { $value })
 quiz-depth-mistake = ({ $x }, { $y }) { $polygon }: ваш ответ { $said }, верно { $right }: { $reason }
-quiz-said-meant = ваш ответ { $said } ({ $meant })
-quiz-said = ваш ответ { $said }
-quiz-depth-verdict = ({ $x }, { $y }): { $said }, { $verdict }: { $reason } [счёт { $score }/{ $asked }]
 
 ## step --html: страница
 
@@ -326,19 +307,11 @@ page-quiz = опрос
 page-no-pixel = Эта сцена не покрывает ни одного пиксела.
 page-frame-after = буфер кадра после этой строки
 page-depth-after = z-буфер после этой строки
-page-frame-before = буфер кадра до этой сканирующей строки (тест: проверьте ответы, чтобы увидеть после)
-page-depth-before = z-буфер до этой сканирующей строки (тест: проверьте ответы, чтобы увидеть после)
-page-not-a-number = «{ $text }» — не число и не -
-page-unanswered = нет ответа
 page-column-stored = было
-page-column-yours = ваш z-буфер после
 page-column-after = z-буфер после
 page-column-why = почему
 page-keeps = – (остаётся { $value })
 page-check = Проверить ответы
-page-right = { "верно: " }
-page-wrong = { "неверно: " }
-page-quiz-score = опрос: верно { $right } из { $total } на этой строке
 page-status = строка { $at } из { $count }
 
 ## ошибки, которые чаще всего встречаются студенту: файлы, многоугольники, ответы
@@ -853,11 +826,8 @@ explain-corner-sample = по правилам выборка берётся в �
 stored-truncated = в z-буфер записывается { $stored } ({ $value } без дробной части — { $stored })
 stored-truncated-saturated = в z-буфер записывается { $stored } ({ $value } без дробной части, с насыщением до { $stored })
 usage-tinyrenderer-size = «{ $text }» — не сторона изображения: { $min } … { $max } пикселов
-quiz-frame-ask = опрос: { $polygon }, сканирующая строка { $scanline }; для каждого пиксела введите значение буфера кадра после него, - если не записывается, q для выхода
 quiz-frame-hint = введите значение, которое будет в буфере кадра, или - если не записывается (q завершает опрос)
-quiz-frame-prompt = пиксел ({ $x }, { $y }), в буфере кадра { $before }: что в буфере кадра после?{ " " }
 quiz-frame-does-not-fit = { $text } не помещается в этот буфер кадра: его ячейки хранят целые значения 0 … { $max }; введите снова
-tui-quiz-frame-ask = опрос: что будет в буфере кадра после ({ $x }, { $y }), сейчас { $before }? (значение или - если не записывается; Enter) { $typed }▏
 usage-not-a-preset = «{ $text }» — не набор правил: используйте rogers, buet, gl, vulkan (d3d, webgpu) или tinyrenderer
 error-outside-folder = { $path }: имя внутри файла должно оставаться в папке этого файла ({ $folder }): без «..» и без абсолютного пути
 usage-output-name-too-long = { $path }: имя длиннее, чем допускают файловые системы ({ $max } байт); ничего не записано
@@ -916,12 +886,10 @@ play-homework-help = Введите или вставьте матрицу та�
 play-check = Проверить
 play-answer-grid = Ввести в сетку (начиная с очищенного буфера)
 play-after = после
-play-coverage = покрытые столбцы (например, 16-27 или -)
 play-your-answer = ваш ответ
 play-too-large = Сцена слишком велика, чтобы показать её по ячейкам (больше { $cells } пикселов или { $polygons } многоугольников): показаны только итоговые буферы.
 play-not-printed = В этом растре больше { $cells } пикселов: буферы нарисованы, но здесь не печатаются; их печатает zsim run --final.
 play-no-antialias = Эта страница рисует сцену без сглаживания; сглаженные изображения показывает zsim run.
-play-no-such-stop = Такой остановки в сцене больше нет: сцену изменили.
 play-no-polygon = Такого многоугольника в сцене нет.
 play-not-json = Сцена — не JSON: { $reason }
 play-bad-edit = Это изменение не подходит к JSON этой сцены.

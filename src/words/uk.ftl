@@ -233,7 +233,6 @@ step-outside-range = { $z }: поза діапазоном глибини, ві�
 step-tie = граничний випадок при x = { $x }: { $text }
 step-frame-after = буфер кадру після цього рядка (рядки { $low } … { $high }):
 step-depth-after = z-буфер після цього рядка (рядки { $low } … { $high }):
-step-help = клавіші: Enter або n наступний рядок, p наступний багатокутник, b назад, g Y перейти до рядка Y, q вихід
 step-end = кінець сцени: рядків більше немає (b назад, q вихід)
 step-first = це вже перший рядок
 step-outside-raster = рядок { $row } поза растром (рядки 0 … { $last })
@@ -248,22 +247,13 @@ tui-heading = { " " }{ $polygon }, рядок сканування { $scanline }
 tui-heading-end = { " кінець сцени" }
 tui-score = { " · опитування " }{ $right }/{ $asked }
 tui-key-nothing = ця клавіша тут нічого не робить: ? покаже клавіші
-tui-quiz-verdict = ({ $x }, { $y }): ваша відповідь { $typed }: { $verdict }: { $reason }
-tui-right = правильно
-tui-wrong = неправильно
-tui-passed-over = пропущено: { $list }
 tui-no-later = жоден наступний багатокутник не покриває пікселів
 tui-no-earlier = жоден попередній багатокутник не покриває пікселів
 tui-go = перейти до рядка сканування ряду: { $text }▏ (Enter — перейти, Esc — скасувати)
-tui-verdict-next = { $verdict }   (n: далі)
-tui-quiz-ask = опитування: що буде в z-буфері після ({ $x }, { $y }), зараз { $stored }? (значення або - якщо не записується; Enter) { $typed }▏
-tui-quiz-coverage-ask = опитування: центри яких стовпців покриває рядок { $scanline }? (стовпці як перший-останній, наприклад 16-27, або - якщо жодного; Enter) { $typed }▏
-tui-quiz-coverage-verdict = стовпці { $right }: ваша відповідь { $typed }: { $verdict }: { $why }
 tui-status = n/→ далі · b/← назад · p/P багатокутник · g перейти · f/z буфер · m по пікселях · q вихід
 tui-no-scanline = немає рядка сканування
 tui-columns-shown = x { $first } … { $last } з 0 … { $max }
 tui-end = кінець сцени
-tui-slope = уздовж рядка сканування z змінюється на −a/c = { $slope }
 tui-span = відрізок { $n }: { $left } … { $right }; { $columns }
 tui-no-centre = жодного центру
 tui-table-heading = x { $z } тест → у z-буфер (кадр)
@@ -291,28 +281,19 @@ tui-help =
 
 ## опитування (step --quiz)
 
-quiz-score = підсумок опитування: правильно { $right } з { $asked }
 quiz-mistakes = ваші помилки:
 meant-not-written = не записується
 meant-value-written = записане значення
 meant-value-kept = не записується: значення, що залишається
 meant-value = значення
-quiz-coverage-ask = опитування: { $polygon }, рядок сканування { $scanline }: які центри він покриває?
 quiz-coverage-hint = введіть покриті стовпці як перший-останній (кілька відрізків через пробіл: 3-5 9-12) або -, якщо жодного
-quiz-coverage-prompt = { "покриті стовпці? " }
 quiz-coverage-why = відрізки: { $spans }; стовпець покритий, якщо його центр x + 1/2 лежить в одному з них
 quiz-coverage-mistake = рядок { $row } { $polygon }: ваша відповідь — стовпці { $said }, правильно { $right }: { $why }
-quiz-coverage-verdict = стовпці { $right }: ваша відповідь { $said }, { $verdict }: { $why } [рахунок { $score }/{ $asked }]
-quiz-depth-ask = опитування: { $polygon }, рядок сканування { $scanline }; для кожного пікселя введіть значення z-буфера після нього, - якщо не записується, q для виходу
 quiz-depth-hint = введіть значення, яке буде в z-буфері, або - якщо не записується (q завершує опитування)
-quiz-depth-prompt = піксель ({ $x }, { $y }), зараз { $stored }: що в z-буфері після?{ " " }
 quiz-not-an-answer = «{ $text }» — не відповідь: { $hint }
 quiz-does-not-fit = { $text } не вміщується в цей z-буфер: його комірки зберігають цілі рівні 0 … { $max }; введіть знову
 quiz-keeps = - (залишається { $value })
 quiz-depth-mistake = ({ $x }, { $y }) { $polygon }: ваша відповідь { $said }, правильно { $right }: { $reason }
-quiz-said-meant = ваша відповідь { $said } ({ $meant })
-quiz-said = ваша відповідь { $said }
-quiz-depth-verdict = ({ $x }, { $y }): { $said }, { $verdict }: { $reason } [рахунок { $score }/{ $asked }]
 
 ## step --html: сторінка
 
@@ -326,19 +307,11 @@ page-quiz = опитування
 page-no-pixel = Ця сцена не покриває жодного пікселя.
 page-frame-after = буфер кадру після цього рядка
 page-depth-after = z-буфер після цього рядка
-page-frame-before = буфер кадру до цього рядка сканування (тест: перевірте відповіді, щоб побачити після)
-page-depth-before = z-буфер до цього рядка сканування (тест: перевірте відповіді, щоб побачити після)
-page-not-a-number = «{ $text }» — не число і не -
-page-unanswered = немає відповіді
 page-column-stored = було
-page-column-yours = ваш z-буфер після
 page-column-after = z-буфер після
 page-column-why = чому
 page-keeps = – (залишається { $value })
 page-check = Перевірити відповіді
-page-right = { "правильно: " }
-page-wrong = { "неправильно: " }
-page-quiz-score = опитування: правильно { $right } з { $total } на цьому рядку
 page-status = рядок { $at } з { $count }
 
 ## помилки, які найчастіше трапляються студентові: файли, багатокутники, відповіді
@@ -853,11 +826,8 @@ explain-corner-sample = за правилами вибірку беруть у �
 stored-truncated = в z-буфер записується { $stored } ({ $value } без дробової частини — { $stored })
 stored-truncated-saturated = в z-буфер записується { $stored } ({ $value } без дробової частини, з насиченням до { $stored })
 usage-tinyrenderer-size = «{ $text }» — не сторона зображення: { $min } … { $max } пікселів
-quiz-frame-ask = опитування: { $polygon }, рядок сканування { $scanline }; для кожного пікселя введіть значення буфера кадру після нього, - якщо не записується, q для виходу
 quiz-frame-hint = введіть значення, яке буде в буфері кадру, або - якщо не записується (q завершує опитування)
-quiz-frame-prompt = піксель ({ $x }, { $y }), у буфері кадру { $before }: що в буфері кадру після?{ " " }
 quiz-frame-does-not-fit = { $text } не вміщується в цей буфер кадру: його комірки зберігають цілі значення 0 … { $max }; введіть знову
-tui-quiz-frame-ask = опитування: що буде в буфері кадру після ({ $x }, { $y }), зараз { $before }? (значення або - якщо не записується; Enter) { $typed }▏
 usage-not-a-preset = «{ $text }» — не набір правил: використовуйте rogers, buet, gl, vulkan (d3d, webgpu) або tinyrenderer
 error-outside-folder = { $path }: ім'я всередині файлу має лишатися в теці цього файлу ({ $folder }): без «..» і без абсолютного шляху
 usage-output-name-too-long = { $path }: ім'я довше, ніж допускають файлові системи ({ $max } байтів); нічого не записано
@@ -916,12 +886,10 @@ play-homework-help = Введіть або вставте матрицю так,
 play-check = Перевірити
 play-answer-grid = Ввести в сітку (починаючи з очищеного буфера)
 play-after = після
-play-coverage = покриті стовпці (наприклад, 16-27 або -)
 play-your-answer = ваша відповідь
 play-too-large = Сцена завелика, щоб показати її по клітинках (понад { $cells } пікселів або { $polygons } многокутників): показано лише підсумкові буфери.
 play-not-printed = У цьому растрі понад { $cells } пікселів: буфери намальовано, але тут не надруковано; їх друкує zsim run --final.
 play-no-antialias = Ця сторінка малює сцену без згладжування; згладжені зображення показує zsim run.
-play-no-such-stop = Такої зупинки в сцені більше немає: сцену змінили.
 play-no-polygon = Такого многокутника в сцені немає.
 play-not-json = Сцена — не JSON: { $reason }
 play-bad-edit = Ця зміна не пасує до JSON цієї сцени.

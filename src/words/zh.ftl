@@ -212,7 +212,6 @@ step-outside-range = { $z }：超出深度范围，被丢弃
 step-tie = x = { $x } 处的边界情形：{ $text }
 step-frame-after = 本扫描线之后的帧缓冲器（第 { $low } … { $high } 行）：
 step-depth-after = 本扫描线之后的z缓冲器（第 { $low } … { $high } 行）：
-step-help = 按键：Enter 或 n 下一条扫描线，p 下一个多边形，b 后退，g Y 转到扫描线 Y，q 退出
 step-end = 场景结束：没有更多扫描线（b 后退，q 退出）
 step-first = 已经是第一条扫描线
 step-outside-raster = 第 { $row } 行不在光栅内（行 0 … { $last }）
@@ -227,22 +226,13 @@ tui-heading = { " " }{ $polygon }，扫描线 { $scanline }
 tui-heading-end = { " 场景结束" }
 tui-score = { " · 测验 " }{ $right }/{ $asked }
 tui-key-nothing = 这个键在这里不起作用：按 ? 查看按键
-tui-quiz-verdict = ({ $x }, { $y })：你的答案 { $typed }：{ $verdict }：{ $reason }
-tui-right = 正确
-tui-wrong = 错误
-tui-passed-over = 已跳过：{ $list }
 tui-no-later = 后面没有覆盖像素的多边形
 tui-no-earlier = 前面没有覆盖像素的多边形
 tui-go = 转到该行的扫描线：{ $text }▏（Enter 转到，Esc 取消）
-tui-verdict-next = { $verdict }   （n：下一步）
-tui-quiz-ask = 测验：({ $x }, { $y }) 之后 z缓冲器中是多少？原值 { $stored }（输入数值，不写入则输入 -；Enter）{ $typed }▏
-tui-quiz-coverage-ask = 测验：扫描线 { $scanline } 覆盖哪些列的中心？（列写作 首-末，例如 16-27；一个都没有则输入 -；Enter）{ $typed }▏
-tui-quiz-coverage-verdict = 列 { $right }：你的答案 { $typed }：{ $verdict }：{ $why }
 tui-status = n/→ 下一步 · b/← 后退 · p/P 多边形 · g 转到 · f/z 缓冲器 · m 逐像素 · q 退出
 tui-no-scanline = 没有扫描线
 tui-columns-shown = 显示 x { $first } … { $last }（全部 0 … { $max }）
 tui-end = 场景结束
-tui-slope = 沿扫描线 z 每步变化 −a/c = { $slope }
 tui-span = 区段 { $n }：{ $left } … { $right }；{ $columns }
 tui-no-centre = 不含任何像素中心
 tui-table-heading = x { $z } 测试 → 写入值（帧）
@@ -270,28 +260,19 @@ tui-help =
 
 ## 测验（step --quiz）
 
-quiz-score = 测验得分：{ $asked } 题中答对 { $right } 题
 quiz-mistakes = 你的错误：
 meant-not-written = 不写入
 meant-value-written = 写入的值
 meant-value-kept = 不写入：保持原值
 meant-value = 一个值
-quiz-coverage-ask = 测验：{ $polygon }，扫描线 { $scanline }：它覆盖哪些像素中心？
 quiz-coverage-hint = 请输入被覆盖的列，格式为 起-止（多段用空格分开：3-5 9-12），没有则输入 -
-quiz-coverage-prompt = { "被覆盖的列？ " }
 quiz-coverage-why = 区段为 { $spans }；某列的中心 x + 1/2 落在区段内时，该列被覆盖
 quiz-coverage-mistake = { $polygon } 的第 { $row } 行：你的答案是列 { $said }，正确为 { $right }：{ $why }
-quiz-coverage-verdict = 列 { $right }：你的答案 { $said }，{ $verdict }：{ $why } [得分 { $score }/{ $asked }]
-quiz-depth-ask = 测验：{ $polygon }，扫描线 { $scanline }；对每个像素输入处理后 z缓冲器中的值，不写入则输入 -，输入 q 结束
 quiz-depth-hint = 请输入 z缓冲器将保存的值，不写入则输入 -（q 结束测验）
-quiz-depth-prompt = 像素 ({ $x }, { $y })，原值 { $stored }：之后 z缓冲器中是多少？{ " " }
 quiz-not-an-answer = “{ $text }”不是答案：{ $hint }
 quiz-does-not-fit = { $text } 放不进这个 z 缓冲器：它的单元只存 0 … { $max } 的整数级；请重新输入
 quiz-keeps = -（保持 { $value }）
 quiz-depth-mistake = { $polygon } 的 ({ $x }, { $y })：你的答案 { $said }，正确为 { $right }：{ $reason }
-quiz-said-meant = 你的答案 { $said }（{ $meant }）
-quiz-said = 你的答案 { $said }
-quiz-depth-verdict = ({ $x }, { $y })：{ $said }，{ $verdict }：{ $reason } [得分 { $score }/{ $asked }]
 
 ## step --html：网页
 
@@ -305,19 +286,11 @@ page-quiz = 测验
 page-no-pixel = 此场景不覆盖任何像素。
 page-frame-after = 本扫描线之后的帧缓冲器
 page-depth-after = 本扫描线之后的z缓冲器
-page-frame-before = 这条扫描线之前的帧缓冲器（测验：检查答案后可看到之后的状态）
-page-depth-before = 这条扫描线之前的 z 缓冲器（测验：检查答案后可看到之后的状态）
-page-not-a-number = “{ $text }”不是数字，也不是 -
-page-unanswered = 未作答
 page-column-stored = 原值
-page-column-yours = 你填的 z缓冲器值
 page-column-after = 之后的 z缓冲器值
 page-column-why = 原因
 page-keeps = –（保持 { $value }）
 page-check = 检查答案
-page-right = { "正确：" }
-page-wrong = { "错误：" }
-page-quiz-score = 测验：本扫描线 { $total } 题中答对 { $right } 题
 page-status = 第 { $at } 条扫描线，共 { $count } 条
 
 ## 学生最常遇到的错误：文件、多边形、答案
@@ -804,11 +777,8 @@ explain-corner-sample = 规则在整数点 ({ $x }, { $y }) 采样：zsim 把场
 stored-truncated = 存入 { $stored }（{ $value } 截断为 { $stored }）
 stored-truncated-saturated = 存入 { $stored }（{ $value } 截断并饱和到 { $stored }）
 usage-tinyrenderer-size = “{ $text }”不是图像边长：{ $min } … { $max } 像素
-quiz-frame-ask = 测验：{ $polygon }，扫描线 { $scanline }；对每个像素输入处理后帧缓冲器中的值，不写入则输入 -，输入 q 结束
 quiz-frame-hint = 请输入帧缓冲器将保存的值，不写入则输入 -（q 结束测验）
-quiz-frame-prompt = 像素 ({ $x }, { $y })，帧缓冲器原值 { $before }：之后帧缓冲器中是多少？{ " " }
 quiz-frame-does-not-fit = { $text } 放不进这个帧缓冲器：它的单元只存 0 … { $max } 的整数；请重新输入
-tui-quiz-frame-ask = 测验：({ $x }, { $y }) 之后帧缓冲器中是多少？原值 { $before }（输入数值，不写入则输入 -；Enter）{ $typed }▏
 usage-not-a-preset = “{ $text }” 不是规则预设：请用 rogers、buet、gl、vulkan（d3d、webgpu）或 tinyrenderer
 error-outside-folder = { $path }：文件内的名称必须留在该文件所在的文件夹（{ $folder }）内：不能有“..”，不能是绝对路径
 usage-output-name-too-long = { $path }：名称超过文件系统允许的长度（{ $max } 字节）；未写入任何文件
@@ -863,12 +833,10 @@ play-homework-help = 按教材的格式输入或粘贴矩阵，从最上面一�
 play-check = 检查
 play-answer-grid = 在网格中输入（从清空的缓冲开始）
 play-after = 之后
-play-coverage = 覆盖的列（例如 16-27，或 -）
 play-your-answer = 你的答案
 play-too-large = 此场景太大，无法逐格显示（超过 { $cells } 个像素或 { $polygons } 个多边形）：只显示最终缓冲。
 play-not-printed = 此光栅超过 { $cells } 个像素：缓冲已绘制，但不在此打印；请用 zsim run --final 打印。
 play-no-antialias = 本页绘制场景时不做反走样；反走样的图像请用 zsim run 查看。
-play-no-such-stop = 场景中已没有这一步：场景已被修改。
 play-no-polygon = 场景中没有这个多边形。
 play-not-json = 场景不是 JSON：{ $reason }
 play-bad-edit = 此修改不适用于该场景的 JSON。

@@ -659,16 +659,7 @@ fn an_empty_answer_and_a_decimal_comma_are_named_as_such() {
     let run = zsim(&["check", "examples/rogers.json", "--frame", empty.to_str().unwrap()]);
     assert_eq!(run.code, 2);
     assert!(run.stderr.ends_with("empty.txt: the file is empty: it holds no row of the answer\n"), "{}", run.stderr);
-    let right = zsim(&["run", "examples/rogers.json", "--final", "--format", "json"]);
-    let frame: serde_json::Value = serde_json::from_str(&right.stdout).unwrap();
-    let rows: Vec<String> = frame["steps"][0]["frame"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|row| row.as_array().unwrap().iter().map(|v| v.to_string()).collect::<Vec<_>>().join(" "))
-        .collect();
-    let mut answer = rows.join("\n") + "\n";
-    answer = answer.replacen("\n0 ", "\n9,5 ", 1);
+    let answer = crate::book_answer("frame", " ").replacen("\n0 ", "\n9,5 ", 1);
     let comma = dir.join("comma.txt");
     std::fs::write(&comma, &answer).unwrap();
     let run = zsim(&["check", "examples/rogers.json", "--frame", comma.to_str().unwrap()]);
@@ -687,16 +678,8 @@ fn an_empty_answer_and_a_decimal_comma_are_named_as_such() {
 #[test]
 fn a_framebuffer_given_as_the_depth_answer_is_named_as_such() {
     let (dir, _) = scene_file("unused-other.json", "{}");
-    let right = zsim(&["run", "examples/rogers.json", "--final", "--format", "json"]);
-    let json: serde_json::Value = serde_json::from_str(&right.stdout).unwrap();
-    let rows: Vec<String> = json["steps"][0]["frame"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|row| row.as_array().unwrap().iter().map(|v| v.to_string()).collect::<Vec<_>>().join(" "))
-        .collect();
     let frame = dir.join("frame-as-depth.txt");
-    std::fs::write(&frame, rows.join("\n") + "\n").unwrap();
+    std::fs::write(&frame, crate::book_answer("frame", " ")).unwrap();
     let run = zsim(&["check", "examples/rogers.json", "--depth", frame.to_str().unwrap()]);
     assert_eq!(run.code, 1, "{}", run.stderr);
     assert_eq!(

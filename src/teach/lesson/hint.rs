@@ -3,14 +3,13 @@
 //! depth test went wrong.
 
 use crate::numbers::{Exact, Q, parse_number};
-use crate::observe::tie::tie_text;
+use crate::observe::tie::boundary_at;
 use crate::raster::depth::{Depth, Stored};
 use crate::rules::DepthStore;
 use crate::scene::Scene;
 use crate::simulate::events::{Outcome, PixelEvent};
 use crate::teach::diagnose::Misconception;
 use crate::teach::step::{Question, parse_columns};
-use crate::words::Lang;
 
 use super::Hint;
 
@@ -33,7 +32,8 @@ fn coverage_hint(scene: &Scene, polygon: usize, row: u32, covered: &[u32], said:
     let vertices = scene.polygons[polygon].vertices();
     let taken_in = said.iter().filter(|x| !covered.contains(x));
     let left_out = covered.iter().filter(|x| !said.contains(x));
-    if taken_in.clone().chain(left_out).any(|&x| tie_text(Lang::En, scene.rules, &vertices, x, row).is_some()) {
+    // Whether the centre lies on the boundary is a fact: asked of `boundary_at`, not worded.
+    if taken_in.clone().chain(left_out).any(|&x| boundary_at(&vertices, x, row).is_some()) {
         return Hint::CentreOnBoundary;
     }
     if taken_in.count() > 0 { Hint::ColumnOutside } else { Hint::ColumnLeftOut }
