@@ -13,9 +13,9 @@ use std::time::Duration;
 #[path = "../tests/integration/chromium.rs"]
 mod chromium;
 
-/// Where a test would skip, the measurement cannot be made.
-pub fn skipped(what: &str, check: &str) {
-    panic!("{what} is missing, so {check} cannot be measured");
+/// What the measurement needs is missing.
+pub fn missing(what: &str, check: &str) -> ! {
+    panic!("{what} is missing, so {check} cannot be measured")
 }
 
 const ROUNDS: usize = 41;
@@ -35,7 +35,7 @@ fn main() {
         .output()
         .map(|o| o.stdout.len())
         .unwrap_or(0);
-    let Some((driver, browser)) = chromium::driver() else { return };
+    let (driver, browser) = chromium::driver();
     let port = chromium::serve(site);
     let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join("bench-playground-profile");
     let _ = std::fs::remove_dir_all(&profile);

@@ -23,17 +23,13 @@ impl Drop for Driver {
     }
 }
 
-/// chromedriver and Chromium, or `None` after saying which is missing.
-pub fn driver() -> Option<(Driver, PathBuf)> {
+/// chromedriver and Chromium; a test that needs them is `#[ignore = "needs Chromium and chromedriver"]`.
+pub fn driver() -> (Driver, PathBuf) {
     let browser =
         ["/usr/bin/chromium", "/usr/bin/chromium-browser"].into_iter().map(PathBuf::from).find(|p| p.exists());
     let found = |name: &str| Command::new(name).arg("--version").output().is_ok_and(|o| o.status.success());
     let (Some(browser), true) = (browser, found("chromedriver")) else {
-        crate::skipped(
-            "Chromium and its WebDriver (apt-get install chromium chromium-driver)",
-            "the step page in a browser",
-        );
-        return None;
+        crate::missing("Chromium and its WebDriver (apt-get install chromium chromium-driver)", "a page in a browser");
     };
     let port = std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
     let child = Command::new("chromedriver")
@@ -48,7 +44,7 @@ pub fn driver() -> Option<(Driver, PathBuf)> {
         assert!(start.elapsed() < Duration::from_secs(20), "chromedriver did not listen within 20 s");
         std::thread::sleep(Duration::from_millis(50));
     }
-    Some((driver, browser))
+    (driver, browser)
 }
 
 /// Serves `folder` on a loopback port, as a static host would, for as long as the test runs.

@@ -9,8 +9,8 @@ use zsim::cs418::{Arithmetic, Case, Image, compare_images, differences, render};
 
 use crate::{scene_file, snapshot, zsim};
 
-/// The peer folder, or `None` (said aloud, and a failure in CI).
-fn cases() -> Option<PathBuf> {
+/// The peer folder.
+fn cases() -> PathBuf {
     crate::peer("uiuc-cs418", "the CS 418 reference images")
 }
 
@@ -36,8 +36,9 @@ fn reference(dir: &Path, name: &str) -> Image {
 /// images that are not), drawn in the course's f64 arithmetic, equals its
 /// reference image within 1 per RGBA channel.
 #[test]
+#[ignore = "needs the courses' files in ../shared/peer"]
 fn every_case_with_its_inputs_reproduces_the_reference_image() {
-    let Some(dir) = cases() else { return };
+    let dir = cases();
     let all = [
         "gray",
         "smallgap",
@@ -75,8 +76,9 @@ fn every_case_with_its_inputs_reproduces_the_reference_image() {
 /// differed. textures too, once a negative coordinate's texel lies 5 texels
 /// further on (690 pixels differed without that shift).
 #[test]
+#[ignore = "needs the courses' files in ../shared/peer"]
 fn textured_cases_reproduce_their_references_texel_for_texel() {
-    let Some(dir) = cases() else { return };
+    let dir = cases();
     let with_textures = |name: &str| {
         let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).unwrap();
         let load =
@@ -98,8 +100,9 @@ fn textured_cases_reproduce_their_references_texel_for_texel() {
 /// empty. Every other pixel is within 1, including the whole top row, which
 /// the course's floats leave empty and exact arithmetic covers (see the next test).
 #[test]
+#[ignore = "needs the courses' files in ../shared/peer"]
 fn manyclip_reproduces_the_reference_but_for_one_clipped_boundary_pixel() {
-    let Some(dir) = cases() else { return };
+    let dir = cases();
     let image = render(zsim::Lang::En, &case(&dir, "manyclip"), Arithmetic::DdaF64).expect("renders").image;
     let difference = compare_images(&image, &reference(&dir, "manyclip"), 1).expect("same size");
     let places: Vec<(u32, u32)> = difference.pixels.iter().map(|p| (p.0, p.1)).collect();
@@ -111,8 +114,9 @@ fn manyclip_reproduces_the_reference_but_for_one_clipped_boundary_pixel() {
 /// floats put it a hair below, so the reference leaves the row empty. The
 /// report names the triangle, the row and both spans.
 #[test]
+#[ignore = "needs the courses' files in ../shared/peer"]
 fn exact_arithmetic_shows_where_the_course_floats_land_on_the_other_side() {
-    let Some(dir) = cases() else { return };
+    let dir = cases();
     let case = case(&dir, "manyclip");
     let (course, exact) = (
         render(zsim::Lang::En, &case, Arithmetic::DdaF64).unwrap(),
@@ -152,8 +156,9 @@ fn stand_in(rgba: [u8; 4]) -> Image {
 /// everything else are the course's; only which texel each sprite pixel
 /// shows cannot be checked here.
 #[test]
+#[ignore = "needs the courses' files in ../shared/peer"]
 fn points_match_the_reference_with_a_stand_in_for_the_missing_texture() {
-    let Some(dir) = cases() else { return };
+    let dir = cases();
     let magenta = [255, 0, 255, 255];
     for (name, shown) in [("points1", 3342), ("points2", 3770)] {
         let case = case_with_stand_in(&dir, name, magenta);
@@ -182,8 +187,9 @@ fn points_match_the_reference_with_a_stand_in_for_the_missing_texture() {
 /// not read them: points1, copied alone into a folder without its texture,
 /// imports (while `cs418 run` says which file is missing).
 #[test]
+#[ignore = "needs the courses' files in ../shared/peer"]
 fn import_does_not_need_the_textures() {
-    let Some(dir) = cases() else { return };
+    let dir = cases();
     let alone = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cs418-without-textures");
     std::fs::create_dir_all(&alone).unwrap();
     let case = alone.join("rast-points1.txt");
@@ -207,8 +213,9 @@ fn import_does_not_need_the_textures() {
 /// stand-ins (opaque for textures, half transparent for decals) zsim covers
 /// exactly the pixels the reference covers.
 #[test]
+#[ignore = "needs the courses' files in ../shared/peer"]
 fn textured_cubes_cover_the_reference_pixels_with_stand_in_textures() {
-    let Some(dir) = cases() else { return };
+    let dir = cases();
     for (name, texel) in [("textures", [255, 255, 0, 255]), ("decals", [255, 255, 0, 128])] {
         let case = case_with_stand_in(&dir, name, texel);
         let image = render(zsim::Lang::En, &case, Arithmetic::DdaF64).unwrap().image;
@@ -222,8 +229,9 @@ fn textured_cubes_cover_the_reference_pixels_with_stand_in_textures() {
 
 /// The command line writes the PNG the case names and compares it.
 #[test]
+#[ignore = "needs the courses' files in ../shared/peer"]
 fn run_writes_the_named_png_and_compares_it() {
-    let Some(dir) = cases() else { return };
+    let dir = cases();
     let out_dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cs418-gray");
     let gray_against = |png: &str| {
         let (case, reference) = (dir.join("rast-gray.txt"), dir.join(png));
@@ -315,8 +323,9 @@ fn compare_rules_lists_the_cells_and_the_edges_that_decided_them() {
 /// arithmetic, 19 s more in a debug build) have a test of their own, run on
 /// demand (`cargo test --test integration -- --ignored`).
 #[test]
+#[ignore = "needs the courses' files in ../shared/peer"]
 fn imported_cases_draw_as_the_course_draws_them_exactly() {
-    let Some(dir) = cases() else { return };
+    let dir = cases();
     let names = [
         "gray",
         "smallgap",
@@ -349,7 +358,7 @@ fn imported_cases_draw_as_the_course_draws_them_exactly() {
 #[test]
 #[ignore = "19 s in a debug build; run with --ignored"]
 fn imported_textured_cases_draw_as_the_course_draws_them_exactly() {
-    let Some(dir) = cases() else { return };
+    let dir = cases();
     for name in ["textures", "decals"] {
         assert!(imported_case_draws_as_the_course(&dir, name), "{name}: refused");
     }

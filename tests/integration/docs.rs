@@ -8,14 +8,39 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::{ran, skipped};
+use crate::{missing, ran};
 
+/// The README's and the chapters' examples that need nothing outside the project.
 #[test]
 fn the_readme_and_the_guide_show_what_zsim_prints() {
+    let commands = run_documents("documents", false);
+    assert!(commands >= 40, "the documents' console examples were found: {commands}");
+}
+
+/// The chapters' examples that run the courses' published files
+/// (`../shared/peer/…`) or draw PNG and PDF figures (the figures feature).
+#[test]
+#[ignore = "needs the courses' files in ../shared/peer and the figures feature"]
+fn the_chapters_on_courses_and_figures_show_what_zsim_prints() {
+    let commands = run_documents("documents-outside", true);
+    assert!(commands >= 20, "the chapters' console examples were found: {commands}");
+}
+
+/// Whether a document's examples need something from outside the project:
+/// the courses' files, or a PNG or PDF figure.
+fn needs_outside(examples: &[String]) -> bool {
+    examples.iter().any(|c| c.contains("../shared/") || c.contains(".png") || c.contains(".pdf"))
+}
+
+/// Runs the console examples of the README and the chapters, those that
+/// need something outside the project (`outside`, [`needs_outside`]) or the
+/// others, each document in a scratch folder of its own under `name`;
+/// returns how many commands ran.
+fn run_documents(name: &str, outside: bool) -> usize {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
     assert!(readme.lines().count() <= 250, "README.md has {} lines: the guide lives in docs/", readme.lines().count());
-    let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("documents");
+    let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
     let _ = std::fs::remove_dir_all(&scratch);
     std::fs::create_dir_all(&scratch).unwrap();
     let shared = root.join("../shared");
@@ -28,11 +53,7 @@ fn the_readme_and_the_guide_show_what_zsim_prints() {
     for document in &documents {
         let text = std::fs::read_to_string(document).unwrap();
         let examples = console_commands(&text);
-        if examples.is_empty() {
-            continue;
-        }
-        if examples.iter().any(|c| c.contains("../shared/")) && !shared.is_dir() {
-            skipped("../shared (the courses' published files)", &format!("{}'s examples", document.display()));
+        if examples.is_empty() || needs_outside(&examples) != outside {
             continue;
         }
         commands += examples.len();
@@ -41,10 +62,12 @@ fn the_readme_and_the_guide_show_what_zsim_prints() {
         copy_folder(&root.join("examples"), &scratch.join(format!("{stem}.in/examples")));
         copy_folder(&root.join("tests/fixtures"), &scratch.join(format!("{stem}.in/tests/fixtures")));
     }
-    if shared.is_dir() {
+    if outside {
+        if !shared.is_dir() {
+            missing("../shared (the courses' published files)", "the course chapters' examples");
+        }
         std::os::unix::fs::symlink(std::fs::canonicalize(&shared).unwrap(), scratch.join("shared")).unwrap();
     }
-    assert!(commands >= 40, "the documents' console examples were found: {commands}");
     trycmd::TestCases::new()
         .register_bin("zsim", Path::new(env!("CARGO_BIN_EXE_zsim")))
         .env("LC_ALL", "C")
@@ -52,6 +75,7 @@ fn the_readme_and_the_guide_show_what_zsim_prints() {
         .case(scratch.join("*.md"))
         .run();
     ran("the README's and the guide's examples", &format!("trycmd, {commands} commands"));
+    commands
 }
 
 /// The commands (`$ …` lines) of a document's ```console blocks.

@@ -51,6 +51,7 @@ fn names_with_control_characters_reach_no_terminal_raw() {
 /// Found by a new user: a scene saved by Windows Notepad (UTF-8 with a
 /// byte-order mark) was refused as `expected value at line 1 column 1`.
 #[test]
+#[ignore = "needs the courses' files in ../shared/peer"]
 fn files_with_a_byte_order_mark_are_read() {
     let plain =
         r#"{"width": 4, "height": 3, "polygons": [{"value": 1, "vertices": [[0, 0, 5], [4, 0, 5], [0, 3, 5]]}]}"#;
@@ -65,7 +66,7 @@ fn files_with_a_byte_order_mark_are_read() {
     let run = zsim_in(Some(&dir), &["check", &bom, "--frame", "bom_answer.txt"]);
     assert_eq!((run.code, run.stderr.as_str()), (0, ""), "{}", run.stdout);
     // A course file with a BOM (BUET's scene.txt), when the course's cases are beside the project.
-    let Some(case) = crate::peer("buet-cse410-a", "a BUET file with a BOM") else { return };
+    let case = crate::peer("buet-cse410-a", "a BUET file with a BOM");
     let case = case.join("1");
     let copy = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("buet-bom");
     std::fs::create_dir_all(&copy).unwrap();
@@ -182,7 +183,8 @@ mod random_scenes {
         let (p, q) = value.split_once('/').unwrap_or((value, "1"));
         let [p, q, d]: [BigInt; 3] = [p, q, &d].map(|t| t.trim_start_matches('-').parse().expect("an integer"));
         let limit = BigInt::from(1) << 4096;
-        p * 2 * &d > &limit * q || d > limit
+        let (twice, bound): (BigInt, BigInt) = (p * 2u32 * &d, &limit * q);
+        twice > bound || d > limit
     }
 
     proptest! {

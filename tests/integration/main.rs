@@ -43,36 +43,32 @@ mod untrusted;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-/// A check that cannot run here because `what` is missing. On a machine of
-/// our own it says so where the person running the tests sees it (straight to
-/// the terminal: the test harness hides what a passing test prints) and lets
-/// the rest of the test pass; in CI (`CI` set) nothing may be skipped, so it
-/// fails the test instead.
-pub fn skipped(what: &str, check: &str) {
-    use std::io::Write;
-    if std::env::var_os("CI").is_some() {
-        panic!("{what} is missing in CI, so {check} would be skipped: .ci/run must install it");
-    }
-    let _ = writeln!(std::io::stderr(), "SKIPPED: {check}: {what} is missing");
+/// What a test needs from outside the project (a browser, tmux, TeX, a GPU,
+/// the courses' files, a feature) is missing. Such a test is
+/// `#[ignore = "needs …"]`, so that a plain `cargo test` lists it as ignored
+/// instead of passing it unrun; asked for (`cargo test --features
+/// figures,vulkan -- --include-ignored`, as `.ci/run` does after installing
+/// everything), it fails here, saying what is missing.
+pub fn missing(what: &str, check: &str) -> ! {
+    panic!("{check} needs {what}, which is missing here: .ci/run installs it")
 }
 
-/// Says on the terminal (past the test harness's capture, as [`skipped`]
-/// does) that a check needing an outside tool ran, and with what, so that
-/// `cargo test` tells whether the browser and the terminal checks ran.
+/// Says on the terminal (past the test harness's capture) that a check
+/// needing an outside tool ran, and with what.
 pub fn ran(check: &str, with: &str) {
     use std::io::Write;
     let _ = writeln!(std::io::stderr(), "RAN: {check}, with {with}");
 }
 
 /// The folder `../shared/peer/NAME` of course files beside the project (never
-/// copied into it), or `None` after [`skipped`] says which check did not run.
-pub fn peer(name: &str, check: &str) -> Option<PathBuf> {
+/// copied into it); a test that reads it is `#[ignore = "needs the courses'
+/// files in ../shared/peer"]`.
+pub fn peer(name: &str, check: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/peer").join(name);
-    if dir.is_dir() {
-        return Some(dir);
+    if !dir.is_dir() {
+        missing(&dir.display().to_string(), check);
     }
-    skipped(&dir.display().to_string(), check);
-    None
+    dir
 }
 
 /// What one run of the binary produced.

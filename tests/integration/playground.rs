@@ -21,22 +21,21 @@ pub(crate) fn manifest() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The site `web/build` wrote, or `None` after saying it is missing.
-pub(crate) fn site() -> Option<PathBuf> {
+/// The site `web/build` wrote.
+pub(crate) fn site() -> PathBuf {
     let site = manifest().join("target/web");
-    if site.join("index.html").is_file() && site.join("zsim_web_bg.wasm").is_file() {
-        return Some(site);
+    if !(site.join("index.html").is_file() && site.join("zsim_web_bg.wasm").is_file()) {
+        crate::missing("the playground's site (web/build writes it into target/web)", "the browser playground");
     }
-    crate::skipped("the playground's site (web/build writes it into target/web)", "the browser playground");
-    None
+    site
 }
 
 /// The site served on loopback, a browser to open it with and a scratch
-/// folder `name`; `None` after saying what is missing.
-fn served(name: &str) -> Option<(Driver, PathBuf, PathBuf, u16)> {
-    let site = site()?;
-    let (driver, browser) = driver()?;
-    Some((driver, browser, scratch(name), serve(site)))
+/// folder `name`.
+fn served(name: &str) -> (Driver, PathBuf, PathBuf, u16) {
+    let site = site();
+    let (driver, browser) = driver();
+    (driver, browser, scratch(name), serve(site))
 }
 
 pub(crate) fn runtime() -> tokio::runtime::Runtime {
@@ -104,8 +103,9 @@ pub(crate) fn scratch(name: &str) -> PathBuf {
 /// buffers are exactly what the native `zsim run --final` prints for the
 /// scene the page holds.
 #[test]
+#[ignore = "needs Chromium, chromedriver and web/build's site (target/web)"]
 fn the_playground_shows_what_run_final_prints_as_a_scene_is_typed_dragged_and_linked() {
-    let Some((driver, browser, dir, port)) = served("playground-edit") else { return };
+    let (driver, browser, dir, port) = served("playground-edit");
     let mut random_scenes = Vec::new();
     for seed in 1..=6 {
         let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
@@ -169,8 +169,9 @@ fn the_playground_shows_what_run_final_prints_as_a_scene_is_typed_dragged_and_li
 /// it names for the same file, the history `zsim explain`'s. (The quiz is
 /// the lesson's: `lesson.rs`.)
 #[test]
+#[ignore = "needs Chromium, chromedriver and web/build's site (target/web)"]
 fn the_playground_checks_a_homework_as_check_does() {
-    let Some((driver, browser, dir, port)) = served("playground-homework") else { return };
+    let (driver, browser, dir, port) = served("playground-homework");
     let book = std::fs::read_to_string(manifest().join("examples/rogers.json")).unwrap();
     // A homework drawn with the depth test the wrong way round, and zsim check's verdict on it.
     let reversed = book.replace(r#""depth_test": "greater""#, r#""depth_test": "less""#);
@@ -254,8 +255,9 @@ fn the_playground_checks_a_homework_as_check_does() {
 /// at 1280 and 360 pixels wide are saved for a person to look at, and at 360
 /// nothing is wider than the window.
 #[test]
+#[ignore = "needs Chromium, chromedriver and web/build's site (target/web)"]
 fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
-    let Some((driver, browser, dir, port)) = served("playground-lang") else { return };
+    let (driver, browser, dir, port) = served("playground-lang");
     let runtime = runtime();
     runtime.block_on(async {
         let client = session_as(&driver, &browser, &dir.join("profile-ru"), "ru-RU", (1280, 900)).await;
@@ -301,12 +303,12 @@ fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
 /// opens from `file://` with its scene, where zsim was built with it
 /// (`ZSIM_PLAYGROUND`, as .ci/run builds it).
 #[test]
+#[ignore = "needs Chromium, chromedriver and a zsim built with the playground (ZSIM_PLAYGROUND=target/web)"]
 fn step_html_writes_the_playground_as_one_file_that_opens_from_disk() {
     if option_env!("ZSIM_PLAYGROUND").is_none() {
-        crate::skipped("a zsim built with the playground (ZSIM_PLAYGROUND=target/web)", "step --html's playground");
-        return;
+        crate::missing("a zsim built with the playground (ZSIM_PLAYGROUND=target/web)", "step --html's playground");
     }
-    let Some((driver, browser)) = driver() else { return };
+    let (driver, browser) = driver();
     let dir = scratch("playground-one-file");
     let scene = std::fs::read_to_string(manifest().join("examples/less.json")).unwrap();
     std::fs::write(dir.join("less.json"), &scene).unwrap();

@@ -15,11 +15,9 @@ use crate::words::Lang;
 
 mod gl;
 pub mod race;
-#[cfg(feature = "vulkan")]
 mod vulkan;
 
 pub use gl::{Gl, GlDrawing};
-#[cfg(feature = "vulkan")]
 pub use vulkan::Vulkan;
 
 /// What went wrong reaching the machine's OpenGL.
@@ -262,7 +260,6 @@ pub fn compare(lang: Lang, scene: &crate::scene::Scene, api: GpuApi) -> Result<G
 
 /// The scene's triangles drawn by Vulkan, as a picture of `width + 2·margin`
 /// on each side (its depths are not read back).
-#[cfg(feature = "vulkan")]
 fn vulkan_picture(
     scene: &crate::scene::Scene,
     triangles: &[GpuTriangle],
@@ -286,12 +283,6 @@ fn vulkan_picture(
     }
     let shown = vulkan.draw(side, &drawn, true)?;
     Ok((vulkan.renderer().to_string(), GpuPicture { width: side, height: side, shown, depth: Vec::new() }))
-}
-
-/// Without the `vulkan` feature there is no Vulkan to draw with.
-#[cfg(not(feature = "vulkan"))]
-fn vulkan_picture(_: &crate::scene::Scene, _: &[GpuTriangle], _: u32) -> Result<(String, GpuPicture), GpuError> {
-    Err(GpuError::NotBuilt("vulkan"))
 }
 
 /// Whether a polygon's vertices (x, y) turn one way only.

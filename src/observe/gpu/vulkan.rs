@@ -205,3 +205,29 @@ impl Vulkan {
         Ok(shown)
     }
 }
+
+/// Built without the `vulkan` feature: a Vulkan that never opens, so that
+/// `--compare-gpu vulkan` and the tests say what is missing.
+#[cfg(not(feature = "vulkan"))]
+#[derive(Debug)]
+pub struct Vulkan {
+    never: std::convert::Infallible,
+}
+
+#[cfg(not(feature = "vulkan"))]
+impl Vulkan {
+    /// Always [`GpuError::NotBuilt`].
+    pub fn open() -> Result<Vulkan, GpuError> {
+        Err(GpuError::NotBuilt("vulkan"))
+    }
+
+    /// Never reached: no `Vulkan` is made.
+    pub fn renderer(&self) -> &str {
+        match self.never {}
+    }
+
+    /// Never reached: no `Vulkan` is made.
+    pub fn draw(&self, _: u32, _: &[([[f64; 3]; 3], u32)], _: bool) -> Result<Vec<u32>, GpuError> {
+        match self.never {}
+    }
+}
