@@ -141,7 +141,7 @@ impl<'l> App<'l> {
             KeyCode::Char('>') => self.scroll.1 += 4,
             KeyCode::Char('[') => self.table_scroll = self.table_scroll.saturating_sub(4),
             KeyCode::Char(']') => self.table_scroll += 4,
-            _ => self.message = zsim::words!(self.lang, "tui-key-nothing"),
+            _ => self.message = zsim::words!(self.lang, "key-does-nothing"),
         }
     }
 
@@ -215,7 +215,7 @@ impl<'l> App<'l> {
         let lang = self.lang;
         let area = frame.area();
         let status_text = if let Some(text) = &self.go {
-            zsim::words!(lang, "tui-go", text = text)
+            zsim::words!(lang, "go-to-row-prompt", text = text)
         } else if let Some(ask) = self.lesson.prompt(lang) {
             let ask = format!("{ask} {}▏", zsim::printable(&self.typed));
             // What became of the last answer, on its own lines above the question.
@@ -223,7 +223,7 @@ impl<'l> App<'l> {
         } else if !self.message.is_empty() {
             self.message.clone()
         } else {
-            zsim::words!(lang, "tui-status")
+            zsim::words!(lang, "keys-summary")
         };
         // The status gets the lines its text wraps to (a quiz's reason to ask again on lines of
         // its own above the question), at least two, at most half the screen.
@@ -240,11 +240,11 @@ impl<'l> App<'l> {
         let heading = match (at, &record) {
             (Some(stop), Some(r)) => zsim::words!(
                 lang,
-                "tui-heading",
+                "heading-polygon-scanline",
                 polygon = polygon_name(lang, scene, stop.polygon),
                 scanline = scanline_text(lang, r.row)
             ),
-            _ => zsim::words!(lang, "tui-heading-end"),
+            _ => zsim::words!(lang, "heading-end-of-scene"),
         };
         let view = match self.view {
             View::Frame => zsim::words!(lang, "buffer-frame"),
@@ -252,10 +252,10 @@ impl<'l> App<'l> {
         };
         let score = self.lesson.score().map_or(String::new(), |score| {
             let right = score.first_try + score.second_try;
-            zsim::words!(lang, "tui-score", right = right.to_string(), asked = score.asked().to_string())
+            zsim::words!(lang, "score-short", right = right.to_string(), asked = score.asked().to_string())
         });
         frame.render_widget(
-            Paragraph::new(zsim::words!(lang, "tui-title", heading = heading, view = view, score = score))
+            Paragraph::new(zsim::words!(lang, "title-stepper", heading = heading, view = view, score = score))
                 .style(Style::new().add_modifier(Modifier::REVERSED)),
             title,
         );
@@ -265,13 +265,13 @@ impl<'l> App<'l> {
         if self.help {
             // Over the raster too, as wide as its longest line allows, so that a key and what it
             // does stay on one line (in the right pane alone they wrapped apart on 80×24).
-            let text = ratatui::text::Text::from(zsim::words!(lang, "tui-help"));
+            let text = ratatui::text::Text::from(zsim::words!(lang, "keys-help"));
             let width = (text.width() as u16 + 2).min(body.width);
             let height = (text.height() as u16 + 2).min(body.height);
             let area = Rect { x: body.x + (body.width - width) / 2, y: body.y, width, height };
             let help = Paragraph::new(text)
                 .wrap(Wrap { trim: false })
-                .block(Block::bordered().title(zsim::words!(lang, "tui-keys")));
+                .block(Block::bordered().title(zsim::words!(lang, "keys-heading")));
             frame.render_widget(Clear, area);
             frame.render_widget(help, area);
         } else {
@@ -291,7 +291,7 @@ impl<'l> App<'l> {
     fn draw_raster(&mut self, frame: &mut Frame<'_>, area: Rect, record: Option<&ScanlineRecord>) {
         let lang = self.lang;
         let Some(stop) = self.lesson.at() else {
-            frame.render_widget(Paragraph::new(zsim::words!(lang, "tui-no-scanline")), area);
+            frame.render_widget(Paragraph::new(zsim::words!(lang, "no-scanline")), area);
             return;
         };
         let done = self.shown_pixels();
@@ -359,7 +359,7 @@ impl<'l> App<'l> {
         lines.push(Line::from(format!("     {}", column_numbers(first..=last_shown, cell))));
         let shown = zsim::words!(
             lang,
-            "tui-columns-shown",
+            "columns-shown",
             first = first.to_string(),
             last = last_shown.to_string(),
             max = (width - 1).to_string()
@@ -372,7 +372,7 @@ impl<'l> App<'l> {
     fn details(&mut self, record: Option<&ScanlineRecord>) -> Vec<Line<'static>> {
         let lang = self.lang;
         let (Some(view), Some(record)) = (self.lesson.stop_view(lang), record) else {
-            return vec![Line::from(zsim::words!(lang, "tui-end"))];
+            return vec![Line::from(zsim::words!(lang, "end-of-scene"))];
         };
         let mut lines = vec![
             Line::styled(view.heading, Style::new().add_modifier(Modifier::BOLD)),
@@ -390,12 +390,12 @@ impl<'l> App<'l> {
             // `always` and `never` compare nothing: say so instead of a symbol.
             let (op, compares) = match scene.depth_test.compares() {
                 true => (scene.depth_test.symbol().to_string(), true),
-                false => (zsim::words!(lang, "tui-uncompared", test = scene.depth_test.symbol()), false),
+                false => (zsim::words!(lang, "test-passes-uncompared", test = scene.depth_test.symbol()), false),
             };
             let zs: Vec<String> = record.pixels.iter().map(|e| exact_and_decimal(lang, e.depth.value())).collect();
             let width = zs.iter().map(|z| z.chars().count()).max().unwrap_or(1);
             lines.push(Line::styled(
-                format!("  {}", zsim::words!(lang, "tui-table-heading", z = format!("{:<width$}", "z"))),
+                format!("  {}", zsim::words!(lang, "pixel-table-heading", z = format!("{:<width$}", "z"))),
                 Style::new().add_modifier(Modifier::BOLD),
             ));
             for (pixel, z) in record.pixels.iter().zip(&zs) {
@@ -406,8 +406,8 @@ impl<'l> App<'l> {
                         Color::Green,
                     ),
                     _ => (
-                        if compares { zsim::words!(lang, "tui-not") } else { String::new() },
-                        zsim::words!(lang, "tui-hidden"),
+                        if compares { zsim::words!(lang, "test-not") } else { String::new() },
+                        zsim::words!(lang, "outcome-hidden-short"),
                         Color::Red,
                     ),
                 };
@@ -415,7 +415,7 @@ impl<'l> App<'l> {
                     format!("{:>3} {z:<width$} {test}{op}{} → {verdict}", pixel.x, pixel.stored_before.text(lang));
                 lines.push(Line::styled(line, Style::new().fg(style)));
             }
-            lines.push(Line::from(zsim::words!(lang, "tui-pixel-by-pixel")));
+            lines.push(Line::from(zsim::words!(lang, "keys-pixel-by-pixel")));
             return lines;
         };
         // Pixel steps: the pixel just done (none yet at the start).
@@ -426,13 +426,13 @@ impl<'l> App<'l> {
             let step = match &first_z {
                 Some(start) if pixel.x > record.pixels[0].x => {
                     let count = (pixel.x - record.pixels[0].x).to_string();
-                    zsim::words!(lang, "tui-steps-from", count = count, start = fraction(start))
+                    zsim::words!(lang, "depth-steps-from", count = count, start = fraction(start))
                 }
                 _ => String::new(),
             };
             lines.push(Line::from(zsim::words!(
                 lang,
-                "tui-pixel",
+                "pixel-centre-depth",
                 x = pixel.x,
                 y = pixel.y,
                 centre = exact_and_decimal(lang, Q::new(2 * i128::from(pixel.x) + 1, 2)),

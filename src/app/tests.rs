@@ -200,7 +200,7 @@ fn the_keys_box_keeps_each_key_and_its_action_on_one_line_at_80_by_24() {
     for lang in [zsim::Lang::Ru, zsim::Lang::Uk, zsim::Lang::Zh] {
         let mut app = App::new(&mut lesson, lang);
         press(&mut app, "?");
-        let help = zsim::message(lang, "tui-help", &[]);
+        let help = zsim::message(lang, "keys-help", &[]);
         let text = screen(&mut app, 80, 24);
         let first = help.lines().next().unwrap();
         assert!(text.contains(first), "{lang:?}: {first:?} on one line:\n{text}");

@@ -20,14 +20,14 @@ pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
     let stops = stops(lang, stepper);
     // The page's words, in the student's language; {…} marks what the script fills in.
     let words = serde_json::json!({
-        "noPixel": words!(lang, "page-no-pixel"),
-        "frameAfter": words!(lang, "page-frame-after"),
-        "depthAfter": words!(lang, "page-depth-after"),
-        "stored": words!(lang, "page-column-stored"),
-        "after": words!(lang, "page-column-after"),
-        "why": words!(lang, "page-column-why"),
-        "keeps": words!(lang, "page-keeps", value = "{after}"),
-        "status": words!(lang, "page-status", at = "{at}", count = "{count}"),
+        "noPixel": words!(lang, "scene-covers-no-pixel"),
+        "frameAfter": words!(lang, "frame-after-scanline"),
+        "depthAfter": words!(lang, "depth-after-scanline"),
+        "stored": words!(lang, "column-stored"),
+        "after": words!(lang, "column-depth-after"),
+        "why": words!(lang, "column-why"),
+        "keeps": words!(lang, "keeps-value", value = "{after}"),
+        "status": words!(lang, "scanline-of-count", at = "{at}", count = "{count}"),
     });
     // The top row's y: the rows are printed top first.
     let top = crate::raster::row_y(scene.height, 0);
@@ -132,13 +132,13 @@ fn fill(lang: Lang, part: &str, title: &str) -> String {
     let mut part = part.to_string();
     for (marker, key) in [
         ("{{LANG}}", None),
-        ("{{BACK}}", Some("page-back")),
-        ("{{NEXT}}", Some("page-next")),
-        ("{{PREVIOUS_POLYGON}}", Some("page-previous-polygon")),
-        ("{{NEXT_POLYGON}}", Some("page-next-polygon")),
-        ("{{FRAME}}", Some("page-frame")),
-        ("{{DEPTH}}", Some("page-depth")),
-        ("{{NO_QUIZ}}", Some("page-no-quiz")),
+        ("{{BACK}}", Some("command-back")),
+        ("{{NEXT}}", Some("command-next")),
+        ("{{PREVIOUS_POLYGON}}", Some("command-previous-polygon")),
+        ("{{NEXT_POLYGON}}", Some("command-next-polygon")),
+        ("{{FRAME}}", Some("command-show-frame")),
+        ("{{DEPTH}}", Some("command-show-depth")),
+        ("{{NO_QUIZ}}", Some("quiz-not-on-recorded-steps")),
     ] {
         let text = key.map_or_else(|| lang.code().to_string(), |key| crate::words::text(lang, key, &[]));
         part = part.replace(marker, &escape(&text));

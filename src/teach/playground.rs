@@ -36,7 +36,7 @@ use crate::words::{Lang, polygon_label};
 /// How the scene typed into the page is named in messages: "the scene", in
 /// the student's language.
 pub fn scene_name(lang: Lang) -> String {
-    words!(lang, "play-scene-name")
+    words!(lang, "scene-name-default")
 }
 
 /// The largest raster the page shows cell by cell (each polygon's buffers,
@@ -65,7 +65,7 @@ pub const MAX_PAGE_SCENE_BYTES: usize = 1 << 20;
 
 /// Why a scene of `bytes` bytes is not read by the page, in one line.
 fn too_long(lang: Lang, bytes: usize) -> String {
-    words!(lang, "play-scene-too-long", bytes = bytes.to_string(), max = MAX_PAGE_SCENE_BYTES.to_string())
+    words!(lang, "limit-scene-bytes", bytes = bytes.to_string(), max = MAX_PAGE_SCENE_BYTES.to_string())
 }
 
 /// The scene read from `text`, or its error worded as the command line words
@@ -128,17 +128,17 @@ pub fn view_of(lang: Lang, scene: &Scene) -> Value {
     if !shown {
         notes.push(words!(
             lang,
-            "play-too-large",
+            "limit-cells-or-polygons",
             cells = MAX_SHOWN_CELLS.to_string(),
             polygons = MAX_SHOWN_POLYGONS.to_string()
         ));
     }
     if scene.effects.antialias.is_some() {
-        notes.push(words!(lang, "play-no-antialias"));
+        notes.push(words!(lang, "antialias-not-drawn"));
     }
     let printed = cells <= MAX_PRINTED_CELLS;
     if !printed {
-        notes.push(words!(lang, "play-not-printed", cells = MAX_PRINTED_CELLS.to_string()));
+        notes.push(words!(lang, "limit-printed-cells", cells = MAX_PRINTED_CELLS.to_string()));
     }
     let (framebuffer, zbuffer) = match printed {
         true => buffer_data(buffers, Buffers::Printed),
@@ -173,14 +173,14 @@ pub fn after(lang: Lang, text: &str, index: usize) -> Value {
 pub fn after_of(lang: Lang, scene: &Scene, index: usize) -> Value {
     let cells = u64::from(scene.width) * u64::from(scene.height);
     if cells > MAX_SHOWN_CELLS || scene.polygons.len() > MAX_SHOWN_POLYGONS || index >= scene.polygons.len() {
-        return json!({"ok": false, "error": words!(lang, "play-no-polygon")});
+        return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
     }
     let mut simulation = Simulation::new(scene);
     let mut last = None;
     for _ in 0..=index {
         last = simulation.draw_next_counted(&mut Unobserved);
     }
-    let Some(drawn) = last else { return json!({"ok": false, "error": words!(lang, "play-no-polygon")}) };
+    let Some(drawn) = last else { return json!({"ok": false, "error": words!(lang, "no-such-polygon")}) };
     let (frame, depth) = buffer_data(simulation.buffers(), Buffers::Printed);
     json!({
         "ok": true,
@@ -202,7 +202,7 @@ pub fn figure(lang: Lang, text: &str) -> Value {
 /// [`figure`] of a scene already read (the lesson's: one reading for every view).
 pub fn figure_of(lang: Lang, scene: &Scene) -> Value {
     let Some(last) = scene.polygons.len().checked_sub(1) else {
-        return json!({"ok": false, "error": words!(lang, "play-no-polygon")});
+        return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
     };
     let mut simulation = Simulation::new(scene);
     simulation.finish(&mut Unobserved);
@@ -256,7 +256,7 @@ pub fn lesson_act(lang: Lang, lesson: &mut Lesson, command: &str) -> Value {
         Err(_) => None,
     };
     let Some(command) = command else {
-        return json!({"ok": false, "error": words!(lang, "play-bad-edit")});
+        return json!({"ok": false, "error": words!(lang, "edit-does-not-fit")});
     };
     let said = lesson.act(lang, command);
     let kind = match &said {
@@ -295,7 +295,7 @@ pub fn lesson_state(lang: Lang, lesson: &mut Lesson) -> Value {
             true => words!(lang, "step-end"),
             false => words!(
                 lang,
-                "play-too-large",
+                "limit-cells-or-polygons",
                 cells = MAX_SHOWN_CELLS.to_string(),
                 polygons = MAX_SHOWN_POLYGONS.to_string()
             ),
@@ -357,13 +357,13 @@ pub fn check(lang: Lang, text: &str, after: usize, buffer: Buffer, typed: &str) 
         Err(error) => return error,
     };
     if after >= scene.polygons.len() {
-        return json!({"ok": false, "error": words!(lang, "play-no-polygon")});
+        return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
     }
     let answer = match answer_from_text(lang, typed, &scene, buffer) {
         Ok(answer) => answer,
         Err(message) => return json!({"ok": false, "error": message}),
     };
-    let name = words!(lang, "play-your-answer");
+    let name = words!(lang, "column-your-answer");
     let answers = vec![(buffer, Path::new(&name), answer)];
     let report =
         match crate::teach::check::check(lang, &scene, Path::new(&scene_name(lang)), after, answers, Arith::Exact) {
@@ -434,12 +434,12 @@ pub enum Edit {
 /// does; `Err` worded in `lang` when the text is not JSON or the edit does
 /// not fit it.
 pub fn edit(lang: Lang, text: &str, edit: &str) -> Result<String, String> {
-    let not_json = |e: serde_json::Error| words!(lang, "play-not-json", reason = e.to_string());
+    let not_json = |e: serde_json::Error| words!(lang, "scene-not-json", reason = e.to_string());
     let mut scene: Value = serde_json::from_str(text).map_err(not_json)?;
-    let edit: Edit = serde_json::from_str(edit).map_err(|_| words!(lang, "play-bad-edit"))?;
+    let edit: Edit = serde_json::from_str(edit).map_err(|_| words!(lang, "edit-does-not-fit"))?;
     let value_of =
         |text: &str| serde_json::from_str(text.trim()).unwrap_or_else(|_| Value::String(text.trim().to_string()));
-    let bad = || words!(lang, "play-bad-edit");
+    let bad = || words!(lang, "edit-does-not-fit");
     let (last, path) = match &edit {
         Edit::Set { path, .. } | Edit::Insert { path, .. } | Edit::Remove { path } => {
             path.split_last().ok_or_else(bad)?
@@ -526,7 +526,7 @@ pub fn fragment_of(text: &str) -> String {
 /// base64url with or without padding); `Err` worded in `lang`.
 pub fn scene_of_fragment(lang: Lang, fragment: &str) -> Result<String, String> {
     let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
-    let Some(encoded) = fragment.strip_prefix("scene=") else { return Err(words!(lang, "play-bad-address")) };
+    let Some(encoded) = fragment.strip_prefix("scene=") else { return Err(words!(lang, "address-holds-no-scene")) };
     let encoded = encoded.trim_end_matches('=');
     // The decoded length, known before decoding: three bytes each four characters, and one or two
     // for a last group of two or three.
@@ -536,7 +536,7 @@ pub fn scene_of_fragment(lang: Lang, fragment: &str) -> Result<String, String> {
     }
     let bytes = base64::engine::general_purpose::URL_SAFE_NO_PAD
         .decode(encoded)
-        .map_err(|_| words!(lang, "play-bad-address"))?;
+        .map_err(|_| words!(lang, "address-holds-no-scene"))?;
     String::from_utf8(bytes).map_err(|_| words!(lang, "error-not-utf8"))
 }
 
@@ -589,71 +589,71 @@ pub fn page_words(lang: Lang) -> Value {
     words.insert("lang".into(), Value::String(lang.code().into()));
     words.insert("depthName".into(), Value::String(Buffer::Depth.name(lang)));
     words.insert("frameName".into(), Value::String(Buffer::Frame.name(lang)));
-    words.insert("keeps".into(), Value::String(words!(lang, "page-keeps", value = "{after}")));
-    words.insert("status".into(), Value::String(words!(lang, "page-status", at = "{at}", count = "{count}")));
-    words.insert("hidden".into(), Value::String(words!(lang, "play-hidden", count = "{count}")));
-    words.insert("legendValue".into(), Value::String(words!(lang, "play-legend-value", value = "{value}")));
-    words.insert("errorLine".into(), Value::String(words!(lang, "play-error-line", line = "{line}", text = "{text}")));
+    words.insert("keeps".into(), Value::String(words!(lang, "keeps-value", value = "{after}")));
+    words.insert("status".into(), Value::String(words!(lang, "scanline-of-count", at = "{at}", count = "{count}")));
+    words.insert("hidden".into(), Value::String(words!(lang, "pixels-hidden-asked", count = "{count}")));
+    words.insert("legendValue".into(), Value::String(words!(lang, "legend-value", value = "{value}")));
+    words.insert("errorLine".into(), Value::String(words!(lang, "error-at-line", line = "{line}", text = "{text}")));
     Value::Object(words)
 }
 
 /// The page's labels: the name the page uses, and the catalogue's key.
 const PAGE_WORDS: [(&str, &str); 55] = [
-    ("title", "play-title"),
-    ("intro", "play-intro"),
-    ("language", "play-language"),
-    ("sceneHeading", "play-scene"),
-    ("width", "play-width"),
-    ("height", "play-height"),
-    ("frameBits", "play-frame-bits"),
-    ("depthBits", "play-depth-bits"),
-    ("depthTest", "play-depth-test"),
-    ("preset", "play-preset"),
-    ("presetNone", "play-preset-none"),
-    ("snap", "play-snap"),
-    ("polygon", "play-polygon"),
-    ("value", "play-value"),
-    ("addPolygon", "play-add-polygon"),
-    ("removePolygon", "play-remove-polygon"),
-    ("addVertex", "play-add-vertex"),
-    ("removeVertex", "play-remove-vertex"),
-    ("json", "play-json"),
-    ("share", "play-share"),
-    ("shared", "play-shared"),
-    ("buffers", "play-buffers"),
-    ("finalBuffers", "play-final"),
-    ("grid", "play-grid"),
-    ("gridHelp", "play-grid-help"),
-    ("explainHeading", "play-explain"),
-    ("stepper", "play-stepper"),
-    ("figure", "play-figure"),
-    ("homework", "play-homework"),
-    ("homeworkHelp", "play-homework-help"),
-    ("checkAnswer", "play-check"),
-    ("answerGrid", "play-answer-grid"),
-    ("after", "play-after"),
-    ("back", "page-back"),
-    ("next", "page-next"),
-    ("quiz", "page-quiz"),
-    ("stored", "page-column-stored"),
-    ("why", "page-column-why"),
-    ("check", "page-check"),
-    ("previousPolygon", "page-previous-polygon"),
-    ("nextPolygon", "page-next-polygon"),
-    ("skip", "page-skip"),
-    ("quizKind", "play-quiz-kind"),
-    ("coverageKind", "play-coverage-kind"),
-    ("examples", "play-examples"),
-    ("reset", "play-reset"),
-    ("copied", "play-copied"),
-    ("gridLabel", "play-grid-label"),
-    ("bufferKind", "play-buffer-kind"),
-    ("exampleRogers", "play-example-rogers"),
-    ("exampleSection", "play-example-section"),
-    ("exampleLess", "play-example-less"),
-    ("exampleCull", "play-example-cull"),
-    ("exampleConcave", "play-example-concave"),
-    ("legend", "play-legend"),
+    ("title", "title-scene-editor"),
+    ("intro", "intro-scene-editor"),
+    ("language", "field-language"),
+    ("sceneHeading", "heading-scene"),
+    ("width", "field-width"),
+    ("height", "field-height"),
+    ("frameBits", "field-frame-bits"),
+    ("depthBits", "field-depth-bits"),
+    ("depthTest", "field-depth-test"),
+    ("preset", "field-preset"),
+    ("presetNone", "field-preset-none"),
+    ("snap", "field-snap"),
+    ("polygon", "field-polygon"),
+    ("value", "field-value"),
+    ("addPolygon", "command-add-polygon"),
+    ("removePolygon", "command-remove-polygon"),
+    ("addVertex", "command-add-vertex"),
+    ("removeVertex", "command-remove-vertex"),
+    ("json", "heading-scene-json"),
+    ("share", "command-copy-link"),
+    ("shared", "link-in-address-bar"),
+    ("buffers", "heading-buffers-each-polygon"),
+    ("finalBuffers", "heading-final-buffers"),
+    ("grid", "heading-raster"),
+    ("gridHelp", "raster-help"),
+    ("explainHeading", "heading-pixel-history"),
+    ("stepper", "heading-scanline-by-scanline"),
+    ("figure", "heading-figure"),
+    ("homework", "heading-homework"),
+    ("homeworkHelp", "homework-help"),
+    ("checkAnswer", "command-check"),
+    ("answerGrid", "answer-grid-label"),
+    ("after", "column-after"),
+    ("back", "command-back"),
+    ("next", "command-next"),
+    ("quiz", "quiz-label"),
+    ("stored", "column-stored"),
+    ("why", "column-why"),
+    ("check", "command-check-answers"),
+    ("previousPolygon", "command-previous-polygon"),
+    ("nextPolygon", "command-next-polygon"),
+    ("skip", "command-skip"),
+    ("quizKind", "quiz-kind-label"),
+    ("coverageKind", "quiz-kind-coverage"),
+    ("examples", "heading-examples"),
+    ("reset", "command-reset"),
+    ("copied", "link-copied"),
+    ("gridLabel", "raster-label"),
+    ("bufferKind", "buffer-kind-label"),
+    ("exampleRogers", "example-rogers"),
+    ("exampleSection", "example-section"),
+    ("exampleLess", "example-less"),
+    ("exampleCull", "example-cull"),
+    ("exampleConcave", "example-concave"),
+    ("legend", "legend-heading"),
 ];
 
 #[cfg(test)]

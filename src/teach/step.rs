@@ -54,8 +54,8 @@ impl Refusal {
     pub fn text(&self, lang: Lang, scene: &Scene) -> String {
         match *self {
             Refusal::First => words!(lang, "step-first"),
-            Refusal::NoEarlierPolygon => words!(lang, "tui-no-earlier"),
-            Refusal::NoLaterPolygon => words!(lang, "tui-no-later"),
+            Refusal::NoEarlierPolygon => words!(lang, "no-earlier-polygon"),
+            Refusal::NoLaterPolygon => words!(lang, "no-later-polygon"),
             Refusal::QuestionsOpen { open } => words!(lang, "lesson-questions-open", open = open.to_string()),
             Refusal::NoSuchPolygon { polygon } => words!(
                 lang,
@@ -231,12 +231,12 @@ impl<'s> Stepper<'s> {
             .enumerate()
             .map(|(i, span)| {
                 let columns = span.columns.map_or_else(
-                    || words!(lang, "tui-no-centre"),
+                    || words!(lang, "span-no-centre"),
                     |(first, last)| words!(lang, "step-columns", first = first.to_string(), last = last.to_string()),
                 );
                 words!(
                     lang,
-                    "tui-span",
+                    "span-line",
                     n = (i + 1).to_string(),
                     left = exact_and_decimal(lang, &span.left),
                     right = exact_and_decimal(lang, &span.right),

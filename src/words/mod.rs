@@ -1,10 +1,13 @@
 //! The words of the program: every sentence a person reads about the
 //! algorithm is rendered here from facts, in the student's language.
 //!
-//! Each language is a Fluent catalogue (`en.ftl`, `ru.ftl`, `uk.ftl`,
-//! `zh.ftl`, built into the binary) with one message per sentence or phrase
-//! and the facts as arguments; Fluent chooses plural forms by the language's
-//! CLDR rules. Numbers arrive already written: exact values stay exact
+//! Each language is a Fluent catalogue (a folder `en/`, `ru/`, `uk/`, `zh/`,
+//! built into the binary) of one resource per area ([`AREAS`]: reading a
+//! scene, drawing it, stepping and the lesson, checking and grading, the
+//! courses, requests that do not fit), with one message per sentence or
+//! phrase, keyed by the fact it states (never by the front end that shows
+//! it), and the facts as arguments; Fluent chooses plural forms by the
+//! language's CLDR rules. Numbers arrive already written: exact values stay exact
 //! (`43/4`), and the decimal beside them uses the language's separator
 //! ([`Lang::decimal_separator`]: `10,75` in Russian and Ukrainian).
 //!
@@ -81,12 +84,25 @@ impl Lang {
         }
     }
 
-    fn catalogue(self) -> &'static str {
+    /// The catalogue's resources, one an area, in the order of [`AREAS`].
+    fn catalogue(self) -> [&'static str; AREAS.len()] {
+        macro_rules! areas {
+            ($lang:literal) => {
+                [
+                    include_str!(concat!($lang, "/scene.ftl")),
+                    include_str!(concat!($lang, "/draw.ftl")),
+                    include_str!(concat!($lang, "/step.ftl")),
+                    include_str!(concat!($lang, "/check.ftl")),
+                    include_str!(concat!($lang, "/courses.ftl")),
+                    include_str!(concat!($lang, "/usage.ftl")),
+                ]
+            };
+        }
         match self {
-            Lang::En => include_str!("en.ftl"),
-            Lang::Ru => include_str!("ru.ftl"),
-            Lang::Uk => include_str!("uk.ftl"),
-            Lang::Zh => include_str!("zh.ftl"),
+            Lang::En => areas!("en"),
+            Lang::Ru => areas!("ru"),
+            Lang::Uk => areas!("uk"),
+            Lang::Zh => areas!("zh"),
         }
     }
 }
@@ -100,15 +116,23 @@ fn catalogue(lang: Lang) -> &'static FluentBundle<FluentResource> {
     BUNDLES[index].get_or_init(|| bundle(lang))
 }
 
+/// The areas a catalogue's messages are kept in, one resource each
+/// (`src/words/LANG/AREA.ftl`).
+const AREAS: [&str; 6] = ["scene", "draw", "step", "check", "courses", "usage"];
+
 fn bundle(lang: Lang) -> FluentBundle<FluentResource> {
-    let resource = FluentResource::try_new(lang.catalogue().to_string()).unwrap_or_else(|(_, errors)| {
-        panic!("the {} catalogue does not parse: {errors:?}: please report this bug", lang.code())
-    });
     let id: unic_langid::LanguageIdentifier = lang.code().parse().expect("a language code");
     let mut bundle = FluentBundle::new_concurrent(vec![id]);
     // No Unicode isolation marks around arguments: terminals show them as gaps.
     bundle.set_use_isolating(false);
-    bundle.add_resource(resource).expect("one resource per bundle");
+    for (area, text) in AREAS.iter().zip(lang.catalogue()) {
+        let resource = FluentResource::try_new(text.to_string()).unwrap_or_else(|(_, errors)| {
+            panic!("the {} catalogue's {area} does not parse: {errors:?}: please report this bug", lang.code())
+        });
+        bundle.add_resource(resource).unwrap_or_else(|errors| {
+            panic!("the {} catalogue's {area} repeats a message: {errors:?}: please report this bug", lang.code())
+        });
+    }
     bundle
 }
 
@@ -212,15 +236,20 @@ pub fn localize_decimal(lang: Lang, text: String) -> String {
     }
 }
 
-/// The message keys of a catalogue, in order.
+/// The message keys of each area of a catalogue, in order.
 #[cfg(test)]
-fn keys(lang: Lang) -> Vec<String> {
-    let resource = FluentResource::try_new(lang.catalogue().to_string()).unwrap_or_else(|(r, _)| r);
-    resource
-        .entries()
-        .filter_map(|entry| match entry {
-            fluent_syntax::ast::Entry::Message(m) => Some(m.id.name.to_string()),
-            _ => None,
+fn keys(lang: Lang) -> Vec<Vec<String>> {
+    lang.catalogue()
+        .iter()
+        .map(|text| {
+            let resource = FluentResource::try_new(text.to_string()).unwrap_or_else(|(r, _)| r);
+            resource
+                .entries()
+                .filter_map(|entry| match entry {
+                    fluent_syntax::ast::Entry::Message(m) => Some(m.id.name.to_string()),
+                    _ => None,
+                })
+                .collect()
         })
         .collect()
 }
@@ -249,20 +278,37 @@ pub fn polygon_label(lang: Lang, message: &str, index: usize, name: &str) -> Str
 mod tests {
     use super::*;
 
-    /// Every message of the English catalogue exists in every other, and no
-    /// catalogue has a message English lacks or a syntax error.
+    /// Every message of the English catalogue exists in every other, in the
+    /// same area, and no catalogue has a message English lacks or a syntax
+    /// error.
     #[test]
     fn every_message_key_exists_in_every_catalogue() {
         let english = keys(Lang::En);
-        assert!(english.len() > 50);
+        assert!(english.iter().all(|area| area.len() > 50), "{:?}", english.iter().map(Vec::len).collect::<Vec<_>>());
         for lang in Lang::ALL {
-            FluentResource::try_new(lang.catalogue().to_string())
-                .unwrap_or_else(|(_, errors)| panic!("{}: {errors:?}", lang.code()));
-            let theirs = keys(lang);
-            let missing: Vec<&String> = english.iter().filter(|k| !theirs.contains(k)).collect();
-            let extra: Vec<&String> = theirs.iter().filter(|k| !english.contains(k)).collect();
-            assert_eq!((missing, extra), (vec![], vec![]), "{}", lang.code());
+            for (area, text) in AREAS.iter().zip(lang.catalogue()) {
+                FluentResource::try_new(text.to_string())
+                    .unwrap_or_else(|(_, errors)| panic!("{} {area}: {errors:?}", lang.code()));
+            }
+            for ((area, ours), theirs) in AREAS.iter().zip(&english).zip(keys(lang)) {
+                let missing: Vec<&String> = ours.iter().filter(|k| !theirs.contains(k)).collect();
+                let extra: Vec<&String> = theirs.iter().filter(|k| !ours.contains(k)).collect();
+                assert_eq!((missing, extra), (vec![], vec![]), "{} {area}", lang.code());
+            }
         }
+    }
+
+    /// A message is keyed by the fact it states, so that every front end
+    /// shows the same words for it: no key is named for the terminal app,
+    /// the recorded page or the playground.
+    #[test]
+    fn no_message_is_keyed_by_a_front_end() {
+        let keys: Vec<String> = keys(Lang::En).concat();
+        let by_front_end: Vec<&String> = keys
+            .iter()
+            .filter(|k| ["tui-", "page-", "play-", "app-", "web-"].iter().any(|p| k.starts_with(p)))
+            .collect();
+        assert!(by_front_end.is_empty(), "{by_front_end:?}");
     }
 
     #[test]

@@ -80,7 +80,7 @@ fn the_recorded_step_page_is_clicked_through_and_asks_nothing() {
         assert_eq!(current_row(&client).await, "15 14 13 12 12 11 10 10 10 10 7 6 6");
         assert!(client.find_all(Locator::Css("input")).await.unwrap().is_empty(), "nothing to type an answer in");
         let no_quiz = text(&client, "#noQuiz").await;
-        assert_eq!(no_quiz, zsim::message(zsim::Lang::En, "page-no-quiz", &[]));
+        assert_eq!(no_quiz, zsim::message(zsim::Lang::En, "quiz-not-on-recorded-steps", &[]));
         std::fs::write(dir.join("recorded-1280.png"), client.screenshot().await.unwrap()).unwrap();
         client.close().await.unwrap();
     });

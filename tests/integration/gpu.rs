@@ -35,7 +35,9 @@ fn vulkan() -> Vulkan {
             );
             vulkan
         }
-        Err(error) => crate::missing(&format!("Vulkan ({})", error.message(zsim::Lang::En)), "the Vulkan conformance tests"),
+        Err(error) => {
+            crate::missing(&format!("Vulkan ({})", error.message(zsim::Lang::En)), "the Vulkan conformance tests")
+        }
     }
 }
 
@@ -43,7 +45,9 @@ fn vulkan() -> Vulkan {
 fn open() -> Gl {
     match Gl::open() {
         Ok(gl) => gl,
-        Err(error) => crate::missing(&format!("OpenGL ({})", error.message(zsim::Lang::En)), "the GPU conformance tests"),
+        Err(error) => {
+            crate::missing(&format!("OpenGL ({})", error.message(zsim::Lang::En)), "the GPU conformance tests")
+        }
     }
 }
 

@@ -18,7 +18,9 @@ fn scratch(name: &str) -> PathBuf {
 /// The first line `NAME -v` prints (its version); a test that needs the tool
 /// is `#[ignore = "needs …"]`.
 fn tool(name: &str, package: &str) -> String {
-    let Ok(output) = Command::new(name).arg("-v").output() else { missing(&format!("{name} ({package})"), "a handout") };
+    let Ok(output) = Command::new(name).arg("-v").output() else {
+        missing(&format!("{name} ({package})"), "a handout")
+    };
     let text = String::from_utf8_lossy(&output.stderr).to_string() + &String::from_utf8_lossy(&output.stdout);
     text.lines().next().unwrap_or(name).to_string()
 }

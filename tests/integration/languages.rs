@@ -162,8 +162,12 @@ fn figures_are_titled_in_each_language() {
 
 /// The variables a catalogue message uses (`{ $name }`), by key.
 fn catalogue_variables(language: &str) -> std::collections::BTreeMap<String, std::collections::BTreeSet<String>> {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("src/words/{language}.ftl"));
-    let text = std::fs::read_to_string(path).unwrap();
+    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("src/words/{language}"));
+    // Every area's resource, one after the other.
+    let text: String = std::fs::read_dir(folder)
+        .unwrap()
+        .map(|entry| std::fs::read_to_string(entry.unwrap().path()).unwrap() + "\n")
+        .collect();
     let mut messages = std::collections::BTreeMap::new();
     let mut current: Option<String> = None;
     for line in text.lines() {
