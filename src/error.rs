@@ -80,8 +80,11 @@ pub enum Error {
         /// What is wrong.
         problem: Box<PolygonProblem>,
     },
-    /// A command-line request that does not fit the command or the scene.
+    /// A request that does not fit the command or the scene.
     Usage(Usage),
+    /// A refusal a layer above this one states as a fact of its own (the
+    /// GPU's, an exercise's, an arithmetic mode's, the command line's).
+    Refused(Box<dyn Refusal>),
     /// An answer file (for `check`) that is malformed or the wrong shape.
     Answer {
         /// The answer file.
@@ -89,6 +92,14 @@ pub enum Error {
         /// What was found.
         message: String,
     },
+}
+
+/// A request a layer refuses, kept as that layer's fact and worded from its
+/// own messages in the reader's language: each layer owns its errors, and
+/// [`Error::Refused`] carries them to the front end that shows them.
+pub trait Refusal: std::fmt::Debug + Send + Sync {
+    /// The message in `lang`, one line.
+    fn message(&self, lang: Lang) -> String;
 }
 
 /// What an input that is not a regular file is.
@@ -145,7 +156,7 @@ pub enum PolygonOrigin {
         /// The factor.
         factor: u32,
     },
-    /// The scene snapped to `bits` fractional bits (`--arith fixed:K`).
+    /// The scene snapped to `bits` fractional bits (fixed-point arithmetic).
     Snapped {
         /// The fractional bits.
         bits: u32,
@@ -156,26 +167,14 @@ pub enum PolygonOrigin {
 /// states, worded by the catalogues in the reader's language.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Usage {
-    /// An inexact `--arith` on a scene with other rules or effects.
-    ArithNeedsPlainRules {
-        /// The mode, as written.
-        arith: String,
-    },
-    /// An inexact `--arith` on a scene with another depth test.
-    ArithNeedsGreaterOrLess {
-        /// The mode, as written.
-        arith: String,
-        /// The scene's depth test.
-        test: String,
-    },
-    /// `--after N` past the last polygon.
+    /// A polygon number past the last polygon.
     NoPolygonNumbered {
         /// N.
         number: usize,
         /// How many polygons the scene has.
         count: usize,
     },
-    /// `--after NAME` that no polygon has.
+    /// A polygon name that no polygon has.
     NoPolygonNamed {
         /// The name asked for.
         name: String,
@@ -225,7 +224,7 @@ pub enum Usage {
         /// The command.
         task: Task,
     },
-    /// `check --submission`: the folder holds no answer file.
+    /// A submission folder that holds no answer file.
     NoSubmission {
         /// The folder.
         folder: PathBuf,
@@ -235,43 +234,7 @@ pub enum Usage {
         /// The folder.
         class: PathBuf,
     },
-    /// `exercise --hard` names an unknown case.
-    NotAHardCase {
-        /// The name given.
-        name: String,
-        /// The names of the hard cases.
-        names: Vec<String>,
-    },
-    /// `exercise --size` out of range.
-    ExerciseSize {
-        /// The width given.
-        width: u32,
-        /// The height given.
-        height: u32,
-    },
-    /// `exercise --polygons` out of range.
-    ExercisePolygons {
-        /// The count given.
-        count: usize,
-    },
-    /// `exercise` bits out of range for work by hand.
-    ExerciseBits,
-    /// `hidden` or `intersecting` asked of one polygon.
-    ExerciseNeedsTwoPolygons,
-    /// No candidate scene showed every case asked for.
-    ExerciseNotFound {
-        /// Polygons asked for.
-        polygons: usize,
-        /// The raster's width.
-        width: u32,
-        /// The raster's height.
-        height: u32,
-        /// The cases asked for.
-        cases: Vec<String>,
-        /// Candidates tried.
-        tries: usize,
-    },
-    /// `-o FOLDER` is the folder the command reads.
+    /// An output folder that is the folder the command reads.
     OutputIsInput {
         /// The folder.
         folder: PathBuf,
@@ -311,39 +274,12 @@ pub enum Usage {
         /// The file.
         path: PathBuf,
     },
-    /// `-o FOLDER` already holds files the command would write.
+    /// An output folder that already holds files the command would write.
     OutputWouldReplace {
         /// The folder.
         folder: PathBuf,
         /// The files it would replace, by name.
         files: Vec<String>,
-    },
-    /// `--compare-gpu` on a scene with per-pixel effects or antialiasing.
-    CompareGpuPlainOnly,
-    /// `--compare-gpu` without a usable GPU.
-    NoGpu {
-        /// What went wrong.
-        reason: String,
-    },
-    /// `step --polygon` on a polygon that is not drawn.
-    NoScanlines {
-        /// 0-based polygon index.
-        index: usize,
-        /// Its name.
-        name: String,
-        /// Why it is not drawn, in words.
-        why: String,
-    },
-    /// `step --scanline` on a row the polygon does not reach.
-    ScanlineNotReached {
-        /// 0-based polygon index.
-        index: usize,
-        /// Its name.
-        name: String,
-        /// The row asked for.
-        row: u32,
-        /// The first and last rows it reaches, if any.
-        rows: Option<(u32, u32)>,
     },
 }
 
@@ -356,6 +292,12 @@ pub enum Task {
     Grade,
     /// `check`.
     Check,
+}
+
+impl<R: Refusal + 'static> From<R> for Error {
+    fn from(refusal: R) -> Error {
+        Error::Refused(Box::new(refusal))
+    }
 }
 
 impl From<Usage> for Error {
@@ -373,10 +315,6 @@ impl Usage {
     pub fn message(&self, lang: Lang) -> String {
         let path = |p: &PathBuf| shown_path(p);
         match self {
-            Usage::ArithNeedsPlainRules { arith } => words!(lang, "usage-arith-plain-rules", arith = arith),
-            Usage::ArithNeedsGreaterOrLess { arith, test } => {
-                words!(lang, "usage-arith-greater-or-less", arith = arith, test = test)
-            }
             Usage::NoPolygonNumbered { number, count } => {
                 words!(lang, "usage-no-polygon-numbered", number = number.to_string(), count = count.to_string())
             }
@@ -415,24 +353,6 @@ impl Usage {
                 words!(lang, "usage-no-submission", folder = shown_path(folder))
             }
             Usage::NoAnswersFound { class } => words!(lang, "usage-no-answers", path = path(class)),
-            Usage::NotAHardCase { name, names } => {
-                words!(lang, "usage-not-a-hard-case", name = name, names = names.join(", "))
-            }
-            Usage::ExerciseSize { width, height } => {
-                words!(lang, "usage-exercise-size", width = width.to_string(), height = height.to_string())
-            }
-            Usage::ExercisePolygons { count } => words!(lang, "usage-exercise-polygons", count = count.to_string()),
-            Usage::ExerciseBits => words!(lang, "usage-exercise-bits"),
-            Usage::ExerciseNeedsTwoPolygons => words!(lang, "usage-exercise-two-polygons"),
-            Usage::ExerciseNotFound { polygons, width, height, cases, tries } => words!(
-                lang,
-                "usage-exercise-not-found",
-                polygons = polygons.to_string(),
-                width = width.to_string(),
-                height = height.to_string(),
-                cases = cases.join(", "),
-                tries = tries.to_string()
-            ),
             Usage::OutputIsInput { folder } => words!(lang, "usage-output-is-input", path = path(folder)),
             Usage::OutputNameTooLong { path: p, max } => {
                 words!(lang, "usage-output-name-too-long", path = path(p), max = max.to_string())
@@ -461,36 +381,6 @@ impl Usage {
                     more = files.len().saturating_sub(5)
                 )
             }
-            Usage::CompareGpuPlainOnly => words!(lang, "usage-compare-gpu-plain"),
-            Usage::NoGpu { reason } => words!(lang, "usage-no-gpu", reason = reason.as_str()),
-            Usage::NoScanlines { index, name, why } => {
-                words!(
-                    lang,
-                    "usage-no-scanlines",
-                    polygon = crate::words::polygon_label(lang, "polygon-name", *index, name),
-                    why = why
-                )
-            }
-            Usage::ScanlineNotReached { index, name, row, rows } => {
-                let reach = words!(
-                    lang,
-                    "step-not-reach",
-                    polygon = crate::words::polygon_label(lang, "polygon-name", *index, name),
-                    scanline = words!(lang, "scanline", y = crate::words::localize_decimal(lang, format!("{row}.5")))
-                );
-                match rows {
-                    Some((first, last)) => {
-                        words!(
-                            lang,
-                            "usage-scanline-rows",
-                            reach = reach,
-                            first = first.to_string(),
-                            last = last.to_string()
-                        )
-                    }
-                    None => words!(lang, "usage-scanline-no-rows", reach = reach),
-                }
-            }
         }
     }
 }
@@ -500,8 +390,25 @@ impl Usage {
 pub enum PolygonProblem {
     /// Its vertices (count, range, planarity).
     Geometry(GeometryError),
-    /// Anything else, said in words.
-    Other(String),
+    /// Its opacity (written as a number) lies outside 0 … 1.
+    Opacity {
+        /// The opacity, as a fraction.
+        alpha: String,
+    },
+    /// Four numbers among three-number vertices, that read as a decimal
+    /// comma: `[1, 2, 9, 5]` for `[1, 2, 9.5]`.
+    DecimalComma {
+        /// The vertex as written, `[1, 2, 9, 5]`.
+        written: String,
+        /// The comma's numbers, `9,5`.
+        comma: String,
+        /// The vertex meant, `[1, 2, 9.5]`.
+        meant: String,
+    },
+    /// Three-number vertices mixed with clip-space `[x, y, z, w]` ones.
+    ClipSpaceMixed,
+    /// Clip-space vertices in a scene with a window or the perspective effect.
+    ClipSpaceAlone,
     /// Its value does not fit the framebuffer.
     ValueTooWide {
         /// The value given.
@@ -516,7 +423,16 @@ impl PolygonProblem {
     pub fn message(&self, lang: Lang) -> String {
         match self {
             PolygonProblem::Geometry(error) => error.message(lang),
-            PolygonProblem::Other(message) => message.to_string(),
+            PolygonProblem::Opacity { alpha } => words!(lang, "polygon-opacity", alpha = alpha.as_str()),
+            PolygonProblem::DecimalComma { written, comma, meant } => words!(
+                lang,
+                "vertex-decimal-comma",
+                written = written.as_str(),
+                comma = comma.as_str(),
+                meant = meant.as_str()
+            ),
+            PolygonProblem::ClipSpaceMixed => words!(lang, "clip-space-mixed"),
+            PolygonProblem::ClipSpaceAlone => words!(lang, "clip-space-alone"),
             PolygonProblem::ValueTooWide { value, frame_bits } => words!(
                 lang,
                 "polygon-value-too-wide",
@@ -576,6 +492,7 @@ impl Error {
                 problem = problem.message(lang)
             ),
             Error::Usage(usage) => usage.message(lang),
+            Error::Refused(refusal) => refusal.message(lang),
             Error::Answer { path, message } => format!("{}: {message}", shown_path(path)),
         }
     }

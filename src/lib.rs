@@ -156,7 +156,7 @@ pub use door::{
     read_text_with, same_folder, write_fresh,
 };
 pub use effects::{accuracy, antialias, arith, variants};
-pub use error::{Error, FileKind, PolygonOrigin, PolygonProblem, Task, Usage};
+pub use error::{Error, FileKind, PolygonOrigin, PolygonProblem, Refusal, Task, Usage};
 pub use numbers::{
     Exact, NumberError, Q, decimal, exact_and_decimal, fraction, parse_exact, parse_number, short, to_f64,
 };

@@ -35,7 +35,7 @@ pub fn run(lang: zsim::Lang, args: &SpeedArgs, out: &mut dyn Write) -> Result<Fi
     };
     let scene = Scene::load(lang, &args.scene)?;
     let threads = args.threads as usize;
-    let race = zsim::race::race(lang, &scene, args.pairs as usize, args.tile, threads)?;
+    let race = zsim::race::race(&scene, args.pairs as usize, args.tile, threads)?;
     let text = race.report(lang, &zsim::shown_path(&args.scene), &lp_threads);
     emit(out, &text)?;
     Ok(Finish::Ok)

@@ -15,6 +15,62 @@ use zsim::{Scene, Stop};
 
 use super::{Failure, Finish, emit};
 
+/// A stop `--polygon` and `--scanline` ask for that the scene does not have.
+#[derive(Debug)]
+enum Unreached {
+    /// The polygon is not drawn (culled, edge-on, degenerate, outside the view).
+    NotDrawn {
+        /// 0-based polygon index.
+        index: usize,
+        /// Its name.
+        name: String,
+        /// Why it is not drawn.
+        fate: zsim::Fate,
+    },
+    /// The polygon does not reach the row.
+    Row {
+        /// 0-based polygon index.
+        index: usize,
+        /// Its name.
+        name: String,
+        /// The row asked for.
+        row: u32,
+        /// The first and last rows it reaches, if any.
+        rows: Option<(u32, u32)>,
+    },
+}
+
+impl zsim::Refusal for Unreached {
+    fn message(&self, lang: zsim::Lang) -> String {
+        match self {
+            Unreached::NotDrawn { index, name, fate } => zsim::words!(
+                lang,
+                "usage-no-scanlines",
+                polygon = zsim::polygon_label(lang, "polygon-name", *index, name),
+                why = fate_text(lang, *fate).unwrap_or_default()
+            ),
+            Unreached::Row { index, name, row, rows } => {
+                let reach = zsim::words!(
+                    lang,
+                    "step-not-reach",
+                    polygon = zsim::polygon_label(lang, "polygon-name", *index, name),
+                    scanline = zsim::words!(lang, "scanline", y = zsim::localize_decimal(lang, format!("{row}.5")))
+                );
+                match rows {
+                    Some((first, last)) => zsim::words!(
+                        lang,
+                        "usage-scanline-rows",
+                        reach = reach,
+                        first = first.to_string(),
+                        last = last.to_string()
+                    ),
+                    None => zsim::words!(lang, "usage-scanline-no-rows", reach = reach),
+                }
+            }
+        }
+    }
+}
+
 /// Arguments of `zsim step`.
 #[derive(Debug, Args)]
 pub struct StepArgs {
@@ -81,11 +137,11 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
             let rows = trace.scanlines.first().zip(trace.scanlines.last()).map(|(first, last)| (first.row, last.row));
             (trace.fate, rows, trace.scanlines.iter().position(|r| r.row == row))
         });
-        if let Some(text) = fate_text(lang, fate) {
-            return Err(Error::from(zsim::Usage::NoScanlines { index: polygon, name, why: text }).into());
+        if fate_text(lang, fate).is_some() {
+            return Err(Error::from(Unreached::NotDrawn { index: polygon, name, fate }).into());
         }
         let Some(scanline) = scanline else {
-            return Err(Error::from(zsim::Usage::ScanlineNotReached { index: polygon, name, row, rows }).into());
+            return Err(Error::from(Unreached::Row { index: polygon, name, row, rows }).into());
         };
         let stop = Stop { polygon, scanline };
         if args.quiz.is_none() {

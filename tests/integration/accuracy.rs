@@ -84,7 +84,11 @@ fn run_takes_every_arithmetic_mode() {
     );
     let run = zsim(&["run", "examples/section.json", "--arith", "f32"]);
     assert_eq!(run.code, 2);
-    assert!(run.stderr.contains("--arith f32 simulates the plain algorithm with the book's rules"), "{}", run.stderr);
+    assert!(
+        run.stderr.contains("f32 arithmetic simulates the plain algorithm with the book's rules; this scene asks for other rules or per-pixel effects, which exact arithmetic draws"),
+        "{}",
+        run.stderr
+    );
     let run = zsim(&["run", "examples/rogers.json", "--arith", "f16"]);
     assert_eq!(run.code, 2);
 }

@@ -287,3 +287,27 @@ fn no_comment_names_a_date_a_commit_or_a_machine() {
     }
     assert!(found.is_empty(), "{found:#?}");
 }
+
+/// The errors of the low floor (`src/error.rs`) are facts of the scene, the
+/// files and the answers, shown by every front end alike: neither the file
+/// nor a message it words names a command-line flag (the command line's own
+/// refusals live with it, as `zsim::Refusal`s of their own).
+#[test]
+fn the_low_floors_errors_name_no_command_line_flag() {
+    let text = std::fs::read_to_string(src().join("error.rs")).unwrap();
+    let flag = |s: &str| s.match_indices("--").any(|(at, _)| s[at + 2..].starts_with(|c: char| c.is_ascii_lowercase()));
+    let named: Vec<&str> = text.lines().filter(|line| flag(line)).collect();
+    assert!(named.is_empty(), "{named:?}");
+    let english: String = std::fs::read_dir(src().join("words/en"))
+        .unwrap()
+        .map(|entry| std::fs::read_to_string(entry.unwrap().path()).unwrap())
+        .collect();
+    let keys: Vec<&str> = text.split('"').skip(1).step_by(2).filter(|k| k.contains('-') && !k.contains(' ')).collect();
+    assert!(keys.len() > 30, "{keys:?}");
+    for key in keys {
+        let message = english.lines().find(|line| line.starts_with(&format!("{key} = ")));
+        if let Some(message) = message {
+            assert!(!flag(message), "{message}");
+        }
+    }
+}

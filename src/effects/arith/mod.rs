@@ -29,7 +29,7 @@ mod float;
 use edge::*;
 use float::*;
 
-use crate::error::{Error, PolygonOrigin, PolygonProblem, Usage};
+use crate::error::{Error, PolygonOrigin, PolygonProblem, Refusal};
 
 use crate::numbers::{Exact, to_f64};
 use crate::raster::depth::depth_at;
@@ -106,6 +106,26 @@ impl fmt::Display for Arith {
     }
 }
 
+/// A scene an inexact mode cannot simulate.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Unsupported {
+    /// Other rules than the book's, per-pixel effects or antialiasing.
+    OtherRules(Arith),
+    /// A depth test other than greater and less.
+    OtherTest(Arith, crate::raster::depth::DepthTest),
+}
+
+impl Refusal for Unsupported {
+    fn message(&self, lang: Lang) -> String {
+        match self {
+            Unsupported::OtherRules(arith) => words!(lang, "usage-arith-plain-rules", arith = arith.to_string()),
+            Unsupported::OtherTest(arith, test) => {
+                words!(lang, "usage-arith-greater-or-less", arith = arith.to_string(), test = test.name())
+            }
+        }
+    }
+}
+
 /// Refuses scenes an inexact mode cannot simulate: other rules than the
 /// book's, or per-pixel effects and antialiasing.
 pub fn check_supported(scene: &Scene, arith: Arith) -> Result<(), Error> {
@@ -113,11 +133,10 @@ pub fn check_supported(scene: &Scene, arith: Arith) -> Result<(), Error> {
         return Ok(());
     }
     if scene.rules != Rules::preset(Preset::Rogers) || scene.has_pixel_effects() || scene.effects.antialias.is_some() {
-        return Err(Usage::ArithNeedsPlainRules { arith: arith.to_string() }.into());
+        return Err(Unsupported::OtherRules(arith).into());
     }
     if scene.depth_test.equal_passes() || !scene.depth_test.compares() {
-        let test = scene.depth_test.name().to_string();
-        return Err(Usage::ArithNeedsGreaterOrLess { arith: arith.to_string(), test }.into());
+        return Err(Unsupported::OtherTest(arith, scene.depth_test).into());
     }
     Ok(())
 }

@@ -29,6 +29,9 @@ pub enum GpuError {
     NoVulkan(String),
     /// This zsim was built without the cargo feature that API needs.
     NotBuilt(&'static str),
+    /// A scene with per-pixel effects or antialiasing: the GPU is compared
+    /// on the plain algorithm only.
+    PlainOnly,
     /// EGL, OpenGL or Vulkan refused a step.
     Refused {
         /// The step.
@@ -38,6 +41,12 @@ pub enum GpuError {
     },
 }
 
+impl crate::error::Refusal for GpuError {
+    fn message(&self, lang: Lang) -> String {
+        GpuError::message(self, lang)
+    }
+}
+
 impl GpuError {
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
@@ -45,6 +54,7 @@ impl GpuError {
             GpuError::NoLibrary(reason) => words!(lang, "gpu-no-library", reason = reason.as_str()),
             GpuError::NoVulkan(reason) => words!(lang, "gpu-no-vulkan", reason = reason.as_str()),
             GpuError::NotBuilt(feature) => words!(lang, "gpu-not-built", feature = *feature),
+            GpuError::PlainOnly => words!(lang, "usage-compare-gpu-plain"),
             GpuError::Refused { step, reason } => words!(lang, "gpu-refused", step = *step, reason = reason.as_str()),
         }
     }
@@ -174,10 +184,9 @@ pub fn triangles(scene: &crate::scene::Scene) -> Triangles {
 /// API's preset. Only the plain algorithm is compared (no per-pixel effects,
 /// no antialiasing).
 pub fn compare(lang: Lang, scene: &crate::scene::Scene, api: GpuApi) -> Result<GpuComparison, crate::error::Error> {
-    use crate::error::Usage;
     use crate::rules::{Preset, Rules};
     if scene.has_pixel_effects() || scene.effects.antialias.is_some() {
-        return Err(Usage::CompareGpuPlainOnly.into());
+        return Err(GpuError::PlainOnly.into());
     }
     let preset = match api {
         GpuApi::Gl => Preset::Gl,
@@ -200,7 +209,7 @@ pub fn compare(lang: Lang, scene: &crate::scene::Scene, api: GpuApi) -> Result<G
     let (book, in_api) = (shows(scene.rules), shows(api_rules));
     let (width, height) = (scene.width, scene.height);
     let Triangles { triangles, margin, not_convex } = triangles(scene);
-    let no_gpu = |error: GpuError| Usage::NoGpu { reason: error.message(lang) };
+    let no_gpu = crate::error::Error::from;
     let (renderer, picture) = match api {
         GpuApi::Gl => {
             let gl = Gl::open().map_err(no_gpu)?;

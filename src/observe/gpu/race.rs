@@ -9,7 +9,7 @@
 
 use std::time::{Duration, Instant};
 
-use crate::error::{Error, Usage};
+use crate::error::Error;
 use crate::observe::gpu::{Gl, GpuError, Triangles, triangles};
 use crate::scene::Scene;
 use crate::simulate::events::Fate;
@@ -145,17 +145,11 @@ fn median(times: &[Duration]) -> Duration {
 /// this thread). The GPU draws with the scene's depth test into a
 /// framebuffer of the raster's size (plus the margin that keeps vertices
 /// unclipped, see [`Triangles`]).
-pub fn race(
-    lang: crate::words::Lang,
-    scene: &Scene,
-    pairs: usize,
-    tile: Option<u32>,
-    threads: usize,
-) -> Result<Race, Error> {
+pub fn race(scene: &Scene, pairs: usize, tile: Option<u32>, threads: usize) -> Result<Race, Error> {
     if scene.has_pixel_effects() || scene.effects.antialias.is_some() {
-        return Err(Usage::CompareGpuPlainOnly.into());
+        return Err(GpuError::PlainOnly.into());
     }
-    let no_gpu = |error: GpuError| Error::from(Usage::NoGpu { reason: error.message(lang) });
+    let no_gpu = Error::from;
     let Triangles { triangles, margin, .. } = triangles(scene);
     let polygons = (0..scene.polygons.len()).filter(|&i| crate::simulate::setup::fate(scene, i) == Fate::Drawn).count();
     let skipped = scene.polygons.len() - polygons;

@@ -55,7 +55,7 @@ fn plain(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
     if let Ok(file) = SceneFile::<&serde_json::value::RawValue>::deserialize(&mut deserializer)
         && deserializer.end().is_ok()
     {
-        let made = file.validate(lang, path, |text, index, frame| from_text(lang, text.get(), index, frame, path));
+        let made = file.validate(lang, path, |text, index, frame| from_text(text.get(), index, frame, path));
         match made {
             Ok(scene) => return Ok(scene),
             Err(Unmade::Invalid(error)) => return Err(*error),
@@ -81,7 +81,7 @@ fn plain(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
         message: json_message(lang, &error),
     })?;
     file.validate(lang, path, |polygon, index, frame| {
-        polygon.validate(lang, index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
+        polygon.validate(index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
     })
     .map_err(|unmade| match unmade {
         Unmade::Invalid(error) => *error,
@@ -606,12 +606,12 @@ fn after_space(bytes: &[u8], at: usize) -> usize {
 
 /// The polygon whose text is `text`, made; [`Unmade::Unread`] when the text
 /// does not read as a polygon.
-fn from_text(lang: Lang, text: &str, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Unmade> {
+fn from_text(text: &str, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Unmade> {
     let polygon = match strict::polygon(text) {
         Some(polygon) => polygon,
         None => serde_json::from_str::<PolygonFile>(text).map_err(|_| Unmade::Unread)?,
     };
-    polygon.validate(lang, index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
+    polygon.validate(index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
 }
 
 /// What a polygon's validation needs to know of the scene.
@@ -626,7 +626,7 @@ struct Frame {
 }
 
 impl PolygonFile {
-    fn validate(self, lang: Lang, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
+    fn validate(self, index: usize, frame: &Frame, path: &Path) -> Result<Polygon, Error> {
         // Names reach terminals in every report: control characters are kept escaped (`\u{1b}`).
         let name = match self.name {
             None => crate::words::default_name(index),
@@ -658,7 +658,7 @@ impl PolygonFile {
         if let Some(alpha) = opacity
             && (alpha < Q::from_integer(0) || alpha > Q::from_integer(1))
         {
-            return Err(fail(&name, PolygonProblem::Other(words!(lang, "polygon-opacity", alpha = fraction(alpha)))));
+            return Err(fail(&name, PolygonProblem::Opacity { alpha: fraction(alpha) }));
         }
         let VerticesFile { xyz: given, clip: clip_space } = self.vertices;
         let count = given.len() + clip_space.len();
@@ -668,14 +668,12 @@ impl PolygonFile {
             // Four numbers where most vertices have three: a decimal comma, when it reads as one.
             let odd_ones_out = clip_space.len() < given.len();
             let problem = match clip_space.first().filter(|_| odd_ones_out).and_then(decimal_comma) {
-                Some((written, comma, meant)) => {
-                    words!(lang, "vertex-decimal-comma", written = written, comma = comma, meant = meant)
-                }
-                None => words!(lang, "clip-space-mixed"),
+                Some((written, comma, meant)) => PolygonProblem::DecimalComma { written, comma, meant },
+                None => PolygonProblem::ClipSpaceMixed,
             };
-            return Err(fail(&name, PolygonProblem::Other(problem)));
+            return Err(fail(&name, problem));
         } else if frame.window.is_some() || frame.perspective.is_some() {
-            return Err(fail(&name, PolygonProblem::Other(words!(lang, "clip-space-alone"))));
+            return Err(fail(&name, PolygonProblem::ClipSpaceAlone));
         } else {
             let value = self.value as u32;
             return match crate::scene::clip_space::to_raster(&clip_space, frame.size.0, frame.size.1, frame.depth_max) {

@@ -76,7 +76,7 @@ pub(super) fn read_in(lang: Lang, text: &str, path: &Path, piece_bytes: usize) -
             End::Failed => return None,
         }
     }
-    with_made(scene, &frame, polygons, |text, index, frame| from_text(lang, text, index, frame, path)).ok()
+    with_made(scene, &frame, polygons, |text, index, frame| from_text(text, index, frame, path)).ok()
 }
 
 /// The settings written before the `"polygons"` key, as an object of their

@@ -11,7 +11,7 @@ use crate::words::Lang;
 use std::collections::BTreeSet;
 use std::fmt;
 
-use crate::error::Usage;
+use crate::error::Refusal;
 use crate::numbers::{Q, fraction, short_in_files};
 use crate::scene::random::SplitMix64;
 use crate::scene::{Scene, max_for_bits};
@@ -63,12 +63,12 @@ impl HardCase {
     }
 
     /// Reads a comma-separated list of case names.
-    pub fn parse_list(text: &str) -> Result<Vec<HardCase>, Usage> {
+    pub fn parse_list(text: &str) -> Result<Vec<HardCase>, Unfit> {
         let mut cases = Vec::new();
         for name in text.split(',').map(str::trim).filter(|n| !n.is_empty()) {
             let case = HardCase::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| {
                 let names = HardCase::ALL.iter().map(|c| c.name().to_string()).collect();
-                Usage::NotAHardCase { name: name.to_string(), names }
+                Unfit::NotAHardCase { name: name.to_string(), names }
             })?;
             if !cases.contains(&case) {
                 cases.push(case);
@@ -314,21 +314,87 @@ pub struct Exercise {
     pub tries: usize,
 }
 
+/// An exercise that cannot be made as asked.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Unfit {
+    /// A case name that is not a hard case.
+    NotAHardCase {
+        /// The name given.
+        name: String,
+        /// The names of the hard cases.
+        names: Vec<String>,
+    },
+    /// A raster side outside 4 … 64.
+    Size {
+        /// The width given.
+        width: u32,
+        /// The height given.
+        height: u32,
+    },
+    /// A polygon count outside 1 … 8.
+    Polygons {
+        /// The count given.
+        count: usize,
+    },
+    /// Buffers too deep for work by hand.
+    Bits,
+    /// `hidden` or `intersecting` asked of one polygon.
+    NeedsTwoPolygons,
+    /// No candidate scene showed every case asked for.
+    NotFound {
+        /// Polygons asked for.
+        polygons: usize,
+        /// The raster's width.
+        width: u32,
+        /// The raster's height.
+        height: u32,
+        /// The cases asked for.
+        cases: Vec<String>,
+        /// Candidates tried.
+        tries: usize,
+    },
+}
+
+impl Refusal for Unfit {
+    fn message(&self, lang: Lang) -> String {
+        match self {
+            Unfit::NotAHardCase { name, names } => {
+                words!(lang, "usage-not-a-hard-case", name = name.as_str(), names = names.join(", "))
+            }
+            Unfit::Size { width, height } => {
+                words!(lang, "usage-exercise-size", width = width.to_string(), height = height.to_string())
+            }
+            Unfit::Polygons { count } => words!(lang, "usage-exercise-polygons", count = count.to_string()),
+            Unfit::Bits => words!(lang, "usage-exercise-bits"),
+            Unfit::NeedsTwoPolygons => words!(lang, "usage-exercise-two-polygons"),
+            Unfit::NotFound { polygons, width, height, cases, tries } => words!(
+                lang,
+                "usage-exercise-not-found",
+                polygons = polygons.to_string(),
+                width = width.to_string(),
+                height = height.to_string(),
+                cases = cases.join(", "),
+                tries = tries.to_string()
+            ),
+        }
+    }
+}
+
 /// Makes an exercise: candidates drawn from the seed's sequence, the first
 /// whose trace shows every asked case kept.
-pub fn make(lang: Lang, spec: &Spec) -> Result<Exercise, Usage> {
+pub fn make(lang: Lang, spec: &Spec) -> Result<Exercise, Unfit> {
     if spec.width < 4 || spec.height < 4 || spec.width > 64 || spec.height > 64 {
-        return Err(Usage::ExerciseSize { width: spec.width, height: spec.height });
+        return Err(Unfit::Size { width: spec.width, height: spec.height });
     }
     if !(1..=8).contains(&spec.polygons) {
-        return Err(Usage::ExercisePolygons { count: spec.polygons });
+        return Err(Unfit::Polygons { count: spec.polygons });
     }
     if !(1..=8).contains(&spec.frame_bits) || !(1..=16).contains(&spec.depth_bits) {
-        return Err(Usage::ExerciseBits);
+        return Err(Unfit::Bits);
     }
     let two = spec.hard.iter().any(|c| matches!(c, HardCase::Hidden | HardCase::Intersecting));
     if two && spec.polygons < 2 {
-        return Err(Usage::ExerciseNeedsTwoPolygons);
+        return Err(Unfit::NeedsTwoPolygons);
     }
     let mut rng = SplitMix64::new(spec.seed);
     for tries in 1..=TRIES {
@@ -342,7 +408,7 @@ pub fn make(lang: Lang, spec: &Spec) -> Result<Exercise, Usage> {
             return Ok(Exercise { json, scene, found, tries });
         }
     }
-    Err(Usage::ExerciseNotFound {
+    Err(Unfit::NotFound {
         polygons: spec.polygons,
         width: spec.width,
         height: spec.height,
@@ -455,7 +521,7 @@ mod tests {
             HardCase::parse_list("tricky")
                 .unwrap_err()
                 .message(Lang::En)
-                .starts_with("--hard: \"tricky\" is not a hard case: vertex-on-scanline")
+                .starts_with("\"tricky\" is not a hard case: vertex-on-scanline")
         );
     }
 

@@ -3,8 +3,8 @@
 # written as numbers; spaces at either end are kept with string literals ({ " and " }).
 
 # Requests that do not fit the command or the scene.
-usage-arith-plain-rules = --arith { $arith } simulates the plain algorithm with the book's rules; this scene asks for other rules or per-pixel effects (use --arith exact)
-usage-arith-greater-or-less = --arith { $arith } simulates the depth tests greater and less; this scene asks for { $test } (use --arith exact)
+usage-arith-plain-rules = { $arith } arithmetic simulates the plain algorithm with the book's rules; this scene asks for other rules or per-pixel effects, which exact arithmetic draws
+usage-arith-greater-or-less = { $arith } arithmetic simulates the depth tests greater and less; this scene asks for { $test }, which exact arithmetic draws
 usage-arith-plain-loop = --arith other than exact runs the plain z-buffer loop; drop --segments and --order
 usage-no-polygon-numbered = there is no polygon { $number }: the scene has { $count } (number them from 1)
 usage-no-polygon-named = there is no polygon named "{ $name }": the scene has { $names }
@@ -26,11 +26,11 @@ usage-memory-too-large = the raster is too large to count (more than 2^50 cells)
 usage-random-count = --count { $count }: at most { $max } triangles (a scene that large takes about 10 GB to read back)
 usage-random-bits = --frame-bits and --depth-bits take 1 to 32
 usage-random-side = --width and --height take 1 to { $max }
-usage-not-a-hard-case = --hard: "{ $name }" is not a hard case: { $names }
-usage-exercise-size = --size { $width }x{ $height }: an exercise is 4 … 64 pixels on a side
-usage-exercise-polygons = --polygons { $count }: an exercise has 1 … 8 polygons
-usage-exercise-bits = --frame-bits takes 1 … 8 and --depth-bits 1 … 16 for an exercise done by hand
-usage-exercise-two-polygons = hidden and intersecting need two polygons or more (--polygons 2)
+usage-not-a-hard-case = "{ $name }" is not a hard case: { $names }
+usage-exercise-size = an exercise is 4 … 64 pixels on a side, not { $width }×{ $height }
+usage-exercise-polygons = an exercise has 1 … 8 polygons, not { $count }
+usage-exercise-bits = an exercise done by hand has a framebuffer of 1 … 8 bits and a z-buffer of 1 … 16
+usage-exercise-two-polygons = hidden and intersecting need two polygons or more
 usage-exercise-not-found = no scene of { $polygons } polygons on { $width }×{ $height } with all of { $cases } came up in { $tries } tries; ask for fewer cases, more polygons or a larger raster
 usage-inside-needs-pixel-order = --inside chooses the point-in-polygon test of --order pixels; add --order pixels
 usage-tiles-need-format-none = --tile and --threads apply to --format none, --final and --after (otherwise the state after each polygon is shown, drawn in order)
@@ -44,8 +44,7 @@ usage-output-would-replace = { $path } already holds { $files }{ $more ->
    *[other] { " " }and { $more } more
 }: zsim replaces no file; choose a new or empty folder
 usage-tile-zero = --tile takes 1 or more pixels (0 would draw nothing)
-usage-compare-gpu-plain = --compare-gpu compares the plain algorithm: this scene asks for per-pixel effects or antialiasing
-usage-no-gpu = --compare-gpu: { $reason }
+usage-compare-gpu-plain = the GPU is compared on the plain algorithm: this scene asks for per-pixel effects or antialiasing
 usage-pixel-not-xy = "{ $text }" is not X,Y (for example 20,15)
 usage-pixel-coordinate = "{ $text }" is not a pixel coordinate
 usage-arith = "{ $text }" is not an arithmetic mode: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K (K from 0 to 24)

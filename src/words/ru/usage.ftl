@@ -2,8 +2,8 @@
 # Each message is one sentence or phrase; the facts arrive as arguments already
 # written as numbers; spaces at either end are kept with string literals ({ " and " }).
 
-usage-arith-plain-rules = --arith { $arith } моделирует простой алгоритм по правилам учебника; эта сцена требует других правил или попиксельных эффектов (используйте --arith exact)
-usage-arith-greater-or-less = --arith { $arith } моделирует тесты глубины greater и less; эта сцена требует { $test } (используйте --arith exact)
+usage-arith-plain-rules = арифметика { $arith } моделирует простой алгоритм по правилам учебника; эта сцена требует других правил или попиксельных эффектов, которые рисует точная арифметика
+usage-arith-greater-or-less = арифметика { $arith } моделирует тесты глубины greater и less; эта сцена требует { $test }, который рисует точная арифметика
 usage-arith-plain-loop = --arith, отличный от exact, выполняет простой цикл z-буфера; уберите --segments и --order
 usage-no-polygon-numbered = многоугольника { $number } нет: в сцене их { $count } (нумерация с 1)
 usage-no-polygon-named = многоугольника с именем «{ $name }» нет: в сцене есть { $names }
@@ -25,11 +25,11 @@ usage-memory-too-large = растр слишком велик для подсч�
 usage-random-count = --count { $count }: не более { $max } треугольников (сцену такого размера читать обратно около 10 ГБ)
 usage-random-bits = --frame-bits и --depth-bits принимают от 1 до 32
 usage-random-side = --width и --height принимают от 1 до { $max }
-usage-not-a-hard-case = --hard: «{ $name }» — не трудный случай: { $names }
-usage-exercise-size = --size { $width }x{ $height }: упражнение имеет от 4 до 64 пикселов по стороне
-usage-exercise-polygons = --polygons { $count }: в упражнении от 1 до 8 многоугольников
-usage-exercise-bits = для упражнения вручную --frame-bits принимает от 1 до 8, а --depth-bits от 1 до 16
-usage-exercise-two-polygons = для hidden и intersecting нужны два многоугольника или больше (--polygons 2)
+usage-not-a-hard-case = «{ $name }» — не трудный случай: { $names }
+usage-exercise-size = упражнение имеет от 4 до 64 пикселов по стороне, а не { $width }×{ $height }
+usage-exercise-polygons = в упражнении от 1 до 8 многоугольников, а не { $count }
+usage-exercise-bits = в упражнении вручную буфер кадра имеет от 1 до 8 битов, а z-буфер от 1 до 16
+usage-exercise-two-polygons = для hidden и intersecting нужны два многоугольника или больше
 usage-exercise-not-found = за { $tries } попыток не нашлось сцены из { $polygons } многоугольников на растре { $width }×{ $height } со всеми случаями { $cases }; попросите меньше случаев, больше многоугольников или больший растр
 usage-inside-needs-pixel-order = --inside выбирает тест «точка в многоугольнике» для --order pixels; добавьте --order pixels
 usage-tiles-need-format-none = --tile и --threads относятся к --format none, --final и --after (иначе показывается состояние после каждого многоугольника, нарисованного по порядку)
@@ -43,8 +43,7 @@ usage-output-would-replace = в { $path } уже есть { $files }{ $more ->
    *[other] { " " }и ещё { $more }
 }: zsim не заменяет файлы; выберите новую или пустую папку
 usage-tile-zero = --tile принимает 1 пиксел и больше (с 0 ничего не рисуется)
-usage-compare-gpu-plain = --compare-gpu сравнивает простой алгоритм: эта сцена требует попиксельных эффектов или сглаживания
-usage-no-gpu = --compare-gpu: { $reason }
+usage-compare-gpu-plain = с GPU сравнивается простой алгоритм: эта сцена требует попиксельных эффектов или сглаживания
 usage-pixel-not-xy = «{ $text }» — не X,Y (например, 20,15)
 usage-pixel-coordinate = «{ $text }» — не координата пиксела
 usage-arith = «{ $text }» — не режим арифметики: `exact`, `f64`, `f64-incremental`, `f32-incremental`, `f32`, `f32-edge` или `fixed:K` (K от 0 до 24)

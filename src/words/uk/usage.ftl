@@ -2,8 +2,8 @@
 # Each message is one sentence or phrase; the facts arrive as arguments already
 # written as numbers; spaces at either end are kept with string literals ({ " and " }).
 
-usage-arith-plain-rules = --arith { $arith } моделює простий алгоритм за правилами підручника; ця сцена потребує інших правил або попіксельних ефектів (використайте --arith exact)
-usage-arith-greater-or-less = --arith { $arith } моделює тести глибини greater і less; ця сцена потребує { $test } (використайте --arith exact)
+usage-arith-plain-rules = арифметика { $arith } моделює простий алгоритм за правилами підручника; ця сцена потребує інших правил або попіксельних ефектів, які малює точна арифметика
+usage-arith-greater-or-less = арифметика { $arith } моделює тести глибини greater і less; ця сцена потребує { $test }, який малює точна арифметика
 usage-arith-plain-loop = --arith, відмінний від exact, виконує простий цикл z-буфера; приберіть --segments і --order
 usage-no-polygon-numbered = багатокутника { $number } немає: у сцені їх { $count } (нумерація з 1)
 usage-no-polygon-named = багатокутника з назвою «{ $name }» немає: у сцені є { $names }
@@ -25,11 +25,11 @@ usage-memory-too-large = растр завеликий для підрахунк
 usage-random-count = --count { $count }: не більше { $max } трикутників (сцену такого розміру читати назад близько 10 ГБ)
 usage-random-bits = --frame-bits і --depth-bits приймають від 1 до 32
 usage-random-side = --width і --height приймають від 1 до { $max }
-usage-not-a-hard-case = --hard: «{ $name }» — не складний випадок: { $names }
-usage-exercise-size = --size { $width }x{ $height }: вправа має від 4 до 64 пікселів на сторону
-usage-exercise-polygons = --polygons { $count }: у вправі від 1 до 8 багатокутників
-usage-exercise-bits = для вправи вручну --frame-bits приймає від 1 до 8, а --depth-bits від 1 до 16
-usage-exercise-two-polygons = для hidden та intersecting потрібні два багатокутники або більше (--polygons 2)
+usage-not-a-hard-case = «{ $name }» — не складний випадок: { $names }
+usage-exercise-size = вправа має від 4 до 64 пікселів на сторону, а не { $width }×{ $height }
+usage-exercise-polygons = у вправі від 1 до 8 багатокутників, а не { $count }
+usage-exercise-bits = у вправі вручну буфер кадру має від 1 до 8 бітів, а z-буфер від 1 до 16
+usage-exercise-two-polygons = для hidden та intersecting потрібні два багатокутники або більше
 usage-exercise-not-found = за { $tries } спроб не знайшлося сцени з { $polygons } багатокутників на растрі { $width }×{ $height } з усіма випадками { $cases }; попросіть менше випадків, більше багатокутників або більший растр
 usage-inside-needs-pixel-order = --inside вибирає тест «точка в багатокутнику» для --order pixels; додайте --order pixels
 usage-tiles-need-format-none = --tile і --threads стосуються --format none, --final і --after (інакше показується стан після кожного багатокутника, намальованого по черзі)
@@ -43,8 +43,7 @@ usage-output-would-replace = у { $path } вже є { $files }{ $more ->
    *[other] { " " }і ще { $more }
 }: zsim не замінює файли; виберіть нову або порожню теку
 usage-tile-zero = --tile приймає 1 піксель і більше (з 0 нічого не малюється)
-usage-compare-gpu-plain = --compare-gpu порівнює простий алгоритм: ця сцена потребує попіксельних ефектів або згладжування
-usage-no-gpu = --compare-gpu: { $reason }
+usage-compare-gpu-plain = з GPU порівнюється простий алгоритм: ця сцена потребує попіксельних ефектів або згладжування
 usage-pixel-not-xy = «{ $text }» — не X,Y (наприклад, 20,15)
 usage-pixel-coordinate = «{ $text }» — не координата пікселя
 usage-arith = «{ $text }» — не режим арифметики: `exact`, `f64`, `f64-incremental`, `f32-incremental`, `f32`, `f32-edge` або `fixed:K` (K від 0 до 24)

@@ -2,8 +2,8 @@
 # Each message is one sentence or phrase; the facts arrive as arguments already
 # written as numbers; spaces at either end are kept with string literals ({ " and " }).
 
-usage-arith-plain-rules = --arith { $arith } 按教材规则模拟基本算法；此场景要求其他规则或逐像素效果（请用 --arith exact）
-usage-arith-greater-or-less = --arith { $arith } 只模拟 greater 和 less 两种深度测试；此场景要求 { $test }（请用 --arith exact）
+usage-arith-plain-rules = { $arith } 算术按教材规则模拟基本算法；此场景要求其他规则或逐像素效果，这些由精确算术绘制
+usage-arith-greater-or-less = { $arith } 算术只模拟 greater 和 less 两种深度测试；此场景要求 { $test }，它由精确算术绘制
 usage-arith-plain-loop = exact 以外的 --arith 运行基本的 z 缓冲循环；请去掉 --segments 和 --order
 usage-no-polygon-numbered = 没有多边形 { $number }：场景共有 { $count } 个（从 1 开始编号）
 usage-no-polygon-named = 没有名为“{ $name }”的多边形：场景中有 { $names }
@@ -25,11 +25,11 @@ usage-memory-too-large = 光栅太大，无法计数（超过 2^50 个单元）
 usage-random-count = --count { $count }：最多 { $max } 个三角形（这么大的场景读回约需 10 GB）
 usage-random-bits = --frame-bits 和 --depth-bits 取 1 到 32
 usage-random-side = --width 和 --height 取 1 到 { $max }
-usage-not-a-hard-case = --hard：“{ $name }”不是难点情形：{ $names }
-usage-exercise-size = --size { $width }x{ $height }：练习的每边为 4 … 64 个像素
-usage-exercise-polygons = --polygons { $count }：练习有 1 … 8 个多边形
-usage-exercise-bits = 手算练习中 --frame-bits 取 1 … 8，--depth-bits 取 1 … 16
-usage-exercise-two-polygons = hidden 和 intersecting 需要两个或更多多边形（--polygons 2）
+usage-not-a-hard-case = “{ $name }”不是难点情形：{ $names }
+usage-exercise-size = 练习的每边为 4 … 64 个像素，而不是 { $width }×{ $height }
+usage-exercise-polygons = 练习有 1 … 8 个多边形，而不是 { $count }
+usage-exercise-bits = 手算练习中帧缓冲器取 1 … 8 位，z缓冲器取 1 … 16 位
+usage-exercise-two-polygons = hidden 和 intersecting 需要两个或更多多边形
 usage-exercise-not-found = 在 { $tries } 次尝试中没有出现 { $width }×{ $height } 上含 { $polygons } 个多边形且包含全部 { $cases } 的场景；请减少情形、增加多边形或加大光栅
 usage-inside-needs-pixel-order = --inside 选择 --order pixels 的点在多边形内测试；请加上 --order pixels
 usage-tiles-need-format-none = --tile 和 --threads 只适用于 --format none、--final 和 --after（否则按顺序显示每个多边形画完后的状态）
@@ -43,8 +43,7 @@ usage-output-would-replace = { $path } 中已有 { $files }{ $more ->
    *[other] { " " }另有 { $more } 个
 }：zsim 不替换任何文件；请选择新的或空的文件夹
 usage-tile-zero = --tile 取 1 个像素或以上（0 什么也画不出）
-usage-compare-gpu-plain = --compare-gpu 比较的是基本算法：此场景要求逐像素效果或抗锯齿
-usage-no-gpu = --compare-gpu：{ $reason }
+usage-compare-gpu-plain = 与 GPU 比较的是基本算法：此场景要求逐像素效果或抗锯齿
 usage-pixel-not-xy = “{ $text }”不是 X,Y（例如 20,15）
 usage-pixel-coordinate = “{ $text }”不是像素坐标
 usage-arith = “{ $text }”不是算术模式：`exact`、`f64`、`f64-incremental`、`f32-incremental`、`f32`、`f32-edge` 或 `fixed:K`（K 为 0 到 24）
