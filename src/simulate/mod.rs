@@ -1,18 +1,12 @@
 //! Simulate: the [`simulation::Simulation`] driver draws a scene polygon by
 //! polygon into the buffers (`buffer`) through the per-pixel stages the scene
-//! asks for (`stages`), telling an observer what happens (`events`); the
-//! plain loop writes the cells directly (`levels`), in tiles on several
-//! threads when nobody watches (`tiles`), small triangles by edge functions
-//! (`triangle`), both over one branch-free cell (`branch_free`), a span's
-//! cells four at a time where the processor has AVX2 (`lanes`). Imports:
-//! scene and the layers before it.
-mod branch_free;
+//! asks for (`stages`, whose `Plain::decide` is the book's rule), telling an
+//! observer what happens (`events`). The fast paths, each held to that rule
+//! by a named test, are in `fast` (its table says which is taken when).
+//! Imports: scene and the layers before it.
 pub mod buffer;
 pub mod events;
-mod lanes;
-mod levels;
+mod fast;
 pub mod setup;
 pub mod simulation;
 pub mod stages;
-mod tiles;
-mod triangle;

@@ -9,10 +9,10 @@ use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::Buffers;
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};
-use crate::simulate::levels::{InOrder, Levels, OnePolygon};
+use crate::simulate::fast::levels::{InOrder, Levels, OnePolygon};
+use crate::simulate::fast::tiles::{Cleared, TileStart, Tiles, Tiling, bins, pool};
 use crate::simulate::setup::{Stats, fate, prefetch_ahead};
 use crate::simulate::stages::{PixelStages, Plain, StageSet, WithEffects};
-use crate::simulate::tiles::{Cleared, TileStart, Tiles, Tiling, bins, pool};
 
 /// One polygon drawn, with its own counts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -51,6 +51,14 @@ impl Plain {
     }
 }
 
+impl Plain {
+    /// The plain stages on a quantized z-buffer: `test`, then the level
+    /// stored, at most `depth_max`.
+    pub fn quantized(test: DepthTest, depth_max: u32) -> Plain {
+        Plain { test, store: DepthStore::Quantized, depth_max }
+    }
+}
+
 impl PixelStages for Plain {
     fn plain_levels(&self) -> Option<(DepthTest, u32)> {
         (self.store == DepthStore::Quantized).then_some((self.test, self.depth_max))

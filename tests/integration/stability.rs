@@ -194,7 +194,14 @@ proptest! {
 /// A planar polygon of 3 to 6 vertices (convex, concave or self-crossing):
 /// z = z0 + sx·x + sy·y in the scene's units of quarters and sixths.
 fn planar_polygon() -> impl Strategy<Value = Vec<(i64, i64, i64)>> {
-    (prop::collection::vec((-4i64..(W as i64 * 4 + 4), -4i64..(H as i64 * 4 + 4)), 3..=6), 0i64..60, -2i64..3, -2i64..3)
+    planar_polygon_on(W, H, 60)
+}
+
+/// A planar polygon on a `width` × `height` raster, its depths from about
+/// `z0` (in sixths) sloping both ways.
+fn planar_polygon_on(width: u32, height: u32, z0: i64) -> impl Strategy<Value = Vec<(i64, i64, i64)>> {
+    let (x, y) = (-4i64..(i64::from(width) * 4 + 4), -4i64..(i64::from(height) * 4 + 4));
+    (prop::collection::vec((x, y), 3..=6), 0i64..z0.max(1), -2i64..3, -2i64..3)
         .prop_map(|(points, z0, sx, sy)| points.into_iter().map(|(x, y)| (x, y, z0 + sx * x + sy * y)).collect())
 }
 
@@ -232,6 +239,35 @@ proptest! {
     ) {
         // Every depth test: the unobserved loop's branch-free comparison against `DepthTest::passes`.
         let json = scene_json_with_test(&polygons, test);
+        every_path_agrees(&json, tile, threads, stop)?;
+    }
+
+    /// As [`every_path_draws_alike`], on rasters wider than a tile whose
+    /// spans reach 16 to 64 cells (the 64-bit lanes) and whose z-buffers hold
+    /// 16 to 30 bits (past the 32-bit lanes' 2^28).
+    #[test]
+    fn every_path_draws_alike_on_wide_rasters_and_deep_buffers(
+        (polygons, width, bits) in (24u32..72, prop::sample::select(vec![16u32, 27, 28, 29, 30]))
+            .prop_flat_map(|(width, bits)| {
+                let z0 = 6i64 << bits.min(40);
+                (prop::collection::vec(planar_polygon_on(width, 6, z0), 1..4), Just(width), Just(bits))
+            }),
+        tile in 1u32..40,
+        threads in 1usize..3,
+        test in prop::sample::select(vec!["greater", "less", "greater-equal", "less-equal"]),
+        stop in 0usize..3,
+    ) {
+        let json = scene_json_with_test(&polygons, test)
+            .replacen(&format!("\"width\": {W}, \"height\": {H}, \"depth_bits\": 4"), &format!("\"width\": {width}, \"height\": 6, \"depth_bits\": {bits}"), 1);
+        every_path_agrees(&json, tile, threads, stop)?;
+    }
+}
+
+/// The unobserved run, a watched run, tiled runs on `threads` threads and
+/// runs partly in order leave the same buffers and counts for the scene `json`.
+fn every_path_agrees(json: &str, tile: u32, threads: usize, stop: usize) -> Result<(), TestCaseError> {
+    {
+        let json = json.to_string();
         let Ok(scene) = Scene::from_json(zsim::Lang::En, &json, Path::new("prop.json")) else { return Ok(()) };
         let mut quiet = Simulation::new(&scene);
         quiet.finish(&mut Unobserved);
@@ -250,7 +286,15 @@ proptest! {
         let (mut in_order, mut partly) = (Simulation::new(&scene), Simulation::new(&scene));
         in_order.draw_through(stop, &mut Unobserved);
         partly.draw_parallel_through(stop, tile, threads, &|| {});
-        prop_assert_eq!(in_order.buffers(), partly.buffers(), "through {}, tile {}, {} threads: {}", stop, tile, threads, json);
+        prop_assert_eq!(
+            in_order.buffers(),
+            partly.buffers(),
+            "through {}, tile {}, {} threads: {}",
+            stop,
+            tile,
+            threads,
+            json
+        );
         prop_assert_eq!(in_order.stats(), partly.stats());
         // The first polygons in order, the rest on threads: the tiles start from the cells
         // drawn so far, not from the cleared ones.
@@ -263,6 +307,11 @@ proptest! {
         prop_assert_eq!(quiet.buffers(), then_tiled.buffers(), "tiled after {}: {}", stop, json);
         prop_assert_eq!(quiet.stats().written, then_tiled.stats().written);
     }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
 
     /// The everyday guard against panics in the reader: any text is a scene or an error,
     /// and a scene small enough runs.

@@ -20,10 +20,10 @@ use crate::numbers::Word;
 use crate::raster::depth::{DepthPlane, DepthTest};
 use crate::raster::sink::PixelRect;
 use crate::rules::{ColumnRule, RowRule, Rules};
-use crate::simulate::branch_free::{Stepped, test_and_store};
 use crate::simulate::buffer::FrameCell;
 use crate::simulate::events::Observer;
-use crate::simulate::levels::LevelSink;
+use crate::simulate::fast::branch_free::{Stepped, test_and_store};
+use crate::simulate::fast::levels::LevelSink;
 
 /// The largest bounding box (in pixel centres) drawn this way: above it the
 /// scan converter, which visits only covered centres, is faster.
@@ -36,7 +36,7 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
     /// Draws a small triangle within `rect` by edge functions, with the same
     /// cells and counts as the scan converter; `false` (having done nothing)
     /// when the triangle, the rules or an observer need the scan converter.
-    /// [`Levels::draw`](crate::simulate::levels::Levels) decides whether the cells suit it.
+    /// [`Levels::draw`](crate::simulate::fast::levels::Levels) decides whether the cells suit it.
     pub(super) fn small_triangle(&mut self, geometry: &Geometry, rules: Rules, rect: PixelRect) -> bool {
         if O::OBSERVES_PIXELS
             || O::OBSERVES_SCANLINES

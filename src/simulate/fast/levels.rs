@@ -8,35 +8,36 @@ use crate::raster::depth::{BranchFreeTest, Depth, DepthStepper, DepthTest, Store
 use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
-use crate::simulate::branch_free::{CellWrite, Stepped};
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
-use crate::simulate::lanes;
+use crate::simulate::fast::branch_free::{CellWrite, Stepped};
+use crate::simulate::fast::lanes;
 use crate::simulate::setup::{CORE_CACHE, Stats, fate, prefetch_ahead, prefetch_cells};
+use crate::simulate::stages::{PixelStages, Plain};
 
 /// How many polygons ahead the plain loop asks for the cells of.
 const AHEAD: usize = 2;
 
 /// What the plain loop on a quantized z-buffer needs besides the cells.
-pub(super) struct Levels<'a, 's> {
-    pub(super) scene: &'s Scene,
-    pub(super) test: DepthTest,
-    pub(super) depth_max: u32,
-    pub(super) stats: &'a mut Stats,
-    pub(super) scratch: &'a mut Scratch,
+pub(in crate::simulate) struct Levels<'a, 's> {
+    pub(in crate::simulate) scene: &'s Scene,
+    pub(in crate::simulate) test: DepthTest,
+    pub(in crate::simulate) depth_max: u32,
+    pub(in crate::simulate) stats: &'a mut Stats,
+    pub(in crate::simulate) scratch: &'a mut Scratch,
     /// Whether small triangles may be drawn by edge functions
     /// ([`LevelSink::small_triangle`]), which rewrite every cell of their
     /// box: only on cells that fit the core's cache, and not on a tile's
     /// copy, where the scan converter, visiting only covered centres, is the
     /// faster (the design note on tiles drawn in cache).
-    pub(super) edge_functions: bool,
+    pub(in crate::simulate) edge_functions: bool,
 }
 
 impl<'s> Levels<'_, 's> {
     /// Draws polygon `index` within `rect` on the cells, which hold the
     /// pixels from `origin` on.
     #[inline]
-    pub(super) fn draw<F: FrameCell, O: Observer>(
+    pub(in crate::simulate) fn draw<F: FrameCell, O: Observer>(
         &mut self,
         (frame, depth): (&mut [F], &mut [u32]),
         origin: Origin,
@@ -70,30 +71,30 @@ impl<'s> Levels<'_, 's> {
 /// start at (0, 0) with a row of the raster's width; a band's at its first
 /// row; a tile's copy at its first pixel, with a row of the tile's width.
 #[derive(Debug, Clone, Copy)]
-pub(super) struct Origin {
-    pub(super) column: u32,
-    pub(super) row: u32,
-    pub(super) stride: usize,
+pub(in crate::simulate) struct Origin {
+    pub(in crate::simulate) column: u32,
+    pub(in crate::simulate) row: u32,
+    pub(in crate::simulate) stride: usize,
 }
 
 impl Origin {
     /// The whole raster's cells.
-    pub(super) fn raster(scene: &Scene) -> Origin {
+    pub(in crate::simulate) fn raster(scene: &Scene) -> Origin {
         Origin { column: 0, row: 0, stride: scene.width as usize }
     }
 
     /// The index of pixel (`x`, `y`)'s cell.
     #[inline(always)]
-    pub(super) fn cell(self, x: u32, y: u32) -> usize {
+    pub(in crate::simulate) fn cell(self, x: u32, y: u32) -> usize {
         (y - self.row) as usize * self.stride + (x - self.column) as usize
     }
 }
 
 /// One polygon on the whole raster.
-pub(super) struct OnePolygon<'a, 's, O> {
-    pub(super) levels: Levels<'a, 's>,
-    pub(super) index: usize,
-    pub(super) observer: &'a mut O,
+pub(in crate::simulate) struct OnePolygon<'a, 's, O> {
+    pub(in crate::simulate) levels: Levels<'a, 's>,
+    pub(in crate::simulate) index: usize,
+    pub(in crate::simulate) observer: &'a mut O,
 }
 
 impl<O: Observer> LevelCells for OnePolygon<'_, '_, O> {
@@ -107,9 +108,9 @@ impl<O: Observer> LevelCells for OnePolygon<'_, '_, O> {
 }
 
 /// The polygons of a range, in scene order, on the whole raster.
-pub(super) struct InOrder<'a, 's> {
-    pub(super) levels: Levels<'a, 's>,
-    pub(super) polygons: std::ops::Range<usize>,
+pub(in crate::simulate) struct InOrder<'a, 's> {
+    pub(in crate::simulate) levels: Levels<'a, 's>,
+    pub(in crate::simulate) polygons: std::ops::Range<usize>,
 }
 
 impl LevelCells for InOrder<'_, '_> {
@@ -133,7 +134,8 @@ impl LevelCells for InOrder<'_, '_> {
 }
 
 /// The plain stages on a quantized z-buffer, working on the cells directly:
-/// the same decisions as [`Plain::decide`], without a match per access.
+/// a covered centre decided by the reference ([`Plain::decide`]), a span by
+/// the branch-free cell or the lanes where nobody watches its pixels.
 pub(super) struct LevelSink<'a, O, F> {
     pub(super) index: usize,
     pub(super) polygon: &'a Polygon,
@@ -242,29 +244,29 @@ impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
     #[inline]
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
         let cell = self.origin.cell(x, y);
-        let (stored_before, frame_before) = (self.depth[cell], self.frame[cell].value());
+        let (stored_before, frame_before) = (Stored::Level(self.depth[cell]), self.frame[cell].value());
         self.stats.tested += 1;
-        let written = self.test.passes(&depth, &Stored::Level(stored_before));
-        let (stored_after, frame_after) = if written {
+        let plain = Plain::quantized(self.test, self.depth_max);
+        let decision = plain.decide(self.polygon, depth.clone(), stored_before.clone(), frame_before);
+        if decision.outcome == Outcome::Written {
             self.stats.written += 1;
-            let level = depth.quantized(self.depth_max);
-            self.depth[cell] = level;
+            debug_assert!(matches!(decision.stored, Stored::Level(_)), "a quantized store keeps levels");
+            if let Stored::Level(level) = decision.stored {
+                self.depth[cell] = level;
+            }
             self.frame[cell] = self.value;
-            (level, self.polygon.value)
-        } else {
-            (stored_before, frame_before)
-        };
+        }
         self.observer.pixel(&PixelEvent {
             index: self.index,
             x,
             y,
-            compared: depth.clone(),
             depth,
-            stored_before: Stored::Level(stored_before),
+            compared: decision.compared,
+            stored_before,
             frame_before,
-            outcome: if written { Outcome::Written } else { Outcome::Hidden },
-            stored_after: Stored::Level(stored_after),
-            frame_after,
+            outcome: decision.outcome,
+            stored_after: decision.stored,
+            frame_after: decision.frame,
         });
     }
 }

@@ -8,37 +8,37 @@ use crate::raster::sink::PixelRect;
 use crate::scene::Scene;
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Unobserved};
-use crate::simulate::levels::{Levels, Origin};
+use crate::simulate::fast::levels::{Levels, Origin};
 use crate::simulate::setup::{Stats, fate, pixel_bounds, prefetch, prefetch_polygon};
 
 /// How a tiled run is spread.
 #[derive(Clone, Copy)]
-pub(super) struct Tiling<'a> {
+pub(in crate::simulate) struct Tiling<'a> {
     /// The side of a tile, in pixels.
-    pub(super) tile: u32,
+    pub(in crate::simulate) tile: u32,
     /// How many threads draw (1: bands one after the other on this thread).
-    pub(super) threads: usize,
+    pub(in crate::simulate) threads: usize,
     /// Called after each band.
-    pub(super) band_done: &'a (dyn Fn() + Sync),
+    pub(in crate::simulate) band_done: &'a (dyn Fn() + Sync),
 }
 
 /// Binned polygons, drawn tile by tile, a band of tile rows a job.
-pub(super) struct Tiles<'a> {
-    pub(super) scene: &'a Scene,
-    pub(super) test: DepthTest,
-    pub(super) depth_max: u32,
-    pub(super) bins: Vec<Vec<u32>>,
-    pub(super) tiling: Tiling<'a>,
+pub(in crate::simulate) struct Tiles<'a> {
+    pub(in crate::simulate) scene: &'a Scene,
+    pub(in crate::simulate) test: DepthTest,
+    pub(in crate::simulate) depth_max: u32,
+    pub(in crate::simulate) bins: Vec<Vec<u32>>,
+    pub(in crate::simulate) tiling: Tiling<'a>,
     /// The threads that draw the bands, when more than one does.
-    pub(super) pool: Option<&'a rayon::ThreadPool>,
+    pub(in crate::simulate) pool: Option<&'a rayon::ThreadPool>,
     /// What each tile's copy starts from.
-    pub(super) start: TileStart,
+    pub(in crate::simulate) start: TileStart,
 }
 
 /// What a tile's copy starts from, and whether the tiles without polygons
 /// are written.
 #[derive(Debug, Clone, Copy)]
-pub(super) enum TileStart {
+pub(in crate::simulate) enum TileStart {
     /// The buffers' cells, copied in (polygons were drawn before); tiles
     /// without polygons are left as they are.
     Buffers,
@@ -55,9 +55,9 @@ pub(super) enum TileStart {
 
 /// The values of a cleared framebuffer cell and z-buffer cell.
 #[derive(Debug, Clone, Copy)]
-pub(super) struct Cleared {
-    pub(super) frame: u32,
-    pub(super) depth: u32,
+pub(in crate::simulate) struct Cleared {
+    pub(in crate::simulate) frame: u32,
+    pub(in crate::simulate) depth: u32,
 }
 
 impl Tiles<'_> {
@@ -67,7 +67,7 @@ impl Tiles<'_> {
     /// that stays in the core's cache, then copied back: in the raster's
     /// own layout a tile's rows lie a raster row apart, and a triangle's
     /// first touch of each of them waits for memory.
-    pub(super) fn band<F: FrameCell>(
+    pub(in crate::simulate) fn band<F: FrameCell>(
         &self,
         ty: u32,
         (frame, depth): (&mut [F], &mut [u32]),
@@ -180,7 +180,7 @@ fn streamed() {
 
 /// The cells a tile is drawn on, kept from tile to tile and band to band
 /// on one thread.
-pub(super) struct TileCopy<F> {
+pub(in crate::simulate) struct TileCopy<F> {
     frame: Vec<F>,
     depth: Vec<u32>,
 }
@@ -240,14 +240,14 @@ impl LevelCells for Tiles<'_> {
 /// The threads that draw in tiles when `threads` asks for more than one;
 /// `None` for one, or when the system would not start them (then one thread
 /// bins and draws the same cells).
-pub(super) fn pool(threads: usize) -> Option<rayon::ThreadPool> {
+pub(in crate::simulate) fn pool(threads: usize) -> Option<rayon::ThreadPool> {
     (threads > 1).then(|| rayon::ThreadPoolBuilder::new().num_threads(threads).build().ok()).flatten()
 }
 
 /// The drawn polygons of a range, binned by the `tile`×`tile` tiles their
 /// bounding boxes touch, each bin in scene order; with a pool, a part of the
 /// range on each of its threads, the parts' bins then joined in order.
-pub(super) fn bins(
+pub(in crate::simulate) fn bins(
     scene: &Scene,
     polygons: std::ops::Range<usize>,
     tile: u32,

@@ -1,0 +1,332 @@
+//! Lanes: small fixed-width integer vectors the span loops
+//! ([`super::lanes`]) are written over, as tiny-skia's `wide` does: eight
+//! 32-bit lanes ([`Lanes32`]) and four 64-bit ones ([`Lanes64`]), each with
+//! a plain version of arrays compiled on every target ([`Plain8`],
+//! [`Plain4`]) and, on x86-64, an AVX2 one ([`Avx8`], [`Avx4`]). The loops
+//! are generic over them, so the one loop the processor runs with AVX2 is
+//! the one the property tests run on every target, wasm32 included.
+//!
+//! Arithmetic wraps, as the processor's does; a comparison gives a mask,
+//! every bit of a lane set where it holds and none where not; a selection
+//! takes the lanes of `yes` where the mask is set.
+
+/// Eight 32-bit lanes.
+pub(super) trait Lanes32: Copy {
+    /// Every lane `value`.
+    fn splat(value: i32) -> Self;
+    /// The lanes of an array.
+    fn from_array(values: [i32; 8]) -> Self;
+    /// Eight cells (each below 2^31).
+    fn load(cells: &[u32]) -> Self;
+    /// Into eight cells.
+    fn store(self, cells: &mut [u32]);
+    /// Lane by lane `self + other`.
+    fn add(self, other: Self) -> Self;
+    /// Lane by lane `self − other`.
+    fn sub(self, other: Self) -> Self;
+    /// Lane by lane `self & other`.
+    fn and(self, other: Self) -> Self;
+    /// The mask of `self > other`.
+    fn gt(self, other: Self) -> Self;
+    /// Lane by lane the smaller.
+    fn min(self, other: Self) -> Self;
+    /// Lane by lane the larger.
+    fn max(self, other: Self) -> Self;
+    /// `yes` where `mask` is set, `self` elsewhere.
+    fn select(self, yes: Self, mask: Self) -> Self;
+    /// Bit `k` set where lane `k`'s mask is.
+    fn mask_bits(self) -> u32;
+}
+
+/// Four 64-bit lanes.
+pub(super) trait Lanes64: Copy {
+    /// Every lane `value`.
+    fn splat(value: i64) -> Self;
+    /// The lanes of an array.
+    fn from_array(values: [i64; 4]) -> Self;
+    /// Four cells, widened.
+    fn widen(cells: &[u32]) -> Self;
+    /// Lane `k` into cell `k` where `mask` is set (its low 32 bits), the
+    /// other cells left as they are.
+    fn store_where(self, mask: Self, cells: &mut [u32]);
+    /// Lane by lane `self + other`.
+    fn add(self, other: Self) -> Self;
+    /// Lane by lane `self − other`.
+    fn sub(self, other: Self) -> Self;
+    /// Lane by lane `self & other`.
+    fn and(self, other: Self) -> Self;
+    /// The mask of `self > other`.
+    fn gt(self, other: Self) -> Self;
+    /// `yes` where `mask` is set, `self` elsewhere.
+    fn select(self, yes: Self, mask: Self) -> Self;
+    /// Bit `k` set where lane `k`'s mask is.
+    fn mask_bits(self) -> u32;
+    /// The first lane.
+    fn first(self) -> i64;
+}
+
+/// Eight 32-bit lanes as an array: every target.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Plain8([i32; 8]);
+
+impl Plain8 {
+    #[inline(always)]
+    fn zip(self, other: Plain8, f: impl Fn(i32, i32) -> i32) -> Plain8 {
+        Plain8(std::array::from_fn(|k| f(self.0[k], other.0[k])))
+    }
+}
+
+impl Lanes32 for Plain8 {
+    #[inline(always)]
+    fn splat(value: i32) -> Self {
+        Plain8([value; 8])
+    }
+    #[inline(always)]
+    fn from_array(values: [i32; 8]) -> Self {
+        Plain8(values)
+    }
+    #[inline(always)]
+    fn load(cells: &[u32]) -> Self {
+        Plain8(std::array::from_fn(|k| cells[k] as i32))
+    }
+    #[inline(always)]
+    fn store(self, cells: &mut [u32]) {
+        for (cell, lane) in cells[..8].iter_mut().zip(self.0) {
+            *cell = lane as u32;
+        }
+    }
+    #[inline(always)]
+    fn add(self, other: Self) -> Self {
+        self.zip(other, i32::wrapping_add)
+    }
+    #[inline(always)]
+    fn sub(self, other: Self) -> Self {
+        self.zip(other, i32::wrapping_sub)
+    }
+    #[inline(always)]
+    fn and(self, other: Self) -> Self {
+        self.zip(other, |a, b| a & b)
+    }
+    #[inline(always)]
+    fn gt(self, other: Self) -> Self {
+        self.zip(other, |a, b| -i32::from(a > b))
+    }
+    #[inline(always)]
+    fn min(self, other: Self) -> Self {
+        self.zip(other, i32::min)
+    }
+    #[inline(always)]
+    fn max(self, other: Self) -> Self {
+        self.zip(other, i32::max)
+    }
+    #[inline(always)]
+    fn select(self, yes: Self, mask: Self) -> Self {
+        Plain8(std::array::from_fn(|k| (yes.0[k] & mask.0[k]) | (self.0[k] & !mask.0[k])))
+    }
+    #[inline(always)]
+    fn mask_bits(self) -> u32 {
+        (0..8).fold(0, |bits, k| bits | (u32::from(self.0[k] < 0) << k))
+    }
+}
+
+/// Four 64-bit lanes as an array: every target.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Plain4([i64; 4]);
+
+impl Plain4 {
+    #[inline(always)]
+    fn zip(self, other: Plain4, f: impl Fn(i64, i64) -> i64) -> Plain4 {
+        Plain4(std::array::from_fn(|k| f(self.0[k], other.0[k])))
+    }
+}
+
+impl Lanes64 for Plain4 {
+    #[inline(always)]
+    fn splat(value: i64) -> Self {
+        Plain4([value; 4])
+    }
+    #[inline(always)]
+    fn from_array(values: [i64; 4]) -> Self {
+        Plain4(values)
+    }
+    #[inline(always)]
+    fn widen(cells: &[u32]) -> Self {
+        Plain4(std::array::from_fn(|k| i64::from(cells[k])))
+    }
+    #[inline(always)]
+    fn store_where(self, mask: Self, cells: &mut [u32]) {
+        for ((cell, value), mask) in cells[..4].iter_mut().zip(self.0).zip(mask.0) {
+            if mask != 0 {
+                *cell = value as u32;
+            }
+        }
+    }
+    #[inline(always)]
+    fn add(self, other: Self) -> Self {
+        self.zip(other, i64::wrapping_add)
+    }
+    #[inline(always)]
+    fn sub(self, other: Self) -> Self {
+        self.zip(other, i64::wrapping_sub)
+    }
+    #[inline(always)]
+    fn and(self, other: Self) -> Self {
+        self.zip(other, |a, b| a & b)
+    }
+    #[inline(always)]
+    fn gt(self, other: Self) -> Self {
+        self.zip(other, |a, b| -i64::from(a > b))
+    }
+    #[inline(always)]
+    fn select(self, yes: Self, mask: Self) -> Self {
+        Plain4(std::array::from_fn(|k| (yes.0[k] & mask.0[k]) | (self.0[k] & !mask.0[k])))
+    }
+    #[inline(always)]
+    fn mask_bits(self) -> u32 {
+        (0..4).fold(0, |bits, k| bits | (u32::from(self.0[k] < 0) << k))
+    }
+    #[inline(always)]
+    fn first(self) -> i64 {
+        self.0[0]
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+pub(super) use avx2::{Avx4, Avx8};
+
+/// The lanes in AVX2's 256-bit registers. A value of these types is made
+/// only inside a function compiled with AVX2 (`#[target_feature(enable =
+/// "avx2")]`, [`super::lanes`]) that runs after the processor was found to
+/// have it; their methods, inlined there, are its instructions.
+#[cfg(target_arch = "x86_64")]
+mod avx2 {
+    use std::arch::x86_64::{
+        __m256i, _mm_blendv_epi8, _mm_loadu_si128, _mm_storeu_si128, _mm256_add_epi32, _mm256_add_epi64,
+        _mm256_and_si256, _mm256_blendv_epi8, _mm256_castsi256_pd, _mm256_castsi256_ps, _mm256_castsi256_si128,
+        _mm256_cmpgt_epi32, _mm256_cmpgt_epi64, _mm256_cvtepu32_epi64, _mm256_loadu_si256, _mm256_max_epi32,
+        _mm256_min_epi32, _mm256_movemask_pd, _mm256_movemask_ps, _mm256_permutevar8x32_epi32, _mm256_set1_epi32,
+        _mm256_set1_epi64x, _mm256_setr_epi32, _mm256_storeu_si256, _mm256_sub_epi32, _mm256_sub_epi64,
+    };
+
+    use super::{Lanes32, Lanes64};
+
+    /// Eight 32-bit lanes in an AVX2 register.
+    #[derive(Debug, Clone, Copy)]
+    pub(in crate::simulate::fast) struct Avx8(__m256i);
+
+    /// Four 64-bit lanes in an AVX2 register.
+    #[derive(Debug, Clone, Copy)]
+    pub(in crate::simulate::fast) struct Avx4(__m256i);
+
+    // SAFETY (every `unsafe` block below): the processor has AVX2, as a value of these
+    // types exists only then (the module's documentation); loads and stores are unaligned
+    // and within the slices, whose lengths are checked by indexing first.
+    impl Lanes32 for Avx8 {
+        #[inline(always)]
+        fn splat(value: i32) -> Self {
+            Avx8(unsafe { _mm256_set1_epi32(value) })
+        }
+        #[inline(always)]
+        fn from_array(values: [i32; 8]) -> Self {
+            Avx8(unsafe { _mm256_loadu_si256(values.as_ptr().cast()) })
+        }
+        #[inline(always)]
+        fn load(cells: &[u32]) -> Self {
+            let cells = &cells[..8];
+            Avx8(unsafe { _mm256_loadu_si256(cells.as_ptr().cast()) })
+        }
+        #[inline(always)]
+        fn store(self, cells: &mut [u32]) {
+            let cells = &mut cells[..8];
+            unsafe { _mm256_storeu_si256(cells.as_mut_ptr().cast(), self.0) }
+        }
+        #[inline(always)]
+        fn add(self, other: Self) -> Self {
+            Avx8(unsafe { _mm256_add_epi32(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn sub(self, other: Self) -> Self {
+            Avx8(unsafe { _mm256_sub_epi32(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn and(self, other: Self) -> Self {
+            Avx8(unsafe { _mm256_and_si256(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn gt(self, other: Self) -> Self {
+            Avx8(unsafe { _mm256_cmpgt_epi32(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn min(self, other: Self) -> Self {
+            Avx8(unsafe { _mm256_min_epi32(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn max(self, other: Self) -> Self {
+            Avx8(unsafe { _mm256_max_epi32(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn select(self, yes: Self, mask: Self) -> Self {
+            Avx8(unsafe { _mm256_blendv_epi8(self.0, yes.0, mask.0) })
+        }
+        #[inline(always)]
+        fn mask_bits(self) -> u32 {
+            (unsafe { _mm256_movemask_ps(_mm256_castsi256_ps(self.0)) }) as u32
+        }
+    }
+
+    impl Lanes64 for Avx4 {
+        #[inline(always)]
+        fn splat(value: i64) -> Self {
+            Avx4(unsafe { _mm256_set1_epi64x(value) })
+        }
+        #[inline(always)]
+        fn from_array(values: [i64; 4]) -> Self {
+            Avx4(unsafe { _mm256_loadu_si256(values.as_ptr().cast()) })
+        }
+        #[inline(always)]
+        fn widen(cells: &[u32]) -> Self {
+            let cells = &cells[..4];
+            Avx4(unsafe { _mm256_cvtepu32_epi64(_mm_loadu_si128(cells.as_ptr().cast())) })
+        }
+        #[inline(always)]
+        fn store_where(self, mask: Self, cells: &mut [u32]) {
+            let cells = &mut cells[..4];
+            unsafe {
+                // The low 32 bits of each 64-bit lane, gathered into the low 128 bits.
+                let low_halves = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+                let values = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(self.0, low_halves));
+                let mask = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(mask.0, low_halves));
+                let before = _mm_loadu_si128(cells.as_ptr().cast());
+                _mm_storeu_si128(cells.as_mut_ptr().cast(), _mm_blendv_epi8(before, values, mask));
+            }
+        }
+        #[inline(always)]
+        fn add(self, other: Self) -> Self {
+            Avx4(unsafe { _mm256_add_epi64(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn sub(self, other: Self) -> Self {
+            Avx4(unsafe { _mm256_sub_epi64(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn and(self, other: Self) -> Self {
+            Avx4(unsafe { _mm256_and_si256(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn gt(self, other: Self) -> Self {
+            Avx4(unsafe { _mm256_cmpgt_epi64(self.0, other.0) })
+        }
+        #[inline(always)]
+        fn select(self, yes: Self, mask: Self) -> Self {
+            Avx4(unsafe { _mm256_blendv_epi8(self.0, yes.0, mask.0) })
+        }
+        #[inline(always)]
+        fn mask_bits(self) -> u32 {
+            (unsafe { _mm256_movemask_pd(_mm256_castsi256_pd(self.0)) }) as u32
+        }
+        #[inline(always)]
+        fn first(self) -> i64 {
+            unsafe { std::arch::x86_64::_mm_cvtsi128_si64(_mm256_castsi256_si128(self.0)) }
+        }
+    }
+}
