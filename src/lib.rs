@@ -56,45 +56,13 @@
 //!
 //! # Layers
 //!
-//! The source tree follows the algorithm's pipeline. Each layer imports only
-//! the layers above it here; two are leaves any layer may use (`words`, the
-//! catalogues, and `error`, which sits just above `geometry`). No import
-//! runs back up, and no two files import each other: where one seemed
-//! needed, the shared item was in the wrong place (the sink trait sits
-//! beside the scan converter, below the driver that implements it; the
-//! branch-free depth test beside [`DepthTest`], below the loops that use it).
-//!
-//! ```text
-//! words      every sentence a person reads, in en, ru, uk and zh, in the language passed; text
-//!            from outside (names, paths) escaped for showing
-//! numbers    Q and Exact, parsing, word arithmetic, the Ring trait, formatting
-//! rules      the rule presets as data
-//! geometry   a polygon's plane: Newell and planarity once over Ring; the big tier's polygon
-//! error      typed errors with their facts, worded in a language by `message(lang)`
-//! door       the one door in (regular files, size limits, names confined to their file's
-//!            folder, images' declared size) and the one door out (a plan checked whole,
-//!            then written atomically, never onto an input), and text escaped for showing
-//! raster     the one scan converter, its sink trait, crossings, spans, depth steppers, the depth test
-//! scene      the scene file and its validation, perspective, clip space, random scenes
-//! simulate   the Simulation driver, buffers, per-pixel stages, events, tiles and threads
-//! effects    antialiasing, loop variants, inexact arithmetic modes, accuracy
-//! observe    recording (trace, step), explaining (explain, history, tie), rendering (report,
-//!            figure, picture, tikz), the GPU reference (gpu, race)
-//! teach      the teaching model every front end renders: the stepper (step, stop, the quiz and
-//!            its judge), checking (check), a class graded once (class, grade, gradebooks,
-//!            gradescope), exercises and the misconception diagnosis, the step page
-//! courses    BUET CSE 410, UIUC CS 418 and tinyrenderer
-//! ```
-//!
-//! ```text
-//!                 library (no clap, no terminal; builds for WebAssembly's shape)
-//!   scene file ─► scene ─► simulate ─► observe ─► teach ─► facts and words
-//!                                                          │
-//!          ┌───────────────────────────────┬───────────────┴──────────────┐
-//!          ▼                               ▼                              ▼
-//!   cli: line mode, tables         app: full-screen app           page: zsim step --html
-//!   (comfy-table)                  (ratatui)                      (the model's data, embedded)
-//! ```
+//! The source tree follows the algorithm's pipeline, from the words and
+//! exact numbers up through the raster, the scene, the simulation, its
+//! effects and observers, to teaching and the courses; each layer imports
+//! only the layers before it, and no import runs back up. The layers are
+//! drawn in one place, the guide's Development chapter
+//! (`docs/src/development.md`), which `tests/integration/layers.rs` holds to
+//! the code.
 //!
 //! The modules are private; this page lists the API the command line, the
 //! benchmarks, the fuzz target and the tests use. The library builds without

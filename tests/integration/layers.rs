@@ -1,6 +1,6 @@
 //! The source tree's layers point one way: each top-level part of `src/`
-//! imports only the parts before it in [`LAYERS`] (the crate docs draw the
-//! same list), no file under `src/` passes 800 lines, and the library never
+//! imports only the parts before it in [`LAYERS`] (the guide's Development
+//! chapter draws the same list), no file under `src/` passes 800 lines, and the library never
 //! prints. Read from the source as text, as a maintainer would check it.
 
 use std::path::{Path, PathBuf};
@@ -310,4 +310,21 @@ fn the_low_floors_errors_name_no_command_line_flag() {
             assert!(!flag(message), "{message}");
         }
     }
+}
+
+/// The layers are drawn in one place, the guide's Development chapter: its
+/// tree of `src/` names the layers in the order the imports follow, then the
+/// command line and the full-screen app.
+#[test]
+fn the_guide_draws_the_layers_as_the_code_has_them() {
+    let guide = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/src/development.md")).unwrap();
+    let tree = &guide[guide.find("```text\nsrc/\n").expect("the tree of src/")..];
+    let tree = &tree[..tree.find("\n```").unwrap()];
+    let drawn: Vec<&str> = tree
+        .lines()
+        .filter_map(|line| line.strip_prefix("├── ").or_else(|| line.strip_prefix("└── ")))
+        .map(|entry| entry.split_whitespace().next().unwrap().trim_end_matches('/').trim_end_matches(".rs"))
+        .collect();
+    let expected: Vec<&str> = LAYERS.iter().copied().chain(["cli", "app"]).collect();
+    assert_eq!(drawn, expected);
 }

@@ -139,9 +139,10 @@ pub enum GpuApi {
 pub struct Triangles {
     /// The triangles, in scene order.
     pub triangles: Vec<GpuTriangle>,
-    /// How far the raster is moved into the GPU's larger one (256 pixels when
-    /// every vertex lies within 256 pixels of the raster, so that none is
-    /// clipped by the view volume; 0 otherwise).
+    /// How far the raster is moved into the GPU's larger one: 256 pixels when
+    /// a vertex lies off the raster but every one within 256 pixels of it, so
+    /// that none is clipped by the view volume; 0 when every vertex lies on
+    /// the raster (nothing to clip) or some lie farther.
     pub margin: u32,
     /// Polygons drawn as a fan though not convex.
     pub not_convex: Vec<usize>,
@@ -151,13 +152,17 @@ pub struct Triangles {
 pub fn triangles(scene: &crate::scene::Scene) -> Triangles {
     use crate::numbers::to_f64;
     let (width, height) = (scene.width, scene.height);
-    // A margin keeps vertices near the raster inside the GPU's view volume, unclipped.
-    let inside = |v: f64, side: u32| (-256.0..=f64::from(side) + 256.0).contains(&v);
-    let near = scene
-        .polygons
-        .iter()
-        .all(|p| p.vertices().iter().all(|v| inside(to_f64(&v[0]), width) && inside(to_f64(&v[1]), height)));
-    let margin = if near { 256 } else { 0 };
+    // A margin keeps vertices near the raster inside the GPU's view volume, unclipped; none is
+    // needed when every vertex lies on the raster, and none is drawn then (a larger framebuffer
+    // is more to clear: the GPU's time would be measured on more pixels than zsim's).
+    let within = |reach: f64| {
+        let inside = |v: f64, side: u32| (-reach..=f64::from(side) + reach).contains(&v);
+        scene
+            .polygons
+            .iter()
+            .all(|p| p.vertices().iter().all(|v| inside(to_f64(&v[0]), width) && inside(to_f64(&v[1]), height)))
+    };
+    let margin = if within(0.0) || !within(256.0) { 0 } else { 256 };
     let mut triangles = Vec::new();
     let mut not_convex = Vec::new();
     for (index, polygon) in scene.polygons.iter().enumerate() {
