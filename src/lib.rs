@@ -149,9 +149,10 @@ pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, Sc
 pub use simulate::setup::{Stats, fate};
 pub use simulate::simulation::{Drawn, Simulation};
 pub use simulate::stages::{StageSet, describe};
-pub use teach::{
-    check, class, diagnose, exercise, grade, gradebooks, gradescope, lesson, page, playground, step, stop,
-};
+pub use teach::check::diagnose;
+pub use teach::grade::{class, gradebooks, gradescope};
+pub use teach::step::{lesson, page, stop};
+pub use teach::{check, exercise, grade, playground, step};
 pub use words::{
     Arg, Lang, localize_decimal, polygon_label, printable, shown_name, shown_path, text as message, token,
 };

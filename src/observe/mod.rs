@@ -6,7 +6,7 @@
 //!   them, the stops between them).
 //! - `explain`: why a pixel holds what it holds (`explain`), its whole
 //!   history (`history`), a centre on an edge and the rule that decides it
-//!   (`tie`), a homework answer read and compared (`check`).
+//!   (`tie`).
 //! - `render`: the printed matrices and the run's JSON (`report`), figures
 //!   (`figure`), their PNG, PDF and TeX (`picture`, `tikz`).
 //! - `gpu`: a real GPU implementation drawing the same scene, as a
@@ -17,7 +17,7 @@ pub mod gpu;
 pub mod record;
 pub mod render;
 
-pub use explain::{check, history, tie};
+pub use explain::{history, tie};
 #[cfg(feature = "gpu")]
 pub use gpu::race;
 pub use record::{step, trace};

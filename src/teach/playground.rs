@@ -28,8 +28,8 @@ use crate::scene::Scene;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::answer_from_text;
-use crate::teach::lesson::{Command, Lesson, Said};
-use crate::teach::page::{Buffers, buffer_data};
+use crate::teach::step::lesson::{Command, Lesson, Said};
+use crate::teach::step::page::{Buffers, buffer_data};
 use crate::teach::step::{Moved, Question, QuizMode};
 use crate::words::{Lang, polygon_label};
 
@@ -229,7 +229,7 @@ pub fn lesson(lang: Lang, text: &str, mode: Option<QuizMode>, place: Option<(usi
 }
 
 /// A page's command to the lesson: `{"key": "n"}` (a key of
-/// [`crate::teach::lesson::KEYS`]), `{"go": [polygon, row]}` (polygon
+/// [`crate::teach::step::lesson::KEYS`]), `{"go": [polygon, row]}` (polygon
 /// from 1, as an address names it) or `{"answer": "15"}`.
 #[derive(Debug, Clone, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -563,7 +563,7 @@ pub fn one_file_page(lang: Lang, text: &str) -> Option<String> {
         );
         let start = format!(
             "window.ZSIM_SCENE = {};\nwindow.ZSIM_LANG = \"{}\";\n",
-            crate::teach::page::embedded_json(&Value::String(text.to_string()).to_string()),
+            crate::teach::step::page::embedded_json(&Value::String(text.to_string()).to_string()),
             lang.code()
         );
         let page = index

@@ -2,9 +2,8 @@
 //! events: what the depth test made of a pixel, the history of a pixel
 //! through a scene, and why a cell holds its value. Beside it: a pixel's
 //! whole history (`history`), the rule that decides a centre on an edge
-//! (`tie`), and a homework answer read and compared (`check`).
+//! (`tie`).
 
-pub mod check;
 pub mod history;
 pub mod tie;
 

@@ -3,7 +3,7 @@
 //! every number and every word on it comes from the teaching model
 //! ([`crate::teach::step`]), embedded as data; the page's script only shows
 //! it. It asks nothing: a quiz is judged by the library's lesson
-//! ([`crate::teach::lesson`]), which this page does not carry, so it says in
+//! ([`crate::teach::step::lesson`]), which this page does not carry, so it says in
 //! one line where the quiz is (the browser playground, `step --quiz`).
 
 use crate::numbers::exact_and_decimal;
@@ -90,8 +90,8 @@ pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop) -> serde_jso
         "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
         "scanline": stop_words.scanline, "crossings": stop_words.crossings,
         // Each span with its ends' depths (x_a, z_a, x_b, z_b) and its columns, as the line mode shows it.
-        "spans": crate::teach::stop::span_lines(lang, scene, &record),
-        "notes": crate::teach::stop::notes(lang, scene, stop.polygon, &record, stepper.arith()),
+        "spans": crate::teach::step::stop::span_lines(lang, scene, &record),
+        "notes": crate::teach::step::stop::notes(lang, scene, stop.polygon, &record, stepper.arith()),
         "pixels": pixels,
     })
 }

@@ -157,7 +157,7 @@ pub fn json(
     scene: &Path,
     after: &str,
     rows: &[&Grade],
-    (mistakes, reasons, skipped): (&[CommonMistake], &[String], &[crate::teach::class::Skipped]),
+    (mistakes, reasons, skipped): (&[CommonMistake], &[String], &[crate::teach::grade::class::Skipped]),
 ) -> String {
     let skipped: Vec<serde_json::Value> = skipped
         .iter()

@@ -13,12 +13,12 @@
 //! answer one polygon early, rows written bottom first.
 
 use crate::numbers::{Q, floor_div};
-use crate::observe::check::{Answer, HINTED_CELLS, Matrix};
 use crate::raster::depth::{Depth, DepthTest, Stored};
 use crate::rules::{ColumnRule, Compare, DepthStore};
 use crate::scene::Scene;
 use crate::simulate::events::{Observer, Outcome, PixelEvent};
 use crate::simulate::simulation::Simulation;
+use crate::teach::check::answer::{Answer, HINTED_CELLS, Matrix};
 use crate::words::Lang;
 
 /// A wrong rule students are known to follow.

@@ -3,7 +3,7 @@
 //! kind, the score), each worded here so that every front end says the same.
 
 use crate::scene::Scene;
-use crate::teach::diagnose::Misconception;
+use crate::teach::check::diagnose::Misconception;
 use crate::teach::step::{Moved, Verdict, skip_text};
 use crate::words::{Lang, printable};
 

@@ -8,7 +8,7 @@ use crate::raster::depth::{Depth, Stored};
 use crate::rules::DepthStore;
 use crate::scene::Scene;
 use crate::simulate::events::{Outcome, PixelEvent};
-use crate::teach::diagnose::Misconception;
+use crate::teach::check::diagnose::Misconception;
 use crate::teach::step::{Question, parse_columns};
 
 use super::Hint;

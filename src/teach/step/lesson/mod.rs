@@ -32,11 +32,11 @@ use crate::observe::step::Stop;
 use crate::observe::trace::ScanlineRecord;
 use crate::scene::Scene;
 use crate::simulate::buffer::Buffers;
-use crate::teach::diagnose::Misconception;
+use crate::teach::check::diagnose::Misconception;
+use crate::teach::step::stop::{PixelRow, notes, pixel_rows, span_lines};
 use crate::teach::step::{
     Meant, Moved, Question, QuizMode, Refusal, Stepper, Verdict, judge_coverage, judge_depth, judge_frame,
 };
-use crate::teach::stop::{PixelRow, notes, pixel_rows, span_lines};
 
 use crate::words::{Lang, printable};
 use hint::{depth_hint, hint};

@@ -3,14 +3,14 @@
 //! answer explained, as facts that `check`, `grade`'s feedback and the
 //! Gradescope results all render.
 
+pub mod answer;
+pub mod diagnose;
+
 use std::path::{Path, PathBuf};
 
 use crate::door::{Links, read_text_with};
 use crate::effects::arith::{self, Arith};
 use crate::error::{Error, Task, Usage};
-pub use crate::observe::check::{
-    Answer, CellRange, Matrix, Mismatch, Misreading, compare, compare_answer, misreading, parse_answer,
-};
 use crate::observe::explain::{Buffer, polygon_after, why};
 use crate::observe::trace::PixelWatcher;
 use crate::scene::Scene;
@@ -18,6 +18,7 @@ use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::words::Lang;
 use crate::words::printable;
+pub use answer::{Answer, CellRange, Matrix, Mismatch, Misreading, compare, compare_answer, misreading, parse_answer};
 
 /// Reads an answer file for one of `scene`'s buffers: a matrix as the book
 /// prints it; a symbolic link is followed only where `links` says so.
@@ -324,13 +325,16 @@ pub fn check(
 /// drawn under each wrong rule.
 pub struct Prepared {
     buffers: crate::simulate::buffer::Buffers,
-    diagnoser: Option<crate::teach::diagnose::Diagnoser>,
+    diagnoser: Option<crate::teach::check::diagnose::Diagnoser>,
 }
 
 impl Prepared {
     /// The buffers of `scene` after polygon `last` (0-based) and its wrong rules, drawn.
     pub fn new(scene: &Scene, last: usize) -> Prepared {
-        Prepared { buffers: drawn_through(scene, last), diagnoser: crate::teach::diagnose::Diagnoser::new(scene, last) }
+        Prepared {
+            buffers: drawn_through(scene, last),
+            diagnoser: crate::teach::check::diagnose::Diagnoser::new(scene, last),
+        }
     }
 }
 
@@ -377,7 +381,7 @@ pub fn check_with(
             Some(prepared) => {
                 prepared.diagnoser.as_ref().and_then(|d| d.diagnose(answer(Buffer::Frame), answer(Buffer::Depth)))
             }
-            None => crate::teach::diagnose::diagnose(scene, last, answer(Buffer::Frame), answer(Buffer::Depth)),
+            None => crate::teach::check::diagnose::diagnose(scene, last, answer(Buffer::Frame), answer(Buffer::Depth)),
         }
     } else {
         None

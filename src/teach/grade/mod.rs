@@ -3,12 +3,16 @@
 //! and the cells most students got wrong. Data only; the CLI reads the
 //! folder and prints.
 
+pub mod class;
+pub mod gradebooks;
+pub mod gradescope;
+
 use rayon::prelude::*;
 
 use crate::numbers::{Q, decimal};
-use crate::observe::check::{Answer, Matrix, compare_answer};
 use crate::observe::explain::Buffer;
-use crate::teach::diagnose::{Diagnoser, Diagnosis, Misconception};
+use crate::teach::check::answer::{Answer, Matrix, compare_answer};
+use crate::teach::check::diagnose::{Diagnoser, Diagnosis, Misconception};
 use crate::words::Lang;
 
 /// The right answer for one buffer a class hands in: its matrix (top row
@@ -281,7 +285,7 @@ pub struct WrongCells {
     /// Which buffer.
     pub buffer: Buffer,
     /// The cells, in reading order.
-    pub cells: Vec<crate::observe::check::Mismatch>,
+    pub cells: Vec<crate::teach::check::answer::Mismatch>,
 }
 /// The middle of an answer file's name: `NAME.frame.txt`, `NAME.depth.txt`.
 pub fn file_kind(buffer: Buffer) -> &'static str {
@@ -350,8 +354,8 @@ mod tests {
     fn unanswered_cells_earn_nothing_and_are_counted() {
         let expected = key(vec![vec![0, 2, 2, 0], vec![0, 2, 1, 0]]);
         let text = "0 2 2 0\n? ? ? ?\n";
-        let range = crate::observe::check::CellRange { max: 3, buffer: "a 2-bit framebuffer" };
-        let half = crate::observe::check::parse_answer(Lang::En, text, 4, 2, range).unwrap();
+        let range = crate::teach::check::answer::CellRange { max: 3, buffer: "a 2-bit framebuffer" };
+        let half = crate::teach::check::answer::parse_answer(Lang::En, text, 4, 2, range).unwrap();
         let (row, _) = grade(&[submission("half", Handed::Matrix(half))], &expected, None).remove(0);
         assert_eq!(
             (row.percent(), row.frame_wrong, row.unanswered, row.status.to_string()),

@@ -5,6 +5,10 @@
 //! line mode, the full-screen app and the page render these facts and hold
 //! no rule of their own.
 
+pub mod lesson;
+pub mod page;
+pub mod stop;
+
 use crate::effects::arith::Arith;
 use crate::numbers::{Exact, exact_and_decimal, parse_number};
 use crate::observe::explain::{pixel_reason, polygon_after, polygon_name, scanline_text};
