@@ -23,7 +23,7 @@ fn case(dir: &Path, name: &str) -> Case {
 /// A case whose textures (not in the folder) are all replaced by one texel.
 fn case_with_stand_in(dir: &Path, name: &str, texel: [u8; 4]) -> Case {
     let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).expect("case file");
-    Case::parse(zsim::Lang::En, &text, &|_| Ok(stand_in(texel)))
+    Case::parse(zsim::Lang::En, &text, &|_| Ok(std::sync::Arc::new(stand_in(texel))))
         .unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
 }
 
@@ -81,8 +81,10 @@ fn textured_cases_reproduce_their_references_texel_for_texel() {
     let dir = cases();
     let with_textures = |name: &str| {
         let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).unwrap();
-        let load =
-            |file: &str| Image::from_png(zsim::Lang::En, &std::fs::read(dir.join(file)).map_err(|e| e.to_string())?);
+        let load = |file: &str| {
+            let bytes = std::fs::read(dir.join(file)).map_err(|e| e.to_string())?;
+            Image::from_png(zsim::Lang::En, &bytes).map(std::sync::Arc::new)
+        };
         Case::parse(zsim::Lang::En, &text, &load).unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
     };
     for name in ["points1", "points2", "decals", "textures"] {
@@ -538,7 +540,7 @@ mod never_a_panic {
     /// arithmetics: each step works or names a line.
     fn drawn_or_refused_with_its_line(text: &str) -> Result<(), TestCaseError> {
         let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
-        match Case::parse(zsim::Lang::En, text, &|_| Ok(texture.clone())) {
+        match Case::parse(zsim::Lang::En, text, &|_| Ok(std::sync::Arc::new(texture.clone()))) {
             Err(error) => prop_assert!(error.line.is_some(), "{}", error.message(zsim::Lang::En)),
             Ok(case) => {
                 for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
@@ -572,7 +574,7 @@ mod never_a_panic {
         ) {
             let text = format!("png {width} {height} out.png\n{body}");
             let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
-            let Ok(case) = Case::parse(zsim::Lang::En, &text, &|_| Ok(texture.clone())) else { return Ok(()) };
+            let Ok(case) = Case::parse(zsim::Lang::En, &text, &|_| Ok(std::sync::Arc::new(texture.clone()))) else { return Ok(()) };
             let Ok(json) = zsim::cs418::import::scene_json(zsim::Lang::En, &case) else { return Ok(()) };
             let Ok(scene) = zsim::Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("imported.json")) else {
                 return Ok(());

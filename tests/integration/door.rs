@@ -445,7 +445,7 @@ fn a_figure_png_stays_within_4096_pixels() {
     assert_eq!(width.max(height), 4096, "{width} × {height}");
     let run = zsim(&["figure", path(&scene), "-o", path(&png), "--scale", "64"]);
     assert_eq!(run.code, 2, "{}", run.stdout);
-    assert!(run.stderr.contains("8192"), "{}", run.stderr);
+    assert!(run.stderr.contains("more than 67108864 pixels"), "{}", run.stderr);
 }
 
 /// A 12,000-character polygon name peaked at 2.7 GB in a figure.
@@ -967,4 +967,37 @@ fn a_recorded_page_holds_the_buffers_once_not_at_every_stop() {
     let (code, peak) = peak_kib(&["step", path(&scene), "--html", "-o", path(&page)]);
     assert_eq!(code, 0);
     assert!(peak < 400_000, "step --html of a 128×128 scene peaked at {peak} KiB");
+}
+
+/// Found by an attacker: each `texture` line kept its own copy of the
+/// decoded image and of its texels in linear light, so one 4096² texture
+/// named twelve times (`t.png`, `./t.png`, …) took 3.4 GB. A file is decoded
+/// once and its texels made once, however many names lead to it: a 1024²
+/// texture named once and named twelve times peak alike (each copy would
+/// add 36 MiB).
+#[test]
+fn a_texture_named_many_times_is_held_once() {
+    let dir = scratch("texture-named-twelve-times");
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, 1024, 1024);
+    encoder.set_color(png::ColorType::Rgba);
+    let pixels: Vec<u8> = (0..1024 * 1024 * 4).map(|i: u32| (i.wrapping_mul(2_654_435_761) >> 24) as u8).collect();
+    encoder.write_header().unwrap().write_image_data(&pixels).unwrap();
+    std::fs::write(dir.join("t.png"), bytes).unwrap();
+    let names: Vec<String> = (0..12).map(|k| format!("{}t.png", "./".repeat(k))).collect();
+    let case = |names: &[String], file: &str| {
+        let lines: String = names.iter().map(|name| format!("texture {name}\n")).collect();
+        let text = format!(
+            "png 8 8 out.png\n{lines}texcoord 2 0 0  1 0  0 1\nposition 2 -1 -1  1 -1  -1 1\ndrawArraysTriangles 0 3\n"
+        );
+        std::fs::write(dir.join(file), text).unwrap();
+        dir.join(file)
+    };
+    let (once, twelve) = (case(&names[..1], "once.txt"), case(&names, "twelve.txt"));
+    let out = dir.join("out");
+    let (code, peak_once) = peak_kib(&["cs418", "run", path(&once), "-o", path(&out)]);
+    assert_eq!(code, 0);
+    let (code, peak_twelve) = peak_kib(&["cs418", "run", path(&twelve), "-o", path(&out)]);
+    assert_eq!(code, 0);
+    assert!(peak_twelve < peak_once + 16 * 1024, "once {peak_once} KiB, twelve names {peak_twelve} KiB");
 }

@@ -148,8 +148,9 @@ pub struct Features {
 pub struct Texture {
     /// The file name as the case writes it.
     pub name: String,
-    /// Its pixels (sRGB bytes, as stored).
-    pub image: Image,
+    /// Its pixels (sRGB bytes, as stored): one decoded image for every name
+    /// that leads to the same file (`x.png`, `./x.png`), shared.
+    pub image: std::sync::Arc<Image>,
 }
 
 /// A whole CS 418 input file.
@@ -182,11 +183,12 @@ pub const MAX_SAMPLES: u64 = 1 << 23;
 
 impl Case {
     /// Reads a CS 418 file. `load_texture` reads a texture the case names
-    /// (the caller knows where the case's folder is), or says why it cannot.
+    /// (the caller knows where the case's folder is; the same image for every
+    /// name of one file), or says why it cannot.
     pub fn parse(
         lang: Lang,
         text: &str,
-        load_texture: &dyn Fn(&str) -> Result<Image, String>,
+        load_texture: &dyn Fn(&str) -> Result<std::sync::Arc<Image>, String>,
     ) -> Result<Case, CaseError> {
         let mut case: Option<Case> = None;
         for (index, raw) in text.lines().enumerate() {

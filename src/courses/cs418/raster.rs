@@ -94,7 +94,7 @@ struct Pipeline<'a, S> {
     colours: Vec<[S; 4]>,
     texcoords: Vec<[S; 2]>,
     /// Each of the case's textures as linear RGBA, row by row from the top.
-    textures: Vec<Vec<[f64; 4]>>,
+    textures: Vec<Texels>,
     /// The texture bound (index into the case's textures).
     texture: Option<usize>,
     elements: Vec<usize>,
@@ -136,7 +136,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             positions: Vec::new(),
             colours: Vec::new(),
             texcoords: Vec::new(),
-            textures: case.textures.iter().map(linear_texels).collect(),
+            textures: linear_once(&case.textures),
             texture: None,
             elements: Vec::new(),
             sizes: Vec::new(),
@@ -560,6 +560,27 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     }
 }
 
+/// A texture's texels in linear light, row by row from the top, shared.
+type Texels = std::sync::Arc<Vec<[f64; 4]>>;
+
+/// Each texture's texels in linear light, computed once for every image
+/// however many of the case's names lead to it (the names share one image).
+fn linear_once(textures: &[super::Texture]) -> Vec<Texels> {
+    use std::sync::Arc;
+    let mut made: Vec<(&Arc<Image>, Texels)> = Vec::new();
+    textures
+        .iter()
+        .map(|texture| match made.iter().find(|(image, _)| Arc::ptr_eq(image, &texture.image)) {
+            Some((_, texels)) => Arc::clone(texels),
+            None => {
+                let texels = Arc::new(linear_texels(texture));
+                made.push((&texture.image, Arc::clone(&texels)));
+                texels
+            }
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -602,7 +623,7 @@ mod tests {
     }
 
     fn textured(text: &str) -> Image {
-        let case = super::super::Case::parse(Lang::En, text, &|_| Ok(two_by_two())).unwrap();
+        let case = super::super::Case::parse(Lang::En, text, &|_| Ok(std::sync::Arc::new(two_by_two()))).unwrap();
         render(Lang::En, &case, Arithmetic::DdaF64).unwrap().image
     }
 
@@ -640,7 +661,7 @@ mod tests {
                 s0 + 1,
                 s0 + 1
             );
-            let case = super::super::Case::parse(Lang::En, &text, &|_| Ok(greys.clone())).unwrap();
+            let case = super::super::Case::parse(Lang::En, &text, &|_| Ok(std::sync::Arc::new(greys.clone()))).unwrap();
             let image = render(Lang::En, &case, Arithmetic::DdaF64).unwrap().image;
             for x in 0..8u32 {
                 let k = ((x + shift) % 8) as u8 * 30;
@@ -702,7 +723,7 @@ mod tests {
         let case = super::super::Case::parse(
             Lang::En,
             "png 2 2 a.png\ntexture t.png\nposition 2 -1 -1 1 -1 -1 1\ntexcoord 2 0 0 1 0\ndrawArraysTriangles 0 3",
-            &|_| Ok(two_by_two()),
+            &|_| Ok(std::sync::Arc::new(two_by_two())),
         )
         .unwrap();
         let problem = render(Lang::En, &case, Arithmetic::DdaF64).unwrap_err().message(Lang::En);

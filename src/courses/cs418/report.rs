@@ -4,6 +4,7 @@
 
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use super::{Case, Comparison, Image, Primitive, Reason, compare_images, differences};
 use crate::door::{Folder, Identity};
@@ -35,11 +36,11 @@ pub fn located(path: &Path, error: super::CaseError) -> Error {
 pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<Loaded, Error> {
     let text = crate::door::read_text(lang, path)?;
     let folder = Folder::beside(path)?;
-    // Each file decoded once, however many names lead to it (`x.png`, `./x.png`).
-    let read: RefCell<Vec<(PathBuf, Identity, Image)>> = RefCell::new(Vec::new());
+    // Each file decoded once, and held once, however many names lead to it (`x.png`, `./x.png`).
+    let read: RefCell<Vec<(PathBuf, Identity, Arc<Image>)>> = RefCell::new(Vec::new());
     let texture = |name: &str| {
         if textures == Textures::Ignored {
-            return Ok(Image { width: 1, height: 1, rgba: vec![0; 4] });
+            return Ok(Arc::new(Image { width: 1, height: 1, rgba: vec![0; 4] }));
         }
         let (bytes, identity) = folder.read(name).map_err(|error| match error {
             Error::Read { source, .. } if source.kind() == std::io::ErrorKind::NotFound => {
@@ -50,8 +51,8 @@ pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<Loaded, Error
         if let Some((_, _, image)) = read.borrow().iter().find(|(_, known, _)| *known == identity) {
             return Ok(image.clone());
         }
-        let image = Image::from_png(lang, &bytes)?;
-        read.borrow_mut().push((folder.path_of(name), identity, image.clone()));
+        let image = Arc::new(Image::from_png(lang, &bytes)?);
+        read.borrow_mut().push((folder.path_of(name), identity, Arc::clone(&image)));
         Ok(image)
     };
     let case = Case::parse(lang, &text, &texture).map_err(|e| located(path, e))?;

@@ -140,21 +140,39 @@ pub struct Triangles {
     /// The triangles, in scene order.
     pub triangles: Vec<GpuTriangle>,
     /// How far the raster is moved into the GPU's larger one: 256 pixels when
-    /// a vertex lies off the raster but every one within 256 pixels of it, so
-    /// that none is clipped by the view volume; 0 when every vertex lies on
-    /// the raster (nothing to clip) or some lie farther.
+    /// every vertex lies within 256 pixels of the raster, so that none is
+    /// clipped by the view volume (with [`Margin::AsNeeded`], only when one
+    /// lies off it); 0 otherwise.
     pub margin: u32,
     /// Polygons drawn as a fan though not convex.
     pub not_convex: Vec<usize>,
 }
 
-/// The scene's drawn polygons as triangles for the GPU (see [`Triangles`]).
+/// The scene's drawn polygons as triangles for the GPU (see [`Triangles`]),
+/// moved into a larger framebuffer when every vertex lies within 256 pixels
+/// of the raster, as the comparisons draw them.
 pub fn triangles(scene: &crate::scene::Scene) -> Triangles {
+    triangles_within(scene, Margin::Guard)
+}
+
+/// Whether the GPU's framebuffer is larger than the raster.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Margin {
+    /// 256 pixels on every side when every vertex lies within them (so that
+    /// vertices just off the raster are not clipped), as the comparisons draw.
+    Guard,
+    /// None when every vertex lies on the raster, where nothing is clipped;
+    /// else as `Guard`. The speed race draws so: a larger framebuffer is more
+    /// for the GPU to clear than zsim's buffers.
+    AsNeeded,
+}
+
+/// The scene's drawn polygons as triangles for the GPU, its framebuffer's
+/// margin chosen by `margin`.
+pub fn triangles_within(scene: &crate::scene::Scene, margin: Margin) -> Triangles {
     use crate::numbers::to_f64;
     let (width, height) = (scene.width, scene.height);
-    // A margin keeps vertices near the raster inside the GPU's view volume, unclipped; none is
-    // needed when every vertex lies on the raster, and none is drawn then (a larger framebuffer
-    // is more to clear: the GPU's time would be measured on more pixels than zsim's).
+    // A margin keeps vertices near the raster inside the GPU's view volume, unclipped.
     let within = |reach: f64| {
         let inside = |v: f64, side: u32| (-reach..=f64::from(side) + reach).contains(&v);
         scene
@@ -162,7 +180,11 @@ pub fn triangles(scene: &crate::scene::Scene) -> Triangles {
             .iter()
             .all(|p| p.vertices().iter().all(|v| inside(to_f64(&v[0]), width) && inside(to_f64(&v[1]), height)))
     };
-    let margin = if within(0.0) || !within(256.0) { 0 } else { 256 };
+    let margin = match margin {
+        Margin::AsNeeded if within(0.0) => 0,
+        _ if within(256.0) => 256,
+        _ => 0,
+    };
     let mut triangles = Vec::new();
     let mut not_convex = Vec::new();
     for (index, polygon) in scene.polygons.iter().enumerate() {

@@ -10,7 +10,7 @@
 use std::time::{Duration, Instant};
 
 use crate::error::Error;
-use crate::observe::gpu::{Gl, GpuError, Triangles, triangles};
+use crate::observe::gpu::{Gl, GpuError, Margin, Triangles, triangles_within};
 use crate::scene::Scene;
 use crate::simulate::events::Fate;
 use crate::simulate::simulation::Simulation;
@@ -150,7 +150,7 @@ pub fn race(scene: &Scene, pairs: usize, tile: Option<u32>, threads: usize) -> R
         return Err(GpuError::PlainOnly.into());
     }
     let no_gpu = Error::from;
-    let Triangles { triangles, margin, .. } = triangles(scene);
+    let Triangles { triangles, margin, .. } = triangles_within(scene, Margin::AsNeeded);
     let polygons = (0..scene.polygons.len()).filter(|&i| crate::simulate::setup::fate(scene, i) == Fate::Drawn).count();
     let skipped = scene.polygons.len() - polygons;
     let gl = Gl::open().map_err(no_gpu)?;
