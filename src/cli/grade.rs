@@ -255,7 +255,9 @@ fn write_feedback(
     for file in &class.files {
         files_of.entry(file.student.as_str()).or_default().push(file);
     }
-    for grade in class.rows() {
+    // Each student's own file name, told apart where two would take one.
+    let names = zsim::class::feedback_names(class.rows().into_iter().map(|grade| grade.student.as_str()));
+    for (grade, name) in class.rows().into_iter().zip(names) {
         let mut text = zsim::words!(
             lang,
             "grade-feedback",
@@ -283,7 +285,7 @@ fn write_feedback(
         }
         // NAME.feedback.txt never ends as a submitted NAME.frame.txt or NAME.depth.txt
         // does, nor is it the summary's name, whatever the student's name.
-        outputs.push((zsim::class::feedback_name(&grade.student), text.into_bytes()));
+        outputs.push((name, text.into_bytes()));
     }
     let mistakes = mistakes_text(lang, (&class.mistakes, class.mistakes_left_out), &class.reasons, class.graded.len());
     outputs.push(("common-mistakes.txt".to_string(), mistakes.into_bytes()));

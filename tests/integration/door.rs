@@ -1001,3 +1001,45 @@ fn a_texture_named_many_times_is_held_once() {
     assert_eq!(code, 0);
     assert!(peak_twelve < peak_once + 16 * 1024, "once {peak_once} KiB, twelve names {peak_twelve} KiB");
 }
+
+/// Found by an attacker: two students whose feedback files came to one name
+/// (a long name cut and told apart by its hash, and a short name written as
+/// that cut name) stopped the whole class ("nothing was graded"). The later
+/// is numbered apart, and both get their feedback.
+#[test]
+fn feedback_names_that_collide_are_told_apart() {
+    let dir = scratch("feedback-names-collide");
+    let class = dir.join("class");
+    std::fs::create_dir_all(&class).unwrap();
+    let long = "l".repeat(244);
+    let hash = long.bytes().fold(0x811c_9dc5u32, |h, b| (h ^ u32::from(b)).wrapping_mul(0x0100_0193));
+    let short = format!("{}~{hash:08x}", &long[..233]);
+    for student in [&long, &short] {
+        for buffer in ["frame", "depth"] {
+            std::fs::copy(format!("examples/class/ana.{buffer}.txt"), class.join(format!("{student}.{buffer}.txt")))
+                .unwrap();
+        }
+    }
+    let out = dir.join("out");
+    let run = zsim(&["grade", "examples/rogers.json", path(&class), "-o", path(&out)]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let mut written: Vec<String> =
+        std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+    written.sort();
+    assert_eq!(written.len(), 3, "{written:?}");
+    assert!(written.contains(&format!("{}~{hash:08x}.feedback.txt", &long[..233])), "{written:?}");
+    // The short name, written as the long one's cut name, comes second and is numbered apart.
+    assert!(written.iter().any(|n| n.starts_with(&short[..231]) && n.ends_with("-2.feedback.txt")), "{written:?}");
+    let whose: Vec<bool> = written
+        .iter()
+        .filter(|n| n.ends_with(".feedback.txt"))
+        .map(|name| std::fs::read_to_string(out.join(name)).unwrap().contains(&short))
+        .collect();
+    assert_eq!(whose.iter().filter(|short| **short).count(), 1, "one file for each student: {whose:?}");
+    assert!(
+        written
+            .iter()
+            .filter(|n| n.ends_with(".feedback.txt"))
+            .all(|name| { std::fs::read_to_string(out.join(name)).unwrap().contains(&long[..233]) })
+    );
+}

@@ -276,14 +276,43 @@ fn submissions(
 /// ([`crate::door::outward::MAX_NAME_BYTES`]) is cut at a character and
 /// told apart by a hash of the whole: `NAME~1a2b3c4d.feedback.txt`.
 pub fn feedback_name(student: &str) -> String {
+    feedback_name_numbered(student, 0)
+}
+
+/// The feedback files' names of a class's students, in their order: each
+/// [`feedback_name`], and where one would take a name an earlier student
+/// has (a long name cut to another's, or a short name written as another's
+/// cut one), the later student's cut and numbered apart
+/// (`NAME~1a2b3c4d-2.feedback.txt`), so that no student's feedback is lost
+/// and the class is graded.
+pub fn feedback_names<'s>(students: impl IntoIterator<Item = &'s str>) -> Vec<String> {
+    let mut taken = std::collections::HashSet::new();
+    students
+        .into_iter()
+        .map(|student| {
+            let name = (0..)
+                .map(|k| feedback_name_numbered(student, k))
+                .find(|name| !taken.contains(name))
+                .expect("numbers enough to tell a class apart");
+            taken.insert(name.clone());
+            name
+        })
+        .collect()
+}
+
+/// [`feedback_name`], numbered `k` (from 1, past 0) when told apart from another.
+fn feedback_name_numbered(student: &str, k: u32) -> String {
     const SUFFIX: &str = ".feedback.txt";
     let whole = format!("{student}{SUFFIX}");
-    if whole.len() <= crate::door::outward::MAX_NAME_BYTES {
+    if k == 0 && whole.len() <= crate::door::outward::MAX_NAME_BYTES {
         return whole;
     }
     // FNV-1a, 32 bits: the same name gives the same file on every run.
     let hash = student.bytes().fold(0x811c_9dc5u32, |h, b| (h ^ u32::from(b)).wrapping_mul(0x0100_0193));
-    let tail = format!("~{hash:08x}{SUFFIX}");
+    let tail = match k {
+        0 => format!("~{hash:08x}{SUFFIX}"),
+        k => format!("~{hash:08x}-{}{SUFFIX}", k + 1),
+    };
     let room = crate::door::outward::MAX_NAME_BYTES - tail.len();
     let mut cut = String::new();
     for c in student.chars() {
