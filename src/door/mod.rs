@@ -27,6 +27,7 @@
 
 pub mod inward;
 pub mod outward;
+mod staged;
 
 pub use inward::{
     Folder, Identity, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, png_reader, read_bytes, read_text, read_text_with,

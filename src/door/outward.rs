@@ -5,6 +5,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use super::inward::Identity;
+use super::staged::Staged;
 use crate::error::{Error, Usage};
 
 /// Whether a planned file may replace one that is there.
@@ -153,21 +154,12 @@ impl Plan {
                 std::fs::create_dir_all(folder).map_err(|source| Error::Write { path: folder.to_owned(), source })?;
             }
             let failed = |source| Error::Write { path: file.path.clone(), source };
-            let mut builder = tempfile::Builder::new();
-            builder.prefix(".zsim-");
             // The mode a new file gets (0666, or 0777 for a script, less the umask), not a temporary file's 0600.
             let mode = if file.executable { 0o777 } else { 0o666 };
-            #[cfg(unix)]
-            {
-                use std::os::unix::fs::PermissionsExt;
-                builder.permissions(std::fs::Permissions::from_mode(mode));
-            }
-            #[cfg(not(unix))]
-            let _ = mode;
-            let mut temporary = builder.tempfile_in(folder).map_err(failed)?;
-            temporary.write_all(&file.bytes).map_err(failed)?;
+            let mut temporary = Staged::new(folder, mode).map_err(failed)?;
+            temporary.file().write_all(&file.bytes).map_err(failed)?;
             if !SYNC_BY_FILE_SYSTEM {
-                temporary.as_file().sync_data().map_err(failed)?;
+                temporary.file().sync_data().map_err(failed)?;
             }
             staged.push(temporary);
         }
@@ -176,27 +168,24 @@ impl Plan {
         // file was synced as it was written.
         if SYNC_BY_FILE_SYSTEM {
             let mut synced: std::collections::HashSet<&Path> = std::collections::HashSet::new();
-            for ((file, _), temporary) in files.iter().zip(&staged) {
+            for ((file, _), temporary) in files.iter().zip(&mut staged) {
                 if synced.insert(folder_of(&file.path)) {
                     let failed = |source| Error::Write { path: file.path.clone(), source };
-                    sync_file_system(temporary.as_file()).map_err(failed)?;
+                    sync_file_system(temporary.file()).map_err(failed)?;
                 }
             }
         }
         let mut written = Vec::with_capacity(self.files.len());
         for ((file, _), temporary) in files.into_iter().zip(staged) {
-            let placed = match self.replace {
-                Replace::Allowed => temporary.persist(&file.path).map(drop),
-                Replace::Never => temporary.persist_noclobber(&file.path).map(drop),
-            };
-            if let Err(error) = placed {
+            let name = file.path.file_name().expect("a planned file has a name (checked)");
+            if let Err(error) = temporary.place(name, self.replace) {
                 // Undo what this plan placed: it replaced nothing, so nothing is lost.
                 if self.replace == Replace::Never {
                     for path in &written {
                         let _ = std::fs::remove_file(path);
                     }
                 }
-                return Err(Error::Write { path: file.path.clone(), source: error.error });
+                return Err(Error::Write { path: file.path.clone(), source: error });
             }
             written.push(file.path.clone());
         }

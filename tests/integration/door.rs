@@ -1043,3 +1043,42 @@ fn feedback_names_that_collide_are_told_apart() {
             .all(|name| { std::fs::read_to_string(out.join(name)).unwrap().contains(&long[..233]) })
     );
 }
+
+/// Found by an attacker: an output whose path was as long as the system
+/// allows (4,095 bytes) was refused with "file name too long": the temporary
+/// file beside it had a longer name than the output's, so its path was
+/// longer still. It is made relative to a handle on the folder now: a path
+/// of 4,095 bytes is written, one of 4,096 refused in one line.
+#[test]
+fn an_output_path_as_long_as_the_system_allows_is_written() {
+    let dir = scratch("long-path");
+    let name = "f.svg";
+    let mut folder = dir.clone();
+    loop {
+        let remaining = 4095 - (folder.as_os_str().len() + 1 + name.len());
+        if remaining == 0 {
+            break;
+        }
+        let mut component = (remaining - 1).min(200);
+        if remaining - 1 - component == 1 {
+            component -= 1;
+        }
+        folder.push("d".repeat(component));
+    }
+    std::fs::create_dir_all(&folder).unwrap();
+    let output = folder.join(name);
+    assert_eq!(output.as_os_str().len(), 4095);
+    let run = zsim(&["figure", "examples/rogers.json", "-o", path(&output)]);
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""));
+    assert!(std::fs::read_to_string(&output).unwrap().starts_with("<svg"), "an SVG");
+    let names: Vec<String> =
+        std::fs::read_dir(&folder).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+    assert_eq!(names, [name], "no temporary file left");
+    // Written again over itself (the rename that replaces), then one byte more is refused.
+    assert_eq!(zsim(&["figure", "examples/rogers.json", "-o", path(&output)]).code, 0);
+    let longer = folder.join("fg.svg");
+    let run = zsim(&["figure", "examples/rogers.json", "-o", path(&longer)]);
+    assert_eq!(run.code, 2);
+    assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+    assert!(!longer.exists());
+}
