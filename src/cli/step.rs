@@ -116,10 +116,18 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
         let name = args.scene.file_name().map_or_else(|| zsim::shown_path(&args.scene), |n| n.to_string_lossy().into());
         // The playground where this zsim was built with it (exact arithmetic only); the recorded stepper otherwise.
         let playground =
-            (args.arith == zsim::arith::Arith::Exact).then(|| zsim::playground::one_file_page(lang, &text));
-        let page = playground
-            .flatten()
-            .unwrap_or_else(|| zsim::page::page(lang, &mut Stepper::new(&scene, args.arith), &name));
+            (args.arith == zsim::arith::Arith::Exact).then(|| zsim::playground::one_file_page(lang, &text)).flatten();
+        // What the page draws at all, refused before it is made.
+        let page = match playground {
+            Some(page) => {
+                zsim::page_limits::check_text(&text, Some(&args.scene)).map_err(Error::from)?;
+                page
+            }
+            None => {
+                zsim::page_limits::check_recorded(&scene, &args.scene).map_err(Error::from)?;
+                zsim::page::page(lang, &mut Stepper::new(&scene, args.arith), &name)
+            }
+        };
         let mut plan = zsim::Plan::new(&[&args.scene], zsim::Replace::Allowed);
         plan.file(output, page);
         plan.write()?;

@@ -14,9 +14,11 @@
 //!   common mistakes, the gradebooks (`grade::gradebooks`: a new format goes
 //!   there) and Gradescope's autograder (`grade::gradescope`).
 //! - `exercise`: a new exercise from a seed, with the hard cases asked for.
-//! - `playground`: what the browser shows of all of them, as facts.
+//! - `playground`: what the browser shows of all of them, as facts; and
+//!   `page_limits`, what a page draws at all.
 pub mod check;
 pub mod exercise;
 pub mod grade;
+pub mod page_limits;
 pub mod playground;
 pub mod step;

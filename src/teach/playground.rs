@@ -76,6 +76,10 @@ fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
     if text.len() > MAX_PAGE_SCENE_BYTES {
         return Err(json!({"ok": false, "error": too_long(lang, text.len()), "at": null}));
     }
+    // The page's limits, before the scene is read (reading is the work they spare).
+    if let Err(too_large) = crate::teach::page_limits::check_text(text, None) {
+        return Err(json!({"ok": false, "error": crate::error::Refusal::message(&too_large, lang), "at": null}));
+    }
     Scene::from_json(lang, text, Path::new(&scene_name(lang))).map_err(|error| {
         let at = match &error {
             crate::error::Error::Polygon { index, .. } => json!({"polygon": index}),

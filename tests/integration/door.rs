@@ -1082,3 +1082,44 @@ fn an_output_path_as_long_as_the_system_allows_is_written() {
     assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
     assert!(!longer.exists());
 }
+
+/// Found by an attacker: `step --html` of a 1024 × 1024 scene aborted on a
+/// failed allocation, and many polygons or a polygon of 1,000 vertices ran
+/// for minutes. A page draws at most 2048 × 2048 pixels, 20,000 polygons and
+/// 1,000 vertices a polygon (the playground), and the recorded page (a zsim
+/// built without the playground) steps at most 128 × 128 pixels and 64
+/// polygons, as the playground's stepper does: past them `step --html`
+/// refuses in one line that names the file and the limit, before any work.
+#[test]
+fn step_html_refuses_what_a_page_does_not_draw() {
+    let dir = scratch("page-limits");
+    let triangle = r#"{"value": 1, "vertices": [[0, 0, 1], [8, 0, 1], [0, 8, 1]]}"#;
+    let write = |name: &str, width: u32, height: u32| {
+        let file = dir.join(name);
+        std::fs::write(&file, format!(r#"{{"width": {width}, "height": {height}, "polygons": [{triangle}]}}"#))
+            .unwrap();
+        file
+    };
+    let page = dir.join("page.html");
+    let huge = write("huge.json", 4096, 4096);
+    let run = zsim(&["step", path(&huge), "--html", "-o", path(&page)]);
+    assert_eq!((run.code, run.stdout.as_str()), (2, ""));
+    assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+    assert!(run.stderr.starts_with(&format!("zsim: {}: ", path(&huge))), "{}", run.stderr);
+    assert!(!page.exists());
+    // Just past the recorded page's 128 × 128: the playground draws it, the recorded page refuses it.
+    let wide = write("wide.json", 129, 128);
+    let run = zsim(&["step", path(&wide), "--html", "-o", path(&page)]);
+    if option_env!("ZSIM_PLAYGROUND").is_some() {
+        assert_eq!(run.code, 0, "{}", run.stderr);
+    } else {
+        assert_eq!(run.code, 2);
+        assert!(
+            run.stderr.contains("the recorded page steps scenes of up to 16384 pixels and 64 polygons; this one has 16512 pixels and 1 polygon:"),
+            "{}",
+            run.stderr
+        );
+    }
+    let square = write("square.json", 128, 128);
+    assert_eq!(zsim(&["step", path(&square), "--html", "-o", path(&page)]).code, 0);
+}

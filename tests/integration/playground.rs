@@ -279,6 +279,18 @@ fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
         // Under it, the JSON's line it is on, quoted.
         assert_eq!(text(&client, "#error").await, format!("{error}\nстрока 1: {bad}"), "the scene's error in Russian");
         assert!(error.contains("вершин"), "{error}");
+        // A scene larger than the page draws, linked: refused in one line that names the limit.
+        let huge = r#"{"width": 4096, "height": 4096, "polygons": [{"value": 1, "vertices": [[0, 0, 1], [9, 0, 1], [0, 9, 1]]}]}"#;
+        client.goto(&format!("http://127.0.0.1:{port}/#{}", playground::fragment_of(huge))).await.unwrap();
+        let limit = playground::view(Lang::Ru, huge)["error"].as_str().unwrap().to_string();
+        assert!(limit.contains("4194304") && limit.contains("zsim run"), "{limit}");
+        for _ in 0..100 {
+            if text(&client, "#error").await.starts_with(&limit) {
+                break;
+            }
+            tokio::time::sleep(Duration::from_millis(50)).await;
+        }
+        assert!(text(&client, "#error").await.starts_with(&limit), "the page's limit, in Russian");
         std::fs::write(dir.join("playground-ru-1280.png"), client.screenshot().await.unwrap()).unwrap();
         client.close().await.unwrap();
 

@@ -137,3 +137,10 @@ address-holds-no-scene = The address does not hold a scene: #scene= must be foll
 scene-name-default = the scene
 error-at-line = line { $line }: { $text }
 limit-scene-bytes = This scene has { $bytes } bytes; the page reads scenes of up to { $max } bytes: zsim run draws it.
+limit-page-cells = the page draws rasters of up to { $max } pixels; this one has { $cells }: zsim run draws it
+limit-page-polygons = the page draws up to { $max } polygons; this scene has { $count }: zsim run draws it
+limit-page-vertices = the page draws polygons of up to { $max } vertices; polygon { $polygon } has { $count }: zsim run draws it
+limit-recorded-page = the recorded page steps scenes of up to { $cells } pixels and { $polygons } polygons; this one has { $has_cells } pixels and { $has_polygons } { $has_polygons ->
+    [one] polygon
+   *[other] polygons
+}: zsim step steps it in a terminal

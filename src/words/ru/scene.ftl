@@ -134,3 +134,11 @@ address-holds-no-scene = В адресе нет сцены: после #scene= �
 scene-name-default = сцена
 error-at-line = строка { $line }: { $text }
 limit-scene-bytes = В этой сцене { $bytes } байт; страница читает сцены до { $max } байт: её нарисует zsim run.
+limit-page-cells = страница рисует растры до { $max } пикселов; в этом { $cells }: его рисует zsim run
+limit-page-polygons = страница рисует до { $max } многоугольников; в этой сцене { $count }: её рисует zsim run
+limit-page-vertices = страница рисует многоугольники до { $max } вершин; у многоугольника { $polygon } их { $count }: сцену рисует zsim run
+limit-recorded-page = записанная страница проходит сцены до { $cells } пикселов и { $polygons } многоугольников; в этой { $has_cells } пикселов и { $has_polygons } { $has_polygons ->
+    [one] многоугольник
+    [few] многоугольника
+   *[many] многоугольников
+}: её проходит zsim step в терминале

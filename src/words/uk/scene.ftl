@@ -134,3 +134,11 @@ address-holds-no-scene = В адресі немає сцени: після #scen
 scene-name-default = сцена
 error-at-line = рядок { $line }: { $text }
 limit-scene-bytes = У цій сцені { $bytes } байт; сторінка читає сцени до { $max } байт: її намалює zsim run.
+limit-page-cells = сторінка малює растри до { $max } пікселів; у цьому { $cells }: його малює zsim run
+limit-page-polygons = сторінка малює до { $max } багатокутників; у цій сцені { $count }: її малює zsim run
+limit-page-vertices = сторінка малює багатокутники до { $max } вершин; у багатокутника { $polygon } їх { $count }: сцену малює zsim run
+limit-recorded-page = записана сторінка проходить сцени до { $cells } пікселів і { $polygons } багатокутників; у цій { $has_cells } пікселів і { $has_polygons } { $has_polygons ->
+    [one] багатокутник
+    [few] багатокутники
+   *[many] багатокутників
+}: її проходить zsim step у терміналі

@@ -134,3 +134,7 @@ address-holds-no-scene = 地址中没有场景：#scene= 之后应是 base64url 
 scene-name-default = 场景
 error-at-line = 第 { $line } 行：{ $text }
 limit-scene-bytes = 该场景有 { $bytes } 字节；本页面只读取不超过 { $max } 字节的场景：请用 zsim run 绘制。
+limit-page-cells = 页面最多绘制 { $max } 个像素的光栅；此光栅有 { $cells } 个：请用 zsim run 绘制
+limit-page-polygons = 页面最多绘制 { $max } 个多边形；此场景有 { $count } 个：请用 zsim run 绘制
+limit-page-vertices = 页面绘制的多边形最多 { $max } 个顶点；多边形 { $polygon } 有 { $count } 个：请用 zsim run 绘制
+limit-recorded-page = 录制的页面最多逐步演示 { $cells } 个像素和 { $polygons } 个多边形的场景；此场景有 { $has_cells } 个像素和 { $has_polygons } 个多边形：请在终端中用 zsim step 逐步演示
