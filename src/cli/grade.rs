@@ -239,7 +239,10 @@ fn mistakes_text(
     format!("{}\n{table}\n{more}", zsim::words!(lang, "grade-mistakes"))
 }
 
-/// FOLDER/NAME.txt for each student and FOLDER/common-mistakes.txt.
+/// FOLDER/NAME.feedback.txt for each student and FOLDER/common-mistakes.txt:
+/// every name planned and checked first, then each student's feedback made
+/// and written one at a time, so that a class of any size holds one
+/// student's feedback at a time.
 fn write_feedback(
     lang: zsim::Lang,
     folder: &Path,
@@ -247,7 +250,6 @@ fn write_feedback(
     class: &ClassGrades,
 ) -> Result<(), Error> {
     let last = class.last;
-    let mut outputs = Vec::new();
     // The scene's buffers and wrong rules drawn once for the class, each student's files found once: a
     // class of thousands costs what its students cost, not their square.
     let prepared = zsim::check::Prepared::new(scene, last);
@@ -255,39 +257,45 @@ fn write_feedback(
     for file in &class.files {
         files_of.entry(file.student.as_str()).or_default().push(file);
     }
+    let (prepared, files_of) = (&prepared, &files_of);
+    let mut plan = zsim::Plan::new(&[&args.class], zsim::Replace::Never);
     // Each student's own file name, told apart where two would take one.
     let names = zsim::class::feedback_names(class.rows().into_iter().map(|grade| grade.student.as_str()));
     for (grade, name) in class.rows().into_iter().zip(names) {
-        let mut text = zsim::words!(
-            lang,
-            "grade-feedback",
-            student = &grade.student,
-            scene = zsim::shown_path(&args.scene),
-            polygon = polygon_after(lang, scene, last),
-            score = zsim::localize_decimal(lang, grade.percent()),
-            status = grade.status.words(lang)
-        ) + "\n";
-        // A file that looked like this student's but was not graded: said as the report says it.
-        for skipped in class.skipped.iter().filter(|s| s.meant.as_ref().is_some_and(|(who, _)| *who == grade.student)) {
-            text.push_str(&format!("{}\n", skipped.text(lang)));
-        }
-        // The answers that were read, explained as `zsim check` explains them.
-        let mut answers = Vec::new();
-        for file in files_of.get(grade.student.as_str()).into_iter().flatten() {
-            match read_answer(lang, &file.path, scene, file.buffer, zsim::Links::Refuse) {
-                Ok(matrix) => answers.push((file.buffer, file.path.as_path(), matrix)),
-                Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(lang, &error, &file.path))),
-            }
-        }
-        if !answers.is_empty() {
-            let report = check_with(lang, scene, &args.scene, last, answers, Arith::Exact, Some(&prepared))?;
-            text.push_str(&report_text(lang, &report));
-        }
         // NAME.feedback.txt never ends as a submitted NAME.frame.txt or NAME.depth.txt
         // does, nor is it the summary's name, whatever the student's name.
-        outputs.push((name, text.into_bytes()));
+        plan.file_made(folder.join(name), move || {
+            let mut text = zsim::words!(
+                lang,
+                "grade-feedback",
+                student = &grade.student,
+                scene = zsim::shown_path(&args.scene),
+                polygon = polygon_after(lang, scene, last),
+                score = zsim::localize_decimal(lang, grade.percent()),
+                status = grade.status.words(lang)
+            ) + "\n";
+            // A file that looked like this student's but was not graded: said as the report says it.
+            for skipped in
+                class.skipped.iter().filter(|s| s.meant.as_ref().is_some_and(|(who, _)| *who == grade.student))
+            {
+                text.push_str(&format!("{}\n", skipped.text(lang)));
+            }
+            // The answers that were read, explained as `zsim check` explains them.
+            let mut answers = Vec::new();
+            for file in files_of.get(grade.student.as_str()).into_iter().flatten() {
+                match read_answer(lang, &file.path, scene, file.buffer, zsim::Links::Refuse) {
+                    Ok(matrix) => answers.push((file.buffer, file.path.as_path(), matrix)),
+                    Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(lang, &error, &file.path))),
+                }
+            }
+            if !answers.is_empty() {
+                let report = check_with(lang, scene, &args.scene, last, answers, Arith::Exact, Some(prepared))?;
+                text.push_str(&report_text(lang, &report));
+            }
+            Ok(text.into_bytes())
+        });
     }
     let mistakes = mistakes_text(lang, (&class.mistakes, class.mistakes_left_out), &class.reasons, class.graded.len());
-    outputs.push(("common-mistakes.txt".to_string(), mistakes.into_bytes()));
-    zsim::write_fresh(folder, &outputs, &[&args.class]).map(drop)
+    plan.file(folder.join("common-mistakes.txt"), mistakes);
+    plan.write().map(drop)
 }

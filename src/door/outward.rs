@@ -5,7 +5,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use super::inward::Identity;
-use super::staged::Staged;
+use super::staged::{Folder, Staged};
 use crate::error::{Error, Usage};
 
 /// Whether a planned file may replace one that is there.
@@ -27,10 +27,37 @@ pub const MAX_PATH_BYTES: usize = 4095;
 
 /// One file to write.
 #[derive(Debug)]
-struct Planned {
+struct Planned<'a> {
     path: PathBuf,
-    bytes: Vec<u8>,
+    contents: Contents<'a>,
     executable: bool,
+}
+
+/// What a planned file holds: its bytes, or what makes them, called when
+/// the file is written (so that a command writing thousands of files, a
+/// class's feedback, holds one at a time).
+enum Contents<'a> {
+    Bytes(Vec<u8>),
+    Later(Box<dyn FnOnce() -> Result<Vec<u8>, Error> + 'a>),
+}
+
+impl Contents<'_> {
+    /// The bytes, made now where they are made later.
+    fn take(&mut self) -> Result<Vec<u8>, Error> {
+        match std::mem::replace(self, Contents::Bytes(Vec::new())) {
+            Contents::Bytes(bytes) => Ok(bytes),
+            Contents::Later(make) => make(),
+        }
+    }
+}
+
+impl std::fmt::Debug for Contents<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Contents::Bytes(bytes) => write!(f, "{} bytes", bytes.len()),
+            Contents::Later(_) => write!(f, "made when written"),
+        }
+    }
 }
 
 /// Everything one command writes, planned before the first byte is written.
@@ -45,16 +72,16 @@ struct Planned {
 /// until the last is in place, so an interrupted command leaves the old
 /// files or none, never half of one.
 #[derive(Debug)]
-pub struct Plan {
+pub struct Plan<'a> {
     inputs: Vec<Identity>,
-    files: Vec<Planned>,
+    files: Vec<Planned<'a>>,
     replace: Replace,
 }
 
-impl Plan {
+impl<'a> Plan<'a> {
     /// A plan that must not write onto any of `inputs` (files, or folders
     /// whose files it must not write into).
-    pub fn new(inputs: &[&Path], replace: Replace) -> Plan {
+    pub fn new(inputs: &[&Path], replace: Replace) -> Plan<'a> {
         let mut inputs: Vec<Identity> = inputs.iter().filter_map(|p| Identity::of(p)).collect();
         // Standard input is an input too (`-`), where it is a file.
         inputs.extend(Identity::stdin());
@@ -69,12 +96,18 @@ impl Plan {
 
     /// Plans `bytes` into the file at `path`.
     pub fn file(&mut self, path: impl Into<PathBuf>, bytes: impl Into<Vec<u8>>) {
-        self.files.push(Planned { path: path.into(), bytes: bytes.into(), executable: false });
+        self.files.push(Planned { path: path.into(), contents: Contents::Bytes(bytes.into()), executable: false });
+    }
+
+    /// Plans the file at `path`, its bytes made by `make` when it is written
+    /// (after the whole plan is checked), one file at a time.
+    pub fn file_made(&mut self, path: impl Into<PathBuf>, make: impl FnOnce() -> Result<Vec<u8>, Error> + 'a) {
+        self.files.push(Planned { path: path.into(), contents: Contents::Later(Box::new(make)), executable: false });
     }
 
     /// Plans an executable file (a script): mode 0777 less the umask on Unix.
     pub fn executable(&mut self, path: impl Into<PathBuf>, bytes: impl Into<Vec<u8>>) {
-        self.files.push(Planned { path: path.into(), bytes: bytes.into(), executable: true });
+        self.files.push(Planned { path: path.into(), contents: Contents::Bytes(bytes.into()), executable: true });
     }
 
     /// Checks the whole plan, as [`Plan`] says, and tells which planned files
@@ -142,45 +175,47 @@ impl Plan {
     /// Checks the plan, then writes it (see [`Plan`]); the paths written.
     pub fn write(self) -> Result<Vec<PathBuf>, Error> {
         let is_stream = self.check()?;
-        let (streams, files): (Vec<_>, Vec<_>) =
-            self.files.iter().zip(is_stream).partition(|(_, stream)| *stream != Stream::No);
+        let (replace, count) = (self.replace, self.files.len());
+        let (streams, mut files): (Vec<_>, Vec<_>) =
+            self.files.into_iter().zip(is_stream).partition(|(_, stream)| *stream != Stream::No);
         let _held = held::Interruptions::hold();
         let mut staged = Vec::with_capacity(files.len());
-        // Each folder made once, however many files go into it.
-        let mut made: std::collections::HashSet<&Path> = std::collections::HashSet::new();
-        for (file, _) in &files {
-            let folder = folder_of(&file.path);
-            if made.insert(folder) {
-                std::fs::create_dir_all(folder).map_err(|source| Error::Write { path: folder.to_owned(), source })?;
-            }
+        // Each folder made and opened once, however many files go into it.
+        let mut folders: std::collections::HashMap<PathBuf, std::sync::Arc<Folder>> = std::collections::HashMap::new();
+        for (file, _) in &mut files {
+            let path = folder_of(&file.path);
+            let folder = match folders.get(path) {
+                Some(folder) => std::sync::Arc::clone(folder),
+                None => {
+                    let failed = |source| Error::Write { path: path.to_owned(), source };
+                    std::fs::create_dir_all(path).map_err(failed)?;
+                    let folder = std::sync::Arc::new(Folder::open(path).map_err(failed)?);
+                    folders.insert(path.to_path_buf(), std::sync::Arc::clone(&folder));
+                    folder
+                }
+            };
             let failed = |source| Error::Write { path: file.path.clone(), source };
             // The mode a new file gets (0666, or 0777 for a script, less the umask), not a temporary file's 0600.
             let mode = if file.executable { 0o777 } else { 0o666 };
-            let mut temporary = Staged::new(folder, mode).map_err(failed)?;
-            temporary.file().write_all(&file.bytes).map_err(failed)?;
-            if !SYNC_BY_FILE_SYSTEM {
-                temporary.file().sync_data().map_err(failed)?;
-            }
+            let bytes = file.contents.take()?;
+            let mut temporary = Staged::new(&folder, mode).map_err(failed)?;
+            temporary.write_and_close(&bytes, !SYNC_BY_FILE_SYSTEM).map_err(failed)?;
             staged.push(temporary);
         }
         // Every staged file on disk before the first is renamed into place: on Linux one sync of
         // each folder's file system (a class's feedback is thousands of files), elsewhere each
         // file was synced as it was written.
         if SYNC_BY_FILE_SYSTEM {
-            let mut synced: std::collections::HashSet<&Path> = std::collections::HashSet::new();
-            for ((file, _), temporary) in files.iter().zip(&mut staged) {
-                if synced.insert(folder_of(&file.path)) {
-                    let failed = |source| Error::Write { path: file.path.clone(), source };
-                    sync_file_system(temporary.file()).map_err(failed)?;
-                }
+            for (path, folder) in &folders {
+                folder.sync_file_system().map_err(|source| Error::Write { path: path.clone(), source })?;
             }
         }
-        let mut written = Vec::with_capacity(self.files.len());
+        let mut written = Vec::with_capacity(count);
         for ((file, _), temporary) in files.into_iter().zip(staged) {
             let name = file.path.file_name().expect("a planned file has a name (checked)");
-            if let Err(error) = temporary.place(name, self.replace) {
+            if let Err(error) = temporary.place(name, replace) {
                 // Undo what this plan placed: it replaced nothing, so nothing is lost.
-                if self.replace == Replace::Never {
+                if replace == Replace::Never {
                     for path in &written {
                         let _ = std::fs::remove_file(path);
                     }
@@ -190,12 +225,13 @@ impl Plan {
             written.push(file.path.clone());
         }
         // Streams last: what is written into them cannot be taken back.
-        for (file, stream) in streams {
+        for (mut file, stream) in streams {
+            let bytes = file.contents.take()?;
             let failed = |source| Error::Write { path: file.path.clone(), source };
             match stream {
-                Stream::Own(Which::Output) => std::io::stdout().lock().write_all(&file.bytes).map_err(failed)?,
-                Stream::Own(Which::Error) => std::io::stderr().lock().write_all(&file.bytes).map_err(failed)?,
-                _ => write_stream(&file.path, &file.bytes).map_err(failed)?,
+                Stream::Own(Which::Output) => std::io::stdout().lock().write_all(&bytes).map_err(failed)?,
+                Stream::Own(Which::Error) => std::io::stderr().lock().write_all(&bytes).map_err(failed)?,
+                _ => write_stream(&file.path, &bytes).map_err(failed)?,
             }
             written.push(file.path.clone());
         }
@@ -206,23 +242,6 @@ impl Plan {
 /// Whether staged files are made durable by one sync of their file system
 /// (Linux's `syncfs`) rather than one by one.
 const SYNC_BY_FILE_SYSTEM: bool = cfg!(target_os = "linux");
-
-/// Syncs the whole file system that holds `file` (Linux's `syncfs`).
-fn sync_file_system(file: &std::fs::File) -> std::io::Result<()> {
-    #[cfg(target_os = "linux")]
-    {
-        use std::os::fd::AsRawFd;
-        // SAFETY: syncfs on a descriptor this plan holds open.
-        if unsafe { libc::syncfs(file.as_raw_fd()) } != 0 {
-            return Err(std::io::Error::last_os_error());
-        }
-        Ok(())
-    }
-    #[cfg(not(target_os = "linux"))]
-    {
-        file.sync_data()
-    }
-}
 
 /// Writes `bytes` into an existing device or FIFO, opened without waiting
 /// for a reader (a FIFO nobody reads is an error, not a hang).

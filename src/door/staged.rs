@@ -12,31 +12,65 @@ use std::path::Path;
 
 use super::outward::Replace;
 
-/// A staged file (see the module).
-pub(super) struct Staged {
+/// A folder files are staged in, opened once for all of them.
+pub(super) struct Folder {
+    /// Its path, to sync its file system by.
+    path: std::path::PathBuf,
     #[cfg(not(target_arch = "wasm32"))]
-    folder: cap_std::fs::Dir,
+    dir: cap_std::fs::Dir,
     #[cfg(target_arch = "wasm32")]
-    folder: std::path::PathBuf,
+    dir: std::path::PathBuf,
+}
+
+impl Folder {
+    /// The folder at `path`, opened.
+    pub(super) fn open(path: &Path) -> io::Result<Folder> {
+        #[cfg(not(target_arch = "wasm32"))]
+        let dir = cap_std::fs::Dir::open_ambient_dir(path, cap_std::ambient_authority())?;
+        #[cfg(target_arch = "wasm32")]
+        let dir = path.to_path_buf();
+        Ok(Folder { path: path.to_path_buf(), dir })
+    }
+
+    /// Makes everything written into its file system durable (Linux's
+    /// `syncfs` on the folder), where files are not synced one by one.
+    pub(super) fn sync_file_system(&self) -> io::Result<()> {
+        #[cfg(target_os = "linux")]
+        {
+            use std::os::fd::AsRawFd;
+            // The handle is for naming files in the folder only (O_PATH): syncfs takes an opened one.
+            let opened = std::fs::File::open(&self.path)?;
+            // SAFETY: syncfs on a descriptor this function holds open.
+            if unsafe { libc::syncfs(opened.as_raw_fd()) } != 0 {
+                return Err(io::Error::last_os_error());
+            }
+        }
+        #[cfg(not(target_os = "linux"))]
+        let _ = &self.path;
+        Ok(())
+    }
+}
+
+/// A staged file (see the module): its folder, its temporary name, and
+/// while it is written, the file itself (closed once written, so that a
+/// folder of thousands of files holds one descriptor, the folder's).
+pub(super) struct Staged {
+    folder: std::sync::Arc<Folder>,
     /// The temporary name; empty once placed.
     temporary: String,
-    file: std::fs::File,
+    file: Option<std::fs::File>,
 }
 
 impl Staged {
     /// A new empty file in `folder` under a temporary name no other file
     /// has, with `mode` (less the umask) where the system has modes.
-    pub(super) fn new(folder: &Path, mode: u32) -> io::Result<Staged> {
-        #[cfg(not(target_arch = "wasm32"))]
-        let folder = cap_std::fs::Dir::open_ambient_dir(folder, cap_std::ambient_authority())?;
-        #[cfg(target_arch = "wasm32")]
-        let folder = folder.to_path_buf();
+    pub(super) fn new(folder: &std::sync::Arc<Folder>, mode: u32) -> io::Result<Staged> {
         let seed =
             std::hash::BuildHasher::hash_one(&std::collections::hash_map::RandomState::new(), std::process::id());
         for attempt in 0u64..100 {
             let temporary = format!(".zsim-{:012x}", (seed ^ attempt.wrapping_mul(0x9e37_79b9_7f4a_7c15)) >> 16);
-            match open_new(&folder, &temporary, mode) {
-                Ok(file) => return Ok(Staged { folder, temporary, file }),
+            match open_new(&folder.dir, &temporary, mode) {
+                Ok(file) => return Ok(Staged { folder: std::sync::Arc::clone(folder), temporary, file: Some(file) }),
                 Err(error) if error.kind() == io::ErrorKind::AlreadyExists => continue,
                 Err(error) => return Err(error),
             }
@@ -44,9 +78,15 @@ impl Staged {
         Err(io::Error::new(io::ErrorKind::AlreadyExists, "no free temporary name"))
     }
 
-    /// The file, to write and sync.
-    pub(super) fn file(&mut self) -> &mut std::fs::File {
-        &mut self.file
+    /// Writes `bytes` into it, syncs them where `sync` says, and closes it.
+    pub(super) fn write_and_close(&mut self, bytes: &[u8], sync: bool) -> io::Result<()> {
+        use std::io::Write;
+        let mut file = self.file.take().ok_or_else(|| io::Error::other("written already"))?;
+        file.write_all(bytes)?;
+        if sync {
+            file.sync_data()?;
+        }
+        Ok(())
     }
 
     /// Renamed into place as `name` in its folder: over a file there where
@@ -55,8 +95,8 @@ impl Staged {
     /// and the temporary name removed).
     pub(super) fn place(mut self, name: &OsStr, replace: Replace) -> io::Result<()> {
         let placed = match replace {
-            Replace::Allowed => rename(&self.folder, &self.temporary, name),
-            Replace::Never => rename_no_replace(&self.folder, &self.temporary, name),
+            Replace::Allowed => rename(&self.folder.dir, &self.temporary, name),
+            Replace::Never => rename_no_replace(&self.folder.dir, &self.temporary, name),
         };
         if placed.is_ok() {
             self.temporary.clear();
@@ -69,9 +109,9 @@ impl Drop for Staged {
     fn drop(&mut self) {
         if !self.temporary.is_empty() {
             #[cfg(not(target_arch = "wasm32"))]
-            let _ = self.folder.remove_file(&self.temporary);
+            let _ = self.folder.dir.remove_file(&self.temporary);
             #[cfg(target_arch = "wasm32")]
-            let _ = std::fs::remove_file(self.folder.join(&self.temporary));
+            let _ = std::fs::remove_file(self.folder.dir.join(&self.temporary));
         }
     }
 }

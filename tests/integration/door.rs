@@ -1123,3 +1123,31 @@ fn step_html_refuses_what_a_page_does_not_draw() {
     let square = write("square.json", 128, 128);
     assert_eq!(zsim(&["step", path(&square), "--html", "-o", path(&page)]).code, 0);
 }
+
+/// A class's feedback is made and written one student at a time, each file
+/// closed once written and the folder opened once: 300 students are graded
+/// into their feedback with 64 file descriptors, and each file holds its
+/// student's report.
+#[test]
+fn feedback_is_written_one_student_at_a_time_with_few_descriptors() {
+    let dir = scratch("feedback-descriptors");
+    let class = dir.join("class");
+    std::fs::create_dir_all(&class).unwrap();
+    for k in 0..300 {
+        for buffer in ["frame", "depth"] {
+            std::fs::copy(format!("examples/class/bo.{buffer}.txt"), class.join(format!("s{k}.{buffer}.txt"))).unwrap();
+        }
+    }
+    let out = dir.join("out");
+    let command = format!(
+        "ulimit -n 64 && exec '{}' grade examples/rogers.json '{}' -o '{}'",
+        env!("CARGO_BIN_EXE_zsim"),
+        path(&class),
+        path(&out)
+    );
+    let run = std::process::Command::new("sh").args(["-c", &command]).env("LANG", "C.UTF-8").output().unwrap();
+    assert_eq!(run.status.code(), Some(1), "{}", String::from_utf8_lossy(&run.stderr));
+    assert_eq!(std::fs::read_dir(&out).unwrap().count(), 301);
+    let feedback = std::fs::read_to_string(out.join("s299.feedback.txt")).unwrap();
+    assert!(feedback.contains("30 of 1024 cells differ"), "{feedback}");
+}
