@@ -11,8 +11,25 @@ use serde_json::Value;
 
 use crate::error::Refusal;
 use crate::scene::Scene;
-use crate::teach::playground::{MAX_SHOWN_CELLS, MAX_SHOWN_POLYGONS};
 use crate::words::{Lang, shown_path};
+
+/// The largest raster the page shows cell by cell (each polygon's buffers,
+/// every stop): 128 × 128. A larger scene is still drawn and its final
+/// buffers shown.
+pub const MAX_SHOWN_CELLS: u64 = 128 * 128;
+
+/// The most polygons whose buffers the page shows one by one.
+pub const MAX_SHOWN_POLYGONS: usize = 64;
+
+/// The largest raster whose final buffers the page prints as text: 512 ×
+/// 512 (a 1024 × 1024 raster's text kept a tab busy past a second). A larger
+/// scene is drawn, and the page says why its buffers are not printed.
+pub const MAX_PRINTED_CELLS: u64 = 512 * 512;
+
+/// The longest scene text the page reads, typed or in its address: 1 MiB
+/// (thousands of polygons; a longer one is for `zsim run`, and reading it
+/// kept a tab busy for seconds). Refused in one line naming the limit.
+pub const MAX_PAGE_SCENE_BYTES: usize = 1 << 20;
 
 /// The largest raster the page draws at all: 2048 × 2048 (4,194,304
 /// pixels); a larger one is for `zsim run`.

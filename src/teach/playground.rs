@@ -28,6 +28,7 @@ use crate::scene::Scene;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::answer_from_text;
+pub use crate::teach::page_limits::{MAX_PAGE_SCENE_BYTES, MAX_PRINTED_CELLS, MAX_SHOWN_CELLS, MAX_SHOWN_POLYGONS};
 use crate::teach::step::lesson::{Command, Lesson, Said};
 use crate::teach::step::page::{Buffers, buffer_data};
 use crate::teach::step::{Moved, Question, QuizMode};
@@ -39,29 +40,11 @@ pub fn scene_name(lang: Lang) -> String {
     words!(lang, "scene-name-default")
 }
 
-/// The largest raster the page shows cell by cell (each polygon's buffers,
-/// every stop): 128 × 128. A larger scene is still drawn and its final
-/// buffers shown.
-pub const MAX_SHOWN_CELLS: u64 = 128 * 128;
-
-/// The most polygons whose buffers the page shows one by one.
-pub const MAX_SHOWN_POLYGONS: usize = 64;
-
 /// Whether the page shows `scene` cell by cell and polygon by polygon (its
 /// buffers after each polygon, the stepper).
 fn shown_by_polygon(scene: &Scene) -> bool {
     u64::from(scene.width) * u64::from(scene.height) <= MAX_SHOWN_CELLS && scene.polygons.len() <= MAX_SHOWN_POLYGONS
 }
-
-/// The largest raster whose final buffers the page prints as text: 512 ×
-/// 512 (a 1024 × 1024 raster's text kept a tab busy past a second). A larger
-/// scene is drawn, and the page says why its buffers are not printed.
-pub const MAX_PRINTED_CELLS: u64 = 512 * 512;
-
-/// The longest scene text the page reads, typed or in its address: 1 MiB
-/// (thousands of polygons; a longer one is for `zsim run`, and reading it
-/// kept a tab busy for seconds). Refused in one line naming the limit.
-pub const MAX_PAGE_SCENE_BYTES: usize = 1 << 20;
 
 /// Why a scene of `bytes` bytes is not read by the page, in one line.
 fn too_long(lang: Lang, bytes: usize) -> String {

@@ -358,7 +358,7 @@ fn imported_cases_draw_as_the_course_draws_them_exactly() {
 
 /// As above, for the two cases that draw textured triangles.
 #[test]
-#[ignore = "19 s in a debug build; run with --ignored"]
+#[ignore = "needs the courses' files in ../shared/peer (and 19 s in a debug build)"]
 fn imported_textured_cases_draw_as_the_course_draws_them_exactly() {
     let dir = cases();
     for name in ["textures", "decals"] {
