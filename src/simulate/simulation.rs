@@ -8,7 +8,7 @@ use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::Buffers;
-use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};
+use crate::simulate::events::{Fate, Observer, Outcome, PolygonEvent, ScanlineEvent, Unobserved};
 use crate::simulate::fast::levels::{InOrder, Levels, OnePolygon};
 use crate::simulate::fast::tiles::{Cleared, TileStart, Tiles, Tiling, bins, pool};
 use crate::simulate::setup::{Stats, fate, prefetch_ahead};
@@ -345,18 +345,7 @@ impl<S: PixelStages, O: Observer> RasterSink for DrawSink<'_, S, O> {
             self.stats.written += 1;
             self.buffers.store(x, y, decision.frame, decision.stored.clone());
         }
-        self.observer.pixel(&PixelEvent {
-            index: self.index,
-            x,
-            y,
-            depth,
-            compared: decision.compared,
-            stored_before,
-            frame_before,
-            outcome: decision.outcome,
-            stored_after: decision.stored,
-            frame_after: decision.frame,
-        });
+        self.observer.pixel(&decision.event(self.index, (x, y), depth, (stored_before, frame_before)));
     }
 }
 

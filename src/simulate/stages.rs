@@ -7,7 +7,7 @@ use crate::numbers::{Q, fraction};
 use crate::raster::depth::{Depth, DepthTest, Stored};
 use crate::rules::{Compare, DepthStore, RowRule};
 use crate::scene::{Polygon, Scene};
-use crate::simulate::events::Outcome;
+use crate::simulate::events::{Outcome, PixelEvent};
 
 /// What the per-pixel stages make of one covered centre.
 #[derive(Debug, Clone)]
@@ -20,6 +20,25 @@ pub struct Decision {
     pub stored: Stored,
     /// The framebuffer after.
     pub frame: u32,
+}
+
+impl Decision {
+    /// What an observer is told of this decision: pixel (`x`, `y`) of
+    /// polygon `index` at exact depth `depth`, over the cells it found.
+    pub fn event(self, index: usize, (x, y): (u32, u32), depth: Depth, (stored, frame): (Stored, u32)) -> PixelEvent {
+        PixelEvent {
+            index,
+            x,
+            y,
+            depth,
+            compared: self.compared,
+            stored_before: stored,
+            frame_before: frame,
+            outcome: self.outcome,
+            stored_after: self.stored,
+            frame_after: self.frame,
+        }
+    }
 }
 
 /// The per-pixel stages between the exact depth and the buffers, chosen once

@@ -65,21 +65,26 @@ fn fills(svg: &str) -> Vec<[u8; 3]> {
     colours
 }
 
-/// The figure's TikZ and SVG: one filled rectangle per run of cells, a node per value.
-#[test]
-fn figure_writes_tikz_cell_for_cell_as_its_svg() {
-    let dir = scratch("figure-tikz");
-    let out = |name: &str| dir.join(name).to_str().unwrap().to_string();
-    for name in ["rogers.svg", "rogers.tex", "rogers-only.tex"] {
-        let mut args = vec!["figure", "examples/rogers.json", "--values", "-o"];
-        let path = out(name);
-        args.push(&path);
-        if name == "rogers-only.tex" {
+/// The book's figure with its values, written as each of `names` (`NAME-only.tex`: TikZ
+/// alone) into a scratch folder `folder`, which is returned.
+fn figures(folder: &str, names: &[&str]) -> PathBuf {
+    let dir = scratch(folder);
+    for name in names {
+        let path = dir.join(name).to_str().unwrap().to_string();
+        let mut args = vec!["figure", "examples/rogers.json", "--values", "-o", &path];
+        if name.ends_with("-only.tex") {
             args.push("--tikz-only");
         }
         let run = zsim(&args);
         assert_eq!((run.code, run.stderr.as_str()), (0, ""), "{name}");
     }
+    dir
+}
+
+/// The figure's TikZ and SVG: one filled rectangle per run of cells, a node per value.
+#[test]
+fn figure_writes_tikz_cell_for_cell_as_its_svg() {
+    let dir = figures("figure-tikz", &["rogers.svg", "rogers.tex", "rogers-only.tex"]);
     let svg = std::fs::read_to_string(dir.join("rogers.svg")).unwrap();
     assert_eq!(fills(&svg).len(), 2, "the rectangle's and the triangle's fill");
     let tex = std::fs::read_to_string(dir.join("rogers.tex")).unwrap();
@@ -99,18 +104,7 @@ fn figure_writes_tikz_cell_for_cell_as_its_svg() {
 #[test]
 #[ignore = "needs the figures feature, pdftoppm (poppler-utils) and pdflatex (texlive-latex-base, texlive-pictures)"]
 fn figure_writes_tikz_that_compiles_and_a_pdf_that_renders() {
-    let dir = scratch("figure");
-    let out = |name: &str| dir.join(name).to_str().unwrap().to_string();
-    for name in ["rogers.svg", "rogers.pdf", "rogers.tex"] {
-        let mut args = vec!["figure", "examples/rogers.json", "--values", "-o"];
-        let path = out(name);
-        args.push(&path);
-        if name == "rogers-only.tex" {
-            args.push("--tikz-only");
-        }
-        let run = zsim(&args);
-        assert_eq!((run.code, run.stderr.as_str()), (0, ""), "{name}");
-    }
+    let dir = figures("figure", &["rogers.svg", "rogers.pdf", "rogers.tex"]);
     let svg = std::fs::read_to_string(dir.join("rogers.svg")).unwrap();
     let colours = fills(&svg);
     assert_eq!(colours.len(), 2, "the rectangle's and the triangle's fill: {colours:?}");

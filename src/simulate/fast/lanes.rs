@@ -46,35 +46,23 @@ const EIGHT: usize = 8;
 pub(super) fn span<F: FrameCell, const GREATER: bool>(
     (depth, frame): (&mut [u32], &mut [F]),
     length: usize,
-    (start, step, denominator): (Stepped, Stepped, i64),
+    stepping: (Stepped, Stepped, i64),
     eight: Option<&EightLanes>,
     write: CellWrite<F>,
 ) -> u64 {
     use crate::simulate::fast::wide::{Plain4, Plain8};
     let write = write.compiled::<GREATER>();
-    #[cfg(target_arch = "x86_64")]
-    let avx2 = std::arch::is_x86_feature_detected!("avx2");
-    match lanes_for(length, depth.len().min(frame.len()), start, eight) {
-        Lanes::Eight(room, eight) => {
-            let cells = (&mut depth[..room], &mut frame[..room]);
-            #[cfg(target_arch = "x86_64")]
-            if avx2 {
-                // SAFETY: the processor has AVX2, checked above.
-                return unsafe { eight_in_avx2::<F, GREATER>(cells, length, start, eight, write) };
-            }
-            eight_cells::<Plain8, F, GREATER>(cells, length, start, eight, write)
-        }
-        Lanes::Four => {
-            let cells = (&mut depth[..length], &mut frame[..length]);
-            #[cfg(target_arch = "x86_64")]
-            if avx2 {
-                // SAFETY: the processor has AVX2, checked above.
-                return unsafe { four_in_avx2::<F, GREATER>(cells, start, step, denominator, write) };
-            }
-            four_cells::<Plain4, F, GREATER>(cells, start, step, denominator, write)
-        }
-        Lanes::One => cell_by_cell((&mut depth[..length], &mut frame[..length]), start, step, denominator, write),
+    let lanes = lanes_for(length, depth.len().min(frame.len()), stepping.0, eight);
+    if let Lanes::One = lanes {
+        let (start, step, denominator) = stepping;
+        return cell_by_cell((&mut depth[..length], &mut frame[..length]), start, step, denominator, write);
     }
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the processor has AVX2, checked just above.
+        return unsafe { in_avx2::<F, GREATER>((depth, frame), length, stepping, lanes, write) };
+    }
+    in_lanes::<Plain8, Plain4, F, GREATER>((depth, frame), length, stepping, lanes, write)
 }
 
 /// Which lanes a span is drawn in.
@@ -105,31 +93,55 @@ fn lanes_for(length: usize, cells: usize, start: Stepped, eight: Option<&EightLa
     }
 }
 
+/// The span in `lanes`, over the lane types `L8` (eight 32-bit lanes) and
+/// `L4` (four 64-bit ones): the one place the loops are chosen, for AVX2's
+/// registers and the plain lanes alike.
+#[inline(always)]
+fn in_lanes<L8: Lanes32, L4: Lanes64, F: FrameCell, const GREATER: bool>(
+    (depth, frame): (&mut [u32], &mut [F]),
+    length: usize,
+    (start, step, denominator): (Stepped, Stepped, i64),
+    lanes: Lanes<'_>,
+    write: CellWrite<F>,
+) -> u64 {
+    match lanes {
+        Lanes::Eight(room, eight) => {
+            eight_cells::<L8, F, GREATER>((&mut depth[..room], &mut frame[..room]), length, start, eight, write)
+        }
+        Lanes::Four => {
+            four_cells::<L4, F, GREATER>((&mut depth[..length], &mut frame[..length]), start, step, denominator, write)
+        }
+        Lanes::One => cell_by_cell((&mut depth[..length], &mut frame[..length]), start, step, denominator, write),
+    }
+}
+
+/// [`in_lanes`] in AVX2's registers.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn in_avx2<F: FrameCell, const GREATER: bool>(
+    cells: (&mut [u32], &mut [F]),
+    length: usize,
+    stepping: (Stepped, Stepped, i64),
+    lanes: Lanes<'_>,
+    write: CellWrite<F>,
+) -> u64 {
+    in_lanes::<Avx8, Avx4, F, GREATER>(cells, length, stepping, lanes, write)
+}
+
 /// [`span`] with the plain lanes whatever the processor: the loops the
 /// property tests hold to the cell where the processor has AVX2 too.
 #[cfg(test)]
 fn span_in_plain_lanes<F: FrameCell, const GREATER: bool>(
     (depth, frame): (&mut [u32], &mut [F]),
     length: usize,
-    (start, step, denominator): (Stepped, Stepped, i64),
+    stepping: (Stepped, Stepped, i64),
     eight: Option<&EightLanes>,
     write: CellWrite<F>,
 ) -> u64 {
     use crate::simulate::fast::wide::{Plain4, Plain8};
     let write = write.compiled::<GREATER>();
-    match lanes_for(length, depth.len().min(frame.len()), start, eight) {
-        Lanes::Eight(room, eight) => {
-            eight_cells::<Plain8, F, GREATER>((&mut depth[..room], &mut frame[..room]), length, start, eight, write)
-        }
-        Lanes::Four => four_cells::<Plain4, F, GREATER>(
-            (&mut depth[..length], &mut frame[..length]),
-            start,
-            step,
-            denominator,
-            write,
-        ),
-        Lanes::One => cell_by_cell((&mut depth[..length], &mut frame[..length]), start, step, denominator, write),
-    }
+    let lanes = lanes_for(length, depth.len().min(frame.len()), stepping.0, eight);
+    in_lanes::<Plain8, Plain4, F, GREATER>((depth, frame), length, stepping, lanes, write)
 }
 
 /// A polygon's step, for its short spans drawn eight cells at a time in
@@ -181,32 +193,6 @@ impl EightLanes {
             threshold: write.test.threshold.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32,
         })
     }
-}
-
-/// [`eight_cells`] in AVX2's registers.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn eight_in_avx2<F: FrameCell, const GREATER: bool>(
-    cells: (&mut [u32], &mut [F]),
-    length: usize,
-    start: Stepped,
-    eight: &EightLanes,
-    write: CellWrite<F>,
-) -> u64 {
-    eight_cells::<Avx8, F, GREATER>(cells, length, start, eight, write)
-}
-
-/// [`four_cells`] in AVX2's registers.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn four_in_avx2<F: FrameCell, const GREATER: bool>(
-    cells: (&mut [u32], &mut [F]),
-    start: Stepped,
-    step: Stepped,
-    denominator: i64,
-    write: CellWrite<F>,
-) -> u64 {
-    four_cells::<Avx4, F, GREATER>(cells, start, step, denominator, write)
 }
 
 /// A short span in chunks of eight cells, the first `length` of `cells`

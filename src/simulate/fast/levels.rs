@@ -9,7 +9,7 @@ use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::{FrameCell, LevelCells};
-use crate::simulate::events::{Fate, Observer, Outcome, PixelEvent, ScanlineEvent, Unobserved};
+use crate::simulate::events::{Fate, Observer, Outcome, ScanlineEvent, Unobserved};
 use crate::simulate::fast::branch_free::{CellWrite, Stepped};
 use crate::simulate::fast::lanes;
 use crate::simulate::setup::{CORE_CACHE, Stats, fate, prefetch_ahead, prefetch_cells};
@@ -256,17 +256,6 @@ impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
             }
             self.frame[cell] = self.value;
         }
-        self.observer.pixel(&PixelEvent {
-            index: self.index,
-            x,
-            y,
-            depth,
-            compared: decision.compared,
-            stored_before,
-            frame_before,
-            outcome: decision.outcome,
-            stored_after: decision.stored,
-            frame_after: decision.frame,
-        });
+        self.observer.pixel(&decision.event(self.index, (x, y), depth, (stored_before, frame_before)));
     }
 }
