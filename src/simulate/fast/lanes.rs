@@ -53,14 +53,23 @@ pub(super) fn span<F: FrameCell, const GREATER: bool>(
     use crate::simulate::fast::wide::{Plain4, Plain8};
     let write = write.compiled::<GREATER>();
     let lanes = lanes_for(length, depth.len().min(frame.len()), stepping.0, eight);
-    if let Lanes::One = lanes {
-        let (start, step, denominator) = stepping;
-        return cell_by_cell((&mut depth[..length], &mut frame[..length]), start, step, denominator, write);
-    }
+    // Each loop its own AVX2 function, so that each is compiled as small as it was written.
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the processor has AVX2, checked just above.
-        return unsafe { in_avx2::<F, GREATER>((depth, frame), length, stepping, lanes, write) };
+        let (start, step, denominator) = stepping;
+        match lanes {
+            Lanes::Eight(room, eight) => {
+                let cells = (&mut depth[..room], &mut frame[..room]);
+                // SAFETY: the processor has AVX2, checked just above.
+                return unsafe { eight_in_avx2::<F, GREATER>(cells, length, start, eight, write) };
+            }
+            Lanes::Four => {
+                let cells = (&mut depth[..length], &mut frame[..length]);
+                // SAFETY: the processor has AVX2, checked just above.
+                return unsafe { four_in_avx2::<F, GREATER>(cells, start, step, denominator, write) };
+            }
+            Lanes::One => {}
+        }
     }
     in_lanes::<Plain8, Plain4, F, GREATER>((depth, frame), length, stepping, lanes, write)
 }
@@ -93,9 +102,9 @@ fn lanes_for(length: usize, cells: usize, start: Stepped, eight: Option<&EightLa
     }
 }
 
-/// The span in `lanes`, over the lane types `L8` (eight 32-bit lanes) and
-/// `L4` (four 64-bit ones): the one place the loops are chosen, for AVX2's
-/// registers and the plain lanes alike.
+/// The span in `lanes`, over the plain lane types `L8` (eight 32-bit lanes)
+/// and `L4` (four 64-bit ones), or one cell at a time: where AVX2 is not
+/// there, and for every span in the property tests.
 #[inline(always)]
 fn in_lanes<L8: Lanes32, L4: Lanes64, F: FrameCell, const GREATER: bool>(
     (depth, frame): (&mut [u32], &mut [F]),
@@ -115,17 +124,30 @@ fn in_lanes<L8: Lanes32, L4: Lanes64, F: FrameCell, const GREATER: bool>(
     }
 }
 
-/// [`in_lanes`] in AVX2's registers.
+/// [`eight_cells`] in AVX2's registers.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn in_avx2<F: FrameCell, const GREATER: bool>(
+fn eight_in_avx2<F: FrameCell, const GREATER: bool>(
     cells: (&mut [u32], &mut [F]),
     length: usize,
-    stepping: (Stepped, Stepped, i64),
-    lanes: Lanes<'_>,
+    start: Stepped,
+    eight: &EightLanes,
     write: CellWrite<F>,
 ) -> u64 {
-    in_lanes::<Avx8, Avx4, F, GREATER>(cells, length, stepping, lanes, write)
+    eight_cells::<Avx8, F, GREATER>(cells, length, start, eight, write)
+}
+
+/// [`four_cells`] in AVX2's registers.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn four_in_avx2<F: FrameCell, const GREATER: bool>(
+    cells: (&mut [u32], &mut [F]),
+    start: Stepped,
+    step: Stepped,
+    denominator: i64,
+    write: CellWrite<F>,
+) -> u64 {
+    four_cells::<Avx4, F, GREATER>(cells, start, step, denominator, write)
 }
 
 /// [`span`] with the plain lanes whatever the processor: the loops the
