@@ -1,3 +1,4 @@
+#![cfg_attr(not(any(test, target_arch = "x86_64")), allow(dead_code))]
 //! A span's cells several at a time ([`span`]): spans of up to 32 cells
 //! eight at a time in 32-bit lanes when the polygon's values fit them
 //! ([`eight_cells`]), others from 16 cells on four at a time in 64-bit
@@ -7,8 +8,9 @@
 //! store are the branch-free cell's ([`super::branch_free::test_and_store`])
 //! on every lane. Both loops are written over the lane types of
 //! [`super::wide`]: the processor runs them in AVX2's registers where it has
-//! them (one cell at a time elsewhere), and the property tests run the same
-//! loops over the plain lanes on every target. Their specification is
+//! them (one cell at a time elsewhere: the plain lanes, arrays, were measured
+//! slower than the cell), and the property tests run the same loops over the
+//! plain lanes on every target. Their specification is
 //! [`super::branch_free::cell_by_cell`], as the proptests
 //! `lanes_decide_as_the_cell_does` and `lanes_decide_as_the_cell_does_at_their_bounds` hold them.
 
@@ -50,7 +52,6 @@ pub(super) fn span<F: FrameCell, const GREATER: bool>(
     eight: Option<&EightLanes>,
     write: CellWrite<F>,
 ) -> u64 {
-    use crate::simulate::fast::wide::{Plain4, Plain8};
     let write = write.compiled::<GREATER>();
     let lanes = lanes_for(length, depth.len().min(frame.len()), stepping.0, eight);
     // Each loop its own AVX2 function, so that each is compiled as small as it was written.
@@ -71,7 +72,12 @@ pub(super) fn span<F: FrameCell, const GREATER: bool>(
             Lanes::One => {}
         }
     }
-    in_lanes::<Plain8, Plain4, F, GREATER>((depth, frame), length, stepping, lanes, write)
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = lanes;
+    // Without AVX2, one cell at a time: the plain lanes run the same loops as arrays, held to
+    // the cell by the proptests on every target, and measured slower than the cell itself.
+    let (start, step, denominator) = stepping;
+    cell_by_cell((&mut depth[..length], &mut frame[..length]), start, step, denominator, write)
 }
 
 /// Which lanes a span is drawn in.
@@ -102,10 +108,10 @@ fn lanes_for(length: usize, cells: usize, start: Stepped, eight: Option<&EightLa
     }
 }
 
-/// The span in `lanes`, over the plain lane types `L8` (eight 32-bit lanes)
-/// and `L4` (four 64-bit ones), or one cell at a time: where AVX2 is not
-/// there, and for every span in the property tests.
-#[inline(always)]
+/// The span in `lanes`, over the lane types `L8` (eight 32-bit lanes) and
+/// `L4` (four 64-bit ones), or one cell at a time: the plain lanes' loops in
+/// the property tests, on every target.
+#[cfg(test)]
 fn in_lanes<L8: Lanes32, L4: Lanes64, F: FrameCell, const GREATER: bool>(
     (depth, frame): (&mut [u32], &mut [F]),
     length: usize,

@@ -208,7 +208,11 @@ impl<O: Observer, F: FrameCell> LevelSink<'_, O, F> {
         step: Stepped,
     ) -> u64 {
         let write = self.cell_write::<GREATER>();
-        let eight = self.eight.get_or_insert_with(|| lanes::EightLanes::new(step, denominator, write)).as_ref();
+        // Only AVX2 reads the eight lanes' data: elsewhere it is not made.
+        let eight = match cfg!(target_arch = "x86_64") {
+            true => self.eight.get_or_insert_with(|| lanes::EightLanes::new(step, denominator, write)).as_ref(),
+            false => None,
+        };
         let cells = (&mut self.depth[cell..], &mut self.frame[cell..]);
         lanes::span::<F, GREATER>(cells, length, (depth, step, denominator), eight, write)
     }

@@ -1,10 +1,13 @@
+#![cfg_attr(not(any(test, target_arch = "x86_64")), allow(dead_code))]
 //! Lanes: small fixed-width integer vectors the span loops
 //! ([`super::lanes`]) are written over, as tiny-skia's `wide` does: eight
 //! 32-bit lanes ([`Lanes32`]) and four 64-bit ones ([`Lanes64`]), each with
-//! a plain version of arrays compiled on every target ([`Plain8`],
-//! [`Plain4`]) and, on x86-64, an AVX2 one ([`Avx8`], [`Avx4`]). The loops
-//! are generic over them, so the one loop the processor runs with AVX2 is
-//! the one the property tests run on every target, wasm32 included.
+//! a plain version of arrays that the property tests compile on every target
+//! (`Plain8`, `Plain4`) and, on x86-64, an AVX2 one ([`Avx8`], [`Avx4`]).
+//! The loops are generic over them, so the one loop the processor runs with
+//! AVX2 is the one the property tests run on every target, wasm32 included
+//! (elsewhere the processor draws a span one cell at a time: as arrays the
+//! lanes were slower than the cell).
 //!
 //! Arithmetic wraps, as the processor's does; a comparison gives a mask,
 //! every bit of a lane set where it holds and none where not; a selection
@@ -65,10 +68,12 @@ pub(super) trait Lanes64: Copy {
     fn first(self) -> i64;
 }
 
-/// Eight 32-bit lanes as an array: every target.
+/// Eight 32-bit lanes as an array: every target, in the property tests.
+#[cfg(test)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Plain8([i32; 8]);
 
+#[cfg(test)]
 impl Plain8 {
     #[inline(always)]
     fn zip(self, other: Plain8, f: impl Fn(i32, i32) -> i32) -> Plain8 {
@@ -76,6 +81,7 @@ impl Plain8 {
     }
 }
 
+#[cfg(test)]
 impl Lanes32 for Plain8 {
     #[inline(always)]
     fn splat(value: i32) -> Self {
@@ -129,10 +135,12 @@ impl Lanes32 for Plain8 {
     }
 }
 
-/// Four 64-bit lanes as an array: every target.
+/// Four 64-bit lanes as an array: every target, in the property tests.
+#[cfg(test)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Plain4([i64; 4]);
 
+#[cfg(test)]
 impl Plain4 {
     #[inline(always)]
     fn zip(self, other: Plain4, f: impl Fn(i64, i64) -> i64) -> Plain4 {
@@ -140,6 +148,7 @@ impl Plain4 {
     }
 }
 
+#[cfg(test)]
 impl Lanes64 for Plain4 {
     #[inline(always)]
     fn splat(value: i64) -> Self {
