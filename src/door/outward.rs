@@ -213,7 +213,7 @@ impl<'a> Plan<'a> {
         let mut written = Vec::with_capacity(count);
         for ((file, _), temporary) in files.into_iter().zip(staged) {
             let name = file.path.file_name().expect("a planned file has a name (checked)");
-            if let Err(error) = temporary.place(name, replace) {
+            if let Err(error) = temporary.place(name, replace == Replace::Allowed) {
                 // Undo what this plan placed: it replaced nothing, so nothing is lost.
                 if replace == Replace::Never {
                     for path in &written {

@@ -10,8 +10,6 @@ use std::ffi::OsStr;
 use std::io;
 use std::path::Path;
 
-use super::outward::Replace;
-
 /// A folder files are staged in, opened once for all of them.
 pub(super) struct Folder {
     /// Its path, to sync its file system by.
@@ -90,13 +88,13 @@ impl Staged {
     }
 
     /// Renamed into place as `name` in its folder: over a file there where
-    /// `replace` allows it, else only where none is (the rename refuses to
+    /// `over` says so, else only where none is (the rename refuses to
     /// replace, or on file systems without such a rename, a hard link is made
     /// and the temporary name removed).
-    pub(super) fn place(mut self, name: &OsStr, replace: Replace) -> io::Result<()> {
-        let placed = match replace {
-            Replace::Allowed => rename(&self.folder.dir, &self.temporary, name),
-            Replace::Never => rename_no_replace(&self.folder.dir, &self.temporary, name),
+    pub(super) fn place(mut self, name: &OsStr, over: bool) -> io::Result<()> {
+        let placed = match over {
+            true => rename(&self.folder.dir, &self.temporary, name),
+            false => rename_no_replace(&self.folder.dir, &self.temporary, name),
         };
         if placed.is_ok() {
             self.temporary.clear();
