@@ -25,6 +25,8 @@
   let lesson = null, lessonState = null, lessonScene = null, addressTimer = null;
   // The pixel whose history is shown, and the keyboard's pixel cursor on the raster.
   let picked = null, cursor = null;
+  // The address the page shows: written by the page or applied from a link.
+  let applied = null;
   // The raster's width on the screen, kept by a ResizeObserver.
   let gridWidth = 640;
   // Framebuffer values as colours: the library's (the figure's), 0 white.
@@ -171,7 +173,8 @@
   function renderFigure() {
     if (!$("figureBox").open || !lesson) return;
     const figure = JSON.parse(lesson.figure());
-    $("figure").innerHTML = figure.ok ? figure.svg : "";
+    if (figure.ok) $("figure").innerHTML = figure.svg;
+    else $("figure").replaceChildren(el("p", figure.error, "help"));
   }
 
   function renderPolygons(object) {
@@ -476,9 +479,12 @@
   }
 
   function renderHomeworkChoices() {
-    const select = $("hwAfter"), chosen = select.value;
-    select.replaceChildren(...view.polygons.map((p, i) => { const o = el("option", p.label); o.value = i; return o; }));
-    select.value = chosen !== "" && Number(chosen) < view.polygons.length ? chosen : Math.max(0, view.polygons.length - 1);
+    const select = $("hwAfter"), chosen = select.value, choices = view.checkable;
+    select.replaceChildren(...choices.map((c) => { const o = el("option", c.label); o.value = c.index; return o; }));
+    select.value = choices.some((c) => String(c.index) === chosen) ? chosen : choices.length ? choices[choices.length - 1].index : "";
+    // A grid of inputs only for a raster the page shows cell by cell (the notes say why not).
+    $("answerGrid").disabled = !view.cellByCell;
+    if (!view.cellByCell) $("answerCells").replaceChildren();
   }
 
   // A grid of cells to type an answer into, top row first, starting from the cleared buffer;
@@ -555,6 +561,7 @@
     if (location.hash !== hash) {
       try { history[push ? "pushState" : "replaceState"](null, "", hash); } catch (e) { /* a page from disk may refuse */ }
     }
+    applied = location.hash;
     $("link").value = location.href;
   }
 
@@ -580,6 +587,9 @@
   }
 
   function applyAddress() {
+    // A followed link fires popstate and hashchange alike: the address is applied once.
+    if (location.hash === applied) return;
+    applied = location.hash;
     const { text, place, pixel, broken } = readAddress();
     if (broken) return;
     if (text !== null && text !== scene) {
@@ -724,6 +734,7 @@
     lang = z.choose_language(preferred.join("\n"));
     words = JSON.parse(z.words(lang));
     const { text, place, pixel } = readAddress();
+    applied = location.hash;
     lessonState = place ? { at: place } : null;
     scene = text !== null ? text : window.ZSIM_SCENE || z.book_scene();
     const error = $("error").textContent;

@@ -121,6 +121,7 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
         let page = match playground {
             Some(page) => {
                 zsim::page_limits::check_text(&text, Some(&args.scene)).map_err(Error::from)?;
+                zsim::page_limits::check_reach(&scene, Some(&args.scene)).map_err(Error::from)?;
                 page
             }
             None => {

@@ -19,6 +19,7 @@ use base64::Engine as _;
 use serde_json::{Value, json};
 
 use crate::effects::arith::Arith;
+use crate::error::Refusal;
 use crate::numbers::to_f64;
 use crate::observe::explain::Buffer;
 use crate::observe::explain::history::{Extras, history};
@@ -29,6 +30,7 @@ use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::answer_from_text;
 pub use crate::teach::page_limits::{MAX_PAGE_SCENE_BYTES, MAX_PRINTED_CELLS, MAX_SHOWN_CELLS, MAX_SHOWN_POLYGONS};
+use crate::teach::page_limits::{TooLarge, check_reach, check_text};
 use crate::teach::step::lesson::{Command, Lesson, Said};
 use crate::teach::step::page::{Buffers, buffer_data};
 use crate::teach::step::{Moved, Question, QuizMode};
@@ -48,7 +50,7 @@ fn shown_by_polygon(scene: &Scene) -> bool {
 
 /// Why a scene of `bytes` bytes is not read by the page, in one line.
 fn too_long(lang: Lang, bytes: usize) -> String {
-    words!(lang, "limit-scene-bytes", bytes = bytes.to_string(), max = MAX_PAGE_SCENE_BYTES.to_string())
+    TooLarge::Bytes { path: None, bytes }.message(lang)
 }
 
 /// The scene read from `text`, or its error worded as the command line words
@@ -56,14 +58,10 @@ fn too_long(lang: Lang, bytes: usize) -> String {
 /// polygon, `{"key": "width"}` for a setting, `{"line": n, "text"}` (from 1)
 /// for JSON that does not read.
 fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
-    if text.len() > MAX_PAGE_SCENE_BYTES {
-        return Err(json!({"ok": false, "error": too_long(lang, text.len()), "at": null}));
-    }
-    // The page's limits, before the scene is read (reading is the work they spare).
-    if let Err(too_large) = crate::teach::page_limits::check_text(text, None) {
-        return Err(json!({"ok": false, "error": crate::error::Refusal::message(&too_large, lang), "at": null}));
-    }
-    Scene::from_json(lang, text, Path::new(&scene_name(lang))).map_err(|error| {
+    let refused = |too_large: TooLarge| json!({"ok": false, "error": too_large.message(lang), "at": null});
+    // The page's limits, before the scene is read (reading is the work they spare)…
+    check_text(text, None).map_err(refused)?;
+    let scene = Scene::from_json(lang, text, Path::new(&scene_name(lang))).map_err(|error| {
         let at = match &error {
             crate::error::Error::Polygon { index, .. } => json!({"polygon": index}),
             crate::error::Error::Setting { key, .. } => json!({"key": key}),
@@ -74,12 +72,16 @@ fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
             _ => Value::Null,
         };
         json!({"ok": false, "error": error.message(lang), "at": at})
-    })
+    })?;
+    // …and what its polygons reach, before anything is drawn.
+    check_reach(&scene, None).map_err(refused)?;
+    Ok(scene)
 }
 
-/// Everything the page shows of the scene in `text`: its size, each
-/// polygon's outline in pixel units and whether the page shows it polygon
-/// by polygon (`byPolygon`), the final buffers as `zsim run --final` prints
+/// Everything the page shows of the scene in `text`: its size, whether the
+/// page shows it polygon by polygon (`byPolygon`) and then each polygon's
+/// outline in pixel units (`polygons`), the states a homework answer may be
+/// checked against (`checkable`: `{"index", "label"}`), the final buffers as `zsim run --final` prints
 /// them (`framebuffer`, `zbuffer`), the palette and notes; or `{"ok":
 /// false, "error": …}` with the scene's error. The buffers after one
 /// polygon are [`after`]'s, the stepper's the lesson's ([`lesson_state`]).
@@ -94,20 +96,33 @@ pub fn view(lang: Lang, text: &str) -> Value {
 pub fn view_of(lang: Lang, scene: &Scene) -> Value {
     let cells = u64::from(scene.width) * u64::from(scene.height);
     let shown = cells <= MAX_SHOWN_CELLS && scene.polygons.len() <= MAX_SHOWN_POLYGONS;
-    let polygons: Vec<Value> = scene
-        .polygons
-        .iter()
-        .enumerate()
-        .map(|(index, polygon)| {
-            // Outlines only where the page shows the scene polygon by polygon.
-            let outline: Vec<[f64; 2]> = match shown {
-                true => polygon.vertices().iter().map(|v| [to_f64(&v[0]), to_f64(&v[1])]).collect(),
-                false => Vec::new(),
-            };
-            json!({"name": polygon.name, "label": polygon_label(lang, "polygon-after", index, &polygon.name),
-                   "value": polygon.value, "outline": outline})
-        })
-        .collect();
+    // Each polygon's outline only where the page shows the scene polygon by polygon.
+    let polygons: Vec<Value> = match shown {
+        true => scene
+            .polygons
+            .iter()
+            .enumerate()
+            .map(|(index, polygon)| {
+                let outline: Vec<[f64; 2]> =
+                    polygon.vertices().iter().map(|v| [to_f64(&v[0]), to_f64(&v[1])]).collect();
+                json!({"name": polygon.name, "label": polygon_label(lang, "polygon-after", index, &polygon.name),
+                       "value": polygon.value, "outline": outline})
+            })
+            .collect(),
+        false => Vec::new(),
+    };
+    // The states a homework answer may be checked against: after each polygon where the page
+    // shows them, after the last otherwise.
+    let checkable: Vec<Value> = match shown {
+        true => polygons.iter().enumerate().map(|(index, p)| json!({"index": index, "label": p["label"]})).collect(),
+        false => scene
+            .polygons
+            .len()
+            .checked_sub(1)
+            .map(|last| json!({"index": last, "label": polygon_label(lang, "polygon-after", last, &scene.polygons[last].name)}))
+            .into_iter()
+            .collect(),
+    };
     let mut simulation = Simulation::new(scene);
     simulation.finish(&mut Unobserved);
     let buffers = simulation.buffers();
@@ -134,7 +149,7 @@ pub fn view_of(lang: Lang, scene: &Scene) -> Value {
     json!({
         "ok": true,
         "width": scene.width, "height": scene.height,
-        "polygons": polygons, "byPolygon": shown,
+        "polygons": polygons, "byPolygon": shown, "checkable": checkable,
         "cellByCell": cells <= MAX_SHOWN_CELLS,
         // What each buffer is cleared to: where a student's answer grid starts (no level: exact depths).
         "cleared": {"frame": scene.background, "depth": scene.clear_depth.level()},
@@ -178,7 +193,8 @@ pub fn after_of(lang: Lang, scene: &Scene, index: usize) -> Value {
 }
 
 /// The book-style figure of the scene in `text` after its last polygon, as
-/// `zsim figure` draws it (SVG), or `{"ok": false, "error"}`.
+/// `zsim figure` draws it (SVG), or `{"ok": false, "error"}` (also for a
+/// raster of more than [`MAX_PRINTED_CELLS`] pixels).
 pub fn figure(lang: Lang, text: &str) -> Value {
     match scene_of(lang, text) {
         Ok(scene) => figure_of(lang, &scene),
@@ -191,6 +207,9 @@ pub fn figure_of(lang: Lang, scene: &Scene) -> Value {
     let Some(last) = scene.polygons.len().checked_sub(1) else {
         return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
     };
+    if u64::from(scene.width) * u64::from(scene.height) > MAX_PRINTED_CELLS {
+        return json!({"ok": false, "error": words!(lang, "limit-figure-cells", cells = MAX_PRINTED_CELLS.to_string())});
+    }
     let mut simulation = Simulation::new(scene);
     simulation.finish(&mut Unobserved);
     json!({"ok": true, "svg": figure::svg(lang, scene, simulation.buffers(), last, Shading::Frame, &scene_name(lang))})
@@ -723,14 +742,14 @@ mod tests {
         assert_eq!(
             refused,
             format!(
-                "This scene has {} bytes; the page reads scenes of up to 1048576 bytes: zsim run draws it.",
+                "the page reads scenes of up to 1048576 bytes; this one has {}: zsim run draws it",
                 MAX_PAGE_SCENE_BYTES + 3
             )
         );
         let view = view(Lang::En, &" ".repeat(MAX_PAGE_SCENE_BYTES + 1));
         assert_eq!(
             view["error"],
-            "This scene has 1048577 bytes; the page reads scenes of up to 1048576 bytes: zsim run draws it."
+            "the page reads scenes of up to 1048576 bytes; this one has 1048577: zsim run draws it"
         );
     }
 

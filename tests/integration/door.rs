@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use proptest::prelude::*;
 
+use crate::limits::{peak_kib, stated};
 use crate::{zsim, zsim_in, zsim_with};
 
 /// An empty scratch folder of its own.
@@ -283,7 +284,8 @@ fn gradescope_grades_the_states_the_teacher_expects_and_nothing_else() {
     assert_eq!((tests[0]["score"].as_f64(), tests[0]["status"].as_str()), (Some(0.0), Some("failed")));
     assert!(tests[0]["output"].as_str().unwrap().contains("after-01.frame.txt"), "{}", tests[0]);
     // Points: 0 is refused; the most allowed adds up exactly; more is refused.
-    for points in ["0", "4294967295", "100001"] {
+    let most = stated("Points of an autograder").value;
+    for points in ["0", "4294967295", &(most + 1).to_string()] {
         let run = zsim(&[
             "check",
             path(&scene),
@@ -297,8 +299,8 @@ fn gradescope_grades_the_states_the_teacher_expects_and_nothing_else() {
         assert_eq!(run.code, 2, "--points {points}: {}", run.stdout);
     }
     let right = [("frame.txt", key("answer.frame.txt")), ("depth.txt", key("answer.depth.txt"))];
-    let results = grade(&right, &["--points", "100000"]);
-    assert_eq!(results["score"], 100000.0);
+    let results = grade(&right, &["--points", &most.to_string()]);
+    assert_eq!(results["score"], most as f64);
     assert!(results["tests"].as_array().unwrap().iter().all(|t| t["status"] == "passed"));
 }
 
@@ -430,35 +432,82 @@ fn large_figure_scene(dir: &Path) -> PathBuf {
     scene
 }
 
-/// `figure` of a 512 × 512 scene wrote a 24,904 × 24,772 PNG (5.3 GB of memory).
+/// `figure` of a 512 × 512 scene wrote a 24,904 × 24,772 PNG (5.3 GB of
+/// memory). Its longer side is kept within 4096 pixels; `--scale` asks for
+/// more, up to the limit's pixels (drawn just below it, refused just above).
 #[test]
 #[ignore = "needs the figures feature"]
-fn a_figure_png_stays_within_4096_pixels() {
+fn a_figure_png_stays_within_its_limits() {
+    if !cfg!(feature = "figures") {
+        crate::missing("the figures feature (cargo test --features figures)", "a figure's PNG");
+    }
+    let limit = stated("A figure's PNG");
     let dir = scratch("figure-png-size");
     let scene = large_figure_scene(&dir);
     let png = dir.join("s.png");
     let run = zsim(&["figure", path(&scene), "-o", path(&png)]);
     assert_eq!(run.code, 0, "{}", run.stderr);
-    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&png).unwrap()));
-    let info = decoder.read_info().unwrap();
-    let (width, height) = (info.info().width, info.info().height);
+    let size = |png: &Path| {
+        let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(png).unwrap()));
+        let info = decoder.read_info().unwrap();
+        (u64::from(info.info().width), u64::from(info.info().height))
+    };
+    let (width, height) = size(&png);
     assert_eq!(width.max(height), 4096, "{width} × {height}");
-    let run = zsim(&["figure", path(&scene), "-o", path(&png), "--scale", "64"]);
-    assert_eq!(run.code, 2, "{}", run.stdout);
-    assert!(run.stderr.contains("more than 67108864 pixels"), "{}", run.stderr);
+    // The book's figure, scaled to just below the limit's pixels and just above.
+    let svg = dir.join("book.svg");
+    assert_eq!(zsim(&["figure", "examples/rogers.json", "-o", path(&svg)]).code, 0);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let attribute = |name: &str| -> f64 {
+        let start = text.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+        text[start..].split('"').next().unwrap().parse().unwrap()
+    };
+    let (w, h) = (attribute("width"), attribute("height"));
+    let fitting = (limit.value as f64 / (w * h)).sqrt();
+    let book = dir.join("book.png");
+    let below = format!("{:.4}", fitting * 0.999);
+    let (code, peak) = peak_kib(&["figure", "examples/rogers.json", "-o", path(&book), "--scale", &below]);
+    assert_eq!(code, 0, "--scale {below}");
+    limit.hold_peak(peak);
+    let (width, height) = size(&book);
+    assert!(width * height <= limit.value && width * height > limit.value / 100 * 99, "{width} × {height}");
+    let above = format!("{:.4}", fitting * 1.001);
+    let run = zsim(&["figure", "examples/rogers.json", "-o", path(&book), "--scale", &above]);
+    assert_eq!(run.code, 2, "--scale {above}: {}", run.stdout);
+    assert!(run.stderr.contains(&format!("more than {} pixels", limit.value)), "{}", run.stderr);
 }
 
-/// A 12,000-character polygon name peaked at 2.7 GB in a figure.
+/// A 12,000-character polygon name peaked at 2.7 GB in a figure. A name is
+/// drawn whole up to its limit and cut, ending in `…`, one character past
+/// it; so is a title.
 #[test]
 fn a_figure_cuts_names_for_drawing() {
+    let (name_limit, title_limit) = (stated("A polygon's name in a figure"), stated("A figure's title"));
     let dir = scratch("figure-size");
     let scene = large_figure_scene(&dir);
     let svg = dir.join("s.svg");
     assert_eq!(zsim(&["figure", path(&scene), "-o", path(&svg)]).code, 0);
     let text = std::fs::read_to_string(&svg).unwrap();
-    // Names at most 80 characters, the title (which names the polygon) at most 400.
-    assert!(text.contains(&format!("&quot;{}…&quot;", "n".repeat(80))), "a legend name is not cut at 80");
-    assert!(!text.contains(&"n".repeat(401)), "a name drawn whole");
+    assert!(!text.contains(&"n".repeat(title_limit.count() + 1)), "a name drawn whole");
+    let named = |name: &str, title: &str| {
+        let scene = dir.join("named.json");
+        std::fs::write(
+            &scene,
+            format!(
+                r#"{{"polygons": [{{"name": "{name}", "value": 1, "vertices": [[0, 0, 1], [8, 0, 1], [0, 8, 1]]}}]}}"#
+            ),
+        )
+        .unwrap();
+        assert_eq!(zsim(&["figure", path(&scene), "-o", path(&svg), "--title", title]).code, 0);
+        std::fs::read_to_string(&svg).unwrap()
+    };
+    let (name, title) = ("m".repeat(name_limit.count()), "t".repeat(title_limit.count()));
+    let whole = named(&name, &title);
+    assert!(whole.contains(&format!("1 {name}</text>")), "a name at the limit is drawn whole");
+    assert!(whole.contains(&format!("<title>{title}</title>")), "a title at the limit is drawn whole");
+    let cut = named(&format!("{name}m"), &format!("{title}t"));
+    assert!(cut.contains(&format!("1 {name}…</text>")), "a name past the limit is cut");
+    assert!(cut.contains(&format!("<title>{title}…</title>")), "a title past the limit is cut");
 }
 
 /// Standard output on `/dev/null` opened read-write (`subprocess.DEVNULL`,
@@ -615,32 +664,6 @@ proptest! {
     }
 }
 
-/// The peak resident memory of one run of the binary, in KiB, as GNU time
-/// (`/usr/bin/time -f %M`) reports it. Not from this process's own `wait4`:
-/// a child spawned from the test harness starts as a copy of it, and the
-/// kernel counts the harness's resident memory at the spawn (lavapipe and the
-/// other tests' buffers, 276 MB in one full run) as the child's peak; GNU
-/// time is small when it starts zsim.
-fn peak_kib(args: &[&str]) -> (i32, i64) {
-    static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-    let run = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let report = std::env::temp_dir().join(format!("zsim-peak-{}-{run}", std::process::id()));
-    let status = std::process::Command::new("/usr/bin/time")
-        .args(["-f", "%M", "-o"])
-        .arg(&report)
-        .arg(env!("CARGO_BIN_EXE_zsim"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::null())
-        .status()
-        .expect("GNU time (/usr/bin/time, Debian's time package; .ci/run installs it)");
-    let text = std::fs::read_to_string(&report).unwrap();
-    let _ = std::fs::remove_file(&report);
-    let kib = text.lines().last().and_then(|l| l.trim().parse().ok()).unwrap_or_else(|| panic!("time said {text:?}"));
-    (status.code().unwrap_or(-1), kib)
-}
-
 /// An answer wrong in every cell held a reason and a watched history for
 /// each, and `grade` held every student's every wrong cell. The reasons are
 /// for the first 1000 cells, the rest counted; the class's common mistakes
@@ -649,6 +672,7 @@ fn peak_kib(args: &[&str]) -> (i32, i64) {
 /// `2026-11-25-one-door-in-one-door-out.md` has both).
 #[test]
 fn answers_wrong_everywhere_take_memory_for_a_few_answers_not_for_every_cell() {
+    let limit = stated("A class of answers wrong everywhere");
     let dir = scratch("wrong-everywhere");
     let side = 600;
     let scene = dir.join("s.json");
@@ -660,14 +684,15 @@ fn answers_wrong_everywhere_take_memory_for_a_few_answers_not_for_every_cell() {
     let class = dir.join("class");
     std::fs::create_dir_all(&class).unwrap();
     let row = vec!["2"; side].join(" ") + "\n";
-    for n in 0..8 {
+    for n in 0..limit.value {
         std::fs::write(class.join(format!("s{n}.frame.txt")), row.repeat(side)).unwrap();
     }
     let (code, check) = peak_kib(&["check", path(&scene), "--frame", path(&class.join("s0.frame.txt"))]);
     assert_eq!(code, 1);
     let (code, grade) = peak_kib(&["grade", path(&scene), path(&class)]);
     assert_eq!(code, 1);
-    assert!(check < 160_000 && grade < 200_000, "check {check} KiB, grade {grade} KiB");
+    // The class's peak (one answer's is no more).
+    limit.hold_peak(grade.max(check));
     let run = zsim(&["check", path(&scene), "--frame", path(&class.join("s0.frame.txt"))]);
     assert!(run.stdout.contains("360000 of 360000 cells differ"), "{}", &run.stdout[..200]);
     assert!(run.stdout.contains("… and 359000 more cells differ, not listed"));
@@ -925,21 +950,30 @@ fn an_output_named_dev_stdout_goes_into_standard_output() {
 
 /// Found by an attacker: `check` of an 8 MB answer of garbage peaked at
 /// 667 MB, a message built for every bad value though three are shown. The
-/// problems past the third are counted, not worded.
+/// problems past the third are counted, not worded: an answer of garbage of
+/// the largest size a file may have costs what its cells cost, and one byte
+/// more is refused before it is read.
 #[test]
 fn an_answer_of_garbage_costs_what_its_cells_cost() {
+    let limit = stated("An answer of garbage");
     let dir = scratch("garbage-answer");
     let line = format!("{}\n", vec!["x"; 32].join(" "));
     let garbage = dir.join("garbage.txt");
-    std::fs::write(&garbage, line.repeat(8 * 1024 * 1024 / line.len())).unwrap();
+    // Lines of 64 bytes: a whole number of them fill the file.
+    let lines = limit.count() / line.len();
+    std::fs::write(&garbage, line.repeat(lines)).unwrap();
+    assert_eq!(std::fs::metadata(&garbage).unwrap().len(), limit.value);
     let (code, peak) = peak_kib(&["check", "examples/rogers.json", "--frame", path(&garbage)]);
     assert_eq!(code, 2);
-    assert!(peak < 100_000, "check of 8 MiB of garbage peaked at {peak} KiB");
+    limit.hold_peak(peak);
     let run = zsim(&["check", "examples/rogers.json", "--frame", path(&garbage)]);
     assert!(run.stderr.contains("\"x\" is not a whole number"), "{}", &run.stderr[..200.min(run.stderr.len())]);
-    // 4,194,304 cells and the count of rows, each a problem: three named, the rest counted.
-    let cells = 8 * 1024 * 1024 / line.len() * 32;
-    assert!(run.stderr.ends_with(&format!(" · and {} more problems\n", cells + 1 - 3)), "{}", run.stderr);
+    // Every cell and the count of rows, each a problem: three named, the rest counted.
+    assert!(run.stderr.ends_with(&format!(" · and {} more problems\n", lines * 32 + 1 - 3)), "{}", run.stderr);
+    std::fs::write(&garbage, line.repeat(lines) + "x").unwrap();
+    let run = zsim(&["check", "examples/rogers.json", "--frame", path(&garbage)]);
+    assert_eq!((run.code, run.stderr.lines().count()), (2, 1), "{}", run.stderr);
+    assert!(run.stderr.contains(&format!("({} MiB)", limit.value >> 20)), "{}", run.stderr);
 }
 
 /// Found by an attacker: `step --html` of a 256×256 scene ran past 20 s and
@@ -964,9 +998,6 @@ fn a_recorded_page_holds_the_buffers_once_not_at_every_stop() {
     );
     std::fs::write(&page, &recorded).unwrap();
     assert!(recorded.len() < 8_000_000, "a page of {} bytes for a 128×128 scene", recorded.len());
-    let (code, peak) = peak_kib(&["step", path(&scene), "--html", "-o", path(&page)]);
-    assert_eq!(code, 0);
-    assert!(peak < 400_000, "step --html of a 128×128 scene peaked at {peak} KiB");
 }
 
 /// Found by an attacker: each `texture` line kept its own copy of the
@@ -984,7 +1015,8 @@ fn a_texture_named_many_times_is_held_once() {
     let pixels: Vec<u8> = (0..1024 * 1024 * 4).map(|i: u32| (i.wrapping_mul(2_654_435_761) >> 24) as u8).collect();
     encoder.write_header().unwrap().write_image_data(&pixels).unwrap();
     std::fs::write(dir.join("t.png"), bytes).unwrap();
-    let names: Vec<String> = (0..12).map(|k| format!("{}t.png", "./".repeat(k))).collect();
+    let names: Vec<String> =
+        (0..stated("A texture named many times").count()).map(|k| format!("{}t.png", "./".repeat(k))).collect();
     let case = |names: &[String], file: &str| {
         let lines: String = names.iter().map(|name| format!("texture {name}\n")).collect();
         let text = format!(
@@ -998,6 +1030,7 @@ fn a_texture_named_many_times_is_held_once() {
     let (code, peak_once) = peak_kib(&["cs418", "run", path(&once), "-o", path(&out)]);
     assert_eq!(code, 0);
     let (code, peak_twelve) = peak_kib(&["cs418", "run", path(&twelve), "-o", path(&out)]);
+    stated("A texture named many times").hold_peak(peak_twelve);
     assert_eq!(code, 0);
     assert!(peak_twelve < peak_once + 16 * 1024, "once {peak_once} KiB, twelve names {peak_twelve} KiB");
 }
@@ -1051,11 +1084,12 @@ fn feedback_names_that_collide_are_told_apart() {
 /// of 4,095 bytes is written, one of 4,096 refused in one line.
 #[test]
 fn an_output_path_as_long_as_the_system_allows_is_written() {
+    let most = stated("An output's path").count();
     let dir = scratch("long-path");
     let name = "f.svg";
     let mut folder = dir.clone();
     loop {
-        let remaining = 4095 - (folder.as_os_str().len() + 1 + name.len());
+        let remaining = most - (folder.as_os_str().len() + 1 + name.len());
         if remaining == 0 {
             break;
         }
@@ -1067,7 +1101,7 @@ fn an_output_path_as_long_as_the_system_allows_is_written() {
     }
     std::fs::create_dir_all(&folder).unwrap();
     let output = folder.join(name);
-    assert_eq!(output.as_os_str().len(), 4095);
+    assert_eq!(output.as_os_str().len(), most);
     let run = zsim(&["figure", "examples/rogers.json", "-o", path(&output)]);
     assert_eq!((run.code, run.stderr.as_str()), (0, ""));
     assert!(std::fs::read_to_string(&output).unwrap().starts_with("<svg"), "an SVG");
@@ -1120,8 +1154,46 @@ fn step_html_refuses_what_a_page_does_not_draw() {
             run.stderr
         );
     }
-    let square = write("square.json", 128, 128);
-    assert_eq!(zsim(&["step", path(&square), "--html", "-o", path(&page)]).code, 0);
+    // The recorded page's limits at their values and one past, as the library checks them
+    // (a zsim built with the playground draws what is past them in the playground instead).
+    let (cells, polygons, reach) = (
+        stated("The recorded page's raster"),
+        stated("The recorded page's polygons"),
+        stated("What the recorded page's polygons reach"),
+    );
+    let side = (cells.value as f64).sqrt() as u32;
+    assert_eq!(u64::from(side * side), cells.value);
+    // `large` triangles covering the raster, then small ones up to `count` polygons.
+    let scene = |width: u32, height: u32, large: u64, count: u64| {
+        let big = format!(r#"{{"value": 2, "vertices": [[0, 0, 1], [{width}, 0, 9], [0, {height}, 5]]}}"#);
+        let small = r#"{"value": 1, "vertices": [[0, 0, 1], [1, 0, 1], [0, 1, 1]]}"#;
+        let list: Vec<&str> = (0..count).map(|k| if k < large { big.as_str() } else { small }).collect();
+        format!(r#"{{"width": {width}, "height": {height}, "polygons": [{}]}}"#, list.join(", "))
+    };
+    let check = |text: &str| {
+        let scene = zsim::Scene::from_json(zsim::Lang::En, text, Path::new("s.json")).unwrap();
+        zsim::page_limits::check_recorded(&scene, Path::new("s.json"))
+    };
+    // The most raster-sized triangles the reach allows beside small ones (a pixel each) up to
+    // the most polygons.
+    let large = (reach.value - polygons.value) / (cells.value - 1);
+    let largest = scene(side, side, large, polygons.value);
+    assert_eq!(check(&largest), Ok(()));
+    assert!(check(&scene(side + 1, side, 0, 1)).is_err());
+    assert!(check(&scene(side, side, 0, polygons.value + 1)).is_err());
+    // Raster-sized triangles up to the reach, and one pixel more.
+    let whole = reach.value / cells.value;
+    assert_eq!(check(&scene(side, side, whole, whole)), Ok(()));
+    let past = check(&scene(side, side, whole, whole + 1)).unwrap_err();
+    let message = zsim::Refusal::message(&past, zsim::Lang::En);
+    assert!(message.contains(&format!("cover up to {} pixels", reach.value)), "{message}");
+    // The largest scene the recorded page steps, written as the page this zsim writes, within
+    // the peak stated.
+    let square = dir.join("square.json");
+    std::fs::write(&square, largest).unwrap();
+    let (code, peak) = peak_kib(&["step", path(&square), "--html", "-o", path(&page)]);
+    assert_eq!(code, 0);
+    cells.hold_peak(peak);
 }
 
 /// A class's feedback is made and written one student at a time, each file
@@ -1130,6 +1202,7 @@ fn step_html_refuses_what_a_page_does_not_draw() {
 /// student's report.
 #[test]
 fn feedback_is_written_one_student_at_a_time_with_few_descriptors() {
+    let descriptors = stated("A class's feedback files").value;
     let dir = scratch("feedback-descriptors");
     let class = dir.join("class");
     std::fs::create_dir_all(&class).unwrap();
@@ -1140,7 +1213,7 @@ fn feedback_is_written_one_student_at_a_time_with_few_descriptors() {
     }
     let out = dir.join("out");
     let command = format!(
-        "ulimit -n 64 && exec '{}' grade examples/rogers.json '{}' -o '{}'",
+        "ulimit -n {descriptors} && exec '{}' grade examples/rogers.json '{}' -o '{}'",
         env!("CARGO_BIN_EXE_zsim"),
         path(&class),
         path(&out)

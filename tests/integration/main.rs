@@ -31,6 +31,7 @@ mod hardening;
 mod languages;
 mod layers;
 mod lesson;
+mod limits;
 mod platforms;
 mod playground;
 mod run_command;

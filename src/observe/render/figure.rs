@@ -515,9 +515,50 @@ struct NameLabel {
 /// where the framebuffer shows its value; failing that at the centre it
 /// covers nearest its middle, or its middle (a polygon that covers none).
 /// Placement only: f64 is exact enough to choose a point to draw a line to.
+/// For each cell, the first two values other than the background shown to
+/// its right in its row: what tells in one look whether a row right of a
+/// cell shows any polygon but one (a scan of the row for each cell made a
+/// large raster's figure take as long as its side times its cells).
+struct ShownToTheRight {
+    width: u32,
+    /// Per cell, row by row: the first value right of it, then the first
+    /// other than that one (`None`: no such value).
+    values: Vec<[Option<u32>; 2]>,
+}
+
+impl ShownToTheRight {
+    fn of(scene: &Scene, buffers: &Buffers) -> Self {
+        let width = scene.width;
+        let mut values = vec![[None; 2]; width as usize * scene.height as usize];
+        for y in 0..scene.height {
+            let row = y as usize * width as usize;
+            let mut seen: [Option<u32>; 2] = [None; 2];
+            for x in (0..width).rev() {
+                values[row + x as usize] = seen;
+                let v = buffers.frame(x, y);
+                if v == scene.background || seen[0] == Some(v) || seen[1].is_some() {
+                    continue;
+                }
+                seen = match seen[0] {
+                    None => [Some(v), None],
+                    Some(first) => [Some(first), Some(v)],
+                };
+            }
+        }
+        ShownToTheRight { width, values }
+    }
+
+    /// Whether a value other than `value` and the background is shown right of (x, y).
+    fn other_than(&self, x: u32, y: u32, value: u32) -> bool {
+        let [first, second] = self.values[y as usize * self.width as usize + x as usize];
+        second.is_some() || first.is_some_and(|v| v != value)
+    }
+}
+
 fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> {
     let mut labels = Vec::new();
     let mut scratch = Scratch::default();
+    let right = ShownToTheRight::of(scene, buffers);
     for (index, polygon) in scene.polygons.iter().enumerate().take(last + 1) {
         let outline: Vec<(f64, f64)> = polygon
             .vertices()
@@ -550,10 +591,7 @@ fn name_labels(scene: &Scene, buffers: &Buffers, last: usize) -> Vec<NameLabel> 
             inside = nearer(inside, centre);
             if buffers.frame(x, y) == polygon.value {
                 visible = nearer(visible, centre);
-                let others = (x + 1..scene.width)
-                    .map(|right| buffers.frame(right, y))
-                    .any(|v| v != polygon.value && v != scene.background);
-                if !others {
+                if !right.other_than(x, y, polygon.value) {
                     clear = nearer(clear, centre);
                 }
             }

@@ -131,15 +131,18 @@ png-declares-too-many-pixels = the PNG declares { $width } × { $height } pixels
 png-figure-too-many-pixels = at that --scale the PNG would have more than { $max } pixels: ask for less
 limit-cells-or-polygons = This scene is too large to show cell by cell (more than { $cells } pixels or { $polygons } polygons): only the final buffers are shown.
 limit-printed-cells = This raster has more than { $cells } pixels: its buffers are drawn but not printed here; zsim run --final prints them.
+limit-figure-cells = The page draws figures of rasters of up to { $cells } pixels; zsim figure draws this one.
 scene-not-json = The scene is not JSON: { $reason }
 edit-does-not-fit = That change does not fit this scene's JSON.
 address-holds-no-scene = The address does not hold a scene: #scene= must be followed by the scene's JSON in base64url.
 scene-name-default = the scene
 error-at-line = line { $line }: { $text }
-limit-scene-bytes = This scene has { $bytes } bytes; the page reads scenes of up to { $max } bytes: zsim run draws it.
+limit-scene-bytes = the page reads scenes of up to { $max } bytes; this one has { $bytes }: zsim run draws it
 limit-page-cells = the page draws rasters of up to { $max } pixels; this one has { $cells }: zsim run draws it
 limit-page-polygons = the page draws up to { $max } polygons; this scene has { $count }: zsim run draws it
 limit-page-vertices = the page draws polygons of up to { $max } vertices; polygon { $polygon } has { $count }: zsim run draws it
+limit-page-reach = the page draws scenes whose polygons' bounding boxes cover up to { $max } pixels of the raster in all; this one's cover { $reach }: zsim run draws it
+limit-recorded-reach = the recorded page steps scenes whose polygons' bounding boxes cover up to { $max } pixels of the raster in all; this one's cover { $reach }: zsim step steps it in a terminal
 limit-recorded-page = the recorded page steps scenes of up to { $cells } pixels and { $polygons } polygons; this one has { $has_cells } pixels and { $has_polygons } { $has_polygons ->
     [one] polygon
    *[other] polygons

@@ -128,15 +128,18 @@ png-declares-too-many-pixels = PNG объявляет { $width } × { $height } 
 png-figure-too-many-pixels = при таком --scale в PNG было бы больше { $max } пикселей: укажите меньше
 limit-cells-or-polygons = Сцена слишком велика, чтобы показать её по ячейкам (больше { $cells } пикселов или { $polygons } многоугольников): показаны только итоговые буферы.
 limit-printed-cells = В этом растре больше { $cells } пикселов: буферы нарисованы, но здесь не печатаются; их печатает zsim run --final.
+limit-figure-cells = Страница рисует рисунки растров до { $cells } пикселов; этот нарисует zsim figure.
 scene-not-json = Сцена — не JSON: { $reason }
 edit-does-not-fit = Это изменение не подходит к JSON этой сцены.
 address-holds-no-scene = В адресе нет сцены: после #scene= должен идти JSON сцены в base64url.
 scene-name-default = сцена
 error-at-line = строка { $line }: { $text }
-limit-scene-bytes = В этой сцене { $bytes } байт; страница читает сцены до { $max } байт: её нарисует zsim run.
+limit-scene-bytes = страница читает сцены до { $max } байт; в этой { $bytes }: её рисует zsim run
 limit-page-cells = страница рисует растры до { $max } пикселов; в этом { $cells }: его рисует zsim run
 limit-page-polygons = страница рисует до { $max } многоугольников; в этой сцене { $count }: её рисует zsim run
 limit-page-vertices = страница рисует многоугольники до { $max } вершин; у многоугольника { $polygon } их { $count }: сцену рисует zsim run
+limit-page-reach = страница рисует сцены, многоугольники которых вместе занимают до { $max } пикселов (ограничивающий прямоугольник каждого на растре); в этой { $reach }: её рисует zsim run
+limit-recorded-reach = записанная страница проходит сцены, многоугольники которых вместе занимают до { $max } пикселов растра (по ограничивающему прямоугольнику каждого); в этой { $reach }: её проходит zsim step в терминале
 limit-recorded-page = записанная страница проходит сцены до { $cells } пикселов и { $polygons } многоугольников; в этой { $has_cells } пикселов и { $has_polygons } { $has_polygons ->
     [one] многоугольник
     [few] многоугольника

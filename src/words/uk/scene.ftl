@@ -128,15 +128,18 @@ png-declares-too-many-pixels = PNG оголошує { $width } × { $height } п
 png-figure-too-many-pixels = за такого --scale PNG мав би понад { $max } пікселів: вкажіть менше
 limit-cells-or-polygons = Сцена завелика, щоб показати її по клітинках (понад { $cells } пікселів або { $polygons } многокутників): показано лише підсумкові буфери.
 limit-printed-cells = У цьому растрі понад { $cells } пікселів: буфери намальовано, але тут не надруковано; їх друкує zsim run --final.
+limit-figure-cells = Сторінка малює рисунки растрів до { $cells } пікселів; цей намалює zsim figure.
 scene-not-json = Сцена — не JSON: { $reason }
 edit-does-not-fit = Ця зміна не пасує до JSON цієї сцени.
 address-holds-no-scene = В адресі немає сцени: після #scene= має йти JSON сцени в base64url.
 scene-name-default = сцена
 error-at-line = рядок { $line }: { $text }
-limit-scene-bytes = У цій сцені { $bytes } байт; сторінка читає сцени до { $max } байт: її намалює zsim run.
+limit-scene-bytes = сторінка читає сцени до { $max } байт; у цій { $bytes }: її малює zsim run
 limit-page-cells = сторінка малює растри до { $max } пікселів; у цьому { $cells }: його малює zsim run
 limit-page-polygons = сторінка малює до { $max } багатокутників; у цій сцені { $count }: її малює zsim run
 limit-page-vertices = сторінка малює багатокутники до { $max } вершин; у багатокутника { $polygon } їх { $count }: сцену малює zsim run
+limit-page-reach = сторінка малює сцени, багатокутники яких разом займають до { $max } пікселів (обмежувальний прямокутник кожного на растрі); у цій { $reach }: її малює zsim run
+limit-recorded-reach = записана сторінка проходить сцени, багатокутники яких разом займають до { $max } пікселів растра (за обмежувальним прямокутником кожного); у цій { $reach }: її проходить zsim step у терміналі
 limit-recorded-page = записана сторінка проходить сцени до { $cells } пікселів і { $polygons } багатокутників; у цій { $has_cells } пікселів і { $has_polygons } { $has_polygons ->
     [one] багатокутник
     [few] багатокутники

@@ -128,13 +128,16 @@ png-declares-too-many-pixels = 该 PNG 声明了 { $width } × { $height } 个�
 png-figure-too-many-pixels = 按该 --scale，PNG 将超过 { $max } 个像素：请调小
 limit-cells-or-polygons = 此场景太大，无法逐格显示（超过 { $cells } 个像素或 { $polygons } 个多边形）：只显示最终缓冲。
 limit-printed-cells = 此光栅超过 { $cells } 个像素：缓冲已绘制，但不在此打印；请用 zsim run --final 打印。
+limit-figure-cells = 页面只绘制不超过 { $cells } 个像素的光栅的示意图；此光栅请用 zsim figure 绘制。
 scene-not-json = 场景不是 JSON：{ $reason }
 edit-does-not-fit = 此修改不适用于该场景的 JSON。
 address-holds-no-scene = 地址中没有场景：#scene= 之后应是 base64url 编码的场景 JSON。
 scene-name-default = 场景
 error-at-line = 第 { $line } 行：{ $text }
-limit-scene-bytes = 该场景有 { $bytes } 字节；本页面只读取不超过 { $max } 字节的场景：请用 zsim run 绘制。
+limit-scene-bytes = 页面最多读取 { $max } 字节的场景；此场景有 { $bytes } 字节：请用 zsim run 绘制
 limit-page-cells = 页面最多绘制 { $max } 个像素的光栅；此光栅有 { $cells } 个：请用 zsim run 绘制
 limit-page-polygons = 页面最多绘制 { $max } 个多边形；此场景有 { $count } 个：请用 zsim run 绘制
 limit-page-vertices = 页面绘制的多边形最多 { $max } 个顶点；多边形 { $polygon } 有 { $count } 个：请用 zsim run 绘制
+limit-page-reach = 页面绘制的场景中多边形合计最多覆盖 { $max } 个像素（按每个多边形在光栅上的包围盒计算）；此场景为 { $reach } 个：请用 zsim run 绘制
+limit-recorded-reach = 录制的页面最多逐步演示多边形合计覆盖 { $max } 个光栅像素（按每个多边形的包围盒计算）的场景；此场景为 { $reach } 个：请在终端中用 zsim step 逐步演示
 limit-recorded-page = 录制的页面最多逐步演示 { $cells } 个像素和 { $polygons } 个多边形的场景；此场景有 { $has_cells } 个像素和 { $has_polygons } 个多边形：请在终端中用 zsim step 逐步演示
