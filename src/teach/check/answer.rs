@@ -66,17 +66,19 @@ pub struct CellRange<'a> {
 pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Answer, String> {
     let mut problems = Problems::default();
     let mut left = Vec::new();
-    let lines: Vec<(usize, &str)> = text
+    let lines = text
         .lines()
         .enumerate()
         .map(|(n, line)| (n + 1, line.trim()))
-        .filter(|(_, line)| !line.is_empty() && !line.starts_with('#'))
-        .collect();
-    if lines.is_empty() {
-        return Err(words!(lang, "answer-empty"));
-    }
+        .filter(|(_, line)| !line.is_empty() && !line.starts_with('#'));
+    // The rows read, kept only while the answer has no problem (past one, only counted).
     let mut rows = Vec::new();
-    for (row_index, (line_number, line)) in lines.iter().enumerate() {
+    let mut row_count = 0;
+    for (row_index, (line_number, line)) in lines.enumerate() {
+        row_count += 1;
+        if problems.count > 0 {
+            rows = Vec::new();
+        }
         // The raster row this line stands for when the shape is right: the top row first.
         let y = (height as usize).checked_sub(row_index + 1);
         let cells: Vec<&str> = line.split([' ', '\t', ',']).filter(|cell| !cell.is_empty()).collect();
@@ -97,7 +99,6 @@ pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: Cell
                     text = crate::words::printable(token).into_owned()
                 )
             });
-            rows.push(vec![0; width as usize]);
             continue;
         }
         let mut row = Vec::with_capacity(cells.len());
@@ -170,10 +171,15 @@ pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: Cell
                 )
             });
         }
-        rows.push(row);
+        if problems.count == 0 {
+            rows.push(row);
+        }
     }
-    if rows.len() != height as usize {
-        problems.push(|| words!(lang, "answer-row-count", count = rows.len(), height = height.to_string()));
+    if row_count == 0 {
+        return Err(words!(lang, "answer-empty"));
+    }
+    if row_count != height as usize {
+        problems.push(|| words!(lang, "answer-row-count", count = row_count, height = height.to_string()));
     }
     if problems.count == 0 {
         return Ok(Answer { rows, left });
