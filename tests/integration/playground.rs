@@ -293,7 +293,7 @@ fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
         assert!(text(&client, "#error").await.starts_with(&limit), "the page's limit, in Russian");
         // Polygons reaching more than the page draws: refused, the limit named, nothing drawn.
         let raster_sized = r#"{"value": 1, "vertices": [[0, 0, 1], [2048, 0, 5], [0, 2048, 9]]}"#;
-        let reaching = format!(r#"{{"width": 2048, "height": 2048, "polygons": [{}]}}"#, vec![raster_sized; 5].join(", "));
+        let reaching = format!(r#"{{"width": 2048, "height": 2048, "polygons": [{}]}}"#, [raster_sized; 5].join(", "));
         client.goto(&format!("http://127.0.0.1:{port}/#{}", playground::fragment_of(&reaching))).await.unwrap();
         let limit = playground::view(Lang::Ru, &reaching)["error"].as_str().unwrap().to_string();
         assert!(limit.contains("16777216") && limit.contains("20971520"), "{limit}");
