@@ -153,10 +153,15 @@ impl<'a> Plan<'a> {
             }
             // zsim's own standard output or error under another name (`-o /dev/stdout` redirected to
             // a file): written into, never renamed over (as root that replaced the link itself).
+            // Or one of its open descriptors by its name (`/dev/fd/3`, `/proc/self/fd/3`): written
+            // through the descriptor, at its offset (a file there cannot be renamed into).
             let stream = match identity.as_ref().and_then(|identity| own.which(identity)) {
                 Some(which) => Stream::Own(which),
-                None if followed.is_some_and(|m| !m.is_file()) => Stream::Device,
-                None => Stream::No,
+                None => match descriptor_named(path, &own) {
+                    Some(descriptor) if followed.is_some() => Stream::Descriptor(descriptor),
+                    _ if followed.is_some_and(|m| !m.is_file()) => Stream::Device,
+                    _ => Stream::No,
+                },
             };
             let is_file = stream == Stream::No;
             streams.push(stream);
@@ -231,6 +236,7 @@ impl<'a> Plan<'a> {
             match stream {
                 Stream::Own(Which::Output) => std::io::stdout().lock().write_all(&bytes).map_err(failed)?,
                 Stream::Own(Which::Error) => std::io::stderr().lock().write_all(&bytes).map_err(failed)?,
+                Stream::Descriptor(descriptor) => write_descriptor(descriptor, &bytes).map_err(failed)?,
                 _ => write_stream(&file.path, &bytes).map_err(failed)?,
             }
             written.push(file.path.clone());
@@ -265,6 +271,31 @@ fn write_stream(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
         }
     }
     file.write_all(bytes)
+}
+
+/// The descriptor `path` names, if it is one of this process's open
+/// descriptors by the folder that lists them (`/dev/fd/N`, `/proc/self/fd/N`).
+fn descriptor_named(path: &Path, own: &Own) -> Option<i32> {
+    let number: i32 = path.file_name()?.to_str()?.parse().ok()?;
+    let listed = own.descriptors.as_ref()?;
+    (std::fs::canonicalize(folder_of(path)).ok()? == *listed).then_some(number)
+}
+
+/// Writes `bytes` through this process's open descriptor `descriptor`, where
+/// it stands (a shell's `3>>file` appends).
+#[cfg(unix)]
+fn write_descriptor(descriptor: i32, bytes: &[u8]) -> std::io::Result<()> {
+    use std::os::fd::BorrowedFd;
+    // SAFETY: the descriptor was found open (its name resolved to a file) while the plan was
+    // checked, and nothing of zsim closes descriptors it did not open; it is borrowed only to be
+    // duplicated, and the duplicate is what is written and closed.
+    let borrowed = unsafe { BorrowedFd::borrow_raw(descriptor) };
+    std::fs::File::from(borrowed.try_clone_to_owned()?).write_all(bytes)
+}
+
+#[cfg(not(unix))]
+fn write_descriptor(_: i32, _: &[u8]) -> std::io::Result<()> {
+    Err(std::io::ErrorKind::Unsupported.into())
 }
 
 /// Writes `files` (name, contents) into `folder` as one plan that replaces
@@ -310,6 +341,8 @@ enum Stream {
     Device,
     /// zsim's own standard output or error: written through it.
     Own(Which),
+    /// Another of zsim's open descriptors, named by its number: written through it.
+    Descriptor(i32),
 }
 
 /// Which of zsim's own streams.
@@ -319,15 +352,18 @@ enum Which {
     Error,
 }
 
-/// zsim's own standard output and error, as files.
+/// zsim's own standard output and error, as files, and the folder that
+/// lists its open descriptors (Linux's `/proc/self/fd`, resolved).
 struct Own {
     output: Option<Identity>,
     error: Option<Identity>,
+    descriptors: Option<PathBuf>,
 }
 
 impl Own {
     fn streams() -> Own {
-        Own { output: Identity::stdout(), error: Identity::stderr() }
+        let descriptors = std::fs::canonicalize("/proc/self/fd").ok();
+        Own { output: Identity::stdout(), error: Identity::stderr(), descriptors }
     }
 
     /// Which of them `identity` is, if one.

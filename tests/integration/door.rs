@@ -948,6 +948,33 @@ fn an_output_named_dev_stdout_goes_into_standard_output() {
     assert!(link.file_type().is_symlink(), "/dev/stdout is still a link");
 }
 
+/// `-o /dev/fd/3` with descriptor 3 open on a file failed ("no such file or
+/// folder": the temporary file was made in `/proc/self/fd`). An output named
+/// by one of zsim's open descriptors is written through it, where it stands
+/// (`3>>` appends); a descriptor not open is refused in one line.
+#[cfg(target_os = "linux")]
+#[test]
+fn an_output_named_by_an_open_descriptor_is_written_through_it() {
+    let dir = scratch("dev-fd");
+    let out = dir.join("out.json");
+    std::fs::write(&out, "kept\n").unwrap();
+    let zsim = env!("CARGO_BIN_EXE_zsim");
+    for (name, redirect) in [("/dev/fd/3", "3>>"), ("/proc/self/fd/3", "3>>")] {
+        let command = format!("'{zsim}' random --count 2 -o {name} --lang en {redirect}'{}'", path(&out));
+        let run = std::process::Command::new("sh").args(["-c", &command]).output().unwrap();
+        assert_eq!(run.status.code(), Some(0), "{name}: {}", String::from_utf8_lossy(&run.stderr));
+    }
+    let written = std::fs::read_to_string(&out).unwrap();
+    assert!(written.starts_with("kept\n{"), "appended where the descriptor stood: {written:.80}");
+    assert_eq!(written.matches("\"polygons\"").count(), 2, "{written:.200}");
+    let run = std::process::Command::new(zsim)
+        .args(["random", "--count", "1", "-o", "/dev/fd/9", "--lang", "en"])
+        .output()
+        .unwrap();
+    assert_eq!(run.status.code(), Some(2));
+    assert_eq!(String::from_utf8_lossy(&run.stderr).lines().count(), 1);
+}
+
 /// Found by an attacker: `check` of an 8 MB answer of garbage peaked at
 /// 667 MB, a message built for every bad value though three are shown. The
 /// problems past the third are counted, not worded: an answer of garbage of
