@@ -19,20 +19,11 @@ use zsim::page_limits::{
     MAX_SHOWN_CELLS, MAX_SHOWN_POLYGONS,
 };
 
-#[path = "../tests/integration/chromium.rs"]
-mod chromium;
-
-/// What the measurement needs is missing.
-pub fn missing(what: &str, check: &str) -> ! {
-    panic!("{what} is missing, so {check} cannot be measured")
-}
+mod in_browser;
+pub use in_browser::missing;
+use in_browser::{chromium, median, site};
 
 const ROUNDS: usize = 7;
-
-fn median(mut values: Vec<f64>) -> f64 {
-    values.sort_by(f64::total_cmp);
-    values[values.len() / 2]
-}
 
 /// A scene of `width` × `height` with `polygons` (each a list of `[x, y, z]`
 /// vertices, values 1 … 3 in turn), written as compactly as JSON allows.
@@ -146,8 +137,7 @@ fn cases() -> Vec<Case> {
 }
 
 fn main() {
-    let site = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/web");
-    assert!(site.join("zsim_web_bg.wasm").is_file(), "run web/build first");
+    let site = site();
     let cases = cases();
     for case in &cases {
         let view = zsim::playground::view(zsim::Lang::En, &case.text);

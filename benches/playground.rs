@@ -10,24 +10,14 @@
 use std::path::Path;
 use std::time::Duration;
 
-#[path = "../tests/integration/chromium.rs"]
-mod chromium;
-
-/// What the measurement needs is missing.
-pub fn missing(what: &str, check: &str) -> ! {
-    panic!("{what} is missing, so {check} cannot be measured")
-}
+mod in_browser;
+pub use in_browser::missing;
+use in_browser::{chromium, median, site};
 
 const ROUNDS: usize = 41;
 
-fn median(mut values: Vec<f64>) -> f64 {
-    values.sort_by(f64::total_cmp);
-    values[values.len() / 2]
-}
-
 fn main() {
-    let site = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/web");
-    assert!(site.join("zsim_web_bg.wasm").is_file(), "run web/build first");
+    let site = site();
     let wasm = std::fs::read(site.join("zsim_web_bg.wasm")).unwrap();
     let gzipped = std::process::Command::new("gzip")
         .args(["-9", "-c"])

@@ -20,6 +20,19 @@ pub async fn text(client: &Client, css: &str) -> String {
     client.find(Locator::Css(css)).await.unwrap().text().await.unwrap()
 }
 
+/// The text of the element `css` finds once `ready` holds of it (waited for
+/// up to five seconds; the last text read otherwise).
+pub async fn text_when(client: &Client, css: &str, ready: impl Fn(&str) -> bool) -> String {
+    for _ in 0..100 {
+        let shown = text(client, css).await;
+        if ready(&shown) {
+            return shown;
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+    }
+    text(client, css).await
+}
+
 /// Clicks the element `css` finds.
 pub async fn click(client: &Client, css: &str) {
     client.find(Locator::Css(css)).await.unwrap().click().await.unwrap();

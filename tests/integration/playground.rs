@@ -14,7 +14,7 @@ use fantoccini::{Client, Locator};
 use zsim::Lang;
 use zsim::playground;
 
-use crate::browser::{click, text};
+use crate::browser::{click, text, text_when};
 use crate::chromium::{Driver, driver, serve, session_as};
 
 pub(crate) fn manifest() -> &'static Path {
@@ -284,39 +284,23 @@ fn a_russian_browser_gets_russian_and_a_phone_gets_a_page_that_fits() {
         client.goto(&format!("http://127.0.0.1:{port}/#{}", playground::fragment_of(huge))).await.unwrap();
         let limit = playground::view(Lang::Ru, huge)["error"].as_str().unwrap().to_string();
         assert!(limit.contains("4194304") && limit.contains("zsim run"), "{limit}");
-        for _ in 0..100 {
-            if text(&client, "#error").await.starts_with(&limit) {
-                break;
-            }
-            tokio::time::sleep(Duration::from_millis(50)).await;
-        }
-        assert!(text(&client, "#error").await.starts_with(&limit), "the page's limit, in Russian");
+        let shown = text_when(&client, "#error", |t| t.starts_with(&limit)).await;
+        assert!(shown.starts_with(&limit), "the page's limit, in Russian: {shown}");
         // Polygons reaching more than the page draws: refused, the limit named, nothing drawn.
         let raster_sized = r#"{"value": 1, "vertices": [[0, 0, 1], [2048, 0, 5], [0, 2048, 9]]}"#;
         let reaching = format!(r#"{{"width": 2048, "height": 2048, "polygons": [{}]}}"#, [raster_sized; 5].join(", "));
         client.goto(&format!("http://127.0.0.1:{port}/#{}", playground::fragment_of(&reaching))).await.unwrap();
         let limit = playground::view(Lang::Ru, &reaching)["error"].as_str().unwrap().to_string();
         assert!(limit.contains("16777216") && limit.contains("20971520"), "{limit}");
-        for _ in 0..100 {
-            if text(&client, "#error").await.starts_with(&limit) {
-                break;
-            }
-            tokio::time::sleep(Duration::from_millis(50)).await;
-        }
-        assert!(text(&client, "#error").await.starts_with(&limit), "the reach limit, in Russian");
+        let shown = text_when(&client, "#error", |t| t.starts_with(&limit)).await;
+        assert!(shown.starts_with(&limit), "the reach limit, in Russian: {shown}");
         // A raster past the figure's limit: drawn, its figure refused in words, no answer grid offered.
         let wide = r#"{"width": 1024, "height": 1024, "polygons": [{"value": 1, "vertices": [[0, 0, 1], [1024, 0, 5], [0, 1024, 9]]}]}"#;
         client.goto(&format!("http://127.0.0.1:{port}/#{}", playground::fragment_of(wide))).await.unwrap();
         client.execute("document.getElementById('figureBox').open = true;", vec![]).await.unwrap();
         let said = playground::figure(Lang::Ru, wide)["error"].as_str().unwrap().to_string();
         assert!(said.contains("262144"), "{said}");
-        for _ in 0..100 {
-            if text(&client, "#figure").await == said {
-                break;
-            }
-            tokio::time::sleep(Duration::from_millis(50)).await;
-        }
-        assert_eq!(text(&client, "#figure").await, said, "the figure's limit, in Russian");
+        assert_eq!(text_when(&client, "#figure", |t| t == said).await, said, "the figure's limit, in Russian");
         let grid = client.execute("return document.getElementById('answerGrid').disabled;", vec![]).await.unwrap();
         assert_eq!(grid, serde_json::Value::Bool(true), "no grid of a million inputs");
         std::fs::write(dir.join("playground-ru-1280.png"), client.screenshot().await.unwrap()).unwrap();
