@@ -350,6 +350,21 @@ fn step_html_writes_the_playground_as_one_file_that_opens_from_disk() {
         assert_eq!(scene_text(&client).await, scene, "the page holds the scene it was written for");
         client.close().await.unwrap();
     });
+    // The longest scene text the page reads, written as a page within the peak stated; one byte
+    // more refused in one line.
+    let limit = crate::limits::stated("The one-file page's scene text");
+    let padded = format!("{scene}{}", " ".repeat(limit.count() - scene.len()));
+    std::fs::write(dir.join("long.json"), &padded).unwrap();
+    let long = dir.join("long.json");
+    let page = dir.join("long.html");
+    let (code, peak) =
+        crate::limits::peak_kib(&["step", long.to_str().unwrap(), "--html", "-o", page.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    limit.hold_peak(peak);
+    std::fs::write(&long, padded + " ").unwrap();
+    let run = crate::zsim(&["step", long.to_str().unwrap(), "--html", "-o", page.to_str().unwrap()]);
+    assert_eq!((run.code, run.stderr.lines().count()), (2, 1), "{}", run.stderr);
+    assert!(run.stderr.contains(&limit.value.to_string()), "{}", run.stderr);
     crate::ran("step --html's playground from file://", "examples/less.json");
 }
 
