@@ -82,23 +82,35 @@ pub fn stated(limit: &str) -> Stated {
 /// other tests' buffers, 276 MB in one full run) as the child's peak; GNU
 /// time is small when it starts zsim.
 pub fn peak_kib(args: &[&str]) -> (i32, i64) {
+    let (code, kib, _) = timed(args, false);
+    (code, kib)
+}
+
+/// [`peak_kib`], and what the run wrote on its standard output.
+pub fn measured(args: &[&str]) -> (i32, i64, String) {
+    timed(args, true)
+}
+
+/// A run under GNU time; its standard output kept if `keep` (else thrown
+/// away unread: some runs write hundreds of megabytes).
+fn timed(args: &[&str], keep: bool) -> (i32, i64, String) {
     static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let run = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let report = std::env::temp_dir().join(format!("zsim-peak-{}-{run}", std::process::id()));
-    let status = std::process::Command::new("/usr/bin/time")
+    let output = std::process::Command::new("/usr/bin/time")
         .args(["-f", "%M", "-o"])
         .arg(&report)
         .arg(env!("CARGO_BIN_EXE_zsim"))
         .args(args)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .stdout(std::process::Stdio::null())
+        .stdout(if keep { std::process::Stdio::piped() } else { std::process::Stdio::null() })
         .stderr(std::process::Stdio::null())
-        .status()
+        .output()
         .expect("GNU time (/usr/bin/time, Debian's time package; .ci/run installs it)");
     let text = std::fs::read_to_string(&report).unwrap();
     let _ = std::fs::remove_file(&report);
     let kib = text.lines().last().and_then(|l| l.trim().parse().ok()).unwrap_or_else(|| panic!("time said {text:?}"));
-    (status.code().unwrap_or(-1), kib)
+    (output.status.code().unwrap_or(-1), kib, String::from_utf8_lossy(&output.stdout).into_owned())
 }
 
 /// An empty scratch folder of its own.
@@ -146,23 +158,25 @@ fn each_limit_in_the_safety_chapter_names_a_test_that_reads_it() {
     }
 }
 
-/// A scene of exactly the largest size a file may have (the book's scene
-/// padded with spaces) is read and run; one byte more is refused before it
+/// A scene of exactly the largest size a file may have, of as many
+/// polygons as it holds, is read and run; one byte more is refused before it
 /// is read, in one line.
 #[test]
 fn a_file_of_the_largest_size_is_read_and_one_byte_more_is_refused() {
     let limit = stated("A file zsim reads");
     let dir = scratch("largest-file");
-    let book = std::fs::read_to_string("examples/rogers.json").unwrap();
-    let scene = dir.join("padded.json");
-    let padded = format!("{book}{}", " ".repeat(limit.count() - book.len()));
+    // The most polygons a file of the limit's size holds: the shortest triangles JSON writes.
+    let one = r#"{"value":1,"vertices":[[0,0,1],[1,0,1],[0,1,1]]}"#;
+    let head = r#"{"width":32,"height":32,"polygons":["#;
+    let count = (limit.count() - head.len() - 2) / (one.len() + 1);
+    let text = format!("{head}{}]}}", vec![one; count].join(","));
+    let padded = format!("{text}{}", " ".repeat(limit.count() - text.len()));
+    let scene = dir.join("tiny.json");
     std::fs::write(&scene, &padded).unwrap();
-    let (code, peak) = peak_kib(&["run", path(&scene), "--final"]);
+    let (code, peak, report) = measured(&["run", path(&scene), "--format", "none", "--lang", "en"]);
     assert_eq!(code, 0);
     limit.hold_peak(peak);
-    // The same buffers as the book's scene (the first line names the file).
-    let drawn = |scene: &str| zsim(&["run", scene, "--final"]).stdout.split_once('\n').unwrap().1.to_string();
-    assert_eq!(drawn(path(&scene)), drawn("examples/rogers.json"));
+    assert!(report.contains(&format!(": {count} polygons, ")), "{report}");
     std::fs::write(&scene, padded + " ").unwrap();
     let run = zsim(&["run", path(&scene)]);
     assert_eq!((run.code, run.stdout.as_str(), run.stderr.lines().count()), (2, "", 1), "{}", run.stderr);
@@ -329,9 +343,17 @@ fn misreadings_are_looked_for_up_to_their_limit() {
 /// half of it); one row more is refused at its setting.
 #[test]
 fn a_raster_of_the_most_pixels_is_drawn_and_one_row_more_is_refused() {
-    let limit = stated("A scene's raster");
+    let (limit, side) = (stated("A scene's raster"), stated("A raster's side"));
     let dir = scratch("largest-raster");
-    let width = zsim::MAX_SIDE as u32;
+    let width = u32::try_from(side.value).unwrap();
+    // The longest side, on a raster one pixel high; one more refused.
+    let thin = dir.join("thin.json");
+    std::fs::write(&thin, half_covered(width, 1, "")).unwrap();
+    assert_eq!(zsim(&["run", path(&thin), "--format", "none"]).code, 0);
+    std::fs::write(&thin, half_covered(width + 1, 1, "")).unwrap();
+    let run = zsim(&["run", path(&thin), "--format", "none"]);
+    assert_eq!((run.code, run.stderr.lines().count()), (2, 1), "{}", run.stderr);
+    assert!(run.stderr.contains(&side.value.to_string()), "{}", run.stderr);
     let height = u32::try_from(limit.value / u64::from(width)).unwrap();
     assert_eq!(u64::from(width) * u64::from(height), limit.value);
     let scene = dir.join("s.json");
@@ -553,4 +575,41 @@ fn tiles_smaller_than_the_least_are_drawn_as_it() {
     assert_eq!(drawn("1"), drawn(&least));
     let refused = zsim(&["run", path(&scene), "--format", "none", "--tile", "0"]);
     assert_eq!((refused.code, refused.stderr.lines().count()), (2, 1), "{}", refused.stderr);
+}
+
+/// A triangle once read takes under 500 bytes, as `run` reports the scene's
+/// memory: a 20,000-triangle scene as zsim makes them for its benchmarks.
+#[test]
+fn a_triangle_takes_under_500_bytes_once_read() {
+    let limit = stated("A triangle once read");
+    let dir = scratch("scene-memory");
+    let scene = dir.join("r20k.json");
+    let made = zsim(&[
+        "random",
+        "--count",
+        "20000",
+        "--width",
+        "2048",
+        "--height",
+        "2048",
+        "--max-size",
+        "40",
+        "--seed",
+        "3",
+        "-o",
+        path(&scene),
+    ]);
+    assert_eq!(made.code, 0, "{}", made.stderr);
+    let run = zsim(&["run", path(&scene), "--format", "none", "--lang", "en"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let reported = run.stdout.split_once(", scene ").expect("run reports the scene's memory").1;
+    let (number, unit) = reported.split_once(' ').unwrap();
+    let scale = match &unit[..3] {
+        "KiB" => 1024.0,
+        "MiB" => 1024.0 * 1024.0,
+        other => panic!("{other}"),
+    };
+    let each = number.parse::<f64>().unwrap() * scale / 20_000.0;
+    assert!(each < limit.value as f64, "{each} bytes a triangle");
+    assert!(each > 100.0, "{each} bytes a triangle: the report is not the scene's");
 }
