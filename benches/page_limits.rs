@@ -11,7 +11,6 @@
 //! each printed, with a line for each past one second. Run with `cargo bench
 //! --bench page_limits` after `web/build`.
 
-use std::path::Path;
 use std::time::Duration;
 
 use zsim::page_limits::{
@@ -153,19 +152,9 @@ fn main() {
     }
     let (driver, browser) = chromium::driver();
     let port = chromium::serve(site);
-    let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join("bench-page-limits-profile");
-    let _ = std::fs::remove_dir_all(&profile);
     let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
     let times = runtime.block_on(async {
-        let client = chromium::session_as(&driver, &browser, &profile, "en-US", (1280, 900)).await;
-        client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
-        for _ in 0..600 {
-            let shown = client.execute("return document.getElementById('framebuffer').textContent.length;", vec![]);
-            if shown.await.unwrap().as_u64().unwrap_or(0) > 0 {
-                break;
-            }
-            tokio::time::sleep(Duration::from_millis(50)).await;
-        }
+        let client = in_browser::playground(&driver, &browser, port, "bench-page-limits-profile").await;
         // Each way in, timed in parts. A link: from the address changed to the first frame painted
         // after the page's work (the browser's own reading of the address included: the page's
         // handlers run on its popstate and hashchange events), and until its handler is done. A

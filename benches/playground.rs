@@ -7,7 +7,6 @@
 //! alternating; and the module's size, plain and gzipped. Run with `cargo
 //! bench --bench playground` after `web/build`.
 
-use std::path::Path;
 use std::time::Duration;
 
 mod in_browser;
@@ -27,19 +26,9 @@ fn main() {
         .unwrap_or(0);
     let (driver, browser) = chromium::driver();
     let port = chromium::serve(site);
-    let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join("bench-playground-profile");
-    let _ = std::fs::remove_dir_all(&profile);
     let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
     let (edits, steps, class_edits, parts) = runtime.block_on(async {
-        let client = chromium::session_as(&driver, &browser, &profile, "en-US", (1280, 900)).await;
-        client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
-        for _ in 0..600 {
-            let shown = client.execute("return document.getElementById('framebuffer').textContent.length;", vec![]);
-            if shown.await.unwrap().as_u64().unwrap_or(0) > 0 {
-                break;
-            }
-            tokio::time::sleep(Duration::from_millis(50)).await;
-        }
+        let client = in_browser::playground(&driver, &browser, port, "bench-playground-profile").await;
         let measure = |polygon: usize| {
             format!(
                 r#"const edits = [], steps = [];

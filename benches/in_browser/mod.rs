@@ -1,7 +1,7 @@
 //! What the browser benchmarks share: headless Chromium through WebDriver
 //! (the browser tests' own driver), the site `web/build` writes, and medians.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[path = "../../tests/integration/chromium.rs"]
 pub mod chromium;
@@ -22,4 +22,21 @@ pub fn site() -> PathBuf {
 pub fn median(mut values: Vec<f64>) -> f64 {
     values.sort_by(f64::total_cmp);
     values[values.len() / 2]
+}
+
+/// A headless Chromium session (a fresh profile, `profile`) on the site
+/// served at `port`, once the playground has drawn the book's scene.
+pub async fn playground(driver: &chromium::Driver, browser: &Path, port: u16, profile: &str) -> fantoccini::Client {
+    let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join(profile);
+    let _ = std::fs::remove_dir_all(&profile);
+    let client = chromium::session_as(driver, browser, &profile, "en-US", (1280, 900)).await;
+    client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
+    for _ in 0..600 {
+        let shown = client.execute("return document.getElementById('framebuffer').textContent.length;", vec![]);
+        if shown.await.unwrap().as_u64().unwrap_or(0) > 0 {
+            break;
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+    }
+    client
 }
