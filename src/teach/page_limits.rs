@@ -53,7 +53,7 @@ pub const MAX_PAGE_REACH: u64 = 4 * MAX_PAGE_CELLS;
 /// The most pixels the polygons of a scene the recorded page steps may
 /// reach in all (each counted by its bounding box): four times its largest
 /// raster. The page records every pixel of every stop, so it grows with
-/// them (64 raster-sized triangles on 128 × 128 made a page of 103 MB).
+/// them (the design note on every limit tested has what it took).
 pub const MAX_RECORDED_REACH: u64 = 4 * MAX_SHOWN_CELLS;
 
 /// A scene larger than a page draws.
@@ -194,9 +194,8 @@ pub fn check_text(text: &str, path: Option<&Path>) -> Result<(), TooLarge> {
 }
 
 /// What [`check_text`] reads of a scene's JSON: its raster's sides and how
-/// many vertices each polygon lists, counted without keeping them (a scene
-/// read as a JSON value takes as long to read as to draw, most of it the
-/// numbers).
+/// many vertices each polygon lists, counted without keeping them (read as
+/// a JSON value, every number of the scene was kept as a string).
 #[derive(serde::Deserialize)]
 struct Shape {
     #[serde(default)]
