@@ -152,7 +152,7 @@ pub use simulate::stages::{StageSet, describe};
 pub use teach::check::diagnose;
 pub use teach::grade::{class, gradebooks, gradescope};
 pub use teach::step::{lesson, page, stop};
-pub use teach::{check, exercise, grade, page_limits, playground, step};
+pub use teach::{check, course, exercise, grade, page_limits, playground, step};
 pub use words::{
     Arg, Lang, localize_decimal, polygon_label, printable, shown_name, shown_path, text as message, token,
 };

@@ -29,6 +29,11 @@ pub enum Flag {
     },
     /// `grade --points 0`.
     NoPoints,
+    /// `grade` without SCENE and CLASS, or `grade --variants` without exactly CLASS.
+    GradeFolders {
+        /// Whether --variants was given.
+        variants: bool,
+    },
     /// `accuracy --scenes` out of range.
     ScenesOutOfRange,
     /// `memory --frame-bits`/`--depth-bits` out of range.
@@ -77,6 +82,8 @@ impl Flag {
             Flag::AnswerWithoutBuffer { path: p } => zsim::words!(lang, "usage-answer-without-buffer", path = path(p)),
             Flag::IdentityColumn { column } => zsim::words!(lang, "usage-identity-column", column = *column),
             Flag::NoPoints => zsim::words!(lang, "usage-no-points"),
+            Flag::GradeFolders { variants: true } => zsim::words!(lang, "usage-grade-variants-folder"),
+            Flag::GradeFolders { variants: false } => zsim::words!(lang, "usage-grade-scene-and-class"),
             Flag::ScenesOutOfRange => zsim::words!(lang, "usage-scenes-range"),
             Flag::MemoryBits { option, bits } => {
                 zsim::words!(lang, "usage-memory-bits", option = *option, bits = bits.to_string())

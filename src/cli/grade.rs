@@ -21,10 +21,18 @@ use zsim::gradebooks::{self, Identity};
 /// Arguments of `zsim grade`.
 #[derive(Debug, Args)]
 pub struct GradeArgs {
-    /// The scene file (JSON) of the exercise.
-    scene: PathBuf,
+    /// The scene file (JSON) of the exercise (not with --variants).
+    #[arg(value_name = "SCENE")]
+    scene: Option<PathBuf>,
     /// The folder of answers: NAME.frame.txt and/or NAME.depth.txt per student, as `zsim check` reads them.
-    class: PathBuf,
+    #[arg(value_name = "CLASS")]
+    class: Option<PathBuf>,
+    /// A class with a variant each (`exercise --roster`'s DIR/variants.json): each student's IDENTITY.frame.txt and IDENTITY.depth.txt graded against their own scene; everyone on the roster gets a row.
+    #[arg(long, value_name = "FILE", conflicts_with = "after")]
+    variants: Option<PathBuf>,
+    /// With --variants: an earlier `--format json` of the class; says whose scores changed and why.
+    #[arg(long, value_name = "FILE", requires = "variants")]
+    compare: Option<PathBuf>,
     /// Grade the state after this polygon (number from 1, or name); default: the last.
     #[arg(long, value_name = "N|NAME")]
     after: Option<String>,
@@ -46,7 +54,7 @@ pub struct GradeArgs {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum Format {
+pub(super) enum Format {
     /// A table, then the common mistakes.
     Text,
     /// One row a student with a header row: student,frame_wrong,depth_wrong,score,status,misconception.
@@ -60,6 +68,25 @@ enum Format {
 }
 
 pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    if let Some(variants) = &args.variants {
+        let class = match (&args.scene, &args.class) {
+            (Some(class), None) => class,
+            _ => return Err(super::flags::Flag::GradeFolders { variants: true }.into()),
+        };
+        let grading = super::course::GradeVariants {
+            variants,
+            class,
+            format: args.format,
+            output: args.output.as_deref(),
+            compare: args.compare.as_deref(),
+            gradebook: (args.identity, args.item.as_deref(), args.points),
+        };
+        return super::course::grade(lang, &grading, out);
+    }
+    let (Some(scene_path), Some(class)) = (&args.scene, &args.class) else {
+        return Err(super::flags::Flag::GradeFolders { variants: false }.into());
+    };
+    let args = &Plain { scene: scene_path.clone(), class: class.clone(), args };
     let scene = Scene::load(lang, &args.scene)?;
     if scene.polygons.is_empty() {
         return Err(Error::from(zsim::Usage::NoPolygons { path: args.scene.clone(), task: zsim::Task::Grade }).into());
@@ -124,21 +151,47 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
     emit_then(out, &text, finish)
 }
 
+/// `grade SCENE CLASS`'s arguments, the two paths given.
+struct Plain<'a> {
+    scene: PathBuf,
+    class: PathBuf,
+    args: &'a GradeArgs,
+}
+
+impl std::ops::Deref for Plain<'_> {
+    type Target = GradeArgs;
+
+    fn deref(&self) -> &GradeArgs {
+        self.args
+    }
+}
+
 /// A gradebook import for Moodle or Canvas, with the identity column checked
 /// against the platform.
 fn gradebook(args: &GradeArgs, rows: &[&Grade]) -> Result<String, Failure> {
-    let moodle = args.format == Format::Moodle;
-    let identity = args.identity.unwrap_or(if moodle { Identity::Email } else { Identity::SisLoginId });
+    gradebook_of(args.format, args.identity, args.item.as_deref(), args.points, rows)
+}
+
+/// [`gradebook`] from its parts.
+pub(super) fn gradebook_of(
+    format: Format,
+    identity: Option<Identity>,
+    item: Option<&str>,
+    points: u32,
+    rows: &[&Grade],
+) -> Result<String, Failure> {
+    let moodle = format == Format::Moodle;
+    let identity = identity.unwrap_or(if moodle { Identity::Email } else { Identity::SisLoginId });
     if identity.is_moodle() != moodle {
         return Err(super::flags::Flag::IdentityColumn { column: identity.header() }.into());
     }
-    if args.points == 0 {
+    if points == 0 {
         return Err(super::flags::Flag::NoPoints.into());
     }
     Ok(if moodle {
-        gradebooks::moodle(rows, identity, args.item.as_deref().unwrap_or("Assignment: z-buffer (Real)"), args.points)
+        gradebooks::moodle(rows, identity, item.unwrap_or("Assignment: z-buffer (Real)"), points)
     } else {
-        gradebooks::canvas(rows, identity, args.item.as_deref().unwrap_or("z-buffer"), args.points)
+        gradebooks::canvas(rows, identity, item.unwrap_or("z-buffer"), points)
     })
 }
 
@@ -246,7 +299,7 @@ fn mistakes_text(
 fn write_feedback(
     lang: zsim::Lang,
     folder: &Path,
-    (scene, args): (&Scene, &GradeArgs),
+    (scene, args): (&Scene, &Plain<'_>),
     class: &ClassGrades,
 ) -> Result<(), Error> {
     let last = class.last;

@@ -4,6 +4,7 @@
 mod accuracy;
 mod buet;
 mod check;
+mod course;
 mod cs418;
 mod exercise;
 mod explain;
@@ -56,6 +57,8 @@ enum Command {
     Exercise(exercise::ExerciseArgs),
     /// Grade a class: every student's answers in a folder, the common mistakes, feedback files.
     Grade(grade::GradeArgs),
+    /// A platform's grader (Gradescope, PrairieLearn) for one submission of a class with variants: results.json.
+    Autograde(course::AutogradeArgs),
     /// Every arithmetic mode against exact: mismatches and time; a depth-bits sweep.
     Accuracy(accuracy::AccuracyArgs),
     /// Bits and bytes of the framebuffer and z-buffer for a raster.
@@ -145,6 +148,7 @@ pub fn main() -> ExitCode {
         Command::Explain(args) => explain::run(lang, &args, &mut out),
         Command::Check(args) => check::run(lang, &args, &mut out),
         Command::Grade(args) => grade::run(lang, &args, &mut out),
+        Command::Autograde(args) => course::autograde(lang, &args, &mut out),
         Command::Exercise(args) => exercise::run(lang, &args, &mut out),
         Command::Figure(args) => figure::run(lang, &args, &mut out),
         Command::Buet(args) => buet::run(lang, &args, &mut out),

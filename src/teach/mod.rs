@@ -17,6 +17,7 @@
 //! - `playground`: what the browser shows of all of them, as facts; and
 //!   `page_limits`, what a page draws at all.
 pub mod check;
+pub mod course;
 pub mod exercise;
 pub mod grade;
 pub mod page_limits;

@@ -95,6 +95,7 @@ impl Lang {
                     include_str!(concat!($lang, "/check.ftl")),
                     include_str!(concat!($lang, "/courses.ftl")),
                     include_str!(concat!($lang, "/usage.ftl")),
+                    include_str!(concat!($lang, "/class.ftl")),
                 ]
             };
         }
@@ -118,7 +119,7 @@ fn catalogue(lang: Lang) -> &'static FluentBundle<FluentResource> {
 
 /// The areas a catalogue's messages are kept in, one resource each
 /// (`src/words/LANG/AREA.ftl`).
-const AREAS: [&str; 6] = ["scene", "draw", "step", "check", "courses", "usage"];
+const AREAS: [&str; 7] = ["scene", "draw", "step", "check", "courses", "usage", "class"];
 
 fn bundle(lang: Lang) -> FluentBundle<FluentResource> {
     let id: unic_langid::LanguageIdentifier = lang.code().parse().expect("a language code");

@@ -5,7 +5,7 @@
 pub mod figure;
 pub mod picture;
 pub mod report;
-mod svg_text;
+pub(crate) mod svg_text;
 pub mod tikz;
 pub mod variant_report;
 mod vertex_labels;

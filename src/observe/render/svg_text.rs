@@ -10,7 +10,7 @@ pub(super) fn is_wide(c: char) -> bool {
 /// Text for SVG: markup's special characters as entities, and every
 /// character XML does not allow (control characters but tab and line ends,
 /// U+FFFE, U+FFFF) as U+FFFD, so that any name or title gives a valid file.
-pub(super) fn escape(text: &str) -> String {
+pub(crate) fn escape(text: &str) -> String {
     let allowed =
         |c: char| matches!(c, '\t' | '\n' | '\r' | '\u{20}'..='\u{D7FF}' | '\u{E000}'..='\u{FFFD}' | '\u{10000}'..);
     text.chars()

@@ -136,13 +136,38 @@ impl Diagnoser {
         }
         let right = state(scene, last);
         let covered = covered_pixels(scene, last);
-        let candidates = Misconception::ALL
+        let mut candidates: Vec<(Misconception, State)> = Misconception::ALL
             .into_iter()
             .filter_map(|m| buffers_under(m, scene, last, &right, &covered).map(|state| (m, state)))
-            .filter(|(_, state)| *state != right)
             .collect();
+        // The reversed test's common form: the other depth kept, but a cell nothing was drawn in
+        // yet takes the first polygon there whatever its depth (the buffer never cleared to the
+        // far end), and keeps showing the cleared value until then.
+        candidates.extend(reversed_from_empty(scene, &covered).map(|state| (Misconception::Reversed, state)));
+        candidates.retain(|(_, state)| *state != right);
         let cleared = (scene.background, scene.clear_depth.level()?);
         Some(Diagnoser { right, cleared, candidates })
+    }
+
+    /// For every wrong rule of [`Misconception::ALL`], how many cells of the
+    /// two buffers its answer differs from the right one in: the fewest over
+    /// its forms (the reversed test has two), 0 where it gives the right
+    /// answer or does not apply. A rule that differs in no cell cannot be
+    /// told from a right answer; one that differs in few is easily missed.
+    pub fn separations(&self) -> Vec<(Misconception, usize)> {
+        Misconception::ALL
+            .into_iter()
+            .map(|m| {
+                let forms = self.candidates.iter().filter(|(c, _)| *c == m);
+                let differing = |state: &State| {
+                    let cells = |a: &Matrix, b: &Matrix| {
+                        a.iter().flatten().zip(b.iter().flatten()).filter(|(x, y)| x != y).count()
+                    };
+                    cells(&state.0, &self.right.0) + cells(&state.1, &self.right.1)
+                };
+                (m, forms.map(|(_, state)| differing(state)).min().unwrap_or(0))
+            })
+            .collect()
     }
 
     /// The misconception whose buffers explain the most wrong cells net of
@@ -306,6 +331,34 @@ fn buffers_under(
         }
         Misconception::CellRule => Some(drawn_as(&|s| s.rules.columns = ColumnRule::CellHolds)),
     }
+}
+
+/// The reversed test as students most often apply it: every covered pixel
+/// replayed, the first to reach a cell written there whatever its depth, a
+/// later one only where the reversed test passes on its exact depth against
+/// the stored level; depths rounded half up and saturated as the book does.
+fn reversed_from_empty(scene: &Scene, covered: &Covered) -> Option<State> {
+    let (width, height) = (scene.width as usize, scene.height as usize);
+    let max = i128::from(scene.depth_max());
+    let clear = scene.clear_depth.level()?;
+    let reversed = match scene.depth_test {
+        DepthTest::Greater => DepthTest::Less,
+        _ => DepthTest::Greater,
+    };
+    let mut frame = vec![vec![scene.background; width]; height];
+    let mut depth = vec![vec![clear; width]; height];
+    let mut drawn = vec![false; width * height];
+    for (index, x, y, z) in &covered.0 {
+        let (n, d) = z.fraction()?;
+        let row = crate::raster::printed_row(height as u32, *y);
+        let (cell, seen) = (&mut depth[row][*x as usize], &mut drawn[row * width + *x as usize]);
+        if !*seen || reversed.passes(z, &Stored::Level(*cell)) {
+            *cell = half_up(n, d).clamp(0, max) as u32;
+            *seen = true;
+            frame[row][*x as usize] = scene.polygons[*index].value;
+        }
+    }
+    Some((frame, depth))
 }
 
 /// z = n/d rounded half up, as the book rounds.

@@ -97,11 +97,59 @@ pub struct Found {
 /// The cases the run of `scene` meets, each at the first place it meets it,
 /// in [`HardCase::ALL`] order.
 pub fn find_cases(lang: Lang, scene: &Scene) -> Vec<Found> {
+    census(lang, scene).found
+}
+
+/// Every case a scene's run meets, counted: where each is met first, in how
+/// many places a teacher would count it (the polygons it arises in, or for
+/// `intersecting` the pairs of polygons), and which cells of the raster it
+/// touches, so that a class's wrong cells can be told by the kind of case
+/// behind them.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Census {
+    /// The first place of each case met, in [`HardCase::ALL`] order.
+    pub found: Vec<Found>,
+    /// Per case of [`HardCase::ALL`]: the polygons it arises in (pairs, for
+    /// `intersecting`).
+    pub times: [usize; 7],
+    /// Per case of [`HardCase::ALL`]: the cells it touches, each
+    /// `y · width + x` (row 0 at the bottom), ascending.
+    pub cells: [Vec<u32>; 7],
+}
+
+impl Census {
+    /// How many times `case` arises (see [`Census::times`]).
+    pub fn count(&self, case: HardCase) -> usize {
+        self.times[case as usize]
+    }
+
+    /// Whether `case` touches the cell (x, y).
+    pub fn touches(&self, case: HardCase, width: u32, x: u32, y: u32) -> bool {
+        self.cells[case as usize].binary_search(&(y * width + x)).is_ok()
+    }
+}
+
+/// The [`Census`] of `scene`'s run, its places worded in `lang`.
+pub fn census(lang: Lang, scene: &Scene) -> Census {
     let mut finder = CaseFinder::new(lang, scene);
     Simulation::new(scene).finish(&mut finder);
     let mut found = finder.found;
     found.sort_by_key(|f| f.case);
-    found
+    // A pair of polygons intersects where each won a cell from the other's ones: its cells both ways.
+    let mut intersecting = BTreeSet::new();
+    for pair in finder.won.intersection(&finder.lost) {
+        intersecting.insert(*pair);
+        finder.cells[HardCase::Intersecting as usize].extend(finder.pair_cells.get(pair).into_iter().flatten());
+    }
+    let mut times = [0; 7];
+    for case in HardCase::ALL {
+        times[case as usize] = match case {
+            HardCase::Intersecting => intersecting.len(),
+            _ => finder.polygons[case as usize].len(),
+        };
+    }
+    let cells = finder.cells.map(|set| set.into_iter().collect());
+    Census { found, times, cells }
 }
 
 /// Watches a run for the hard cases.
@@ -115,6 +163,14 @@ struct CaseFinder {
     /// Pairs `(earlier, later)` where the later polygon won a cell from the earlier, and where it lost one.
     won: BTreeSet<(usize, usize)>,
     lost: BTreeSet<(usize, usize)>,
+    /// The cells each such pair won or lost.
+    pair_cells: std::collections::BTreeMap<(usize, usize), Vec<u32>>,
+    /// Per case: the polygons it arose in, and the cells it touched.
+    polygons: [BTreeSet<usize>; 7],
+    cells: [BTreeSet<u32>; 7],
+    /// The rows of the polygon being drawn whose scanline meets a vertex, or has two spans or more.
+    vertex_rows: BTreeSet<(usize, u32)>,
+    concave_rows: BTreeSet<(usize, u32)>,
     found: Vec<Found>,
 }
 
@@ -128,11 +184,21 @@ impl CaseFinder {
             owner: vec![None; scene.width as usize * scene.height as usize],
             won: BTreeSet::new(),
             lost: BTreeSet::new(),
+            pair_cells: std::collections::BTreeMap::new(),
+            polygons: Default::default(),
+            cells: Default::default(),
+            vertex_rows: BTreeSet::new(),
+            concave_rows: BTreeSet::new(),
             found: Vec::new(),
         }
     }
 
-    fn note(&mut self, case: HardCase, place: impl FnOnce() -> String) {
+    /// `case` arises in polygon `index` (at the cell (x, y), where it touches one).
+    fn note(&mut self, case: HardCase, index: usize, cell: Option<(u32, u32)>, place: impl FnOnce() -> String) {
+        self.polygons[case as usize].insert(index);
+        if let Some((x, y)) = cell {
+            self.cells[case as usize].insert(y * self.width + x);
+        }
         if !self.found.iter().any(|f| f.case == case) {
             self.found.push(Found { case, place: place() });
         }
@@ -145,7 +211,8 @@ impl Observer for CaseFinder {
         let (index, row) = (event.index, event.row);
         let scan_y = Q::new(2 * i128::from(row) + 1, 2);
         if let Some((k, v)) = event.polygon.vertices().iter().enumerate().find(|(_, v)| v[1] == scan_y) {
-            self.note(HardCase::VertexOnScanline, || {
+            self.vertex_rows.insert((index, row));
+            self.note(HardCase::VertexOnScanline, index, None, || {
                 words!(
                     lang,
                     "place-vertex-on-scanline",
@@ -164,7 +231,7 @@ impl Observer for CaseFinder {
             if let (true, Some(doubled)) = (odd, num_traits::ToPrimitive::to_i128(&doubled.to_integer())) {
                 let column = (doubled - 1) / 2;
                 if (0..i128::from(self.width)).contains(&column) {
-                    self.note(HardCase::CentreOnEdge, || {
+                    self.note(HardCase::CentreOnEdge, index, Some((column as u32, row)), || {
                         words!(
                             lang,
                             "place-centre-on-edge",
@@ -177,7 +244,8 @@ impl Observer for CaseFinder {
             }
         }
         if event.spans.len() >= 2 {
-            self.note(HardCase::Concave, || {
+            self.concave_rows.insert((index, row));
+            self.note(HardCase::Concave, index, None, || {
                 words!(
                     lang,
                     "place-spans",
@@ -192,10 +260,15 @@ impl Observer for CaseFinder {
     fn pixel(&mut self, event: &PixelEvent) {
         let lang = self.lang;
         let (index, x, y) = (event.index, event.x, event.y);
+        for (case, rows) in [(HardCase::VertexOnScanline, &self.vertex_rows), (HardCase::Concave, &self.concave_rows)] {
+            if rows.contains(&(index, y)) {
+                self.cells[case as usize].insert(y * self.width + x);
+            }
+        }
         let z = event.compared.value();
         let half = z.to_big() * num_bigint::BigInt::from(2);
         if self.quantized && half.is_integer() && half.to_integer().bit(0) {
-            self.note(HardCase::HalfDepth, || {
+            self.note(HardCase::HalfDepth, index, Some((x, y)), || {
                 words!(
                     lang,
                     "place-half-depth",
@@ -210,7 +283,7 @@ impl Observer for CaseFinder {
         let rounded = event.compared.rounded();
         let range = num_bigint::BigInt::from(0)..=num_bigint::BigInt::from(self.depth_max);
         if self.quantized && event.outcome == Outcome::Written && !range.contains(&rounded) {
-            self.note(HardCase::Saturation, || {
+            self.note(HardCase::Saturation, index, Some((x, y)), || {
                 words!(
                     lang,
                     "place-saturation",
@@ -236,7 +309,7 @@ impl Observer for CaseFinder {
                 self.owner[cell] = Some(index);
             }
             Outcome::Hidden => {
-                self.note(HardCase::Hidden, || {
+                self.note(HardCase::Hidden, index, Some((x, y)), || {
                     words!(
                         lang,
                         "place-hidden",
@@ -254,9 +327,12 @@ impl Observer for CaseFinder {
             }
             Outcome::BeyondSection | Outcome::OutsideDepthRange => {}
         }
+        if let Some(pair) = pair {
+            self.pair_cells.entry(pair).or_default().push(y * self.width + x);
+        }
         // Only the pair this event touched can have become both won and lost.
         if let Some((a, b)) = pair.filter(|p| self.won.contains(p) && self.lost.contains(p)) {
-            self.note(HardCase::Intersecting, || {
+            self.note(HardCase::Intersecting, b, None, || {
                 words!(lang, "place-intersecting", first = (a + 1).to_string(), second = (b + 1).to_string())
             });
         }
@@ -383,6 +459,18 @@ impl Refusal for Unfit {
 /// Makes an exercise: candidates drawn from the seed's sequence, the first
 /// whose trace shows every asked case kept.
 pub fn make(lang: Lang, spec: &Spec) -> Result<Exercise, Unfit> {
+    let asked = |census: &Census| spec.hard.iter().all(|case| census.count(*case) > 0);
+    search(lang, spec, |_, census| asked(census).then_some(())).map(|(exercise, ())| exercise)
+}
+
+/// Draws candidates from the seed's sequence as [`make`] does and keeps the
+/// first that `accept` takes (given its scene and its [`Census`]), with what
+/// `accept` made of it.
+pub fn search<T>(
+    lang: Lang,
+    spec: &Spec,
+    mut accept: impl FnMut(&Scene, &Census) -> Option<T>,
+) -> Result<(Exercise, T), Unfit> {
     if spec.width < 4 || spec.height < 4 || spec.width > 64 || spec.height > 64 {
         return Err(Unfit::Size { width: spec.width, height: spec.height });
     }
@@ -403,9 +491,9 @@ pub fn make(lang: Lang, spec: &Spec) -> Result<Exercise, Unfit> {
         if spec.style == Style::Book && !book_like(&scene, spec) {
             continue;
         }
-        let found = find_cases(lang, &scene);
-        if spec.hard.iter().all(|case| found.iter().any(|f| f.case == *case)) {
-            return Ok(Exercise { json, scene, found, tries });
+        let census = census(lang, &scene);
+        if let Some(made) = accept(&scene, &census) {
+            return Ok((Exercise { json, scene, found: census.found, tries }, made));
         }
     }
     Err(Unfit::NotFound {

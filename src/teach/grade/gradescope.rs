@@ -173,18 +173,9 @@ pub fn nothing_to_grade(why: &str, visibility: Visibility) -> String {
     format!("{}\n", serde_json::to_string_pretty(&results).expect("plain data"))
 }
 
-/// The autograder's files for an exercise: `setup.sh` installs zsim from
-/// the Debian package put beside it; `run_autograder` checks the submission
-/// folder (`frame.txt`, `depth.txt`, `after-N.*.txt`) against the scene and
-/// writes `results/results.json`. `AUTOGRADER_ROOT` stands for `/autograder`
-/// (for trying it elsewhere). The states graded are `expect`'s.
-pub fn autograder(
-    scene_json: &str,
-    expect: &Expect,
-    Autograde { visibility, points }: Autograde,
-    lang: Lang,
-) -> Vec<(String, Vec<u8>)> {
-    let setup = "#!/usr/bin/env bash\n\
+/// `setup.sh`: zsim installed from the Debian package put beside it.
+pub fn setup_script() -> String {
+    "#!/usr/bin/env bash\n\
         # Gradescope runs this once, as root, when it builds the autograder's image.\n\
         # Put zsim's Debian package (zsim_*.deb: `packaging/deb` on a clone of zsim\n\
         # writes it into target/debian/, or a release's) beside\n\
@@ -196,7 +187,21 @@ pub fn autograder(
         \x20 exit 1\n\
         fi\n\
         apt-get install -y ./zsim_*.deb\n"
-        .to_string();
+        .to_string()
+}
+
+/// The autograder's files for an exercise: `setup.sh` installs zsim from
+/// the Debian package put beside it; `run_autograder` checks the submission
+/// folder (`frame.txt`, `depth.txt`, `after-N.*.txt`) against the scene and
+/// writes `results/results.json`. `AUTOGRADER_ROOT` stands for `/autograder`
+/// (for trying it elsewhere). The states graded are `expect`'s.
+pub fn autograder(
+    scene_json: &str,
+    expect: &Expect,
+    Autograde { visibility, points }: Autograde,
+    lang: Lang,
+) -> Vec<(String, Vec<u8>)> {
+    let setup = setup_script();
     let run = format!(
         "#!/usr/bin/env bash\n\
         # Gradescope runs this for each submission: the student's frame.txt and/or\n\

@@ -1,0 +1,670 @@
+//! A course on the command line: `exercise --roster` (a variant per
+//! student), `grade --variants` (each against their own key) and
+//! `autograde` (a platform's grader, for one submission).
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use clap::{Args, ValueEnum};
+use comfy_table::{ContentArrangement, Table, presets};
+use serde::{Deserialize, Serialize};
+use zsim::course::fair::{ClassSpec, default_rules, make_class};
+use zsim::course::folders::{Handouts, answer_name};
+use zsim::course::grading::{CourseGrades, Fingerprint, Row, grade_course};
+use zsim::course::manifest::{Loaded, Manifest};
+use zsim::diagnose::Misconception;
+use zsim::exercise::HardCase;
+use zsim::explain::Buffer;
+use zsim::{Error, Lang};
+
+use super::exercise::ExerciseArgs;
+use super::{Failure, Finish, emit, emit_then};
+
+/// The hard cases every variant holds once when `--hard` is not given with `--roster`.
+pub const CLASS_HARD: &str = "vertex-on-scanline,centre-on-edge,half-depth,hidden";
+
+/// `zsim exercise --roster FILE -o DIR`.
+pub fn exercise(lang: Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let roster_path = args.roster.as_deref().expect("called with --roster");
+    let roster = zsim::course::roster::load(lang, roster_path, args.identity.as_deref())?;
+    let exercise = super::exercise::spec(args)?;
+    let rules = match &args.rules {
+        Some(list) => parse_rules(list)?,
+        None => default_rules(&exercise.hard),
+    };
+    let hand_in = parse_hand_in(&args.hand_in)?;
+    let spec = ClassSpec { exercise, times: args.times, distinct: args.distinct, rules, hand_in };
+    let (manifest, _) = make_class(lang, &spec, &roster, &args.reseed)?;
+    let scenes: Vec<zsim::Scene> = manifest
+        .students
+        .iter()
+        .map(|v| zsim::Scene::from_json(lang, v.scene.get(), Path::new("scene.json")))
+        .collect::<Result<_, _>>()?;
+    let dir = &args.output;
+    for other in [&args.gradescope, &args.prairielearn].into_iter().flatten() {
+        if zsim::same_folder(other, dir) {
+            return Err(Error::from(zsim::Usage::OutputIsInput { folder: other.clone() }).into());
+        }
+    }
+    let table = fairness_table(lang, &manifest);
+    let handouts =
+        Handouts { lang, manifest: &manifest, scenes: &scenes, formats: &args.formats, site: args.site.as_deref() };
+    let mut plan = zsim::Plan::new(&[roster_path], zsim::Replace::Never);
+    let listed = zsim::course::folders::plan(&handouts, dir, format!("{table}\n"), &mut plan);
+    let mut text = format!("{}\n{table}\n", summary(lang, &manifest));
+    text.push_str(&format!(
+        "{}\n",
+        zsim::words!(lang, "file-written-in", files = listed.join(", "), path = zsim::shown_path(dir))
+    ));
+    let json = manifest.to_json();
+    if let Some(folder) = &args.gradescope {
+        let files = zsim::course::platforms::gradescope_autograder(&json, args.visibility.name(), args.points, lang);
+        text.push_str(&planned(lang, &mut plan, folder, files, &["setup.sh", "run_autograder"]));
+    }
+    if let Some(folder) = &args.prairielearn {
+        let files =
+            zsim::course::platforms::prairielearn_question(&manifest, &json, "prairielearn/grader-python", lang);
+        text.push_str(&planned(lang, &mut plan, folder, files, &["tests/run.sh"]));
+    }
+    plan.write()?;
+    emit(out, &text)?;
+    Ok(Finish::Ok)
+}
+
+/// Plans a platform's files into `folder` (`executable` among them made so) and says where.
+fn planned(
+    lang: Lang,
+    plan: &mut zsim::Plan<'_>,
+    folder: &Path,
+    files: Vec<(String, Vec<u8>)>,
+    executable: &[&str],
+) -> String {
+    let names: Vec<String> = files.iter().map(|(name, _)| name.clone()).collect();
+    for (name, bytes) in files {
+        if executable.contains(&name.as_str()) {
+            plan.executable(folder.join(&name), bytes);
+        } else {
+            plan.file(folder.join(&name), bytes);
+        }
+    }
+    format!("{}\n", zsim::words!(lang, "file-written-in", files = names.join(", "), path = zsim::shown_path(folder)))
+}
+
+fn parse_rules(list: &str) -> Result<Vec<Misconception>, Error> {
+    let mut rules = Vec::new();
+    for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+        let rule = Misconception::ALL.into_iter().find(|m| m.name() == name).ok_or_else(|| {
+            Error::from(zsim::course::fair::ClassUnfit::NotARule {
+                name: name.to_string(),
+                names: Misconception::ALL.iter().map(|m| m.name().to_string()).collect(),
+            })
+        })?;
+        if !rules.contains(&rule) {
+            rules.push(rule);
+        }
+    }
+    Ok(rules)
+}
+
+fn parse_hand_in(list: &str) -> Result<Vec<Buffer>, Error> {
+    let mut buffers = Vec::new();
+    for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+        let buffer = match name {
+            "frame" => Buffer::Frame,
+            "depth" => Buffer::Depth,
+            _ => return Err(zsim::course::fair::ClassUnfit::HandIn { name: name.to_string() }.into()),
+        };
+        if !buffers.contains(&buffer) {
+            buffers.push(buffer);
+        }
+    }
+    buffers.sort_by_key(|b| *b != Buffer::Frame);
+    if buffers.is_empty() {
+        return Err(zsim::course::fair::ClassUnfit::HandIn { name: String::new() }.into());
+    }
+    Ok(buffers)
+}
+
+/// What every variant holds, in one sentence each.
+fn summary(lang: Lang, manifest: &Manifest) -> String {
+    let settings = &manifest.settings;
+    let hard =
+        if settings.hard.is_empty() { zsim::words!(lang, "exercise-notes-no-case") } else { settings.hard.join(", ") };
+    zsim::words!(
+        lang,
+        "class-summary",
+        students = manifest.students.len(),
+        seed = manifest.course_seed.to_string(),
+        width = settings.width,
+        height = settings.height,
+        polygons = settings.polygons,
+        hard = hard,
+        times = settings.times,
+        rules = settings.rules.join(", "),
+        distinct = settings.distinct
+    )
+}
+
+/// The fairness table: a row a student, the asked cases' counts, and the
+/// fewest cells any required wrong rule lies from the key.
+fn fairness_table(lang: Lang, manifest: &Manifest) -> Table {
+    let mut table = Table::new();
+    table.load_style(presets::ASCII_MARKDOWN).set_content_arrangement(ContentArrangement::Dynamic).set_width(100);
+    let mut header = vec![zsim::words!(lang, "grade-column-student"), zsim::words!(lang, "class-column-code")];
+    header.extend(manifest.settings.hard.iter().cloned());
+    header.push(zsim::words!(lang, "class-column-apart"));
+    table.set_header(header);
+    for variant in &manifest.students {
+        let mut row = vec![zsim::printable(&variant.identity).into_owned(), variant.code.clone()];
+        for case in &manifest.settings.hard {
+            let count = variant.cases.iter().find(|c| c.name == *case).map_or(0, |c| c.count);
+            row.push(count.to_string());
+        }
+        let fewest = variant
+            .separations
+            .iter()
+            .filter(|s| manifest.settings.rules.contains(&s.name))
+            .min_by_key(|s| s.count)
+            .map_or_else(String::new, |s| format!("{} ({})", s.count, s.name));
+        row.push(fewest);
+        table.add_row(row);
+    }
+    table
+}
+
+/// The arguments of `grade` that grading against a manifest uses.
+pub struct GradeVariants<'a> {
+    /// The manifest.
+    pub variants: &'a Path,
+    /// The class folder.
+    pub class: &'a Path,
+    /// The output format.
+    pub format: super::grade::Format,
+    /// Feedback into this folder.
+    pub output: Option<&'a Path>,
+    /// An earlier `--format json` of the class, to compare with.
+    pub compare: Option<&'a Path>,
+    /// The gradebook's identity column, item and points.
+    pub gradebook: (Option<zsim::gradebooks::Identity>, Option<&'a str>, u32),
+}
+
+/// `zsim grade --variants DIR/variants.json CLASS`.
+pub fn grade(lang: Lang, args: &GradeVariants<'_>, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let loaded = zsim::course::manifest::load(lang, args.variants)?;
+    let plain = matches!(args.format, super::grade::Format::Csv | super::grade::Format::Json);
+    let graded = grade_course(if plain { Lang::En } else { lang }, &loaded, args.class)?;
+    let previous = match args.compare {
+        Some(path) => Some(read_previous(lang, path)?),
+        None => None,
+    };
+    let changes = previous.as_ref().map(|p| changes(&loaded.manifest, &graded, p)).unwrap_or_default();
+    let grades = graded.grades();
+    use super::grade::Format;
+    let text = match args.format {
+        Format::Moodle | Format::Canvas => {
+            let (identity, item, points) = args.gradebook;
+            super::grade::gradebook_of(args.format, identity, item, points, &grades)?
+        }
+        Format::Csv => csv(&loaded.manifest, &graded),
+        Format::Json => json(&loaded.manifest, &graded, &changes),
+        Format::Text => text(lang, args, &loaded, &graded, &changes),
+    };
+    if let Some(folder) = args.output {
+        let regraded = if plain { Some(grade_course(lang, &loaded, args.class)?) } else { None };
+        feedback(lang, folder, args, &loaded, regraded.as_ref().unwrap_or(&graded))?;
+    }
+    if !matches!(args.format, Format::Text | Format::Json) {
+        graded.strays.iter().for_each(|s| super::say(&s.text(lang)));
+        for row in &graded.rows {
+            row.notes.iter().for_each(|n| super::say(&format!("{}: {}", row.grade.student, n.text(lang))));
+        }
+    }
+    let ok = graded.strays.is_empty()
+        && graded.rows.iter().all(|r| r.grade.status == zsim::grade::Status::Ok && r.notes.is_empty());
+    emit_then(out, &text, if ok { Finish::Ok } else { Finish::Differs })
+}
+
+fn text(lang: Lang, args: &GradeVariants<'_>, loaded: &Loaded, graded: &CourseGrades, changes: &[Change]) -> String {
+    use zsim::grade::Status;
+    let grades = graded.grades();
+    let count = |f: &dyn Fn(&Status) -> bool| grades.iter().filter(|g| f(&g.status)).count();
+    let mut text = zsim::words!(
+        lang,
+        "course-grade-summary",
+        class = zsim::shown_path(args.class),
+        variants = zsim::shown_path(args.variants),
+        students = grades.len(),
+        ok = count(&|s| *s == Status::Ok),
+        wrong = count(&|s| matches!(s, Status::Wrong | Status::Incomplete(_))),
+        malformed = count(&|s| matches!(s, Status::Malformed(_))),
+        missing = count(&|s| matches!(s, Status::Missing(_)))
+    ) + "\n";
+    let mut table = Table::new();
+    table.load_style(presets::ASCII_MARKDOWN).set_content_arrangement(ContentArrangement::Dynamic).set_width(100);
+    let columns = ["student", "code", "frame", "depth", "score", "status", "cause"];
+    table.set_header(columns.iter().map(|c| match *c {
+        "code" => zsim::words!(lang, "class-column-code"),
+        c => zsim::words!(lang, &format!("grade-column-{c}")),
+    }));
+    for row in &graded.rows {
+        let grade = &row.grade;
+        let count = |c: Option<usize>| c.map_or_else(|| "-".to_string(), |c| c.to_string());
+        let mut status = grade.status.words(lang);
+        for note in &row.notes {
+            status.push_str(&format!("; {}", note.text(lang)));
+        }
+        table.add_row([
+            zsim::printable(&grade.student).into_owned(),
+            row.code.clone(),
+            count(grade.frame_wrong),
+            count(grade.depth_wrong),
+            zsim::localize_decimal(lang, grade.percent()),
+            status,
+            grade.misconception.map_or_else(String::new, |d| d.misconception.words(lang)),
+        ]);
+    }
+    text.push_str(&format!("{table}\n\n"));
+    let causes = graded.causes();
+    if !causes.is_empty() {
+        text.push_str(&format!("{}\n", zsim::words!(lang, "grade-causes")));
+        for (misconception, count) in causes {
+            let line = zsim::words!(
+                lang,
+                "grade-cause-count",
+                what = misconception.words(lang),
+                count = count,
+                students = grades.len()
+            );
+            text.push_str(&format!("  {line}\n"));
+        }
+        text.push('\n');
+    }
+    text.push_str(&format!("{}\n", zsim::words!(lang, "course-by-kind")));
+    for (case, holding, wrong, cells) in graded.by_kind() {
+        if holding > 0 {
+            let line = zsim::words!(
+                lang,
+                "course-kind-line",
+                case = case.name(),
+                wrong = wrong,
+                holding = holding,
+                cells = cells
+            );
+            text.push_str(&format!("  {line}\n"));
+        }
+    }
+    for stray in &graded.strays {
+        text.push_str(&format!("{}\n", stray.text(lang)));
+    }
+    if args.compare.is_some() {
+        text.push_str(&format!("\n{}\n", zsim::words!(lang, "course-changes", count = changes.len())));
+        for change in changes {
+            text.push_str(&format!("  {}\n", change.text(lang)));
+        }
+    }
+    let _ = &loaded.manifest;
+    text
+}
+
+/// `grade --variants --format csv`: a row a student, the same in every language.
+fn csv(manifest: &Manifest, graded: &CourseGrades) -> String {
+    use zsim::gradebooks::csv_field;
+    let mut text = String::from("student,code,frame_wrong,depth_wrong,score,status,misconception,notes\n");
+    for row in &graded.rows {
+        let grade = &row.grade;
+        let count = |c: Option<usize>| c.map_or_else(String::new, |c| c.to_string());
+        let notes: Vec<String> = row.notes.iter().map(|n| n.text(Lang::En)).collect();
+        text.push_str(&format!(
+            "{},{},{},{},{},{},{},{}\n",
+            csv_field(&grade.student),
+            manifest.students[row.index].code,
+            count(grade.frame_wrong),
+            count(grade.depth_wrong),
+            grade.percent(),
+            csv_field(&grade.status.to_string()),
+            grade.misconception.map_or("", |d| d.misconception.name()),
+            csv_field(&notes.join("; "))
+        ));
+    }
+    text
+}
+
+/// One student in `grade --variants --format json`.
+#[derive(Debug, Serialize, Deserialize)]
+struct StudentJson {
+    student: String,
+    code: String,
+    frame_wrong: Option<usize>,
+    depth_wrong: Option<usize>,
+    unanswered: usize,
+    score: serde_json::Number,
+    status: String,
+    misconception: Option<String>,
+    files: Vec<String>,
+    notes: Vec<String>,
+    wrong_by_kind: Vec<KindJson>,
+    fingerprint: Fingerprint,
+}
+
+#[derive(Debug, Serialize, Deserialize)]
+struct KindJson {
+    case: String,
+    cells: usize,
+}
+
+/// `grade --variants --format json`.
+#[derive(Debug, Serialize, Deserialize)]
+struct ClassJson {
+    format: String,
+    students: Vec<StudentJson>,
+    by_kind: Vec<ByKindJson>,
+    not_graded: Vec<String>,
+    #[serde(default)]
+    changes: Vec<String>,
+}
+
+#[derive(Debug, Serialize, Deserialize)]
+struct ByKindJson {
+    case: String,
+    holding: usize,
+    wrong: usize,
+    cells: usize,
+}
+
+/// What `grade --variants --format json` says its layout is.
+const JSON_FORMAT: &str = "zsim class grades 1";
+
+fn json(manifest: &Manifest, graded: &CourseGrades, changes: &[Change]) -> String {
+    let students = graded
+        .rows
+        .iter()
+        .map(|row| {
+            let grade = &row.grade;
+            StudentJson {
+                student: grade.student.clone(),
+                code: manifest.students[row.index].code.clone(),
+                frame_wrong: grade.frame_wrong,
+                depth_wrong: grade.depth_wrong,
+                unanswered: grade.unanswered,
+                score: grade.percent().parse().expect("a decimal is a JSON number"),
+                status: grade.status.to_string(),
+                misconception: grade.misconception.map(|d| d.misconception.name().to_string()),
+                files: row.files.iter().map(|f| f.name.clone()).collect(),
+                notes: row.notes.iter().map(|n| n.text(Lang::En)).collect(),
+                wrong_by_kind: HardCase::ALL
+                    .iter()
+                    .filter(|c| row.kinds[**c as usize].1 > 0)
+                    .map(|c| KindJson { case: c.name().into(), cells: row.kinds[*c as usize].1 })
+                    .collect(),
+                fingerprint: row.fingerprint,
+            }
+        })
+        .collect();
+    let by_kind = graded
+        .by_kind()
+        .into_iter()
+        .map(|(case, holding, wrong, cells)| ByKindJson { case: case.name().into(), holding, wrong, cells })
+        .collect();
+    let class = ClassJson {
+        format: JSON_FORMAT.into(),
+        students,
+        by_kind,
+        not_graded: graded.strays.iter().map(|s| s.text(Lang::En)).collect(),
+        changes: changes.iter().map(|c| c.text(Lang::En)).collect(),
+    };
+    serde_json::to_string_pretty(&class).expect("plain data") + "\n"
+}
+
+/// An earlier class's grades, read through the door.
+fn read_previous(lang: Lang, path: &Path) -> Result<ClassJson, Error> {
+    let text = zsim::read_text(lang, path)?;
+    let class: ClassJson = serde_json::from_str(&text).map_err(|e| {
+        Error::from(zsim::course::manifest::ManifestError {
+            path: path.to_owned(),
+            place: String::new(),
+            problem: zsim::course::manifest::ManifestProblem::Layout(e.to_string()),
+        })
+    })?;
+    if class.format != JSON_FORMAT {
+        return Err(Error::from(zsim::course::manifest::ManifestError {
+            path: path.to_owned(),
+            place: "format".into(),
+            problem: zsim::course::manifest::ManifestProblem::Format(class.format),
+        }));
+    }
+    Ok(class)
+}
+
+/// A student whose score changed since an earlier grading, and why.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Change {
+    student: String,
+    before: Option<String>,
+    after: Option<String>,
+    why: Why,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Why {
+    Added,
+    Removed,
+    Scene,
+    Files,
+    Key,
+    Rule,
+}
+
+impl Change {
+    fn text(&self, lang: Lang) -> String {
+        let why = match self.why {
+            Why::Added => zsim::words!(lang, "course-change-added"),
+            Why::Removed => zsim::words!(lang, "course-change-removed"),
+            Why::Scene => zsim::words!(lang, "course-change-scene"),
+            Why::Files => zsim::words!(lang, "course-change-files"),
+            Why::Key => zsim::words!(lang, "course-change-key"),
+            Why::Rule => zsim::words!(lang, "course-change-rule"),
+        };
+        let score = |s: &Option<String>| s.clone().map_or_else(|| "-".into(), |s| zsim::localize_decimal(lang, s));
+        zsim::words!(
+            lang,
+            "course-change",
+            student = zsim::printable(&self.student).into_owned(),
+            before = score(&self.before),
+            after = score(&self.after),
+            why = why
+        )
+    }
+}
+
+/// Whose scores changed since `previous`, and why: the scene edited, the
+/// files handed in changed, the key recomputed differently (another zsim),
+/// or the same inputs scored by another rule.
+fn changes(manifest: &Manifest, graded: &CourseGrades, previous: &ClassJson) -> Vec<Change> {
+    let mut changes = Vec::new();
+    for row in &graded.rows {
+        let now = row.grade.percent();
+        let id = row.grade.student.to_lowercase();
+        match previous.students.iter().find(|s| s.student.to_lowercase() == id) {
+            None => changes.push(Change {
+                student: row.grade.student.clone(),
+                before: None,
+                after: Some(now),
+                why: Why::Added,
+            }),
+            Some(before) if before.score.to_string() != now => {
+                let (old, new) = (before.fingerprint, row.fingerprint);
+                let why = if old.scene != new.scene {
+                    Why::Scene
+                } else if old.files != new.files {
+                    Why::Files
+                } else if old.key != new.key {
+                    Why::Key
+                } else {
+                    Why::Rule
+                };
+                changes.push(Change {
+                    student: row.grade.student.clone(),
+                    before: Some(before.score.to_string()),
+                    after: Some(now),
+                    why,
+                });
+            }
+            Some(_) => {}
+        }
+    }
+    for before in &previous.students {
+        if manifest.student(&before.student).is_none() {
+            changes.push(Change {
+                student: before.student.clone(),
+                before: Some(before.score.to_string()),
+                after: None,
+                why: Why::Removed,
+            });
+        }
+    }
+    changes
+}
+
+/// Each student's feedback (their score, what is said of their files, and
+/// `zsim check`'s report on their own files and scene, naming only their
+/// files) and the class's summary by kind of case.
+fn feedback(
+    lang: Lang,
+    folder: &Path,
+    args: &GradeVariants<'_>,
+    loaded: &Loaded,
+    graded: &CourseGrades,
+) -> Result<(), Error> {
+    let mut plan = zsim::Plan::new(&[args.class, args.variants], zsim::Replace::Never);
+    let names = zsim::class::feedback_names(graded.rows.iter().map(|r| r.grade.student.as_str()));
+    for (row, name) in graded.rows.iter().zip(names) {
+        plan.file_made(folder.join(name), move || feedback_of(lang, loaded, row).map(String::into_bytes));
+    }
+    let summary = text(lang, args, loaded, graded, &[]);
+    plan.file(folder.join("common-mistakes.txt"), summary);
+    plan.write().map(drop)
+}
+
+fn feedback_of(lang: Lang, loaded: &Loaded, row: &Row) -> Result<String, Error> {
+    let variant = &loaded.manifest.students[row.index];
+    let scene = &loaded.scenes[row.index];
+    let grade = &row.grade;
+    let mut text = zsim::words!(
+        lang,
+        "course-feedback",
+        student = zsim::printable(&grade.student).into_owned(),
+        code = variant.code.as_str(),
+        score = zsim::localize_decimal(lang, grade.percent()),
+        status = grade.status.words(lang)
+    ) + "\n";
+    for note in &row.notes {
+        text.push_str(&format!("{}\n", note.text(lang)));
+    }
+    for buffer in loaded.manifest.buffers() {
+        if !row.files.iter().any(|f| f.buffer == buffer) {
+            let file = answer_name(&variant.identity, buffer);
+            text.push_str(&format!("{}\n", zsim::words!(lang, "gradescope-missing", file = file)));
+        }
+    }
+    let last = scene.polygons.len() - 1;
+    let mut answers = Vec::new();
+    for file in &row.files {
+        match zsim::check::read_answer(lang, &file.path, scene, file.buffer, zsim::Links::Refuse) {
+            Ok(answer) => answers.push((file.buffer, PathBuf::from(&file.name), answer)),
+            Err(error) => text.push_str(&format!("{}\n", zsim::check::as_the_student_sees(lang, &error, &file.path))),
+        }
+    }
+    if !answers.is_empty() {
+        let answers = answers.iter().map(|(b, p, a)| (*b, p.as_path(), a.clone())).collect();
+        let report =
+            zsim::check::check(lang, scene, Path::new("scene.json"), last, answers, zsim::arith::Arith::Exact)?;
+        text.push_str(&super::check::report_text(lang, &report));
+    }
+    Ok(text)
+}
+
+/// Arguments of `zsim autograde`.
+#[derive(Debug, Args)]
+pub struct AutogradeArgs {
+    /// The platform whose grader runs this: gradescope or prairielearn.
+    #[arg(value_enum)]
+    platform: Platform,
+    /// The class's manifest (variants.json), which the grader carries.
+    #[arg(long, value_name = "FILE")]
+    variants: PathBuf,
+    /// Gradescope: the submission's metadata (submission_metadata.json).
+    #[arg(long, value_name = "FILE")]
+    metadata: Option<PathBuf>,
+    /// PrairieLearn: the grading job's data (data.json).
+    #[arg(long, value_name = "FILE")]
+    data: Option<PathBuf>,
+    /// The student's files (IDENTITY.frame.txt or frame.txt, and the depth's likewise).
+    #[arg(long, value_name = "DIR")]
+    submission: PathBuf,
+    /// Gradescope: who sees the results.
+    #[arg(long, default_value = "visible", value_parser = super::choice(&zsim::gradescope::Visibility::NAMES, zsim::gradescope::Visibility::parse))]
+    visibility: zsim::gradescope::Visibility,
+    /// Gradescope: the points the submission is worth.
+    #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=i64::from(zsim::gradescope::MAX_POINTS)))]
+    points: u32,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Platform {
+    /// Gradescope's autograder: results.json with a test per buffer.
+    Gradescope,
+    /// PrairieLearn's external grader: results.json with score, gradable and format_errors.
+    Prairielearn,
+}
+
+/// How a platform's file picks the student.
+type Pick = fn(&Manifest, &str) -> Result<usize, zsim::course::platforms::Unmatched>;
+
+/// `zsim autograde`: one submission graded against its student's variant,
+/// results.json on standard output whatever happens (exit 0), so that the
+/// platform always shows the student a message.
+pub fn autograde(lang: Lang, args: &AutogradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let visible = zsim::gradescope::Visibility::Visible;
+    let fail = |why: String| match args.platform {
+        Platform::Gradescope => zsim::gradescope::nothing_to_grade(&why, visible),
+        Platform::Prairielearn => {
+            serde_json::to_string_pretty(&serde_json::json!({"gradable": false, "format_errors": [why]}))
+                .expect("plain data")
+                + "\n"
+        }
+    };
+    let results = (|| -> Result<String, String> {
+        let loaded = zsim::course::manifest::load(lang, &args.variants).map_err(|e| e.message(lang))?;
+        let manifest = &loaded.manifest;
+        let (file, pick): (&Option<PathBuf>, Pick) = match args.platform {
+            Platform::Gradescope => (&args.metadata, zsim::course::platforms::gradescope_student),
+            Platform::Prairielearn => (&args.data, zsim::course::platforms::prairielearn_student),
+        };
+        let file = file.as_ref().ok_or_else(|| zsim::words!(lang, "platform-needs-file"))?;
+        let text = zsim::read_text(lang, file).map_err(|e| e.message(lang))?;
+        let k = pick(manifest, &text).map_err(|e| zsim::Refusal::message(&e, lang))?;
+        let scene = &loaded.scenes[k];
+        let (expected, unused) = zsim::course::platforms::submitted(&args.submission, scene, &manifest.buffers())
+            .map_err(|e| e.message(lang))?;
+        let render = |report: &zsim::check::CheckReport| super::check::report_text(lang, report);
+        match args.platform {
+            Platform::Gradescope => {
+                let grading = zsim::gradescope::Autograde { visibility: args.visibility, points: args.points };
+                let shown = Path::new("scene.json");
+                zsim::gradescope::results(
+                    lang,
+                    (scene, shown),
+                    (&expected, &unused),
+                    zsim::arith::Arith::Exact,
+                    grading,
+                    &render,
+                )
+                .map_err(|e| e.message(lang))
+            }
+            Platform::Prairielearn => zsim::course::platforms::prairielearn_results(lang, scene, &expected, &render)
+                .map_err(|e| e.message(lang)),
+        }
+    })();
+    let text = results.unwrap_or_else(fail);
+    emit_then(out, &text, Finish::Ok)
+}
