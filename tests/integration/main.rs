@@ -14,6 +14,7 @@ mod browser;
 mod buet;
 mod chromium;
 mod classroom;
+mod course;
 mod cs418;
 mod diagnosis;
 

@@ -387,3 +387,31 @@ fn replay(scene: &Scene, covered: &Covered, level: impl Fn(i128, i128) -> i128) 
     }
     Some((frame, depth))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Found by a teacher: the reversed test as students most often write it
+    /// (the smaller z kept, but a cell nothing was drawn in yet taking the
+    /// first polygon whatever its depth) scored 89.1 with no cause named.
+    #[test]
+    fn the_reversed_tests_common_form_is_named() {
+        // Two squares on a 12 × 2 raster, A (z = 5) over columns 0–2, B (z = 9) over 1–3; columns
+        // 4–11 empty, which the test's other form (cleared to the far end, 15) contradicts.
+        let scene = Scene::from_json(
+            Lang::En,
+            r#"{"width": 12, "height": 2, "polygons": [
+                {"value": 1, "vertices": [[0, 0, 5], [3, 0, 5], [3, 2, 5], [0, 2, 5]]},
+                {"value": 2, "vertices": [[1, 0, 9], [4, 0, 9], [4, 2, 9], [1, 2, 9]]}]}"#,
+            std::path::Path::new("two.json"),
+        )
+        .unwrap();
+        // Right: B nearer over the overlap. The student kept the smaller z there, and 0 in the empty column.
+        let empty = [0; 8];
+        let frame = Answer::complete(vec![[&[1, 1, 1, 2][..], &empty].concat(); 2]);
+        let depth = Answer::complete(vec![[&[5, 5, 5, 9][..], &empty].concat(); 2]);
+        let diagnosis = diagnose(&scene, 1, Some(&frame), Some(&depth)).unwrap();
+        assert_eq!((diagnosis.misconception, diagnosis.explained, diagnosis.wrong), (Misconception::Reversed, 8, 8));
+    }
+}

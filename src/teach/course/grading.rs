@@ -303,12 +303,55 @@ pub fn grade_course(lang: Lang, loaded: &Loaded, class: &Path) -> Result<CourseG
                 kinds[case as usize] = (found.count(case) > 0, touched);
             }
             let key_bytes = frame.iter().chain(&depth).flatten().flat_map(|v| v.to_le_bytes());
-            let fingerprint =
-                Fingerprint { scene: fnv(variant.scene.get().bytes()), key: fnv(key_bytes), files: fnv(file_bytes) };
+            // The scene as data, not as laid out: a manifest saved again by an editor keeps its hash.
+            let scene = fnv(canonical(variant.scene.get()).into_bytes());
+            let fingerprint = Fingerprint { scene, key: fnv(key_bytes), files: fnv(file_bytes) };
             Row { index, grade, code: variant.code.clone(), files: graded, notes, kinds, fingerprint }
         })
         .collect();
     Ok(CourseGrades { rows, strays })
+}
+
+/// A JSON text as data: its objects' keys sorted, no white space, so that
+/// the same scene laid out otherwise (an editor's save) reads the same.
+fn canonical(text: &str) -> String {
+    fn write(value: &serde_json::Value, out: &mut String) {
+        match value {
+            serde_json::Value::Object(map) => {
+                let mut keys: Vec<&String> = map.keys().collect();
+                keys.sort();
+                out.push('{');
+                for (k, key) in keys.into_iter().enumerate() {
+                    if k > 0 {
+                        out.push(',');
+                    }
+                    out.push_str(&serde_json::Value::from(key.as_str()).to_string());
+                    out.push(':');
+                    write(&map[key], out);
+                }
+                out.push('}');
+            }
+            serde_json::Value::Array(items) => {
+                out.push('[');
+                for (k, item) in items.iter().enumerate() {
+                    if k > 0 {
+                        out.push(',');
+                    }
+                    write(item, out);
+                }
+                out.push(']');
+            }
+            other => out.push_str(&other.to_string()),
+        }
+    }
+    match serde_json::from_str::<serde_json::Value>(text) {
+        Ok(value) => {
+            let mut out = String::new();
+            write(&value, &mut out);
+            out
+        }
+        Err(_) => text.to_string(),
+    }
 }
 
 /// The student and buffer a misnamed file was meant for: a roster identity
