@@ -7,14 +7,11 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
 use comfy_table::{ContentArrangement, Table, presets};
-use serde::{Deserialize, Serialize};
 use zsim::course::fair::{ClassSpec, default_rules, make_class};
 use zsim::course::folders::{Handouts, answer_name};
-use zsim::course::grading::{CourseGrades, Fingerprint, Row, grade_course};
+use zsim::course::grading::{CourseGrades, Row, grade_course};
 use zsim::course::manifest::{Loaded, Manifest};
-use zsim::diagnose::Misconception;
-use zsim::exercise::HardCase;
-use zsim::explain::Buffer;
+use zsim::course::report::{Change, changes, csv, json, read_previous};
 use zsim::{Error, Lang};
 
 use super::exercise::ExerciseArgs;
@@ -29,10 +26,10 @@ pub fn exercise(lang: Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<
     let roster = zsim::course::roster::load(lang, roster_path, args.identity.as_deref())?;
     let exercise = super::exercise::spec(args)?;
     let rules = match &args.rules {
-        Some(list) => parse_rules(list)?,
+        Some(list) => zsim::course::fair::parse_rules(list)?,
         None => default_rules(&exercise.hard),
     };
-    let hand_in = parse_hand_in(&args.hand_in)?;
+    let hand_in = zsim::course::fair::parse_hand_in(&args.hand_in)?;
     let spec = ClassSpec { exercise, times: args.times, distinct: args.distinct, rules, hand_in };
     let (manifest, _) = make_class(lang, &spec, &roster, &args.reseed)?;
     let scenes: Vec<zsim::Scene> = manifest
@@ -88,41 +85,6 @@ fn planned(
         }
     }
     format!("{}\n", zsim::words!(lang, "file-written-in", files = names.join(", "), path = zsim::shown_path(folder)))
-}
-
-fn parse_rules(list: &str) -> Result<Vec<Misconception>, Error> {
-    let mut rules = Vec::new();
-    for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
-        let rule = Misconception::ALL.into_iter().find(|m| m.name() == name).ok_or_else(|| {
-            Error::from(zsim::course::fair::ClassUnfit::NotARule {
-                name: name.to_string(),
-                names: Misconception::ALL.iter().map(|m| m.name().to_string()).collect(),
-            })
-        })?;
-        if !rules.contains(&rule) {
-            rules.push(rule);
-        }
-    }
-    Ok(rules)
-}
-
-fn parse_hand_in(list: &str) -> Result<Vec<Buffer>, Error> {
-    let mut buffers = Vec::new();
-    for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
-        let buffer = match name {
-            "frame" => Buffer::Frame,
-            "depth" => Buffer::Depth,
-            _ => return Err(zsim::course::fair::ClassUnfit::HandIn { name: name.to_string() }.into()),
-        };
-        if !buffers.contains(&buffer) {
-            buffers.push(buffer);
-        }
-    }
-    buffers.sort_by_key(|b| *b != Buffer::Frame);
-    if buffers.is_empty() {
-        return Err(zsim::course::fair::ClassUnfit::HandIn { name: String::new() }.into());
-    }
-    Ok(buffers)
 }
 
 /// What every variant holds, in one sentence each.
@@ -306,225 +268,6 @@ fn text(lang: Lang, args: &GradeVariants<'_>, loaded: &Loaded, graded: &CourseGr
     text
 }
 
-/// `grade --variants --format csv`: a row a student, the same in every language.
-fn csv(manifest: &Manifest, graded: &CourseGrades) -> String {
-    use zsim::gradebooks::csv_field;
-    let mut text = String::from("student,code,frame_wrong,depth_wrong,score,status,misconception,notes\n");
-    for row in &graded.rows {
-        let grade = &row.grade;
-        let count = |c: Option<usize>| c.map_or_else(String::new, |c| c.to_string());
-        let notes: Vec<String> = row.notes.iter().map(|n| n.text(Lang::En)).collect();
-        text.push_str(&format!(
-            "{},{},{},{},{},{},{},{}\n",
-            csv_field(&grade.student),
-            manifest.students[row.index].code,
-            count(grade.frame_wrong),
-            count(grade.depth_wrong),
-            grade.percent(),
-            csv_field(&grade.status.to_string()),
-            grade.misconception.map_or("", |d| d.misconception.name()),
-            csv_field(&notes.join("; "))
-        ));
-    }
-    text
-}
-
-/// One student in `grade --variants --format json`.
-#[derive(Debug, Serialize, Deserialize)]
-struct StudentJson {
-    student: String,
-    code: String,
-    frame_wrong: Option<usize>,
-    depth_wrong: Option<usize>,
-    unanswered: usize,
-    score: serde_json::Number,
-    status: String,
-    misconception: Option<String>,
-    files: Vec<String>,
-    notes: Vec<String>,
-    wrong_by_kind: Vec<KindJson>,
-    fingerprint: Fingerprint,
-}
-
-#[derive(Debug, Serialize, Deserialize)]
-struct KindJson {
-    case: String,
-    cells: usize,
-}
-
-/// `grade --variants --format json`.
-#[derive(Debug, Serialize, Deserialize)]
-struct ClassJson {
-    format: String,
-    students: Vec<StudentJson>,
-    by_kind: Vec<ByKindJson>,
-    not_graded: Vec<String>,
-    #[serde(default)]
-    changes: Vec<String>,
-}
-
-#[derive(Debug, Serialize, Deserialize)]
-struct ByKindJson {
-    case: String,
-    holding: usize,
-    wrong: usize,
-    cells: usize,
-}
-
-/// What `grade --variants --format json` says its layout is.
-const JSON_FORMAT: &str = "zsim class grades 1";
-
-fn json(manifest: &Manifest, graded: &CourseGrades, changes: &[Change]) -> String {
-    let students = graded
-        .rows
-        .iter()
-        .map(|row| {
-            let grade = &row.grade;
-            StudentJson {
-                student: grade.student.clone(),
-                code: manifest.students[row.index].code.clone(),
-                frame_wrong: grade.frame_wrong,
-                depth_wrong: grade.depth_wrong,
-                unanswered: grade.unanswered,
-                score: grade.percent().parse().expect("a decimal is a JSON number"),
-                status: grade.status.to_string(),
-                misconception: grade.misconception.map(|d| d.misconception.name().to_string()),
-                files: row.files.iter().map(|f| f.name.clone()).collect(),
-                notes: row.notes.iter().map(|n| n.text(Lang::En)).collect(),
-                wrong_by_kind: HardCase::ALL
-                    .iter()
-                    .filter(|c| row.kinds[**c as usize].1 > 0)
-                    .map(|c| KindJson { case: c.name().into(), cells: row.kinds[*c as usize].1 })
-                    .collect(),
-                fingerprint: row.fingerprint,
-            }
-        })
-        .collect();
-    let by_kind = graded
-        .by_kind()
-        .into_iter()
-        .map(|(case, holding, wrong, cells)| ByKindJson { case: case.name().into(), holding, wrong, cells })
-        .collect();
-    let class = ClassJson {
-        format: JSON_FORMAT.into(),
-        students,
-        by_kind,
-        not_graded: graded.strays.iter().map(|s| s.text(Lang::En)).collect(),
-        changes: changes.iter().map(|c| c.text(Lang::En)).collect(),
-    };
-    serde_json::to_string_pretty(&class).expect("plain data") + "\n"
-}
-
-/// An earlier class's grades, read through the door.
-fn read_previous(lang: Lang, path: &Path) -> Result<ClassJson, Error> {
-    let text = zsim::read_text(lang, path)?;
-    let class: ClassJson = serde_json::from_str(&text).map_err(|e| {
-        Error::from(zsim::course::manifest::ManifestError {
-            path: path.to_owned(),
-            place: String::new(),
-            problem: zsim::course::manifest::ManifestProblem::Layout(e.to_string()),
-        })
-    })?;
-    if class.format != JSON_FORMAT {
-        return Err(Error::from(zsim::course::manifest::ManifestError {
-            path: path.to_owned(),
-            place: "format".into(),
-            problem: zsim::course::manifest::ManifestProblem::Format(class.format),
-        }));
-    }
-    Ok(class)
-}
-
-/// A student whose score changed since an earlier grading, and why.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Change {
-    student: String,
-    before: Option<String>,
-    after: Option<String>,
-    why: Why,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Why {
-    Added,
-    Removed,
-    Scene,
-    Files,
-    Key,
-    Rule,
-}
-
-impl Change {
-    fn text(&self, lang: Lang) -> String {
-        let why = match self.why {
-            Why::Added => zsim::words!(lang, "course-change-added"),
-            Why::Removed => zsim::words!(lang, "course-change-removed"),
-            Why::Scene => zsim::words!(lang, "course-change-scene"),
-            Why::Files => zsim::words!(lang, "course-change-files"),
-            Why::Key => zsim::words!(lang, "course-change-key"),
-            Why::Rule => zsim::words!(lang, "course-change-rule"),
-        };
-        let score = |s: &Option<String>| s.clone().map_or_else(|| "-".into(), |s| zsim::localize_decimal(lang, s));
-        zsim::words!(
-            lang,
-            "course-change",
-            student = zsim::printable(&self.student).into_owned(),
-            before = score(&self.before),
-            after = score(&self.after),
-            why = why
-        )
-    }
-}
-
-/// Whose scores changed since `previous`, and why: the scene edited, the
-/// files handed in changed, the key recomputed differently (another zsim),
-/// or the same inputs scored by another rule.
-fn changes(manifest: &Manifest, graded: &CourseGrades, previous: &ClassJson) -> Vec<Change> {
-    let mut changes = Vec::new();
-    for row in &graded.rows {
-        let now = row.grade.percent();
-        let id = row.grade.student.to_lowercase();
-        match previous.students.iter().find(|s| s.student.to_lowercase() == id) {
-            None => changes.push(Change {
-                student: row.grade.student.clone(),
-                before: None,
-                after: Some(now),
-                why: Why::Added,
-            }),
-            Some(before) if before.score.to_string() != now => {
-                let (old, new) = (before.fingerprint, row.fingerprint);
-                let why = if old.scene != new.scene {
-                    Why::Scene
-                } else if old.files != new.files {
-                    Why::Files
-                } else if old.key != new.key {
-                    Why::Key
-                } else {
-                    Why::Rule
-                };
-                changes.push(Change {
-                    student: row.grade.student.clone(),
-                    before: Some(before.score.to_string()),
-                    after: Some(now),
-                    why,
-                });
-            }
-            Some(_) => {}
-        }
-    }
-    for before in &previous.students {
-        if manifest.student(&before.student).is_none() {
-            changes.push(Change {
-                student: before.student.clone(),
-                before: Some(before.score.to_string()),
-                after: None,
-                why: Why::Removed,
-            });
-        }
-    }
-    changes
-}
-
 /// Each student's feedback (their score, what is said of their files, and
 /// `zsim check`'s report on their own files and scene, naming only their
 /// files) and the class's summary by kind of case.
@@ -617,54 +360,19 @@ enum Platform {
     Prairielearn,
 }
 
-/// How a platform's file picks the student.
-type Pick = fn(&Manifest, &str) -> Result<usize, zsim::course::platforms::Unmatched>;
-
 /// `zsim autograde`: one submission graded against its student's variant,
 /// results.json on standard output whatever happens (exit 0), so that the
 /// platform always shows the student a message.
 pub fn autograde(lang: Lang, args: &AutogradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let visible = zsim::gradescope::Visibility::Visible;
-    let fail = |why: String| match args.platform {
-        Platform::Gradescope => zsim::gradescope::nothing_to_grade(&why, visible),
-        Platform::Prairielearn => {
-            serde_json::to_string_pretty(&serde_json::json!({"gradable": false, "format_errors": [why]}))
-                .expect("plain data")
-                + "\n"
-        }
+    let render = |report: &zsim::check::CheckReport| super::check::report_text(lang, report);
+    let platform = match args.platform {
+        Platform::Gradescope => zsim::course::platforms::Platform::Gradescope {
+            metadata: args.metadata.as_deref(),
+            grading: zsim::gradescope::Autograde { visibility: args.visibility, points: args.points },
+        },
+        Platform::Prairielearn => zsim::course::platforms::Platform::PrairieLearn { data: args.data.as_deref() },
     };
-    let results = (|| -> Result<String, String> {
-        let loaded = zsim::course::manifest::load(lang, &args.variants).map_err(|e| e.message(lang))?;
-        let manifest = &loaded.manifest;
-        let (file, pick): (&Option<PathBuf>, Pick) = match args.platform {
-            Platform::Gradescope => (&args.metadata, zsim::course::platforms::gradescope_student),
-            Platform::Prairielearn => (&args.data, zsim::course::platforms::prairielearn_student),
-        };
-        let file = file.as_ref().ok_or_else(|| zsim::words!(lang, "platform-needs-file"))?;
-        let text = zsim::read_text(lang, file).map_err(|e| e.message(lang))?;
-        let k = pick(manifest, &text).map_err(|e| zsim::Refusal::message(&e, lang))?;
-        let scene = &loaded.scenes[k];
-        let (expected, unused) = zsim::course::platforms::submitted(&args.submission, scene, &manifest.buffers())
-            .map_err(|e| e.message(lang))?;
-        let render = |report: &zsim::check::CheckReport| super::check::report_text(lang, report);
-        match args.platform {
-            Platform::Gradescope => {
-                let grading = zsim::gradescope::Autograde { visibility: args.visibility, points: args.points };
-                let shown = Path::new("scene.json");
-                zsim::gradescope::results(
-                    lang,
-                    (scene, shown),
-                    (&expected, &unused),
-                    zsim::arith::Arith::Exact,
-                    grading,
-                    &render,
-                )
-                .map_err(|e| e.message(lang))
-            }
-            Platform::Prairielearn => zsim::course::platforms::prairielearn_results(lang, scene, &expected, &render)
-                .map_err(|e| e.message(lang)),
-        }
-    })();
-    let text = results.unwrap_or_else(fail);
+    let results = zsim::course::platforms::autograde(lang, &platform, &args.variants, &args.submission, &render);
+    let text = results.unwrap_or_else(|why| zsim::course::platforms::unusable(&why, &platform));
     emit_then(out, &text, Finish::Ok)
 }

@@ -4,7 +4,7 @@
 //! Each language is a Fluent catalogue (a folder `en/`, `ru/`, `uk/`, `zh/`,
 //! built into the binary) of one resource per area ([`AREAS`]: reading a
 //! scene, drawing it, stepping and the lesson, checking and grading, the
-//! courses, requests that do not fit), with one message per sentence or
+//! courses, requests that do not fit, a class of variants), with one message per sentence or
 //! phrase, keyed by the fact it states (never by the front end that shows
 //! it), and the facts as arguments; Fluent chooses plural forms by the
 //! language's CLDR rules. Numbers arrive already written: exact values stay exact

@@ -254,7 +254,9 @@ fn the_command_line_stays_small() {
     let mut files = Vec::new();
     sources(&src().join("cli"), &mut files);
     let lines: usize = files.iter().map(|f| std::fs::read_to_string(f).unwrap().lines().count()).sum();
-    assert!(lines <= 3000, "src/cli/ has {lines} lines: what it computes belongs in the library");
+    // A class's commands render three reports more (the fairness table, a class's grades by kind
+    // of case, each student's feedback); what they compute is the library's (teach/course/).
+    assert!(lines <= 3400, "src/cli/ has {lines} lines: what it computes belongs in the library");
 }
 
 /// A comment says why; a figure's date, the commit it was measured at or

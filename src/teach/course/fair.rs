@@ -119,6 +119,43 @@ fn holds(asked: &[HardCase], case: HardCase, count: usize, times: usize) -> bool
     }
 }
 
+/// The wrong rules named in a comma-separated list.
+pub fn parse_rules(list: &str) -> Result<Vec<Misconception>, Error> {
+    let mut rules = Vec::new();
+    for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+        let rule = Misconception::ALL.into_iter().find(|m| m.name() == name).ok_or_else(|| {
+            Error::from(ClassUnfit::NotARule {
+                name: name.to_string(),
+                names: Misconception::ALL.iter().map(|m| m.name().to_string()).collect(),
+            })
+        })?;
+        if !rules.contains(&rule) {
+            rules.push(rule);
+        }
+    }
+    Ok(rules)
+}
+
+/// The buffers named in a comma-separated list (`frame`, `depth`), the framebuffer first.
+pub fn parse_hand_in(list: &str) -> Result<Vec<Buffer>, Error> {
+    let mut buffers = Vec::new();
+    for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+        let buffer = match name {
+            "frame" => Buffer::Frame,
+            "depth" => Buffer::Depth,
+            _ => return Err(ClassUnfit::HandIn { name: name.to_string() }.into()),
+        };
+        if !buffers.contains(&buffer) {
+            buffers.push(buffer);
+        }
+    }
+    buffers.sort_by_key(|b| *b != Buffer::Frame);
+    if buffers.is_empty() {
+        return Err(ClassUnfit::HandIn { name: String::new() }.into());
+    }
+    Ok(buffers)
+}
+
 /// The key of a scene: its buffers after the last polygon, top row first.
 pub fn key_of(scene: &Scene) -> (Matrix, Matrix) {
     let mut simulation = Simulation::new(scene);

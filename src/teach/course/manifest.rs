@@ -250,12 +250,12 @@ pub fn code_of(seed: u64) -> String {
     code
 }
 
-/// The variant code written in an answer file's comment line `# variant CODE`, if any.
+/// The variant code an answer file's comment line names (`# variant CODE`,
+/// anywhere in a line starting with `#`), if any.
 pub fn code_in(text: &str) -> Option<&str> {
-    text.lines().find_map(|line| {
-        let rest = line.trim().strip_prefix('#')?.trim_start();
-        let code = rest.strip_prefix("variant")?.trim();
-        let code = code.split_whitespace().next()?;
+    text.lines().filter(|line| line.trim_start().starts_with('#')).find_map(|line| {
+        let (_, rest) = line.split_once("variant ")?;
+        let code = rest.split_whitespace().next()?.trim_end_matches([',', ';', ':', ')', '.']);
         (code.len() == 7 && code.as_bytes()[3] == b'-').then_some(code)
     })
 }

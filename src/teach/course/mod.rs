@@ -9,10 +9,12 @@
 //! - `fair`: the variants made, fair by construction and told apart.
 //! - `folders`: the student's folder and the teacher's, planned whole.
 //! - `grading`: a class folder graded student by student against the manifest.
+//! - `report`: a graded class for programs (CSV, JSON) and what changed since.
 //! - `platforms`: Gradescope's autograder and PrairieLearn's question for a class.
 pub mod fair;
 pub mod folders;
 pub mod grading;
 pub mod manifest;
 pub mod platforms;
+pub mod report;
 pub mod roster;

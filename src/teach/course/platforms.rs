@@ -58,6 +58,81 @@ impl Refusal for Unmatched {
     }
 }
 
+/// The platform a grader runs on, with its file that names the submission.
+pub enum Platform<'a> {
+    /// Gradescope: `submission_metadata.json`, and how the results are given.
+    Gradescope {
+        /// The metadata file.
+        metadata: Option<&'a std::path::Path>,
+        /// Who sees the results and the points.
+        grading: crate::teach::grade::gradescope::Autograde,
+    },
+    /// PrairieLearn: the grading job's `data.json`.
+    PrairieLearn {
+        /// The data file.
+        data: Option<&'a std::path::Path>,
+    },
+}
+
+/// How a platform's file picks the student of a manifest.
+type Pick = fn(&Manifest, &str) -> Result<usize, Unmatched>;
+
+/// One submission graded against its student's variant: the manifest at
+/// `variants`, the student found by the platform's file, their files in
+/// `submission`; the platform's `results.json`, or why it could not be made.
+pub fn autograde(
+    lang: Lang,
+    platform: &Platform<'_>,
+    variants: &std::path::Path,
+    submission: &std::path::Path,
+    render: &dyn Fn(&crate::teach::check::CheckReport) -> String,
+) -> Result<String, String> {
+    let loaded = super::manifest::load(lang, variants).map_err(|e| e.message(lang))?;
+    let manifest = &loaded.manifest;
+    let (file, pick): (_, Pick) = match platform {
+        Platform::Gradescope { metadata, .. } => (metadata, gradescope_student),
+        Platform::PrairieLearn { data } => (data, prairielearn_student),
+    };
+    let file = file.ok_or_else(|| words!(lang, "platform-needs-file"))?;
+    let text = crate::door::read_text(lang, file).map_err(|e| e.message(lang))?;
+    let k = pick(manifest, &text).map_err(|e| e.message(lang))?;
+    let scene = &loaded.scenes[k];
+    let (expected, unused) = submitted(submission, scene, &manifest.buffers()).map_err(|e| e.message(lang))?;
+    match platform {
+        Platform::Gradescope { grading, .. } => {
+            let shown = std::path::Path::new("scene.json");
+            let arith = crate::effects::arith::Arith::Exact;
+            crate::teach::grade::gradescope::results(
+                lang,
+                (scene, shown),
+                (&expected, &unused),
+                arith,
+                *grading,
+                render,
+            )
+            .map_err(|e| e.message(lang))
+        }
+        Platform::PrairieLearn { .. } => {
+            prairielearn_results(lang, scene, &expected, render).map_err(|e| e.message(lang))
+        }
+    }
+}
+
+/// The `results.json` of a submission that could not be graded, `why` in
+/// words the student sees: Gradescope's score 0 with its output visible,
+/// PrairieLearn's not gradable (no attempt lost).
+pub fn unusable(why: &str, platform: &Platform<'_>) -> String {
+    match platform {
+        Platform::Gradescope { .. } => {
+            crate::teach::grade::gradescope::nothing_to_grade(why, crate::teach::grade::gradescope::Visibility::Visible)
+        }
+        Platform::PrairieLearn { .. } => {
+            let results = serde_json::json!({"gradable": false, "format_errors": [printable(why)]});
+            serde_json::to_string_pretty(&results).expect("plain data") + "\n"
+        }
+    }
+}
+
 /// Gradescope's `submission_metadata.json`, as much of it as names the submitters.
 #[derive(Debug, Deserialize)]
 struct Metadata {

@@ -43,7 +43,7 @@ class-summary = { $students ->
   }, course seed { $seed }: a variant each of { $width }×{ $height } with { $polygons } polygons; each holds { $hard } exactly { $times ->
     [one] once
    *[other] { $times } times
-  }, and each wrong rule ({ $rules }) differs from its key in { $distinct } cells or more
+  } and no other hard case, and each wrong rule ({ $rules }) differs from its key in { $distinct } cells or more
 class-column-code = variant
 class-column-apart = fewest cells a wrong rule differs in
 course-misnamed = { $file } is misnamed and was not graded: name it { $expected }
@@ -55,7 +55,10 @@ course-grade-summary = class { $class } against { $variants }: { $students ->
    *[other] { $students } students
   }; { $ok } ok, { $wrong } wrong, { $malformed } malformed, { $missing } missing an answer
 course-by-kind = wrong cells by kind of case (students wrong there, of those whose scene holds it):
-course-kind-line = { $case }: { $wrong } of { $holding }, { $cells } cells
+course-kind-line = { $case }: { $wrong } of { $holding }, { $cells ->
+    [one] { $cells } cell
+   *[other] { $cells } cells
+  }
 course-changes = { $count ->
     [0] scores changed since the earlier grading: none
     [one] scores changed since the earlier grading: { $count }

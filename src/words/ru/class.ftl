@@ -1,80 +1,86 @@
-# A class: rosters, the manifest, variants, handouts, grading against each student's key, the platforms' graders.
-roster-empty = { $path }: no student in the roster
-roster-unknown-header = { $path }: line 1: not a roster zsim knows: its columns are { $headers }; give Moodle's, Canvas's, Gradescope's or PrairieLearn's export, or one identity a line
-roster-no-such-column = { $path }: no column "{ $column }" to name the students by; the roster's columns are { $headers }
-roster-empty-identity = { $path }: line { $line }: the student's { $column } is empty
-roster-duplicate = { $path }: line { $line }: { $identity } is on the roster already (line { $first }); gradebooks match identities without letter case
-roster-unnameable = { $path }: line { $line }: "{ $identity }" cannot name a student's files (no /, \, :, *, ?, ", <, >, | or control character, no leading dot, at most 200 bytes): choose another column with --identity
-roster-too-many = { $path }: more than { $max } students: split the class
-roster-unreadable = { $path }: line { $line }: { $reason }
-manifest-layout = { $place }: not a class's variants.json: { $why }
-manifest-format = { $place }: "{ $found }" is not a layout this zsim reads (it reads "{ $expected }")
-manifest-hand-in = { $place }: what each student hands in must be "frame", "depth" or both
-manifest-twice = { $place }: { $what } is in the manifest twice
-manifest-unnameable = { $place }: "{ $identity }" cannot name a student's files
+# Класс: списки студентов, манифест, варианты, раздаточные материалы, проверка по ключу каждого студента, автопроверка на платформах.
+roster-empty = { $path }: в списке нет ни одного студента
+roster-unknown-header = { $path }: строка 1: zsim не знает такого списка: его столбцы { $headers }; дайте выгрузку Moodle, Canvas, Gradescope или PrairieLearn либо по одному идентификатору в строке
+roster-no-such-column = { $path }: нет столбца «{ $column }», по которому называть студентов; столбцы списка: { $headers }
+roster-empty-identity = { $path }: строка { $line }: у студента пусто в столбце { $column }
+roster-duplicate = { $path }: строка { $line }: { $identity } уже есть в списке (строка { $first }); журналы оценок сравнивают идентификаторы без учёта регистра
+roster-unnameable = { $path }: строка { $line }: «{ $identity }» не может быть именем файлов студента (без /, \, :, *, ?, ", <, >, | и управляющих символов, не с точки, не длиннее 200 байт): выберите другой столбец через --identity
+roster-too-many = { $path }: больше { $max } студентов: разделите класс
+roster-unreadable = { $path }: строка { $line }: { $reason }
+manifest-layout = { $place }: это не variants.json класса: { $why }
+manifest-format = { $place }: «{ $found }» — не формат, который читает этот zsim (он читает «{ $expected }»)
+manifest-hand-in = { $place }: студент сдаёт «frame», «depth» или оба
+manifest-twice = { $place }: { $what } встречается в манифесте дважды
+manifest-unnameable = { $place }: «{ $identity }» не может быть именем файлов студента
 manifest-scene = { $place }: { $why }
-class-student-unfit = no variant for { $identity }: { $why }
-class-reseed-not-on-roster = --reseed { $identity }: nobody on the roster has that identity
-class-counts = --times takes 1 … 8 and --distinct 1 … 1024
-class-not-a-rule = "{ $name }" is not a wrong rule: { $names }
-class-hand-in-list = --hand-in "{ $name }": give frame, depth or both, comma-separated
-class-worksheet-title = { $name } · variant { $code }: { $width }×{ $height } raster, { $count ->
-    [one] { $count } polygon
-   *[other] { $count } polygons
+class-student-unfit = нет варианта для { $identity }: { $why }
+class-reseed-not-on-roster = --reseed { $identity }: в списке нет студента с таким идентификатором
+class-counts = --times принимает 1 … 8, --distinct 1 … 1024
+class-not-a-rule = «{ $name }» — не ошибочное правило: { $names }
+class-hand-in-list = --hand-in «{ $name }»: укажите frame, depth или оба через запятую
+class-worksheet-title = { $name } · вариант { $code }: растр { $width }×{ $height }, { $count ->
+    [one] { $count } многоугольник
+    [few] { $count } многоугольника
+   *[many] { $count } многоугольников
   }
-class-worksheet-hand-in = Hand in { $files }, keeping their first lines (variant { $code }).
+class-worksheet-hand-in = Сдайте { $files }, сохранив их первые строки (вариант { $code }).
 class-worksheets-title = { $count ->
-    [one] { $count } worksheet
-   *[other] { $count } worksheets
+    [one] { $count } лист задания
+    [few] { $count } листа задания
+   *[many] { $count } листов задания
   }
-class-template-what = the { $buffer } after the last polygon, { $name }
-class-template-how = top row first, one row a line, { $width } numbers a row separated by spaces; ? for a cell not worked out
-class-hand-in-who = { $name } ({ $identity }), variant { $code }
-class-hand-in-files = Hand in { $count ->
-    [one] one file
-   *[other] { $count } files
+class-template-what = { $buffer } после последнего многоугольника, { $name }
+class-template-how = сначала верхняя строка, по строке растра в строке файла, { $width } чисел через пробел; ? для ячейки, которую вы не вычислили
+class-hand-in-who = { $name } ({ $identity }), вариант { $code }
+class-hand-in-files = Сдайте { $count ->
+    [one] один файл
+    [few] { $count } файла
+   *[many] { $count } файлов
   }:
-class-hand-in-file = { $file }: the { $buffer } after the last polygon
-class-hand-in-format = Each: { $height } rows of { $width } whole numbers, top row first, separated by spaces; ? for a cell you did not work out. Start from the blank files beside this one and keep their first lines (variant { $code }).
-class-hand-in-link = Try it in the browser, with questions: { $link }
+class-hand-in-file = { $file }: { $buffer } после последнего многоугольника
+class-hand-in-format = Каждый: { $height } строк по { $width } целых чисел, сначала верхняя строка, через пробел; ? для ячейки, которую вы не вычислили. Начните с пустых файлов рядом с этим и сохраните их первые строки (вариант { $code }).
+class-hand-in-link = Попробуйте в браузере, с вопросами: { $link }
 class-summary = { $students ->
-    [one] { $students } student
-   *[other] { $students } students
-  }, course seed { $seed }: a variant each of { $width }×{ $height } with { $polygons } polygons; each holds { $hard } exactly { $times ->
-    [one] once
-   *[other] { $times } times
-  }, and each wrong rule ({ $rules }) differs from its key in { $distinct } cells or more
-class-column-code = variant
-class-column-apart = fewest cells a wrong rule differs in
-course-misnamed = { $file } is misnamed and was not graded: name it { $expected }
-course-swapped = { $file } carries variant { $code }, which is { $owner }'s: swapped sheets?
-course-two-files = two files answer the { $buffer }: { $files }; neither was graded
-course-not-on-roster = { $file } was not graded: nobody on the roster is { $identity }
-course-grade-summary = class { $class } against { $variants }: { $students ->
-    [one] { $students } student
-   *[other] { $students } students
-  }; { $ok } ok, { $wrong } wrong, { $malformed } malformed, { $missing } missing an answer
-course-by-kind = wrong cells by kind of case (students wrong there, of those whose scene holds it):
-course-kind-line = { $case }: { $wrong } of { $holding }, { $cells } cells
-course-changes = { $count ->
-    [0] scores changed since the earlier grading: none
-    [one] scores changed since the earlier grading: { $count }
-   *[other] scores changed since the earlier grading: { $count }
+    [one] { $students } студент
+    [few] { $students } студента
+   *[many] { $students } студентов
+  }, начальное число курса { $seed }: у каждого свой вариант { $width }×{ $height } с { $polygons } многоугольниками; в каждом { $hard } ровно { $times ->
+    [one] { $times } раз
+    [few] { $times } раза
+   *[many] { $times } раз
+  } и никаких других трудных случаев, а каждое ошибочное правило ({ $rules }) отличается от ключа не менее чем в { $distinct } ячейках
+class-column-code = вариант
+class-column-apart = меньше всего ячеек, в которых отличается ошибочное правило
+course-misnamed = { $file } назван неправильно и не проверен: назовите его { $expected }
+course-swapped = в { $file } стоит вариант { $code }, а это вариант студента { $owner }: листы перепутаны?
+course-two-files = { $buffer } дают два файла: { $files }; ни один не проверен
+course-not-on-roster = { $file } не проверен: в списке нет { $identity }
+course-grade-summary = класс { $class } по { $variants }: { $students ->
+    [one] { $students } студент
+    [few] { $students } студента
+   *[many] { $students } студентов
+  }; верно: { $ok }, с ошибками: { $wrong }, с негодными файлами: { $malformed }, без ответа: { $missing }
+course-by-kind = ошибки по видам трудных случаев (ошиблись там из тех, в чьей сцене он есть):
+course-kind-line = { $case }: { $wrong } из { $holding }, { $cells ->
+    [one] { $cells } ячейка
+    [few] { $cells } ячейки
+   *[many] { $cells } ячеек
   }
+course-changes = баллы, изменившиеся с прошлой проверки: { $count }
 course-change = { $student }: { $before } → { $after }: { $why }
-course-change-added = not graded before
-course-change-removed = no longer in the manifest
-course-change-scene = their scene was changed in the manifest
-course-change-files = their files changed
-course-change-key = the same scene's key changed (another zsim)
-course-change-rule = the same files and key, scored by another rule
-course-feedback = { $student } (variant { $code }): score { $score } %, { $status }
+course-change-added = раньше не проверялся
+course-change-removed = больше нет в манифесте
+course-change-scene = его сцену изменили в манифесте
+course-change-files = его файлы изменились
+course-change-key = ключ той же сцены изменился (другой zsim)
+course-change-rule = те же файлы и ключ, оценены по другому правилу
+course-feedback = { $student } (вариант { $code }): баллы { $score } %, { $status }
 platform-unreadable = { $file }: { $why }
-platform-unknown-student = nobody on the class's roster submitted this: the platform named { $given }; ask the teacher to add you
-platform-group = a group of students with different variants ({ $students }): each submits their own
-platform-unknown-code = variant { $code } is nobody's in the class's manifest: ask the teacher
-platform-needs-file = the platform's file that names the submission (--metadata for Gradescope, --data for PrairieLearn) was not given
-platform-question-title = z-buffer by hand
-platform-question-variant = Your variant:
-usage-grade-variants-folder = grade --variants FILE takes one folder, the class's: zsim grade --variants DIR/variants.json CLASS
-usage-grade-scene-and-class = grade takes the scene and the class folder: zsim grade SCENE CLASS (or --variants DIR/variants.json CLASS)
+platform-unknown-student = эту работу сдал никто из списка класса: платформа назвала { $given }; попросите преподавателя добавить вас
+platform-group = группа студентов с разными вариантами ({ $students }): каждый сдаёт свою работу
+platform-unknown-code = варианта { $code } нет в манифесте класса: обратитесь к преподавателю
+platform-needs-file = не дан файл платформы, называющий работу (--metadata для Gradescope, --data для PrairieLearn)
+platform-question-title = Z-буфер вручную
+platform-question-variant = Ваш вариант:
+usage-grade-variants-folder = grade --variants FILE принимает одну папку — папку класса: zsim grade --variants DIR/variants.json CLASS
+usage-grade-scene-and-class = grade принимает сцену и папку класса: zsim grade SCENE CLASS (или --variants DIR/variants.json CLASS)

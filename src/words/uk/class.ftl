@@ -1,80 +1,86 @@
-# A class: rosters, the manifest, variants, handouts, grading against each student's key, the platforms' graders.
-roster-empty = { $path }: no student in the roster
-roster-unknown-header = { $path }: line 1: not a roster zsim knows: its columns are { $headers }; give Moodle's, Canvas's, Gradescope's or PrairieLearn's export, or one identity a line
-roster-no-such-column = { $path }: no column "{ $column }" to name the students by; the roster's columns are { $headers }
-roster-empty-identity = { $path }: line { $line }: the student's { $column } is empty
-roster-duplicate = { $path }: line { $line }: { $identity } is on the roster already (line { $first }); gradebooks match identities without letter case
-roster-unnameable = { $path }: line { $line }: "{ $identity }" cannot name a student's files (no /, \, :, *, ?, ", <, >, | or control character, no leading dot, at most 200 bytes): choose another column with --identity
-roster-too-many = { $path }: more than { $max } students: split the class
-roster-unreadable = { $path }: line { $line }: { $reason }
-manifest-layout = { $place }: not a class's variants.json: { $why }
-manifest-format = { $place }: "{ $found }" is not a layout this zsim reads (it reads "{ $expected }")
-manifest-hand-in = { $place }: what each student hands in must be "frame", "depth" or both
-manifest-twice = { $place }: { $what } is in the manifest twice
-manifest-unnameable = { $place }: "{ $identity }" cannot name a student's files
+# Клас: списки студентів, маніфест, варіанти, роздаткові матеріали, перевірка за ключем кожного студента, автоперевірка на платформах.
+roster-empty = { $path }: у списку немає жодного студента
+roster-unknown-header = { $path }: рядок 1: zsim не знає такого списку: його стовпці { $headers }; дайте вивантаження Moodle, Canvas, Gradescope чи PrairieLearn або по одному ідентифікатору в рядку
+roster-no-such-column = { $path }: немає стовпця «{ $column }», за яким називати студентів; стовпці списку: { $headers }
+roster-empty-identity = { $path }: рядок { $line }: у студента порожньо в стовпці { $column }
+roster-duplicate = { $path }: рядок { $line }: { $identity } уже є у списку (рядок { $first }); журнали оцінок порівнюють ідентифікатори без урахування регістру
+roster-unnameable = { $path }: рядок { $line }: «{ $identity }» не може бути назвою файлів студента (без /, \, :, *, ?, ", <, >, | і керівних символів, не з крапки, не довше 200 байтів): виберіть інший стовпець через --identity
+roster-too-many = { $path }: більше { $max } студентів: розділіть клас
+roster-unreadable = { $path }: рядок { $line }: { $reason }
+manifest-layout = { $place }: це не variants.json класу: { $why }
+manifest-format = { $place }: «{ $found }» — не формат, який читає цей zsim (він читає «{ $expected }»)
+manifest-hand-in = { $place }: студент здає «frame», «depth» або обидва
+manifest-twice = { $place }: { $what } трапляється в маніфесті двічі
+manifest-unnameable = { $place }: «{ $identity }» не може бути назвою файлів студента
 manifest-scene = { $place }: { $why }
-class-student-unfit = no variant for { $identity }: { $why }
-class-reseed-not-on-roster = --reseed { $identity }: nobody on the roster has that identity
-class-counts = --times takes 1 … 8 and --distinct 1 … 1024
-class-not-a-rule = "{ $name }" is not a wrong rule: { $names }
-class-hand-in-list = --hand-in "{ $name }": give frame, depth or both, comma-separated
-class-worksheet-title = { $name } · variant { $code }: { $width }×{ $height } raster, { $count ->
-    [one] { $count } polygon
-   *[other] { $count } polygons
+class-student-unfit = немає варіанта для { $identity }: { $why }
+class-reseed-not-on-roster = --reseed { $identity }: у списку немає студента з таким ідентифікатором
+class-counts = --times приймає 1 … 8, --distinct 1 … 1024
+class-not-a-rule = «{ $name }» — не хибне правило: { $names }
+class-hand-in-list = --hand-in «{ $name }»: вкажіть frame, depth або обидва через кому
+class-worksheet-title = { $name } · варіант { $code }: растр { $width }×{ $height }, { $count ->
+    [one] { $count } багатокутник
+    [few] { $count } багатокутники
+   *[many] { $count } багатокутників
   }
-class-worksheet-hand-in = Hand in { $files }, keeping their first lines (variant { $code }).
+class-worksheet-hand-in = Здайте { $files }, зберігши їхні перші рядки (варіант { $code }).
 class-worksheets-title = { $count ->
-    [one] { $count } worksheet
-   *[other] { $count } worksheets
+    [one] { $count } аркуш завдання
+    [few] { $count } аркуші завдання
+   *[many] { $count } аркушів завдання
   }
-class-template-what = the { $buffer } after the last polygon, { $name }
-class-template-how = top row first, one row a line, { $width } numbers a row separated by spaces; ? for a cell not worked out
-class-hand-in-who = { $name } ({ $identity }), variant { $code }
-class-hand-in-files = Hand in { $count ->
-    [one] one file
-   *[other] { $count } files
+class-template-what = { $buffer } після останнього багатокутника, { $name }
+class-template-how = спершу верхній рядок, по рядку растра в рядку файлу, { $width } чисел через пробіл; ? для клітинки, яку ви не обчислили
+class-hand-in-who = { $name } ({ $identity }), варіант { $code }
+class-hand-in-files = Здайте { $count ->
+    [one] один файл
+    [few] { $count } файли
+   *[many] { $count } файлів
   }:
-class-hand-in-file = { $file }: the { $buffer } after the last polygon
-class-hand-in-format = Each: { $height } rows of { $width } whole numbers, top row first, separated by spaces; ? for a cell you did not work out. Start from the blank files beside this one and keep their first lines (variant { $code }).
-class-hand-in-link = Try it in the browser, with questions: { $link }
+class-hand-in-file = { $file }: { $buffer } після останнього багатокутника
+class-hand-in-format = Кожен: { $height } рядків по { $width } цілих чисел, спершу верхній рядок, через пробіл; ? для клітинки, яку ви не обчислили. Почніть з порожніх файлів поруч із цим і збережіть їхні перші рядки (варіант { $code }).
+class-hand-in-link = Спробуйте в браузері, з питаннями: { $link }
 class-summary = { $students ->
-    [one] { $students } student
-   *[other] { $students } students
-  }, course seed { $seed }: a variant each of { $width }×{ $height } with { $polygons } polygons; each holds { $hard } exactly { $times ->
-    [one] once
-   *[other] { $times } times
-  }, and each wrong rule ({ $rules }) differs from its key in { $distinct } cells or more
-class-column-code = variant
-class-column-apart = fewest cells a wrong rule differs in
-course-misnamed = { $file } is misnamed and was not graded: name it { $expected }
-course-swapped = { $file } carries variant { $code }, which is { $owner }'s: swapped sheets?
-course-two-files = two files answer the { $buffer }: { $files }; neither was graded
-course-not-on-roster = { $file } was not graded: nobody on the roster is { $identity }
-course-grade-summary = class { $class } against { $variants }: { $students ->
-    [one] { $students } student
-   *[other] { $students } students
-  }; { $ok } ok, { $wrong } wrong, { $malformed } malformed, { $missing } missing an answer
-course-by-kind = wrong cells by kind of case (students wrong there, of those whose scene holds it):
-course-kind-line = { $case }: { $wrong } of { $holding }, { $cells } cells
-course-changes = { $count ->
-    [0] scores changed since the earlier grading: none
-    [one] scores changed since the earlier grading: { $count }
-   *[other] scores changed since the earlier grading: { $count }
+    [one] { $students } студент
+    [few] { $students } студенти
+   *[many] { $students } студентів
+  }, початкове число курсу { $seed }: у кожного свій варіант { $width }×{ $height } з { $polygons } багатокутниками; у кожному { $hard } рівно { $times ->
+    [one] { $times } раз
+    [few] { $times } рази
+   *[many] { $times } разів
+  } і жодних інших складних випадків, а кожне хибне правило ({ $rules }) відрізняється від ключа щонайменше в { $distinct } клітинках
+class-column-code = варіант
+class-column-apart = найменше клітинок, у яких відрізняється хибне правило
+course-misnamed = { $file } названо неправильно і не перевірено: назвіть його { $expected }
+course-swapped = у { $file } стоїть варіант { $code }, а це варіант студента { $owner }: аркуші переплутано?
+course-two-files = { $buffer } дають два файли: { $files }; жоден не перевірено
+course-not-on-roster = { $file } не перевірено: у списку немає { $identity }
+course-grade-summary = клас { $class } за { $variants }: { $students ->
+    [one] { $students } студент
+    [few] { $students } студенти
+   *[many] { $students } студентів
+  }; правильно: { $ok }, з помилками: { $wrong }, з непридатними файлами: { $malformed }, без відповіді: { $missing }
+course-by-kind = помилки за видами складних випадків (помилилися там з тих, у чиїй сцені він є):
+course-kind-line = { $case }: { $wrong } з { $holding }, { $cells ->
+    [one] { $cells } клітинка
+    [few] { $cells } клітинки
+   *[many] { $cells } клітинок
   }
+course-changes = бали, що змінилися з попередньої перевірки: { $count }
 course-change = { $student }: { $before } → { $after }: { $why }
-course-change-added = not graded before
-course-change-removed = no longer in the manifest
-course-change-scene = their scene was changed in the manifest
-course-change-files = their files changed
-course-change-key = the same scene's key changed (another zsim)
-course-change-rule = the same files and key, scored by another rule
-course-feedback = { $student } (variant { $code }): score { $score } %, { $status }
+course-change-added = раніше не перевірявся
+course-change-removed = більше немає в маніфесті
+course-change-scene = його сцену змінили в маніфесті
+course-change-files = його файли змінилися
+course-change-key = ключ тієї ж сцени змінився (інший zsim)
+course-change-rule = ті самі файли й ключ, оцінені за іншим правилом
+course-feedback = { $student } (варіант { $code }): бали { $score } %, { $status }
 platform-unreadable = { $file }: { $why }
-platform-unknown-student = nobody on the class's roster submitted this: the platform named { $given }; ask the teacher to add you
-platform-group = a group of students with different variants ({ $students }): each submits their own
-platform-unknown-code = variant { $code } is nobody's in the class's manifest: ask the teacher
-platform-needs-file = the platform's file that names the submission (--metadata for Gradescope, --data for PrairieLearn) was not given
-platform-question-title = z-buffer by hand
-platform-question-variant = Your variant:
-usage-grade-variants-folder = grade --variants FILE takes one folder, the class's: zsim grade --variants DIR/variants.json CLASS
-usage-grade-scene-and-class = grade takes the scene and the class folder: zsim grade SCENE CLASS (or --variants DIR/variants.json CLASS)
+platform-unknown-student = цю роботу здав ніхто зі списку класу: платформа назвала { $given }; попросіть викладача додати вас
+platform-group = група студентів з різними варіантами ({ $students }): кожен здає свою роботу
+platform-unknown-code = варіанта { $code } немає в маніфесті класу: зверніться до викладача
+platform-needs-file = не дано файл платформи, що називає роботу (--metadata для Gradescope, --data для PrairieLearn)
+platform-question-title = Z-буфер вручну
+platform-question-variant = Ваш варіант:
+usage-grade-variants-folder = grade --variants FILE приймає одну теку — теку класу: zsim grade --variants DIR/variants.json CLASS
+usage-grade-scene-and-class = grade приймає сцену й теку класу: zsim grade SCENE CLASS (або --variants DIR/variants.json CLASS)

@@ -1,80 +1,58 @@
-# A class: rosters, the manifest, variants, handouts, grading against each student's key, the platforms' graders.
-roster-empty = { $path }: no student in the roster
-roster-unknown-header = { $path }: line 1: not a roster zsim knows: its columns are { $headers }; give Moodle's, Canvas's, Gradescope's or PrairieLearn's export, or one identity a line
-roster-no-such-column = { $path }: no column "{ $column }" to name the students by; the roster's columns are { $headers }
-roster-empty-identity = { $path }: line { $line }: the student's { $column } is empty
-roster-duplicate = { $path }: line { $line }: { $identity } is on the roster already (line { $first }); gradebooks match identities without letter case
-roster-unnameable = { $path }: line { $line }: "{ $identity }" cannot name a student's files (no /, \, :, *, ?, ", <, >, | or control character, no leading dot, at most 200 bytes): choose another column with --identity
-roster-too-many = { $path }: more than { $max } students: split the class
-roster-unreadable = { $path }: line { $line }: { $reason }
-manifest-layout = { $place }: not a class's variants.json: { $why }
-manifest-format = { $place }: "{ $found }" is not a layout this zsim reads (it reads "{ $expected }")
-manifest-hand-in = { $place }: what each student hands in must be "frame", "depth" or both
-manifest-twice = { $place }: { $what } is in the manifest twice
-manifest-unnameable = { $place }: "{ $identity }" cannot name a student's files
-manifest-scene = { $place }: { $why }
-class-student-unfit = no variant for { $identity }: { $why }
-class-reseed-not-on-roster = --reseed { $identity }: nobody on the roster has that identity
-class-counts = --times takes 1 … 8 and --distinct 1 … 1024
-class-not-a-rule = "{ $name }" is not a wrong rule: { $names }
-class-hand-in-list = --hand-in "{ $name }": give frame, depth or both, comma-separated
-class-worksheet-title = { $name } · variant { $code }: { $width }×{ $height } raster, { $count ->
-    [one] { $count } polygon
-   *[other] { $count } polygons
-  }
-class-worksheet-hand-in = Hand in { $files }, keeping their first lines (variant { $code }).
-class-worksheets-title = { $count ->
-    [one] { $count } worksheet
-   *[other] { $count } worksheets
-  }
-class-template-what = the { $buffer } after the last polygon, { $name }
-class-template-how = top row first, one row a line, { $width } numbers a row separated by spaces; ? for a cell not worked out
-class-hand-in-who = { $name } ({ $identity }), variant { $code }
-class-hand-in-files = Hand in { $count ->
-    [one] one file
-   *[other] { $count } files
-  }:
-class-hand-in-file = { $file }: the { $buffer } after the last polygon
-class-hand-in-format = Each: { $height } rows of { $width } whole numbers, top row first, separated by spaces; ? for a cell you did not work out. Start from the blank files beside this one and keep their first lines (variant { $code }).
-class-hand-in-link = Try it in the browser, with questions: { $link }
-class-summary = { $students ->
-    [one] { $students } student
-   *[other] { $students } students
-  }, course seed { $seed }: a variant each of { $width }×{ $height } with { $polygons } polygons; each holds { $hard } exactly { $times ->
-    [one] once
-   *[other] { $times } times
-  }, and each wrong rule ({ $rules }) differs from its key in { $distinct } cells or more
-class-column-code = variant
-class-column-apart = fewest cells a wrong rule differs in
-course-misnamed = { $file } is misnamed and was not graded: name it { $expected }
-course-swapped = { $file } carries variant { $code }, which is { $owner }'s: swapped sheets?
-course-two-files = two files answer the { $buffer }: { $files }; neither was graded
-course-not-on-roster = { $file } was not graded: nobody on the roster is { $identity }
-course-grade-summary = class { $class } against { $variants }: { $students ->
-    [one] { $students } student
-   *[other] { $students } students
-  }; { $ok } ok, { $wrong } wrong, { $malformed } malformed, { $missing } missing an answer
-course-by-kind = wrong cells by kind of case (students wrong there, of those whose scene holds it):
-course-kind-line = { $case }: { $wrong } of { $holding }, { $cells } cells
-course-changes = { $count ->
-    [0] scores changed since the earlier grading: none
-    [one] scores changed since the earlier grading: { $count }
-   *[other] scores changed since the earlier grading: { $count }
-  }
-course-change = { $student }: { $before } → { $after }: { $why }
-course-change-added = not graded before
-course-change-removed = no longer in the manifest
-course-change-scene = their scene was changed in the manifest
-course-change-files = their files changed
-course-change-key = the same scene's key changed (another zsim)
-course-change-rule = the same files and key, scored by another rule
-course-feedback = { $student } (variant { $code }): score { $score } %, { $status }
-platform-unreadable = { $file }: { $why }
-platform-unknown-student = nobody on the class's roster submitted this: the platform named { $given }; ask the teacher to add you
-platform-group = a group of students with different variants ({ $students }): each submits their own
-platform-unknown-code = variant { $code } is nobody's in the class's manifest: ask the teacher
-platform-needs-file = the platform's file that names the submission (--metadata for Gradescope, --data for PrairieLearn) was not given
-platform-question-title = z-buffer by hand
-platform-question-variant = Your variant:
-usage-grade-variants-folder = grade --variants FILE takes one folder, the class's: zsim grade --variants DIR/variants.json CLASS
-usage-grade-scene-and-class = grade takes the scene and the class folder: zsim grade SCENE CLASS (or --variants DIR/variants.json CLASS)
+# 班级：学生名单、清单文件、变体、分发材料、按每个学生自己的答案评分、平台上的自动评分。
+roster-empty = { $path }：名单中没有学生
+roster-unknown-header = { $path }：第 1 行：zsim 不认识这种名单：它的列是 { $headers }；请提供 Moodle、Canvas、Gradescope 或 PrairieLearn 的导出文件，或每行一个标识
+roster-no-such-column = { $path }：没有用来称呼学生的列“{ $column }”；名单的列是 { $headers }
+roster-empty-identity = { $path }：第 { $line } 行：该学生的 { $column } 为空
+roster-duplicate = { $path }：第 { $line } 行：{ $identity } 已在名单中（第 { $first } 行）；成绩簿比较标识时不区分大小写
+roster-unnameable = { $path }：第 { $line } 行：“{ $identity }”不能作为学生文件的名字（不能含 /、\、:、*、?、"、<、>、| 或控制字符，不能以点开头，最多 200 字节）：请用 --identity 选择另一列
+roster-too-many = { $path }：学生多于 { $max } 人：请拆分班级
+roster-unreadable = { $path }：第 { $line } 行：{ $reason }
+manifest-layout = { $place }：不是班级的 variants.json：{ $why }
+manifest-format = { $place }：“{ $found }”不是此 zsim 读取的格式（它读取“{ $expected }”）
+manifest-hand-in = { $place }：每个学生提交“frame”、“depth”或两者
+manifest-twice = { $place }：{ $what } 在清单中出现两次
+manifest-unnameable = { $place }：“{ $identity }”不能作为学生文件的名字
+manifest-scene = { $place }：{ $why }
+class-student-unfit = 无法为 { $identity } 生成变体：{ $why }
+class-reseed-not-on-roster = --reseed { $identity }：名单中没有这个标识的学生
+class-counts = --times 取 1 … 8，--distinct 取 1 … 1024
+class-not-a-rule = “{ $name }”不是错误规则：{ $names }
+class-hand-in-list = --hand-in “{ $name }”：请给出 frame、depth 或两者，用逗号分隔
+class-worksheet-title = { $name } · 变体 { $code }：{ $width }×{ $height } 光栅，{ $count } 个多边形
+class-worksheet-hand-in = 提交 { $files }，保留它们的第一行（变体 { $code }）。
+class-worksheets-title = { $count } 份练习单
+class-template-what = 最后一个多边形之后的{ $buffer }，{ $name }
+class-template-how = 先写最上面一行，文件每行一行光栅，每行 { $width } 个数，用空格分隔；未算出的单元写 ?
+class-hand-in-who = { $name }（{ $identity }），变体 { $code }
+class-hand-in-files = 提交 { $count } 个文件：
+class-hand-in-file = { $file }：最后一个多边形之后的{ $buffer }
+class-hand-in-format = 每个文件：{ $height } 行，每行 { $width } 个整数，先写最上面一行，用空格分隔；未算出的单元写 ?。从本文件旁边的空白文件开始，并保留它们的第一行（变体 { $code }）。
+class-hand-in-link = 在浏览器中带提问地试一试：{ $link }
+class-summary = { $students } 名学生，课程种子 { $seed }：每人一个 { $width }×{ $height }、{ $polygons } 个多边形的变体；每个变体恰好含 { $hard } 各 { $times } 次，不含其他难点，且每条错误规则（{ $rules }）与答案至少相差 { $distinct } 个单元
+class-column-code = 变体
+class-column-apart = 错误规则相差的最少单元数
+course-misnamed = { $file } 命名错误，未评分：请命名为 { $expected }
+course-swapped = { $file } 标着变体 { $code }，这是 { $owner } 的变体：交换了练习单？
+course-two-files = 两个文件都回答{ $buffer }：{ $files }；都未评分
+course-not-on-roster = { $file } 未评分：名单中没有 { $identity }
+course-grade-summary = 班级 { $class }，按 { $variants }：{ $students } 名学生；正确 { $ok }，有错 { $wrong }，文件格式错误 { $malformed }，缺少答案 { $missing }
+course-by-kind = 按难点类型统计的错误（在该处出错的学生，在其场景含此难点的学生中）：
+course-kind-line = { $case }：{ $holding } 人中 { $wrong } 人，{ $cells } 个单元
+course-changes = 自上次评分以来分数变化：{ $count }
+course-change = { $student }：{ $before } → { $after }：{ $why }
+course-change-added = 之前未评分
+course-change-removed = 已不在清单中
+course-change-scene = 清单中其场景被修改
+course-change-files = 其文件有变化
+course-change-key = 同一场景的答案变了（另一个 zsim）
+course-change-rule = 相同的文件和答案，按另一规则评分
+course-feedback = { $student }（变体 { $code }）：得分 { $score } %，{ $status }
+platform-unreadable = { $file }：{ $why }
+platform-unknown-student = 提交者不在班级名单中：平台给出的是 { $given }；请让老师把你加进名单
+platform-group = 一组变体不同的学生（{ $students }）：每人各自提交
+platform-unknown-code = 变体 { $code } 不在班级清单中：请联系老师
+platform-needs-file = 没有给出平台说明提交者的文件（Gradescope 用 --metadata，PrairieLearn 用 --data）
+platform-question-title = 手算 z 缓冲
+platform-question-variant = 你的变体：
+usage-grade-variants-folder = grade --variants FILE 只接受一个文件夹，即班级的文件夹：zsim grade --variants DIR/variants.json CLASS
+usage-grade-scene-and-class = grade 需要场景和班级文件夹：zsim grade SCENE CLASS（或 --variants DIR/variants.json CLASS）
