@@ -111,7 +111,7 @@ fn summary(lang: Lang, manifest: &Manifest) -> String {
 /// fewest cells any required wrong rule lies from the key.
 fn fairness_table(lang: Lang, manifest: &Manifest) -> Table {
     let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_content_arrangement(ContentArrangement::Dynamic).set_width(100);
+    table.load_style(presets::ASCII_MARKDOWN).set_content_arrangement(ContentArrangement::Disabled).set_width(100);
     let mut header = vec![zsim::words!(lang, "grade-column-student"), zsim::words!(lang, "class-column-code")];
     header.extend(manifest.settings.hard.iter().cloned());
     header.push(zsim::words!(lang, "class-column-apart"));
@@ -211,10 +211,7 @@ fn text(lang: Lang, args: &GradeVariants<'_>, loaded: &Loaded, graded: &CourseGr
     for row in &graded.rows {
         let grade = &row.grade;
         let count = |c: Option<usize>| c.map_or_else(|| "-".to_string(), |c| c.to_string());
-        let mut status = grade.status.words(lang);
-        for note in &row.notes {
-            status.push_str(&format!("; {}", note.text(lang)));
-        }
+        let status = grade.status.words(lang);
         table.add_row([
             zsim::printable(&grade.student).into_owned(),
             row.code.clone(),
@@ -225,7 +222,16 @@ fn text(lang: Lang, args: &GradeVariants<'_>, loaded: &Loaded, graded: &CourseGr
             grade.misconception.map_or_else(String::new, |d| d.misconception.words(lang)),
         ]);
     }
-    text.push_str(&format!("{table}\n\n"));
+    text.push_str(&format!("{table}\n"));
+    for row in &graded.rows {
+        for note in &row.notes {
+            text.push_str(&format!("{}: {}\n", zsim::printable(&row.grade.student), note.text(lang)));
+        }
+    }
+    for stray in &graded.strays {
+        text.push_str(&format!("{}\n", stray.text(lang)));
+    }
+    text.push('\n');
     let causes = graded.causes();
     if !causes.is_empty() {
         text.push_str(&format!("{}\n", zsim::words!(lang, "grade-causes")));
@@ -254,9 +260,6 @@ fn text(lang: Lang, args: &GradeVariants<'_>, loaded: &Loaded, graded: &CourseGr
             );
             text.push_str(&format!("  {line}\n"));
         }
-    }
-    for stray in &graded.strays {
-        text.push_str(&format!("{}\n", stray.text(lang)));
     }
     if args.compare.is_some() {
         text.push_str(&format!("\n{}\n", zsim::words!(lang, "course-changes", count = changes.len())));

@@ -14,6 +14,8 @@
 //!   common mistakes, the gradebooks (`grade::gradebooks`: a new format goes
 //!   there) and Gradescope's autograder (`grade::gradescope`).
 //! - `exercise`: a new exercise from a seed, with the hard cases asked for.
+//! - `course`: a class from its roster, a variant each, fair by
+//!   construction, and each student graded against their own key.
 //! - `playground`: what the browser shows of all of them, as facts; and
 //!   `page_limits`, what a page draws at all.
 pub mod check;

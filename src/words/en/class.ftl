@@ -45,7 +45,7 @@ class-summary = { $students ->
    *[other] { $times } times
   } and no other hard case, and each wrong rule ({ $rules }) differs from its key in { $distinct } cells or more
 class-column-code = variant
-class-column-apart = fewest cells a wrong rule differs in
+class-column-apart = rules apart (fewest cells)
 course-misnamed = { $file } is misnamed and was not graded: name it { $expected }
 course-swapped = { $file } carries variant { $code }, which is { $owner }'s: swapped sheets?
 course-two-files = two files answer the { $buffer }: { $files }; neither was graded

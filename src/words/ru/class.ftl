@@ -50,7 +50,7 @@ class-summary = { $students ->
    *[many] { $times } раз
   } и никаких других трудных случаев, а каждое ошибочное правило ({ $rules }) отличается от ключа не менее чем в { $distinct } ячейках
 class-column-code = вариант
-class-column-apart = меньше всего ячеек, в которых отличается ошибочное правило
+class-column-apart = правила отличаются (меньше всего ячеек)
 course-misnamed = { $file } назван неправильно и не проверен: назовите его { $expected }
 course-swapped = в { $file } стоит вариант { $code }, а это вариант студента { $owner }: листы перепутаны?
 course-two-files = { $buffer } дают два файла: { $files }; ни один не проверен

@@ -50,7 +50,7 @@ class-summary = { $students ->
    *[many] { $times } разів
   } і жодних інших складних випадків, а кожне хибне правило ({ $rules }) відрізняється від ключа щонайменше в { $distinct } клітинках
 class-column-code = варіант
-class-column-apart = найменше клітинок, у яких відрізняється хибне правило
+class-column-apart = правила відрізняються (найменше клітинок)
 course-misnamed = { $file } названо неправильно і не перевірено: назвіть його { $expected }
 course-swapped = у { $file } стоїть варіант { $code }, а це варіант студента { $owner }: аркуші переплутано?
 course-two-files = { $buffer } дають два файли: { $files }; жоден не перевірено
