@@ -246,22 +246,6 @@ pub enum Usage {
         /// The two files, by name.
         files: Vec<String>,
     },
-    /// Two files of a class folder that name one student for one buffer.
-    SameStudentTwice {
-        /// The class folder.
-        class: PathBuf,
-        /// The student, as shown.
-        student: String,
-        /// The two files, by name.
-        files: Vec<String>,
-    },
-    /// Two students a gradebook import would take for one.
-    GradebookCannotTell {
-        /// One student, as shown.
-        first: String,
-        /// The other.
-        second: String,
-    },
     /// An output whose name the file system cannot hold.
     OutputNameTooLong {
         /// The path.
@@ -358,16 +342,6 @@ impl Usage {
                 words!(lang, "usage-output-name-too-long", path = path(p), max = max.to_string())
             }
             Usage::OutputTwice { path: p } => words!(lang, "usage-output-twice", path = path(p)),
-            Usage::SameStudentTwice { class, student, files } => words!(
-                lang,
-                "usage-same-student-twice",
-                path = path(class),
-                student = student.as_str(),
-                files = quoted_list(files)
-            ),
-            Usage::GradebookCannotTell { first, second } => {
-                words!(lang, "usage-gradebook-cannot-tell", first = first.as_str(), second = second.as_str())
-            }
             Usage::SameAnswerTwice { folder, files } => {
                 words!(lang, "usage-same-answer-twice", path = path(folder), files = quoted_list(files))
             }

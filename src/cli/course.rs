@@ -48,7 +48,7 @@ pub fn exercise(lang: Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<
         Handouts { lang, manifest: &manifest, scenes: &scenes, formats: &args.formats, site: args.site.as_deref() };
     let mut plan = zsim::Plan::new(&[roster_path], zsim::Replace::Never);
     let listed = zsim::course::folders::plan(&handouts, dir, format!("{table}\n"), &mut plan);
-    let mut text = format!("{}\n{table}\n", summary(lang, &manifest));
+    let mut text = format!("{}\n{table}\n", manifest.summary(lang));
     text.push_str(&format!(
         "{}\n",
         zsim::words!(lang, "file-written-in", files = listed.join(", "), path = zsim::shown_path(dir))
@@ -85,26 +85,6 @@ fn planned(
         }
     }
     format!("{}\n", zsim::words!(lang, "file-written-in", files = names.join(", "), path = zsim::shown_path(folder)))
-}
-
-/// What every variant holds, in one sentence each.
-fn summary(lang: Lang, manifest: &Manifest) -> String {
-    let settings = &manifest.settings;
-    let hard =
-        if settings.hard.is_empty() { zsim::words!(lang, "exercise-notes-no-case") } else { settings.hard.join(", ") };
-    zsim::words!(
-        lang,
-        "class-summary",
-        students = manifest.students.len(),
-        seed = manifest.course_seed.to_string(),
-        width = settings.width,
-        height = settings.height,
-        polygons = settings.polygons,
-        hard = hard,
-        times = settings.times,
-        rules = settings.rules.join(", "),
-        distinct = settings.distinct
-    )
 }
 
 /// The fairness table: a row a student, the asked cases' counts, and the

@@ -99,13 +99,24 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
     let plain = matches!(args.format, Format::Csv | Format::Json);
     let class = grade_class(if plain { zsim::Lang::En } else { lang }, &scene, &args.scene, &args.class, last)?;
     let rows = class.rows();
-    // Students a gradebook cannot tell apart (`Emma`, `emma`) are refused in every format, so that
-    // every report of one class has the same students.
-    if let Some((first, second)) = gradebooks::indistinct(&rows) {
-        return Err(zsim::Error::from(zsim::Usage::GradebookCannotTell { first, second }).into());
-    }
+    // Students a gradebook cannot tell apart (`Emma`, `emma`) are graded both in every report; an
+    // import leaves their rows out, and says so, rather than let the platform merge them.
+    let merged = gradebooks::indistinct(&rows);
     let text = match args.format {
-        Format::Moodle | Format::Canvas => gradebook(args, &rows)?,
+        Format::Moodle | Format::Canvas => {
+            let apart: std::collections::HashSet<&str> =
+                merged.iter().flat_map(|(a, b)| [a.as_str(), b.as_str()]).collect();
+            for (first, second) in &merged {
+                super::say(&zsim::words!(
+                    lang,
+                    "grade-left-out-of-import",
+                    first = first.as_str(),
+                    second = second.as_str()
+                ));
+            }
+            let imported: Vec<&Grade> = rows.iter().copied().filter(|g| !apart.contains(g.student.as_str())).collect();
+            gradebook(args, &imported)?
+        }
         Format::Csv => gradebooks::csv(&rows),
         Format::Json => {
             let en = zsim::Lang::En;
@@ -146,7 +157,8 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
     }
     // A misnamed answer is a student's work not graded, as a wrong one is.
     let all_graded = class.skipped.iter().all(|s| s.meant.is_none());
-    let ok = all_graded && rows.iter().all(|g| g.status == zsim::grade::Status::Ok);
+    let imported = merged.is_empty() || !matches!(args.format, Format::Moodle | Format::Canvas);
+    let ok = all_graded && imported && rows.iter().all(|g| g.status == zsim::grade::Status::Ok);
     let finish = if ok { Finish::Ok } else { Finish::Differs };
     emit_then(out, &text, finish)
 }

@@ -120,7 +120,8 @@ impl<'a> Plan<'a> {
         // Each planned file's place, compared in a set (not each with every earlier one), and each
         // folder's identity looked up once: a class of 10,000 students plans 10,000 files.
         let mut places = std::collections::HashSet::with_capacity(self.files.len());
-        let mut folders: std::collections::HashMap<&Path, Option<Identity>> = std::collections::HashMap::new();
+        let mut folders: std::collections::HashMap<&Path, Option<super::inward::FileKey>> =
+            std::collections::HashMap::new();
         let own = Own::streams();
         let inputs: std::collections::HashSet<_> = self.inputs.iter().map(Identity::key).collect();
         for file in &self.files {
@@ -130,17 +131,18 @@ impl<'a> Plan<'a> {
                 return Err(Usage::OutputNameTooLong { path: path.clone(), max: MAX_NAME_BYTES }.into());
             }
             let folder = folder_of(path);
-            let folder_identity = folders.entry(folder).or_insert_with(|| Identity::of(folder));
-            if folder_identity.as_ref().is_some_and(|identity| inputs.contains(&identity.key())) {
+            // Each folder's key, not its open handle: a class of a thousand folders holds no thousand descriptors.
+            let folder_key = *folders.entry(folder).or_insert_with(|| Identity::of(folder).map(|i| i.key()));
+            if folder_key.is_some_and(|key| inputs.contains(&key)) {
                 return Err(Usage::OutputIsInput { folder: folder.to_owned() }.into());
             }
             let identity = Identity::of(path);
             if identity.as_ref().is_some_and(|identity| inputs.contains(&identity.key())) {
                 return Err(Usage::OutputIsInput { folder: path.clone() }.into());
             }
-            let place = match (&identity, folder_identity) {
+            let place = match (&identity, folder_key) {
                 (Some(identity), _) => Place::File(identity.key()),
-                (None, Some(folder)) => Place::InFolder(folder.key(), path.file_name().unwrap_or_default().to_owned()),
+                (None, Some(folder)) => Place::InFolder(folder, path.file_name().unwrap_or_default().to_owned()),
                 (None, None) => Place::Path(path.clone()),
             };
             if !places.insert(place) {
@@ -185,8 +187,12 @@ impl<'a> Plan<'a> {
             self.files.into_iter().zip(is_stream).partition(|(_, stream)| *stream != Stream::No);
         let _held = held::Interruptions::hold();
         let mut staged = Vec::with_capacity(files.len());
-        // Each folder made and opened once, however many files go into it.
+        // Each folder made and opened once, however many files go into it; its handle closed when
+        // the files move on to another (a class writes a folder a student: a thousand folders open
+        // at once passed a common limit of 1,024 descriptors), reopened, and checked to be the
+        // same folder, when its files are placed.
         let mut folders: std::collections::HashMap<PathBuf, std::sync::Arc<Folder>> = std::collections::HashMap::new();
+        let mut open: Option<std::sync::Arc<Folder>> = None;
         for (file, _) in &mut files {
             let path = folder_of(&file.path);
             let folder = match folders.get(path) {
@@ -199,6 +205,11 @@ impl<'a> Plan<'a> {
                     folder
                 }
             };
+            if let Some(previous) =
+                open.replace(std::sync::Arc::clone(&folder)).filter(|p| !std::sync::Arc::ptr_eq(p, &folder))
+            {
+                previous.close();
+            }
             let failed = |source| Error::Write { path: file.path.clone(), source };
             // The mode a new file gets (0666, or 0777 for a script, less the umask), not a temporary file's 0600.
             let mode = if file.executable { 0o777 } else { 0o666 };
@@ -211,12 +222,20 @@ impl<'a> Plan<'a> {
         // each folder's file system (a class's feedback is thousands of files), elsewhere each
         // file was synced as it was written.
         if SYNC_BY_FILE_SYSTEM {
+            let mut synced = std::collections::HashSet::new();
             for (path, folder) in &folders {
-                folder.sync_file_system().map_err(|source| Error::Write { path: path.clone(), source })?;
+                if synced.insert(folder.file_system()) {
+                    folder.sync_file_system().map_err(|source| Error::Write { path: path.clone(), source })?;
+                }
             }
         }
         let mut written = Vec::with_capacity(count);
         for ((file, _), temporary) in files.into_iter().zip(staged) {
+            if let Some(previous) =
+                open.replace(temporary.folder()).filter(|p| !std::sync::Arc::ptr_eq(p, &temporary.folder()))
+            {
+                previous.close();
+            }
             let name = file.path.file_name().expect("a planned file has a name (checked)");
             if let Err(error) = temporary.place(name, replace == Replace::Allowed) {
                 // Undo what this plan placed: it replaced nothing, so nothing is lost.

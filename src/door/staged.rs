@@ -1,7 +1,9 @@
 //! A file staged beside its place: written under a temporary name
 //! (`.zsim-…`) in the folder it goes into, then renamed into place, or
 //! removed when it is not placed. The folder is opened once as a handle and
-//! the temporary file made and renamed relative to it, so that only the
+//! the temporary file made and renamed relative to it (the handle closed
+//! while other folders are written, and reopened only if the path still
+//! names the same folder), so that only the
 //! folder's path must fit the system's limit: an output whose whole path is
 //! as long as the system allows (4,095 bytes) is written, though a temporary
 //! name longer than its own would not fit beside it as a path.
@@ -12,10 +14,15 @@ use std::path::Path;
 
 /// A folder files are staged in, opened once for all of them.
 pub(super) struct Folder {
-    /// Its path, to sync its file system by.
+    /// Its path, to sync its file system by and to reopen it by.
     path: std::path::PathBuf,
+    /// Its handle while open; closed ([`Folder::close`]) and reopened by
+    /// [`Folder::with`], which checks that the path still names this folder.
     #[cfg(not(target_arch = "wasm32"))]
-    dir: cap_std::fs::Dir,
+    dir: std::sync::Mutex<Option<cap_std::fs::Dir>>,
+    /// The folder's identity, as first opened.
+    #[cfg(not(target_arch = "wasm32"))]
+    key: super::inward::FileKey,
     #[cfg(target_arch = "wasm32")]
     dir: std::path::PathBuf,
 }
@@ -24,10 +31,50 @@ impl Folder {
     /// The folder at `path`, opened.
     pub(super) fn open(path: &Path) -> io::Result<Folder> {
         #[cfg(not(target_arch = "wasm32"))]
-        let dir = cap_std::fs::Dir::open_ambient_dir(path, cap_std::ambient_authority())?;
+        {
+            let (dir, key) = open_dir(path)?;
+            Ok(Folder { path: path.to_path_buf(), dir: std::sync::Mutex::new(Some(dir)), key })
+        }
         #[cfg(target_arch = "wasm32")]
-        let dir = path.to_path_buf();
-        Ok(Folder { path: path.to_path_buf(), dir })
+        Ok(Folder { path: path.to_path_buf(), dir: path.to_path_buf() })
+    }
+
+    /// Runs `f` on the folder's handle, reopening it if it was closed; a
+    /// path that no longer names the folder first opened is an error.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn with<T>(&self, f: impl FnOnce(&cap_std::fs::Dir) -> io::Result<T>) -> io::Result<T> {
+        let mut dir = self.dir.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        if dir.is_none() {
+            let (reopened, key) = open_dir(&self.path)?;
+            if key != self.key {
+                return Err(io::Error::other("the folder was replaced while zsim wrote into it"));
+            }
+            *dir = Some(reopened);
+        }
+        f(dir.as_ref().expect("opened above"))
+    }
+
+    #[cfg(target_arch = "wasm32")]
+    fn with<T>(&self, f: impl FnOnce(&std::path::PathBuf) -> io::Result<T>) -> io::Result<T> {
+        f(&self.dir)
+    }
+
+    /// Closes the folder's handle until it is needed again.
+    pub(super) fn close(&self) {
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            *self.dir.lock().unwrap_or_else(std::sync::PoisonError::into_inner) = None;
+        }
+    }
+
+    /// Which file system the folder is on (its device), so that each is synced once.
+    pub(super) fn file_system(&self) -> u64 {
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            self.key.0
+        }
+        #[cfg(target_arch = "wasm32")]
+        0
     }
 
     /// Makes everything written into its file system durable (Linux's
@@ -67,7 +114,7 @@ impl Staged {
             std::hash::BuildHasher::hash_one(&std::collections::hash_map::RandomState::new(), std::process::id());
         for attempt in 0u64..100 {
             let temporary = format!(".zsim-{:012x}", (seed ^ attempt.wrapping_mul(0x9e37_79b9_7f4a_7c15)) >> 16);
-            match open_new(&folder.dir, &temporary, mode) {
+            match folder.with(|dir| open_new(dir, &temporary, mode)) {
                 Ok(file) => return Ok(Staged { folder: std::sync::Arc::clone(folder), temporary, file: Some(file) }),
                 Err(error) if error.kind() == io::ErrorKind::AlreadyExists => continue,
                 Err(error) => return Err(error),
@@ -77,6 +124,11 @@ impl Staged {
     }
 
     /// Writes `bytes` into it, syncs them where `sync` says, and closes it.
+    /// The folder it is staged in.
+    pub(super) fn folder(&self) -> std::sync::Arc<Folder> {
+        std::sync::Arc::clone(&self.folder)
+    }
+
     pub(super) fn write_and_close(&mut self, bytes: &[u8], sync: bool) -> io::Result<()> {
         use std::io::Write;
         let mut file = self.file.take().ok_or_else(|| io::Error::other("written already"))?;
@@ -92,9 +144,10 @@ impl Staged {
     /// replace, or on file systems without such a rename, a hard link is made
     /// and the temporary name removed).
     pub(super) fn place(mut self, name: &OsStr, over: bool) -> io::Result<()> {
+        let temporary = &self.temporary;
         let placed = match over {
-            true => rename(&self.folder.dir, &self.temporary, name),
-            false => rename_no_replace(&self.folder.dir, &self.temporary, name),
+            true => self.folder.with(|dir| rename(dir, temporary, name)),
+            false => self.folder.with(|dir| rename_no_replace(dir, temporary, name)),
         };
         if placed.is_ok() {
             self.temporary.clear();
@@ -106,12 +159,23 @@ impl Staged {
 impl Drop for Staged {
     fn drop(&mut self) {
         if !self.temporary.is_empty() {
+            let temporary = &self.temporary;
             #[cfg(not(target_arch = "wasm32"))]
-            let _ = self.folder.dir.remove_file(&self.temporary);
+            let _ = self.folder.with(|dir| dir.remove_file(temporary));
             #[cfg(target_arch = "wasm32")]
-            let _ = std::fs::remove_file(self.folder.dir.join(&self.temporary));
+            let _ = self.folder.with(|dir| std::fs::remove_file(dir.join(temporary)));
         }
     }
+}
+
+/// The folder at `path` opened, and its identity.
+#[cfg(not(target_arch = "wasm32"))]
+fn open_dir(path: &Path) -> io::Result<(cap_std::fs::Dir, super::inward::FileKey)> {
+    let dir = cap_std::fs::Dir::open_ambient_dir(path, cap_std::ambient_authority())?;
+    let key = super::inward::Identity::of(path)
+        .map(|identity| identity.key())
+        .ok_or_else(|| io::Error::new(io::ErrorKind::NotFound, "the folder went away"))?;
+    Ok((dir, key))
 }
 
 #[cfg(not(target_arch = "wasm32"))]

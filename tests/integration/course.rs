@@ -429,3 +429,50 @@ fn rosters_of_each_platform_are_read_and_bad_ones_refused_naming_the_line() {
     assert!(!dir.join("out").exists(), "nothing written for a refused roster");
     let _ = zsim(&["exercise", "--help"]);
 }
+
+/// The Safety chapter's limits on a roster, just below and just above.
+#[test]
+fn a_roster_of_the_most_students_is_read_and_one_more_is_refused() {
+    use zsim::course::roster::{Unusable, parse};
+    let most = crate::limits::stated("Students on a roster").count();
+    let text: String = (0..most).map(|k| format!("s{k}@uni.edu\n")).collect();
+    assert_eq!(parse(&text, None).unwrap().students.len(), most);
+    let more = format!("{text}s{most}@uni.edu\n");
+    assert_eq!(parse(&more, None), Err(Unusable::TooMany { max: most }));
+    let longest = crate::limits::stated("A student's identity").count();
+    let name = "é".repeat(longest / 2);
+    assert_eq!(parse(&format!("{name}\n"), None).unwrap().students[0].identity.len(), longest);
+    assert_eq!(parse(&format!("{name}a\n"), None), Err(Unusable::Unnameable { line: 1, identity: format!("{name}a") }));
+}
+
+/// Found at a course's scale: a class writes a folder a student, and every
+/// folder's handle stayed open until the last file was placed, so a class of
+/// 1,100 students stopped at a common limit of 1,024 descriptors ("Too many
+/// open files"). 80 students are written under a limit of 64.
+#[test]
+fn a_class_of_more_folders_than_open_descriptors_is_written() {
+    let dir = scratch("descriptors");
+    let roster: String = (1..=80).map(|k| format!("s{k:03}\n")).collect();
+    std::fs::write(dir.join("roster.txt"), roster).unwrap();
+    let output = std::process::Command::new("bash")
+        .args(["-c", "ulimit -n 64 && exec \"$0\" \"$@\"", env!("CARGO_BIN_EXE_zsim")])
+        .args([
+            "exercise",
+            "--roster",
+            "roster.txt",
+            "--polygons",
+            "1",
+            "--hard",
+            "",
+            "--rules",
+            "truncated",
+            "-o",
+            "out",
+        ])
+        .current_dir(&dir)
+        .env("LANG", "C.UTF-8")
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert_eq!(std::fs::read_dir(dir.join("out/students")).unwrap().count(), 80);
+}

@@ -117,6 +117,26 @@ impl Manifest {
         by(&|v| v.identity.to_lowercase() == who).or_else(|| by(&|v| v.aliases.iter().any(|a| a.to_lowercase() == who)))
     }
 
+    /// What every variant holds, in one sentence.
+    pub fn summary(&self, lang: Lang) -> String {
+        let settings = &self.settings;
+        let hard =
+            if settings.hard.is_empty() { words!(lang, "exercise-notes-no-case") } else { settings.hard.join(", ") };
+        words!(
+            lang,
+            "class-summary",
+            students = self.students.len(),
+            seed = self.course_seed.to_string(),
+            width = settings.width,
+            height = settings.height,
+            polygons = settings.polygons,
+            hard = hard,
+            times = settings.times,
+            rules = settings.rules.join(", "),
+            distinct = settings.distinct
+        )
+    }
+
     /// The pretty JSON written to `variants.json`.
     pub fn to_json(&self) -> String {
         serde_json::to_string_pretty(self).expect("a manifest is plain data") + "\n"

@@ -192,33 +192,45 @@ pub fn grade_class(
 /// normalisation of the file name's stem: bytes that are not UTF-8 written
 /// as `\xff` and control characters escaped ([`crate::words::shown_name`]),
 /// as every table, gradebook and feedback file shows them, so `a\xff` and
-/// `a\xfe` are two students; two files that come to one student and buffer
-/// (a real newline and a written `\u{a}`) are refused by name, before
-/// anything is graded or written.
+/// `a\xfe` are two students. Two stems that come to one name once shown (a
+/// real newline and a written `\u{a}`) are two students named apart: the
+/// one shown as it is keeps the name, the other is numbered (`b\u{a} (2)`).
 fn answer_files(class: &Path) -> Result<(Vec<AnswerFile>, Vec<Skipped>), Error> {
     let entries = std::fs::read_dir(class).map_err(|source| Error::Read { path: class.to_owned(), source })?;
     let (mut files, mut skipped) = (Vec::new(), Vec::new());
-    // Each student's file of each buffer, found in a map (not by a search of every earlier file).
-    let mut handed: std::collections::HashMap<(String, bool), PathBuf> = std::collections::HashMap::new();
+    let mut names = Vec::new();
     for entry in entries {
         let entry = entry.map_err(|source| Error::Read { path: class.to_owned(), source })?;
+        names.push((entry.file_name(), entry.path()));
+    }
+    // Names shown as they are first, so that one escaped to look like them is the one numbered.
+    names.sort_by_key(|(raw, _)| (crate::words::shown_name(Path::new(raw)) != raw.to_string_lossy(), raw.clone()));
+    // Each raw stem's student, and the students' names taken.
+    let mut students: std::collections::HashMap<Vec<u8>, String> = std::collections::HashMap::new();
+    let mut taken: std::collections::HashSet<String> = std::collections::HashSet::new();
+    for (raw, path) in names {
         // As shown, bytes that are not UTF-8 escaped (`\xff`): two names that differ there are two students.
-        let name = crate::words::shown_name(Path::new(&entry.file_name()));
+        let name = crate::words::shown_name(Path::new(&raw));
         let answers = files.len();
         for buffer in [Buffer::Frame, Buffer::Depth] {
-            if let Some(student) = name.strip_suffix(&format!(".{}.txt", file_kind(buffer)))
-                && !student.is_empty()
-                && !student.starts_with('.')
+            let suffix = format!(".{}.txt", file_kind(buffer));
+            if let Some(shown) = name.strip_suffix(&suffix)
+                && !shown.is_empty()
+                && !shown.starts_with('.')
             {
-                let student = student.to_owned();
-                if let Some(other) = handed.get(&(student.clone(), buffer == Buffer::Depth)) {
-                    let names = [other, &entry.path()].map(|p| crate::words::shown_name(p));
-                    return Err(
-                        Usage::SameStudentTwice { class: class.to_path_buf(), student, files: names.to_vec() }.into()
-                    );
-                }
-                handed.insert((student.clone(), buffer == Buffer::Depth), entry.path());
-                files.push(AnswerFile { student, buffer, path: entry.path() });
+                let stem = raw.as_encoded_bytes()[..raw.len() - suffix.len()].to_vec();
+                let student = students
+                    .entry(stem)
+                    .or_insert_with(|| {
+                        let name = (1..)
+                            .map(|k| if k == 1 { shown.to_owned() } else { format!("{shown} ({k})") })
+                            .find(|name| !taken.contains(name))
+                            .expect("numbers enough to tell a class apart");
+                        taken.insert(name.clone());
+                        name
+                    })
+                    .clone();
+                files.push(AnswerFile { student, buffer, path: path.clone() });
             }
         }
         let zsims_own = name.ends_with(".feedback.txt") || name == "common-mistakes.txt";

@@ -76,20 +76,24 @@ fn points_of(grade: &Grade, points: u32) -> String {
     decimal(grade.score * Q::from_integer(i128::from(points)), 2)
 }
 
-/// Two students a gradebook cannot tell apart: the identity cells it would
+/// The students a gradebook cannot tell apart: the identity cells it would
 /// receive are the same once written as a CSV cell (`=x` is written `'=x`)
-/// and compared without case, as Moodle and Canvas match identities. The
-/// first such pair, as shown, or `None`.
-pub fn indistinct(rows: &[&Grade]) -> Option<(String, String)> {
+/// and compared without case, as Moodle and Canvas match identities. Each
+/// such pair, as shown, first seen first; their rows are left out of an
+/// import (the rest of the class is imported) and said apart.
+pub fn indistinct(rows: &[&Grade]) -> Vec<(String, String)> {
     let mut seen: std::collections::HashMap<String, &str> = std::collections::HashMap::with_capacity(rows.len());
+    let mut pairs = Vec::new();
     for grade in rows {
         let key = csv_field(&grade.student).to_lowercase();
-        if let Some(other) = seen.get(&key) {
-            return Some((other.to_string(), grade.student.clone()));
+        match seen.get(&key) {
+            Some(other) => pairs.push((other.to_string(), grade.student.clone())),
+            None => {
+                seen.insert(key, &grade.student);
+            }
         }
-        seen.insert(key, &grade.student);
     }
-    None
+    pairs
 }
 
 /// Moodle's gradebook import: the identity column, then the grade item.

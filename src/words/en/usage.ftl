@@ -62,6 +62,5 @@ usage-not-a-preset = "{ $text }" is not a rule preset: use rogers, buet, gl, vul
 usage-output-name-too-long = { $path }: the name is longer than file systems hold ({ $max } bytes); nothing was written
 usage-output-twice = { $path } would be written twice by one command; nothing was written
 usage-same-answer-twice = { $path }: { $files } answer for the same buffer of the same state: hand in one
-usage-same-student-twice = { $path }: { $files } are both "{ $student }" once their names are shown: rename one; nothing was graded
-usage-gradebook-cannot-tell = "{ $first }" and "{ $second }" are one student to a gradebook (the same cell, without case): rename one; nothing was written
+grade-left-out-of-import = left out of the gradebook: "{ $first }" and "{ $second }" are one student to a gradebook (the same cell, without case): rename one and import their rows again
 usage-answer-without-buffer = { $path } is an answer: name it with --frame { $path } or --depth { $path }

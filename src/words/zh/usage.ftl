@@ -61,6 +61,5 @@ usage-not-a-preset = “{ $text }” 不是规则预设：请用 rogers、buet�
 usage-output-name-too-long = { $path }：名称超过文件系统允许的长度（{ $max } 字节）；未写入任何文件
 usage-output-twice = 同一命令会两次写入 { $path }；未写入任何文件
 usage-same-answer-twice = { $path }：{ $files } 回答的是同一状态的同一缓冲区：只交一个
-usage-same-student-twice = { $path }：{ $files } 显示出来都是“{ $student }”：请重命名其中一个；未评分
-usage-gradebook-cannot-tell = 对成绩册而言“{ $first }”和“{ $second }”是同一个学生（同一单元格，不区分大小写）：请重命名其中一个；未写入任何内容
+grade-left-out-of-import = 未写入成绩册：对成绩册而言“{ $first }”和“{ $second }”是同一个学生（同一单元格，不区分大小写）：请重命名其中一个，再导入他们的行
 usage-answer-without-buffer = { $path } 是一个答案：请用 --frame { $path } 或 --depth { $path } 指定
