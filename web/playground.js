@@ -27,6 +27,9 @@
   let picked = null, cursor = null;
   // The address the page shows: written by the page or applied from a link.
   let applied = null;
+  // A class's student and their variant code, from their link (`&student=…&variant=…`): the
+  // homework is saved as the file they hand in.
+  let student = "", variant = "";
   // The raster's width on the screen, kept by a ResizeObserver.
   let gridWidth = 640;
   // Framebuffer values as colours: the library's (the figure's), 0 white.
@@ -37,6 +40,7 @@
   function setLanguage(code) {
     lang = code;
     words = JSON.parse(z.words(lang));
+    if (student) showStudent();
     document.documentElement.lang = lang;
     $("lang").value = lang;
     document.title = words.title;
@@ -538,6 +542,28 @@
     }
     if (result.more) box.appendChild(el("p", result.more));
     if (result.diagnosis) { const d = el("p", result.diagnosis); d.id = "diagnosis"; box.appendChild(d); }
+    const score = el("p", result.score); score.id = "hwScore"; box.appendChild(score);
+  }
+
+  // The homework as the file the student hands in (`IDENTITY.frame.txt`, the variant's code in its
+  // first line), made by the library and downloaded.
+  function saveAnswer() {
+    const result = call("answer_file", scene, $("hwBuffer").value, $("answer").value, student, variant);
+    if (!result.ok) { $("verdict").replaceChildren(el("p", result.error, "again")); return; }
+    const link = el("a");
+    link.href = URL.createObjectURL(new Blob([result.text], { type: "text/plain" }));
+    link.download = result.name;
+    document.body.appendChild(link);
+    link.click();
+    link.remove();
+  }
+
+  // The student and variant of a class's link, shown above the homework.
+  function showStudent() {
+    const shown = student !== "";
+    $("variantLine").hidden = !shown;
+    $("saveAnswer").hidden = !shown;
+    if (shown) $("variantLine").textContent = words.variantOf.replace("{code}", variant).replace("{student}", student);
   }
 
   // The address's parts: `scene`, `polygon`, `scanline`, `quiz`, `pixel`.
@@ -558,6 +584,7 @@
     if (s && s.at) hash += `&polygon=${s.at.polygon}&scanline=${s.at.row}`;
     if (quizMode()) hash += `&quiz=${quizMode()}`;
     if (picked) hash += `&pixel=${picked.x},${picked.y}`;
+    if (student) hash += `&student=${encodeURIComponent(student)}&variant=${encodeURIComponent(variant)}`;
     if (location.hash !== hash) {
       try { history[push ? "pushState" : "replaceState"](null, "", hash); } catch (e) { /* a page from disk may refuse */ }
     }
@@ -583,6 +610,10 @@
     const place = parts.polygon !== undefined && parts.scanline !== undefined
       ? { polygon: Number(parts.polygon) || 0, row: Number(parts.scanline) || 0 } : null;
     const pixel = parts.pixel && /^\d+,\d+$/.test(parts.pixel) ? parts.pixel.split(",").map(Number) : null;
+    if (parts.student !== undefined) {
+      try { student = decodeURIComponent(parts.student); variant = decodeURIComponent(parts.variant || ""); } catch (e) { student = ""; }
+      if (z) showStudent();
+    }
     return { text, place, pixel, broken: parts.scene !== undefined && text === null };
   }
 
@@ -713,6 +744,7 @@
     }).observe($("grid"));
     $("afterSelect").onchange = renderAfter;
     $("checkAnswer").onclick = checkAnswer;
+    $("saveAnswer").onclick = saveAnswer;
     $("answerGrid").onclick = answerGrid;
     $("figureBox").addEventListener("toggle", renderFigure);
     // A click on a cell asks for its history (one listener for every cell).

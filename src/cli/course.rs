@@ -31,12 +31,7 @@ pub fn exercise(lang: Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<
     };
     let hand_in = zsim::course::fair::parse_hand_in(&args.hand_in)?;
     let spec = ClassSpec { exercise, times: args.times, distinct: args.distinct, rules, hand_in };
-    let (manifest, _) = make_class(lang, &spec, &roster, &args.reseed)?;
-    let scenes: Vec<zsim::Scene> = manifest
-        .students
-        .iter()
-        .map(|v| zsim::Scene::from_json(lang, v.scene.get(), Path::new("scene.json")))
-        .collect::<Result<_, _>>()?;
+    let manifest = make_class(lang, &spec, &roster, &args.reseed)?;
     let dir = &args.output;
     for other in [&args.gradescope, &args.prairielearn].into_iter().flatten() {
         if zsim::same_folder(other, dir) {
@@ -44,8 +39,7 @@ pub fn exercise(lang: Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<
         }
     }
     let table = fairness_table(lang, &manifest);
-    let handouts =
-        Handouts { lang, manifest: &manifest, scenes: &scenes, formats: &args.formats, site: args.site.as_deref() };
+    let handouts = Handouts { lang, manifest: &manifest, formats: &args.formats, site: args.site.as_deref() };
     let mut plan = zsim::Plan::new(&[roster_path], zsim::Replace::Never);
     let listed = zsim::course::folders::plan(&handouts, dir, format!("{table}\n"), &mut plan);
     let mut text = format!("{}\n{table}\n", manifest.summary(lang));

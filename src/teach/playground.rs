@@ -384,11 +384,49 @@ pub fn check(lang: Lang, text: &str, after: usize, buffer: Buffer, typed: &str) 
         .collect();
     let more = (answer.differing > answer.wrong.len())
         .then(|| words!(lang, "check-more-cells", count = answer.differing - answer.wrong.len()));
+    // The score by grading's rule, as `grade` gives this answer alone.
+    let percent =
+        crate::numbers::decimal(crate::teach::grade::score(&[answer.earned]) * crate::numbers::Q::from_integer(100), 1);
+    let score = words!(lang, "class-page-score", score = crate::words::localize_decimal(lang, percent));
     json!({
-        "ok": true, "right": answer.wrong.is_empty(), "verdict": report.verdict(lang, answer), "hint": answer.hint,
+        "ok": true, "right": answer.wrong.is_empty(), "verdict": report.verdict(lang, answer), "hint": answer.hint, "score": score,
         "wrong": wrong, "more": more, "diagnosis": report.diagnosis,
         "columns": ["x", "y", words!(lang, "check-column-answer"), words!(lang, "check-column-right"), words!(lang, "check-column-why")],
     })
+}
+
+/// A homework answer as the file a student of a class hands in: the answer
+/// for `buffer` after the last polygon, typed as the book prints a matrix,
+/// written as `IDENTITY.frame.txt` (or `.depth.txt`) with the variant's code
+/// in its first line, as `grade --variants` reads it:
+/// `{"ok": true, "name", "text"}`, or `{"ok": false, "error"}` for an answer
+/// that cannot be read or an identity that cannot name a file.
+pub fn answer_file(lang: Lang, text: &str, buffer: Buffer, typed: &str, student: &str, code: &str) -> Value {
+    let scene = match scene_of(lang, text) {
+        Ok(scene) => scene,
+        Err(error) => return error,
+    };
+    if student.is_empty() || !crate::teach::course::roster::nameable(student) {
+        let identity = crate::words::printable(student).into_owned();
+        return json!({"ok": false, "error": words!(lang, "manifest-unnameable", place = scene_name(lang), identity = identity)});
+    }
+    let answer = match answer_from_text(lang, typed, &scene, buffer) {
+        Ok(answer) => answer,
+        Err(message) => return json!({"ok": false, "error": message}),
+    };
+    let code: String = code.chars().filter(|c| c.is_ascii_alphanumeric() || *c == '-').take(7).collect();
+    let mut file = format!("# variant {code}\n");
+    for (row, cells) in answer.rows.iter().enumerate() {
+        let cells: Vec<String> = cells
+            .iter()
+            .enumerate()
+            .map(|(x, v)| if answer.answered(row, x) { v.to_string() } else { "?".into() })
+            .collect();
+        file.push_str(&cells.join(" "));
+        file.push('\n');
+    }
+    let name = format!("{student}.{}.txt", crate::teach::grade::file_kind(buffer));
+    json!({"ok": true, "name": name, "text": file})
 }
 
 /// Pixel `(x, y)`'s history through the scene, as `zsim explain` prints it.
@@ -600,11 +638,16 @@ pub fn page_words(lang: Lang) -> Value {
     words.insert("hidden".into(), Value::String(words!(lang, "pixels-hidden-asked", count = "{count}")));
     words.insert("legendValue".into(), Value::String(words!(lang, "legend-value", value = "{value}")));
     words.insert("errorLine".into(), Value::String(words!(lang, "error-at-line", line = "{line}", text = "{text}")));
+    words.insert(
+        "variantOf".into(),
+        Value::String(words!(lang, "class-page-variant", code = "{code}", student = "{student}")),
+    );
     Value::Object(words)
 }
 
 /// The page's labels: the name the page uses, and the catalogue's key.
-const PAGE_WORDS: [(&str, &str); 55] = [
+const PAGE_WORDS: [(&str, &str); 56] = [
+    ("saveAnswer", "class-page-save"),
     ("title", "title-scene-editor"),
     ("intro", "intro-scene-editor"),
     ("language", "field-language"),

@@ -90,7 +90,9 @@ pub async fn session_as(driver: &Driver, browser: &Path, profile: &Path, lang: &
                  "--disable-background-networking", "--disable-component-update", "--disable-sync",
                  format!("--lang={lang}"), format!("--window-size={},{}", size.0, size.1),
                  format!("--user-data-dir={}", profile.display())],
-        "prefs": {"intl.accept_languages": lang},
+        // A download (a homework saved as a file) goes into the profile's `downloads`, unasked.
+        "prefs": {"intl.accept_languages": lang, "download.default_directory": profile.join("downloads"),
+                  "download.prompt_for_download": false},
     });
     // A window narrower than headless Chromium's smallest is a phone's screen, emulated.
     let mut options = options;

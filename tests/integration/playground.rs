@@ -251,6 +251,72 @@ fn the_playground_checks_a_homework_as_check_does() {
     crate::ran("the playground's homework through WebDriver", "two answers");
 }
 
+/// A student's link from `exercise --roster --site` opens their scene with
+/// the quiz on and names their variant; the homework they type is saved as
+/// the file `grade --variants` reads, which scores it as the page did.
+#[test]
+#[ignore = "needs Chromium, chromedriver and web/build's site (target/web)"]
+fn a_students_link_saves_the_homework_that_grade_scores_as_the_page_did() {
+    let (driver, browser, dir, port) = served("playground-course");
+    std::fs::write(dir.join("roster.txt"), "ana@uni.edu\nbo@uni.edu\n").unwrap();
+    let site = format!("http://127.0.0.1:{port}/");
+    let made = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(["exercise", "--roster", "roster.txt", "--hand-in", "frame", "--site", &site, "-o", "out"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(made.status.success(), "{}", String::from_utf8_lossy(&made.stderr));
+    let hand_in = std::fs::read_to_string(dir.join("out/students/ana@uni.edu/hand-in.txt")).unwrap();
+    let link = hand_in.lines().find_map(|l| l.split_once("with questions: ")).unwrap().1.to_string();
+    let manifest: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("out/variants.json")).unwrap()).unwrap();
+    let code = manifest["students"][0]["code"].as_str().unwrap().to_string();
+    // Ana's framebuffer with the first two cells of the top row wrong.
+    let key = std::fs::read_to_string(dir.join("out/keys/ana@uni.edu.frame.txt")).unwrap();
+    let mut rows: Vec<String> = key.lines().filter(|l| !l.starts_with('#')).map(str::to_string).collect();
+    let mut top: Vec<&str> = rows[0].split_whitespace().collect();
+    top[0] = "3";
+    top[1] = "3";
+    rows[0] = top.join(" ");
+    let answer = rows.join("\n") + "\n";
+    let downloads = dir.join("profile/downloads");
+    let shown_score = runtime().block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
+        client.goto(&link).await.unwrap();
+        shown_buffers(&client).await;
+        let line = text_when(&client, "#variantLine", |t| !t.is_empty()).await;
+        assert_eq!(line, format!("Your variant: {code} (ana@uni.edu)"));
+        assert!(client.find(Locator::Css("#quiz")).await.unwrap().is_selected().await.unwrap(), "the quiz is on");
+        client.find(Locator::Css("#hwBuffer option[value='frame']")).await.unwrap().click().await.unwrap();
+        client.find(Locator::Css("#answer")).await.unwrap().send_keys(&answer).await.unwrap();
+        click(&client, "#checkAnswer").await;
+        let score = text_when(&client, "#hwScore", |t| t.starts_with("score ")).await;
+        click(&client, "#saveAnswer").await;
+        let saved = downloads.join("ana@uni.edu.frame.txt");
+        let start = Instant::now();
+        while !saved.is_file() && start.elapsed() < Duration::from_secs(20) {
+            tokio::time::sleep(Duration::from_millis(100)).await;
+        }
+        client.close().await.unwrap();
+        score
+    });
+    std::fs::create_dir_all(dir.join("class")).unwrap();
+    std::fs::copy(downloads.join("ana@uni.edu.frame.txt"), dir.join("class/ana@uni.edu.frame.txt")).unwrap();
+    let saved = std::fs::read_to_string(dir.join("class/ana@uni.edu.frame.txt")).unwrap();
+    assert!(saved.starts_with(&format!("# variant {code}\n")), "{saved}");
+    let graded = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(["grade", "--variants", "out/variants.json", "class", "--format", "csv"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let csv = String::from_utf8(graded.stdout).unwrap();
+    let ana = csv.lines().find(|l| l.starts_with("ana@uni.edu,")).unwrap();
+    let score = ana.split(',').nth(4).unwrap();
+    assert!(score != "100.0" && score != "0.0", "{csv}");
+    assert_eq!(shown_score, format!("score {score} %"), "the page's score and grade's");
+    crate::ran("a student's link, saved and graded", &format!("score {score}"));
+}
+
 /// A Russian browser gets the page in Russian, errors included; screenshots
 /// at 1280 and 360 pixels wide are saved for a person to look at, and at 360
 /// nothing is wider than the window.

@@ -42,6 +42,13 @@ pub fn examples() -> String {
     serde_json::Value::Array(list).to_string()
 }
 
+/// See [`playground::answer_file`]; `buffer` is `frame` or `depth`.
+#[wasm_bindgen]
+pub fn answer_file(code: &str, scene: &str, buffer: &str, typed: &str, student: &str, variant: &str) -> String {
+    let buffer = if buffer == "depth" { zsim::explain::Buffer::Depth } else { zsim::explain::Buffer::Frame };
+    playground::answer_file(lang(code), scene, buffer, typed, student, variant).to_string()
+}
+
 /// See [`playground::view`].
 #[wasm_bindgen]
 pub fn view(code: &str, scene: &str) -> String {

@@ -224,12 +224,7 @@ impl crate::error::Refusal for ClassUnfit {
 /// Every student's variant, in the roster's order, with the manifest that
 /// stores them. `reseed` names students (by identity, without case) to be
 /// given their next variant, once for each time they are named.
-pub fn make_class(
-    lang: Lang,
-    spec: &ClassSpec,
-    roster: &Roster,
-    reseed: &[String],
-) -> Result<(Manifest, Vec<Made>), Error> {
+pub fn make_class(lang: Lang, spec: &ClassSpec, roster: &Roster, reseed: &[String]) -> Result<Manifest, Error> {
     if !(1..=8).contains(&spec.times) || !(1..=1024).contains(&spec.distinct) {
         return Err(ClassUnfit::Counts.into());
     }
@@ -243,10 +238,12 @@ pub fn make_class(
     let make = |k: usize, attempt: u32| {
         let seed = student_seed(course, &lower[k], attempt);
         make_variant(lang, spec, seed)
-            .map(|made| (seed, made))
+            .map(|made| (seed, Kept::of(made)))
             .map_err(|unfit| Error::from(ClassUnfit::Student { identity: roster.students[k].identity.clone(), unfit }))
     };
-    let mut made: Vec<(u64, Made)> =
+    // What each variant keeps once made: its scene's text, its counts and its key's hash, so that a
+    // class of thousands holds its manifest, not every variant's drawing.
+    let mut made: Vec<(u64, Kept)> =
         (0..lower.len()).into_par_iter().map(|k| make(k, attempts[k])).collect::<Result<_, _>>()?;
     // Clashes of scene, key or code: the later student in identity order moves on, again until none.
     loop {
@@ -274,7 +271,7 @@ pub fn make_class(
             scene: RawValue::from_string(made.json.clone()).expect("an exercise's scene is JSON"),
             cases: HardCase::ALL
                 .iter()
-                .map(|c| Count { name: c.name().into(), count: made.census.count(*c) })
+                .map(|c| Count { name: c.name().into(), count: made.cases[*c as usize] })
                 .collect(),
             separations: made.separations.iter().map(|(m, n)| Count { name: m.name().into(), count: *n }).collect(),
         })
@@ -304,12 +301,30 @@ pub fn make_class(
         hand_in: spec.hand_in.iter().map(|b| file_kind(*b).to_string()).collect(),
         students,
     };
-    Ok((manifest, made.into_iter().map(|(_, made)| made).collect()))
+    Ok(manifest)
+}
+
+/// A variant as a class keeps it: its scene's JSON, how many times each
+/// hard case arises, each wrong rule's distance from the key, and a hash of
+/// the key (to find two students with one key).
+struct Kept {
+    json: String,
+    cases: [usize; 7],
+    separations: Vec<(Misconception, usize)>,
+    key: u64,
+}
+
+impl Kept {
+    fn of(made: Made) -> Kept {
+        let cases = HardCase::ALL.map(|case| made.census.count(case));
+        let cells = made.key.0.iter().chain(&made.key.1).flatten().flat_map(|v| v.to_le_bytes());
+        Kept { json: made.json, cases, separations: made.separations, key: super::grading::fnv(cells) }
+    }
 }
 
 /// The students whose scene, key or code another student (earlier in
 /// identity order, without case) already has.
-fn clashes(made: &[(u64, Made)], lower: &[String]) -> Vec<usize> {
+fn clashes(made: &[(u64, Kept)], lower: &[String]) -> Vec<usize> {
     let mut order: Vec<usize> = (0..made.len()).collect();
     order.sort_by(|a, b| lower[*a].cmp(&lower[*b]));
     let (mut scenes, mut keys, mut codes) =

@@ -42,8 +42,6 @@ pub struct Handouts<'a> {
     pub lang: Lang,
     /// The manifest.
     pub manifest: &'a Manifest,
-    /// Each student's scene, in the manifest's order.
-    pub scenes: &'a [Scene],
     /// The worksheet's formats.
     pub formats: &'a [Format],
     /// The playground's address, for each student's link.
@@ -54,24 +52,24 @@ pub struct Handouts<'a> {
 /// returns the names listed for the teacher (the teacher's files, then the
 /// students' folder).
 pub fn plan<'a>(handouts: &'a Handouts<'a>, dir: &Path, fairness_text: String, plan: &mut Plan<'a>) -> Vec<String> {
-    let Handouts { lang, manifest, scenes, .. } = *handouts;
+    let Handouts { lang, manifest, .. } = *handouts;
     plan.file(dir.join("variants.json"), manifest.to_json());
     plan.file(dir.join("fairness.txt"), fairness_text);
     plan.file(dir.join("fairness.csv"), fairness_csv(manifest));
     let mut listed = vec!["variants.json".to_string(), "fairness.txt".into(), "fairness.csv".into()];
-    for (variant, scene) in manifest.students.iter().zip(scenes) {
+    for variant in &manifest.students {
         for buffer in manifest.buffers() {
             plan.file_made(dir.join("keys").join(answer_name(&variant.identity, buffer)), move || {
-                let (frame, depth) = key_of(scene);
+                let (frame, depth) = key_of(&scene_of(lang, variant)?);
                 let rows = if buffer == Buffer::Frame { frame } else { depth };
                 Ok(format!("# variant {} (the key)\n{}", variant.code, matrix(&rows, false)).into_bytes())
             });
         }
     }
     listed.push("keys/".into());
-    plan.file_made(dir.join("worksheets.html"), move || Ok(worksheets_html(handouts)?.into_bytes()));
+    plan.file(dir.join("worksheets.html"), worksheets_html(handouts));
     listed.push("worksheets.html".into());
-    for (variant, scene) in manifest.students.iter().zip(scenes) {
+    for variant in &manifest.students {
         let folder = student_folder(dir, variant);
         plan.file(folder.join("scene.json"), variant.scene.get().to_string() + "\n");
         for format in handouts.formats {
@@ -79,11 +77,14 @@ pub fn plan<'a>(handouts: &'a Handouts<'a>, dir: &Path, fairness_text: String, p
             let path = folder.join(&name);
             let format = *format;
             plan.file_made(folder.join(&name), move || {
-                format.encode(lang, &worksheet(lang, manifest, variant, scene), &path, false, (None, Paper::default()))
+                let worksheet = worksheet(lang, manifest, variant, &scene_of(lang, variant)?);
+                format.encode(lang, &worksheet, &path, false, (None, Paper::default()))
             });
         }
         for buffer in manifest.buffers() {
-            plan.file(folder.join(answer_name(&variant.identity, buffer)), template(lang, variant, scene, buffer));
+            plan.file_made(folder.join(answer_name(&variant.identity, buffer)), move || {
+                Ok(template(lang, variant, &scene_of(lang, variant)?, buffer).into_bytes())
+            });
         }
         plan.file(folder.join("hand-in.txt"), hand_in(lang, manifest, variant, handouts.site));
     }
@@ -114,25 +115,39 @@ pub fn worksheet(lang: Lang, manifest: &Manifest, variant: &Variant, scene: &Sce
     svg_with(lang, scene, blank.buffers(), scene.polygons.len() - 1, Shading::Frame, &title, &extras)
 }
 
-/// One printable page of every worksheet, in the roster's order.
-fn worksheets_html(handouts: &Handouts<'_>) -> Result<String, Error> {
-    let Handouts { lang, manifest, scenes, .. } = *handouts;
+/// A student's scene, read from the manifest as their `scene.json` is.
+fn scene_of(lang: Lang, variant: &Variant) -> Result<Scene, Error> {
+    Scene::from_json(lang, variant.scene.get(), Path::new("scene.json"))
+}
+
+/// One printable page of every worksheet, in the roster's order: each
+/// student's heading and their `worksheet.svg` from their folder, a page
+/// each when printed (the pictures are read from the folders beside it, so
+/// the page costs a line a student, whatever the class's size).
+fn worksheets_html(handouts: &Handouts<'_>) -> String {
+    let Handouts { lang, manifest, formats, .. } = *handouts;
+    // A picture a browser shows and prints: the SVG, else the PNG; a PDF or TeX worksheet is linked.
+    let shown = [Format::Svg, Format::Png].into_iter().find(|f| formats.contains(f));
+    let linked = shown.or_else(|| formats.first().copied()).unwrap_or(Format::Svg);
     let title = escape(&words!(lang, "class-worksheets-title", count = manifest.students.len()));
     let mut html = format!(
         "<!doctype html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n<title>{title}</title>\n\
          <style>body{{font-family:sans-serif}} section{{break-after:page;page-break-after:always}} \
-         svg{{max-width:100%;height:auto}}</style>\n</head>\n<body>\n",
+         img{{max-width:100%;height:auto}}</style>\n</head>\n<body>\n",
         lang.code()
     );
-    for (variant, scene) in manifest.students.iter().zip(scenes) {
+    for variant in &manifest.students {
         let heading = escape(&format!("{} · {}", printable(&variant.name), variant.code));
-        html.push_str(&format!(
-            "<section>\n<h2>{heading}</h2>\n{}</section>\n",
-            worksheet(lang, manifest, variant, scene)
-        ));
+        let folder = url_escaped(&variant.identity);
+        let file = format!("students/{folder}/worksheet.{}", linked.extension());
+        let body = match shown {
+            Some(_) => format!("<img src=\"{file}\" alt=\"{heading}\">"),
+            None => format!("<a href=\"{file}\">{file}</a>"),
+        };
+        html.push_str(&format!("<section>\n<h2>{heading}</h2>\n{body}\n</section>\n"));
     }
     html.push_str("</body>\n</html>\n");
-    Ok(html)
+    html
 }
 
 /// A blank answer file: its comment lines (the buffer, the variant code, the
@@ -180,7 +195,18 @@ fn hand_in(lang: Lang, manifest: &Manifest, variant: &Variant, site: Option<&str
 /// fragment and the quiz on.
 pub fn link(site: &str, variant: &Variant) -> String {
     let base = site.split('#').next().unwrap_or(site);
-    format!("{base}#{}&quiz=depth", crate::teach::playground::fragment_of(variant.scene.get()))
+    let scene = crate::teach::playground::fragment_of(variant.scene.get());
+    format!("{base}#{scene}&quiz=depth&student={}&variant={}", url_escaped(&variant.identity), variant.code)
+}
+
+/// A text in a URL: each byte outside RFC 3986's unreserved set percent-encoded.
+fn url_escaped(text: &str) -> String {
+    text.bytes()
+        .map(|b| match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' => (b as char).to_string(),
+            _ => format!("%{b:02X}"),
+        })
+        .collect()
 }
 
 /// The fairness table as CSV: a row a student, their code, how many times

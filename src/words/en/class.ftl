@@ -81,3 +81,6 @@ platform-question-title = z-buffer by hand
 platform-question-variant = Your variant:
 usage-grade-variants-folder = grade --variants FILE takes one folder, the class's: zsim grade --variants DIR/variants.json CLASS
 usage-grade-scene-and-class = grade takes the scene and the class folder: zsim grade SCENE CLASS (or --variants DIR/variants.json CLASS)
+class-page-save = Save as the file to hand in
+class-page-variant = Your variant: { $code } ({ $student })
+class-page-score = score { $score } %

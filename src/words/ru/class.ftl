@@ -84,3 +84,6 @@ platform-question-title = Z-буфер вручную
 platform-question-variant = Ваш вариант:
 usage-grade-variants-folder = grade --variants FILE принимает одну папку — папку класса: zsim grade --variants DIR/variants.json CLASS
 usage-grade-scene-and-class = grade принимает сцену и папку класса: zsim grade SCENE CLASS (или --variants DIR/variants.json CLASS)
+class-page-save = Сохранить как файл для сдачи
+class-page-variant = Ваш вариант: { $code } ({ $student })
+class-page-score = баллы { $score } %

@@ -84,3 +84,6 @@ platform-question-title = Z-буфер вручну
 platform-question-variant = Ваш варіант:
 usage-grade-variants-folder = grade --variants FILE приймає одну теку — теку класу: zsim grade --variants DIR/variants.json CLASS
 usage-grade-scene-and-class = grade приймає сцену й теку класу: zsim grade SCENE CLASS (або --variants DIR/variants.json CLASS)
+class-page-save = Зберегти як файл для здачі
+class-page-variant = Ваш варіант: { $code } ({ $student })
+class-page-score = бали { $score } %

@@ -56,3 +56,6 @@ platform-question-title = 手算 z 缓冲
 platform-question-variant = 你的变体：
 usage-grade-variants-folder = grade --variants FILE 只接受一个文件夹，即班级的文件夹：zsim grade --variants DIR/variants.json CLASS
 usage-grade-scene-and-class = grade 需要场景和班级文件夹：zsim grade SCENE CLASS（或 --variants DIR/variants.json CLASS）
+class-page-save = 保存为要提交的文件
+class-page-variant = 你的变体：{ $code }（{ $student }）
+class-page-score = 得分 { $score } %
