@@ -183,10 +183,10 @@ pub enum Usage {
     },
     /// A pixel outside the raster.
     PixelOutside {
-        /// Its column.
-        x: u32,
-        /// Its row.
-        y: u32,
+        /// Its column, as asked (a page's address may ask past 2^32).
+        x: u64,
+        /// Its row, as asked.
+        y: u64,
         /// The raster's width.
         width: u32,
         /// The raster's height.

@@ -400,13 +400,15 @@
     setScene(moved.scene);
   }
 
+  // A pixel's history; the pixel as the address or a click gives it, which the library reads
+  // (one off the raster is said, not drawn).
   function explainPixel(x, y) {
-    picked = { x, y };
-    const result = lesson ? JSON.parse(lesson.explain(x, y)) : { ok: false, error: "" };
+    const result = lesson ? JSON.parse(lesson.explain(String(x), String(y))) : { ok: false, error: "" };
     $("explain").textContent = result.ok ? result.text : result.error;
     const grid = $("grid");
     grid.querySelectorAll(".picked").forEach((e) => e.remove());
-    grid.appendChild(svg("rect", { x, y: view.height - 1 - y, width: 1, height: 1, class: "picked" }));
+    picked = result.ok ? { x: Number(x), y: Number(y) } : null;
+    if (picked) grid.appendChild(svg("rect", { x: picked.x, y: view.height - 1 - picked.y, width: 1, height: 1, class: "picked" }));
   }
 
   // The buffers after the chosen polygon, asked of the library when shown (not one set per polygon on every edit).
@@ -609,7 +611,7 @@
     }
     const place = parts.polygon !== undefined && parts.scanline !== undefined
       ? { polygon: Number(parts.polygon) || 0, row: Number(parts.scanline) || 0 } : null;
-    const pixel = parts.pixel && /^\d+,\d+$/.test(parts.pixel) ? parts.pixel.split(",").map(Number) : null;
+    const pixel = parts.pixel && /^\d+,\d+$/.test(parts.pixel) ? parts.pixel.split(",") : null;
     if (parts.student !== undefined) {
       try { student = decodeURIComponent(parts.student); variant = decodeURIComponent(parts.variant || ""); } catch (e) { student = ""; }
       if (z) showStudent();

@@ -201,7 +201,9 @@ impl<'l> App<'l> {
     }
 
     fn back(&mut self) {
+        // From the end, back to the last scanline, as the line mode and the page go.
         if self.lesson.at().is_none() {
+            self.act(Command::Back);
             return;
         }
         match self.pixel {

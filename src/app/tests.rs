@@ -305,3 +305,19 @@ fn the_quizs_error_text_keeps_its_own_lines_and_the_prompt_shows() {
         }
     }
 }
+
+/// Found by a student: at the end of the scene `b` did nothing, though the
+/// status line offered it. It goes back to the last scanline, as the line
+/// mode and the page go.
+#[test]
+fn b_at_the_end_goes_back_to_the_last_scanline() {
+    let mut lesson = lesson(book(), None, None);
+    lesson.act(zsim::Lang::En, zsim::lesson::Command::NextPolygon);
+    while lesson.at().is_some() {
+        lesson.act(zsim::Lang::En, zsim::lesson::Command::Next);
+    }
+    let mut app = App::new(&mut lesson, zsim::Lang::En);
+    press(&mut app, "b");
+    let at = app.lesson.at().expect("back at a scanline");
+    assert_eq!(at.polygon, 1, "the last polygon's");
+}

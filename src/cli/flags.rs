@@ -29,6 +29,11 @@ pub enum Flag {
     },
     /// `grade --points 0`.
     NoPoints,
+    /// A line of `step`'s line mode longer than it reads.
+    LineTooLong {
+        /// The longest line, in bytes.
+        max: usize,
+    },
     /// `grade` without SCENE and CLASS, or `grade --variants` without exactly CLASS.
     GradeFolders {
         /// Whether --variants was given.
@@ -82,6 +87,7 @@ impl Flag {
             Flag::AnswerWithoutBuffer { path: p } => zsim::words!(lang, "usage-answer-without-buffer", path = path(p)),
             Flag::IdentityColumn { column } => zsim::words!(lang, "usage-identity-column", column = *column),
             Flag::NoPoints => zsim::words!(lang, "usage-no-points"),
+            Flag::LineTooLong { max } => zsim::words!(lang, "usage-line-too-long", max = *max),
             Flag::GradeFolders { variants: true } => zsim::words!(lang, "usage-grade-variants-folder"),
             Flag::GradeFolders { variants: false } => zsim::words!(lang, "usage-grade-scene-and-class"),
             Flag::ScenesOutOfRange => zsim::words!(lang, "usage-scenes-range"),

@@ -183,23 +183,50 @@ impl From<QuizMode> for zsim::step::QuizMode {
 
 /// Lines typed by the user (or piped in by a script).
 struct Input {
-    lines: std::io::Lines<std::io::StdinLock<'static>>,
+    stdin: std::io::StdinLock<'static>,
     terminal: bool,
+}
+
+/// The longest line the line mode reads, in bytes: a command or an answer
+/// is a few characters; `< /dev/zero` is not a line to hold.
+const MAX_LINE_BYTES: usize = 4096;
+
+/// A line read, or why it is not one.
+enum Line {
+    /// A line of text, without its line end.
+    Text(String),
+    /// A line that is not UTF-8: asked again.
+    NotText,
+    /// A line longer than [`MAX_LINE_BYTES`]: the lesson ends.
+    TooLong,
 }
 
 impl Input {
     fn stdin() -> Input {
         let stdin = std::io::stdin();
-        Input { terminal: stdin.is_terminal(), lines: stdin.lock().lines() }
+        Input { terminal: stdin.is_terminal(), stdin: stdin.lock() }
     }
 
     /// The next line; the prompt is shown only on a terminal. `None` at the end of input.
-    fn read(&mut self, out: &mut dyn Write, prompt: &str) -> Result<Option<String>, Failure> {
+    fn read(&mut self, out: &mut dyn Write, prompt: &str) -> Result<Option<Line>, Failure> {
         if self.terminal {
             emit(out, prompt)?;
             out.flush()?;
         }
-        Ok(self.lines.next().transpose()?)
+        let mut bytes = Vec::new();
+        let read = std::io::Read::take(&mut self.stdin, MAX_LINE_BYTES as u64 + 1).read_until(b'\n', &mut bytes)?;
+        if read == 0 {
+            return Ok(None);
+        }
+        if bytes.last() == Some(&b'\n') {
+            bytes.pop();
+            if bytes.last() == Some(&b'\r') {
+                bytes.pop();
+            }
+        } else if bytes.len() > MAX_LINE_BYTES {
+            return Ok(Some(Line::TooLong));
+        }
+        Ok(Some(String::from_utf8(bytes).map_or(Line::NotText, Line::Text)))
     }
 }
 
@@ -235,7 +262,19 @@ fn interactive(
             }
             None => zsim::words!(lang, "step-prompt"),
         };
-        let Some(line) = input.read(out, &prompt)? else { break };
+        let line = match input.read(out, &prompt)? {
+            None => break,
+            Some(Line::Text(line)) => line,
+            Some(Line::NotText) => {
+                emit(out, &format!("{}\n", zsim::words!(lang, "step-line-not-text")))?;
+                show = false;
+                continue;
+            }
+            Some(Line::TooLong) => {
+                emit(out, &lesson.summary(lang))?;
+                return Err(super::flags::Flag::LineTooLong { max: MAX_LINE_BYTES }.into());
+            }
+        };
         let open_before = lesson.open_questions();
         let said = lesson.act(lang, Command::parse(&line));
         if matches!(said, Said::Quit) {

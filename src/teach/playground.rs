@@ -437,6 +437,31 @@ pub fn explain(lang: Lang, text: &str, x: u32, y: u32) -> Value {
     }
 }
 
+/// [`explain_of`] of a pixel given as the page's address or a click gives
+/// it, as text: a coordinate that is not a whole number, or a pixel off the
+/// raster (however far: `4294967306` is not wrapped to `10`), is said in one
+/// line, as `zsim explain` says it.
+pub fn explain_typed(lang: Lang, scene: &Scene, x: &str, y: &str) -> Value {
+    let coordinate = |text: &str| {
+        let digits = !text.is_empty() && text.len() <= 20 && text.bytes().all(|b| b.is_ascii_digit());
+        digits.then(|| text.parse::<u64>().ok()).flatten().ok_or_else(|| {
+            json!({"ok": false, "error": words!(lang, "usage-pixel-coordinate", text = crate::words::token(lang, text))})
+        })
+    };
+    let (x, y) = match (coordinate(x), coordinate(y)) {
+        (Ok(x), Ok(y)) => (x, y),
+        (Err(error), _) | (_, Err(error)) => return error,
+    };
+    match (u32::try_from(x), u32::try_from(y)) {
+        (Ok(x), Ok(y)) => explain_of(lang, scene, x, y),
+        _ => {
+            let (width, height) = (scene.width, scene.height);
+            let error = crate::error::Usage::PixelOutside { x, y, width, height }.message(lang);
+            json!({"ok": false, "error": error})
+        }
+    }
+}
+
 /// [`explain`] of a scene already read (the lesson's: one reading for every view).
 pub fn explain_of(lang: Lang, scene: &Scene, x: u32, y: u32) -> Value {
     match history(scene, (x, y), Extras::default()) {
@@ -729,6 +754,20 @@ mod tests {
         );
         assert_eq!(after(Lang::En, BOOK, 1)["depth"], view["zbuffer"]);
         assert_eq!(after(Lang::En, BOOK, 2)["ok"], false);
+    }
+
+    /// Found by a student: `#pixel=0,32` (one past the book's raster) panicked
+    /// the module and the page stopped answering; `2^32 + 10` wrapped to 10.
+    #[test]
+    fn a_pixel_off_the_raster_is_said_as_explain_says_it_however_far() {
+        let scene = Scene::from_json(Lang::En, BOOK, Path::new("the scene")).unwrap();
+        let said = |x: &str, y: &str| explain_typed(Lang::En, &scene, x, y);
+        let outside = "is outside the 32×32 raster (x 0 … 31, y 0 … 31)";
+        assert_eq!(said("0", "32")["error"], format!("pixel (0, 32) {outside}"));
+        assert_eq!(said("4294967306", "0")["error"], format!("pixel (4294967306, 0) {outside}"));
+        assert_eq!(said("1.5", "0")["error"], "\"1.5\" is not a pixel coordinate");
+        assert_eq!(said("20", "15")["ok"], true);
+        assert!(said("20", "15")["text"].as_str().unwrap().contains("43/4 ≈ 10.75"));
     }
 
     /// A scene's error is the command line's, naming the scene and the place.

@@ -317,6 +317,27 @@ fn a_students_link_saves_the_homework_that_grade_scores_as_the_page_did() {
     crate::ran("a student's link, saved and graded", &format!("score {score}"));
 }
 
+/// Found by a student: `#pixel=0,32` (one past the book's raster) panicked
+/// the module and the page stopped answering until a reload. It is said as
+/// `zsim explain` says it, and the page still answers a click.
+#[test]
+#[ignore = "needs Chromium, chromedriver and web/build's site (target/web)"]
+fn a_pixel_off_the_raster_in_the_address_is_said_and_the_page_keeps_answering() {
+    let (driver, browser, dir, port) = served("playground-off-raster");
+    runtime().block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
+        client.goto(&format!("http://127.0.0.1:{port}/#pixel=0,32")).await.unwrap();
+        shown_buffers(&client).await;
+        let said = text_when(&client, "#explain", |t| !t.is_empty()).await;
+        assert_eq!(said, "pixel (0, 32) is outside the 32×32 raster (x 0 … 31, y 0 … 31)");
+        client.find(Locator::Css("rect.cell[data-x='20'][data-y='15']")).await.unwrap().click().await.unwrap();
+        let history = text_when(&client, "#explain", |t| t.contains("43/4")).await;
+        assert!(history.contains("43/4 ≈ 10.75 > 10 stored, so 11 is stored"), "{history}");
+        client.close().await.unwrap();
+    });
+    crate::ran("a pixel off the raster in the page's address", "#pixel=0,32");
+}
+
 /// A Russian browser gets the page in Russian, errors included; screenshots
 /// at 1280 and 360 pixels wide are saved for a person to look at, and at 360
 /// nothing is wider than the window.

@@ -697,3 +697,47 @@ fn a_framebuffer_given_as_the_depth_answer_is_named_as_such() {
         run.stdout
     );
 }
+
+/// Found by a student: a line of the line mode that is not UTF-8 ended the
+/// lesson with "cannot write the output" and lost the score. It is asked
+/// again, and the lesson goes on.
+#[test]
+fn a_line_that_is_not_text_is_asked_again() {
+    let args = ["step", "examples/rogers.json", "--quiz", "--polygon", "2", "--scanline", "24"];
+    let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("LANG", "C.UTF-8")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .and_then(|mut child| {
+            use std::io::Write;
+            child.stdin.take().unwrap().write_all(b"\xff\xfe\n15\nq\n")?;
+            child.wait_with_output()
+        })
+        .unwrap();
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert_eq!(output.status.code(), Some(0), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(stdout.contains("that line is not text (UTF-8): type it again\n"), "{stdout}");
+    assert!(stdout.contains("\n  15: not yet"), "the answer after it is judged: {stdout}");
+}
+
+/// Found by a student: `zsim step --quiz < /dev/zero` grew until the
+/// allocator aborted. A line past the line mode's bound ends the lesson in
+/// one line, with the score so far, exit 2.
+#[test]
+fn a_line_past_its_bound_ends_the_lesson_with_its_score() {
+    let output = Command::new(env!("CARGO_BIN_EXE_zsim"))
+        .args(["step", "examples/rogers.json", "--quiz", "--polygon", "2", "--scanline", "24"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("LANG", "C.UTF-8")
+        .stdin(std::fs::File::open("/dev/zero").unwrap())
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(stderr, "zsim: a line longer than 4096 bytes: the lesson ends here, with its score above\n");
+    assert!(String::from_utf8(output.stdout).unwrap().contains("quiz: 0 right at the first try"));
+}

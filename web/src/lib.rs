@@ -116,9 +116,10 @@ impl WebLesson {
         playground::after_of(self.lang, self.lesson.scene(), index).to_string()
     }
 
-    /// See [`playground::explain`]: of the scene the lesson read.
-    pub fn explain(&self, x: u32, y: u32) -> String {
-        playground::explain_of(self.lang, self.lesson.scene(), x, y).to_string()
+    /// See [`playground::explain_typed`]: of the scene the lesson read, the
+    /// pixel as the address or a click gives it (text, never wrapped to 32 bits).
+    pub fn explain(&self, x: &str, y: &str) -> String {
+        playground::explain_typed(self.lang, self.lesson.scene(), x, y).to_string()
     }
 
     /// See [`playground::figure`]: of the scene the lesson read.

@@ -128,6 +128,10 @@ pub struct PixelHistory {
 /// The history of pixel `(x, y)` through the whole scene, with `extras`.
 /// The pixel must lie on the raster.
 pub fn history(scene: &Scene, (x, y): (u32, u32), extras: Extras) -> Result<PixelHistory, Error> {
+    if x >= scene.width || y >= scene.height {
+        let (x, y, width, height) = (u64::from(x), u64::from(y), scene.width, scene.height);
+        return Err(crate::error::Usage::PixelOutside { x, y, width, height }.into());
+    }
     let mut watcher = PixelWatcher::new([(x, y)]);
     let mut simulation = Simulation::new(scene);
     simulation.finish(&mut watcher);

@@ -172,12 +172,15 @@ impl<'s> Stepper<'s> {
         }
     }
 
-    /// The first stop of a later polygon (or the end).
+    /// The first stop of a later polygon; on the last polygon (or at the
+    /// end) refused, and the place kept.
     pub fn next_polygon(&mut self) -> Moved {
-        let Some(stop) = self.at else { return self.arrive(None, Vec::new()) };
+        let Some(stop) = self.at else { return Moved::Refused(Refusal::NoLaterPolygon) };
         let last = self.tracer.trace(stop.polygon).scanlines.len().saturating_sub(1);
-        let (next, skipped) = self.tracer.next_stop(Some(Stop { polygon: stop.polygon, scanline: last }));
-        self.arrive(next, skipped)
+        match self.tracer.next_stop(Some(Stop { polygon: stop.polygon, scanline: last })) {
+            (Some(next), skipped) => self.arrive(Some(next), skipped),
+            (None, _) => Moved::Refused(Refusal::NoLaterPolygon),
+        }
     }
 
     /// The first stop of the polygon before the current one.
@@ -556,6 +559,24 @@ mod tests {
         assert_eq!(parse_columns("5-3"), None);
         assert_eq!(parse_columns(""), None);
         assert_eq!(columns_text(&[3, 4, 5, 9]), "3-5 9");
+    }
+
+    /// Found by a student: `p` on the last polygon said it could not move,
+    /// then moved to the end of the scene.
+    #[test]
+    fn the_next_polygon_from_the_last_is_refused_and_the_place_kept() {
+        let scene = book();
+        let mut stepper = Stepper::new(&scene, Arith::Exact);
+        stepper.start(None);
+        let Moved::To { at: Some(second), .. } = stepper.next_polygon() else { panic!("no second polygon") };
+        assert_eq!(second.polygon, 1);
+        assert_eq!(stepper.next_polygon(), Moved::Refused(Refusal::NoLaterPolygon));
+        assert_eq!(stepper.at(), Some(second));
+        while stepper.at().is_some() {
+            stepper.forward();
+        }
+        assert_eq!(stepper.next_polygon(), Moved::Refused(Refusal::NoLaterPolygon));
+        assert_eq!(stepper.at(), None);
     }
 
     #[test]

@@ -182,3 +182,4 @@ legend-heading = Framebuffer values:
 legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
 lesson-nothing-to-skip = no question is open here: nothing to skip
+step-line-not-text = that line is not text (UTF-8): type it again

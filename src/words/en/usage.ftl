@@ -64,3 +64,4 @@ usage-output-twice = { $path } would be written twice by one command; nothing wa
 usage-same-answer-twice = { $path }: { $files } answer for the same buffer of the same state: hand in one
 grade-left-out-of-import = left out of the gradebook: "{ $first }" and "{ $second }" are one student to a gradebook (the same cell, without case): rename one and import their rows again
 usage-answer-without-buffer = { $path } is an answer: name it with --frame { $path } or --depth { $path }
+usage-line-too-long = a line longer than { $max } bytes: the lesson ends here, with its score above

@@ -181,3 +181,4 @@ legend-heading = Значения буфера кадра:
 legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
 lesson-nothing-to-skip = здесь нет открытых вопросов: пропускать нечего
+step-line-not-text = эта строка — не текст (UTF-8): введите её снова

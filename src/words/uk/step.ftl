@@ -181,3 +181,4 @@ legend-heading = Значення буфера кадру:
 legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
 lesson-nothing-to-skip = тут немає відкритих питань: пропускати нічого
+step-line-not-text = цей рядок — не текст (UTF-8): введіть його знову

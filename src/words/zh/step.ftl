@@ -181,3 +181,4 @@ legend-heading = 帧缓冲区的值：
 legend-value = { $value }
 lesson-said-meant = { $said }（{ $meant }）
 lesson-nothing-to-skip = 这里没有未答的问题：无需跳过
+step-line-not-text = 这一行不是文本（UTF-8）：请重新输入

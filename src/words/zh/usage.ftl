@@ -63,3 +63,4 @@ usage-output-twice = 同一命令会两次写入 { $path }；未写入任何文�
 usage-same-answer-twice = { $path }：{ $files } 回答的是同一状态的同一缓冲区：只交一个
 grade-left-out-of-import = 未写入成绩册：对成绩册而言“{ $first }”和“{ $second }”是同一个学生（同一单元格，不区分大小写）：请重命名其中一个，再导入他们的行
 usage-answer-without-buffer = { $path } 是一个答案：请用 --frame { $path } 或 --depth { $path } 指定
+usage-line-too-long = 一行超过 { $max } 字节：课程到此结束，得分见上

@@ -309,13 +309,7 @@ impl Lesson {
         let moved = self.held.with_dependent_mut(|_, stepper| match command {
             Command::Next => stepper.forward(),
             Command::Back => stepper.back(),
-            Command::NextPolygon => match stepper.at() {
-                Some(_) => match stepper.next_polygon() {
-                    Moved::To { at: None, .. } => Moved::Refused(Refusal::NoLaterPolygon),
-                    moved => moved,
-                },
-                None => Moved::Refused(Refusal::NoLaterPolygon),
-            },
+            Command::NextPolygon => stepper.next_polygon(),
             Command::PreviousPolygon => stepper.previous_polygon(),
             Command::Go(row) => stepper.go(row),
             Command::GoTo { polygon, row } => stepper.go_to(polygon, row),
