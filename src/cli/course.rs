@@ -206,21 +206,7 @@ fn text(lang: Lang, args: &GradeVariants<'_>, loaded: &Loaded, graded: &CourseGr
         text.push_str(&format!("{}\n", stray.text(lang)));
     }
     text.push('\n');
-    let causes = graded.causes();
-    if !causes.is_empty() {
-        text.push_str(&format!("{}\n", zsim::words!(lang, "grade-causes")));
-        for (misconception, count) in causes {
-            let line = zsim::words!(
-                lang,
-                "grade-cause-count",
-                what = misconception.words(lang),
-                count = count,
-                students = grades.len()
-            );
-            text.push_str(&format!("  {line}\n"));
-        }
-        text.push('\n');
-    }
+    text.push_str(&super::grade::causes_text(lang, &grades));
     text.push_str(&format!("{}\n", zsim::words!(lang, "course-by-kind")));
     for (case, holding, wrong, cells) in graded.by_kind() {
         if holding > 0 {

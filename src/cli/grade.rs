@@ -241,7 +241,7 @@ fn table(lang: zsim::Lang, rows: &[&Grade]) -> Table {
 
 /// The class's likely causes: each misconception named for a student, with
 /// how many students it was named for, most first.
-fn causes_text(lang: zsim::Lang, rows: &[&Grade]) -> String {
+pub(super) fn causes_text(lang: zsim::Lang, rows: &[&Grade]) -> String {
     let counts = zsim::grade::causes(rows);
     if counts.is_empty() {
         return String::new();

@@ -1,7 +1,7 @@
 //! `zsim step`: one scanline at a time, in a terminal or driven line by line
 //! from standard input, with an optional quiz.
 
-use std::io::{BufRead, IsTerminal, Write};
+use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 
 use clap::Args;
@@ -191,16 +191,6 @@ struct Input {
 /// is a few characters; `< /dev/zero` is not a line to hold.
 const MAX_LINE_BYTES: usize = 4096;
 
-/// A line read, or why it is not one.
-enum Line {
-    /// A line of text, without its line end.
-    Text(String),
-    /// A line that is not UTF-8: asked again.
-    NotText,
-    /// A line longer than [`MAX_LINE_BYTES`]: the lesson ends.
-    TooLong,
-}
-
 impl Input {
     fn stdin() -> Input {
         let stdin = std::io::stdin();
@@ -208,25 +198,12 @@ impl Input {
     }
 
     /// The next line; the prompt is shown only on a terminal. `None` at the end of input.
-    fn read(&mut self, out: &mut dyn Write, prompt: &str) -> Result<Option<Line>, Failure> {
+    fn read(&mut self, out: &mut dyn Write, prompt: &str) -> Result<Option<zsim::Line>, Failure> {
         if self.terminal {
             emit(out, prompt)?;
             out.flush()?;
         }
-        let mut bytes = Vec::new();
-        let read = std::io::Read::take(&mut self.stdin, MAX_LINE_BYTES as u64 + 1).read_until(b'\n', &mut bytes)?;
-        if read == 0 {
-            return Ok(None);
-        }
-        if bytes.last() == Some(&b'\n') {
-            bytes.pop();
-            if bytes.last() == Some(&b'\r') {
-                bytes.pop();
-            }
-        } else if bytes.len() > MAX_LINE_BYTES {
-            return Ok(Some(Line::TooLong));
-        }
-        Ok(Some(String::from_utf8(bytes).map_or(Line::NotText, Line::Text)))
+        Ok(zsim::read_line_within(&mut self.stdin, MAX_LINE_BYTES)?)
     }
 }
 
@@ -264,13 +241,13 @@ fn interactive(
         };
         let line = match input.read(out, &prompt)? {
             None => break,
-            Some(Line::Text(line)) => line,
-            Some(Line::NotText) => {
+            Some(zsim::Line::Text(line)) => line,
+            Some(zsim::Line::NotText) => {
                 emit(out, &format!("{}\n", zsim::words!(lang, "step-line-not-text")))?;
                 show = false;
                 continue;
             }
-            Some(Line::TooLong) => {
+            Some(zsim::Line::TooLong) => {
                 emit(out, &lesson.summary(lang))?;
                 return Err(super::flags::Flag::LineTooLong { max: MAX_LINE_BYTES }.into());
             }

@@ -330,3 +330,34 @@ mod tests {
         std::fs::remove_file(&path).unwrap();
     }
 }
+
+/// A line read from a stream within a bound, or why it is not one.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Line {
+    /// A line of text, without its line end (`\n` or `\r\n`).
+    Text(String),
+    /// A line that is not UTF-8.
+    NotText,
+    /// A line longer than the bound: what is past it is not read.
+    TooLong,
+}
+
+/// The next line of `reader`, holding at most `max` bytes of it (a stream
+/// of no line end, as `/dev/zero`, costs `max` bytes, not all memory);
+/// `None` at the end.
+pub fn read_line_within(reader: &mut impl std::io::BufRead, max: usize) -> std::io::Result<Option<Line>> {
+    let mut bytes = Vec::new();
+    let read = std::io::BufRead::read_until(&mut std::io::Read::take(reader, max as u64 + 1), b'\n', &mut bytes)?;
+    if read == 0 {
+        return Ok(None);
+    }
+    if bytes.last() == Some(&b'\n') {
+        bytes.pop();
+        if bytes.last() == Some(&b'\r') {
+            bytes.pop();
+        }
+    } else if bytes.len() > max {
+        return Ok(Some(Line::TooLong));
+    }
+    Ok(Some(String::from_utf8(bytes).map_or(Line::NotText, Line::Text)))
+}

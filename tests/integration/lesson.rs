@@ -43,10 +43,7 @@ fn library_says() -> (Vec<String>, String) {
 fn the_librarys_answers_to_the_script_are_the_rules() {
     let (said, summary) = library_says();
     assert_eq!(said[0], "13 open questions on this scanline: answer them first, or s to skip them");
-    assert_eq!(
-        said[1],
-        "14: not yet: it looks as if halves rounded down instead of up (10.5 stored as 10) (one more try)"
-    );
+    assert_eq!(said[1], "14: not yet: it looks as if you rounded a half down: halves round up (one more try)");
     assert!(said[2].starts_with("13: wrong again. The answer is 15: z = 29/2"), "{}", said[2]);
     assert!(said[3].starts_with("14 (the value written): right. z = 55/4"), "{}", said[3]);
     assert_eq!(said[4], "skipped: 11 questions (counted as not answered)");

@@ -164,8 +164,9 @@ fn quiz_coverage_asks_which_centres_are_covered_first() {
     let asked = run.stdout.find("which columns' centres does it cover?").expect(&run.stdout);
     assert!(!run.stdout[..asked].contains("crossings:"), "the crossings would answer it: {}", run.stdout);
     assert!(
-        run.stdout
-            .contains("  16-28: not yet: a centre lies exactly on the polygon's boundary: which rule decides it?"),
+        run.stdout.contains(
+            "  16-28: not yet: these are the columns of the row just below or above: this scanline is y = row + ½"
+        ),
         "{}",
         run.stdout
     );

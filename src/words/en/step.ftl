@@ -151,12 +151,13 @@ lesson-hint-misconception = it looks as if { $what }
 lesson-hint-is-written = this pixel passes the depth test: compare its exact z with the stored value again
 lesson-hint-is-not-written = this pixel does not pass the depth test: compare its exact z with the stored value again
 lesson-hint-centre-on-boundary = a centre lies exactly on the polygon's boundary: which rule decides it?
-lesson-hint-column-outside = you took in a column whose centre lies outside the span
-lesson-hint-column-left-out = you left out a column whose centre lies inside the span
-lesson-hint-other = compute z at the pixel's centre from the plane, compare it with the stored value, then round
 lesson-right = { $said }: right. { $why }
 lesson-right-second = { $said }: right at the second try. { $why }
 lesson-try-again = { $said }: not yet: { $hint } (one more try)
+lesson-hint-neighbouring-row = these are the columns of the row just below or above: this scanline is y = row + ½
+lesson-hint-rounded-up = it looks as if you rounded up: the z-buffer stores the nearest integer (halves up)
+lesson-hint-half-down = it looks as if you rounded a half down: halves round up
+lesson-try-again-plain = { $said }: not yet (one more try)
 lesson-revealed = { $said }: wrong again. The answer is { $expected }: { $why }
 lesson-skipped = skipped: { $count } questions (counted as not answered)
 lesson-score = quiz: { $first } right at the first try, { $second } at the second, { $revealed } shown, { $skipped } skipped, of { $asked } questions

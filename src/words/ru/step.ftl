@@ -150,12 +150,13 @@ lesson-hint-misconception = похоже, что { $what }
 lesson-hint-is-written = этот пиксель проходит тест глубины: сравните его точное z с хранимым значением ещё раз
 lesson-hint-is-not-written = этот пиксель не проходит тест глубины: сравните его точное z с хранимым значением ещё раз
 lesson-hint-centre-on-boundary = центр лежит точно на границе многоугольника: какое правило его решает?
-lesson-hint-column-outside = вы взяли столбец, центр которого лежит вне отрезка
-lesson-hint-column-left-out = вы пропустили столбец, центр которого лежит внутри отрезка
-lesson-hint-other = вычислите z в центре пикселя по плоскости, сравните с хранимым значением, затем округлите
 lesson-right = { $said }: верно. { $why }
 lesson-right-second = { $said }: верно со второй попытки. { $why }
 lesson-try-again = { $said }: пока нет: { $hint } (ещё одна попытка)
+lesson-hint-neighbouring-row = это столбцы соседней строки, ниже или выше: эта строка развёртки — y = строка + ½
+lesson-hint-rounded-up = похоже, вы округлили вверх: z-буфер хранит ближайшее целое (половины вверх)
+lesson-hint-half-down = похоже, вы округлили половину вниз: половины округляются вверх
+lesson-try-again-plain = { $said }: пока нет (ещё одна попытка)
 lesson-revealed = { $said }: снова неверно. Ответ: { $expected }: { $why }
 lesson-skipped = пропущено вопросов: { $count } (считаются неотвеченными)
 lesson-score = опрос: с первой попытки { $first }, со второй { $second }, показано { $revealed }, пропущено { $skipped }, всего вопросов { $asked }

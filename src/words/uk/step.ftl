@@ -150,12 +150,13 @@ lesson-hint-misconception = схоже, що { $what }
 lesson-hint-is-written = цей піксель проходить тест глибини: порівняйте його точне z зі збереженим значенням ще раз
 lesson-hint-is-not-written = цей піксель не проходить тест глибини: порівняйте його точне z зі збереженим значенням ще раз
 lesson-hint-centre-on-boundary = центр лежить точно на межі багатокутника: яке правило його вирішує?
-lesson-hint-column-outside = ви взяли стовпець, центр якого лежить поза відрізком
-lesson-hint-column-left-out = ви пропустили стовпець, центр якого лежить усередині відрізка
-lesson-hint-other = обчисліть z у центрі пікселя за площиною, порівняйте зі збереженим значенням, потім округліть
 lesson-right = { $said }: правильно. { $why }
 lesson-right-second = { $said }: правильно з другої спроби. { $why }
 lesson-try-again = { $said }: ще ні: { $hint } (ще одна спроба)
+lesson-hint-neighbouring-row = це стовпці сусіднього рядка, нижче чи вище: цей рядок розгортки — y = рядок + ½
+lesson-hint-rounded-up = схоже, ви округлили вгору: z-буфер зберігає найближче ціле (половини вгору)
+lesson-hint-half-down = схоже, ви округлили половину вниз: половини округлюються вгору
+lesson-try-again-plain = { $said }: ще ні (ще одна спроба)
 lesson-revealed = { $said }: знову неправильно. Відповідь: { $expected }: { $why }
 lesson-skipped = пропущено питань: { $count } (вважаються без відповіді)
 lesson-score = опитування: з першої спроби { $first }, з другої { $second }, показано { $revealed }, пропущено { $skipped }, усього питань { $asked }

@@ -150,12 +150,13 @@ lesson-hint-misconception = 看起来{ $what }
 lesson-hint-is-written = 该像素通过了深度测试：请再次比较它的精确 z 与存储值
 lesson-hint-is-not-written = 该像素没有通过深度测试：请再次比较它的精确 z 与存储值
 lesson-hint-centre-on-boundary = 有一个中心恰好位于多边形边界上：由哪条规则决定？
-lesson-hint-column-outside = 你算入了中心位于区间之外的列
-lesson-hint-column-left-out = 你漏掉了中心位于区间之内的列
-lesson-hint-other = 用平面方程计算像素中心的 z，与存储值比较，然后取整
 lesson-right = { $said }：正确。{ $why }
 lesson-right-second = { $said }：第二次尝试正确。{ $why }
 lesson-try-again = { $said }：还不对：{ $hint }（再试一次）
+lesson-hint-neighbouring-row = 这些是下一行或上一行的列：这条扫描线是 y = 行 + ½
+lesson-hint-rounded-up = 看起来你向上取整了：z 缓冲存储最接近的整数（一半向上）
+lesson-hint-half-down = 看起来你把一半向下取整了：一半应向上取整
+lesson-try-again-plain = { $said }：还不对（再试一次）
 lesson-revealed = { $said }：又错了。答案是 { $expected }：{ $why }
 lesson-skipped = 已跳过 { $count } 个问题（计为未回答）
 lesson-score = 测验：首次答对 { $first }，第二次答对 { $second }，显示答案 { $revealed }，跳过 { $skipped }，共 { $asked } 题

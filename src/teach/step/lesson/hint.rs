@@ -13,12 +13,14 @@ use crate::teach::step::{Question, parse_columns};
 
 use super::Hint;
 
-/// The kind of a wrong answer (judged already); `covered`, the columns the
-/// question's scanline covers.
-pub(super) fn hint(scene: &Scene, question: &Question, covered: &[u32], typed: &str) -> Hint {
+/// The kind of a wrong answer (judged already): named only where a known
+/// wrong rule gives exactly what was typed, else [`Hint::Other`] (a plain
+/// "not yet"). `covered`, the columns the question's scanline covers;
+/// `neighbours`, those the same polygon covers on the rows just below and above.
+pub(super) fn hint(scene: &Scene, question: &Question, covered: &[u32], neighbours: &[Vec<u32>], typed: &str) -> Hint {
     match question {
         Question::Coverage { stop, row } => match parse_columns(typed) {
-            Some(said) => coverage_hint(scene, stop.polygon, *row, covered, &said),
+            Some(said) => coverage_hint(scene, stop.polygon, *row, (covered, neighbours), &said),
             None => Hint::Other,
         },
         Question::Depth { pixel, .. } => depth_hint(scene, pixel, typed),
@@ -26,17 +28,29 @@ pub(super) fn hint(scene: &Scene, question: &Question, covered: &[u32], typed: &
     }
 }
 
-/// A coverage answer's kind of mistake: a differing column whose centre is
-/// on the polygon's boundary first, then columns taken in, then left out.
-fn coverage_hint(scene: &Scene, polygon: usize, row: u32, covered: &[u32], said: &[u32]) -> Hint {
+/// A coverage answer's kind of mistake: only centres on the polygon's
+/// boundary decided the other way (every differing column's centre lies on
+/// it), or the columns of the row just below or above; else none.
+fn coverage_hint(
+    scene: &Scene,
+    polygon: usize,
+    row: u32,
+    (covered, neighbours): (&[u32], &[Vec<u32>]),
+    said: &[u32],
+) -> Hint {
     let vertices = scene.polygons[polygon].vertices();
     let taken_in = said.iter().filter(|x| !covered.contains(x));
     let left_out = covered.iter().filter(|x| !said.contains(x));
     // Whether the centre lies on the boundary is a fact: asked of `boundary_at`, not worded.
-    if taken_in.clone().chain(left_out).any(|&x| boundary_at(&vertices, x, row).is_some()) {
+    if taken_in.chain(left_out).all(|&x| boundary_at(&vertices, x, row).is_some()) {
         return Hint::CentreOnBoundary;
     }
-    if taken_in.count() > 0 { Hint::ColumnOutside } else { Hint::ColumnLeftOut }
+    let mut said = said.to_vec();
+    said.sort_unstable();
+    if neighbours.iter().any(|columns| !columns.is_empty() && *columns == said) {
+        return Hint::NeighbouringRow;
+    }
+    Hint::Other
 }
 
 /// A depth answer's kind of mistake: a known wrong rule that gives exactly
@@ -60,6 +74,11 @@ pub(super) fn depth_hint(scene: &Scene, pixel: &PixelEvent, typed: &str) -> Hint
         if said == floor && floor != rounded {
             let half = z.minus(&floor) == Exact::Word(Q::new(1, 2));
             return Hint::Misconception(if half { Misconception::HalfDown } else { Misconception::Truncated });
+        }
+        // Rounded up where the nearest integer is below (z = 21/4 stored as 6).
+        let ceiling = floor.plus(&Exact::integer(1.into()));
+        if said == ceiling && ceiling != rounded && z != floor {
+            return Hint::RoundedUp;
         }
     }
     match written {

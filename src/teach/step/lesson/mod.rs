@@ -351,11 +351,21 @@ impl Lesson {
         let typed = typed.trim();
         let judged = self.held.with_dependent_mut(|scene, stepper| {
             let verdict = judge(lang, scene, stepper, &question, typed)?;
-            let covered: Vec<u32> = match &question {
-                Question::Coverage { stop, .. } => stepper.tracer().record(*stop).pixels.iter().map(|p| p.x).collect(),
-                _ => Vec::new(),
+            let (covered, neighbours): (Vec<u32>, Vec<Vec<u32>>) = match &question {
+                Question::Coverage { stop, row } => {
+                    let columns = |record: &crate::observe::trace::ScanlineRecord| {
+                        let mut x: Vec<u32> = record.pixels.iter().map(|p| p.x).collect();
+                        x.sort_unstable();
+                        x
+                    };
+                    let trace = stepper.tracer().trace(stop.polygon);
+                    let near = trace.scanlines.iter().filter(|r| r.row + 1 == *row || r.row == *row + 1).map(columns);
+                    let near = near.collect();
+                    (columns(stepper.tracer().record(*stop)), near)
+                }
+                _ => (Vec::new(), Vec::new()),
             };
-            let hint = (!verdict.right).then(|| hint(scene, &question, &covered, typed));
+            let hint = (!verdict.right).then(|| hint(scene, &question, &covered, &neighbours, typed));
             Ok::<_, String>((verdict, hint))
         });
         let (verdict, hint) = match judged {

@@ -94,13 +94,13 @@ pub enum Hint {
     IsWritten,
     /// The pixel is not written, and the answer writes it.
     IsNotWritten,
-    /// A centre exactly on the polygon's boundary decided the other way.
+    /// Only centres exactly on the polygon's boundary decided the other way.
     CentreOnBoundary,
-    /// A column whose centre lies outside every span taken in.
-    ColumnOutside,
-    /// A column whose centre lies inside a span left out.
-    ColumnLeftOut,
-    /// No known rule gives this value.
+    /// The columns of the row just below or above.
+    NeighbouringRow,
+    /// The depth rounded up where the nearest integer is below.
+    RoundedUp,
+    /// No known rule gives this answer: a plain "not yet".
     Other,
 }
 
@@ -108,13 +108,15 @@ impl Hint {
     /// The hint in one line of the reader's language (no value in it).
     pub fn text(self, lang: Lang) -> String {
         match self {
+            // The pixel's own numbers would give the answer away, and another's mislead: none.
+            Hint::Misconception(Misconception::HalfDown) => words!(lang, "lesson-hint-half-down"),
             Hint::Misconception(what) => words!(lang, "lesson-hint-misconception", what = what.words(lang)),
             Hint::IsWritten => words!(lang, "lesson-hint-is-written"),
             Hint::IsNotWritten => words!(lang, "lesson-hint-is-not-written"),
             Hint::CentreOnBoundary => words!(lang, "lesson-hint-centre-on-boundary"),
-            Hint::ColumnOutside => words!(lang, "lesson-hint-column-outside"),
-            Hint::ColumnLeftOut => words!(lang, "lesson-hint-column-left-out"),
-            Hint::Other => words!(lang, "lesson-hint-other"),
+            Hint::NeighbouringRow => words!(lang, "lesson-hint-neighbouring-row"),
+            Hint::RoundedUp => words!(lang, "lesson-hint-rounded-up"),
+            Hint::Other => String::new(),
         }
     }
 }
@@ -172,6 +174,7 @@ impl Said {
                 let key = if *second_try { "lesson-right-second" } else { "lesson-right" };
                 words!(lang, key, said = said, why = &verdict.why)
             }
+            Said::TryAgain { said, hint: Hint::Other } => words!(lang, "lesson-try-again-plain", said = said),
             Said::TryAgain { said, hint } => words!(lang, "lesson-try-again", said = said, hint = hint.text(lang)),
             Said::Revealed(verdict) => {
                 words!(lang, "lesson-revealed", said = &verdict.said, expected = &verdict.expected, why = &verdict.why)

@@ -123,15 +123,41 @@ fn an_equal_depth_written_is_named_not_strict() {
     assert_eq!(hint_of(&answer(&mut lesson, "2")), Hint::Misconception(Misconception::NotStrict));
 }
 
+/// Found by a student: for the triangle's row 10 (right: 28-29), `10-20`
+/// was told "a centre lies exactly on the polygon's boundary"; `6` for
+/// z = 21/4 got only "compute z … then round". A hint names a mistake only
+/// where a known wrong rule gives exactly the answer; otherwise "not yet".
 #[test]
-fn a_coverage_answer_gets_the_kind_of_its_wrong_columns() {
-    let mut lesson = lesson(QuizMode::Coverage);
-    // 15's centre lies on the triangle's left edge.
-    assert_eq!(hint_of(&answer(&mut lesson, "16-27")), Hint::CentreOnBoundary);
-    let mut lesson = self::lesson(QuizMode::Coverage);
-    assert_eq!(hint_of(&answer(&mut lesson, "15-28")), Hint::ColumnOutside);
-    let mut lesson = self::lesson(QuizMode::Coverage);
-    assert_eq!(hint_of(&answer(&mut lesson, "15-26")), Hint::ColumnLeftOut);
+fn a_hint_names_a_mistake_only_where_a_wrong_rule_gives_exactly_the_answer() {
+    // Row 15 covers 15 … 27, the centre of 15 on the left edge; row 14 covers 16 … 28.
+    let coverage = [
+        ("16-27", Hint::CentreOnBoundary),
+        ("16-28", Hint::NeighbouringRow),
+        ("15-26", Hint::Other),
+        ("15-28", Hint::Other),
+        ("10-20", Hint::Other),
+    ];
+    for (typed, hint) in coverage {
+        let mut lesson = lesson(QuizMode::Coverage);
+        assert_eq!(hint_of(&answer(&mut lesson, typed)), hint, "{typed}");
+    }
+    // (15, 15): z = 29/2, right 15.
+    let depth = [("14", Hint::Misconception(Misconception::HalfDown)), ("13", Hint::Other), ("12", Hint::Other)];
+    for (typed, hint) in depth {
+        let mut lesson = lesson(QuizMode::Depth);
+        assert_eq!(hint_of(&answer(&mut lesson, typed)), hint, "{typed}");
+    }
+    // A square at z = 21/4: right 5; 6 is rounded up.
+    let text = r#"{"width": 2, "height": 2, "polygons": [{"value": 1, "vertices": [[0, 0, 5.25], [2, 0, 5.25], [2, 2, 5.25], [0, 2, 5.25]]}]}"#;
+    let scene = Scene::from_json(Lang::En, text, std::path::Path::new("s.json")).unwrap();
+    for (typed, hint) in [("6", Hint::RoundedUp), ("7", Hint::Other)] {
+        let mut lesson = Lesson::new(scene.clone(), Arith::Exact, Some(QuizMode::Depth));
+        lesson.start(None);
+        assert_eq!(hint_of(&answer(&mut lesson, typed)), hint, "{typed}");
+    }
+    let mut lesson = lesson(QuizMode::Depth);
+    let said = answer(&mut lesson, "13").text(Lang::En, lesson.scene());
+    assert_eq!(said, "13: not yet (one more try)");
 }
 
 #[test]
