@@ -29,6 +29,8 @@ pub enum Flag {
     },
     /// `grade --points 0`.
     NoPoints,
+    /// `step --html --quiz`: the page's quiz is chosen on the page.
+    HtmlQuiz,
     /// A line of `step`'s line mode longer than it reads.
     LineTooLong {
         /// The longest line, in bytes.
@@ -87,6 +89,7 @@ impl Flag {
             Flag::AnswerWithoutBuffer { path: p } => zsim::words!(lang, "usage-answer-without-buffer", path = path(p)),
             Flag::IdentityColumn { column } => zsim::words!(lang, "usage-identity-column", column = *column),
             Flag::NoPoints => zsim::words!(lang, "usage-no-points"),
+            Flag::HtmlQuiz => zsim::words!(lang, "usage-html-quiz"),
             Flag::LineTooLong { max } => zsim::words!(lang, "usage-line-too-long", max = *max),
             Flag::GradeFolders { variants: true } => zsim::words!(lang, "usage-grade-variants-folder"),
             Flag::GradeFolders { variants: false } => zsim::words!(lang, "usage-grade-scene-and-class"),

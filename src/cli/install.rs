@@ -57,8 +57,24 @@ pub fn manual(lang: zsim::Lang, args: &ManualArgs, out: &mut dyn Write) -> Resul
 fn examples(name: &str) -> String {
     let words: Vec<&str> = name.split('-').skip(1).collect();
     let of_it = |line: &&str| line.split(' ').take(words.len()).eq(words.iter().copied());
-    let lines: Vec<&str> =
-        include_str!(concat!(env!("OUT_DIR"), "/examples.txt")).lines().filter(of_it).take(8).collect();
+    // Only examples whose files the package installs: every file read is one of `examples/`
+    // (a course's case or a test fixture is not installed, and its example would not run).
+    let installed_files = |line: &&str| {
+        let tokens: Vec<&str> = line.split(' ').collect();
+        tokens.iter().enumerate().all(|(k, token)| {
+            let written =
+                k > 0 && ["-o", "--output", "--dir", "--gradescope", "--prairielearn"].contains(&tokens[k - 1]);
+            let file =
+                token.contains('/') || [".json", ".txt", ".obj", ".csv", ".tga"].iter().any(|e| token.ends_with(e));
+            written || !file || token.starts_with("examples/")
+        })
+    };
+    let lines: Vec<&str> = include_str!(concat!(env!("OUT_DIR"), "/examples.txt"))
+        .lines()
+        .filter(of_it)
+        .filter(installed_files)
+        .take(8)
+        .collect();
     // The examples as the package installs them (`/usr/share/doc/zsim/examples`), so that each
     // runs from any folder; the guide's run from a clone, where they are `examples/`.
     let installed = |line: &str| line.replace(" examples/", " /usr/share/doc/zsim/examples/");
@@ -77,7 +93,13 @@ fn page_and_subpages(command: &clap::Command, pages: &mut Vec<(String, Vec<u8>)>
     let man = clap_mangen::Man::new(command.clone());
     let mut page = Vec::new();
     man.render(&mut page)?;
-    page.extend(examples(command.get_display_name().unwrap_or("zsim")).into_bytes());
+    let name = command.get_display_name().unwrap_or("zsim");
+    page.extend(examples(name).into_bytes());
+    // The stepper's keys, from the lesson's one table of them.
+    if name == "zsim-step" {
+        let keys = zsim::lesson::Command::keys_text(zsim::Lang::En).replace('\\', "\\e").replace('-', "\\-");
+        page.extend(format!(".SH KEYS\n{keys}\n").into_bytes());
+    }
     pages.push((man.get_filename(), page));
     for sub in command.get_subcommands().filter(|s| !s.is_hide_set()) {
         page_and_subpages(sub, pages)?;

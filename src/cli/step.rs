@@ -76,8 +76,8 @@ impl zsim::Refusal for Unreached {
 pub struct StepArgs {
     /// The scene file (JSON), or - for standard input.
     scene: PathBuf,
-    /// Show one step of this polygon (number from 1, or name) and exit; needs --scanline.
-    #[arg(long, value_name = "N|NAME", requires = "scanline")]
+    /// Show one step of this polygon (number from 1, or name) and exit: its scanline --scanline, else its first; with --quiz, start there.
+    #[arg(long, value_name = "N|NAME")]
     polygon: Option<String>,
     /// The row of the scanline to show (the scanline is at y = row + 1/2); needs --polygon.
     #[arg(long, value_name = "Y", requires = "polygon")]
@@ -86,7 +86,7 @@ pub struct StepArgs {
     #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "depth", value_name = "depth|frame|coverage")]
     quiz: Option<QuizMode>,
     /// Write the stepper as one self-contained HTML page (-o FILE.html) instead of running it.
-    #[arg(long, requires = "output", conflicts_with_all = ["polygon", "quiz"])]
+    #[arg(long, requires = "output", conflicts_with = "polygon")]
     html: bool,
     /// The page to write, with --html.
     #[arg(short, long, value_name = "FILE.html", requires = "html")]
@@ -112,6 +112,9 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
     let scene = Scene::from_json(lang, &text, &args.scene)?;
     zsim::arith::check_supported(&scene, args.arith)?;
     let color = super::use_color();
+    if args.html && args.quiz.is_some() {
+        return Err(super::flags::Flag::HtmlQuiz.into());
+    }
     if let (true, Some(output)) = (args.html, &args.output) {
         let name = args.scene.file_name().map_or_else(|| zsim::shown_path(&args.scene), |n| n.to_string_lossy().into());
         // The playground where this zsim was built with it (exact arithmetic only); the recorded stepper otherwise.
@@ -137,19 +140,25 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
     }
     let mut lesson = Lesson::new(scene, args.arith, args.quiz.map(Into::into));
     let mut start = None;
-    if let (Some(spec), Some(row)) = (&args.polygon, args.scanline) {
+    if let Some(spec) = &args.polygon {
         let scene = lesson.scene();
         let polygon = scene.find_polygon(spec)?;
         let name = scene.polygons[polygon].name.clone();
         let (fate, rows, scanline) = lesson.with_stepper(|stepper| {
             let trace = stepper.tracer().trace(polygon);
             let rows = trace.scanlines.first().zip(trace.scanlines.last()).map(|(first, last)| (first.row, last.row));
-            (trace.fate, rows, trace.scanlines.iter().position(|r| r.row == row))
+            // The scanline asked for, else the polygon's first.
+            let scanline = match args.scanline {
+                Some(row) => trace.scanlines.iter().position(|r| r.row == row),
+                None => (!trace.scanlines.is_empty()).then_some(0),
+            };
+            (trace.fate, rows, scanline)
         });
         if fate_text(lang, fate).is_some() {
             return Err(Error::from(Unreached::NotDrawn { index: polygon, name, fate }).into());
         }
         let Some(scanline) = scanline else {
+            let row = args.scanline.unwrap_or(0);
             return Err(Error::from(Unreached::Row { index: polygon, name, row, rows }).into());
         };
         let stop = Stop { polygon, scanline };

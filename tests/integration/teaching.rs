@@ -742,3 +742,21 @@ fn a_line_past_its_bound_ends_the_lesson_with_its_score() {
     assert_eq!(stderr, "zsim: a line longer than 4096 bytes: the lesson ends here, with its score above\n");
     assert!(String::from_utf8(output.stdout).unwrap().contains("quiz: 0 right at the first try"));
 }
+
+/// Found by a teacher: `--quiz --polygon 2` was refused until a scanline was
+/// named, and `--html --quiz` in clap's bare words. A polygon alone starts at
+/// its first scanline; `--html --quiz` is said in the reader's language.
+#[test]
+fn a_polygon_alone_starts_at_its_first_scanline_and_html_quiz_is_said() {
+    let alone = zsim(&["step", "examples/rogers.json", "--polygon", "2"]);
+    assert_eq!(alone.code, 0, "{}", alone.stderr);
+    assert!(alone.stdout.contains("scanline y = 10.5 (row 10)"), "the triangle's first row: {}", alone.stdout);
+    let quiz = zsim_with_input(&["step", "examples/rogers.json", "--quiz", "--polygon", "2"], "q\n");
+    assert_eq!(quiz.code, 0, "{}", quiz.stderr);
+    assert!(quiz.stdout.contains("scanline y = 10.5 (row 10)"), "{}", quiz.stdout);
+    let html = zsim(&["step", "examples/rogers.json", "--html", "--quiz", "-o", "never.html"]);
+    assert_eq!(html.code, 2);
+    assert!(html.stderr.starts_with("zsim: --html writes a page whose quiz"), "{}", html.stderr);
+    let russian = zsim(&["step", "examples/rogers.json", "--html", "--quiz", "-o", "never.html", "--lang", "ru"]);
+    assert!(russian.stderr.starts_with("zsim: --html записывает страницу"), "{}", russian.stderr);
+}

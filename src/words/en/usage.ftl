@@ -65,3 +65,4 @@ usage-same-answer-twice = { $path }: { $files } answer for the same buffer of th
 grade-left-out-of-import = left out of the gradebook: "{ $first }" and "{ $second }" are one student to a gradebook (the same cell, without case): rename one and import their rows again
 usage-answer-without-buffer = { $path } is an answer: name it with --frame { $path } or --depth { $path }
 usage-line-too-long = a line longer than { $max } bytes: the lesson ends here, with its score above
+usage-html-quiz = --html writes a page whose quiz, where it has one (the playground's, beside its stepper), is turned on in the page itself: leave out --quiz
