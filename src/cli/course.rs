@@ -25,10 +25,8 @@ pub fn exercise(lang: Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<
     let roster_path = args.roster.as_deref().expect("called with --roster");
     let roster = zsim::course::roster::load(lang, roster_path, args.identity.as_deref())?;
     let exercise = super::exercise::spec(args)?;
-    let rules = match &args.rules {
-        Some(list) => zsim::course::fair::parse_rules(list)?,
-        None => default_rules(&exercise.hard),
-    };
+    let rules =
+        args.rules.as_deref().map_or_else(|| Ok(default_rules(&exercise.hard)), zsim::course::fair::parse_rules)?;
     let hand_in = zsim::course::fair::parse_hand_in(&args.hand_in)?;
     let spec = ClassSpec { exercise, times: args.times, distinct: args.distinct, rules, hand_in };
     let manifest = make_class(lang, &spec, &roster, &args.reseed)?;
@@ -42,11 +40,8 @@ pub fn exercise(lang: Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<
     let handouts = Handouts { lang, manifest: &manifest, formats: &args.formats, site: args.site.as_deref() };
     let mut plan = zsim::Plan::new(&[roster_path], zsim::Replace::Never);
     let listed = zsim::course::folders::plan(&handouts, dir, format!("{table}\n"), &mut plan);
-    let mut text = format!("{}\n{table}\n", manifest.summary(lang));
-    text.push_str(&format!(
-        "{}\n",
-        zsim::words!(lang, "file-written-in", files = listed.join(", "), path = zsim::shown_path(dir))
-    ));
+    let written = zsim::words!(lang, "file-written-in", files = listed.join(", "), path = zsim::shown_path(dir));
+    let mut text = format!("{}\n{table}\n{written}\n", manifest.summary(lang));
     let json = manifest.to_json();
     if let Some(folder) = &args.gradescope {
         let files = zsim::course::platforms::gradescope_autograder(&json, args.visibility.name(), args.points, lang);
