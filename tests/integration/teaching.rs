@@ -628,7 +628,7 @@ fn quiz_asks_again_for_a_number_the_z_buffer_cannot_hold() {
     assert!(run.stdout.contains("7/2 does not fit this z-buffer"), "{}", run.stdout);
     assert!(run.stdout.contains("  15 (the value written): right."), "{}", run.stdout);
     assert!(
-        run.stdout.ends_with("quiz: 1 right at the first try, 0 at the second, 0 shown, 0 skipped, of 1 questions\n"),
+        run.stdout.ends_with("quiz: 1 right at the first try, 0 at the second, 0 shown, 0 skipped, of 1 question\n"),
         "{}",
         run.stdout
     );

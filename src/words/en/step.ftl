@@ -160,7 +160,10 @@ lesson-hint-half-down = it looks as if you rounded a half down: halves round up
 lesson-try-again-plain = { $said }: not yet (one more try)
 lesson-revealed = { $said }: wrong again. The answer is { $expected }: { $why }
 lesson-skipped = skipped: { $count } questions (counted as not answered)
-lesson-score = quiz: { $first } right at the first try, { $second } at the second, { $revealed } shown, { $skipped } skipped, of { $asked } questions
+lesson-score = quiz: { $first } right at the first try, { $second } at the second, { $revealed } shown, { $skipped } skipped, of { $asked ->
+    [one] { $asked } question
+   *[other] { $asked } questions
+  }
 lesson-ask-coverage = { $polygon }, scanline { $scanline }: which columns' centres does it cover? (columns as first-last, e.g. 3-7, or - for none)
 lesson-ask-depth = pixel ({ $x }, { $y }), stored { $stored }: the z-buffer after? (a value, or - if not written)
 lesson-ask-frame = pixel ({ $x }, { $y }), framebuffer { $before }: the framebuffer after? (a value, or - if not written)

@@ -113,16 +113,28 @@ struct QuizState {
     wrong_tries: u8,
     score: Score,
     mistakes: Vec<Mistake>,
+    /// The stops whose questions all ended (answered, shown or skipped):
+    /// come back to, they show their answers and ask nothing, so that no
+    /// question counts twice.
+    ended: std::collections::BTreeSet<Stop>,
 }
 
 impl QuizState {
-    /// Moves the questions to `stop`: a stop left and come back to is asked again.
+    /// Moves the questions to `stop`: a stop whose questions ended shows its answers.
     fn at(&mut self, stop: Option<Stop>) {
         if self.stop != stop {
             self.stop = stop;
-            self.coverage_done = false;
-            self.pixels_done = 0;
+            let ended = stop.is_some_and(|stop| self.ended.contains(&stop));
+            self.coverage_done = ended;
+            self.pixels_done = if ended { usize::MAX } else { 0 };
             self.wrong_tries = 0;
+        }
+    }
+
+    /// The current stop's questions all ended.
+    fn end_stop(&mut self) {
+        if let Some(stop) = self.stop {
+            self.ended.insert(stop);
         }
     }
 }
@@ -147,6 +159,7 @@ impl Lesson {
             wrong_tries: 0,
             score: Score::default(),
             mistakes: Vec::new(),
+            ended: std::collections::BTreeSet::new(),
         });
         Lesson { held, quiz }
     }
@@ -297,6 +310,11 @@ impl Lesson {
             return self.answer(lang, typed);
         }
         if command == Command::Quit {
+            // A question answered once and still open counts, as not answered right.
+            if let Some(quiz) = self.quiz.as_mut().filter(|quiz| quiz.wrong_tries > 0) {
+                quiz.score.skipped += 1;
+                quiz.wrong_tries = 0;
+            }
             return Said::Quit;
         }
         if command == Command::Skip {
@@ -343,6 +361,7 @@ impl Lesson {
         quiz.coverage_done = true;
         quiz.pixels_done = usize::MAX;
         quiz.wrong_tries = 0;
+        quiz.end_stop();
         Said::Skipped(open)
     }
 
@@ -399,6 +418,11 @@ impl Lesson {
         match question {
             Question::Coverage { .. } => quiz.coverage_done = true,
             Question::Depth { .. } | Question::Frame { .. } => quiz.pixels_done += 1,
+        }
+        if self.open_questions() == 0
+            && let Some(quiz) = self.quiz.as_mut()
+        {
+            quiz.end_stop();
         }
         said
     }

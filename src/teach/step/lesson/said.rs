@@ -217,11 +217,11 @@ impl Score {
         words!(
             lang,
             "lesson-score",
-            first = self.first_try.to_string(),
-            second = self.second_try.to_string(),
-            revealed = self.revealed.to_string(),
-            skipped = self.skipped.to_string(),
-            asked = self.asked().to_string()
+            first = self.first_try,
+            second = self.second_try,
+            revealed = self.revealed,
+            skipped = self.skipped,
+            asked = self.asked()
         )
     }
 }

@@ -240,3 +240,32 @@ fn a_skip_with_nothing_open_says_so_and_counts_nothing() {
     assert_eq!(said.text(Lang::En, lesson.scene()), "no question is open here: nothing to skip");
     assert_eq!(lesson.score(), None);
 }
+
+/// Found by a student: a question whose answer was shown was asked again
+/// when its scanline was come back to, and then counted as right at the
+/// first try; one answered once and left open at `q` was not counted; and
+/// the score said "of 1 questions".
+#[test]
+fn each_question_counts_once_come_back_to_or_left_open_at_quit() {
+    let mut lesson = lesson(QuizMode::Depth);
+    assert!(matches!(answer(&mut lesson, "14"), Said::TryAgain { .. }));
+    assert!(matches!(answer(&mut lesson, "13"), Said::Revealed(_)));
+    assert!(matches!(lesson.act(Lang::En, Command::Skip), Said::Skipped(12)));
+    assert!(matches!(lesson.act(Lang::En, Command::Next), Said::Moved(Moved::To { .. })));
+    assert!(matches!(lesson.act(Lang::En, Command::Skip), Said::Skipped(_)));
+    let before = lesson.score();
+    assert!(matches!(lesson.act(Lang::En, Command::Back), Said::Moved(Moved::To { .. })));
+    assert_eq!(lesson.at(), Some(TRIANGLE_15));
+    assert_eq!(lesson.open_questions(), 0, "its questions ended: its answers are shown");
+    assert!(matches!(answer(&mut lesson, "15"), Said::NothingAsked(_)));
+    assert_eq!(lesson.score(), before);
+    let mut lesson = self::lesson(QuizMode::Depth);
+    assert!(matches!(answer(&mut lesson, "14"), Said::TryAgain { .. }));
+    assert!(matches!(lesson.act(Lang::En, Command::Quit), Said::Quit));
+    let score = lesson.score().unwrap();
+    assert_eq!((score.skipped, score.asked()), (1, 1));
+    assert_eq!(
+        score.text(Lang::En),
+        "quiz: 0 right at the first try, 0 at the second, 0 shown, 1 skipped, of 1 question"
+    );
+}
