@@ -163,9 +163,6 @@
     renderPolygons(object);
     renderGrid(object);
     $("notes").replaceChildren(...view.notes.map((n) => el("p", n, "help")));
-    $("framebuffer").textContent = view.framebuffer;
-    $("zbuffer").textContent = view.zbuffer;
-    renderAfter();
     renderLesson();
     renderHomeworkChoices();
     renderFigure();
@@ -176,6 +173,7 @@
   // The figure, drawn by the library when its section is open.
   function renderFigure() {
     if (!$("figureBox").open || !lesson) return;
+    if (lessonState && lessonState.buffersHidden) { $("figure").replaceChildren(el("p", lessonState.buffersHidden, "help")); return; }
     const figure = JSON.parse(lesson.figure());
     if (figure.ok) $("figure").innerHTML = figure.svg;
     else $("figure").replaceChildren(el("p", figure.error, "help"));
@@ -407,7 +405,7 @@
     $("explain").textContent = result.ok ? result.text : result.error;
     const grid = $("grid");
     grid.querySelectorAll(".picked").forEach((e) => e.remove());
-    picked = result.ok ? { x: Number(x), y: Number(y) } : null;
+    picked = result.ok || result.hidden ? { x: Number(x), y: Number(y) } : null;
     if (picked) grid.appendChild(svg("rect", { x: picked.x, y: view.height - 1 - picked.y, width: 1, height: 1, class: "picked" }));
   }
 
@@ -419,9 +417,21 @@
     select.replaceChildren(...view.polygons.slice(0, count).map((p, i) => { const o = el("option", p.label); o.value = i; return o; }));
     select.value = chosen;
     const after = count && lesson ? JSON.parse(lesson.after(chosen)) : { ok: false };
-    $("afterHeading").textContent = after.ok ? `${after.heading} — ${after.counts}` : "";
-    $("afterFrame").textContent = after.ok ? after.frame : "";
-    $("afterDepth").textContent = after.ok ? after.depth : "";
+    // While a question is open the library's words stand in for what would answer it.
+    const hidden = lessonState && lessonState.buffersHidden;
+    $("afterHeading").textContent = after.ok && !hidden ? `${after.heading} — ${after.counts}` : "";
+    $("afterFrame").textContent = hidden || (after.ok ? after.frame : "");
+    $("afterDepth").textContent = hidden || (after.ok ? after.depth : "");
+  }
+
+  // The final buffers and the buffers after each polygon, or the words that stand in for them.
+  function renderBuffers() {
+    const hidden = lessonState && lessonState.buffersHidden;
+    $("framebuffer").textContent = hidden || view.framebuffer;
+    $("zbuffer").textContent = hidden || view.zbuffer;
+    renderAfter();
+    if ($("figureBox").open) renderFigure();
+    if (picked) explainPixel(picked.x, picked.y);
   }
 
   // What the lesson shows now, already cut by the library to what may be shown.
@@ -431,6 +441,7 @@
     $("answerForm").hidden = !asking;
     $("skip").hidden = !quizMode();
     $("score").textContent = s && s.score ? s.score : "";
+    if (view && view.ok) renderBuffers();
     drawLesson();
     if (!s || !s.at) {
       box.replaceChildren(el("p", s && s.end ? s.end : ""));

@@ -317,6 +317,41 @@ fn a_students_link_saves_the_homework_that_grade_scores_as_the_page_did() {
     crate::ran("a student's link, saved and graded", &format!("score {score}"));
 }
 
+/// Found by a student: with the quiz on, the page showed what it asked: the
+/// asked pixel's history on a click, the final buffers and the buffers after
+/// each polygon. While a question is open they are hidden, the library's
+/// words in their place; once the scanline's questions are skipped, the
+/// final buffers are `run --final`'s and the clicked pixel's history shows.
+#[test]
+#[ignore = "needs Chromium, chromedriver and web/build's site (target/web)"]
+fn while_a_question_is_open_the_page_shows_nothing_that_answers_it() {
+    let (driver, browser, dir, port) = served("playground-quiz-hidden");
+    let book = std::fs::read_to_string(manifest().join("examples/rogers.json")).unwrap();
+    let (frame, _) = run_final(&book, &dir);
+    let hidden = "hidden until this scanline's questions are answered or skipped";
+    runtime().block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
+        client.goto(&format!("http://127.0.0.1:{port}/#polygon=2&scanline=15&quiz=depth")).await.unwrap();
+        text_when(&client, "#prompt", |t| t.contains("pixel (15, 15)")).await;
+        for id in ["framebuffer", "zbuffer", "afterFrame", "afterDepth"] {
+            assert_eq!(inner_text(&client, id).await, hidden, "#{id} while (15, 15) is asked");
+        }
+        // (20, 15), asked later on this scanline (the crossing's mark lies over (15, 15)).
+        client.find(Locator::Css("rect.cell[data-x='20'][data-y='15']")).await.unwrap().click().await.unwrap();
+        assert_eq!(text_when(&client, "#explain", |t| !t.is_empty()).await, hidden);
+        click(&client, "#skip").await;
+        let start = Instant::now();
+        while inner_text(&client, "framebuffer").await == hidden && start.elapsed() < Duration::from_secs(10) {
+            tokio::time::sleep(Duration::from_millis(50)).await;
+        }
+        assert_eq!(inner_text(&client, "framebuffer").await, frame, "the final framebuffer, once nothing is asked");
+        let history = text_when(&client, "#explain", |t| t.contains("43/4")).await;
+        assert!(history.contains("43/4 ≈ 10.75 > 10 stored, so 11 is stored"), "{history}");
+        client.close().await.unwrap();
+    });
+    crate::ran("the page while a question is open", "the book's (20, 15)");
+}
+
 /// Found by a student: `#pixel=0,32` (one past the book's raster) panicked
 /// the module and the page stopped answering until a reload. It is said as
 /// `zsim explain` says it, and the page still answers a click.

@@ -116,10 +116,11 @@ impl WebLesson {
         playground::after_of(self.lang, self.lesson.scene(), index).to_string()
     }
 
-    /// See [`playground::explain_typed`]: of the scene the lesson read, the
-    /// pixel as the address or a click gives it (text, never wrapped to 32 bits).
-    pub fn explain(&self, x: &str, y: &str) -> String {
-        playground::explain_typed(self.lang, self.lesson.scene(), x, y).to_string()
+    /// See [`playground::lesson_explain`]: of the scene the lesson read, the
+    /// pixel as the address or a click gives it (text, never wrapped to 32
+    /// bits), hidden while a question is open.
+    pub fn explain(&mut self, x: &str, y: &str) -> String {
+        playground::lesson_explain(self.lang, &mut self.lesson, x, y).to_string()
     }
 
     /// See [`playground::figure`]: of the scene the lesson read.

@@ -310,7 +310,7 @@ pub fn lesson_state(lang: Lang, lesson: &mut Lesson) -> Value {
             ),
         };
         return json!({"at": null, "end": end, "asking": asking, "prompt": prompt,
-                      "score": score.map(|s| s.text(lang)), "open": open});
+                      "score": score.map(|s| s.text(lang)), "open": open, "buffersHidden": null});
     };
     // The buffers' rows around the scanline, numbered as the line mode prints them, its row
     // marked `▶`; and the whole framebuffer's cells for the raster's colours.
@@ -350,6 +350,9 @@ pub fn lesson_state(lang: Lang, lesson: &mut Lesson) -> Value {
         "crossings": view.crossings, "spans": view.spans, "spanDepths": view.span_depths,
         "columns": view.columns, "rows": rows, "hidden": view.hidden, "notes": view.notes,
         "asking": asking, "prompt": prompt, "secondTry": lesson.second_try(), "open": open,
+        // While a question is open, what would answer it elsewhere on the page (the final buffers,
+        // the buffers after each polygon, the figure) is hidden: these words stand in their place.
+        "buffersHidden": (open > 0).then(|| words!(lang, "lesson-hidden-until-answered")),
         "score": score.map(|s| s.text(lang)),
         "frame": frame, "depth": depth, "cells": cells, "crossingsX": crossings_x, "askedX": asked_x,
     })
@@ -438,6 +441,15 @@ pub fn explain(lang: Lang, text: &str, x: u32, y: u32) -> Value {
         Ok(scene) => explain_of(lang, &scene, x, y),
         Err(error) => error,
     }
+}
+
+/// [`explain_typed`] of the lesson's scene, but hidden while a question of
+/// the lesson is open: any pixel's history would answer it or a later one.
+pub fn lesson_explain(lang: Lang, lesson: &mut Lesson, x: &str, y: &str) -> Value {
+    if lesson.open_questions() > 0 {
+        return json!({"ok": false, "hidden": true, "error": words!(lang, "lesson-hidden-until-answered")});
+    }
+    explain_typed(lang, lesson.scene(), x, y)
 }
 
 /// [`explain_of`] of a pixel given as the page's address or a click gives
@@ -656,6 +668,22 @@ mod tests {
         assert_eq!(said("1.5", "0")["error"], "\"1.5\" is not a pixel coordinate");
         assert_eq!(said("20", "15")["ok"], true);
         assert!(said("20", "15")["text"].as_str().unwrap().contains("43/4 ≈ 10.75"));
+    }
+
+    /// Found by a student: with the quiz on, the page showed what it asked
+    /// (the asked pixel's history, the final buffers). While a question is
+    /// open the history is hidden and the state says what stands in for the
+    /// buffers; once the scanline's questions end, both are shown.
+    #[test]
+    fn while_a_question_is_open_the_history_and_the_buffers_are_hidden() {
+        let mut lesson = lesson(Lang::En, BOOK, Some(QuizMode::Depth), Some((2, 15))).unwrap();
+        let hidden = "hidden until this scanline's questions are answered or skipped";
+        assert_eq!(lesson_explain(Lang::En, &mut lesson, "15", "15")["error"], hidden);
+        assert_eq!(lesson_explain(Lang::En, &mut lesson, "0", "0")["hidden"], true);
+        assert_eq!(lesson_state(Lang::En, &mut lesson)["buffersHidden"], hidden);
+        lesson_act(Lang::En, &mut lesson, r#"{"key": "s"}"#);
+        assert_eq!(lesson_state(Lang::En, &mut lesson)["buffersHidden"], Value::Null);
+        assert!(lesson_explain(Lang::En, &mut lesson, "15", "15")["text"].as_str().unwrap().contains("29/2"));
     }
 
     /// A scene's error is the command line's, naming the scene and the place.

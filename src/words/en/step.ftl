@@ -187,3 +187,4 @@ legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
 lesson-nothing-to-skip = no question is open here: nothing to skip
 step-line-not-text = that line is not text (UTF-8): type it again
+lesson-hidden-until-answered = hidden until this scanline's questions are answered or skipped

@@ -183,3 +183,4 @@ legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
 lesson-nothing-to-skip = здесь нет открытых вопросов: пропускать нечего
 step-line-not-text = эта строка — не текст (UTF-8): введите её снова
+lesson-hidden-until-answered = скрыто, пока на вопросы этой строки не ответят или их не пропустят

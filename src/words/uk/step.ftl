@@ -183,3 +183,4 @@ legend-value = { $value }
 lesson-said-meant = { $said } ({ $meant })
 lesson-nothing-to-skip = тут немає відкритих питань: пропускати нічого
 step-line-not-text = цей рядок — не текст (UTF-8): введіть його знову
+lesson-hidden-until-answered = приховано, доки на питання цього рядка не дадуть відповіді або їх не пропустять

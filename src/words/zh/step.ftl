@@ -183,3 +183,4 @@ legend-value = { $value }
 lesson-said-meant = { $said }（{ $meant }）
 lesson-nothing-to-skip = 这里没有未答的问题：无需跳过
 step-line-not-text = 这一行不是文本（UTF-8）：请重新输入
+lesson-hidden-until-answered = 在回答或跳过本扫描线的问题之前隐藏

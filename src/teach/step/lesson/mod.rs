@@ -89,7 +89,7 @@ pub struct StopView {
     pub columns: Vec<u32>,
     /// The rows of the covered pixels that may be shown.
     pub rows: Vec<PixelRow>,
-    /// How many covered pixels are hidden after them.
+    /// How many covered pixels are hidden after them (0 while coverage is asked).
     pub hidden: usize,
     /// The boundary centres' rules and an inexact arithmetic's values (once nothing is hidden).
     pub notes: Vec<String>,
@@ -290,7 +290,8 @@ impl Lesson {
                 span_depths: if everything { span_lines(lang, scene, &record) } else { Vec::new() },
                 columns: if showing.spans { record.pixels.iter().map(|p| p.x).collect() } else { Vec::new() },
                 rows: pixel_rows(lang, scene, shown),
-                hidden: record.pixels.len() - shown.len(),
+                // While coverage is asked, how many pixels are covered is the answer's length: not said.
+                hidden: if showing.spans { record.pixels.len() - shown.len() } else { 0 },
                 notes: if everything { notes(lang, scene, stop.polygon, &record, arith) } else { Vec::new() },
             })
         })
