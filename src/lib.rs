@@ -154,5 +154,5 @@ pub use teach::grade::{class, gradebooks, gradescope};
 pub use teach::step::{lesson, page, stop};
 pub use teach::{check, course, exercise, grade, page_limits, playground, step};
 pub use words::{
-    Arg, Lang, localize_decimal, polygon_label, printable, shown_name, shown_path, text as message, token,
+    Arg, Lang, localize_decimal, own_name, polygon_label, printable, shown_name, shown_path, text as message, token,
 };

@@ -314,7 +314,7 @@ fn write_feedback(
     (scene, args): (&Scene, &Plain<'_>),
     class: &ClassGrades,
 ) -> Result<(), Error> {
-    let last = class.last;
+    let (last, shown) = (class.last, zsim::own_name(&args.scene));
     // The scene's buffers and wrong rules drawn once for the class, each student's files found once: a
     // class of thousands costs what its students cost, not their square.
     let prepared = zsim::check::Prepared::new(scene, last);
@@ -334,7 +334,7 @@ fn write_feedback(
                 lang,
                 "grade-feedback",
                 student = &grade.student,
-                scene = zsim::shown_path(&args.scene),
+                scene = zsim::shown_name(&args.scene),
                 polygon = polygon_after(lang, scene, last),
                 score = zsim::localize_decimal(lang, grade.percent()),
                 status = grade.status.words(lang)
@@ -349,12 +349,12 @@ fn write_feedback(
             let mut answers = Vec::new();
             for file in files_of.get(grade.student.as_str()).into_iter().flatten() {
                 match read_answer(lang, &file.path, scene, file.buffer, zsim::Links::Refuse) {
-                    Ok(matrix) => answers.push((file.buffer, file.path.as_path(), matrix)),
+                    Ok(matrix) => answers.push((file.buffer, zsim::own_name(&file.path), matrix)),
                     Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(lang, &error, &file.path))),
                 }
             }
             if !answers.is_empty() {
-                let report = check_with(lang, scene, &args.scene, last, answers, Arith::Exact, Some(prepared))?;
+                let report = check_with(lang, scene, shown, last, answers, Arith::Exact, Some(prepared))?;
                 text.push_str(&report_text(lang, &report));
             }
             Ok(text.into_bytes())

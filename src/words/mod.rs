@@ -211,7 +211,7 @@ macro_rules! words {
 mod shown;
 mod system;
 
-pub use shown::{name as shown_name, path as shown_path, printable};
+pub use shown::{name as shown_name, own_name, path as shown_path, printable};
 pub use system::{fact, io_reason, json_reason};
 
 /// How many characters of a token from a file a message quotes.

@@ -58,6 +58,13 @@ pub fn name(file: &Path) -> String {
     path(file.file_name().map_or(file, Path::new))
 }
 
+/// A file's own name as a path (`class/ana.frame.txt` → `ana.frame.txt`):
+/// how a student's report names the files they handed in, never where the
+/// teacher keeps them.
+pub fn own_name(path: &std::path::Path) -> &std::path::Path {
+    path.file_name().map_or(path, std::path::Path::new)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -105,17 +105,15 @@ fn grade_writes_each_student_checks_explanation() {
     let run = zsim(&["grade", "examples/rogers.json", path(&class), "--format", "csv", "-o", path(&feedback)]);
     assert_eq!(run.code, 1);
     let bo = std::fs::read_to_string(feedback.join("bo.feedback.txt")).unwrap();
-    let check = zsim(&[
-        "check",
-        "examples/rogers.json",
-        "--frame",
-        path(&class.join("bo.frame.txt")),
-        "--depth",
-        path(&class.join("bo.depth.txt")),
-    ]);
+    // Checked where the student's files are: the feedback names them and the scene by their own
+    // names, never where the teacher keeps them.
+    let rogers = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/rogers.json");
+    let check =
+        crate::zsim_in(Some(&class), &["check", path(&rogers), "--frame", "bo.frame.txt", "--depth", "bo.depth.txt"]);
     let (heading, rest) = bo.split_once('\n').unwrap();
-    assert_eq!(heading, "bo: examples/rogers.json after polygon 2 \"triangle\": score 99.7 %, wrong");
+    assert_eq!(heading, "bo: rogers.json after polygon 2 \"triangle\": score 99.7 %, wrong");
     assert_eq!(rest, check.stdout, "the feedback is what `zsim check` says");
+    assert!(!bo.contains(path(&class)), "no teacher's path in the feedback: {bo}");
     let di = std::fs::read_to_string(feedback.join("di.feedback.txt")).unwrap();
     assert!(di.contains("di.frame.txt: line 1, value 3 (x = 2, y = 31): \"x\" is not a whole number"), "{di}");
     assert!(di.contains("di.depth.txt: all 1024 cells match"), "the answer that was read is still checked: {di}");
@@ -145,10 +143,7 @@ fn grade_speaks_the_language_but_csv_and_json_do_not_change() {
     );
     assert!(run.stdout.contains("| z-буфер | 20 | 17 | 2 из 5   | 10    | 11 (2×)"), "{}", run.stdout);
     let bo = std::fs::read_to_string(feedback.join("bo.feedback.txt")).unwrap();
-    assert!(
-        bo.starts_with("bo: examples/rogers.json, после многоугольника 2 «triangle»: 99,7 %, с ошибками\n"),
-        "{bo}"
-    );
+    assert!(bo.starts_with("bo: rogers.json, после многоугольника 2 «triangle»: 99,7 %, с ошибками\n"), "{bo}");
     for format in ["csv", "json"] {
         let english = zsim(&["grade", "examples/rogers.json", path(&class), "--format", format]).stdout;
         for lang in ["ru", "uk", "zh"] {
