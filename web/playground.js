@@ -155,10 +155,11 @@
 
   function render() {
     const object = parsed() || {};
-    for (const [id, key] of [["width", "width"], ["height", "height"], ["frameBits", "frame_bits"], ["depthBits", "depth_bits"]]) {
-      if (document.activeElement !== $(id)) $(id).value = object[key] === undefined ? { width: 32, height: 32, frame_bits: 2, depth_bits: 4 }[key] : object[key];
+    // The settings as the library draws the scene (a preset's and the defaults resolved).
+    for (const id of ["width", "height", "frameBits", "depthBits"]) {
+      if (document.activeElement !== $(id)) $(id).value = view.settings[id];
     }
-    $("depthTest").value = object.depth_test || "greater";
+    $("depthTest").value = view.settings.depthTest;
     $("rules").value = typeof object.rules === "string" ? object.rules : "";
     renderPolygons(object);
     renderGrid(object);

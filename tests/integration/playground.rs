@@ -352,6 +352,31 @@ fn while_a_question_is_open_the_page_shows_nothing_that_answers_it() {
     crate::ran("the page while a question is open", "the book's (20, 15)");
 }
 
+/// Found by a maintainer: the page showed `depth_test || "greater"`, its own
+/// default, though a `"rules": "buet"` scene draws with `less`. The fields
+/// show the settings as the library draws the scene.
+#[test]
+#[ignore = "needs Chromium, chromedriver and web/build's site (target/web)"]
+fn the_pages_fields_show_the_settings_as_the_library_draws_the_scene() {
+    let (driver, browser, dir, port) = served("playground-settings");
+    let buet = r#"{"width": 8, "height": 4, "rules": "buet", "polygons": [{"value": 1, "vertices": [[0, 0, 1], [8, 0, 1], [0, 4, 1]]}]}"#;
+    runtime().block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
+        client.goto(&format!("http://127.0.0.1:{port}/#{}", playground::fragment_of(buet))).await.unwrap();
+        shown_buffers(&client).await;
+        let value = |id: &'static str| {
+            let client = client.clone();
+            async move {
+                let script = format!("return document.getElementById('{id}').value;");
+                client.execute(&script, vec![]).await.unwrap().as_str().unwrap().to_string()
+            }
+        };
+        assert_eq!(value("depthTest").await, "less", "buet's depth test");
+        assert_eq!((value("width").await, value("frameBits").await), ("8".to_string(), "2".to_string()));
+        client.close().await.unwrap();
+    });
+}
+
 /// Found by a student: `#pixel=0,32` (one past the book's raster) panicked
 /// the module and the page stopped answering until a reload. It is said as
 /// `zsim explain` says it, and the page still answers a click.

@@ -152,6 +152,9 @@ pub fn view_of(lang: Lang, scene: &Scene) -> Value {
     json!({
         "ok": true,
         "width": scene.width, "height": scene.height,
+        // The settings as the scene is drawn, a preset's and the defaults resolved: what the page's fields show.
+        "settings": {"width": scene.width, "height": scene.height, "frameBits": scene.frame_bits,
+                     "depthBits": scene.depth_bits, "depthTest": scene.depth_test.name()},
         "polygons": polygons, "byPolygon": shown, "checkable": checkable,
         "cellByCell": cells <= MAX_SHOWN_CELLS,
         // What each buffer is cleared to: where a student's answer grid starts (no level: exact depths).
@@ -684,6 +687,18 @@ mod tests {
         lesson_act(Lang::En, &mut lesson, r#"{"key": "s"}"#);
         assert_eq!(lesson_state(Lang::En, &mut lesson)["buffersHidden"], Value::Null);
         assert!(lesson_explain(Lang::En, &mut lesson, "15", "15")["text"].as_str().unwrap().contains("29/2"));
+    }
+
+    /// Found by a maintainer: the page showed `depth_test || "greater"`
+    /// though a `"rules": "buet"` scene draws with `less`. The view gives the
+    /// settings as the scene is drawn, and the page shows those.
+    #[test]
+    fn the_view_gives_the_settings_as_the_scene_is_drawn() {
+        let buet = r#"{"width": 8, "height": 4, "rules": "buet", "polygons": []}"#;
+        let settings = &view(Lang::En, buet)["settings"];
+        assert_eq!(settings["depthTest"], "less");
+        assert_eq!((settings["width"].as_u64(), settings["frameBits"].as_u64()), (Some(8), Some(2)));
+        assert_eq!(view(Lang::En, BOOK)["settings"]["depthTest"], "greater");
     }
 
     /// A scene's error is the command line's, naming the scene and the place.
