@@ -367,22 +367,13 @@ fn misnamed(name: &str, identities: &HashMap<String, usize>) -> Option<(usize, B
         while let Some(shorter) = rest.strip_suffix(".txt") {
             rest = shorter;
         }
-        let buffer = [Buffer::Frame, Buffer::Depth].into_iter().find(|b| near(rest, file_kind(*b)))?;
+        let buffer = [Buffer::Frame, Buffer::Depth]
+            .into_iter()
+            .find(|b| crate::teach::grade::class::one_edit(rest, file_kind(*b)))?;
         Some((i, k, buffer))
     })
     .max_by_key(|(i, ..)| *i)
     .map(|(_, k, buffer)| (k, buffer))
-}
-
-/// Whether `a` is `b` but for one letter added, left out, changed, or two neighbours swapped.
-fn near(a: &str, b: &str) -> bool {
-    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
-    let start = a.iter().zip(&b).take_while(|(x, y)| x == y).count();
-    let (a, b) = (&a[start..], &b[start..]);
-    let end = a.iter().rev().zip(b.iter().rev()).take_while(|(x, y)| x == y).count().min(a.len().min(b.len()));
-    let (a, b) = (&a[..a.len() - end], &b[..b.len() - end]);
-    let swapped = a.len() == 2 && b.len() == 2 && a[0] == b[1] && a[1] == b[0];
-    a.len() <= 1 && b.len() <= 1 || swapped
 }
 
 #[cfg(test)]

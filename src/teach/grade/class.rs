@@ -109,7 +109,7 @@ fn near_miss(name: &str) -> Option<(String, Buffer)> {
 }
 
 /// Whether `a` is `b`, or `b` with one letter added, left out, changed, or two neighbours swapped.
-fn one_edit(a: &str, b: &str) -> bool {
+pub(crate) fn one_edit(a: &str, b: &str) -> bool {
     let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
     let start = a.iter().zip(&b).take_while(|(x, y)| x == y).count();
     let (a, b) = (&a[start..], &b[start..]);
