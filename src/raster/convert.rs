@@ -228,7 +228,9 @@ mod tests {
                     [x, y, (x * q(a, 1) + y * q(b, 1) + q(c, 1)) / q(e, 1)]
                 })
                 .collect();
-            let Ok(geometry) = Geometry::new(&vertices) else { return Ok(()) };
+            let geometry = Geometry::new(&vertices);
+            prop_assume!(geometry.is_ok(), "not a polygon");
+            let geometry = geometry.expect("assumed above");
             prop_assume!(geometry.c() != 0 && geometry.fits_i64());
             let rules = Rules {
                 rows: [RowRule::HalfOpen, RowRule::Closed, RowRule::TopLeft][row_rule],

@@ -574,10 +574,15 @@ mod never_a_panic {
         ) {
             let text = format!("png {width} {height} out.png\n{body}");
             let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
-            let Ok(case) = Case::parse(zsim::Lang::En, &text, &|_| Ok(std::sync::Arc::new(texture.clone()))) else { return Ok(()) };
-            let Ok(json) = zsim::cs418::import::scene_json(zsim::Lang::En, &case) else { return Ok(()) };
+            // Drawings that are no case, or no scene once imported, are rejected: the runner counts them.
+            let Ok(case) = Case::parse(zsim::Lang::En, &text, &|_| Ok(std::sync::Arc::new(texture.clone()))) else {
+                return Err(TestCaseError::reject("not a case"));
+            };
+            let Ok(json) = zsim::cs418::import::scene_json(zsim::Lang::En, &case) else {
+                return Err(TestCaseError::reject("not importable"));
+            };
             let Ok(scene) = zsim::Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("imported.json")) else {
-                return Ok(());
+                return Err(TestCaseError::reject("not a scene"));
             };
             let exact = render(zsim::Lang::En, &case, Arithmetic::Exact).unwrap();
             let mut simulation = zsim::Simulation::new(&scene);
