@@ -188,9 +188,9 @@ impl<'a> Plan<'a> {
         let _held = held::Interruptions::hold();
         let mut staged = Vec::with_capacity(files.len());
         // Each folder made and opened once, however many files go into it; its handle closed when
-        // the files move on to another (a class writes a folder a student: a thousand folders open
-        // at once passed a common limit of 1,024 descriptors), reopened, and checked to be the
-        // same folder, when its files are placed.
+        // the files move on to another (a class writes a folder a student, more folders than a
+        // process may hold open), reopened, and checked to be the same folder, when its files are
+        // placed (the design note on a course has the class that found it).
         let mut folders: std::collections::HashMap<PathBuf, std::sync::Arc<Folder>> = std::collections::HashMap::new();
         let mut open: Option<std::sync::Arc<Folder>> = None;
         for (file, _) in &mut files {
