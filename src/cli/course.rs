@@ -15,10 +15,8 @@ use zsim::course::report::{Change, changes, csv, json, read_previous};
 use zsim::{Error, Lang};
 
 use super::exercise::ExerciseArgs;
+use super::grade::{Format, GradeArgs};
 use super::{Failure, Finish, emit, emit_then};
-
-/// The hard cases every variant holds once when `--hard` is not given with `--roster`.
-pub const CLASS_HARD: &str = "vertex-on-scanline,centre-on-edge,half-depth,hidden";
 
 /// `zsim exercise --roster FILE -o DIR`.
 pub fn exercise(lang: Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
@@ -104,25 +102,30 @@ fn fairness_table(lang: Lang, manifest: &Manifest) -> Table {
 }
 
 /// The arguments of `grade` that grading against a manifest uses.
-pub struct GradeVariants<'a> {
-    /// The manifest.
-    pub variants: &'a Path,
-    /// The class folder.
-    pub class: &'a Path,
-    /// The output format.
-    pub format: super::grade::Format,
-    /// Feedback into this folder.
-    pub output: Option<&'a Path>,
-    /// An earlier `--format json` of the class, to compare with.
-    pub compare: Option<&'a Path>,
-    /// The gradebook's identity column, item and points.
-    pub gradebook: (Option<zsim::gradebooks::Identity>, Option<&'a str>, u32),
+struct GradeVariants<'a> {
+    variants: &'a Path,
+    class: &'a Path,
+    format: Format,
+    output: Option<&'a Path>,
+    compare: Option<&'a Path>,
+    gradebook: (Option<zsim::gradebooks::Identity>, Option<&'a str>, u32),
 }
 
-/// `zsim grade --variants DIR/variants.json CLASS`.
-pub fn grade(lang: Lang, args: &GradeVariants<'_>, out: &mut dyn Write) -> Result<Finish, Failure> {
+/// `zsim grade --variants DIR/variants.json CLASS`: one folder, the class's.
+pub fn grade(lang: Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let (Some(variants), Some(class), None) = (&args.variants, &args.scene, &args.class) else {
+        return Err(super::flags::Flag::GradeFolders { variants: true }.into());
+    };
+    let args = &GradeVariants {
+        variants,
+        class,
+        format: args.format,
+        output: args.output.as_deref(),
+        compare: args.compare.as_deref(),
+        gradebook: (args.identity, args.item.as_deref(), args.points),
+    };
     let loaded = zsim::course::manifest::load(lang, args.variants)?;
-    let plain = matches!(args.format, super::grade::Format::Csv | super::grade::Format::Json);
+    let plain = matches!(args.format, Format::Csv | Format::Json);
     let graded = grade_course(if plain { Lang::En } else { lang }, &loaded, args.class)?;
     let previous = match args.compare {
         Some(path) => Some(read_previous(lang, path)?),
@@ -130,7 +133,6 @@ pub fn grade(lang: Lang, args: &GradeVariants<'_>, out: &mut dyn Write) -> Resul
     };
     let changes = previous.as_ref().map(|p| changes(&loaded.manifest, &graded, p)).unwrap_or_default();
     let grades = graded.grades();
-    use super::grade::Format;
     let text = match args.format {
         Format::Moodle | Format::Canvas => {
             let (identity, item, points) = args.gradebook;
@@ -138,7 +140,7 @@ pub fn grade(lang: Lang, args: &GradeVariants<'_>, out: &mut dyn Write) -> Resul
         }
         Format::Csv => csv(&loaded.manifest, &graded),
         Format::Json => json(&loaded.manifest, &graded, &changes),
-        Format::Text => text(lang, args, &loaded, &graded, &changes),
+        Format::Text => text(lang, args, &graded, &changes),
     };
     if let Some(folder) = args.output {
         let regraded = if plain { Some(grade_course(lang, &loaded, args.class)?) } else { None };
@@ -155,7 +157,7 @@ pub fn grade(lang: Lang, args: &GradeVariants<'_>, out: &mut dyn Write) -> Resul
     emit_then(out, &text, if ok { Finish::Ok } else { Finish::Differs })
 }
 
-fn text(lang: Lang, args: &GradeVariants<'_>, loaded: &Loaded, graded: &CourseGrades, changes: &[Change]) -> String {
+fn text(lang: Lang, args: &GradeVariants<'_>, graded: &CourseGrades, changes: &[Change]) -> String {
     use zsim::grade::Status;
     let grades = graded.grades();
     let count = |f: &dyn Fn(&Status) -> bool| grades.iter().filter(|g| f(&g.status)).count();
@@ -222,7 +224,6 @@ fn text(lang: Lang, args: &GradeVariants<'_>, loaded: &Loaded, graded: &CourseGr
             text.push_str(&format!("  {}\n", change.text(lang)));
         }
     }
-    let _ = &loaded.manifest;
     text
 }
 
@@ -241,7 +242,7 @@ fn feedback(
     for (row, name) in graded.rows.iter().zip(names) {
         plan.file_made(folder.join(name), move || feedback_of(lang, loaded, row).map(String::into_bytes));
     }
-    let summary = text(lang, args, loaded, graded, &[]);
+    let summary = text(lang, args, graded, &[]);
     plan.file(folder.join("common-mistakes.txt"), summary);
     plan.write().map(drop)
 }

@@ -100,9 +100,6 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
 }
 
 pub fn run(lang: zsim::Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    if args.roster.is_some() {
-        return super::course::exercise(lang, args, out);
-    }
     let spec = spec(args)?;
     let exercise = make(lang, &spec).map_err(Error::from)?;
     let dir = &args.output;
@@ -153,7 +150,7 @@ pub(super) fn spec(args: &ExerciseArgs) -> Result<Spec, Error> {
         frame_bits: args.frame_bits,
         depth_bits: args.depth_bits,
         hard: HardCase::parse_list(args.hard.as_deref().unwrap_or(if args.roster.is_some() {
-            super::course::CLASS_HARD
+            zsim::course::fair::CLASS_HARD
         } else {
             ""
         }))?,

@@ -23,34 +23,34 @@ use zsim::gradebooks::{self, Identity};
 pub struct GradeArgs {
     /// The scene file (JSON) of the exercise (not with --variants).
     #[arg(value_name = "SCENE")]
-    scene: Option<PathBuf>,
+    pub(super) scene: Option<PathBuf>,
     /// The folder of answers: NAME.frame.txt and/or NAME.depth.txt per student, as `zsim check` reads them.
     #[arg(value_name = "CLASS")]
-    class: Option<PathBuf>,
+    pub(super) class: Option<PathBuf>,
     /// A class with a variant each (`exercise --roster`'s DIR/variants.json): each student's IDENTITY.frame.txt and IDENTITY.depth.txt graded against their own scene; everyone on the roster gets a row.
     #[arg(long, value_name = "FILE", conflicts_with = "after")]
-    variants: Option<PathBuf>,
+    pub(super) variants: Option<PathBuf>,
     /// With --variants: an earlier `--format json` of the class; says whose scores changed and why.
     #[arg(long, value_name = "FILE", requires = "variants")]
-    compare: Option<PathBuf>,
+    pub(super) compare: Option<PathBuf>,
     /// Grade the state after this polygon (number from 1, or name); default: the last.
     #[arg(long, value_name = "N|NAME")]
     after: Option<String>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
-    format: Format,
+    pub(super) format: Format,
     /// Write each student's feedback (`zsim check`'s explanation of every wrong cell) to FOLDER/NAME.feedback.txt, and the common mistakes to FOLDER/common-mistakes.txt; FOLDER may not be the class folder, and no file in it is replaced.
     #[arg(short, long, value_name = "FOLDER")]
-    output: Option<PathBuf>,
+    pub(super) output: Option<PathBuf>,
     /// With --format moodle or canvas: the column that names the student (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id); the student's file name is its value.
     #[arg(long, value_parser = super::choice(&Identity::NAMES, Identity::parse))]
-    identity: Option<Identity>,
+    pub(super) identity: Option<Identity>,
     /// With --format moodle or canvas: the grade column's header (Moodle: "Assignment: NAME (Real)" as its exports write it; Canvas: "NAME (ID)" to fill an existing assignment).
     #[arg(long, value_name = "NAME")]
-    item: Option<String>,
+    pub(super) item: Option<String>,
     /// With --format moodle or canvas: the points the exercise is worth (the item's maximum grade).
     #[arg(long, default_value_t = 100)]
-    points: u32,
+    pub(super) points: u32,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -68,21 +68,6 @@ pub(super) enum Format {
 }
 
 pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    if let Some(variants) = &args.variants {
-        let class = match (&args.scene, &args.class) {
-            (Some(class), None) => class,
-            _ => return Err(super::flags::Flag::GradeFolders { variants: true }.into()),
-        };
-        let grading = super::course::GradeVariants {
-            variants,
-            class,
-            format: args.format,
-            output: args.output.as_deref(),
-            compare: args.compare.as_deref(),
-            gradebook: (args.identity, args.item.as_deref(), args.points),
-        };
-        return super::course::grade(lang, &grading, out);
-    }
     let (Some(scene_path), Some(class)) = (&args.scene, &args.class) else {
         return Err(super::flags::Flag::GradeFolders { variants: false }.into());
     };

@@ -5,7 +5,7 @@
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use crate::{zsim, zsim_in};
+use crate::zsim_in;
 
 fn scratch(name: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("course").join(name);
@@ -303,16 +303,7 @@ fn the_gradescope_autograder_finds_each_students_variant_by_sid_then_email() {
             std::fs::copy(dir.join(from), root.join("submission").join(to)).unwrap();
         }
         std::fs::write(root.join("submission_metadata.json"), format!("{{\"users\": {users}, \"id\": 1}}")).unwrap();
-        let bin = Path::new(env!("CARGO_BIN_EXE_zsim")).parent().unwrap();
-        let status = std::process::Command::new("bash")
-            .arg(root.join("source/run_autograder"))
-            .env("AUTOGRADER_ROOT", &root)
-            .env("PATH", format!("{}:{}", bin.display(), std::env::var("PATH").unwrap_or_default()))
-            .status()
-            .unwrap();
-        assert!(status.success());
-        let text = std::fs::read_to_string(root.join("results/results.json")).unwrap();
-        serde_json::from_str::<serde_json::Value>(&text).unwrap()
+        run_grader(&root.join("source/run_autograder"), ("AUTOGRADER_ROOT", &root))
     };
     let by_sid = grade(
         r#"[{"email": "ANA.LIMA@other.org", "sid": "s1"}]"#,
@@ -380,6 +371,20 @@ fn the_prairielearn_grader_scores_the_questions_variant_and_refuses_a_malformed_
     assert!(malformed["format_errors"][0].as_str().unwrap().starts_with("frame.txt: line 1"), "{malformed}");
 }
 
+/// Runs a platform's grader script as the platform does, `root` standing for
+/// its folder (`/autograder`, `/grade`) and this zsim on the path; its results.json.
+fn run_grader(script: &Path, (variable, root): (&str, &Path)) -> serde_json::Value {
+    let bin = Path::new(env!("CARGO_BIN_EXE_zsim")).parent().unwrap();
+    let status = std::process::Command::new("bash")
+        .arg(script)
+        .env(variable, root)
+        .env("PATH", format!("{}:{}", bin.display(), std::env::var("PATH").unwrap_or_default()))
+        .status()
+        .unwrap();
+    assert!(status.success());
+    serde_json::from_str(&std::fs::read_to_string(root.join("results/results.json")).unwrap()).unwrap()
+}
+
 fn copy_folder(from: &Path, to: &Path) {
     std::fs::create_dir_all(to).unwrap();
     for entry in std::fs::read_dir(from).unwrap() {
@@ -427,7 +432,6 @@ fn rosters_of_each_platform_are_read_and_bad_ones_refused_naming_the_line() {
         assert_eq!((run.code, run.stderr.trim()), (2, error));
     }
     assert!(!dir.join("out").exists(), "nothing written for a refused roster");
-    let _ = zsim(&["exercise", "--help"]);
 }
 
 /// The Safety chapter's limits on a roster, just below and just above.

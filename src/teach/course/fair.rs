@@ -42,6 +42,9 @@ pub struct ClassSpec {
     pub hand_in: Vec<Buffer>,
 }
 
+/// The hard cases every variant of a class holds once by default.
+pub const CLASS_HARD: &str = "vertex-on-scanline,centre-on-edge,half-depth,hidden";
+
 /// The wrong rules a class's variants tell apart by default: every rule the
 /// diagnosis knows but the three that the book's style makes rare or
 /// impossible to separate in a small scene (no saturation, which needs
@@ -60,16 +63,18 @@ pub fn default_rules(hard: &[HardCase]) -> Vec<Misconception> {
         .collect()
 }
 
+/// FNV-1a, 64 bits: the same bytes give the same hash on every machine.
+pub fn fnv(bytes: impl IntoIterator<Item = u8>) -> u64 {
+    bytes.into_iter().fold(0xcbf2_9ce4_8422_2325u64, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3))
+}
+
 /// A student's seed: the course's seed, their identity without case and
 /// their attempt, hashed (FNV-1a, 64 bits, then SplitMix64's finalizer), so
 /// the same roster gives the same seeds on every machine and version.
 pub fn student_seed(course_seed: u64, identity: &str, attempt: u32) -> u64 {
-    let mut hash = 0xcbf2_9ce4_8422_2325u64;
     let bytes =
         course_seed.to_le_bytes().into_iter().chain(identity.to_lowercase().into_bytes()).chain(attempt.to_le_bytes());
-    for byte in bytes {
-        hash = (hash ^ u64::from(byte)).wrapping_mul(0x0000_0100_0000_01b3);
-    }
+    let mut hash = fnv(bytes);
     hash = (hash ^ (hash >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     hash = (hash ^ (hash >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
     hash ^ (hash >> 31)
@@ -318,7 +323,7 @@ impl Kept {
     fn of(made: Made) -> Kept {
         let cases = HardCase::ALL.map(|case| made.census.count(case));
         let cells = made.key.0.iter().chain(&made.key.1).flatten().flat_map(|v| v.to_le_bytes());
-        Kept { json: made.json, cases, separations: made.separations, key: super::grading::fnv(cells) }
+        Kept { json: made.json, cases, separations: made.separations, key: fnv(cells) }
     }
 }
 

@@ -24,12 +24,12 @@ use crate::teach::exercise::{HardCase, census};
 use crate::teach::grade::{Grade, Handed, Key, Submission, cleared, file_kind, grade};
 use crate::words::{Lang, shown_name};
 
-use super::fair::key_of;
+use super::fair::{fnv, key_of};
 use super::manifest::{Loaded, code_in};
 
 /// A file of the class folder graded for a student, or named for them.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Handed1 {
+pub struct HandedFile {
     /// The buffer it answers for.
     pub buffer: Buffer,
     /// Its name, as shown.
@@ -122,7 +122,7 @@ pub struct Row {
     /// Their variant code.
     pub code: String,
     /// The files graded.
-    pub files: Vec<Handed1>,
+    pub files: Vec<HandedFile>,
     /// What they and the teacher are told about their files.
     pub notes: Vec<Note>,
     /// Per hard case of [`HardCase::ALL`]: whether their scene holds it, and
@@ -179,11 +179,6 @@ impl CourseGrades {
     }
 }
 
-/// FNV-1a, 64 bits: the same bytes give the same hash on every machine.
-pub fn fnv(bytes: impl IntoIterator<Item = u8>) -> u64 {
-    bytes.into_iter().fold(0xcbf2_9ce4_8422_2325u64, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3))
-}
-
 /// Grades the class folder `class` against the manifest `loaded`, messages in `lang`.
 pub fn grade_course(lang: Lang, loaded: &Loaded, class: &Path) -> Result<CourseGrades, Error> {
     let manifest = &loaded.manifest;
@@ -195,7 +190,7 @@ pub fn grade_course(lang: Lang, loaded: &Loaded, class: &Path) -> Result<CourseG
         names.push((shown_name(Path::new(&entry.file_name())), entry.path()));
     }
     names.sort();
-    let mut handed: Vec<Vec<Handed1>> = vec![Vec::new(); manifest.students.len()];
+    let mut handed: Vec<Vec<HandedFile>> = vec![Vec::new(); manifest.students.len()];
     let mut notes: Vec<Vec<Note>> = vec![Vec::new(); manifest.students.len()];
     let mut strays = Vec::new();
     let lower: HashMap<String, usize> = manifest
@@ -219,7 +214,7 @@ pub fn grade_course(lang: Lang, loaded: &Loaded, class: &Path) -> Result<CourseG
         });
         match answer {
             Some((stem, buffer)) => match lower.get(&stem.to_lowercase()) {
-                Some(&k) if buffers.contains(&buffer) => handed[k].push(Handed1 { buffer, name, path }),
+                Some(&k) if buffers.contains(&buffer) => handed[k].push(HandedFile { buffer, name, path }),
                 Some(_) => strays.push(Stray::NotAnAnswer { file: name }),
                 None => strays.push(Stray::NotOnRoster { file: name, identity: stem }),
             },
@@ -254,7 +249,7 @@ pub fn grade_course(lang: Lang, loaded: &Loaded, class: &Path) -> Result<CourseG
             let mut graded = Vec::new();
             let mut file_bytes = Vec::new();
             for buffer in &buffers {
-                let mine: Vec<&Handed1> = files.iter().filter(|f| f.buffer == *buffer).collect();
+                let mine: Vec<&HandedFile> = files.iter().filter(|f| f.buffer == *buffer).collect();
                 let handed = match mine.as_slice() {
                     [] => Handed::Missing,
                     [file] => {

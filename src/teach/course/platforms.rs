@@ -418,8 +418,8 @@ fn answer_key(scene: &crate::scene::Scene, buffer: crate::observe::explain::Buff
 /// A stable UUID (version 4's layout) from the manifest's bytes, so the same
 /// class writes the same question.
 fn uuid_of(text: &str) -> String {
-    let a = super::grading::fnv(text.bytes());
-    let b = super::grading::fnv(text.bytes().rev());
+    let a = super::fair::fnv(text.bytes());
+    let b = super::fair::fnv(text.bytes().rev());
     let hex = format!("{a:016x}{b:016x}");
     format!("{}-{}-4{}-8{}-{}", &hex[0..8], &hex[8..12], &hex[13..16], &hex[17..20], &hex[20..32])
 }
