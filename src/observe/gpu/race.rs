@@ -91,7 +91,7 @@ impl Race {
             "speed-memory",
             rate = millions(rate),
             megabytes = localize_decimal(lang, format!("{:.1}", self.bytes as f64 / 1e6)),
-            copy = ms(median(&self.copy)),
+            copy = localize_decimal(lang, significant(median(&self.copy).as_secs_f64() * 1e3)),
             bandwidth = localize_decimal(lang, format!("{:.2}", bandwidth / 1e9)),
             bytes = localize_decimal(lang, format!("{:.2}", self.bytes as f64 / self.cells.max(1) as f64)),
             limit = millions(limit)
@@ -133,6 +133,13 @@ impl Race {
 }
 
 /// The median of some durations (the lower middle one of an even count).
+/// `value` with at least two decimals and three significant digits, so that
+/// a copy that takes microseconds is not shown as 0.00 ms.
+fn significant(value: f64) -> String {
+    let decimals = if value > 0.0 { (2 - value.log10().floor() as i32).clamp(2, 9) } else { 2 };
+    format!("{value:.*}", decimals as usize)
+}
+
 fn median(times: &[Duration]) -> Duration {
     let mut sorted = times.to_vec();
     sorted.sort_unstable();
@@ -230,6 +237,12 @@ pub fn race(scene: &Scene, pairs: usize, tile: Option<u32>, threads: usize) -> R
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_short_time_keeps_three_significant_digits() {
+        let shown = [0.004_7, 0.047, 0.47, 4.7, 47.0, 0.0].map(significant);
+        assert_eq!(shown, ["0.00470", "0.0470", "0.470", "4.70", "47.00", "0.00"]);
+    }
 
     #[test]
     fn medians_and_ratios_are_of_the_pairs() {
