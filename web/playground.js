@@ -131,16 +131,32 @@
     return JSON.parse(lesson.view());
   }
 
-  // Sends the lesson a command ({key}, {go: [polygon, row]}, {answer}) and shows what it said.
-  function act(command) {
+  // Sends the lesson a command ({key}, {go: [polygon, row]}, {answer}) and shows what it said; a
+  // move is a new entry of the browser's history unless `fromAddress` (Back, forward or an edited
+  // address, which the address already says).
+  function act(command, fromAddress) {
     if (!lesson) return;
     const result = JSON.parse(lesson.act(JSON.stringify(command)));
     if (!result.ok) return;
+    if (result.kind === "quit") {
+      // The quiz ended: its summary stays, and the stepper goes on where it was, without a quiz.
+      const at = result.state.at;
+      $("quiz").checked = false;
+      view = newLesson(at);
+      if (view.ok) render();
+      writeAddress(false);
+      $("said").textContent = result.summary;
+      $("said").className = result.kind;
+      return;
+    }
     lessonState = result.state;
     $("said").textContent = result.said;
     $("said").className = result.kind;
     renderLesson();
-    if (result.kind === "moved") writeAddress(true);
+    if (result.kind === "moved") writeAddress(!fromAddress);
+    // A move the address asked for and the lesson refused: the address says where the lesson still
+    // is, as a new entry, so that Back goes back again once the questions are answered.
+    else if (fromAddress) writeAddress(true);
   }
 
   function edit(change) {
@@ -441,6 +457,7 @@
     const asking = Boolean(s && s.prompt);
     $("answerForm").hidden = !asking;
     $("skip").hidden = !quizMode();
+    $("endQuiz").hidden = !quizMode();
     $("score").textContent = s && s.score ? s.score : "";
     if (view && view.ok) renderBuffers();
     drawLesson();
@@ -635,11 +652,17 @@
     // A followed link fires popstate and hashchange alike: the address is applied once.
     if (location.hash === applied) return;
     applied = location.hash;
+    const mode = quizMode();
     const { text, place, pixel, broken } = readAddress();
     if (broken) return;
     if (text !== null && text !== scene) {
       lessonState = place ? { at: place } : null;
       setScene(text);
+    } else if (lesson && view && view.ok && quizMode() === mode) {
+      // The same scene and quiz: Back, forward or an edited address move within the lesson, score
+      // and all, refused as a key is while questions are open; the address then says where it is.
+      if (place) act({ go: [place.polygon, place.row] }, true);
+      writeAddress(false);
     } else {
       view = newLesson(place);
       if (view.ok) render();
@@ -706,7 +729,7 @@
     };
     window.addEventListener("popstate", applyAddress);
     window.addEventListener("hashchange", applyAddress);
-    for (const [id, key] of [["back", "b"], ["next", "n"], ["prevPolygon", "P"], ["nextPolygon", "p"], ["skip", "s"]]) {
+    for (const [id, key] of [["back", "b"], ["next", "n"], ["prevPolygon", "P"], ["nextPolygon", "p"], ["skip", "s"], ["endQuiz", "q"]]) {
       $(id).onclick = () => act({ key });
     }
     const requiz = () => { view = newLesson(lessonState && lessonState.at); render(); writeAddress(false); };
@@ -725,8 +748,8 @@
     document.addEventListener("keydown", (e) => {
       if (e.ctrlKey || e.metaKey || e.altKey || !lesson) return;
       if (e.target.closest && e.target.closest("input, textarea, select")) return;
-      if (["n", "b", "p", "P", "s"].includes(e.key)) {
-        if (e.key === "s" && !quizMode()) return;
+      if (["n", "b", "p", "P", "s", "q"].includes(e.key)) {
+        if ((e.key === "s" || e.key === "q") && !quizMode()) return;
         e.preventDefault();
         act({ key: e.key });
       }
@@ -779,6 +802,8 @@
     const preferred = asked ? [asked] : window.ZSIM_LANG ? [window.ZSIM_LANG] : (navigator.languages && navigator.languages.length ? navigator.languages : [navigator.language || "en"]);
     lang = z.choose_language(preferred.join("\n"));
     words = JSON.parse(z.words(lang));
+    // A page written with its quiz on (`zsim step --html --quiz`), unless the address says otherwise.
+    if (window.ZSIM_QUIZ) { $("quiz").checked = true; $("quizKind").value = window.ZSIM_QUIZ; }
     const { text, place, pixel } = readAddress();
     applied = location.hash;
     lessonState = place ? { at: place } : null;

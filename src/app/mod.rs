@@ -120,7 +120,7 @@ impl<'l> App<'l> {
             return;
         }
         match key.code {
-            KeyCode::Char('q') | KeyCode::Esc => self.quit = true,
+            KeyCode::Char('q') | KeyCode::Esc => self.act(Command::Quit),
             KeyCode::Char('n' | ' ') | KeyCode::Enter | KeyCode::Right | KeyCode::Down => self.next(),
             KeyCode::Char('b') | KeyCode::Left | KeyCode::Up => self.back(),
             KeyCode::Char(key @ ('p' | 'P' | 's')) => {

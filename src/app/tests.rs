@@ -321,3 +321,40 @@ fn b_at_the_end_goes_back_to_the_last_scanline() {
     let at = app.lesson.at().expect("back at a scanline");
     assert_eq!(at.polygon, 1, "the last polygon's");
 }
+
+/// The script every front end's test drives (`tests/fixtures/lesson-script.txt`), pressed here
+/// as a person presses it: after each step the status line says what the library's own lesson,
+/// given the same step, says; the app is where the library is; at `q` the app quits with the
+/// library's score, the question answered once and left open counted.
+#[test]
+fn the_app_takes_the_lesson_script_as_the_library_does() {
+    let script =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/lesson-script.txt")).unwrap();
+    let steps: Vec<&str> = script.lines().filter(|line| !line.starts_with('#') && !line.is_empty()).collect();
+    // The triangle's scanline 15 (its recorded scanline 5).
+    let start = Some(Stop { polygon: 1, scanline: 5 });
+    let mut library = lesson(book(), start, Some(QuizMode::Depth));
+    let mut lesson = lesson(book(), start, Some(QuizMode::Depth));
+    let mut app = App::new(&mut lesson, zsim::Lang::En);
+    for step in &steps {
+        let said = library.act(zsim::Lang::En, Command::parse(step)).text(zsim::Lang::En, library.scene());
+        // A key that acts alone is pressed alone; an answer is typed, then Enter.
+        let key = step.chars().count() == 1 && step.chars().all(|c| Command::from_key(c).is_some());
+        press(&mut app, &if key { step.to_string() } else { format!("{step}\n") });
+        if *step == "q" {
+            assert!(app.quit);
+            break;
+        }
+        let shown = screen(&mut app, 100, 30);
+        assert_eq!(app.message, said, "after {step:?}: {shown}");
+        assert_eq!(app.lesson.at(), library.at(), "after {step:?}");
+        screen(&mut app, 100, 30);
+    }
+    assert_eq!(steps.last(), Some(&"q"));
+    let summary = library.summary(zsim::Lang::En);
+    assert!(
+        summary.starts_with("quiz: 1 right at the first try, 0 at the second, 1 shown, 24 skipped, of 26"),
+        "{summary}"
+    );
+    assert_eq!(lesson.summary(zsim::Lang::En), summary);
+}

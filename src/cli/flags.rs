@@ -29,8 +29,10 @@ pub enum Flag {
     },
     /// `grade --points 0`.
     NoPoints,
-    /// `step --html --quiz`: the page's quiz is chosen on the page.
+    /// `step --html --quiz` with an inexact `--arith`: the page's quiz asks in exact arithmetic.
     HtmlQuiz,
+    /// The playground's site asked of a zsim built without it.
+    NoPlayground,
     /// A line of `step`'s line mode longer than it reads.
     LineTooLong {
         /// The longest line, in bytes.
@@ -90,6 +92,7 @@ impl Flag {
             Flag::IdentityColumn { column } => zsim::words!(lang, "usage-identity-column", column = *column),
             Flag::NoPoints => zsim::words!(lang, "usage-no-points"),
             Flag::HtmlQuiz => zsim::words!(lang, "usage-html-quiz"),
+            Flag::NoPlayground => zsim::words!(lang, "usage-no-playground"),
             Flag::LineTooLong { max } => zsim::words!(lang, "usage-line-too-long", max = *max),
             Flag::GradeFolders { variants: true } => zsim::words!(lang, "usage-grade-variants-folder"),
             Flag::GradeFolders { variants: false } => zsim::words!(lang, "usage-grade-scene-and-class"),

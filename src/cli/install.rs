@@ -1,6 +1,7 @@
 //! What a package installs beside the binary, generated from the same clap
 //! definition the binary parses with, so neither can drift from the options:
-//! shell completions (`clap_complete`) and the man pages (`clap_mangen`).
+//! shell completions (`clap_complete`) and the man pages (`clap_mangen`); and
+//! the playground's site this zsim carries, for a course's web server.
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -21,6 +22,27 @@ pub struct ManualArgs {
     /// A folder to write zsim.1 and one page per command (zsim-run.1, …) into; without it, zsim.1 goes to standard output.
     #[arg(long, value_name = "DIR")]
     dir: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct PlaygroundArgs {
+    /// The folder to write the site into (index.html and the files it loads): for any static web server, or opened from disk.
+    #[arg(short, long, value_name = "DIR")]
+    output: PathBuf,
+}
+
+/// Writes the playground's site into a folder (replacing an older one's files).
+pub fn playground(lang: zsim::Lang, args: &PlaygroundArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
+    let files = zsim::playground::site_files().ok_or(super::flags::Flag::NoPlayground)?;
+    let mut plan = zsim::Plan::new(&[], zsim::Replace::Allowed);
+    for (name, bytes) in &files {
+        plan.file(args.output.join(name), bytes.clone());
+    }
+    plan.write()?;
+    let names: Vec<&str> = files.iter().map(|(name, _)| name.as_str()).collect();
+    let line = zsim::words!(lang, "file-written-in", files = names.join(", "), path = zsim::shown_path(&args.output));
+    super::emit(out, &format!("{line}\n"))?;
+    Ok(Finish::Ok)
 }
 
 /// Prints the completion script for one shell.

@@ -76,6 +76,8 @@ enum Command {
     /// Time zsim beside the machine's OpenGL (Mesa's llvmpipe) on the same scene, in alternating pairs: medians and their ratio.
     #[cfg(feature = "gpu")]
     Speed(speed::SpeedArgs),
+    /// Write the browser playground's site (the stepper, its quiz, the homework check) into a folder, for a static web server or to open from disk.
+    Playground(install::PlaygroundArgs),
     /// Print the shell completion script for bash, zsh, fish, elvish or PowerShell.
     Completions(install::CompletionsArgs),
     /// Print zsim's man page (troff), or write one page per command into a folder.
@@ -161,6 +163,7 @@ pub fn main() -> ExitCode {
         Command::Random(args) => generate::random_command(lang, &args, &mut out),
         #[cfg(feature = "gpu")]
         Command::Speed(args) => speed::run(lang, &args, &mut out),
+        Command::Playground(args) => install::playground(lang, &args, &mut out),
         Command::Completions(args) => install::completions(&args, &mut out),
         Command::Manual(args) => install::manual(lang, &args, &mut out),
     };

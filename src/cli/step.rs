@@ -85,7 +85,7 @@ pub struct StepArgs {
     /// A quiz: before each pixel's result, ask what the z-buffer will hold; `--quiz frame` asks what the framebuffer will hold; `--quiz coverage` first asks which centres the scanline covers. With --polygon and --scanline it starts there.
     #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "depth", value_name = "depth|frame|coverage")]
     quiz: Option<QuizMode>,
-    /// Write the stepper as one self-contained HTML page (-o FILE.html) instead of running it.
+    /// Write the stepper as one self-contained HTML page (-o FILE.html) instead of running it: the playground where this zsim carries it, with --quiz its quiz on.
     #[arg(long, requires = "output", conflicts_with = "polygon")]
     html: bool,
     /// The page to write, with --html.
@@ -112,14 +112,19 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
     let scene = Scene::from_json(lang, &text, &args.scene)?;
     zsim::arith::check_supported(&scene, args.arith)?;
     let color = super::use_color();
-    if args.html && args.quiz.is_some() {
+    // The page's quiz is the playground's, which asks in exact arithmetic.
+    let exact = args.arith == zsim::arith::Arith::Exact;
+    if args.html && args.quiz.is_some() && !exact {
         return Err(super::flags::Flag::HtmlQuiz.into());
+    }
+    if args.html && args.quiz.is_some() && zsim::playground::site_files().is_none() {
+        return Err(super::flags::Flag::NoPlayground.into());
     }
     if let (true, Some(output)) = (args.html, &args.output) {
         let name = args.scene.file_name().map_or_else(|| zsim::shown_path(&args.scene), |n| n.to_string_lossy().into());
         // The playground where this zsim was built with it (exact arithmetic only); the recorded stepper otherwise.
-        let playground =
-            (args.arith == zsim::arith::Arith::Exact).then(|| zsim::playground::one_file_page(lang, &text)).flatten();
+        let quiz = args.quiz.map(Into::into);
+        let playground = exact.then(|| zsim::playground::one_file_page(lang, &text, quiz)).flatten();
         // What the page draws at all, refused before it is made.
         let page = match playground {
             Some(page) => {
@@ -173,7 +178,9 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
     if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
         lesson.start(start);
         crate::app::run(&mut crate::app::App::new(&mut lesson, lang))?;
-        // The screen is gone: the score and each mistake stay on the terminal, as in the line mode.
+        // The screen is gone (q, Esc or Ctrl-C): the quiz ends as `q` ends it, and the score and
+        // each mistake stay on the terminal, as in the line mode.
+        lesson.act(lang, Command::Quit);
         emit(out, &lesson.summary(lang))?;
         return Ok(Finish::Ok);
     }
@@ -257,6 +264,7 @@ fn interactive(
                 continue;
             }
             Some(zsim::Line::TooLong) => {
+                lesson.act(lang, Command::Quit);
                 emit(out, &lesson.summary(lang))?;
                 return Err(super::flags::Flag::LineTooLong { max: MAX_LINE_BYTES }.into());
             }
@@ -276,6 +284,8 @@ fn interactive(
             _ => false,
         };
     }
+    // The end of the input ends the quiz as `q` does.
+    lesson.act(lang, Command::Quit);
     emit(out, &lesson.summary(lang))?;
     Ok(Finish::Ok)
 }

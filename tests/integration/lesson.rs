@@ -15,41 +15,63 @@ use zsim::lesson::Command;
 use zsim::playground;
 use zsim::step::QuizMode;
 
-use crate::browser::{click, text};
+use crate::browser::{click, text, text_when};
 use crate::chromium::{driver, serve, session_as};
 use crate::playground::{
     inner_text, manifest, run_final, runtime, scene_text, scratch, shown_buffers, site, type_vertex,
 };
 
-/// One student's keys and answers on the book's triangle, scanline 15, with
-/// the depth quiz: `n` (refused: questions are open), 14 (the half rounded
-/// down: a hint), 13 (wrong again: the answer), 14 (right), `s` (the rest
-/// skipped), `n` (on to scanline 16), then `q`.
-const SCRIPT: [&str; 6] = ["n", "14", "13", "14", "s", "n"];
+/// One student's keys and answers on the book's triangle from scanline 15, with the depth quiz,
+/// the one script every front end's test drives (the app's in-process test reads it too).
+fn script() -> Vec<String> {
+    let text = std::fs::read_to_string(manifest().join("tests/fixtures/lesson-script.txt")).unwrap();
+    text.lines().filter(|line| !line.starts_with('#') && !line.is_empty()).map(str::to_string).collect()
+}
 
 fn book() -> String {
     std::fs::read_to_string(manifest().join("examples/rogers.json")).unwrap()
 }
 
-/// What the library's lesson says to each step of [`SCRIPT`], and its summary at the end.
+/// What the library's lesson says to each step of [`script`], and its summary at the end.
 fn library_says() -> (Vec<String>, String) {
+    let (said, _, summary) = library_goes();
+    (said, summary)
+}
+
+/// What the library's lesson says to each step of [`script`], the row it is at after each (as the
+/// page's state gives it), and its summary at the end.
+fn library_goes() -> (Vec<String>, Vec<u64>, String) {
     let mut lesson = playground::lesson(Lang::En, &book(), Some(QuizMode::Depth), Some((2, 15))).unwrap();
-    let said =
-        SCRIPT.iter().map(|typed| lesson.act(Lang::En, Command::parse(typed)).text(Lang::En, lesson.scene())).collect();
-    (said, lesson.summary(Lang::En))
+    let mut rows = Vec::new();
+    let said = script()
+        .iter()
+        .map(|typed| {
+            let said = lesson.act(Lang::En, Command::parse(typed)).text(Lang::En, lesson.scene());
+            rows.push(playground::lesson_state(Lang::En, &mut lesson)["at"]["row"].as_u64().unwrap());
+            said
+        })
+        .collect();
+    (said, rows, lesson.summary(Lang::En))
 }
 
 #[test]
 fn the_librarys_answers_to_the_script_are_the_rules() {
     let (said, summary) = library_says();
-    assert_eq!(said[0], "13 open questions on this scanline: answer them first, or s to skip them");
+    let refused = |open: u32| format!("{open} open questions on this scanline: answer them first, or s to skip them");
+    assert_eq!(said[0], refused(13));
     assert_eq!(said[1], "14: not yet: it looks as if you rounded a half down: halves round up (one more try)");
     assert!(said[2].starts_with("13: wrong again. The answer is 15: z = 29/2"), "{}", said[2]);
     assert!(said[3].starts_with("14 (the value written): right. z = 55/4"), "{}", said[3]);
     assert_eq!(said[4], "skipped: 11 questions (counted as not answered)");
-    assert_eq!(said[5], "");
+    assert_eq!((said[5].as_str(), said[6].as_str()), ("", refused(12).as_str()));
+    assert_eq!(said[7], "skipped: 12 questions (counted as not answered)");
+    // Back to 15, then 16 again: nothing asked on a scanline whose questions ended, then 17 asks.
+    assert_eq!(said[8..11], ["", "", ""]);
+    assert_eq!(said[11], "3: not yet (one more try)");
+    assert_eq!(said[12], "");
+    // The question answered once and left open at q counts as not answered right: 1 + 0 + 1 + 24 = 26.
     assert!(
-        summary.starts_with("quiz: 1 right at the first try, 0 at the second, 1 shown, 11 skipped, of 13 questions\n"),
+        summary.starts_with("quiz: 1 right at the first try, 0 at the second, 1 shown, 24 skipped, of 26 questions\n"),
         "{summary}"
     );
 }
@@ -58,7 +80,7 @@ fn the_librarys_answers_to_the_script_are_the_rules() {
 #[test]
 fn the_line_mode_says_what_the_lesson_says() {
     let (said, summary) = library_says();
-    let input = format!("{}\nq\n", SCRIPT.join("\n"));
+    let input = format!("{}\n", script().join("\n"));
     let run = crate::zsim_stdin(
         &["step", "examples/rogers.json", "--quiz", "depth", "--polygon", "2", "--scanline", "15", "--lang", "en"],
         &input,
@@ -81,8 +103,16 @@ fn the_line_mode_says_what_the_lesson_says() {
 fn the_full_screen_app_ends_with_the_same_score() {
     let (_, summary) = library_says();
     let command = "zsim step examples/rogers.json --quiz depth --polygon 2 --scanline 15 --lang en; echo EXIT=$?";
-    let keys: [&[&str]; 7] =
-        [&["n"], &["1", "4", "Enter"], &["1", "3", "Enter"], &["1", "4", "Enter"], &["s"], &["n"], &["q"]];
+    // A key that acts alone, or an answer's characters and Enter.
+    let steps: Vec<Vec<String>> = script()
+        .iter()
+        .map(|step| match Command::parse(step) {
+            Command::Answer(_) => step.chars().map(String::from).chain(["Enter".to_string()]).collect(),
+            _ => vec![step.clone()],
+        })
+        .collect();
+    let steps: Vec<Vec<&str>> = steps.iter().map(|keys| keys.iter().map(String::as_str).collect()).collect();
+    let keys: Vec<&[&str]> = steps.iter().map(Vec::as_slice).collect();
     let shown = crate::teaching::in_tmux((110, 32), command, "the z-buffer after?", &keys, "EXIT=");
     // Each line's start (a long line wraps at the terminal's width).
     for line in summary.lines() {
@@ -146,7 +176,7 @@ fn the_playground_asks_as_the_lesson_asks() {
     let (driver, browser) = driver();
     let port = serve(site);
     let dir = scratch("lesson-browser");
-    let (said, summary) = library_says();
+    let (said, rows, summary) = library_goes();
     runtime().block_on(async {
         let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 1000)).await;
         client.goto(&address(port, "depth")).await.unwrap();
@@ -158,24 +188,33 @@ fn the_playground_asks_as_the_lesson_asks() {
         let stop = text(&client, "#stop").await;
         assert!(!stop.contains("29/2") && !stop.contains("14.50"), "the asked pixel's z is hidden: {stop}");
         std::fs::write(dir.join("quiz-before-1280.png"), client.screenshot().await.unwrap()).unwrap();
-        for (step, expected) in SCRIPT.iter().zip(&said) {
-            match *step {
-                "n" | "s" => press(&client, step.chars().next().unwrap()).await,
+        // Each step as a person takes it: a key, an answer typed and Enter, the browser's Back for
+        // `b`; the page says what the library says and its address follows the lesson's place,
+        // a refused Back included.
+        for ((step, expected), row) in script().iter().zip(&said).zip(&rows) {
+            match step.as_str() {
+                "b" => client.back().await.unwrap(),
+                "n" | "s" | "q" => press(&client, step.chars().next().unwrap()).await,
                 typed => answer(&client, typed).await,
             }
-            assert_eq!(&text(&client, "#said").await, expected, "after {step:?}");
-            if *step == "14" && fragment(&client).await.contains("scanline=15") && expected.contains("not yet") {
+            let place = format!("&polygon=2&scanline={row}");
+            let there = |fragment: &str| fragment.contains(&format!("{place}&")) || fragment.ends_with(&place);
+            for _ in 0..100 {
+                if there(&fragment(&client).await) {
+                    break;
+                }
+                tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+            }
+            assert!(there(&fragment(&client).await), "after {step:?}: {}", client.current_url().await.unwrap());
+            let expected = if step == "q" { summary.trim_end() } else { expected.as_str() };
+            assert_eq!(text_when(&client, "#said", |t| t == expected).await, expected, "after {step:?}");
+            if step == "14" && expected.contains("not yet") {
                 std::fs::write(dir.join("quiz-after-wrong-1280.png"), client.screenshot().await.unwrap()).unwrap();
             }
         }
-        assert_eq!(text(&client, "#score").await, summary.lines().next().unwrap());
-        // The address followed the stepper; back goes back to scanline 15.
-        let moved = fragment(&client).await;
-        assert!(moved.ends_with("&polygon=2&scanline=16&quiz=depth"), "{moved}");
-        client.back().await.unwrap();
-        let back = fragment(&client).await;
-        assert!(back.ends_with("&polygon=2&scanline=15&quiz=depth"), "{back}");
-        assert_eq!(text(&client, "#status").await, "scanline y = 15.5 (row 15)");
+        // The quiz ended: the stepper goes on where it was, without the quiz, asking nothing.
+        assert!(!fragment(&client).await.contains("quiz="), "{}", fragment(&client).await);
+        assert_eq!(text(&client, "#prompt").await, "");
 
         // The coverage question: nothing on the page gives the columns away; zsim's own notation answers it.
         client.goto(&address(port, "coverage")).await.unwrap();
@@ -193,7 +232,7 @@ fn the_playground_asks_as_the_lesson_asks() {
         assert_eq!(client.find_all(Locator::Css("#grid .covered")).await.unwrap().len(), 13);
         client.close().await.unwrap();
     });
-    crate::ran("the lesson in the playground through WebDriver", &format!("{} steps", SCRIPT.len()));
+    crate::ran("the lesson in the playground through WebDriver", &format!("{} steps", script().len()));
 }
 
 /// What a student does first: the pixel's history follows an edit, the keys

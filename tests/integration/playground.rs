@@ -515,6 +515,57 @@ fn step_html_writes_the_playground_as_one_file_that_opens_from_disk() {
     crate::ran("step --html's playground from file://", "examples/less.json");
 }
 
+/// The Debian package, unpacked in a temporary folder as it installs: its
+/// zsim writes a quiz page from `step --html --quiz` that a student answers
+/// from disk, and a site from `zsim playground` that opens from disk and from
+/// a static web server (`.ci/package` builds the package into target/debian).
+#[test]
+#[ignore = "needs Chromium, chromedriver and the Debian package (packaging/deb, as .ci/package builds it)"]
+fn the_packages_zsim_writes_a_quiz_page_and_a_site_a_student_answers() {
+    let debs: Vec<PathBuf> = std::fs::read_dir(manifest().join("target/debian"))
+        .map(|entries| {
+            entries.filter_map(|e| Some(e.ok()?.path())).filter(|p| p.extension().is_some_and(|e| e == "deb")).collect()
+        })
+        .unwrap_or_default();
+    let [deb] = &debs[..] else {
+        crate::missing("one Debian package in target/debian (packaging/deb)", "the installed playground")
+    };
+    let dir = scratch("installed-playground");
+    let root = dir.join("root");
+    let unpacked = Command::new("dpkg-deb").arg("-x").arg(deb).arg(&root).status().unwrap();
+    assert!(unpacked.success());
+    let installed = |args: &[&str]| {
+        let output = Command::new(root.join("usr/bin/zsim")).args(args).current_dir(&dir).output().unwrap();
+        assert!(output.status.success(), "{args:?}: {}", String::from_utf8_lossy(&output.stderr));
+    };
+    let book = root.join("usr/share/doc/zsim/examples/rogers.json");
+    installed(&["step", book.to_str().unwrap(), "--html", "--quiz", "-o", "quiz.html", "--lang", "en"]);
+    installed(&["playground", "-o", "site"]);
+    let (driver, browser) = driver();
+    let port = serve(dir.join("site"));
+    runtime().block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
+        // The quiz page from disk: it asks before it tells, and takes the answer.
+        client.goto(&format!("file://{}#polygon=2&scanline=15", dir.join("quiz.html").display())).await.unwrap();
+        let prompt = text_when(&client, "#prompt", |t| !t.is_empty()).await;
+        assert_eq!(prompt, "pixel (15, 15), stored 10: the z-buffer after? (a value, or - if not written)");
+        let input = client.find(Locator::Css("#quizAnswer")).await.unwrap();
+        input.send_keys("15\u{E007}").await.unwrap();
+        let said = text_when(&client, "#said", |t| !t.is_empty()).await;
+        assert!(said.starts_with("15 (the value written): right. z = 29/2"), "{said}");
+        // The site, from disk and from a web server: the book's example drawn as `zsim run` draws it.
+        let scene = std::fs::read_to_string(&book).unwrap();
+        for address in
+            [format!("file://{}", dir.join("site/index.html").display()), format!("http://127.0.0.1:{port}/")]
+        {
+            client.goto(&address).await.unwrap();
+            assert_eq!(shown_buffers(&client).await, run_final(&scene, &dir), "{address}");
+        }
+        client.close().await.unwrap();
+    });
+    crate::ran("the Debian package's playground through WebDriver", &deb.display().to_string());
+}
+
 /// For every example scene (effects, windows, perspective, clip space,
 /// concave polygons, another depth test), the final buffers the page shows
 /// are what `zsim run --final` prints, where the scene has no antialiasing

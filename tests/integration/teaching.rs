@@ -745,7 +745,9 @@ fn a_line_past_its_bound_ends_the_lesson_with_its_score() {
 
 /// Found by a teacher: `--quiz --polygon 2` was refused until a scanline was
 /// named, and `--html --quiz` in clap's bare words. A polygon alone starts at
-/// its first scanline; `--html --quiz` is said in the reader's language.
+/// its first scanline; `--html --quiz` writes the playground with its quiz on
+/// where this zsim carries it, and says in the reader's language why not
+/// where it does not, or where the arithmetic is not exact.
 #[test]
 fn a_polygon_alone_starts_at_its_first_scanline_and_html_quiz_is_said() {
     let alone = zsim(&["step", "examples/rogers.json", "--polygon", "2"]);
@@ -754,9 +756,24 @@ fn a_polygon_alone_starts_at_its_first_scanline_and_html_quiz_is_said() {
     let quiz = zsim_with_input(&["step", "examples/rogers.json", "--quiz", "--polygon", "2"], "q\n");
     assert_eq!(quiz.code, 0, "{}", quiz.stderr);
     assert!(quiz.stdout.contains("scanline y = 10.5 (row 10)"), "{}", quiz.stdout);
-    let html = zsim(&["step", "examples/rogers.json", "--html", "--quiz", "-o", "never.html"]);
-    assert_eq!(html.code, 2);
-    assert!(html.stderr.starts_with("zsim: --html writes a page whose quiz"), "{}", html.stderr);
-    let russian = zsim(&["step", "examples/rogers.json", "--html", "--quiz", "-o", "never.html", "--lang", "ru"]);
-    assert!(russian.stderr.starts_with("zsim: --html записывает страницу"), "{}", russian.stderr);
+    let inexact = zsim(&["step", "examples/rogers.json", "--html", "--quiz", "--arith", "f64", "-o", "never.html"]);
+    assert_eq!(
+        (inexact.code, inexact.stderr.as_str()),
+        (2, "zsim: --html --quiz writes the playground, whose quiz asks in exact arithmetic: leave out --arith\n")
+    );
+    let russian =
+        zsim(&["step", "examples/rogers.json", "--html", "--quiz", "--arith", "f64", "-o", "x.html", "--lang", "ru"]);
+    assert!(russian.stderr.starts_with("zsim: --html --quiz записывает песочницу"), "{}", russian.stderr);
+    let page = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("html-quiz.html");
+    let _ = std::fs::remove_file(&page);
+    let html = zsim(&["step", "examples/rogers.json", "--html", "--quiz", "coverage", "-o", page.to_str().unwrap()]);
+    if option_env!("ZSIM_PLAYGROUND").is_some() {
+        assert_eq!(html.code, 0, "{}", html.stderr);
+        let written = std::fs::read_to_string(&page).unwrap();
+        assert!(written.contains("window.ZSIM_QUIZ = \"coverage\";") && written.contains("window.ZSIM_WASM"));
+    } else {
+        assert_eq!(html.code, 2);
+        assert!(html.stderr.starts_with("zsim: this zsim was built without the browser playground"), "{}", html.stderr);
+        assert!(!page.exists());
+    }
 }

@@ -36,6 +36,9 @@ use crate::teach::step::page::{Buffers, buffer_data};
 use crate::teach::step::{Moved, Question, QuizMode};
 use crate::words::{Lang, polygon_label};
 
+mod site;
+pub use site::{one_file_page, site_files};
+
 mod edit;
 pub use edit::{Edit, edit, layout};
 
@@ -256,7 +259,8 @@ pub enum PageCommand {
 
 /// Carries out `command` (JSON, [`PageCommand`]) and answers with what became
 /// of it (`said`, in words; `kind`: `moved`, `refused`, `right`, `tryAgain`,
-/// `revealed`, `askAgain`, `skipped`, `nothingAsked`, `quit`) and the state
+/// `revealed`, `askAgain`, `skipped`, `nothingAsked`, `quit`), the quiz's
+/// summary after `quit` ([`Lesson::summary`], else null) and the state
 /// after it ([`lesson_state`]).
 pub fn lesson_act(lang: Lang, lesson: &mut Lesson, command: &str) -> Value {
     let command = match serde_json::from_str::<PageCommand>(command) {
@@ -283,7 +287,9 @@ pub fn lesson_act(lang: Lang, lesson: &mut Lesson, command: &str) -> Value {
         Said::Quit => "quit",
     };
     let text = said.text(lang, lesson.scene());
-    json!({"ok": true, "kind": kind, "said": text, "state": lesson_state(lang, lesson)})
+    // The quiz ended: its score and each mistake, as the line mode ends with them.
+    let summary = matches!(said, Said::Quit).then(|| lesson.summary(lang));
+    json!({"ok": true, "kind": kind, "said": text, "summary": summary, "state": lesson_state(lang, lesson)})
 }
 
 /// Everything the page shows of the lesson now, already cut to what may be
@@ -512,46 +518,6 @@ pub fn scene_of_fragment(lang: Lang, fragment: &str) -> Result<String, String> {
     String::from_utf8(bytes).map_err(|_| words!(lang, "error-not-utf8"))
 }
 
-/// The playground as one self-contained page that opens from `file://`
-/// (`zsim step --html`): its style, script and WebAssembly module inlined,
-/// the scene in `text` to start with, in `lang` unless the address asks for
-/// another (`?lang=`). `None` when this zsim was built without the playground
-/// (the build is given it by `ZSIM_PLAYGROUND`, the folder `web/build` writes).
-pub fn one_file_page(lang: Lang, text: &str) -> Option<String> {
-    #[cfg(playground)]
-    {
-        macro_rules! built {
-            ($name:literal) => {
-                include_bytes!(concat!(env!("OUT_DIR"), "/", $name))
-            };
-        }
-        let utf8 = |bytes: &'static [u8]| std::str::from_utf8(bytes).expect("the playground's files are UTF-8");
-        let (index, script, style, glue, module) = (
-            utf8(built!("index.html")),
-            utf8(built!("playground.js")),
-            utf8(built!("playground.css")),
-            utf8(built!("zsim_web.js")),
-            utf8(built!("zsim_module.js")),
-        );
-        let start = format!(
-            "window.ZSIM_SCENE = {};\nwindow.ZSIM_LANG = \"{}\";\n",
-            crate::teach::step::page::embedded_json(&Value::String(text.to_string()).to_string()),
-            lang.code()
-        );
-        let page = index
-            .replace(r#"<link rel="stylesheet" href="playground.css">"#, &format!("<style>\n{style}</style>"))
-            .replace(r#"<script src="zsim_web.js"></script>"#, &format!("<script>\n{glue}\n{start}</script>"))
-            .replace(r#"<script src="zsim_module.js"></script>"#, &format!("<script>\n{module}</script>"))
-            .replace(r#"<script src="playground.js"></script>"#, &format!("<script>\n{script}</script>"));
-        Some(page)
-    }
-    #[cfg(not(playground))]
-    {
-        let _ = (lang, text);
-        None
-    }
-}
-
 /// The page's own words in `lang`, by the name the page gives each.
 pub fn page_words(lang: Lang) -> Value {
     let mut words = serde_json::Map::new();
@@ -574,7 +540,7 @@ pub fn page_words(lang: Lang) -> Value {
 }
 
 /// The page's labels: the name the page uses, and the catalogue's key.
-const PAGE_WORDS: [(&str, &str); 56] = [
+const PAGE_WORDS: [(&str, &str); 57] = [
     ("saveAnswer", "class-page-save"),
     ("title", "title-scene-editor"),
     ("intro", "intro-scene-editor"),
@@ -618,6 +584,7 @@ const PAGE_WORDS: [(&str, &str); 56] = [
     ("previousPolygon", "command-previous-polygon"),
     ("nextPolygon", "command-next-polygon"),
     ("skip", "command-skip"),
+    ("endQuiz", "command-end-quiz"),
     ("quizKind", "quiz-kind-label"),
     ("coverageKind", "quiz-kind-coverage"),
     ("examples", "heading-examples"),

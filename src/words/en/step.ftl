@@ -172,6 +172,7 @@ lesson-questions-open = { $open } open questions on this scanline: answer them f
 lesson-no-such-polygon = there is no polygon { $polygon }: the scene has { $count }
 quiz-not-on-recorded-steps = This page shows the steps and asks nothing: the quiz is in the browser playground (the page this command writes when zsim is built with it; see the guide's chapter "The browser playground") and in zsim step --quiz.
 command-skip = Skip (s)
+command-end-quiz = End the quiz (q)
 quiz-kind-label = what the quiz asks
 quiz-kind-coverage = covered columns, then the z-buffer
 command-reset = Reset

@@ -65,4 +65,5 @@ usage-same-answer-twice = { $path }: { $files } answer for the same buffer of th
 grade-left-out-of-import = left out of the gradebook: "{ $first }" and "{ $second }" are one student to a gradebook (the same cell, without case): rename one and import their rows again
 usage-answer-without-buffer = { $path } is an answer: name it with --frame { $path } or --depth { $path }
 usage-line-too-long = a line longer than { $max } bytes: the lesson ends here, with its score above
-usage-html-quiz = --html writes a page whose quiz, where it has one (the playground's, beside its stepper), is turned on in the page itself: leave out --quiz
+usage-html-quiz = --html --quiz writes the playground, whose quiz asks in exact arithmetic: leave out --arith
+usage-no-playground = this zsim was built without the browser playground: install the Debian package or a release archive, which carry it, or build zsim with it (web/build, then ZSIM_PLAYGROUND=target/web cargo build)

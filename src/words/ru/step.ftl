@@ -168,6 +168,7 @@ lesson-questions-open = на этой строке открытых вопрос
 lesson-no-such-polygon = многоугольника { $polygon } нет: в сцене их { $count }
 quiz-not-on-recorded-steps = Эта страница показывает шаги и ничего не спрашивает: опрос есть в браузерной песочнице (эту страницу команда пишет, когда zsim собран с ней; см. главу руководства «Браузерная песочница») и в zsim step --quiz.
 command-skip = Пропустить (s)
+command-end-quiz = Закончить тест (q)
 quiz-kind-label = о чём спрашивает опрос
 quiz-kind-coverage = покрытые столбцы, затем z-буфер
 command-reset = Сбросить

@@ -168,6 +168,7 @@ lesson-questions-open = на цьому рядку відкритих питан
 lesson-no-such-polygon = багатокутника { $polygon } немає: у сцені їх { $count }
 quiz-not-on-recorded-steps = Ця сторінка показує кроки й нічого не питає: опитування є в браузерній пісочниці (цю сторінку команда пише, коли zsim зібрано з нею; див. розділ посібника «Браузерна пісочниця») і в zsim step --quiz.
 command-skip = Пропустити (s)
+command-end-quiz = Закінчити тест (q)
 quiz-kind-label = про що питає опитування
 quiz-kind-coverage = покриті стовпці, потім z-буфер
 command-reset = Скинути

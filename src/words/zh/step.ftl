@@ -168,6 +168,7 @@ lesson-questions-open = 本扫描线还有 { $open } 个未答问题：请先回
 lesson-no-such-polygon = 没有多边形 { $polygon }：场景中共有 { $count } 个
 quiz-not-on-recorded-steps = 本页只展示步骤，不提问：测验在浏览器演练场中（当 zsim 构建时包含它，本命令会写出该页面；见指南中“浏览器演练场”一章）以及 zsim step --quiz 中。
 command-skip = 跳过 (s)
+command-end-quiz = 结束测验 (q)
 quiz-kind-label = 测验的内容
 quiz-kind-coverage = 覆盖的列，然后是 z 缓冲区
 command-reset = 重置

@@ -64,4 +64,5 @@ usage-same-answer-twice = { $path }：{ $files } 回答的是同一状态的同�
 grade-left-out-of-import = 未写入成绩册：对成绩册而言“{ $first }”和“{ $second }”是同一个学生（同一单元格，不区分大小写）：请重命名其中一个，再导入他们的行
 usage-answer-without-buffer = { $path } 是一个答案：请用 --frame { $path } 或 --depth { $path } 指定
 usage-line-too-long = 一行超过 { $max } 字节：课程到此结束，得分见上
-usage-html-quiz = --html 写出的网页若有测验（演练场页面上步进器旁），在网页上打开：请去掉 --quiz
+usage-html-quiz = --html --quiz 写出演练场页面，其测验按精确算术提问：请去掉 --arith
+usage-no-playground = 此 zsim 构建时未包含浏览器演练场：请安装包含它的 Debian 软件包或发布归档，或带上它构建 zsim（先运行 web/build，再 ZSIM_PLAYGROUND=target/web cargo build）
