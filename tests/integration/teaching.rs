@@ -777,3 +777,26 @@ fn a_polygon_alone_starts_at_its_first_scanline_and_html_quiz_is_said() {
         assert!(!page.exists());
     }
 }
+
+/// `zsim playground -o DIR` writes the site this zsim carries (the files `web/build` writes but the
+/// WebAssembly module, which travels as a script); written again, it replaces them. A zsim built
+/// without the playground says so in one line and writes nothing.
+#[test]
+fn zsim_playground_writes_the_site_or_says_it_has_none() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("playground-site");
+    let _ = std::fs::remove_dir_all(&dir);
+    let site = dir.to_str().unwrap();
+    let run = zsim(&["playground", "-o", site]);
+    let Some(built) = option_env!("ZSIM_PLAYGROUND") else {
+        assert_eq!((run.code, run.stderr.lines().count()), (2, 1), "{}", run.stderr);
+        assert!(run.stderr.starts_with("zsim: this zsim was built without the browser playground"), "{}", run.stderr);
+        assert!(!dir.exists());
+        return;
+    };
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    for name in ["index.html", "playground.js", "playground.css", "zsim_web.js", "zsim_module.js"] {
+        let written = std::fs::read(dir.join(name)).unwrap();
+        assert_eq!(written, std::fs::read(std::path::Path::new(built).join(name)).unwrap(), "{name}");
+    }
+    assert_eq!(zsim(&["playground", "-o", site]).code, 0, "written again over the old site");
+}
