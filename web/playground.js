@@ -105,7 +105,7 @@
       (marked.matches("input, select") ? [marked] : marked.querySelectorAll("input")).forEach((e) => e.setAttribute("aria-invalid", "true"));
     }
     if (at.line !== undefined) {
-      const line = el("code", words.errorLine.replace("{line}", at.line).replace("{text}", at.text), "errorLine");
+      const line = el("code", at.said, "errorLine");
       $("error").append(el("br"), line);
     }
   }
@@ -360,7 +360,7 @@
   function renderLegend(rows) {
     const values = [...new Set(rows.flat())].sort((a, b) => a - b);
     const items = values.map((v) => {
-      const item = el("span", words.legendValue.replace("{value}", v), "legendItem");
+      const item = el("span", view.legend[v], "legendItem");
       const swatch = el("span", undefined, "swatch");
       swatch.style.background = colour(v);
       item.prepend(swatch);
@@ -487,7 +487,7 @@
       table.appendChild(tr);
     });
     if (s.hidden) {
-      const tr = el("tr"), td = el("td", words.hidden.replace("{count}", s.hidden), "help");
+      const tr = el("tr"), td = el("td", s.hiddenSaid, "help");
       td.colSpan = 6;
       tr.appendChild(td);
       table.appendChild(tr);
@@ -594,7 +594,7 @@
     const shown = student !== "";
     $("variantLine").hidden = !shown;
     $("saveAnswer").hidden = !shown;
-    if (shown) $("variantLine").textContent = words.variantOf.replace("{code}", variant).replace("{student}", student);
+    if (shown) $("variantLine").textContent = z.variant_line(lang, student, variant);
   }
 
   // The address's parts: `scene`, `polygon`, `scanline`, `quiz`, `pixel`.

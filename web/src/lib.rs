@@ -129,6 +129,12 @@ impl WebLesson {
     }
 }
 
+/// See [`playground::variant_line`].
+#[wasm_bindgen]
+pub fn variant_line(code: &str, student: &str, variant: &str) -> String {
+    playground::variant_line(lang(code), student, variant)
+}
+
 /// See [`playground::check`]: `buffer` is `frame` or `depth`.
 #[wasm_bindgen]
 pub fn check(code: &str, scene: &str, after: usize, buffer: &str, typed: &str) -> String {

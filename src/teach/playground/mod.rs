@@ -73,7 +73,9 @@ fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
             crate::error::Error::Setting { key, .. } => json!({"key": key}),
             crate::error::Error::SceneFormat { line: Some(line), .. } => {
                 let shown = text.lines().nth(line.saturating_sub(1)).unwrap_or_default();
-                json!({"line": line, "text": crate::words::printable(shown).into_owned()})
+                let shown = crate::words::printable(shown).into_owned();
+                let said = words!(lang, "error-at-line", line = *line, text = shown.clone());
+                json!({"line": line, "text": shown, "said": said})
             }
             _ => Value::Null,
         };
@@ -166,6 +168,8 @@ pub fn view_of(lang: Lang, scene: &Scene) -> Value {
         "notes": notes,
         // The figure's colours for framebuffer values 1, 2, … (0 is white), so page and figure agree.
         "palette": figure::PALETTE,
+        // Each framebuffer value's name in the legend, by value.
+        "legend": (0..1u32 << scene.frame_bits.min(8)).map(|value| words!(lang, "legend-value", value = value)).collect::<Vec<_>>(),
     })
 }
 
@@ -358,6 +362,7 @@ pub fn lesson_state(lang: Lang, lesson: &mut Lesson) -> Value {
         "heading": view.heading, "slope": view.slope, "scanline": view.scanline,
         "crossings": view.crossings, "spans": view.spans, "spanDepths": view.span_depths,
         "columns": view.columns, "rows": rows, "hidden": view.hidden, "notes": view.notes,
+        "hiddenSaid": (view.hidden > 0).then(|| words!(lang, "pixels-hidden-asked", count = view.hidden)),
         "asking": asking, "prompt": prompt, "secondTry": lesson.second_try(), "open": open,
         // While a question is open, what would answer it elsewhere on the page (the final buffers,
         // the buffers after each polygon, the figure) is hidden: these words stand in their place.
@@ -527,16 +532,12 @@ pub fn page_words(lang: Lang) -> Value {
     words.insert("lang".into(), Value::String(lang.code().into()));
     words.insert("depthName".into(), Value::String(Buffer::Depth.name(lang)));
     words.insert("frameName".into(), Value::String(Buffer::Frame.name(lang)));
-    words.insert("keeps".into(), Value::String(words!(lang, "keeps-value", value = "{after}")));
-    words.insert("status".into(), Value::String(words!(lang, "scanline-of-count", at = "{at}", count = "{count}")));
-    words.insert("hidden".into(), Value::String(words!(lang, "pixels-hidden-asked", count = "{count}")));
-    words.insert("legendValue".into(), Value::String(words!(lang, "legend-value", value = "{value}")));
-    words.insert("errorLine".into(), Value::String(words!(lang, "error-at-line", line = "{line}", text = "{text}")));
-    words.insert(
-        "variantOf".into(),
-        Value::String(words!(lang, "class-page-variant", code = "{code}", student = "{student}")),
-    );
     Value::Object(words)
+}
+
+/// The line above a class's homework: whose it is and the variant's code, from the student's link.
+pub fn variant_line(lang: Lang, student: &str, code: &str) -> String {
+    words!(lang, "class-page-variant", code = code, student = student)
 }
 
 /// The page's labels: the name the page uses, and the catalogue's key.
@@ -681,7 +682,8 @@ mod tests {
         // Where the page marks it: the polygon's table, the setting, or the JSON's line.
         assert_eq!(view["at"]["line"], 1, "{view}");
         let view = super::view(Lang::En, "{\n  \"width\": 32,\n  \"height\": 32\n  \"polygons\": []\n}");
-        assert_eq!(view["at"], json!({"line": 4, "text": "  \"polygons\": []"}), "{view}");
+        let said = "line 4:   \"polygons\": []";
+        assert_eq!(view["at"], json!({"line": 4, "text": "  \"polygons\": []", "said": said}), "{view}");
         let view = super::view(
             Lang::En,
             r#"{"width": 8, "height": 8, "polygons": [{"value": 1, "vertices": [[0, 0, 1], [1, 1, 1]]}]}"#,
@@ -736,6 +738,13 @@ mod tests {
     /// The page's lesson is the library's: the same refusals, hints and score as every front end.
     #[test]
     fn the_page_asks_the_librarys_lesson() {
+        // The counts the page shows reach Fluent as numbers, worded here (plurals and all).
+        let mut asked = lesson(Lang::En, BOOK, Some(QuizMode::Depth), Some((2, 15))).unwrap();
+        let state = lesson_state(Lang::En, &mut asked);
+        assert_eq!(state["hiddenSaid"], "13 more covered pixels, asked one at a time", "{state}");
+        assert_eq!(words!(Lang::En, "pixels-hidden-asked", count = 1), "1 more covered pixel, asked next");
+        let legend = view(Lang::Ru, BOOK)["legend"].clone();
+        assert_eq!(legend.as_array().map(Vec::len), Some(4), "one name for each of the 2-bit framebuffer's values");
         let mut lesson = lesson(Lang::En, BOOK, Some(QuizMode::Depth), None).unwrap();
         let moved = lesson_act(Lang::En, &mut lesson, r#"{"go": [2, 15]}"#);
         assert_eq!(moved["kind"], "refused", "{moved}");

@@ -312,4 +312,7 @@ heading-homework = Check a homework answer
 antialias-not-drawn = This page draws the scene without its antialiasing; zsim run shows the antialiased pictures.
 heading-examples = Examples
 buffer-kind-label = which buffer
-pixels-hidden-asked = { $count } more covered pixels, asked one at a time
+pixels-hidden-asked = { $count ->
+    [one] 1 more covered pixel, asked next
+   *[other] { $count } more covered pixels, asked one at a time
+}
