@@ -69,12 +69,14 @@ fn main() {
         let parts = format!(
             r#"const text = document.getElementById("json").value, z = wasm_bindgen, times = {{}};
             const time = (name, f) => {{ const t = performance.now(); f(); (times[name] = times[name] || []).push(performance.now() - t); }};
+            const read = new z.WebLesson("en", text, "", 0, 0);
             for (let i = 0; i < {ROUNDS}; i++) {{
-              time("view", () => JSON.parse(z.view("en", text)));
+              time("view", () => JSON.parse(read.view()));
               time("lesson", () => {{ const l = new z.WebLesson("en", text, "", 0, 0); JSON.parse(l.state()); l.free(); }});
-              time("after", () => JSON.parse(z.after("en", text, 0)));
+              time("after", () => JSON.parse(read.after(0)));
               time("edit", () => z.edit("en", text, JSON.stringify({{op: "set", path: ["width"], value: "64"}})));
             }}
+            read.free();
             return times;"#
         );
         let parts = client.execute(&parts, vec![]).await.unwrap();
@@ -95,9 +97,9 @@ fn main() {
         class_edits.iter().copied().fold(0.0, f64::max)
     );
     for (name, what) in [
-        ("view", "the scene's view (zsim::playground::view)"),
+        ("view", "the scene's view, of the lesson's reading (WebLesson::view)"),
         ("lesson", "a new lesson and its state (WebLesson)"),
-        ("after", "the buffers after polygon 1 (zsim::playground::after)"),
+        ("after", "the buffers after polygon 1, of the lesson's reading (WebLesson::after)"),
         ("edit", "the edit of the scene's text (zsim::playground::edit)"),
     ] {
         let times: Vec<f64> = parts[name].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();

@@ -49,18 +49,6 @@ pub fn answer_file(code: &str, scene: &str, buffer: &str, typed: &str, student: 
     playground::answer_file(lang(code), scene, buffer, typed, student, variant).to_string()
 }
 
-/// See [`playground::view`].
-#[wasm_bindgen]
-pub fn view(code: &str, scene: &str) -> String {
-    playground::view(lang(code), scene).to_string()
-}
-
-/// See [`playground::after`].
-#[wasm_bindgen]
-pub fn after(code: &str, scene: &str, index: usize) -> String {
-    playground::after(lang(code), scene, index).to_string()
-}
-
 /// The stepper and its quiz as one object the page keeps: the scene parsed
 /// once, where the student is, what is asked and the score, all the
 /// library's [`Lesson`]; the page sends it keys and answers and renders
