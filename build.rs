@@ -2,10 +2,12 @@
 //! given it: `ZSIM_PLAYGROUND` names the folder `web/build` writes
 //! (`target/web`). Without it, `step --html` writes the recorded stepper page.
 //! Also gathers the commands of the README's and the guide's ```console
-//! examples (which `cargo test` runs) for the man pages' EXAMPLES.
+//! examples (which `cargo test` runs) for the man pages' EXAMPLES. Writes
+//! the catalogues as this build keeps them (`OUT_DIR/words/`).
 
 fn main() {
     examples();
+    catalogues();
     println!("cargo::rustc-check-cfg=cfg(playground)");
     println!("cargo::rerun-if-env-changed=ZSIM_PLAYGROUND");
     let Some(folder) = std::env::var_os("ZSIM_PLAYGROUND") else { return };
@@ -62,4 +64,143 @@ fn reads_installed_files(command: &str) -> bool {
         let file = token.contains('/') || [".json", ".txt", ".obj", ".csv", ".tga"].iter().any(|e| token.ends_with(e));
         written || !file || token.starts_with("examples/")
     })
+}
+
+/// Writes `OUT_DIR/words/LANG/AREA.ftl`: each of `src/words`' catalogues
+/// without the messages that only a part this build leaves out names (the
+/// command line's `src/cli` and `src/app` without the `cli` feature, the
+/// GPU's without `gpu`, the courses' without `courses`): a message is left
+/// out when its key stands as a string literal in the sources and every file
+/// it stands in is such a part's. A key that no source names literally is
+/// kept. The browser's module, built without them, is that much smaller.
+fn catalogues() {
+    let out = std::path::PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
+    println!("cargo::rerun-if-changed=src");
+    let enabled = |feature: &str| std::env::var_os(format!("CARGO_FEATURE_{}", feature.to_uppercase())).is_some();
+    let parts: [(&str, &[&str]); 3] =
+        [("cli", &["src/cli/", "src/app/"]), ("gpu", &["src/observe/gpu/"]), ("courses", &["src/courses/"])];
+    let absent: Vec<&str> = parts
+        .iter()
+        .filter(|(feature, _)| !enabled(feature))
+        .flat_map(|(_, folders)| folders.iter().copied())
+        .collect();
+    // Every string literal that could be a key, and whether it stands anywhere but in an absent part.
+    let mut sources = Vec::new();
+    rust_files(std::path::Path::new("src"), &mut sources);
+    let mut named: std::collections::HashMap<String, bool> = std::collections::HashMap::new();
+    for file in &sources {
+        let shown = file.to_string_lossy().replace('\\', "/");
+        let kept = !absent.iter().any(|folder| shown.starts_with(folder));
+        let text = std::fs::read_to_string(file).unwrap_or_default();
+        for literal in string_literals(&text) {
+            if !literal.is_empty() && literal.bytes().all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'-')
+            {
+                *named.entry(literal).or_insert(false) |= kept;
+            }
+        }
+    }
+    let left_out = |key: &str| named.get(key).is_some_and(|kept| !kept);
+    for lang in ["en", "ru", "uk", "zh"] {
+        let folder = out.join("words").join(lang);
+        std::fs::create_dir_all(&folder).expect("OUT_DIR is writable");
+        for area in ["scene", "draw", "step", "check", "courses", "usage", "class"] {
+            let text = std::fs::read_to_string(format!("src/words/{lang}/{area}.ftl")).expect("a catalogue");
+            // A message is its line `key = …` and the lines after it up to the next entry (a
+            // message, a term or a comment: a line that starts with a letter, `-` or `#`).
+            let mut kept = String::new();
+            let mut leaving = false;
+            for line in text.lines() {
+                if line.starts_with(|c: char| c.is_ascii_alphabetic() || c == '-' || c == '#') {
+                    let key = line.split_once(" =").map(|(key, _)| key.trim());
+                    leaving = key.is_some_and(left_out);
+                }
+                if !leaving {
+                    kept.push_str(line);
+                    kept.push('\n');
+                }
+            }
+            std::fs::write(folder.join(format!("{area}.ftl")), kept).expect("OUT_DIR is writable");
+        }
+    }
+}
+
+/// The `.rs` files under `folder`, in no particular order.
+fn rust_files(folder: &std::path::Path, files: &mut Vec<std::path::PathBuf>) {
+    for entry in std::fs::read_dir(folder).into_iter().flatten().flatten() {
+        let path = entry.path();
+        if path.is_dir() {
+            rust_files(&path, files);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            files.push(path);
+        }
+    }
+}
+
+/// The string literals of Rust source `text` (plain and raw, their contents
+/// as written), past comments and character literals.
+fn string_literals(text: &str) -> Vec<String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut found = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        match chars[i] {
+            '/' if chars.get(i + 1) == Some(&'/') => {
+                while i < chars.len() && chars[i] != '\n' {
+                    i += 1;
+                }
+            }
+            '/' if chars.get(i + 1) == Some(&'*') => {
+                i += 2;
+                while i + 1 < chars.len() && !(chars[i] == '*' && chars[i + 1] == '/') {
+                    i += 1;
+                }
+                i += 2;
+            }
+            // A character literal ('"', '\'', 'x'); a lifetime ('a) is passed over as code.
+            '\'' if chars.get(i + 1) == Some(&'\\') => {
+                i += 2;
+                while i < chars.len() && chars[i] != '\'' {
+                    i += 1;
+                }
+                i += 1;
+            }
+            '\'' if chars.get(i + 2) == Some(&'\'') => i += 3,
+            'r' if matches!(chars.get(i + 1), Some('"' | '#'))
+                && !chars[..i].last().is_some_and(|c| c.is_alphanumeric() || *c == '_') =>
+            {
+                let hashes = chars[i + 1..].iter().take_while(|c| **c == '#').count();
+                if chars.get(i + 1 + hashes) != Some(&'"') {
+                    i += 1;
+                    continue;
+                }
+                let start = i + 2 + hashes;
+                let mut end = start;
+                while end < chars.len()
+                    && !(chars[end] == '"'
+                        && chars[end + 1..].iter().take(hashes).filter(|c| **c == '#').count() == hashes)
+                {
+                    end += 1;
+                }
+                found.push(chars[start..end.min(chars.len())].iter().collect());
+                i = end + 1 + hashes;
+            }
+            '"' => {
+                let mut literal = String::new();
+                i += 1;
+                while i < chars.len() && chars[i] != '"' {
+                    if chars[i] == '\\' {
+                        i += 1;
+                    }
+                    if let Some(c) = chars.get(i) {
+                        literal.push(*c);
+                    }
+                    i += 1;
+                }
+                found.push(literal);
+                i += 1;
+            }
+            _ => i += 1,
+        }
+    }
+    found
 }

@@ -105,6 +105,7 @@
 
 #[macro_use]
 mod words;
+#[cfg(feature = "courses")]
 mod courses;
 mod door;
 mod effects;
@@ -118,6 +119,7 @@ mod scene;
 mod simulate;
 mod teach;
 
+#[cfg(feature = "courses")]
 pub use courses::{buet, cs418, tinyrenderer};
 pub use door::{
     Folder, Identity, Line, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, Plan, Replace, png_reader, read_bytes,

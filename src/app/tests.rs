@@ -328,8 +328,7 @@ fn b_at_the_end_goes_back_to_the_last_scanline() {
 /// library's score, the question answered once and left open counted.
 #[test]
 fn the_app_takes_the_lesson_script_as_the_library_does() {
-    let script =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/lesson-script.txt")).unwrap();
+    let script = include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/lesson-script.txt"));
     let steps: Vec<&str> = script.lines().filter(|line| !line.starts_with('#') && !line.is_empty()).collect();
     // The triangle's scanline 15 (its recorded scanline 5).
     let start = Some(Stop { polygon: 1, scanline: 5 });

@@ -33,13 +33,7 @@ pub struct PlaygroundArgs {
 
 /// Writes the playground's site into a folder (replacing an older one's files).
 pub fn playground(lang: zsim::Lang, args: &PlaygroundArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let files = zsim::playground::site_files().ok_or(super::flags::Flag::NoPlayground)?;
-    let mut plan = zsim::Plan::new(&[], zsim::Replace::Allowed);
-    for (name, bytes) in &files {
-        plan.file(args.output.join(name), bytes.clone());
-    }
-    plan.write()?;
-    let names: Vec<&str> = files.iter().map(|(name, _)| name.as_str()).collect();
+    let names = zsim::playground::write_site(&args.output).ok_or(super::flags::Flag::NoPlayground)??;
     let line = zsim::words!(lang, "file-written-in", files = names.join(", "), path = zsim::shown_path(&args.output));
     super::emit(out, &format!("{line}\n"))?;
     Ok(Finish::Ok)

@@ -10,7 +10,7 @@ use zsim::Error;
 use zsim::explain::fate_text;
 use zsim::lesson::{Command, Lesson, Said};
 use zsim::report::{self, MatrixStyle};
-use zsim::step::{Moved, Stepper};
+use zsim::step::Moved;
 use zsim::{Scene, Stop};
 
 use super::{Failure, Finish, emit};
@@ -113,30 +113,15 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
     zsim::arith::check_supported(&scene, args.arith)?;
     let color = super::use_color();
     // The page's quiz is the playground's, which asks in exact arithmetic.
-    let exact = args.arith == zsim::arith::Arith::Exact;
-    if args.html && args.quiz.is_some() && !exact {
-        return Err(super::flags::Flag::HtmlQuiz.into());
-    }
-    if args.html && args.quiz.is_some() && zsim::playground::site_files().is_none() {
-        return Err(super::flags::Flag::NoPlayground.into());
+    match (args.html && args.quiz.is_some(), args.arith == zsim::arith::Arith::Exact) {
+        (true, false) => return Err(super::flags::Flag::HtmlQuiz.into()),
+        (true, true) if zsim::playground::site_files().is_none() => return Err(super::flags::Flag::NoPlayground.into()),
+        _ => {}
     }
     if let (true, Some(output)) = (args.html, &args.output) {
-        let name = args.scene.file_name().map_or_else(|| zsim::shown_path(&args.scene), |n| n.to_string_lossy().into());
-        // The playground where this zsim was built with it (exact arithmetic only); the recorded stepper otherwise.
         let quiz = args.quiz.map(Into::into);
-        let playground = exact.then(|| zsim::playground::one_file_page(lang, &text, quiz)).flatten();
-        // What the page draws at all, refused before it is made.
-        let page = match playground {
-            Some(page) => {
-                zsim::page_limits::check_text(&text, Some(&args.scene)).map_err(Error::from)?;
-                zsim::page_limits::check_reach(&scene, Some(&args.scene)).map_err(Error::from)?;
-                page
-            }
-            None => {
-                zsim::page_limits::check_recorded(&scene, &args.scene).map_err(Error::from)?;
-                zsim::page::page(lang, &mut Stepper::new(&scene, args.arith), &name)
-            }
-        };
+        let page =
+            zsim::playground::step_page(lang, &scene, &text, &args.scene, args.arith, quiz).map_err(Error::from)?;
         let mut plan = zsim::Plan::new(&[&args.scene], zsim::Replace::Allowed);
         plan.file(output, page);
         plan.write()?;
@@ -178,10 +163,9 @@ pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Fin
     if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
         lesson.start(start);
         crate::app::run(&mut crate::app::App::new(&mut lesson, lang))?;
-        // The screen is gone (q, Esc or Ctrl-C): the quiz ends as `q` ends it, and the score and
-        // each mistake stay on the terminal, as in the line mode.
-        lesson.act(lang, Command::Quit);
-        emit(out, &lesson.summary(lang))?;
+        // The screen is gone (q, Esc or Ctrl-C): the quiz's score and each mistake stay on the
+        // terminal, as in the line mode.
+        emit(out, &lesson.finish(lang))?;
         return Ok(Finish::Ok);
     }
     interactive(lang, &zsim::shown_path(&args.scene), &mut lesson, start, color, out)
@@ -264,8 +248,7 @@ fn interactive(
                 continue;
             }
             Some(zsim::Line::TooLong) => {
-                lesson.act(lang, Command::Quit);
-                emit(out, &lesson.summary(lang))?;
+                emit(out, &lesson.finish(lang))?;
                 return Err(super::flags::Flag::LineTooLong { max: MAX_LINE_BYTES }.into());
             }
         };
@@ -284,9 +267,8 @@ fn interactive(
             _ => false,
         };
     }
-    // The end of the input ends the quiz as `q` does.
-    lesson.act(lang, Command::Quit);
-    emit(out, &lesson.summary(lang))?;
+    // `q` or the end of the input.
+    emit(out, &lesson.finish(lang))?;
     Ok(Finish::Ok)
 }
 

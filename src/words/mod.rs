@@ -84,18 +84,21 @@ impl Lang {
         }
     }
 
-    /// The catalogue's resources, one an area, in the order of [`AREAS`].
+    /// The catalogue's resources, one an area, in the order of [`AREAS`]:
+    /// `src/words/LANG/AREA.ftl` as the build keeps them (build.rs leaves out
+    /// the messages only a part this build lacks names: the command line's,
+    /// the GPU's, the courses').
     fn catalogue(self) -> [&'static str; AREAS.len()] {
         macro_rules! areas {
             ($lang:literal) => {
                 [
-                    include_str!(concat!($lang, "/scene.ftl")),
-                    include_str!(concat!($lang, "/draw.ftl")),
-                    include_str!(concat!($lang, "/step.ftl")),
-                    include_str!(concat!($lang, "/check.ftl")),
-                    include_str!(concat!($lang, "/courses.ftl")),
-                    include_str!(concat!($lang, "/usage.ftl")),
-                    include_str!(concat!($lang, "/class.ftl")),
+                    include_str!(concat!(env!("OUT_DIR"), "/words/", $lang, "/scene.ftl")),
+                    include_str!(concat!(env!("OUT_DIR"), "/words/", $lang, "/draw.ftl")),
+                    include_str!(concat!(env!("OUT_DIR"), "/words/", $lang, "/step.ftl")),
+                    include_str!(concat!(env!("OUT_DIR"), "/words/", $lang, "/check.ftl")),
+                    include_str!(concat!(env!("OUT_DIR"), "/words/", $lang, "/courses.ftl")),
+                    include_str!(concat!(env!("OUT_DIR"), "/words/", $lang, "/usage.ftl")),
+                    include_str!(concat!(env!("OUT_DIR"), "/words/", $lang, "/class.ftl")),
                 ]
             };
         }

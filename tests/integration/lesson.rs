@@ -215,6 +215,22 @@ fn the_playground_asks_as_the_lesson_asks() {
         // The quiz ended: the stepper goes on where it was, without the quiz, asking nothing.
         assert!(!fragment(&client).await.contains("quiz="), "{}", fragment(&client).await);
         assert_eq!(text(&client, "#prompt").await, "");
+        // Every word the page showed was in the module's catalogue (built without the command
+        // line's, the GPU's and the courses' messages): a message it lacked would show its key.
+        let shown = text(&client, "body").await;
+        let keys: Vec<String> = std::fs::read_dir(manifest().join("src/words/en"))
+            .unwrap()
+            .flat_map(|entry| {
+                std::fs::read_to_string(entry.unwrap().path()).unwrap().lines().map(str::to_string).collect::<Vec<_>>()
+            })
+            .filter_map(|line| {
+                Some(line.split_once(" =")?.0.to_string())
+                    .filter(|key| key.contains('-') && !key.starts_with([' ', '#']))
+            })
+            .collect();
+        assert!(keys.len() > 800, "{} keys", keys.len());
+        let missing: Vec<&String> = keys.iter().filter(|key| shown.contains(key.as_str())).collect();
+        assert!(missing.is_empty(), "keys shown for want of their messages: {missing:?}");
 
         // The coverage question: nothing on the page gives the columns away; zsim's own notation answers it.
         client.goto(&address(port, "coverage")).await.unwrap();

@@ -37,7 +37,7 @@ use crate::teach::step::{Moved, Question, QuizMode};
 use crate::words::{Lang, polygon_label};
 
 mod site;
-pub use site::{one_file_page, site_files};
+pub use site::{one_file_page, site_files, step_page, write_site};
 
 mod edit;
 pub use edit::{Edit, edit, layout};

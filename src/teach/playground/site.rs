@@ -6,9 +6,14 @@
 //! server ([`site_files`], `zsim playground`) and the one page that opens from
 //! `file://` ([`one_file_page`], `zsim step --html`).
 
+use std::path::Path;
+
 use serde_json::Value;
 
-use crate::teach::step::QuizMode;
+use crate::effects::arith::Arith;
+use crate::scene::Scene;
+use crate::teach::page_limits::{TooLarge, check_reach, check_recorded, check_text};
+use crate::teach::step::{QuizMode, Stepper};
 use crate::words::Lang;
 
 /// The site's files by name, as `web/build` wrote them; `None` when this
@@ -42,6 +47,18 @@ pub fn site_files() -> Option<Vec<(String, Vec<u8>)>> {
     Some(embedded()?.iter().map(|(name, text)| (name.to_string(), text.as_bytes().to_vec())).collect())
 }
 
+/// Writes the site into `folder` as one plan, replacing an older site's
+/// files: the names written; `None` when this zsim was built without the
+/// playground.
+pub fn write_site(folder: &Path) -> Option<Result<Vec<String>, crate::error::Error>> {
+    let files = site_files()?;
+    let mut plan = crate::door::Plan::new(&[], crate::door::Replace::Allowed);
+    for (name, bytes) in &files {
+        plan.file(folder.join(name), bytes.clone());
+    }
+    Some(plan.write().map(|_| files.into_iter().map(|(name, _)| name).collect()))
+}
+
 /// The playground as one self-contained page that opens from `file://`
 /// (`zsim step --html`): its style, script and WebAssembly module inlined,
 /// the scene in `text` to start with, in `lang` unless the address asks for
@@ -66,4 +83,26 @@ pub fn one_file_page(lang: Lang, text: &str, quiz: Option<QuizMode>) -> Option<S
         .replace(r#"<script src="zsim_module.js"></script>"#, &format!("<script>\n{module}</script>"))
         .replace(r#"<script src="playground.js"></script>"#, &format!("<script>\n{script}</script>"));
     Some(page)
+}
+
+/// The page `zsim step --html` writes for `scene` (read from `text`, the
+/// file `path`): the playground where this zsim carries it and the
+/// arithmetic is exact, its quiz on in `quiz`'s mode; the recorded stepper
+/// otherwise. Refused past the page's limits before it is made.
+pub fn step_page(
+    lang: Lang,
+    scene: &Scene,
+    text: &str,
+    path: &Path,
+    arith: Arith,
+    quiz: Option<QuizMode>,
+) -> Result<String, TooLarge> {
+    if arith == Arith::Exact && embedded().is_some() {
+        check_text(text, Some(path))?;
+        check_reach(scene, Some(path))?;
+        return Ok(one_file_page(lang, text, quiz).unwrap_or_default());
+    }
+    check_recorded(scene, path)?;
+    let name = path.file_name().map_or_else(|| crate::words::shown_path(path), |n| n.to_string_lossy().into());
+    Ok(crate::teach::step::page::page(lang, &mut Stepper::new(scene, arith), &name))
 }

@@ -428,6 +428,13 @@ impl Lesson {
         said
     }
 
+    /// Ends the quiz as `q` ends it (a question answered once and still
+    /// open counts, as not answered right) and says its [`summary`](Self::summary).
+    pub fn finish(&mut self, lang: Lang) -> String {
+        self.act(lang, Command::Quit);
+        self.summary(lang)
+    }
+
     /// The score and each question answered wrong, with what was right and why.
     pub fn summary(&mut self, lang: Lang) -> String {
         let Some(quiz) = &self.quiz else { return String::new() };
