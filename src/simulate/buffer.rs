@@ -345,9 +345,9 @@ const PARALLEL_CLEAR: usize = 1 << 20;
 
 /// The threads that clear `cells` cells, when more than one is asked for and
 /// the buffers are large; `None` (one thread clears) also when the system
-/// would not start them.
+/// would not start them, and in WebAssembly, which has no threads to start.
 fn clearing_pool(cells: usize, threads: usize) -> Option<rayon::ThreadPool> {
-    (threads > 1 && cells >= PARALLEL_CLEAR)
+    (threads > 1 && cells >= PARALLEL_CLEAR && !cfg!(target_arch = "wasm32"))
         .then(|| rayon::ThreadPoolBuilder::new().num_threads(threads).build().ok())
         .flatten()
 }

@@ -566,6 +566,19 @@ fn the_packages_zsim_writes_a_quiz_page_and_a_site_a_student_answers() {
     crate::ran("the Debian package's playground through WebDriver", &deb.display().to_string());
 }
 
+/// The module a student downloads stays within its budget, 400 KB gzipped
+/// (`gzip -9`, as a static server would send it): the catalogues without
+/// what only the command line, the GPU and the courses say, and no threads'
+/// code (WebAssembly has one).
+#[test]
+#[ignore = "needs web/build's site (target/web) and gzip"]
+fn the_module_stays_within_400_kb_gzipped() {
+    let module = site().join("zsim_web_bg.wasm");
+    let gzipped = Command::new("gzip").arg("-9").arg("-c").arg(&module).output().expect("gzip runs").stdout.len();
+    assert!(gzipped <= 400_000, "{}: {gzipped} bytes gzipped", module.display());
+    crate::ran("the module's size", &format!("{gzipped} bytes gzipped"));
+}
+
 /// For every example scene (effects, windows, perspective, clip space,
 /// concave polygons, another depth test), the final buffers the page shows
 /// are what `zsim run --final` prints, where the scene has no antialiasing

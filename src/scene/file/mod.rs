@@ -570,7 +570,7 @@ fn with_made<P: Send>(
     let transparency = std::sync::atomic::AtomicBool::new(false);
     // In memory offered huge pages: drawing in tiles reads the polygons out of order.
     let mut made: Vec<Polygon> = crate::scene::pages::with_huge_pages(polygons.len());
-    let polygons = polygons.into_par_iter().enumerate().map(|(index, polygon)| match make(polygon, index, frame) {
+    let one = |(index, polygon)| match make(polygon, index, frame) {
         Ok(polygon) => {
             if polygon.opacity.is_some() {
                 transparency.store(true, std::sync::atomic::Ordering::Relaxed);
@@ -581,8 +581,13 @@ fn with_made<P: Send>(
             failed.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push((index, unmade));
             Polygon::outside_view(String::new(), 0, None)
         }
-    });
-    made.par_extend(polygons);
+    };
+    // On every core; in WebAssembly, which has one, in order.
+    if cfg!(target_arch = "wasm32") {
+        made.extend(polygons.into_iter().enumerate().map(one));
+    } else {
+        made.par_extend(polygons.into_par_iter().enumerate().map(one));
+    }
     let mut failed = failed.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
     if failed.iter().any(|(_, unmade)| matches!(unmade, Unmade::Unread)) {
         return Err(Unmade::Unread);

@@ -240,7 +240,10 @@ impl LevelCells for Tiles<'_> {
 /// The threads that draw in tiles when `threads` asks for more than one;
 /// `None` for one, or when the system would not start them (then one thread
 /// bins and draws the same cells).
+/// WebAssembly has no threads to start: there one thread draws, and the
+/// parallel paths are not in the module.
 pub(in crate::simulate) fn pool(threads: usize) -> Option<rayon::ThreadPool> {
+    let threads = if cfg!(target_arch = "wasm32") { 1 } else { threads };
     (threads > 1).then(|| rayon::ThreadPoolBuilder::new().num_threads(threads).build().ok()).flatten()
 }
 
