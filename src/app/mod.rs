@@ -267,7 +267,7 @@ impl<'l> App<'l> {
         if self.help {
             // Over the raster too, as wide as its longest line allows, so that a key and what it
             // does stay on one line (in the right pane alone they wrapped apart on 80×24).
-            let text = ratatui::text::Text::from(zsim::words!(lang, "keys-help"));
+            let text = ratatui::text::Text::from(help(lang));
             let width = (text.width() as u16 + 2).min(body.width);
             let height = (text.height() as u16 + 2).min(body.height);
             let area = Rect { x: body.x + (body.width - width) / 2, y: body.y, width, height };
@@ -492,3 +492,20 @@ pub fn run(app: &mut App<'_>) -> std::io::Result<()> {
 
 #[cfg(test)]
 mod tests;
+
+/// The keys box: the lesson's keys from its one table ([`zsim::lesson::KEYS`]),
+/// each with the app's other keys for the same command, then the app's own.
+fn help(lang: zsim::Lang) -> String {
+    let also = |key: char| match key {
+        'n' => " Space Enter → ↓",
+        'b' => " ← ↑",
+        'q' => " Esc Ctrl-C",
+        _ => "",
+    };
+    let mut text: String = zsim::lesson::KEYS
+        .iter()
+        .map(|(key, word)| format!("{:<19}{}\n", format!("{key}{}", also(*key)), zsim::message(lang, word, &[])))
+        .collect();
+    text.push_str(&zsim::words!(lang, "keys-help"));
+    text
+}

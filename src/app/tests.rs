@@ -185,16 +185,25 @@ fn the_quiz_asks_before_each_pixel_is_shown() {
 
 /// Found by a new student: at 80×24 the `?` box wrapped each key's action
 /// onto the next line. It now lies over the raster too, each key and its
-/// action on one line, in every language.
+/// action on one line, in every language. Found by a maintainer: the box left
+/// out `s`; the lesson's keys now come from its one table, every one of them.
 #[test]
 fn the_keys_box_keeps_each_key_and_its_action_on_one_line_at_80_by_24() {
     let mut lesson = lesson(book(), None, None);
     let mut app = App::new(&mut lesson, zsim::Lang::En);
     press(&mut app, "?");
     let text = screen(&mut app, 80, 24);
-    for line in ["n Space Enter → ↓  next scanline (or pixel)", "f / z              show the framebuffer / z-buffer"]
-    {
+    for line in [
+        "n Space Enter → ↓  next scanline",
+        "s                  skip this scanline's questions",
+        "q Esc Ctrl-C       quit",
+        "f / z              show the framebuffer / z-buffer",
+    ] {
         assert!(text.contains(line), "{line:?} on one line:\n{text}");
+    }
+    for (key, word) in zsim::lesson::KEYS {
+        let line = format!("│{key}");
+        assert!(text.contains(&line) && text.contains(&zsim::message(zsim::Lang::En, word, &[])), "{key}:\n{text}");
     }
     drop(app);
     for lang in [zsim::Lang::Ru, zsim::Lang::Uk, zsim::Lang::Zh] {

@@ -45,16 +45,12 @@ keys-pixel-by-pixel = m: pixel by pixel, with the reasons
 pixel-centre-depth = ({ $x }, { $y }): centre x = { $centre }, z = { $z }{ $steps }
 keys-heading = { " keys " }
 keys-help =
-    n Space Enter → ↓  next scanline (or pixel)
-    b ← ↑              back
-    p / P              next / previous polygon
     g                  go to the scanline of a row
     f / z              show the framebuffer / z-buffer
     m                  step by pixel / by scanline
     PgUp PgDn < >      scroll the raster
     { "[ ]" }                scroll the table
     ?                  these keys (any key closes)
-    q Esc Ctrl-C       quit
 
     yellow: the span's covered pixels
     cyan: this polygon's earlier writes

@@ -45,16 +45,12 @@ keys-pixel-by-pixel = m：逐像素显示，附原因
 pixel-centre-depth = ({ $x }, { $y })：中心 x = { $centre }，z = { $z }{ $steps }
 keys-heading = { " 按键 " }
 keys-help =
-    n Space Enter → ↓  下一条扫描线（或下一个像素）
-    b ← ↑              后退
-    p / P              下一个 / 上一个多边形
     g                  转到某行的扫描线
     f / z              显示帧缓冲器 / z缓冲器
     m                  逐像素 / 逐扫描线
     PgUp PgDn < >      滚动光栅
     { "[ ]" }                滚动表格
     ?                  显示这些按键（按任意键关闭）
-    q Esc Ctrl-C       退出
 
     黄色：区段内被覆盖的像素
     青色：本多边形此前写入的像素
