@@ -366,3 +366,37 @@ fn the_app_takes_the_lesson_script_as_the_library_does() {
     );
     assert_eq!(lesson.summary(zsim::Lang::En), summary);
 }
+
+/// The app, for each kind of question, shows none of what answers it (the asked pixel's exact z
+/// and its decimal, and for the coverage question the crossings and the covered columns, as the
+/// library's own lesson shows them when nothing is asked) before it is answered or skipped; once
+/// skipped, the pixel's z.
+#[test]
+fn the_app_shows_nothing_that_answers_an_open_question() {
+    let start = Some(Stop { polygon: 1, scanline: 5 });
+    let mut open = lesson(book(), start, None);
+    let state = zsim::playground::lesson_state(zsim::Lang::En, &mut open);
+    let text = |value: &serde_json::Value| value.as_str().unwrap().to_string();
+    let (z, approx) = (text(&state["rows"][0]["z"]), text(&state["rows"][0]["approx"]));
+    assert_eq!((z.as_str(), approx.as_str()), ("29/2", "14.50"), "the library's values for (15, 15)");
+    let crossings = text(&state["crossings"]).trim_start_matches("crossings: ").to_string();
+    let columns = state["columns"].as_array().unwrap();
+    let covered = format!("{} … {}", columns[0], columns[columns.len() - 1]);
+    for mode in [QuizMode::Depth, QuizMode::Frame, QuizMode::Coverage] {
+        let mut answers = vec![z.clone(), approx.clone()];
+        if mode == QuizMode::Coverage {
+            answers.extend([crossings.clone(), covered.clone()]);
+        }
+        let mut lesson = lesson(book(), start, Some(mode));
+        let mut app = App::new(&mut lesson, zsim::Lang::En);
+        for size in [(100, 30), (160, 50)] {
+            let shown = screen(&mut app, size.0, size.1);
+            for answer in &answers {
+                assert!(!shown.contains(answer.as_str()), "{mode:?}: {answer:?} shown while asked:\n{shown}");
+            }
+        }
+        press(&mut app, if mode == QuizMode::Coverage { "ss" } else { "s" });
+        let shown = screen(&mut app, 160, 50);
+        assert!(shown.contains(&z), "{mode:?}: the z once skipped:\n{shown}");
+    }
+}

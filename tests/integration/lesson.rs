@@ -76,6 +76,50 @@ fn the_librarys_answers_to_the_script_are_the_rules() {
     );
 }
 
+/// The kinds of question, as `--quiz` and the page's address name them.
+const KINDS: [(QuizMode, &str); 3] =
+    [(QuizMode::Depth, "depth"), (QuizMode::Frame, "frame"), (QuizMode::Coverage, "coverage")];
+
+/// What answers a question of `kind` on the book's triangle at scanline 15, as the library's own
+/// lesson shows it when nothing is asked: the first pixel's exact z and its decimal, the buffers'
+/// rows after the scanline, and for the coverage question the crossings and the covered columns.
+fn answers(kind: QuizMode) -> Vec<String> {
+    let mut lesson = playground::lesson(Lang::En, &book(), None, Some((2, 15))).unwrap();
+    let state = playground::lesson_state(Lang::En, &mut lesson);
+    let text = |value: &serde_json::Value| value.as_str().unwrap().to_string();
+    let mut answers = vec![text(&state["rows"][0]["z"]), text(&state["rows"][0]["approx"])];
+    for matrix in ["frame", "depth"] {
+        answers.push(text(&state[matrix]).lines().find(|line| line.starts_with('▶')).unwrap().to_string());
+    }
+    if kind == QuizMode::Coverage {
+        answers.push(text(&state["crossings"]).trim_start_matches("crossings: ").to_string());
+        let columns = state["columns"].as_array().unwrap();
+        answers.push(format!("{} … {}", columns[0], columns[columns.len() - 1]));
+    }
+    assert_eq!(answers[..2], ["29/2", "14.50"], "the library's values for (15, 15)");
+    answers
+}
+
+/// The line mode, for each kind of question, prints none of what answers it before it is
+/// answered or skipped, and all of it once skipped.
+#[test]
+fn the_line_mode_shows_nothing_that_answers_an_open_question() {
+    for (kind, name) in KINDS {
+        let args =
+            ["step", "examples/rogers.json", "--quiz", name, "--polygon", "2", "--scanline", "15", "--lang", "en"];
+        let asked = crate::zsim_stdin(&args, "q\n");
+        assert_eq!(asked.code, 0, "{}", asked.stderr);
+        let answers = answers(kind);
+        for answer in &answers {
+            assert!(!asked.stdout.contains(answer.as_str()), "{name}: {answer:?} shown while asked:\n{}", asked.stdout);
+        }
+        let skipped = crate::zsim_stdin(&args, "s\ns\nq\n");
+        for answer in &answers {
+            assert!(skipped.stdout.contains(answer.as_str()), "{name}: {answer:?} once skipped:\n{}", skipped.stdout);
+        }
+    }
+}
+
 /// The line mode, driven line by line, says what the library says, in order.
 #[test]
 fn the_line_mode_says_what_the_lesson_says() {
@@ -249,6 +293,42 @@ fn the_playground_asks_as_the_lesson_asks() {
         client.close().await.unwrap();
     });
     crate::ran("the lesson in the playground through WebDriver", &format!("{} steps", script().len()));
+}
+
+/// The page, for each kind of question, shows none of what answers it anywhere (the stepper, the
+/// final buffers, the buffers after each polygon, a pixel's history) before it is answered or
+/// skipped; once skipped, the stepper shows the pixel's z.
+#[test]
+#[ignore = "needs Chromium, chromedriver and web/build's site (target/web)"]
+fn the_page_shows_nothing_that_answers_an_open_question() {
+    let site = site();
+    let (driver, browser) = driver();
+    let port = serve(site);
+    let dir = scratch("lesson-browser-hidden");
+    runtime().block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 1000)).await;
+        for (kind, name) in KINDS {
+            client.goto("about:blank").await.unwrap();
+            // The asked pixel's history asked for too, as a link asks for it.
+            client.goto(&format!("{}&pixel=15,15", address(port, name))).await.unwrap();
+            text_when(&client, "#prompt", |t| !t.is_empty()).await;
+            text_when(&client, "#explain", |t| !t.is_empty()).await;
+            let shown = text(&client, "body").await;
+            let answers = answers(kind);
+            for answer in &answers {
+                assert!(!shown.contains(answer.as_str()), "{name}: {answer:?} shown while asked:\n{shown}");
+            }
+            press(&client, 's').await;
+            if kind == QuizMode::Coverage {
+                text_when(&client, "#prompt", |t| t.contains("pixel (15, 15)")).await;
+                press(&client, 's').await;
+            }
+            let stop = text_when(&client, "#stop", |t| t.contains(answers[0].as_str())).await;
+            assert!(stop.contains(answers[0].as_str()), "{name}: once skipped:\n{stop}");
+        }
+        client.close().await.unwrap();
+    });
+    crate::ran("the page while each kind of question is open", "the book's scanline 15");
 }
 
 /// What a student does first: the pixel's history follows an edit, the keys
