@@ -178,7 +178,7 @@
     $("depthTest").value = view.settings.depthTest;
     $("rules").value = typeof object.rules === "string" ? object.rules : "";
     renderPolygons(object);
-    renderGrid(object);
+    renderGrid();
     $("notes").replaceChildren(...view.notes.map((n) => el("p", n, "help")));
     renderLesson();
     renderHomeworkChoices();
@@ -254,16 +254,9 @@
       const cell = el("td");
       cell.colSpan = 4;
       const add = el("button", words.addVertex, "addVertex");
-      add.onclick = () => {
-        const vs = ((parsed() || {}).polygons || [])[p]?.vertices || [];
-        const last = vs[vs.length - 1] || [0, 0, 0];
-        edit({ op: "insert", path: ["polygons", p, "vertices", vs.length], value: JSON.stringify(last) });
-      };
+      add.onclick = () => edit({ op: "add-vertex", polygon: p + 1 });
       const remove = el("button", words.removeVertex, "removeVertex");
-      remove.onclick = () => {
-        const vs = ((parsed() || {}).polygons || [])[p]?.vertices || [];
-        edit({ op: "remove", path: ["polygons", p, "vertices", vs.length - 1] });
-      };
+      remove.onclick = () => edit({ op: "remove-vertex", polygon: p + 1 });
       const drop = el("button", words.removePolygon, "removePolygon");
       drop.onclick = () => edit({ op: "remove", path: ["polygons", p] });
       cell.append(add, remove, drop);
@@ -273,15 +266,15 @@
     });
   }
 
-  // The framebuffer the raster shows, rows top first: in the quiz the lesson's (what may be
-  // shown so far), otherwise the final one.
+  // The framebuffer the raster shows, rows top first, each with its pixel y: in the quiz the
+  // lesson's (what may be shown so far), otherwise the final one.
   function shownFrame() {
     if (quizMode() && lessonState && lessonState.cells) return lessonState.cells;
-    return view.cellByCell ? view.framebuffer.trim().split("\n").map((r) => r.trim().split(/\s+/).map(Number)) : [];
+    return view.rows;
   }
 
   // The raster: each cell filled by the framebuffer, outlines, vertices to drag, and the lesson's scanline.
-  function renderGrid(object) {
+  function renderGrid() {
     const grid = $("grid"), w = view.width, h = view.height;
     grid.setAttribute("viewBox", `0 0 ${w} ${h}`);
     grid.setAttribute("aria-label", words.gridLabel);
@@ -291,32 +284,31 @@
     const size = `${w}x${h}:${rows.length}`;
     if (grid.dataset.size !== size) {
       let cells = "";
-      rows.forEach((row, i) => row.forEach((value, x) => {
-        cells += `<rect x="${x}" y="${i}" width="1" height="1" class="cell" data-x="${x}" data-y="${h - 1 - i}"/>`;
+      rows.forEach((row, i) => row.cells.forEach((value, x) => {
+        cells += `<rect x="${x}" y="${i}" width="1" height="1" class="cell" data-x="${x}" data-y="${row.y}"/>`;
       }));
       grid.innerHTML = cells;
       grid.dataset.size = size;
       grid.dataset.shape = "";
     }
     colourCells(rows);
-    // Only a scene in pixel units can be dragged: its vertices are the raster's coordinates.
-    const draggable = !object.window && !(object.effects && object.effects.perspective);
+    const draggable = view.draggable;
     // A handle at least 24 px across on any screen (26, for rounding), from the raster's width as
     // last laid out (reading it now would lay the whole page out again).
     const pixelsPerUnit = Math.max(1, gridWidth) / w;
     const radius = Math.max(0.35, w / 90, 13 / pixelsPerUnit);
     // The outlines and handles: moved in place while the polygons keep their vertices' count.
-    const shape = `${draggable}:` + view.polygons.map((p) => p.outline.length).join(",");
+    const shape = `${draggable}:` + view.polygons.map((p) => p.points.length).join(",");
     if (grid.dataset.shape === shape) {
       const outlines = grid.querySelectorAll(":scope > polygon.outline"), handles = grid.querySelectorAll(":scope > circle.vertex");
       let k = 0;
       view.polygons.forEach((polygon, p) => {
-        outlines[p].setAttribute("points", polygon.outline.map(([x, y]) => `${x},${h - y}`).join(" "));
+        outlines[p].setAttribute("points", polygon.points.map(([x, y]) => `${x},${y}`).join(" "));
         if (!draggable) return;
-        polygon.outline.forEach(([x, y]) => {
+        polygon.points.forEach(([x, y]) => {
           const handle = handles[k++];
           handle.setAttribute("cx", x);
-          handle.setAttribute("cy", h - y);
+          handle.setAttribute("cy", y);
           handle.setAttribute("r", radius);
           handle.setAttribute("fill", colour(polygon.value));
         });
@@ -327,19 +319,19 @@
     grid.querySelectorAll(":scope > :not(.cell)").forEach((e) => e.remove());
     grid.dataset.shape = shape;
     view.polygons.forEach((polygon, p) => {
-      const points = polygon.outline.map(([x, y]) => `${x},${h - y}`).join(" ");
+      const points = polygon.points.map(([x, y]) => `${x},${y}`).join(" ");
       grid.appendChild(svg("polygon", { points, class: "outline", stroke: "#333" }));
     });
     if (draggable) {
       view.polygons.forEach((polygon, p) => {
-        polygon.outline.forEach(([x, y], v) => {
-          const handle = svg("circle", { cx: x, cy: h - y, r: radius, class: "vertex", fill: colour(polygon.value) });
+        polygon.points.forEach(([x, y], v) => {
+          const handle = svg("circle", { cx: x, cy: y, r: radius, class: "vertex", fill: colour(polygon.value) });
           handle.dataset.p = p;
           handle.dataset.v = v;
           handle.addEventListener("pointerdown", (e) => {
             e.preventDefault();
             handle.setPointerCapture(e.pointerId);
-            drag = { p, v, last: null };
+            drag = { polygon: polygon.number, vertex: v + 1, last: null };
           });
           grid.appendChild(handle);
         });
@@ -350,7 +342,7 @@
 
   function colourCells(rows) {
     const cells = $("grid").children, w = view.width;
-    rows.forEach((row, i) => row.forEach((value, x) => {
+    rows.forEach((row, i) => row.cells.forEach((value, x) => {
       const fill = colour(value), cell = cells[i * w + x];
       if (cell && cell.getAttribute("fill") !== fill) cell.setAttribute("fill", fill);
     }));
@@ -358,7 +350,7 @@
 
   // Which colour is which value: each value the raster shows.
   function renderLegend(rows) {
-    const values = [...new Set(rows.flat())].sort((a, b) => a - b);
+    const values = [...new Set(rows.flatMap((row) => row.cells))].sort((a, b) => a - b);
     const items = values.map((v) => {
       const item = el("span", view.legend[v], "legendItem");
       const swatch = el("span", undefined, "swatch");
@@ -376,9 +368,9 @@
     if (!view) return;
     grid.querySelectorAll(".lesson").forEach((e) => e.remove());
     if (quizMode() && lessonState && lessonState.cells) colourCells(lessonState.cells);
-    const s = lessonState, h = view.height, g = svg("g", { class: "lesson" });
+    const s = lessonState, g = svg("g", { class: "lesson" });
     if (s && s.at) {
-      const y = h - s.at.row - 0.5;
+      const y = s.at.line;
       g.appendChild(svg("line", { x1: 0, y1: y, x2: view.width, y2: y, class: "scanline" }));
       s.columns.forEach((x) => g.appendChild(svg("rect", { x, y: y - 0.5, width: 1, height: 1, class: "covered" })));
       s.crossingsX.forEach((x) => g.appendChild(svg("circle", { cx: x, cy: y, r: 0.22, class: "crossing" })));
@@ -386,34 +378,20 @@
         g.appendChild(svg("rect", { x: s.askedX, y: y - 0.5, width: 1, height: 1, class: "asked" }));
       }
     }
-    if (cursor) g.appendChild(svg("rect", { x: cursor.x, y: h - 1 - cursor.y, width: 1, height: 1, class: "cursor" }));
+    if (cursor) g.appendChild(svg("rect", { x: cursor.x, y: cursor.row, width: 1, height: 1, class: "cursor" }));
     grid.appendChild(g);
   }
 
-  function pointIn(e) {
-    const grid = $("grid");
-    const point = new DOMPoint(e.clientX, e.clientY).matrixTransform(grid.getScreenCTM().inverse());
-    const step = Number($("snap").value);
-    const snap = (v) => String(Number((Math.round(v / step) * step).toFixed(4)));
-    return [snap(point.x), snap(view.height - point.y)];
-  }
-
+  // A vertex dragged: the pointer in the raster's own units, which the library snaps and turns
+  // into the scene's coordinates.
   document.addEventListener("pointermove", (e) => {
     if (!drag || !view) return;
-    const [x, y] = pointIn(e);
-    if (drag.last && drag.last[0] === x && drag.last[1] === y) return;
-    drag.last = [x, y];
-    moveVertex(drag.p, drag.v, x, y);
+    const point = new DOMPoint(e.clientX, e.clientY).matrixTransform($("grid").getScreenCTM().inverse());
+    const result = call("edit", scene, JSON.stringify({ op: "drag", polygon: drag.polygon, vertex: drag.vertex, to: [point.x, point.y], snap: $("snap").value }));
+    if (!result.ok) { $("error").textContent = result.error; return; }
+    if (result.scene !== scene) setScene(result.scene);
   });
   document.addEventListener("pointerup", () => { drag = null; });
-
-  function moveVertex(p, v, x, y) {
-    const result = call("edit", scene, JSON.stringify({ op: "set", path: ["polygons", p, "vertices", v, 0], value: x }));
-    if (!result.ok) { $("error").textContent = result.error; return; }
-    const moved = call("edit", result.scene, JSON.stringify({ op: "set", path: ["polygons", p, "vertices", v, 1], value: y }));
-    if (!moved.ok) { $("error").textContent = moved.error; return; }
-    setScene(moved.scene);
-  }
 
   // A pixel's history; the pixel as the address or a click gives it, which the library reads
   // (one off the raster is said, not drawn).
@@ -423,17 +401,18 @@
     const grid = $("grid");
     grid.querySelectorAll(".picked").forEach((e) => e.remove());
     picked = result.ok || result.hidden ? { x: Number(x), y: Number(y) } : null;
-    if (picked) grid.appendChild(svg("rect", { x: picked.x, y: view.height - 1 - picked.y, width: 1, height: 1, class: "picked" }));
+    const row = picked ? view.rows.findIndex((r) => r.y === picked.y) : -1;
+    if (row >= 0) grid.appendChild(svg("rect", { x: picked.x, y: row, width: 1, height: 1, class: "picked" }));
   }
 
   // The buffers after the chosen polygon, asked of the library when shown (not one set per polygon on every edit).
   function renderAfter() {
     const select = $("afterSelect");
-    const count = view.byPolygon ? view.polygons.length : 0;
-    const chosen = Math.min(Number(select.value || 0), Math.max(0, count - 1));
-    select.replaceChildren(...view.polygons.slice(0, count).map((p, i) => { const o = el("option", p.label); o.value = i; return o; }));
+    const shown = view.byPolygon ? view.polygons : [];
+    const chosen = shown.some((p) => String(p.number) === select.value) ? select.value : shown.length ? String(shown[0].number) : "";
+    select.replaceChildren(...shown.map((p) => { const o = el("option", p.label); o.value = p.number; return o; }));
     select.value = chosen;
-    const after = count && lesson ? JSON.parse(lesson.after(chosen)) : { ok: false };
+    const after = chosen && lesson ? JSON.parse(lesson.after(Number(chosen))) : { ok: false };
     // While a question is open the library's words stand in for what would answer it.
     const hidden = lessonState && lessonState.buffersHidden;
     $("afterHeading").textContent = after.ok && !hidden ? `${after.heading} — ${after.counts}` : "";
@@ -515,8 +494,8 @@
 
   function renderHomeworkChoices() {
     const select = $("hwAfter"), chosen = select.value, choices = view.checkable;
-    select.replaceChildren(...choices.map((c) => { const o = el("option", c.label); o.value = c.index; return o; }));
-    select.value = choices.some((c) => String(c.index) === chosen) ? chosen : choices.length ? choices[choices.length - 1].index : "";
+    select.replaceChildren(...choices.map((c) => { const o = el("option", c.label); o.value = c.number; return o; }));
+    select.value = choices.some((c) => String(c.number) === chosen) ? chosen : choices.length ? choices[choices.length - 1].number : "";
     // A grid of inputs only for a raster the page shows cell by cell (the notes say why not).
     $("answerGrid").disabled = !view.cellByCell;
     if (!view.cellByCell) $("answerCells").replaceChildren();
@@ -529,21 +508,21 @@
     if (box.firstChild) { box.replaceChildren(); return; }
     const buffer = $("hwBuffer").value, start = view.cleared[buffer];
     const lines = $("answer").value.trim().split("\n").map((l) => l.trim().split(/\s+/));
-    const fits = lines.length === view.height && lines.every((l) => l.length === view.width);
+    const fits = lines.length === view.rows.length && lines.every((l) => l.length === view.width);
     const table = el("table");
-    for (let i = 0; i < view.height; i++) {
+    view.rows.forEach((row, i) => {
       const tr = el("tr");
       for (let x = 0; x < view.width; x++) {
         const input = el("input");
         input.value = fits ? lines[i][x] : start === null ? "" : String(start);
-        Object.assign(input.dataset, { x, y: view.height - 1 - i });
-        input.setAttribute("aria-label", `(${x}, ${view.height - 1 - i})`);
+        Object.assign(input.dataset, { x, y: row.y });
+        input.setAttribute("aria-label", `(${x}, ${row.y})`);
         const td = el("td");
         td.appendChild(input);
         tr.appendChild(td);
       }
       table.appendChild(tr);
-    }
+    });
     table.addEventListener("input", () => {
       const rows = [...table.rows].map((tr) => [...tr.querySelectorAll("input")].map((i) => i.value.trim() || "?").join(" "));
       $("answer").value = rows.join("\n") + "\n";
@@ -634,7 +613,7 @@
       else $("error").textContent = result.error;
     }
     if (parts.quiz !== undefined) {
-      const kind = ["depth", "frame", "coverage"].includes(parts.quiz) ? parts.quiz : "";
+      const kind = words.quizKinds.includes(parts.quiz) ? parts.quiz : "";
       $("quiz").checked = kind !== "";
       if (kind) $("quizKind").value = kind;
     }
@@ -694,13 +673,7 @@
       if (value === "" && object.rules === undefined) return;
       edit(value === "" ? { op: "remove", path: ["rules"] } : { op: "set", path: ["rules"], value: JSON.stringify(value) });
     };
-    $("addPolygon").onclick = () => {
-      const object = parsed() || {};
-      const count = Array.isArray(object.polygons) ? object.polygons.length : 0;
-      const w = view ? view.width : 32, h = view ? view.height : 32;
-      const polygon = { value: 1, vertices: [[Math.round(w / 4), Math.round(h / 4), 1], [Math.round(w / 2), Math.round(3 * h / 4), 1], [Math.round(3 * w / 4), Math.round(h / 4), 1]] };
-      edit({ op: "insert", path: ["polygons", count], value: JSON.stringify(polygon) });
-    };
+    $("addPolygon").onclick = () => edit({ op: "add-polygon" });
     $("examples").onchange = () => {
       lessonState = null;
       picked = null;
@@ -748,8 +721,7 @@
     document.addEventListener("keydown", (e) => {
       if (e.ctrlKey || e.metaKey || e.altKey || !lesson) return;
       if (e.target.closest && e.target.closest("input, textarea, select")) return;
-      if (["n", "b", "p", "P", "s", "q"].includes(e.key)) {
-        if ((e.key === "s" || e.key === "q") && !quizMode()) return;
+      if (words.keys.some((k) => k.key === e.key)) {
         e.preventDefault();
         act({ key: e.key });
       }
@@ -757,18 +729,19 @@
     // The raster by keyboard: arrows move a pixel cursor, Enter explains the pixel.
     $("grid").addEventListener("keydown", (e) => {
       if (!view) return;
-      const moves = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
-      if (moves[e.key]) {
+      // The cursor moves over the page's rows (top first); the pixel it is on is the row's y.
+      const moves = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
+      if (moves[e.key] && view.rows.length) {
         e.preventDefault();
-        const at = cursor || { x: 0, y: view.height - 1 };
+        const at = cursor || { x: 0, row: 0 };
         cursor = {
           x: Math.min(view.width - 1, Math.max(0, at.x + moves[e.key][0])),
-          y: Math.min(view.height - 1, Math.max(0, at.y + moves[e.key][1])),
+          row: Math.min(view.rows.length - 1, Math.max(0, at.row + moves[e.key][1])),
         };
         drawLesson();
       } else if (e.key === "Enter" && cursor) {
         e.preventDefault();
-        explainPixel(cursor.x, cursor.y);
+        explainPixel(cursor.x, view.rows[cursor.row].y);
         writeAddress(false);
       }
     });
@@ -776,7 +749,7 @@
       const width = entries[0].contentRect.width;
       if (width && Math.abs(width - gridWidth) > 1) {
         gridWidth = width;
-        if (view) renderGrid(parsed() || {});
+        if (view) renderGrid();
       }
     }).observe($("grid"));
     $("afterSelect").onchange = renderAfter;

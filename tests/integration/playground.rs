@@ -10,6 +10,7 @@ use std::process::Command;
 use std::time::{Duration, Instant};
 
 use fantoccini::actions::{InputSource, MOUSE_BUTTON_LEFT, MouseActions, PointerAction};
+use fantoccini::key::Key;
 use fantoccini::{Client, Locator};
 use zsim::Lang;
 use zsim::playground;
@@ -564,6 +565,53 @@ fn the_packages_zsim_writes_a_quiz_page_and_a_site_a_student_answers() {
         client.close().await.unwrap();
     });
     crate::ran("the Debian package's playground through WebDriver", &deb.display().to_string());
+}
+
+/// The page's buttons and keys do what the library says they do, the page
+/// deciding nothing: a polygon, a vertex added and removed are the library's
+/// edits; the arrow keys and Enter explain the pixel the cursor is on, rows
+/// top first as the raster shows them; the buffers after polygon 1 are
+/// `after`'s.
+#[test]
+#[ignore = "needs Chromium, chromedriver and web/build's site (target/web)"]
+fn the_pages_buttons_and_keys_do_what_the_library_says() {
+    let (driver, browser, dir, port) = served("playground-buttons");
+    let book = std::fs::read_to_string(manifest().join("examples/rogers.json")).unwrap();
+    let edited = |text: &str, change: &str| playground::edit(Lang::En, text, change).unwrap();
+    runtime().block_on(async {
+        let client = session_as(&driver, &browser, &dir.join("profile"), "en-US", (1280, 900)).await;
+        client.goto(&format!("http://127.0.0.1:{port}/")).await.unwrap();
+        shown_buffers(&client).await;
+        let mut expected = playground::layout(&serde_json::from_str(&book).unwrap());
+        for (button, change) in [
+            ("#addPolygon", r#"{"op": "add-polygon"}"#),
+            ("table:nth-of-type(3) .addVertex", r#"{"op": "add-vertex", "polygon": 3}"#),
+            ("table:nth-of-type(1) .removeVertex", r#"{"op": "remove-vertex", "polygon": 1}"#),
+        ] {
+            expected = edited(&expected, change);
+            client.find(Locator::Css(button)).await.unwrap().click().await.unwrap();
+            let start = Instant::now();
+            while scene_text(&client).await != expected && start.elapsed() < Duration::from_secs(10) {
+                tokio::time::sleep(Duration::from_millis(50)).await;
+            }
+            assert_eq!(scene_text(&client).await, expected, "after {button}");
+        }
+        // The cursor starts at the raster's top-left cell, pixel (0, 31); two rows down and three
+        // to the right is (3, 29).
+        client.execute("document.getElementById('grid').focus();", vec![]).await.unwrap();
+        for key in [Key::Down, Key::Down, Key::Right, Key::Right, Key::Right, Key::Down, Key::Up, Key::Enter] {
+            client.active_element().await.unwrap().send_keys(&char::from(key).to_string()).await.unwrap();
+        }
+        let said = text_when(&client, "#explain", |t| t.starts_with("pixel (3, 29)")).await;
+        assert!(said.starts_with("pixel (3, 29)"), "{said}");
+        // The buffers after polygon 1, as the library's `after` prints them.
+        let after = playground::after(Lang::En, &scene_text(&client).await, 1);
+        let select = client.find(Locator::Css("#afterSelect")).await.unwrap();
+        select.select_by_value("1").await.unwrap();
+        let shown = text_when(&client, "#afterFrame", |t| !t.is_empty()).await;
+        assert_eq!(shown.trim_end(), after["frame"].as_str().unwrap().trim_end());
+        client.close().await.unwrap();
+    });
 }
 
 /// The module a student downloads stays within its budget, 400 KB gzipped

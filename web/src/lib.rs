@@ -7,7 +7,6 @@ use wasm_bindgen::prelude::*;
 use zsim::Lang;
 use zsim::lesson::Lesson;
 use zsim::playground;
-use zsim::step::QuizMode;
 
 /// The language of a code (`ru`, `uk-UA`, `zh-CN`); English for others.
 fn lang(code: &str) -> Lang {
@@ -67,12 +66,7 @@ impl WebLesson {
     /// error (JSON text, `{"ok": false, "error"}`).
     #[wasm_bindgen(constructor)]
     pub fn new(code: &str, scene: &str, quiz: &str, polygon: usize, row: u32) -> Result<WebLesson, String> {
-        let mode = match quiz {
-            "depth" => Some(QuizMode::Depth),
-            "frame" => Some(QuizMode::Frame),
-            "coverage" => Some(QuizMode::Coverage),
-            _ => None,
-        };
+        let mode = playground::quiz_mode(quiz);
         let lang = lang(code);
         let place = (polygon > 0).then_some((polygon, row));
         let lesson = playground::lesson(lang, scene, mode, place).map_err(|error| error.to_string())?;
@@ -86,22 +80,25 @@ impl WebLesson {
 
     /// See [`playground::lesson_state`].
     pub fn state(&mut self) -> String {
-        playground::lesson_state(self.lang, &mut self.lesson).to_string()
+        json(&playground::lesson_view(self.lang, &mut self.lesson))
     }
 
     /// See [`playground::lesson_act`]: `command` is `{"key": "n"}`, `{"go": [polygon, row]}` or `{"answer": "15"}`.
     pub fn act(&mut self, command: &str) -> String {
-        playground::lesson_act(self.lang, &mut self.lesson, command).to_string()
+        match playground::lesson_acted(self.lang, &mut self.lesson, command) {
+            Ok(acted) => json(&acted),
+            Err(error) => error.to_string(),
+        }
     }
 
     /// See [`playground::view`]: of the scene the lesson read.
     pub fn view(&self) -> String {
-        playground::view_of(self.lang, self.lesson.scene()).to_string()
+        json(&playground::scene_view(self.lang, self.lesson.scene()))
     }
 
-    /// See [`playground::after`]: of the scene the lesson read.
-    pub fn after(&self, index: usize) -> String {
-        playground::after_of(self.lang, self.lesson.scene(), index).to_string()
+    /// See [`playground::after`]: of the scene the lesson read, after polygon `number` (from 1).
+    pub fn after(&self, number: usize) -> String {
+        playground::after_of(self.lang, self.lesson.scene(), number).to_string()
     }
 
     /// See [`playground::lesson_explain`]: of the scene the lesson read, the
@@ -123,11 +120,11 @@ pub fn variant_line(code: &str, student: &str, variant: &str) -> String {
     playground::variant_line(lang(code), student, variant)
 }
 
-/// See [`playground::check`]: `buffer` is `frame` or `depth`.
+/// See [`playground::check`]: after polygon `number` (from 1); `buffer` is `frame` or `depth`.
 #[wasm_bindgen]
-pub fn check(code: &str, scene: &str, after: usize, buffer: &str, typed: &str) -> String {
+pub fn check(code: &str, scene: &str, number: usize, buffer: &str, typed: &str) -> String {
     let buffer = if buffer == "frame" { zsim::explain::Buffer::Frame } else { zsim::explain::Buffer::Depth };
-    playground::check(lang(code), scene, after, buffer, typed).to_string()
+    playground::check(lang(code), scene, number, buffer, typed).to_string()
 }
 
 /// See [`playground::edit`]: `{"ok": true, "scene"}` or `{"ok": false, "error"}`.
@@ -166,4 +163,9 @@ fn serde_json_text(ok: bool, key: &str, text: &str) -> String {
     object.insert("ok".into(), ok.into());
     object.insert(key.into(), text.into());
     serde_json::Value::Object(object).to_string()
+}
+
+/// A typed view as the JSON text the page reads.
+fn json(value: &impl serde::Serialize) -> String {
+    serde_json::to_string(value).unwrap_or_default()
 }

@@ -20,7 +20,6 @@ use serde_json::{Value, json};
 
 use crate::effects::arith::Arith;
 use crate::error::Refusal;
-use crate::numbers::to_f64;
 use crate::observe::explain::Buffer;
 use crate::observe::explain::history::{Extras, history};
 use crate::observe::render::figure::{self, Shading};
@@ -33,10 +32,15 @@ pub use crate::teach::page_limits::{MAX_PAGE_SCENE_BYTES, MAX_PRINTED_CELLS, MAX
 use crate::teach::page_limits::{TooLarge, check_reach, check_text};
 use crate::teach::step::lesson::{Command, Lesson, Said};
 use crate::teach::step::page::{Buffers, buffer_data};
-use crate::teach::step::{Moved, Question, QuizMode};
-use crate::words::{Lang, polygon_label};
+use crate::teach::step::{Moved, QuizMode};
+use crate::words::Lang;
 
+mod shown;
 mod site;
+pub use shown::{
+    Acted, At, Checkable, Cleared, Key, LessonView, PolygonView, QUIZ_KINDS, RasterRow, SceneView, Settings, keys,
+    lesson_view, quiz_mode, scene_view,
+};
 pub use site::{one_file_page, site_files, step_page, write_site};
 
 mod edit;
@@ -100,94 +104,30 @@ pub fn view(lang: Lang, text: &str) -> Value {
     }
 }
 
-/// [`view`] of a scene already read (the lesson's: one reading for every view).
+/// [`view`] of a scene already read (the lesson's: one reading for every view): [`SceneView`].
 pub fn view_of(lang: Lang, scene: &Scene) -> Value {
-    let cells = u64::from(scene.width) * u64::from(scene.height);
-    let shown = cells <= MAX_SHOWN_CELLS && scene.polygons.len() <= MAX_SHOWN_POLYGONS;
-    // Each polygon's outline only where the page shows the scene polygon by polygon.
-    let polygons: Vec<Value> = match shown {
-        true => scene
-            .polygons
-            .iter()
-            .enumerate()
-            .map(|(index, polygon)| {
-                let outline: Vec<[f64; 2]> =
-                    polygon.vertices().iter().map(|v| [to_f64(&v[0]), to_f64(&v[1])]).collect();
-                json!({"name": polygon.name, "label": polygon_label(lang, "polygon-after", index, &polygon.name),
-                       "value": polygon.value, "outline": outline})
-            })
-            .collect(),
-        false => Vec::new(),
-    };
-    // The states a homework answer may be checked against: after each polygon where the page
-    // shows them, after the last otherwise.
-    let checkable: Vec<Value> = match shown {
-        true => polygons.iter().enumerate().map(|(index, p)| json!({"index": index, "label": p["label"]})).collect(),
-        false => scene
-            .polygons
-            .len()
-            .checked_sub(1)
-            .map(|last| json!({"index": last, "label": polygon_label(lang, "polygon-after", last, &scene.polygons[last].name)}))
-            .into_iter()
-            .collect(),
-    };
-    let mut simulation = Simulation::new(scene);
-    simulation.finish(&mut Unobserved);
-    let buffers = simulation.buffers();
-    let mut notes = Vec::new();
-    if !shown {
-        notes.push(words!(
-            lang,
-            "limit-cells-or-polygons",
-            cells = MAX_SHOWN_CELLS.to_string(),
-            polygons = MAX_SHOWN_POLYGONS.to_string()
-        ));
-    }
-    if scene.effects.antialias.is_some() {
-        notes.push(words!(lang, "antialias-not-drawn"));
-    }
-    let printed = cells <= MAX_PRINTED_CELLS;
-    if !printed {
-        notes.push(words!(lang, "limit-printed-cells", cells = MAX_PRINTED_CELLS.to_string()));
-    }
-    let (framebuffer, zbuffer) = match printed {
-        true => buffer_data(buffers, Buffers::Printed),
-        false => (Value::from(""), Value::from("")),
-    };
-    json!({
-        "ok": true,
-        "width": scene.width, "height": scene.height,
-        // The settings as the scene is drawn, a preset's and the defaults resolved: what the page's fields show.
-        "settings": {"width": scene.width, "height": scene.height, "frameBits": scene.frame_bits,
-                     "depthBits": scene.depth_bits, "depthTest": scene.depth_test.name()},
-        "polygons": polygons, "byPolygon": shown, "checkable": checkable,
-        "cellByCell": cells <= MAX_SHOWN_CELLS,
-        // What each buffer is cleared to: where a student's answer grid starts (no level: exact depths).
-        "cleared": {"frame": scene.background, "depth": scene.clear_depth.level()},
-        "framebuffer": framebuffer, "zbuffer": zbuffer,
-        "notes": notes,
-        // The figure's colours for framebuffer values 1, 2, … (0 is white), so page and figure agree.
-        "palette": figure::PALETTE,
-        // Each framebuffer value's name in the legend, by value.
-        "legend": (0..1u32 << scene.frame_bits.min(8)).map(|value| words!(lang, "legend-value", value = value)).collect::<Vec<_>>(),
-    })
+    serde_json::to_value(shown::scene_view(lang, scene)).unwrap_or_default()
 }
 
-/// The buffers after polygon `index` (0-based) of the scene in `text`, as
-/// `zsim run --after` prints them, with the polygon's heading and counts:
-/// `{"heading", "counts", "frame", "depth"}`, or `{"ok": false, "error"}`
-/// (also where the page does not show the scene polygon by polygon).
-pub fn after(lang: Lang, text: &str, index: usize) -> Value {
+/// The buffers after polygon `number` (from 1, as the page names it) of the
+/// scene in `text`, as `zsim run --after` prints them, with the polygon's
+/// heading and counts: `{"heading", "counts", "frame", "depth"}`, or
+/// `{"ok": false, "error"}` (also where the page does not show the scene
+/// polygon by polygon).
+pub fn after(lang: Lang, text: &str, number: usize) -> Value {
     match scene_of(lang, text) {
-        Ok(scene) => after_of(lang, &scene, index),
+        Ok(scene) => after_of(lang, &scene, number),
         Err(error) => error,
     }
 }
 
 /// [`after`] of a scene already read (the lesson's: one reading for every view).
-pub fn after_of(lang: Lang, scene: &Scene, index: usize) -> Value {
+pub fn after_of(lang: Lang, scene: &Scene, number: usize) -> Value {
     let cells = u64::from(scene.width) * u64::from(scene.height);
-    if cells > MAX_SHOWN_CELLS || scene.polygons.len() > MAX_SHOWN_POLYGONS || index >= scene.polygons.len() {
+    let Some(index) = number.checked_sub(1).filter(|index| *index < scene.polygons.len()) else {
+        return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
+    };
+    if cells > MAX_SHOWN_CELLS || scene.polygons.len() > MAX_SHOWN_POLYGONS {
         return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
     }
     let mut simulation = Simulation::new(scene);
@@ -250,8 +190,7 @@ pub fn lesson(lang: Lang, text: &str, mode: Option<QuizMode>, place: Option<(usi
 /// A page's command to the lesson: `{"key": "n"}` (a key of
 /// [`crate::teach::step::lesson::KEYS`]), `{"go": [polygon, row]}` (polygon
 /// from 1, as an address names it) or `{"answer": "15"}`.
-#[derive(Debug, Clone, serde::Deserialize)]
-#[serde(rename_all = "lowercase")]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub enum PageCommand {
     /// A key that acts alone.
     Key(char),
@@ -261,22 +200,47 @@ pub enum PageCommand {
     Answer(String),
 }
 
-/// Carries out `command` (JSON, [`PageCommand`]) and answers with what became
-/// of it (`said`, in words; `kind`: `moved`, `refused`, `right`, `tryAgain`,
-/// `revealed`, `askAgain`, `skipped`, `nothingAsked`, `quit`), the quiz's
-/// summary after `quit` ([`Lesson::summary`], else null) and the state
-/// after it ([`lesson_state`]).
+impl PageCommand {
+    /// The command of the page's JSON text; `None` for text that is not one.
+    pub fn parse(text: &str) -> Option<PageCommand> {
+        let command: Value = serde_json::from_str(text).ok()?;
+        if let Some(key) = command.get("key") {
+            let mut chars = key.as_str()?.chars();
+            return match (chars.next(), chars.next()) {
+                (Some(key), None) => Some(PageCommand::Key(key)),
+                _ => None,
+            };
+        }
+        if let Some(go) = command.get("go") {
+            let polygon = usize::try_from(go.get(0)?.as_u64()?).ok()?;
+            return Some(PageCommand::Go(polygon, u32::try_from(go.get(1)?.as_u64()?).ok()?));
+        }
+        Some(PageCommand::Answer(command.get("answer")?.as_str()?.to_string()))
+    }
+}
+
+/// [`lesson_acted`] as JSON: [`Acted`], or `{"ok": false, "error"}`.
 pub fn lesson_act(lang: Lang, lesson: &mut Lesson, command: &str) -> Value {
-    let command = match serde_json::from_str::<PageCommand>(command) {
-        Ok(PageCommand::Key(key)) => Command::from_key(key),
-        Ok(PageCommand::Go(polygon, row)) => {
+    match lesson_acted(lang, lesson, command) {
+        Ok(acted) => serde_json::to_value(acted).unwrap_or_default(),
+        Err(error) => error,
+    }
+}
+
+/// Carries out `command` (JSON, [`PageCommand`]) and answers with what became
+/// of it ([`Acted`]); `Err` with `{"ok": false, "error"}` for a command that
+/// is not one.
+pub fn lesson_acted(lang: Lang, lesson: &mut Lesson, command: &str) -> Result<Acted, Value> {
+    let command = match PageCommand::parse(command) {
+        Some(PageCommand::Key(key)) => Command::from_key(key),
+        Some(PageCommand::Go(polygon, row)) => {
             Some(Command::GoTo { polygon: polygon.saturating_sub(1).min(usize::MAX - 1), row })
         }
-        Ok(PageCommand::Answer(typed)) => Some(Command::Answer(typed)),
-        Err(_) => None,
+        Some(PageCommand::Answer(typed)) => Some(Command::Answer(typed)),
+        None => None,
     };
     let Some(command) = command else {
-        return json!({"ok": false, "error": words!(lang, "edit-does-not-fit")});
+        return Err(json!({"ok": false, "error": words!(lang, "edit-does-not-fit")}));
     };
     let said = lesson.act(lang, command);
     let kind = match &said {
@@ -293,98 +257,28 @@ pub fn lesson_act(lang: Lang, lesson: &mut Lesson, command: &str) -> Value {
     let text = said.text(lang, lesson.scene());
     // The quiz ended: its score and each mistake, as the line mode ends with them.
     let summary = matches!(said, Said::Quit).then(|| lesson.summary(lang));
-    json!({"ok": true, "kind": kind, "said": text, "summary": summary, "state": lesson_state(lang, lesson)})
+    Ok(Acted { ok: true, kind, said: text, summary, state: lesson_view(lang, lesson) })
 }
 
 /// Everything the page shows of the lesson now, already cut to what may be
-/// shown: where it is (`polygon` from 1, `row`), the stop (heading, slope,
-/// scanline, crossings, spans, covered columns, the shown pixels' rows,
-/// how many are hidden, notes), the question (`prompt`, `asking`:
-/// `coverage`, `depth`, `frame` or null), the score and its words, and the
-/// buffers as the student may see them (`frame`, `depth`: printed matrices).
+/// shown: [`LessonView`].
 pub fn lesson_state(lang: Lang, lesson: &mut Lesson) -> Value {
-    let asking = match lesson.question() {
-        Some(Question::Coverage { .. }) => Some("coverage"),
-        Some(Question::Depth { .. }) => Some("depth"),
-        Some(Question::Frame { .. }) => Some("frame"),
-        None => None,
-    };
-    let prompt = lesson.prompt(lang);
-    let score = lesson.score();
-    let open = lesson.open_questions();
-    let Some(view) = lesson.stop_view(lang) else {
-        let end = match shown_by_polygon(lesson.scene()) {
-            true => words!(lang, "step-end"),
-            false => words!(
-                lang,
-                "limit-cells-or-polygons",
-                cells = MAX_SHOWN_CELLS.to_string(),
-                polygons = MAX_SHOWN_POLYGONS.to_string()
-            ),
-        };
-        return json!({"at": null, "end": end, "asking": asking, "prompt": prompt,
-                      "score": score.map(|s| s.text(lang)), "open": open, "buffersHidden": null});
-    };
-    // The buffers' rows around the scanline, numbered as the line mode prints them, its row
-    // marked `▶`; and the whole framebuffer's cells for the raster's colours.
-    let height = lesson.scene().height;
-    let rows = view.row.saturating_sub(2)..=(view.row + 2).min(height - 1);
-    let style =
-        crate::observe::report::MatrixStyle { axes: true, mark: Some(view.row), rows: Some(rows), color: false };
-    let (frame, depth, cells) = match lesson.buffers() {
-        Some(buffers) => (
-            Value::from(crate::observe::report::matrix_styled(&buffers.frame_rows(), &style)),
-            Value::from(crate::observe::report::matrix_styled(&buffers.depth_rows(), &style)),
-            // The raster shows the lesson's framebuffer only in a quiz (else the final one).
-            if lesson.mode().is_some() { json!(buffers.frame_rows()) } else { Value::Null },
-        ),
-        None => (Value::Null, Value::Null, Value::Null),
-    };
-    // Where the scanline crosses the outline, for drawing, once the crossings may be shown.
-    let crossings_x: Vec<f64> = match (&view.crossings, lesson.record()) {
-        (Some(_), Some(record)) => record.crossings.iter().map(to_f64).collect(),
-        _ => Vec::new(),
-    };
-    let asked_x = match lesson.question() {
-        Some(Question::Depth { pixel, .. } | Question::Frame { pixel, .. }) => Some(pixel.x),
-        _ => None,
-    };
-    let rows: Vec<Value> = view
-        .rows
-        .iter()
-        .map(|r| {
-            json!({"x": r.x, "z": r.z, "approx": r.approx, "stored": r.stored, "test": r.test,
-                        "after": r.after, "frame": r.frame, "written": r.written})
-        })
-        .collect();
-    json!({
-        "at": {"polygon": view.stop.polygon + 1, "row": view.row},
-        "heading": view.heading, "slope": view.slope, "scanline": view.scanline,
-        "crossings": view.crossings, "spans": view.spans, "spanDepths": view.span_depths,
-        "columns": view.columns, "rows": rows, "hidden": view.hidden, "notes": view.notes,
-        "hiddenSaid": (view.hidden > 0).then(|| words!(lang, "pixels-hidden-asked", count = view.hidden)),
-        "asking": asking, "prompt": prompt, "secondTry": lesson.second_try(), "open": open,
-        // While a question is open, what would answer it elsewhere on the page (the final buffers,
-        // the buffers after each polygon, the figure) is hidden: these words stand in their place.
-        "buffersHidden": (open > 0).then(|| words!(lang, "lesson-hidden-until-answered")),
-        "score": score.map(|s| s.text(lang)),
-        "frame": frame, "depth": depth, "cells": cells, "crossingsX": crossings_x, "askedX": asked_x,
-    })
+    serde_json::to_value(shown::lesson_view(lang, lesson)).unwrap_or_default()
 }
 
-/// A homework answer for `buffer` after polygon number `after` (0-based),
+/// A homework answer for `buffer` after polygon `number` (from 1, as the page names it),
 /// typed or pasted as the book prints a matrix, checked as `zsim check`
 /// checks a file: `{"verdict", "hint", "wrong": [{x, y, answer, expected,
 /// reason}], "more", "diagnosis"}`, or `{"ok": false, "error"}` for a scene
 /// or an answer that cannot be read.
-pub fn check(lang: Lang, text: &str, after: usize, buffer: Buffer, typed: &str) -> Value {
+pub fn check(lang: Lang, text: &str, number: usize, buffer: Buffer, typed: &str) -> Value {
     let scene = match scene_of(lang, text) {
         Ok(scene) => scene,
         Err(error) => return error,
     };
-    if after >= scene.polygons.len() {
+    let Some(after) = number.checked_sub(1).filter(|index| *index < scene.polygons.len()) else {
         return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
-    }
+    };
     let answer = match answer_from_text(lang, typed, &scene, buffer) {
         Ok(answer) => answer,
         Err(message) => return json!({"ok": false, "error": message}),
@@ -530,6 +424,9 @@ pub fn page_words(lang: Lang) -> Value {
         words.insert(name.to_string(), Value::String(crate::words::text(lang, key, &[])));
     }
     words.insert("lang".into(), Value::String(lang.code().into()));
+    // The keys the page takes, from the lesson's one table, and the quiz's kinds.
+    words.insert("keys".into(), serde_json::to_value(keys(lang)).unwrap_or_default());
+    words.insert("quizKinds".into(), json!(QUIZ_KINDS));
     words.insert("depthName".into(), Value::String(Buffer::Depth.name(lang)));
     words.insert("frameName".into(), Value::String(Buffer::Frame.name(lang)));
     Value::Object(words)
@@ -617,14 +514,17 @@ mod tests {
         assert_eq!(row_15.split_whitespace().nth(15), Some("15"));
         assert_eq!(view["framebuffer"].as_str().unwrap().lines().count(), 32);
         assert_eq!(view["byPolygon"], true);
-        // After the rectangle alone: 10 at (15, 15), where the triangle later writes 15.
-        let first = after(Lang::En, BOOK, 0);
+        // After the rectangle alone (polygon 1): 10 at (15, 15), where the triangle later writes 15.
+        let first = after(Lang::En, BOOK, 1);
         assert_eq!(
             first["depth"].as_str().unwrap().lines().nth(31 - 15).unwrap().split_whitespace().nth(15),
             Some("10")
         );
-        assert_eq!(after(Lang::En, BOOK, 1)["depth"], view["zbuffer"]);
-        assert_eq!(after(Lang::En, BOOK, 2)["ok"], false);
+        assert_eq!(after(Lang::En, BOOK, 2)["depth"], view["zbuffer"]);
+        assert_eq!(
+            (after(Lang::En, BOOK, 3)["ok"].as_bool(), after(Lang::En, BOOK, 0)["ok"].as_bool()),
+            (Some(false), Some(false))
+        );
     }
 
     /// Found by a student: `#pixel=0,32` (one past the book's raster) panicked

@@ -15,7 +15,7 @@ use crate::simulate::events::{Outcome, PixelEvent};
 use crate::words::{Lang, localize_decimal};
 
 /// One covered pixel's row of the stop's table, each cell worded.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
 pub struct PixelRow {
     /// Column.
     pub x: u32,
