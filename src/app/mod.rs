@@ -14,7 +14,6 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Wrap};
-use zsim::Buffers;
 use zsim::explain::{pixel_reason, polygon_name, scanline_text};
 use zsim::lesson::{Command, Lesson, Said};
 use zsim::report;
@@ -188,8 +187,7 @@ impl<'l> App<'l> {
     }
 
     fn next(&mut self) {
-        let Some(stop) = self.lesson.at() else { return };
-        let count = self.lesson.with_stepper(|stepper| stepper.tracer().record(stop).pixels.len());
+        let Some(count) = self.record().map(|record| record.pixels.len()) else { return };
         if self.lesson.mode().is_none()
             && let Some(done) = self.pixel
             && done < count
@@ -292,14 +290,13 @@ impl<'l> App<'l> {
     /// The raster's rows that fit, top row first, centred on the scanline.
     fn draw_raster(&mut self, frame: &mut Frame<'_>, area: Rect, record: Option<&ScanlineRecord>) {
         let lang = self.lang;
-        let Some(stop) = self.lesson.at() else {
+        let done = self.shown_pixels();
+        let Some(buffers) = self.lesson.buffers_after(done) else {
             frame.render_widget(Paragraph::new(zsim::words!(lang, "no-scanline")), area);
             return;
         };
-        let done = self.shown_pixels();
         // Until the coverage question is answered, the covered cells are not marked.
         let coverage_pending = !self.lesson.showing().spans;
-        let buffers: Buffers = self.lesson.with_stepper(|stepper| stepper.tracer().buffers_through(stop, done));
         let scene = self.lesson.scene();
         let values: Vec<Vec<String>> = match self.view {
             View::Frame => buffers.frame_rows().iter().map(|r| r.iter().map(u32::to_string).collect()).collect(),
@@ -325,12 +322,7 @@ impl<'l> App<'l> {
         let top = (row + rows_shown / 2 - self.scroll.0).clamp((rows_shown - 1).min(height - 1), height - 1);
         let first =
             ((span_first + span_last) / 2 - columns_shown / 2 + self.scroll.1).clamp(0, (width - columns_shown).max(0));
-        let trace_pixels: std::collections::HashSet<(u32, u32)> = self.lesson.with_stepper(|stepper| {
-            stepper.tracer().trace(stop.polygon).scanlines[..stop.scanline]
-                .iter()
-                .flat_map(|r| r.pixels.iter().filter(|e| e.outcome == Outcome::Written).map(|e| (e.x, e.y)))
-                .collect()
-        });
+        let trace_pixels: std::collections::HashSet<(u32, u32)> = self.lesson.earlier_writes().into_iter().collect();
         let current: Vec<u32> = match record {
             Some(r) if !coverage_pending => r.pixels.iter().map(|e| e.x).collect(),
             _ => Vec::new(),
@@ -388,33 +380,16 @@ impl<'l> App<'l> {
         let pixel_steps = if self.lesson.mode().is_some() { Some(self.shown_pixels()) } else { self.pixel };
         let scene = self.lesson.scene();
         let Some(done) = pixel_steps else {
-            // Scanline steps: the table, one line a pixel: x, z, the test, what is stored.
-            // `always` and `never` compare nothing: say so instead of a symbol.
-            let (op, compares) = match scene.depth_test.compares() {
-                true => (scene.depth_test.symbol().to_string(), true),
-                false => (zsim::words!(lang, "test-passes-uncompared", test = scene.depth_test.symbol()), false),
-            };
-            let zs: Vec<String> = record.pixels.iter().map(|e| exact_and_decimal(lang, e.depth.value())).collect();
-            let width = zs.iter().map(|z| z.chars().count()).max().unwrap_or(1);
+            // Scanline steps: the lesson's table, one line a pixel: x, z to two places, the test
+            // with its outcome, what is stored (and the framebuffer).
+            let width = view.rows.iter().map(|r| r.approx.chars().count()).max().unwrap_or(1).max(3);
             lines.push(Line::styled(
-                format!("  {}", zsim::words!(lang, "pixel-table-heading", z = format!("{:<width$}", "z"))),
+                format!("  {}", zsim::words!(lang, "pixel-table-heading", z = format!("{:>width$}", "≈ z"))),
                 Style::new().add_modifier(Modifier::BOLD),
             ));
-            for (pixel, z) in record.pixels.iter().zip(&zs) {
-                let (test, verdict, style) = match pixel.outcome {
-                    Outcome::Written => (
-                        String::new(),
-                        format!("{} ({})", pixel.stored_after.text(lang), pixel.frame_after),
-                        Color::Green,
-                    ),
-                    _ => (
-                        if compares { zsim::words!(lang, "test-not") } else { String::new() },
-                        zsim::words!(lang, "outcome-hidden-short"),
-                        Color::Red,
-                    ),
-                };
-                let line =
-                    format!("{:>3} {z:<width$} {test}{op}{} → {verdict}", pixel.x, pixel.stored_before.text(lang));
+            for row in &view.rows {
+                let style = if row.written { Color::Green } else { Color::Red };
+                let line = format!("{:>3} {:>width$} {} → {} ({})", row.x, row.approx, row.test, row.after, row.frame);
                 lines.push(Line::styled(line, Style::new().fg(style)));
             }
             lines.push(Line::from(zsim::words!(lang, "keys-pixel-by-pixel")));

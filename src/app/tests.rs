@@ -90,8 +90,9 @@ fn keys_move_without_enter_and_the_book_pixel_shows() {
     press(&mut app, "pg15\nz");
     let text = screen(&mut app, 100, 30);
     assert!(text.contains("polygon 2 \"triangle\", scanline y = 15.5 · z-buffer"), "{text}");
-    assert!(text.contains(" 20 43/4 ≈ 10.75 >10 → 11 (2)"), "{text}");
-    assert!(text.contains(" 21 10           not >10 → hidden"), "{text}");
+    // The lesson's own table, as the line mode and the page word it.
+    assert!(text.contains(" 20 10.75 43/4 > 10: written → 11 (2)"), "{text}");
+    assert!(text.contains(" 21 10.00 10 > 10: no, hidden → 10 (1)"), "{text}");
     snapshot("tui_rogers_triangle_15_depth", text);
     // → then ←: the next scanline and back.
     press(&mut app, "→");

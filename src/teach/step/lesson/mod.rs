@@ -300,9 +300,27 @@ impl Lesson {
     /// The buffers as the student may see them: after the stop's polygon's
     /// earlier scanlines and the shown pixels of its own (`None` at the end).
     pub fn buffers(&mut self) -> Option<Buffers> {
-        let pixels = self.showing().pixels;
+        self.buffers_after(usize::MAX)
+    }
+
+    /// The buffers after the stop's polygon's earlier scanlines and the first
+    /// `pixels` of its own, no more than the student may see (`None` at the
+    /// end): a front end that steps pixel by pixel shows fewer.
+    pub fn buffers_after(&mut self, pixels: usize) -> Option<Buffers> {
+        let pixels = pixels.min(self.showing().pixels);
         let stop = self.at()?;
         Some(self.with_stepper(|stepper| stepper.tracer().buffers_through(stop, pixels)))
+    }
+
+    /// The pixels the stop's polygon wrote on its earlier scanlines (empty at the end).
+    pub fn earlier_writes(&mut self) -> Vec<(u32, u32)> {
+        let Some(stop) = self.at() else { return Vec::new() };
+        self.with_stepper(|stepper| {
+            (stepper.tracer().trace(stop.polygon).scanlines[..stop.scanline].iter())
+                .flat_map(|r| r.pixels.iter().filter(|e| e.outcome == crate::simulate::events::Outcome::Written))
+                .map(|e| (e.x, e.y))
+                .collect()
+        })
     }
 
     /// Carries out `command` and says what became of it.
