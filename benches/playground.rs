@@ -73,7 +73,7 @@ fn main() {
             for (let i = 0; i < {ROUNDS}; i++) {{
               time("view", () => JSON.parse(read.view()));
               time("lesson", () => {{ const l = new z.WebLesson("en", text, "", 0, 0); JSON.parse(l.state()); l.free(); }});
-              time("after", () => JSON.parse(read.after(0)));
+              time("after", () => JSON.parse(read.after(1)));
               time("edit", () => z.edit("en", text, JSON.stringify({{op: "set", path: ["width"], value: "64"}})));
             }}
             read.free();
