@@ -106,7 +106,9 @@ fn tinyrenderer_overdraw(c: &mut Criterion) {
     let mut group = c.benchmark_group("tinyrenderer, 20 overdrawn faces on 800x800");
     group.sample_size(10);
     group.bench_function("the lesson's f64", |b| {
-        b.iter(|| zsim::tinyrenderer::render(&model, zsim::tinyrenderer::Arith::F64, 800).zbuffer[400 * 800 + 400])
+        b.iter(|| {
+            zsim::tinyrenderer::render(&model, zsim::tinyrenderer::LessonArith::F64, 800).zbuffer[400 * 800 + 400]
+        })
     });
     group.finish();
 }

@@ -23,7 +23,7 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use zsim::RandomScene;
 use zsim::Scene;
 use zsim::Simulation;
-use zsim::accuracy::{self, Settings};
+use zsim::accuracy::{self, AccuracyRequest};
 use zsim::arith::{Arith, Prepared};
 use zsim::{Observer, PixelEvent, Recorder, Unobserved};
 
@@ -39,7 +39,7 @@ fn pixels(scene: &Scene) -> u64 {
 }
 
 fn arithmetic(c: &mut Criterion) {
-    let scenes = accuracy::scenes(zsim::Lang::En, &Settings { seed: 1, width: 256, height: 256, scenes: 2 })
+    let scenes = accuracy::scenes(zsim::Lang::En, &AccuracyRequest { seed: 1, width: 256, height: 256, scenes: 2 })
         .expect("the accuracy set");
     let mut group = c.benchmark_group("arithmetic on the accuracy set");
     group.sample_size(10);

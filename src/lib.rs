@@ -135,8 +135,8 @@ pub use observe::gpu;
 #[cfg(feature = "gpu")]
 pub use observe::race;
 pub use observe::render::variant_report;
-pub use observe::step::{PolygonTrace, Skip, Stop, Tracer};
 pub use observe::trace::{PixelHistoryEntry, PixelWatcher, Recorder, ScanlineRecord, SpanRecord};
+pub use observe::tracer::{PolygonTrace, Skip, Stop, Tracer};
 pub use observe::{explain, figure, history, picture, report, tie, tikz};
 pub use raster::convert::{Scratch, rasterize};
 pub use raster::depth::{Depth, DepthTest, Stored};
@@ -153,7 +153,7 @@ pub use simulate::simulation::{Drawn, Simulation};
 pub use simulate::stages::{StageSet, describe};
 pub use teach::check::diagnose;
 pub use teach::grade::{class, gradebooks, gradescope};
-pub use teach::step::{lesson, page, stop};
+pub use teach::step::{lesson, page, table};
 pub use teach::{check, course, exercise, grade, page_limits, playground, step};
 pub use words::{
     Arg, Lang, localize_decimal, own_name, polygon_label, printable, shown_name, shown_path, text as message, token,

@@ -4,7 +4,7 @@ use std::io::Write;
 
 use clap::{Args, ValueEnum};
 use comfy_table::{Table, presets};
-use zsim::accuracy::{self, Settings};
+use zsim::accuracy::{self, AccuracyRequest};
 
 use super::{Failure, Finish, emit};
 
@@ -46,7 +46,7 @@ pub fn run(lang: zsim::Lang, args: &AccuracyArgs, out: &mut dyn Write) -> Result
     if args.scenes == 0 || args.scenes > 100 {
         return Err(super::flags::Flag::ScenesOutOfRange.into());
     }
-    let settings = Settings { seed: args.seed, width: args.size.0, height: args.size.1, scenes: args.scenes };
+    let settings = AccuracyRequest { seed: args.seed, width: args.size.0, height: args.size.1, scenes: args.scenes };
     let scenes = accuracy::scenes(lang, &settings)?;
     let origin = std::time::Instant::now();
     let clock = || origin.elapsed();

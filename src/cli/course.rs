@@ -15,7 +15,7 @@ use zsim::course::report::{Change, changes, csv, json, read_previous};
 use zsim::{Error, Lang};
 
 use super::exercise::ExerciseArgs;
-use super::grade::{Format, GradeArgs};
+use super::grade::{GradeArgs, ReportFormat};
 use super::{Failure, Finish, emit, emit_then};
 
 /// `zsim exercise --roster FILE -o DIR`.
@@ -105,10 +105,10 @@ fn fairness_table(lang: Lang, manifest: &Manifest) -> Table {
 struct GradeVariants<'a> {
     variants: &'a Path,
     class: &'a Path,
-    format: Format,
+    format: ReportFormat,
     output: Option<&'a Path>,
     compare: Option<&'a Path>,
-    gradebook: (Option<zsim::gradebooks::Identity>, Option<&'a str>, u32),
+    gradebook: (Option<zsim::gradebooks::IdentityColumn>, Option<&'a str>, u32),
 }
 
 /// `zsim grade --variants DIR/variants.json CLASS`: one folder, the class's.
@@ -125,7 +125,7 @@ pub fn grade(lang: Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Finish
         gradebook: (args.identity, args.item.as_deref(), args.points),
     };
     let loaded = zsim::course::manifest::load(lang, args.variants)?;
-    let plain = matches!(args.format, Format::Csv | Format::Json);
+    let plain = matches!(args.format, ReportFormat::Csv | ReportFormat::Json);
     let graded = grade_course(if plain { Lang::En } else { lang }, &loaded, args.class)?;
     let previous = match args.compare {
         Some(path) => Some(read_previous(lang, path)?),
@@ -134,19 +134,19 @@ pub fn grade(lang: Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Finish
     let changes = previous.as_ref().map(|p| changes(&loaded.manifest, &graded, p)).unwrap_or_default();
     let grades = graded.grades();
     let text = match args.format {
-        Format::Moodle | Format::Canvas => {
+        ReportFormat::Moodle | ReportFormat::Canvas => {
             let (identity, item, points) = args.gradebook;
             super::grade::gradebook_of(args.format, identity, item, points, &grades)?
         }
-        Format::Csv => csv(&loaded.manifest, &graded),
-        Format::Json => json(&loaded.manifest, &graded, &changes),
-        Format::Text => text(lang, args, &graded, &changes),
+        ReportFormat::Csv => csv(&loaded.manifest, &graded),
+        ReportFormat::Json => json(&loaded.manifest, &graded, &changes),
+        ReportFormat::Text => text(lang, args, &graded, &changes),
     };
     if let Some(folder) = args.output {
         let regraded = if plain { Some(grade_course(lang, &loaded, args.class)?) } else { None };
         feedback(lang, folder, args, &loaded, regraded.as_ref().unwrap_or(&graded))?;
     }
-    if !matches!(args.format, Format::Text | Format::Json) {
+    if !matches!(args.format, ReportFormat::Text | ReportFormat::Json) {
         graded.strays.iter().for_each(|s| super::say(&s.text(lang)));
         for row in &graded.rows {
             row.notes.iter().for_each(|n| super::say(&format!("{}: {}", row.grade.student, n.text(lang))));

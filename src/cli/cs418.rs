@@ -84,7 +84,7 @@ fn run_case(
     tolerance: u8,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
-    let cs418::report::Loaded { case, textures } = cs418::report::load(lang, path, cs418::report::Textures::Read)?;
+    let cs418::report::LoadedCase { case, textures } = cs418::report::load(lang, path, cs418::report::Textures::Read)?;
     let arithmetic = match arith {
         Arith::DdaF64 => Arithmetic::DdaF64,
         Arith::Exact => Arithmetic::Exact,

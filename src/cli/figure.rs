@@ -8,7 +8,7 @@ use zsim::Error;
 use zsim::Scene;
 use zsim::Simulation;
 use zsim::explain::polygon_after;
-use zsim::figure::{Extras, MAX_FIGURE_SIDE, Shading, svg_with};
+use zsim::figure::{Annotations, MAX_FIGURE_SIDE, Shading, svg_with};
 
 use super::{Failure, Finish, emit};
 
@@ -97,7 +97,7 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
         let threads = std::thread::available_parallelism().map_or(1, usize::from);
         simulation.draw_parallel_through(last, simulation.default_tile(threads), threads, &|| {});
     }
-    let extras = Extras { vertex_labels: worksheet, caption: Vec::new(), values: args.values };
+    let extras = Annotations { vertex_labels: worksheet, caption: Vec::new(), values: args.values };
     let text = svg_with(lang, &scene, simulation.buffers(), last, shading, &title, &extras);
     let bytes = format.encode(lang, &text, &args.output, args.tikz_only, (args.scale, args.paper))?;
     let mut plan = zsim::Plan::new(&[&args.scene], zsim::Replace::Allowed);

@@ -16,7 +16,7 @@ use zsim::grade::{CommonMistake, Grade, Status};
 use super::check::report_text;
 use super::{Failure, Finish, emit_then};
 use zsim::check::{as_the_student_sees, check_with, read_answer};
-use zsim::gradebooks::{self, Identity};
+use zsim::gradebooks::{self, IdentityColumn};
 
 /// Arguments of `zsim grade`.
 #[derive(Debug, Args)]
@@ -37,14 +37,14 @@ pub struct GradeArgs {
     #[arg(long, value_name = "N|NAME")]
     after: Option<String>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub(super) format: Format,
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub(super) format: ReportFormat,
     /// Write each student's feedback (`zsim check`'s explanation of every wrong cell) to FOLDER/NAME.feedback.txt, and the common mistakes to FOLDER/common-mistakes.txt; FOLDER may not be the class folder, and no file in it is replaced.
     #[arg(short, long, value_name = "FOLDER")]
     pub(super) output: Option<PathBuf>,
     /// With --format moodle or canvas: the column that names the student (Moodle: email, idnumber, username; Canvas: id, sis-user-id, sis-login-id); the student's file name is its value.
-    #[arg(long, value_parser = super::choice(&Identity::NAMES, Identity::parse))]
-    pub(super) identity: Option<Identity>,
+    #[arg(long, value_parser = super::choice(&IdentityColumn::NAMES, IdentityColumn::parse))]
+    pub(super) identity: Option<IdentityColumn>,
     /// With --format moodle or canvas: the grade column's header (Moodle: "Assignment: NAME (Real)" as its exports write it; Canvas: "NAME (ID)" to fill an existing assignment).
     #[arg(long, value_name = "NAME")]
     pub(super) item: Option<String>,
@@ -54,7 +54,7 @@ pub struct GradeArgs {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub(super) enum Format {
+pub(super) enum ReportFormat {
     /// A table, then the common mistakes.
     Text,
     /// One row a student with a header row: student,frame_wrong,depth_wrong,score,status,misconception.
@@ -81,14 +81,14 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
         None => scene.polygons.len() - 1,
     };
     // CSV and JSON are the same in every language: their reasons and names in English.
-    let plain = matches!(args.format, Format::Csv | Format::Json);
+    let plain = matches!(args.format, ReportFormat::Csv | ReportFormat::Json);
     let class = grade_class(if plain { zsim::Lang::En } else { lang }, &scene, &args.scene, &args.class, last)?;
     let rows = class.rows();
     // Students a gradebook cannot tell apart (`Emma`, `emma`) are graded both in every report; an
     // import leaves their rows out, and says so, rather than let the platform merge them.
     let merged = gradebooks::indistinct(&rows);
     let text = match args.format {
-        Format::Moodle | Format::Canvas => {
+        ReportFormat::Moodle | ReportFormat::Canvas => {
             let apart: std::collections::HashSet<&str> =
                 merged.iter().flat_map(|(a, b)| [a.as_str(), b.as_str()]).collect();
             for (first, second) in &merged {
@@ -102,13 +102,13 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
             let imported: Vec<&Grade> = rows.iter().copied().filter(|g| !apart.contains(g.student.as_str())).collect();
             gradebook(args, &imported)?
         }
-        Format::Csv => gradebooks::csv(&rows),
-        Format::Json => {
+        ReportFormat::Csv => gradebooks::csv(&rows),
+        ReportFormat::Json => {
             let en = zsim::Lang::En;
             let found = (&class.mistakes[..], &class.reasons[..], &class.skipped[..]);
             gradebooks::json(en, &args.scene, &polygon_name(en, &scene, last), &rows, found)
         }
-        Format::Text => {
+        ReportFormat::Text => {
             let counts = |f: fn(&Grade) -> bool| rows.iter().filter(|g| f(g)).count();
             let summary = zsim::words!(
                 lang,
@@ -137,12 +137,12 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
         write_feedback(lang, folder, (&scene, args), regraded.as_ref().unwrap_or(&class))?;
     }
     // A gradebook stays importable: the files not graded are named on standard error.
-    if matches!(args.format, Format::Csv | Format::Moodle | Format::Canvas) {
+    if matches!(args.format, ReportFormat::Csv | ReportFormat::Moodle | ReportFormat::Canvas) {
         class.skipped.iter().for_each(|skipped| super::say(&skipped.text(lang)));
     }
     // A misnamed answer is a student's work not graded, as a wrong one is.
     let all_graded = class.skipped.iter().all(|s| s.meant.is_none());
-    let imported = merged.is_empty() || !matches!(args.format, Format::Moodle | Format::Canvas);
+    let imported = merged.is_empty() || !matches!(args.format, ReportFormat::Moodle | ReportFormat::Canvas);
     let ok = all_graded && imported && rows.iter().all(|g| g.status == zsim::grade::Status::Ok);
     let finish = if ok { Finish::Ok } else { Finish::Differs };
     emit_then(out, &text, finish)
@@ -171,14 +171,14 @@ fn gradebook(args: &GradeArgs, rows: &[&Grade]) -> Result<String, Failure> {
 
 /// [`gradebook`] from its parts.
 pub(super) fn gradebook_of(
-    format: Format,
-    identity: Option<Identity>,
+    format: ReportFormat,
+    identity: Option<IdentityColumn>,
     item: Option<&str>,
     points: u32,
     rows: &[&Grade],
 ) -> Result<String, Failure> {
-    let moodle = format == Format::Moodle;
-    let identity = identity.unwrap_or(if moodle { Identity::Email } else { Identity::SisLoginId });
+    let moodle = format == ReportFormat::Moodle;
+    let identity = identity.unwrap_or(if moodle { IdentityColumn::Email } else { IdentityColumn::SisLoginId });
     if identity.is_moodle() != moodle {
         return Err(super::flags::Flag::IdentityColumn { column: identity.header() }.into());
     }
@@ -302,7 +302,7 @@ fn write_feedback(
     let (last, shown) = (class.last, zsim::own_name(&args.scene));
     // The scene's buffers and wrong rules drawn once for the class, each student's files found once: a
     // class of thousands costs what its students cost, not their square.
-    let prepared = zsim::check::Prepared::new(scene, last);
+    let prepared = zsim::check::PreparedCheck::new(scene, last);
     let mut files_of: std::collections::HashMap<&str, Vec<&zsim::class::AnswerFile>> = std::collections::HashMap::new();
     for file in &class.files {
         files_of.entry(file.student.as_str()).or_default().push(file);

@@ -136,7 +136,7 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
         if args.format == Format::None {
             return Err(super::flags::Flag::FormatNoneIsPlain.into());
         }
-        let variant = super::variants::Variant {
+        let variant = super::variants::RunVariant {
             segments: args.segments,
             pixel_order: (args.order == Order::Pixels).then_some(match args.inside.unwrap_or(InsideTest::Ray) {
                 InsideTest::Ray => zsim::variants::Inside::Ray,

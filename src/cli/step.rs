@@ -332,9 +332,9 @@ fn stop_text(lang: zsim::Lang, lesson: &mut Lesson, color: bool) -> String {
     text
 }
 
-fn pixel_table(lang: zsim::Lang, rows: &[zsim::stop::PixelRow], color: bool) -> Table {
+fn pixel_table(lang: zsim::Lang, rows: &[zsim::table::PixelRow], color: bool) -> Table {
     let mut table = Table::new();
-    table.load_style(presets::ASCII_MARKDOWN).set_header(zsim::stop::pixel_header(lang));
+    table.load_style(presets::ASCII_MARKDOWN).set_header(zsim::table::pixel_header(lang));
     for row in rows.iter().cloned() {
         let mut test = Cell::new(row.test);
         if color {

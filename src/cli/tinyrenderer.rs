@@ -26,8 +26,8 @@ enum Command {
         #[arg(short, long, value_name = "OUT_DIR")]
         output: PathBuf,
         /// The lesson's f64 arithmetic, or exact, which also lists the pixels where the two differ.
-        #[arg(long, value_enum, default_value_t = Arith::F64)]
-        arith: Arith,
+        #[arg(long, value_enum, default_value_t = LessonArith::F64)]
+        arith: LessonArith,
         /// Write the TGA files without run-length encoding (types 2 and 3 instead of 10 and 11).
         #[arg(long)]
         uncompressed: bool,
@@ -40,8 +40,8 @@ enum Command {
         /// The model (an OBJ file).
         model: PathBuf,
         /// Project the vertices in the lesson's f64 or exactly.
-        #[arg(long, value_enum, default_value_t = Arith::F64)]
-        arith: Arith,
+        #[arg(long, value_enum, default_value_t = LessonArith::F64)]
+        arith: LessonArith,
         /// Write the scene to this file instead of standard output.
         #[arg(short, long, value_name = "FILE")]
         output: Option<PathBuf>,
@@ -65,18 +65,18 @@ fn side(lang: zsim::Lang, text: &str) -> Result<i64, String> {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum Arith {
+enum LessonArith {
     /// The lesson's arithmetic: f64, as its C++ computes.
     F64,
     /// Exact fractions.
     Exact,
 }
 
-impl Arith {
-    fn lesson(self) -> tinyrenderer::Arith {
+impl LessonArith {
+    fn lesson(self) -> tinyrenderer::LessonArith {
         match self {
-            Arith::F64 => tinyrenderer::Arith::F64,
-            Arith::Exact => tinyrenderer::Arith::Exact,
+            LessonArith::F64 => tinyrenderer::LessonArith::F64,
+            LessonArith::Exact => tinyrenderer::LessonArith::Exact,
         }
     }
 }
@@ -106,7 +106,7 @@ pub fn run(lang: zsim::Lang, args: &TinyrendererArgs, out: &mut dyn Write) -> Re
                     folder = zsim::shown_path(output)
                 )
             );
-            if *arith == Arith::Exact {
+            if *arith == LessonArith::Exact {
                 text.push_str(&tinyrenderer::differences_text(lang, &loaded, &drawn, *size));
             }
             emit(out, &text)?;

@@ -15,7 +15,7 @@ use zsim::variants::{self, Inside, Segments};
 use super::{Failure, Finish, emit};
 
 /// What `run` was asked for besides the plain z-buffer.
-pub struct Variant {
+pub struct RunVariant {
     pub segments: Option<Segments>,
     pub pixel_order: Option<Inside>,
     pub axes: bool,
@@ -27,7 +27,7 @@ pub fn run(
     lang: zsim::Lang,
     scene: &Scene,
     path: &str,
-    variant: &Variant,
+    variant: &RunVariant,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
     let last_name = scene.polygons.last().map_or(String::new(), |p| p.name.clone());

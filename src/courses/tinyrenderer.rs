@@ -12,7 +12,7 @@
 //!
 //! The areas are integers, so which samples a triangle covers is exact in
 //! either arithmetic; the lesson's f64 shows only in the projection and in
-//! the interpolated depth, which [`Arith::Exact`] computes as fractions.
+//! the interpolated depth, which [`LessonArith::Exact`] computes as fractions.
 
 use crate::numbers::{Exact, Q, parse_exact};
 use crate::words::Lang;
@@ -108,7 +108,7 @@ impl Model {
 
 /// The arithmetic the lesson's program is run in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Arith {
+pub enum LessonArith {
     /// The lesson's: f64, as its C++ computes (same operations, same order).
     F64,
     /// Exact fractions: what the lesson's rules give without rounding errors.
@@ -121,16 +121,16 @@ pub type Screen = [i64; 3];
 
 /// The lesson's `project` for an image `size` pixels square (the lesson's is
 /// [`SIZE`]), truncated to integers as its `std::tuple<int,int,int>` does.
-pub fn project(model: &Model, vertex: usize, arith: Arith, size: i64) -> Screen {
+pub fn project(model: &Model, vertex: usize, arith: LessonArith, size: i64) -> Screen {
     match arith {
-        Arith::F64 => {
+        LessonArith::F64 => {
             let [x, y, z] = model.vertices_f64[vertex];
             // ((v.x + 1.) * width) / 2, then the conversion to int (toward zero).
             // A value beyond 2^40 lies far off the image: held there, as in exact arithmetic.
             let screen = |v: f64, scale: f64| (((v + 1.0) * scale / 2.0) as i64).clamp(-FAR, FAR);
             [screen(x, size as f64), screen(y, size as f64), screen(z, 255.0)]
         }
-        Arith::Exact => {
+        LessonArith::Exact => {
             let [x, y, z] = &model.vertices[vertex];
             let screen = |v: &Exact, scale: i128| {
                 let value = v.plus(&Exact::Word(Q::from_integer(1))).times(scale).divided_by(2);
@@ -226,7 +226,7 @@ pub struct Render {
 
 /// Draws the model as the lesson does, in `arith`, on an image `size`
 /// pixels square (the lesson's is [`SIZE`]).
-pub fn render(model: &Model, arith: Arith, size: i64) -> Render {
+pub fn render(model: &Model, arith: LessonArith, size: i64) -> Render {
     let pixels = (size * size) as usize;
     let mut out =
         Render { zbuffer: vec![0; pixels], framebuffer: vec![[0; 3]; pixels], face: vec![None; pixels], skipped: 0 };
@@ -260,7 +260,7 @@ pub fn render(model: &Model, arith: Arith, size: i64) -> Render {
                     continue;
                 }
                 let z = match arith {
-                    Arith::F64 => {
+                    LessonArith::F64 => {
                         // As the lesson: each area halved in double, divided by the halved total.
                         // An area converted from i64 where it fits (the same double, without
                         // the slow 128-bit conversion).
@@ -269,7 +269,7 @@ pub fn render(model: &Model, arith: Arith, size: i64) -> Render {
                         let (alpha, beta, gamma) = (half(wa) / t, half(wb) / t, half(wc) / t);
                         (alpha * a[2] as f64 + beta * b[2] as f64 + gamma * c[2] as f64) as u8
                     }
-                    Arith::Exact => {
+                    LessonArith::Exact => {
                         let n = wa * i128::from(a[2]) + wb * i128::from(b[2]) + wc * i128::from(c[2]);
                         (n / total).clamp(0, 255) as u8
                     }
@@ -296,7 +296,7 @@ pub fn render(model: &Model, arith: Arith, size: i64) -> Render {
 /// `arith`), its value the face's colour as 0xRRGGBB and its name `face N`
 /// (from 1, as the OBJ's `f` lines count). Faces the lesson skips are kept:
 /// zsim's rules skip them too, and say why.
-pub fn scene_json(model: &Model, arith: Arith, size: i64) -> String {
+pub fn scene_json(model: &Model, arith: LessonArith, size: i64) -> String {
     let mut rand = GlibcRand::new(1);
     let mut polygons = Vec::with_capacity(model.faces.len());
     for (index, face) in model.faces.iter().enumerate() {
@@ -421,7 +421,7 @@ pub const DIFFERENCES_LISTED: usize = 10;
 /// The pixels where the lesson's f64 gives another z-buffer level than
 /// exact arithmetic, counted, the first few listed.
 pub fn differences_text(lang: Lang, model: &Model, exact: &Render, size: i64) -> String {
-    let float = render(model, Arith::F64, size);
+    let float = render(model, LessonArith::F64, size);
     let differing: Vec<usize> = (0..exact.zbuffer.len()).filter(|&i| exact.zbuffer[i] != float.zbuffer[i]).collect();
     let mut text = format!("{}\n", words!(lang, "tinyrenderer-differ", count = differing.len()));
     for &cell in differing.iter().take(DIFFERENCES_LISTED) {

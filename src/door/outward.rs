@@ -5,7 +5,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use super::inward::Identity;
-use super::staged::{Folder, Staged};
+use super::staged::{Staged, StagingFolder};
 use crate::error::{Error, Usage};
 
 /// Whether a planned file may replace one that is there.
@@ -191,8 +191,9 @@ impl<'a> Plan<'a> {
         // the files move on to another (a class writes a folder a student, more folders than a
         // process may hold open), reopened, and checked to be the same folder, when its files are
         // placed (the design note on a course has the class that found it).
-        let mut folders: std::collections::HashMap<PathBuf, std::sync::Arc<Folder>> = std::collections::HashMap::new();
-        let mut open: Option<std::sync::Arc<Folder>> = None;
+        let mut folders: std::collections::HashMap<PathBuf, std::sync::Arc<StagingFolder>> =
+            std::collections::HashMap::new();
+        let mut open: Option<std::sync::Arc<StagingFolder>> = None;
         for (file, _) in &mut files {
             let path = folder_of(&file.path);
             let folder = match folders.get(path) {
@@ -200,7 +201,7 @@ impl<'a> Plan<'a> {
                 None => {
                     let failed = |source| Error::Write { path: path.to_owned(), source };
                     std::fs::create_dir_all(path).map_err(failed)?;
-                    let folder = std::sync::Arc::new(Folder::open(path).map_err(failed)?);
+                    let folder = std::sync::Arc::new(StagingFolder::open(path).map_err(failed)?);
                     folders.insert(path.to_path_buf(), std::sync::Arc::clone(&folder));
                     folder
                 }

@@ -13,11 +13,11 @@ use std::io;
 use std::path::Path;
 
 /// A folder files are staged in, opened once for all of them.
-pub(super) struct Folder {
+pub(super) struct StagingFolder {
     /// Its path, to sync its file system by and to reopen it by.
     path: std::path::PathBuf,
-    /// Its handle while open; closed ([`Folder::close`]) and reopened by
-    /// [`Folder::with`], which checks that the path still names this folder.
+    /// Its handle while open; closed ([`StagingFolder::close`]) and reopened by
+    /// [`StagingFolder::with`], which checks that the path still names this folder.
     #[cfg(not(target_arch = "wasm32"))]
     dir: std::sync::Mutex<Option<cap_std::fs::Dir>>,
     /// The folder's identity, as first opened.
@@ -27,16 +27,16 @@ pub(super) struct Folder {
     dir: std::path::PathBuf,
 }
 
-impl Folder {
+impl StagingFolder {
     /// The folder at `path`, opened.
-    pub(super) fn open(path: &Path) -> io::Result<Folder> {
+    pub(super) fn open(path: &Path) -> io::Result<StagingFolder> {
         #[cfg(not(target_arch = "wasm32"))]
         {
             let (dir, key) = open_dir(path)?;
-            Ok(Folder { path: path.to_path_buf(), dir: std::sync::Mutex::new(Some(dir)), key })
+            Ok(StagingFolder { path: path.to_path_buf(), dir: std::sync::Mutex::new(Some(dir)), key })
         }
         #[cfg(target_arch = "wasm32")]
-        Ok(Folder { path: path.to_path_buf(), dir: path.to_path_buf() })
+        Ok(StagingFolder { path: path.to_path_buf(), dir: path.to_path_buf() })
     }
 
     /// Runs `f` on the folder's handle, reopening it if it was closed; a
@@ -100,7 +100,7 @@ impl Folder {
 /// while it is written, the file itself (closed once written, so that a
 /// folder of thousands of files holds one descriptor, the folder's).
 pub(super) struct Staged {
-    folder: std::sync::Arc<Folder>,
+    folder: std::sync::Arc<StagingFolder>,
     /// The temporary name; empty once placed.
     temporary: String,
     file: Option<std::fs::File>,
@@ -109,7 +109,7 @@ pub(super) struct Staged {
 impl Staged {
     /// A new empty file in `folder` under a temporary name no other file
     /// has, with `mode` (less the umask) where the system has modes.
-    pub(super) fn new(folder: &std::sync::Arc<Folder>, mode: u32) -> io::Result<Staged> {
+    pub(super) fn new(folder: &std::sync::Arc<StagingFolder>, mode: u32) -> io::Result<Staged> {
         let seed =
             std::hash::BuildHasher::hash_one(&std::collections::hash_map::RandomState::new(), std::process::id());
         for attempt in 0u64..100 {
@@ -125,7 +125,7 @@ impl Staged {
 
     /// Writes `bytes` into it, syncs them where `sync` says, and closes it.
     /// The folder it is staged in.
-    pub(super) fn folder(&self) -> std::sync::Arc<Folder> {
+    pub(super) fn folder(&self) -> std::sync::Arc<StagingFolder> {
         std::sync::Arc::clone(&self.folder)
     }
 

@@ -23,7 +23,7 @@ use crate::simulate::setup::Stats;
 
 /// What `zsim accuracy` is asked for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Settings {
+pub struct AccuracyRequest {
     /// Seed of the generated scenes.
     pub seed: u64,
     /// Raster width.
@@ -69,7 +69,7 @@ pub struct BitsRow {
 /// A scene of random triangles with vertices on a 1/256 grid and depths on a
 /// 1/256 grid within a 24-bit z-buffer: values floating point cannot hold
 /// exactly, as real scenes have.
-fn random_scene(rng: &mut SplitMix64, settings: &Settings, size: u32, count: usize) -> String {
+fn random_scene(rng: &mut SplitMix64, settings: &AccuracyRequest, size: u32, count: usize) -> String {
     let (w, h) = (i64::from(settings.width) * 256, i64::from(settings.height) * 256);
     let extent = i64::from(size) * 256;
     let mut out = format!(
@@ -93,7 +93,7 @@ fn random_scene(rng: &mut SplitMix64, settings: &Settings, size: u32, count: usi
 
 /// The hard cases: a long sliver 1/256 thin, a plane nearly edge-on, vertices
 /// on pixel centres, coplanar overlapping polygons and depths of exactly k + 1/2.
-fn hard_scenes(settings: &Settings) -> Vec<String> {
+fn hard_scenes(settings: &AccuracyRequest) -> Vec<String> {
     let (w, h) = (settings.width, settings.height);
     vec![
         format!(
@@ -116,7 +116,7 @@ fn hard_scenes(settings: &Settings) -> Vec<String> {
 }
 
 /// The accuracy set: random scenes of several triangle sizes, then the hard cases.
-pub fn scenes(lang: Lang, settings: &Settings) -> Result<Vec<Scene>, Error> {
+pub fn scenes(lang: Lang, settings: &AccuracyRequest) -> Result<Vec<Scene>, Error> {
     let mut rng = SplitMix64::new(settings.seed);
     let mut texts = Vec::new();
     let area = u64::from(settings.width) * u64::from(settings.height);
@@ -240,7 +240,7 @@ fn coplanar_scene(width: u32, height: u32, bits: u32) -> String {
 }
 
 /// The depth-bits sweep: 4, 8, 16, 24 and 32 bits.
-pub fn bits_sweep(lang: Lang, settings: &Settings, clock: Clock<'_>) -> Result<Vec<BitsRow>, Error> {
+pub fn bits_sweep(lang: Lang, settings: &AccuracyRequest, clock: Clock<'_>) -> Result<Vec<BitsRow>, Error> {
     let mut rows = Vec::new();
     for bits in [4u32, 8, 16, 24, 32] {
         let scene =

@@ -2,7 +2,7 @@
 //! Imports: effects and the layers before it.
 //!
 //! - `record`: a run recorded as it happens (`trace`: scanlines, pixels, a
-//!   watched pixel's events; `step`: polygons recorded as a student reaches
+//!   watched pixel's events; `tracer`: polygons recorded as a student reaches
 //!   them, the stops between them).
 //! - `explain`: why a pixel holds what it holds (`explain`), its whole
 //!   history (`history`), a centre on an edge and the rule that decides it
@@ -20,5 +20,5 @@ pub mod render;
 pub use explain::{history, tie};
 #[cfg(feature = "gpu")]
 pub use gpu::race;
-pub use record::{step, trace};
+pub use record::{trace, tracer};
 pub use render::{figure, picture, report, tikz};

@@ -58,7 +58,7 @@ pub const MAX_RECORDED_REACH: u64 = 4 * MAX_SHOWN_CELLS;
 
 /// A scene larger than a page draws.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub enum TooLarge {
+pub enum PageLimit {
     /// A text longer than [`MAX_PAGE_SCENE_BYTES`].
     Bytes {
         /// The scene file, where there is one.
@@ -116,22 +116,22 @@ pub enum TooLarge {
     },
 }
 
-impl Refusal for TooLarge {
+impl Refusal for PageLimit {
     fn message(&self, lang: Lang) -> String {
         let (path, said) = match self {
-            TooLarge::Bytes { path, bytes } => (
+            PageLimit::Bytes { path, bytes } => (
                 path.as_deref(),
                 words!(lang, "limit-scene-bytes", max = MAX_PAGE_SCENE_BYTES.to_string(), bytes = bytes.to_string()),
             ),
-            TooLarge::Cells { path, cells } => (
+            PageLimit::Cells { path, cells } => (
                 path.as_deref(),
                 words!(lang, "limit-page-cells", max = MAX_PAGE_CELLS.to_string(), cells = cells.to_string()),
             ),
-            TooLarge::Polygons { path, count } => (
+            PageLimit::Polygons { path, count } => (
                 path.as_deref(),
                 words!(lang, "limit-page-polygons", max = MAX_PAGE_POLYGONS.to_string(), count = count.to_string()),
             ),
-            TooLarge::Vertices { path, polygon, count } => (
+            PageLimit::Vertices { path, polygon, count } => (
                 path.as_deref(),
                 words!(
                     lang,
@@ -141,15 +141,15 @@ impl Refusal for TooLarge {
                     count = count.to_string()
                 ),
             ),
-            TooLarge::Reach { path, reach } => (
+            PageLimit::Reach { path, reach } => (
                 path.as_deref(),
                 words!(lang, "limit-page-reach", max = MAX_PAGE_REACH.to_string(), reach = reach.to_string()),
             ),
-            TooLarge::RecordedReach { path, reach } => (
+            PageLimit::RecordedReach { path, reach } => (
                 Some(path.as_path()),
                 words!(lang, "limit-recorded-reach", max = MAX_RECORDED_REACH.to_string(), reach = reach.to_string()),
             ),
-            TooLarge::Recorded { path, cells, polygons } => (
+            PageLimit::Recorded { path, cells, polygons } => (
                 Some(path.as_path()),
                 words!(
                     lang,
@@ -172,23 +172,23 @@ impl Refusal for TooLarge {
 /// is (whose validation is the work a limit spares): its length, its raster,
 /// its polygons, each polygon's vertices. Text that is not a scene's JSON passes,
 /// for the scene's reader to say what is wrong with it.
-pub fn check_text(text: &str, path: Option<&Path>) -> Result<(), TooLarge> {
+pub fn check_text(text: &str, path: Option<&Path>) -> Result<(), PageLimit> {
     let path = || path.map(Path::to_path_buf);
     if text.len() > MAX_PAGE_SCENE_BYTES {
-        return Err(TooLarge::Bytes { path: path(), bytes: text.len() });
+        return Err(PageLimit::Bytes { path: path(), bytes: text.len() });
     }
     let Ok(shape) = serde_json::from_str::<Shape>(text) else { return Ok(()) };
     let side = |value: &Option<Value>| value.as_ref().and_then(Value::as_u64).unwrap_or(32);
     let cells = side(&shape.width).saturating_mul(side(&shape.height));
     if cells > MAX_PAGE_CELLS {
-        return Err(TooLarge::Cells { path: path(), cells });
+        return Err(PageLimit::Cells { path: path(), cells });
     }
     let polygons = shape.polygons.0;
     if polygons.len() > MAX_PAGE_POLYGONS {
-        return Err(TooLarge::Polygons { path: path(), count: polygons.len() });
+        return Err(PageLimit::Polygons { path: path(), count: polygons.len() });
     }
     match polygons.iter().position(|&count| count > MAX_PAGE_VERTICES) {
-        Some(index) => Err(TooLarge::Vertices { path: path(), polygon: index + 1, count: polygons[index] }),
+        Some(index) => Err(PageLimit::Vertices { path: path(), polygon: index + 1, count: polygons[index] }),
         None => Ok(()),
     }
 }
@@ -325,9 +325,9 @@ impl<'de> serde::Deserialize<'de> for Items {
 /// The page's limit on what a scene's polygons reach ([`MAX_PAGE_REACH`]),
 /// once the scene is read (its polygons in pixels, whatever space the file
 /// gave them) and before anything is drawn.
-pub fn check_reach(scene: &Scene, path: Option<&Path>) -> Result<(), TooLarge> {
+pub fn check_reach(scene: &Scene, path: Option<&Path>) -> Result<(), PageLimit> {
     match reaches_past(scene, MAX_PAGE_REACH) {
-        true => Err(TooLarge::Reach { path: path.map(Path::to_path_buf), reach: total_reach(scene) }),
+        true => Err(PageLimit::Reach { path: path.map(Path::to_path_buf), reach: total_reach(scene) }),
         false => Ok(()),
     }
 }
@@ -368,13 +368,13 @@ fn total_reach(scene: &Scene) -> u64 {
 /// scene it steps pixel by pixel, at most [`MAX_SHOWN_CELLS`] pixels and
 /// [`MAX_SHOWN_POLYGONS`] polygons, as the playground's stepper, whose
 /// polygons reach at most [`MAX_RECORDED_REACH`] pixels.
-pub fn check_recorded(scene: &Scene, path: &Path) -> Result<(), TooLarge> {
+pub fn check_recorded(scene: &Scene, path: &Path) -> Result<(), PageLimit> {
     let cells = u64::from(scene.width) * u64::from(scene.height);
     if cells > MAX_SHOWN_CELLS || scene.polygons.len() > MAX_SHOWN_POLYGONS {
-        return Err(TooLarge::Recorded { path: path.to_path_buf(), cells, polygons: scene.polygons.len() });
+        return Err(PageLimit::Recorded { path: path.to_path_buf(), cells, polygons: scene.polygons.len() });
     }
     if reaches_past(scene, MAX_RECORDED_REACH) {
-        return Err(TooLarge::RecordedReach { path: path.to_path_buf(), reach: total_reach(scene) });
+        return Err(PageLimit::RecordedReach { path: path.to_path_buf(), reach: total_reach(scene) });
     }
     Ok(())
 }
@@ -400,7 +400,7 @@ mod tests {
         );
         assert_eq!(
             check_text(&text, Some(Path::new("v.json"))),
-            Err(TooLarge::Vertices { path: Some(PathBuf::from("v.json")), polygon: 2, count: MAX_PAGE_VERTICES + 1 })
+            Err(PageLimit::Vertices { path: Some(PathBuf::from("v.json")), polygon: 2, count: MAX_PAGE_VERTICES + 1 })
         );
     }
 }

@@ -4,13 +4,13 @@
 use std::path::Path;
 
 use zsim::Scene;
-use zsim::accuracy::{self, Settings};
+use zsim::accuracy::{self, AccuracyRequest};
 use zsim::arith::{self, Arith};
 
 use crate::{snapshot, zsim};
 
 fn small_set() -> Vec<Scene> {
-    accuracy::scenes(zsim::Lang::En, &Settings { seed: 1, width: 64, height: 64, scenes: 1 }).unwrap()
+    accuracy::scenes(zsim::Lang::En, &AccuracyRequest { seed: 1, width: 64, height: 64, scenes: 1 }).unwrap()
 }
 
 #[test]

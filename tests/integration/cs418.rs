@@ -5,7 +5,7 @@
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
-use zsim::cs418::{Arithmetic, Case, Image, compare_images, differences, render};
+use zsim::cs418::{Arithmetic, Image, RastFile, compare_images, differences, render};
 
 use crate::{scene_file, snapshot, zsim};
 
@@ -14,16 +14,16 @@ fn cases() -> PathBuf {
     crate::peer("uiuc-cs418", "the CS 418 reference images")
 }
 
-fn case(dir: &Path, name: &str) -> Case {
+fn case(dir: &Path, name: &str) -> RastFile {
     let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).expect("case file");
-    Case::parse(zsim::Lang::En, &text, &|_| Err("no textures here".into()))
+    RastFile::parse(zsim::Lang::En, &text, &|_| Err("no textures here".into()))
         .unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
 }
 
 /// A case whose textures (not in the folder) are all replaced by one texel.
-fn case_with_stand_in(dir: &Path, name: &str, texel: [u8; 4]) -> Case {
+fn case_with_stand_in(dir: &Path, name: &str, texel: [u8; 4]) -> RastFile {
     let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).expect("case file");
-    Case::parse(zsim::Lang::En, &text, &|_| Ok(std::sync::Arc::new(stand_in(texel))))
+    RastFile::parse(zsim::Lang::En, &text, &|_| Ok(std::sync::Arc::new(stand_in(texel))))
         .unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
 }
 
@@ -85,7 +85,8 @@ fn textured_cases_reproduce_their_references_texel_for_texel() {
             let bytes = std::fs::read(dir.join(file)).map_err(|e| e.to_string())?;
             Image::from_png(zsim::Lang::En, &bytes).map(std::sync::Arc::new)
         };
-        Case::parse(zsim::Lang::En, &text, &load).unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
+        RastFile::parse(zsim::Lang::En, &text, &load)
+            .unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
     };
     for name in ["points1", "points2", "decals", "textures"] {
         let image = render(zsim::Lang::En, &with_textures(name), Arithmetic::DdaF64).unwrap().image;
@@ -415,7 +416,7 @@ fn a_huge_point_fills_the_image_without_walking_beyond_it() {
 #[test]
 fn a_triangle_far_beyond_the_image_visits_only_the_image() {
     let text = "png 20 20 far.png\nfsaa 2\nposition 2 -999 -999 1999 -999 -999 1999\ncolor 3 1 1 1 1 1 1 1 1 1\ndrawArraysTriangles 0 3\n";
-    let case = Case::parse(zsim::Lang::En, text, &|_| Err("no textures here".into())).unwrap();
+    let case = RastFile::parse(zsim::Lang::En, text, &|_| Err("no textures here".into())).unwrap();
     for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
         let image = render(zsim::Lang::En, &case, arithmetic).unwrap().image;
         assert!(image.rgba.chunks(4).all(|p| p == [255, 255, 255, 255]), "{arithmetic:?}");
@@ -427,7 +428,7 @@ fn a_triangle_far_beyond_the_image_visits_only_the_image() {
 /// arithmetics either works or says what is wrong with a line; never a panic.
 mod never_a_panic {
     use proptest::prelude::*;
-    use zsim::cs418::{Arithmetic, Case, Image, render};
+    use zsim::cs418::{Arithmetic, Image, RastFile, render};
 
     /// A number, mostly ordinary, now and then extreme.
     fn value() -> impl Strategy<Value = String> {
@@ -540,7 +541,7 @@ mod never_a_panic {
     /// arithmetics: each step works or names a line.
     fn drawn_or_refused_with_its_line(text: &str) -> Result<(), TestCaseError> {
         let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
-        match Case::parse(zsim::Lang::En, text, &|_| Ok(std::sync::Arc::new(texture.clone()))) {
+        match RastFile::parse(zsim::Lang::En, text, &|_| Ok(std::sync::Arc::new(texture.clone()))) {
             Err(error) => prop_assert!(error.line.is_some(), "{}", error.message(zsim::Lang::En)),
             Ok(case) => {
                 for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
@@ -575,7 +576,7 @@ mod never_a_panic {
             let text = format!("png {width} {height} out.png\n{body}");
             let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
             // Drawings that are no case, or no scene once imported, are rejected: the runner counts them.
-            let Ok(case) = Case::parse(zsim::Lang::En, &text, &|_| Ok(std::sync::Arc::new(texture.clone()))) else {
+            let Ok(case) = RastFile::parse(zsim::Lang::En, &text, &|_| Ok(std::sync::Arc::new(texture.clone()))) else {
                 return Err(TestCaseError::reject("not a case"));
             };
             let Ok(json) = zsim::cs418::import::scene_json(zsim::Lang::En, &case) else {

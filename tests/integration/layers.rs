@@ -330,3 +330,41 @@ fn the_guide_draws_the_layers_as_the_code_has_them() {
     let expected: Vec<&str> = LAYERS.iter().copied().chain(["cli", "app"]).collect();
     assert_eq!(drawn, expected);
 }
+
+/// One name per thing: no two types of the crate (structs, enums, traits,
+/// type aliases, however public) share a name, so that an import or a
+/// document naming one cannot mean the other (found by a maintainer:
+/// `zsim::Refusal` and `step::Refusal`, `zsim::Buffers` and `page::Buffers`,
+/// two `TooLarge`s, two `Case`s, two `Settings`, …). One type declared twice
+/// in a file under two `cfg`s is one type.
+#[test]
+fn no_two_types_share_a_name() {
+    let mut files = Vec::new();
+    sources(&src(), &mut files);
+    let mut declared: std::collections::BTreeMap<String, Vec<String>> = std::collections::BTreeMap::new();
+    for file in &files {
+        let relative = file.strip_prefix(src()).unwrap().display().to_string();
+        for line in code(file).lines() {
+            let words: Vec<&str> = line.split_whitespace().collect();
+            let Some(at) = words.iter().position(|w| ["struct", "enum", "trait", "type"].contains(w)) else { continue };
+            if !words[..at].iter().all(|w| w.starts_with("pub")) || at == 0 {
+                continue;
+            }
+            let Some(name) = words.get(at + 1) else { continue };
+            let name: String = name.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+            if name.starts_with(|c: char| c.is_ascii_uppercase()) {
+                let places = declared.entry(name).or_default();
+                if !places.contains(&relative) {
+                    places.push(relative.clone());
+                }
+            }
+        }
+    }
+    let shared: Vec<String> = declared
+        .iter()
+        .filter(|(_, places)| places.len() > 1)
+        .map(|(name, places)| format!("{name}: {}", places.join(", ")))
+        .collect();
+    assert!(declared.len() > 100, "{} types found", declared.len());
+    assert!(shared.is_empty(), "types that share a name: {shared:#?}");
+}

@@ -407,7 +407,7 @@ fn a_cs418_image_of_the_most_samples_is_drawn_and_one_more_is_refused() {
 /// draws at once, `a_vertex_far_outside_the_image_draws_at_once`).
 #[test]
 fn a_projected_coordinate_is_held_at_its_limit() {
-    use zsim::tinyrenderer::{Arith, Model, project};
+    use zsim::tinyrenderer::{LessonArith, Model, project};
     let limit = stated("A projected coordinate (tinyrenderer)");
     let far = i64::try_from(limit.value).unwrap();
     // An image 2 pixels wide: x on the screen is (x + 1) · 2 / 2, so x = 2^40 − 1 lands on 2^40.
@@ -417,7 +417,7 @@ fn a_projected_coordinate_is_held_at_its_limit() {
         &format!("v {} 0 0\nv {} 0 0\nv {} 0 0\nv 1e308 0 0\n", x(far - 1), x(far), x(far + 1)),
     )
     .unwrap();
-    for arith in [Arith::F64, Arith::Exact] {
+    for arith in [LessonArith::F64, LessonArith::Exact] {
         let screen: Vec<i64> = (0..4).map(|v| project(&model, v, arith, 2)[0]).collect();
         assert_eq!(screen, [far - 1, far, far, far], "{arith:?}");
     }
@@ -428,7 +428,7 @@ fn a_projected_coordinate_is_held_at_its_limit() {
 /// buffers up to its limit and says why not past it.
 #[test]
 fn each_page_limit_holds_at_its_value_and_refuses_one_more() {
-    use zsim::page_limits::{TooLarge, check_text};
+    use zsim::page_limits::{PageLimit, check_text};
     let (text, raster, polygons, vertices, reach, printed) = (
         stated("The page's scene text"),
         stated("The page's raster"),
@@ -471,7 +471,7 @@ fn each_page_limit_holds_at_its_value_and_refuses_one_more() {
     let side = (raster.value as f64).sqrt() as u64;
     assert_eq!(check_text(&scene(side, side, 1, 3), None), Ok(()));
     let cells = check_text(&scene(side, side + 1, 1, 3), None).unwrap_err();
-    assert_eq!(cells, TooLarge::Cells { path: None, cells: side * (side + 1) });
+    assert_eq!(cells, PageLimit::Cells { path: None, cells: side * (side + 1) });
     assert_eq!(
         zsim::Refusal::message(&cells, zsim::Lang::En),
         format!(
@@ -483,7 +483,7 @@ fn each_page_limit_holds_at_its_value_and_refuses_one_more() {
     // The polygons.
     assert_eq!(check_text(&scene(16, 16, polygons.count(), 3), None), Ok(()));
     let many = check_text(&scene(16, 16, polygons.count() + 1, 3), None).unwrap_err();
-    assert_eq!(many, TooLarge::Polygons { path: None, count: polygons.count() + 1 });
+    assert_eq!(many, PageLimit::Polygons { path: None, count: polygons.count() + 1 });
     // The vertices.
     assert_eq!(check_text(&scene(16, 16, 2, vertices.count()), None), Ok(()));
     let corners = check_text(&scene(16, 16, 2, vertices.count() + 1), Some(Path::new("v.json"))).unwrap_err();

@@ -2,7 +2,7 @@
 //! (`../shared/peer/tinyrenderer/`, never copied into it), zsim draws the
 //! lesson's two images, and they equal the lesson's own byte for byte.
 
-use zsim::tinyrenderer::{Arith, Model, SIZE, read_tga, render, tga};
+use zsim::tinyrenderer::{LessonArith, Model, SIZE, read_tga, render, tga};
 
 use crate::peer;
 
@@ -15,7 +15,7 @@ fn the_lessons_images_are_reproduced_byte_for_byte() {
     for name in MODELS {
         let model =
             Model::parse(zsim::Lang::En, &std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
-        let drawn = render(&model, Arith::F64, SIZE);
+        let drawn = render(&model, LessonArith::F64, SIZE);
         let side = SIZE as u16;
         let zbuffer = tga(side, side, 1, &drawn.zbuffer, true);
         let framebuffer: Vec<u8> = drawn.framebuffer.iter().flatten().copied().collect();
@@ -44,7 +44,7 @@ fn exact_arithmetic_differs_from_the_lessons_f64_only_where_truncation_meets_an_
     for name in MODELS {
         let model =
             Model::parse(zsim::Lang::En, &std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
-        let (float, exact) = (render(&model, Arith::F64, SIZE), render(&model, Arith::Exact, SIZE));
+        let (float, exact) = (render(&model, LessonArith::F64, SIZE), render(&model, LessonArith::Exact, SIZE));
         let differing: Vec<(u8, u8)> =
             float.zbuffer.iter().zip(&exact.zbuffer).filter(|(a, b)| a != b).map(|(a, b)| (*a, *b)).collect();
         // Where they differ, the lesson's f64 is one level below: z was an integer, f64 fell short of it.
@@ -66,7 +66,7 @@ fn the_imported_model_draws_the_lessons_images_through_zsims_rasterizer() {
     for (name, f64_drops) in MODELS.into_iter().zip([310, 36, 39]) {
         let model =
             Model::parse(zsim::Lang::En, &std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
-        let json = zsim::tinyrenderer::scene_json(&model, Arith::F64, SIZE);
+        let json = zsim::tinyrenderer::scene_json(&model, LessonArith::F64, SIZE);
         let scene = zsim::Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("import.json")).unwrap();
         let mut simulation = zsim::Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
@@ -83,7 +83,7 @@ fn the_imported_model_draws_the_lessons_images_through_zsims_rasterizer() {
             .map(|v| [(v & 0xff) as u8, (v >> 8 & 0xff) as u8, (v >> 16) as u8])
             .collect();
         assert_eq!(depth.len(), side * side);
-        let exact = render(&model, Arith::Exact, SIZE);
+        let exact = render(&model, LessonArith::Exact, SIZE);
         let differing = depth.iter().zip(&exact.zbuffer).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "{name}: zsim against the lesson's rules, exactly");
         let differing = frame.iter().zip(&exact.framebuffer).filter(|(a, b)| a != b).count();
@@ -215,7 +215,7 @@ fn a_small_import_draws_as_the_lessons_rules_do() {
     simulation.finish(&mut zsim::Unobserved);
     let depth: Vec<u8> =
         simulation.buffers().depth_level_rows().unwrap().iter().rev().flatten().map(|v| *v as u8).collect();
-    let lesson = render(&model, Arith::Exact, 48);
+    let lesson = render(&model, LessonArith::Exact, 48);
     assert_eq!(depth, lesson.zbuffer);
     assert!(lesson.zbuffer.iter().filter(|z| **z > 0).count() > 500, "the pyramid covers the image's middle");
     let run = crate::zsim(&["tinyrenderer", "import", path.to_str().unwrap(), "--size", "3"]);

@@ -366,7 +366,7 @@ mod any_input {
     //! the page and the figure, random class folders for `grade`.
 
     use proptest::prelude::*;
-    use zsim::figure::{Extras, Shading, svg_with};
+    use zsim::figure::{Annotations, Shading, svg_with};
     use zsim::{Scene, Simulation, Unobserved};
 
     use super::{SECRET, book_answer, path, scratch};
@@ -419,7 +419,7 @@ mod any_input {
             let scene = Scene::from_json(zsim::Lang::En, &scene_named(&name), std::path::Path::new("any.json")).unwrap();
             let mut simulation = Simulation::new(&scene);
             simulation.finish(&mut Unobserved);
-            let extras = Extras { vertex_labels: true, caption: vec![title.clone()], values: true };
+            let extras = Annotations { vertex_labels: true, caption: vec![title.clone()], values: true };
             let svg = svg_with(zsim::Lang::En, &scene, simulation.buffers(), 0, Shading::Frame, &title, &extras);
             let parsed = roxmltree::Document::parse(&svg);
             prop_assert!(parsed.is_ok(), "{:?}", parsed.err());

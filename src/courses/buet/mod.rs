@@ -119,9 +119,9 @@ impl Config {
 }
 
 /// A 4×4 matrix of `f64`, rows first.
-pub type Matrix = [[f64; 4]; 4];
+pub type Matrix4 = [[f64; 4]; 4];
 
-fn identity() -> Matrix {
+fn identity() -> Matrix4 {
     let mut m = [[0.0; 4]; 4];
     for (i, row) in m.iter_mut().enumerate() {
         row[i] = 1.0;
@@ -130,7 +130,7 @@ fn identity() -> Matrix {
 }
 
 /// `a · b`, each entry summed over k = 0 … 3 from 0.0.
-pub fn multiply(a: &Matrix, b: &Matrix) -> Matrix {
+pub fn multiply(a: &Matrix4, b: &Matrix4) -> Matrix4 {
     let mut c = [[0.0; 4]; 4];
     for i in 0..4 {
         for j in 0..4 {
@@ -145,7 +145,7 @@ pub fn multiply(a: &Matrix, b: &Matrix) -> Matrix {
 }
 
 /// `m · (x, y, z, 1)`, divided by the resulting w.
-pub fn transform(m: &Matrix, p: [f64; 3]) -> [f64; 3] {
+pub fn transform(m: &Matrix4, p: [f64; 3]) -> [f64; 3] {
     let v = [p[0], p[1], p[2], 1.0];
     let mut out = [0.0; 4];
     for (i, row) in m.iter().enumerate() {
@@ -158,7 +158,7 @@ pub fn transform(m: &Matrix, p: [f64; 3]) -> [f64; 3] {
     [out[0] / out[3], out[1] / out[3], out[2] / out[3]]
 }
 
-fn translation(t: [f64; 3]) -> Matrix {
+fn translation(t: [f64; 3]) -> Matrix4 {
     let mut m = identity();
     m[0][3] = t[0];
     m[1][3] = t[1];
@@ -166,7 +166,7 @@ fn translation(t: [f64; 3]) -> Matrix {
     m
 }
 
-fn scaling(s: [f64; 3]) -> Matrix {
+fn scaling(s: [f64; 3]) -> Matrix4 {
     let mut m = identity();
     m[0][0] = s[0];
     m[1][1] = s[1];
@@ -196,7 +196,7 @@ fn rodrigues(x: [f64; 3], a: [f64; 3], theta: f64) -> [f64; 3] {
 }
 
 /// The rotation by `angle` degrees about `axis`: columns are the rotated unit vectors.
-fn rotation(angle: f64, axis: [f64; 3]) -> Matrix {
+fn rotation(angle: f64, axis: [f64; 3]) -> Matrix4 {
     let a = normalize(axis);
     let theta = angle * std::f64::consts::PI / 180.0;
     let columns = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]].map(|e| rodrigues(e, a, theta));
@@ -295,7 +295,7 @@ impl CaseScene {
             return Err(case_error(reader.last_line(), words!(lang, "buet-perspective")));
         }
         let mut model = identity();
-        let mut stack: Vec<Matrix> = Vec::new();
+        let mut stack: Vec<Matrix4> = Vec::new();
         let mut stage1 = Vec::new();
         while let Some((line, command)) = reader.next_line() {
             match command {
@@ -333,7 +333,7 @@ impl CaseScene {
 
     /// The view matrix `V = R·T`: `l = look − eye`, `r = l × up`, `u = r × l`,
     /// all normalized; R has rows r, u, −l; T moves the eye to the origin.
-    pub fn view(&self) -> Matrix {
+    pub fn view(&self) -> Matrix4 {
         let l = normalize([0, 1, 2].map(|i| self.look[i] - self.eye[i]));
         let r = normalize(cross(l, self.up));
         let u = normalize(cross(r, l));
@@ -345,7 +345,7 @@ impl CaseScene {
     }
 
     /// The projection matrix: `t = near·tan(fovY/2)`, `r = near·tan(fovY·aspect/2)`.
-    pub fn projection(&self) -> Matrix {
+    pub fn projection(&self) -> Matrix4 {
         let [fov_y, aspect, near, far] = self.perspective;
         let fov_x = fov_y * aspect;
         let t = near * (fov_y / 2.0 * std::f64::consts::PI / 180.0).tan();

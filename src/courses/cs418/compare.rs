@@ -31,7 +31,7 @@ impl Primitive {
 
 /// Where a triangle's span on one sample row begins and ends, `[left, right)`.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Span {
+pub struct SampleSpan {
     /// The left end, as computed.
     pub left: String,
     /// The right end, as computed.
@@ -42,7 +42,7 @@ pub struct Span {
     pub(super) right_value: f64,
 }
 
-impl Span {
+impl SampleSpan {
     fn covers(&self, x: i64) -> bool {
         self.left_value.ceil() <= x as f64 && (x as f64) < self.right_value
     }
@@ -63,9 +63,9 @@ pub struct Comparison {
     /// in `primitives` of the last one written.
     pub(super) owners: Vec<u32>,
     /// Each triangle's spans by (primitive, sample row).
-    pub(super) spans: BTreeMap<(u32, i64), Vec<Span>>,
-    /// What was drawn, as polygons in zsim's coordinates (see `Shape`).
-    pub shapes: Vec<Shape>,
+    pub(super) spans: BTreeMap<(u32, i64), Vec<SampleSpan>>,
+    /// What was drawn, as polygons in zsim's coordinates (see `SampleGrid`).
+    pub shapes: Vec<SampleGrid>,
 }
 
 /// A triangle (after clipping and culling) or a point's square as drawn, in
@@ -73,7 +73,7 @@ pub struct Comparison {
 /// that the course's sample at integer (x, y) is zsim's centre of column x,
 /// row height − 1 − y, and the picture is not flipped; depth z/w.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Shape {
+pub struct SampleGrid {
     /// The primitive (1-based index into `primitives`).
     pub primitive: u32,
     /// Its corners as text (exact fractions in exact arithmetic).
@@ -93,7 +93,7 @@ impl Comparison {
 pub enum Reason {
     /// A triangle covers the sample in one arithmetic and not the other,
     /// because its span on the sample's row ends on the other side of it.
-    Span {
+    SampleSpan {
         /// The triangle.
         primitive: Primitive,
         /// Its span on the row in the course's floats (`None`: no span).
@@ -148,7 +148,7 @@ pub fn differences(course: &Comparison, exact: &Comparison) -> Vec<CellDifferenc
         let disputed = [a, b].into_iter().filter(|&p| p != 0).find(|&p| covers(course, p) != covers(exact, p));
         let primitive = |run: &Comparison, p: u32| (p != 0).then(|| run.primitives[p as usize - 1].clone());
         let reason = match disputed {
-            Some(p) => Reason::Span {
+            Some(p) => Reason::SampleSpan {
                 primitive: primitive(course, p).expect("nonzero"),
                 course: span(course, p),
                 exact: span(exact, p),

@@ -15,10 +15,10 @@
 
 use std::fmt::Write as _;
 
-use super::{Case, CaseError, raster};
+use super::{CaseError, RastFile, raster};
 
 /// The scene JSON for a case.
-pub fn scene_json(lang: crate::words::Lang, case: &Case) -> Result<String, CaseError> {
+pub fn scene_json(lang: crate::words::Lang, case: &RastFile) -> Result<String, CaseError> {
     let (primitives, shapes) = raster::shapes(lang, case)?;
     let level = case.features.fsaa.max(1);
     let count = primitives.len() as u64;

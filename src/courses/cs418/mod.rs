@@ -51,7 +51,7 @@ mod raster;
 pub mod report;
 mod scalar;
 
-pub use compare::{CellDifference, Comparison, Primitive, Reason, Shape, differences};
+pub use compare::{CellDifference, Comparison, Primitive, Reason, SampleGrid, differences};
 pub use image::{Image, ImageDifference, compare_images};
 pub use raster::{Arithmetic, render};
 
@@ -64,7 +64,7 @@ fn error(line: usize, message: impl Into<String>) -> CaseError {
 /// A number as the file writes it: the `f64` the course reads from it, and
 /// its exact value.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Number {
+pub struct RastNumber {
     /// The nearest `f64`, as the course's programs parse it.
     pub value: f64,
     /// The decimal as written, exactly.
@@ -73,33 +73,33 @@ pub struct Number {
 
 /// One command of the file.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Command {
+pub enum FileCommand {
     /// `position SIZE n…`: vertex positions, SIZE (2–4) numbers each; z
     /// defaults to 0 and w to 1.
     Position {
         /// Numbers per vertex.
         size: usize,
         /// All the numbers.
-        numbers: Vec<Number>,
+        numbers: Vec<RastNumber>,
     },
     /// `color SIZE n…`: vertex colours, 3 (alpha 1) or 4 numbers each.
     Color {
         /// Numbers per vertex.
         size: usize,
         /// All the numbers.
-        numbers: Vec<Number>,
+        numbers: Vec<RastNumber>,
     },
     /// `elements i…`: indices for `drawElementsTriangles`.
     Elements(Vec<usize>),
     /// `pointsize 1 n…`: a size in pixels per vertex, for points.
-    PointSize(Vec<Number>),
+    PointSize(Vec<RastNumber>),
     /// `uniformMatrix` and 16 numbers in column-major order: every position
     /// is multiplied by it from then on.
-    Matrix(Vec<Number>),
-    /// `texture FILE`: binds `Case::textures[i]` for the draws that follow.
+    Matrix(Vec<RastNumber>),
+    /// `texture FILE`: binds `RastFile::textures[i]` for the draws that follow.
     Texture(usize),
     /// `texcoord 2 s t …`: texture coordinates per vertex.
-    TexCoord(Vec<Number>),
+    TexCoord(Vec<RastNumber>),
     /// `drawArraysTriangles FIRST COUNT`.
     DrawArrays {
         /// The first vertex.
@@ -155,7 +155,7 @@ pub struct Texture {
 
 /// A whole CS 418 input file.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Case {
+pub struct RastFile {
     /// Image width.
     pub width: u32,
     /// Image height.
@@ -165,7 +165,7 @@ pub struct Case {
     /// The switches.
     pub features: Features,
     /// The commands in order, each with its line.
-    pub commands: Vec<(usize, Command)>,
+    pub commands: Vec<(usize, FileCommand)>,
     /// The textures the case names, in the order first named.
     pub textures: Vec<Texture>,
 }
@@ -181,7 +181,7 @@ pub const MAX_SIDE: u32 = 8192;
 /// this takes).
 pub const MAX_SAMPLES: u64 = 1 << 23;
 
-impl Case {
+impl RastFile {
     /// Reads a CS 418 file. `load_texture` reads a texture the case names
     /// (the caller knows where the case's folder is; the same image for every
     /// name of one file), or says why it cannot.
@@ -189,8 +189,8 @@ impl Case {
         lang: Lang,
         text: &str,
         load_texture: &dyn Fn(&str) -> Result<std::sync::Arc<Image>, String>,
-    ) -> Result<Case, CaseError> {
-        let mut case: Option<Case> = None;
+    ) -> Result<RastFile, CaseError> {
+        let mut case: Option<RastFile> = None;
         for (index, raw) in text.lines().enumerate() {
             let line = index + 1;
             let words: Vec<&str> = raw.split_whitespace().collect();
@@ -265,10 +265,10 @@ impl Case {
                     case.commands.push((
                         line,
                         match keyword {
-                            "position" => Command::Position { size, numbers },
-                            "color" => Command::Color { size, numbers },
-                            "texcoord" => Command::TexCoord(numbers),
-                            _ => Command::PointSize(numbers),
+                            "position" => FileCommand::Position { size, numbers },
+                            "color" => FileCommand::Color { size, numbers },
+                            "texcoord" => FileCommand::TexCoord(numbers),
+                            _ => FileCommand::PointSize(numbers),
                         },
                     ));
                 }
@@ -281,23 +281,23 @@ impl Case {
                             })
                         })
                         .collect::<Result<Vec<_>, _>>()?;
-                    case.commands.push((line, Command::Elements(indices)));
+                    case.commands.push((line, FileCommand::Elements(indices)));
                 }
                 "uniformMatrix" => {
                     if args.len() != 16 {
                         return Err(error(line, words!(lang, "cs418-matrix", found = args.len().to_string())));
                     }
                     let numbers = args.iter().map(|w| number(lang, line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
-                    case.commands.push((line, Command::Matrix(numbers)));
+                    case.commands.push((line, FileCommand::Matrix(numbers)));
                 }
                 "drawArraysTriangles" | "drawElementsTriangles" | "drawArraysPoints" => {
                     let [a, b] = integers::<2>(lang, line, keyword, args)?;
                     let command = match keyword {
-                        "drawArraysTriangles" => Command::DrawArrays { first: a, count: b },
-                        "drawElementsTriangles" => Command::DrawElements { count: a, offset: b },
-                        _ => Command::DrawPoints { first: a, count: b },
+                        "drawArraysTriangles" => FileCommand::DrawArrays { first: a, count: b },
+                        "drawElementsTriangles" => FileCommand::DrawElements { count: a, offset: b },
+                        _ => FileCommand::DrawPoints { first: a, count: b },
                     };
-                    if let Command::DrawArrays { count, .. } | Command::DrawElements { count, .. } = command
+                    if let FileCommand::DrawArrays { count, .. } | FileCommand::DrawElements { count, .. } = command
                         && count % 3 != 0
                     {
                         return Err(error(
@@ -327,7 +327,7 @@ impl Case {
                             case.textures.len() - 1
                         }
                     };
-                    case.commands.push((line, Command::Texture(index)));
+                    case.commands.push((line, FileCommand::Texture(index)));
                 }
                 _ => {
                     return Err(error(
@@ -352,7 +352,7 @@ fn samples_within_limit(lang: Lang, line: usize, width: u32, height: u32, level:
     Err(error(line, words!(lang, "cs418-too-many-samples", level = level, samples = samples, max = max)))
 }
 
-fn png_line(lang: Lang, line: usize, args: &[&str]) -> Result<Case, CaseError> {
+fn png_line(lang: Lang, line: usize, args: &[&str]) -> Result<RastFile, CaseError> {
     let [width, height, file] = args else {
         return Err(error(line, words!(lang, "cs418-png-words", found = args.len().to_string())));
     };
@@ -375,7 +375,7 @@ fn png_line(lang: Lang, line: usize, args: &[&str]) -> Result<Case, CaseError> {
     if file.contains(['/', '\\']) || *file == ".." || *file == "." {
         return Err(error(line, words!(lang, "cs418-png-file", file = crate::words::token(lang, file))));
     }
-    Ok(Case {
+    Ok(RastFile {
         width,
         height,
         output: (*file).to_string(),
@@ -393,10 +393,10 @@ fn list(lang: Lang, values: &[usize]) -> String {
     }
 }
 
-fn number(lang: Lang, line: usize, keyword: &str, word: &str) -> Result<Number, CaseError> {
+fn number(lang: Lang, line: usize, keyword: &str, word: &str) -> Result<RastNumber, CaseError> {
     let finite = word.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.' | b'e' | b'E'));
     match (word.parse::<f64>(), crate::numbers::parse_number(word)) {
-        (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(Number { value, exact }),
+        (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(RastNumber { value, exact }),
         (Ok(value), Err(problem)) if finite && value.is_finite() => Err(error(
             line,
             words!(
@@ -448,7 +448,7 @@ fn integers<const N: usize>(lang: Lang, line: usize, keyword: &str, args: &[&str
     Ok(out)
 }
 
-fn sized(lang: Lang, line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<Number>), CaseError> {
+fn sized(lang: Lang, line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<RastNumber>), CaseError> {
     let Some((size, rest)) = args.split_first() else {
         return Err(error(line, words!(lang, "cs418-sized", keyword = crate::words::token(lang, keyword))));
     };
@@ -488,8 +488,8 @@ fn sized(lang: Lang, line: usize, keyword: &str, args: &[&str]) -> Result<(usize
 mod tests {
     use super::*;
 
-    fn parse(text: &str) -> Result<Case, CaseError> {
-        Case::parse(Lang::En, text, &|_| Err("no such file beside the case".into()))
+    fn parse(text: &str) -> Result<RastFile, CaseError> {
+        RastFile::parse(Lang::En, text, &|_| Err("no such file beside the case".into()))
     }
 
     #[test]
@@ -498,7 +498,7 @@ mod tests {
         assert_eq!((case.width, case.height, case.output.as_str()), (20, 30, "gray.png"));
         assert!(case.features.depth && !case.features.srgb);
         assert_eq!(case.commands.len(), 2);
-        assert_eq!(case.commands[1], (5, Command::DrawArrays { first: 0, count: 3 }));
+        assert_eq!(case.commands[1], (5, FileCommand::DrawArrays { first: 0, count: 3 }));
     }
 
     #[test]

@@ -7,10 +7,10 @@ use std::collections::BTreeMap;
 use num_rational::BigRational;
 
 use super::clip::{Dda, clip, clockwise};
-use super::compare::{Comparison, Primitive, Shape, Span};
+use super::compare::{Comparison, Primitive, SampleGrid, SampleSpan};
 use super::image::{Image, byte, linear_texels, to_srgb};
 use super::scalar::{Scalar, Vertex};
-use super::{Case, CaseError, Command, error};
+use super::{CaseError, FileCommand, RastFile, error};
 
 /// The arithmetic the course's algorithm runs in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -61,7 +61,7 @@ enum Attributes<S> {
 }
 
 /// Runs a case in an arithmetic.
-pub fn render(lang: Lang, case: &Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
+pub fn render(lang: Lang, case: &RastFile, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
     match arithmetic {
         Arithmetic::DdaF64 => Pipeline::<f64>::run(lang, case, arithmetic),
         Arithmetic::Exact => Pipeline::<BigRational>::run(lang, case, arithmetic),
@@ -71,13 +71,13 @@ pub fn render(lang: Lang, case: &Case, arithmetic: Arithmetic) -> Result<Compari
 /// What a case draws, after clipping and culling, in exact arithmetic,
 /// without sampling it: its primitives and their shapes (for `zsim cs418
 /// import`, which leaves the sampling to zsim's rasterizer).
-pub fn shapes(lang: Lang, case: &Case) -> Result<(Vec<Primitive>, Vec<Shape>), CaseError> {
+pub fn shapes(lang: Lang, case: &RastFile) -> Result<(Vec<Primitive>, Vec<SampleGrid>), CaseError> {
     let pipeline = Pipeline::<BigRational>::new(case, false).draw(lang)?;
     Ok((pipeline.primitives, pipeline.shapes))
 }
 
 struct Pipeline<'a, S> {
-    case: &'a Case,
+    case: &'a RastFile,
     /// Whether triangles and points are sampled, or only clipped, culled and
     /// kept as shapes.
     sample: bool,
@@ -88,8 +88,8 @@ struct Pipeline<'a, S> {
     depth: Vec<S>,
     owners: Vec<u32>,
     primitives: Vec<Primitive>,
-    spans: BTreeMap<(u32, i64), Vec<Span>>,
-    shapes: Vec<Shape>,
+    spans: BTreeMap<(u32, i64), Vec<SampleSpan>>,
+    shapes: Vec<SampleGrid>,
     positions: Vec<[S; 4]>,
     colours: Vec<[S; 4]>,
     texcoords: Vec<[S; 2]>,
@@ -103,7 +103,7 @@ struct Pipeline<'a, S> {
 }
 
 impl<'a, S: Scalar> Pipeline<'a, S> {
-    fn run(lang: Lang, case: &'a Case, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
+    fn run(lang: Lang, case: &'a RastFile, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
         let pipeline = Pipeline::<S>::new(case, true).draw(lang)?;
         Ok(Comparison {
             image: pipeline.resolve(),
@@ -117,7 +117,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     }
 
     /// A pipeline for `case`, its buffers allocated when it samples.
-    fn new(case: &'a Case, sample: bool) -> Self {
+    fn new(case: &'a RastFile, sample: bool) -> Self {
         let level = case.features.fsaa.max(1);
         let (width, height) = ((case.width * level) as usize, (case.height * level) as usize);
         let samples = if sample { width * height } else { 0 };
@@ -152,9 +152,9 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         Ok(self)
     }
 
-    fn command(&mut self, lang: Lang, line: usize, command: &Command) -> Result<(), CaseError> {
+    fn command(&mut self, lang: Lang, line: usize, command: &FileCommand) -> Result<(), CaseError> {
         match command {
-            Command::Position { size, numbers } => {
+            FileCommand::Position { size, numbers } => {
                 self.positions = numbers
                     .chunks(*size)
                     .map(|c| {
@@ -163,7 +163,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                     })
                     .collect();
             }
-            Command::Color { size, numbers } => {
+            FileCommand::Color { size, numbers } => {
                 self.colours = numbers
                     .chunks(*size)
                     .map(|c| {
@@ -172,14 +172,14 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                     })
                     .collect();
             }
-            Command::TexCoord(numbers) => {
+            FileCommand::TexCoord(numbers) => {
                 self.texcoords = numbers.chunks(2).map(|c| [S::number(&c[0]), S::number(&c[1])]).collect();
             }
-            Command::Texture(index) => self.texture = Some(*index),
-            Command::Elements(indices) => self.elements.clone_from(indices),
-            Command::PointSize(numbers) => self.sizes = numbers.iter().map(S::number).collect(),
-            Command::Matrix(numbers) => self.matrix = Some(numbers.iter().map(S::number).collect()),
-            Command::DrawArrays { first, count } => {
+            FileCommand::Texture(index) => self.texture = Some(*index),
+            FileCommand::Elements(indices) => self.elements.clone_from(indices),
+            FileCommand::PointSize(numbers) => self.sizes = numbers.iter().map(S::number).collect(),
+            FileCommand::Matrix(numbers) => self.matrix = Some(numbers.iter().map(S::number).collect()),
+            FileCommand::DrawArrays { first, count } => {
                 // Every index must name a vertex: checked before any is collected, so that a
                 // huge count (or one that wraps past 2^64) is refused, not allocated.
                 let positions = self.positions.len();
@@ -194,7 +194,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 let indices: Vec<usize> = (*first..first + count).collect();
                 self.triangles(lang, line, &indices)?;
             }
-            Command::DrawElements { count, offset } => {
+            FileCommand::DrawElements { count, offset } => {
                 let range = offset.checked_add(*count).map(|end| *offset..end);
                 let Some(indices) = range.and_then(|range| self.elements.get(range)).map(<[usize]>::to_vec) else {
                     return Err(error(
@@ -211,7 +211,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 };
                 self.triangles(lang, line, &indices)?;
             }
-            Command::DrawPoints { first, count } => {
+            FileCommand::DrawPoints { first, count } => {
                 for index in *first..first.saturating_add(*count) {
                     let size = self.sizes.get(index).cloned().ok_or_else(|| {
                         error(
@@ -388,7 +388,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     fn row(&mut self, a: &[S], b: &[S], primitive: u32) {
         let row = a[1].to_f64().round() as i64;
         let (left, right) = if a[0] <= b[0] { (a, b) } else { (b, a) };
-        self.spans.entry((primitive, row)).or_default().push(Span {
+        self.spans.entry((primitive, row)).or_default().push(SampleSpan {
             left: left[0].text(),
             right: right[0].text(),
             left_value: left[0].to_f64(),
@@ -456,13 +456,13 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         }
     }
 
-    /// Keeps a drawn shape in zsim's coordinates (see [`Shape`]).
+    /// Keeps a drawn shape in zsim's coordinates (see [`SampleGrid`]).
     fn record_shape(&mut self, primitive: u32, corners: Vec<[S; 3]>) {
         let half = S::int(1).div(&S::int(2));
         let height = S::int(self.height as i64);
         let vertices =
             corners.iter().map(|[x, y, z]| [x.add(&half).text(), height.sub(y).sub(&half).text(), z.text()]).collect();
-        self.shapes.push(Shape { primitive, vertices });
+        self.shapes.push(SampleGrid { primitive, vertices });
     }
 
     /// One fragment: bounds, the depth test, the texture, then "over" onto
@@ -588,11 +588,11 @@ mod tests {
 
     #[test]
     fn numbers_keep_their_exact_value() {
-        let case = super::super::Case::parse(Lang::En, "png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| {
+        let case = super::super::RastFile::parse(Lang::En, "png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| {
             Err("no textures here".into())
         })
         .unwrap();
-        let super::super::Command::PointSize(numbers) = &case.commands[0].1 else { panic!("pointsize") };
+        let super::super::FileCommand::PointSize(numbers) = &case.commands[0].1 else { panic!("pointsize") };
         let exact: Vec<BigRational> = numbers.iter().map(BigRational::number).collect();
         let q = |n: i64, d: i64| BigRational::new(BigInt::from(n), BigInt::from(d));
         assert_eq!(exact, vec![q(3467, 5000), q(-1, 2), q(1, 1000), q(4, 1)]);
@@ -623,7 +623,7 @@ mod tests {
     }
 
     fn textured(text: &str) -> Image {
-        let case = super::super::Case::parse(Lang::En, text, &|_| Ok(std::sync::Arc::new(two_by_two()))).unwrap();
+        let case = super::super::RastFile::parse(Lang::En, text, &|_| Ok(std::sync::Arc::new(two_by_two()))).unwrap();
         render(Lang::En, &case, Arithmetic::DdaF64).unwrap().image
     }
 
@@ -661,7 +661,8 @@ mod tests {
                 s0 + 1,
                 s0 + 1
             );
-            let case = super::super::Case::parse(Lang::En, &text, &|_| Ok(std::sync::Arc::new(greys.clone()))).unwrap();
+            let case =
+                super::super::RastFile::parse(Lang::En, &text, &|_| Ok(std::sync::Arc::new(greys.clone()))).unwrap();
             let image = render(Lang::En, &case, Arithmetic::DdaF64).unwrap().image;
             for x in 0..8u32 {
                 let k = ((x + shift) % 8) as u8 * 30;
@@ -703,7 +704,7 @@ mod tests {
     /// divided by 0: NaN alpha, drawn as transparent black), and agree.
     #[test]
     fn a_sample_at_infinity_gets_the_floats_colour_in_both_arithmetics() {
-        let case = super::super::Case::parse(Lang::En,
+        let case = super::super::RastFile::parse(Lang::En,
             "png 4 4 o.png\nhyp\nposition 4 2 1.0 0 -2 0 -1.0 0 2 2 -0.5 0 -1\ncolor 3 1 0 0 0 1 0 0 0 1\ndrawArraysTriangles 0 3",
             &|_| Err("no textures here".into()),
         )
@@ -720,7 +721,7 @@ mod tests {
 
     #[test]
     fn a_textured_triangle_needs_texture_coordinates() {
-        let case = super::super::Case::parse(
+        let case = super::super::RastFile::parse(
             Lang::En,
             "png 2 2 a.png\ntexture t.png\nposition 2 -1 -1 1 -1 -1 1\ntexcoord 2 0 0 1 0\ndrawArraysTriangles 0 3",
             &|_| Ok(std::sync::Arc::new(two_by_two())),

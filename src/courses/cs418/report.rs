@@ -6,7 +6,7 @@ use std::cell::RefCell;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use super::{Case, Comparison, Image, Primitive, Reason, compare_images, differences};
+use super::{Comparison, Image, Primitive, RastFile, Reason, compare_images, differences};
 use crate::door::{Folder, Identity};
 use crate::error::Error;
 use crate::words::Lang;
@@ -33,7 +33,7 @@ pub fn located(path: &Path, error: super::CaseError) -> Error {
 
 /// Reads the case at `path`, its textures from beside it where `textures`
 /// says so; errors name the file and the line.
-pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<Loaded, Error> {
+pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<LoadedCase, Error> {
     let text = crate::door::read_text(lang, path)?;
     let folder = Folder::beside(path)?;
     // Each file decoded once, and held once, however many names lead to it (`x.png`, `./x.png`).
@@ -55,15 +55,15 @@ pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<Loaded, Error
         read.borrow_mut().push((folder.path_of(name), identity, Arc::clone(&image)));
         Ok(image)
     };
-    let case = Case::parse(lang, &text, &texture).map_err(|e| located(path, e))?;
+    let case = RastFile::parse(lang, &text, &texture).map_err(|e| located(path, e))?;
     let textures = read.into_inner().into_iter().map(|(path, identity, _)| (path, identity)).collect();
-    Ok(Loaded { case, textures })
+    Ok(LoadedCase { case, textures })
 }
 
 /// A case read, with the texture files it read: a run writes onto none of them.
-pub struct Loaded {
+pub struct LoadedCase {
     /// The case.
-    pub case: Case,
+    pub case: RastFile,
     /// Each texture file read, once, by the name that first led to it.
     pub textures: Vec<(PathBuf, Identity)>,
 }
@@ -136,7 +136,7 @@ pub fn compare_text(
 }
 
 /// The case's features in use, after a comma: `, depth, sRGB, fsaa 4`.
-pub fn features_text(case: &Case) -> String {
+pub fn features_text(case: &RastFile) -> String {
     let f = case.features;
     let mut on: Vec<String> =
         [(f.depth, "depth"), (f.srgb, "sRGB"), (f.hyp, "hyp"), (f.cull, "cull"), (f.frustum, "frustum")]
@@ -171,7 +171,7 @@ pub fn disagreements_text(lang: Lang, course: &Comparison, exact: &Comparison) -
             words!(lang, "cs418-place-pixel", x = cell.x.to_string(), y = cell.y.to_string())
         };
         let why = match &cell.reason {
-            Reason::Span { primitive, course, exact, course_covers } => {
+            Reason::SampleSpan { primitive, course, exact, course_covers } => {
                 let span = |s: &Option<(String, String)>| match s {
                     Some((l, r)) => format!("[{l}, {r})"),
                     None => words!(lang, "cs418-no-span"),

@@ -3,7 +3,7 @@
 
 use std::fmt;
 
-use super::Number;
+use super::RastNumber;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -11,7 +11,7 @@ use num_traits::{ToPrimitive, Zero};
 
 /// A number type the pipeline runs on.
 pub(super) trait Scalar: Clone + PartialOrd + fmt::Debug {
-    fn number(n: &Number) -> Self;
+    fn number(n: &RastNumber) -> Self;
     fn int(v: i64) -> Self;
     fn add(&self, o: &Self) -> Self;
     fn sub(&self, o: &Self) -> Self;
@@ -33,7 +33,7 @@ pub(super) trait Scalar: Clone + PartialOrd + fmt::Debug {
 
 impl Scalar for f64 {
     const EXACT: bool = false;
-    fn number(n: &Number) -> f64 {
+    fn number(n: &RastNumber) -> f64 {
         n.value
     }
     fn int(v: i64) -> f64 {
@@ -67,7 +67,7 @@ impl Scalar for f64 {
 
 impl Scalar for BigRational {
     const EXACT: bool = true;
-    fn number(n: &Number) -> BigRational {
+    fn number(n: &RastNumber) -> BigRational {
         BigRational::new(BigInt::from(*n.exact.numer()), BigInt::from(*n.exact.denom()))
     }
     fn int(v: i64) -> BigRational {

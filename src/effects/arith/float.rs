@@ -30,7 +30,7 @@ pub(super) fn prepare<F: Float + Ring>(vertices: &[[Exact; 3]], value: u32) -> F
 /// (evaluated, or stepped by −a/c). Both the raster and `step --arith` use it.
 pub(super) struct FloatWalker<'p, F> {
     polygon: &'p FloatPolygon<F>,
-    edges: Vec<Edge<F>>,
+    edges: Vec<SteppedEdge<F>>,
     incremental: bool,
     half: F,
     pub(super) crossings: Vec<F>,
@@ -41,7 +41,7 @@ impl<'p, F: Float> FloatWalker<'p, F> {
         let half = F::from(0.5).unwrap_or_else(F::nan);
         let mut edges = Vec::new();
         if incremental {
-            Edge::fill(&mut edges, &polygon.points, half);
+            SteppedEdge::fill(&mut edges, &polygon.points, half);
         }
         FloatWalker { polygon, edges, incremental, half, crossings: Vec::new() }
     }
@@ -51,7 +51,7 @@ impl<'p, F: Float> FloatWalker<'p, F> {
         let FloatWalker { mut edges, incremental, half, crossings, .. } = self;
         edges.clear();
         if incremental {
-            Edge::fill(&mut edges, &polygon.points, half);
+            SteppedEdge::fill(&mut edges, &polygon.points, half);
         }
         FloatWalker { polygon, edges, incremental, half, crossings }
     }
@@ -218,7 +218,7 @@ pub(super) fn scanline_in<F: Float + Ring>(scene: &Scene, index: usize, row: u32
 }
 
 /// An edge for the incremental modes: x stepped by Δx per scanline (the Russian lecture notes).
-pub(super) struct Edge<F> {
+pub(super) struct SteppedEdge<F> {
     first_row: i64,
     last_row: i64,
     row: i64,
@@ -226,11 +226,11 @@ pub(super) struct Edge<F> {
     dx: F,
 }
 
-impl<F: Float> Edge<F> {
+impl<F: Float> SteppedEdge<F> {
     /// The non-horizontal edges with their rows (half-open rule), x at the
     /// first row on the raster (row ≥ 0, evaluated directly, as a rasterizer
     /// sets an edge up where it enters the screen), and Δx.
-    fn fill(edges: &mut Vec<Edge<F>>, points: &[[F; 3]], half: F) {
+    fn fill(edges: &mut Vec<SteppedEdge<F>>, points: &[[F; 3]], half: F) {
         for (i, v) in points.iter().enumerate() {
             let w = points[(i + 1) % points.len()];
             if v[1] == w[1] {
@@ -242,7 +242,7 @@ impl<F: Float> Edge<F> {
             let (Some(first_row), Some(last_row)) = (first.to_i64(), last.to_i64()) else { continue };
             let dx = (high[0] - low[0]) / (high[1] - low[1]);
             let x = low[0] + dx * (first + half - low[1]);
-            edges.push(Edge { first_row, last_row, row: first_row, x, dx });
+            edges.push(SteppedEdge { first_row, last_row, row: first_row, x, dx });
         }
     }
 

@@ -54,7 +54,7 @@ pub enum Shading {
 
 /// What a figure adds for a worksheet or an answer key.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
-pub struct Extras {
+pub struct Annotations {
     /// Label each outlined polygon's vertices with their coordinates `(x, y, z)`.
     pub vertex_labels: bool,
     /// Lines of text below the axes (what to fill in, say).
@@ -66,7 +66,7 @@ pub struct Extras {
 /// Draws the buffers after polygon `last` (0-based): polygons `0 ..= last`
 /// are outlined. The raster must be at most [`MAX_FIGURE_SIDE`] on a side.
 pub fn svg(lang: Lang, scene: &Scene, buffers: &Buffers, last: usize, shading: Shading, title: &str) -> String {
-    svg_with(lang, scene, buffers, last, shading, title, &Extras::default())
+    svg_with(lang, scene, buffers, last, shading, title, &Annotations::default())
 }
 
 /// Like [`svg`], with vertex labels and a caption.
@@ -77,7 +77,7 @@ pub fn svg_with(
     last: usize,
     shading: Shading,
     title: &str,
-    extras: &Extras,
+    extras: &Annotations,
 ) -> String {
     let title = &*drawn(title, MAX_DRAWN_TITLE);
     let (width, height) = (i128::from(scene.width), i128::from(scene.height));
@@ -733,7 +733,7 @@ mod tests {
     #[test]
     fn values_sit_above_the_dashed_scanlines() {
         let (scene, buffers) = rogers_drawn();
-        let extras = Extras { values: true, ..Extras::default() };
+        let extras = Annotations { values: true, ..Annotations::default() };
         let svg = svg_with(Lang::En, &scene, &buffers, 1, Shading::Frame, "t", &extras);
         let group = |id: &str| -> Vec<f64> {
             let start = svg.find(&format!("<g id=\"{id}\"")).unwrap();

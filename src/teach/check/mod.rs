@@ -323,15 +323,15 @@ pub fn check(
 /// What checking many answers to one scene after one polygon shares, drawn
 /// once (a class's feedback): the buffers after the polygon and the scene
 /// drawn under each wrong rule.
-pub struct Prepared {
+pub struct PreparedCheck {
     buffers: crate::simulate::buffer::Buffers,
     diagnoser: Option<crate::teach::check::diagnose::Diagnoser>,
 }
 
-impl Prepared {
+impl PreparedCheck {
     /// The buffers of `scene` after polygon `last` (0-based) and its wrong rules, drawn.
-    pub fn new(scene: &Scene, last: usize) -> Prepared {
-        Prepared {
+    pub fn new(scene: &Scene, last: usize) -> PreparedCheck {
+        PreparedCheck {
             buffers: drawn_through(scene, last),
             diagnoser: crate::teach::check::diagnose::Diagnoser::new(scene, last),
         }
@@ -345,7 +345,7 @@ fn drawn_through(scene: &Scene, last: usize) -> crate::simulate::buffer::Buffers
     simulation.buffers().clone()
 }
 
-/// [`check`] with what every answer shares drawn once ([`Prepared`], for the
+/// [`check`] with what every answer shares drawn once ([`PreparedCheck`], for the
 /// same scene and polygon) instead of drawn again for these answers.
 pub fn check_with(
     lang: Lang,
@@ -354,7 +354,7 @@ pub fn check_with(
     last: usize,
     answers: Vec<(Buffer, &Path, Answer)>,
     arith: Arith,
-    prepared: Option<&Prepared>,
+    prepared: Option<&PreparedCheck>,
 ) -> Result<CheckReport, Error> {
     arith::check_supported(scene, arith)?;
     let drawn;

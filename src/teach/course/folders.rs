@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use crate::door::Plan;
 use crate::error::Error;
 use crate::observe::explain::Buffer;
-use crate::observe::render::figure::{Extras, Shading, svg_with};
+use crate::observe::render::figure::{Annotations, Shading, svg_with};
 use crate::observe::render::picture::{Format, Paper};
 use crate::observe::render::report::matrix;
 use crate::observe::render::svg_text::escape;
@@ -111,7 +111,7 @@ pub fn worksheet(lang: Lang, manifest: &Manifest, variant: &Variant, scene: &Sce
         words!(lang, "class-worksheet-hand-in", files = files.join(", "), code = variant.code.as_str()),
     ];
     let blank = Simulation::new(scene);
-    let extras = Extras { vertex_labels: true, caption, values: false };
+    let extras = Annotations { vertex_labels: true, caption, values: false };
     svg_with(lang, scene, blank.buffers(), scene.polygons.len() - 1, Shading::Frame, &title, &extras)
 }
 

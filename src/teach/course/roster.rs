@@ -20,7 +20,7 @@ pub const MAX_IDENTITY_BYTES: usize = 200;
 
 /// Where a roster comes from, known by its header row.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Shape {
+pub enum RosterKind {
     /// Moodle's grade or participants export (`Email address`, `ID number`, `Username`).
     Moodle,
     /// Canvas's gradebook export (`Student`, `ID`, `SIS User ID`, `SIS Login ID`, `Section`).
@@ -33,40 +33,40 @@ pub enum Shape {
     Plain,
 }
 
-impl Shape {
+impl RosterKind {
     /// Its name, as the manifest records it.
     pub fn name(self) -> &'static str {
         match self {
-            Shape::Moodle => "moodle",
-            Shape::Canvas => "canvas",
-            Shape::Gradescope => "gradescope",
-            Shape::PrairieLearn => "prairielearn",
-            Shape::Plain => "plain",
+            RosterKind::Moodle => "moodle",
+            RosterKind::Canvas => "canvas",
+            RosterKind::Gradescope => "gradescope",
+            RosterKind::PrairieLearn => "prairielearn",
+            RosterKind::Plain => "plain",
         }
     }
 
     /// The columns that can name a student, the default first.
     pub fn identity_columns(self) -> &'static [&'static str] {
         match self {
-            Shape::Moodle => &["Email address", "ID number", "Username"],
-            Shape::Canvas => &["SIS Login ID", "SIS User ID", "ID"],
-            Shape::Gradescope => &["Email", "SID"],
-            Shape::PrairieLearn => &["UID", "UIN"],
-            Shape::Plain => &[],
+            RosterKind::Moodle => &["Email address", "ID number", "Username"],
+            RosterKind::Canvas => &["SIS Login ID", "SIS User ID", "ID"],
+            RosterKind::Gradescope => &["Email", "SID"],
+            RosterKind::PrairieLearn => &["UID", "UIN"],
+            RosterKind::Plain => &[],
         }
     }
 
     /// The shape a header row shows, if any.
-    fn of(headers: &[String]) -> Option<Shape> {
+    fn of(headers: &[String]) -> Option<RosterKind> {
         let has = |name: &str| headers.iter().any(|h| h.eq_ignore_ascii_case(name));
         if has("Student") && (has("SIS Login ID") || has("SIS User ID")) {
-            Some(Shape::Canvas)
+            Some(RosterKind::Canvas)
         } else if has("UID") {
-            Some(Shape::PrairieLearn)
+            Some(RosterKind::PrairieLearn)
         } else if has("SID") || (has("Email") && (has("Name") || has("First Name"))) {
-            Some(Shape::Gradescope)
+            Some(RosterKind::Gradescope)
         } else if has("Email address") || has("ID number") || has("Username") {
-            Some(Shape::Moodle)
+            Some(RosterKind::Moodle)
         } else {
             None
         }
@@ -91,7 +91,7 @@ pub struct Student {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Roster {
     /// Where it comes from.
-    pub shape: Shape,
+    pub shape: RosterKind,
     /// The header of the column that names the students (empty for a plain list).
     pub column: String,
     /// The students, in the roster's order.
@@ -217,7 +217,7 @@ pub fn parse(text: &str, identity: Option<&str>) -> Result<Roster, Unusable> {
         Some(record) => record.map_err(|e| unreadable(&e))?,
     };
     let headers: Vec<String> = header.iter().map(|h| h.trim().to_string()).collect();
-    let Some(shape) = Shape::of(&headers) else {
+    let Some(shape) = RosterKind::of(&headers) else {
         // A first line of one column is a plain list's first identity.
         if headers.len() == 1 && !text.lines().next().unwrap_or("").contains(',') {
             return plain(text, identity);
@@ -235,7 +235,7 @@ pub fn parse(text: &str, identity: Option<&str>) -> Result<Roster, Unusable> {
     let name_of = |record: &csv::StringRecord| -> String {
         let cell = |name: &str| position(name).and_then(|i| record.get(i)).map(str::trim).unwrap_or("");
         match shape {
-            Shape::Canvas => cell("Student").to_string(),
+            RosterKind::Canvas => cell("Student").to_string(),
             _ if !cell("Name").is_empty() => cell("Name").to_string(),
             _ => {
                 let last = if cell("Last name").is_empty() { cell("Surname") } else { cell("Last name") };
@@ -253,7 +253,7 @@ pub fn parse(text: &str, identity: Option<&str>) -> Result<Roster, Unusable> {
         }
         // Canvas's second row gives each assignment's points, not a student.
         let first = record.get(0).unwrap_or("").trim();
-        if shape == Shape::Canvas && (first == "Points Possible" || first == "Student, Test") {
+        if shape == RosterKind::Canvas && (first == "Points Possible" || first == "Student, Test") {
             continue;
         }
         let id = record.get(column).unwrap_or("").trim().to_string();
@@ -290,7 +290,7 @@ fn plain(text: &str, identity: Option<&str>) -> Result<Roster, Unusable> {
     if students.is_empty() {
         return Err(Unusable::Empty);
     }
-    Ok(Roster { shape: Shape::Plain, column: String::new(), students })
+    Ok(Roster { shape: RosterKind::Plain, column: String::new(), students })
 }
 
 /// Adds a student after checking their identity: not empty, not on the
@@ -353,7 +353,7 @@ mod tests {
             \"Lima, Ana\",101,A1,ana,Sec 1,\r\n\
             \"Østby, Bjørn\",102,B2,bjorn,Sec 1,\r\n";
         let roster = parse(text, None).unwrap();
-        assert_eq!((roster.shape, roster.column.as_str()), (Shape::Canvas, "SIS Login ID"));
+        assert_eq!((roster.shape, roster.column.as_str()), (RosterKind::Canvas, "SIS Login ID"));
         assert_eq!(ids(&roster), ["ana", "bjorn"]);
         assert_eq!(roster.students[1].name, "Østby, Bjørn");
         assert_eq!(roster.students[0].aliases, ["A1", "101"]);
@@ -367,16 +367,16 @@ mod tests {
         let roster = parse(moodle, None).unwrap();
         assert_eq!(
             (roster.shape, ids(&roster), roster.students[0].name.as_str()),
-            (Shape::Moodle, vec!["ana@uni.edu", "bo@uni.edu"], "Ana Lima")
+            (RosterKind::Moodle, vec!["ana@uni.edu", "bo@uni.edu"], "Ana Lima")
         );
         assert_eq!(ids(&parse(moodle, Some("ID number")).unwrap()), ["1001", "1002"]);
         let gradescope = "Name,Email,SID\nAna Lima,ana@uni.edu,s1\n";
-        assert_eq!(parse(gradescope, None).unwrap().shape, Shape::Gradescope);
+        assert_eq!(parse(gradescope, None).unwrap().shape, RosterKind::Gradescope);
         let prairielearn = "UID,UIN,Name,Role\nana@uni.edu,1001,Ana Lima,Student\n";
         assert_eq!(ids(&parse(prairielearn, None).unwrap()), ["ana@uni.edu"]);
         let plain = "ana@uni.edu\r\n\r\nbo@uni.edu\r\n";
         let roster = parse(plain, None).unwrap();
-        assert_eq!((roster.shape, ids(&roster)), (Shape::Plain, vec!["ana@uni.edu", "bo@uni.edu"]));
+        assert_eq!((roster.shape, ids(&roster)), (RosterKind::Plain, vec!["ana@uni.edu", "bo@uni.edu"]));
     }
 
     #[test]

@@ -6,7 +6,7 @@
 use std::path::Path;
 
 use crate::error::Error;
-use crate::observe::render::figure::{Extras, Shading, svg_with};
+use crate::observe::render::figure::{Annotations, Shading, svg_with};
 use crate::observe::render::picture::{Format, Paper};
 use crate::observe::render::report::matrix;
 use crate::simulate::events::Unobserved;
@@ -60,11 +60,11 @@ pub fn files(
     let caption =
         vec![words!(lang, "exercise-task-draw", max = scene.depth_max()), words!(lang, "exercise-task-write")];
     let blank = Simulation::new(scene);
-    let extras = Extras { vertex_labels: true, caption, values: false };
+    let extras = Annotations { vertex_labels: true, caption, values: false };
     let worksheet = svg_with(lang, scene, blank.buffers(), last, Shading::Frame, &title, &extras);
     files.extend(figure_files(lang, "worksheet", &worksheet, formats, dir)?);
     let title = words!(lang, "exercise-solution-title", seed = &seed);
-    let extras = Extras { vertex_labels: true, caption: Vec::new(), values: true };
+    let extras = Annotations { vertex_labels: true, caption: Vec::new(), values: true };
     let solution = svg_with(lang, scene, simulation.buffers(), last, Shading::Frame, &title, &extras);
     files.extend(figure_files(lang, "solution", &solution, formats, dir)?);
     let notes = notes(lang, exercise, spec, dir);

@@ -18,7 +18,7 @@ use crate::words::Lang;
 
 /// Which column names the student in the import.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Identity {
+pub enum IdentityColumn {
     /// Moodle: "Email address" (the default for Moodle).
     Email,
     /// Moodle: "ID number".
@@ -33,40 +33,40 @@ pub enum Identity {
     SisLoginId,
 }
 
-impl Identity {
-    /// Every identity, in the order of [`Identity::NAMES`].
-    pub const ALL: [Identity; 6] = [
-        Identity::Email,
-        Identity::Idnumber,
-        Identity::Username,
-        Identity::Id,
-        Identity::SisUserId,
-        Identity::SisLoginId,
+impl IdentityColumn {
+    /// Every identity, in the order of [`IdentityColumn::NAMES`].
+    pub const ALL: [IdentityColumn; 6] = [
+        IdentityColumn::Email,
+        IdentityColumn::Idnumber,
+        IdentityColumn::Username,
+        IdentityColumn::Id,
+        IdentityColumn::SisUserId,
+        IdentityColumn::SisLoginId,
     ];
 
     /// The names a user chooses them by.
     pub const NAMES: [&'static str; 6] = ["email", "idnumber", "username", "id", "sis-user-id", "sis-login-id"];
 
-    /// The identity named `name` (one of [`Identity::NAMES`]).
-    pub fn parse(name: &str) -> Option<Identity> {
-        Identity::NAMES.iter().position(|n| *n == name).map(|i| Identity::ALL[i])
+    /// The identity named `name` (one of [`IdentityColumn::NAMES`]).
+    pub fn parse(name: &str) -> Option<IdentityColumn> {
+        IdentityColumn::NAMES.iter().position(|n| *n == name).map(|i| IdentityColumn::ALL[i])
     }
 
     /// The column's header as the platform writes it in its own exports.
     pub fn header(self) -> &'static str {
         match self {
-            Identity::Email => "Email address",
-            Identity::Idnumber => "ID number",
-            Identity::Username => "Username",
-            Identity::Id => "ID",
-            Identity::SisUserId => "SIS User ID",
-            Identity::SisLoginId => "SIS Login ID",
+            IdentityColumn::Email => "Email address",
+            IdentityColumn::Idnumber => "ID number",
+            IdentityColumn::Username => "Username",
+            IdentityColumn::Id => "ID",
+            IdentityColumn::SisUserId => "SIS User ID",
+            IdentityColumn::SisLoginId => "SIS Login ID",
         }
     }
 
     /// Whether Moodle imports by this column (else Canvas does).
     pub fn is_moodle(self) -> bool {
-        matches!(self, Identity::Email | Identity::Idnumber | Identity::Username)
+        matches!(self, IdentityColumn::Email | IdentityColumn::Idnumber | IdentityColumn::Username)
     }
 }
 
@@ -97,7 +97,7 @@ pub fn indistinct(rows: &[&Grade]) -> Vec<(String, String)> {
 }
 
 /// Moodle's gradebook import: the identity column, then the grade item.
-pub fn moodle(rows: &[&Grade], identity: Identity, item: &str, points: u32) -> String {
+pub fn moodle(rows: &[&Grade], identity: IdentityColumn, item: &str, points: u32) -> String {
     let mut text = format!("{},{}\n", identity.header(), csv_field(item));
     for grade in rows {
         text.push_str(&format!("{},{}\n", csv_field(&grade.student), points_of(grade, points)));
@@ -108,7 +108,7 @@ pub fn moodle(rows: &[&Grade], identity: Identity, item: &str, points: u32) -> S
 /// Canvas's gradebook import: its five identity columns, the assignment,
 /// the `Points Possible` row; the student's name goes in `Student` and in
 /// the identity column chosen.
-pub fn canvas(rows: &[&Grade], identity: Identity, item: &str, points: u32) -> String {
+pub fn canvas(rows: &[&Grade], identity: IdentityColumn, item: &str, points: u32) -> String {
     const COLUMNS: [&str; 5] = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"];
     let mut text = format!("{},{}\n", COLUMNS.join(","), csv_field(item));
     text.push_str(&format!("Points Possible,,,,,{points}\n"));

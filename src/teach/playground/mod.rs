@@ -29,17 +29,17 @@ use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::answer_from_text;
 pub use crate::teach::page_limits::{MAX_PAGE_SCENE_BYTES, MAX_PRINTED_CELLS, MAX_SHOWN_CELLS, MAX_SHOWN_POLYGONS};
-use crate::teach::page_limits::{TooLarge, check_reach, check_text};
+use crate::teach::page_limits::{PageLimit, check_reach, check_text};
 use crate::teach::step::lesson::{Command, Lesson, Said};
-use crate::teach::step::page::{Buffers, buffer_data};
+use crate::teach::step::page::{BufferForm, buffer_data};
 use crate::teach::step::{Moved, QuizMode};
 use crate::words::Lang;
 
 mod shown;
 mod site;
 pub use shown::{
-    Acted, At, Checkable, Cleared, Key, LessonView, PolygonView, QUIZ_KINDS, RasterRow, SceneView, Settings, keys,
-    lesson_view, quiz_mode, scene_view,
+    Acted, At, Checkable, ClearedTo, DrawnSettings, KeyAction, LessonView, PolygonView, QUIZ_KINDS, RasterRow,
+    SceneView, keys, lesson_view, quiz_mode, scene_view,
 };
 pub use site::{one_file_page, site_files, step_page, write_site};
 
@@ -60,7 +60,7 @@ fn shown_by_polygon(scene: &Scene) -> bool {
 
 /// Why a scene of `bytes` bytes is not read by the page, in one line.
 fn too_long(lang: Lang, bytes: usize) -> String {
-    TooLarge::Bytes { path: None, bytes }.message(lang)
+    PageLimit::Bytes { path: None, bytes }.message(lang)
 }
 
 /// The scene read from `text`, or its error worded as the command line words
@@ -68,7 +68,7 @@ fn too_long(lang: Lang, bytes: usize) -> String {
 /// polygon, `{"key": "width"}` for a setting, `{"line": n, "text"}` (from 1)
 /// for JSON that does not read.
 fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
-    let refused = |too_large: TooLarge| json!({"ok": false, "error": too_large.message(lang), "at": null});
+    let refused = |too_large: PageLimit| json!({"ok": false, "error": too_large.message(lang), "at": null});
     // The page's limits, before the scene is read (reading is the work they spare)…
     check_text(text, None).map_err(refused)?;
     let scene = Scene::from_json(lang, text, Path::new(&scene_name(lang))).map_err(|error| {
@@ -136,7 +136,7 @@ pub fn after_of(lang: Lang, scene: &Scene, number: usize) -> Value {
         last = simulation.draw_next_counted(&mut Unobserved);
     }
     let Some(drawn) = last else { return json!({"ok": false, "error": words!(lang, "no-such-polygon")}) };
-    let (frame, depth) = buffer_data(simulation.buffers(), Buffers::Printed);
+    let (frame, depth) = buffer_data(simulation.buffers(), BufferForm::Printed);
     json!({
         "ok": true,
         "heading": report::polygon_heading(lang, scene, drawn.index),

@@ -17,8 +17,8 @@ use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::teach::page_limits::{MAX_PRINTED_CELLS, MAX_SHOWN_CELLS, MAX_SHOWN_POLYGONS};
 use crate::teach::step::lesson::{KEYS, Lesson};
-use crate::teach::step::page::{Buffers, buffer_data};
-use crate::teach::step::stop::PixelRow;
+use crate::teach::step::page::{BufferForm, buffer_data};
+use crate::teach::step::table::PixelRow;
 use crate::teach::step::{Question, QuizMode};
 use crate::words::{Lang, polygon_label};
 
@@ -46,7 +46,7 @@ pub struct SceneView {
     /// The raster's height in pixels.
     pub height: u32,
     /// The settings as the scene is drawn: what the page's fields show.
-    pub settings: Settings,
+    pub settings: DrawnSettings,
     /// Each polygon's outline, where the page shows the scene polygon by polygon.
     pub polygons: Vec<PolygonView>,
     /// Whether the page shows the scene polygon by polygon.
@@ -59,7 +59,7 @@ pub struct SceneView {
     /// Whether the page colours the raster cell by cell.
     pub cell_by_cell: bool,
     /// What each buffer is cleared to: where a student's answer grid starts.
-    pub cleared: Cleared,
+    pub cleared: ClearedTo,
     /// The final framebuffer as `zsim run --final` prints it bare ("" past the printed limit).
     pub framebuffer: String,
     /// The final z-buffer, likewise.
@@ -77,7 +77,7 @@ pub struct SceneView {
 /// The settings as the scene is drawn.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "camelCase")]
-pub struct Settings {
+pub struct DrawnSettings {
     /// Raster width.
     pub width: u32,
     /// Raster height.
@@ -117,7 +117,7 @@ pub struct Checkable {
 
 /// What each buffer is cleared to.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-pub struct Cleared {
+pub struct ClearedTo {
     /// The framebuffer's background.
     pub frame: u32,
     /// The z-buffer's clearing level (none for exact depths).
@@ -178,7 +178,7 @@ pub fn scene_view(lang: Lang, scene: &Scene) -> SceneView {
         notes.push(words!(lang, "limit-printed-cells", cells = MAX_PRINTED_CELLS.to_string()));
     }
     let (framebuffer, zbuffer) = match printed {
-        true => buffer_data(buffers, Buffers::Printed),
+        true => buffer_data(buffers, BufferForm::Printed),
         false => (serde_json::Value::from(""), serde_json::Value::from("")),
     };
     let text = |value: serde_json::Value| value.as_str().unwrap_or_default().to_string();
@@ -187,7 +187,7 @@ pub fn scene_view(lang: Lang, scene: &Scene) -> SceneView {
         ok: true,
         width: scene.width,
         height: scene.height,
-        settings: Settings {
+        settings: DrawnSettings {
             width: scene.width,
             height: scene.height,
             frame_bits: scene.frame_bits,
@@ -199,7 +199,7 @@ pub fn scene_view(lang: Lang, scene: &Scene) -> SceneView {
         draggable: scene.window.is_none() && scene.effects.perspective.is_none(),
         checkable,
         cell_by_cell,
-        cleared: Cleared { frame: scene.background, depth: scene.clear_depth.level() },
+        cleared: ClearedTo { frame: scene.background, depth: scene.clear_depth.level() },
         framebuffer: text(framebuffer),
         zbuffer: text(zbuffer),
         rows: match cell_by_cell {
@@ -382,7 +382,7 @@ pub struct Acted {
 
 /// A key the page takes, as the lesson's one table names it.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-pub struct Key {
+pub struct KeyAction {
     /// The key.
     pub key: char,
     /// What it does, in the page's language.
@@ -390,8 +390,8 @@ pub struct Key {
 }
 
 /// The lesson's keys ([`KEYS`]), each with what it does.
-pub fn keys(lang: Lang) -> Vec<Key> {
-    KEYS.iter().map(|(key, word)| Key { key: *key, does: crate::words::text(lang, word, &[]) }).collect()
+pub fn keys(lang: Lang) -> Vec<KeyAction> {
+    KEYS.iter().map(|(key, word)| KeyAction { key: *key, does: crate::words::text(lang, word, &[]) }).collect()
 }
 
 #[cfg(test)]

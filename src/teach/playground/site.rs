@@ -12,7 +12,7 @@ use serde_json::Value;
 
 use crate::effects::arith::Arith;
 use crate::scene::Scene;
-use crate::teach::page_limits::{TooLarge, check_reach, check_recorded, check_text};
+use crate::teach::page_limits::{PageLimit, check_reach, check_recorded, check_text};
 use crate::teach::step::{QuizMode, Stepper};
 use crate::words::Lang;
 
@@ -96,7 +96,7 @@ pub fn step_page(
     path: &Path,
     arith: Arith,
     quiz: Option<QuizMode>,
-) -> Result<String, TooLarge> {
+) -> Result<String, PageLimit> {
     if arith == Arith::Exact && embedded().is_some() {
         check_text(text, Some(path))?;
         check_reach(scene, Some(path))?;

@@ -7,13 +7,13 @@
 
 pub mod lesson;
 pub mod page;
-pub mod stop;
+pub mod table;
 
 use crate::effects::arith::Arith;
 use crate::numbers::{Exact, exact_and_decimal, parse_number};
 use crate::observe::explain::{pixel_reason, polygon_after, polygon_name, scanline_text};
-use crate::observe::step::{Skip, Stop, Tracer};
 use crate::observe::trace::ScanlineRecord;
+use crate::observe::tracer::{Skip, Stop, Tracer};
 use crate::scene::Scene;
 use crate::simulate::events::{Outcome, PixelEvent};
 use crate::words::Lang;
@@ -22,7 +22,7 @@ use crate::words::token;
 
 /// Why a move did not go anywhere.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Refusal {
+pub enum RefusedMove {
     /// Back from the first stop.
     First,
     /// Previous polygon from the first polygon with a stop.
@@ -53,24 +53,24 @@ pub enum Refusal {
     },
 }
 
-impl Refusal {
+impl RefusedMove {
     /// The refusal in one line of the reader's language.
     pub fn text(&self, lang: Lang, scene: &Scene) -> String {
         match *self {
-            Refusal::First => words!(lang, "step-first"),
-            Refusal::NoEarlierPolygon => words!(lang, "no-earlier-polygon"),
-            Refusal::NoLaterPolygon => words!(lang, "no-later-polygon"),
-            Refusal::QuestionsOpen { open } => words!(lang, "lesson-questions-open", open = open.to_string()),
-            Refusal::NoSuchPolygon { polygon } => words!(
+            RefusedMove::First => words!(lang, "step-first"),
+            RefusedMove::NoEarlierPolygon => words!(lang, "no-earlier-polygon"),
+            RefusedMove::NoLaterPolygon => words!(lang, "no-later-polygon"),
+            RefusedMove::QuestionsOpen { open } => words!(lang, "lesson-questions-open", open = open.to_string()),
+            RefusedMove::NoSuchPolygon { polygon } => words!(
                 lang,
                 "lesson-no-such-polygon",
                 polygon = (polygon + 1).to_string(),
                 count = scene.polygons.len().to_string()
             ),
-            Refusal::OutsideRaster { row } => {
+            RefusedMove::OutsideRaster { row } => {
                 words!(lang, "step-outside-raster", row = row.to_string(), last = (scene.height - 1).to_string())
             }
-            Refusal::NotReached { polygon, row } => {
+            RefusedMove::NotReached { polygon, row } => {
                 words!(
                     lang,
                     "step-not-reach",
@@ -94,7 +94,7 @@ pub enum Moved {
         skipped: Vec<Skip>,
     },
     /// Stayed where it was.
-    Refused(Refusal),
+    Refused(RefusedMove),
 }
 
 /// The stepper: a recording of the scene and the stop the student is at.
@@ -168,18 +168,18 @@ impl<'s> Stepper<'s> {
         let from = self.at.unwrap_or(Stop { polygon: self.scene().polygons.len(), scanline: 0 });
         match self.tracer.previous_stop(from) {
             Some(stop) => self.arrive(Some(stop), Vec::new()),
-            None => Moved::Refused(Refusal::First),
+            None => Moved::Refused(RefusedMove::First),
         }
     }
 
     /// The first stop of a later polygon; on the last polygon (or at the
     /// end) refused, and the place kept.
     pub fn next_polygon(&mut self) -> Moved {
-        let Some(stop) = self.at else { return Moved::Refused(Refusal::NoLaterPolygon) };
+        let Some(stop) = self.at else { return Moved::Refused(RefusedMove::NoLaterPolygon) };
         let last = self.tracer.trace(stop.polygon).scanlines.len().saturating_sub(1);
         match self.tracer.next_stop(Some(Stop { polygon: stop.polygon, scanline: last })) {
             (Some(next), skipped) => self.arrive(Some(next), skipped),
-            (None, _) => Moved::Refused(Refusal::NoLaterPolygon),
+            (None, _) => Moved::Refused(RefusedMove::NoLaterPolygon),
         }
     }
 
@@ -196,7 +196,7 @@ impl<'s> Stepper<'s> {
         }
         match found {
             Some(stop) => self.arrive(Some(stop), Vec::new()),
-            None => Moved::Refused(Refusal::NoEarlierPolygon),
+            None => Moved::Refused(RefusedMove::NoEarlierPolygon),
         }
     }
 
@@ -210,14 +210,14 @@ impl<'s> Stepper<'s> {
     pub fn go_to(&mut self, polygon: usize, row: u32) -> Moved {
         let scene = self.scene();
         if polygon >= scene.polygons.len() {
-            return Moved::Refused(Refusal::NoSuchPolygon { polygon });
+            return Moved::Refused(RefusedMove::NoSuchPolygon { polygon });
         }
         if row >= scene.height {
-            return Moved::Refused(Refusal::OutsideRaster { row });
+            return Moved::Refused(RefusedMove::OutsideRaster { row });
         }
         match self.tracer.trace(polygon).scanlines.iter().position(|r| r.row == row) {
             Some(scanline) => self.arrive(Some(Stop { polygon, scanline }), Vec::new()),
-            None => Moved::Refused(Refusal::NotReached { polygon, row }),
+            None => Moved::Refused(RefusedMove::NotReached { polygon, row }),
         }
     }
 
@@ -279,7 +279,7 @@ pub struct StopWords {
 }
 
 /// A [`Skip`] in one line of the reader's language.
-pub use crate::observe::step::skip_text;
+pub use crate::observe::tracer::skip_text;
 
 /// What the quiz asks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -570,12 +570,12 @@ mod tests {
         stepper.start(None);
         let Moved::To { at: Some(second), .. } = stepper.next_polygon() else { panic!("no second polygon") };
         assert_eq!(second.polygon, 1);
-        assert_eq!(stepper.next_polygon(), Moved::Refused(Refusal::NoLaterPolygon));
+        assert_eq!(stepper.next_polygon(), Moved::Refused(RefusedMove::NoLaterPolygon));
         assert_eq!(stepper.at(), Some(second));
         while stepper.at().is_some() {
             stepper.forward();
         }
-        assert_eq!(stepper.next_polygon(), Moved::Refused(Refusal::NoLaterPolygon));
+        assert_eq!(stepper.next_polygon(), Moved::Refused(RefusedMove::NoLaterPolygon));
         assert_eq!(stepper.at(), None);
     }
 
@@ -584,7 +584,7 @@ mod tests {
         let scene = book();
         let mut stepper = Stepper::new(&scene, Arith::Exact);
         stepper.start(None);
-        assert_eq!(stepper.back(), Moved::Refused(Refusal::First));
+        assert_eq!(stepper.back(), Moved::Refused(RefusedMove::First));
         while stepper.at().is_some() {
             stepper.forward();
         }

@@ -9,7 +9,7 @@
 use crate::numbers::exact_and_decimal;
 use crate::observe::explain::pixel_reason;
 use crate::observe::report::{MatrixCell, MatrixStyle, matrix_styled};
-use crate::observe::step::Stop;
+use crate::observe::tracer::Stop;
 use crate::simulate::events::Outcome;
 use crate::teach::step::{Moved, Stepper};
 use crate::words::Lang;
@@ -34,7 +34,7 @@ pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
     // The buffers once, as cleared; each stop carries only its pixels' values after it, which the
     // script applies in order (a page of every buffer at every stop grew as the cube of the side).
     let cleared = crate::simulate::simulation::Simulation::new(scene);
-    let (frame, depth) = buffer_data(cleared.buffers(), Buffers::Cells);
+    let (frame, depth) = buffer_data(cleared.buffers(), BufferForm::Cells);
     let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "top": top,
         "op": scene.depth_test.symbol(), "words": words, "cleared": {"frame": frame, "depth": depth}, "stops": stops});
     let data = serde_json::to_string(&data).expect("serializing plain data cannot fail");
@@ -58,7 +58,7 @@ pub fn stops(lang: Lang, stepper: &mut Stepper<'_>) -> Vec<serde_json::Value> {
 
 /// How a page wants a stop's buffers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Buffers {
+pub enum BufferForm {
     /// Rows of cells, top row first, to draw a grid of.
     Cells,
     /// The matrices as `zsim run` prints them.
@@ -90,19 +90,19 @@ pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop) -> serde_jso
         "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
         "scanline": stop_words.scanline, "crossings": stop_words.crossings,
         // Each span with its ends' depths (x_a, z_a, x_b, z_b) and its columns, as the line mode shows it.
-        "spans": crate::teach::step::stop::span_lines(lang, scene, &record),
-        "notes": crate::teach::step::stop::notes(lang, scene, stop.polygon, &record, stepper.arith()),
+        "spans": crate::teach::step::table::span_lines(lang, scene, &record),
+        "notes": crate::teach::step::table::notes(lang, scene, stop.polygon, &record, stepper.arith()),
         "pixels": pixels,
     })
 }
 
-/// A state's two buffers as a page asks for them ([`Buffers`]).
+/// A state's two buffers as a page asks for them ([`BufferForm`]).
 pub fn buffer_data(
     buffers: &crate::simulate::buffer::Buffers,
-    asked: Buffers,
+    asked: BufferForm,
 ) -> (serde_json::Value, serde_json::Value) {
     match asked {
-        Buffers::Cells => (
+        BufferForm::Cells => (
             serde_json::json!(buffers.frame_rows()),
             serde_json::json!(
                 buffers
@@ -112,7 +112,7 @@ pub fn buffer_data(
                     .collect::<Vec<_>>()
             ),
         ),
-        Buffers::Printed => {
+        BufferForm::Printed => {
             let style = MatrixStyle::default();
             (matrix_styled(&buffers.frame_rows(), &style).into(), matrix_styled(&buffers.depth_rows(), &style).into())
         }
@@ -286,7 +286,7 @@ mod tests {
             let mut stepper = Stepper::new(&scene, crate::effects::arith::Arith::Exact);
             let stops = stops(Lang::En, &mut stepper);
             let cleared = crate::simulate::simulation::Simulation::new(&scene);
-            let (frame, depth) = buffer_data(cleared.buffers(), Buffers::Cells);
+            let (frame, depth) = buffer_data(cleared.buffers(), BufferForm::Cells);
             let (mut frame, mut depth) = (frame.as_array().unwrap().clone(), depth.as_array().unwrap().clone());
             let top = crate::raster::row_y(scene.height, 0);
             let mut moved = stepper.start(None);
@@ -298,7 +298,7 @@ mod tests {
                     frame[row][x] = pixel["frame"].clone();
                     depth[row][x] = pixel["cell"].clone();
                 }
-                let (frame_after, depth_after) = buffer_data(&stepper.tracer().buffers_after(stop), Buffers::Cells);
+                let (frame_after, depth_after) = buffer_data(&stepper.tracer().buffers_after(stop), BufferForm::Cells);
                 assert_eq!(
                     (&frame, &depth),
                     (frame_after.as_array().unwrap(), depth_after.as_array().unwrap()),

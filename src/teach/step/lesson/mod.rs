@@ -28,14 +28,14 @@ use self_cell::self_cell;
 use crate::effects::arith::Arith;
 use crate::numbers::fraction;
 use crate::observe::explain::{polygon_name, scanline_text};
-use crate::observe::step::Stop;
 use crate::observe::trace::ScanlineRecord;
+use crate::observe::tracer::Stop;
 use crate::scene::Scene;
 use crate::simulate::buffer::Buffers;
 use crate::teach::check::diagnose::Misconception;
-use crate::teach::step::stop::{PixelRow, notes, pixel_rows, span_lines};
+use crate::teach::step::table::{PixelRow, notes, pixel_rows, span_lines};
 use crate::teach::step::{
-    Meant, Moved, Question, QuizMode, Refusal, Stepper, Verdict, judge_coverage, judge_depth, judge_frame,
+    Meant, Moved, Question, QuizMode, RefusedMove, Stepper, Verdict, judge_coverage, judge_depth, judge_frame,
 };
 
 use crate::words::{Lang, printable};
@@ -341,7 +341,7 @@ impl Lesson {
         }
         let open = self.open_questions();
         if open > 0 {
-            return Said::Moved(Moved::Refused(Refusal::QuestionsOpen { open }));
+            return Said::Moved(Moved::Refused(RefusedMove::QuestionsOpen { open }));
         }
         let moved = self.held.with_dependent_mut(|_, stepper| match command {
             Command::Next => stepper.forward(),

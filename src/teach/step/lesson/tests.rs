@@ -2,7 +2,7 @@
 //! scanline 15.5: columns 15 … 27, the centre of 15 on its left edge).
 
 use super::*;
-use crate::observe::step::Stop;
+use crate::observe::tracer::Stop;
 
 fn book() -> Scene {
     Scene::load(Lang::En, std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
@@ -175,7 +175,7 @@ fn moving_on_is_refused_while_questions_are_open_until_skipped() {
     for command in [Command::Next, Command::Back, Command::NextPolygon, Command::PreviousPolygon, Command::Go(16)] {
         let said = lesson.act(Lang::En, command.clone());
         assert!(
-            matches!(said, Said::Moved(Moved::Refused(Refusal::QuestionsOpen { open: 14 }))),
+            matches!(said, Said::Moved(Moved::Refused(RefusedMove::QuestionsOpen { open: 14 }))),
             "{command:?}: {said:?}"
         );
     }
