@@ -219,6 +219,48 @@ fn an_image_of_the_largest_declared_size_is_drawn_and_one_row_more_is_refused() 
     assert!(run.stderr.contains(&format!("declares {side} × {} pixels", side + 1)), "{}", run.stderr);
 }
 
+/// A CS 418 case's textures together hold at most as many pixels as one
+/// largest image: 4096 × 4095 and 4096 × 1 together are decoded and drawn
+/// within the one image's peak; a third texture of one pixel more is refused
+/// from its header, naming the case's line (found by a maintainer: four
+/// different 4096² textures peaked at 2.37 GB).
+#[test]
+fn a_cs418_cases_textures_hold_the_most_pixels_together_and_one_more_is_refused() {
+    let limit = stated("A CS 418 case's textures together");
+    let one = stated("An image's declared pixels");
+    assert_eq!(limit.value, one.value, "together, as many as one largest image");
+    let dir = scratch("textures-together");
+    let side = (limit.value as f64).sqrt() as u32;
+    for (name, width, height) in [("big.png", side, side - 1), ("row.png", side, 1), ("dot.png", 1, 1)] {
+        let mut bytes = Vec::new();
+        let mut encoder = png::Encoder::new(&mut bytes, width, height);
+        encoder.set_color(png::ColorType::Grayscale);
+        let pixels: Vec<u8> = (0..width as usize * height as usize).map(|i| (i % 251) as u8).collect();
+        encoder.write_header().unwrap().write_image_data(&pixels).unwrap();
+        std::fs::write(dir.join(name), bytes).unwrap();
+    }
+    let draw = "texcoord 2 0 0  1 0  0 1\nposition 2 -1 -1  1 -1  -1 1\ndrawArraysTriangles 0 3\n";
+    let case = |name: &str, textures: &[&str]| {
+        let file = dir.join(name);
+        let body: String = textures.iter().map(|t| format!("texture {t}\n{draw}")).collect();
+        std::fs::write(&file, format!("png 8 8 out.png\n{body}")).unwrap();
+        file
+    };
+    let together = case("together.txt", &["big.png", "row.png"]);
+    let (code, peak) = peak_kib(&["cs418", "run", path(&together), "-o", path(&dir.join("out"))]);
+    assert_eq!(code, 0);
+    limit.hold_peak(peak);
+    let more = case("more.txt", &["big.png", "row.png", "dot.png"]);
+    let run = zsim(&["cs418", "run", path(&more), "-o", path(&dir.join("out2"))]);
+    assert_eq!((run.code, run.stderr.lines().count()), (2, 1), "{}", run.stderr);
+    assert!(
+        run.stderr.contains(&format!("would hold {} pixels together with this one", limit.value + 1)),
+        "{}",
+        run.stderr
+    );
+    assert!(run.stderr.contains("more.txt"), "the case is named: {}", run.stderr);
+}
+
 /// A token in an error is quoted whole up to the limit; one character more
 /// and it is cut to its first 32 characters and its length.
 #[test]

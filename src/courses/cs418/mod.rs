@@ -181,6 +181,12 @@ pub const MAX_SIDE: u32 = 8192;
 /// this takes).
 pub const MAX_SAMPLES: u64 = 1 << 23;
 
+/// The most pixels a case's textures hold together: as many as the largest
+/// one image may declare ([`crate::door::MAX_IMAGE_PIXELS`]), so that a case
+/// naming several large textures peaks where one does. Each texture's share
+/// is known from its header, before it is decoded.
+pub const MAX_CASE_TEXTURE_PIXELS: u64 = crate::door::MAX_IMAGE_PIXELS;
+
 impl RastFile {
     /// Reads a CS 418 file. `load_texture` reads a texture the case names
     /// (the caller knows where the case's folder is; the same image for every

@@ -38,6 +38,7 @@ pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<LoadedCase, E
     let folder = Folder::beside(path)?;
     // Each file decoded once, and held once, however many names lead to it (`x.png`, `./x.png`).
     let read: RefCell<Vec<(PathBuf, Identity, Arc<Image>)>> = RefCell::new(Vec::new());
+    let held = std::cell::Cell::new(0u64);
     let texture = |name: &str| {
         if textures == Textures::Ignored {
             return Ok(Arc::new(Image { width: 1, height: 1, rgba: vec![0; 4] }));
@@ -51,6 +52,14 @@ pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<LoadedCase, E
         if let Some((_, _, image)) = read.borrow().iter().find(|(_, known, _)| *known == identity) {
             return Ok(image.clone());
         }
+        // What the textures hold together, this one's share known from its header.
+        let info = crate::door::png_reader(lang, &bytes)?;
+        let together = held.get() + u64::from(info.info().width) * u64::from(info.info().height);
+        if together > super::MAX_CASE_TEXTURE_PIXELS {
+            let max = super::MAX_CASE_TEXTURE_PIXELS;
+            return Err(words!(lang, "cs418-textures-too-large", pixels = together.to_string(), max = max.to_string()));
+        }
+        held.set(together);
         let image = Arc::new(Image::from_png(lang, &bytes)?);
         read.borrow_mut().push((folder.path_of(name), identity, Arc::clone(&image)));
         Ok(image)

@@ -28,6 +28,7 @@ cs418-size-zero = { $keyword }: the size must not be 0
 cs418-vertices = { $keyword } { $size }: { $numbers } numbers is not a whole number of vertices ({ $whole } and { $left } left over)
 cs418-vertex-index = vertex { $index } is read, but "position" has { $count } vertices
 cs418-texture-missing = no such file beside the case
+cs418-textures-too-large = the case's textures would hold { $pixels } pixels together with this one; a case's textures hold at most { $max } together
 cs418-texture-unreadable = cannot be read ({ $reason })
 cs418-image-size = the image is { $width } × { $height }, the case draws { $case_width } × { $case_height }
 buet-size = "{ $word }" is not a raster size from 1 to { $max }

@@ -25,6 +25,7 @@ cs418-size-zero = { $keyword }: размер не может быть 0
 cs418-vertices = { $keyword } { $size }: { $numbers } чисел — не целое число вершин ({ $whole } и { $left } в остатке)
 cs418-vertex-index = читается вершина { $index }, а в «position» вершин { $count }
 cs418-texture-missing = такого файла рядом с заданием нет
+cs418-textures-too-large = вместе с этой текстуры задания заняли бы { $pixels } пикселей; текстуры одного задания вместе занимают не больше { $max }
 cs418-texture-unreadable = не удаётся прочитать ({ $reason })
 cs418-image-size = изображение { $width } × { $height }, а задание рисует { $case_width } × { $case_height }
 buet-size = «{ $word }» — не размер растра от 1 до { $max }

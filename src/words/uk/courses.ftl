@@ -25,6 +25,7 @@ cs418-size-zero = { $keyword }: розмір не може бути 0
 cs418-vertices = { $keyword } { $size }: { $numbers } чисел — не ціла кількість вершин ({ $whole } і { $left } в остачі)
 cs418-vertex-index = читається вершина { $index }, а в «position» вершин { $count }
 cs418-texture-missing = такого файлу поруч із завданням немає
+cs418-textures-too-large = разом із цією текстури завдання зайняли б { $pixels } пікселів; текстури одного завдання разом займають не більше { $max }
 cs418-texture-unreadable = не вдається прочитати ({ $reason })
 cs418-image-size = зображення { $width } × { $height }, а завдання малює { $case_width } × { $case_height }
 buet-size = «{ $word }» — не розмір растра від 1 до { $max }

@@ -25,6 +25,7 @@ cs418-size-zero = { $keyword }：大小不能为 0
 cs418-vertices = { $keyword } { $size }：{ $numbers } 个数不是整数个顶点（{ $whole } 个，余 { $left }）
 cs418-vertex-index = 读取顶点 { $index }，但“position”只有 { $count } 个顶点
 cs418-texture-missing = 题目旁没有这个文件
+cs418-textures-too-large = 加上这一张，题目的纹理共有 { $pixels } 个像素；一个题目的纹理合计最多 { $max } 个像素
 cs418-texture-unreadable = 无法读取（{ $reason }）
 cs418-image-size = 图像为 { $width } × { $height }，题目画的是 { $case_width } × { $case_height }
 buet-size = “{ $word }”不是 1 到 { $max } 的光栅尺寸
