@@ -80,10 +80,9 @@ pub enum Error {
         /// What is wrong.
         problem: Box<PolygonProblem>,
     },
-    /// A request that does not fit the command or the scene.
-    Usage(Usage),
-    /// A refusal a layer above this one states as a fact of its own (the
-    /// GPU's, an exercise's, an arithmetic mode's, the command line's).
+    /// A refusal a layer states as a fact of its own (the door's outputs, a
+    /// scene's polygons, a figure's, a check's, grading's, the GPU's, an
+    /// exercise's, an arithmetic mode's, the command line's).
     Refused(Box<dyn Refusal>),
     /// An answer file (for `check`) that is malformed or the wrong shape.
     Answer {
@@ -97,7 +96,7 @@ pub enum Error {
 /// A request a layer refuses, kept as that layer's fact and worded from its
 /// own messages in the reader's language: each layer owns its errors, and
 /// [`Error::Refused`] carries them to the front end that shows them.
-pub trait Refusal: std::fmt::Debug + Send + Sync {
+pub trait Refusal: std::any::Any + std::fmt::Debug + Send + Sync {
     /// The message in `lang`, one line.
     fn message(&self, lang: Lang) -> String;
 }
@@ -163,199 +162,9 @@ pub enum PolygonOrigin {
     },
 }
 
-/// What a command needs done differently: each with the facts its message
-/// states, worded by the catalogues in the reader's language.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Usage {
-    /// A polygon number past the last polygon.
-    NoPolygonNumbered {
-        /// N.
-        number: usize,
-        /// How many polygons the scene has.
-        count: usize,
-    },
-    /// A polygon name that no polygon has.
-    NoPolygonNamed {
-        /// The name asked for.
-        name: String,
-        /// The scene's polygon names.
-        names: Vec<String>,
-    },
-    /// A pixel outside the raster.
-    PixelOutside {
-        /// Its column, as asked (a page's address may ask past 2^32).
-        x: u64,
-        /// Its row, as asked.
-        y: u64,
-        /// The raster's width.
-        width: u32,
-        /// The raster's height.
-        height: u32,
-    },
-    /// A raster too large for a figure.
-    FigureTooLarge {
-        /// The scene file.
-        path: PathBuf,
-        /// The raster's width.
-        width: u32,
-        /// The raster's height.
-        height: u32,
-        /// The largest side a figure draws.
-        max: u32,
-    },
-    /// The PNG renderer failed.
-    PngFailed {
-        /// The PNG asked for.
-        path: PathBuf,
-        /// What failed.
-        reason: String,
-    },
-    /// A scene without polygons given to a command that needs one.
-    NoPolygons {
-        /// The scene file.
-        path: PathBuf,
-        /// The command.
-        task: Task,
-    },
-    /// A scene keeping exact depths, whose z-buffer has no integer matrix.
-    ExactDepthsHaveNoMatrix {
-        /// The scene file.
-        path: PathBuf,
-        /// The command.
-        task: Task,
-    },
-    /// A submission folder that holds no answer file.
-    NoSubmission {
-        /// The folder.
-        folder: PathBuf,
-    },
-    /// A class folder without answer files.
-    NoAnswersFound {
-        /// The folder.
-        class: PathBuf,
-    },
-    /// An output folder that is the folder the command reads.
-    OutputIsInput {
-        /// The folder.
-        folder: PathBuf,
-    },
-    /// Two files of a submission answer for one buffer of one state.
-    SameAnswerTwice {
-        /// The submission folder.
-        folder: PathBuf,
-        /// The two files, by name.
-        files: Vec<String>,
-    },
-    /// An output whose name the file system cannot hold.
-    OutputNameTooLong {
-        /// The path.
-        path: PathBuf,
-        /// The longest name, in bytes.
-        max: usize,
-    },
-    /// One command asked to write one file twice.
-    OutputTwice {
-        /// The file.
-        path: PathBuf,
-    },
-    /// An output folder that already holds files the command would write.
-    OutputWouldReplace {
-        /// The folder.
-        folder: PathBuf,
-        /// The files it would replace, by name.
-        files: Vec<String>,
-    },
-}
-
-/// The command a [`Usage`] error comes from, where the wording depends on it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Task {
-    /// `figure`.
-    Draw,
-    /// `grade`.
-    Grade,
-    /// `check`.
-    Check,
-}
-
 impl<R: Refusal + 'static> From<R> for Error {
     fn from(refusal: R) -> Error {
         Error::Refused(Box::new(refusal))
-    }
-}
-
-impl From<Usage> for Error {
-    fn from(usage: Usage) -> Error {
-        Error::Usage(usage)
-    }
-}
-
-fn quoted_list(items: &[String]) -> String {
-    items.iter().map(|item| format!("\"{item}\"")).collect::<Vec<_>>().join(", ")
-}
-
-impl Usage {
-    /// The message in `lang`, one line.
-    pub fn message(&self, lang: Lang) -> String {
-        let path = |p: &PathBuf| shown_path(p);
-        match self {
-            Usage::NoPolygonNumbered { number, count } => {
-                words!(lang, "usage-no-polygon-numbered", number = number.to_string(), count = count.to_string())
-            }
-            Usage::NoPolygonNamed { name, names } => {
-                words!(lang, "usage-no-polygon-named", name = name, names = quoted_list(names))
-            }
-            Usage::PixelOutside { x, y, width, height } => words!(
-                lang,
-                "usage-pixel-outside",
-                x = x.to_string(),
-                y = y.to_string(),
-                width = width.to_string(),
-                height = height.to_string(),
-                last_x = (width - 1).to_string(),
-                last_y = (height - 1).to_string()
-            ),
-            Usage::FigureTooLarge { path: p, width, height, max } => words!(
-                lang,
-                "usage-figure-too-large",
-                path = path(p),
-                width = width.to_string(),
-                height = height.to_string(),
-                max = max.to_string()
-            ),
-            Usage::PngFailed { path: p, reason } => words!(lang, "usage-png-failed", path = path(p), reason = reason),
-            Usage::NoPolygons { path: p, task } => match task {
-                Task::Draw => words!(lang, "usage-no-polygons-draw", path = path(p)),
-                Task::Grade => words!(lang, "usage-no-polygons-grade", path = path(p)),
-                Task::Check => words!(lang, "usage-no-polygons-check", path = path(p)),
-            },
-            Usage::ExactDepthsHaveNoMatrix { path: p, task } => match task {
-                Task::Grade => words!(lang, "usage-exact-depths-grade", path = path(p)),
-                Task::Draw | Task::Check => words!(lang, "usage-exact-depths-check", path = path(p)),
-            },
-            Usage::NoSubmission { folder } => {
-                words!(lang, "usage-no-submission", folder = shown_path(folder))
-            }
-            Usage::NoAnswersFound { class } => words!(lang, "usage-no-answers", path = path(class)),
-            Usage::OutputIsInput { folder } => words!(lang, "usage-output-is-input", path = path(folder)),
-            Usage::OutputNameTooLong { path: p, max } => {
-                words!(lang, "usage-output-name-too-long", path = path(p), max = max.to_string())
-            }
-            Usage::OutputTwice { path: p } => words!(lang, "usage-output-twice", path = path(p)),
-            Usage::SameAnswerTwice { folder, files } => {
-                words!(lang, "usage-same-answer-twice", path = path(folder), files = quoted_list(files))
-            }
-            Usage::OutputWouldReplace { folder, files } => {
-                let shown: Vec<&str> = files.iter().take(5).map(String::as_str).collect();
-                words!(
-                    lang,
-                    "usage-output-would-replace",
-                    path = path(folder),
-                    files = shown.join(", "),
-                    more = files.len().saturating_sub(5)
-                )
-            }
-        }
     }
 }
 
@@ -419,6 +228,14 @@ impl PolygonProblem {
 }
 
 impl Error {
+    /// The refusal of type `R` this error carries, if it is one.
+    pub fn refused<R: Refusal>(&self) -> Option<&R> {
+        match self {
+            Error::Refused(refusal) => (&**refusal as &dyn std::any::Any).downcast_ref::<R>(),
+            _ => None,
+        }
+    }
+
     /// The message in `lang`, one line.
     pub fn message(&self, lang: Lang) -> String {
         match self {
@@ -465,7 +282,6 @@ impl Error {
                 polygon = crate::words::polygon_label(lang, "polygon-name", *index, name),
                 problem = problem.message(lang)
             ),
-            Error::Usage(usage) => usage.message(lang),
             Error::Refused(refusal) => refusal.message(lang),
             Error::Answer { path, message } => format!("{}: {message}", shown_path(path)),
         }

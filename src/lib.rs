@@ -122,11 +122,11 @@ mod teach;
 #[cfg(feature = "courses")]
 pub use courses::{buet, cs418, tinyrenderer};
 pub use door::{
-    Folder, Identity, Line, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, Plan, Replace, png_reader, read_bytes,
-    read_line_within, read_text, read_text_with, same_folder, write_fresh,
+    Folder, Identity, Line, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, OutputRefused, Plan, Replace, png_reader,
+    read_bytes, read_line_within, read_text, read_text_with, same_folder, write_fresh,
 };
 pub use effects::{accuracy, antialias, arith, variants};
-pub use error::{Error, FileKind, PolygonOrigin, PolygonProblem, Refusal, Task, Usage};
+pub use error::{Error, FileKind, PolygonOrigin, PolygonProblem, Refusal};
 pub use numbers::{
     Exact, NumberError, Q, decimal, exact_and_decimal, fraction, parse_exact, parse_number, short, to_f64,
 };
@@ -145,7 +145,7 @@ pub use raster::sink::{PixelRect, RasterSink};
 pub use raster::{printed_row, row_y};
 pub use rules::{ColumnRule, Compare, DepthStore, Preset, RowRule, Rules, Sample};
 pub use scene::random::{RandomScene, memory};
-pub use scene::{Antialias, MAX_SIDE, Polygon, Scene, max_for_bits};
+pub use scene::{Antialias, MAX_SIDE, NoSuchPolygon, Polygon, Scene, max_for_bits};
 pub use simulate::buffer::Buffers;
 pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};
 pub use simulate::setup::{Stats, fate};

@@ -68,7 +68,7 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
         return Err(super::flags::Flag::CheckNeedsAnswer.into());
     }
     if scene.polygons.is_empty() {
-        return Err(Error::from(zsim::Usage::NoPolygons { path: args.scene.clone(), task: zsim::Task::Check }).into());
+        return Err(Error::from(zsim::check::CheckRefused::NoPolygons { path: args.scene.clone() }).into());
     }
     let last = match &args.after {
         Some(spec) => scene.find_polygon(spec)?,

@@ -31,7 +31,7 @@ pub fn exercise(lang: Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<
     let dir = &args.output;
     for other in [&args.gradescope, &args.prairielearn].into_iter().flatten() {
         if zsim::same_folder(other, dir) {
-            return Err(Error::from(zsim::Usage::OutputIsInput { folder: other.clone() }).into());
+            return Err(Error::from(zsim::OutputRefused::IsInput { folder: other.clone() }).into());
         }
     }
     let table = fairness_table(lang, &manifest);

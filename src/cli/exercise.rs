@@ -118,7 +118,7 @@ pub fn run(lang: zsim::Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result
     );
     if let Some(folder) = &args.gradescope {
         if zsim::same_folder(folder, dir) {
-            return Err(Error::from(zsim::Usage::OutputIsInput { folder: folder.clone() }).into());
+            return Err(Error::from(zsim::OutputRefused::IsInput { folder: folder.clone() }).into());
         }
         let expect = if args.each_polygon { zsim::check::Expect::Each } else { zsim::check::Expect::Final };
         let grading = zsim::gradescope::Autograde { visibility: args.visibility, points: args.points };

@@ -41,7 +41,7 @@ pub fn parse_pixel(lang: zsim::Lang, text: &str) -> Result<(u32, u32), String> {
 pub fn check_pixel(scene: &Scene, (x, y): (u32, u32)) -> Result<(), Error> {
     if x >= scene.width || y >= scene.height {
         let (x, y) = (u64::from(x), u64::from(y));
-        return Err(zsim::Usage::PixelOutside { x, y, width: scene.width, height: scene.height }.into());
+        return Err(zsim::history::PixelOutside { x, y, width: scene.width, height: scene.height }.into());
     }
     Ok(())
 }

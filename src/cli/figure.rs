@@ -49,7 +49,7 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
     };
     let scene = Scene::load(lang, &args.scene)?;
     if scene.width > MAX_FIGURE_SIDE || scene.height > MAX_FIGURE_SIDE {
-        return Err(Error::from(zsim::Usage::FigureTooLarge {
+        return Err(Error::from(zsim::picture::FigureRefused::TooLarge {
             path: args.scene.clone(),
             width: scene.width,
             height: scene.height,
@@ -58,7 +58,7 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
         .into());
     }
     if scene.polygons.is_empty() {
-        return Err(Error::from(zsim::Usage::NoPolygons { path: args.scene.clone(), task: zsim::Task::Draw }).into());
+        return Err(Error::from(zsim::picture::FigureRefused::NoPolygons { path: args.scene.clone() }).into());
     }
     // `--after 0`: nothing drawn yet, every polygon outlined with its vertices: a worksheet.
     let worksheet = args.after.as_deref() == Some("0");

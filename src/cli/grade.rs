@@ -74,7 +74,7 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
     let args = &Plain { scene: scene_path.clone(), class: class.clone(), args };
     let scene = Scene::load(lang, &args.scene)?;
     if scene.polygons.is_empty() {
-        return Err(Error::from(zsim::Usage::NoPolygons { path: args.scene.clone(), task: zsim::Task::Grade }).into());
+        return Err(Error::from(zsim::class::GradeRefused::NoPolygons { path: args.scene.clone() }).into());
     }
     let last = match &args.after {
         Some(spec) => scene.find_polygon(spec)?,

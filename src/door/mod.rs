@@ -33,4 +33,4 @@ pub use inward::{
     Folder, Identity, Line, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, png_reader, read_bytes, read_line_within,
     read_text, read_text_with,
 };
-pub use outward::{Plan, Replace, same_folder, write_fresh};
+pub use outward::{OutputRefused, Plan, Replace, same_folder, write_fresh};

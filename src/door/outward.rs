@@ -6,7 +6,60 @@ use std::path::{Path, PathBuf};
 
 use super::inward::Identity;
 use super::staged::{Staged, StagingFolder};
-use crate::error::{Error, Usage};
+use crate::error::{Error, Refusal};
+use crate::words::{Lang, shown_path};
+
+/// A command's outputs refused before anything is written: each with the
+/// facts its message states.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum OutputRefused {
+    /// An output in the folder the command reads, or an input itself.
+    IsInput {
+        /// The folder (or the input).
+        folder: PathBuf,
+    },
+    /// An output whose name the file system cannot hold.
+    NameTooLong {
+        /// The path.
+        path: PathBuf,
+        /// The longest name, in bytes.
+        max: usize,
+    },
+    /// One file planned twice.
+    Twice {
+        /// The file.
+        path: PathBuf,
+    },
+    /// Files that would be replaced where a command replaces none.
+    WouldReplace {
+        /// Their folder.
+        folder: PathBuf,
+        /// Their names.
+        files: Vec<String>,
+    },
+}
+
+impl Refusal for OutputRefused {
+    fn message(&self, lang: Lang) -> String {
+        match self {
+            OutputRefused::IsInput { folder } => words!(lang, "usage-output-is-input", path = shown_path(folder)),
+            OutputRefused::NameTooLong { path, max } => {
+                words!(lang, "usage-output-name-too-long", path = shown_path(path), max = max.to_string())
+            }
+            OutputRefused::Twice { path } => words!(lang, "usage-output-twice", path = shown_path(path)),
+            OutputRefused::WouldReplace { folder, files } => {
+                let shown: Vec<&str> = files.iter().take(5).map(String::as_str).collect();
+                words!(
+                    lang,
+                    "usage-output-would-replace",
+                    path = shown_path(folder),
+                    files = shown.join(", "),
+                    more = files.len().saturating_sub(5)
+                )
+            }
+        }
+    }
+}
 
 /// Whether a planned file may replace one that is there.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -128,17 +181,17 @@ impl<'a> Plan<'a> {
             let path = &file.path;
             let name = path.file_name().map_or(0, |n| n.len());
             if name == 0 || name > MAX_NAME_BYTES || path.as_os_str().len() > MAX_PATH_BYTES {
-                return Err(Usage::OutputNameTooLong { path: path.clone(), max: MAX_NAME_BYTES }.into());
+                return Err(OutputRefused::NameTooLong { path: path.clone(), max: MAX_NAME_BYTES }.into());
             }
             let folder = folder_of(path);
             // Each folder's key, not its open handle: a class of a thousand folders holds no thousand descriptors.
             let folder_key = *folders.entry(folder).or_insert_with(|| Identity::of(folder).map(|i| i.key()));
             if folder_key.is_some_and(|key| inputs.contains(&key)) {
-                return Err(Usage::OutputIsInput { folder: folder.to_owned() }.into());
+                return Err(OutputRefused::IsInput { folder: folder.to_owned() }.into());
             }
             let identity = Identity::of(path);
             if identity.as_ref().is_some_and(|identity| inputs.contains(&identity.key())) {
-                return Err(Usage::OutputIsInput { folder: path.clone() }.into());
+                return Err(OutputRefused::IsInput { folder: path.clone() }.into());
             }
             let place = match (&identity, folder_key) {
                 (Some(identity), _) => Place::File(identity.key()),
@@ -146,7 +199,7 @@ impl<'a> Plan<'a> {
                 (None, None) => Place::Path(path.clone()),
             };
             if !places.insert(place) {
-                return Err(Usage::OutputTwice { path: path.clone() }.into());
+                return Err(OutputRefused::Twice { path: path.clone() }.into());
             }
             let followed = std::fs::metadata(path).ok();
             if followed.as_ref().is_some_and(std::fs::Metadata::is_dir) {
@@ -174,7 +227,7 @@ impl<'a> Plan<'a> {
         if self.replace == Replace::Never && !existing.is_empty() {
             let folder = folder_of(&existing[0]).to_owned();
             let files = existing.iter().map(|p| crate::words::shown_name(p)).collect();
-            return Err(Usage::OutputWouldReplace { folder, files }.into());
+            return Err(OutputRefused::WouldReplace { folder, files }.into());
         }
         Ok(streams)
     }
@@ -491,7 +544,7 @@ mod tests {
         std::fs::hard_link(&model, &link).unwrap();
         let mut plan = Plan::new(&[&model], Replace::Allowed);
         plan.file(&link, "overwritten");
-        assert!(matches!(plan.write(), Err(Error::Usage(Usage::OutputIsInput { .. }))));
+        assert!(matches!(plan.write().unwrap_err().refused(), Some(OutputRefused::IsInput { .. })));
         assert_eq!(std::fs::read_to_string(&model).unwrap(), "v 0 0 0\n");
         std::fs::remove_dir_all(&dir).unwrap();
     }
@@ -503,13 +556,13 @@ mod tests {
         let mut plan = Plan::new(&[], Replace::Never);
         plan.file(dir.join("a.txt"), "new");
         plan.file(dir.join("b.txt"), "new");
-        assert!(matches!(plan.write(), Err(Error::Usage(Usage::OutputWouldReplace { .. }))));
+        assert!(matches!(plan.write().unwrap_err().refused(), Some(OutputRefused::WouldReplace { .. })));
         assert!(!dir.join("a.txt").exists());
         assert_eq!(std::fs::read_to_string(dir.join("b.txt")).unwrap(), "old");
         let mut plan = Plan::new(&[], Replace::Never);
         plan.file(dir.join(format!("{}.txt", "x".repeat(300))), "new");
         plan.file(dir.join("c.txt"), "new");
-        assert!(matches!(plan.write(), Err(Error::Usage(Usage::OutputNameTooLong { .. }))));
+        assert!(matches!(plan.write().unwrap_err().refused(), Some(OutputRefused::NameTooLong { .. })));
         assert!(!dir.join("c.txt").exists());
         std::fs::remove_dir_all(&dir).unwrap();
     }
@@ -520,7 +573,7 @@ mod tests {
         let mut plan = Plan::new(&[], Replace::Allowed);
         plan.file(dir.join("a.txt"), "1");
         plan.file(dir.join(".").join("a.txt"), "2");
-        assert!(matches!(plan.write(), Err(Error::Usage(Usage::OutputTwice { .. }))));
+        assert!(matches!(plan.write().unwrap_err().refused(), Some(OutputRefused::Twice { .. })));
         assert!(!dir.join("a.txt").exists());
         std::fs::remove_dir_all(&dir).unwrap();
     }

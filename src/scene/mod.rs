@@ -31,7 +31,7 @@ use num_bigint::BigInt;
 use num_traits::{CheckedDiv, CheckedMul, CheckedSub};
 use serde::Deserialize;
 
-use crate::error::{Error, Usage};
+use crate::error::{Error, Refusal};
 use crate::geometry::equation::GeometryError;
 use crate::geometry::plane::Geometry;
 use crate::numbers::{Exact, Q};
@@ -419,12 +419,45 @@ impl Scene {
             if (1..=self.polygons.len()).contains(&number) {
                 return Ok(number - 1);
             }
-            return Err(Usage::NoPolygonNumbered { number, count: self.polygons.len() }.into());
+            return Err(NoSuchPolygon::Numbered { number, count: self.polygons.len() }.into());
         }
         self.polygons.iter().position(|p| p.name == spec).ok_or_else(|| {
             let names = self.polygons.iter().map(|p| p.name.clone()).collect();
-            Usage::NoPolygonNamed { name: spec.to_string(), names }.into()
+            NoSuchPolygon::Named { name: spec.to_string(), names }.into()
         })
+    }
+}
+
+/// A polygon asked for that the scene does not have.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum NoSuchPolygon {
+    /// A number past the last polygon.
+    Numbered {
+        /// The number asked for, from 1.
+        number: usize,
+        /// How many polygons the scene has.
+        count: usize,
+    },
+    /// A name no polygon has.
+    Named {
+        /// The name asked for.
+        name: String,
+        /// The scene's polygon names.
+        names: Vec<String>,
+    },
+}
+
+impl Refusal for NoSuchPolygon {
+    fn message(&self, lang: Lang) -> String {
+        match self {
+            NoSuchPolygon::Numbered { number, count } => {
+                words!(lang, "usage-no-polygon-numbered", number = number.to_string(), count = count.to_string())
+            }
+            NoSuchPolygon::Named { name, names } => {
+                let names: Vec<String> = names.iter().map(|name| format!("\"{name}\"")).collect();
+                words!(lang, "usage-no-polygon-named", name = name, names = names.join(", "))
+            }
+        }
     }
 }
 

@@ -19,6 +19,35 @@ use crate::scene::{Antialias, Scene};
 use crate::simulate::events::{Fate, Outcome};
 use crate::simulate::simulation::Simulation;
 
+/// A pixel asked for outside the raster.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PixelOutside {
+    /// Its column, as asked (a page's address may ask past 2^32).
+    pub x: u64,
+    /// Its row, as asked.
+    pub y: u64,
+    /// The raster's width.
+    pub width: u32,
+    /// The raster's height.
+    pub height: u32,
+}
+
+impl crate::error::Refusal for PixelOutside {
+    fn message(&self, lang: Lang) -> String {
+        let PixelOutside { x, y, width, height } = *self;
+        words!(
+            lang,
+            "usage-pixel-outside",
+            x = x.to_string(),
+            y = y.to_string(),
+            width = width.to_string(),
+            height = height.to_string(),
+            last_x = width.saturating_sub(1).to_string(),
+            last_y = height.saturating_sub(1).to_string()
+        )
+    }
+}
+
 /// What to add to a pixel's history besides the depth tests.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Extras {
@@ -130,7 +159,7 @@ pub struct PixelHistory {
 pub fn history(scene: &Scene, (x, y): (u32, u32), extras: Extras) -> Result<PixelHistory, Error> {
     if x >= scene.width || y >= scene.height {
         let (x, y, width, height) = (u64::from(x), u64::from(y), scene.width, scene.height);
-        return Err(crate::error::Usage::PixelOutside { x, y, width, height }.into());
+        return Err(PixelOutside { x, y, width, height }.into());
     }
     let mut watcher = PixelWatcher::new([(x, y)]);
     let mut simulation = Simulation::new(scene);

@@ -4,8 +4,55 @@
 
 use std::path::Path;
 
-use crate::error::{Error, Usage};
-use crate::words::Lang;
+use crate::error::{Error, Refusal};
+use crate::words::{Lang, shown_path};
+
+/// A figure refused: each with the facts its message states.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum FigureRefused {
+    /// A raster past the largest side a figure draws.
+    TooLarge {
+        /// The scene file.
+        path: std::path::PathBuf,
+        /// The raster's width.
+        width: u32,
+        /// The raster's height.
+        height: u32,
+        /// The largest side a figure draws.
+        max: u32,
+    },
+    /// A scene without polygons: nothing to draw.
+    NoPolygons {
+        /// The scene file.
+        path: std::path::PathBuf,
+    },
+    /// The PNG renderer failed.
+    PngFailed {
+        /// The PNG asked for.
+        path: std::path::PathBuf,
+        /// What failed.
+        reason: String,
+    },
+}
+
+impl Refusal for FigureRefused {
+    fn message(&self, lang: Lang) -> String {
+        match self {
+            FigureRefused::TooLarge { path, width, height, max } => words!(
+                lang,
+                "usage-figure-too-large",
+                path = shown_path(path),
+                width = width.to_string(),
+                height = height.to_string(),
+                max = max.to_string()
+            ),
+            FigureRefused::NoPolygons { path } => words!(lang, "usage-no-polygons-draw", path = shown_path(path)),
+            FigureRefused::PngFailed { path, reason } => {
+                words!(lang, "usage-png-failed", path = shown_path(path), reason = reason)
+            }
+        }
+    }
+}
 
 /// A format a figure is written in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -97,7 +144,7 @@ impl Format {
             Format::Pdf => pdf(lang, svg, path, paper),
             Format::Tex => crate::observe::tikz::tikz(svg, !tikz_only)
                 .map(String::into_bytes)
-                .map_err(|reason| Usage::PngFailed { path: path.to_path_buf(), reason }.into()),
+                .map_err(|reason| FigureRefused::PngFailed { path: path.to_path_buf(), reason }.into()),
         }
     }
 }
@@ -115,7 +162,7 @@ pub const MAX_PNG_PIXELS: f64 = 8192.0 * 8192.0;
 /// system's sans-serif font; more than [`MAX_PNG_PIXELS`] is refused.
 #[cfg(feature = "figures")]
 pub fn png(lang: Lang, svg: &str, path: &Path, scale: Option<f32>) -> Result<Vec<u8>, Error> {
-    let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
+    let failed = |reason: String| Error::from(FigureRefused::PngFailed { path: path.to_path_buf(), reason });
     let tree = tree(lang, svg, path)?;
     let (width, height) = (tree.size().width(), tree.size().height());
     let scale = scale.unwrap_or_else(|| 2f32.min(PNG_SIDE / width.max(height).max(1.0)));
@@ -136,7 +183,7 @@ pub fn png(lang: Lang, svg: &str, path: &Path, scale: Option<f32>) -> Result<Vec
 /// shows; the PDF embeds no font, so needs none of svg2pdf's font crates).
 #[cfg(feature = "figures")]
 pub fn pdf(lang: Lang, svg: &str, path: &Path, paper: Paper) -> Result<Vec<u8>, Error> {
-    let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
+    let failed = |reason: String| Error::from(FigureRefused::PngFailed { path: path.to_path_buf(), reason });
     let tree = tree(lang, svg, path)?;
     // usvg writes text as paths (its glyphs' outlines) unless asked to keep it.
     let outlined = tree.to_string(&resvg::usvg::WriteOptions::default());
@@ -175,14 +222,14 @@ pub fn pdf(lang: Lang, _svg: &str, path: &Path, _paper: Paper) -> Result<Vec<u8>
 #[cfg(not(feature = "figures"))]
 fn not_built(lang: Lang, path: &Path, format: Format) -> Error {
     let reason = words!(lang, "figures-not-built", format = format.extension().to_ascii_uppercase());
-    Usage::PngFailed { path: path.to_path_buf(), reason }.into()
+    FigureRefused::PngFailed { path: path.to_path_buf(), reason }.into()
 }
 
 /// The SVG parsed with the system's fonts, "sans-serif" being the first of
 /// the usual sans fonts the system has.
 #[cfg(feature = "figures")]
 fn tree(lang: Lang, svg: &str, path: &Path) -> Result<resvg::usvg::Tree, Error> {
-    let failed = |reason: String| Error::from(Usage::PngFailed { path: path.to_path_buf(), reason });
+    let failed = |reason: String| Error::from(FigureRefused::PngFailed { path: path.to_path_buf(), reason });
     let mut options = resvg::usvg::Options::default();
     let fonts = options.fontdb_mut();
     fonts.load_system_fonts();

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 
 use crate::door::{Links, read_text_with};
 use crate::effects::arith::{self, Arith};
-use crate::error::{Error, Task, Usage};
+use crate::error::{Error, Refusal};
 use crate::observe::explain::{Buffer, polygon_after, why};
 use crate::observe::trace::PixelWatcher;
 use crate::scene::Scene;
@@ -94,6 +94,48 @@ fn folder_names(folder: &Path) -> Result<Vec<String>, Error> {
     Ok(names)
 }
 
+/// A check refused: each with the facts its message states.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum CheckRefused {
+    /// A scene without polygons: no state to check against.
+    NoPolygons {
+        /// The scene file.
+        path: PathBuf,
+    },
+    /// A scene keeping exact depths, whose z-buffer has no integer matrix to check.
+    ExactDepths {
+        /// The scene file.
+        path: PathBuf,
+    },
+    /// A submission folder that holds no answer file.
+    NoSubmission {
+        /// The folder.
+        folder: PathBuf,
+    },
+    /// Two files of a submission answering for one buffer of one state.
+    SameAnswerTwice {
+        /// The submission folder.
+        folder: PathBuf,
+        /// The two files, by name.
+        files: Vec<String>,
+    },
+}
+
+impl Refusal for CheckRefused {
+    fn message(&self, lang: Lang) -> String {
+        let path = |p: &PathBuf| crate::words::shown_path(p);
+        match self {
+            CheckRefused::NoPolygons { path: p } => words!(lang, "usage-no-polygons-check", path = path(p)),
+            CheckRefused::ExactDepths { path: p } => words!(lang, "usage-exact-depths-check", path = path(p)),
+            CheckRefused::NoSubmission { folder } => words!(lang, "usage-no-submission", folder = path(folder)),
+            CheckRefused::SameAnswerTwice { folder, files } => {
+                let files: Vec<String> = files.iter().map(|file| format!("\"{file}\"")).collect();
+                words!(lang, "usage-same-answer-twice", path = path(folder), files = files.join(", "))
+            }
+        }
+    }
+}
+
 /// The answer files of a submission folder, grouped by the polygon they are
 /// the state after ([`answer_of`] reads the names); other files are passed
 /// over. Two files answering for one buffer of one state (`after-1.frame.txt`
@@ -108,7 +150,7 @@ pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Erro
             Some(state) => {
                 if let Some((_, other)) = state.files.iter().find(|(b, _)| *b == buffer) {
                     let files = vec![crate::words::shown_name(other), printable(&name).into_owned()];
-                    return Err(Usage::SameAnswerTwice { folder: folder.to_owned(), files }.into());
+                    return Err(CheckRefused::SameAnswerTwice { folder: folder.to_owned(), files }.into());
                 }
                 state.files.push((buffer, path));
             }
@@ -116,7 +158,7 @@ pub fn submission_files(folder: &Path, scene: &Scene) -> Result<Vec<State>, Erro
         }
     }
     if states.is_empty() {
-        return Err(Usage::NoSubmission { folder: folder.to_owned() }.into());
+        return Err(CheckRefused::NoSubmission { folder: folder.to_owned() }.into());
     }
     states.sort_by_key(|state| state.after);
     for state in &mut states {
@@ -170,7 +212,7 @@ impl Expect {
             Expect::Each => (0..count).collect(),
             Expect::After(numbers) => {
                 if let Some(&number) = numbers.iter().find(|n| **n > count) {
-                    return Err(Usage::NoPolygonNumbered { number, count }.into());
+                    return Err(crate::scene::NoSuchPolygon::Numbered { number, count }.into());
                 }
                 numbers.iter().map(|n| n - 1).collect()
             }
@@ -390,9 +432,9 @@ pub fn check_with(
     for (buffer, path, answer) in answers {
         let expected = match buffer {
             Buffer::Frame => reference.frame_rows(),
-            Buffer::Depth => reference.depth_level_rows().ok_or_else(|| {
-                Error::from(Usage::ExactDepthsHaveNoMatrix { path: scene_path.to_path_buf(), task: Task::Check })
-            })?,
+            Buffer::Depth => reference
+                .depth_level_rows()
+                .ok_or_else(|| Error::from(CheckRefused::ExactDepths { path: scene_path.to_path_buf() }))?,
         };
         let hint = misreading(&answer, &expected);
         let mut mismatches = compare_answer(&answer, &expected);

@@ -242,10 +242,7 @@ pub fn read(lang: Lang, text: &str, path: &Path) -> Result<Loaded, Error> {
             refuse(format!("{place}.scene ({})", variant.identity), ManifestProblem::Scene(Box::new(e)))
         })?;
         if scene.polygons.is_empty() || scene.clear_depth.level().is_none() {
-            let why = Error::from(crate::error::Usage::ExactDepthsHaveNoMatrix {
-                path: shown.to_owned(),
-                task: crate::error::Task::Grade,
-            });
+            let why = Error::from(crate::teach::grade::class::GradeRefused::ExactDepths { path: shown.to_owned() });
             return Err(refuse(format!("{place}.scene"), ManifestProblem::Scene(Box::new(why))));
         }
         scenes.push(scene);

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 
 use crate::door::Links;
-use crate::error::{Error, Task, Usage};
+use crate::error::{Error, Refusal};
 use crate::observe::explain::{Buffer, why};
 use crate::observe::trace::PixelWatcher;
 use crate::scene::Scene;
@@ -146,9 +146,10 @@ pub fn grade_class(
         }
         let matrix = match buffer {
             Buffer::Frame => simulation.buffers().frame_rows(),
-            Buffer::Depth => simulation.buffers().depth_level_rows().ok_or_else(|| {
-                Error::from(Usage::ExactDepthsHaveNoMatrix { path: scene_path.to_owned(), task: Task::Grade })
-            })?,
+            Buffer::Depth => simulation
+                .buffers()
+                .depth_level_rows()
+                .ok_or_else(|| Error::from(GradeRefused::ExactDepths { path: scene_path.to_owned() }))?,
         };
         expected.push(Key { buffer, matrix, cleared: crate::teach::grade::cleared(scene, buffer) });
     }
@@ -239,7 +240,7 @@ fn answer_files(class: &Path) -> Result<(Vec<AnswerFile>, Vec<Skipped>), Error> 
         }
     }
     if files.is_empty() {
-        return Err(Usage::NoAnswersFound { class: class.to_path_buf() }.into());
+        return Err(GradeRefused::NoAnswers { class: class.to_path_buf() }.into());
     }
     files.sort_by(|a, b| a.student.cmp(&b.student).then((a.buffer == Buffer::Depth).cmp(&(b.buffer == Buffer::Depth))));
     skipped.sort_by(|a, b| a.name.cmp(&b.name));
@@ -413,4 +414,35 @@ fn reasons(lang: Lang, scene: &Scene, last: usize, mistakes: &[CommonMistake]) -
         Simulation::new(scene).draw_through(last, &mut watcher);
     }
     mistakes.iter().map(|m| why(lang, scene, m.buffer, m.x, m.y, watcher.history(m.x, m.y))).collect()
+}
+
+/// Grading refused: each with the facts its message states.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum GradeRefused {
+    /// A scene without polygons: no state to grade against.
+    NoPolygons {
+        /// The scene file.
+        path: PathBuf,
+    },
+    /// A scene keeping exact depths, whose z-buffer has no integer matrix to grade.
+    ExactDepths {
+        /// The scene file.
+        path: PathBuf,
+    },
+    /// A class folder without answer files.
+    NoAnswers {
+        /// The folder.
+        class: PathBuf,
+    },
+}
+
+impl Refusal for GradeRefused {
+    fn message(&self, lang: Lang) -> String {
+        let path = |p: &PathBuf| crate::words::shown_path(p);
+        match self {
+            GradeRefused::NoPolygons { path: p } => words!(lang, "usage-no-polygons-grade", path = path(p)),
+            GradeRefused::ExactDepths { path: p } => words!(lang, "usage-exact-depths-grade", path = path(p)),
+            GradeRefused::NoAnswers { class } => words!(lang, "usage-no-answers", path = path(class)),
+        }
+    }
 }

@@ -379,7 +379,10 @@ pub fn explain_typed(lang: Lang, scene: &Scene, x: &str, y: &str) -> Value {
         (Ok(x), Ok(y)) => explain_of(lang, scene, x, y),
         _ => {
             let (width, height) = (scene.width, scene.height);
-            let error = crate::error::Usage::PixelOutside { x, y, width, height }.message(lang);
+            let error = crate::error::Refusal::message(
+                &crate::observe::explain::history::PixelOutside { x, y, width, height },
+                lang,
+            );
             json!({"ok": false, "error": error})
         }
     }
