@@ -15,6 +15,7 @@
 //! | eight 32-bit lanes ([`lanes`] over [`wide`]) | spans of up to 32 cells eight at a time | AVX2, and the polygon's values fit 2^28 | `lanes_decide_as_the_cell_does`, `lanes_decide_as_the_cell_does_at_their_bounds` (AVX2's lanes and the plain ones, the same loops) |
 //! | four 64-bit lanes ([`lanes`] over [`wide`]) | spans of 16 cells or more four at a time | AVX2, longer spans or values past 2^28 | the same two |
 //! | small triangles ([`triangle`]) | edge functions over a triangle's box, no scan converter setup | the book's rules, a box of at most 24 × 24 centres, buffers within a core's cache, nobody watching | `small_triangles_draw_as_the_scan_converter_draws_them` |
+//! | streaming stores ([`wide::stream_copy`]) | a drawn tile's rows back into the buffers past the cache | tiles, on x86-64 (a plain copy elsewhere) | `a_streamed_copy_is_a_copy` |
 //! | tiles on threads ([`tiles`]) | polygons binned by tile, each band of tiles one job, each tile in cache | an unobserved run with a tile side (`--tile`, `--threads`, large rasters) | `every_path_draws_alike` (tiled runs on 1 to 4 threads), `a_redraw_clears_each_tile_as_it_draws_it` |
 //!
 //! Which path runs is decided once a run ([`crate::simulate::simulation`]:

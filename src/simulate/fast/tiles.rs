@@ -9,6 +9,7 @@ use crate::scene::Scene;
 use crate::simulate::buffer::{FrameCell, LevelCells};
 use crate::simulate::events::{Fate, Unobserved};
 use crate::simulate::fast::levels::{Levels, Origin};
+use crate::simulate::fast::wide::{stream_copy, streamed};
 use crate::simulate::setup::{Stats, fate, pixel_bounds, prefetch, prefetch_polygon};
 
 /// How a tiled run is spread.
@@ -136,48 +137,6 @@ impl Tiles<'_> {
     }
 }
 
-/// Copies `from` into `to`, of the same length, past the cache where the
-/// processor can: a tile's drawn cells go back to the buffers without the
-/// buffers' old cells first being read into the cache (which an ordinary
-/// store does, doubling the memory traffic). [`streamed`] orders them
-/// before what follows.
-fn stream_copy<T: Copy>(to: &mut [T], from: &[T]) {
-    assert_eq!(to.len(), from.len(), "a tile's row and the buffers' are as long");
-    #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::x86_64::{__m128i, _mm_loadu_si128, _mm_stream_si128};
-        let bytes = std::mem::size_of_val(from);
-        let (target, source) = (to.as_mut_ptr().cast::<u8>(), from.as_ptr().cast::<u8>());
-        let head = target.align_offset(16).min(bytes);
-        // SAFETY: both ranges are `bytes` long and lie in distinct slices;
-        // each 16-byte store starts at a multiple of 16 (after `head`) and
-        // ends within `to`; SSE2, which streaming stores need, is part of
-        // every x86_64 processor.
-        unsafe {
-            std::ptr::copy_nonoverlapping(source, target, head);
-            let mut offset = head;
-            while offset + 16 <= bytes {
-                let chunk = _mm_loadu_si128(source.add(offset).cast::<__m128i>());
-                _mm_stream_si128(target.add(offset).cast::<__m128i>(), chunk);
-                offset += 16;
-            }
-            std::ptr::copy_nonoverlapping(source.add(offset), target.add(offset), bytes - offset);
-        }
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    to.copy_from_slice(from);
-}
-
-/// Orders the streamed stores of [`stream_copy`] before every later store,
-/// so that the band's cells are whole when another thread reads them.
-fn streamed() {
-    #[cfg(target_arch = "x86_64")]
-    // SAFETY: SSE is part of every x86_64 processor.
-    unsafe {
-        std::arch::x86_64::_mm_sfence()
-    };
-}
-
 /// The cells a tile is drawn on, kept from tile to tile and band to band
 /// on one thread.
 pub(in crate::simulate) struct TileCopy<F> {
@@ -283,32 +242,4 @@ fn bins_in_order(scene: &Scene, polygons: std::ops::Range<usize>, tile: u32) -> 
         }
     }
     bins
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Streamed copies hold what `copy_from_slice` gives, whatever the
-    /// target's alignment and length (the head before a 16-byte boundary
-    /// and the tail after the last whole chunk are copied as usual).
-    #[test]
-    fn a_streamed_copy_is_a_copy() {
-        fn check<T: Copy + PartialEq + std::fmt::Debug + From<u8>>() {
-            let source: Vec<T> = (0..200u8).map(T::from).collect();
-            for offset in 0..9 {
-                for length in 0..source.len() - offset {
-                    let mut target = vec![T::from(255); source.len()];
-                    let mut copied = target.clone();
-                    stream_copy(&mut target[offset..offset + length], &source[..length]);
-                    streamed();
-                    copied[offset..offset + length].copy_from_slice(&source[..length]);
-                    assert_eq!(target, copied, "offset {offset}, length {length}");
-                }
-            }
-        }
-        check::<u8>();
-        check::<u16>();
-        check::<u32>();
-    }
 }

@@ -9,6 +9,10 @@
 //! (elsewhere the processor draws a span one cell at a time: as arrays the
 //! lanes were slower than the cell).
 //!
+//! The streaming stores that put a drawn tile back ([`stream_copy`],
+//! [`streamed`]) live here too: the crate's raw intrinsics are in this file
+//! alone.
+//!
 //! Arithmetic wraps, as the processor's does; a comparison gives a mask,
 //! every bit of a lane set where it holds and none where not; a selection
 //! takes the lanes of `yes` where the mask is set.
@@ -200,6 +204,48 @@ impl Lanes64 for Plain4 {
     }
 }
 
+/// Copies `from` into `to`, of the same length, past the cache where the
+/// processor can: a tile's drawn cells go back to the buffers without the
+/// buffers' old cells first being read into the cache (which an ordinary
+/// store does, doubling the memory traffic). [`streamed`] orders them
+/// before what follows.
+pub(super) fn stream_copy<T: Copy>(to: &mut [T], from: &[T]) {
+    assert_eq!(to.len(), from.len(), "a tile's row and the buffers' are as long");
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{__m128i, _mm_loadu_si128, _mm_stream_si128};
+        let bytes = std::mem::size_of_val(from);
+        let (target, source) = (to.as_mut_ptr().cast::<u8>(), from.as_ptr().cast::<u8>());
+        let head = target.align_offset(16).min(bytes);
+        // SAFETY: both ranges are `bytes` long and lie in distinct slices;
+        // each 16-byte store starts at a multiple of 16 (after `head`) and
+        // ends within `to`; SSE2, which streaming stores need, is part of
+        // every x86_64 processor.
+        unsafe {
+            std::ptr::copy_nonoverlapping(source, target, head);
+            let mut offset = head;
+            while offset + 16 <= bytes {
+                let chunk = _mm_loadu_si128(source.add(offset).cast::<__m128i>());
+                _mm_stream_si128(target.add(offset).cast::<__m128i>(), chunk);
+                offset += 16;
+            }
+            std::ptr::copy_nonoverlapping(source.add(offset), target.add(offset), bytes - offset);
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    to.copy_from_slice(from);
+}
+
+/// Orders the streamed stores of [`stream_copy`] before every later store,
+/// so that the band's cells are whole when another thread reads them.
+pub(super) fn streamed() {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: SSE is part of every x86_64 processor.
+    unsafe {
+        std::arch::x86_64::_mm_sfence()
+    };
+}
+
 #[cfg(target_arch = "x86_64")]
 pub(super) use avx2::{Avx4, Avx8};
 
@@ -337,5 +383,33 @@ mod avx2 {
         fn first(self) -> i64 {
             unsafe { std::arch::x86_64::_mm_cvtsi128_si64(_mm256_castsi256_si128(self.0)) }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Streamed copies hold what `copy_from_slice` gives, whatever the
+    /// target's alignment and length (the head before a 16-byte boundary
+    /// and the tail after the last whole chunk are copied as usual).
+    #[test]
+    fn a_streamed_copy_is_a_copy() {
+        fn check<T: Copy + PartialEq + std::fmt::Debug + From<u8>>() {
+            let source: Vec<T> = (0..200u8).map(T::from).collect();
+            for offset in 0..9 {
+                for length in 0..source.len() - offset {
+                    let mut target = vec![T::from(255); source.len()];
+                    let mut copied = target.clone();
+                    stream_copy(&mut target[offset..offset + length], &source[..length]);
+                    streamed();
+                    copied[offset..offset + length].copy_from_slice(&source[..length]);
+                    assert_eq!(target, copied, "offset {offset}, length {length}");
+                }
+            }
+        }
+        check::<u8>();
+        check::<u16>();
+        check::<u32>();
     }
 }
