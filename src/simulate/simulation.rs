@@ -8,11 +8,11 @@ use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::Buffers;
-use crate::simulate::events::{Fate, Observer, Outcome, PolygonEvent, ScanlineEvent, Unobserved};
+use crate::simulate::events::{Fate, Observer, PolygonEvent, ScanlineEvent, Unobserved};
 use crate::simulate::fast::levels::{InOrder, Levels, OnePolygon};
 use crate::simulate::fast::tiles::{Cleared, TileStart, Tiles, Tiling, bins, pool};
 use crate::simulate::setup::{Stats, fate, prefetch_ahead};
-use crate::simulate::stages::{PixelStages, Plain, StageSet, WithEffects};
+use crate::simulate::stages::{PixelStages, Plain, StageSet, WithEffects, take_pixel};
 
 /// One polygon drawn, with its own counts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -337,15 +337,17 @@ impl<S: PixelStages, O: Observer> RasterSink for DrawSink<'_, S, O> {
 
     #[inline]
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
-        let stored_before = self.buffers.depth(x, y);
-        let frame_before = self.buffers.frame(x, y);
-        let decision = self.stages.decide(self.polygon, depth.clone(), stored_before.clone(), frame_before);
-        self.stats.tested += 1;
-        if decision.outcome == Outcome::Written {
-            self.stats.written += 1;
-            self.buffers.store(x, y, decision.frame, decision.stored.clone());
-        }
-        self.observer.pixel(&decision.event(self.index, (x, y), depth, (stored_before, frame_before)));
+        let before = (self.buffers.depth(x, y), self.buffers.frame(x, y));
+        let (stages, polygon, buffers) = (self.stages, self.polygon, &mut *self.buffers);
+        take_pixel(
+            (self.index, (x, y)),
+            depth,
+            before,
+            |depth, stored, frame| stages.decide(polygon, depth, stored, frame),
+            |decision| buffers.store(x, y, decision.frame, decision.stored.clone()),
+            self.stats,
+            self.observer,
+        );
     }
 }
 

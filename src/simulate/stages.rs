@@ -7,7 +7,8 @@ use crate::numbers::{Q, fraction};
 use crate::raster::depth::{Depth, DepthTest, Stored};
 use crate::rules::{Compare, DepthStore, RowRule};
 use crate::scene::{Polygon, Scene};
-use crate::simulate::events::{Outcome, PixelEvent};
+use crate::simulate::events::{Observer, Outcome, PixelEvent};
+use crate::simulate::setup::Stats;
 
 /// What the per-pixel stages make of one covered centre.
 #[derive(Debug, Clone)]
@@ -20,6 +21,31 @@ pub struct Decision {
     pub stored: Stored,
     /// The framebuffer after.
     pub frame: u32,
+}
+
+/// One covered pixel as every sink takes it, the one bookkeeping of the
+/// reference's sink and the plain loop's: the stages' decision (`decide`)
+/// on the cells found (`before`: the z-buffer's, the framebuffer's), the
+/// pixel counted as tested and, when written, as written and its cells
+/// stored (`store`), then the observer told. Pixel `at` of polygon `index`,
+/// at exact depth `depth`.
+#[inline(always)]
+pub(super) fn take_pixel<O: Observer>(
+    (index, at): (usize, (u32, u32)),
+    depth: Depth,
+    before: (Stored, u32),
+    decide: impl FnOnce(Depth, Stored, u32) -> Decision,
+    store: impl FnOnce(&Decision),
+    stats: &mut Stats,
+    observer: &mut O,
+) {
+    let decision = decide(depth.clone(), before.0.clone(), before.1);
+    stats.tested += 1;
+    if decision.outcome == Outcome::Written {
+        stats.written += 1;
+        store(&decision);
+    }
+    observer.pixel(&decision.event(index, at, depth, before));
 }
 
 impl Decision {

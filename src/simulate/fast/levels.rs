@@ -9,11 +9,11 @@ use crate::raster::scan::{Crossing, Span};
 use crate::raster::sink::{PixelRect, RasterSink};
 use crate::scene::{Polygon, Scene};
 use crate::simulate::buffer::{FrameCell, LevelCells};
-use crate::simulate::events::{Fate, Observer, Outcome, ScanlineEvent, Unobserved};
+use crate::simulate::events::{Fate, Observer, ScanlineEvent, Unobserved};
 use crate::simulate::fast::branch_free::{CellWrite, Stepped};
 use crate::simulate::fast::lanes;
 use crate::simulate::setup::{CORE_CACHE, Stats, fate, prefetch_ahead, prefetch_cells};
-use crate::simulate::stages::{PixelStages, Plain};
+use crate::simulate::stages::{PixelStages, Plain, take_pixel};
 
 /// How many polygons ahead the plain loop asks for the cells of.
 const AHEAD: usize = 2;
@@ -248,18 +248,23 @@ impl<O: Observer, F: FrameCell> RasterSink for LevelSink<'_, O, F> {
     #[inline]
     fn pixel(&mut self, x: u32, y: u32, depth: Depth) {
         let cell = self.origin.cell(x, y);
-        let (stored_before, frame_before) = (Stored::Level(self.depth[cell]), self.frame[cell].value());
-        self.stats.tested += 1;
-        let plain = Plain::quantized(self.test, self.depth_max);
-        let decision = plain.decide(self.polygon, depth.clone(), stored_before.clone(), frame_before);
-        if decision.outcome == Outcome::Written {
-            self.stats.written += 1;
-            debug_assert!(matches!(decision.stored, Stored::Level(_)), "a quantized store keeps levels");
-            if let Stored::Level(level) = decision.stored {
-                self.depth[cell] = level;
-            }
-            self.frame[cell] = self.value;
-        }
-        self.observer.pixel(&decision.event(self.index, (x, y), depth, (stored_before, frame_before)));
+        let before = (Stored::Level(self.depth[cell]), self.frame[cell].value());
+        let (plain, polygon, value) = (Plain::quantized(self.test, self.depth_max), self.polygon, self.value);
+        let (depth_cells, frame_cells) = (&mut *self.depth, &mut *self.frame);
+        take_pixel(
+            (self.index, (x, y)),
+            depth,
+            before,
+            |depth, stored, frame| plain.decide(polygon, depth, stored, frame),
+            |decision| {
+                debug_assert!(matches!(decision.stored, Stored::Level(_)), "a quantized store keeps levels");
+                if let Stored::Level(level) = decision.stored {
+                    depth_cells[cell] = level;
+                }
+                frame_cells[cell] = value;
+            },
+            self.stats,
+            self.observer,
+        );
     }
 }
