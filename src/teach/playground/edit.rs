@@ -95,21 +95,18 @@ pub fn edit(lang: Lang, text: &str, edit: &str) -> Result<String, String> {
     let not_json = |e: serde_json::Error| words!(lang, "scene-not-json", reason = e.to_string());
     let mut scene: Value = serde_json::from_str(text).map_err(not_json)?;
     let edit = Edit::parse(edit).ok_or_else(|| words!(lang, "edit-does-not-fit"))?;
-    let value_of =
-        |text: &str| serde_json::from_str(text.trim()).unwrap_or_else(|_| Value::String(text.trim().to_string()));
     let bad = || words!(lang, "edit-does-not-fit");
     // The raster's size as the scene is drawn (a preset's and the defaults resolved).
     let size = || {
         let drawn = crate::scene::Scene::from_json(lang, text, std::path::Path::new(&super::scene_name(lang)));
         drawn.map(|scene| (scene.width, scene.height)).map_err(|error| error.message(lang))
     };
-    let (last, path) = match &edit {
-        Edit::Set { path, .. } | Edit::Insert { path, .. } | Edit::Remove { path } => {
-            path.split_last().ok_or_else(bad)?
-        }
+    let index = |number: usize| number.checked_sub(1).ok_or_else(bad);
+    // What the library decides, as the plain edits that carry it out.
+    let edits = match edit {
         Edit::Drag { polygon, vertex, to, snap } => {
             let (_, height) = size()?;
-            let step = crate::numbers::parse_number(snap).ok().filter(|step| *step > crate::numbers::Q::ZERO);
+            let step = crate::numbers::parse_number(&snap).ok().filter(|step| *step > crate::numbers::Q::ZERO);
             let step = step.ok_or_else(bad)?;
             let snapped = |v: f64| {
                 let steps = (v / crate::numbers::to_f64(step)).round();
@@ -120,29 +117,26 @@ pub fn edit(lang: Lang, text: &str, edit: &str) -> Result<String, String> {
                 let text = crate::numbers::decimal(exact, 4);
                 Some(text.trim_end_matches('0').trim_end_matches('.').to_string())
             };
+            // The page's y runs down from the raster's top; the scene's up from its bottom.
             let (x, y) = (snapped(to[0]).ok_or_else(bad)?, snapped(f64::from(height) - to[1]).ok_or_else(bad)?);
-            let at = |c: usize| {
-                serde_json::json!(["polygons", polygon.wrapping_sub(1), "vertices", vertex.wrapping_sub(1), c])
-            };
-            let moved =
-                self::edit(lang, text, &serde_json::json!({"op": "set", "path": at(0), "value": x}).to_string())?;
-            return self::edit(lang, &moved, &serde_json::json!({"op": "set", "path": at(1), "value": y}).to_string());
+            let (polygon, vertex) = (index(polygon)?, index(vertex)?);
+            let at = |c: usize| vec!["polygons".into(), polygon.into(), "vertices".into(), vertex.into(), c.into()];
+            vec![Edit::Set { path: at(0), value: x }, Edit::Set { path: at(1), value: y }]
         }
         Edit::AddVertex { polygon } | Edit::RemoveVertex { polygon } => {
-            let index = polygon.checked_sub(1).ok_or_else(bad)?;
-            let vertices = scene.pointer(&format!("/polygons/{index}/vertices")).and_then(Value::as_array);
+            let adding = matches!(edit, Edit::AddVertex { .. });
+            let polygon = index(polygon)?;
+            let vertices = scene.pointer(&format!("/polygons/{polygon}/vertices")).and_then(Value::as_array);
             let vertices = vertices.ok_or_else(bad)?;
-            let change = match (&edit, vertices.last()) {
-                (Edit::AddVertex { .. }, last) => {
-                    let value = last.cloned().unwrap_or_else(|| serde_json::json!([0, 0, 0])).to_string();
-                    serde_json::json!({"op": "insert", "path": ["polygons", index, "vertices", vertices.len()], "value": value})
+            let path = |at: usize| vec!["polygons".into(), polygon.into(), "vertices".into(), at.into()];
+            match (adding, vertices.last()) {
+                (true, last) => {
+                    let value = last.cloned().unwrap_or_else(|| Value::from(vec![0, 0, 0])).to_string();
+                    vec![Edit::Insert { path: path(vertices.len()), value }]
                 }
-                (_, Some(_)) => {
-                    serde_json::json!({"op": "remove", "path": ["polygons", index, "vertices", vertices.len() - 1]})
-                }
-                (_, None) => return Err(bad()),
-            };
-            return self::edit(lang, text, &change.to_string());
+                (false, Some(_)) => vec![Edit::Remove { path: path(vertices.len() - 1) }],
+                (false, None) => return Err(bad()),
+            }
         }
         Edit::AddPolygon => {
             let (width, height) = size()?;
@@ -150,21 +144,33 @@ pub fn edit(lang: Lang, text: &str, edit: &str) -> Result<String, String> {
             let polygon = serde_json::json!({"value": 1, "vertices": [
                 [at(1, width), at(1, height), 1], [at(2, width), at(3, height), 1], [at(3, width), at(1, height), 1]]});
             let count = scene.get("polygons").and_then(Value::as_array).map_or(0, Vec::len);
-            let insert = serde_json::json!({"op": "insert", "path": ["polygons", count], "value": polygon.to_string()});
-            return self::edit(lang, text, &insert.to_string());
+            vec![Edit::Insert { path: vec!["polygons".into(), count.into()], value: polygon.to_string() }]
         }
+        plain => vec![plain],
     };
-    let mut at = &mut scene;
+    for edit in &edits {
+        apply(&mut scene, edit).ok_or_else(bad)?;
+    }
+    Ok(layout(&scene))
+}
+
+/// A plain edit (set, insert, remove) carried out on `scene`; `None` where it does not fit.
+fn apply(scene: &mut Value, edit: &Edit) -> Option<()> {
+    let value_of =
+        |text: &str| serde_json::from_str(text.trim()).unwrap_or_else(|_| Value::String(text.trim().to_string()));
+    let (last, path) = match edit {
+        Edit::Set { path, .. } | Edit::Insert { path, .. } | Edit::Remove { path } => path.split_last()?,
+        _ => return None,
+    };
+    let mut at = scene;
     for step in path {
         at = match (at, step) {
-            (Value::Object(map), Value::String(key)) => map.get_mut(key).ok_or_else(bad)?,
-            (Value::Array(list), Value::Number(n)) => {
-                list.get_mut(n.as_u64().ok_or_else(bad)? as usize).ok_or_else(bad)?
-            }
-            _ => return Err(bad()),
+            (Value::Object(map), Value::String(key)) => map.get_mut(key)?,
+            (Value::Array(list), Value::Number(n)) => list.get_mut(usize::try_from(n.as_u64()?).ok()?)?,
+            _ => return None,
         };
     }
-    match (at, last, &edit) {
+    match (at, last, edit) {
         (Value::Object(map), Value::String(key), Edit::Set { value, .. }) => {
             map.insert(key.clone(), value_of(value));
         }
@@ -172,17 +178,17 @@ pub fn edit(lang: Lang, text: &str, edit: &str) -> Result<String, String> {
             map.remove(key);
         }
         (Value::Array(list), Value::Number(n), edit) => {
-            let index = n.as_u64().ok_or_else(bad)? as usize;
+            let index = usize::try_from(n.as_u64()?).ok()?;
             match edit {
-                Edit::Set { value, .. } => *list.get_mut(index).ok_or_else(bad)? = value_of(value),
+                Edit::Set { value, .. } => *list.get_mut(index)? = value_of(value),
                 Edit::Insert { value, .. } => list.insert(index.min(list.len()), value_of(value)),
                 Edit::Remove { .. } if index < list.len() => drop(list.remove(index)),
-                _ => return Err(bad()),
+                _ => return None,
             }
         }
-        _ => return Err(bad()),
+        _ => return None,
     }
-    Ok(layout(&scene))
+    Some(())
 }
 
 /// The order of a scene's keys as the page writes them (the others follow, in order of name).

@@ -38,8 +38,8 @@ use crate::words::Lang;
 mod shown;
 mod site;
 pub use shown::{
-    Acted, At, Checkable, ClearedTo, DrawnSettings, KeyAction, LessonView, PolygonView, QUIZ_KINDS, RasterRow,
-    SceneView, keys, lesson_view, quiz_mode, scene_view,
+    Acted, At, Checkable, ClearedTo, DrawnSettings, ErrorAt, Failed, KeyAction, LessonView, PolygonView, QUIZ_KINDS,
+    RasterRow, SceneView, keys, lesson_view, quiz_mode, scene_view,
 };
 pub use site::{one_file_page, site_files, step_page, write_site};
 
@@ -63,27 +63,30 @@ fn too_long(lang: Lang, bytes: usize) -> String {
     PageLimit::Bytes { path: None, bytes }.message(lang)
 }
 
+/// [`Failed`] as the JSON the page reads.
+fn failed(error: String) -> Value {
+    Failed::because(error).value()
+}
+
 /// The scene read from `text`, or its error worded as the command line words
-/// it, with where the page marks it (`at`): `{"polygon": i}` (0-based) for a
-/// polygon, `{"key": "width"}` for a setting, `{"line": n, "text"}` (from 1)
-/// for JSON that does not read.
+/// it ([`Failed`]), with where the page marks it ([`ErrorAt`]).
 fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
-    let refused = |too_large: PageLimit| json!({"ok": false, "error": too_large.message(lang), "at": null});
+    let refused = |too_large: PageLimit| failed(too_large.message(lang));
     // The page's limits, before the scene is read (reading is the work they spare)…
     check_text(text, None).map_err(refused)?;
     let scene = Scene::from_json(lang, text, Path::new(&scene_name(lang))).map_err(|error| {
         let at = match &error {
-            crate::error::Error::Polygon { index, .. } => json!({"polygon": index}),
-            crate::error::Error::Setting { key, .. } => json!({"key": key}),
+            crate::error::Error::Polygon { index, .. } => Some(ErrorAt::Polygon { polygon: *index }),
+            crate::error::Error::Setting { key, .. } => Some(ErrorAt::Setting { key: key.to_string() }),
             crate::error::Error::SceneFormat { line: Some(line), .. } => {
                 let shown = text.lines().nth(line.saturating_sub(1)).unwrap_or_default();
                 let shown = crate::words::printable(shown).into_owned();
                 let said = words!(lang, "error-at-line", line = *line, text = shown.clone());
-                json!({"line": line, "text": shown, "said": said})
+                Some(ErrorAt::Line { line: *line, text: shown, said })
             }
-            _ => Value::Null,
+            _ => None,
         };
-        json!({"ok": false, "error": error.message(lang), "at": at})
+        Failed { at, ..Failed::because(error.message(lang)) }.value()
     })?;
     // …and what its polygons reach, before anything is drawn.
     check_reach(&scene, None).map_err(refused)?;
@@ -125,17 +128,17 @@ pub fn after(lang: Lang, text: &str, number: usize) -> Value {
 pub fn after_of(lang: Lang, scene: &Scene, number: usize) -> Value {
     let cells = u64::from(scene.width) * u64::from(scene.height);
     let Some(index) = number.checked_sub(1).filter(|index| *index < scene.polygons.len()) else {
-        return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
+        return failed(words!(lang, "no-such-polygon"));
     };
     if cells > MAX_SHOWN_CELLS || scene.polygons.len() > MAX_SHOWN_POLYGONS {
-        return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
+        return failed(words!(lang, "no-such-polygon"));
     }
     let mut simulation = Simulation::new(scene);
     let mut last = None;
     for _ in 0..=index {
         last = simulation.draw_next_counted(&mut Unobserved);
     }
-    let Some(drawn) = last else { return json!({"ok": false, "error": words!(lang, "no-such-polygon")}) };
+    let Some(drawn) = last else { return failed(words!(lang, "no-such-polygon")) };
     let (frame, depth) = buffer_data(simulation.buffers(), BufferForm::Printed);
     json!({
         "ok": true,
@@ -158,10 +161,10 @@ pub fn figure(lang: Lang, text: &str) -> Value {
 /// [`figure`] of a scene already read (the lesson's: one reading for every view).
 pub fn figure_of(lang: Lang, scene: &Scene) -> Value {
     let Some(last) = scene.polygons.len().checked_sub(1) else {
-        return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
+        return failed(words!(lang, "no-such-polygon"));
     };
     if u64::from(scene.width) * u64::from(scene.height) > MAX_PRINTED_CELLS {
-        return json!({"ok": false, "error": words!(lang, "limit-figure-cells", cells = MAX_PRINTED_CELLS.to_string())});
+        return failed(words!(lang, "limit-figure-cells", cells = MAX_PRINTED_CELLS.to_string()));
     }
     let mut simulation = Simulation::new(scene);
     simulation.finish(&mut Unobserved);
@@ -240,7 +243,7 @@ pub fn lesson_acted(lang: Lang, lesson: &mut Lesson, command: &str) -> Result<Ac
         None => None,
     };
     let Some(command) = command else {
-        return Err(json!({"ok": false, "error": words!(lang, "edit-does-not-fit")}));
+        return Err(failed(words!(lang, "edit-does-not-fit")));
     };
     let said = lesson.act(lang, command);
     let kind = match &said {
@@ -277,18 +280,18 @@ pub fn check(lang: Lang, text: &str, number: usize, buffer: Buffer, typed: &str)
         Err(error) => return error,
     };
     let Some(after) = number.checked_sub(1).filter(|index| *index < scene.polygons.len()) else {
-        return json!({"ok": false, "error": words!(lang, "no-such-polygon")});
+        return failed(words!(lang, "no-such-polygon"));
     };
     let answer = match answer_from_text(lang, typed, &scene, buffer) {
         Ok(answer) => answer,
-        Err(message) => return json!({"ok": false, "error": message}),
+        Err(message) => return failed(message),
     };
     let name = words!(lang, "column-your-answer");
     let answers = vec![(buffer, Path::new(&name), answer)];
     let report =
         match crate::teach::check::check(lang, &scene, Path::new(&scene_name(lang)), after, answers, Arith::Exact) {
             Ok(report) => report,
-            Err(error) => return json!({"ok": false, "error": error.message(lang)}),
+            Err(error) => return failed(error.message(lang)),
         };
     let answer = &report.answers[0];
     let wrong: Vec<Value> = answer
@@ -322,11 +325,11 @@ pub fn answer_file(lang: Lang, text: &str, buffer: Buffer, typed: &str, student:
     };
     if student.is_empty() || !crate::teach::course::roster::nameable(student) {
         let identity = crate::words::printable(student).into_owned();
-        return json!({"ok": false, "error": words!(lang, "manifest-unnameable", place = scene_name(lang), identity = identity)});
+        return failed(words!(lang, "manifest-unnameable", place = scene_name(lang), identity = identity));
     }
     let answer = match answer_from_text(lang, typed, &scene, buffer) {
         Ok(answer) => answer,
-        Err(message) => return json!({"ok": false, "error": message}),
+        Err(message) => return failed(message),
     };
     let code: String = code.chars().filter(|c| c.is_ascii_alphanumeric() || *c == '-').take(7).collect();
     let mut file = format!("# variant {code}\n");
@@ -355,7 +358,7 @@ pub fn explain(lang: Lang, text: &str, x: u32, y: u32) -> Value {
 /// the lesson is open: any pixel's history would answer it or a later one.
 pub fn lesson_explain(lang: Lang, lesson: &mut Lesson, x: &str, y: &str) -> Value {
     if lesson.open_questions() > 0 {
-        return json!({"ok": false, "hidden": true, "error": words!(lang, "lesson-hidden-until-answered")});
+        return Failed { hidden: true, ..Failed::because(words!(lang, "lesson-hidden-until-answered")) }.value();
     }
     explain_typed(lang, lesson.scene(), x, y)
 }
@@ -367,9 +370,10 @@ pub fn lesson_explain(lang: Lang, lesson: &mut Lesson, x: &str, y: &str) -> Valu
 pub fn explain_typed(lang: Lang, scene: &Scene, x: &str, y: &str) -> Value {
     let coordinate = |text: &str| {
         let digits = !text.is_empty() && text.len() <= 20 && text.bytes().all(|b| b.is_ascii_digit());
-        digits.then(|| text.parse::<u64>().ok()).flatten().ok_or_else(|| {
-            json!({"ok": false, "error": words!(lang, "usage-pixel-coordinate", text = crate::words::token(lang, text))})
-        })
+        digits
+            .then(|| text.parse::<u64>().ok())
+            .flatten()
+            .ok_or_else(|| failed(words!(lang, "usage-pixel-coordinate", text = crate::words::token(lang, text))))
     };
     let (x, y) = match (coordinate(x), coordinate(y)) {
         (Ok(x), Ok(y)) => (x, y),
@@ -383,7 +387,7 @@ pub fn explain_typed(lang: Lang, scene: &Scene, x: &str, y: &str) -> Value {
                 &crate::observe::explain::history::PixelOutside { x, y, width, height },
                 lang,
             );
-            json!({"ok": false, "error": error})
+            failed(error)
         }
     }
 }
@@ -392,7 +396,7 @@ pub fn explain_typed(lang: Lang, scene: &Scene, x: &str, y: &str) -> Value {
 pub fn explain_of(lang: Lang, scene: &Scene, x: u32, y: u32) -> Value {
     match history(scene, (x, y), Extras::default()) {
         Ok(history) => json!({"ok": true, "text": history.text(lang, scene, Path::new(&scene_name(lang)))}),
-        Err(error) => json!({"ok": false, "error": error.message(lang)}),
+        Err(error) => failed(error.message(lang)),
     }
 }
 

@@ -133,6 +133,56 @@ pub struct RasterRow {
     pub cells: Vec<u32>,
 }
 
+/// What the page gets instead of what it asked for: why not, in words.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Failed {
+    /// Always false: nothing but the reason came back.
+    pub ok: bool,
+    /// Why not, in the page's language.
+    pub error: String,
+    /// Where the scene's text is wrong, for the page to mark (a scene's error only).
+    pub at: Option<ErrorAt>,
+    /// Whether it is an open question that hides what was asked for.
+    pub hidden: bool,
+}
+
+/// Where a scene's text is wrong.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(untagged)]
+pub enum ErrorAt {
+    /// A polygon (0-based, the page's table of it).
+    Polygon {
+        /// Its index.
+        polygon: usize,
+    },
+    /// A setting, by its key.
+    Setting {
+        /// The key.
+        key: String,
+    },
+    /// JSON that does not read: the line (from 1), its text, and both worded.
+    Line {
+        /// The line's number.
+        line: usize,
+        /// Its text, printable.
+        text: String,
+        /// "line N: …".
+        said: String,
+    },
+}
+
+impl Failed {
+    /// The page told why not.
+    pub fn because(error: String) -> Failed {
+        Failed { ok: false, error, at: None, hidden: false }
+    }
+
+    /// As the JSON the page reads.
+    pub fn value(&self) -> serde_json::Value {
+        serde_json::to_value(self).unwrap_or_default()
+    }
+}
+
 /// The scene's view of `scene`.
 pub fn scene_view(lang: Lang, scene: &Scene) -> SceneView {
     let cells = u64::from(scene.width) * u64::from(scene.height);
@@ -214,7 +264,7 @@ pub fn scene_view(lang: Lang, scene: &Scene) -> SceneView {
 
 /// Rows top first, each with its pixel y.
 fn raster_rows(height: u32, rows: Vec<Vec<u32>>) -> Vec<RasterRow> {
-    (rows.into_iter().enumerate()).map(|(i, cells)| RasterRow { y: height - 1 - i as u32, cells }).collect()
+    (rows.into_iter().enumerate()).map(|(i, cells)| RasterRow { y: crate::raster::row_y(height, i), cells }).collect()
 }
 
 /// Everything the page shows of the lesson now, already cut to what may be
@@ -344,7 +394,12 @@ pub fn lesson_view(lang: Lang, lesson: &mut Lesson) -> LessonView {
         _ => Vec::new(),
     };
     LessonView {
-        at: Some(At { polygon: view.stop.polygon + 1, row: view.row, line: f64::from(height - view.row) - 0.5 }),
+        // The row's centre line: halfway down its printed row.
+        at: Some(At {
+            polygon: view.stop.polygon + 1,
+            row: view.row,
+            line: crate::raster::printed_row(height, view.row) as f64 + 0.5,
+        }),
         heading: view.heading,
         slope: view.slope,
         scanline: view.scanline,
@@ -440,6 +495,14 @@ mod tests {
             lesson.act(Lang::En, crate::teach::step::lesson::Command::Next);
         }
         snapshot("playground_lesson_view_end", &lesson_view(Lang::En, &mut lesson));
+    }
+
+    /// What the page gets instead of a view: the reason, and where the scene's text is wrong.
+    #[test]
+    fn a_failure_says_why_and_where() {
+        let failed = crate::teach::playground::view(Lang::En, "{\n  \"width\": 4,\n  \"polygons\": [\n}");
+        assert_eq!((failed["ok"].as_bool(), failed["at"]["line"].as_u64()), (Some(false), Some(4)), "{failed}");
+        snapshot("playground_failed", &failed);
     }
 
     /// The page's keys are the lesson's, every one.
