@@ -27,7 +27,7 @@ use zsim::{PixelRect, RasterSink, Scratch, rasterize};
 fn plain_scene() -> Scene {
     let spec =
         RandomScene { count: 2000, seed: 1, width: 256, height: 256, max_size: 24, frame_bits: 8, depth_bits: 16 };
-    Scene::from_json(zsim::Lang::En, &spec.json(), Path::new("random.json")).expect("a valid random scene")
+    Scene::from_json(&spec.json(), Path::new("random.json")).expect("a valid random scene")
 }
 
 /// The core alone: the book's depth test and store on plain vectors.

@@ -29,7 +29,7 @@ use zsim::{Observer, PixelEvent, Recorder, Unobserved};
 
 fn random(count: usize, side: u32, max_size: u32, seed: u64) -> Scene {
     let spec = RandomScene { count, seed, width: side, height: side, max_size, frame_bits: 8, depth_bits: 24 };
-    Scene::from_json(zsim::Lang::En, &spec.json(), Path::new("random.json")).expect("a valid random scene")
+    Scene::from_json(&spec.json(), Path::new("random.json")).expect("a valid random scene")
 }
 
 fn pixels(scene: &Scene) -> u64 {
@@ -39,8 +39,8 @@ fn pixels(scene: &Scene) -> u64 {
 }
 
 fn arithmetic(c: &mut Criterion) {
-    let scenes = accuracy::scenes(zsim::Lang::En, &AccuracyRequest { seed: 1, width: 256, height: 256, scenes: 2 })
-        .expect("the accuracy set");
+    let scenes =
+        accuracy::scenes(&AccuracyRequest { seed: 1, width: 256, height: 256, scenes: 2 }).expect("the accuracy set");
     let mut group = c.benchmark_group("arithmetic on the accuracy set");
     group.sample_size(10);
     for mode in [Arith::Exact, Arith::F32Incremental, Arith::F32Edge] {

@@ -18,6 +18,11 @@ pub enum Error {
         /// What the system said.
         source: std::io::Error,
     },
+    /// A text file that is not UTF-8.
+    NotText {
+        /// The file.
+        path: PathBuf,
+    },
     /// An input that is not a regular file (or a symbolic link where none is
     /// followed): refused before anything is read.
     NotRegular {
@@ -48,25 +53,18 @@ pub enum Error {
         /// What the system said.
         source: std::io::Error,
     },
-    /// The scene is not JSON of the scene format: bad syntax, a wrong type, an
-    /// unknown key or effect, or a number that isn't one.
+    /// A course's file (a BUET case, a CS 418 report's PNG, a tinyrenderer
+    /// model) is not of its format: its reader words what is wrong. A scene
+    /// file's problems are facts of their own
+    /// ([`crate::scene::file::refused::SceneRefused`]).
     SceneFormat {
-        /// The scene file.
+        /// The file.
         path: PathBuf,
-        /// Where in the file, e.g. `polygon 2: vertices[0][1]`.
+        /// Where in the file, e.g. `line 3`.
         location: String,
         /// The file's line where it is (from 1), where known.
         line: Option<usize>,
         /// What is wrong.
-        message: String,
-    },
-    /// A scene-wide setting is out of range.
-    Setting {
-        /// The scene file.
-        path: PathBuf,
-        /// The key, e.g. `frame_bits`.
-        key: &'static str,
-        /// What is wrong and what is allowed.
         message: String,
     },
     /// One polygon is unusable.
@@ -242,6 +240,9 @@ impl Error {
             Error::Read { path, source } => {
                 words!(lang, "error-read", path = shown_path(path), reason = crate::words::io_reason(lang, source))
             }
+            Error::NotText { path } => {
+                words!(lang, "error-read", path = shown_path(path), reason = words!(lang, "error-not-utf8"))
+            }
             Error::NotRegular { path, kind } => {
                 let kind = match kind {
                     FileKind::Directory => words!(lang, "file-kind-directory"),
@@ -269,7 +270,6 @@ impl Error {
                     format!("{}: {location}: {message}", shown_path(path))
                 }
             }
-            Error::Setting { path, key, message } => format!("{}: {key}: {message}", shown_path(path)),
             Error::Polygon { origin, index, name, problem } => words!(
                 lang,
                 "error-polygon",

@@ -87,7 +87,6 @@
 //! use zsim::{Lang, Scene, Simulation, Unobserved};
 //!
 //! let scene = Scene::from_json(
-//!     Lang::En,
 //!     r#"{"width": 4, "height": 3, "polygons": [
 //!         {"value": 1, "vertices": [[0, 0, 5], [4, 0, 5], [0, 3, 5]]}]}"#,
 //!     Path::new("inline.json"),
@@ -99,6 +98,15 @@
 //!     vec![1, 1, 0, 0],
 //!     vec![1, 1, 1, 0],
 //! ]);
+//!
+//! // A scene that is not read is refused as facts, worded where it is shown.
+//! let error = Scene::from_json(r#"{"width": 0, "polygons": []}"#, Path::new("bad.json")).unwrap_err();
+//! let refused = error.refused::<zsim::SceneRefused>().unwrap();
+//! assert_eq!(
+//!     refused.problem,
+//!     zsim::SceneProblem::Setting { key: "width", problem: zsim::SettingProblem::SideZero }
+//! );
+//! assert_eq!(error.message(Lang::En), "bad.json: width: must be at least 1 pixel");
 //! ```
 #![warn(missing_docs)]
 #![warn(clippy::print_stdout, clippy::print_stderr)]
@@ -145,6 +153,7 @@ pub use raster::sink::{PixelRect, RasterSink};
 pub use raster::{printed_row, row_y};
 pub use rules::{ColumnRule, Compare, DepthStore, Preset, RowRule, Rules, Sample};
 pub use scene::random::{RandomScene, memory};
+pub use scene::refused::{FormatProblem, JsonKind, MissingComma, Place, SceneProblem, SceneRefused, SettingProblem};
 pub use scene::{Antialias, MAX_SIDE, NoSuchPolygon, Polygon, Scene, max_for_bits};
 pub use simulate::buffer::Buffers;
 pub use simulate::events::{Fate, Observer, Outcome, PixelEvent, PolygonEvent, ScanlineEvent, Unobserved};

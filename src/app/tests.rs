@@ -13,8 +13,7 @@ fn lesson(scene: Scene, start: Option<Stop>, mode: Option<QuizMode>) -> Lesson {
 }
 
 fn book() -> Scene {
-    Scene::load(zsim::Lang::En, std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")))
-        .unwrap()
+    Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
 }
 
 /// The screen as text, one line a row.
@@ -151,7 +150,7 @@ mod random_keys {
             keys in prop::collection::vec(key(), 0..60),
         ) {
             let path = format!("{}/examples/{example}.json", env!("CARGO_MANIFEST_DIR"));
-            let scene = Scene::load(zsim::Lang::En, std::path::Path::new(&path)).unwrap();
+            let scene = Scene::load(std::path::Path::new(&path)).unwrap();
             let mut lesson = lesson(scene, None, quiz);
             let mut app = App::new(&mut lesson, zsim::Lang::En);
             screen(&mut app, size.0, size.1);

@@ -47,11 +47,11 @@ pub fn run(lang: zsim::Lang, args: &AccuracyArgs, out: &mut dyn Write) -> Result
         return Err(super::flags::Flag::ScenesOutOfRange.into());
     }
     let settings = AccuracyRequest { seed: args.seed, width: args.size.0, height: args.size.1, scenes: args.scenes };
-    let scenes = accuracy::scenes(lang, &settings)?;
+    let scenes = accuracy::scenes(&settings)?;
     let origin = std::time::Instant::now();
     let clock = || origin.elapsed();
     let modes = accuracy::modes(&scenes, &clock)?;
-    let bits = accuracy::bits_sweep(lang, &settings, &clock)?;
+    let bits = accuracy::bits_sweep(&settings, &clock)?;
     let exact = modes[0].clone();
     let ns = |row: &accuracy::ModeRow| row.time.as_nanos() as f64 / exact.pixels.max(1) as f64;
     if args.format == Format::Json {

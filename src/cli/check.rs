@@ -63,7 +63,7 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
     if let Some(path) = &args.stray {
         return Err(super::flags::Flag::AnswerWithoutBuffer { path: path.clone() }.into());
     }
-    let scene = Scene::load(lang, &args.scene)?;
+    let scene = Scene::load(&args.scene)?;
     if args.frame.is_none() && args.depth.is_none() && args.submission.is_none() {
         return Err(super::flags::Flag::CheckNeedsAnswer.into());
     }

@@ -21,7 +21,7 @@ use super::{Failure, Finish, emit, emit_then};
 /// `zsim exercise --roster FILE -o DIR`.
 pub fn exercise(lang: Lang, args: &ExerciseArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     let roster_path = args.roster.as_deref().expect("called with --roster");
-    let roster = zsim::course::roster::load(lang, roster_path, args.identity.as_deref())?;
+    let roster = zsim::course::roster::load(roster_path, args.identity.as_deref())?;
     let exercise = super::exercise::spec(args)?;
     let rules =
         args.rules.as_deref().map_or_else(|| Ok(default_rules(&exercise.hard)), zsim::course::fair::parse_rules)?;
@@ -124,11 +124,11 @@ pub fn grade(lang: Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Finish
         compare: args.compare.as_deref(),
         gradebook: (args.identity, args.item.as_deref(), args.points),
     };
-    let loaded = zsim::course::manifest::load(lang, args.variants)?;
+    let loaded = zsim::course::manifest::load(args.variants)?;
     let plain = matches!(args.format, ReportFormat::Csv | ReportFormat::Json);
     let graded = grade_course(if plain { Lang::En } else { lang }, &loaded, args.class)?;
     let previous = match args.compare {
-        Some(path) => Some(read_previous(lang, path)?),
+        Some(path) => Some(read_previous(path)?),
         None => None,
     };
     let changes = previous.as_ref().map(|p| changes(&loaded.manifest, &graded, p)).unwrap_or_default();

@@ -47,7 +47,7 @@ pub fn check_pixel(scene: &Scene, (x, y): (u32, u32)) -> Result<(), Error> {
 }
 
 pub fn run(lang: zsim::Lang, args: &ExplainArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let scene = Scene::load(lang, &args.scene)?;
+    let scene = Scene::load(&args.scene)?;
     check_pixel(&scene, args.pixel)?;
     let extras = zsim::history::Extras { inside: args.inside, arith: args.arith, segments: args.segments };
     let history = zsim::history::history(&scene, args.pixel, extras)?;

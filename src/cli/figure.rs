@@ -47,7 +47,7 @@ pub fn run(lang: zsim::Lang, args: &FigureArgs, out: &mut dyn Write) -> Result<F
     let Some(format) = zsim::picture::Format::of(&args.output) else {
         return Err(super::flags::Flag::FigureFormat { path: args.output.clone() }.into());
     };
-    let scene = Scene::load(lang, &args.scene)?;
+    let scene = Scene::load(&args.scene)?;
     if scene.width > MAX_FIGURE_SIDE || scene.height > MAX_FIGURE_SIDE {
         return Err(Error::from(zsim::picture::FigureRefused::TooLarge {
             path: args.scene.clone(),

@@ -72,7 +72,7 @@ pub fn run(lang: zsim::Lang, args: &GradeArgs, out: &mut dyn Write) -> Result<Fi
         return Err(super::flags::Flag::GradeFolders { variants: false }.into());
     };
     let args = &Plain { scene: scene_path.clone(), class: class.clone(), args };
-    let scene = Scene::load(lang, &args.scene)?;
+    let scene = Scene::load(&args.scene)?;
     if scene.polygons.is_empty() {
         return Err(Error::from(zsim::class::GradeRefused::NoPolygons { path: args.scene.clone() }).into());
     }

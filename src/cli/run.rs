@@ -106,7 +106,7 @@ pub fn run(lang: zsim::Lang, args: &RunArgs, out: &mut dyn Write) -> Result<Fini
         return Err(super::flags::Flag::TilesNeedFormatNone.into());
     }
     let reading = Instant::now();
-    let mut scene = Scene::load(lang, &args.scene)?;
+    let mut scene = Scene::load(&args.scene)?;
     let read_time = reading.elapsed();
     // `--after N`: the scene up to polygon N, shown as `--final` shows the last.
     if let Some(spec) = &args.after {

@@ -33,7 +33,7 @@ pub fn run(lang: zsim::Lang, args: &SpeedArgs, out: &mut dyn Write) -> Result<Fi
             value
         }
     };
-    let scene = Scene::load(lang, &args.scene)?;
+    let scene = Scene::load(&args.scene)?;
     let threads = args.threads as usize;
     let race = zsim::race::race(&scene, args.pairs as usize, args.tile, threads)?;
     let text = race.report(lang, &zsim::shown_path(&args.scene), &lp_threads);

@@ -108,8 +108,8 @@ enum QuizMode {
 }
 
 pub fn run(lang: zsim::Lang, args: &StepArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
-    let text = zsim::read_text(lang, &args.scene)?;
-    let scene = Scene::from_json(lang, &text, &args.scene)?;
+    let text = zsim::read_text(&args.scene)?;
+    let scene = Scene::from_json(&text, &args.scene)?;
     zsim::arith::check_supported(&scene, args.arith)?;
     let color = super::use_color();
     // The page's quiz is the playground's, which asks in exact arithmetic.

@@ -443,7 +443,7 @@ pub fn differences_text(lang: Lang, model: &Model, exact: &Render, size: i64) ->
 
 /// Reads the model (OBJ) at `path`; errors name the file and the line.
 pub fn load(lang: Lang, path: &std::path::Path) -> Result<Model, crate::error::Error> {
-    let text = crate::door::read_text(lang, path)?;
+    let text = crate::door::read_text(path)?;
     Model::parse(lang, &text).map_err(|e| crate::error::Error::SceneFormat {
         path: path.to_owned(),
         location: words!(lang, "tinyrenderer-line", line = e.line),

@@ -34,17 +34,14 @@ pub enum Links {
 /// Reads a whole input file as UTF-8, skipping a leading byte-order mark;
 /// `-` reads standard input, as Unix tools do. Every file zsim reads (scenes,
 /// answers, course files) comes through here or [`read_bytes`].
-pub fn read_text(lang: Lang, path: &Path) -> Result<String, Error> {
-    read_text_with(lang, path, Links::Follow)
+pub fn read_text(path: &Path) -> Result<String, Error> {
+    read_text_with(path, Links::Follow)
 }
 
 /// [`read_text`], refusing a symbolic link when `links` says so.
-pub fn read_text_with(lang: Lang, path: &Path, links: Links) -> Result<String, Error> {
+pub fn read_text_with(path: &Path, links: Links) -> Result<String, Error> {
     let bytes = read_bytes(path, links)?;
-    let mut text = String::from_utf8(bytes).map_err(|_| Error::Read {
-        path: path.to_owned(),
-        source: std::io::Error::new(std::io::ErrorKind::InvalidData, words!(lang, "error-not-utf8")),
-    })?;
+    let mut text = String::from_utf8(bytes).map_err(|_| Error::NotText { path: path.to_owned() })?;
     if text.starts_with('\u{feff}') {
         text.drain(..'\u{feff}'.len_utf8());
     }
@@ -310,7 +307,7 @@ fn open_without_blocking(path: &Path) -> std::io::Result<std::fs::File> {
     options.open(path)
 }
 
-#[cfg(test)]
+#[cfg(all(test, unix))]
 mod tests {
     use super::*;
 

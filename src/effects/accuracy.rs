@@ -7,7 +7,6 @@
 //! them alike; the sweep's depths, the least of three runs each. Compare
 //! them as ratios.
 
-use crate::words::Lang;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::time::Duration;
@@ -116,7 +115,7 @@ fn hard_scenes(settings: &AccuracyRequest) -> Vec<String> {
 }
 
 /// The accuracy set: random scenes of several triangle sizes, then the hard cases.
-pub fn scenes(lang: Lang, settings: &AccuracyRequest) -> Result<Vec<Scene>, Error> {
+pub fn scenes(settings: &AccuracyRequest) -> Result<Vec<Scene>, Error> {
     let mut rng = SplitMix64::new(settings.seed);
     let mut texts = Vec::new();
     let area = u64::from(settings.width) * u64::from(settings.height);
@@ -128,7 +127,7 @@ pub fn scenes(lang: Lang, settings: &AccuracyRequest) -> Result<Vec<Scene>, Erro
         }
     }
     texts.extend(hard_scenes(settings));
-    texts.iter().map(|t| Scene::from_json(lang, t, Path::new("(accuracy set)"))).collect()
+    texts.iter().map(|t| Scene::from_json(t, Path::new("(accuracy set)"))).collect()
 }
 
 /// A clock the caller lends: the time since a moment of its choosing. The
@@ -240,11 +239,10 @@ fn coplanar_scene(width: u32, height: u32, bits: u32) -> String {
 }
 
 /// The depth-bits sweep: 4, 8, 16, 24 and 32 bits.
-pub fn bits_sweep(lang: Lang, settings: &AccuracyRequest, clock: Clock<'_>) -> Result<Vec<BitsRow>, Error> {
+pub fn bits_sweep(settings: &AccuracyRequest, clock: Clock<'_>) -> Result<Vec<BitsRow>, Error> {
     let mut rows = Vec::new();
     for bits in [4u32, 8, 16, 24, 32] {
-        let scene =
-            Scene::from_json(lang, &coplanar_scene(settings.width, settings.height, bits), Path::new("(coplanar)"))?;
+        let scene = Scene::from_json(&coplanar_scene(settings.width, settings.height, bits), Path::new("(coplanar)"))?;
         let ((buffers, _), time) = timed(clock, || arith::run(&scene, Arith::Exact))?;
         // The nearer polygon by world depth: A where x ≥ y at the centre (ties keep A, drawn first), B elsewhere.
         let mut z_fighting = 0;

@@ -645,7 +645,8 @@ mod tests {
 
     /// The branch-free form of every test decides as the test does, for
     /// depths around a stored level (whole parts and remainders over 4).
-    #[test]
+    #[cfg_attr(not(target_family = "wasm"), test)]
+    #[cfg_attr(target_family = "wasm", wasm_bindgen_test::wasm_bindgen_test)]
     fn branch_free_tests_are_the_tests() {
         use num_rational::Ratio;
         let tests = [DepthTest::Greater, DepthTest::Less, DepthTest::GreaterEqual, DepthTest::LessEqual];

@@ -14,13 +14,20 @@
 //!
 //! Numbers are JSON integers, JSON decimals read exactly (`2.1` is `21/10`),
 //! or strings holding a fraction (`"5/2"`) or a decimal (`"2.5"`). Unknown
-//! keys anywhere are errors.
+//! keys anywhere are errors. A file that is not read is refused as facts
+//! ([`refused::SceneRefused`]), worded only where it is shown: the scene is
+//! read without a language.
 
 pub mod clip_space;
 mod file;
 pub(crate) mod pages;
 pub mod perspective;
 pub mod random;
+
+/// A scene file that is not read, as facts ([`refused::SceneRefused`]).
+pub mod refused {
+    pub use super::file::refused::*;
+}
 
 use crate::words::Lang;
 use std::borrow::Cow;
@@ -403,14 +410,14 @@ impl Scene {
     }
 
     /// Reads and validates a scene file.
-    pub fn load(lang: Lang, path: &Path) -> Result<Scene, Error> {
-        let text = crate::door::read_text(lang, path)?;
-        Scene::from_json(lang, &text, path)
+    pub fn load(path: &Path) -> Result<Scene, Error> {
+        let text = crate::door::read_text(path)?;
+        Scene::from_json(&text, path)
     }
 
     /// Validates scene JSON; `path` is used in error messages only.
-    pub fn from_json(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
-        crate::scene::file::read(lang, text, path)
+    pub fn from_json(text: &str, path: &Path) -> Result<Scene, Error> {
+        crate::scene::file::read(text, path)
     }
 
     /// Finds a polygon by 1-based number or by name.
@@ -534,7 +541,7 @@ mod tests {
     }
 
     fn parse(text: &str) -> Result<Scene, String> {
-        Scene::from_json(Lang::En, text, Path::new("s.json")).map_err(|e| e.message(Lang::En))
+        Scene::from_json(text, Path::new("s.json")).map_err(|e| e.message(Lang::En))
     }
 
     #[test]

@@ -370,7 +370,7 @@ mod tests {
             RandomScene { count: 30, seed: 5, width: 300, height: 200, max_size: 40, frame_bits: 8, depth_bits: 16 };
         for test in ["greater", "less"] {
             let json = spec.json().replacen('{', &format!("{{\"depth_test\": \"{test}\", \"background\": 3, "), 1);
-            let scene = Scene::from_json(crate::Lang::En, &json, Path::new("redraw.json")).expect("a valid scene");
+            let scene = Scene::from_json(&json, Path::new("redraw.json")).expect("a valid scene");
             let mut fresh = Simulation::new(&scene);
             fresh.finish(&mut Unobserved);
             let mut reused = Simulation::new(&scene);

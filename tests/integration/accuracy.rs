@@ -10,7 +10,7 @@ use zsim::arith::{self, Arith};
 use crate::{snapshot, zsim};
 
 fn small_set() -> Vec<Scene> {
-    accuracy::scenes(zsim::Lang::En, &AccuracyRequest { seed: 1, width: 64, height: 64, scenes: 1 }).unwrap()
+    accuracy::scenes(&AccuracyRequest { seed: 1, width: 64, height: 64, scenes: 1 }).unwrap()
 }
 
 #[test]
@@ -49,8 +49,7 @@ fn f32_stepping_error_grows_with_span_length() {
     // f32 drifts from the per-pixel value, and the drift grows with the span.
     let worst = |width: u32| -> u32 {
         let far = format!("{}/3", 3_000_000 + width);
-        let scene = Scene::from_json(zsim::Lang::En,
-            &format!(
+        let scene = Scene::from_json(&format!(
                 r#"{{"width": {width}, "height": 1, "depth_bits": 24, "polygons": [{{"value": 1, "vertices": [[0, 0, 1000000], [{width}, 0, "{far}"], [{width}, 1, "{far}"], [0, 1, 1000000]]}}]}}"#
             ),
             Path::new("ramp.json"),
@@ -172,7 +171,7 @@ fn fixed_point_snapping_keeps_a_polygon_planar() {
     let quad = r#"{"width": 16, "height": 16, "polygons": [
         {"name": "quad", "value": 1, "vertices": [["1.001", "1.002", "2"], ["12.003", "1.5", "4.2"], ["13.1", "12.7", "7.9"], [2, "11.3", "3312392013/613380470"]]},
         {"name": "triangle", "value": 2, "vertices": [["3.001", "3.002", "9"], ["8.003", "3.5", "9.5"], ["5.1", "9.7", "10.003"]]}]}"#;
-    let scene = Scene::from_json(zsim::Lang::En, quad, Path::new("quad.json")).unwrap();
+    let scene = Scene::from_json(quad, Path::new("quad.json")).unwrap();
     let snapped = arith::snap(&scene, 8).expect("drawn, not refused as not planar");
     let plane = scene.polygons[0].geometry().plane();
     let big = |v: &zsim::Exact| v.to_big();

@@ -61,8 +61,7 @@ fn the_recorded_step_page_is_clicked_through_and_asks_nothing() {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let page = dir.join("step.html");
-    let scene =
-        Scene::load(zsim::Lang::En, &Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/rogers.json")).unwrap();
+    let scene = Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/rogers.json")).unwrap();
     let recorded =
         zsim::page::page(zsim::Lang::En, &mut Stepper::new(&scene, zsim::arith::Arith::Exact), "rogers.json");
     for judging in ["BigInt", "function judge", "<input"] {

@@ -244,7 +244,7 @@ fn an_exercise_contains_every_hard_case_asked_for_and_its_key_checks() {
         }
         let run = zsim(&args);
         assert_eq!((run.code, run.stderr.as_str()), (0, ""), "seed {seed}");
-        let scene = Scene::load(zsim::Lang::En, &dir.join("scene.json")).unwrap();
+        let scene = Scene::load(&dir.join("scene.json")).unwrap();
         let present = cases_in_trace(&scene);
         for case in hard.split(',').filter(|c| !c.is_empty()) {
             assert!(present.contains(&case), "seed {seed}: {case} is not in the trace; found {present:?}");
@@ -383,7 +383,7 @@ fn a_book_style_exercise_has_no_sliver_and_no_depth_outside_the_range() {
         alone["polygons"] = serde_json::json!([scene["polygons"][index].clone()]);
         alone["depth_test"] = "always".into();
         let json = serde_json::to_string(&alone).unwrap();
-        let scene = zsim::Scene::from_json(zsim::Lang::En, &json, Path::new("alone.json")).unwrap();
+        let scene = zsim::Scene::from_json(&json, Path::new("alone.json")).unwrap();
         let mut simulation = zsim::Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
         simulation.buffers().frame_rows().iter().flatten().filter(|v| **v != 0).count()

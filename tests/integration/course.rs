@@ -103,7 +103,7 @@ fn every_variant_holds_each_asked_case_once_and_tells_each_wrong_rule_apart() {
     let run = class(&dir, CANVAS, &[]);
     assert_eq!(run.code, 0, "{}", run.stderr);
     let text = std::fs::read_to_string(dir.join("out/variants.json")).unwrap();
-    let loaded = zsim::course::manifest::read(zsim::Lang::En, &text, Path::new("variants.json")).unwrap();
+    let loaded = zsim::course::manifest::read(&text, Path::new("variants.json")).unwrap();
     let settings = &loaded.manifest.settings;
     assert_eq!(settings.hard, ["vertex-on-scanline", "centre-on-edge", "half-depth", "hidden"]);
     let (mut scenes, mut keys, mut codes) = (BTreeSet::new(), BTreeSet::new(), BTreeSet::new());

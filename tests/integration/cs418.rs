@@ -373,7 +373,7 @@ fn imported_case_draws_as_the_course(dir: &Path, name: &str) -> bool {
     // Textures do not change what is drawn where; a stand-in will do.
     let case = case_with_stand_in(dir, name, [255, 255, 255, 255]);
     let json = zsim::cs418::import::scene_json(zsim::Lang::En, &case).unwrap();
-    let scene = match zsim::Scene::from_json(zsim::Lang::En, &json, Path::new("imported.json")) {
+    let scene = match zsim::Scene::from_json(&json, Path::new("imported.json")) {
         Ok(scene) => scene,
         Err(error) => {
             assert!(
@@ -582,7 +582,7 @@ mod never_a_panic {
             let Ok(json) = zsim::cs418::import::scene_json(zsim::Lang::En, &case) else {
                 return Err(TestCaseError::reject("not importable"));
             };
-            let Ok(scene) = zsim::Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("imported.json")) else {
+            let Ok(scene) = zsim::Scene::from_json(&json, std::path::Path::new("imported.json")) else {
                 return Err(TestCaseError::reject("not a scene"));
             };
             let exact = render(zsim::Lang::En, &case, Arithmetic::Exact).unwrap();

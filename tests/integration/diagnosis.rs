@@ -17,7 +17,7 @@ fn rogers_text() -> String {
 
 /// The buffers (rows top first) of a scene given as JSON, after polygon `last` (all when `None`).
 fn drawn(json: &str, last: Option<usize>) -> (Matrix, Matrix) {
-    let scene = Scene::from_json(zsim::Lang::En, json, Path::new("s.json")).unwrap();
+    let scene = Scene::from_json(json, Path::new("s.json")).unwrap();
     let mut simulation = Simulation::new(&scene);
     match last {
         Some(last) => simulation.draw_through(last, &mut Unobserved),
@@ -32,7 +32,7 @@ fn rogers_with(setting: &str) -> String {
 }
 
 fn named(scene_json: &str, frame: &Matrix, depth: &Matrix) -> (Misconception, usize, usize) {
-    let scene = Scene::from_json(zsim::Lang::En, scene_json, Path::new("s.json")).unwrap();
+    let scene = Scene::from_json(scene_json, Path::new("s.json")).unwrap();
     let last = scene.polygons.len() - 1;
     let (frame, depth) = (Answer::complete(frame.clone()), Answer::complete(depth.clone()));
     let found = diagnose(&scene, last, Some(&frame), Some(&depth)).expect("a misconception is named");
@@ -139,7 +139,7 @@ fn wrapping_instead_of_saturating_is_named() {
 #[test]
 fn a_right_answer_or_a_few_slips_name_nothing() {
     let rogers = rogers_text();
-    let scene = Scene::from_json(zsim::Lang::En, &rogers, Path::new("s.json")).unwrap();
+    let scene = Scene::from_json(&rogers, Path::new("s.json")).unwrap();
     let (frame, mut depth) = drawn(&rogers, None);
     let read = |m: &Matrix| Some(Answer::complete(m.clone()));
     assert_eq!(diagnose(&scene, 1, read(&frame).as_ref(), read(&depth).as_ref()), None);
@@ -153,7 +153,7 @@ fn a_right_answer_or_a_few_slips_name_nothing() {
 #[test]
 fn a_blank_sheet_names_no_misconception() {
     let rogers = rogers_text();
-    let scene = Scene::from_json(zsim::Lang::En, &rogers, Path::new("s.json")).unwrap();
+    let scene = Scene::from_json(&rogers, Path::new("s.json")).unwrap();
     let (frame, depth) = drawn(&rogers, None);
     let (blank_frame, blank_depth) = (vec![vec![0; 32]; 32], vec![vec![0; 32]; 32]);
     assert_ne!((&frame, &depth), (&blank_frame, &blank_depth), "the scene draws something");

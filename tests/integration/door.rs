@@ -1019,7 +1019,7 @@ fn a_recorded_page_holds_the_buffers_once_not_at_every_stop() {
     let page = dir.join("page.html");
     // The recorded page, as a zsim built without the playground writes it: through the library.
     let text = std::fs::read_to_string(&scene).unwrap();
-    let parsed = zsim::Scene::from_json(zsim::Lang::En, &text, &scene).unwrap();
+    let parsed = zsim::Scene::from_json(&text, &scene).unwrap();
     let recorded = zsim::page::page(
         zsim::Lang::En,
         &mut zsim::step::Stepper::new(&parsed, zsim::arith::Arith::Exact),
@@ -1200,7 +1200,7 @@ fn step_html_refuses_what_a_page_does_not_draw() {
         format!(r#"{{"width": {width}, "height": {height}, "polygons": [{}]}}"#, list.join(", "))
     };
     let check = |text: &str| {
-        let scene = zsim::Scene::from_json(zsim::Lang::En, text, Path::new("s.json")).unwrap();
+        let scene = zsim::Scene::from_json(text, Path::new("s.json")).unwrap();
         zsim::page_limits::check_recorded(&scene, Path::new("s.json"))
     };
     // The most raster-sized triangles the reach allows beside small ones (a pixel each) up to

@@ -12,11 +12,11 @@ use zsim::Unobserved;
 use crate::{snapshot, zsim};
 
 fn load(path: &str) -> Scene {
-    Scene::load(zsim::Lang::En, &Path::new(env!("CARGO_MANIFEST_DIR")).join(path)).unwrap()
+    Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join(path)).unwrap()
 }
 
 fn scene(json: &str) -> Scene {
-    Scene::from_json(zsim::Lang::En, json, Path::new("inline.json")).unwrap()
+    Scene::from_json(json, Path::new("inline.json")).unwrap()
 }
 
 fn final_buffers(scene: &Scene, stages: StageSet) -> (Vec<Vec<u32>>, Vec<Vec<zsim::Stored>>) {
@@ -41,7 +41,7 @@ fn example_scenes() -> Vec<std::path::PathBuf> {
 #[test]
 fn plain_loop_and_all_stages_agree_on_every_example() {
     for path in example_scenes() {
-        let scene = Scene::load(zsim::Lang::En, &path).unwrap();
+        let scene = Scene::load(&path).unwrap();
         assert_eq!(
             final_buffers(&scene, StageSet::AsAsked),
             final_buffers(&scene, StageSet::AllCompiledIn),
@@ -104,7 +104,7 @@ fn examples() -> Vec<(String, Scene)> {
     let mut scenes: Vec<(String, Scene)> = example_scenes()
         .into_iter()
         .filter(|p| !p.to_string_lossy().contains("antialias"))
-        .map(|p| (p.display().to_string(), Scene::load(zsim::Lang::En, &p).unwrap()))
+        .map(|p| (p.display().to_string(), Scene::load(&p).unwrap()))
         .collect();
     for seed in 1..=5 {
         let spec =

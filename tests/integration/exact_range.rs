@@ -79,7 +79,7 @@ fn independent(v: &[[BigRational; 4]], column: u32, row: u32) -> Option<(bool, B
 /// centre strictly inside must be covered. Returns the pixels covered and how
 /// many of them hold a depth beyond 128 bits.
 fn check_pixels(json: &str, expected: impl Fn(u32, u32) -> Option<(bool, BigRational)>) -> (usize, usize) {
-    let scene = Scene::from_json(zsim::Lang::En, json, Path::new("scene.json"))
+    let scene = Scene::from_json(json, Path::new("scene.json"))
         .unwrap_or_else(|e| panic!("{}: {json}", e.message(zsim::Lang::En)));
     let mut simulation = Simulation::new(&scene);
     simulation.finish(&mut Unobserved);
@@ -125,7 +125,7 @@ fn clipped_clip_space_triangles_are_drawn_exactly() {
             r#"{{"width": {SIZE}, "height": {SIZE}, "depth_bits": 16, "depth_test": "less", "rules": {{"store": "exact"}}, "polygons": [{{"value": 1, "vertices": {}}}]}}"#,
             serde_json::to_string(&vertices).unwrap()
         );
-        let scene = Scene::from_json(zsim::Lang::En, &json, Path::new("clip.json"))
+        let scene = Scene::from_json(&json, Path::new("clip.json"))
             .unwrap_or_else(|e| panic!("case {case}: {}", e.message(zsim::Lang::En)));
         big += usize::from(scene.polygons[0].geometry().is_big());
         let v: Vec<[BigRational; 4]> = vertices.iter().map(|p| p.clone().map(|c| parse(&c))).collect();
@@ -219,7 +219,7 @@ fn polygons_once_refused_as_too_large_are_drawn_exactly() {
         let json = format!(
             r#"{{"width": {SIZE}, "height": {SIZE}, "depth_test": "always", "rules": {{"store": "exact"}}, "polygons": [{{"value": 1, "vertices": {vertices}}}]}}"#
         );
-        let scene = Scene::from_json(zsim::Lang::En, &json, Path::new("large.json"))
+        let scene = Scene::from_json(&json, Path::new("large.json"))
             .unwrap_or_else(|e| panic!("{}", e.message(zsim::Lang::En)));
         let v: Vec<[BigRational; 3]> =
             scene.polygons[0].vertices().iter().map(|p| p.each_ref().map(zsim::Exact::to_big)).collect();
@@ -293,7 +293,7 @@ fn clip_space_triangles_with_many_digits_are_drawn_exactly() {
             r#"{{"width": {SIZE}, "height": {SIZE}, "depth_bits": 16, "depth_test": "less", "rules": {{"store": "exact"}}, "polygons": [{{"value": 1, "vertices": {}}}]}}"#,
             serde_json::to_string(vertices).unwrap()
         );
-        let scene = Scene::from_json(zsim::Lang::En, &json, Path::new("clip.json"))
+        let scene = Scene::from_json(&json, Path::new("clip.json"))
             .unwrap_or_else(|e| panic!("case {case}: {}", e.message(zsim::Lang::En)));
         beyond += usize::from(scene.polygons[0].vertices().iter().flatten().any(|v| v.word().is_none()));
         let v: Vec<[BigRational; 4]> = vertices.iter().map(|p| p.each_ref().map(|c| decimal(c))).collect();

@@ -33,7 +33,7 @@ fn random_scenes_repeat_for_a_seed_and_respect_the_size() {
     let first = zsim(&args);
     assert_eq!(first.code, 0, "{}", first.stderr);
     assert_eq!(first.stdout, zsim(&args).stdout, "same seed, same scene");
-    let scene = Scene::from_json(zsim::Lang::En, &first.stdout, Path::new("random.json")).expect("a valid scene");
+    let scene = Scene::from_json(&first.stdout, Path::new("random.json")).expect("a valid scene");
     assert_eq!((scene.width, scene.height, scene.polygons.len()), (64, 48, 50));
     for polygon in &scene.polygons {
         let xs: Vec<_> = polygon.vertices().iter().map(|v| v[0].word().expect("small")).collect();

@@ -27,8 +27,7 @@ type Matrix = Vec<Vec<u32>>;
 
 /// The framebuffer and z-buffer after each of the book's two polygons.
 fn simulate() -> Vec<(Matrix, Matrix)> {
-    let scene =
-        Scene::load(zsim::Lang::En, &Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/rogers.json")).unwrap();
+    let scene = Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/rogers.json")).unwrap();
     let mut simulation = Simulation::new(&scene);
     let mut states = Vec::new();
     while simulation.draw_next(&mut Unobserved).is_some() {

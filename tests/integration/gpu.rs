@@ -117,7 +117,7 @@ fn zsim_covers(triangle: &[[f64; 2]; 3], rules: Rules) -> Vec<(u32, u32)> {
         }
     }
     let json = scene_json(&[(*triangle, 1, 5.0)], rules.preset);
-    let scene = Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("gpu.json")).unwrap();
+    let scene = Scene::from_json(&json, std::path::Path::new("gpu.json")).unwrap();
     let polygon = &scene.polygons[0];
     let mut covered = Covered(Vec::new());
     if zsim::fate(&scene, 0) == zsim::Fate::Drawn {
@@ -259,7 +259,7 @@ fn llvmpipe_shows_the_same_triangle_as_zsim_with_a_depth_test() {
     for _ in 0..40 {
         let layers = random_layers(&mut random);
         let json = scene_json(&layers, Preset::Gl);
-        let scene = Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("gpu.json")).unwrap();
+        let scene = Scene::from_json(&json, std::path::Path::new("gpu.json")).unwrap();
         let mut simulation = Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
         let triangles: Vec<GpuTriangle> = layers
@@ -327,7 +327,7 @@ fn speed_times_zsim_beside_opengl_in_alternating_pairs() {
         assert_eq!(run.code, 0, "{}", run.stderr);
         let lines: Vec<&str> = run.stdout.lines().collect();
         let [header, result, whole, memory] = lines[..] else { panic!("four lines: {}", run.stdout) };
-        let drawn = Scene::load(zsim::Lang::En, std::path::Path::new(scene)).unwrap();
+        let drawn = Scene::load(std::path::Path::new(scene)).unwrap();
         let mut simulation = Simulation::new(&drawn);
         simulation.finish(&mut zsim::Unobserved);
         let tested = simulation.stats().tested;
@@ -435,7 +435,7 @@ fn lavapipe_shows_the_same_triangle_as_zsim_with_a_depth_test() {
     for _ in 0..40 {
         let layers = random_layers(&mut random);
         let json = scene_json(&layers, Preset::Vulkan);
-        let scene = Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("gpu.json")).unwrap();
+        let scene = Scene::from_json(&json, std::path::Path::new("gpu.json")).unwrap();
         let mut simulation = Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
         let max = f64::from(scene.depth_max());
@@ -478,7 +478,7 @@ fn llvmpipe_depths_are_within_a_few_levels_of_the_exact_ones() {
                 v.join(", ")
             )
         };
-        let Ok(scene) = Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("gpu.json")) else { continue };
+        let Ok(scene) = Scene::from_json(&json, std::path::Path::new("gpu.json")) else { continue };
         let mut simulation = Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
         let triangle = GpuTriangle { vertices: vertices.map(|[x, y, z]| shifted([x, y], z)), id: 1 };

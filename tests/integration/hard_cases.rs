@@ -9,7 +9,7 @@ use zsim::Unobserved;
 
 /// Runs a scene given as JSON and returns (framebuffer, z-buffer), top row first.
 fn run(json: &str) -> (Vec<Vec<u32>>, Vec<Vec<u32>>) {
-    let scene = Scene::from_json(zsim::Lang::En, json, Path::new("inline.json")).unwrap();
+    let scene = Scene::from_json(json, Path::new("inline.json")).unwrap();
     let mut simulation = Simulation::new(&scene);
     simulation.finish(&mut Unobserved);
     (simulation.buffers().frame_rows(), simulation.buffers().depth_level_rows().unwrap())
@@ -230,7 +230,7 @@ fn span_end_depths_near_the_word_limit_are_exact() {
     let json = format!(
         r#"{{"width": 16, "height": 16, "depth_bits": 21, "polygons": [{{"value": 1, "vertices": {vertices:?}}}]}}"#
     );
-    let scene = Scene::from_json(zsim::Lang::En, &json, Path::new("fuzz.json")).unwrap();
+    let scene = Scene::from_json(&json, Path::new("fuzz.json")).unwrap();
     let mut recorder = zsim::Recorder::default();
     Simulation::new(&scene).finish(&mut recorder);
     let v: Vec<[BigRational; 3]> = vertices.iter().map(|p| p.map(|c| BigRational::from_integer(c.into()))).collect();
@@ -260,8 +260,7 @@ fn span_end_depths_near_the_word_limit_are_exact() {
 /// which hung; edges are now set up at the first row on the raster.
 #[test]
 fn incremental_edges_start_at_the_raster_not_far_below_it() {
-    let scene = Scene::from_json(zsim::Lang::En,
-        r#"{"width": 16, "height": 16, "depth_bits": 5, "polygons": [{"value": 1, "vertices": [[36, 12, 29], [29, -7027767160, -8589934592], [-8589934592, -8589934592, -8589934592], [-8589934592, -8589934592, -8589934592]]}]}"#,
+    let scene = Scene::from_json(r#"{"width": 16, "height": 16, "depth_bits": 5, "polygons": [{"value": 1, "vertices": [[36, 12, 29], [29, -7027767160, -8589934592], [-8589934592, -8589934592, -8589934592], [-8589934592, -8589934592, -8589934592]]}]}"#,
         Path::new("fuzz.json"),
     )
     .unwrap();

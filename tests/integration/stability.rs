@@ -50,7 +50,7 @@ fn scene_json_with_test(polygons: &[Vec<(i64, i64, i64)>], test: &str) -> String
 type Buffers = (Vec<Vec<u32>>, Vec<Vec<u32>>);
 
 fn run(json: &str) -> Option<Buffers> {
-    let scene = Scene::from_json(zsim::Lang::En, json, Path::new("prop.json")).ok()?;
+    let scene = Scene::from_json(json, Path::new("prop.json")).ok()?;
     let mut simulation = Simulation::new(&scene);
     simulation.finish(&mut Unobserved);
     Some((simulation.buffers().frame_rows(), simulation.buffers().depth_level_rows()?))
@@ -179,7 +179,7 @@ proptest! {
         bits in prop::sample::select(vec![2u32, 4, 8]),
     ) {
         let json = small_triangles_scene(&triangles, &planes, test, bits);
-        let scene = Scene::from_json(zsim::Lang::En, &json, Path::new("small.json")).expect("a valid scene");
+        let scene = Scene::from_json(&json, Path::new("small.json")).expect("a valid scene");
         let mut quiet = Simulation::new(&scene);
         quiet.finish(&mut Unobserved);
         let mut watched = Simulation::new(&scene);
@@ -269,7 +269,7 @@ fn every_path_agrees(json: &str, tile: u32, threads: usize, stop: usize) -> Resu
     {
         let json = json.to_string();
         // Input that is not a scene is rejected, so that the runner counts it (not passed unrun).
-        let Ok(scene) = Scene::from_json(zsim::Lang::En, &json, Path::new("prop.json")) else {
+        let Ok(scene) = Scene::from_json(&json, Path::new("prop.json")) else {
             return Err(TestCaseError::reject("not a scene"));
         };
         let mut quiet = Simulation::new(&scene);
@@ -320,7 +320,7 @@ proptest! {
     /// and a scene small enough runs.
     #[test]
     fn any_scene_text_is_read_or_refused_without_panicking(text in scene_text()) {
-        if let Ok(scene) = Scene::from_json(zsim::Lang::En, &text, Path::new("arbitrary.json"))
+        if let Ok(scene) = Scene::from_json(&text, Path::new("arbitrary.json"))
             && u64::from(scene.width) * u64::from(scene.height) <= 64 * 64
         {
             let mut simulation = Simulation::new(&scene);

@@ -45,7 +45,7 @@ fn json_hash(scene: &Scene, simulation: &Simulation<'_>) -> u64 {
 fn the_large_scene_draws_identically_on_any_number_of_threads_and_tiles() {
     let spec =
         RandomScene { count: 100_000, seed: 1, width: 4096, height: 4096, max_size: 30, frame_bits: 8, depth_bits: 24 };
-    let scene = Scene::from_json(zsim::Lang::En, &spec.json(), Path::new("large.json")).expect("a valid random scene");
+    let scene = Scene::from_json(&spec.json(), Path::new("large.json")).expect("a valid random scene");
     let mut in_order = Simulation::new(&scene);
     in_order.finish(&mut Unobserved);
     let expected = json_hash(&scene, &in_order);
@@ -73,8 +73,7 @@ const PINNED: u64 = 0xddb9_435e_c19c_fac6;
 fn a_restarted_simulation_draws_what_a_fresh_one_draws() {
     let spec =
         RandomScene { count: 3000, seed: 7, width: 300, height: 200, max_size: 40, frame_bits: 8, depth_bits: 16 };
-    let scene =
-        Scene::from_json(zsim::Lang::En, &spec.json(), Path::new("restart.json")).expect("a valid random scene");
+    let scene = Scene::from_json(&spec.json(), Path::new("restart.json")).expect("a valid random scene");
     let mut fresh = Simulation::new(&scene);
     fresh.finish(&mut Unobserved);
     let mut reused = Simulation::new(&scene);
@@ -107,7 +106,7 @@ fn buffers_cleared_on_several_threads_are_the_ones_one_thread_clears() {
             r#"{{"width": 1200, "height": 900, "frame_bits": {frame_bits}, "background": 5, {depth},
                 "polygons": [{{"value": 3, "vertices": [[10, 10, 4], [1100, 40, 9], [300, 880, 2]]}}]}}"#
         );
-        let scene = Scene::from_json(zsim::Lang::En, &text, Path::new("clear.json")).expect("a valid scene");
+        let scene = Scene::from_json(&text, Path::new("clear.json")).expect("a valid scene");
         let one = Simulation::new(&scene);
         for threads in [2, 3] {
             let mut several = Simulation::new_on(&scene, threads);
@@ -129,8 +128,7 @@ fn one_thread_draws_buffers_beyond_the_cache_in_tiles() {
     let tile = |side: u32, frame_bits: u32, threads: usize| {
         let spec =
             RandomScene { count: 1, seed: 1, width: side, height: side, max_size: 4, frame_bits, depth_bits: 24 };
-        let scene =
-            Scene::from_json(zsim::Lang::En, &spec.json(), Path::new("side.json")).expect("a valid random scene");
+        let scene = Scene::from_json(&spec.json(), Path::new("side.json")).expect("a valid random scene");
         Simulation::new(&scene).default_tile(threads)
     };
     // A quarter of the last-level cache: 8 MiB. 1024² with 4-byte frame cells

@@ -67,7 +67,7 @@ fn the_imported_model_draws_the_lessons_images_through_zsims_rasterizer() {
         let model =
             Model::parse(zsim::Lang::En, &std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
         let json = zsim::tinyrenderer::scene_json(&model, LessonArith::F64, SIZE);
-        let scene = zsim::Scene::from_json(zsim::Lang::En, &json, std::path::Path::new("import.json")).unwrap();
+        let scene = zsim::Scene::from_json(&json, std::path::Path::new("import.json")).unwrap();
         let mut simulation = zsim::Simulation::new(&scene);
         simulation.finish(&mut zsim::Unobserved);
         let side = SIZE as usize;
@@ -96,7 +96,7 @@ fn the_imported_model_draws_the_lessons_images_through_zsims_rasterizer() {
 
 /// The frame and depth rows (top first) of a small scene.
 fn drawn(json: &str) -> (Vec<Vec<u32>>, Vec<Vec<u32>>) {
-    let scene = zsim::Scene::from_json(zsim::Lang::En, json, std::path::Path::new("rule.json")).unwrap();
+    let scene = zsim::Scene::from_json(json, std::path::Path::new("rule.json")).unwrap();
     let mut simulation = zsim::Simulation::new(&scene);
     simulation.finish(&mut zsim::Unobserved);
     (simulation.buffers().frame_rows(), simulation.buffers().depth_level_rows().unwrap())
@@ -209,7 +209,7 @@ fn a_small_import_draws_as_the_lessons_rules_do() {
     let model = Model::parse(zsim::Lang::En, &std::fs::read_to_string(&path).unwrap()).unwrap();
     let run = crate::zsim(&["tinyrenderer", "import", path.to_str().unwrap(), "--size", "48"]);
     assert_eq!((run.code, run.stderr.as_str()), (0, ""));
-    let scene = zsim::Scene::from_json(zsim::Lang::En, &run.stdout, std::path::Path::new("pyramid.json")).unwrap();
+    let scene = zsim::Scene::from_json(&run.stdout, std::path::Path::new("pyramid.json")).unwrap();
     assert_eq!((scene.width, scene.height), (48, 48));
     let mut simulation = zsim::Simulation::new(&scene);
     simulation.finish(&mut zsim::Unobserved);

@@ -416,7 +416,7 @@ mod any_input {
         /// parser reads, with the name in it as written (bar what XML forbids).
         #[test]
         fn any_name_and_title_give_a_figure_an_xml_parser_reads(name in any_text(), title in any_text()) {
-            let scene = Scene::from_json(zsim::Lang::En, &scene_named(&name), std::path::Path::new("any.json")).unwrap();
+            let scene = Scene::from_json(&scene_named(&name), std::path::Path::new("any.json")).unwrap();
             let mut simulation = Simulation::new(&scene);
             simulation.finish(&mut Unobserved);
             let extras = Annotations { vertex_labels: true, caption: vec![title.clone()], values: true };

@@ -71,7 +71,7 @@ pub fn check(lang: Lang, case: &Case, answer: &Path) -> Result<Vec<Difference>, 
 
 /// A student's z_buffer.txt: per row, the values written.
 fn parse_answer(lang: Lang, path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
-    let text = read_text(lang, path)?;
+    let text = read_text(path)?;
     let rows: Vec<Vec<String>> =
         text.lines().map(|line| line.split_whitespace().map(str::to_string).collect()).collect();
     for (i, row) in rows.iter().enumerate() {

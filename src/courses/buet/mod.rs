@@ -480,8 +480,8 @@ pub struct Case {
     pub scene_json: String,
 }
 
-fn read(lang: Lang, path: &Path) -> Result<String, Error> {
-    crate::door::read_text(lang, path)
+fn read(path: &Path) -> Result<String, Error> {
+    crate::door::read_text(path)
 }
 
 fn located(path: &Path, error: CaseError) -> Error {
@@ -499,16 +499,16 @@ impl Case {
     /// otherwise.
     pub fn load(lang: Lang, dir: &Path, source: Option<Source>) -> Result<Case, Error> {
         let config_path = dir.join("config.txt");
-        let config = Config::parse(lang, &read(lang, &config_path)?).map_err(|e| located(&config_path, e))?;
+        let config = Config::parse(lang, &read(&config_path)?).map_err(|e| located(&config_path, e))?;
         let source = source.unwrap_or(if dir.join("stage3.txt").is_file() { Source::Stage3 } else { Source::Scene });
         let (stages, stage3_text, stage3_path) = match source {
             Source::Stage3 => {
                 let path = dir.join("stage3.txt");
-                (None, read(lang, &path)?, path)
+                (None, read(&path)?, path)
             }
             Source::Scene => {
                 let path = dir.join("scene.txt");
-                let scene = CaseScene::parse(lang, &read(lang, &path)?).map_err(|e| located(&path, e))?;
+                let scene = CaseScene::parse(lang, &read(&path)?).map_err(|e| located(&path, e))?;
                 let stages = scene.stages();
                 let text = stage_text(&stages[2]);
                 (Some(stages), text, path)
@@ -516,7 +516,7 @@ impl Case {
         };
         let stage3 = parse_stage(lang, &stage3_text).map_err(|e| located(&stage3_path, e))?;
         let scene_json = scene_json(&config, &stage3);
-        let scene = crate::scene::Scene::from_json(lang, &scene_json, &stage3_path)?;
+        let scene = crate::scene::Scene::from_json(&scene_json, &stage3_path)?;
         Ok(Case { config, stages, stage3, scene, scene_json })
     }
 }

@@ -34,7 +34,7 @@ pub fn located(path: &Path, error: super::CaseError) -> Error {
 /// Reads the case at `path`, its textures from beside it where `textures`
 /// says so; errors name the file and the line.
 pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<LoadedCase, Error> {
-    let text = crate::door::read_text(lang, path)?;
+    let text = crate::door::read_text(path)?;
     let folder = Folder::beside(path)?;
     // Each file decoded once, and held once, however many names lead to it (`x.png`, `./x.png`).
     let read: RefCell<Vec<(PathBuf, Identity, Arc<Image>)>> = RefCell::new(Vec::new());

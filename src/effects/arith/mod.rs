@@ -317,8 +317,7 @@ mod tests {
     #[test]
     fn modes_on_the_books_example() {
         let scene =
-            Scene::load(Lang::En, std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")))
-                .unwrap();
+            Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap();
         let (exact, _) = run(&scene, Arith::Exact).unwrap();
         for mode in [Arith::F64, Arith::F64Incremental, Arith::F32, Arith::F32Edge, Arith::Fixed(8)] {
             let (buffers, _) = run(&scene, mode).unwrap();
@@ -355,7 +354,7 @@ mod tests {
     fn edge_functions_cover_what_exact_covers_on_convex_and_concave_scenes() {
         for example in ["rogers", "less", "concave"] {
             let path = format!("{}/examples/{example}.json", env!("CARGO_MANIFEST_DIR"));
-            let scene = Scene::load(Lang::En, std::path::Path::new(&path)).unwrap();
+            let scene = Scene::load(std::path::Path::new(&path)).unwrap();
             let (exact, exact_stats) = run(&scene, Arith::Exact).unwrap();
             let (edge, edge_stats) = run(&scene, Arith::F32Edge).unwrap();
             assert_eq!(differing(&edge, &exact), vec![], "{example}");
@@ -366,8 +365,7 @@ mod tests {
     #[test]
     fn edge_function_ties_follow_the_books_rule() {
         // The square [1.5, 3.5] × [1.5, 3.5] has pixel centres on all four edges.
-        let scene = Scene::from_json(Lang::En,
-            r#"{"width": 5, "height": 5, "polygons": [{"value": 1, "vertices": [[1.5, 1.5, 5], [3.5, 1.5, 5], [3.5, 3.5, 5], [1.5, 3.5, 5]]}]}"#,
+        let scene = Scene::from_json(r#"{"width": 5, "height": 5, "polygons": [{"value": 1, "vertices": [[1.5, 1.5, 5], [3.5, 1.5, 5], [3.5, 3.5, 5], [1.5, 3.5, 5]]}]}"#,
             std::path::Path::new("square.json"),
         )
         .unwrap();

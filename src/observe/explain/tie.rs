@@ -374,7 +374,7 @@ mod tests {
         let mut polygons: Vec<(Vec<[Exact; 3]>, u32, u32)> = scenes
             .iter()
             .flat_map(|path| {
-                let scene = Scene::load(Lang::En, path).unwrap();
+                let scene = Scene::load(path).unwrap();
                 let (w, h) = (scene.width, scene.height);
                 scene.polygons.iter().map(move |p| (p.vertices().into_owned(), w, h)).collect::<Vec<_>>()
             })

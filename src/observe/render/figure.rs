@@ -690,7 +690,7 @@ mod tests {
     /// The book's example, drawn.
     fn rogers_drawn() -> (Scene, Buffers) {
         let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")).unwrap();
-        let scene = Scene::from_json(Lang::En, &text, std::path::Path::new("rogers.json")).unwrap();
+        let scene = Scene::from_json(&text, std::path::Path::new("rogers.json")).unwrap();
         let mut simulation = crate::Simulation::new(&scene);
         simulation.finish(&mut crate::Unobserved);
         let buffers = simulation.into_buffers();

@@ -478,7 +478,6 @@ mod tests {
     #[test]
     fn run_json_streamed_is_run_json() {
         let scene = Scene::from_json(
-            Lang::En,
             r#"{"width": 3, "height": 2, "polygons": [{"name": "a\"b", "value": 1, "vertices": [[0, 0, 5], [3, 0, 5], [0, 2, 5]]}]}"#,
             std::path::Path::new("s.json"),
         )
@@ -522,7 +521,7 @@ mod tests {
                         let json = format!(
                             r#"{{"width": 4, "height": 3, "rules": {rules}, {test_key}{clear_key}"polygons": [{{"value": 1, "vertices": [[0, 0, "1/2"], [1, 0, "1/2"], [0, 1, "1/2"]]}}]}}"#
                         );
-                        let scene = Scene::from_json(Lang::En, &json, std::path::Path::new("s.json")).expect(&json);
+                        let scene = Scene::from_json(&json, std::path::Path::new("s.json")).expect(&json);
                         let mut simulation = Simulation::new(&scene);
                         simulation.finish(&mut crate::simulate::events::Unobserved);
                         // (3, 2) is far from the one small triangle: it keeps the clear value.

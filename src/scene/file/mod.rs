@@ -3,11 +3,11 @@
 
 mod numbers;
 mod pieces;
+pub(super) mod refused;
 mod strict;
 #[cfg(test)]
 mod tests;
 
-use crate::words::Lang;
 use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
@@ -25,27 +25,28 @@ use crate::scene::perspective::{Clip, Perspective};
 use crate::scene::{Antialias, Effects, MAX_CELLS, MAX_SIDE, Polygon, Scene, Winding, Window, max_for_bits};
 use crate::words::printable;
 use numbers::{Coordinate, Number, ReadNumber};
+use refused::{FormatProblem, JsonKind, MissingComma, Place, SceneProblem, SceneRefused, SettingProblem};
 
 /// Reads and validates scene JSON; `path` is used in error messages only.
-pub(crate) fn read(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
+pub(crate) fn read(text: &str, path: &Path) -> Result<Scene, Error> {
     if let Some(found) = top_level_kind(text) {
-        return Err(Error::SceneFormat {
-            path: path.to_owned(),
-            location: String::new(),
-            line: None,
-            message: words!(lang, "scene-not-object", found = words!(lang, found)),
-        });
+        return Err(refused(path, SceneProblem::NotObject(found)));
     }
     // A scene of the common shape is read in pieces on every core; any
     // other, or one with an error, the plain way, which names the error.
-    match pieces::read(lang, text, path) {
+    match pieces::read(text, path) {
         Some(scene) => Ok(scene),
-        None => plain(lang, text, path),
+        None => plain(text, path),
     }
 }
 
+/// The scene file at `path` refused for `problem`.
+fn refused(path: &Path, problem: SceneProblem) -> Error {
+    SceneRefused { path: path.to_owned(), problem }.into()
+}
+
 /// Reads and validates scene JSON of any shape, naming the first error.
-fn plain(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
+fn plain(text: &str, path: &Path) -> Result<Scene, Error> {
     // Read at full speed first: the settings, with each polygon's text only
     // found; then each polygon read from its text and made at once, on every
     // core. Only a file with a polygon that does not read is read again, in
@@ -55,7 +56,7 @@ fn plain(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
     if let Ok(file) = SceneFile::<&serde_json::value::RawValue>::deserialize(&mut deserializer)
         && deserializer.end().is_ok()
     {
-        let made = file.validate(lang, path, |text, index, frame| from_text(text.get(), index, frame, path));
+        let made = file.validate(path, |text, index, frame| from_text(text.get(), index, frame, path));
         match made {
             Ok(scene) => return Ok(scene),
             Err(Unmade::Invalid(error)) => return Err(*error),
@@ -65,28 +66,36 @@ fn plain(lang: Lang, text: &str, path: &Path) -> Result<Scene, Error> {
     let mut deserializer = serde_json::Deserializer::from_str(text);
     let file: SceneFile<PolygonFile> = serde_path_to_error::deserialize(&mut deserializer).map_err(|error| {
         // A syntax error has no place in the scene's structure: its line and column say where.
-        let syntax =
-            matches!(error.inner().classify(), serde_json::error::Category::Syntax | serde_json::error::Category::Eof);
-        Error::SceneFormat {
-            path: path.to_owned(),
-            location: if syntax { String::new() } else { describe_location(lang, &error.path().to_string()) },
-            line: (error.inner().line() > 0).then(|| error.inner().line()),
-            message: format!("{}{}", json_message(lang, error.inner()), missing_comma(lang, text, error.inner())),
-        }
+        let syntax = is_syntax(error.inner());
+        let place = if syntax { None } else { place_of(&error.path().to_string()) };
+        refused(path, SceneProblem::Format(FormatProblem { place, ..format_problem(text, error.inner()) }))
     })?;
-    deserializer.end().map_err(|error| Error::SceneFormat {
-        path: path.to_owned(),
-        location: String::new(),
-        line: (error.line() > 0).then(|| error.line()),
-        message: json_message(lang, &error),
+    deserializer.end().map_err(|error| {
+        refused(path, SceneProblem::Format(FormatProblem { comma: None, ..format_problem(text, &error) }))
     })?;
-    file.validate(lang, path, |polygon, index, frame| {
+    file.validate(path, |polygon, index, frame| {
         polygon.validate(index, frame, path).map_err(|e| Unmade::Invalid(Box::new(e)))
     })
     .map_err(|unmade| match unmade {
         Unmade::Invalid(error) => *error,
         Unmade::Unread => unreachable!("every polygon of this file was read"),
     })
+}
+
+/// Whether serde_json's error is one of the JSON's syntax.
+fn is_syntax(error: &serde_json::Error) -> bool {
+    matches!(error.classify(), serde_json::error::Category::Syntax | serde_json::error::Category::Eof)
+}
+
+/// The facts of serde_json's `error` in `text`, with no place in the scene's structure.
+fn format_problem(text: &str, error: &serde_json::Error) -> FormatProblem {
+    FormatProblem {
+        place: None,
+        line: (error.line() > 0).then(|| error.line()),
+        syntax: is_syntax(error),
+        reason: error.to_string(),
+        comma: missing_comma(text, error),
+    }
 }
 
 /// Why a polygon of the file did not become a [`Polygon`].
@@ -98,15 +107,15 @@ enum Unmade {
 }
 
 /// What the file's first value is when it is valid-looking JSON but not an
-/// object (`an array`, `a string`, …); `None` for an object or for text that
-/// the JSON reader should report itself.
-fn top_level_kind(text: &str) -> Option<&'static str> {
+/// object; `None` for an object or for text that the JSON reader should
+/// report itself.
+fn top_level_kind(text: &str) -> Option<JsonKind> {
     match text.trim_start().bytes().next()? {
-        b'[' => Some("json-array"),
-        b'"' => Some("json-string"),
-        b'-' | b'0'..=b'9' => Some("json-number"),
-        b't' | b'f' if text.trim().parse::<bool>().is_ok() => Some("json-bool"),
-        b'n' if text.trim() == "null" => Some("json-null"),
+        b'[' => Some(JsonKind::Array),
+        b'"' => Some(JsonKind::String),
+        b'-' | b'0'..=b'9' => Some(JsonKind::Number),
+        b't' | b'f' if text.trim().parse::<bool>().is_ok() => Some(JsonKind::Bool),
+        b'n' if text.trim() == "null" => Some(JsonKind::Null),
         _ => None,
     }
 }
@@ -114,9 +123,9 @@ fn top_level_kind(text: &str) -> Option<&'static str> {
 /// For "expected `,`", where the comma belongs: serde_json reports the
 /// token after the gap, often on the next line; the comma is missing after
 /// the last character before it.
-fn missing_comma(lang: Lang, text: &str, error: &serde_json::Error) -> String {
+fn missing_comma(text: &str, error: &serde_json::Error) -> Option<MissingComma> {
     if !error.to_string().starts_with("expected `,`") || error.line() == 0 {
-        return String::new();
+        return None;
     }
     // The offset of (line, column), both from 1; then back over white space.
     let line_start: usize = text.split_inclusive('\n').take(error.line() - 1).map(str::len).sum();
@@ -124,46 +133,29 @@ fn missing_comma(lang: Lang, text: &str, error: &serde_json::Error) -> String {
         .char_indices()
         .nth(error.column().saturating_sub(1))
         .map_or(text.len(), |(i, _)| line_start + i);
-    let Some((before, _)) = text[..at].char_indices().rev().find(|(_, c)| !c.is_whitespace()) else {
-        return String::new();
-    };
+    let (before, _) = text[..at].char_indices().rev().find(|(_, c)| !c.is_whitespace())?;
     let line = text[..before].matches('\n').count() + 1;
     if line < error.line() {
-        words!(lang, "json-comma-end", line = line.to_string())
+        Some(MissingComma::EndOfLine(line))
     } else {
         let column = text[..before].rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-        words!(lang, "json-comma-after", line = line.to_string(), column = column.to_string())
+        Some(MissingComma::After(line, column))
     }
 }
 
-/// serde_json's message, saying "not valid JSON" when the syntax is at fault.
-fn json_message(lang: Lang, error: &serde_json::Error) -> String {
-    match error.classify() {
-        serde_json::error::Category::Syntax | serde_json::error::Category::Eof => {
-            words!(lang, "json-invalid", error = crate::words::json_reason(lang, &error.to_string()))
-        }
-        _ => crate::words::json_reason(lang, &error.to_string()),
-    }
-}
-
-/// Turns serde's path `polygons[1].vertices[0][2]` into
-/// `polygon 2: vertices[0][2]`, so messages name polygons as the CLI does.
-fn describe_location(lang: Lang, path: &str) -> String {
+/// serde's path `polygons[1].vertices[0][2]` as a place: polygon 1 (from
+/// 0), `vertices[0][2]`; `None` for the top (`.`).
+fn place_of(path: &str) -> Option<Place> {
     if path == "." {
-        return String::new();
+        return None;
     }
     if let Some(rest) = path.strip_prefix("polygons[")
         && let Some((index, tail)) = rest.split_once(']')
         && let Ok(index) = index.parse::<usize>()
     {
-        let tail = tail.trim_start_matches('.');
-        return if tail.is_empty() {
-            words!(lang, "location-polygon", number = (index + 1).to_string())
-        } else {
-            format!("{}: {tail}", words!(lang, "location-polygon", number = (index + 1).to_string()))
-        };
+        return Some(Place { polygon: Some(index), path: tail.trim_start_matches('.').to_string() });
     }
-    path.to_string()
+    Some(Place { polygon: None, path: path.to_string() })
 }
 
 /// The scene file as read: its settings, and its polygons as `P` (each
@@ -207,15 +199,15 @@ struct RulesFile {
     min_area: Option<Number>,
 }
 
-/// Reads `"rules"`: a preset name, or an object naming a preset and overrides.
-fn rules_from(lang: Lang, value: Option<serde_json::Value>) -> Result<Rules, String> {
+/// Reads `"rules"`: a preset name, or an object naming a preset and
+/// overrides; serde_json's description where they do not read.
+fn rules_from(value: Option<serde_json::Value>) -> Result<Rules, String> {
     let Some(value) = value else { return Ok(Rules::default()) };
     if value.is_string() {
-        let preset: Preset =
-            serde_json::from_value(value).map_err(|e| crate::words::json_reason(lang, &e.to_string()))?;
+        let preset: Preset = serde_json::from_value(value).map_err(|e| e.to_string())?;
         return Ok(Rules::preset(preset));
     }
-    let file: RulesFile = serde_json::from_value(value).map_err(|e| crate::words::json_reason(lang, &e.to_string()))?;
+    let file: RulesFile = serde_json::from_value(value).map_err(|e| e.to_string())?;
     let base = Rules::preset(file.preset.unwrap_or(Preset::Rogers));
     Ok(Rules {
         preset: base.preset,
@@ -368,55 +360,41 @@ fn decimal_comma([x, y, z, w]: &[Exact; 4]) -> Option<(String, String, String)> 
 
 impl<P: Send> SceneFile<P> {
     /// The scene: its settings validated, then each polygon made by `make`
-    /// on every core, each thread in this thread's language; the error named
-    /// is the first setting's, else the first polygon's in the file.
+    /// on every core; the error named is the first setting's, else the first
+    /// polygon's in the file.
     fn validate(
         self,
-        lang: Lang,
         path: &Path,
         make: impl Fn(P, usize, &Frame) -> Result<Polygon, Unmade> + Sync,
     ) -> Result<Scene, Unmade> {
-        let (scene, frame, polygons) = self.settings(lang, path)?;
+        let (scene, frame, polygons) = self.settings(path)?;
         with_made(scene, &frame, polygons, make)
     }
 
     /// Its settings validated: the scene they make, with no polygons yet
     /// ([`Scene::with_polygons`]), what its polygons are made in, and its
     /// polygons as read.
-    fn settings(self, lang: Lang, path: &Path) -> Result<(Scene, Frame, Vec<P>), Unmade> {
-        let setting = |key: &'static str, message: String| {
-            Unmade::Invalid(Box::new(Error::Setting { path: path.to_owned(), key, message }))
+    fn settings(self, path: &Path) -> Result<(Scene, Frame, Vec<P>), Unmade> {
+        let setting = |key: &'static str, problem: SettingProblem| {
+            Unmade::Invalid(Box::new(refused(path, SceneProblem::Setting { key, problem })))
         };
         let bits = |key: &'static str, value: Option<u64>, default: u32| -> Result<u32, Unmade> {
             match value.unwrap_or(u64::from(default)) {
                 bits @ 1..=32 => Ok(bits as u32),
-                other => Err(setting(key, words!(lang, "setting-bits", value = other.to_string()))),
+                other => Err(setting(key, SettingProblem::Bits(other))),
             }
         };
         let side = |key: &'static str, value: Option<u64>| -> Result<u32, Unmade> {
             match value.unwrap_or(32) {
-                0 => Err(setting(key, words!(lang, "setting-side-zero"))),
-                side if side > MAX_SIDE => Err(setting(
-                    key,
-                    words!(lang, "setting-side-large", side = side.to_string(), max = MAX_SIDE.to_string()),
-                )),
+                0 => Err(setting(key, SettingProblem::SideZero)),
+                side if side > MAX_SIDE => Err(setting(key, SettingProblem::SideLarge { side, max: MAX_SIDE })),
                 side => Ok(side as u32),
             }
         };
         let width = side("width", self.width)?;
         let height = side("height", self.height)?;
         if u64::from(width) * u64::from(height) > MAX_CELLS {
-            return Err(setting(
-                "width",
-                words!(
-                    lang,
-                    "setting-cells",
-                    width = width.to_string(),
-                    height = height.to_string(),
-                    cells = (u64::from(width) * u64::from(height)).to_string(),
-                    max = MAX_CELLS.to_string()
-                ),
-            ));
+            return Err(setting("width", SettingProblem::Cells { width, height, max: MAX_CELLS }));
         }
         let frame_bits = bits("frame_bits", self.frame_bits, 2)?;
         let depth_bits = bits("depth_bits", self.depth_bits, 4)?;
@@ -425,16 +403,10 @@ impl<P: Send> SceneFile<P> {
         if background > frame_max {
             return Err(setting(
                 "background",
-                words!(
-                    lang,
-                    "setting-background",
-                    value = background.to_string(),
-                    bits = frame_bits.to_string(),
-                    max = frame_max.to_string()
-                ),
+                SettingProblem::Background { value: background, bits: frame_bits, max: frame_max },
             ));
         }
-        let rules = rules_from(lang, self.rules).map_err(|message| setting("rules", message))?;
+        let rules = rules_from(self.rules).map_err(|reason| setting("rules", SettingProblem::Rules(reason)))?;
         let default_test = if rules.preset == Preset::Buet { DepthTest::Less } else { DepthTest::Greater };
         let depth_test = self.depth_test.unwrap_or(default_test);
         let window = match self.window {
@@ -442,27 +414,15 @@ impl<P: Send> SceneFile<P> {
             Some(w) => {
                 let window = Window { left: w.left.0, right: w.right.0, bottom: w.bottom.0, top: w.top.0 };
                 if window.left >= window.right || window.bottom >= window.top {
-                    return Err(setting(
-                        "window",
-                        words!(
-                            lang,
-                            "setting-window",
-                            left = fraction(window.left),
-                            right = fraction(window.right),
-                            bottom = fraction(window.bottom),
-                            top = fraction(window.top)
-                        ),
-                    ));
+                    let sides = [window.left, window.right, window.bottom, window.top];
+                    return Err(setting("window", SettingProblem::Window { sides }));
                 }
                 Some(window)
             }
         };
         let depth_range = match self.depth_range {
             Some([front, rear]) if front.0 > rear.0 => {
-                return Err(setting(
-                    "depth_range",
-                    words!(lang, "setting-depth-range", front = fraction(front.0), rear = fraction(rear.0)),
-                ));
+                return Err(setting("depth_range", SettingProblem::DepthRange { front: front.0, rear: rear.0 }));
             }
             Some([front, rear]) => Some((front.0, rear.0)),
             None => None,
@@ -471,7 +431,7 @@ impl<P: Send> SceneFile<P> {
         let clear_depth = match (rules.store, self.clear_depth) {
             (DepthStore::Quantized | DepthStore::Truncated, None) => Stored::Level(depth_test.clear_value(depth_max)),
             (DepthStore::Quantized | DepthStore::Truncated, Some(_)) => {
-                return Err(setting("clear_depth", words!(lang, "setting-clear-depth")));
+                return Err(setting("clear_depth", SettingProblem::ClearDepth));
             }
             (DepthStore::Exact, Some(value)) => Stored::Exact(Exact::Word(value.0)),
             (DepthStore::Exact, None) => {
@@ -487,7 +447,7 @@ impl<P: Send> SceneFile<P> {
                     store_w: matches!(p.store, Some(StoreFile::W)),
                 };
                 if perspective.distance <= Q::from_integer(0) || perspective.near <= Q::from_integer(0) {
-                    return Err(setting("effects", words!(lang, "setting-perspective-positive")));
+                    return Err(setting("effects", SettingProblem::PerspectiveNotPositive));
                 }
                 Some(perspective)
             }
@@ -496,26 +456,14 @@ impl<P: Send> SceneFile<P> {
             None => None,
             Some(a) => {
                 if !(1..=16).contains(&a.samples) {
-                    return Err(setting(
-                        "effects",
-                        words!(lang, "setting-antialias-samples", samples = a.samples.to_string()),
-                    ));
+                    return Err(setting("effects", SettingProblem::AntialiasSamples(a.samples)));
                 }
                 if u64::from(width) * u64::from(height) * u64::from(a.samples).pow(2) > MAX_CELLS {
-                    return Err(setting(
-                        "effects",
-                        words!(
-                            lang,
-                            "setting-antialias-cells",
-                            width = width.to_string(),
-                            height = height.to_string(),
-                            samples = a.samples.to_string(),
-                            max = MAX_CELLS.to_string()
-                        ),
-                    ));
+                    let cells = SettingProblem::AntialiasCells { width, height, samples: a.samples, max: MAX_CELLS };
+                    return Err(setting("effects", cells));
                 }
                 if rules.store == DepthStore::Exact {
-                    return Err(setting("effects", words!(lang, "setting-antialias-exact")));
+                    return Err(setting("effects", SettingProblem::AntialiasExact));
                 }
                 Some(Antialias { samples: a.samples, depth_at_samples: a.depth != Some(AntialiasDepth::Pixel) })
             }
@@ -553,7 +501,7 @@ impl<P: Send> SceneFile<P> {
 }
 
 /// The scene of [`SceneFile::settings`] with `polygons` made by `make` on
-/// every core, each thread in this thread's language (transparency is an
+/// every core (transparency is an
 /// effect when one of them has an opacity); the error named is that of the
 /// first polygon in the file that failed, and any polygon that did not read
 /// comes first ([`Unmade::Unread`]: the file is then read again to say where).

@@ -20,7 +20,6 @@
 //! polygon that does not read or is not valid, JSON that does not parse)
 //! gives `None`, and the plain way reads the file and names the error.
 
-use crate::words::Lang;
 use std::path::Path;
 
 use rayon::prelude::*;
@@ -41,18 +40,18 @@ const LONGEST_POLYGON: usize = 1 << 18;
 /// The scene, its polygons found in pieces on every core; `None` when the
 /// file is not of the common shape or has an error (see the module's doc),
 /// and in WebAssembly, which has one core: there the plain way reads it.
-pub(super) fn read(lang: Lang, text: &str, path: &Path) -> Option<Scene> {
+pub(super) fn read(text: &str, path: &Path) -> Option<Scene> {
     if cfg!(target_arch = "wasm32") {
         return None;
     }
-    read_in(lang, text, path, PIECE_BYTES)
+    read_in(text, path, PIECE_BYTES)
 }
 
 /// [`read`] in pieces of `piece_bytes` or more.
-pub(super) fn read_in(lang: Lang, text: &str, path: &Path, piece_bytes: usize) -> Option<Scene> {
+pub(super) fn read_in(text: &str, path: &Path, piece_bytes: usize) -> Option<Scene> {
     let (settings, first) = settings_before_polygons(text)?;
     let file: SceneFile<&serde_json::value::RawValue> = serde_json::from_str(&settings).ok()?;
-    let (scene, frame, _) = file.settings(lang, path).ok()?;
+    let (scene, frame, _) = file.settings(path).ok()?;
     let bytes = text.as_bytes();
     let starts = piece_starts(bytes, first, piece_bytes);
     // A piece reads up to the next piece's start; its last polygon may run on past it.

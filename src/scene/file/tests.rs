@@ -242,10 +242,10 @@ proptest! {
     #[test]
     fn pieces_read_the_scene_the_plain_way_reads((text, common) in scene_text(), piece_bytes in 1_usize..400) {
         let path = Path::new("scene.json");
-        let pieces = pieces::read_in(Lang::En, &text, path, piece_bytes);
+        let pieces = pieces::read_in(&text, path, piece_bytes);
         prop_assert_eq!(pieces.is_some(), common, "{}", text);
         if let Some(scene) = pieces {
-            prop_assert_eq!(Some(scene), plain(Lang::En, &text, path).ok());
+            prop_assert_eq!(Some(scene), plain(&text, path).ok());
         }
     }
 }
@@ -262,13 +262,13 @@ fn a_polygon_start_inside_a_name_is_passed_over() {
     );
     // The second piece cut just after the name's `x`, before its `, {`.
     let piece_bytes = text.find("x, {").unwrap() + 1 - (text.find("[{").unwrap() + 1);
-    let scene = pieces::read_in(Lang::En, &text, Path::new("scene.json"), piece_bytes).unwrap();
+    let scene = pieces::read_in(&text, Path::new("scene.json"), piece_bytes).unwrap();
     let names: Vec<&str> = scene.polygons.iter().map(|polygon| polygon.name.as_str()).collect();
     assert_eq!(names.len(), 3);
     assert_eq!(names[0], "first");
     assert!(names[1].starts_with("x, {"));
     assert_eq!(names[2], crate::words::default_name(2));
-    assert_eq!(Ok(scene), plain(Lang::En, &text, Path::new("scene.json")).map_err(|error| error.message(Lang::En)));
+    assert_eq!(Ok(scene), plain(&text, Path::new("scene.json")).map_err(|error| error.message(Lang::En)));
 }
 
 /// Past 18 digits a coordinate is no longer summed as it is scanned: the
@@ -280,4 +280,43 @@ fn long_integers_are_read_as_serde_reads_them() {
         let strict = strict::polygon(&text).map(fields);
         assert_eq!(strict, Some(fields(serde_json::from_str::<PolygonFile>(&text).unwrap())), "{number}");
     }
+}
+
+/// A scene that is not read is refused as facts, read with no language:
+/// where (a polygon and the path within it, a line, where a comma belongs),
+/// what (a setting's key and values), and serde's own description, which is
+/// worded only where it is shown.
+#[test]
+fn a_refused_scene_is_facts_worded_where_shown() {
+    use super::refused::{FormatProblem, JsonKind, MissingComma, Place, SceneProblem, SceneRefused, SettingProblem};
+    let problem = |text: &str| {
+        let error = super::read(text, Path::new("s.json")).unwrap_err();
+        let refused = error.refused::<SceneRefused>().expect("a scene's refusal").clone();
+        assert_eq!(refused.path, Path::new("s.json"));
+        (refused.problem, error.message(Lang::Ru))
+    };
+    assert_eq!(problem("[1, 2]").0, SceneProblem::NotObject(JsonKind::Array));
+    let (frame_bits, russian) = problem(r#"{"frame_bits": 33, "polygons": []}"#);
+    assert_eq!(frame_bits, SceneProblem::Setting { key: "frame_bits", problem: SettingProblem::Bits(33) });
+    assert!(russian.starts_with("s.json: frame_bits: 33 "), "{russian}");
+    let (window, _) = problem(r#"{"window": {"left": 2, "right": 1, "bottom": 0, "top": "1/2"}, "polygons": []}"#);
+    let q = |n: i128, d: i128| crate::numbers::Q::new(n, d);
+    let sides = [q(2, 1), q(1, 1), q(0, 1), q(1, 2)];
+    assert_eq!(window, SceneProblem::Setting { key: "window", problem: SettingProblem::Window { sides } });
+    let (wrong_type, _) = problem("{\"polygons\": [{\"value\": 1, \"vertices\": [[0, 0, 0], [1, 0, \"x\"]]}]}");
+    let SceneProblem::Format(FormatProblem { place, line, syntax, comma, .. }) = wrong_type else {
+        panic!("a format problem: {wrong_type:?}")
+    };
+    assert_eq!(place, Some(Place { polygon: Some(0), path: "vertices[1][2]".into() }));
+    assert_eq!((line, syntax, comma), (Some(1), false, None));
+    let (no_comma, english) = {
+        let text = "{\n  \"width\": 4\n  \"polygons\": []\n}";
+        let error = super::read(text, Path::new("s.json")).unwrap_err();
+        (error.refused::<SceneRefused>().unwrap().problem.clone(), error.message(Lang::En))
+    };
+    let SceneProblem::Format(FormatProblem { place: None, line: Some(3), syntax: true, comma, .. }) = no_comma else {
+        panic!("a syntax problem on line 3: {no_comma:?}")
+    };
+    assert_eq!(comma, Some(MissingComma::EndOfLine(2)));
+    assert!(english.ends_with("(a comma is missing at the end of line 2)"), "{english}");
 }

@@ -1,4 +1,3 @@
-#![cfg_attr(not(any(test, target_arch = "x86_64")), allow(dead_code))]
 //! A span's cells several at a time ([`span`]): spans of up to 32 cells
 //! eight at a time in 32-bit lanes when the polygon's values fit them
 //! ([`eight_cells`]), others from 16 cells on four at a time in 64-bit
@@ -7,12 +6,15 @@
 //! and a masked subtraction; the test, the rounding, the saturation and the
 //! store are the branch-free cell's ([`super::branch_free::test_and_store`])
 //! on every lane. Both loops are written over the lane types of
-//! [`super::wide`]: the processor runs them in AVX2's registers where it has
-//! them (one cell at a time elsewhere: the plain lanes, arrays, were measured
-//! slower than the cell), and the property tests run the same loops over the
-//! plain lanes on every target. Their specification is
-//! [`super::branch_free::cell_by_cell`], as the proptests
-//! `lanes_decide_as_the_cell_does` and `lanes_decide_as_the_cell_does_at_their_bounds` hold them.
+//! [`super::wide`], and run in AVX2's registers where the processor has them
+//! ([`Registers::of_processor`]), in the plain lanes (arrays) everywhere
+//! else; which loop a span takes is decided in one place ([`lanes_for`]):
+//! the plain lanes take only the four 64-bit ones, and not in WebAssembly
+//! ([`Registers::hold_four`]).
+//! Their specification is [`super::branch_free::cell_by_cell`], as the
+//! proptests `lanes_decide_as_the_cell_does` and
+//! `lanes_decide_as_the_cell_does_at_their_bounds` hold both loops in both
+//! registers, chosen or not, on every target the tests run on.
 
 use std::hint::select_unpredictable;
 
@@ -20,7 +22,7 @@ use crate::simulate::buffer::FrameCell;
 use crate::simulate::fast::branch_free::{CellWrite, Stepped, cell_by_cell};
 #[cfg(target_arch = "x86_64")]
 use crate::simulate::fast::wide::{Avx4, Avx8};
-use crate::simulate::fast::wide::{Lanes32, Lanes64};
+use crate::simulate::fast::wide::{Lanes32, Lanes64, Plain4, Plain8};
 
 /// How many cells a chunk of 64-bit lanes holds.
 const LANES: usize = 4;
@@ -36,101 +38,105 @@ const EIGHT: usize = 8;
 /// `step` per cell; returns how many were written. The span is the first
 /// `length` cells of `cells`, which may hold more after it (left as they
 /// are). `GREATER`: the test is the book's `z > stored`, its constants known
-/// to the compiler. A span of up to [`EightLanes::LONGEST`] cells eight at a
-/// time in 32-bit lanes when its polygon's values fit them (`eight`,
-/// [`EightLanes::new`]) and the cells hold whole chunks from its start
-/// ([`eight_cells`]), a chunk's cells past the span rewritten with their own
-/// values; else a span of [`LONG_SPAN`] cells or more four at a time in
-/// 64-bit lanes ([`four_cells`]); one cell at a time otherwise. The lanes
-/// are AVX2's registers where the processor has them, the plain lanes
-/// elsewhere: the same loops either way.
+/// to the compiler. Drawn in this processor's registers
+/// ([`Registers::of_processor`]), in the lanes [`lanes_for`] chooses.
 #[inline(always)]
 pub(super) fn span<F: FrameCell, const GREATER: bool>(
-    (depth, frame): (&mut [u32], &mut [F]),
+    cells: (&mut [u32], &mut [F]),
     length: usize,
     stepping: (Stepped, Stepped, i64),
     eight: Option<&EightLanes>,
     write: CellWrite<F>,
 ) -> u64 {
-    let write = write.compiled::<GREATER>();
-    let lanes = lanes_for(length, depth.len().min(frame.len()), stepping.0, eight);
-    // Each loop its own AVX2 function, so that each is compiled as small as it was written.
+    in_registers::<F, GREATER>(Registers::of_processor(), cells, length, stepping, eight, write)
+}
+
+/// The registers a span's lanes are held in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Registers {
+    /// AVX2's: made only by [`Registers::of_processor`] on a processor that has them.
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        let (start, step, denominator) = stepping;
-        match lanes {
-            Lanes::Eight(room, eight) => {
-                let cells = (&mut depth[..room], &mut frame[..room]);
-                // SAFETY: the processor has AVX2, checked just above.
-                return unsafe { eight_in_avx2::<F, GREATER>(cells, length, start, eight, write) };
-            }
-            Lanes::Four => {
-                let cells = (&mut depth[..length], &mut frame[..length]);
-                // SAFETY: the processor has AVX2, checked just above.
-                return unsafe { four_in_avx2::<F, GREATER>(cells, start, step, denominator, write) };
-            }
-            Lanes::One => {}
+    Avx2,
+    /// The plain lanes, arrays: every target.
+    Plain,
+}
+
+impl Registers {
+    /// AVX2's where this processor has them, the plain lanes elsewhere.
+    #[inline(always)]
+    fn of_processor() -> Registers {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            return Registers::Avx2;
+        }
+        Registers::Plain
+    }
+
+    /// Whether a short span is drawn eight cells at a time in these
+    /// registers: in AVX2's, where a chunk's eight cells cost one
+    /// instruction; not in the plain lanes, where a chunk's cells past the
+    /// span cost as much as its own (the design notes have the measurement).
+    #[inline(always)]
+    fn hold_eight(self) -> bool {
+        match self {
+            #[cfg(target_arch = "x86_64")]
+            Registers::Avx2 => true,
+            Registers::Plain => false,
         }
     }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = lanes;
-    // Without AVX2, one cell at a time: the plain lanes run the same loops as arrays, held to
-    // the cell by the proptests on every target, and measured slower than the cell itself.
-    let (start, step, denominator) = stepping;
-    cell_by_cell((&mut depth[..length], &mut frame[..length]), start, step, denominator, write)
-}
 
-/// Which lanes a span is drawn in.
-#[derive(Debug, Clone, Copy)]
-enum Lanes<'e> {
-    /// Eight 32-bit lanes over the first `room` cells (a multiple of eight).
-    Eight(usize, &'e EightLanes),
-    /// Four 64-bit lanes.
-    Four,
-    /// One cell at a time.
-    One,
-}
-
-/// The lanes for a span of `length` cells with `cells` cells from its start
-/// (the span's and those after it), from `start` with the polygon's `eight`.
-#[inline(always)]
-fn lanes_for(length: usize, cells: usize, start: Stepped, eight: Option<&EightLanes>) -> Lanes<'_> {
-    let room = length.next_multiple_of(EIGHT);
-    match eight {
-        Some(eight)
-            if room <= cells && start.whole.unsigned_abs() < EightLanes::WHOLE && length <= EightLanes::LONGEST =>
-        {
-            Lanes::Eight(room, eight)
+    /// Whether a span of [`LONG_SPAN`] cells or more is drawn four cells at
+    /// a time in these registers: in AVX2's, and in the plain lanes on every
+    /// target but WebAssembly, whose module the plain loops would take past
+    /// its size budget (the design notes have the measurements).
+    #[inline(always)]
+    fn hold_four(self) -> bool {
+        match self {
+            #[cfg(target_arch = "x86_64")]
+            Registers::Avx2 => true,
+            Registers::Plain => !cfg!(target_family = "wasm"),
         }
-        // Lanes of 64 bits pay for their setup (four depths and a stride) only on longer spans.
-        _ if length >= LONG_SPAN => Lanes::Four,
-        _ => Lanes::One,
+    }
+
+    /// [`eight_cells`] in these registers.
+    #[inline(always)]
+    fn eight<F: FrameCell, const GREATER: bool>(
+        self,
+        cells: (&mut [u32], &mut [F]),
+        length: usize,
+        start: Stepped,
+        eight: &EightLanes,
+        write: CellWrite<F>,
+    ) -> u64 {
+        match self {
+            // SAFETY: `Registers::Avx2` is made only where the processor has AVX2.
+            #[cfg(target_arch = "x86_64")]
+            Registers::Avx2 => unsafe { eight_in_avx2::<F, GREATER>(cells, length, start, eight, write) },
+            Registers::Plain => eight_cells::<Plain8, F, GREATER>(cells, length, start, eight, write),
+        }
+    }
+
+    /// [`four_cells`] in these registers.
+    #[inline(always)]
+    fn four<F: FrameCell, const GREATER: bool>(
+        self,
+        cells: (&mut [u32], &mut [F]),
+        start: Stepped,
+        step: Stepped,
+        denominator: i64,
+        write: CellWrite<F>,
+    ) -> u64 {
+        match self {
+            // SAFETY: `Registers::Avx2` is made only where the processor has AVX2.
+            #[cfg(target_arch = "x86_64")]
+            Registers::Avx2 => unsafe { four_in_avx2::<F, GREATER>(cells, start, step, denominator, write) },
+            Registers::Plain => four_cells::<Plain4, F, GREATER>(cells, start, step, denominator, write),
+        }
     }
 }
 
-/// The span in `lanes`, over the lane types `L8` (eight 32-bit lanes) and
-/// `L4` (four 64-bit ones), or one cell at a time: the plain lanes' loops in
-/// the property tests, on every target.
-#[cfg(test)]
-fn in_lanes<L8: Lanes32, L4: Lanes64, F: FrameCell, const GREATER: bool>(
-    (depth, frame): (&mut [u32], &mut [F]),
-    length: usize,
-    (start, step, denominator): (Stepped, Stepped, i64),
-    lanes: Lanes<'_>,
-    write: CellWrite<F>,
-) -> u64 {
-    match lanes {
-        Lanes::Eight(room, eight) => {
-            eight_cells::<L8, F, GREATER>((&mut depth[..room], &mut frame[..room]), length, start, eight, write)
-        }
-        Lanes::Four => {
-            four_cells::<L4, F, GREATER>((&mut depth[..length], &mut frame[..length]), start, step, denominator, write)
-        }
-        Lanes::One => cell_by_cell((&mut depth[..length], &mut frame[..length]), start, step, denominator, write),
-    }
-}
-
-/// [`eight_cells`] in AVX2's registers.
+/// [`eight_cells`] in AVX2's registers (each loop its own function, so that
+/// each is compiled as small as it was written).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 fn eight_in_avx2<F: FrameCell, const GREATER: bool>(
@@ -156,20 +162,72 @@ fn four_in_avx2<F: FrameCell, const GREATER: bool>(
     four_cells::<Avx4, F, GREATER>(cells, start, step, denominator, write)
 }
 
-/// [`span`] with the plain lanes whatever the processor: the loops the
-/// property tests hold to the cell where the processor has AVX2 too.
-#[cfg(test)]
-fn span_in_plain_lanes<F: FrameCell, const GREATER: bool>(
+/// [`span`] in `registers`: the one place the lanes are chosen. A span of up
+/// to [`EightLanes::LONGEST`] cells eight at a time in 32-bit lanes when its
+/// polygon's values fit them (`eight`, [`EightLanes::new`]) and the cells
+/// hold whole chunks from its start ([`eight_cells`]), a chunk's cells past
+/// the span rewritten with their own values; else a span of [`LONG_SPAN`]
+/// cells or more four at a time in 64-bit lanes ([`four_cells`]); one cell
+/// at a time otherwise.
+#[inline(always)]
+fn in_registers<F: FrameCell, const GREATER: bool>(
+    registers: Registers,
     (depth, frame): (&mut [u32], &mut [F]),
     length: usize,
     stepping: (Stepped, Stepped, i64),
     eight: Option<&EightLanes>,
     write: CellWrite<F>,
 ) -> u64 {
-    use crate::simulate::fast::wide::{Plain4, Plain8};
     let write = write.compiled::<GREATER>();
-    let lanes = lanes_for(length, depth.len().min(frame.len()), stepping.0, eight);
-    in_lanes::<Plain8, Plain4, F, GREATER>((depth, frame), length, stepping, lanes, write)
+    let Some(lanes) = lanes_for(registers, length, depth.len().min(frame.len()), stepping.0, eight) else {
+        let (start, step, denominator) = stepping;
+        return cell_by_cell((&mut depth[..length], &mut frame[..length]), start, step, denominator, write);
+    };
+    let (start, step, denominator) = stepping;
+    match lanes {
+        Lanes::Eight(room, eight) => {
+            registers.eight::<F, GREATER>((&mut depth[..room], &mut frame[..room]), length, start, eight, write)
+        }
+        Lanes::Four => {
+            registers.four::<F, GREATER>((&mut depth[..length], &mut frame[..length]), start, step, denominator, write)
+        }
+    }
+}
+
+/// Which lanes a span is drawn in.
+#[derive(Debug, Clone, Copy)]
+enum Lanes<'e> {
+    /// Eight 32-bit lanes over the first `room` cells (a multiple of eight).
+    Eight(usize, &'e EightLanes),
+    /// Four 64-bit lanes.
+    Four,
+}
+
+/// The lanes in `registers` for a span of `length` cells with `cells` cells
+/// from its start (the span's and those after it), from `start` with the
+/// polygon's `eight`; `None`: one cell at a time.
+#[inline(always)]
+fn lanes_for(
+    registers: Registers,
+    length: usize,
+    cells: usize,
+    start: Stepped,
+    eight: Option<&EightLanes>,
+) -> Option<Lanes<'_>> {
+    let room = length.next_multiple_of(EIGHT);
+    match eight {
+        Some(eight)
+            if registers.hold_eight()
+                && room <= cells
+                && start.whole.unsigned_abs() < EightLanes::WHOLE
+                && length <= EightLanes::LONGEST =>
+        {
+            Some(Lanes::Eight(room, eight))
+        }
+        // Lanes of 64 bits pay for their setup (four depths and a stride) only on longer spans.
+        _ if length >= LONG_SPAN && registers.hold_four() => Some(Lanes::Four),
+        _ => None,
+    }
 }
 
 /// A polygon's step, for its short spans drawn eight cells at a time in
@@ -368,8 +426,8 @@ mod tests {
         ])
     }
 
-    /// The span drawn by [`span`] (AVX2's lanes where the processor has
-    /// them) and by the plain lanes, each on a copy of the cells, against the
+    /// The span drawn in this processor's registers (AVX2's where it has
+    /// them) and in the plain lanes, each on a copy of the cells, against the
     /// cells one at a time: the same cells, the same count, the cells after
     /// the span as they were.
     fn lanes_agree(
@@ -389,21 +447,46 @@ mod tests {
         let expected =
             cell_by_cell((&mut depth_cells[..length], &mut frame_cells[..length]), start, step, denominator, write);
         let stepping = (start, step, denominator);
-        type Span =
-            fn((&mut [u32], &mut [u8]), usize, (Stepped, Stepped, i64), Option<&EightLanes>, CellWrite<u8>) -> u64;
-        let paths: [(&str, Span); 2] = if greater {
-            [("the processor's", span::<u8, true>), ("plain", span_in_plain_lanes::<u8, true>)]
-        } else {
-            [("the processor's", span::<u8, false>), ("plain", span_in_plain_lanes::<u8, false>)]
-        };
-        for (lanes, path) in paths {
-            let (mut depth, mut frame) = (cells.clone(), frames.clone());
-            let written = path((&mut depth, &mut frame), length, stepping, eight.as_ref(), write);
-            prop_assert_eq!(&depth, &depth_cells, "{} lanes", lanes);
-            prop_assert_eq!(&frame, &frame_cells, "{} lanes", lanes);
-            prop_assert_eq!(written, expected, "{} lanes", lanes);
+        let room = length.next_multiple_of(EIGHT);
+        let eight_fits = start.whole.unsigned_abs() < EightLanes::WHOLE && length <= EightLanes::LONGEST;
+        for registers in [Registers::of_processor(), Registers::Plain] {
+            // The span as the registers' choice draws it, then in each loop whether chosen or not.
+            let mut paths = vec![("chosen", usize::MAX)];
+            paths.push(("four lanes", length));
+            if eight.is_some() && eight_fits && room <= cells.len() {
+                paths.push(("eight lanes", room));
+            }
+            for (path, cells_given) in paths {
+                let (mut depth, mut frame) = (cells.clone(), frames.clone());
+                let given = cells_given.min(depth.len());
+                let drawn = (&mut depth[..given], &mut frame[..given]);
+                let written = match (path, greater) {
+                    ("chosen", true) => {
+                        in_registers::<u8, true>(registers, drawn, length, stepping, eight.as_ref(), write)
+                    }
+                    ("chosen", false) => {
+                        in_registers::<u8, false>(registers, drawn, length, stepping, eight.as_ref(), write)
+                    }
+                    ("four lanes", true) => registers.four::<u8, true>(drawn, start, step, denominator, write),
+                    ("four lanes", false) => registers.four::<u8, false>(drawn, start, step, denominator, write),
+                    (_, true) => registers.eight::<u8, true>(drawn, length, start, eight.as_ref().unwrap(), write),
+                    (_, false) => registers.eight::<u8, false>(drawn, length, start, eight.as_ref().unwrap(), write),
+                };
+                prop_assert_eq!(&depth, &depth_cells, "{:?} registers, {}", registers, path);
+                prop_assert_eq!(&frame, &frame_cells, "{:?} registers, {}", registers, path);
+                prop_assert_eq!(written, expected, "{:?} registers, {}", registers, path);
+            }
         }
         Ok(())
+    }
+
+    /// On a processor without AVX2 every span is drawn in the plain lanes or
+    /// one cell at a time: CI runs the fast paths' tests so, under qemu's
+    /// Westmere (`.ci/run`).
+    #[test]
+    #[ignore = "needs a processor without AVX2 (CI: qemu-x86_64 -cpu Westmere)"]
+    fn without_avx2_the_lanes_are_the_plain_ones() {
+        assert_eq!(Registers::of_processor(), Registers::Plain);
     }
 
     proptest! {
@@ -412,7 +495,8 @@ mod tests {
         /// Spans of 0 to 40 cells over every test, with denominators from 1
         /// to near 2^61, on stored levels of 0 … 15, with up to 9 more cells
         /// after the span (which the 32-bit lanes may rewrite).
-        #[test]
+        #[cfg_attr(not(target_family = "wasm"), test)]
+        #[cfg_attr(target_family = "wasm", wasm_bindgen_test::wasm_bindgen_test)]
         fn lanes_decide_as_the_cell_does(
             stepping in prop_oneof![1i64..40, Just((1i64 << 61) - 1)]
                 .prop_flat_map(|d| (Just(d), stepped(d, -3..18), stepped(d, -2..3))),
@@ -428,7 +512,8 @@ mod tests {
         /// depths and largest levels near the 2^28 the 32-bit lanes allow, on
         /// both sides of it; steps' whole parts near their 2^20; denominators
         /// near 2^26 and 2^61.
-        #[test]
+        #[cfg_attr(not(target_family = "wasm"), test)]
+        #[cfg_attr(target_family = "wasm", wasm_bindgen_test::wasm_bindgen_test)]
         fn lanes_decide_as_the_cell_does_at_their_bounds(
             (max, stepping) in (prop_oneof![Just((1u32 << 28) - 1), Just(1u32 << 28), (1u32 << 27)..(1u32 << 29), 1u32..16],
                 prop_oneof![Just((1i64 << 26) - 1), Just(1i64 << 26), 1i64..5, Just((1i64 << 61) - 1)])

@@ -1,13 +1,11 @@
-#![cfg_attr(not(any(test, target_arch = "x86_64")), allow(dead_code))]
 //! Lanes: small fixed-width integer vectors the span loops
 //! ([`super::lanes`]) are written over, as tiny-skia's `wide` does: eight
 //! 32-bit lanes ([`Lanes32`]) and four 64-bit ones ([`Lanes64`]), each with
-//! a plain version of arrays that the property tests compile on every target
-//! (`Plain8`, `Plain4`) and, on x86-64, an AVX2 one ([`Avx8`], [`Avx4`]).
-//! The loops are generic over them, so the one loop the processor runs with
-//! AVX2 is the one the property tests run on every target, wasm32 included
-//! (elsewhere the processor draws a span one cell at a time: as arrays the
-//! lanes were slower than the cell).
+//! a plain version of arrays compiled on every target ([`Plain8`],
+//! [`Plain4`]) and, on x86-64, an AVX2 one ([`Avx8`], [`Avx4`]). The loops
+//! are generic over them: a processor with AVX2 runs them in its registers,
+//! every other target (wasm32 included) over the plain arrays, and the
+//! property tests run both.
 //!
 //! The streaming stores that put a drawn tile back ([`stream_copy`],
 //! [`streamed`]) live here too: the crate's raw intrinsics are in this file
@@ -72,20 +70,21 @@ pub(super) trait Lanes64: Copy {
     fn first(self) -> i64;
 }
 
-/// Eight 32-bit lanes as an array: every target, in the property tests.
-#[cfg(test)]
+/// Eight 32-bit lanes as an array: every target.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Plain8([i32; 8]);
 
-#[cfg(test)]
 impl Plain8 {
     #[inline(always)]
     fn zip(self, other: Plain8, f: impl Fn(i32, i32) -> i32) -> Plain8 {
-        Plain8(std::array::from_fn(|k| f(self.0[k], other.0[k])))
+        let mut lanes = self.0;
+        for (lane, other) in lanes.iter_mut().zip(other.0) {
+            *lane = f(*lane, other);
+        }
+        Plain8(lanes)
     }
 }
 
-#[cfg(test)]
 impl Lanes32 for Plain8 {
     #[inline(always)]
     fn splat(value: i32) -> Self {
@@ -97,7 +96,11 @@ impl Lanes32 for Plain8 {
     }
     #[inline(always)]
     fn load(cells: &[u32]) -> Self {
-        Plain8(std::array::from_fn(|k| cells[k] as i32))
+        let mut lanes = [0; 8];
+        for (lane, cell) in lanes.iter_mut().zip(&cells[..8]) {
+            *lane = *cell as i32;
+        }
+        Plain8(lanes)
     }
     #[inline(always)]
     fn store(self, cells: &mut [u32]) {
@@ -131,7 +134,7 @@ impl Lanes32 for Plain8 {
     }
     #[inline(always)]
     fn select(self, yes: Self, mask: Self) -> Self {
-        Plain8(std::array::from_fn(|k| (yes.0[k] & mask.0[k]) | (self.0[k] & !mask.0[k])))
+        self.zip(mask, |no, mask| no & !mask).zip(yes.and(mask), |no, yes| no | yes)
     }
     #[inline(always)]
     fn mask_bits(self) -> u32 {
@@ -139,20 +142,21 @@ impl Lanes32 for Plain8 {
     }
 }
 
-/// Four 64-bit lanes as an array: every target, in the property tests.
-#[cfg(test)]
+/// Four 64-bit lanes as an array: every target.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Plain4([i64; 4]);
 
-#[cfg(test)]
 impl Plain4 {
     #[inline(always)]
     fn zip(self, other: Plain4, f: impl Fn(i64, i64) -> i64) -> Plain4 {
-        Plain4(std::array::from_fn(|k| f(self.0[k], other.0[k])))
+        let mut lanes = self.0;
+        for (lane, other) in lanes.iter_mut().zip(other.0) {
+            *lane = f(*lane, other);
+        }
+        Plain4(lanes)
     }
 }
 
-#[cfg(test)]
 impl Lanes64 for Plain4 {
     #[inline(always)]
     fn splat(value: i64) -> Self {
@@ -164,14 +168,16 @@ impl Lanes64 for Plain4 {
     }
     #[inline(always)]
     fn widen(cells: &[u32]) -> Self {
-        Plain4(std::array::from_fn(|k| i64::from(cells[k])))
+        let mut lanes = [0; 4];
+        for (lane, cell) in lanes.iter_mut().zip(&cells[..4]) {
+            *lane = i64::from(*cell);
+        }
+        Plain4(lanes)
     }
     #[inline(always)]
     fn store_where(self, mask: Self, cells: &mut [u32]) {
         for ((cell, value), mask) in cells[..4].iter_mut().zip(self.0).zip(mask.0) {
-            if mask != 0 {
-                *cell = value as u32;
-            }
+            *cell = std::hint::select_unpredictable(mask != 0, value as u32, *cell);
         }
     }
     #[inline(always)]
@@ -192,7 +198,7 @@ impl Lanes64 for Plain4 {
     }
     #[inline(always)]
     fn select(self, yes: Self, mask: Self) -> Self {
-        Plain4(std::array::from_fn(|k| (yes.0[k] & mask.0[k]) | (self.0[k] & !mask.0[k])))
+        self.zip(mask, |no, mask| no & !mask).zip(yes.and(mask), |no, yes| no | yes)
     }
     #[inline(always)]
     fn mask_bits(self) -> u32 {
@@ -393,7 +399,8 @@ mod tests {
     /// Streamed copies hold what `copy_from_slice` gives, whatever the
     /// target's alignment and length (the head before a 16-byte boundary
     /// and the tail after the last whole chunk are copied as usual).
-    #[test]
+    #[cfg_attr(not(target_family = "wasm"), test)]
+    #[cfg_attr(target_family = "wasm", wasm_bindgen_test::wasm_bindgen_test)]
     fn a_streamed_copy_is_a_copy() {
         fn check<T: Copy + PartialEq + std::fmt::Debug + From<u8>>() {
             let source: Vec<T> = (0..200u8).map(T::from).collect();

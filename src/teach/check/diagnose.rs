@@ -400,7 +400,6 @@ mod tests {
         // Two squares on a 12 × 2 raster, A (z = 5) over columns 0–2, B (z = 9) over 1–3; columns
         // 4–11 empty, which the test's other form (cleared to the far end, 15) contradicts.
         let scene = Scene::from_json(
-            Lang::En,
             r#"{"width": 12, "height": 2, "polygons": [
                 {"value": 1, "vertices": [[0, 0, 5], [3, 0, 5], [3, 2, 5], [0, 2, 5]]},
                 {"value": 2, "vertices": [[1, 0, 9], [4, 0, 9], [4, 2, 9], [1, 2, 9]]}]}"#,

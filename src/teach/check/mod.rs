@@ -23,7 +23,7 @@ pub use answer::{Answer, CellRange, Matrix, Mismatch, Misreading, compare, compa
 /// Reads an answer file for one of `scene`'s buffers: a matrix as the book
 /// prints it; a symbolic link is followed only where `links` says so.
 pub fn read_answer(lang: Lang, path: &Path, scene: &Scene, buffer: Buffer, links: Links) -> Result<Answer, Error> {
-    let text = read_text_with(lang, path, links)?;
+    let text = read_text_with(path, links)?;
     answer_from_text(lang, &text, scene, buffer).map_err(|message| Error::Answer { path: path.to_owned(), message })
 }
 

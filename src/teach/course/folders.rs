@@ -60,7 +60,7 @@ pub fn plan<'a>(handouts: &'a Handouts<'a>, dir: &Path, fairness_text: String, p
     for variant in &manifest.students {
         for buffer in manifest.buffers() {
             plan.file_made(dir.join("keys").join(answer_name(&variant.identity, buffer)), move || {
-                let (frame, depth) = key_of(&scene_of(lang, variant)?);
+                let (frame, depth) = key_of(&scene_of(variant)?);
                 let rows = if buffer == Buffer::Frame { frame } else { depth };
                 Ok(format!("# variant {} (the key)\n{}", variant.code, matrix(&rows, false)).into_bytes())
             });
@@ -77,13 +77,13 @@ pub fn plan<'a>(handouts: &'a Handouts<'a>, dir: &Path, fairness_text: String, p
             let path = folder.join(&name);
             let format = *format;
             plan.file_made(folder.join(&name), move || {
-                let worksheet = worksheet(lang, manifest, variant, &scene_of(lang, variant)?);
+                let worksheet = worksheet(lang, manifest, variant, &scene_of(variant)?);
                 format.encode(lang, &worksheet, &path, false, (None, Paper::default()))
             });
         }
         for buffer in manifest.buffers() {
             plan.file_made(folder.join(answer_name(&variant.identity, buffer)), move || {
-                Ok(template(lang, variant, &scene_of(lang, variant)?, buffer).into_bytes())
+                Ok(template(lang, variant, &scene_of(variant)?, buffer).into_bytes())
             });
         }
         plan.file(folder.join("hand-in.txt"), hand_in(lang, manifest, variant, handouts.site));
@@ -116,8 +116,8 @@ pub fn worksheet(lang: Lang, manifest: &Manifest, variant: &Variant, scene: &Sce
 }
 
 /// A student's scene, read from the manifest as their `scene.json` is.
-fn scene_of(lang: Lang, variant: &Variant) -> Result<Scene, Error> {
-    Scene::from_json(lang, variant.scene.get(), Path::new("scene.json"))
+fn scene_of(variant: &Variant) -> Result<Scene, Error> {
+    Scene::from_json(variant.scene.get(), Path::new("scene.json"))
 }
 
 /// One printable page of every worksheet, in the roster's order: each
@@ -238,7 +238,6 @@ mod tests {
     #[test]
     fn a_template_reads_back_as_an_answer_with_every_cell_unanswered() {
         let scene = Scene::from_json(
-            Lang::En,
             r#"{"width": 4, "height": 3, "polygons": [{"value": 1, "vertices": [[0, 0, 5], [4, 0, 5], [0, 3, 5]]}]}"#,
             Path::new("s.json"),
         )

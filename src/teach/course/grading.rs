@@ -254,7 +254,7 @@ pub fn grade_course(lang: Lang, loaded: &Loaded, class: &Path) -> Result<CourseG
                     [] => Handed::Missing,
                     [file] => {
                         graded.push((*file).clone());
-                        match read_text_with(lang, &file.path, Links::Refuse) {
+                        match read_text_with(&file.path, Links::Refuse) {
                             Err(error) => {
                                 Handed::Malformed(crate::teach::check::as_the_student_sees(lang, &error, &file.path))
                             }

@@ -205,13 +205,13 @@ pub struct Loaded {
 }
 
 /// Reads and checks the manifest at `path`.
-pub fn load(lang: Lang, path: &Path) -> Result<Loaded, Error> {
-    let text = crate::door::read_text(lang, path)?;
-    read(lang, &text, path)
+pub fn load(path: &Path) -> Result<Loaded, Error> {
+    let text = crate::door::read_text(path)?;
+    read(&text, path)
 }
 
 /// Reads and checks a manifest's text (see [`load`]); `path` names it in messages.
-pub fn read(lang: Lang, text: &str, path: &Path) -> Result<Loaded, Error> {
+pub fn read(text: &str, path: &Path) -> Result<Loaded, Error> {
     let refuse = |place: String, problem| Error::from(ManifestError { path: path.to_owned(), place, problem });
     let mut deserializer = serde_json::Deserializer::from_str(text);
     let manifest: Manifest = serde_path_to_error::deserialize(&mut deserializer).map_err(|e| {
@@ -238,7 +238,7 @@ pub fn read(lang: Lang, text: &str, path: &Path) -> Result<Loaded, Error> {
         }
         // The scene is named as the student knows it, their own scene.json.
         let shown = Path::new("scene.json");
-        let scene = Scene::from_json(lang, variant.scene.get(), shown).map_err(|e| {
+        let scene = Scene::from_json(variant.scene.get(), shown).map_err(|e| {
             refuse(format!("{place}.scene ({})", variant.identity), ManifestProblem::Scene(Box::new(e)))
         })?;
         if scene.polygons.is_empty() || scene.clear_depth.level().is_none() {

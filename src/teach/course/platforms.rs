@@ -87,14 +87,14 @@ pub fn autograde(
     submission: &std::path::Path,
     render: &dyn Fn(&crate::teach::check::CheckReport) -> String,
 ) -> Result<String, String> {
-    let loaded = super::manifest::load(lang, variants).map_err(|e| e.message(lang))?;
+    let loaded = super::manifest::load(variants).map_err(|e| e.message(lang))?;
     let manifest = &loaded.manifest;
     let (file, pick): (_, Pick) = match platform {
         Platform::Gradescope { metadata, .. } => (metadata, gradescope_student),
         Platform::PrairieLearn { data } => (data, prairielearn_student),
     };
     let file = file.ok_or_else(|| words!(lang, "platform-needs-file"))?;
-    let text = crate::door::read_text(lang, file).map_err(|e| e.message(lang))?;
+    let text = crate::door::read_text(file).map_err(|e| e.message(lang))?;
     let k = pick(manifest, &text).map_err(|e| e.message(lang))?;
     let scene = &loaded.scenes[k];
     let (expected, unused) = submitted(submission, scene, &manifest.buffers()).map_err(|e| e.message(lang))?;

@@ -128,8 +128,8 @@ pub fn json(manifest: &Manifest, graded: &CourseGrades, changes: &[Change]) -> S
 }
 
 /// An earlier class's grades, read through the door.
-pub fn read_previous(lang: Lang, path: &Path) -> Result<ClassJson, Error> {
-    let text = crate::door::read_text(lang, path)?;
+pub fn read_previous(path: &Path) -> Result<ClassJson, Error> {
+    let text = crate::door::read_text(path)?;
     let class: ClassJson = serde_json::from_str(&text).map_err(|e| {
         Error::from(ManifestError {
             path: path.to_owned(),

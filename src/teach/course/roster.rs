@@ -202,8 +202,8 @@ impl Refusal for RosterError {
 
 /// Reads the roster at `path` through the door, its identities from
 /// `identity` (a column's header, without case) or the shape's default.
-pub fn load(lang: Lang, path: &Path, identity: Option<&str>) -> Result<Roster, Error> {
-    let text = crate::door::read_text(lang, path)?;
+pub fn load(path: &Path, identity: Option<&str>) -> Result<Roster, Error> {
+    let text = crate::door::read_text(path)?;
     parse(&text, identity).map_err(|problem| RosterError { path: path.to_owned(), problem }.into())
 }
 

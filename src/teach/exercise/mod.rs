@@ -487,7 +487,7 @@ pub fn search<T>(
     let mut rng = SplitMix64::new(spec.seed);
     for tries in 1..=TRIES {
         let json = candidate(spec, &mut rng);
-        let Ok(scene) = Scene::from_json(lang, &json, std::path::Path::new("exercise.json")) else { continue };
+        let Ok(scene) = Scene::from_json(&json, std::path::Path::new("exercise.json")) else { continue };
         if spec.style == Style::Book && !book_like(&scene, spec) {
             continue;
         }
@@ -616,8 +616,7 @@ mod tests {
     #[test]
     fn the_books_example_has_its_known_cases() {
         let scene =
-            Scene::load(Lang::En, std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")))
-                .unwrap();
+            Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap();
         let cases: Vec<HardCase> = find_cases(Lang::En, &scene).into_iter().map(|f| f.case).collect();
         // The triangle pierces the rectangle: hidden and intersecting; its depths step by
         // 3/4 and reach k + 1/2 (pixel (22, 14): z = 19/2).

@@ -98,7 +98,7 @@ pub fn edit(lang: Lang, text: &str, edit: &str) -> Result<String, String> {
     let bad = || words!(lang, "edit-does-not-fit");
     // The raster's size as the scene is drawn (a preset's and the defaults resolved).
     let size = || {
-        let drawn = crate::scene::Scene::from_json(lang, text, std::path::Path::new(&super::scene_name(lang)));
+        let drawn = crate::scene::Scene::from_json(text, std::path::Path::new(&super::scene_name(lang)));
         drawn.map(|scene| (scene.width, scene.height)).map_err(|error| error.message(lang))
     };
     let index = |number: usize| number.checked_sub(1).ok_or_else(bad);

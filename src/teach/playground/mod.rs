@@ -25,6 +25,7 @@ use crate::observe::explain::history::{Extras, history};
 use crate::observe::render::figure::{self, Shading};
 use crate::observe::render::report;
 use crate::scene::Scene;
+use crate::scene::refused::{FormatProblem, SceneProblem, SceneRefused};
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::teach::check::answer_from_text;
@@ -74,11 +75,12 @@ fn scene_of(lang: Lang, text: &str) -> Result<Scene, Value> {
     let refused = |too_large: PageLimit| failed(too_large.message(lang));
     // The page's limits, before the scene is read (reading is the work they spare)…
     check_text(text, None).map_err(refused)?;
-    let scene = Scene::from_json(lang, text, Path::new(&scene_name(lang))).map_err(|error| {
-        let at = match &error {
-            crate::error::Error::Polygon { index, .. } => Some(ErrorAt::Polygon { polygon: *index }),
-            crate::error::Error::Setting { key, .. } => Some(ErrorAt::Setting { key: key.to_string() }),
-            crate::error::Error::SceneFormat { line: Some(line), .. } => {
+    let scene = Scene::from_json(text, Path::new(&scene_name(lang))).map_err(|error| {
+        let problem = error.refused::<SceneRefused>().map(|refused| &refused.problem);
+        let at = match (&error, problem) {
+            (crate::error::Error::Polygon { index, .. }, _) => Some(ErrorAt::Polygon { polygon: *index }),
+            (_, Some(SceneProblem::Setting { key, .. })) => Some(ErrorAt::Setting { key: key.to_string() }),
+            (_, Some(SceneProblem::Format(FormatProblem { line: Some(line), .. }))) => {
                 let shown = text.lines().nth(line.saturating_sub(1)).unwrap_or_default();
                 let shown = crate::words::printable(shown).into_owned();
                 let said = words!(lang, "error-at-line", line = *line, text = shown.clone());
@@ -538,7 +540,7 @@ mod tests {
     /// the module and the page stopped answering; `2^32 + 10` wrapped to 10.
     #[test]
     fn a_pixel_off_the_raster_is_said_as_explain_says_it_however_far() {
-        let scene = Scene::from_json(Lang::En, BOOK, Path::new("the scene")).unwrap();
+        let scene = Scene::from_json(BOOK, Path::new("the scene")).unwrap();
         let said = |x: &str, y: &str| explain_typed(Lang::En, &scene, x, y);
         let outside = "is outside the 32×32 raster (x 0 … 31, y 0 … 31)";
         assert_eq!(said("0", "32")["error"], format!("pixel (0, 32) {outside}"));

@@ -457,7 +457,7 @@ mod tests {
     const SMALL: &str = r#"{"width": 4, "height": 3, "polygons": [{"name": "t", "value": 1, "vertices": [[0, 0, 1], [4, 0, 1], [0, 3, 1]]}]}"#;
 
     fn scene() -> Scene {
-        crate::scene::Scene::from_json(Lang::En, SMALL, std::path::Path::new("small.json")).unwrap()
+        crate::scene::Scene::from_json(SMALL, std::path::Path::new("small.json")).unwrap()
     }
 
     fn snapshot(name: &str, value: &impl Serialize) {

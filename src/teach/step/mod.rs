@@ -541,8 +541,7 @@ mod tests {
     use super::*;
 
     fn book() -> Scene {
-        Scene::load(Lang::En, std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json")))
-            .unwrap()
+        Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
     }
 
     #[test]

@@ -282,7 +282,7 @@ mod tests {
             if path.extension().is_none_or(|e| e != "json") {
                 continue;
             }
-            let scene = Scene::load(Lang::En, &path).unwrap();
+            let scene = Scene::load(&path).unwrap();
             let mut stepper = Stepper::new(&scene, crate::effects::arith::Arith::Exact);
             let stops = stops(Lang::En, &mut stepper);
             let cleared = crate::simulate::simulation::Simulation::new(&scene);

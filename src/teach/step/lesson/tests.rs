@@ -5,7 +5,7 @@ use super::*;
 use crate::observe::tracer::Stop;
 
 fn book() -> Scene {
-    Scene::load(Lang::En, std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
+    Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/rogers.json"))).unwrap()
 }
 
 /// The triangle's scanline 15.5 (its sixth recorded scanline: rows 10 … 15).
@@ -150,7 +150,7 @@ fn a_hint_names_a_mistake_only_where_a_wrong_rule_gives_exactly_the_answer() {
     }
     // A square at z = 21/4: right 5; 6 is rounded up.
     let text = r#"{"width": 2, "height": 2, "polygons": [{"value": 1, "vertices": [[0, 0, 5.25], [2, 0, 5.25], [2, 2, 5.25], [0, 2, 5.25]]}]}"#;
-    let scene = Scene::from_json(Lang::En, text, std::path::Path::new("s.json")).unwrap();
+    let scene = Scene::from_json(text, std::path::Path::new("s.json")).unwrap();
     for (typed, hint) in [("6", Hint::RoundedUp), ("7", Hint::Other)] {
         let mut lesson = Lesson::new(scene.clone(), Arith::Exact, Some(QuizMode::Depth));
         lesson.start(None);
@@ -192,7 +192,7 @@ fn moving_on_is_refused_while_questions_are_open_until_skipped() {
 #[test]
 fn an_unsaturated_depth_is_a_mistake_named_as_such() {
     let text = r#"{"width": 4, "height": 4, "polygons": [{"value": 1, "vertices": [[0, 0, 20], [4, 0, 20], [4, 4, 20], [0, 4, 20]]}]}"#;
-    let scene = Scene::from_json(Lang::En, text, std::path::Path::new("s.json")).unwrap();
+    let scene = Scene::from_json(text, std::path::Path::new("s.json")).unwrap();
     let mut lesson = Lesson::new(scene, Arith::Exact, Some(QuizMode::Depth));
     lesson.start(None);
     assert!(matches!(answer(&mut lesson, "99"), Said::AskAgain(_)));
