@@ -82,7 +82,10 @@ pub enum Error {
     /// scene's polygons, a figure's, a check's, grading's, the GPU's, an
     /// exercise's, an arithmetic mode's, the command line's).
     Refused(Box<dyn Refusal>),
-    /// An answer file (for `check`) that is malformed or the wrong shape.
+    /// A course's answer file (a BUET check's, a CS 418 report's PNG) that
+    /// is malformed: its reader words what is wrong. A homework answer's
+    /// problems are facts of their own
+    /// ([`crate::teach::check::AnswerFileRefused`]).
     Answer {
         /// The answer file.
         path: PathBuf,

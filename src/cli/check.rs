@@ -111,7 +111,7 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
         for state in &states {
             let mut read = Vec::new();
             for (buffer, path) in &state.files {
-                read.push((*buffer, path.as_path(), read_answer(lang, path, &scene, *buffer, zsim::Links::Refuse)?));
+                read.push((*buffer, path.as_path(), read_answer(path, &scene, *buffer, zsim::Links::Refuse)?));
             }
             let report = check(lang, &scene, &args.scene, state.after, read, args.arith)?;
             text.push_str(&report_text(lang, &report));
@@ -126,7 +126,7 @@ pub fn run(lang: zsim::Lang, args: &CheckArgs, out: &mut dyn Write) -> Result<Fi
     let mut malformed = None;
     for (buffer, path) in [(Buffer::Frame, &args.frame), (Buffer::Depth, &args.depth)] {
         if let Some(path) = path {
-            match read_answer(lang, path, &scene, buffer, zsim::Links::Follow) {
+            match read_answer(path, &scene, buffer, zsim::Links::Follow) {
                 Ok(answer) => answers.push((buffer, path.as_path(), answer)),
                 Err(error) => {
                     malformed.get_or_insert(error);

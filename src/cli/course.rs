@@ -271,7 +271,7 @@ fn feedback_of(lang: Lang, loaded: &Loaded, row: &Row) -> Result<String, Error> 
     let last = scene.polygons.len() - 1;
     let mut answers = Vec::new();
     for file in &row.files {
-        match zsim::check::read_answer(lang, &file.path, scene, file.buffer, zsim::Links::Refuse) {
+        match zsim::check::read_answer(&file.path, scene, file.buffer, zsim::Links::Refuse) {
             Ok(answer) => answers.push((file.buffer, PathBuf::from(&file.name), answer)),
             Err(error) => text.push_str(&format!("{}\n", zsim::check::as_the_student_sees(lang, &error, &file.path))),
         }

@@ -333,7 +333,7 @@ fn write_feedback(
             // The answers that were read, explained as `zsim check` explains them.
             let mut answers = Vec::new();
             for file in files_of.get(grade.student.as_str()).into_iter().flatten() {
-                match read_answer(lang, &file.path, scene, file.buffer, zsim::Links::Refuse) {
+                match read_answer(&file.path, scene, file.buffer, zsim::Links::Refuse) {
                     Ok(matrix) => answers.push((file.buffer, zsim::own_name(&file.path), matrix)),
                     Err(error) => text.push_str(&format!("{}\n", as_the_student_sees(lang, &error, &file.path))),
                 }

@@ -1,6 +1,7 @@
 //! Homework answers: reading a matrix as the book prints it, and finding the
 //! cells that differ from zsim's.
 
+use crate::observe::explain::Buffer;
 use crate::words::Lang;
 
 /// A matrix of a buffer's values, top row first.
@@ -50,11 +51,142 @@ impl Answer {
 
 /// What an answer's cells may hold: `0 ..= max`, said as `a 2-bit framebuffer`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct CellRange<'a> {
+pub struct CellRange {
     /// The largest value a cell holds.
     pub max: u32,
+    /// The buffer the answer is for.
+    pub buffer: Buffer,
+    /// Its bits.
+    pub bits: u32,
+}
+
+impl CellRange {
     /// The buffer, for messages: `a 2-bit framebuffer`, `a 4-bit z-buffer`.
-    pub buffer: &'a str,
+    fn words(self, lang: Lang) -> String {
+        match self.buffer {
+            Buffer::Frame => words!(lang, "answer-frame-range", bits = self.bits.to_string()),
+            Buffer::Depth => words!(lang, "answer-depth-range", bits = self.bits.to_string()),
+        }
+    }
+}
+
+/// An answer that was not read, as facts: the first [`PROBLEMS_NAMED`]
+/// problems, how many there are in all, and what the cells may hold; worded
+/// where it is shown ([`AnswerRefused::message`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct AnswerRefused {
+    /// What the cells may hold.
+    pub range: CellRange,
+    /// The first problems, in the answer's order.
+    pub named: Vec<AnswerProblem>,
+    /// How many problems there are in all.
+    pub count: usize,
+}
+
+/// One problem of an answer.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum AnswerProblem {
+    /// No row at all.
+    Empty,
+    /// A decimal comma (`9,5`) in a line that is not the raster's width.
+    DecimalComma {
+        /// The line, from 1.
+        line: usize,
+        /// The number as written.
+        text: String,
+    },
+    /// A cell that is not a whole number.
+    NotANumber {
+        /// Where.
+        at: CellAt,
+        /// The cell as written.
+        cell: String,
+    },
+    /// A value the buffer cannot hold.
+    TooLarge {
+        /// Where.
+        at: CellAt,
+        /// The value.
+        value: u64,
+    },
+    /// A row of the wrong length.
+    RowLength {
+        /// The line, from 1.
+        line: usize,
+        /// How many values it has.
+        count: usize,
+        /// The raster's width.
+        width: u32,
+    },
+    /// The wrong number of rows.
+    RowCount {
+        /// How many rows the answer has.
+        count: usize,
+        /// The raster's height.
+        height: u32,
+    },
+}
+
+/// Where a cell of an answer is: its line and place in the line (both from
+/// 1), and the raster's cell (x, y) it stands for when the shape allows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CellAt {
+    /// The line, from 1.
+    pub line: usize,
+    /// The value's place in the line, from 1.
+    pub column: usize,
+    /// The raster's cell, `(x, y)`.
+    pub cell: Option<(usize, usize)>,
+}
+
+impl AnswerRefused {
+    /// The problems named, separated by ` · `, then how many more there are, in `lang`.
+    pub fn message(&self, lang: Lang) -> String {
+        let mut text = self.named.iter().map(|problem| self.problem(lang, problem)).collect::<Vec<_>>().join(" · ");
+        if self.count > self.named.len() {
+            text.push_str(&words!(lang, "answer-more-problems", count = self.count - self.named.len()));
+        }
+        text
+    }
+
+    fn problem(&self, lang: Lang, problem: &AnswerProblem) -> String {
+        let at = |at: &CellAt| {
+            let (line, column) = (at.line.to_string(), at.column.to_string());
+            match at.cell {
+                Some((x, y)) => {
+                    words!(lang, "answer-at-cell", line = line, column = column, x = x.to_string(), y = y.to_string())
+                }
+                None => words!(lang, "answer-at", line = line, column = column),
+            }
+        };
+        let (buffer, max) = (self.range.words(lang), self.range.max.to_string());
+        match problem {
+            AnswerProblem::Empty => words!(lang, "answer-empty"),
+            AnswerProblem::DecimalComma { line, text } => words!(
+                lang,
+                "answer-decimal-comma",
+                line = line.to_string(),
+                text = crate::words::printable(text).into_owned()
+            ),
+            AnswerProblem::NotANumber { at: place, cell } => words!(
+                lang,
+                "answer-not-a-number",
+                at = at(place),
+                cell = crate::words::token(lang, cell),
+                buffer = buffer,
+                max = max
+            ),
+            AnswerProblem::TooLarge { at: place, value } => {
+                words!(lang, "answer-too-large", at = at(place), value = value.to_string(), buffer = buffer, max = max)
+            }
+            AnswerProblem::RowLength { line, count, width } => {
+                words!(lang, "answer-row-length", line = line.to_string(), count = *count, width = width.to_string())
+            }
+            AnswerProblem::RowCount { count, height } => {
+                words!(lang, "answer-row-count", count = *count, height = height.to_string())
+            }
+        }
+    }
 }
 
 /// Reads an answer: integers separated by spaces or commas (`0, 1, 2` as
@@ -62,8 +194,8 @@ pub struct CellRange<'a> {
 /// not worked out; blank lines and lines starting with `#` are ignored. Checks each value against `range` and the
 /// shape against the raster; the error names the line, the column and the
 /// raster cell, and says what was found: the first [`PROBLEMS_NAMED`]
-/// problems, separated by ` · `, then how many more there are.
-pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: CellRange<'_>) -> Result<Answer, String> {
+/// problems, and how many there are.
+pub fn parse_answer(text: &str, width: u32, height: u32, range: CellRange) -> Result<Answer, AnswerRefused> {
     let mut problems = Problems::default();
     let mut left = Vec::new();
     let lines = text
@@ -91,36 +223,16 @@ pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: Cell
             })
         });
         if let (Some(token), true) = (comma, cells.len() != width as usize) {
-            problems.push(|| {
-                words!(
-                    lang,
-                    "answer-decimal-comma",
-                    line = line_number.to_string(),
-                    text = crate::words::printable(token).into_owned()
-                )
-            });
+            problems.push(|| AnswerProblem::DecimalComma { line: line_number, text: token.to_string() });
             continue;
         }
         let mut row = Vec::with_capacity(cells.len());
         for (column, cell) in cells.iter().enumerate() {
-            // Where the cell is, worded only when it is wrong (not once per cell).
-            let at = || {
-                let (line, place) = (line_number.to_string(), (column + 1).to_string());
-                match y {
-                    Some(y) if column < width as usize => {
-                        words!(
-                            lang,
-                            "answer-at-cell",
-                            line = line,
-                            column = place,
-                            x = column.to_string(),
-                            y = y.to_string()
-                        )
-                    }
-                    _ => words!(lang, "answer-at", line = line, column = place),
-                }
+            let at = CellAt {
+                line: line_number,
+                column: column + 1,
+                cell: y.filter(|_| column < width as usize).map(|y| (column, y)),
             };
-            let max = || range.max.to_string();
             if matches!(*cell, "?" | ".") {
                 // Marked only once the first is met: a complete answer holds no mask.
                 if left.is_empty() {
@@ -133,77 +245,47 @@ pub fn parse_answer(lang: Lang, text: &str, width: u32, height: u32, range: Cell
                 continue;
             }
             let Ok(value) = cell.parse::<u64>() else {
-                problems.push(|| {
-                    words!(
-                        lang,
-                        "answer-not-a-number",
-                        at = at(),
-                        cell = crate::words::token(lang, cell),
-                        buffer = range.buffer,
-                        max = max()
-                    )
-                });
+                problems.push(|| AnswerProblem::NotANumber { at, cell: cell.to_string() });
                 row.push(0);
                 continue;
             };
             if value > u64::from(range.max) {
-                problems.push(|| {
-                    words!(
-                        lang,
-                        "answer-too-large",
-                        at = at(),
-                        value = value.to_string(),
-                        buffer = range.buffer,
-                        max = max()
-                    )
-                });
+                problems.push(|| AnswerProblem::TooLarge { at, value });
             }
             row.push(value.min(u64::from(range.max)) as u32);
         }
         if row.len() != width as usize {
-            problems.push(|| {
-                words!(
-                    lang,
-                    "answer-row-length",
-                    line = line_number.to_string(),
-                    count = row.len(),
-                    width = width.to_string()
-                )
-            });
+            problems.push(|| AnswerProblem::RowLength { line: line_number, count: row.len(), width });
         }
         if problems.count == 0 {
             rows.push(row);
         }
     }
     if row_count == 0 {
-        return Err(words!(lang, "answer-empty"));
+        return Err(AnswerRefused { range, named: vec![AnswerProblem::Empty], count: 1 });
     }
     if row_count != height as usize {
-        problems.push(|| words!(lang, "answer-row-count", count = row_count, height = height.to_string()));
+        problems.push(|| AnswerProblem::RowCount { count: row_count, height });
     }
     if problems.count == 0 {
         return Ok(Answer { rows, left });
     }
-    let mut text = problems.named.join(" · ");
-    if problems.count > PROBLEMS_NAMED {
-        text.push_str(&words!(lang, "answer-more-problems", count = problems.count - PROBLEMS_NAMED));
-    }
-    Err(text)
+    Err(AnswerRefused { range, named: problems.named, count: problems.count })
 }
 
-/// An answer file's problems: the first [`PROBLEMS_NAMED`] worded, the rest
-/// only counted (a file of garbage costs what its cells cost, not a message each).
+/// An answer file's problems: the first [`PROBLEMS_NAMED`] kept, the rest
+/// only counted (a file of garbage costs what its cells cost, not a problem each).
 #[derive(Default)]
 struct Problems {
-    named: Vec<String>,
+    named: Vec<AnswerProblem>,
     count: usize,
 }
 
 impl Problems {
-    /// One more problem, worded by `words` only if it is among those named.
-    fn push(&mut self, words: impl FnOnce() -> String) {
+    /// One more problem, made by `problem` only if it is among those named.
+    fn push(&mut self, problem: impl FnOnce() -> AnswerProblem) {
         if self.count < PROBLEMS_NAMED {
-            self.named.push(words());
+            self.named.push(problem());
         }
         self.count += 1;
     }
@@ -311,24 +393,26 @@ pub fn compare(answer: &Matrix, expected: &Matrix) -> Vec<Mismatch> {
 mod tests {
     use super::*;
 
-    const FRAME: CellRange<'static> = CellRange { max: 3, buffer: "a 2-bit framebuffer" };
+    const FRAME: CellRange = CellRange { max: 3, buffer: Buffer::Frame, bits: 2 };
+
+    /// The answer read, or its refusal worded in English.
+    fn parse_answer(text: &str, width: u32, height: u32, range: CellRange) -> Result<Answer, String> {
+        super::parse_answer(text, width, height, range).map_err(|refused| refused.message(Lang::En))
+    }
 
     #[test]
     fn comments_blank_lines_and_commas_are_taken() {
         let text = "# my answer\n\n1 2\n\n3, 0\n";
-        assert_eq!(parse_answer(Lang::En, text, 2, 2, FRAME).unwrap().rows, vec![vec![1, 2], vec![3, 0]]);
-        assert_eq!(parse_answer(Lang::En, "1,2\n3 ,0\n", 2, 2, FRAME).unwrap().rows, vec![vec![1, 2], vec![3, 0]]);
+        assert_eq!(parse_answer(text, 2, 2, FRAME).unwrap().rows, vec![vec![1, 2], vec![3, 0]]);
+        assert_eq!(parse_answer("1,2\n3 ,0\n", 2, 2, FRAME).unwrap().rows, vec![vec![1, 2], vec![3, 0]]);
     }
 
     #[test]
     fn wrong_shapes_say_what_was_found() {
-        assert_eq!(parse_answer(Lang::En, "1 2\n3 0\n1 1\n", 2, 2, FRAME).unwrap_err(), "3 rows; the raster has 2");
+        assert_eq!(parse_answer("1 2\n3 0\n1 1\n", 2, 2, FRAME).unwrap_err(), "3 rows; the raster has 2");
+        assert_eq!(parse_answer("1 2\n3\n", 2, 2, FRAME).unwrap_err(), "line 2: 1 value; the raster is 2 wide");
         assert_eq!(
-            parse_answer(Lang::En, "1 2\n3\n", 2, 2, FRAME).unwrap_err(),
-            "line 2: 1 value; the raster is 2 wide"
-        );
-        assert_eq!(
-            parse_answer(Lang::En, "1 x\n", 2, 1, FRAME).unwrap_err(),
+            parse_answer("1 x\n", 2, 1, FRAME).unwrap_err(),
             "line 1, value 2 (x = 1, y = 0): \"x\" is not a whole number (a 2-bit framebuffer holds 0 … 3)"
         );
     }
@@ -337,7 +421,7 @@ mod tests {
     #[test]
     fn a_value_the_buffer_cannot_hold_is_named_at_its_cell() {
         assert_eq!(
-            parse_answer(Lang::En, "0 0\n0 7\n", 2, 2, FRAME).unwrap_err(),
+            parse_answer("0 0\n0 7\n", 2, 2, FRAME).unwrap_err(),
             "line 2, value 2 (x = 1, y = 0): 7 does not fit a 2-bit framebuffer (0 … 3)"
         );
     }
@@ -362,17 +446,35 @@ mod tests {
     /// the cells left, which are neither right nor wrong.
     #[test]
     fn question_marks_and_dots_leave_cells_unanswered() {
-        let answer = parse_answer(Lang::En, "? 1\n. 2\n", 2, 2, FRAME).unwrap();
+        let answer = parse_answer("? 1\n. 2\n", 2, 2, FRAME).unwrap();
         assert_eq!(answer.unanswered(), 2);
         assert_eq!((answer.answered(0, 0), answer.answered(0, 1), answer.answered(1, 0)), (false, true, false));
         let expected = vec![vec![3, 1], vec![0, 0]];
         assert_eq!(compare_answer(&answer, &expected), vec![Mismatch { x: 1, y: 0, answer: 2, expected: 0 }]);
-        assert_eq!(parse_answer(Lang::En, "1 2\n3 0\n", 2, 2, FRAME).unwrap().unanswered(), 0);
+        assert_eq!(parse_answer("1 2\n3 0\n", 2, 2, FRAME).unwrap().unanswered(), 0);
         // A question mark is a cell like any other: the row still needs its width.
+        assert_eq!(parse_answer("?\n1 1\n", 2, 2, FRAME).unwrap_err(), "line 1: 1 value; the raster is 2 wide");
+    }
+
+    /// An answer that is not read is refused as facts, read with no
+    /// language: each problem where it is, with what was found, the first
+    /// three kept and all of them counted.
+    #[test]
+    fn a_refused_answer_is_facts() {
+        let refused = super::parse_answer("1 x\n0 9 9 9\n1,5\n2\n", 2, 2, FRAME).unwrap_err();
+        let at = |line, column, cell| CellAt { line, column, cell };
         assert_eq!(
-            parse_answer(Lang::En, "?\n1 1\n", 2, 2, FRAME).unwrap_err(),
-            "line 1: 1 value; the raster is 2 wide"
+            refused.named,
+            vec![
+                AnswerProblem::NotANumber { at: at(1, 2, Some((1, 1))), cell: "x".into() },
+                AnswerProblem::TooLarge { at: at(2, 2, Some((1, 0))), value: 9 },
+                AnswerProblem::TooLarge { at: at(2, 3, None), value: 9 },
+            ]
         );
+        // Past those three: the third 9, the row too long, the 5 of `1,5`, the short row, four rows.
+        assert_eq!(refused.count, 8);
+        assert!(refused.message(Lang::En).ends_with(" · and 5 more problems"), "{}", refused.message(Lang::En));
+        assert_eq!(super::parse_answer("# nothing\n", 2, 2, FRAME).unwrap_err().named, vec![AnswerProblem::Empty]);
     }
 
     #[test]

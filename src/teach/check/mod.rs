@@ -18,26 +18,44 @@ use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::words::Lang;
 use crate::words::printable;
-pub use answer::{Answer, CellRange, Matrix, Mismatch, Misreading, compare, compare_answer, misreading, parse_answer};
+pub use answer::{
+    Answer, AnswerProblem, AnswerRefused, CellAt, CellRange, Matrix, Mismatch, Misreading, compare, compare_answer,
+    misreading, parse_answer,
+};
 
 /// Reads an answer file for one of `scene`'s buffers: a matrix as the book
 /// prints it; a symbolic link is followed only where `links` says so.
-pub fn read_answer(lang: Lang, path: &Path, scene: &Scene, buffer: Buffer, links: Links) -> Result<Answer, Error> {
+pub fn read_answer(path: &Path, scene: &Scene, buffer: Buffer, links: Links) -> Result<Answer, Error> {
     let text = read_text_with(path, links)?;
-    answer_from_text(lang, &text, scene, buffer).map_err(|message| Error::Answer { path: path.to_owned(), message })
+    answer_from_text(&text, scene, buffer)
+        .map_err(|refused| AnswerFileRefused { path: path.to_owned(), refused }.into())
+}
+
+/// An answer file that was not read: its path and its problems.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct AnswerFileRefused {
+    /// The answer file.
+    pub path: PathBuf,
+    /// Why it was not read.
+    pub refused: AnswerRefused,
+}
+
+impl Refusal for AnswerFileRefused {
+    fn message(&self, lang: Lang) -> String {
+        format!("{}: {}", crate::words::shown_path(&self.path), self.refused.message(lang))
+    }
 }
 
 /// An answer for one of `scene`'s buffers read from `text` (a file's, or one
-/// typed into the page); `Err` says why not, in `lang`.
-pub fn answer_from_text(lang: Lang, text: &str, scene: &Scene, buffer: Buffer) -> Result<Answer, String> {
-    let (max, description) = match buffer {
-        Buffer::Frame => (
-            crate::scene::max_for_bits(scene.frame_bits),
-            words!(lang, "answer-frame-range", bits = scene.frame_bits.to_string()),
-        ),
-        Buffer::Depth => (scene.depth_max(), words!(lang, "answer-depth-range", bits = scene.depth_bits.to_string())),
+/// typed into the page); `Err` says why not, as facts.
+pub fn answer_from_text(text: &str, scene: &Scene, buffer: Buffer) -> Result<Answer, AnswerRefused> {
+    let range = match buffer {
+        Buffer::Frame => {
+            CellRange { max: crate::scene::max_for_bits(scene.frame_bits), buffer, bits: scene.frame_bits }
+        }
+        Buffer::Depth => CellRange { max: scene.depth_max(), buffer, bits: scene.depth_bits },
     };
-    parse_answer(lang, text, scene.width, scene.height, CellRange { max, buffer: &description })
+    parse_answer(text, scene.width, scene.height, range)
 }
 
 /// An error about a student's answer file as the student and the class

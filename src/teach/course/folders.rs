@@ -250,7 +250,7 @@ mod tests {
         let text = template(Lang::En, &variant, &scene, Buffer::Depth);
         assert_eq!(super::super::manifest::code_in(&text), Some("7KQ-M3X"));
         assert!(text.contains("Ana\\u{a}Lima"), "{text}");
-        let answer = crate::teach::check::answer_from_text(Lang::En, &text, &scene, Buffer::Depth).unwrap();
+        let answer = crate::teach::check::answer_from_text(&text, &scene, Buffer::Depth).unwrap();
         assert_eq!(answer.unanswered(), 12);
     }
 }

@@ -269,9 +269,9 @@ pub fn grade_course(lang: Lang, loaded: &Loaded, class: &Path) -> Result<CourseG
                                         owner: owner.to_string(),
                                     });
                                 }
-                                match answer_from_text(lang, &text, scene, *buffer) {
+                                match answer_from_text(&text, scene, *buffer) {
                                     Ok(answer) => Handed::Matrix(answer),
-                                    Err(why) => Handed::Malformed(format!("{}: {why}", file.name)),
+                                    Err(why) => Handed::Malformed(format!("{}: {}", file.name, why.message(lang))),
                                 }
                             }
                         }

@@ -357,7 +357,7 @@ pub fn prairielearn_results(
             after = crate::observe::explain::polygon_after(lang, scene, test.after)
         );
         let (points, output) = match test.files.as_slice() {
-            [path] => match read_answer(lang, path, scene, test.buffer, crate::door::Links::Refuse) {
+            [path] => match read_answer(path, scene, test.buffer, crate::door::Links::Refuse) {
                 Ok(answer) => {
                     let file = std::path::Path::new(path.file_name().unwrap_or(path.as_os_str()));
                     let report = check(

@@ -270,7 +270,7 @@ fn submissions(
                         .find(|file| file.buffer == *buffer);
                     let handed = match file {
                         None => Handed::Missing,
-                        Some(file) => match read_answer(lang, &file.path, scene, *buffer, Links::Refuse) {
+                        Some(file) => match read_answer(&file.path, scene, *buffer, Links::Refuse) {
                             Ok(matrix) => Handed::Matrix(matrix),
                             Err(error) => Handed::Malformed(as_the_student_sees(lang, &error, &file.path)),
                         },

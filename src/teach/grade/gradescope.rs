@@ -104,7 +104,7 @@ pub fn results(
                 let file = expected_name(scene, test.after, test.buffer);
                 (0, false, words!(lang, "gradescope-missing", file = file) + "\n")
             }
-            [path] => match read_answer(lang, path, scene, test.buffer, Links::Refuse) {
+            [path] => match read_answer(path, scene, test.buffer, Links::Refuse) {
                 Ok(answer) => {
                     // The student sees the file's name, not where the autograder keeps it.
                     let shown = Path::new(path.file_name().unwrap_or(path.as_os_str()));

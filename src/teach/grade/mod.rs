@@ -354,8 +354,8 @@ mod tests {
     fn unanswered_cells_earn_nothing_and_are_counted() {
         let expected = key(vec![vec![0, 2, 2, 0], vec![0, 2, 1, 0]]);
         let text = "0 2 2 0\n? ? ? ?\n";
-        let range = crate::teach::check::answer::CellRange { max: 3, buffer: "a 2-bit framebuffer" };
-        let half = crate::teach::check::answer::parse_answer(Lang::En, text, 4, 2, range).unwrap();
+        let range = crate::teach::check::answer::CellRange { max: 3, buffer: Buffer::Frame, bits: 2 };
+        let half = crate::teach::check::answer::parse_answer(text, 4, 2, range).unwrap();
         let (row, _) = grade(&[submission("half", Handed::Matrix(half))], &expected, None).remove(0);
         assert_eq!(
             (row.percent(), row.frame_wrong, row.unanswered, row.status.to_string()),

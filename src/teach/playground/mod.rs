@@ -284,9 +284,9 @@ pub fn check(lang: Lang, text: &str, number: usize, buffer: Buffer, typed: &str)
     let Some(after) = number.checked_sub(1).filter(|index| *index < scene.polygons.len()) else {
         return failed(words!(lang, "no-such-polygon"));
     };
-    let answer = match answer_from_text(lang, typed, &scene, buffer) {
+    let answer = match answer_from_text(typed, &scene, buffer) {
         Ok(answer) => answer,
-        Err(message) => return failed(message),
+        Err(refused) => return failed(refused.message(lang)),
     };
     let name = words!(lang, "column-your-answer");
     let answers = vec![(buffer, Path::new(&name), answer)];
@@ -329,9 +329,9 @@ pub fn answer_file(lang: Lang, text: &str, buffer: Buffer, typed: &str, student:
         let identity = crate::words::printable(student).into_owned();
         return failed(words!(lang, "manifest-unnameable", place = scene_name(lang), identity = identity));
     }
-    let answer = match answer_from_text(lang, typed, &scene, buffer) {
+    let answer = match answer_from_text(typed, &scene, buffer) {
         Ok(answer) => answer,
-        Err(message) => return failed(message),
+        Err(refused) => return failed(refused.message(lang)),
     };
     let code: String = code.chars().filter(|c| c.is_ascii_alphanumeric() || *c == '-').take(7).collect();
     let mut file = format!("# variant {code}\n");
