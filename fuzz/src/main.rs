@@ -55,7 +55,7 @@ fn exercise(text: &str) {
     if std::env::var_os("ZSIM_FUZZ_PRINT").is_some() {
         eprintln!("{text}");
     }
-    let Ok(scene) = Scene::from_json(zsim::Lang::En, text, Path::new("fuzz.json")) else { return };
+    let Ok(scene) = Scene::from_json(text, Path::new("fuzz.json")) else { return };
     // Keep each input fast: the fuzzer wants many executions, not big rasters.
     if u64::from(scene.width) * u64::from(scene.height) > 64 * 64 || scene.polygons.len() > 64 {
         return;
