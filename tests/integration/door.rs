@@ -194,13 +194,22 @@ fn an_interrupted_multi_file_write_leaves_the_old_files_or_none() {
     for delay in (0..40).map(|k| took * k / 20) {
         let out = dir.join("out");
         let _ = std::fs::remove_dir_all(&out);
-        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_zsim"))
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_zsim"));
+        command
             .args(["grade", "examples/rogers.json", path(&class), "-o", path(&out)])
             .current_dir(env!("CARGO_MANIFEST_DIR"))
             .stdout(std::process::Stdio::null())
-            .stderr(std::process::Stdio::null())
-            .spawn()
-            .unwrap();
+            .stderr(std::process::Stdio::null());
+        // Ctrl-C's own action in the child, as a terminal gives it: a shell's background job
+        // (a CI script started with `&`) would otherwise hand it down ignored.
+        // SAFETY: only signal(2), which is async-signal-safe, between fork and exec.
+        unsafe {
+            std::os::unix::process::CommandExt::pre_exec(&mut command, || {
+                libc::signal(libc::SIGINT, libc::SIG_DFL);
+                Ok(())
+            });
+        }
+        let mut child = command.spawn().unwrap();
         std::thread::sleep(delay);
         // SAFETY: kill sends SIGINT to the child this test started.
         unsafe { libc::kill(child.id() as i32, libc::SIGINT) };
