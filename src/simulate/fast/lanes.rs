@@ -10,7 +10,7 @@
 //! ([`Registers::of_processor`]), in the plain lanes (arrays) everywhere
 //! else; which loop a span takes is decided in one place ([`lanes_for`]):
 //! the plain lanes take only the four 64-bit ones, and not in WebAssembly
-//! ([`Registers::hold_four`]).
+//! ([`Registers::draw_in`]).
 //! Their specification is [`super::branch_free::cell_by_cell`], as the
 //! proptests `lanes_decide_as_the_cell_does` and
 //! `lanes_decide_as_the_cell_does_at_their_bounds` hold both loops in both
@@ -72,29 +72,19 @@ impl Registers {
         Registers::Plain
     }
 
-    /// Whether a short span is drawn eight cells at a time in these
-    /// registers: in AVX2's, where a chunk's eight cells cost one
-    /// instruction; not in the plain lanes, where a chunk's cells past the
-    /// span cost as much as its own (the design notes have the measurement).
+    /// Whether these registers draw a span in `lanes`. AVX2's draw both.
+    /// The plain lanes draw only the four 64-bit ones: eight plain lanes
+    /// rewrite up to seven cells past a short span, which costs an array as
+    /// much as the span's own cells. And none in WebAssembly, whose module
+    /// the plain loops would take past its size budget. (The design notes
+    /// have the measurements.)
     #[inline(always)]
-    fn hold_eight(self) -> bool {
-        match self {
+    fn draw_in(self, lanes: &Lanes<'_>) -> bool {
+        match (self, lanes) {
             #[cfg(target_arch = "x86_64")]
-            Registers::Avx2 => true,
-            Registers::Plain => false,
-        }
-    }
-
-    /// Whether a span of [`LONG_SPAN`] cells or more is drawn four cells at
-    /// a time in these registers: in AVX2's, and in the plain lanes on every
-    /// target but WebAssembly, whose module the plain loops would take past
-    /// its size budget (the design notes have the measurements).
-    #[inline(always)]
-    fn hold_four(self) -> bool {
-        match self {
-            #[cfg(target_arch = "x86_64")]
-            Registers::Avx2 => true,
-            Registers::Plain => !cfg!(target_family = "wasm"),
+            (Registers::Avx2, _) => true,
+            (Registers::Plain, Lanes::Eight(..)) => false,
+            (Registers::Plain, Lanes::Four) => !cfg!(target_family = "wasm"),
         }
     }
 
@@ -217,15 +207,15 @@ fn lanes_for(
     let room = length.next_multiple_of(EIGHT);
     match eight {
         Some(eight)
-            if registers.hold_eight()
-                && room <= cells
+            if room <= cells
                 && start.whole.unsigned_abs() < EightLanes::WHOLE
-                && length <= EightLanes::LONGEST =>
+                && length <= EightLanes::LONGEST
+                && registers.draw_in(&Lanes::Eight(room, eight)) =>
         {
             Some(Lanes::Eight(room, eight))
         }
         // Lanes of 64 bits pay for their setup (four depths and a stride) only on longer spans.
-        _ if length >= LONG_SPAN && registers.hold_four() => Some(Lanes::Four),
+        _ if length >= LONG_SPAN && registers.draw_in(&Lanes::Four) => Some(Lanes::Four),
         _ => None,
     }
 }
