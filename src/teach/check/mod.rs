@@ -285,7 +285,7 @@ pub fn expected_answers(folder: &Path, scene: &Scene, expect: &Expect) -> Result
 }
 
 /// One wrong cell of an answer, explained.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
 pub struct WrongCell {
     /// Column.
     pub x: u32,

@@ -16,7 +16,7 @@
 use std::path::Path;
 
 use base64::Engine as _;
-use serde_json::{Value, json};
+use serde_json::Value;
 
 use crate::effects::arith::Arith;
 use crate::error::Refusal;
@@ -32,15 +32,16 @@ use crate::teach::check::answer_from_text;
 pub use crate::teach::page_limits::{MAX_PAGE_SCENE_BYTES, MAX_PRINTED_CELLS, MAX_SHOWN_CELLS, MAX_SHOWN_POLYGONS};
 use crate::teach::page_limits::{PageLimit, check_reach, check_text};
 use crate::teach::step::lesson::{Command, Lesson, Said};
-use crate::teach::step::page::{BufferForm, buffer_data};
+use crate::teach::step::page::printed_buffers;
 use crate::teach::step::{Moved, QuizMode};
 use crate::words::Lang;
 
 mod shown;
 mod site;
 pub use shown::{
-    Acted, At, Checkable, ClearedTo, DrawnSettings, ErrorAt, Failed, KeyAction, LessonView, PolygonView, QUIZ_KINDS,
-    RasterRow, SceneView, keys, lesson_view, quiz_mode, scene_view,
+    Acted, AfterView, AnswerFileView, At, CheckView, Checkable, ClearedTo, DrawnSettings, ErrorAt, Failed, FigureView,
+    KeyAction, LessonView, PolygonView, QUIZ_KINDS, RasterRow, SceneView, TextView, keys, lesson_view, quiz_mode,
+    scene_view,
 };
 pub use site::{one_file_page, site_files, step_page, write_site};
 
@@ -111,7 +112,7 @@ pub fn view(lang: Lang, text: &str) -> Value {
 
 /// [`view`] of a scene already read (the lesson's: one reading for every view): [`SceneView`].
 pub fn view_of(lang: Lang, scene: &Scene) -> Value {
-    serde_json::to_value(shown::scene_view(lang, scene)).unwrap_or_default()
+    shown::value(shown::scene_view(lang, scene))
 }
 
 /// The buffers after polygon `number` (from 1, as the page names it) of the
@@ -141,12 +142,13 @@ pub fn after_of(lang: Lang, scene: &Scene, number: usize) -> Value {
         last = simulation.draw_next_counted(&mut Unobserved);
     }
     let Some(drawn) = last else { return failed(words!(lang, "no-such-polygon")) };
-    let (frame, depth) = buffer_data(simulation.buffers(), BufferForm::Printed);
-    json!({
-        "ok": true,
-        "heading": report::polygon_heading(lang, scene, drawn.index),
-        "counts": words!(lang, "run-counts", covered = drawn.tested.to_string(), written = drawn.written.to_string()),
-        "frame": frame, "depth": depth,
+    let (frame, depth) = printed_buffers(simulation.buffers());
+    shown::value(AfterView {
+        ok: true,
+        heading: report::polygon_heading(lang, scene, drawn.index),
+        counts: words!(lang, "run-counts", covered = drawn.tested.to_string(), written = drawn.written.to_string()),
+        frame,
+        depth,
     })
 }
 
@@ -170,7 +172,8 @@ pub fn figure_of(lang: Lang, scene: &Scene) -> Value {
     }
     let mut simulation = Simulation::new(scene);
     simulation.finish(&mut Unobserved);
-    json!({"ok": true, "svg": figure::svg(lang, scene, simulation.buffers(), last, Shading::Frame, &scene_name(lang))})
+    let svg = figure::svg(lang, scene, simulation.buffers(), last, Shading::Frame, &scene_name(lang));
+    shown::value(FigureView { ok: true, svg })
 }
 
 /// The lesson of the scene in `text` with a quiz in `mode` or none, at
@@ -227,7 +230,7 @@ impl PageCommand {
 /// [`lesson_acted`] as JSON: [`Acted`], or `{"ok": false, "error"}`.
 pub fn lesson_act(lang: Lang, lesson: &mut Lesson, command: &str) -> Value {
     match lesson_acted(lang, lesson, command) {
-        Ok(acted) => serde_json::to_value(acted).unwrap_or_default(),
+        Ok(acted) => shown::value(acted),
         Err(error) => error,
     }
 }
@@ -268,7 +271,7 @@ pub fn lesson_acted(lang: Lang, lesson: &mut Lesson, command: &str) -> Result<Ac
 /// Everything the page shows of the lesson now, already cut to what may be
 /// shown: [`LessonView`].
 pub fn lesson_state(lang: Lang, lesson: &mut Lesson) -> Value {
-    serde_json::to_value(shown::lesson_view(lang, lesson)).unwrap_or_default()
+    shown::value(shown::lesson_view(lang, lesson))
 }
 
 /// A homework answer for `buffer` after polygon `number` (from 1, as the page names it),
@@ -296,21 +299,29 @@ pub fn check(lang: Lang, text: &str, number: usize, buffer: Buffer, typed: &str)
             Err(error) => return failed(error.message(lang)),
         };
     let answer = &report.answers[0];
-    let wrong: Vec<Value> = answer
-        .wrong
-        .iter()
-        .map(|c| json!({"x": c.x, "y": c.y, "answer": c.answer, "expected": c.expected, "reason": c.reason}))
-        .collect();
     let more = (answer.differing > answer.wrong.len())
         .then(|| words!(lang, "check-more-cells", count = answer.differing - answer.wrong.len()));
     // The score by grading's rule, as `grade` gives this answer alone.
     let percent =
         crate::numbers::decimal(crate::teach::grade::score(&[answer.earned]) * crate::numbers::Q::from_integer(100), 1);
     let score = words!(lang, "class-page-score", score = crate::words::localize_decimal(lang, percent));
-    json!({
-        "ok": true, "right": answer.wrong.is_empty(), "verdict": report.verdict(lang, answer), "hint": answer.hint, "score": score,
-        "wrong": wrong, "more": more, "diagnosis": report.diagnosis,
-        "columns": ["x", "y", words!(lang, "check-column-answer"), words!(lang, "check-column-right"), words!(lang, "check-column-why")],
+    let columns = [
+        "x".to_string(),
+        "y".to_string(),
+        words!(lang, "check-column-answer"),
+        words!(lang, "check-column-right"),
+        words!(lang, "check-column-why"),
+    ];
+    shown::value(CheckView {
+        ok: true,
+        right: answer.wrong.is_empty(),
+        verdict: report.verdict(lang, answer),
+        hint: answer.hint.clone(),
+        score,
+        wrong: answer.wrong.clone(),
+        more,
+        diagnosis: report.diagnosis.clone(),
+        columns,
     })
 }
 
@@ -345,7 +356,7 @@ pub fn answer_file(lang: Lang, text: &str, buffer: Buffer, typed: &str, student:
         file.push('\n');
     }
     let name = format!("{student}.{}.txt", crate::teach::grade::file_kind(buffer));
-    json!({"ok": true, "name": name, "text": file})
+    shown::value(AnswerFileView { ok: true, name, text: file })
 }
 
 /// Pixel `(x, y)`'s history through the scene, as `zsim explain` prints it.
@@ -397,7 +408,9 @@ pub fn explain_typed(lang: Lang, scene: &Scene, x: &str, y: &str) -> Value {
 /// [`explain`] of a scene already read (the lesson's: one reading for every view).
 pub fn explain_of(lang: Lang, scene: &Scene, x: u32, y: u32) -> Value {
     match history(scene, (x, y), Extras::default()) {
-        Ok(history) => json!({"ok": true, "text": history.text(lang, scene, Path::new(&scene_name(lang)))}),
+        Ok(history) => {
+            shown::value(TextView { ok: true, text: history.text(lang, scene, Path::new(&scene_name(lang))) })
+        }
         Err(error) => failed(error.message(lang)),
     }
 }
@@ -434,8 +447,8 @@ pub fn page_words(lang: Lang) -> Value {
     }
     words.insert("lang".into(), Value::String(lang.code().into()));
     // The keys the page takes, from the lesson's one table, and the quiz's kinds.
-    words.insert("keys".into(), serde_json::to_value(keys(lang)).unwrap_or_default());
-    words.insert("quizKinds".into(), json!(QUIZ_KINDS));
+    words.insert("keys".into(), shown::value(keys(lang)));
+    words.insert("quizKinds".into(), shown::value(QUIZ_KINDS));
     words.insert("depthName".into(), Value::String(Buffer::Depth.name(lang)));
     words.insert("frameName".into(), Value::String(Buffer::Frame.name(lang)));
     Value::Object(words)
@@ -510,6 +523,7 @@ const PAGE_WORDS: [(&str, &str); 57] = [
 #[cfg(test)]
 mod tests {
     use super::*;
+    use serde_json::json;
 
     const BOOK: &str = include_str!("../../../examples/rogers.json");
 

@@ -17,7 +17,7 @@ use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
 use crate::teach::page_limits::{MAX_PRINTED_CELLS, MAX_SHOWN_CELLS, MAX_SHOWN_POLYGONS};
 use crate::teach::step::lesson::{KEYS, Lesson};
-use crate::teach::step::page::{BufferForm, buffer_data};
+use crate::teach::step::page::printed_buffers;
 use crate::teach::step::table::PixelRow;
 use crate::teach::step::{Question, QuizMode};
 use crate::words::{Lang, polygon_label};
@@ -133,6 +133,75 @@ pub struct RasterRow {
     pub cells: Vec<u32>,
 }
 
+/// The buffers after one polygon, as `zsim run --after` prints them, with
+/// the polygon's heading and counts ([`crate::playground::after`]).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct AfterView {
+    /// Always true (a failure is [`Failed`]).
+    pub ok: bool,
+    /// The polygon's heading.
+    pub heading: String,
+    /// Its covered and written pixels, in words.
+    pub counts: String,
+    /// The framebuffer, printed.
+    pub frame: String,
+    /// The z-buffer, printed.
+    pub depth: String,
+}
+
+/// The book-style figure after the last polygon ([`crate::playground::figure`]).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct FigureView {
+    /// Always true (a failure is [`Failed`]).
+    pub ok: bool,
+    /// The figure, as SVG.
+    pub svg: String,
+}
+
+/// A text the page shows as it is: a pixel's history
+/// ([`crate::playground::explain`]).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct TextView {
+    /// Always true (a failure is [`Failed`]).
+    pub ok: bool,
+    /// The text.
+    pub text: String,
+}
+
+/// A homework answer checked ([`crate::playground::check`]).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct CheckView {
+    /// Always true (a failure is [`Failed`]).
+    pub ok: bool,
+    /// Whether every answered cell is right.
+    pub right: bool,
+    /// The verdict, in words.
+    pub verdict: String,
+    /// The hint, where there is one.
+    pub hint: Option<String>,
+    /// The score by grading's rule, in words.
+    pub score: String,
+    /// The wrong cells named, each with why.
+    pub wrong: Vec<crate::teach::check::WrongCell>,
+    /// How many more cells differ, in words, where some are not named.
+    pub more: Option<String>,
+    /// The likely misconception, where one is found.
+    pub diagnosis: Option<String>,
+    /// The wrong cells' table's headings.
+    pub columns: [String; 5],
+}
+
+/// A homework answer as the file a student hands in ([`crate::playground::answer_file`]).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct AnswerFileView {
+    /// Always true (a failure is [`Failed`]).
+    pub ok: bool,
+    /// The file's name.
+    pub name: String,
+    /// Its text.
+    pub text: String,
+}
+
 /// What the page gets instead of what it asked for: why not, in words.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct Failed {
@@ -179,8 +248,14 @@ impl Failed {
 
     /// As the JSON the page reads.
     pub fn value(&self) -> serde_json::Value {
-        serde_json::to_value(self).unwrap_or_default()
+        value(self)
     }
+}
+
+/// A view as the JSON the page reads (every view is plain data, which
+/// serializes without fail).
+pub(super) fn value(view: impl Serialize) -> serde_json::Value {
+    serde_json::to_value(view).unwrap_or_default()
 }
 
 /// The scene's view of `scene`.
@@ -228,10 +303,9 @@ pub fn scene_view(lang: Lang, scene: &Scene) -> SceneView {
         notes.push(words!(lang, "limit-printed-cells", cells = MAX_PRINTED_CELLS.to_string()));
     }
     let (framebuffer, zbuffer) = match printed {
-        true => buffer_data(buffers, BufferForm::Printed),
-        false => (serde_json::Value::from(""), serde_json::Value::from("")),
+        true => printed_buffers(buffers),
+        false => (String::new(), String::new()),
     };
-    let text = |value: serde_json::Value| value.as_str().unwrap_or_default().to_string();
     let cell_by_cell = cells <= MAX_SHOWN_CELLS;
     SceneView {
         ok: true,
@@ -250,8 +324,8 @@ pub fn scene_view(lang: Lang, scene: &Scene) -> SceneView {
         checkable,
         cell_by_cell,
         cleared: ClearedTo { frame: scene.background, depth: scene.clear_depth.level() },
-        framebuffer: text(framebuffer),
-        zbuffer: text(zbuffer),
+        framebuffer,
+        zbuffer,
         rows: match cell_by_cell {
             true => raster_rows(scene.height, buffers.frame_rows()),
             false => Vec::new(),
@@ -503,6 +577,36 @@ mod tests {
         let failed = crate::teach::playground::view(Lang::En, "{\n  \"width\": 4,\n  \"polygons\": [\n}");
         assert_eq!((failed["ok"].as_bool(), failed["at"]["line"].as_u64()), (Some(false), Some(4)), "{failed}");
         snapshot("playground_failed", &failed);
+    }
+
+    /// The page's other answers, each its type's shape: the buffers after a
+    /// polygon, a homework answer checked (wrong everywhere it is not 1) and
+    /// handed in as a file, a pixel's history, and the figure (its SVG cut
+    /// to its first element here).
+    #[test]
+    fn the_pages_other_answers_are_typed() {
+        use crate::observe::explain::Buffer;
+        use crate::teach::playground as page;
+        let after = page::after(Lang::En, SMALL, 1);
+        let scene = scene();
+        let mut drawn = Simulation::new(&scene);
+        drawn.finish(&mut Unobserved);
+        let (frame, depth) = printed_buffers(drawn.buffers());
+        assert_eq!((after["frame"].as_str(), after["depth"].as_str()), (Some(frame.as_str()), Some(depth.as_str())));
+        snapshot("playground_after", &after);
+        let typed = "1 1 1 1\n1 1 1 1\n1 1 1 1\n";
+        let checked = page::check(Lang::En, SMALL, 1, Buffer::Frame, typed);
+        assert_eq!((checked["right"].as_bool(), checked["wrong"].as_array().map(Vec::len)), (Some(false), Some(6)));
+        snapshot("playground_check", &checked);
+        let file = page::answer_file(Lang::En, SMALL, Buffer::Frame, typed, "ada", "k3x");
+        assert_eq!(file["name"].as_str(), Some("ada.frame.txt"));
+        snapshot("playground_answer_file", &file);
+        snapshot("playground_history", &page::explain(Lang::En, SMALL, 0, 0));
+        let mut figure = page::figure(Lang::En, SMALL);
+        let svg = figure["svg"].as_str().unwrap_or_default();
+        assert!(svg.starts_with("<svg"), "{svg}");
+        figure["svg"] = svg[..svg.find('>').map_or(0, |end| end + 1)].into();
+        snapshot("playground_figure", &figure);
     }
 
     /// The page's keys are the lesson's, every one.

@@ -6,6 +6,8 @@
 //! ([`crate::teach::step::lesson`]), which this page does not carry, so it says in
 //! one line where the quiz is (the browser playground, `step --quiz`).
 
+use serde::Serialize;
+
 use crate::numbers::exact_and_decimal;
 use crate::observe::explain::pixel_reason;
 use crate::observe::report::{MatrixCell, MatrixStyle, matrix_styled};
@@ -19,24 +21,32 @@ pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
     let scene = stepper.scene();
     let stops = stops(lang, stepper);
     // The page's words, in the student's language; {…} marks what the script fills in.
-    let words = serde_json::json!({
-        "noPixel": words!(lang, "scene-covers-no-pixel"),
-        "frameAfter": words!(lang, "frame-after-scanline"),
-        "depthAfter": words!(lang, "depth-after-scanline"),
-        "stored": words!(lang, "column-stored"),
-        "after": words!(lang, "column-depth-after"),
-        "why": words!(lang, "column-why"),
-        "keeps": words!(lang, "keeps-value", value = "{after}"),
-        "status": words!(lang, "scanline-of-count", at = "{at}", count = "{count}"),
-    });
+    let words = StepPageWords {
+        no_pixel: words!(lang, "scene-covers-no-pixel"),
+        frame_after: words!(lang, "frame-after-scanline"),
+        depth_after: words!(lang, "depth-after-scanline"),
+        stored: words!(lang, "column-stored"),
+        after: words!(lang, "column-depth-after"),
+        why: words!(lang, "column-why"),
+        keeps: words!(lang, "keeps-value", value = "{after}"),
+        status: words!(lang, "scanline-of-count", at = "{at}", count = "{count}"),
+    };
     // The top row's y: the rows are printed top first.
     let top = crate::raster::row_y(scene.height, 0);
     // The buffers once, as cleared; each stop carries only its pixels' values after it, which the
     // script applies in order (a page of every buffer at every stop grew as the cube of the side).
     let cleared = crate::simulate::simulation::Simulation::new(scene);
-    let (frame, depth) = buffer_data(cleared.buffers(), BufferForm::Cells);
-    let data = serde_json::json!({"title": title, "width": scene.width, "height": scene.height, "top": top,
-        "op": scene.depth_test.symbol(), "words": words, "cleared": {"frame": frame, "depth": depth}, "stops": stops});
+    let cleared = cell_buffers(cleared.buffers());
+    let data = StepPageData {
+        title,
+        width: scene.width,
+        height: scene.height,
+        top,
+        op: scene.depth_test.symbol(),
+        words,
+        cleared,
+        stops,
+    };
     let data = serde_json::to_string(&data).expect("serializing plain data cannot fail");
     let (head, tail) = TEMPLATE.split_once("{{DATA}}").expect("the template has a place for the data");
     // The data goes in last, so that nothing in it (a polygon named "{{TITLE}}") is
@@ -44,9 +54,83 @@ pub fn page(lang: Lang, stepper: &mut Stepper<'_>, title: &str) -> String {
     format!("{}{}{}", fill(lang, head, title), embedded_json(&data), fill(lang, tail, title))
 }
 
+/// What the step page's script reads: the raster, the cleared buffers, every
+/// stop and the page's words.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+struct StepPageData<'a> {
+    title: &'a str,
+    width: u32,
+    height: u32,
+    /// The top row's y.
+    top: u32,
+    /// The depth test's symbol.
+    op: &'static str,
+    words: StepPageWords,
+    cleared: CellBuffers,
+    stops: Vec<StopData>,
+}
+
+/// The step page's words, in the student's language; `{…}` marks what the
+/// script fills in.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+struct StepPageWords {
+    no_pixel: String,
+    frame_after: String,
+    depth_after: String,
+    stored: String,
+    after: String,
+    why: String,
+    keeps: String,
+    status: String,
+}
+
+/// One stop as a page reads it ([`stop_data`]).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct StopData {
+    /// The polygon, from 0.
+    pub polygon: usize,
+    /// The polygon's heading.
+    pub heading: String,
+    /// The scanline's pixel row.
+    pub row: u32,
+    /// The scanline and its row, in words.
+    pub scanline: String,
+    /// The crossings, sorted.
+    pub crossings: String,
+    /// Each span with its ends' depths (x_a, z_a, x_b, z_b) and its columns,
+    /// as the line mode shows it.
+    pub spans: Vec<String>,
+    /// The notes, in words.
+    pub notes: Vec<String>,
+    /// Each covered pixel, in order.
+    pub pixels: Vec<PixelData>,
+}
+
+/// One covered pixel of a stop as a page reads it.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct PixelData {
+    /// Its column.
+    pub x: u32,
+    /// Its depth, exact and in decimals.
+    pub z: String,
+    /// What the z-buffer held before it.
+    pub stored: String,
+    /// Whether it was written.
+    pub written: bool,
+    /// What the z-buffer holds after it.
+    pub after: String,
+    /// The z-buffer's cell after it, as the grid writes a cell.
+    pub cell: String,
+    /// The framebuffer's value after it.
+    pub frame: u32,
+    /// Why, in words.
+    pub reason: String,
+}
+
 /// Every stop of the scene (each scanline that covers a pixel, in order) as
 /// data for a page ([`stop_data`]).
-pub fn stops(lang: Lang, stepper: &mut Stepper<'_>) -> Vec<serde_json::Value> {
+pub fn stops(lang: Lang, stepper: &mut Stepper<'_>) -> Vec<StopData> {
     let mut stops = Vec::new();
     let mut moved = stepper.start(None);
     while let Moved::To { at: Some(stop), .. } = moved {
@@ -56,67 +140,59 @@ pub fn stops(lang: Lang, stepper: &mut Stepper<'_>) -> Vec<serde_json::Value> {
     stops
 }
 
-/// How a page wants a stop's buffers.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum BufferForm {
-    /// Rows of cells, top row first, to draw a grid of.
-    Cells,
-    /// The matrices as `zsim run` prints them.
-    Printed,
-}
-
 /// One stop as data for a page: its heading, crossings, spans with their
 /// ends' depths and the notes in words, and each covered pixel's depth, test,
 /// reason and the values both buffers hold after it (applied in order from
 /// the cleared buffers, they give the buffers at any stop).
-pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop) -> serde_json::Value {
+pub fn stop_data(lang: Lang, stepper: &mut Stepper<'_>, stop: Stop) -> StopData {
     let scene = stepper.scene();
     let record = stepper.tracer().record(stop).clone();
-    let pixels: Vec<serde_json::Value> = record
+    let pixels = record
         .pixels
         .iter()
-        .map(|e| {
-            serde_json::json!({
-                "x": e.x, "z": exact_and_decimal(lang, e.depth.value()), "stored": e.stored_before.text(lang),
-                "written": e.outcome == Outcome::Written, "after": e.stored_after.text(lang),
-                // The z-buffer's cell after it, as the grid writes a cell.
-                "cell": MatrixCell::text(&e.stored_after), "frame": e.frame_after,
-                "reason": pixel_reason(lang, scene, e),
-            })
+        .map(|e| PixelData {
+            x: e.x,
+            z: exact_and_decimal(lang, e.depth.value()),
+            stored: e.stored_before.text(lang),
+            written: e.outcome == Outcome::Written,
+            after: e.stored_after.text(lang),
+            cell: MatrixCell::text(&e.stored_after),
+            frame: e.frame_after,
+            reason: pixel_reason(lang, scene, e),
         })
         .collect();
     let stop_words = stepper.stop_words(lang, stop);
-    serde_json::json!({
-        "polygon": stop.polygon, "heading": stop_words.heading, "row": record.row,
-        "scanline": stop_words.scanline, "crossings": stop_words.crossings,
-        // Each span with its ends' depths (x_a, z_a, x_b, z_b) and its columns, as the line mode shows it.
-        "spans": crate::teach::step::table::span_lines(lang, scene, &record),
-        "notes": crate::teach::step::table::notes(lang, scene, stop.polygon, &record, stepper.arith()),
-        "pixels": pixels,
-    })
+    StopData {
+        polygon: stop.polygon,
+        heading: stop_words.heading,
+        row: record.row,
+        scanline: stop_words.scanline,
+        crossings: stop_words.crossings,
+        spans: crate::teach::step::table::span_lines(lang, scene, &record),
+        notes: crate::teach::step::table::notes(lang, scene, stop.polygon, &record, stepper.arith()),
+        pixels,
+    }
 }
 
-/// A state's two buffers as a page asks for them ([`BufferForm`]).
-pub fn buffer_data(
-    buffers: &crate::simulate::buffer::Buffers,
-    asked: BufferForm,
-) -> (serde_json::Value, serde_json::Value) {
-    match asked {
-        BufferForm::Cells => (
-            serde_json::json!(buffers.frame_rows()),
-            serde_json::json!(
-                buffers
-                    .depth_rows()
-                    .iter()
-                    .map(|r| r.iter().map(MatrixCell::text).collect::<Vec<_>>())
-                    .collect::<Vec<_>>()
-            ),
-        ),
-        BufferForm::Printed => {
-            let style = MatrixStyle::default();
-            (matrix_styled(&buffers.frame_rows(), &style).into(), matrix_styled(&buffers.depth_rows(), &style).into())
-        }
-    }
+/// A state's two buffers cell by cell, top row first, to draw a grid of.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct CellBuffers {
+    /// The framebuffer's values.
+    pub frame: Vec<Vec<u32>>,
+    /// The z-buffer's cells, as the grid writes a cell.
+    pub depth: Vec<Vec<String>>,
+}
+
+/// `buffers` cell by cell.
+pub fn cell_buffers(buffers: &crate::simulate::buffer::Buffers) -> CellBuffers {
+    let depth = buffers.depth_rows().iter().map(|r| r.iter().map(MatrixCell::text).collect()).collect();
+    CellBuffers { frame: buffers.frame_rows(), depth }
+}
+
+/// `buffers` as `zsim run` prints them: the framebuffer, then the z-buffer.
+pub fn printed_buffers(buffers: &crate::simulate::buffer::Buffers) -> (String, String) {
+    let style = MatrixStyle::default();
+    (matrix_styled(&buffers.frame_rows(), &style), matrix_styled(&buffers.depth_rows(), &style))
 }
 
 /// Markup's special characters written as JSON escapes (`<` as `\u003c`, …),
@@ -270,6 +346,20 @@ mod tests {
     use super::*;
     use crate::scene::Scene;
 
+    /// A stop as the page's script reads it, its type's shape: the first
+    /// stop of a right triangle on a 4×3 raster.
+    #[test]
+    fn a_stop_is_typed() {
+        let text = r#"{"width": 4, "height": 3, "polygons": [{"name": "t", "value": 1, "vertices": [[0, 0, 1], [4, 0, 1], [0, 3, 1]]}]}"#;
+        let scene = Scene::from_json(text, std::path::Path::new("small.json")).unwrap();
+        let mut stepper = Stepper::new(&scene, crate::effects::arith::Arith::Exact);
+        let stops = stops(Lang::En, &mut stepper);
+        assert_eq!((stops.len(), stops[0].row, stops[0].pixels.len()), (3, 0, 3));
+        insta::with_settings!({snapshot_path => "../../../snapshots", prepend_module_to_snapshot => false, omit_expression => true}, {
+            insta::assert_snapshot!("step_page_stop", serde_json::to_string_pretty(&stops[0]).unwrap());
+        });
+    }
+
     /// The page carries the cleared buffers and each stop's pixels; applied in
     /// order (as its script applies them) they are the buffers after each stop,
     /// on every example scene.
@@ -286,25 +376,19 @@ mod tests {
             let mut stepper = Stepper::new(&scene, crate::effects::arith::Arith::Exact);
             let stops = stops(Lang::En, &mut stepper);
             let cleared = crate::simulate::simulation::Simulation::new(&scene);
-            let (frame, depth) = buffer_data(cleared.buffers(), BufferForm::Cells);
-            let (mut frame, mut depth) = (frame.as_array().unwrap().clone(), depth.as_array().unwrap().clone());
+            let CellBuffers { mut frame, mut depth } = cell_buffers(cleared.buffers());
             let top = crate::raster::row_y(scene.height, 0);
             let mut moved = stepper.start(None);
             for data in &stops {
                 let Moved::To { at: Some(stop), .. } = moved else { panic!("as many stops") };
-                let row = (top - data["row"].as_u64().unwrap() as u32) as usize;
-                for pixel in data["pixels"].as_array().unwrap() {
-                    let x = pixel["x"].as_u64().unwrap() as usize;
-                    frame[row][x] = pixel["frame"].clone();
-                    depth[row][x] = pixel["cell"].clone();
+                let row = (top - data.row) as usize;
+                for pixel in &data.pixels {
+                    let x = pixel.x as usize;
+                    frame[row][x] = pixel.frame;
+                    depth[row][x] = pixel.cell.clone();
                 }
-                let (frame_after, depth_after) = buffer_data(&stepper.tracer().buffers_after(stop), BufferForm::Cells);
-                assert_eq!(
-                    (&frame, &depth),
-                    (frame_after.as_array().unwrap(), depth_after.as_array().unwrap()),
-                    "{}",
-                    path.display()
-                );
+                let after = cell_buffers(&stepper.tracer().buffers_after(stop));
+                assert_eq!((&frame, &depth), (&after.frame, &after.depth), "{}", path.display());
                 moved = stepper.forward();
                 checked += 1;
             }
