@@ -298,7 +298,16 @@ fn a_students_link_saves_the_homework_that_grade_scores_as_the_page_did() {
         while !saved.is_file() && start.elapsed() < Duration::from_secs(20) {
             tokio::time::sleep(Duration::from_millis(100)).await;
         }
+        // Not saved: what the page said instead (a refusal shows in the verdict), and what it downloaded.
+        let said = if saved.is_file() { String::new() } else { text(&client, "#verdict").await };
         client.close().await.unwrap();
+        let downloaded: Vec<_> =
+            std::fs::read_dir(&downloads).map_or(Vec::new(), |d| d.flatten().map(|e| e.file_name()).collect());
+        assert!(
+            saved.is_file(),
+            "no {} after 20 s; the page said {said:?}; downloaded {downloaded:?}",
+            saved.display()
+        );
         score
     });
     std::fs::create_dir_all(dir.join("class")).unwrap();
