@@ -26,10 +26,12 @@ pub trait FrameCell: Copy + Eq + Default + Send + std::fmt::Debug {
     fn from_value(value: u32) -> Self;
     /// The value held.
     fn value(self) -> u32;
+    /// The cells as bytes, when a cell is one.
+    fn bytes(cells: &mut [Self]) -> Option<&mut [u8]>;
 }
 
 macro_rules! frame_cell {
-    ($($cell:ty),*) => {$(
+    ($($cell:ty: $bytes:expr),*) => {$(
         impl FrameCell for $cell {
             #[inline]
             fn from_value(value: u32) -> $cell {
@@ -41,11 +43,16 @@ macro_rules! frame_cell {
             fn value(self) -> u32 {
                 u32::from(self)
             }
+
+            #[inline(always)]
+            fn bytes(cells: &mut [$cell]) -> Option<&mut [u8]> {
+                $bytes(cells)
+            }
         }
     )*};
 }
 
-frame_cell!(u8, u16, u32);
+frame_cell!(u8: Some, u16: |_| None, u32: |_| None);
 
 /// The framebuffer's cells, in the width its bits need.
 #[derive(Debug, Clone, PartialEq, Eq)]

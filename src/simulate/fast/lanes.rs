@@ -317,8 +317,13 @@ fn eight_cells<L: Lanes32, F: FrameCell, const GREATER: bool>(
         let rounded = whole.sub(half_up).max(zero).min(max);
         stored.select(rounded, passes).store(depth_cells);
         let mask = passes.mask_bits();
-        for (k, cell) in frame_cells.iter_mut().enumerate() {
-            *cell = select_unpredictable(mask & (1 << k) != 0, write.value, *cell);
+        match F::bytes(frame_cells) {
+            Some(bytes) => passes.select_bytes(bytes, write.value.value() as u8),
+            None => {
+                for (k, cell) in frame_cells.iter_mut().enumerate() {
+                    *cell = select_unpredictable(mask & (1 << k) != 0, write.value, *cell);
+                }
+            }
         }
         written += u64::from(mask.count_ones());
         // Eight cells on: the carry (−1 where the remainder reached the denominator) added to the whole part.
@@ -419,18 +424,19 @@ mod tests {
     /// The span drawn in this processor's registers (AVX2's where it has
     /// them) and in the plain lanes, each on a copy of the cells, against the
     /// cells one at a time: the same cells, the same count, the cells after
-    /// the span as they were.
-    fn lanes_agree(
+    /// the span as they were. `F`: the framebuffer's cells (bytes take the
+    /// 32-bit lanes' own byte selection, wider cells a cell at a time).
+    fn lanes_agree<F: FrameCell + From<u8>>(
         (denominator, start, step): (i64, Stepped, Stepped),
         (stored, after, max): (&[u32], usize, u32),
         test: DepthTest,
         greater: bool,
     ) -> Result<(), TestCaseError> {
         let test = if greater { DepthTest::Greater } else { test };
-        let write = CellWrite { test: BranchFreeTest::of(test), max: i64::from(max), value: 9u8 };
+        let write = CellWrite { test: BranchFreeTest::of(test), max: i64::from(max), value: F::from(9u8) };
         let length = stored.len();
         let cells: Vec<u32> = (0..length + after).map(|k| stored.get(k).copied().unwrap_or(max / 2)).collect();
-        let frames: Vec<u8> = (0..length + after).map(|k| k as u8).collect();
+        let frames: Vec<F> = (0..length + after).map(|k| F::from(k as u8)).collect();
         let eight = EightLanes::new(step, denominator, write);
         prop_assert_eq!(eight.is_some(), denominator < 1 << 26 && step.whole.unsigned_abs() < 1 << 20 && max < 1 << 28);
         let (mut depth_cells, mut frame_cells) = (cells.clone(), frames.clone());
@@ -452,15 +458,15 @@ mod tests {
                 let drawn = (&mut depth[..given], &mut frame[..given]);
                 let written = match (path, greater) {
                     ("chosen", true) => {
-                        in_registers::<u8, true>(registers, drawn, length, stepping, eight.as_ref(), write)
+                        in_registers::<F, true>(registers, drawn, length, stepping, eight.as_ref(), write)
                     }
                     ("chosen", false) => {
-                        in_registers::<u8, false>(registers, drawn, length, stepping, eight.as_ref(), write)
+                        in_registers::<F, false>(registers, drawn, length, stepping, eight.as_ref(), write)
                     }
-                    ("four lanes", true) => registers.four::<u8, true>(drawn, start, step, denominator, write),
-                    ("four lanes", false) => registers.four::<u8, false>(drawn, start, step, denominator, write),
-                    (_, true) => registers.eight::<u8, true>(drawn, length, start, eight.as_ref().unwrap(), write),
-                    (_, false) => registers.eight::<u8, false>(drawn, length, start, eight.as_ref().unwrap(), write),
+                    ("four lanes", true) => registers.four::<F, true>(drawn, start, step, denominator, write),
+                    ("four lanes", false) => registers.four::<F, false>(drawn, start, step, denominator, write),
+                    (_, true) => registers.eight::<F, true>(drawn, length, start, eight.as_ref().unwrap(), write),
+                    (_, false) => registers.eight::<F, false>(drawn, length, start, eight.as_ref().unwrap(), write),
                 };
                 prop_assert_eq!(&depth, &depth_cells, "{:?} registers, {}", registers, path);
                 prop_assert_eq!(&frame, &frame_cells, "{:?} registers, {}", registers, path);
@@ -495,7 +501,8 @@ mod tests {
             test in any_test(),
             greater in any::<bool>(),
         ) {
-            lanes_agree(stepping, (&stored, after, 15), test, greater)?;
+            lanes_agree::<u8>(stepping, (&stored, after, 15), test, greater)?;
+            lanes_agree::<u16>(stepping, (&stored, after, 15), test, greater)?;
         }
 
         /// At the lanes' bounds: spans of 1 to 64 cells; stored levels, start
@@ -533,7 +540,8 @@ mod tests {
                     }
                 })
                 .collect();
-            lanes_agree(stepping, (&stored, after, max), test, greater)?;
+            lanes_agree::<u8>(stepping, (&stored, after, max), test, greater)?;
+            lanes_agree::<u32>(stepping, (&stored, after, max), test, greater)?;
         }
     }
 }

@@ -41,6 +41,9 @@ pub(super) trait Lanes32: Copy {
     fn select(self, yes: Self, mask: Self) -> Self;
     /// Bit `k` set where lane `k`'s mask is.
     fn mask_bits(self) -> u32;
+    /// Byte cell `k` of eight set to `value` where lane `k` of `self`, a
+    /// mask, is set; the others left as they are.
+    fn select_bytes(self, cells: &mut [u8], value: u8);
 }
 
 /// Four 64-bit lanes.
@@ -139,6 +142,12 @@ impl Lanes32 for Plain8 {
     #[inline(always)]
     fn mask_bits(self) -> u32 {
         (0..8).fold(0, |bits, k| bits | (u32::from(self.0[k] < 0) << k))
+    }
+    #[inline(always)]
+    fn select_bytes(self, cells: &mut [u8], value: u8) {
+        for (cell, mask) in cells[..8].iter_mut().zip(self.0) {
+            *cell = std::hint::select_unpredictable(mask != 0, value, *cell);
+        }
     }
 }
 
@@ -262,7 +271,8 @@ pub(super) use avx2::{Avx4, Avx8};
 #[cfg(target_arch = "x86_64")]
 mod avx2 {
     use std::arch::x86_64::{
-        __m256i, _mm_blendv_epi8, _mm_loadu_si128, _mm_storeu_si128, _mm256_add_epi32, _mm256_add_epi64,
+        __m256i, _mm_blendv_epi8, _mm_loadl_epi64, _mm_loadu_si128, _mm_packs_epi16, _mm_packs_epi32, _mm_set1_epi8,
+        _mm_storel_epi64, _mm_storeu_si128, _mm256_extracti128_si256, _mm256_add_epi32, _mm256_add_epi64,
         _mm256_and_si256, _mm256_blendv_epi8, _mm256_castsi256_pd, _mm256_castsi256_ps, _mm256_castsi256_si128,
         _mm256_cmpgt_epi32, _mm256_cmpgt_epi64, _mm256_cvtepu32_epi64, _mm256_loadu_si256, _mm256_max_epi32,
         _mm256_min_epi32, _mm256_movemask_pd, _mm256_movemask_ps, _mm256_permutevar8x32_epi32, _mm256_set1_epi32,
@@ -332,6 +342,18 @@ mod avx2 {
         #[inline(always)]
         fn mask_bits(self) -> u32 {
             (unsafe { _mm256_movemask_ps(_mm256_castsi256_ps(self.0)) }) as u32
+        }
+        #[inline(always)]
+        fn select_bytes(self, cells: &mut [u8], value: u8) {
+            let cells = &mut cells[..8];
+            unsafe {
+                // Each lane's mask narrowed to a byte, in lane order: 32 → 16 → 8 bits, saturated.
+                let words = _mm_packs_epi32(_mm256_castsi256_si128(self.0), _mm256_extracti128_si256::<1>(self.0));
+                let bytes = _mm_packs_epi16(words, words);
+                let before = _mm_loadl_epi64(cells.as_ptr().cast());
+                let after = _mm_blendv_epi8(before, _mm_set1_epi8(value as i8), bytes);
+                _mm_storel_epi64(cells.as_mut_ptr().cast(), after);
+            }
         }
     }
 
