@@ -102,7 +102,7 @@ fn tinyrenderer_overdraw(c: &mut Criterion) {
     for face in 0..20 {
         obj.push_str(&format!("f {} {} {}\n", 3 * face + 1, 3 * face + 2, 3 * face + 3));
     }
-    let model = zsim::tinyrenderer::Model::parse(zsim::Lang::En, &obj).expect("the model reads");
+    let model = zsim::tinyrenderer::Model::parse(&obj).expect("the model reads");
     let mut group = c.benchmark_group("tinyrenderer, 20 overdrawn faces on 800x800");
     group.sample_size(10);
     group.bench_function("the lesson's f64", |b| {

@@ -53,20 +53,6 @@ pub enum Error {
         /// What the system said.
         source: std::io::Error,
     },
-    /// A course's file (a BUET case, a CS 418 report's PNG, a tinyrenderer
-    /// model) is not of its format: its reader words what is wrong. A scene
-    /// file's problems are facts of their own
-    /// ([`crate::scene::file::refused::SceneRefused`]).
-    SceneFormat {
-        /// The file.
-        path: PathBuf,
-        /// Where in the file, e.g. `line 3`.
-        location: String,
-        /// The file's line where it is (from 1), where known.
-        line: Option<usize>,
-        /// What is wrong.
-        message: String,
-    },
     /// One polygon is unusable.
     Polygon {
         /// Where the polygon came from.
@@ -82,16 +68,6 @@ pub enum Error {
     /// scene's polygons, a figure's, a check's, grading's, the GPU's, an
     /// exercise's, an arithmetic mode's, the command line's).
     Refused(Box<dyn Refusal>),
-    /// A course's answer file (a BUET check's, a CS 418 report's PNG) that
-    /// is malformed: its reader words what is wrong. A homework answer's
-    /// problems are facts of their own
-    /// ([`crate::teach::check::AnswerFileRefused`]).
-    Answer {
-        /// The answer file.
-        path: PathBuf,
-        /// What was found.
-        message: String,
-    },
 }
 
 /// A request a layer refuses, kept as that layer's fact and worded from its
@@ -266,13 +242,6 @@ impl Error {
             Error::Write { path, source } => {
                 words!(lang, "error-write", path = shown_path(path), reason = crate::words::io_reason(lang, source))
             }
-            Error::SceneFormat { path, location, message, .. } => {
-                if location.is_empty() {
-                    format!("{}: {message}", shown_path(path))
-                } else {
-                    format!("{}: {location}: {message}", shown_path(path))
-                }
-            }
             Error::Polygon { origin, index, name, problem } => words!(
                 lang,
                 "error-polygon",
@@ -286,7 +255,6 @@ impl Error {
                 problem = problem.message(lang)
             ),
             Error::Refused(refusal) => refusal.message(lang),
-            Error::Answer { path, message } => format!("{}: {message}", shown_path(path)),
         }
     }
 }

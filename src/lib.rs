@@ -130,8 +130,8 @@ mod teach;
 #[cfg(feature = "courses")]
 pub use courses::{buet, cs418, tinyrenderer};
 pub use door::{
-    Folder, Identity, Line, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, OutputRefused, Plan, Replace, png_reader,
-    read_bytes, read_line_within, read_text, read_text_with, same_folder, write_fresh,
+    Folder, Identity, Line, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, OutputRefused, Plan, PngProblem, Replace,
+    png_reader, read_bytes, read_line_within, read_text, read_text_with, same_folder, write_fresh,
 };
 pub use effects::{accuracy, antialias, arith, variants};
 pub use error::{Error, FileKind, PolygonOrigin, PolygonProblem, Refusal};

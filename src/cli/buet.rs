@@ -75,7 +75,7 @@ pub fn run(lang: zsim::Lang, args: &BuetArgs, out: &mut dyn Write) -> Result<Fin
     match &args.command {
         BuetCommand::Run { case, from, output } => run_case(lang, case, source(*from), output, out),
         BuetCommand::Import { case, from, output } => {
-            let loaded = Case::load(lang, case, source(*from))?;
+            let loaded = Case::load(case, source(*from))?;
             super::emit_or_write(lang, out, output.as_deref(), &loaded.scene_json, &[case])?;
             Ok(Finish::Ok)
         }
@@ -90,7 +90,7 @@ fn run_case(
     output: &Path,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
-    let case = Case::load(lang, dir, from)?;
+    let case = Case::load(dir, from)?;
     // The course's files are written as the course writes them, replacing
     // earlier runs' outputs, but never into the case folder that is read.
     let mut plan = zsim::Plan::new(&[dir], zsim::Replace::Allowed);
@@ -129,7 +129,7 @@ fn check(
     answer: &Path,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
-    let case = Case::load(lang, dir, from)?;
+    let case = Case::load(dir, from)?;
     let differences = buet::check::check(lang, &case, answer)?;
     let (answer, path) = (zsim::shown_path(answer), zsim::shown_path(dir));
     if differences.is_empty() {

@@ -64,11 +64,9 @@ pub fn run(lang: zsim::Lang, args: &Cs418Args, out: &mut dyn Write) -> Result<Fi
             run_case(lang, case, output, *arith, compare.as_deref(), *tolerance, out)
         }
         Cs418Command::Import { case, output } => {
-            let scene = zsim::cs418::import::scene_json(
-                lang,
-                &cs418::report::load(lang, case, cs418::report::Textures::Ignored)?.case,
-            )
-            .map_err(|e| cs418::report::located(case, e))?;
+            let scene =
+                zsim::cs418::import::scene_json(&cs418::report::load(case, cs418::report::Textures::Ignored)?.case)
+                    .map_err(|e| e.in_file(case))?;
             super::emit_or_write(lang, out, output.as_deref(), &scene, &[case])?;
             Ok(Finish::Ok)
         }
@@ -84,7 +82,7 @@ fn run_case(
     tolerance: u8,
     out: &mut dyn Write,
 ) -> Result<Finish, Failure> {
-    let cs418::report::LoadedCase { case, textures } = cs418::report::load(lang, path, cs418::report::Textures::Read)?;
+    let cs418::report::LoadedCase { case, textures } = cs418::report::load(path, cs418::report::Textures::Read)?;
     let arithmetic = match arith {
         Arith::DdaF64 => Arithmetic::DdaF64,
         Arith::Exact => Arithmetic::Exact,
@@ -96,7 +94,7 @@ fn run_case(
     }
     let reference = match compare {
         Some(png) => {
-            let (image, identity) = cs418::report::reference(lang, png)?;
+            let (image, identity) = cs418::report::reference(png)?;
             if let Some(identity) = identity {
                 plan.input(identity);
             }
@@ -105,12 +103,12 @@ fn run_case(
         None => None,
     };
     // In exact arithmetic the course's own floats are drawn too, to say where
-    // they disagree: both at once, on two cores, messages in `lang`.
+    // they disagree: both at once, on two cores.
     let (result, course) = rayon::join(
-        || cs418::render(lang, &case, arithmetic),
-        || (arithmetic == Arithmetic::Exact).then(|| cs418::render(lang, &case, Arithmetic::DdaF64)),
+        || cs418::render(&case, arithmetic),
+        || (arithmetic == Arithmetic::Exact).then(|| cs418::render(&case, Arithmetic::DdaF64)),
     );
-    let result = result.map_err(|e| cs418::report::located(path, e))?;
+    let result = result.map_err(|e| e.in_file(path))?;
     let written = output.join(&case.output);
     plan.file(&written, result.image.to_png());
     plan.write()?;
@@ -125,11 +123,7 @@ fn run_case(
         written = zsim::shown_path(&written)
     ) + "\n";
     if let Some(course) = course {
-        text.push_str(&cs418::report::disagreements_text(
-            lang,
-            &course.map_err(|e| cs418::report::located(path, e))?,
-            &result,
-        ));
+        text.push_str(&cs418::report::disagreements_text(lang, &course.map_err(|e| e.in_file(path))?, &result));
     }
     let mut finish = Finish::Ok;
     if let Some((png, image)) = reference {

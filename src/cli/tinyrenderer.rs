@@ -84,7 +84,7 @@ impl LessonArith {
 pub fn run(lang: zsim::Lang, args: &TinyrendererArgs, out: &mut dyn Write) -> Result<Finish, Failure> {
     match &args.command {
         Command::Run { model, output, arith, uncompressed, size } => {
-            let loaded = tinyrenderer::load(lang, model)?;
+            let loaded = tinyrenderer::load(model)?;
             let drawn = tinyrenderer::render(&loaded, arith.lesson(), *size);
             let side = *size as u16;
             let frame: Vec<u8> = drawn.framebuffer.iter().flatten().copied().collect();
@@ -113,7 +113,7 @@ pub fn run(lang: zsim::Lang, args: &TinyrendererArgs, out: &mut dyn Write) -> Re
             Ok(Finish::Ok)
         }
         Command::Import { model, arith, output, size } => {
-            let scene = tinyrenderer::scene_json(&tinyrenderer::load(lang, model)?, arith.lesson(), *size);
+            let scene = tinyrenderer::scene_json(&tinyrenderer::load(model)?, arith.lesson(), *size);
             super::emit_or_write(lang, out, output.as_deref(), &scene, &[model])?;
             Ok(Finish::Ok)
         }

@@ -23,13 +23,55 @@ pub const SIZE: i64 = 800;
 /// The smallest and largest image side `--size` allows.
 pub const SIDES: std::ops::RangeInclusive<i64> = 4..=4096;
 
-/// Where a line of an OBJ file is wrong.
+/// A line of an OBJ file that is wrong, and the line.
+pub type ObjError = super::CaseError<ObjProblem>;
+
+/// What is wrong on a line of an OBJ file.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ObjError {
-    /// The line, from 1.
-    pub line: usize,
-    /// What is wrong, in the reader's language.
-    pub message: String,
+pub enum ObjProblem {
+    /// A `v` line with fewer than three coordinates.
+    VertexCount {
+        /// How many.
+        count: usize,
+    },
+    /// A coordinate that is not a finite number.
+    NotANumber {
+        /// The word written.
+        token: String,
+    },
+    /// An `f` line of other than three corners.
+    FaceCorners {
+        /// How many.
+        count: usize,
+    },
+    /// A corner whose vertex index is not a number from 1.
+    BadIndex {
+        /// The corner written.
+        token: String,
+    },
+    /// More faces than [`MAX_FACES`].
+    TooManyFaces,
+    /// A face naming a vertex the model does not have.
+    NoVertex {
+        /// The vertex named (from 1).
+        index: usize,
+        /// The vertices the model has.
+        count: usize,
+    },
+}
+
+impl super::CourseProblem for ObjProblem {
+    fn message(&self, lang: Lang) -> String {
+        use crate::words::token;
+        match self {
+            ObjProblem::VertexCount { count } => words!(lang, "obj-vertex-count", count = *count),
+            ObjProblem::NotANumber { token: word } => words!(lang, "obj-not-a-number", token = token(lang, word)),
+            ObjProblem::FaceCorners { count } => words!(lang, "obj-face-corners", count = *count),
+            ObjProblem::BadIndex { token: corner } => words!(lang, "obj-bad-index", token = token(lang, corner)),
+            ObjProblem::TooManyFaces => words!(lang, "obj-too-many-faces", max = MAX_FACES),
+            ObjProblem::NoVertex { index, count } => words!(lang, "obj-no-vertex", index = *index, count = *count),
+        }
+    }
 }
 
 /// A model as the lesson reads it: vertices (as written, and as f64) and
@@ -51,21 +93,21 @@ impl Model {
     /// Reads `v` and `f` lines (`f a/b/c d/e/f g/h/i`, `f a b c` or `f a//c …`);
     /// every other line is passed over, as the lesson does. A face must have
     /// three corners whose vertices exist.
-    pub fn parse(lang: Lang, text: &str) -> Result<Model, ObjError> {
+    pub fn parse(text: &str) -> Result<Model, ObjError> {
         let mut model = Model { vertices: Vec::new(), vertices_f64: Vec::new(), faces: Vec::new() };
         let mut faces = Vec::new();
         for (index, line) in text.lines().enumerate() {
             let number = index + 1;
-            let fail = |message: String| ObjError { line: number, message };
+            let fail = |problem: ObjProblem| ObjError { line: Some(number), problem };
             if let Some(rest) = line.strip_prefix("v ") {
                 let words: Vec<&str> = rest.split_whitespace().collect();
                 if words.len() < 3 {
-                    return Err(fail(words!(lang, "obj-vertex-count", count = words.len())));
+                    return Err(fail(ObjProblem::VertexCount { count: words.len() }));
                 }
                 let mut exact = Vec::with_capacity(3);
                 let mut float = [0.0; 3];
                 for (k, word) in words.iter().take(3).enumerate() {
-                    let bad = || fail(words!(lang, "obj-not-a-number", token = crate::words::token(lang, word)));
+                    let bad = || fail(ObjProblem::NotANumber { token: word.to_string() });
                     float[k] = word.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(bad)?;
                     exact.push(parse_exact(word).map_err(|_| bad())?);
                 }
@@ -75,7 +117,7 @@ impl Model {
             } else if let Some(rest) = line.strip_prefix("f ") {
                 let corners: Vec<&str> = rest.split_whitespace().collect();
                 if corners.len() != 3 {
-                    return Err(fail(words!(lang, "obj-face-corners", count = corners.len())));
+                    return Err(fail(ObjProblem::FaceCorners { count: corners.len() }));
                 }
                 let mut face = [0usize; 3];
                 for (k, corner) in corners.iter().enumerate() {
@@ -83,22 +125,20 @@ impl Model {
                     face[k] = match first.parse::<usize>() {
                         Ok(v) if v >= 1 => v - 1,
                         _ => {
-                            return Err(fail(words!(lang, "obj-bad-index", token = crate::words::token(lang, corner))));
+                            return Err(fail(ObjProblem::BadIndex { token: corner.to_string() }));
                         }
                     };
                 }
                 faces.push((number, face));
                 if faces.len() > MAX_FACES {
-                    return Err(fail(words!(lang, "obj-too-many-faces", max = MAX_FACES)));
+                    return Err(fail(ObjProblem::TooManyFaces));
                 }
             }
         }
         for (line, face) in faces {
             if let Some(&missing) = face.iter().find(|&&v| v >= model.vertices.len()) {
-                return Err(ObjError {
-                    line,
-                    message: words!(lang, "obj-no-vertex", index = missing + 1, count = model.vertices.len()),
-                });
+                let problem = ObjProblem::NoVertex { index: missing + 1, count: model.vertices.len() };
+                return Err(ObjError { line: Some(line), problem });
             }
             model.faces.push(face);
         }
@@ -442,14 +482,9 @@ pub fn differences_text(lang: Lang, model: &Model, exact: &Render, size: i64) ->
 }
 
 /// Reads the model (OBJ) at `path`; errors name the file and the line.
-pub fn load(lang: Lang, path: &std::path::Path) -> Result<Model, crate::error::Error> {
+pub fn load(path: &std::path::Path) -> Result<Model, crate::error::Error> {
     let text = crate::door::read_text(path)?;
-    Model::parse(lang, &text).map_err(|e| crate::error::Error::SceneFormat {
-        path: path.to_owned(),
-        location: words!(lang, "tinyrenderer-line", line = e.line),
-        line: Some(e.line),
-        message: e.message,
-    })
+    Model::parse(&text).map_err(|e| e.in_file(path))
 }
 
 #[cfg(test)]
@@ -476,12 +511,11 @@ mod tests {
     #[test]
     fn obj_lines_are_read_as_the_lesson_reads_them_and_a_bad_one_is_named() {
         let model =
-            Model::parse(Lang::En, "# a comment\nv 0 0 0\nv 1 0 0.5\nv 0 1 -1\nvt 0 0\nf 1/1/1 2/2/2 3/3/3\ns 1\n")
-                .unwrap();
+            Model::parse("# a comment\nv 0 0 0\nv 1 0 0.5\nv 0 1 -1\nvt 0 0\nf 1/1/1 2/2/2 3/3/3\ns 1\n").unwrap();
         assert_eq!((model.vertices.len(), model.faces.clone()), (3, vec![[0, 1, 2]]));
-        let error = Model::parse(Lang::En, "v 0 0 0\nv 1 x 0\n").unwrap_err();
-        assert_eq!(error.line, 2);
-        let error = Model::parse(Lang::En, "v 0 0 0\nf 1 2 3\n").unwrap_err();
-        assert_eq!(error.line, 2);
+        let error = Model::parse("v 0 0 0\nv 1 x 0\n").unwrap_err();
+        assert_eq!((error.line, error.problem), (Some(2), ObjProblem::NotANumber { token: "x".into() }));
+        let error = Model::parse("v 0 0 0\nf 1 2 3\n").unwrap_err();
+        assert_eq!((error.line, error.problem), (Some(2), ObjProblem::NoVertex { index: 2, count: 1 }));
     }
 }

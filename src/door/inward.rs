@@ -190,25 +190,66 @@ impl Folder {
 /// A PNG reader for `bytes` once its header is known to declare at most
 /// [`MAX_IMAGE_PIXELS`] pixels; decoding is also capped at what that many
 /// 16-bit RGBA pixels take. Expands every colour type to 8 bits with alpha.
-/// `Err` says why not, in `lang`.
-pub fn png_reader(lang: Lang, bytes: &[u8]) -> Result<png::Reader<std::io::Cursor<&[u8]>>, String> {
+/// `Err` says why not.
+pub fn png_reader(bytes: &[u8]) -> Result<png::Reader<std::io::Cursor<&[u8]>>, PngProblem> {
     let mut decoder = png::Decoder::new_with_limits(
         std::io::Cursor::new(bytes),
         png::Limits { bytes: (MAX_IMAGE_PIXELS * 8) as usize },
     );
     decoder.set_transformations(png::Transformations::normalize_to_color8() | png::Transformations::ALPHA);
-    let header = decoder.read_header_info().map_err(|e| words!(lang, "png-not-an-image", reason = e.to_string()))?;
-    let pixels = u64::from(header.width) * u64::from(header.height);
-    if pixels > MAX_IMAGE_PIXELS {
-        return Err(words!(
-            lang,
-            "png-declares-too-many-pixels",
-            width = header.width.to_string(),
-            height = header.height.to_string(),
-            max = MAX_IMAGE_PIXELS.to_string()
-        ));
+    let header = decoder.read_header_info().map_err(|e| PngProblem::NotAnImage { reason: e.to_string() })?;
+    if u64::from(header.width) * u64::from(header.height) > MAX_IMAGE_PIXELS {
+        return Err(PngProblem::TooManyPixels { width: header.width, height: header.height });
     }
-    decoder.read_info().map_err(|e| words!(lang, "png-not-an-image", reason = e.to_string()))
+    decoder.read_info().map_err(|e| PngProblem::NotAnImage { reason: e.to_string() })
+}
+
+/// Why a PNG is not read.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PngProblem {
+    /// Not a PNG image: what the decoder said.
+    NotAnImage {
+        /// The decoder's words.
+        reason: String,
+    },
+    /// An image that declares more than [`MAX_IMAGE_PIXELS`] pixels.
+    TooManyPixels {
+        /// Its declared width.
+        width: u32,
+        /// Its declared height.
+        height: u32,
+    },
+    /// An image whose decoded pixels would not fit in memory's addresses.
+    TooLarge,
+    /// A broken image: what the decoder said.
+    Broken {
+        /// The decoder's words.
+        reason: String,
+    },
+    /// A colour type the decoder does not expand to RGBA.
+    ColourType {
+        /// The type, as the decoder names it.
+        kind: String,
+    },
+}
+
+impl PngProblem {
+    /// The problem in `lang`, one line.
+    pub fn message(&self, lang: Lang) -> String {
+        match self {
+            PngProblem::NotAnImage { reason } => words!(lang, "png-not-an-image", reason = reason.as_str()),
+            PngProblem::TooManyPixels { width, height } => words!(
+                lang,
+                "png-declares-too-many-pixels",
+                width = width.to_string(),
+                height = height.to_string(),
+                max = MAX_IMAGE_PIXELS.to_string()
+            ),
+            PngProblem::TooLarge => words!(lang, "png-too-large"),
+            PngProblem::Broken { reason } => words!(lang, "png-broken", reason = reason.as_str()),
+            PngProblem::ColourType { kind } => words!(lang, "png-colour-type", kind = kind.as_str()),
+        }
+    }
 }
 
 /// Reads a whole input file: a regular file only (a FIFO, device or folder is

@@ -30,7 +30,7 @@ pub mod outward;
 mod staged;
 
 pub use inward::{
-    Folder, Identity, Line, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, png_reader, read_bytes, read_line_within,
-    read_text, read_text_with,
+    Folder, Identity, Line, Links, MAX_IMAGE_PIXELS, MAX_INPUT_BYTES, PngProblem, png_reader, read_bytes,
+    read_line_within, read_text, read_text_with,
 };
 pub use outward::{OutputRefused, Plan, Replace, same_folder, write_fresh};

@@ -201,7 +201,7 @@ fn malformed_cases_are_refused_with_the_file_and_line() {
 #[test]
 fn seven_decimal_cases_are_drawn_exactly_instead_of_refused() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/buet-2018");
-    let case = zsim::buet::Case::load(zsim::Lang::En, &dir, None).expect("drawn, not refused");
+    let case = zsim::buet::Case::load(&dir, None).expect("drawn, not refused");
     assert!(case.scene.polygons[0].geometry().is_big(), "triangle 1 passes 2^34");
     let out_dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("buet-2018");
     let out = zsim(&["buet", "run", dir.to_str().unwrap(), "-o", out_dir.to_str().unwrap()]);

@@ -16,20 +16,19 @@ fn cases() -> PathBuf {
 
 fn case(dir: &Path, name: &str) -> RastFile {
     let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).expect("case file");
-    RastFile::parse(zsim::Lang::En, &text, &|_| Err("no textures here".into()))
+    RastFile::parse(&text, &|_| Err(zsim::cs418::TextureProblem::Missing))
         .unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
 }
 
 /// A case whose textures (not in the folder) are all replaced by one texel.
 fn case_with_stand_in(dir: &Path, name: &str, texel: [u8; 4]) -> RastFile {
     let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).expect("case file");
-    RastFile::parse(zsim::Lang::En, &text, &|_| Ok(std::sync::Arc::new(stand_in(texel))))
+    RastFile::parse(&text, &|_| Ok(std::sync::Arc::new(stand_in(texel))))
         .unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
 }
 
 fn reference(dir: &Path, name: &str) -> Image {
-    Image::from_png(zsim::Lang::En, &std::fs::read(dir.join(format!("rast-{name}.png"))).expect("reference image"))
-        .expect("a PNG")
+    Image::from_png(&std::fs::read(dir.join(format!("rast-{name}.png"))).expect("reference image")).expect("a PNG")
 }
 
 /// Every case whose inputs are all in the folder (textures and decals need
@@ -58,7 +57,7 @@ fn every_case_with_its_inputs_reproduces_the_reference_image() {
         "frustum",
     ];
     for name in all {
-        let image = render(zsim::Lang::En, &case(&dir, name), Arithmetic::DdaF64)
+        let image = render(&case(&dir, name), Arithmetic::DdaF64)
             .unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
             .image;
         // rast-elements.txt draws the image the course calls oldlogo.
@@ -82,14 +81,13 @@ fn textured_cases_reproduce_their_references_texel_for_texel() {
     let with_textures = |name: &str| {
         let text = std::fs::read_to_string(dir.join(format!("rast-{name}.txt"))).unwrap();
         let load = |file: &str| {
-            let bytes = std::fs::read(dir.join(file)).map_err(|e| e.to_string())?;
-            Image::from_png(zsim::Lang::En, &bytes).map(std::sync::Arc::new)
+            let bytes = std::fs::read(dir.join(file)).map_err(|_| zsim::cs418::TextureProblem::Missing)?;
+            Image::from_png(&bytes).map(std::sync::Arc::new).map_err(zsim::cs418::TextureProblem::Image)
         };
-        RastFile::parse(zsim::Lang::En, &text, &load)
-            .unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
+        RastFile::parse(&text, &load).unwrap_or_else(|e| panic!("{name}: {}", e.message(zsim::Lang::En)))
     };
     for name in ["points1", "points2", "decals", "textures"] {
-        let image = render(zsim::Lang::En, &with_textures(name), Arithmetic::DdaF64).unwrap().image;
+        let image = render(&with_textures(name), Arithmetic::DdaF64).unwrap().image;
         let difference = compare_images(&image, &reference(&dir, name), 1).expect("same size");
         assert_eq!(difference.pixels, vec![], "{name}: pixels differing by more than 1");
     }
@@ -106,7 +104,7 @@ fn textured_cases_reproduce_their_references_texel_for_texel() {
 #[ignore = "needs the courses' files in ../shared/peer"]
 fn manyclip_reproduces_the_reference_but_for_one_clipped_boundary_pixel() {
     let dir = cases();
-    let image = render(zsim::Lang::En, &case(&dir, "manyclip"), Arithmetic::DdaF64).expect("renders").image;
+    let image = render(&case(&dir, "manyclip"), Arithmetic::DdaF64).expect("renders").image;
     let difference = compare_images(&image, &reference(&dir, "manyclip"), 1).expect("same size");
     let places: Vec<(u32, u32)> = difference.pixels.iter().map(|p| (p.0, p.1)).collect();
     assert_eq!(places, vec![(8, 10)]);
@@ -121,10 +119,7 @@ fn manyclip_reproduces_the_reference_but_for_one_clipped_boundary_pixel() {
 fn exact_arithmetic_shows_where_the_course_floats_land_on_the_other_side() {
     let dir = cases();
     let case = case(&dir, "manyclip");
-    let (course, exact) = (
-        render(zsim::Lang::En, &case, Arithmetic::DdaF64).unwrap(),
-        render(zsim::Lang::En, &case, Arithmetic::Exact).unwrap(),
-    );
+    let (course, exact) = (render(&case, Arithmetic::DdaF64).unwrap(), render(&case, Arithmetic::Exact).unwrap());
     let cells = differences(&course, &exact);
     let top_row = cells.iter().filter(|c| c.y == 0).count();
     assert_eq!((cells.len(), top_row), (37, 26));
@@ -165,7 +160,7 @@ fn points_match_the_reference_with_a_stand_in_for_the_missing_texture() {
     let magenta = [255, 0, 255, 255];
     for (name, shown) in [("points1", 3342), ("points2", 3770)] {
         let case = case_with_stand_in(&dir, name, magenta);
-        let image = render(zsim::Lang::En, &case, Arithmetic::DdaF64).unwrap().image;
+        let image = render(&case, Arithmetic::DdaF64).unwrap().image;
         let reference = reference(&dir, name);
         let (mut texture_colours, mut other_colours) = (HashSet::new(), HashSet::new());
         for y in 0..image.height {
@@ -221,7 +216,7 @@ fn textured_cubes_cover_the_reference_pixels_with_stand_in_textures() {
     let dir = cases();
     for (name, texel) in [("textures", [255, 255, 0, 255]), ("decals", [255, 255, 0, 128])] {
         let case = case_with_stand_in(&dir, name, texel);
-        let image = render(zsim::Lang::En, &case, Arithmetic::DdaF64).unwrap().image;
+        let image = render(&case, Arithmetic::DdaF64).unwrap().image;
         let reference = reference(&dir, name);
         let covered = |image: &Image| image.rgba.chunks(4).map(|p| p[3] > 0).collect::<Vec<_>>();
         let ours = covered(&image);
@@ -251,7 +246,7 @@ fn run_writes_the_named_png_and_compares_it() {
     let out = gray_against("rast-gray.png");
     assert_eq!(out.code, 0, "{}", out.stderr);
     assert!(out.stdout.contains("every channel of every pixel within 1"), "{}", out.stdout);
-    let written = Image::from_png(zsim::Lang::En, &std::fs::read(out_dir.join("gray.png")).unwrap()).unwrap();
+    let written = Image::from_png(&std::fs::read(out_dir.join("gray.png")).unwrap()).unwrap();
     assert_eq!((written.width, written.height), (20, 30));
     // A wrong answer exits 1 and lists the pixels.
     let out = gray_against("rast-smoothcolor.png");
@@ -372,7 +367,7 @@ fn imported_textured_cases_draw_as_the_course_draws_them_exactly() {
 fn imported_case_draws_as_the_course(dir: &Path, name: &str) -> bool {
     // Textures do not change what is drawn where; a stand-in will do.
     let case = case_with_stand_in(dir, name, [255, 255, 255, 255]);
-    let json = zsim::cs418::import::scene_json(zsim::Lang::En, &case).unwrap();
+    let json = zsim::cs418::import::scene_json(&case).unwrap();
     let scene = match zsim::Scene::from_json(&json, Path::new("imported.json")) {
         Ok(scene) => scene,
         Err(error) => {
@@ -384,7 +379,7 @@ fn imported_case_draws_as_the_course(dir: &Path, name: &str) -> bool {
             return false;
         }
     };
-    let exact = render(zsim::Lang::En, &case, Arithmetic::Exact).unwrap();
+    let exact = render(&case, Arithmetic::Exact).unwrap();
     let mut simulation = zsim::Simulation::new(&scene);
     simulation.finish(&mut zsim::Unobserved);
     for (y, row) in simulation.buffers().frame_rows().iter().enumerate() {
@@ -404,7 +399,7 @@ fn a_huge_point_fills_the_image_without_walking_beyond_it() {
     );
     let out = zsim(&["cs418", "run", dir.join(&file).to_str().unwrap(), "-o", dir.join("huge").to_str().unwrap()]);
     assert_eq!(out.code, 0, "{}", out.stderr);
-    let image = Image::from_png(zsim::Lang::En, &std::fs::read(dir.join("huge/huge.png")).unwrap()).unwrap();
+    let image = Image::from_png(&std::fs::read(dir.join("huge/huge.png")).unwrap()).unwrap();
     assert!(image.rgba.chunks(4).all(|p| p == [255, 255, 255, 255]));
 }
 
@@ -416,9 +411,9 @@ fn a_huge_point_fills_the_image_without_walking_beyond_it() {
 #[test]
 fn a_triangle_far_beyond_the_image_visits_only_the_image() {
     let text = "png 20 20 far.png\nfsaa 2\nposition 2 -999 -999 1999 -999 -999 1999\ncolor 3 1 1 1 1 1 1 1 1 1\ndrawArraysTriangles 0 3\n";
-    let case = RastFile::parse(zsim::Lang::En, text, &|_| Err("no textures here".into())).unwrap();
+    let case = RastFile::parse(text, &|_| Err(zsim::cs418::TextureProblem::Missing)).unwrap();
     for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
-        let image = render(zsim::Lang::En, &case, arithmetic).unwrap().image;
+        let image = render(&case, arithmetic).unwrap().image;
         assert!(image.rgba.chunks(4).all(|p| p == [255, 255, 255, 255]), "{arithmetic:?}");
     }
 }
@@ -541,11 +536,11 @@ mod never_a_panic {
     /// arithmetics: each step works or names a line.
     fn drawn_or_refused_with_its_line(text: &str) -> Result<(), TestCaseError> {
         let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
-        match RastFile::parse(zsim::Lang::En, text, &|_| Ok(std::sync::Arc::new(texture.clone()))) {
+        match RastFile::parse(text, &|_| Ok(std::sync::Arc::new(texture.clone()))) {
             Err(error) => prop_assert!(error.line.is_some(), "{}", error.message(zsim::Lang::En)),
             Ok(case) => {
                 for arithmetic in [Arithmetic::DdaF64, Arithmetic::Exact] {
-                    if let Err(error) = render(zsim::Lang::En, &case, arithmetic) {
+                    if let Err(error) = render(&case, arithmetic) {
                         prop_assert!(error.line.is_some(), "{}", error.message(zsim::Lang::En));
                     }
                 }
@@ -576,16 +571,16 @@ mod never_a_panic {
             let text = format!("png {width} {height} out.png\n{body}");
             let texture = Image { width: 2, height: 1, rgba: vec![255, 0, 0, 255, 0, 0, 255, 128] };
             // Drawings that are no case, or no scene once imported, are rejected: the runner counts them.
-            let Ok(case) = RastFile::parse(zsim::Lang::En, &text, &|_| Ok(std::sync::Arc::new(texture.clone()))) else {
+            let Ok(case) = RastFile::parse(&text, &|_| Ok(std::sync::Arc::new(texture.clone()))) else {
                 return Err(TestCaseError::reject("not a case"));
             };
-            let Ok(json) = zsim::cs418::import::scene_json(zsim::Lang::En, &case) else {
+            let Ok(json) = zsim::cs418::import::scene_json(&case) else {
                 return Err(TestCaseError::reject("not importable"));
             };
             let Ok(scene) = zsim::Scene::from_json(&json, std::path::Path::new("imported.json")) else {
                 return Err(TestCaseError::reject("not a scene"));
             };
-            let exact = render(zsim::Lang::En, &case, Arithmetic::Exact).unwrap();
+            let exact = render(&case, Arithmetic::Exact).unwrap();
             let mut simulation = zsim::Simulation::new(&scene);
             simulation.finish(&mut zsim::Unobserved);
             for (y, row) in simulation.buffers().frame_rows().iter().enumerate() {
@@ -627,11 +622,10 @@ fn the_course_examples_in_the_repository_run_from_a_clone() {
     }
     let cs418 = zsim(&["cs418", "run", "examples/cs418/rast-checker.txt", "-o", out.join("cs418").to_str().unwrap()]);
     assert_eq!((cs418.code, cs418.stderr.as_str()), (0, ""));
-    let image = Image::from_png(zsim::Lang::En, &std::fs::read(out.join("cs418/checker.png")).unwrap()).unwrap();
+    let image = Image::from_png(&std::fs::read(out.join("cs418/checker.png")).unwrap()).unwrap();
     assert_eq!((image.width, image.height), (32, 32));
     // Every pixel is one of the texture's two colours (nearest texel, sRGB in and out), opaque.
-    let texture =
-        Image::from_png(zsim::Lang::En, &std::fs::read("examples/cs418/checker-texture.png").unwrap()).unwrap();
+    let texture = Image::from_png(&std::fs::read("examples/cs418/checker-texture.png").unwrap()).unwrap();
     let colours: HashSet<[u8; 4]> = texture.rgba.chunks(4).map(|c| [c[0], c[1], c[2], c[3]]).collect();
     assert_eq!(colours.len(), 2);
     let shown: Vec<[u8; 4]> = image.rgba.chunks(4).map(|c| [c[0], c[1], c[2], c[3]]).collect();

@@ -825,7 +825,7 @@ fn a_texture_is_decoded_once_however_it_is_named() {
     }
     let case = dir.join("case.txt");
     std::fs::write(&case, text).unwrap();
-    let loaded = zsim::cs418::report::load(zsim::Lang::En, &case, zsim::cs418::report::Textures::Read).unwrap();
+    let loaded = zsim::cs418::report::load(&case, zsim::cs418::report::Textures::Read).unwrap();
     assert_eq!(loaded.textures.len(), 1);
     assert_eq!(loaded.textures[0].0, dir.join("x.png"));
 }

@@ -454,11 +454,8 @@ fn a_projected_coordinate_is_held_at_its_limit() {
     let far = i64::try_from(limit.value).unwrap();
     // An image 2 pixels wide: x on the screen is (x + 1) · 2 / 2, so x = 2^40 − 1 lands on 2^40.
     let x = |pixels: i64| (pixels - 1).to_string();
-    let model = Model::parse(
-        zsim::Lang::En,
-        &format!("v {} 0 0\nv {} 0 0\nv {} 0 0\nv 1e308 0 0\n", x(far - 1), x(far), x(far + 1)),
-    )
-    .unwrap();
+    let model =
+        Model::parse(&format!("v {} 0 0\nv {} 0 0\nv {} 0 0\nv 1e308 0 0\n", x(far - 1), x(far), x(far + 1))).unwrap();
     for arith in [LessonArith::F64, LessonArith::Exact] {
         let screen: Vec<i64> = (0..4).map(|v| project(&model, v, arith, 2)[0]).collect();
         assert_eq!(screen, [far - 1, far, far, far], "{arith:?}");

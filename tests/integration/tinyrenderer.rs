@@ -13,8 +13,7 @@ const MODELS: [&str; 3] = ["african_head", "african_head_eye_inner", "african_he
 fn the_lessons_images_are_reproduced_byte_for_byte() {
     let dir = peer("tinyrenderer", "the tinyrenderer lesson's images");
     for name in MODELS {
-        let model =
-            Model::parse(zsim::Lang::En, &std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
+        let model = Model::parse(&std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
         let drawn = render(&model, LessonArith::F64, SIZE);
         let side = SIZE as u16;
         let zbuffer = tga(side, side, 1, &drawn.zbuffer, true);
@@ -42,8 +41,7 @@ fn exact_arithmetic_differs_from_the_lessons_f64_only_where_truncation_meets_an_
     let dir = peer("tinyrenderer", "the tinyrenderer lesson's images");
     let mut counts = Vec::new();
     for name in MODELS {
-        let model =
-            Model::parse(zsim::Lang::En, &std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
+        let model = Model::parse(&std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
         let (float, exact) = (render(&model, LessonArith::F64, SIZE), render(&model, LessonArith::Exact, SIZE));
         let differing: Vec<(u8, u8)> =
             float.zbuffer.iter().zip(&exact.zbuffer).filter(|(a, b)| a != b).map(|(a, b)| (*a, *b)).collect();
@@ -64,8 +62,7 @@ fn exact_arithmetic_differs_from_the_lessons_f64_only_where_truncation_meets_an_
 fn the_imported_model_draws_the_lessons_images_through_zsims_rasterizer() {
     let dir = peer("tinyrenderer", "the tinyrenderer lesson's images");
     for (name, f64_drops) in MODELS.into_iter().zip([310, 36, 39]) {
-        let model =
-            Model::parse(zsim::Lang::En, &std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
+        let model = Model::parse(&std::fs::read_to_string(dir.join(format!("{name}.obj"))).unwrap()).unwrap();
         let json = zsim::tinyrenderer::scene_json(&model, LessonArith::F64, SIZE);
         let scene = zsim::Scene::from_json(&json, std::path::Path::new("import.json")).unwrap();
         let mut simulation = zsim::Simulation::new(&scene);
@@ -206,7 +203,7 @@ fn the_command_writes_the_lessons_files_and_refuses_a_bad_line() {
 #[test]
 fn a_small_import_draws_as_the_lessons_rules_do() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/tinyrenderer/pyramid.obj");
-    let model = Model::parse(zsim::Lang::En, &std::fs::read_to_string(&path).unwrap()).unwrap();
+    let model = Model::parse(&std::fs::read_to_string(&path).unwrap()).unwrap();
     let run = crate::zsim(&["tinyrenderer", "import", path.to_str().unwrap(), "--size", "48"]);
     assert_eq!((run.code, run.stderr.as_str()), (0, ""));
     let scene = zsim::Scene::from_json(&run.stdout, std::path::Path::new("pyramid.json")).unwrap();

@@ -9,9 +9,9 @@ use crate::observe::explain::{Buffer, why};
 use crate::observe::trace::PixelWatcher;
 use crate::simulate::events::Unobserved;
 use crate::simulate::simulation::Simulation;
-use crate::words::{Lang, token};
+use crate::words::Lang;
 
-use super::{Case, z_buffer_cells};
+use super::{BuetError, BuetProblem, Case, z_buffer_cells};
 
 /// One value of a student's `z_buffer.txt` that differs from the course's.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -32,7 +32,7 @@ pub struct Difference {
 /// reading order; none when the file matches.
 pub fn check(lang: Lang, case: &Case, answer: &Path) -> Result<Vec<Difference>, Error> {
     let scene = &case.scene;
-    let answer_rows = parse_answer(lang, answer, scene.height)?;
+    let answer_rows = parse_answer(answer, scene.height)?;
     let mut simulation = Simulation::new(scene);
     simulation.finish(&mut Unobserved);
     let expected = z_buffer_cells(simulation.buffers(), case.config.z_max);
@@ -70,31 +70,21 @@ pub fn check(lang: Lang, case: &Case, answer: &Path) -> Result<Vec<Difference>, 
 }
 
 /// A student's z_buffer.txt: per row, the values written.
-fn parse_answer(lang: Lang, path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
+fn parse_answer(path: &Path, height: u32) -> Result<Vec<Vec<String>>, Error> {
     let text = read_text(path)?;
     let rows: Vec<Vec<String>> =
         text.lines().map(|line| line.split_whitespace().map(str::to_string).collect()).collect();
     for (i, row) in rows.iter().enumerate() {
         for (k, value) in row.iter().enumerate() {
             if value.parse::<f64>().is_err() {
-                return Err(Error::Answer {
-                    path: path.to_owned(),
-                    message: words!(
-                        lang,
-                        "buet-answer-not-a-number",
-                        line = (i + 1).to_string(),
-                        value = (k + 1).to_string(),
-                        text = token(lang, value.as_str())
-                    ),
-                });
+                let problem = BuetProblem::AnswerNotANumber { line: i + 1, value: k + 1, text: value.clone() };
+                return Err(BuetError { line: None, problem }.in_file(path));
             }
         }
     }
     if rows.len() != height as usize {
-        return Err(Error::Answer {
-            path: path.to_owned(),
-            message: words!(lang, "buet-answer-rows", rows = rows.len().to_string(), height = height.to_string()),
-        });
+        let problem = BuetProblem::AnswerRows { rows: rows.len(), height };
+        return Err(BuetError { line: None, problem }.in_file(path));
     }
     Ok(rows)
 }

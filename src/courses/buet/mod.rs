@@ -19,10 +19,183 @@ use crate::numbers::{Exact, Q, parse_number, to_f64};
 use crate::raster::depth::Stored;
 use crate::simulate::buffer::Buffers;
 
-pub use super::CaseError;
+pub use super::CourseProblem;
 
-fn case_error(line: Option<usize>, message: impl Into<String>) -> CaseError {
-    CaseError { line, message: message.into() }
+/// A problem in a BUET case's file, with its line.
+pub type BuetError = super::CaseError<BuetProblem>;
+
+fn case_error(line: Option<usize>, problem: BuetProblem) -> BuetError {
+    BuetError { line, problem }
+}
+
+/// What is wrong in a BUET case's file (`config.txt`, `scene.txt`, a stage
+/// file) or in a student's `z_buffer.txt`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum BuetProblem {
+    /// A raster side that is not a whole number from 1 to the largest side.
+    Size {
+        /// The word written.
+        word: String,
+    },
+    /// `config.txt` is empty.
+    ConfigEmpty,
+    /// Its first line is not two numbers.
+    ConfigFirst,
+    /// A line that should hold one number.
+    OneNumber,
+    /// The depth range's line is not two numbers.
+    ZRange,
+    /// The window's left or bottom edge is not negative.
+    WindowNegative,
+    /// The depth range's front lies behind its rear.
+    ZOrder,
+    /// `config.txt` has neither one line nor four.
+    ConfigLines {
+        /// Its lines with something on them.
+        count: usize,
+    },
+    /// A word that is not a number.
+    Number(crate::numbers::NumberError),
+    /// The file ends where these values were due.
+    Ends {
+        /// The values due.
+        what: BuetValues,
+    },
+    /// A line that is not `count` finite numbers.
+    Numbers {
+        /// The values due.
+        what: BuetValues,
+        /// How many.
+        count: usize,
+        /// The line written.
+        found: String,
+    },
+    /// The camera looks at its own position.
+    LookAtEye,
+    /// The up direction lies along the direction of view.
+    UpAlongView,
+    /// A field of view, aspect ratio or near and far planes no projection has.
+    Perspective,
+    /// A rotation about the zero axis.
+    RotationAxis,
+    /// `pop` with nothing pushed.
+    Pop,
+    /// A command the course does not have.
+    UnknownCommand {
+        /// The word written.
+        command: String,
+    },
+    /// A stage file's line that is not three coordinates.
+    ThreeCoordinates {
+        /// The line written.
+        found: String,
+    },
+    /// A stage file's points that do not make whole triangles.
+    Triangles {
+        /// How many points.
+        count: usize,
+    },
+    /// A value of a student's `z_buffer.txt` that is not a number.
+    AnswerNotANumber {
+        /// Its line (from 1).
+        line: usize,
+        /// Which value of the line (from 1).
+        value: usize,
+        /// What is written.
+        text: String,
+    },
+    /// A student's `z_buffer.txt` with another count of rows than the raster's.
+    AnswerRows {
+        /// The rows written.
+        rows: usize,
+        /// The raster's height.
+        height: u32,
+    },
+}
+
+/// The values a line of `scene.txt` holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BuetValues {
+    /// The eye position.
+    Eye,
+    /// The point looked at.
+    Look,
+    /// The up direction.
+    Up,
+    /// The projection's field of view, aspect ratio, near and far planes.
+    Perspective,
+    /// A triangle's vertex.
+    Vertex,
+    /// A translation.
+    Translation,
+    /// A scaling.
+    Scale,
+    /// A rotation's angle and axis.
+    Rotation,
+}
+
+impl BuetValues {
+    fn key(self) -> &'static str {
+        match self {
+            BuetValues::Eye => "buet-what-eye",
+            BuetValues::Look => "buet-what-look",
+            BuetValues::Up => "buet-what-up",
+            BuetValues::Perspective => "buet-what-perspective",
+            BuetValues::Vertex => "buet-what-vertex",
+            BuetValues::Translation => "buet-what-translation",
+            BuetValues::Scale => "buet-what-scale",
+            BuetValues::Rotation => "buet-what-rotation",
+        }
+    }
+}
+
+impl CourseProblem for BuetProblem {
+    fn message(&self, lang: Lang) -> String {
+        use crate::words::token;
+        match self {
+            BuetProblem::Size { word } => {
+                words!(lang, "buet-size", word = token(lang, word), max = crate::scene::MAX_SIDE.to_string())
+            }
+            BuetProblem::ConfigEmpty => words!(lang, "buet-config-empty"),
+            BuetProblem::ConfigFirst => words!(lang, "buet-config-first"),
+            BuetProblem::OneNumber => words!(lang, "buet-one-number"),
+            BuetProblem::ZRange => words!(lang, "buet-z-range"),
+            BuetProblem::WindowNegative => words!(lang, "buet-window-negative"),
+            BuetProblem::ZOrder => words!(lang, "buet-z-order"),
+            BuetProblem::ConfigLines { count } => words!(lang, "buet-config-lines", count = count.to_string()),
+            BuetProblem::Number(problem) => problem.message(lang),
+            BuetProblem::Ends { what } => words!(lang, "buet-ends", what = words!(lang, what.key())),
+            BuetProblem::Numbers { what, count, found } => words!(
+                lang,
+                "buet-numbers",
+                what = words!(lang, what.key()),
+                count = count.to_string(),
+                found = token(lang, found)
+            ),
+            BuetProblem::LookAtEye => words!(lang, "buet-look-at-eye"),
+            BuetProblem::UpAlongView => words!(lang, "buet-up-along-view"),
+            BuetProblem::Perspective => words!(lang, "buet-perspective"),
+            BuetProblem::RotationAxis => words!(lang, "buet-rotation-axis"),
+            BuetProblem::Pop => words!(lang, "buet-pop"),
+            BuetProblem::UnknownCommand { command } => {
+                words!(lang, "case-unknown-command", command = token(lang, command))
+            }
+            BuetProblem::ThreeCoordinates { found } => {
+                words!(lang, "buet-three-coordinates", found = token(lang, found))
+            }
+            BuetProblem::Triangles { count } => words!(lang, "buet-triangles", count = count.to_string()),
+            BuetProblem::AnswerNotANumber { line, value, text } => words!(
+                lang,
+                "buet-answer-not-a-number",
+                line = line.to_string(),
+                value = value.to_string(),
+                text = token(lang, text)
+            ),
+            BuetProblem::AnswerRows { rows, height } => {
+                words!(lang, "buet-answer-rows", rows = rows.to_string(), height = height.to_string())
+            }
+        }
+    }
 }
 
 /// `config.txt`: the raster size, the window and the depth range.
@@ -49,34 +222,27 @@ impl Config {
     /// −1 … 1, buffer cleared to 2), or `W H`, `left_x`, `bottom_y`,
     /// `z_front z_rear` on the following lines (window `left_x … −left_x` ×
     /// `bottom_y … −bottom_y`, buffer cleared to `z_rear`).
-    pub fn parse(lang: Lang, text: &str) -> Result<Config, CaseError> {
+    pub fn parse(text: &str) -> Result<Config, BuetError> {
         let lines: Vec<(usize, Vec<&str>)> = text
             .lines()
             .enumerate()
             .map(|(i, l)| (i + 1, l.split_whitespace().collect::<Vec<_>>()))
             .filter(|(_, words)| !words.is_empty())
             .collect();
-        let number = |line: usize, word: &str| -> Result<Q, CaseError> {
-            parse_number(word).map_err(|e| case_error(Some(line), e.message(lang)))
+        let number = |line: usize, word: &str| -> Result<Q, BuetError> {
+            parse_number(word).map_err(|e| case_error(Some(line), BuetProblem::Number(e)))
         };
-        let size = |line: usize, word: &str| -> Result<u32, CaseError> {
-            word.parse::<u32>().ok().filter(|v| (1..=crate::scene::MAX_SIDE as u32).contains(v)).ok_or_else(|| {
-                case_error(
-                    Some(line),
-                    words!(
-                        lang,
-                        "buet-size",
-                        word = crate::words::token(lang, word),
-                        max = crate::scene::MAX_SIDE.to_string()
-                    ),
-                )
-            })
+        let size = |line: usize, word: &str| -> Result<u32, BuetError> {
+            word.parse::<u32>()
+                .ok()
+                .filter(|v| (1..=crate::scene::MAX_SIDE as u32).contains(v))
+                .ok_or_else(|| case_error(Some(line), BuetProblem::Size { word: word.to_string() }))
         };
         let Some((first_line, first)) = lines.first() else {
-            return Err(case_error(None, words!(lang, "buet-config-empty")));
+            return Err(case_error(None, BuetProblem::ConfigEmpty));
         };
         let [w, h] = first.as_slice() else {
-            return Err(case_error(Some(*first_line), words!(lang, "buet-config-first")));
+            return Err(case_error(Some(*first_line), BuetProblem::ConfigFirst));
         };
         let (width, height) = (size(*first_line, w)?, size(*first_line, h)?);
         let one = Q::from_integer(1);
@@ -91,29 +257,29 @@ impl Config {
                 z_max: Q::from_integer(2),
             }),
             4 => {
-                let single = |index: usize| -> Result<Q, CaseError> {
+                let single = |index: usize| -> Result<Q, BuetError> {
                     let (line, words) = &lines[index];
                     match words.as_slice() {
                         [word] => number(*line, word),
-                        _ => Err(case_error(Some(*line), words!(lang, "buet-one-number"))),
+                        _ => Err(case_error(Some(*line), BuetProblem::OneNumber)),
                     }
                 };
                 let left = single(1)?;
                 let bottom = single(2)?;
                 let (line, words) = &lines[3];
                 let [front, rear] = words.as_slice() else {
-                    return Err(case_error(Some(*line), words!(lang, "buet-z-range")));
+                    return Err(case_error(Some(*line), BuetProblem::ZRange));
                 };
                 let (z_front, z_rear) = (number(*line, front)?, number(*line, rear)?);
                 if left >= Q::from_integer(0) || bottom >= Q::from_integer(0) {
-                    return Err(case_error(Some(lines[1].0), words!(lang, "buet-window-negative")));
+                    return Err(case_error(Some(lines[1].0), BuetProblem::WindowNegative));
                 }
                 if z_front > z_rear {
-                    return Err(case_error(Some(*line), words!(lang, "buet-z-order")));
+                    return Err(case_error(Some(*line), BuetProblem::ZOrder));
                 }
                 Ok(Config { width, height, left, bottom, z_front, z_rear, z_max: z_rear })
             }
-            n => Err(case_error(None, words!(lang, "buet-config-lines", count = n.to_string()))),
+            n => Err(case_error(None, BuetProblem::ConfigLines { count: n })),
         }
     }
 }
@@ -227,26 +393,16 @@ impl<'a> Lines<'a> {
         self.next.checked_sub(1).and_then(|i| self.lines.get(i)).map(|(line, _)| *line)
     }
 
-    /// The next line as exactly `count` numbers; `what` is the catalogue
-    /// key naming them.
-    fn numbers(&mut self, lang: Lang, count: usize, what: &str) -> Result<Vec<f64>, CaseError> {
+    /// The next line as exactly `count` numbers, the values `what`.
+    fn numbers(&mut self, count: usize, what: BuetValues) -> Result<Vec<f64>, BuetError> {
         let Some((line, text)) = self.next_line() else {
-            return Err(case_error(None, words!(lang, "buet-ends", what = words!(lang, what))));
+            return Err(case_error(None, BuetProblem::Ends { what }));
         };
         let values: Result<Vec<f64>, _> = text.split_whitespace().map(str::parse::<f64>).collect();
         match values {
             // `str::parse` reads "NaN" and "inf" too: the course's numbers are finite.
             Ok(values) if values.len() == count && values.iter().all(|v| v.is_finite()) => Ok(values),
-            _ => Err(case_error(
-                Some(line),
-                words!(
-                    lang,
-                    "buet-numbers",
-                    what = words!(lang, what),
-                    count = count.to_string(),
-                    found = crate::words::token(lang, text)
-                ),
-            )),
+            _ => Err(case_error(Some(line), BuetProblem::Numbers { what, count, found: text.to_string() })),
         }
     }
 }
@@ -270,29 +426,29 @@ impl CaseScene {
     /// Reads `scene.txt` and applies the model transformations (stage 1):
     /// `triangle`, `translate`, `scale`, `rotate` (angle in degrees and an
     /// axis), `push`, `pop`, `end`; each transformation is `M = M·T`.
-    pub fn parse(lang: Lang, text: &str) -> Result<CaseScene, CaseError> {
+    pub fn parse(text: &str) -> Result<CaseScene, BuetError> {
         let lines: Vec<(usize, &str)> =
             text.lines().enumerate().map(|(i, l)| (i + 1, l.trim())).filter(|(_, l)| !l.is_empty()).collect();
         let mut reader = Lines { lines: &lines, next: 0 };
         let three = |v: Vec<f64>| [v[0], v[1], v[2]];
         // A camera or projection the formulas cannot build (they would divide by
         // zero and fill every stage with NaN) is refused at its line.
-        let eye = three(reader.numbers(lang, 3, "buet-what-eye")?);
-        let look = three(reader.numbers(lang, 3, "buet-what-look")?);
+        let eye = three(reader.numbers(3, BuetValues::Eye)?);
+        let look = three(reader.numbers(3, BuetValues::Look)?);
         if look == eye {
-            return Err(case_error(reader.last_line(), words!(lang, "buet-look-at-eye")));
+            return Err(case_error(reader.last_line(), BuetProblem::LookAtEye));
         }
-        let up = three(reader.numbers(lang, 3, "buet-what-up")?);
+        let up = three(reader.numbers(3, BuetValues::Up)?);
         let direction = [0, 1, 2].map(|i| look[i] - eye[i]);
         if cross(direction, up).iter().all(|v| *v == 0.0) {
-            return Err(case_error(reader.last_line(), words!(lang, "buet-up-along-view")));
+            return Err(case_error(reader.last_line(), BuetProblem::UpAlongView));
         }
-        let p = reader.numbers(lang, 4, "buet-what-perspective")?;
+        let p = reader.numbers(4, BuetValues::Perspective)?;
         let perspective = [p[0], p[1], p[2], p[3]];
         let [fov_y, aspect, near, far] = perspective;
         let angle = |a: f64| a > 0.0 && a < 180.0;
         if !(angle(fov_y) && aspect > 0.0 && angle(fov_y * aspect) && near > 0.0 && far != near) {
-            return Err(case_error(reader.last_line(), words!(lang, "buet-perspective")));
+            return Err(case_error(reader.last_line(), BuetProblem::Perspective));
         }
         let mut model = identity();
         let mut stack: Vec<Matrix4> = Vec::new();
@@ -302,29 +458,26 @@ impl CaseScene {
                 "triangle" => {
                     let mut triangle = [[0.0; 3]; 3];
                     for vertex in &mut triangle {
-                        *vertex = transform(&model, three(reader.numbers(lang, 3, "buet-what-vertex")?));
+                        *vertex = transform(&model, three(reader.numbers(3, BuetValues::Vertex)?));
                     }
                     stage1.push(triangle);
                 }
                 "translate" => {
-                    model = multiply(&model, &translation(three(reader.numbers(lang, 3, "buet-what-translation")?)))
+                    model = multiply(&model, &translation(three(reader.numbers(3, BuetValues::Translation)?)))
                 }
-                "scale" => model = multiply(&model, &scaling(three(reader.numbers(lang, 3, "buet-what-scale")?))),
+                "scale" => model = multiply(&model, &scaling(three(reader.numbers(3, BuetValues::Scale)?))),
                 "rotate" => {
-                    let r = reader.numbers(lang, 4, "buet-what-rotation")?;
+                    let r = reader.numbers(4, BuetValues::Rotation)?;
                     if r[1..].iter().all(|v| *v == 0.0) {
-                        return Err(case_error(reader.last_line(), words!(lang, "buet-rotation-axis")));
+                        return Err(case_error(reader.last_line(), BuetProblem::RotationAxis));
                     }
                     model = multiply(&model, &rotation(r[0], [r[1], r[2], r[3]]));
                 }
                 "push" => stack.push(model),
-                "pop" => model = stack.pop().ok_or_else(|| case_error(Some(line), words!(lang, "buet-pop")))?,
+                "pop" => model = stack.pop().ok_or_else(|| case_error(Some(line), BuetProblem::Pop))?,
                 "end" => break,
                 other => {
-                    return Err(case_error(
-                        Some(line),
-                        words!(lang, "case-unknown-command", command = crate::words::token(lang, other)),
-                    ));
+                    return Err(case_error(Some(line), BuetProblem::UnknownCommand { command: other.to_string() }));
                 }
             }
         }
@@ -384,7 +537,7 @@ pub fn stage_text(triangles: &[[[f64; 3]; 3]]) -> String {
 
 /// Reads a stage file's triangles as the decimal texts written there, each
 /// checked to be a number (stage 4 reads them exactly, not as `f64`s).
-pub fn parse_stage(lang: Lang, text: &str) -> Result<Vec<[[String; 3]; 3]>, CaseError> {
+pub fn parse_stage(text: &str) -> Result<Vec<[[String; 3]; 3]>, BuetError> {
     let mut points = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let words: Vec<&str> = line.split_whitespace().collect();
@@ -392,18 +545,15 @@ pub fn parse_stage(lang: Lang, text: &str) -> Result<Vec<[[String; 3]; 3]>, Case
             continue;
         }
         let [x, y, z] = words.as_slice() else {
-            return Err(case_error(
-                Some(i + 1),
-                words!(lang, "buet-three-coordinates", found = crate::words::token(lang, line.trim())),
-            ));
+            return Err(case_error(Some(i + 1), BuetProblem::ThreeCoordinates { found: line.trim().to_string() }));
         };
         for word in [x, y, z] {
-            parse_number(word).map_err(|e| case_error(Some(i + 1), e.message(lang)))?;
+            parse_number(word).map_err(|e| case_error(Some(i + 1), BuetProblem::Number(e)))?;
         }
         points.push([x.to_string(), y.to_string(), z.to_string()]);
     }
     if points.len() % 3 != 0 {
-        return Err(case_error(None, words!(lang, "buet-triangles", count = points.len().to_string())));
+        return Err(case_error(None, BuetProblem::Triangles { count: points.len() }));
     }
     Ok(points.chunks_exact(3).map(|c| [c[0].clone(), c[1].clone(), c[2].clone()]).collect())
 }
@@ -484,22 +634,13 @@ fn read(path: &Path) -> Result<String, Error> {
     crate::door::read_text(path)
 }
 
-fn located(path: &Path, error: CaseError) -> Error {
-    Error::SceneFormat {
-        path: path.to_owned(),
-        location: error.line.map_or(String::new(), |line| format!("line {line}")),
-        line: error.line,
-        message: error.message,
-    }
-}
-
 impl Case {
     /// Reads a case folder. With no `source`, stage 3 is read from
     /// `stage3.txt` when the folder has one, and computed from `scene.txt`
     /// otherwise.
-    pub fn load(lang: Lang, dir: &Path, source: Option<Source>) -> Result<Case, Error> {
+    pub fn load(dir: &Path, source: Option<Source>) -> Result<Case, Error> {
         let config_path = dir.join("config.txt");
-        let config = Config::parse(lang, &read(&config_path)?).map_err(|e| located(&config_path, e))?;
+        let config = Config::parse(&read(&config_path)?).map_err(|e| e.in_file(&config_path))?;
         let source = source.unwrap_or(if dir.join("stage3.txt").is_file() { Source::Stage3 } else { Source::Scene });
         let (stages, stage3_text, stage3_path) = match source {
             Source::Stage3 => {
@@ -508,13 +649,13 @@ impl Case {
             }
             Source::Scene => {
                 let path = dir.join("scene.txt");
-                let scene = CaseScene::parse(lang, &read(&path)?).map_err(|e| located(&path, e))?;
+                let scene = CaseScene::parse(&read(&path)?).map_err(|e| e.in_file(&path))?;
                 let stages = scene.stages();
                 let text = stage_text(&stages[2]);
                 (Some(stages), text, path)
             }
         };
-        let stage3 = parse_stage(lang, &stage3_text).map_err(|e| located(&stage3_path, e))?;
+        let stage3 = parse_stage(&stage3_text).map_err(|e| e.in_file(&stage3_path))?;
         let scene_json = scene_json(&config, &stage3);
         let scene = crate::scene::Scene::from_json(&scene_json, &stage3_path)?;
         Ok(Case { config, stages, stage3, scene, scene_json })
@@ -605,18 +746,18 @@ mod tests {
 
     #[test]
     fn both_config_forms_are_read() {
-        let short = Config::parse(Lang::En, "500 500").unwrap();
+        let short = Config::parse("500 500").unwrap();
         assert_eq!((short.width, short.height, short.z_max), (500, 500, Q::from_integer(2)));
         assert_eq!(
             (short.left, short.z_front, short.z_rear),
             (Q::from_integer(-1), Q::from_integer(-1), Q::from_integer(1))
         );
-        let long = Config::parse(Lang::En, "640 480\n-2.5\n-1.5\n0.5 10\n").unwrap();
+        let long = Config::parse("640 480\n-2.5\n-1.5\n0.5 10\n").unwrap();
         assert_eq!((long.left, long.bottom), (Q::new(-5, 2), Q::new(-3, 2)));
         assert_eq!((long.z_front, long.z_rear, long.z_max), (Q::new(1, 2), Q::from_integer(10), Q::from_integer(10)));
-        assert!(Config::parse(Lang::En, "500").is_err());
-        assert!(Config::parse(Lang::En, "500 500\n-1\n").is_err());
-        assert!(Config::parse(Lang::En, "500 500\n1\n-1\n-1 1").is_err());
+        assert!(Config::parse("500").is_err());
+        assert!(Config::parse("500 500\n-1\n").is_err());
+        assert!(Config::parse("500 500\n1\n-1\n-1 1").is_err());
     }
 
     #[test]

@@ -41,16 +41,17 @@ impl Image {
     /// Reads a PNG (any colour type and depth png expands to 8-bit RGB or
     /// RGBA, grey included) that declares at most
     /// [`crate::door::MAX_IMAGE_PIXELS`]; `Err` says why not.
-    pub fn from_png(lang: crate::words::Lang, bytes: &[u8]) -> Result<Image, String> {
-        let mut reader = crate::door::png_reader(lang, bytes)?;
-        let size = reader.output_buffer_size().ok_or_else(|| words!(lang, "png-too-large"))?;
+    pub fn from_png(bytes: &[u8]) -> Result<Image, crate::door::PngProblem> {
+        use crate::door::PngProblem;
+        let mut reader = crate::door::png_reader(bytes)?;
+        let size = reader.output_buffer_size().ok_or(PngProblem::TooLarge)?;
         let mut buffer = vec![0; size];
-        let frame = reader.next_frame(&mut buffer).map_err(|e| words!(lang, "png-broken", reason = e.to_string()))?;
+        let frame = reader.next_frame(&mut buffer).map_err(|e| PngProblem::Broken { reason: e.to_string() })?;
         buffer.truncate(frame.buffer_size());
         let rgba = match frame.color_type {
             png::ColorType::Rgba => buffer,
             png::ColorType::GrayscaleAlpha => buffer.chunks(2).flat_map(|c| [c[0], c[0], c[0], c[1]]).collect(),
-            other => return Err(words!(lang, "png-colour-type", kind = format!("{other:?}"))),
+            other => return Err(PngProblem::ColourType { kind: format!("{other:?}") }),
         };
         Ok(Image { width: frame.width, height: frame.height, rgba })
     }

@@ -15,19 +15,16 @@
 
 use std::fmt::Write as _;
 
-use super::{CaseError, RastFile, raster};
+use super::{Cs418Error, Cs418Problem, RastFile, raster};
 
 /// The scene JSON for a case.
-pub fn scene_json(lang: crate::words::Lang, case: &RastFile) -> Result<String, CaseError> {
-    let (primitives, shapes) = raster::shapes(lang, case)?;
+pub fn scene_json(case: &RastFile) -> Result<String, Cs418Error> {
+    let (primitives, shapes) = raster::shapes(case)?;
     let level = case.features.fsaa.max(1);
     let count = primitives.len() as u64;
     let frame_bits = (64 - count.leading_zeros()).clamp(1, 32);
     if count >= 1 << 32 {
-        return Err(CaseError {
-            line: None,
-            message: words!(lang, "cs418-too-many-primitives", count = count.to_string()),
-        });
+        return Err(Cs418Error { line: None, problem: Cs418Problem::TooManyPrimitives { count } });
     }
     let mut out = String::new();
     let _ = writeln!(out, "{{");

@@ -41,13 +41,12 @@
 //!   is bound is a sprite: (s, t) runs from (0, 0) at its top-left corner to
 //!   (1, 1) at its bottom-right.
 
-use crate::words::Lang;
-
 mod clip;
 mod compare;
 mod image;
 pub mod import;
 mod raster;
+mod refused;
 pub mod report;
 mod scalar;
 
@@ -55,10 +54,13 @@ pub use compare::{CellDifference, Comparison, Primitive, Reason, SampleGrid, dif
 pub use image::{Image, ImageDifference, compare_images};
 pub use raster::{Arithmetic, render};
 
-pub use super::CaseError;
+pub use refused::{Cs418Problem, TextureProblem};
 
-fn error(line: usize, message: impl Into<String>) -> CaseError {
-    CaseError { line: Some(line), message: message.into() }
+/// A problem in a CS 418 case, with its line.
+pub type Cs418Error = super::CaseError<Cs418Problem>;
+
+fn error(line: usize, problem: Cs418Problem) -> Cs418Error {
+    Cs418Error { line: Some(line), problem }
 }
 
 /// A number as the file writes it: the `f64` the course reads from it, and
@@ -192,10 +194,9 @@ impl RastFile {
     /// (the caller knows where the case's folder is; the same image for every
     /// name of one file), or says why it cannot.
     pub fn parse(
-        lang: Lang,
         text: &str,
-        load_texture: &dyn Fn(&str) -> Result<std::sync::Arc<Image>, String>,
-    ) -> Result<RastFile, CaseError> {
+        load_texture: &dyn Fn(&str) -> Result<std::sync::Arc<Image>, TextureProblem>,
+    ) -> Result<RastFile, Cs418Error> {
         let mut case: Option<RastFile> = None;
         for (index, raw) in text.lines().enumerate() {
             let line = index + 1;
@@ -206,31 +207,20 @@ impl RastFile {
             }
             if keyword == "png" {
                 if case.is_some() {
-                    return Err(error(line, words!(lang, "cs418-second-png")));
+                    return Err(error(line, Cs418Problem::SecondPng));
                 }
-                case = Some(png_line(lang, line, args)?);
+                case = Some(png_line(line, args)?);
                 continue;
             }
             let Some(case) = case.as_mut() else {
-                return Err(error(
-                    line,
-                    words!(lang, "cs418-before-png", keyword = crate::words::token(lang, keyword)),
-                ));
+                return Err(error(line, Cs418Problem::BeforePng { keyword: keyword.to_string() }));
             };
             let flag = |on: &mut bool| {
                 if args.is_empty() {
                     *on = true;
                     Ok(())
                 } else {
-                    Err(error(
-                        line,
-                        words!(
-                            lang,
-                            "cs418-flag-numbers",
-                            keyword = crate::words::token(lang, keyword),
-                            found = args.len().to_string()
-                        ),
-                    ))
+                    Err(error(line, Cs418Problem::FlagNumbers { keyword: keyword.to_string(), found: args.len() }))
                 }
             };
             match keyword {
@@ -241,15 +231,15 @@ impl RastFile {
                 "frustum" => flag(&mut case.features.frustum)?,
                 "decals" => flag(&mut case.features.decals)?,
                 "fsaa" => {
-                    let [level] = integers::<1>(lang, line, keyword, args)?;
+                    let [level] = integers::<1>(line, keyword, args)?;
                     if !(1..=8).contains(&level) {
-                        return Err(error(line, words!(lang, "cs418-fsaa", level = level.to_string())));
+                        return Err(error(line, Cs418Problem::Fsaa { level }));
                     }
-                    samples_within_limit(lang, line, case.width, case.height, level as u32)?;
+                    samples_within_limit(line, case.width, case.height, level as u32)?;
                     case.features.fsaa = level as u32;
                 }
                 "position" | "color" | "pointsize" | "texcoord" => {
-                    let (size, numbers) = sized(lang, line, keyword, args)?;
+                    let (size, numbers) = sized(line, keyword, args)?;
                     let allowed: &[usize] = match keyword {
                         "position" => &[1, 2, 3, 4],
                         "color" => &[3, 4],
@@ -257,16 +247,7 @@ impl RastFile {
                         _ => &[1],
                     };
                     if !allowed.contains(&size) {
-                        return Err(error(
-                            line,
-                            words!(
-                                lang,
-                                "cs418-size",
-                                keyword = crate::words::token(lang, keyword),
-                                size = size.to_string(),
-                                allowed = list(lang, allowed)
-                            ),
-                        ));
+                        return Err(error(line, Cs418Problem::Size { keyword: keyword.to_string(), size, allowed }));
                     }
                     case.commands.push((
                         line,
@@ -282,22 +263,21 @@ impl RastFile {
                     let indices = args
                         .iter()
                         .map(|w| {
-                            w.parse::<usize>().map_err(|_| {
-                                error(line, words!(lang, "cs418-not-an-index", word = crate::words::token(lang, w)))
-                            })
+                            w.parse::<usize>()
+                                .map_err(|_| error(line, Cs418Problem::NotAnIndex { word: w.to_string() }))
                         })
                         .collect::<Result<Vec<_>, _>>()?;
                     case.commands.push((line, FileCommand::Elements(indices)));
                 }
                 "uniformMatrix" => {
                     if args.len() != 16 {
-                        return Err(error(line, words!(lang, "cs418-matrix", found = args.len().to_string())));
+                        return Err(error(line, Cs418Problem::Matrix { found: args.len() }));
                     }
-                    let numbers = args.iter().map(|w| number(lang, line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
+                    let numbers = args.iter().map(|w| number(line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
                     case.commands.push((line, FileCommand::Matrix(numbers)));
                 }
                 "drawArraysTriangles" | "drawElementsTriangles" | "drawArraysPoints" => {
-                    let [a, b] = integers::<2>(lang, line, keyword, args)?;
+                    let [a, b] = integers::<2>(line, keyword, args)?;
                     let command = match keyword {
                         "drawArraysTriangles" => FileCommand::DrawArrays { first: a, count: b },
                         "drawElementsTriangles" => FileCommand::DrawElements { count: a, offset: b },
@@ -306,29 +286,20 @@ impl RastFile {
                     if let FileCommand::DrawArrays { count, .. } | FileCommand::DrawElements { count, .. } = command
                         && count % 3 != 0
                     {
-                        return Err(error(
-                            line,
-                            words!(
-                                lang,
-                                "cs418-count",
-                                keyword = crate::words::token(lang, keyword),
-                                count = count.to_string()
-                            ),
-                        ));
+                        return Err(error(line, Cs418Problem::Count { keyword: keyword.to_string(), count }));
                     }
                     case.commands.push((line, command));
                 }
                 "texture" => {
                     let name = args.join(" ");
                     if name.is_empty() {
-                        return Err(error(line, words!(lang, "cs418-texture-name")));
+                        return Err(error(line, Cs418Problem::TextureName));
                     }
                     let index = match case.textures.iter().position(|t| t.name == name) {
                         Some(index) => index,
                         None => {
-                            let image = load_texture(&name).map_err(|why| {
-                                error(line, words!(lang, "cs418-texture", name = name.as_str(), why = why))
-                            })?;
+                            let image = load_texture(&name)
+                                .map_err(|why| error(line, Cs418Problem::Texture { name: name.clone(), why }))?;
                             case.textures.push(Texture { name, image });
                             case.textures.len() - 1
                         }
@@ -336,50 +307,38 @@ impl RastFile {
                     case.commands.push((line, FileCommand::Texture(index)));
                 }
                 _ => {
-                    return Err(error(
-                        line,
-                        words!(lang, "case-unknown-command", command = crate::words::token(lang, keyword)),
-                    ));
+                    return Err(error(line, Cs418Problem::UnknownCommand { command: keyword.to_string() }));
                 }
             }
         }
-        case.ok_or_else(|| CaseError { line: None, message: words!(lang, "cs418-no-png") })
+        case.ok_or(Cs418Error { line: None, problem: Cs418Problem::NoPng })
     }
 }
 
 /// Refuses, at its line, an image of `width` × `height` at `fsaa level` whose
 /// samples pass [`MAX_SAMPLES`].
-fn samples_within_limit(lang: Lang, line: usize, width: u32, height: u32, level: u32) -> Result<(), CaseError> {
+fn samples_within_limit(line: usize, width: u32, height: u32, level: u32) -> Result<(), Cs418Error> {
     let samples = u64::from(width) * u64::from(height) * u64::from(level * level);
     if samples <= MAX_SAMPLES {
         return Ok(());
     }
-    let (level, samples, max) = (level.to_string(), samples.to_string(), MAX_SAMPLES.to_string());
-    Err(error(line, words!(lang, "cs418-too-many-samples", level = level, samples = samples, max = max)))
+    Err(error(line, Cs418Problem::TooManySamples { level, samples }))
 }
 
-fn png_line(lang: Lang, line: usize, args: &[&str]) -> Result<RastFile, CaseError> {
+fn png_line(line: usize, args: &[&str]) -> Result<RastFile, Cs418Error> {
     let [width, height, file] = args else {
-        return Err(error(line, words!(lang, "cs418-png-words", found = args.len().to_string())));
+        return Err(error(line, Cs418Problem::PngWords { found: args.len() }));
     };
-    let side = |word: &str, what: &str| {
-        word.parse::<u32>().ok().filter(|v| (1..=MAX_SIDE).contains(v)).ok_or_else(|| {
-            error(
-                line,
-                words!(
-                    lang,
-                    "cs418-png-side",
-                    what = what,
-                    word = crate::words::token(lang, word),
-                    max = MAX_SIDE.to_string()
-                ),
-            )
-        })
+    let side = |word: &str, height: bool| {
+        word.parse::<u32>()
+            .ok()
+            .filter(|v| (1..=MAX_SIDE).contains(v))
+            .ok_or_else(|| error(line, Cs418Problem::PngSide { height, word: word.to_string() }))
     };
-    let (width, height) = (side(width, &words!(lang, "cs418-width"))?, side(height, &words!(lang, "cs418-height"))?);
-    samples_within_limit(lang, line, width, height, 1)?;
+    let (width, height) = (side(width, false)?, side(height, true)?);
+    samples_within_limit(line, width, height, 1)?;
     if file.contains(['/', '\\']) || *file == ".." || *file == "." {
-        return Err(error(line, words!(lang, "cs418-png-file", file = crate::words::token(lang, file))));
+        return Err(error(line, Cs418Problem::PngFile { file: (*file).to_string() }));
     }
     Ok(RastFile {
         width,
@@ -391,101 +350,45 @@ fn png_line(lang: Lang, line: usize, args: &[&str]) -> Result<RastFile, CaseErro
     })
 }
 
-fn list(lang: Lang, values: &[usize]) -> String {
-    let words: Vec<String> = values.iter().map(ToString::to_string).collect();
-    match words.split_last() {
-        Some((last, rest)) if !rest.is_empty() => words!(lang, "list-or", rest = rest.join(", "), last = last.as_str()),
-        _ => words.join(""),
-    }
-}
-
-fn number(lang: Lang, line: usize, keyword: &str, word: &str) -> Result<RastNumber, CaseError> {
+fn number(line: usize, keyword: &str, word: &str) -> Result<RastNumber, Cs418Error> {
     let finite = word.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.' | b'e' | b'E'));
     match (word.parse::<f64>(), crate::numbers::parse_number(word)) {
         (Ok(value), Ok(exact)) if finite && value.is_finite() => Ok(RastNumber { value, exact }),
-        (Ok(value), Err(problem)) if finite && value.is_finite() => Err(error(
-            line,
-            words!(
-                lang,
-                "case-keyword-problem",
-                keyword = crate::words::token(lang, keyword),
-                problem = problem.message(lang)
-            ),
-        )),
-        _ => Err(error(
-            line,
-            words!(
-                lang,
-                "cs418-not-a-number",
-                keyword = crate::words::token(lang, keyword),
-                word = crate::words::token(lang, word)
-            ),
-        )),
+        (Ok(value), Err(problem)) if finite && value.is_finite() => {
+            Err(error(line, Cs418Problem::KeywordProblem { keyword: keyword.to_string(), problem }))
+        }
+        _ => Err(error(line, Cs418Problem::NotANumber { keyword: keyword.to_string(), word: word.to_string() })),
     }
 }
 
-fn integers<const N: usize>(lang: Lang, line: usize, keyword: &str, args: &[&str]) -> Result<[usize; N], CaseError> {
+fn integers<const N: usize>(line: usize, keyword: &str, args: &[&str]) -> Result<[usize; N], Cs418Error> {
     if args.len() != N {
-        return Err(error(
-            line,
-            words!(
-                lang,
-                "cs418-integers",
-                keyword = crate::words::token(lang, keyword),
-                count = N,
-                found = args.len().to_string()
-            ),
-        ));
+        return Err(error(line, Cs418Problem::Integers { keyword: keyword.to_string(), count: N, found: args.len() }));
     }
     let mut out = [0; N];
     for (slot, word) in out.iter_mut().zip(args) {
         *slot = word.parse::<usize>().map_err(|_| {
-            error(
-                line,
-                words!(
-                    lang,
-                    "cs418-not-a-whole-number",
-                    keyword = crate::words::token(lang, keyword),
-                    word = crate::words::token(lang, word)
-                ),
-            )
+            error(line, Cs418Problem::NotAWholeNumber { keyword: keyword.to_string(), word: word.to_string() })
         })?;
     }
     Ok(out)
 }
 
-fn sized(lang: Lang, line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<RastNumber>), CaseError> {
+fn sized(line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<RastNumber>), Cs418Error> {
+    let keyword_problem = |problem: fn(String) -> Cs418Problem| error(line, problem(keyword.to_string()));
     let Some((size, rest)) = args.split_first() else {
-        return Err(error(line, words!(lang, "cs418-sized", keyword = crate::words::token(lang, keyword))));
+        return Err(keyword_problem(|keyword| Cs418Problem::Sized { keyword }));
     };
-    let size: usize = size.parse().map_err(|_| {
-        error(
-            line,
-            words!(
-                lang,
-                "cs418-size-word",
-                keyword = crate::words::token(lang, keyword),
-                size = crate::words::token(lang, size)
-            ),
-        )
-    })?;
+    let size: usize = size
+        .parse()
+        .map_err(|_| error(line, Cs418Problem::SizeWord { keyword: keyword.to_string(), size: (*size).to_string() }))?;
     if size == 0 {
-        return Err(error(line, words!(lang, "cs418-size-zero", keyword = crate::words::token(lang, keyword))));
+        return Err(keyword_problem(|keyword| Cs418Problem::SizeZero { keyword }));
     }
-    let numbers = rest.iter().map(|w| number(lang, line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
+    let numbers = rest.iter().map(|w| number(line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
     if numbers.len() % size != 0 {
-        return Err(error(
-            line,
-            words!(
-                lang,
-                "cs418-vertices",
-                keyword = crate::words::token(lang, keyword),
-                size = size.to_string(),
-                numbers = numbers.len().to_string(),
-                whole = (numbers.len() / size).to_string(),
-                left = (numbers.len() % size).to_string()
-            ),
-        ));
+        let numbers = numbers.len();
+        return Err(error(line, Cs418Problem::Vertices { keyword: keyword.to_string(), size, numbers }));
     }
     Ok((size, numbers))
 }
@@ -493,9 +396,10 @@ fn sized(lang: Lang, line: usize, keyword: &str, args: &[&str]) -> Result<(usize
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::words::Lang;
 
-    fn parse(text: &str) -> Result<RastFile, CaseError> {
-        RastFile::parse(Lang::En, text, &|_| Err("no such file beside the case".into()))
+    fn parse(text: &str) -> Result<RastFile, Cs418Error> {
+        RastFile::parse(text, &|_| Err(TextureProblem::Missing))
     }
 
     #[test]

@@ -1,7 +1,6 @@
 //! The course's pipeline, written once over a number type ([`Scalar`]) and
 //! run in `f64` (the course's arithmetic) or in exact rationals.
 
-use crate::words::Lang;
 use std::collections::BTreeMap;
 
 use num_rational::BigRational;
@@ -10,7 +9,7 @@ use super::clip::{Dda, clip, clockwise};
 use super::compare::{Comparison, Primitive, SampleGrid, SampleSpan};
 use super::image::{Image, byte, linear_texels, to_srgb};
 use super::scalar::{Scalar, Vertex};
-use super::{CaseError, FileCommand, RastFile, error};
+use super::{Cs418Error, Cs418Problem, FileCommand, RastFile, error};
 
 /// The arithmetic the course's algorithm runs in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -36,7 +35,7 @@ impl Arithmetic {
 
 /// How many image sizes away from the image a vertex may land (see
 /// `within_reach`).
-const REACH: f64 = 1000.0;
+pub(super) const REACH: f64 = 1000.0;
 
 /// Components of a vertex as the pipeline carries it. In clip space:
 /// x, y, z, w, then the attributes r, g, b, a, s, t. On screen: x', y', z/w,
@@ -61,18 +60,18 @@ enum Attributes<S> {
 }
 
 /// Runs a case in an arithmetic.
-pub fn render(lang: Lang, case: &RastFile, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
+pub fn render(case: &RastFile, arithmetic: Arithmetic) -> Result<Comparison, Cs418Error> {
     match arithmetic {
-        Arithmetic::DdaF64 => Pipeline::<f64>::run(lang, case, arithmetic),
-        Arithmetic::Exact => Pipeline::<BigRational>::run(lang, case, arithmetic),
+        Arithmetic::DdaF64 => Pipeline::<f64>::run(case, arithmetic),
+        Arithmetic::Exact => Pipeline::<BigRational>::run(case, arithmetic),
     }
 }
 
 /// What a case draws, after clipping and culling, in exact arithmetic,
 /// without sampling it: its primitives and their shapes (for `zsim cs418
 /// import`, which leaves the sampling to zsim's rasterizer).
-pub fn shapes(lang: Lang, case: &RastFile) -> Result<(Vec<Primitive>, Vec<SampleGrid>), CaseError> {
-    let pipeline = Pipeline::<BigRational>::new(case, false).draw(lang)?;
+pub fn shapes(case: &RastFile) -> Result<(Vec<Primitive>, Vec<SampleGrid>), Cs418Error> {
+    let pipeline = Pipeline::<BigRational>::new(case, false).draw()?;
     Ok((pipeline.primitives, pipeline.shapes))
 }
 
@@ -103,8 +102,8 @@ struct Pipeline<'a, S> {
 }
 
 impl<'a, S: Scalar> Pipeline<'a, S> {
-    fn run(lang: Lang, case: &'a RastFile, arithmetic: Arithmetic) -> Result<Comparison, CaseError> {
-        let pipeline = Pipeline::<S>::new(case, true).draw(lang)?;
+    fn run(case: &'a RastFile, arithmetic: Arithmetic) -> Result<Comparison, Cs418Error> {
+        let pipeline = Pipeline::<S>::new(case, true).draw()?;
         Ok(Comparison {
             image: pipeline.resolve(),
             arithmetic,
@@ -145,14 +144,14 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     }
 
     /// Runs the case's commands.
-    fn draw(mut self, lang: Lang) -> Result<Self, CaseError> {
+    fn draw(mut self) -> Result<Self, Cs418Error> {
         for (line, command) in &self.case.commands {
-            self.command(lang, *line, command)?;
+            self.command(*line, command)?;
         }
         Ok(self)
     }
 
-    fn command(&mut self, lang: Lang, line: usize, command: &FileCommand) -> Result<(), CaseError> {
+    fn command(&mut self, line: usize, command: &FileCommand) -> Result<(), Cs418Error> {
         match command {
             FileCommand::Position { size, numbers } => {
                 self.positions = numbers
@@ -185,46 +184,26 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 let positions = self.positions.len();
                 if first.checked_add(*count).is_none_or(|end| end > positions) {
                     let index = (*first).max(positions);
-                    let has = positions.to_string();
-                    return Err(error(
-                        line,
-                        words!(lang, "cs418-vertex-index", index = index.to_string(), count = has),
-                    ));
+                    return Err(error(line, Cs418Problem::VertexIndex { index, count: positions }));
                 }
                 let indices: Vec<usize> = (*first..first + count).collect();
-                self.triangles(lang, line, &indices)?;
+                self.triangles(line, &indices)?;
             }
             FileCommand::DrawElements { count, offset } => {
                 let range = offset.checked_add(*count).map(|end| *offset..end);
                 let Some(indices) = range.and_then(|range| self.elements.get(range)).map(<[usize]>::to_vec) else {
-                    return Err(error(
-                        line,
-                        words!(
-                            lang,
-                            "cs418-elements-range",
-                            count = count.to_string(),
-                            offset = offset.to_string(),
-                            last = offset.saturating_add(*count).saturating_sub(1).to_string(),
-                            has = self.elements.len().to_string()
-                        ),
-                    ));
+                    let (count, offset, has) = (*count, *offset, self.elements.len());
+                    return Err(error(line, Cs418Problem::ElementsRange { count, offset, has }));
                 };
-                self.triangles(lang, line, &indices)?;
+                self.triangles(line, &indices)?;
             }
             FileCommand::DrawPoints { first, count } => {
                 for index in *first..first.saturating_add(*count) {
-                    let size = self.sizes.get(index).cloned().ok_or_else(|| {
-                        error(
-                            line,
-                            words!(
-                                lang,
-                                "cs418-point-size-range",
-                                index = index.to_string(),
-                                has = self.sizes.len().to_string()
-                            ),
-                        )
-                    })?;
-                    let vertex = self.vertex(lang, line, index, false)?;
+                    let size =
+                        self.sizes.get(index).cloned().ok_or_else(|| {
+                            error(line, Cs418Problem::PointSizeRange { index, has: self.sizes.len() })
+                        })?;
+                    let vertex = self.vertex(line, index, false)?;
                     self.primitives.push(Primitive { line, vertices: vec![index] });
                     self.point(vertex, size);
                 }
@@ -236,13 +215,11 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     /// Vertex `index` in clip space: its position times the matrix, its
     /// colour and its texture coordinates (needed only by a triangle drawn
     /// with a texture; (0, 0) otherwise).
-    fn vertex(&self, lang: Lang, line: usize, index: usize, textured: bool) -> Result<Vertex<S>, CaseError> {
-        let position = self.positions.get(index).ok_or_else(|| {
-            error(
-                line,
-                words!(lang, "cs418-vertex-index", index = index.to_string(), count = self.positions.len().to_string()),
-            )
-        })?;
+    fn vertex(&self, line: usize, index: usize, textured: bool) -> Result<Vertex<S>, Cs418Error> {
+        let position = self
+            .positions
+            .get(index)
+            .ok_or_else(|| error(line, Cs418Problem::VertexIndex { index, count: self.positions.len() }))?;
         // A texture without decals replaces the colour, so none need be given
         // (WebGL's default attribute, opaque black, stands in).
         let replaced = self.texture.is_some() && !self.case.features.decals;
@@ -250,10 +227,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
             Some(colour) => colour.clone(),
             None if replaced => [S::int(0), S::int(0), S::int(0), S::int(1)],
             None => {
-                return Err(error(
-                    line,
-                    format!("vertex {index} is read, but \"color\" has {} vertices", self.colours.len()),
-                ));
+                return Err(error(line, Cs418Problem::ColourRange { index, has: self.colours.len() }));
             }
         };
         let position: Vec<S> = match &self.matrix {
@@ -270,28 +244,20 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
         let texcoord = match self.texcoords.get(index) {
             Some(st) => st.clone(),
             None if textured => {
-                return Err(error(
-                    line,
-                    words!(
-                        lang,
-                        "cs418-texcoord-range",
-                        index = index.to_string(),
-                        has = self.texcoords.len().to_string()
-                    ),
-                ));
+                return Err(error(line, Cs418Problem::TexcoordRange { index, has: self.texcoords.len() }));
             }
             None => [S::int(0), S::int(0)],
         };
         Ok(position.into_iter().chain(colour).chain(texcoord).collect())
     }
 
-    fn triangles(&mut self, lang: Lang, line: usize, indices: &[usize]) -> Result<(), CaseError> {
+    fn triangles(&mut self, line: usize, indices: &[usize]) -> Result<(), Cs418Error> {
         let textured = self.texture.is_some();
         for corners in indices.chunks_exact(3) {
             let vertices = [
-                self.vertex(lang, line, corners[0], textured)?,
-                self.vertex(lang, line, corners[1], textured)?,
-                self.vertex(lang, line, corners[2], textured)?,
+                self.vertex(line, corners[0], textured)?,
+                self.vertex(line, corners[1], textured)?,
+                self.vertex(line, corners[2], textured)?,
             ];
             self.primitives.push(Primitive { line, vertices: corners.to_vec() });
             let primitive = self.primitives.len() as u32;
@@ -308,7 +274,7 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
                 let Some(screen) = piece.iter().map(|v| self.to_screen(v)).collect::<Option<Vec<_>>>() else {
                     continue;
                 };
-                self.within_reach(lang, line, &screen)?;
+                self.within_reach(line, &screen)?;
                 if self.case.features.cull && !clockwise(&screen) {
                     continue;
                 }
@@ -327,15 +293,12 @@ impl<'a, S: Scalar> Pipeline<'a, S> {
     /// Refuses a triangle whose vertices land so far outside the image (or
     /// at no number at all) that walking its rows and columns would take
     /// ages: the DDA visits every integer between a vertex and the image.
-    fn within_reach(&self, lang: Lang, line: usize, screen: &[Vertex<S>]) -> Result<(), CaseError> {
+    fn within_reach(&self, line: usize, screen: &[Vertex<S>]) -> Result<(), Cs418Error> {
         let reach = REACH * (self.width.max(self.height) as f64);
         for v in screen {
             let (x, y) = (v[0].to_f64(), v[1].to_f64());
             if !(x.abs() <= reach && y.abs() <= reach) {
-                return Err(error(
-                    line,
-                    words!(lang, "cs418-too-far", x = x.to_string(), y = y.to_string(), reach = REACH.to_string()),
-                ));
+                return Err(error(line, Cs418Problem::TooFar { x, y }));
             }
         }
         Ok(())
@@ -584,12 +547,13 @@ fn linear_once(textures: &[super::Texture]) -> Vec<Texels> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::words::Lang;
     use num_bigint::BigInt;
 
     #[test]
     fn numbers_keep_their_exact_value() {
-        let case = super::super::RastFile::parse(Lang::En, "png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| {
-            Err("no textures here".into())
+        let case = super::super::RastFile::parse("png 1 1 a.png\npointsize 1 0.6934 -.5 1e-3 +4", &|_| {
+            Err(super::super::TextureProblem::Missing)
         })
         .unwrap();
         let super::super::FileCommand::PointSize(numbers) = &case.commands[0].1 else { panic!("pointsize") };
@@ -623,8 +587,8 @@ mod tests {
     }
 
     fn textured(text: &str) -> Image {
-        let case = super::super::RastFile::parse(Lang::En, text, &|_| Ok(std::sync::Arc::new(two_by_two()))).unwrap();
-        render(Lang::En, &case, Arithmetic::DdaF64).unwrap().image
+        let case = super::super::RastFile::parse(text, &|_| Ok(std::sync::Arc::new(two_by_two()))).unwrap();
+        render(&case, Arithmetic::DdaF64).unwrap().image
     }
 
     /// The whole image as one quad whose (s, t) run from 0 to 2: each sample
@@ -661,9 +625,8 @@ mod tests {
                 s0 + 1,
                 s0 + 1
             );
-            let case =
-                super::super::RastFile::parse(Lang::En, &text, &|_| Ok(std::sync::Arc::new(greys.clone()))).unwrap();
-            let image = render(Lang::En, &case, Arithmetic::DdaF64).unwrap().image;
+            let case = super::super::RastFile::parse(&text, &|_| Ok(std::sync::Arc::new(greys.clone()))).unwrap();
+            let image = render(&case, Arithmetic::DdaF64).unwrap().image;
             for x in 0..8u32 {
                 let k = ((x + shift) % 8) as u8 * 30;
                 assert_eq!(image.pixel(x, 0), [k, k, k, 255], "s from {s0}, pixel {x}");
@@ -704,13 +667,12 @@ mod tests {
     /// divided by 0: NaN alpha, drawn as transparent black), and agree.
     #[test]
     fn a_sample_at_infinity_gets_the_floats_colour_in_both_arithmetics() {
-        let case = super::super::RastFile::parse(Lang::En,
+        let case = super::super::RastFile::parse(
             "png 4 4 o.png\nhyp\nposition 4 2 1.0 0 -2 0 -1.0 0 2 2 -0.5 0 -1\ncolor 3 1 0 0 0 1 0 0 0 1\ndrawArraysTriangles 0 3",
-            &|_| Err("no textures here".into()),
+            &|_| Err(super::super::TextureProblem::Missing),
         )
         .unwrap();
-        let (course, exact) =
-            (render(Lang::En, &case, Arithmetic::DdaF64).unwrap(), render(Lang::En, &case, Arithmetic::Exact).unwrap());
+        let (course, exact) = (render(&case, Arithmetic::DdaF64).unwrap(), render(&case, Arithmetic::Exact).unwrap());
         assert_eq!(course.image, exact.image);
         let at_infinity: Vec<(u32, u32)> = (0..4)
             .flat_map(|y| (0..4).map(move |x| (x, y)))
@@ -722,12 +684,11 @@ mod tests {
     #[test]
     fn a_textured_triangle_needs_texture_coordinates() {
         let case = super::super::RastFile::parse(
-            Lang::En,
             "png 2 2 a.png\ntexture t.png\nposition 2 -1 -1 1 -1 -1 1\ntexcoord 2 0 0 1 0\ndrawArraysTriangles 0 3",
             &|_| Ok(std::sync::Arc::new(two_by_two())),
         )
         .unwrap();
-        let problem = render(Lang::En, &case, Arithmetic::DdaF64).unwrap_err().message(Lang::En);
+        let problem = render(&case, Arithmetic::DdaF64).unwrap_err().message(Lang::En);
         assert_eq!(problem, "line 5: vertex 2 is drawn with a texture, but \"texcoord\" has 2 vertices");
     }
 }

@@ -6,7 +6,9 @@ use std::cell::RefCell;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use super::{Comparison, Image, Primitive, RastFile, Reason, compare_images, differences};
+use super::{
+    Comparison, Cs418Problem, Image, Primitive, RastFile, Reason, TextureProblem, compare_images, differences,
+};
 use crate::door::{Folder, Identity};
 use crate::error::Error;
 use crate::words::Lang;
@@ -21,19 +23,9 @@ pub enum Textures {
     Ignored,
 }
 
-/// A case's error as zsim's, naming the file and the line.
-pub fn located(path: &Path, error: super::CaseError) -> Error {
-    Error::SceneFormat {
-        path: path.to_owned(),
-        location: error.line.map_or(String::new(), |line| format!("line {line}")),
-        line: error.line,
-        message: error.message,
-    }
-}
-
 /// Reads the case at `path`, its textures from beside it where `textures`
 /// says so; errors name the file and the line.
-pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<LoadedCase, Error> {
+pub fn load(path: &Path, textures: Textures) -> Result<LoadedCase, Error> {
     let text = crate::door::read_text(path)?;
     let folder = Folder::beside(path)?;
     // Each file decoded once, and held once, however many names lead to it (`x.png`, `./x.png`).
@@ -44,27 +36,24 @@ pub fn load(lang: Lang, path: &Path, textures: Textures) -> Result<LoadedCase, E
             return Ok(Arc::new(Image { width: 1, height: 1, rgba: vec![0; 4] }));
         }
         let (bytes, identity) = folder.read(name).map_err(|error| match error {
-            Error::Read { source, .. } if source.kind() == std::io::ErrorKind::NotFound => {
-                words!(lang, "cs418-texture-missing")
-            }
-            other => other.message(lang),
+            Error::Read { source, .. } if source.kind() == std::io::ErrorKind::NotFound => TextureProblem::Missing,
+            other => TextureProblem::Unread(Box::new(other)),
         })?;
         if let Some((_, _, image)) = read.borrow().iter().find(|(_, known, _)| *known == identity) {
             return Ok(image.clone());
         }
         // What the textures hold together, this one's share known from its header.
-        let info = crate::door::png_reader(lang, &bytes)?;
+        let info = crate::door::png_reader(&bytes).map_err(TextureProblem::Image)?;
         let together = held.get() + u64::from(info.info().width) * u64::from(info.info().height);
         if together > super::MAX_CASE_TEXTURE_PIXELS {
-            let max = super::MAX_CASE_TEXTURE_PIXELS;
-            return Err(words!(lang, "cs418-textures-too-large", pixels = together.to_string(), max = max.to_string()));
+            return Err(TextureProblem::TooLarge { pixels: together });
         }
         held.set(together);
-        let image = Arc::new(Image::from_png(lang, &bytes)?);
+        let image = Arc::new(Image::from_png(&bytes).map_err(TextureProblem::Image)?);
         read.borrow_mut().push((folder.path_of(name), identity, Arc::clone(&image)));
         Ok(image)
     };
-    let case = RastFile::parse(lang, &text, &texture).map_err(|e| located(path, e))?;
+    let case = RastFile::parse(&text, &texture).map_err(|e| e.in_file(path))?;
     let textures = read.into_inner().into_iter().map(|(path, identity, _)| (path, identity)).collect();
     Ok(LoadedCase { case, textures })
 }
@@ -77,12 +66,17 @@ pub struct LoadedCase {
     pub textures: Vec<(PathBuf, Identity)>,
 }
 
+/// A reference image refused.
+fn refused(png: &Path, problem: Cs418Problem) -> Error {
+    crate::courses::CaseError { line: None, problem }.in_file(png)
+}
+
 /// Reads a reference image for `--compare`, through the same door as every
 /// input: a regular file within [`crate::door::MAX_INPUT_BYTES`], its declared
 /// size checked before decoding; its identity comes with it.
-pub fn reference(lang: Lang, png: &Path) -> Result<(Image, Option<Identity>), Error> {
+pub fn reference(png: &Path) -> Result<(Image, Option<Identity>), Error> {
     let bytes = crate::door::read_bytes(png, crate::door::Links::Follow)?;
-    let image = Image::from_png(lang, &bytes).map_err(|message| Error::Answer { path: png.to_owned(), message })?;
+    let image = Image::from_png(&bytes).map_err(|problem| refused(png, Cs418Problem::Reference(problem)))?;
     Ok((image, Identity::of(png)))
 }
 
@@ -98,17 +92,10 @@ pub fn compare_text(
 ) -> Result<(String, bool), Error> {
     let mut text = String::new();
     let Some(difference) = compare_images(ours, image, tolerance) else {
-        return Err(Error::Answer {
-            path: png.to_owned(),
-            message: words!(
-                lang,
-                "cs418-image-size",
-                width = image.width.to_string(),
-                height = image.height.to_string(),
-                case_width = ours.width.to_string(),
-                case_height = ours.height.to_string()
-            ),
-        });
+        return Err(refused(
+            png,
+            Cs418Problem::ImageSize { size: (image.width, image.height), case: (ours.width, ours.height) },
+        ));
     };
     let (path, tolerance_text, largest) =
         (crate::words::shown_path(png), tolerance.to_string(), difference.largest.to_string());

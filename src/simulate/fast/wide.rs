@@ -272,11 +272,11 @@ pub(super) use avx2::{Avx4, Avx8};
 mod avx2 {
     use std::arch::x86_64::{
         __m256i, _mm_blendv_epi8, _mm_loadl_epi64, _mm_loadu_si128, _mm_packs_epi16, _mm_packs_epi32, _mm_set1_epi8,
-        _mm_storel_epi64, _mm_storeu_si128, _mm256_extracti128_si256, _mm256_add_epi32, _mm256_add_epi64,
-        _mm256_and_si256, _mm256_blendv_epi8, _mm256_castsi256_pd, _mm256_castsi256_ps, _mm256_castsi256_si128,
-        _mm256_cmpgt_epi32, _mm256_cmpgt_epi64, _mm256_cvtepu32_epi64, _mm256_loadu_si256, _mm256_max_epi32,
-        _mm256_min_epi32, _mm256_movemask_pd, _mm256_movemask_ps, _mm256_permutevar8x32_epi32, _mm256_set1_epi32,
-        _mm256_set1_epi64x, _mm256_setr_epi32, _mm256_storeu_si256, _mm256_sub_epi32, _mm256_sub_epi64,
+        _mm_storel_epi64, _mm_storeu_si128, _mm256_add_epi32, _mm256_add_epi64, _mm256_and_si256, _mm256_blendv_epi8,
+        _mm256_castsi256_pd, _mm256_castsi256_ps, _mm256_castsi256_si128, _mm256_cmpgt_epi32, _mm256_cmpgt_epi64,
+        _mm256_cvtepu32_epi64, _mm256_extracti128_si256, _mm256_loadu_si256, _mm256_max_epi32, _mm256_min_epi32,
+        _mm256_movemask_pd, _mm256_movemask_ps, _mm256_permutevar8x32_epi32, _mm256_set1_epi32, _mm256_set1_epi64x,
+        _mm256_setr_epi32, _mm256_storeu_si256, _mm256_sub_epi32, _mm256_sub_epi64,
     };
 
     use super::{Lanes32, Lanes64};

@@ -56,6 +56,7 @@ cs418-width = width
 cs418-height = height
 cs418-elements-range = drawElementsTriangles { $count } { $offset } reads elements { $offset }…{ $last }, but "elements" has { $has }
 cs418-point-size-range = drawArraysPoints reads point size { $index }, but "pointsize" has { $has }
+cs418-colour-range = vertex { $index } is read, but "color" has { $has } vertices
 cs418-texcoord-range = vertex { $index } is drawn with a texture, but "texcoord" has { $has } vertices
 cs418-too-far = a vertex lands at ({ $x }, { $y }) on the image, too far outside it to rasterize (more than { $reach } image sizes away): turn on "frustum" to clip it
 cs418-too-many-primitives = { $count } primitives do not fit a 32-bit framebuffer
@@ -117,5 +118,5 @@ tinyrenderer-differ = exact arithmetic gives another z-buffer level than the les
    *[other] pixels
 }
 tinyrenderer-differ-pixel = ({ $x }, { $y }), face { $face }: f64 { $float }, exact { $exact } (the interpolated z is an integer; f64 falls just below it and truncation drops a level)
-tinyrenderer-line = line { $line }
+file-line = line { $line }
 cs418-too-many-samples = fsaa { $level } asks for { $samples } samples, more than zsim draws ({ $max }): lower fsaa or the image size

@@ -53,6 +53,7 @@ cs418-width = ширина
 cs418-height = высота
 cs418-elements-range = drawElementsTriangles { $count } { $offset } читает элементы { $offset }…{ $last }, а в «elements» их { $has }
 cs418-point-size-range = drawArraysPoints читает размер точки { $index }, а в «pointsize» их { $has }
+cs418-colour-range = читается вершина { $index }, а в «color» вершин { $has }
 cs418-texcoord-range = вершина { $index } рисуется с текстурой, а в «texcoord» вершин { $has }
 cs418-too-far = вершина попадает в ({ $x }, { $y }) на изображении, слишком далеко от него для растеризации (дальше { $reach } размеров изображения): включите «frustum», чтобы отсечь её
 cs418-too-many-primitives = { $count } примитивов не помещаются в 32-битный буфер кадра
@@ -110,5 +111,5 @@ tinyrenderer-differ = точная арифметика даёт другой у
    *[other] пикселах
 }
 tinyrenderer-differ-pixel = ({ $x }, { $y }), грань { $face }: f64 { $float }, точно { $exact } (интерполированное z целое; f64 чуть меньше, и отбрасывание дробной части теряет уровень)
-tinyrenderer-line = строка { $line }
+file-line = строка { $line }
 cs418-too-many-samples = fsaa { $level } требует { $samples } отсчётов, больше, чем рисует zsim ({ $max }): уменьшите fsaa или размер изображения

@@ -53,6 +53,7 @@ cs418-width = ширина
 cs418-height = висота
 cs418-elements-range = drawElementsTriangles { $count } { $offset } читає елементи { $offset }…{ $last }, а в «elements» їх { $has }
 cs418-point-size-range = drawArraysPoints читає розмір точки { $index }, а в «pointsize» їх { $has }
+cs418-colour-range = читається вершина { $index }, а в «color» вершин { $has }
 cs418-texcoord-range = вершина { $index } малюється з текстурою, а в «texcoord» вершин { $has }
 cs418-too-far = вершина потрапляє в ({ $x }, { $y }) на зображенні, надто далеко від нього для растеризації (далі { $reach } розмірів зображення): увімкніть «frustum», щоб відсікти її
 cs418-too-many-primitives = { $count } примітивів не вміщуються в 32-бітний буфер кадру
@@ -110,5 +111,5 @@ tinyrenderer-differ = точна арифметика дає інший ріве
    *[other] пікселях
 }
 tinyrenderer-differ-pixel = ({ $x }, { $y }), грань { $face }: f64 { $float }, точно { $exact } (інтерпольоване z ціле; f64 трохи менше, і відкидання дробової частини втрачає рівень)
-tinyrenderer-line = рядок { $line }
+file-line = рядок { $line }
 cs418-too-many-samples = fsaa { $level } потребує { $samples } відліків, більше, ніж малює zsim ({ $max }): зменште fsaa або розмір зображення
