@@ -190,6 +190,9 @@ fn malformed_cases_are_refused_with_the_file_and_line() {
         "{}",
         run.stderr
     );
+    let run = zsim(&["buet", "run", dir.to_str().unwrap(), "-o", dir.join("out").to_str().unwrap(), "--lang", "uk"]);
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.contains("config.txt: рядок 1: "), "{}", run.stderr);
 }
 
 /// The 2018 assignment's kind of input: a window 0.7 wide over 500 pixels

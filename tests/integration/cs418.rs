@@ -270,6 +270,11 @@ fn bad_cs418_files_name_the_file_the_line_and_the_problem() {
             "line 4: vertex 3 is read, but \"position\" has 3 vertices",
         ),
         (
+            "colours.txt",
+            "png 4 4 a.png\nposition 2 0 0 1 0 0 1\ndrawArraysTriangles 0 3\n",
+            "line 3: vertex 0 is read, but \"color\" has 0 vertices",
+        ),
+        (
             "elements.txt",
             "png 4 4 a.png\nposition 2 0 0 1 0 0 1\ncolor 3 1 1 1 1 1 1 1 1 1\nelements 0 1 2\ndrawElementsTriangles 6 0\n",
             "line 5: drawElementsTriangles 6 0 reads elements 0…5, but \"elements\" has 3",
@@ -299,6 +304,13 @@ fn bad_cs418_files_name_the_file_the_line_and_the_problem() {
         assert!(out.stdout.is_empty(), "{name}");
         assert_eq!(out.stderr, format!("zsim: {}: {message}\n", path.display()), "{name}");
     }
+    // In the reader's language, the line's word too.
+    let (dir, file) = scene_file("colours-ru.txt", "png 4 4 a.png\nposition 2 0 0 1 0 0 1\ndrawArraysTriangles 0 3\n");
+    let path = dir.join(&file);
+    let out = zsim(&["cs418", "run", path.to_str().unwrap(), "-o", dir.join("out").to_str().unwrap(), "--lang", "ru"]);
+    assert_eq!(out.code, 2);
+    assert_eq!(out.stderr, format!("zsim: {}: строка 3: читается вершина 0, а в «color» вершин 0\n", path.display()));
+    {}
 }
 
 /// `run --compare-rules gpu` on two triangles sharing an edge: the book
