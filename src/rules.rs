@@ -190,10 +190,24 @@ impl Preset {
     }
 
     /// The preset a name chooses, as a scene file names it ([`Preset::key`],
-    /// or the aliases `d3d`, `webgpu` and `gpu`); why not, in `lang`.
-    pub fn parse(lang: Lang, text: &str) -> Result<Preset, String> {
+    /// or the aliases `d3d`, `webgpu` and `gpu`).
+    pub fn parse(text: &str) -> Result<Preset, NotAPreset> {
         serde_json::from_value(serde_json::Value::String(text.to_string()))
-            .map_err(|_| words!(lang, "usage-not-a-preset", text = crate::words::token(lang, text)))
+            .map_err(|_| NotAPreset { text: text.to_string() })
+    }
+}
+
+/// A name that is no rule preset ([`Preset::parse`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NotAPreset {
+    /// The name given.
+    pub text: String,
+}
+
+impl NotAPreset {
+    /// The refusal in `lang`, one line.
+    pub fn message(&self, lang: Lang) -> String {
+        words!(lang, "usage-not-a-preset", text = crate::words::token(lang, &self.text))
     }
 }
 

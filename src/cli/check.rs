@@ -32,7 +32,7 @@ pub struct CheckArgs {
     #[arg(long, value_name = "N|NAME")]
     after: Option<String>,
     /// The arithmetic the answer was computed in: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
-    #[arg(long, default_value = "exact", value_parser = |text: &str| zsim::arith::Arith::parse(super::language_of_the_run(), text))]
+    #[arg(long, default_value = "exact", value_parser = |text: &str| zsim::arith::Arith::parse(text).map_err(|e| e.message(super::language_of_the_run())))]
     arith: zsim::arith::Arith,
     /// A folder of answers as an autograder receives them: frame.txt and/or depth.txt (after the last polygon), after-N.frame.txt and after-N.depth.txt (after polygon N).
     #[arg(long, value_name = "DIR", conflicts_with_all = ["frame", "depth", "after"])]
@@ -47,7 +47,7 @@ pub struct CheckArgs {
     #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=i64::from(zsim::gradescope::MAX_POINTS)))]
     points: u32,
     /// With --format gradescope: the states the submission must answer, each a test per buffer (final, each, or polygon numbers such as 1,3); other files earn nothing.
-    #[arg(long, default_value = "final", value_parser = |text: &str| zsim::check::Expect::parse(super::language_of_the_run(), text))]
+    #[arg(long, default_value = "final", value_parser = |text: &str| zsim::check::Expect::parse(text).map_err(|e| e.message(super::language_of_the_run())))]
     expect: zsim::check::Expect,
 }
 

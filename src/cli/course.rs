@@ -332,6 +332,6 @@ pub fn autograde(lang: Lang, args: &AutogradeArgs, out: &mut dyn Write) -> Resul
         Platform::Prairielearn => zsim::course::platforms::Platform::PrairieLearn { data: args.data.as_deref() },
     };
     let results = zsim::course::platforms::autograde(lang, &platform, &args.variants, &args.submission, &render);
-    let text = results.unwrap_or_else(|why| zsim::course::platforms::unusable(&why, &platform));
+    let text = results.unwrap_or_else(|why| zsim::course::platforms::unusable(&why.message(lang), &platform));
     emit_then(out, &text, Finish::Ok)
 }

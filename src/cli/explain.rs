@@ -21,10 +21,10 @@ pub struct ExplainArgs {
     #[arg(long)]
     inside: bool,
     /// Also show what this arithmetic leaves in the pixel: f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
-    #[arg(long, default_value = "exact", value_parser = |text: &str| zsim::arith::Arith::parse(super::language_of_the_run(), text))]
+    #[arg(long, default_value = "exact", value_parser = |text: &str| zsim::arith::Arith::parse(text).map_err(|e| e.message(super::language_of_the_run())))]
     arith: zsim::arith::Arith,
     /// Also show which segment holds the pixel and which polygons that segment visits.
-    #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
+    #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = |text: &str| zsim::variants::Segments::parse(text).map_err(|e| e.message(super::language_of_the_run())))]
     segments: Option<zsim::variants::Segments>,
 }
 

@@ -43,7 +43,7 @@ pub struct RunArgs {
     #[arg(long, value_enum)]
     inside: Option<InsideTest>,
     /// A z-buffer only as large as one segment: strips:N, tiles:N or rows:1 (the Russian lecture notes).
-    #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = zsim::variants::Segments::parse)]
+    #[arg(long, value_name = "strips:N|tiles:N|rows:1", value_parser = |text: &str| zsim::variants::Segments::parse(text).map_err(|e| e.message(super::language_of_the_run())))]
     segments: Option<zsim::variants::Segments>,
     /// With --format none, --final or --after: draw tile by tile, N×N pixels (default 256 when more than one thread draws or the buffers outgrow 8 MiB; 1 to 7 draw as 8, whose bins cost less than the buffers).
     #[arg(long, value_name = "N")]
@@ -56,10 +56,10 @@ pub struct RunArgs {
     #[arg(long, value_enum, value_name = "API")]
     compare_gpu: Option<GpuApi>,
     /// List the cells where the scene's rules and this preset's (rogers, buet, gl, vulkan or tinyrenderer) draw differently, and why.
-    #[arg(long, value_name = "PRESET", value_parser = |text: &str| zsim::Preset::parse(super::language_of_the_run(), text))]
+    #[arg(long, value_name = "PRESET", value_parser = |text: &str| zsim::Preset::parse(text).map_err(|e| e.message(super::language_of_the_run())))]
     compare_rules: Option<zsim::Preset>,
     /// Arithmetic: exact, f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
-    #[arg(long, default_value = "exact", value_parser = |text: &str| Arith::parse(super::language_of_the_run(), text))]
+    #[arg(long, default_value = "exact", value_parser = |text: &str| Arith::parse(text).map_err(|e| e.message(super::language_of_the_run())))]
     arith: Arith,
 }
 

@@ -92,7 +92,7 @@ pub struct StepArgs {
     #[arg(short, long, value_name = "FILE.html", requires = "html")]
     output: Option<PathBuf>,
     /// Also show what an inexact arithmetic computes on each scanline: f64, f64-incremental, f32-incremental, f32, f32-edge or fixed:K.
-    #[arg(long, default_value = "exact", value_parser = |text: &str| zsim::arith::Arith::parse(super::language_of_the_run(), text))]
+    #[arg(long, default_value = "exact", value_parser = |text: &str| zsim::arith::Arith::parse(text).map_err(|e| e.message(super::language_of_the_run())))]
     arith: zsim::arith::Arith,
 }
 

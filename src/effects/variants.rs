@@ -40,18 +40,51 @@ pub enum Segments {
     Rows,
 }
 
+/// Why a text names no segments ([`Segments::parse`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum NotSegments {
+    /// Not `strips:N`, `tiles:N` or `rows:1`.
+    Form {
+        /// The text given.
+        text: String,
+    },
+    /// A count that is not a whole number.
+    Count {
+        /// The count given.
+        count: String,
+    },
+    /// `rows:N` with N other than 1.
+    Rows,
+}
+
+impl NotSegments {
+    /// The refusal in `lang`, one line.
+    pub fn message(&self, lang: crate::words::Lang) -> String {
+        use crate::words::{printable, token};
+        match self {
+            NotSegments::Form { text } => {
+                words!(lang, "segments-form", text = printable(&token(lang, text)).into_owned())
+            }
+            NotSegments::Count { count } => {
+                words!(lang, "segments-count", count = printable(&token(lang, count)).into_owned())
+            }
+            NotSegments::Rows => words!(lang, "segments-rows"),
+        }
+    }
+}
+
 impl Segments {
     /// Reads `strips:N`, `tiles:N` or `rows:1`.
-    pub fn parse(text: &str) -> Result<Segments, String> {
-        let (kind, count) =
-            text.split_once(':').ok_or_else(|| format!("\"{text}\" is not strips:N, tiles:N or rows:1"))?;
-        let count: u32 = count.parse().map_err(|_| format!("\"{count}\" is not a whole number"))?;
+    pub fn parse(text: &str) -> Result<Segments, NotSegments> {
+        let not_segments = || NotSegments::Form { text: text.to_string() };
+        let (kind, count) = text.split_once(':').ok_or_else(not_segments)?;
+        let count: u32 = count.parse().map_err(|_| NotSegments::Count { count: count.to_string() })?;
         match (kind, count) {
             ("strips", 1..) => Ok(Segments::Strips(count)),
             ("tiles", 1..) => Ok(Segments::Tiles(count)),
             ("rows", 1) => Ok(Segments::Rows),
-            ("rows", _) => Err("rows takes only 1 (one scanline at a time)".into()),
-            _ => Err(format!("\"{text}\" is not strips:N, tiles:N or rows:1 (N ≥ 1)")),
+            ("rows", _) => Err(NotSegments::Rows),
+            _ => Err(not_segments()),
         }
     }
 

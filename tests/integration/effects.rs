@@ -235,6 +235,16 @@ fn explain_shows_each_effect_at_a_pixel() {
         "{}",
         arc.stdout
     );
+    // A wrong --segments is refused in the reader's language.
+    for (segments, lang, said) in [
+        ("rows:2", "ru", "rows принимает только 1 (по одной строке развёртки)"),
+        ("strips:x", "uk", "«x» — не ціле число"),
+        ("ribbons:2", "zh", "“ribbons:2” 不是 strips:N、tiles:N 或 rows:1（N ≥ 1）"),
+    ] {
+        let refused = zsim(&["run", "examples/concave.json", "--segments", segments, "--lang", lang]);
+        assert_eq!(refused.code, 2);
+        assert!(refused.stderr.contains(&format!("{said} (")), "{}", refused.stderr);
+    }
     let samples = zsim(&["explain", "examples/antialias.json", "--pixel", "2,4"]);
     assert!(samples.stdout.ends_with("mean over the samples: framebuffer 5/2, z-buffer 7\n"), "{}", samples.stdout);
     snapshot!("explain_antialias_2_4", samples.stdout);

@@ -252,7 +252,7 @@ fn compare_rules_help_names_every_preset() {
     let text = &text[..text.find("\n\n").unwrap_or(text.len())];
     for preset in zsim::Preset::ALL {
         assert!(text.contains(preset.key()), "--compare-rules' help names {}: {text}", preset.key());
-        assert_eq!(zsim::Preset::parse(zsim::Lang::En, preset.key()), Ok(preset));
+        assert_eq!(zsim::Preset::parse(preset.key()), Ok(preset));
     }
 }
 

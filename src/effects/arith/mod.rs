@@ -72,7 +72,7 @@ impl Arith {
     ];
 
     /// Reads `exact`, `f64`, `f64-incremental`, `f32-incremental`, `f32`, `f32-edge` or `fixed:K` (0 ≤ K ≤ 24).
-    pub fn parse(lang: Lang, text: &str) -> Result<Arith, String> {
+    pub fn parse(text: &str) -> Result<Arith, NotAnArith> {
         match text {
             "exact" => Ok(Arith::Exact),
             "f64" => Ok(Arith::F64),
@@ -82,13 +82,24 @@ impl Arith {
             "f32-edge" => Ok(Arith::F32Edge),
             _ => match text.strip_prefix("fixed:").map(str::parse::<u32>) {
                 Some(Ok(bits @ 0..=24)) => Ok(Arith::Fixed(bits)),
-                _ => Err(words!(
-                    lang,
-                    "usage-arith",
-                    text = crate::words::printable(&crate::words::token(lang, text)).into_owned()
-                )),
+                _ => Err(NotAnArith { text: text.to_string() }),
             },
         }
+    }
+}
+
+/// A name that is no arithmetic mode ([`Arith::parse`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NotAnArith {
+    /// The name given.
+    pub text: String,
+}
+
+impl NotAnArith {
+    /// The refusal in `lang`, one line.
+    pub fn message(&self, lang: Lang) -> String {
+        let text = crate::words::printable(&crate::words::token(lang, &self.text)).into_owned();
+        words!(lang, "usage-arith", text = text)
     }
 }
 
@@ -294,11 +305,11 @@ mod tests {
     #[test]
     fn modes_parse_and_print_alike() {
         for mode in Arith::ALL {
-            assert_eq!(Arith::parse(Lang::En, &mode.to_string()), Ok(mode));
+            assert_eq!(Arith::parse(&mode.to_string()), Ok(mode));
         }
-        assert_eq!(Arith::parse(Lang::En, "fixed:4"), Ok(Arith::Fixed(4)));
-        assert!(Arith::parse(Lang::En, "fixed:25").is_err());
-        assert!(Arith::parse(Lang::En, "f16").is_err());
+        assert_eq!(Arith::parse("fixed:4"), Ok(Arith::Fixed(4)));
+        assert_eq!(Arith::parse("fixed:25"), Err(NotAnArith { text: "fixed:25".into() }));
+        assert!(Arith::parse("f16").unwrap_err().message(Lang::En).starts_with("\"f16\" is not an arithmetic mode"));
     }
 
     /// Cells (x, y) where two runs' framebuffers differ.

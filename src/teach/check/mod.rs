@@ -197,10 +197,24 @@ pub enum Expect {
     After(Vec<usize>),
 }
 
+/// A text that names no states to check ([`Expect::parse`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NotStates {
+    /// The text given.
+    pub text: String,
+}
+
+impl NotStates {
+    /// The refusal in `lang`, one line.
+    pub fn message(&self, lang: Lang) -> String {
+        words!(lang, "expect-not-states", text = printable(&self.text).into_owned())
+    }
+}
+
 impl Expect {
     /// Reads `final`, `each`, or polygon numbers from 1 separated by commas
-    /// (`1,3`); `Err` says what is wrong, in `lang`.
-    pub fn parse(lang: Lang, text: &str) -> Result<Expect, String> {
+    /// (`1,3`).
+    pub fn parse(text: &str) -> Result<Expect, NotStates> {
         match text {
             "final" => Ok(Expect::Final),
             "each" => Ok(Expect::Each),
@@ -209,7 +223,7 @@ impl Expect {
                 .map(|n| n.trim().parse::<usize>().ok().filter(|n| *n >= 1))
                 .collect::<Option<Vec<usize>>>()
                 .map(Expect::After)
-                .ok_or_else(|| words!(lang, "expect-not-states", text = printable(text).into_owned())),
+                .ok_or_else(|| NotStates { text: text.to_string() }),
         }
     }
 

@@ -40,6 +40,8 @@ pub enum Unmatched {
         /// The code.
         code: String,
     },
+    /// The platform's file that names the submission was not given.
+    NoFile,
 }
 
 impl Refusal for Unmatched {
@@ -54,6 +56,7 @@ impl Refusal for Unmatched {
             Unmatched::UnknownCode { code } => {
                 words!(lang, "platform-unknown-code", code = printable(code).into_owned())
             }
+            Unmatched::NoFile => words!(lang, "platform-needs-file"),
         }
     }
 }
@@ -79,25 +82,26 @@ type Pick = fn(&Manifest, &str) -> Result<usize, Unmatched>;
 
 /// One submission graded against its student's variant: the manifest at
 /// `variants`, the student found by the platform's file, their files in
-/// `submission`; the platform's `results.json`, or why it could not be made.
+/// `submission`; the platform's `results.json` (its words in `lang`), or why
+/// it could not be made.
 pub fn autograde(
     lang: Lang,
     platform: &Platform<'_>,
     variants: &std::path::Path,
     submission: &std::path::Path,
     render: &dyn Fn(&crate::teach::check::CheckReport) -> String,
-) -> Result<String, String> {
-    let loaded = super::manifest::load(variants).map_err(|e| e.message(lang))?;
+) -> Result<String, crate::error::Error> {
+    let loaded = super::manifest::load(variants)?;
     let manifest = &loaded.manifest;
     let (file, pick): (_, Pick) = match platform {
         Platform::Gradescope { metadata, .. } => (metadata, gradescope_student),
         Platform::PrairieLearn { data } => (data, prairielearn_student),
     };
-    let file = file.ok_or_else(|| words!(lang, "platform-needs-file"))?;
-    let text = crate::door::read_text(file).map_err(|e| e.message(lang))?;
-    let k = pick(manifest, &text).map_err(|e| e.message(lang))?;
+    let file = file.ok_or(Unmatched::NoFile)?;
+    let text = crate::door::read_text(file)?;
+    let k = pick(manifest, &text)?;
     let scene = &loaded.scenes[k];
-    let (expected, unused) = submitted(submission, scene, &manifest.buffers()).map_err(|e| e.message(lang))?;
+    let (expected, unused) = submitted(submission, scene, &manifest.buffers())?;
     match platform {
         Platform::Gradescope { grading, .. } => {
             let shown = std::path::Path::new("scene.json");
@@ -110,11 +114,8 @@ pub fn autograde(
                 *grading,
                 render,
             )
-            .map_err(|e| e.message(lang))
         }
-        Platform::PrairieLearn { .. } => {
-            prairielearn_results(lang, scene, &expected, render).map_err(|e| e.message(lang))
-        }
+        Platform::PrairieLearn { .. } => prairielearn_results(lang, scene, &expected, render),
     }
 }
 
