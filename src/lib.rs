@@ -167,3 +167,12 @@ pub use teach::{check, course, exercise, grade, page_limits, playground, step};
 pub use words::{
     Arg, Lang, localize_decimal, own_name, polygon_label, printable, shown_name, shown_path, text as message, token,
 };
+
+/// A written shape's snapshot in `snapshots/`: `value` as the pretty JSON
+/// a page, a platform or a script reads, so that a change to its type shows.
+#[cfg(test)]
+fn shape_snapshot(name: &str, value: &impl serde::Serialize) {
+    insta::with_settings!({snapshot_path => "../snapshots", prepend_module_to_snapshot => false, omit_expression => true}, {
+        insta::assert_snapshot!(name, serde_json::to_string_pretty(value).expect("a shape serializes"));
+    });
+}

@@ -53,18 +53,9 @@ pub fn run(lang: zsim::Lang, args: &AccuracyArgs, out: &mut dyn Write) -> Result
     let modes = accuracy::modes(&scenes, &clock)?;
     let bits = accuracy::bits_sweep(&settings, &clock)?;
     let exact = modes[0].clone();
-    let ns = |row: &accuracy::ModeRow| row.time.as_nanos() as f64 / exact.pixels.max(1) as f64;
+    let ns = |row: &accuracy::ModeRow| row.ns_per_pixel(&exact);
     if args.format == Format::Json {
-        let json = serde_json::json!({
-            "modes": modes.iter().map(|r| serde_json::json!({
-                "mode": r.mode.to_string(), "ns_per_pixel": ns(r), "pixels": r.pixels,
-                "frame_mismatches": r.frame_mismatches, "depth_mismatches": r.depth_mismatches,
-                "worst_depth_error": r.worst_depth_error,
-            })).collect::<Vec<_>>(),
-            "depth_bits": bits.iter().map(|b| serde_json::json!({
-                "bits": b.bits, "z_fighting_cells": b.z_fighting, "memory_bytes": b.memory, "ms": b.time.as_secs_f64() * 1000.0,
-            })).collect::<Vec<_>>(),
-        });
+        let json = serde_json::to_string(&accuracy::AccuracyJson::of(&modes, &bits)).expect("plain data");
         emit(out, &format!("{json}\n"))?;
         return Ok(Finish::Ok);
     }

@@ -38,7 +38,7 @@ pub fn run(
     if let Some(segments) = variant.segments {
         let (buffers, stats) = variants::run_segmented(scene, segments);
         if variant.json {
-            emit(out, &format!("{}\n", variant_report::buffers_json(scene, &last_name, &buffers)))?;
+            emit(out, &json_line(&variant_report::buffers_json(scene, &last_name, &buffers)))?;
             return Ok(Finish::Ok);
         }
         for line in variant_report::segmented_lines(lang, scene, segments, &stats) {
@@ -49,7 +49,7 @@ pub fn run(
     } else if let Some(inside) = variant.pixel_order {
         let (buffers, differences) = variants::run_pixel_order(scene, inside);
         if variant.json {
-            emit(out, &format!("{}\n", variant_report::buffers_json(scene, &last_name, &buffers)))?;
+            emit(out, &json_line(&variant_report::buffers_json(scene, &last_name, &buffers)))?;
             return Ok(Finish::Ok);
         }
         text.push_str(&format!("{}\n", variant_report::pixel_order_heading(lang, inside)));
@@ -62,7 +62,7 @@ pub fn run(
         let settings = scene.effects.antialias.expect("run only sends antialiased scenes here");
         let pictures = antialias::run(scene, settings)?;
         if variant.json {
-            emit(out, &format!("{}\n", variant_report::antialias_json(scene, &pictures, variant.final_only)))?;
+            emit(out, &json_line(&variant_report::antialias_json(scene, &pictures, variant.final_only)))?;
             return Ok(Finish::Ok);
         }
         text.push_str(&variant_report::antialias_text(lang, scene, settings, &pictures, (&style, variant.final_only)));
@@ -77,4 +77,9 @@ pub fn local_errors_text(lang: zsim::Lang, scene: &Scene, drawn: &Buffers) -> St
         Err(all_match) => format!("\n{all_match}\n"),
         Ok(listed) => format!("\n{}\n{}\n", listed.line.clone(), super::table(listed)),
     }
+}
+
+/// A run's JSON on one line.
+fn json_line(json: &impl serde::Serialize) -> String {
+    format!("{}\n", serde_json::to_string(json).expect("serializing plain data cannot fail"))
 }

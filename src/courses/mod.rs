@@ -15,7 +15,7 @@ use crate::error::{Error, Refusal};
 use crate::words::Lang;
 
 /// A problem in a course's file, with the line it is on (1-based): `P` is
-/// the course's own kind of problem, a fact worded where it is shown.
+/// the course's own kind of problem, a [`Refusal`] worded where it is shown.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CaseError<P> {
     /// The line, when one is to blame.
@@ -24,13 +24,7 @@ pub struct CaseError<P> {
     pub problem: P,
 }
 
-/// A course's problems in words.
-pub trait CourseProblem: std::fmt::Debug + Send + Sync + 'static {
-    /// The problem in `lang`, one line.
-    fn message(&self, lang: Lang) -> String;
-}
-
-impl<P: CourseProblem> CaseError<P> {
+impl<P: Refusal> CaseError<P> {
     /// The message in `lang`, one line, with the line to blame.
     pub fn message(&self, lang: Lang) -> String {
         let problem = self.problem.message(lang);
@@ -59,7 +53,7 @@ pub struct CourseFileRefused<P> {
     pub problem: P,
 }
 
-impl<P: CourseProblem> Refusal for CourseFileRefused<P> {
+impl<P: Refusal> Refusal for CourseFileRefused<P> {
     fn message(&self, lang: Lang) -> String {
         let (path, problem) = (crate::words::shown_path(&self.path), self.problem.message(lang));
         match self.line {

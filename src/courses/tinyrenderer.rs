@@ -60,7 +60,7 @@ pub enum ObjProblem {
     },
 }
 
-impl super::CourseProblem for ObjProblem {
+impl crate::error::Refusal for ObjProblem {
     fn message(&self, lang: Lang) -> String {
         use crate::words::token;
         match self {

@@ -52,6 +52,71 @@ pub struct ModeRow {
     pub worst_depth_error: u64,
 }
 
+impl ModeRow {
+    /// Nanoseconds a pixel: this mode's time over the pixels `exact` tested.
+    pub fn ns_per_pixel(&self, exact: &ModeRow) -> f64 {
+        self.time.as_nanos() as f64 / exact.pixels.max(1) as f64
+    }
+}
+
+/// `accuracy --format json`: both tables, the modes' times per pixel of
+/// exact's (the first row). The fields in the order of their names, as the
+/// output has always been written.
+#[derive(Debug, serde::Serialize)]
+pub struct AccuracyJson {
+    depth_bits: Vec<BitsJson>,
+    modes: Vec<ModeJson>,
+}
+
+/// A row of [`AccuracyJson`]'s modes.
+#[derive(Debug, serde::Serialize)]
+struct ModeJson {
+    depth_mismatches: u64,
+    frame_mismatches: u64,
+    mode: String,
+    ns_per_pixel: f64,
+    pixels: u64,
+    worst_depth_error: u64,
+}
+
+/// A row of [`AccuracyJson`]'s depth bits.
+#[derive(Debug, serde::Serialize)]
+struct BitsJson {
+    bits: u32,
+    memory_bytes: u64,
+    ms: f64,
+    z_fighting_cells: u64,
+}
+
+impl AccuracyJson {
+    /// The tables `modes` (exact first) and `bits`.
+    pub fn of(modes: &[ModeRow], bits: &[BitsRow]) -> AccuracyJson {
+        let exact = modes.first();
+        AccuracyJson {
+            depth_bits: bits
+                .iter()
+                .map(|b| BitsJson {
+                    bits: b.bits,
+                    memory_bytes: b.memory,
+                    ms: b.time.as_secs_f64() * 1000.0,
+                    z_fighting_cells: b.z_fighting,
+                })
+                .collect(),
+            modes: modes
+                .iter()
+                .map(|r| ModeJson {
+                    depth_mismatches: r.depth_mismatches,
+                    frame_mismatches: r.frame_mismatches,
+                    mode: r.mode.to_string(),
+                    ns_per_pixel: exact.map_or(0.0, |exact| r.ns_per_pixel(exact)),
+                    pixels: r.pixels,
+                    worst_depth_error: r.worst_depth_error,
+                })
+                .collect(),
+        }
+    }
+}
+
 /// One row of the depth-bits sweep.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BitsRow {
@@ -256,4 +321,27 @@ pub fn bits_sweep(settings: &AccuracyRequest, clock: Clock<'_>) -> Result<Vec<Bi
         rows.push(BitsRow { bits, z_fighting, memory, time });
     }
     Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `accuracy --format json`'s shape, times per pixel taken over exact's pixels.
+    #[test]
+    fn the_json_has_its_shape() {
+        let row = |mode, nanos, pixels| ModeRow {
+            mode,
+            time: Duration::from_nanos(nanos),
+            pixels,
+            frame_mismatches: 1,
+            depth_mismatches: 2,
+            worst_depth_error: 3,
+        };
+        let modes = [row(Arith::Exact, 400, 100), row(Arith::F32, 200, 90)];
+        let bits = [BitsRow { bits: 8, z_fighting: 5, memory: 4096, time: Duration::from_micros(1500) }];
+        let json = AccuracyJson::of(&modes, &bits);
+        assert_eq!((json.modes[0].ns_per_pixel, json.modes[1].ns_per_pixel), (4.0, 2.0));
+        crate::shape_snapshot("accuracy_json", &json);
+    }
 }

@@ -183,6 +183,8 @@ fn json_streams_and_stops_quietly_on_a_closed_pipe() {
 #[test]
 fn json_holds_exact_values_as_integers_or_fraction_strings() {
     let run = zsim(&["run", "examples/antialias.json", "--format", "json", "--final"]);
+    // The shape of `run --format json`, averaged cells as exact values.
+    snapshot!("run_json_antialias_final", run.stdout);
     let json: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
     let frame = &json["steps"][0]["frame"];
     // Row y = 4 (second from the top): 1 1 5/2 3/2 1 1 1 1.

@@ -19,7 +19,7 @@ use crate::numbers::{Exact, Q, parse_number, to_f64};
 use crate::raster::depth::Stored;
 use crate::simulate::buffer::Buffers;
 
-pub use super::CourseProblem;
+use crate::error::Refusal;
 
 /// A problem in a BUET case's file, with its line.
 pub type BuetError = super::CaseError<BuetProblem>;
@@ -149,7 +149,7 @@ impl BuetValues {
     }
 }
 
-impl CourseProblem for BuetProblem {
+impl Refusal for BuetProblem {
     fn message(&self, lang: Lang) -> String {
         use crate::words::token;
         match self {

@@ -375,15 +375,14 @@ fn integers<const N: usize>(line: usize, keyword: &str, args: &[&str]) -> Result
 }
 
 fn sized(line: usize, keyword: &str, args: &[&str]) -> Result<(usize, Vec<RastNumber>), Cs418Error> {
-    let keyword_problem = |problem: fn(String) -> Cs418Problem| error(line, problem(keyword.to_string()));
     let Some((size, rest)) = args.split_first() else {
-        return Err(keyword_problem(|keyword| Cs418Problem::Sized { keyword }));
+        return Err(error(line, Cs418Problem::Sized { keyword: keyword.to_string() }));
     };
     let size: usize = size
         .parse()
         .map_err(|_| error(line, Cs418Problem::SizeWord { keyword: keyword.to_string(), size: (*size).to_string() }))?;
     if size == 0 {
-        return Err(keyword_problem(|keyword| Cs418Problem::SizeZero { keyword }));
+        return Err(error(line, Cs418Problem::SizeZero { keyword: keyword.to_string() }));
     }
     let numbers = rest.iter().map(|w| number(line, keyword, w)).collect::<Result<Vec<_>, _>>()?;
     if numbers.len() % size != 0 {

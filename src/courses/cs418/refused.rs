@@ -6,7 +6,7 @@ use crate::error::Error;
 use crate::numbers::NumberError;
 use crate::words::{Lang, token};
 
-use super::super::CourseProblem;
+use crate::error::Refusal;
 
 /// What is wrong in a CS 418 case (a line of its file, or what a command
 /// asks of the vertices given before it), or in a reference image.
@@ -253,7 +253,7 @@ fn list(lang: Lang, values: &[usize]) -> String {
     }
 }
 
-impl CourseProblem for Cs418Problem {
+impl Refusal for Cs418Problem {
     fn message(&self, lang: Lang) -> String {
         let t = |text: &str| token(lang, text);
         match self {

@@ -17,6 +17,16 @@ impl Serialize for Stored {
     }
 }
 
+/// An exact value in a matrix of JSON output, as [`exact_json`] writes it.
+#[derive(Debug, Clone)]
+pub struct ExactCell(pub Exact);
+
+impl Serialize for ExactCell {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        exact_json(self.0.clone()).serialize(serializer)
+    }
+}
+
 /// An exact value in JSON output, never a float: an integer when it is
 /// whole (`4`), otherwise the reduced fraction as a string (`"5/2"`), so that
 /// every cell of a matrix has one of two types whatever the scene.
@@ -259,10 +269,12 @@ fn digits(value: u32) -> usize {
     value.checked_ilog10().map_or(1, |d| d as usize + 1)
 }
 
-/// The JSON printed by `zsim run --format json`. Scripts and graders rely on
+/// The JSON printed by `zsim run --format json` (and by its variants: the
+/// segmented and pixel-order loops, and antialiasing with exact averages as
+/// its framebuffer's cells, `F` = [`ExactCell`]). Scripts and graders rely on
 /// this shape: keep it stable.
 #[derive(Debug, Serialize)]
-pub struct RunJson {
+pub struct RunJson<F = u32> {
     /// Raster width.
     pub width: u32,
     /// Raster height.
@@ -270,7 +282,7 @@ pub struct RunJson {
     /// Names of the effects simulated, `[]` for the plain algorithm.
     pub effects: Vec<&'static str>,
     /// One step per polygon, in scene order.
-    pub steps: Vec<StepJson>,
+    pub steps: Vec<StepJson<F>>,
 }
 
 /// Writes one [`StepJson`] for `buffers` after polygon `polygon`, exactly
@@ -332,11 +344,11 @@ fn itoa_u32(mut value: u32, buffer: &mut [u8; 10]) -> &str {
 
 /// The buffers after one polygon.
 #[derive(Debug, Serialize)]
-pub struct StepJson {
+pub struct StepJson<F = u32> {
     /// The polygon's name.
     pub polygon: String,
     /// The framebuffer, top row first.
-    pub frame: Vec<Vec<u32>>,
+    pub frame: Vec<Vec<F>>,
     /// The z-buffer, top row first: integer levels, or for an exact z-buffer
     /// each exact depth as [`exact_json`] writes it.
     pub depth: Vec<Vec<Stored>>,

@@ -7,7 +7,8 @@
 use crate::effects::antialias::Averaged as Picture;
 use crate::effects::variants::{self, ArcDifference, Inside, SegmentStats, Segments};
 use crate::observe::explain::polygon_name;
-use crate::observe::render::report::{self, Listed, MatrixStyle, polygon_heading};
+use crate::observe::render::report::{self, ExactCell, Listed, MatrixStyle, RunJson, StepJson, polygon_heading};
+use crate::raster::depth::Stored;
 use crate::scene::Antialias as AntialiasSettings;
 use crate::scene::Scene;
 use crate::simulate::buffer::Buffers;
@@ -16,26 +17,31 @@ use crate::simulate::setup::fate;
 use crate::words::Lang;
 
 /// A run's JSON with one step, the buffers after the last polygon `name`.
-pub fn buffers_json(scene: &Scene, name: &str, buffers: &Buffers) -> serde_json::Value {
-    serde_json::json!({
-        "width": scene.width, "height": scene.height, "effects": scene.effects.names(),
-        "steps": [{"polygon": name, "frame": buffers.frame_rows(), "depth": buffers.depth_rows()}],
-    })
+pub fn buffers_json(scene: &Scene, name: &str, buffers: &Buffers) -> RunJson {
+    let step = StepJson { polygon: name.to_string(), frame: buffers.frame_rows(), depth: buffers.depth_rows() };
+    RunJson { width: scene.width, height: scene.height, effects: scene.effects.names(), steps: vec![step] }
 }
 
 /// An antialiased run's JSON: each polygon's averaged buffers as exact
 /// values (the last only with `final_only`).
-pub fn antialias_json(scene: &Scene, pictures: &[Picture], final_only: bool) -> serde_json::Value {
-    fn exact<T: Into<crate::numbers::Exact> + Clone>(rows: &[Vec<T>]) -> serde_json::Value {
-        rows.iter().map(|row| row.iter().map(|v| report::exact_json(v.clone())).collect::<Vec<_>>()).collect()
+pub fn antialias_json(scene: &Scene, pictures: &[Picture], final_only: bool) -> RunJson<ExactCell> {
+    fn exact<T: Into<crate::numbers::Exact> + Clone, C>(
+        rows: &[Vec<T>],
+        cell: impl Fn(crate::numbers::Exact) -> C,
+    ) -> Vec<Vec<C>> {
+        rows.iter().map(|row| row.iter().map(|v| cell(v.clone().into())).collect()).collect()
     }
-    let steps: Vec<serde_json::Value> = pictures
+    let steps = pictures
         .iter()
         .zip(&scene.polygons)
         .skip(if final_only { pictures.len().saturating_sub(1) } else { 0 })
-        .map(|(p, polygon)| serde_json::json!({"polygon": polygon.name, "frame": exact(&p.frame), "depth": exact(&p.depth)}))
+        .map(|(p, polygon)| StepJson {
+            polygon: polygon.name.clone(),
+            frame: exact(&p.frame, ExactCell),
+            depth: exact(&p.depth, Stored::Exact),
+        })
         .collect();
-    serde_json::json!({"width": scene.width, "height": scene.height, "effects": scene.effects.names(), "steps": steps})
+    RunJson { width: scene.width, height: scene.height, effects: scene.effects.names(), steps }
 }
 
 /// Both buffers after all polygons, headed.

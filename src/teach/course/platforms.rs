@@ -127,10 +127,7 @@ pub fn unusable(why: &str, platform: &Platform<'_>) -> String {
         Platform::Gradescope { .. } => {
             crate::teach::grade::gradescope::nothing_to_grade(why, crate::teach::grade::gradescope::Visibility::Visible)
         }
-        Platform::PrairieLearn { .. } => {
-            let results = serde_json::json!({"gradable": false, "format_errors": [printable(why)]});
-            serde_json::to_string_pretty(&results).expect("plain data") + "\n"
-        }
+        Platform::PrairieLearn { .. } => PrairieLearnResults::not_gradable(vec![printable(why).into_owned()]),
     }
 }
 
@@ -241,21 +238,21 @@ pub fn prairielearn_question(
     lang: Lang,
 ) -> Vec<(String, Vec<u8>)> {
     let title = words!(lang, "platform-question-title");
-    let info = serde_json::json!({
-        "uuid": uuid_of(manifest_json),
-        "title": title,
-        "topic": "z-buffer",
-        "tags": ["zsim"],
-        "type": "v3",
-        "singleVariant": false,
-        "gradingMethod": "External",
-        "externalGradingOptions": {
-            "enabled": true,
-            "image": image,
-            "entrypoint": "/grade/tests/run.sh",
-            "timeout": 30
-        }
-    });
+    let info = QuestionInfo {
+        external_grading_options: ExternalGrading {
+            enabled: true,
+            entrypoint: "/grade/tests/run.sh",
+            image: image.to_string(),
+            timeout: 30,
+        },
+        grading_method: "External",
+        single_variant: false,
+        tags: ["zsim"],
+        title,
+        topic: "z-buffer",
+        kind: "v3",
+        uuid: uuid_of(manifest_json),
+    };
     let files: Vec<String> =
         manifest.buffers().iter().map(|b| format!("{}.txt", crate::teach::grade::file_kind(*b))).collect();
     let server = "# Each variant of this question is one of the class's scenes (tests/variants.json),\n\
@@ -394,20 +391,73 @@ pub fn prairielearn_results(
                 continue;
             }
         };
-        tests.push(serde_json::json!({
-            "name": name,
-            "points": crate::numbers::to_f64(points),
-            "max_points": 1,
-            "output": output,
-        }));
+        tests.push(PrairieLearnTest { max_points: 1, name, output, points: crate::numbers::to_f64(points) });
     }
-    let results = if format_errors.is_empty() {
-        let score = crate::teach::grade::score(&earned);
-        serde_json::json!({"gradable": true, "score": crate::numbers::to_f64(score), "tests": tests})
-    } else {
-        serde_json::json!({"gradable": false, "format_errors": format_errors})
-    };
-    Ok(serde_json::to_string_pretty(&results).expect("plain data") + "\n")
+    if !format_errors.is_empty() {
+        return Ok(PrairieLearnResults::not_gradable(format_errors));
+    }
+    let score = Some(crate::numbers::to_f64(crate::teach::grade::score(&earned)));
+    Ok(PrairieLearnResults { format_errors: None, gradable: true, score, tests: Some(tests) }.written())
+}
+
+/// PrairieLearn's `results.json` from an external grader, as zsim writes
+/// it: gradable with a score and its tests, or not gradable with the
+/// format's errors. (The fields of these files are written in the order of
+/// their names, as they have always been.)
+#[derive(Debug, serde::Serialize)]
+struct PrairieLearnResults {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    format_errors: Option<Vec<String>>,
+    gradable: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    score: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tests: Option<Vec<PrairieLearnTest>>,
+}
+
+/// One test of [`PrairieLearnResults`].
+#[derive(Debug, serde::Serialize)]
+struct PrairieLearnTest {
+    max_points: u32,
+    name: String,
+    output: String,
+    points: f64,
+}
+
+impl PrairieLearnResults {
+    /// A submission PrairieLearn counts no attempt for, and why.
+    fn not_gradable(format_errors: Vec<String>) -> String {
+        PrairieLearnResults { format_errors: Some(format_errors), gradable: false, score: None, tests: None }.written()
+    }
+
+    /// The file's text, pretty, ending in a newline.
+    fn written(&self) -> String {
+        serde_json::to_string_pretty(self).expect("plain data") + "\n"
+    }
+}
+
+/// A PrairieLearn question's `info.json`.
+#[derive(Debug, serde::Serialize)]
+#[serde(rename_all = "camelCase")]
+struct QuestionInfo {
+    external_grading_options: ExternalGrading,
+    grading_method: &'static str,
+    single_variant: bool,
+    tags: [&'static str; 1],
+    title: String,
+    topic: &'static str,
+    #[serde(rename = "type")]
+    kind: &'static str,
+    uuid: String,
+}
+
+/// [`QuestionInfo`]'s external grader.
+#[derive(Debug, serde::Serialize)]
+struct ExternalGrading {
+    enabled: bool,
+    entrypoint: &'static str,
+    image: String,
+    timeout: u32,
 }
 
 /// The key of one buffer of a scene, top row first.
@@ -470,5 +520,24 @@ mod tests {
             prairielearn_student(&m, r#"{"params": {"variant": "ZZZ-ZZZ"}}"#),
             Err(Unmatched::UnknownCode { code: "ZZZ-ZZZ".into() })
         );
+    }
+
+    /// PrairieLearn's files, each its type's shape: a question's
+    /// `info.json`, a graded `results.json` and one not gradable.
+    #[test]
+    fn prairielearns_files_have_their_shapes() {
+        let m = manifest();
+        let files = prairielearn_question(&m, "{}", "zsim/grader", Lang::En);
+        let info = &files.iter().find(|(name, _)| name == "info.json").expect("info.json").1;
+        let info: serde_json::Value = serde_json::from_slice(info).unwrap();
+        crate::shape_snapshot("prairielearn_info", &info);
+        let test =
+            PrairieLearnTest { max_points: 1, name: "framebuffer".into(), output: "right\n".into(), points: 1.0 };
+        let graded =
+            PrairieLearnResults { format_errors: None, gradable: true, score: Some(1.0), tests: Some(vec![test]) };
+        crate::shape_snapshot("prairielearn_results", &graded);
+        let refused: serde_json::Value =
+            serde_json::from_str(&PrairieLearnResults::not_gradable(vec!["why".into()])).unwrap();
+        crate::shape_snapshot("prairielearn_not_gradable", &refused);
     }
 }

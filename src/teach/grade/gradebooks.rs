@@ -12,7 +12,6 @@
 use std::path::Path;
 
 use crate::numbers::{Q, decimal};
-use crate::observe::explain::Buffer;
 use crate::teach::grade::{CommonMistake, Grade};
 use crate::words::Lang;
 
@@ -163,52 +162,137 @@ pub fn json(
     rows: &[&Grade],
     (mistakes, reasons, skipped): (&[CommonMistake], &[String], &[crate::teach::grade::class::Skipped]),
 ) -> String {
-    let skipped: Vec<serde_json::Value> = skipped
+    let not_graded = skipped
         .iter()
         .map(|s| {
-            let (student, buffer) = s.meant.as_ref().map(|(student, buffer)| (student, buffer.name(lang))).unzip();
-            serde_json::json!({"file": s.name, "student": student, "buffer": buffer, "reason": s.text(lang)})
+            let (student, buffer) =
+                s.meant.as_ref().map(|(student, buffer)| (student.as_str(), buffer.name(lang))).unzip();
+            NotGraded { buffer, file: &s.name, reason: s.text(lang), student }
         })
         .collect();
-    let students: Vec<serde_json::Value> = rows
+    let students = rows
         .iter()
-        .map(|g| {
-            serde_json::json!({
-                "student": g.student,
-                "frame_wrong": g.frame_wrong,
-                "depth_wrong": g.depth_wrong,
-                "unanswered": g.unanswered,
-                // A number, written exactly as the table shows it (one decimal).
-                "score": g.percent().parse::<serde_json::Number>().expect("a decimal is a JSON number"),
-                "status": g.status.to_string(),
-                "misconception": g.misconception.map(|d| d.misconception.name()),
-                "explained": g.misconception.map(|d| d.explained),
-            })
+        .map(|g| StudentRow {
+            depth_wrong: g.depth_wrong,
+            explained: g.misconception.map(|d| d.explained),
+            frame_wrong: g.frame_wrong,
+            misconception: g.misconception.map(|d| d.misconception.name()),
+            // A number, written exactly as the table shows it (one decimal).
+            score: g.percent().parse::<serde_json::Number>().expect("a decimal is a JSON number"),
+            status: g.status.to_string(),
+            student: &g.student,
+            unanswered: g.unanswered,
         })
         .collect();
-    let mistakes: Vec<serde_json::Value> = mistakes
+    let common_mistakes = mistakes
         .iter()
         .zip(reasons)
-        .map(|(m, why)| {
-            let buffer: Buffer = m.buffer;
-            serde_json::json!({
-                "buffer": buffer.name(lang),
-                "x": m.x,
-                "y": m.y,
-                "right": m.right,
-                "students": m.students,
-                "answers": m.answers.iter().map(|(value, count)| serde_json::json!({"value": value, "count": count})).collect::<Vec<_>>(),
-                "why": why,
-            })
+        .map(|(m, why)| MistakeRow {
+            answers: m.answers.iter().map(|&(value, count)| AnswerCount { count, value }).collect(),
+            buffer: m.buffer.name(lang),
+            right: m.right,
+            students: &m.students,
+            why,
+            x: m.x,
+            y: m.y,
         })
         .collect();
-    let object = serde_json::json!({
-        "scene": scene.to_string_lossy(),
-        "after": after,
-        "students": students,
-        "common_mistakes": mistakes,
-        // The folder's files that were not graded, and why (a misnamed answer names its student).
-        "not_graded": skipped,
-    });
+    let object =
+        ClassJson { after, common_mistakes, not_graded, scene: scene.to_string_lossy().into_owned(), students };
     format!("{}\n", serde_json::to_string_pretty(&object).expect("serializing plain data cannot fail"))
+}
+
+/// `grade --format json`, as zsim writes it (the fields of each object in
+/// the order of their names, as the file has always been written).
+#[derive(Debug, serde::Serialize)]
+struct ClassJson<'a> {
+    /// Which states were graded.
+    after: &'a str,
+    common_mistakes: Vec<MistakeRow<'a>>,
+    /// The folder's files that were not graded, and why (a misnamed answer names its student).
+    not_graded: Vec<NotGraded<'a>>,
+    scene: String,
+    students: Vec<StudentRow<'a>>,
+}
+
+/// A student's row of [`ClassJson`].
+#[derive(Debug, serde::Serialize)]
+struct StudentRow<'a> {
+    depth_wrong: Option<usize>,
+    explained: Option<usize>,
+    frame_wrong: Option<usize>,
+    misconception: Option<&'static str>,
+    score: serde_json::Number,
+    status: String,
+    student: &'a str,
+    unanswered: usize,
+}
+
+/// A mistake several students made, in [`ClassJson`].
+#[derive(Debug, serde::Serialize)]
+struct MistakeRow<'a> {
+    answers: Vec<AnswerCount>,
+    buffer: String,
+    right: u32,
+    students: &'a [String],
+    why: &'a str,
+    x: u32,
+    y: u32,
+}
+
+/// How many students gave a value.
+#[derive(Debug, serde::Serialize)]
+struct AnswerCount {
+    count: usize,
+    value: u32,
+}
+
+/// A file of the folder that was not graded.
+#[derive(Debug, serde::Serialize)]
+struct NotGraded<'a> {
+    buffer: Option<String>,
+    file: &'a str,
+    reason: String,
+    student: Option<&'a str>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `grade --format json`'s shape: a student, a common mistake, a file not graded.
+    #[test]
+    fn a_class_json_has_its_shape() {
+        let students = vec!["ana".to_string(), "bo".to_string()];
+        let class = ClassJson {
+            after: "final",
+            common_mistakes: vec![MistakeRow {
+                answers: vec![AnswerCount { count: 2, value: 3 }],
+                buffer: "framebuffer".into(),
+                right: 1,
+                students: &students,
+                why: "polygon 2 is nearer",
+                x: 4,
+                y: 5,
+            }],
+            not_graded: vec![NotGraded {
+                buffer: None,
+                file: "notes.txt",
+                reason: "not an answer".into(),
+                student: None,
+            }],
+            scene: "rogers.json".into(),
+            students: vec![StudentRow {
+                depth_wrong: Some(0),
+                explained: None,
+                frame_wrong: Some(2),
+                misconception: None,
+                score: "87.5".parse().unwrap(),
+                status: "wrong".into(),
+                student: "ana",
+                unanswered: 0,
+            }],
+        };
+        crate::shape_snapshot("class_json", &class);
+    }
 }

@@ -130,25 +130,52 @@ pub fn results(
             }
         };
         total += score;
-        tests.push(serde_json::json!({
-            "name": name,
-            "score": score as f64 / 100.0,
-            "max_score": max_score as f64 / 100.0,
-            "status": if passed { "passed" } else { "failed" },
-            "output": output,
-            "visibility": visibility.name(),
-        }));
+        tests.push(TestResult {
+            max_score: max_score as f64 / 100.0,
+            name,
+            output,
+            score: score as f64 / 100.0,
+            status: if passed { "passed" } else { "failed" },
+            visibility: visibility.name(),
+        });
     }
-    let mut results = serde_json::json!({
-        "score": total as f64 / 100.0,
-        "visibility": visibility.name(),
-        "tests": tests,
-    });
-    if !unused.is_empty() {
+    let output = (!unused.is_empty()).then(|| {
         let names: Vec<String> = unused.iter().map(|n| format!("\"{}\"", printable(n))).collect();
-        results["output"] = serde_json::Value::from(words!(lang, "gradescope-unused", files = names.join(", ")));
+        words!(lang, "gradescope-unused", files = names.join(", "))
+    });
+    Ok(Results { output, score: total as f64 / 100.0, tests, visibility: visibility.name() }.written())
+}
+
+/// Gradescope's `results.json` (its autograder specification), as zsim
+/// writes it: the fields in the order of their names, as the file has
+/// always been written.
+#[derive(Debug, serde::Serialize)]
+struct Results {
+    /// Said to the student above the tests, where there is something to say.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    output: Option<String>,
+    score: f64,
+    tests: Vec<TestResult>,
+    visibility: &'static str,
+}
+
+/// One test of a [`Results`].
+#[derive(Debug, serde::Serialize)]
+struct TestResult {
+    max_score: f64,
+    name: String,
+    output: String,
+    score: f64,
+    /// `passed` or `failed`.
+    status: &'static str,
+    visibility: &'static str,
+}
+
+impl Results {
+    /// The file's text, pretty, ending in a newline.
+    fn written(&self) -> String {
+        format!("{}\n", serde_json::to_string_pretty(self).expect("plain data"))
     }
-    Ok(format!("{}\n", serde_json::to_string_pretty(&results).expect("plain data")))
 }
 
 /// The file that answers for `buffer` after polygon `after` (0-based), as a
@@ -164,13 +191,8 @@ pub fn expected_name(scene: &Scene, after: usize, buffer: Buffer) -> String {
 /// The `results.json` of a submission with nothing to grade: score 0, why in
 /// its output.
 pub fn nothing_to_grade(why: &str, visibility: Visibility) -> String {
-    let results = serde_json::json!({
-        "score": 0.0,
-        "output": printable(why),
-        "visibility": visibility.name(),
-        "tests": [],
-    });
-    format!("{}\n", serde_json::to_string_pretty(&results).expect("plain data"))
+    let output = Some(printable(why).into_owned());
+    Results { output, score: 0.0, tests: Vec::new(), visibility: visibility.name() }.written()
 }
 
 /// `setup.sh`: zsim installed from the Debian package put beside it.
@@ -221,4 +243,26 @@ pub fn autograder(
         ("run_autograder".to_string(), run.into_bytes()),
         ("scene.json".to_string(), scene_json.as_bytes().to_vec()),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `results.json`'s shape: a test, and the results' output.
+    #[test]
+    fn results_have_gradescopes_shape() {
+        let test = TestResult {
+            max_score: 0.5,
+            name: "framebuffer after triangle".into(),
+            output: "right\n".into(),
+            score: 0.5,
+            status: "passed",
+            visibility: Visibility::Visible.name(),
+        };
+        let results =
+            Results { output: Some("unused: \"x.txt\"".into()), score: 0.5, tests: vec![test], visibility: "visible" };
+        crate::shape_snapshot("gradescope_results", &results);
+        assert!(nothing_to_grade("why", Visibility::Hidden).contains("\"tests\": []"));
+    }
 }

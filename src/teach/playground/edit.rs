@@ -140,11 +140,10 @@ pub fn edit(lang: Lang, text: &str, edit: &str) -> Result<String, String> {
         }
         Edit::AddPolygon => {
             let (width, height) = size()?;
-            let at = |part: u32, of: u32| (f64::from(of) * f64::from(part) / 4.0).round();
-            let polygon = serde_json::json!({"value": 1, "vertices": [
-                [at(1, width), at(1, height), 1], [at(2, width), at(3, height), 1], [at(3, width), at(1, height), 1]]});
+            let polygon = NewPolygon::within(width, height);
             let count = scene.get("polygons").and_then(Value::as_array).map_or(0, Vec::len);
-            vec![Edit::Insert { path: vec!["polygons".into(), count.into()], value: polygon.to_string() }]
+            let value = serde_json::to_string(&polygon).expect("plain data");
+            vec![Edit::Insert { path: vec!["polygons".into(), count.into()], value }]
         }
         plain => vec![plain],
     };
@@ -152,6 +151,24 @@ pub fn edit(lang: Lang, text: &str, edit: &str) -> Result<String, String> {
         apply(&mut scene, edit).ok_or_else(bad)?;
     }
     Ok(layout(&scene))
+}
+
+/// The polygon the page's "add a polygon" puts in a scene: a triangle of
+/// value 1 at depth 1 across the middle of the raster, its vertices at
+/// quarters of the sides, rounded.
+#[derive(Debug, serde::Serialize)]
+struct NewPolygon {
+    value: u32,
+    vertices: [(f64, f64, u32); 3],
+}
+
+impl NewPolygon {
+    fn within(width: u32, height: u32) -> NewPolygon {
+        let at = |part: u32, of: u32| (f64::from(of) * f64::from(part) / 4.0).round();
+        let vertices =
+            [(at(1, width), at(1, height), 1), (at(2, width), at(3, height), 1), (at(3, width), at(1, height), 1)];
+        NewPolygon { value: 1, vertices }
+    }
 }
 
 /// A plain edit (set, insert, remove) carried out on `scene`; `None` where it does not fit.
@@ -273,5 +290,6 @@ mod tests {
         let polygon = edit(Lang::En, SMALL, r#"{"op": "add-polygon"}"#).unwrap();
         let second = &serde_json::from_str::<Value>(&polygon).unwrap()["polygons"][1];
         assert_eq!(second.to_string(), r#"{"value":1,"vertices":[[1.0,1.0,1],[2.0,2.0,1],[3.0,1.0,1]]}"#);
+        crate::shape_snapshot("playground_new_polygon", &NewPolygon::within(32, 32));
     }
 }

@@ -535,9 +535,7 @@ mod tests {
     }
 
     fn snapshot(name: &str, value: &impl Serialize) {
-        insta::with_settings!({snapshot_path => "../../../snapshots", prepend_module_to_snapshot => false, omit_expression => true}, {
-            insta::assert_snapshot!(name, serde_json::to_string_pretty(value).unwrap());
-        });
+        crate::shape_snapshot(name, value);
     }
 
     /// The scene's view as the page gets it: the page flips nothing, so the
