@@ -3,7 +3,7 @@
 
 Each pair runs A then B as whole processes, `run SCENE --format none` with the
 options given, and reads the time each prints after "rasterized" (clearing the
-buffers and drawing, as `zsim run` times it); prints each side's median and
+buffers and drawing, as `zsim run` times it, in buffers made beforehand); prints each side's median and
 the median of the pairs' ratios B/A, with their least and greatest. Run it
 with A and B swapped too: on a shared machine the second of a pair is not
 always as fast as the first.

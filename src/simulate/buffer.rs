@@ -138,6 +138,24 @@ impl Buffers {
         }
     }
 
+    /// Has the system hand over every page of both buffers now, their cells
+    /// unchanged. Fresh memory reads as zeros that are not there yet: the
+    /// first write to each page waits for the kernel to zero it. A run that
+    /// times its clearing and drawing, as a GPU's frame is timed in a
+    /// framebuffer made beforehand, takes the pages first.
+    pub fn take_pages(&mut self) {
+        match &mut self.depth {
+            DepthCells::Levels(cells) => cells.take_pages(),
+            // Exact depths are written when made.
+            DepthCells::Exact(_) => {}
+        }
+        match &mut self.frame {
+            FrameCells::Bytes(cells) => cells.take_pages(),
+            FrameCells::Halves(cells) => cells.take_pages(),
+            FrameCells::Words(cells) => cells.take_pages(),
+        }
+    }
+
     /// Runs `code` on both buffers' cells when the z-buffer holds levels
     /// (`None` when it holds exact values): the loops that write many cells.
     pub fn with_level_cells<C: LevelCells>(&mut self, code: C) -> Option<C::Output> {
@@ -289,6 +307,20 @@ impl<T: FrameCell + Sync> Cells<T> {
     }
 }
 
+impl<T: Copy> Cells<T> {
+    /// Writes each page's first cell with the value it holds, so that the
+    /// system hands the page over now (see [`Buffers::take_pages`]).
+    fn take_pages(&mut self) {
+        const PAGE: usize = 4096;
+        let step = (PAGE / std::mem::size_of::<T>()).max(1);
+        let cells: &mut [T] = self;
+        for cell in cells.iter_mut().step_by(step) {
+            // Unknown to the compiler, so the write is made.
+            *cell = std::hint::black_box(*cell);
+        }
+    }
+}
+
 impl<T> std::ops::Deref for Cells<T> {
     type Target = [T];
 
@@ -401,6 +433,59 @@ impl DepthCells {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The bytes of private memory the system has handed over in the
+    /// mapping that holds `cells` (Linux's `/proc/self/smaps`, "Anonymous"):
+    /// pages written, not fresh pages only read (those show the system's
+    /// one page of zeros). A large buffer offered huge pages is a mapping of
+    /// its own.
+    #[cfg(target_os = "linux")]
+    fn handed_over<T>(cells: &[T]) -> u64 {
+        let at = cells.as_ptr() as u64;
+        let smaps = crate::door::inward::read_bytes(
+            std::path::Path::new("/proc/self/smaps"),
+            crate::door::inward::Links::Follow,
+        )
+        .expect("Linux has /proc/self/smaps");
+        let smaps = String::from_utf8_lossy(&smaps);
+        let mut inside = false;
+        for line in smaps.lines() {
+            let range = line.split_whitespace().next().and_then(|range| range.split_once('-'));
+            if let Some((start, end)) =
+                range.and_then(|(s, e)| Some((u64::from_str_radix(s, 16).ok()?, u64::from_str_radix(e, 16).ok()?)))
+            {
+                inside = (start..end).contains(&at);
+            } else if inside && let Some(kib) = line.strip_prefix("Anonymous:") {
+                return kib.trim().trim_end_matches("kB").trim().parse::<u64>().expect("a size in kB") * 1024;
+            }
+        }
+        panic!("no mapping holds the cells")
+    }
+
+    /// Fresh buffers' memory is not yet the process's; taking the pages
+    /// has the system hand over every page of the z-buffer (written, not
+    /// only read) and changes no cell.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn taking_the_pages_has_the_system_hand_them_over_and_changes_no_cell() {
+        // Compared with buffers made alike: a clone would read the cells first.
+        let made = || Buffers::new(4096, 2048, 2, 0, Stored::Level(0));
+        let mut buffers = made();
+        let depth = |buffers: &Buffers| match &buffers.depth {
+            DepthCells::Levels(cells) => (handed_over(cells), std::mem::size_of_val(&**cells) as u64),
+            DepthCells::Exact(_) => panic!("level cells"),
+        };
+        let (before, bytes) = depth(&buffers);
+        assert!(before < bytes / 100, "a fresh z-buffer is not yet the process's: {before} of {bytes} bytes");
+        buffers.take_pages();
+        let (after, _) = depth(&buffers);
+        assert!(after >= bytes, "{after} of {bytes} bytes handed over");
+        assert_eq!(buffers, made());
+        let mut cleared = Buffers::new(64, 64, 8, 3, Stored::Level(9));
+        let before = cleared.clone();
+        cleared.take_pages();
+        assert_eq!(cleared, before);
+    }
 
     /// A large buffer's cells start on a 2 MiB boundary (so that every page
     /// of it can be a huge one) and hold the clear value, zero or not; a

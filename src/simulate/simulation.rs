@@ -118,6 +118,12 @@ impl<'s> Simulation<'s> {
         }
     }
 
+    /// Has the system hand over the buffers' memory now ([`Buffers::take_pages`]):
+    /// the cells stay as they are.
+    pub fn take_pages(&mut self) {
+        self.buffers.take_pages();
+    }
+
     /// The buffers as they are now.
     pub fn buffers(&self) -> &Buffers {
         &self.buffers

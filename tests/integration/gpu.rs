@@ -356,7 +356,12 @@ fn speed_times_zsim_beside_opengl_in_alternating_pairs() {
         let numbers = |line: &str| -> Vec<f64> {
             line.split(|c: char| !(c.is_ascii_digit() || c == '.')).filter_map(|t| t.parse().ok()).collect()
         };
-        assert!(whole.starts_with("zsim's whole run, in fresh buffers as `zsim run` draws: "), "{whole}");
+        assert!(
+            whole.starts_with(
+                "zsim's whole run, its buffers made fresh (as `zsim run`'s buffers made and rasterized together): "
+            ),
+            "{whole}"
+        );
         let [fresh, fresh_ratio] = numbers(whole)[..] else { panic!("{whole}") };
         assert!((fresh / gpu - fresh_ratio).abs() <= 0.005 + 0.01 * (fresh + gpu) / (gpu * gpu), "{whole}");
         // The memory's speed measured in the same run: 128 × 128 pixels of a 1-byte framebuffer

@@ -58,7 +58,9 @@ fn format_none_prints_one_summary_line() {
     let (counts, times) = run.stdout.split_once("; read ").expect("the summary ends with the times");
     let shape = times.trim_end().replace(|c: char| c.is_ascii_digit(), "9");
     assert!(
-        shape.starts_with("9") && shape.contains(" ms, rasterized ") && shape.contains(" M pixels/s); "),
+        shape.starts_with("9")
+            && shape.contains(" ms, buffers made 9.9 ms, rasterized ")
+            && shape.contains(" M pixels/s); "),
         "{times}"
     );
     // 32×32 cells: a byte each for the 2-bit framebuffer, 4 bytes each for

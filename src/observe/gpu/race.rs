@@ -2,9 +2,9 @@
 //! present), on the same triangles: each side drawn in turn, pair after pair
 //! in one run, so that a busy machine slows both alike; medians and their
 //! ratio. zsim's time is what `zsim run --format none` prints as rasterized
-//! (clearing the buffers, then every polygon), except that the buffers are
-//! made once and cleared each round, tile by tile as each is drawn
-//! ([`Simulation::redraw`]) as llvmpipe clears its tiles; the GPU's is a
+//! (clearing the buffers, then every polygon, in buffers made beforehand):
+//! here the buffers are made once and cleared each round, tile by tile as
+//! each is drawn ([`Simulation::redraw`]) as llvmpipe clears its tiles; the GPU's is a
 //! clear, the draw of a vertex buffer uploaded beforehand, and `glFinish`.
 
 use std::time::{Duration, Instant};
@@ -37,8 +37,9 @@ pub struct Race {
     pub zsim: Vec<Duration>,
     /// The GPU's time in each pair.
     pub gpu: Vec<Duration>,
-    /// zsim's whole run in each pair, as `zsim run` draws: buffers made
-    /// fresh (the kernel handing over their pages), then every polygon.
+    /// zsim's whole run in each pair: buffers made fresh (the kernel
+    /// handing over their pages), then every polygon, as `zsim run`'s
+    /// buffers made and rasterized together.
     pub fresh: Vec<Duration>,
     /// A copy of as many bytes as the buffers take, in each pair: what the
     /// machine's memory allows, measured in the same run.

@@ -363,6 +363,9 @@ pub struct RunFigures {
     pub buffers: u64,
     /// Reading the scene.
     pub read: std::time::Duration,
+    /// Making the buffers and taking their memory from the system, where
+    /// that is timed apart from rasterizing.
+    pub made: Option<std::time::Duration>,
     /// Rasterizing: from clearing the buffers to the last polygon.
     pub raster: std::time::Duration,
     /// Threads that drew.
@@ -377,7 +380,8 @@ pub struct RunFigures {
 /// The caller measures the times (a clock is the front end's: WebAssembly
 /// has none).
 pub fn run_summary(lang: Lang, scene: &Scene, path: &str, figures: RunFigures) -> String {
-    let RunFigures { stats, buffers, read, raster, threads, peak } = figures;
+    let RunFigures { stats, buffers, read, made, raster, threads, peak } = figures;
+    let ms = |time: std::time::Duration| format!("{:.1}", time.as_secs_f64() * 1000.0);
     let effects = scene.effects.names();
     let rate = stats.tested as f64 / raster.as_secs_f64().max(1e-9) / 1e6;
     let scene_bytes = scene.memory_bytes();
@@ -402,8 +406,9 @@ pub fn run_summary(lang: Lang, scene: &Scene, path: &str, figures: RunFigures) -
         written = stats.written.to_string(),
         effects = if effects.is_empty() { words!(lang, "run-summary-no-effects") } else { effects.join(", ") },
         stages = stages(lang, scene).join(" → "),
-        read = format!("{:.1}", read.as_secs_f64() * 1000.0),
-        raster = format!("{:.1}", raster.as_secs_f64() * 1000.0),
+        read = ms(read),
+        made = made.map_or(String::new(), |made| words!(lang, "run-summary-made", made = ms(made))),
+        raster = ms(raster),
         threads = threads,
         rate = format!("{rate:.1}"),
         buffers = bytes(buffers),

@@ -198,12 +198,13 @@ memory-total-line = total: { $total } bytes = { $megabytes }
 run-summary = { $path }: { $polygons } { $polygons ->
     [one] polygon
    *[other] polygons
-}, { $tested } pixel centres tested, { $written } written; effects: { $effects }; stages: { $stages }; read { $read } ms, rasterized { $raster } ms on { $threads } { $threads ->
+}, { $tested } pixel centres tested, { $written } written; effects: { $effects }; stages: { $stages }; read { $read } ms{ $made }, rasterized { $raster } ms on { $threads } { $threads ->
     [one] thread
    *[other] threads
 } ({ $rate } M pixels/s); memory: buffers { $buffers }, scene { $scene }{ $peak }
 run-summary-peak = , peak resident { $peak }
 run-summary-peak-ratio = , peak resident { $peak } ({ $ratio }× buffers + scene)
+run-summary-made = , buffers made { $made } ms
 run-summary-no-effects = none
 run-summary-arith = ; arithmetic { $arith }
 run-arith-compared = arithmetic: { $arith }; compared with exact arithmetic, { $frame } framebuffer and { $depth } z-buffer cells differ
@@ -282,7 +283,7 @@ speed-header = { $scene }: { $triangles } triangles (fans of { $polygons } polyg
    *[other] in tiles of { $tile }
 }, against { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } alternating pairs after one untimed round each
 speed-result = zsim { $zsim } ms, GPU { $gpu } ms (medians): zsim takes { $ratio }× the GPU's time (pairs from { $low }× to { $high }×)
-speed-fresh = zsim's whole run, in fresh buffers as `zsim run` draws: { $fresh } ms (median), { $ratio }× the GPU's time
+speed-fresh = zsim's whole run, its buffers made fresh (as `zsim run`'s buffers made and rasterized together): { $fresh } ms (median), { $ratio }× the GPU's time
 speed-memory = zsim tested { $rate } million pixel centres a second; a copy of the buffers' { $megabytes } MB took { $copy } ms ({ $bandwidth } GB/s), which at { $bytes } bytes a pixel, each read and written once, allows { $limit } million pixels a second
 gpu-why-depth-unread = the GPU shows { $shown }; the scene's rules keep { $book } (the depths decided: the GPU interpolates them in f32)
 gpu-no-vulkan = no Vulkan device found: { $reason } (install mesa-vulkan-drivers)

@@ -194,9 +194,10 @@ memory-at-pixel = пикселе
 memory-supersampled = , суперсэмплинг { $k }×{ $k } с глубиной в каждом { $at }
 memory-heading = { $width }×{ $height } пикселов, буфер кадра { $frame_bits } бит, z-буфер { $depth_bits } бит{ $sampling }
 memory-total-line = всего: { $total } байт = { $megabytes }
-run-summary = { $path }: многоугольников { $polygons }, проверено центров пикселов: { $tested }, записано: { $written }; эффекты: { $effects }; стадии: { $stages }; чтение { $read } мс, растеризация { $raster } мс, потоков: { $threads } ({ $rate } млн пикселов/с); память: буферы { $buffers }, сцена { $scene }{ $peak }
+run-summary = { $path }: многоугольников { $polygons }, проверено центров пикселов: { $tested }, записано: { $written }; эффекты: { $effects }; стадии: { $stages }; чтение { $read } мс{ $made }, растеризация { $raster } мс, потоков: { $threads } ({ $rate } млн пикселов/с); память: буферы { $buffers }, сцена { $scene }{ $peak }
 run-summary-peak = , пик резидентной памяти { $peak }
 run-summary-peak-ratio = , пик резидентной памяти { $peak } ({ $ratio }× буферы + сцена)
+run-summary-made = , создание буферов { $made } мс
 run-summary-no-effects = нет
 run-summary-arith = ; арифметика { $arith }
 run-arith-compared = арифметика: { $arith }; в сравнении с точной арифметикой отличаются ячеек буфера кадра: { $frame }, z-буфера: { $depth }
@@ -269,7 +270,7 @@ speed-header = { $scene }: треугольников { $triangles } (веера
    *[other] плитками по { $tile }
 }, против { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } чередующихся пар после одного неучтённого прогона каждого
 speed-result = zsim { $zsim } мс, GPU { $gpu } мс (медианы): zsim тратит { $ratio }× времени GPU (в парах от { $low }× до { $high }×)
-speed-fresh = весь прогон zsim в новых буферах, как рисует `zsim run`: { $fresh } мс (медиана), { $ratio }× времени GPU
+speed-fresh = весь прогон zsim с созданием новых буферов (как создание буферов и растеризация `zsim run` вместе): { $fresh } мс (медиана), { $ratio }× времени GPU
 speed-memory = zsim проверял { $rate } млн центров пикселей в секунду; копия { $megabytes } МБ буферов заняла { $copy } мс ({ $bandwidth } ГБ/с), что при { $bytes } байтах на пиксель, прочитанных и записанных по разу, допускает { $limit } млн пикселей в секунду
 gpu-why-depth-unread = GPU показывает { $shown }; по правилам сцены остаётся { $book } (решили глубины: GPU интерполирует их в f32)
 gpu-no-vulkan = устройство Vulkan не найдено: { $reason } (установите mesa-vulkan-drivers)

@@ -194,9 +194,10 @@ memory-at-pixel = пікселі
 memory-supersampled = , суперсемплінг { $k }×{ $k } з глибиною в кожному { $at }
 memory-heading = { $width }×{ $height } пікселів, буфер кадру { $frame_bits } бітів, z-буфер { $depth_bits } бітів{ $sampling }
 memory-total-line = усього: { $total } байтів = { $megabytes }
-run-summary = { $path }: багатокутників { $polygons }, перевірено центрів пікселів: { $tested }, записано: { $written }; ефекти: { $effects }; стадії: { $stages }; читання { $read } мс, растеризація { $raster } мс, потоків: { $threads } ({ $rate } млн пікселів/с); пам'ять: буфери { $buffers }, сцена { $scene }{ $peak }
+run-summary = { $path }: багатокутників { $polygons }, перевірено центрів пікселів: { $tested }, записано: { $written }; ефекти: { $effects }; стадії: { $stages }; читання { $read } мс{ $made }, растеризація { $raster } мс, потоків: { $threads } ({ $rate } млн пікселів/с); пам'ять: буфери { $buffers }, сцена { $scene }{ $peak }
 run-summary-peak = , пік резидентної пам'яті { $peak }
 run-summary-peak-ratio = , пік резидентної пам'яті { $peak } ({ $ratio }× буфери + сцена)
+run-summary-made = , створення буферів { $made } мс
 run-summary-no-effects = немає
 run-summary-arith = ; арифметика { $arith }
 run-arith-compared = арифметика: { $arith }; порівняно з точною арифметикою відрізняються комірок буфера кадру: { $frame }, z-буфера: { $depth }
@@ -269,7 +270,7 @@ speed-header = { $scene }: трикутників { $triangles } (віяла { $
    *[other] плитками по { $tile }
 }, проти { $renderer } (LP_NUM_THREADS={ $lp }), { $pairs } пар по черзі після одного неврахованого прогону кожного
 speed-result = zsim { $zsim } мс, GPU { $gpu } мс (медіани): zsim витрачає { $ratio }× часу GPU (у парах від { $low }× до { $high }×)
-speed-fresh = увесь прогін zsim у нових буферах, як малює `zsim run`: { $fresh } мс (медіана), { $ratio }× часу GPU
+speed-fresh = увесь прогін zsim зі створенням нових буферів (як створення буферів і растеризація `zsim run` разом): { $fresh } мс (медіана), { $ratio }× часу GPU
 speed-memory = zsim перевіряв { $rate } млн центрів пікселів за секунду; копія { $megabytes } МБ буферів зайняла { $copy } мс ({ $bandwidth } ГБ/с), що при { $bytes } байтах на піксель, прочитаних і записаних по разу, дозволяє { $limit } млн пікселів за секунду
 gpu-why-depth-unread = GPU показує { $shown }; за правилами сцени лишається { $book } (вирішили глибини: GPU інтерполює їх у f32)
 gpu-no-vulkan = пристрій Vulkan не знайдено: { $reason } (установіть mesa-vulkan-drivers)

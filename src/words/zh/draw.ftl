@@ -193,9 +193,10 @@ memory-at-pixel = 像素
 memory-supersampled = ，{ $k }×{ $k } 超采样，深度存于每个{ $at }
 memory-heading = { $width }×{ $height } 像素，帧缓冲 { $frame_bits } 位，z 缓冲 { $depth_bits } 位{ $sampling }
 memory-total-line = 合计：{ $total } 字节 = { $megabytes }
-run-summary = { $path }：{ $polygons } 个多边形，测试了 { $tested } 个像素中心，写入 { $written } 个；效果：{ $effects }；阶段：{ $stages }；读取 { $read } ms，光栅化 { $raster } ms，{ $threads } 个线程（{ $rate } M 像素/秒）；内存：缓冲 { $buffers }，场景 { $scene }{ $peak }
+run-summary = { $path }：{ $polygons } 个多边形，测试了 { $tested } 个像素中心，写入 { $written } 个；效果：{ $effects }；阶段：{ $stages }；读取 { $read } ms{ $made }，光栅化 { $raster } ms，{ $threads } 个线程（{ $rate } M 像素/秒）；内存：缓冲 { $buffers }，场景 { $scene }{ $peak }
 run-summary-peak = ，常驻内存峰值 { $peak }
 run-summary-peak-ratio = ，常驻内存峰值 { $peak }（{ $ratio }× 缓冲 + 场景）
+run-summary-made = ，建立缓冲 { $made } ms
 run-summary-no-effects = 无
 run-summary-arith = ；算术 { $arith }
 run-arith-compared = 算术：{ $arith }；与精确算术相比，帧缓冲有 { $frame } 个单元不同，z 缓冲有 { $depth } 个单元不同
@@ -265,7 +266,7 @@ speed-header = { $scene }：{ $triangles } 个三角形（{ $polygons } 个多�
    *[other] 以 { $tile } 像素见方的图块
 }，对比 { $renderer }（LP_NUM_THREADS={ $lp }），交替计时 { $pairs } 对（各先不计时运行一次）
 speed-result = zsim { $zsim } 毫秒，GPU { $gpu } 毫秒（中位数）：zsim 用时是 GPU 的 { $ratio } 倍（各对从 { $low } 倍到 { $high } 倍）
-speed-fresh = zsim 整次运行（像 `zsim run` 一样使用新缓冲区）：{ $fresh } 毫秒（中位数），是 GPU 时间的 { $ratio }×
+speed-fresh = zsim 整次运行，新建缓冲区（即 `zsim run` 的建立缓冲与光栅化合计）：{ $fresh } 毫秒（中位数），是 GPU 时间的 { $ratio }×
 speed-memory = zsim 每秒测试 { $rate } 百万个像素中心；复制缓冲区的 { $megabytes } MB 用时 { $copy } 毫秒（{ $bandwidth } GB/s），按每像素 { $bytes } 字节各读写一次计算，每秒最多 { $limit } 百万像素
 gpu-why-depth-unread = GPU 显示 { $shown }；按场景规则保留的是 { $book }（由深度决定：GPU 以 f32 插值）
 gpu-no-vulkan = 未找到 Vulkan 设备：{ $reason }（请安装 mesa-vulkan-drivers）
