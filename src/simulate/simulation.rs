@@ -36,6 +36,10 @@ pub struct Simulation<'s> {
     stage_set: StageSet,
     /// How many threads clear large buffers ([`Simulation::new_on`]).
     clearing_threads: usize,
+    /// The threads that draw in tiles, started with the buffers when more
+    /// than one is asked for ([`Simulation::new_on`]), as a GPU driver starts
+    /// its threads with its context: each draw then finds them waiting.
+    pool: Option<std::sync::Arc<rayon::ThreadPool>>,
 }
 
 impl<'s> Simulation<'s> {
@@ -45,7 +49,8 @@ impl<'s> Simulation<'s> {
     }
 
     /// Like [`Simulation::new`], large buffers cleared on `threads` threads
-    /// (here and by [`Simulation::restart`]): the same cells.
+    /// (here and by [`Simulation::restart`]): the same cells; with more than
+    /// one, the threads that draw in tiles are started now and kept.
     pub fn new_on(scene: &'s Scene, threads: usize) -> Simulation<'s> {
         Simulation::made(scene, StageSet::AsAsked, threads)
     }
@@ -72,6 +77,7 @@ impl<'s> Simulation<'s> {
             scratch: Scratch::default(),
             stage_set,
             clearing_threads: threads,
+            pool: pool(threads).map(std::sync::Arc::new),
         }
     }
 
@@ -218,8 +224,16 @@ impl<'s> Simulation<'s> {
                 1
             }
             Some(tiling) => {
-                let pool = pool(tiling.threads);
-                let bins = bins(scene, first..end, tiling.tile, pool.as_ref());
+                // The threads started with the buffers, or as many as asked for now.
+                let started;
+                let pool = match &self.pool {
+                    Some(kept) if kept.current_num_threads() == tiling.threads => Some(&**kept),
+                    _ => {
+                        started = pool(tiling.threads);
+                        started.as_ref()
+                    }
+                };
+                let bins = bins(scene, first..end, tiling.tile, pool);
                 // Before the first polygon every cell holds the clear values (only drawing,
                 // which moves `next` on, writes the buffers).
                 let start = match (&scene.clear_depth, clearing) {
@@ -231,7 +245,7 @@ impl<'s> Simulation<'s> {
                     }
                     _ => TileStart::Buffers,
                 };
-                let tiles = Tiles { scene, test, depth_max, bins, tiling, pool: pool.as_ref(), start };
+                let tiles = Tiles { scene, test, depth_max, bins, tiling, pool, start };
                 let (stats, threads) =
                     self.buffers.with_level_cells(tiles).expect("plain levels imply a level z-buffer");
                 self.stats.tested += stats.tested;
