@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use proptest::prelude::*;
 
-use crate::limits::{peak_kib, stated};
+use crate::limits::{measured_refusal, peak_kib, stated};
 use crate::{zsim, zsim_in, zsim_with};
 
 /// An empty scratch folder of its own.
@@ -1001,13 +1001,12 @@ fn an_answer_of_garbage_costs_what_its_cells_cost() {
     let lines = limit.count() / line.len();
     std::fs::write(&garbage, line.repeat(lines)).unwrap();
     assert_eq!(std::fs::metadata(&garbage).unwrap().len(), limit.value);
-    let (code, peak) = peak_kib(&["check", "examples/rogers.json", "--frame", path(&garbage)]);
+    let (code, peak, refusal) = measured_refusal(&["check", "examples/rogers.json", "--frame", path(&garbage)]);
     assert_eq!(code, 2);
     limit.hold_peak(peak);
-    let run = zsim(&["check", "examples/rogers.json", "--frame", path(&garbage)]);
-    assert!(run.stderr.contains("\"x\" is not a whole number"), "{}", &run.stderr[..200.min(run.stderr.len())]);
+    assert!(refusal.contains("\"x\" is not a whole number"), "{}", &refusal[..200.min(refusal.len())]);
     // Every cell and the count of rows, each a problem: three named, the rest counted.
-    assert!(run.stderr.ends_with(&format!(" · and {} more problems\n", lines * 32 + 1 - 3)), "{}", run.stderr);
+    assert!(refusal.ends_with(&format!(" · and {} more problems\n", lines * 32 + 1 - 3)), "{refusal}");
     std::fs::write(&garbage, line.repeat(lines) + "x").unwrap();
     let run = zsim(&["check", "examples/rogers.json", "--frame", path(&garbage)]);
     assert_eq!((run.code, run.stderr.lines().count()), (2, 1), "{}", run.stderr);

@@ -82,18 +82,32 @@ pub fn stated(limit: &str) -> Stated {
 /// other tests' buffers, 276 MB in one full run) as the child's peak; GNU
 /// time is small when it starts zsim.
 pub fn peak_kib(args: &[&str]) -> (i32, i64) {
-    let (code, kib, _) = timed(args, false);
+    let (code, kib, _) = timed(args, Kept::Neither);
     (code, kib)
 }
 
 /// [`peak_kib`], and what the run wrote on its standard output.
 pub fn measured(args: &[&str]) -> (i32, i64, String) {
-    timed(args, true)
+    timed(args, Kept::Output)
 }
 
-/// A run under GNU time; its standard output kept if `keep` (else thrown
-/// away unread: some runs write hundreds of megabytes).
-fn timed(args: &[&str], keep: bool) -> (i32, i64, String) {
+/// [`peak_kib`], and what the run wrote on its standard error (one line or
+/// so: a refusal), for a run too long to make twice.
+pub fn measured_refusal(args: &[&str]) -> (i32, i64, String) {
+    timed(args, Kept::Errors)
+}
+
+/// Which of a run's streams is kept; the others are thrown away unread
+/// (some runs write hundreds of megabytes).
+#[derive(Clone, Copy, PartialEq)]
+enum Kept {
+    Neither,
+    Output,
+    Errors,
+}
+
+/// A run under GNU time, with the stream `keep` says.
+fn timed(args: &[&str], keep: Kept) -> (i32, i64, String) {
     static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let run = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let report = std::env::temp_dir().join(format!("zsim-peak-{}-{run}", std::process::id()));
@@ -103,14 +117,15 @@ fn timed(args: &[&str], keep: bool) -> (i32, i64, String) {
         .arg(env!("CARGO_BIN_EXE_zsim"))
         .args(args)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .stdout(if keep { std::process::Stdio::piped() } else { std::process::Stdio::null() })
-        .stderr(std::process::Stdio::null())
+        .stdout(if keep == Kept::Output { std::process::Stdio::piped() } else { std::process::Stdio::null() })
+        .stderr(if keep == Kept::Errors { std::process::Stdio::piped() } else { std::process::Stdio::null() })
         .output()
         .expect("GNU time (/usr/bin/time, Debian's time package; .ci/run installs it)");
     let text = std::fs::read_to_string(&report).unwrap();
     let _ = std::fs::remove_file(&report);
     let kib = text.lines().last().and_then(|l| l.trim().parse().ok()).unwrap_or_else(|| panic!("time said {text:?}"));
-    (output.status.code().unwrap_or(-1), kib, String::from_utf8_lossy(&output.stdout).into_owned())
+    let kept = if keep == Kept::Errors { &output.stderr } else { &output.stdout };
+    (output.status.code().unwrap_or(-1), kib, String::from_utf8_lossy(kept).into_owned())
 }
 
 /// An empty scratch folder of its own.
