@@ -2,23 +2,17 @@
 """`zsim run` on two threads against one, in alternating pairs.
 
 Each pair runs `zsim run SCENE --format none --threads 1`, then the same with
-`--threads 2`, and reads the rasterized time each prints; prints each side's
-median and the median of the pairs' ratios two/one, with their least and
-greatest.
+`--threads 2`, and reads the rasterized time each prints (as
+`benches/alternate.py` reads it); prints each side's median and the median of
+the pairs' ratios two/one, with their least and greatest.
 
     python3 benches/threads.py target/release/zsim r20k.json 21
 """
 
-import re
 import statistics
-import subprocess
 import sys
 
-
-def rasterized(zsim, scene, threads):
-    shown = subprocess.run([zsim, "run", scene, "--format", "none", "--threads", str(threads)],
-                           capture_output=True, text=True, check=True).stdout
-    return float(re.search(r"rasterized ([\d.]+) ms", shown).group(1))
+from alternate import timed
 
 
 def main():
@@ -27,8 +21,8 @@ def main():
     zsim, scene, pairs = sys.argv[1], sys.argv[2], int(sys.argv[3])
     one, two, ratios = [], [], []
     for _ in range(pairs):
-        one.append(rasterized(zsim, scene, 1))
-        two.append(rasterized(zsim, scene, 2))
+        one.append(timed(zsim, [scene, "--threads", "1"]))
+        two.append(timed(zsim, [scene, "--threads", "2"]))
         ratios.append(two[-1] / one[-1])
     print(f"one thread: median {statistics.median(one):.2f} ms; two: median {statistics.median(two):.2f} ms; "
           f"two/one: median {statistics.median(ratios):.3f} ({min(ratios):.3f} … {max(ratios):.3f}), {pairs} pairs")

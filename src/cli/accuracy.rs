@@ -6,7 +6,7 @@ use clap::{Args, ValueEnum};
 use comfy_table::{Table, presets};
 use zsim::accuracy::{self, AccuracyRequest};
 
-use super::{Failure, Finish, emit};
+use super::{Failure, Finish, emit, json_line};
 
 /// Arguments of `zsim accuracy`.
 #[derive(Debug, Args)]
@@ -55,8 +55,7 @@ pub fn run(lang: zsim::Lang, args: &AccuracyArgs, out: &mut dyn Write) -> Result
     let exact = modes[0].clone();
     let ns = |row: &accuracy::ModeRow| row.ns_per_pixel(&exact);
     if args.format == Format::Json {
-        let json = serde_json::to_string(&accuracy::AccuracyJson::of(&modes, &bits)).expect("plain data");
-        emit(out, &format!("{json}\n"))?;
+        emit(out, &json_line(&accuracy::AccuracyJson::of(&modes, &bits)))?;
         return Ok(Finish::Ok);
     }
     let mut table = Table::new();

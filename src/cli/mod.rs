@@ -308,6 +308,11 @@ fn emit_then(out: &mut dyn Write, text: &str, finish: Finish) -> Result<Finish, 
 }
 
 /// Writes text, turning a closed pipe into a quiet stop.
+/// A JSON document on one line, as scripts read it.
+fn json_line(json: &impl serde::Serialize) -> String {
+    format!("{}\n", serde_json::to_string(json).expect("serializing plain data cannot fail"))
+}
+
 fn emit(out: &mut dyn Write, text: &str) -> Result<(), Failure> {
     out.write_all(text.as_bytes()).map_err(Failure::Io)
 }

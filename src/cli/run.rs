@@ -12,9 +12,9 @@ use zsim::Scene;
 use zsim::Simulation;
 use zsim::Unobserved;
 use zsim::arith::Arith;
-use zsim::report::{self, MatrixStyle, RunFigures, RunJson, StepJson};
+use zsim::report::{self, MatrixStyle, RunFigures};
 
-use super::{Failure, Finish, emit};
+use super::{Failure, Finish, emit, json_line};
 
 /// Arguments of `zsim run`.
 #[derive(Debug, Args)]
@@ -361,13 +361,7 @@ fn run_inexact(
     let last = scene.polygons.last().map_or(String::new(), |p| p.name.clone());
     match args.format {
         Format::Json => {
-            let json = RunJson {
-                width: scene.width,
-                height: scene.height,
-                effects: scene.effects.names(),
-                steps: vec![StepJson { polygon: last, frame: buffers.frame_rows(), depth: buffers.depth_rows() }],
-            };
-            emit(out, &format!("{}\n", serde_json::to_string(&json).expect("serializing plain data cannot fail")))?;
+            emit(out, &json_line(&zsim::variant_report::buffers_json(scene, &last, &buffers)))?;
         }
         Format::None => {
             let figures = RunFigures {

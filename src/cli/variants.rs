@@ -12,7 +12,7 @@ use zsim::report::{self, MatrixStyle};
 use zsim::variant_report;
 use zsim::variants::{self, Inside, Segments};
 
-use super::{Failure, Finish, emit};
+use super::{Failure, Finish, emit, json_line};
 
 /// What `run` was asked for besides the plain z-buffer.
 pub struct RunVariant {
@@ -77,9 +77,4 @@ pub fn local_errors_text(lang: zsim::Lang, scene: &Scene, drawn: &Buffers) -> St
         Err(all_match) => format!("\n{all_match}\n"),
         Ok(listed) => format!("\n{}\n{}\n", listed.line.clone(), super::table(listed)),
     }
-}
-
-/// A run's JSON on one line.
-fn json_line(json: &impl serde::Serialize) -> String {
-    format!("{}\n", serde_json::to_string(json).expect("serializing plain data cannot fail"))
 }

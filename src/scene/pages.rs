@@ -6,11 +6,13 @@
 /// A huge page (x86-64 and most others).
 pub(crate) const HUGE_PAGE: usize = 2 << 20;
 
+/// An ordinary page (x86-64 and most others).
+pub(crate) const PAGE: usize = 4096;
+
 /// Asks Linux to back the `bytes` of memory from `memory`, which belong to
 /// one allocation and have not been written, with 2 MiB pages where it can.
 #[cfg(target_os = "linux")]
 pub(crate) fn advise_huge_pages(memory: *mut u8, bytes: usize) {
-    const PAGE: usize = 4096;
     let start = memory as usize;
     if bytes < 2 * HUGE_PAGE {
         return;

@@ -6,7 +6,7 @@
 
 use crate::numbers::Exact;
 use crate::raster::depth::Stored;
-use crate::scene::pages::{HUGE_PAGE, advise_huge_pages, with_huge_pages};
+use crate::scene::pages::{HUGE_PAGE, PAGE, advise_huge_pages, with_huge_pages};
 
 /// A framebuffer and a z-buffer of the same size.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -85,10 +85,10 @@ impl Buffers {
     /// The size must already be validated (see `scene::MAX_CELLS`).
     /// The framebuffer's cells are as wide as `frame_bits` need (see `FrameCell`).
     pub fn new(width: u32, height: u32, frame_bits: u32, background: u32, clear_depth: Stored) -> Buffers {
-        Buffers::new_on(width, height, frame_bits, background, clear_depth, 1)
+        Buffers::new_on(width, height, frame_bits, background, clear_depth, None)
     }
 
-    /// [`Buffers::new`], large buffers cleared on `threads` threads: the same
+    /// [`Buffers::new`], large buffers cleared on `pool`'s threads: the same
     /// cells, the page faults of fresh memory taken on every core.
     pub fn new_on(
         width: u32,
@@ -96,13 +96,12 @@ impl Buffers {
         frame_bits: u32,
         background: u32,
         clear_depth: Stored,
-        threads: usize,
+        pool: Option<&rayon::ThreadPool>,
     ) -> Buffers {
         let cells = width as usize * height as usize;
         // Threads only where cells are written now: zeros are left unwritten (`Cells::new`).
         let written = background != 0 || !matches!(clear_depth, Stored::Level(0));
-        let pool = if written { clearing_pool(cells, threads) } else { None };
-        let pool = pool.as_ref();
+        let pool = if written { clearing(cells, pool) } else { None };
         let depth = match clear_depth {
             Stored::Level(level) => DepthCells::Levels(Cells::new(cells, level, pool)),
             Stored::Exact(value) => DepthCells::Exact(filled(cells, value, pool)),
@@ -118,16 +117,15 @@ impl Buffers {
     /// Sets every cell back to the background value and the clear depth in
     /// the memory the buffers already hold (a GPU's clear): the cells
     /// [`Buffers::new`] would make with the same values.
-    /// Large buffers are cleared on `threads` threads.
-    pub fn clear(&mut self, frame_bits: u32, background: u32, clear_depth: &Stored, threads: usize) {
-        let pool = clearing_pool(self.width as usize * self.height as usize, threads);
-        let pool = pool.as_ref();
+    /// Large buffers are cleared on `pool`'s threads.
+    pub fn clear(&mut self, frame_bits: u32, background: u32, clear_depth: &Stored, pool: Option<&rayon::ThreadPool>) {
+        let pool = clearing(self.width as usize * self.height as usize, pool);
         match (&mut self.depth, clear_depth) {
             (DepthCells::Levels(cells), Stored::Level(level)) => fill(cells, *level, pool),
             (DepthCells::Exact(cells), Stored::Exact(value)) => fill(cells, value.clone(), pool),
             // Another kind of depth: new buffers.
             _ => {
-                *self = Buffers::new_on(self.width, self.height, frame_bits, background, clear_depth.clone(), threads);
+                *self = Buffers::new_on(self.width, self.height, frame_bits, background, clear_depth.clone(), pool);
                 return;
             }
         }
@@ -311,7 +309,6 @@ impl<T: Copy> Cells<T> {
     /// Writes each page's first cell with the value it holds, so that the
     /// system hands the page over now (see [`Buffers::take_pages`]).
     fn take_pages(&mut self) {
-        const PAGE: usize = 4096;
         let step = (PAGE / std::mem::size_of::<T>()).max(1);
         let cells: &mut [T] = self;
         for cell in cells.iter_mut().step_by(step) {
@@ -382,13 +379,10 @@ fn fill<T: Clone + Send + Sync>(cells: &mut [T], value: T, pool: Option<&rayon::
 /// it a second thread wins nothing.
 const PARALLEL_CLEAR: usize = 1 << 20;
 
-/// The threads that clear `cells` cells, when more than one is asked for and
-/// the buffers are large; `None` (one thread clears) also when the system
-/// would not start them, and in WebAssembly, which has no threads to start.
-fn clearing_pool(cells: usize, threads: usize) -> Option<rayon::ThreadPool> {
-    (threads > 1 && cells >= PARALLEL_CLEAR && !cfg!(target_arch = "wasm32"))
-        .then(|| rayon::ThreadPoolBuilder::new().num_threads(threads).build().ok())
-        .flatten()
+/// The threads that clear `cells` cells: `pool`'s when the buffers are
+/// large; `None` (one thread clears) otherwise.
+fn clearing(cells: usize, pool: Option<&rayon::ThreadPool>) -> Option<&rayon::ThreadPool> {
+    pool.filter(|_| cells >= PARALLEL_CLEAR)
 }
 
 fn rows_top_first<T: Clone>(cells: &[T], width: u32) -> Vec<Vec<T>> {

@@ -34,11 +34,10 @@ pub struct Simulation<'s> {
     stats: Stats,
     scratch: Scratch,
     stage_set: StageSet,
-    /// How many threads clear large buffers ([`Simulation::new_on`]).
-    clearing_threads: usize,
-    /// The threads that draw in tiles, started with the buffers when more
-    /// than one is asked for ([`Simulation::new_on`]), as a GPU driver starts
-    /// its threads with its context: each draw then finds them waiting.
+    /// The threads that clear large buffers and draw in tiles, started with
+    /// the buffers when more than one is asked for ([`Simulation::new_on`]),
+    /// as a GPU driver starts its threads with its context: each clear and
+    /// draw then finds them waiting.
     pool: Option<std::sync::Arc<rayon::ThreadPool>>,
 }
 
@@ -61,24 +60,10 @@ impl<'s> Simulation<'s> {
     }
 
     fn made(scene: &'s Scene, stage_set: StageSet, threads: usize) -> Simulation<'s> {
-        let clear_depth = scene.clear_depth.clone();
-        Simulation {
-            scene,
-            buffers: Buffers::new_on(
-                scene.width,
-                scene.height,
-                scene.frame_bits,
-                scene.background,
-                clear_depth,
-                threads,
-            ),
-            next: 0,
-            stats: Stats::default(),
-            scratch: Scratch::default(),
-            stage_set,
-            clearing_threads: threads,
-            pool: pool(threads).map(std::sync::Arc::new),
-        }
+        let pool = pool(threads).map(std::sync::Arc::new);
+        let (width, height, clear_depth) = (scene.width, scene.height, scene.clear_depth.clone());
+        let buffers = Buffers::new_on(width, height, scene.frame_bits, scene.background, clear_depth, pool.as_deref());
+        Simulation { scene, buffers, next: 0, stats: Stats::default(), scratch: Scratch::default(), stage_set, pool }
     }
 
     /// The tile side `threads` threads draw the scene in when none is asked
@@ -98,7 +83,7 @@ impl<'s> Simulation<'s> {
     /// polygon drawn.
     pub fn restart(&mut self) {
         let scene = self.scene;
-        self.buffers.clear(scene.frame_bits, scene.background, &scene.clear_depth, self.clearing_threads);
+        self.buffers.clear(scene.frame_bits, scene.background, &scene.clear_depth, self.pool.as_deref());
         self.next = 0;
         self.stats = Stats::default();
     }
